@@ -1,0 +1,5 @@
+"""Allow ``python -m pkgtool``."""
+
+from pkgtool.cli import main
+
+main()

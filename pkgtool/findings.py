@@ -1,0 +1,56 @@
+"""What rules report: a ``Hit`` from a rule, a ``Finding`` once the engine knows the rule."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from enum import Enum
+
+from pkgtool.model.span import Span
+
+
+class Severity(str, Enum):
+    """How bad a finding is; ``error`` fails lint, ``warning`` fails only with ``--strict``."""
+
+    ERROR = "error"
+    WARNING = "warning"
+    INFO = "info"
+
+    @property
+    def rank(self) -> int:
+        """Higher is worse."""
+        return {"info": 0, "warning": 1, "error": 2}[self.value]
+
+
+@dataclass(frozen=True, slots=True)
+class Hit:
+    """One problem a rule found: where, what (``message``) and how to fix it (``fix``).
+
+    ``message`` states the problem in sentence case without a final period, names in backticks;
+    ``fix`` is an imperative one-liner, or None when the rule's generic fix applies.
+    """
+
+    span: Span
+    message: str
+    fix: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
+class Finding:
+    """A hit with its rule's code and (possibly configured) severity, in a named package.
+
+    ``root`` is the package root as the user named it, so reporters can print
+    ``root/span.path`` relative to the current directory.
+    """
+
+    code: str
+    severity: Severity
+    package: str
+    root: str
+    span: Span
+    message: str
+    fix: str | None = None
+
+    @property
+    def sort_key(self) -> tuple[str, str, int, int, str]:
+        """Deterministic order: package root, path, line, column, code."""
+        return (self.root, self.span.path, self.span.line, self.span.col, self.code)

@@ -1,0 +1,1 @@
+"""The immutable package model: files parsed without importing or executing anything."""

@@ -1,0 +1,137 @@
+"""package.xml read with lxml (entities and network off), keeping line numbers."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+
+from pkgtool.model.span import ParseProblem, Span
+from pkgtool.model.xml import XmlElement, parse_xml
+
+
+@dataclass(frozen=True, slots=True)
+class Text:
+    """An element's stripped text content with its position."""
+
+    value: str
+    span: Span
+
+
+@dataclass(frozen=True, slots=True)
+class Person:
+    """A ``<maintainer>`` or ``<author>``."""
+
+    name: str
+    email: str | None
+    span: Span
+
+
+@dataclass(frozen=True, slots=True)
+class Url:
+    """A ``<url type=...>``."""
+
+    url: str
+    type: str | None
+    span: Span
+
+
+@dataclass(frozen=True, slots=True)
+class Dependency:
+    """Any ``*depend`` tag (also format 1's ``run_depend``, and ``conflict``/``replace``)."""
+
+    tag: str
+    name: str
+    span: Span
+    attributes: tuple[tuple[str, str], ...] = ()
+
+    @property
+    def condition(self) -> str | None:
+        """The REP 149 ``condition`` attribute, if any."""
+        return dict(self.attributes).get("condition")
+
+
+RUNTIME_TAGS = frozenset({"depend", "exec_depend", "run_depend"})
+"""Dependency tags that make a key available when the package runs."""
+TEST_TAGS = frozenset({"test_depend"})
+
+
+@dataclass(frozen=True, slots=True)
+class Manifest:
+    """The parsed package.xml. ``root`` is the whole tree for structural rules."""
+
+    path: str
+    root: XmlElement
+    format: int | None
+    name: Text | None
+    version: Text | None
+    description: Text | None
+    maintainers: tuple[Person, ...]
+    authors: tuple[Person, ...]
+    licenses: tuple[Text, ...]
+    urls: tuple[Url, ...]
+    dependencies: tuple[Dependency, ...]
+    build_type: Text | None
+    has_schema_line: bool = False
+    members_of: tuple[Text, ...] = field(default=())
+
+    def depends(self, tags: frozenset[str] | set[str]) -> frozenset[str]:
+        """Names declared with any of ``tags`` (``depend`` counts for every kind)."""
+        return frozenset(d.name for d in self.dependencies if d.tag in tags or d.tag == "depend")
+
+    @property
+    def runtime_depends(self) -> frozenset[str]:
+        """Keys available at run time: depend, exec_depend (and format 1's run_depend)."""
+        return self.depends(RUNTIME_TAGS)
+
+
+def parse_manifest(path: str, text: str) -> Manifest | ParseProblem:
+    """Parse package.xml text; malformed XML or entity tricks give a ParseProblem."""
+    root = parse_xml(path, text)
+    if isinstance(root, ParseProblem):
+        return root
+    return _manifest(path, root, "package_format" in text.split("<package", 1)[0])
+
+
+def _text(element: XmlElement | None) -> Text | None:
+    return None if element is None else Text(element.text, element.span)
+
+
+def _first(root: XmlElement, tag: str) -> XmlElement | None:
+    return next((c for c in root.children if c.tag == tag), None)
+
+
+def _people(root: XmlElement, tag: str) -> tuple[Person, ...]:
+    return tuple(
+        Person(c.text, c.attribute("email"), c.span) for c in root.children if c.tag == tag
+    )
+
+
+def _format(root: XmlElement) -> int | None:
+    value = root.attribute("format")
+    if value is None:
+        return 1
+    return int(value) if value.strip().isdigit() else None
+
+
+def _manifest(path: str, root: XmlElement, has_schema_line: bool) -> Manifest:
+    export = _first(root, "export")
+    build_type = _first(export, "build_type") if export is not None else None
+    return Manifest(
+        path=path,
+        root=root,
+        format=_format(root),
+        name=_text(_first(root, "name")),
+        version=_text(_first(root, "version")),
+        description=_text(_first(root, "description")),
+        maintainers=_people(root, "maintainer"),
+        authors=_people(root, "author"),
+        licenses=tuple(Text(c.text, c.span) for c in root.children if c.tag == "license"),
+        urls=tuple(Url(c.text, c.attribute("type"), c.span) for c in root.children if c.tag == "url"),
+        dependencies=tuple(
+            Dependency(c.tag, c.text, c.span, c.attributes)
+            for c in root.children
+            if c.tag.endswith("depend") or c.tag in ("conflict", "replace")
+        ),
+        build_type=_text(build_type),
+        has_schema_line=has_schema_line,
+        members_of=tuple(Text(c.text, c.span) for c in root.children if c.tag == "member_of_group"),
+    )

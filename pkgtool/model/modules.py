@@ -1,0 +1,54 @@
+"""Python files read with ``ast``: imports (guarded or not), top-level names, syntax errors."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from pkgtool.model.span import ParseProblem, Span
+
+
+@dataclass(frozen=True, slots=True)
+class Import:
+    """One imported module.
+
+    ``module`` is the dotted name as written (for ``from . import x`` it is ``""``); ``level`` is
+    the number of leading dots (0 for absolute). ``guarded`` is True inside ``try`` blocks that
+    catch ImportError/ModuleNotFoundError/Exception, under ``if TYPE_CHECKING:``, or after an
+    ``importlib.util.find_spec`` check. ``names`` are the names of a ``from`` import.
+    """
+
+    module: str
+    level: int
+    names: tuple[str, ...]
+    span: Span
+    guarded: bool = False
+
+    @property
+    def top_level(self) -> str:
+        """The first component of an absolute import (``sensor_msgs`` for sensor_msgs.msg)."""
+        return self.module.split(".", 1)[0] if self.level == 0 else ""
+
+
+@dataclass(frozen=True, slots=True)
+class PythonModule:
+    """A parsed .py file of the package. ``syntax_error`` set means the rest is empty."""
+
+    path: str
+    imports: tuple[Import, ...]
+    top_level_names: frozenset[str]
+    syntax_error: ParseProblem | None = None
+
+    @property
+    def is_test(self) -> bool:
+        """Under test/ or tests/, or named test_*.py / *_test.py / conftest.py."""
+        parts = self.path.split("/")
+        name = parts[-1]
+        return (parts[0] in ("test", "tests") or name.startswith("test_")
+                or name.endswith("_test.py") or name == "conftest.py")
+
+
+def parse_module(path: str, text: str) -> PythonModule:
+    """Parse Python source; a syntax error is recorded, never raised."""
+    from pkgtool.model.python_visitor import read_module
+
+    return read_module(path, text)

@@ -1,0 +1,130 @@
+"""One immutable :class:`Package` built from a folder, reading each file once."""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from pkgtool.model.files import TextFile, list_files, read_text
+from pkgtool.model.launch import LaunchFile, is_launch_file, parse_launch
+from pkgtool.model.manifest import Manifest, parse_manifest
+from pkgtool.model.modules import PythonModule, parse_module
+from pkgtool.model.setup_cfg import SetupCfg, parse_setup_cfg
+from pkgtool.model.setup_py import SetupPy, parse_setup_py
+from pkgtool.model.span import ParseProblem
+
+_PY_SUPPRESSION = re.compile(r"#\s*pkgtool:\s*ignore(?:\[([A-Za-z0-9_,\s-]*)\])?")
+_XML_SUPPRESSION = re.compile(r"<!--\s*pkgtool:\s*ignore\b([A-Za-z0-9_,\s-]*)-->")
+
+ALL = "*"
+
+
+@dataclass(frozen=True, slots=True)
+class Package:
+    """A package folder: its files and everything parsed from them.
+
+    ``files`` lists every file (POSIX, relative to ``root``). ``problems`` holds files that could
+    not be read or parsed. ``suppressions`` maps (path, line) to the rule codes or names
+    silenced there (``*`` for all).
+    """
+
+    root: Path
+    files: tuple[str, ...]
+    manifest: Manifest | None
+    setup_py: SetupPy | None
+    setup_cfg: SetupCfg | None
+    modules: tuple[PythonModule, ...]
+    launch_files: tuple[LaunchFile, ...]
+    problems: tuple[ParseProblem, ...]
+    suppressions: dict[tuple[str, int], frozenset[str]] = field(default_factory=dict)
+    texts: dict[str, str] = field(default_factory=dict, repr=False)
+    file_set: frozenset[str] = field(default=frozenset(), repr=False)
+
+    @property
+    def name(self) -> str:
+        """The package.xml name, else setup.py's, else the folder name."""
+        if self.manifest and self.manifest.name and self.manifest.name.value:
+            return self.manifest.name.value
+        if self.setup_py and self.setup_py.name and isinstance(self.setup_py.name.value, str):
+            return self.setup_py.name.value
+        return self.root.name
+
+    def module(self, path: str) -> PythonModule | None:
+        """The parsed Python module at ``path``, if any."""
+        return next((m for m in self.modules if m.path == path), None)
+
+    def has_file(self, path: str) -> bool:
+        """True when ``path`` (package-relative POSIX) is a file of the package."""
+        return path in self.file_set
+
+
+def _suppressions(path: str, text: str) -> dict[tuple[str, int], frozenset[str]]:
+    pattern = _XML_SUPPRESSION if path.endswith(".xml") else _PY_SUPPRESSION
+    found: dict[tuple[str, int], frozenset[str]] = {}
+    for number, line in enumerate(text.splitlines(), 1):
+        match = pattern.search(line)
+        if not match:
+            continue
+        codes = frozenset(c for c in re.split(r"[\s,]+", match.group(1) or "") if c) or {ALL}
+        found[(path, number)] = frozenset(codes)
+        if path.endswith(".xml") and line.strip().startswith("<!--"):
+            found[(path, number + 1)] = frozenset(codes)  # a comment line covers the next line
+    return found
+
+
+def load_package(root: Path) -> Package:
+    """Read the package at ``root``; never raises for bad content, only records problems."""
+    files = list_files(root)
+    problems: list[ParseProblem] = []
+    texts: dict[str, str] = {}
+
+    def text_of(relpath: str) -> str | None:
+        result = read_text(root, relpath)
+        if isinstance(result, ParseProblem):
+            problems.append(result)
+            return None
+        assert isinstance(result, TextFile)
+        texts[relpath] = result.text
+        return result.text
+
+    manifest = _parsed(problems, "package.xml", text_of, parse_manifest, files)
+    setup_py = _parsed(problems, "setup.py", text_of,
+                       lambda p, t: parse_setup_py(p, t, files), files)
+    setup_cfg = _parsed(problems, "setup.cfg", text_of, parse_setup_cfg, files)
+    modules: list[PythonModule] = []
+    launches: list[LaunchFile] = []
+    for relpath in files:
+        if is_launch_file(relpath):
+            text = text_of(relpath)
+            if text is not None:
+                launch = parse_launch(relpath, text)
+                launches.append(launch)
+                if launch.problem:
+                    problems.append(launch.problem)
+        elif relpath.endswith(".py") and relpath != "setup.py":
+            text = text_of(relpath)
+            if text is not None:
+                module = parse_module(relpath, text)
+                modules.append(module)
+                if module.syntax_error:
+                    problems.append(module.syntax_error)
+    suppressions: dict[tuple[str, int], frozenset[str]] = {}
+    for relpath, text in texts.items():
+        suppressions.update(_suppressions(relpath, text))
+    return Package(root, files, manifest, setup_py, setup_cfg, tuple(modules), tuple(launches),
+                   tuple(problems), suppressions, texts, frozenset(files))
+
+
+def _parsed(problems, relpath, text_of, parse, files):  # type: ignore[no-untyped-def]
+    """Parse one well-known file if present; a parse failure is recorded as a problem."""
+    if relpath not in files:
+        return None
+    text = text_of(relpath)
+    if text is None:
+        return None
+    result = parse(relpath, text)
+    if isinstance(result, ParseProblem):
+        problems.append(result)
+        return None
+    return result

@@ -1,0 +1,52 @@
+"""Safe XML parsing into immutable :class:`XmlElement` trees (no entities, no DTD, no network)."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+from pkgtool.model.span import ParseProblem, Span
+
+
+@dataclass(frozen=True, slots=True)
+class XmlElement:
+    """An immutable copy of one XML element: enough for schema-like checks without lxml."""
+
+    tag: str
+    attributes: tuple[tuple[str, str], ...]
+    text: str
+    span: Span
+    children: tuple[XmlElement, ...] = ()
+
+    def attribute(self, name: str) -> str | None:
+        """The attribute's value, or None."""
+        return dict(self.attributes).get(name)
+
+
+def parse_xml(path: str, text: str) -> XmlElement | ParseProblem:
+    """Parse ``text``; a syntax error or a DOCTYPE/entity declaration becomes a ParseProblem."""
+    from lxml import etree
+
+    if "<!DOCTYPE" in text or "<!ENTITY" in text:
+        line = text[: max(text.find("<!DOCTYPE"), text.find("<!ENTITY"))].count("\n") + 1
+        return ParseProblem("xml-entity", Span(path, line, 1),
+                            "DOCTYPE and entity declarations are not allowed in package files")
+    parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
+                             huge_tree=False, remove_comments=False, dtd_validation=False)
+    try:
+        root = etree.fromstring(text.encode("utf-8"), parser)
+    except etree.XMLSyntaxError as error:
+        line, col = error.position if error.position else (1, 1)
+        message = error.msg or str(error)
+        return ParseProblem("xml-syntax", Span(path, line or 1, col or 1), message)
+    return _copy(path, root)
+
+
+def _copy(path: str, element: object) -> XmlElement:
+    from lxml import etree
+
+    assert isinstance(element, etree._Element)
+    children = tuple(_copy(path, c) for c in element if isinstance(c.tag, str))
+    text = "".join(element.itertext()) if not children else (element.text or "")
+    tag = etree.QName(element).localname
+    return XmlElement(tag, tuple((str(k), str(v)) for k, v in element.attrib.items()),
+                      " ".join(text.split()), Span(path, element.sourceline or 1, 1), children)

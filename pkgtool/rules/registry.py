@@ -1,0 +1,124 @@
+"""The rule catalogue: the ``@rule`` decorator, stable codes, and lookup by code, family or name."""
+
+from __future__ import annotations
+
+import importlib
+import pkgutil
+import re
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+from pkgtool.findings import Hit, Severity
+
+if TYPE_CHECKING:
+    from pkgtool.model.package import Package
+
+Check = Callable[["Package"], Iterable[Hit]]
+
+CODE_PATTERN = re.compile(r"^[A-Z]{3}\d{3}$")
+NAME_PATTERN = re.compile(r"^[a-z][a-z0-9]*(-[a-z0-9]+)*$")
+DOC_SECTIONS = ("## What it does", "## Why is this bad?", "## Example", "## Use instead")
+
+FAMILIES = {
+    "SYN": "files that cannot be read or parsed",
+    "MAN": "package.xml",
+    "SET": "setup.py and setup.cfg",
+    "ENT": "console_scripts entry points",
+    "DAT": "data_files: installed resources",
+    "DEP": "imports versus package.xml dependencies",
+    "LCH": "launch files",
+    "PYC": "Python code",
+    "STY": "style: flake8 and pydocstyle with ament's settings",
+    "CPY": "copyright and license headers",
+}
+"""Code prefixes and what each family checks. Codes are never reused or renumbered."""
+
+
+@dataclass(frozen=True, slots=True)
+class Rule:
+    """A registered rule: identity, default severity, documentation and the check itself."""
+
+    code: str
+    name: str
+    severity: Severity
+    fix: str
+    check: Check
+    doc: str
+    default_enabled: bool = True
+
+    @property
+    def family(self) -> str:
+        """The code's three-letter prefix, e.g. ``MAN``."""
+        return self.code[:3]
+
+    @property
+    def summary(self) -> str:
+        """The first line of the rule's documentation."""
+        return self.doc.strip().splitlines()[0] if self.doc.strip() else self.name
+
+
+_RULES: dict[str, Rule] = {}
+_loaded = False
+
+
+def rule(
+    code: str,
+    name: str,
+    severity: Severity,
+    *,
+    fix: str,
+    default_enabled: bool = True,
+) -> Callable[[Check], Check]:
+    """Register ``check`` under a stable ``code`` and kebab-case ``name``.
+
+    ``fix`` is the generic imperative fix shown when a hit carries none of its own. Rules whose
+    docstring lacks the required sections, or whose code or name is taken, fail at import.
+    """
+    if not CODE_PATTERN.match(code) or code[:3] not in FAMILIES:
+        raise ValueError(f"rule code {code!r} must be a known family prefix and three digits")
+    if not NAME_PATTERN.match(name):
+        raise ValueError(f"rule name {name!r} must be kebab-case")
+
+    def register(check: Check) -> Check:
+        doc = check.__doc__ or ""
+        missing = [s for s in DOC_SECTIONS if s not in doc]
+        if missing:
+            raise ValueError(f"rule {code} docstring lacks {', '.join(missing)}")
+        for other in _RULES.values():
+            if (other.code == code or other.name == name) and other.check is not check:
+                raise ValueError(f"rule {code} {name} clashes with {other.code} {other.name}")
+        _RULES[code] = Rule(code, name, severity, fix, check, _dedent(doc), default_enabled)
+        return check
+
+    return register
+
+
+def _dedent(doc: str) -> str:
+    import inspect
+
+    return inspect.cleandoc(doc)
+
+
+def load_all() -> dict[str, Rule]:
+    """Import every rule module once and return the catalogue keyed by code."""
+    global _loaded
+    if not _loaded:
+        import pkgtool.rules as package
+
+        for info in pkgutil.walk_packages(package.__path__, package.__name__ + "."):
+            importlib.import_module(info.name)
+        _loaded = True
+    return dict(sorted(_RULES.items()))
+
+
+def resolve(selector: str) -> list[Rule]:
+    """Rules matching a code (``MAN003``), a family (``MAN``), a code prefix or a rule name."""
+    rules = load_all()
+    key = selector.strip()
+    if key.upper() in rules:
+        return [rules[key.upper()]]
+    by_name = [r for r in rules.values() if r.name == key.lower()]
+    if by_name:
+        return by_name
+    return [r for r in rules.values() if r.code.startswith(key.upper())] if key else []

@@ -1,0 +1,14 @@
+"""Test-session set-up: every ROS process started from the tests stays off the real network."""
+
+from __future__ import annotations
+
+import os
+import tempfile
+
+# Before anything imports rclpy: no multicast on the machine's interfaces, logs in a temp dir.
+os.environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
+os.environ.setdefault("ROS_DOMAIN_ID", "42")
+os.environ["ROS_LOG_DIR"] = tempfile.mkdtemp(prefix="pkgtool-ros-log-")
+os.environ.pop("RMW_IMPLEMENTATION", None)
+
+pytest_plugins = ["pkgtool.testing.ros_fixtures"]
