@@ -1,0 +1,69 @@
+"""Every rule has a failing and a passing fixture, and reports exactly what the markers say.
+
+Fixtures live in ``tests/fixtures/<CODE>/{good,bad}/<case>/`` as minimal package trees.
+In ``bad`` cases each expected finding is marked on its line: ``# expect: CODE`` (Python,
+setup.cfg, YAML) or ``<!-- expect: CODE -->`` (XML). Findings with no line of their own (a
+missing file) are listed in an ``EXPECT`` file of the case as ``path:line CODE`` lines.
+``good`` cases must give no finding of that code.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+import pytest
+
+from pkgtool.model.package import load_package
+from pkgtool.rules.registry import load_all
+from tests.helpers import findings
+
+FIXTURES = Path(__file__).resolve().parent.parent / "fixtures"
+MARKER = re.compile(r"expect:\s*([A-Z]{3}\d{3}(?:\s*,\s*[A-Z]{3}\d{3})*)")
+
+
+def _cases(kind: str) -> list[tuple[str, Path]]:
+    return [(code_dir.name, case) for code_dir in sorted(FIXTURES.iterdir()) if code_dir.is_dir()
+            for case in sorted((code_dir / kind).glob("*")) if case.is_dir()]
+
+
+def _expected(case: Path, code: str) -> set[tuple[str, int]]:
+    expected: set[tuple[str, int]] = set()
+    for file in case.rglob("*"):
+        if not file.is_file() or file.name == "EXPECT":
+            continue
+        try:
+            lines = file.read_text(encoding="utf-8").splitlines()
+        except (UnicodeDecodeError, OSError):
+            continue
+        for number, line in enumerate(lines, 1):
+            match = MARKER.search(line)
+            if match and code in re.split(r"\s*,\s*", match.group(1)):
+                expected.add((file.relative_to(case).as_posix(), number))
+    listing = case / "EXPECT"
+    if listing.is_file():
+        for line in listing.read_text().splitlines():
+            if line.strip() and line.split()[-1] == code:
+                path, _, number = line.split()[0].rpartition(":")
+                expected.add((path, int(number)))
+    return expected
+
+
+@pytest.mark.parametrize(("code", "case"), _cases("bad"), ids=lambda v: getattr(v, "name", v))
+def test_bad_fixture_reports_exactly_the_marked_lines(code: str, case: Path) -> None:
+    got = {(f.span.path, f.span.line) for f in findings(load_package(case), code)}
+    expected = _expected(case, code)
+    assert expected, f"{case} marks no expected {code} finding"
+    assert got == expected
+
+
+@pytest.mark.parametrize(("code", "case"), _cases("good"), ids=lambda v: getattr(v, "name", v))
+def test_good_fixture_reports_nothing(code: str, case: Path) -> None:
+    assert findings(load_package(case), code) == []
+
+
+def test_every_rule_has_good_and_bad_fixtures() -> None:
+    missing = [code for code in load_all()
+               if not list((FIXTURES / code / "good").glob("*")) or
+               not list((FIXTURES / code / "bad").glob("*"))]
+    assert missing == []
