@@ -1,0 +1,1 @@
+"""Curated facts about the ROS and Python ecosystems (offline tables, no network)."""
