@@ -18,6 +18,7 @@ app = typer.Typer(
     no_args_is_help=True,
     add_completion=False,
     pretty_exceptions_enable=False,
+    rich_markup_mode=None,  # plain help: loading rich would triple `pkgtool --help` time
 )
 
 
@@ -45,7 +46,7 @@ def _register() -> None:
         importlib.import_module(f"pkgtool.cli_{verb}").register(app)
 
 
-VERBS: tuple[str, ...] = ()
+VERBS: tuple[str, ...] = ("lint", "create", "test", "grade", "reference")
 """Verbs with a ``pkgtool/cli_<verb>.py`` exposing ``register(app)``; add a verb when it works."""
 
 

@@ -7,6 +7,7 @@ from dataclasses import dataclass, field
 
 from pkgtool.findings import Finding, Severity
 from pkgtool.model.package import ALL, Package
+from pkgtool.model.span import Span
 from pkgtool.rules.registry import Rule, load_all, resolve
 
 
@@ -44,13 +45,31 @@ def _suppressed(package: Package, finding: Finding, rule: Rule) -> bool:
 
 def check_package(package: Package, rules: Iterable[Rule], *, root_label: str,
                   severities: Mapping[str, Severity] | None = None) -> list[Finding]:
-    """Run ``rules`` on one package; suppressed hits are dropped, the rest sorted."""
+    """Run ``rules`` on one package; suppressed hits are dropped, the rest sorted.
+
+    A rule that raises does not stop the run: its hits so far are dropped and it yields one
+    error finding marked ``internal`` that names the rule and the exception.
+    """
     findings = []
     overrides = severities or {}
     for rule in rules:
-        for hit in rule.check(package):
+        try:
+            hits = list(rule.check(package))
+        except Exception as error:  # noqa: BLE001 - a broken rule must not hide the others
+            findings.append(_internal_error(package, rule, error, root_label))
+            continue
+        for hit in hits:
             finding = Finding(rule.code, overrides.get(rule.code, rule.severity), package.name,
                               root_label, hit.span, hit.message, hit.fix or rule.fix)
             if not _suppressed(package, finding, rule):
                 findings.append(finding)
     return sorted(set(findings), key=lambda f: f.sort_key)
+
+
+def _internal_error(package: Package, rule: Rule, error: Exception, root_label: str) -> Finding:
+    where = "package.xml" if package.has_file("package.xml") else ""
+    message = (f"Internal error in rule `{rule.code}` (`{rule.name}`): "
+               f"{type(error).__name__}: {error}")
+    fix = f"Report this pkgtool bug; until it is fixed, skip the rule with `--ignore {rule.code}`"
+    return Finding(rule.code, Severity.ERROR, package.name, root_label, Span(where), message,
+                   fix, internal=True)

@@ -39,7 +39,8 @@ class Finding:
     """A hit with its rule's code and (possibly configured) severity, in a named package.
 
     ``root`` is the package root as the user named it, so reporters can print
-    ``root/span.path`` relative to the current directory.
+    ``root/span.path`` relative to the current directory. ``internal`` marks a rule that
+    raised instead of checking (the message names it); lint then exits with 3.
     """
 
     code: str
@@ -49,6 +50,7 @@ class Finding:
     span: Span
     message: str
     fix: str | None = None
+    internal: bool = False
 
     @property
     def sort_key(self) -> tuple[str, str, int, int, str]:

@@ -2,13 +2,18 @@
 
 from __future__ import annotations
 
+import os
 import textwrap
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from pkgtool.engine import check_package
 from pkgtool.findings import Finding
 from pkgtool.model.package import Package, load_package
 from pkgtool.rules.registry import load_all
+
+if TYPE_CHECKING:
+    from typer.testing import Result
 
 MINIMAL_MANIFEST = """<?xml version="1.0"?>
 <?xml-model href="http://download.ros.org/schema/package_format3.xsd" schematypens="http://www.w3.org/2001/XMLSchema"?>
@@ -54,3 +59,114 @@ def findings(package: Package, *codes: str) -> list[Finding]:
 def codes(package: Package, *only: str) -> list[str]:
     """Just the codes of :func:`findings`, sorted."""
     return sorted(f.code for f in findings(package, *only))
+
+
+def correct_package_files(name: str = "demo") -> dict[str, str | bytes]:
+    """A complete, correct ament_python package (node, launch file, test) that lints clean."""
+    manifest = MINIMAL_MANIFEST.format(name=name).replace(
+        "  <exec_depend>rclpy</exec_depend>\n",
+        "  <exec_depend>rclpy</exec_depend>\n  <exec_depend>std_msgs</exec_depend>\n"
+        "  <exec_depend>launch</exec_depend>\n  <exec_depend>launch_ros</exec_depend>\n")
+    return {
+        "package.xml": manifest,
+        "setup.py": f'''
+            from glob import glob
+            import os
+
+            from setuptools import find_packages, setup
+
+            package_name = '{name}'
+
+            setup(
+                name=package_name,
+                version='0.1.0',
+                packages=find_packages(exclude=['test']),
+                data_files=[
+                    ('share/ament_index/resource_index/packages', ['resource/' + package_name]),
+                    ('share/' + package_name, ['package.xml']),
+                    (os.path.join('share', package_name, 'launch'), glob('launch/*.launch.py')),
+                ],
+                install_requires=['setuptools'],
+                zip_safe=True,
+                maintainer='Dev',
+                maintainer_email='dev@example.com',
+                description='A package for tests.',
+                license='Apache-2.0',
+                extras_require={{'test': ['pytest']}},
+                entry_points={{
+                    'console_scripts': [
+                        'talker = {name}.talker:main',
+                    ],
+                }},
+            )
+            ''',
+        "setup.cfg": f"""
+            [develop]
+            script_dir=$base/lib/{name}
+            [install]
+            install_scripts=$base/lib/{name}
+            """,
+        f"resource/{name}": "",
+        f"{name}/__init__.py": "",
+        f"{name}/talker.py": """
+            import rclpy
+            from rclpy.node import Node
+            from std_msgs.msg import String
+
+
+            class Talker(Node):
+
+                def __init__(self):
+                    super().__init__('talker')
+                    self.publisher = self.create_publisher(String, 'chatter', 10)
+
+
+            def main(args=None):
+                rclpy.init(args=args)
+                rclpy.spin(Talker())
+            """,
+        f"launch/{name}.launch.py": f"""
+            from launch import LaunchDescription
+            from launch_ros.actions import Node
+
+
+            def generate_launch_description():
+                return LaunchDescription([Node(package='{name}', executable='talker')])
+            """,
+        "test/test_talker.py": """
+            import pytest
+
+
+            @pytest.mark.parametrize('value', [1])
+            def test_value(value):
+                assert value == 1
+            """,
+    }
+
+
+def run_cli(*args: str, cwd: Path) -> Result:
+    """Invoke ``pkgtool ARGS`` in-process from ``cwd`` with typer's CliRunner."""
+    from typer.testing import CliRunner
+
+    from pkgtool import cli
+
+    if not cli.app.registered_commands:
+        cli._register()
+    previous = os.getcwd()
+    os.chdir(cwd)
+    try:
+        return CliRunner().invoke(cli.app, list(args))
+    finally:
+        os.chdir(previous)
+
+
+def make_finding(code: str = "SYN001", severity: str = "error", *, root: str = "src/pkg",
+                 path: str = "pkg/node.py", line: int = 3, col: int = 5,
+                 message: str = "Python syntax error: invalid syntax",
+                 fix: str | None = "Fix the syntax at the reported line and column") -> Finding:
+    """A finding for report tests, built without running rules."""
+    from pkgtool.findings import Severity
+    from pkgtool.model.span import Span
+
+    return Finding(code, Severity(severity), root.rsplit("/", 1)[-1], root, Span(path, line, col),
+                   message, fix)

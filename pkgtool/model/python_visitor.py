@@ -29,44 +29,36 @@ def _mentions_find_spec(test: ast.expr) -> bool:
                for n in ast.walk(test))
 
 
-class _Visitor(ast.NodeVisitor):
-    def __init__(self, path: str) -> None:
-        self.path = path
-        self.imports: list[Import] = []
-        self.guard_depth = 0
+def _guarded_parts(node: ast.AST, guarded: bool) -> list[tuple[ast.AST, bool]]:
+    """The children of ``node``, each with whether imports under it are guarded."""
+    if isinstance(node, (ast.Try, ast.TryStar)):
+        inner = guarded or any(_catches_import_error(h) for h in node.handlers)
+        return ([(s, inner) for s in node.body]
+                + [(p, guarded) for p in (*node.handlers, *node.orelse, *node.finalbody)])
+    if isinstance(node, ast.If):
+        inner = guarded or _is_type_checking(node.test) or _mentions_find_spec(node.test)
+        orelse = guarded or _mentions_find_spec(node.test)
+        return ([(node.test, guarded)] + [(s, inner) for s in node.body]
+                + [(s, orelse) for s in node.orelse])
+    return [(child, guarded) for child in ast.iter_child_nodes(node)]
 
-    def _span(self, node: ast.AST) -> Span:
-        return Span(self.path, getattr(node, "lineno", 1), getattr(node, "col_offset", 0) + 1)
 
-    def visit_Import(self, node: ast.Import) -> None:
-        for alias in node.names:
-            self.imports.append(Import(alias.name, 0, (), self._span(node), self.guard_depth > 0))
-
-    def visit_ImportFrom(self, node: ast.ImportFrom) -> None:
-        names = tuple(alias.name for alias in node.names)
-        self.imports.append(Import(node.module or "", node.level, names, self._span(node),
-                                   self.guard_depth > 0))
-
-    def visit_Try(self, node: ast.Try) -> None:
-        guarded = any(_catches_import_error(h) for h in node.handlers)
-        self.guard_depth += guarded
-        for statement in node.body:
-            self.visit(statement)
-        self.guard_depth -= guarded
-        for part in (*node.handlers, *node.orelse, *node.finalbody):
-            self.visit(part)
-
-    visit_TryStar = visit_Try
-
-    def visit_If(self, node: ast.If) -> None:
-        guarded = _is_type_checking(node.test) or _mentions_find_spec(node.test)
-        self.guard_depth += guarded
-        for statement in node.body:
-            self.visit(statement)
-        self.guard_depth -= guarded
-        self.visit(node.test)
-        for statement in node.orelse:
-            self.visit(statement)
+def _imports(path: str, tree: ast.Module) -> list[Import]:
+    """Every import of the module in source order (an explicit stack: no recursion limit)."""
+    found: list[Import] = []
+    stack: list[tuple[ast.AST, bool]] = [(tree, False)]
+    while stack:
+        node, guarded = stack.pop()
+        if isinstance(node, (ast.Import, ast.ImportFrom)):
+            span = Span(path, node.lineno, node.col_offset + 1)
+            if isinstance(node, ast.Import):
+                found.extend(Import(a.name, 0, (), span, guarded) for a in node.names)
+            else:
+                names = tuple(alias.name for alias in node.names)
+                found.append(Import(node.module or "", node.level, names, span, guarded))
+        else:
+            stack.extend(_guarded_parts(node, guarded))
+    return sorted(found, key=lambda i: (i.span.line, i.span.col))
 
 
 def _top_level_names(tree: ast.Module) -> frozenset[str]:
@@ -99,15 +91,28 @@ def _flatten(body: list[ast.stmt]) -> list[ast.stmt]:
     return result
 
 
-def read_module(path: str, text: str) -> PythonModule:
-    """Parse ``text``; a syntax error becomes the module's ``syntax_error``."""
+def parse_tree(path: str, text: str) -> ast.Module | ParseProblem:
+    """``ast.parse`` that turns every parser failure into a ``python-syntax`` problem."""
     try:
-        tree = ast.parse(text, filename=path)
+        return ast.parse(text, filename=path)
     except (SyntaxError, ValueError) as error:
         line = getattr(error, "lineno", None) or 1
         col = getattr(error, "offset", None) or 1
         detail = getattr(error, "msg", None) or str(error)
-        return PythonModule(path, (), frozenset(), ParseProblem("python-syntax", Span(path, line, col), detail))
-    visitor = _Visitor(path)
-    visitor.visit(tree)
-    return PythonModule(path, tuple(visitor.imports), _top_level_names(tree))
+        return ParseProblem("python-syntax", Span(path, line, col), detail)
+    except (RecursionError, MemoryError):
+        return ParseProblem("python-syntax", Span(path, 1, 1),
+                            "the code is nested too deeply to parse")
+
+
+def module_from_tree(path: str, tree: ast.Module) -> PythonModule:
+    """The imports and top-level names of an already parsed module."""
+    return PythonModule(path, tuple(_imports(path, tree)), _top_level_names(tree))
+
+
+def read_module(path: str, text: str) -> PythonModule:
+    """Parse ``text``; a syntax error becomes the module's ``syntax_error``."""
+    tree = parse_tree(path, text)
+    if isinstance(tree, ParseProblem):
+        return PythonModule(path, (), frozenset(), tree)
+    return module_from_tree(path, tree)

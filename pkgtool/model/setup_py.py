@@ -55,6 +55,8 @@ class DataFile:
     destination: str
     sources: tuple[DataSource, ...]
     span: Span
+    sources_is_text: bool = False
+    """True when the sources were one string, which setuptools reads character by character."""
 
 
 @dataclass(frozen=True, slots=True)

@@ -16,6 +16,9 @@ class XmlElement:
     text: str
     span: Span
     children: tuple[XmlElement, ...] = ()
+    loose_text: tuple[tuple[int, str], ...] = ()
+    """Non-blank text directly inside an element that has child elements (what ``text`` omits),
+    each with the line of the node it follows; comments are not text."""
 
     def attribute(self, name: str) -> str | None:
         """The attribute's value, or None."""
@@ -49,4 +52,16 @@ def _copy(path: str, element: object) -> XmlElement:
     text = "".join(element.itertext()) if not children else (element.text or "")
     tag = etree.QName(element).localname
     return XmlElement(tag, tuple((str(k), str(v)) for k, v in element.attrib.items()),
-                      " ".join(text.split()), Span(path, element.sourceline or 1, 1), children)
+                      " ".join(text.split()), Span(path, element.sourceline or 1, 1), children,
+                      _loose_text(element) if children else ())
+
+
+def _loose_text(element: object) -> tuple[tuple[int, str], ...]:
+    """The element's own text and every child node's tail (elements, comments, PIs)."""
+    from lxml import etree
+
+    assert isinstance(element, etree._Element)
+    pieces = [(element.sourceline or 1, element.text)]
+    pieces += [(node.sourceline or 1, node.tail) for node in element]
+    return tuple((line + text[: len(text) - len(text.lstrip())].count("\n"),
+                  " ".join(text.split())) for line, text in pieces if text and text.strip())

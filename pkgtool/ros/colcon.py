@@ -10,7 +10,7 @@ import os
 import subprocess
 import sys
 import time
-from collections.abc import Mapping, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -26,6 +26,8 @@ class ColconRun:
     output: str
     seconds: float
     timed_out: bool = False
+    limit: str | None = None
+    """The sandbox limit that ended the run, e.g. ``timed out after 60 s`` (None: none hit)."""
 
     @property
     def ok(self) -> bool:
@@ -39,11 +41,20 @@ def colcon_executable() -> str:
     return str(candidate) if candidate.exists() else "colcon"
 
 
-def colcon_env(workspace: Path, *, domain_id: int, extra: Mapping[str, str] | None = None) -> dict[str, str]:
-    """Environment for colcon and the tests it runs: isolated ROS, this venv's ROS on the paths."""
+Runner = Callable[[Sequence[str], Path, Mapping[str, str], float], ColconRun]
+"""Runs ``(command, cwd, env, timeout)``; the default is a plain subprocess, grading sandboxes it."""
+
+
+def colcon_env(workspace: Path, *, domain_id: int, extra: Mapping[str, str] | None = None,
+               base: Mapping[str, str] | None = None) -> dict[str, str]:
+    """Environment for colcon and the tests it runs: isolated ROS, this venv's ROS on the paths.
+
+    ``base`` replaces os.environ as the starting point (grading passes a scrubbed one).
+    """
     log_dir = workspace / "ros_log"
     log_dir.mkdir(parents=True, exist_ok=True)
-    env = isolated_ros_env(domain_id=domain_id, log_dir=str(log_dir), discovery_range="LOCALHOST")
+    env = isolated_ros_env(domain_id=domain_id, log_dir=str(log_dir), discovery_range="LOCALHOST",
+                           base=base)
     prefix = sys.prefix
     for key in ("AMENT_PREFIX_PATH", "CMAKE_PREFIX_PATH"):
         parts = [p for p in env.get(key, "").split(os.pathsep) if p]
@@ -56,8 +67,11 @@ def colcon_env(workspace: Path, *, domain_id: int, extra: Mapping[str, str] | No
     return env
 
 
-def _run(args: Sequence[str], workspace: Path, env: Mapping[str, str], timeout: float) -> ColconRun:
+def _run(args: Sequence[str], workspace: Path, env: Mapping[str, str], timeout: float,
+         runner: Runner | None = None) -> ColconRun:
     command = (colcon_executable(), "--log-base", str(workspace / "log"), *args)
+    if runner is not None:
+        return runner(command, workspace, env, timeout)
     start = time.monotonic()
     try:
         done = subprocess.run(command, cwd=workspace, env=dict(env), stdin=subprocess.DEVNULL,
@@ -76,7 +90,7 @@ def _paths(workspace: Path) -> tuple[str, ...]:
 
 def colcon_build(workspace: Path, *, base_paths: Sequence[Path], env: Mapping[str, str],
                  packages: Sequence[str] = (), timeout: float = 600.0,
-                 symlink_install: bool = False) -> ColconRun:
+                 symlink_install: bool = False, runner: Runner | None = None) -> ColconRun:
     """``colcon build`` of the packages under ``base_paths`` (all, or ``packages`` and deps)."""
     args = ["build", "--base-paths", *map(str, base_paths), *_paths(workspace),
             "--event-handlers", "console_direct+"]
@@ -84,14 +98,20 @@ def colcon_build(workspace: Path, *, base_paths: Sequence[Path], env: Mapping[st
         args.append("--symlink-install")
     if packages:
         args += ["--packages-up-to", *packages]
-    return _run(args, workspace, env, timeout)
+    return _run(args, workspace, env, timeout, runner)
 
 
 def colcon_test(workspace: Path, *, base_paths: Sequence[Path], env: Mapping[str, str],
-                packages: Sequence[str] = (), timeout: float = 600.0) -> ColconRun:
-    """``colcon test`` with pytest's own output, failing when a test fails."""
+                packages: Sequence[str] = (), timeout: float = 600.0,
+                pytest_args: Sequence[str] = (), runner: Runner | None = None) -> ColconRun:
+    """``colcon test`` with pytest's own output, failing when a test fails.
+
+    ``pytest_args`` are passed on to pytest (``--pytest-args``).
+    """
     args = ["test", "--base-paths", *map(str, base_paths), *_paths(workspace),
             "--event-handlers", "console_direct+", "--return-code-on-test-failure"]
     if packages:
         args += ["--packages-select", *packages]
-    return _run(args, workspace, env, timeout)
+    if pytest_args:  # colcon reads a leading space as "not an option of mine"
+        args += ["--pytest-args", *(f" {a}" if a.startswith("-") else a for a in pytest_args)]
+    return _run(args, workspace, env, timeout, runner)

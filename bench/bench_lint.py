@@ -1,0 +1,237 @@
+"""Benchmark ``pkgtool lint`` against a plain ``flake8`` run on the same files (not a test).
+
+Measures, each as wall time of a fresh process (cold start included):
+
+- one package: ``pkgtool lint PKG`` versus ``flake8 PKG`` (median of ``--repeat`` runs);
+- generated workspaces of 100, 250 and 500 packages: packages per second and the time per
+  package at each size (linear in N means a flat time per package), versus ``flake8 WS``.
+
+Prints a table and writes the numbers to ``bench/results/lint-<UTC time>.json``.
+Targets: one package <= 0.25 s; >= 300 packages/s on 2 cores.
+
+    .venv/bin/python bench/bench_lint.py [--repeat 5] [--sizes 100 250 500]
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import platform
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+from datetime import datetime, timezone
+from pathlib import Path
+
+SCHEMA_LINE = ('<?xml-model href="http://download.ros.org/schema/package_format3.xsd" '
+               'schematypens="http://www.w3.org/2001/XMLSchema"?>')
+RESULTS = Path(__file__).resolve().parent / "results"
+BIN = Path(sys.executable).parent
+
+
+def _module(index: int) -> str:
+    """A plausible node module (~60 lines) importing ROS and third-party code."""
+    return f'''"""Node {index}: filters readings and republishes them."""
+
+import math
+
+import numpy as np
+import rclpy
+from rclpy.node import Node
+from sensor_msgs.msg import LaserScan
+from std_msgs.msg import Float32
+
+
+class Filter{index}(Node):
+    """Publish the smoothed minimum range of a scan."""
+
+    def __init__(self):
+        super().__init__('filter_{index}')
+        self.declare_parameter('alpha', 0.5)
+        self.alpha = self.get_parameter('alpha').value
+        self.smoothed = math.inf
+        self.subscription = self.create_subscription(LaserScan, 'scan', self.on_scan, 10)
+        self.publisher = self.create_publisher(Float32, 'closest', 10)
+
+    def on_scan(self, scan):
+        """Smooth the closest valid range."""
+        ranges = np.asarray(scan.ranges, dtype=float)
+        valid = ranges[np.isfinite(ranges)]
+        if valid.size == 0:
+            return
+        closest = float(valid.min())
+        if math.isinf(self.smoothed):
+            self.smoothed = closest
+        else:
+            self.smoothed = self.alpha * closest + (1 - self.alpha) * self.smoothed
+        message = Float32()
+        message.data = self.smoothed
+        self.publisher.publish(message)
+
+
+def main(args=None):
+    """Spin the node until shutdown."""
+    rclpy.init(args=args)
+    node = Filter{index}()
+    try:
+        rclpy.spin(node)
+    except KeyboardInterrupt:
+        pass
+    finally:
+        node.destroy_node()
+        rclpy.try_shutdown()
+
+
+if __name__ == '__main__':
+    main()
+'''
+
+
+def write_package(root: Path, name: str, modules: int = 4) -> None:
+    """A complete ament_python package: manifest, setup files, nodes, launch file, tests."""
+    scripts = "".join(f"            'node_{i} = {name}.node_{i}:main',\n" for i in range(modules))
+    files = {
+        "package.xml": f'''<?xml version="1.0"?>
+{SCHEMA_LINE}
+<package format="3">
+  <name>{name}</name>
+  <version>0.1.0</version>
+  <description>Benchmark package {name}.</description>
+  <maintainer email="dev@example.com">Dev</maintainer>
+  <license>Apache-2.0</license>
+  <depend>rclpy</depend>
+  <exec_depend>sensor_msgs</exec_depend>
+  <exec_depend>std_msgs</exec_depend>
+  <exec_depend>python3-numpy</exec_depend>
+  <exec_depend>launch</exec_depend>
+  <exec_depend>launch_ros</exec_depend>
+  <test_depend>python3-pytest</test_depend>
+  <export>
+    <build_type>ament_python</build_type>
+  </export>
+</package>
+''',
+        "setup.py": f'''from glob import glob
+import os
+
+from setuptools import find_packages, setup
+
+package_name = '{name}'
+
+setup(
+    name=package_name,
+    version='0.1.0',
+    packages=find_packages(exclude=['test']),
+    data_files=[
+        ('share/ament_index/resource_index/packages', ['resource/' + package_name]),
+        ('share/' + package_name, ['package.xml']),
+        (os.path.join('share', package_name, 'launch'), glob('launch/*.launch.py')),
+    ],
+    install_requires=['setuptools'],
+    zip_safe=True,
+    maintainer='Dev',
+    maintainer_email='dev@example.com',
+    description='Benchmark package {name}.',
+    license='Apache-2.0',
+    extras_require={{'test': ['pytest']}},
+    entry_points={{
+        'console_scripts': [
+{scripts}        ],
+    }},
+)
+''',
+        "setup.cfg": f"[develop]\nscript_dir=$base/lib/{name}\n"
+                     f"[install]\ninstall_scripts=$base/lib/{name}\n",
+        f"resource/{name}": "",
+        f"{name}/__init__.py": "",
+        f"launch/{name}.launch.py": "from launch import LaunchDescription\n"
+        "from launch_ros.actions import Node\n\n\ndef generate_launch_description():\n"
+        "    return LaunchDescription([\n" + "".join(
+            f"        Node(package='{name}', executable='node_{i}'),\n" for i in range(modules))
+        + "    ])\n",
+        "test/test_filter.py": f"import pytest\n\nfrom {name}.node_0 import Filter0\n\n\n"
+        "@pytest.mark.parametrize('alpha', [0.1, 0.9])\ndef test_alpha(alpha):\n"
+        "    assert Filter0 is not None and 0 < alpha < 1\n",
+    }
+    files.update({f"{name}/node_{i}.py": _module(i) for i in range(modules)})
+    for relpath, text in files.items():
+        path = root / relpath
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(text)
+
+
+def _time(command: list[str], cwd: Path, repeat: int) -> tuple[float, int]:
+    """Median wall time of ``repeat`` fresh runs, and the exit code of the last."""
+    times, code = [], 0
+    for _ in range(repeat):
+        start = time.perf_counter()
+        code = subprocess.run(command, cwd=cwd, stdout=subprocess.DEVNULL,
+                              stderr=subprocess.DEVNULL).returncode
+        times.append(time.perf_counter() - start)
+    return statistics.median(times), code
+
+
+def measure(repeat: int, sizes: list[int], work: Path) -> dict[str, object]:
+    """Every measurement as a JSON-ready dict."""
+    lint, flake8 = [str(BIN / "pkgtool"), "lint"], [str(BIN / "flake8")]
+    single = work / "single"
+    write_package(single, "bench_single")
+    lint_one, lint_code = _time(lint + ["."], single, repeat)
+    flake8_one, _ = _time(flake8 + ["."], single, repeat)
+    result: dict[str, object] = {
+        "single": {"pkgtool_s": lint_one, "flake8_s": flake8_one,
+                   "ratio_pkgtool_over_flake8": lint_one / flake8_one,
+                   "pkgtool_exit_code": lint_code}, "workspaces": []}
+    for size in sizes:
+        workspace = work / f"ws{size}"
+        for index in range(size):
+            write_package(workspace / "src" / f"pkg_{index:04d}", f"pkg_{index:04d}")
+        lint_ws, code = _time(lint + ["."], workspace, max(1, repeat // 2))
+        flake8_ws, _ = _time(flake8 + ["."], workspace, 1)
+        result["workspaces"].append({  # type: ignore[attr-defined]
+            "packages": size, "pkgtool_s": lint_ws, "packages_per_s": size / lint_ws,
+            "ms_per_package": 1000 * lint_ws / size, "flake8_s": flake8_ws,
+            "ratio_pkgtool_over_flake8": lint_ws / flake8_ws, "pkgtool_exit_code": code})
+    return result
+
+
+def table(result: dict[str, object]) -> str:
+    """The measurements as an aligned text table."""
+    single = result["single"]
+    assert isinstance(single, dict)
+    rows = [("case", "pkgtool s", "flake8 s", "pkgtool/flake8", "packages/s", "ms/package"),
+            ("1 package", f"{single['pkgtool_s']:.3f}", f"{single['flake8_s']:.3f}",
+             f"{single['ratio_pkgtool_over_flake8']:.2f}", "", "")]
+    for ws in result["workspaces"]:  # type: ignore[attr-defined]
+        rows.append((f"{ws['packages']} packages", f"{ws['pkgtool_s']:.3f}",
+                     f"{ws['flake8_s']:.3f}", f"{ws['ratio_pkgtool_over_flake8']:.2f}",
+                     f"{ws['packages_per_s']:.0f}", f"{ws['ms_per_package']:.2f}"))
+    widths = [max(len(row[i]) for row in rows) for i in range(len(rows[0]))]
+    return "\n".join("  ".join(c.rjust(w) for c, w in zip(row, widths)) for row in rows)
+
+
+def main() -> int:
+    """Run the benchmark, print the table, save the JSON."""
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--sizes", type=int, nargs="+", default=[100, 250, 500])
+    args = parser.parse_args()
+    with tempfile.TemporaryDirectory(prefix="pkgtool-bench-") as work:
+        result = measure(args.repeat, args.sizes, Path(work))
+    result["machine"] = {"cpus": os.cpu_count(), "python": platform.python_version(),
+                         "platform": platform.platform(),
+                         "load_average": os.getloadavg()}
+    stamp = datetime.now(timezone.utc).strftime("%Y%m%dT%H%M%SZ")
+    RESULTS.mkdir(parents=True, exist_ok=True)
+    output = RESULTS / f"lint-{stamp}.json"
+    output.write_text(json.dumps(result, indent=2) + "\n")
+    print(table(result))
+    print(f"\nsaved {output}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,99 @@
+"""``pkgtool grade``: parse options, call :mod:`pkgtool.commands.grade`, render, exit."""
+
+from __future__ import annotations
+
+import sys
+from enum import Enum
+from pathlib import Path
+from typing import TYPE_CHECKING, Annotated, Optional
+
+import typer
+
+from pkgtool.cli_test import emit
+from pkgtool.commands import ExitCode
+
+if TYPE_CHECKING:
+    from pkgtool.commands.grade import GradeResult
+
+
+class Format(str, Enum):
+    """Report formats of ``pkgtool grade`` (see ``pkgtool.grade.report``)."""
+
+    TEXT = "text"
+    JSON = "json"
+    JUNIT = "junit"
+    GRADESCOPE = "gradescope"
+    CSV = "csv"
+
+
+def _fail(*messages: str) -> typer.Exit:
+    for message in messages:
+        typer.echo(f"pkgtool grade: {message}", err=True)
+    return typer.Exit(int(ExitCode.USAGE))
+
+
+def grade(
+    submissions: Annotated[Optional[list[str]], typer.Argument(
+        help="Packages, workspaces or .zip/.tar.gz archives (with --batch: folders of them).",
+        show_default=False)] = None,
+    rubric: Annotated[Optional[str], typer.Option(
+        "--rubric", "-r", help="The rubric TOML file.", show_default=False)] = None,
+    batch: Annotated[bool, typer.Option(
+        help="Each SUBMISSION is a folder whose entries are submissions.")] = False,
+    jobs: Annotated[int, typer.Option("--jobs", "-j", help="Submissions graded at once.",
+                                      min=1)] = 1,
+    fmt: Annotated[Format, typer.Option("--format", "-f", help="Report format.")] = Format.TEXT,
+    output: Annotated[Optional[Path], typer.Option(
+        "--output", "-o", help="Write the report to this file instead of stdout.",
+        dir_okay=False)] = None,
+    init_rubric: Annotated[Optional[Path], typer.Option(
+        help="Write a commented example rubric (and hidden_tests/) to this file and exit.",
+        dir_okay=False, show_default=False)] = None,
+) -> None:
+    """Grade student submissions against a rubric, each built and tested in a sandbox.
+
+    Exit codes: 0 graded (whatever the scores), 2 usage error (bad rubric, missing path).
+    """
+    from pkgtool.commands import grade as command
+
+    if init_rubric is not None:
+        done = command.init_rubric(init_rubric)
+        if done.errors:
+            raise _fail(*done.errors)
+        for path in done.written:
+            typer.echo(f"wrote {path}", err=True)
+        raise typer.Exit(0)
+    if rubric is None:
+        raise _fail("Give the rubric with --rubric FILE (create one with --init-rubric FILE).")
+    result = _run(command, submissions or [], rubric, batch, jobs, fmt)
+    if result.errors:
+        raise _fail(*result.errors)
+    from pkgtool.grade.report import render
+
+    assert result.rubric is not None
+    emit(render(fmt.value, result.results, rubric=result.rubric), output, "grade")
+    raise typer.Exit(int(result.exit_code))
+
+
+def _run(command, submissions: list[str], rubric: str, batch: bool,  # type: ignore[no-untyped-def]
+         jobs: int, fmt: Format) -> GradeResult:
+    """Grade, with a progress bar on an interactive stderr when there are several."""
+    from rich.console import Console
+    from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
+
+    if fmt is Format.GRADESCOPE and (batch or len(submissions) != 1):
+        raise _fail("The gradescope format takes exactly one submission (not --batch).")
+    progress = Progress(TextColumn("grading"), BarColumn(), MofNCompleteColumn(),
+                        TextColumn("{task.description}"), transient=True,
+                        console=Console(stderr=True), disable=not sys.stderr.isatty())
+    task = progress.add_task("", total=None)
+    with progress:
+        return command.run(
+            submissions, rubric=rubric, batch=batch, jobs=jobs,
+            on_start=lambda total: progress.update(task, total=total),
+            on_done=lambda r: progress.update(task, advance=1, description=r.label))
+
+
+def register(app: typer.Typer) -> None:
+    """Attach ``grade`` to the root app."""
+    app.command("grade")(grade)

@@ -1,0 +1,146 @@
+"""``pkgtool lint``: parse options, call :mod:`pkgtool.commands.lint`, render, exit.
+
+Only typer and the standard library are imported here, so ``pkgtool --help`` stays fast.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from enum import Enum
+from pathlib import Path
+from typing import TYPE_CHECKING, Annotated, Optional
+
+import typer
+
+from pkgtool.commands import ExitCode
+
+if TYPE_CHECKING:
+    from pkgtool.commands.lint import LintOptions, LintResult
+
+_RULES_HELP = "Rule codes, families (MAN), code prefixes or names; comma-separated or repeated."
+
+
+class Format(str, Enum):
+    """Report formats (see ``pkgtool.report``)."""
+
+    TEXT = "text"
+    JSON = "json"
+    SARIF = "sarif"
+    GITHUB = "github"
+    JUNIT = "junit"
+
+
+def _selectors(values: Optional[list[str]]) -> tuple[str, ...]:
+    return tuple(s.strip() for value in values or () for s in value.split(",") if s.strip())
+
+
+def _fail(*messages: str, code: ExitCode) -> typer.Exit:
+    for message in messages:
+        typer.echo(f"pkgtool lint: {message}", err=True)
+    return typer.Exit(int(code))
+
+
+def _emit(text: str, output: Optional[Path]) -> None:
+    if output is None:
+        sys.stdout.write(text)
+        return
+    try:
+        output.write_text(text, encoding="utf-8")
+    except OSError as error:
+        raise _fail(f"Cannot write `{output}`: {error.strerror or error}. Choose another "
+                    "--output file.", code=ExitCode.USAGE) from None
+
+
+def _colour(fmt: Format, output: Optional[Path]) -> bool:
+    return (fmt is Format.TEXT and output is None and sys.stdout.isatty()
+            and not os.environ.get("NO_COLOR"))
+
+
+def lint(
+    paths: Annotated[Optional[list[str]], typer.Argument(
+        help="Packages, workspaces or files inside packages (default: the current folder).",
+        show_default=False)] = None,
+    fmt: Annotated[Format, typer.Option("--format", "-f", help="Report format.")] = Format.TEXT,
+    output: Annotated[Optional[Path], typer.Option(
+        "--output", "-o", help="Write the report to this file instead of stdout.",
+        dir_okay=False)] = None,
+    select: Annotated[Optional[list[str]], typer.Option(
+        help="Run only these rules. " + _RULES_HELP, show_default=False)] = None,
+    ignore: Annotated[Optional[list[str]], typer.Option(
+        help="Do not run these rules. " + _RULES_HELP, show_default=False)] = None,
+    extend_select: Annotated[Optional[list[str]], typer.Option(
+        help="Run these rules too. " + _RULES_HELP, show_default=False)] = None,
+    strict: Annotated[Optional[bool], typer.Option(
+        "--strict/--no-strict", help="Warnings fail too (default: from configuration, else off).",
+        show_default=False)] = None,
+    exit_zero: Annotated[bool, typer.Option(
+        help="Exit 0 even when findings fail (usage and internal errors still exit 2 and 3).",
+    )] = False,
+    quiet: Annotated[bool, typer.Option(
+        "--quiet", "-q", help="Leave info findings out of the report (they never fail).")] = False,
+    isolated: Annotated[bool, typer.Option(
+        help="Ignore [tool.pkgtool] in pyproject.toml files.")] = False,
+    explain: Annotated[Optional[str], typer.Option(
+        help="Print the documentation of a rule (code, name or family) and exit.",
+        show_default=False)] = None,
+    list_rules: Annotated[bool, typer.Option(help="List every rule and exit.")] = False,
+) -> None:
+    """Check ament_python packages statically: package.xml, setup.py, setup.cfg, imports, launch.
+
+    Exit codes: 0 clean (warnings allowed unless --strict), 1 failing findings, 2 usage or
+    input error, 3 internal error.
+    """
+    from pkgtool.commands import lint as command
+
+    options = command.LintOptions(_selectors(select) if select else None, _selectors(ignore),
+                                  _selectors(extend_select), strict, exit_zero, quiet, isolated)
+    try:
+        if explain is not None or list_rules:
+            _show_rules(explain, fmt, output)
+        _lint(paths or [], options, fmt, output)
+    except typer.Exit:
+        raise
+    except Exception as error:  # noqa: BLE001 - a bug in pkgtool: exit 3, not a bare traceback
+        import traceback
+
+        raise _fail(f"Internal error: {type(error).__name__}: {error}. Please report this "
+                    f"pkgtool bug with the details below.\n{traceback.format_exc()}",
+                    code=ExitCode.INTERNAL) from None
+
+
+def _lint(paths: list[str], options: LintOptions, fmt: Format, output: Optional[Path]) -> None:
+    from pkgtool.commands.lint import run
+
+    result = run(paths, options=options)
+    if result.exit_code is ExitCode.USAGE:
+        raise _fail(*result.notes, *result.errors, code=result.exit_code)
+    _report(result, fmt, output)
+    for message in (*result.notes, *result.errors):
+        typer.echo(f"pkgtool lint: {message}", err=True)
+    raise typer.Exit(int(result.exit_code))
+
+
+def _show_rules(explain: Optional[str], fmt: Format, output: Optional[Path]) -> None:
+    """``--explain RULE`` or ``--list-rules``: print and exit."""
+    from pkgtool.commands import lint as command
+
+    shown = (command.explain(explain) if explain is not None
+             else command.list_rules(as_json=fmt is Format.JSON))
+    if shown.errors:
+        raise _fail(*shown.errors, code=shown.exit_code)
+    _emit(shown.text, output)
+    raise typer.Exit(int(shown.exit_code))
+
+
+def _report(result: LintResult, fmt: Format, output: Optional[Path]) -> None:
+    from pkgtool.report import ReportContext, render
+    from pkgtool.rules.registry import load_all
+
+    context = ReportContext(result.packages, load_all(), _colour(fmt, output))
+    _emit(render(fmt.value, result.findings, context=context), output)
+
+
+def register(app: typer.Typer) -> None:
+    """Attach ``lint`` to the root app."""
+    app.command("lint")(lint)

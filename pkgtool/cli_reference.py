@@ -1,0 +1,167 @@
+"""``pkgtool reference``: list, generate and test the course documents' reference packages.
+
+Thin adapters over :mod:`pkgtool.commands.reference`; rich is imported only to draw tables and
+the progress display.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import TYPE_CHECKING, Annotated, Optional
+
+import typer
+
+from pkgtool.commands import ExitCode
+
+if TYPE_CHECKING:
+    from rich.console import Console
+
+    from pkgtool.commands.reference import PackageReport, TestRunResult
+
+reference_app = typer.Typer(
+    help="The packages the course documents describe: list, generate, lint, build and test.",
+    no_args_is_help=True)
+
+_NAMES = typer.Argument(help="Reference package names (see `pkgtool reference list`).",
+                        show_default=False)
+_ALL = typer.Option("--all", help="Every reference package.")
+
+
+def _fail(errors: tuple[str, ...], code: ExitCode) -> typer.Exit:
+    for message in errors:
+        typer.echo(f"pkgtool reference: {message}", err=True)
+    return typer.Exit(int(code))
+
+
+def _console() -> Console:
+    from rich.console import Console
+
+    return Console(highlight=False)
+
+
+@reference_app.command("list")
+def list_command() -> None:
+    """Show each reference package with its source document and nodes."""
+    from rich.table import Table
+
+    from pkgtool.commands.reference import list_packages
+
+    result = list_packages()
+    if result.errors:
+        raise _fail(result.errors, result.exit_code)
+    table = Table("package", "document", "nodes")
+    for entry in result.entries:
+        table.add_row(entry.name, entry.document, ", ".join(entry.nodes))
+    _console().print(table)
+
+
+@reference_app.command("generate")
+def generate_command(
+    names: Annotated[Optional[list[str]], _NAMES] = None,
+    all_: Annotated[bool, _ALL] = False,
+    dest: Annotated[Path, typer.Option(help="Folder to write the packages into.")] = Path("."),
+) -> None:
+    """Copy reference packages (and the support packages they need) into a folder."""
+    from pkgtool.commands.reference import generate
+
+    result = generate(names or (), all_=all_, dest=dest)
+    for path in result.written:
+        typer.echo(f"generated {path}")
+    for path in result.kept:
+        typer.echo(f"kept existing {path}")
+    if result.errors:
+        raise _fail(result.errors, result.exit_code)
+
+
+@reference_app.command("test")
+def test_command(
+    names: Annotated[Optional[list[str]], _NAMES] = None,
+    all_: Annotated[bool, _ALL] = False,
+    jobs: Annotated[Optional[int], typer.Option(
+        "--jobs", "-j", min=1, help="Packages colcon builds and tests in parallel "
+        "(default: colcon's, one per CPU).", show_default=False)] = None,
+    keep: Annotated[Optional[Path], typer.Option(
+        help="Build in this new or empty folder and keep it (default: a temporary folder).",
+        show_default=False)] = None,
+) -> None:
+    """Generate into a workspace, lint (strict), colcon build and colcon test; exit 1 on failure."""
+    from pkgtool.commands.reference import run_tests
+
+    console = _console()
+    with _progress(console) as report:
+        result = run_tests(names or (), all_=all_, jobs=jobs, keep=keep, progress=report)
+    if result.errors:
+        raise _fail(result.errors, result.exit_code)
+    _print_results(console, result)
+    raise typer.Exit(int(result.exit_code))
+
+
+class _progress:  # noqa: N801 - used like a function, as a context manager
+    """A live per-package progress display on a terminal; one line per event elsewhere (CI)."""
+
+    def __init__(self, console: Console) -> None:
+        self.console = console
+        self.bar = None
+        self.tasks: dict[str, int] = {}
+
+    def __enter__(self):  # type: ignore[no-untyped-def]
+        if self.console.is_terminal:
+            from rich.progress import Progress, SpinnerColumn, TextColumn, TimeElapsedColumn
+
+            self.bar = Progress(SpinnerColumn(), TextColumn("{task.description}"),
+                                TimeElapsedColumn(), console=self.console, transient=True)
+            self.bar.start()
+        return self.report
+
+    def report(self, name: str, stage: str) -> None:
+        if self.bar is None:
+            self.console.print(f"{name}: {stage}")
+            return
+        if name not in self.tasks:
+            self.tasks[name] = self.bar.add_task(name, total=None)
+        self.bar.update(self.tasks[name], description=f"{name}: {stage}")
+
+    def __exit__(self, *exc: object) -> None:
+        if self.bar is not None:
+            self.bar.stop()
+
+
+def _tests_cell(report: PackageReport) -> str:
+    if report.summary is None:
+        return "[dim]not run[/]"
+    counts = report.summary.counts
+    failed = counts["failed"] + counts["error"]
+    if report.summary.problem or not report.summary.ran:
+        return f"[red]{report.summary.describe()}[/]"
+    return f"[{'red' if failed else 'green'}]{counts['passed']} passed / {failed} failed[/]"
+
+
+def _print_results(console: Console, result: TestRunResult) -> None:
+    from rich.table import Table
+
+    table = Table("package", "lint findings", "build", "tests", "time", title="reference test")
+    for report in result.packages:
+        table.add_row(
+            report.name,
+            f"[{'red' if report.findings else 'green'}]{len(report.findings)}[/]",
+            "[green]ok[/]" if report.built else "[red]failed[/]",
+            _tests_cell(report),
+            f"{report.seconds:.1f} s")
+    console.print(table)
+    for report in result.packages:
+        details = list(report.findings)
+        if report.summary is not None:
+            details += [f"{c.name}: {c.outcome}: {c.message}" for c in report.summary.cases
+                        if c.outcome in ("failed", "error")]
+        if not report.built and report.output:
+            details.append(report.output)
+        if details:
+            console.print(f"[bold]{report.name}[/]", markup=True)
+            console.print("\n".join(f"  {line}" for line in details), markup=False)
+    if result.workspace is not None:
+        console.print(f"workspace kept in {result.workspace}", markup=False)
+
+
+def register(app: typer.Typer) -> None:
+    """Attach ``reference`` and its subcommands to the root app."""
+    app.add_typer(reference_app, name="reference")

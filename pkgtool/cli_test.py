@@ -1,0 +1,67 @@
+"""``pkgtool test``: parse options, call :mod:`pkgtool.commands.test`, render, exit."""
+
+from __future__ import annotations
+
+import sys
+from enum import Enum
+from pathlib import Path
+from typing import Annotated, Optional
+
+import typer
+
+from pkgtool.commands import ExitCode
+
+
+class Format(str, Enum):
+    """Report formats of ``pkgtool test``."""
+
+    TEXT = "text"
+    JSON = "json"
+    JUNIT = "junit"
+
+
+def emit(text: str, output: Optional[Path], verb: str) -> None:
+    """Print ``text``, or write it to ``output``; a write error exits with the usage code."""
+    if output is None:
+        sys.stdout.write(text)
+        return
+    try:
+        output.write_text(text, encoding="utf-8")
+    except OSError as error:
+        typer.echo(f"pkgtool {verb}: Cannot write `{output}`: {error.strerror or error}. "
+                   "Choose another --output file.", err=True)
+        raise typer.Exit(int(ExitCode.USAGE)) from None
+
+
+def test(
+    path: Annotated[str, typer.Argument(help="A package folder, or a workspace to test all of.")],
+    timeout: Annotated[float, typer.Option(
+        help="Wall-clock seconds for the build, and again for the tests.", min=1)] = 600.0,
+    test_timeout: Annotated[Optional[float], typer.Option(
+        help="Seconds per single test (needs pytest-timeout).", min=1,
+        show_default=False)] = None,
+    fmt: Annotated[Format, typer.Option("--format", "-f", help="Report format.")] = Format.TEXT,
+    output: Annotated[Optional[Path], typer.Option(
+        "--output", "-o", help="Write the report to this file instead of stdout.",
+        dir_okay=False)] = None,
+) -> None:
+    """Build a package with colcon in a temporary sandboxed workspace and run its tests.
+
+    Sibling packages it depends on (from the workspace's src folder) are built too; the
+    source tree is never written to. Exit codes: 0 tests ran and all passed, 1 a build
+    failure, a failing test or no tests at all, 2 usage error.
+    """
+    from pkgtool.commands.test import run
+    from pkgtool.grade.report.package_tests import render
+
+    result = run(path, timeout=timeout, test_timeout=test_timeout)
+    for message in result.errors:
+        typer.echo(f"pkgtool test: {message}", err=True)
+    if result.packages:
+        emit(render(fmt.value, result), output, "test")
+    raise typer.Exit(int(result.exit_code))
+
+
+def register(app: typer.Typer) -> None:
+    """Attach ``test`` to the root app."""
+    app.command("test")(test)

@@ -1,0 +1,187 @@
+"""``pkgtool lint``: find packages, read each once, run the configured rules, decide the exit code.
+
+Nothing here prints: :func:`run` returns a frozen :class:`LintResult` that the CLI renders.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import os
+import threading
+from collections.abc import Iterator, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Union
+
+from pkgtool.commands import ExitCode
+from pkgtool.config import ConfigError, ConfigFinder, Layer, Settings
+from pkgtool.findings import Finding, Severity
+from pkgtool.report import PackageLabel
+from pkgtool.workspace import discover
+
+__all__ = ["LintOptions", "LintResult", "TextResult", "explain", "list_rules", "run"]
+
+PACKAGES_PER_WORKER = 16
+"""Below this many packages per extra process, a process pool costs more than it saves."""
+
+
+@dataclass(frozen=True, slots=True)
+class LintOptions:
+    """Command-line choices; None means "not given" (the configuration files decide)."""
+
+    select: tuple[str, ...] | None = None
+    ignore: tuple[str, ...] = ()
+    extend_select: tuple[str, ...] = ()
+    strict: bool | None = None
+    exit_zero: bool = False
+    hide_info: bool = False
+    isolated: bool = False
+
+
+@dataclass(frozen=True, slots=True)
+class LintResult:
+    """Findings package by package, the packages checked, and what went wrong besides.
+
+    ``errors`` are full sentences for stderr (usage or internal errors); ``notes`` are
+    warnings about the run itself (a folder holding no package).
+    """
+
+    exit_code: ExitCode
+    findings: tuple[Finding, ...] = ()
+    packages: tuple[PackageLabel, ...] = ()
+    errors: tuple[str, ...] = ()
+    notes: tuple[str, ...] = ()
+
+
+def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) -> LintResult:
+    """Lint the packages found at ``paths`` (relative to ``cwd``; none means ``cwd``)."""
+    here = Path(os.path.abspath(cwd or Path.cwd()))
+    found = discover(paths, cwd=here)
+    if found.missing:
+        return LintResult(ExitCode.USAGE, errors=tuple(
+            f"Path `{p}` does not exist. Check the spelling, or run from another folder."
+            for p in found.missing))
+    command_line = Layer("the command line", None, options.select, options.ignore,
+                         options.extend_select, options.strict)
+    finder = ConfigFinder(command_line, isolated=options.isolated)
+    notes = tuple(f"No package (a folder with package.xml or setup.py) found under `{p}`."
+                  for p in found.empty)
+    try:
+        settings = [finder.settings(root) for root in found.packages]
+        if not found.packages:
+            finder.settings(here)  # still validate the command line and the config in reach
+    except ConfigError as error:
+        return LintResult(ExitCode.USAGE, errors=(str(error),), notes=notes)
+    jobs = [(root, _label(root, here), setting) for root, setting in zip(found.packages, settings)]
+    findings: list[Finding] = []
+    labels: list[PackageLabel] = []
+    errors: list[str] = []
+    failing = False
+    for (root, label, setting), outcome in zip(jobs, _check_all(jobs)):
+        if isinstance(outcome, str):
+            errors.append(outcome)
+            labels.append(PackageLabel(root.name, label))
+            continue
+        name, mine = outcome
+        labels.append(PackageLabel(name, label))
+        if options.hide_info:
+            mine = [f for f in mine if f.severity is not Severity.INFO]
+        failing = failing or any(_fails(f, setting.strict) for f in mine)
+        findings.extend(mine)
+    internal = bool(errors) or any(f.internal for f in findings)
+    code = (ExitCode.INTERNAL if internal else
+            ExitCode.FINDINGS if failing and not options.exit_zero else ExitCode.OK)
+    return LintResult(code, tuple(findings), tuple(labels), tuple(errors), notes)
+
+
+Job = tuple[Path, str, Settings]
+Outcome = Union[tuple[str, list[Finding]], str]
+
+
+def _check_all(jobs: list[Job]) -> Iterator[Outcome]:
+    """Each job's outcome in order; a process per core once there are enough packages."""
+    workers = min(_cpus(), len(jobs) // PACKAGES_PER_WORKER)
+    forkable = "fork" in multiprocessing.get_all_start_methods() and threading.active_count() == 1
+    if workers < 2 or not forkable:
+        yield from map(_check, jobs)
+        return
+    from concurrent.futures import ProcessPoolExecutor
+
+    context = multiprocessing.get_context("fork")  # workers inherit the loaded rules; no threads
+    with ProcessPoolExecutor(workers, mp_context=context) as pool:
+        yield from pool.map(_check, jobs, chunksize=max(1, len(jobs) // (workers * 8)))
+
+
+def _cpus() -> int:
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # not Linux
+        return os.cpu_count() or 1
+
+
+def _check(job: Job) -> Outcome:
+    """Read one package and check it; an exception becomes an internal-error message."""
+    from pkgtool.engine import check_package
+    from pkgtool.model.package import load_package
+
+    root, label, settings = job
+    try:
+        package = load_package(root)
+        found = check_package(package, settings.rules, root_label=label,
+                              severities=settings.severities)
+    except Exception as error:  # noqa: BLE001 - report it, keep linting the others
+        return (f"Internal error while reading the package at `{label}`: "
+                f"{type(error).__name__}: {error}. Please report this pkgtool bug.")
+    if settings.path_ignores:
+        found = [f for f in found
+                 if f.internal or not settings.ignores(root / f.span.path, f.code)]
+    return package.name, found
+
+
+def _fails(finding: Finding, strict: bool) -> bool:
+    return finding.severity is Severity.ERROR or (strict and finding.severity is Severity.WARNING)
+
+
+def _label(root: Path, cwd: Path) -> str:
+    """``root`` relative to ``cwd`` when inside it (``.`` for cwd itself), else absolute."""
+    try:
+        return root.relative_to(cwd).as_posix() or "."
+    except ValueError:
+        return root.as_posix()
+
+
+@dataclass(frozen=True, slots=True)
+class TextResult:
+    """Text to print (``--explain``, ``--list-rules``) or errors with the exit code."""
+
+    exit_code: ExitCode
+    text: str = ""
+    errors: tuple[str, ...] = ()
+
+
+def explain(selector: str) -> TextResult:
+    """The documentation of the rules a code, name, family or prefix selects."""
+    from pkgtool.docs_gen import explain as explain_rule
+    from pkgtool.rules.registry import resolve
+
+    rules = resolve(selector) if selector.strip() else []
+    if not rules:
+        return TextResult(ExitCode.USAGE, errors=(
+            f"Unknown rule `{selector}`. Run `pkgtool lint --list-rules` to see the rules.",))
+    return TextResult(ExitCode.OK, "\n".join(explain_rule(rule) for rule in rules))
+
+
+def list_rules(*, as_json: bool = False) -> TextResult:
+    """Every registered rule, as an aligned table or a JSON list."""
+    import json
+
+    from pkgtool.docs_gen import rules_table
+    from pkgtool.rules.registry import load_all
+
+    rules = load_all()
+    if not as_json:
+        return TextResult(ExitCode.OK, rules_table(rules))
+    rows = [{"code": r.code, "name": r.name, "severity": r.severity.value, "family": r.family,
+             "default_enabled": r.default_enabled, "summary": r.summary, "fix": r.fix}
+            for r in rules.values()]
+    return TextResult(ExitCode.OK, json.dumps(rows, indent=2) + "\n")

@@ -1,0 +1,102 @@
+"""``pkgtool test``: build a package with colcon in a temporary sandboxed workspace, run its tests.
+
+The package (and the sibling packages of its workspace it depends on) is copied into a
+temporary workspace: the source tree is never written to. Nothing here prints: :func:`run`
+returns a frozen :class:`TestResult` that the CLI renders.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+from pkgtool.commands import ExitCode
+from pkgtool.grade.junit import TestSummary
+from pkgtool.grade.sources import SourcePackage, find_packages, with_dependencies
+from pkgtool.workspace import is_package
+
+__all__ = ["PackageTests", "TestResult", "run"]
+
+
+@dataclass(frozen=True, slots=True)
+class PackageTests:
+    """One package's build and test outcome; ``summary`` is None when the build failed."""
+
+    name: str
+    built: bool
+    summary: TestSummary | None
+    output: str = ""
+    limit: str | None = None
+    seconds: float = 0.0
+
+    @property
+    def ok(self) -> bool:
+        """True when it built, tests ran, and all of them passed."""
+        return self.built and self.summary is not None and self.summary.ok
+
+
+@dataclass(frozen=True, slots=True)
+class TestResult:
+    """Every tested package, the sandbox in force, or ``errors`` (sentences) for a usage error."""
+
+    exit_code: ExitCode
+    packages: tuple[PackageTests, ...] = ()
+    isolation: str = ""
+    errors: tuple[str, ...] = ()
+
+
+def run(path: str, *, timeout: float = 600.0, test_timeout: float | None = None,
+        cwd: Path | None = None, mode: str | None = None) -> TestResult:
+    """Build and test the package at ``path``, or every package of the workspace there."""
+    folder = Path(os.path.abspath((cwd or Path.cwd()) / path))
+    if not folder.is_dir():
+        return TestResult(ExitCode.USAGE, errors=(
+            f"`{path}` is not a folder. Name a package or a workspace folder.",))
+    targets, available = _targets(folder)
+    if not targets:
+        return TestResult(ExitCode.USAGE, errors=(
+            f"No package (a folder with `package.xml`) in `{path}`. Name a package folder.",))
+    packages, isolation = _build_and_test(targets, available, timeout, test_timeout, mode)
+    code = ExitCode.OK if all(p.ok for p in packages) else ExitCode.FINDINGS
+    return TestResult(code, packages, isolation)
+
+
+def _targets(folder: Path) -> tuple[list[SourcePackage], list[SourcePackage]]:
+    """The packages to test, and those they may depend on (their workspace's ``src``)."""
+    if not is_package(folder):
+        found = find_packages(folder)
+        return found, found
+    workspace = next((p for p in folder.parents if p.name == "src"), None)
+    available = find_packages(workspace) if workspace else []
+    target = next((p for p in available if p.root == folder), None)
+    if target is None:
+        target = find_packages(folder)[0]
+        available.append(target)
+    return [target], available
+
+
+def _build_and_test(targets: Sequence[SourcePackage], available: Sequence[SourcePackage],
+                    timeout: float, test_timeout: float | None,
+                    mode: str | None) -> tuple[tuple[PackageTests, ...], str]:
+    from pkgtool.grade.grader import domain_for
+    from pkgtool.grade.runner import WorkspaceRunner
+    from pkgtool.grade.sandbox import Limits, sandbox
+    from pkgtool.grade.sources import copy_packages
+
+    needed = {p.name: p for t in targets for p in with_dependencies(t, available)}
+    with sandbox(Limits(timeout=timeout), mode=mode) as box:
+        copy_packages(needed.values(), box.workspace / "src")
+        runner = WorkspaceRunner(box, domain_id=domain_for(0))
+        names = [t.name for t in targets]
+        build = runner.build(names)
+        if not build.ok:
+            failed = tuple(PackageTests(n, False, None, build.output, build.limit, build.seconds)
+                           for n in names)
+            return failed, box.describe()
+        results = []
+        for name in names:
+            run, summary = runner.test(name, test_timeout=test_timeout)
+            results.append(PackageTests(name, True, summary, run.output, run.limit, run.seconds))
+        return tuple(results), box.describe()

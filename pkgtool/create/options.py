@@ -1,0 +1,185 @@
+"""What ``pkgtool create`` is asked for, checked before anything is rendered or written.
+
+:func:`validate` turns raw command-line values into a frozen :class:`Plan` or raises
+:class:`CreateError` with a message that says what to do; nothing here touches the disk.
+"""
+
+from __future__ import annotations
+
+import keyword
+import re
+import sys
+from dataclasses import dataclass
+from pathlib import Path
+
+from pkgtool.create import CreateError
+from pkgtool.create.licenses import LICENSES
+from pkgtool.create.nodes import NodeSpec, parse_node
+from pkgtool.knowledge import rosdep
+
+# REP 144: lowercase alphanumerics, single underscores between, a letter first, 2+ characters.
+_NAME = re.compile(r"^[a-z][a-z0-9]*(_[a-z0-9]+)*$")
+_ROSDEP_KEY = re.compile(r"^python3-[a-z0-9][a-z0-9.+-]*$")
+_RESERVED = {"test": "it is the folder of the package's tests, which setup.py excludes"}
+_LINTER_TESTS = frozenset({"copyright", "flake8", "pep257"})
+MAX_NAME = {"package name": 40, "node name": 32, "library name": 32}
+"""Longer names do not fit the 99-character lines of ament's flake8 settings."""
+_FORMATS = (2, 3)
+
+
+@dataclass(frozen=True, slots=True)
+class Request:
+    """The raw values from the command line (``None``: not given, take the default)."""
+
+    name: str
+    destination: Path
+    description: str | None = None
+    license: str = "Apache-2.0"
+    maintainer_name: str = ""
+    maintainer_email: str = ""
+    dependencies: tuple[str, ...] = ()
+    node_name: str | None = None
+    library_name: str | None = None
+    package_format: int = 3
+    nodes: tuple[str, ...] = ()
+    msg: str | None = None
+    srv: str | None = None
+    action: str | None = None
+    launch: bool = False
+    config: bool = False
+    year: int = 1970
+
+
+@dataclass(frozen=True, slots=True)
+class Plan:
+    """A checked request: everything the renderer needs, nothing left to default."""
+
+    name: str
+    destination: Path
+    description: str
+    license: str
+    maintainer_name: str
+    maintainer_email: str
+    year: int
+    package_format: int
+    nodes: tuple[NodeSpec, ...]
+    library_name: str | None
+    depends: tuple[str, ...]
+    exec_depends: tuple[str, ...]
+    test_depends: tuple[str, ...]
+    launch: bool
+    config: bool
+
+    @property
+    def root(self) -> Path:
+        """The package folder to create."""
+        return self.destination / self.name
+
+
+def check_name(value: str, what: str) -> str:
+    """``value`` if it is a valid REP 144 name usable as a Python module, else CreateError."""
+    problem = None
+    if not _NAME.match(value):
+        problem = ("use only lowercase letters, digits and single underscores, starting with a "
+                   "letter (REP 144)")
+    elif not 2 <= len(value) <= MAX_NAME[what]:
+        problem = (f"use 2 to {MAX_NAME[what]} characters (longer names do not fit ament's "
+                   "99-character lines)")
+    elif keyword.iskeyword(value):
+        problem = "it is a Python keyword"
+    elif value in sys.stdlib_module_names:
+        problem = "it would shadow the standard library module of that name"
+    elif value in _RESERVED:
+        problem = _RESERVED[value]
+    if problem:
+        raise CreateError(f"Invalid {what} `{value}`: {problem}.")
+    return value
+
+
+def _text(value: str, what: str, limit: int) -> str:
+    if any(ord(c) < 32 for c in value) or not value.strip() or len(value) > limit:
+        raise CreateError(f"Invalid {what} {value!r}: give one line of 1 to {limit} characters.")
+    return value.strip()
+
+
+def _email(value: str) -> str:
+    if not re.fullmatch(r"[^@\s<>\"']+@[^@\s<>\"']+", value):
+        raise CreateError(f"Invalid maintainer email {value!r}: give an address like "
+                          "`jane@example.com`.")
+    return value
+
+
+def sort_dependencies(values: tuple[str, ...]) -> tuple[set[str], set[str]]:
+    """Split ``--dependencies`` into ROS packages (depend) and rosdep keys (exec_depend)."""
+    ros: set[str] = set()
+    python: set[str] = set()
+    keys = set(rosdep.PYTHON_MODULE_KEYS.values())
+    for value in values:
+        key = rosdep.key_for_python_module(value)
+        if key or value in keys or _ROSDEP_KEY.match(value):
+            python.add(key or value)
+        elif value in rosdep.stdlib_modules():
+            raise CreateError(f"Dependency `{value}` is in Python's standard library: it needs "
+                              "no declaration. Drop it from --dependencies.")
+        elif rosdep.suggested_key(value):
+            raise CreateError(f"Dependency `{value}` is not a ROS package or a known Python "
+                              f"module: use the rosdep key `{rosdep.suggested_key(value)}`.")
+        elif _NAME.match(value):
+            ros.add(value)
+        else:
+            raise CreateError(f"Dependency `{value}` is neither a ROS package name nor a known "
+                              "Python module. Give a ROS package (`sensor_msgs`), a Python "
+                              "module (`numpy`) or a rosdep key (`python3-numpy`).")
+    return ros, python
+
+
+def _nodes(request: Request) -> tuple[NodeSpec, ...]:
+    specs = [parse_node(text, msg=request.msg, srv=request.srv, action=request.action)
+             for text in request.nodes]
+    if request.node_name:
+        specs.insert(0, parse_node(f"{request.node_name}:timer"))
+    seen: set[str] = set()
+    for spec in specs:
+        check_name(spec.name, "node name")
+        if spec.name in _LINTER_TESTS:
+            raise CreateError(f"Invalid node name `{spec.name}`: its test would be "
+                              f"test/test_{spec.name}.py, the ament linter test. Rename it.")
+        if spec.name in seen or spec.name == request.library_name:
+            raise CreateError(f"Node name `{spec.name}` is used twice: give each node and the "
+                              "library its own name.")
+        seen.add(spec.name)
+    return tuple(specs)
+
+
+def validate(request: Request) -> Plan:
+    """Check every value of ``request``; return the :class:`Plan` or raise CreateError."""
+    name = check_name(request.name, "package name")
+    if request.license not in LICENSES:
+        raise CreateError(f"Unknown license `{request.license}`. Choose one of: "
+                          f"{', '.join(LICENSES)}.")
+    if request.package_format not in _FORMATS:
+        raise CreateError(f"Unsupported package format {request.package_format}: use 3 "
+                          "(the default) or 2.")
+    if request.library_name:
+        check_name(request.library_name, "library name")
+    nodes = _nodes(request)
+    if (request.launch or request.config) and not nodes:
+        raise CreateError("--launch and --config need at least one node: add `--node "
+                          "NAME:KIND`.")
+    ros, python = sort_dependencies(request.dependencies)
+    ros |= ({"rclpy"} if nodes else set()) | {n.interface.package for n in nodes if n.interface}
+    tests = {"ament_copyright", "ament_flake8", "ament_pep257", "python3-pytest"}
+    if any(n.kind.interface == "action" for n in nodes):
+        tests.add("action_msgs")
+    execs = python | ({"launch", "launch_ros"} if request.launch else set())
+    description = request.description or f"The {name} ROS 2 Python package."
+    return Plan(
+        name=name, destination=request.destination,
+        description=_text(description, "description", 1000),
+        license=request.license,
+        maintainer_name=_text(request.maintainer_name, "maintainer name", 80),
+        maintainer_email=_email(request.maintainer_email),
+        year=request.year, package_format=request.package_format, nodes=nodes,
+        library_name=request.library_name, depends=tuple(sorted(ros)),
+        exec_depends=tuple(sorted(execs - ros)), test_depends=tuple(sorted(tests - ros)),
+        launch=request.launch, config=request.config)

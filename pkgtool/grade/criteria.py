@@ -1,0 +1,159 @@
+"""Score each kind of rubric criterion for one prepared job, with feedback for the student."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from pkgtool.engine import Selection, check_package
+from pkgtool.findings import Severity
+from pkgtool.grade.junit import TestSummary
+from pkgtool.grade.results import CriterionResult
+from pkgtool.grade.rubric import Criterion, Rubric
+from pkgtool.grade.runner import WorkspaceRunner, place
+from pkgtool.model.package import Package
+from pkgtool.ros.colcon import ColconRun
+
+MAX_LINES = 20
+HIDDEN_FOLDER = "pkgtool_hidden_tests"
+
+
+@dataclass
+class Job:
+    """One submission ready to grade: its workspace runner, target package and cached runs."""
+
+    rubric: Rubric
+    runner: WorkspaceRunner
+    package: Package
+    copy: Path
+    _runs: dict[str, tuple[ColconRun, TestSummary | None]] = field(default_factory=dict)
+
+    @property
+    def name(self) -> str:
+        """The graded package's name."""
+        return self.package.name
+
+    def build(self) -> ColconRun:
+        """The (single) colcon build of the job."""
+        if "build" not in self._runs:
+            self._runs["build"] = (self.runner.build([self.name]), None)
+        return self._runs["build"][0]
+
+    def tests(self, exclude: tuple[str, ...]) -> tuple[ColconRun, TestSummary | None]:
+        """The student's own tests, run once per distinct ``exclude`` list."""
+        key = "tests:" + ",".join(exclude)
+        if key not in self._runs:
+            self._runs[key] = self.runner.test(self.name, test_timeout=self.rubric.test_timeout,
+                                               ignore=exclude)
+        return self._runs[key]
+
+    def hidden(self, folder: Path) -> tuple[ColconRun, TestSummary | None]:
+        """Instructor tests from ``folder``, copied into the package copy and run there."""
+        key = f"hidden:{folder}"
+        if key not in self._runs:
+            dest = place(folder, self.copy / HIDDEN_FOLDER / folder.name, self.runner.box)
+            report = self.runner.workspace / f"hidden-{len(self._runs)}.xml"
+            self._runs[key] = self.runner.pytest(dest, report=report,
+                                                 test_timeout=self.rubric.test_timeout)
+        return self._runs[key]
+
+
+def evaluate(criterion: Criterion, job: Job) -> CriterionResult:
+    """Score ``criterion`` on ``job``; the rubric's feedback is added when marks are lost."""
+    if criterion.kind in ("lint", "style"):
+        score, lines, output = _lint(criterion, job)
+    elif criterion.kind == "build":
+        score, lines, output = _build(criterion, job)
+    elif not job.build().ok:
+        score, lines, output = 0.0, ["Not checked: the package does not build"], ""
+    else:
+        score, lines, output = _AFTER_BUILD[criterion.kind](criterion, job)
+    score = round(max(0.0, min(criterion.points, score)), 2)
+    if score < criterion.points and criterion.feedback:
+        lines = [*lines, criterion.feedback]
+    return CriterionResult(criterion.name, criterion.kind, score, criterion.points,
+                           tuple(lines), output, criterion.visibility)
+
+
+Outcome = tuple[float, list[str], str]
+
+
+def _build(criterion: Criterion, job: Job) -> Outcome:
+    run = job.build()
+    if run.ok:
+        return criterion.points, [f"`colcon build` succeeded in {run.seconds:.1f} s"], ""
+    why = f" ({run.limit})" if run.limit else ""
+    return 0.0, [f"`colcon build` failed{why}"], _tail(run.output)
+
+
+def _lint(criterion: Criterion, job: Job) -> Outcome:
+    rules = Selection(select=criterion.select, ignore=criterion.ignore).rules()
+    floor = Severity(criterion.min_severity).rank
+    found = [f for f in check_package(job.package, rules, root_label=job.name)
+             if f.severity.rank >= floor]
+    if not found:
+        return criterion.points, [f"No findings from {', '.join(criterion.select)}"], ""
+    lines = [f"{f.span.path}:{f.span.line}: {f.code} {f.message}" for f in found[:MAX_LINES]]
+    if len(found) > MAX_LINES:
+        lines.append(f"... and {len(found) - MAX_LINES} more")
+    if criterion.per_finding is None:
+        return 0.0, lines, ""
+    return criterion.points - criterion.per_finding * len(found), lines, ""
+
+
+def _executables(criterion: Criterion, job: Job) -> Outcome:
+    problems = job.runner.entry_points(job.name, criterion.names)
+    good = [name for name, problem in problems.items() if not problem]
+    lines = [problem or f"`{name}` is installed and loads" for name, problem in problems.items()]
+    return _credit(criterion, len(good), len(problems)), lines, ""
+
+
+def _tests(criterion: Criterion, job: Job) -> Outcome:
+    run, summary = job.tests(criterion.exclude)
+    assert summary is not None
+    if summary.ran < criterion.min_tests:
+        found = summary.problem or ("no tests ran" if not summary.ran
+                                    else f"only {summary.ran} tests ran")
+        return 0.0, [f"{found}; write at least {criterion.min_tests} test(s)",
+                     *_limit(run)], _tail(run.output)
+    return _test_outcome(criterion, run, summary)
+
+
+def _hidden(criterion: Criterion, job: Job) -> Outcome:
+    assert criterion.path is not None
+    run, summary = job.hidden(criterion.path)
+    assert summary is not None
+    if not summary.ran:
+        return 0.0, [summary.problem or "no instructor test ran", *_limit(run)], \
+            _tail(run.output)
+    return _test_outcome(criterion, run, summary)
+
+
+def _test_outcome(criterion: Criterion, run: ColconRun, summary: TestSummary) -> Outcome:
+    lines = [summary.describe(), *_limit(run)]
+    failing = [c for c in summary.cases if c.outcome in ("failed", "error")]
+    lines += [f"{c.outcome.upper()} {c.name}: {c.message}" for c in failing[:MAX_LINES]]
+    output = "\n".join(f"{c.outcome.upper():7} {c.name} ({c.seconds:.2f} s)"
+                       + (f"\n{c.details}" if c.details else "") for c in summary.cases)
+    return _credit(criterion, summary.passed, summary.ran), lines, output
+
+
+def _credit(criterion: Criterion, good: int, total: int) -> float:
+    if not total:
+        return 0.0
+    if criterion.partial:
+        return criterion.points * good / total
+    return criterion.points if good == total else 0.0
+
+
+def _limit(run: ColconRun) -> list[str]:
+    return [f"Stopped: {run.limit}"] if run.limit else []
+
+
+def _tail(text: str, lines: int = 60) -> str:
+    return "\n".join(text.splitlines()[-lines:])
+
+
+_AFTER_BUILD: dict[str, Callable[[Criterion, Job], Outcome]] = {
+    "executables": _executables, "tests": _tests, "hidden": _hidden}

@@ -1,0 +1,74 @@
+"""Grade one submission: unpack or copy it into a sandboxed job, score every criterion."""
+
+from __future__ import annotations
+
+import os
+import time
+import traceback
+from pathlib import Path
+
+from pkgtool.grade.criteria import Job, evaluate
+from pkgtool.grade.extract import SubmissionError, extract, is_archive
+from pkgtool.grade.results import CriterionResult, SubmissionResult
+from pkgtool.grade.rubric import Rubric
+from pkgtool.grade.runner import WorkspaceRunner
+from pkgtool.grade.sandbox import Sandbox, sandbox
+from pkgtool.grade.sources import (choose_target, copy_packages, find_packages, tree_digest,
+                                   with_dependencies)
+from pkgtool.model.package import load_package
+
+
+def domain_for(slot: int) -> int:
+    """A ROS domain id (1-101) for job ``slot``, distinct across concurrent jobs and runs."""
+    return 1 + (os.getpid() * 7 + slot) % 101
+
+
+def grade_submission(path: Path, rubric: Rubric, *, label: str | None = None, slot: int = 0,
+                     mode: str | None = None) -> SubmissionResult:
+    """Grade ``path`` (package, workspace or archive); never raises for a bad submission."""
+    label = label or path.name
+    start = time.monotonic()
+    before = tree_digest(path) if path.exists() else ""
+    package, error, criteria, isolation = None, None, (), ""
+    try:
+        with sandbox(rubric.limits, mode=mode) as box:
+            job = _prepare(path, rubric, box, slot)
+            package = job.name
+            criteria = tuple(evaluate(c, job) for c in rubric.criteria)
+            isolation = box.describe()
+    except SubmissionError as problem:
+        error = str(problem)
+    except Exception as crash:  # noqa: BLE001 - one broken job must not stop the batch
+        where = traceback.extract_tb(crash.__traceback__)[-1]
+        error = (f"internal error while grading: {type(crash).__name__}: {crash} "
+                 f"({Path(where.filename).name}:{where.lineno})")
+    if error:
+        criteria = not_graded(rubric, error)
+    unchanged = (tree_digest(path) if path.exists() else "") == before
+    return SubmissionResult(label, str(path), round(sum(c.score for c in criteria), 2),
+                            rubric.max_score, criteria, package, error, isolation,
+                            round(time.monotonic() - start, 2), unchanged)
+
+
+def not_graded(rubric: Rubric, error: str) -> tuple[CriterionResult, ...]:
+    """Zero on every criterion, each saying why nothing was graded."""
+    return tuple(CriterionResult(c.name, c.kind, 0.0, c.points, (f"Not graded: {error}",),
+                                 visibility=c.visibility) for c in rubric.criteria)
+
+
+def _prepare(path: Path, rubric: Rubric, box: Sandbox, slot: int) -> Job:
+    if not path.exists():
+        raise SubmissionError(f"`{path}` does not exist")
+    tree = path
+    if is_archive(path):
+        tree = box.workspace.parent / "unpacked"
+        tree.mkdir(mode=0o700)
+        extract(path, tree)
+    elif not path.is_dir():
+        raise SubmissionError(f"`{path.name}` is neither a folder nor a .zip/.tar.gz archive")
+    available = find_packages(tree)
+    target = choose_target(available, rubric.package)
+    copies = copy_packages(with_dependencies(target, available), box.workspace / "src")
+    runner = WorkspaceRunner(box, domain_id=domain_for(slot))
+    copy = copies[target.name]
+    return Job(rubric, runner, load_package(copy), copy)

@@ -1,0 +1,92 @@
+"""Read pytest's JUnit XML into per-test results, treating the file as untrusted input."""
+
+from __future__ import annotations
+
+from collections import Counter
+from dataclasses import dataclass
+from pathlib import Path
+
+MAX_XML_BYTES = 16 * 1024 * 1024
+OUTCOMES = ("passed", "failed", "error", "skipped")
+
+
+@dataclass(frozen=True, slots=True)
+class TestCase:
+    """One test: ``name`` is ``classname.name`` as pytest reports it; ``outcome`` in OUTCOMES."""
+
+    name: str
+    outcome: str
+    seconds: float
+    message: str = ""
+    details: str = ""
+
+
+@dataclass(frozen=True, slots=True)
+class TestSummary:
+    """The tests of one run, or ``problem`` saying why there are none to read."""
+
+    cases: tuple[TestCase, ...] = ()
+    problem: str | None = None
+
+    @property
+    def counts(self) -> dict[str, int]:
+        """How many tests had each outcome (every outcome present, zero included)."""
+        found = Counter(c.outcome for c in self.cases)
+        return {outcome: found[outcome] for outcome in OUTCOMES}
+
+    @property
+    def ran(self) -> int:
+        """Tests that ran (skipped ones do not count)."""
+        return sum(1 for c in self.cases if c.outcome != "skipped")
+
+    @property
+    def passed(self) -> int:
+        """Tests that passed."""
+        return self.counts["passed"]
+
+    @property
+    def ok(self) -> bool:
+        """True when tests ran and every one of them passed: no tests is not a pass."""
+        return self.ran > 0 and self.passed == self.ran
+
+    def describe(self) -> str:
+        """``3 passed, 1 failed`` style summary, or the problem."""
+        if self.problem:
+            return self.problem
+        if not self.ran:
+            return "no tests ran"
+        return ", ".join(f"{n} {outcome}" for outcome, n in self.counts.items() if n)
+
+
+def parse_junit(path: Path) -> TestSummary:
+    """The test cases of a pytest JUnit XML file; a missing or bad file is a ``problem``."""
+    from lxml import etree
+
+    try:
+        size = path.stat().st_size
+        if size > MAX_XML_BYTES:
+            return TestSummary(problem=f"the test report is {size} bytes, too large to read")
+        parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
+                                 huge_tree=False)
+        root = etree.parse(str(path), parser).getroot()
+    except FileNotFoundError:
+        return TestSummary(problem="no tests ran (pytest wrote no report)")
+    except (OSError, etree.XMLSyntaxError) as error:
+        return TestSummary(problem=f"the test report cannot be read: {error}")
+    return TestSummary(tuple(_case(element) for element in root.iter("testcase")))
+
+
+def _case(element) -> TestCase:  # type: ignore[no-untyped-def]
+    classname, name = element.get("classname") or "", element.get("name") or "?"
+    full = f"{classname}.{name}" if classname else name
+    try:
+        seconds = float(element.get("time") or 0.0)
+    except ValueError:
+        seconds = 0.0
+    for tag, outcome in (("failure", "failed"), ("error", "error"), ("skipped", "skipped")):
+        found = element.find(tag)
+        if found is not None:
+            text = (found.text or "").strip()
+            message = found.get("message") or (text.splitlines() or [""])[-1]
+            return TestCase(full, outcome, seconds, message[:500], text[-4000:])
+    return TestCase(full, "passed", seconds)

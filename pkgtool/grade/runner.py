@@ -1,0 +1,138 @@
+"""Build and test the packages of a job's workspace (``<ws>/src``) with colcon, in the sandbox.
+
+Used by ``pkgtool test`` and by the grading criteria. Every command runs through
+:meth:`pkgtool.grade.sandbox.Sandbox.run` with an isolated ROS environment of its own.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import os
+import shutil
+import sys
+import sysconfig
+from collections.abc import Sequence
+from pathlib import Path
+
+from pkgtool.grade.junit import TestSummary, parse_junit
+from pkgtool.grade.sandbox import Sandbox
+from pkgtool.ros.colcon import ColconRun, colcon_build, colcon_env, colcon_test
+
+_ENTRY_POINT_PROBE = """
+import importlib.metadata as md, json, sys
+scripts = {}
+for dist in md.distributions(path=sys.argv[1].split(':')):
+    for ep in dist.entry_points:
+        if ep.group == 'console_scripts':
+            scripts[ep.name] = ep
+for name in sys.argv[2:]:
+    ep = scripts.get(name)
+    if ep is None:
+        problem = f'`{name}` is not declared in `console_scripts`'
+    else:
+        try:
+            problem = '' if callable(ep.load()) else f'`{ep.value}` is not callable'
+        except BaseException as error:
+            problem = f'`{ep.value}` cannot be loaded: {type(error).__name__}: {error}'
+    print('PKGTOOL-ENTRY-POINT ' + json.dumps([name, problem]), flush=True)
+"""
+
+
+class WorkspaceRunner:
+    """colcon build/test and pytest runs in ``box.workspace`` (sources under ``src``)."""
+
+    def __init__(self, box: Sandbox, *, domain_id: int) -> None:
+        """Prepare the isolated ROS environment (domain ``domain_id``) of this workspace."""
+        self.box = box
+        self.workspace = box.workspace
+        self.env = colcon_env(self.workspace, domain_id=domain_id, base=box.base_env())
+        box.give(self.workspace)
+
+    @property
+    def src(self) -> Path:
+        """Where the sources to build live."""
+        return self.workspace / "src"
+
+    def build(self, packages: Sequence[str]) -> ColconRun:
+        """``colcon build --packages-up-to`` the given packages."""
+        return colcon_build(self.workspace, base_paths=[self.src], env=self.env,
+                            packages=packages, runner=self.box.run,
+                            timeout=self.box.limits.timeout)
+
+    def test(self, package: str, *, test_timeout: float | None = None,
+             ignore: Sequence[str] = ()) -> tuple[ColconRun, TestSummary]:
+        """``colcon test`` one package and read its ``pytest.xml``."""
+        args = [*_timeout_args(test_timeout), *(f"--ignore={path}" for path in ignore)]
+        run = colcon_test(self.workspace, base_paths=[self.src], env=self.env,
+                          packages=[package], pytest_args=args, runner=self.box.run,
+                          timeout=self.box.limits.timeout)
+        return run, parse_junit(self.workspace / "build" / package / "pytest.xml")
+
+    def installed_env(self) -> dict[str, str]:
+        """The environment with every installed package of the workspace on the paths."""
+        env = dict(self.env)
+        install = self.workspace / "install"
+        prefixes = sorted(p for p in install.iterdir() if p.is_dir()) if install.is_dir() else []
+        env["AMENT_PREFIX_PATH"] = os.pathsep.join([*map(str, prefixes),
+                                                    env.get("AMENT_PREFIX_PATH", "")])
+        env["PYTHONPATH"] = os.pathsep.join(str(p) for p in _site_packages(prefixes))
+        return env
+
+    def pytest(self, tests: Path, *, report: Path,
+               test_timeout: float | None = None) -> tuple[ColconRun, TestSummary]:
+        """Run pytest on the folder ``tests`` against the installed packages.
+
+        Only ``tests``'s own conftest files and an empty configuration apply: nothing of the
+        package around it (its setup.cfg, pytest.ini or conftest.py) can change the run.
+        """
+        config = self.workspace / "pkgtool-pytest.ini"
+        config.write_text("[pytest]\n")
+        self.box.give(config)
+        command = [sys.executable, "-m", "pytest", "-c", str(config), "--rootdir", str(tests),
+                   "--confcutdir", str(tests), "-p", "no:cacheprovider", "-o",
+                   "junit_family=xunit2", f"--junit-xml={report}", *_timeout_args(test_timeout),
+                   str(tests)]
+        run = self.box.run(command, tests, self.installed_env())
+        return run, parse_junit(report)
+
+    def entry_points(self, package: str, names: Sequence[str]) -> dict[str, str]:
+        """For each console script name, "" when installed and loadable, else the problem."""
+        prefixes = [self.workspace / "install" / package]
+        command = [sys.executable, "-c", _ENTRY_POINT_PROBE,
+                   ":".join(map(str, _site_packages(prefixes))), *names]
+        run = self.box.run(command, self.workspace, self.installed_env())
+        found = {}
+        for line in run.output.splitlines():
+            if line.startswith("PKGTOOL-ENTRY-POINT "):
+                name, problem = json.loads(line.split(" ", 1)[1])
+                found[name] = problem
+        scripts = self.workspace / "install" / package / "lib" / package
+        problems = {}
+        for name in names:
+            problem = found.get(name, f"`{name}` could not be checked ({run.limit or 'crashed'})")
+            if not problem and not os.access(scripts / name, os.X_OK):
+                problem = (f"`{name}` is not installed in `lib/{package}` (`ros2 run` cannot "
+                           "find it; check `setup.cfg`'s script_dir)")
+            problems[name] = problem
+        return problems
+
+
+def place(source: Path, dest: Path, box: Sandbox) -> Path:
+    """Copy the instructor folder ``source`` to ``dest`` in the workspace, owned by the sandbox."""
+    shutil.copytree(source, dest, symlinks=False, dirs_exist_ok=True,
+                    ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
+    box.give(dest)
+    return dest
+
+
+def _timeout_args(seconds: float | None) -> list[str]:
+    """pytest-timeout's per-test limit, when that plugin is installed."""
+    if not seconds or importlib.util.find_spec("pytest_timeout") is None:
+        return []
+    return [f"--timeout={seconds:g}"]
+
+
+def _site_packages(prefixes: Sequence[Path]) -> list[Path]:
+    relative = Path(sysconfig.get_path("purelib")).relative_to(sys.prefix)
+    return [p / relative for p in prefixes if (p / relative).is_dir()]

@@ -1,0 +1,52 @@
+"""NumPy names that no longer exist in the ``numpy`` namespace, and what to write instead.
+
+Checked against NumPy 2.4's ``numpy._expired_attrs_2_0`` and a live ``getattr`` (see
+tests/lint/test_dependencies_knowledge.py). ``bool`` and ``long`` came back in NumPy 2.0 with
+other meanings, but they are missing from NumPy 1.24-1.26, the versions Ubuntu 24.04 ships
+for ROS 2 Jazzy, so code that uses them breaks on the robot.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+
+@dataclass(frozen=True, slots=True)
+class Removed:
+    """``removed_in`` is the NumPy release that dropped the name; ``use`` the replacement."""
+
+    removed_in: str
+    use: str
+
+
+_ALIASES_1_24 = {"float": "float", "int": "int", "object": "object", "str": "str",
+                 "complex": "complex", "unicode": "str"}
+_BACK_IN_2_0 = {"bool": "bool` or `np.bool_", "long": "int` or `np.int_"}
+
+_REMOVED_2_0 = {
+    "int0": "np.intp", "uint0": "np.uintp", "bool8": "np.bool_", "float_": "np.float64",
+    "complex_": "np.complex128", "cfloat": "np.complex128", "singlecomplex": "np.complex64",
+    "longfloat": "np.longdouble", "clongfloat": "np.clongdouble",
+    "longcomplex": "np.clongdouble", "string_": "np.bytes_", "unicode_": "np.str_",
+    "Inf": "np.inf", "Infinity": "np.inf", "infty": "np.inf", "NaN": "np.nan",
+    "NINF": "-np.inf", "PINF": "np.inf", "NZERO": "-0.0", "PZERO": "0.0",
+    "product": "np.prod", "cumproduct": "np.cumprod", "alltrue": "np.all",
+    "sometrue": "np.any", "round_": "np.round", "asfarray": "np.asarray(a, dtype=float)",
+    "msort": "np.sort(a, axis=0)", "mat": "np.asmatrix", "issubclass_": "issubclass",
+    "safe_eval": "ast.literal_eval", "find_common_type": "np.result_type",
+    "recfromtxt": "np.genfromtxt", "recfromcsv": "np.genfromtxt(..., delimiter=',')",
+    "set_string_function": "np.set_printoptions", "cast": "np.asarray(a, dtype=dtype)",
+    "source": "inspect.getsource", "byte_bounds": "np.lib.array_utils.byte_bounds",
+}
+_REMOVED_EARLIER = {"asscalar": ("1.23", "a.item()"), "alen": ("1.23", "len(a)"),
+                    "rank": ("1.18", "np.ndim"), "loads": ("1.17", "pickle.loads")}
+_REMOVED_2_4 = {"trapz": "np.trapezoid", "in1d": "np.isin"}
+
+REMOVED: dict[str, Removed] = {
+    **{name: Removed("1.24", f"the builtin `{use}`") for name, use in _ALIASES_1_24.items()},
+    **{name: Removed("1.24 (back in 2.0)", f"`{use}`") for name, use in _BACK_IN_2_0.items()},
+    **{name: Removed("2.0", f"`{use}`") for name, use in _REMOVED_2_0.items()},
+    **{name: Removed(version, f"`{use}`") for name, (version, use) in _REMOVED_EARLIER.items()},
+    **{name: Removed("2.4", f"`{use}`") for name, use in _REMOVED_2_4.items()},
+}
+"""Attribute of ``numpy`` -> when it went away and its replacement."""

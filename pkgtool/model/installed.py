@@ -1,0 +1,162 @@
+"""What ``colcon build`` installs from an ament_python package, as far as setup.py tells.
+
+Module names map to their source files (setuptools' ``build_py`` rules: every ``*.py`` directly
+in each listed package's folder, ``package_dir`` mapping, ``py_modules``), and data_files
+destinations map to their sources. Every function returns None when setup.py leaves the answer
+to code the evaluator could not compute.
+"""
+
+from __future__ import annotations
+
+import posixpath
+from fnmatch import fnmatchcase
+
+from pkgtool.model.package import Package
+
+_CFG_KEYWORDS = {
+    "name": ("metadata", "name"), "version": ("metadata", "version"),
+    "license": ("metadata", "license"), "maintainer": ("metadata", "maintainer"),
+    "maintainer_email": ("metadata", "maintainer_email"),
+    "packages": ("options", "packages"), "package_dir": ("options", "package_dir"),
+    "py_modules": ("options", "py_modules"), "tests_require": ("options", "tests_require"),
+    "extras_require": ("options.extras_require", None),
+    "entry_points": ("options.entry_points", None), "data_files": ("options.data_files", None),
+}
+"""Where setup.cfg's declarative configuration can give each setup() keyword."""
+
+
+def is_ament_python(package: Package) -> bool:
+    """True for a package colcon builds with setup.py (ament_python, or no CMakeLists.txt)."""
+    manifest = package.manifest
+    if manifest is not None and manifest.build_type is not None:
+        return manifest.build_type.value == "ament_python"
+    return not package.has_file("CMakeLists.txt")
+
+
+def keyword_known(package: Package, keyword: str) -> bool:
+    """True when setup.py's value for ``keyword`` is known: evaluated, or certainly absent."""
+    setup = package.setup_py
+    if setup is None or setup.setup_span is None:
+        return False
+    if setup.is_unresolved(keyword) or setup.is_unresolved("**"):
+        return False
+    if keyword in setup.keywords or package.setup_cfg is None:
+        return True
+    section, option = _CFG_KEYWORDS.get(keyword, (None, None))
+    cfg = package.setup_cfg
+    if option is None:
+        return not any(o.section == section for o in cfg.options)
+    return cfg.get(section, option) is None
+
+
+def package_folder(package_name: str, package_dir: dict[str, str]) -> str:
+    """The folder setuptools reads a dotted package from (``build_py.get_package_dir``)."""
+    path = package_name.split(".") if package_name else []
+    tail: list[str] = []
+    while path:
+        mapped = package_dir.get(".".join(path))
+        if mapped is not None:
+            return posixpath.normpath(posixpath.join(mapped, *tail)) if tail or mapped else ""
+        tail.insert(0, path.pop())
+    root = package_dir.get("", "")
+    joined = posixpath.join(root, *tail) if tail else root
+    return posixpath.normpath(joined) if joined else ""
+
+
+def installed_modules(package: Package) -> dict[str, str] | None:
+    """Every dotted module name setup.py installs, mapped to its package-relative file."""
+    setup = package.setup_py
+    if setup is None or not all(keyword_known(package, k)
+                                for k in ("packages", "py_modules", "package_dir")):
+        return None
+    if setup.packages is None and setup.py_modules is None:
+        return None  # setuptools' automatic discovery decides; not simulated
+    package_dir = setup.package_dir or {}
+    by_folder: dict[str, list[str]] = {}
+    for file in package.files:
+        if file.endswith(".py"):
+            by_folder.setdefault(posixpath.dirname(file), []).append(file)
+    modules: dict[str, str] = {}
+    for name in setup.packages.names if setup.packages else ():
+        for file in by_folder.get(package_folder(name, package_dir), ()):
+            stem = posixpath.basename(file)[:-3]
+            if file != "setup.py":
+                modules[name if stem == "__init__" else f"{name}.{stem}"] = file
+    for name in setup.py_modules or ():
+        parent, _, leaf = name.rpartition(".")
+        file = posixpath.join(package_folder(parent, package_dir), leaf + ".py")
+        if package.has_file(file):
+            modules[name] = file
+    return modules
+
+
+def installed_data(package: Package) -> dict[str, str] | None:
+    """data_files: installed path (relative to the install prefix) -> source file."""
+    setup = package.setup_py
+    if setup is None or not keyword_known(package, "data_files"):
+        return None
+    installed: dict[str, str] = {}
+    for entry in setup.data_files or ():
+        if entry.sources_is_text:
+            continue
+        for source in entry.sources:
+            for match in source.matches:
+                if package.has_file(match):
+                    target = posixpath.join(entry.destination, posixpath.basename(match))
+                    installed[posixpath.normpath(target)] = match
+    return installed
+
+
+def why_not_installed(package: Package, module: str) -> str:
+    """A short explanation of why ``module`` is not among the installed modules."""
+    setup = package.setup_py
+    assert setup is not None
+    package_dir = setup.package_dir or {}
+    parent, _, leaf = module.rpartition(".")
+    candidates = [posixpath.join(package_folder(module, package_dir), "__init__.py"),
+                  posixpath.join(package_folder(parent, package_dir), leaf + ".py")]
+    source = next((c for c in candidates if package.has_file(c)), None)
+    if source is None:
+        near = _same_file_elsewhere(package, module)
+        hint = f" (`{near}` exists, but `package_dir` does not point there)" if near else ""
+        return f"there is no `{candidates[1]}` or `{candidates[0]}`{hint}"
+    if source.endswith("/__init__.py"):
+        owner = module
+    else:
+        owner = parent
+    if not owner:
+        return f"`{leaf}.py` is a top-level module, and `py_modules` does not list `{leaf}`"
+    return _why_package_missing(package, owner)
+
+
+def _same_file_elsewhere(package: Package, module: str) -> str | None:
+    tail = module.replace(".", "/")
+    return next((f for f in package.files
+                 if f.endswith((f"/{tail}.py", f"/{tail}/__init__.py"))), None)
+
+
+def _why_package_missing(package: Package, owner: str) -> str:
+    spec = package.setup_py.packages if package.setup_py else None
+    if spec is None:
+        return f"setup.py installs no packages, so `{owner}` is left out"
+    if spec.kind == "list":
+        shown = ", ".join(f"'{n}'" for n in spec.names)
+        parents = [n for n in spec.names if owner.startswith(n + ".")]
+        if parents:
+            return (f"`packages=[{shown}]` drops subpackages: `{owner}` is not listed "
+                    "(it only works with `--symlink-install`)")
+        return f"`packages=[{shown}]` does not list `{owner}`"
+    finder = f"{spec.kind}()"
+    root = "" if posixpath.normpath(spec.where) == "." else posixpath.normpath(spec.where)
+    parts = owner.split(".")
+    if spec.kind == "find_packages":
+        for depth in range(1, len(parts) + 1):
+            init = posixpath.join(root, *parts[:depth], "__init__.py")
+            if not package.has_file(init):
+                return f"`{init}` is missing, so `{finder}` skips `{owner}`"
+    excluded = [p for p in spec.exclude if fnmatchcase(owner, p)]
+    if excluded:
+        return f"`{finder}` excludes `{owner}` with the pattern `{excluded[0]}`"
+    if not any(fnmatchcase(owner, p) for p in spec.include):
+        return f"`{finder}` includes only {', '.join(f'`{p}`' for p in spec.include)}"
+    return f"`{finder}` with `where='{spec.where}'` does not find `{owner}`"

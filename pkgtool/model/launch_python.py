@@ -1,0 +1,251 @@
+"""Python launch files read with ``ast``: the nodes, packages and share files they name.
+
+A small evaluator follows string literals, module- and function-level names assigned once,
+concatenation, f-strings, ``os.path.join``, ``pathlib`` ``/``, ``PathJoinSubstitution`` and the
+share-folder lookups. Whatever else it meets (``LaunchConfiguration``, parameters, loops) is
+unknown, and unknown values are never reported.
+"""
+
+from __future__ import annotations
+
+import ast
+from dataclasses import dataclass
+
+from pkgtool.model.launch import FileRef, NodeRef, PackageRef
+from pkgtool.model.span import Span
+
+SHARE_LOOKUPS = frozenset({"get_package_share_directory", "get_package_share_path",
+                           "FindPackageShare"})
+PREFIX_LOOKUPS = frozenset({"get_package_prefix", "FindPackagePrefix", "FindPackage"})
+NODE_ACTIONS = frozenset({"Node", "LifecycleNode", "ComposableNodeContainer"})
+PLUGIN_ACTIONS = frozenset({"ComposableNode"})
+JOINS = frozenset({"join", "PathJoinSubstitution", "joinpath"})
+CONCATENATING = ("LaunchDescriptionSource", "Command")
+_MAX_DEPTH = 40
+
+
+@dataclass(frozen=True, slots=True)
+class Share:
+    """A package's share folder (``share``) or install prefix, plus static path parts."""
+
+    package: str
+    parts: tuple[str, ...] = ()
+    share: bool = True
+
+
+Value = str | Share | tuple | None
+"""What an expression evaluates to: a string, a share path, a tuple of values, or unknown."""
+
+
+def _name(func: ast.expr) -> str:
+    return func.id if isinstance(func, ast.Name) else (
+        func.attr if isinstance(func, ast.Attribute) else "")
+
+
+def _split(text: str) -> tuple[str, ...] | None:
+    parts = tuple(p for p in text.split("/") if p not in ("", "."))
+    return None if ".." in parts else parts
+
+
+def _bindings(body: list[ast.stmt], params: ast.arguments | None) -> dict[str, ast.expr | None]:
+    """Names bound in one scope: the single assigned expression, or None when ambiguous."""
+    found: dict[str, ast.expr | None] = {}
+    if params is not None:
+        for arg in (*params.posonlyargs, *params.args, *params.kwonlyargs,
+                    params.vararg, params.kwarg):
+            if arg is not None:
+                found[arg.arg] = None
+    nodes = _scope_nodes(body)
+    simple = {id(n.targets[0]) for n in nodes if _simple_assignment(n)}
+    for node in nodes:
+        if _simple_assignment(node):
+            name = node.targets[0].id  # type: ignore[attr-defined]
+            found[name] = None if name in found else node.value  # type: ignore[attr-defined]
+        elif isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
+            if id(node) not in simple:
+                found[node.id] = None
+        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            found[node.name] = None
+        elif isinstance(node, (ast.Import, ast.ImportFrom)):
+            found.update({(a.asname or a.name).split(".")[0]: None for a in node.names})
+        elif isinstance(node, (ast.Global, ast.Nonlocal)):
+            found.update({name: None for name in node.names})
+    return found
+
+
+def _simple_assignment(node: ast.AST) -> bool:
+    return (isinstance(node, ast.Assign) and len(node.targets) == 1
+            and isinstance(node.targets[0], ast.Name))
+
+
+def _scope_nodes(body: list[ast.stmt]) -> list[ast.AST]:
+    """Every node of ``body`` that belongs to this scope (nested defs appear, not their body)."""
+    result: list[ast.AST] = []
+    stack: list[ast.AST] = list(reversed(body))
+    while stack:
+        node = stack.pop()
+        result.append(node)
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)):
+            continue
+        stack.extend(reversed(list(ast.iter_child_nodes(node))))
+    return result
+
+
+class _Reader(ast.NodeVisitor):
+    def __init__(self, path: str, tree: ast.Module) -> None:
+        self.path = path
+        self.scopes = [_bindings(tree.body, None)]
+        self.nodes: list[NodeRef] = []
+        self.packages: list[PackageRef] = []
+        self.files: list[FileRef] = []
+
+    def _span(self, node: ast.AST) -> Span:
+        return Span(self.path, getattr(node, "lineno", 1), getattr(node, "col_offset", 0) + 1)
+
+    # scopes -----------------------------------------------------------------------------
+    def visit_FunctionDef(self, node: ast.FunctionDef | ast.AsyncFunctionDef) -> None:
+        for default in (*node.args.defaults, *node.args.kw_defaults, *node.decorator_list):
+            if default is not None:
+                self.visit(default)
+        self.scopes.append(_bindings(node.body, node.args))
+        for statement in node.body:
+            self.visit(statement)
+        self.scopes.pop()
+
+    visit_AsyncFunctionDef = visit_FunctionDef
+
+    # evaluation -------------------------------------------------------------------------
+    def value(self, node: ast.expr | None, depth: int = 0, top: int | None = None) -> Value:
+        if node is None or depth > _MAX_DEPTH:
+            return None
+        if isinstance(node, ast.Constant):
+            return node.value if isinstance(node.value, str) else None
+        if isinstance(node, ast.Name):
+            return self._name_value(node.id, depth, top)
+        if isinstance(node, (ast.List, ast.Tuple)):
+            return tuple(self.value(e, depth + 1, top) for e in node.elts)
+        if isinstance(node, ast.JoinedStr):
+            return _concat([None if isinstance(v, ast.FormattedValue) and v.format_spec else
+                            self.value(v.value if isinstance(v, ast.FormattedValue) else v,
+                                       depth + 1, top) for v in node.values])
+        if isinstance(node, ast.BinOp):
+            left = self.value(node.left, depth + 1, top)
+            right = self.value(node.right, depth + 1, top)
+            if isinstance(node.op, ast.Add):
+                return _concat([left, right])
+            return _join([left, right]) if isinstance(node.op, ast.Div) else None
+        if isinstance(node, ast.Call):
+            return self._call_value(node, depth, top)
+        return None
+
+    def _name_value(self, name: str, depth: int, top: int | None) -> Value:
+        levels = self.scopes if top is None else self.scopes[: top + 1]
+        for level in range(len(levels) - 1, -1, -1):
+            if name in levels[level]:
+                return self.value(levels[level][name], depth + 1, level)
+        return None
+
+    def _call_value(self, node: ast.Call, depth: int, top: int | None) -> Value:
+        name = _name(node.func)
+        first = node.args[0] if node.args else None
+        if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
+            package = self.value(_keyword(node, "package") or first, depth + 1, top)
+            return Share(package, (), name in SHARE_LOOKUPS) if isinstance(package, str) else None
+        if name in JOINS:
+            items = [self.value(a, depth + 1, top) for a in node.args]
+            if isinstance(node.func, ast.Attribute) and name == "joinpath":
+                items.insert(0, self.value(node.func.value, depth + 1, top))
+            if name == "PathJoinSubstitution" and len(items) == 1 and isinstance(items[0], tuple):
+                items = list(items[0])
+            return _join(items)
+        if name in ("Path", "PurePath", "str", "TextSubstitution") and len(node.args) == 1:
+            return self.value(first, depth + 1, top)
+        if name.endswith(CONCATENATING) and first is not None:
+            inner = self.value(first, depth + 1, top)
+            return _concat(list(inner)) if isinstance(inner, tuple) else inner
+        return None
+
+    # recording --------------------------------------------------------------------------
+    def visit_Call(self, node: ast.Call) -> None:
+        name = _name(node.func)
+        if name in NODE_ACTIONS or name in PLUGIN_ACTIONS:
+            package = self.value(_keyword(node, "package"))
+            executable = None if name in PLUGIN_ACTIONS else self.value(
+                _keyword(node, "executable") or _keyword(node, "node_executable"))
+            self.nodes.append(NodeRef(package if isinstance(package, str) else None,
+                                      executable if isinstance(executable, str) else None,
+                                      self._span(node)))
+        elif name == "ExecuteProcess":
+            self._ros2_run(node)
+        if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
+            found = self.value(node)
+            if isinstance(found, Share):
+                self.packages.append(PackageRef(found.package, self._span(node)))
+        self._record_path(node)
+        self.generic_visit(node)
+
+    def _ros2_run(self, node: ast.Call) -> None:
+        command = self.value(_keyword(node, "cmd"))
+        if (isinstance(command, tuple) and len(command) >= 4 and command[:2] == ("ros2", "run")
+                and all(isinstance(c, str) for c in command[2:4])):
+            self.nodes.append(NodeRef(command[2], command[3], self._span(node)))
+
+    def visit_BinOp(self, node: ast.BinOp) -> None:
+        self._record_path(node)
+        self.generic_visit(node)
+
+    def visit_JoinedStr(self, node: ast.JoinedStr) -> None:
+        self._record_path(node)
+        self.generic_visit(node)
+
+    def _record_path(self, node: ast.expr) -> None:
+        found = self.value(node)
+        if isinstance(found, Share) and found.share and found.parts:
+            self.files.append(FileRef(found.package, found.parts, self._span(node)))
+
+
+def _keyword(node: ast.Call, name: str) -> ast.expr | None:
+    return next((k.value for k in node.keywords if k.arg == name), None)
+
+
+def _concat(items: list[Value]) -> Value:
+    """String concatenation: strings stay strings; a share path may be followed by '/...'."""
+    if not items or any(i is None or isinstance(i, tuple) for i in items):
+        return None
+    head, rest = items[0], items[1:]
+    if any(isinstance(i, Share) for i in rest):
+        return None
+    tail = "".join(str(i) for i in rest)
+    if isinstance(head, Share):
+        if tail and not tail.startswith("/"):
+            return None
+        parts = _split(tail)
+        return None if parts is None else Share(head.package, head.parts + parts, head.share)
+    return str(head) + tail
+
+
+def _join(items: list[Value]) -> Value:
+    """``os.path.join`` semantics over a share path and strings (an absolute part: unknown)."""
+    if not items or not isinstance(items[0], Share):
+        return None
+    head = items[0]
+    parts = list(head.parts)
+    for item in items[1:]:
+        piece = _split(item) if isinstance(item, str) and not item.startswith("/") else None
+        if piece is None:
+            return None
+        parts.extend(piece)
+    return Share(head.package, tuple(parts), head.share)
+
+
+def read_python_launch(path: str, tree: ast.Module) -> tuple[
+        tuple[NodeRef, ...], tuple[PackageRef, ...], tuple[FileRef, ...]]:
+    """The nodes, package lookups and share files of a parsed Python launch file."""
+    reader = _Reader(path, tree)
+    reader.visit(tree)
+    files = [f for f in reader.files if not any(
+        o.package == f.package and o.parts[: len(f.parts)] == f.parts != o.parts
+        for o in reader.files)]
+    unique = {(f.package, f.parts, f.span.line): f for f in reversed(files)}
+    return (tuple(reader.nodes), tuple(reader.packages),
+            tuple(sorted(unique.values(), key=lambda f: (f.span.line, f.span.col))))

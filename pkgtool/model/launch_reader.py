@@ -1,0 +1,153 @@
+"""Read launch files statically: Python through ``ast``, XML through lxml, YAML through PyYAML.
+
+Nothing is executed. Substitutions that only resolve at launch time (``$(var x)``,
+``LaunchConfiguration``) leave the affected field unknown (None) instead of guessed.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+
+from pkgtool.model.launch import FileRef, LaunchFile, NodeRef, PackageRef
+from pkgtool.model.span import ParseProblem, Span
+from pkgtool.model.xml import XmlElement
+
+_LOOKUP = re.compile(r"\$\(\s*find-pkg-(share|prefix)\s+([A-Za-z0-9_]+)\s*\)")
+_SHARE_PATH = re.compile(r"^\$\(\s*find-pkg-share\s+([A-Za-z0-9_]+)\s*\)(/[^$]*)$")
+NODE_TAGS = {"node": ("exec", "executable"), "lifecycle_node": ("exec", "executable"),
+             "node_container": ("exec", "executable"), "composable_node": ()}
+"""Launch actions that start a node, and the attribute(s) naming its executable."""
+
+
+def kind_of(path: str) -> str:
+    """``python``, ``xml`` or ``yaml`` from the launch file's name."""
+    if path.endswith(".py"):
+        return "python"
+    return "xml" if path.endswith(".xml") else "yaml"
+
+
+def read_launch(path: str, text: str) -> LaunchFile:
+    """Read one launch file; a file that does not parse carries a ``problem`` instead."""
+    kind = kind_of(path)
+    if kind == "python":
+        return _python(path, text)
+    reader = _xml if kind == "xml" else _yaml
+    found = reader(path, text)
+    if isinstance(found, ParseProblem):
+        return LaunchFile(path, kind, (), (), (), problem=found)
+    nodes, values = found
+    packages, files = _substitutions(values)
+    return LaunchFile(path, kind, tuple(nodes), packages, files)
+
+
+def _python(path: str, text: str) -> LaunchFile:
+    from pkgtool.model.launch_python import read_python_launch
+    from pkgtool.model.python_visitor import module_from_tree, parse_tree
+
+    tree = parse_tree(path, text)
+    if isinstance(tree, ParseProblem):
+        from pkgtool.model.modules import PythonModule
+
+        return LaunchFile(path, "python", (), (), (), PythonModule(path, (), frozenset(), tree),
+                          tree)
+    try:
+        nodes, packages, files = read_python_launch(path, tree)
+    except RecursionError:  # absurdly nested code: treat everything as unknown
+        nodes, packages, files = (), (), ()
+    return LaunchFile(path, "python", nodes, packages, files, module_from_tree(path, tree))
+
+
+def _static(value: str | None) -> str | None:
+    """An attribute value, or None when it holds a substitution or is empty."""
+    return value if value and "$(" not in value else None
+
+
+def _substitutions(values: list[tuple[str, Span]]) -> tuple[tuple[PackageRef, ...],
+                                                            tuple[FileRef, ...]]:
+    packages: list[PackageRef] = []
+    files: list[FileRef] = []
+    for value, span in values:
+        packages.extend(PackageRef(m.group(2), span) for m in _LOOKUP.finditer(value))
+        share = _SHARE_PATH.match(value.strip())
+        if share:
+            parts = tuple(p for p in share.group(2).split("/") if p not in ("", "."))
+            if parts and ".." not in parts:
+                files.append(FileRef(share.group(1), parts, span))
+    return tuple(packages), tuple(files)
+
+
+# XML -------------------------------------------------------------------------------------
+def _xml(path: str, text: str) -> tuple[list[NodeRef], list[tuple[str, Span]]] | ParseProblem:
+    from pkgtool.model.xml import parse_xml
+
+    root = parse_xml(path, text)
+    if isinstance(root, ParseProblem):
+        return root
+    nodes: list[NodeRef] = []
+    values: list[tuple[str, Span]] = []
+    for element in _elements(root):
+        if element.tag in NODE_TAGS:
+            executable = next((element.attribute(a) for a in NODE_TAGS[element.tag]
+                               if element.attribute(a) is not None), None)
+            nodes.append(NodeRef(_static(element.attribute("pkg")), _static(executable),
+                                 element.span))
+        values.extend((value, element.span) for _, value in element.attributes)
+    return nodes, values
+
+
+def _elements(root: XmlElement) -> Iterator[XmlElement]:
+    stack = [root]
+    while stack:
+        element = stack.pop()
+        yield element
+        stack.extend(reversed(element.children))
+
+
+# YAML ------------------------------------------------------------------------------------
+def _yaml(path: str, text: str) -> tuple[list[NodeRef], list[tuple[str, Span]]] | ParseProblem:
+    import yaml
+
+    try:
+        root = yaml.compose(text, Loader=yaml.SafeLoader)
+    except yaml.MarkedYAMLError as error:
+        mark = error.problem_mark or error.context_mark
+        line, col = (mark.line + 1, mark.column + 1) if mark else (1, 1)
+        return ParseProblem("yaml-syntax", Span(path, line, col), str(error.problem or error))
+    except (yaml.YAMLError, RecursionError) as error:
+        return ParseProblem("yaml-syntax", Span(path, 1, 1), str(error) or "YAML nested too deeply")
+    nodes: list[NodeRef] = []
+    values: list[tuple[str, Span]] = []
+    seen: set[int] = set()
+    stack = [root] if root is not None else []
+    while stack:
+        node = stack.pop()
+        if id(node) in seen:  # aliases share nodes: visit each once (no billion laughs)
+            continue
+        seen.add(id(node))
+        span = Span(path, node.start_mark.line + 1, node.start_mark.column + 1)
+        if isinstance(node, yaml.ScalarNode):
+            values.append((str(node.value), span))
+        elif isinstance(node, yaml.MappingNode):
+            for key, value in node.value:
+                if isinstance(key, yaml.ScalarNode) and key.value in NODE_TAGS and \
+                        isinstance(value, yaml.MappingNode):
+                    nodes.append(_yaml_node(key, value, path))
+                stack.extend((value, key))
+        elif isinstance(node, yaml.SequenceNode):
+            stack.extend(reversed(node.value))
+    nodes.sort(key=lambda n: (n.span.line, n.span.col))
+    return nodes, values
+
+
+def _yaml_node(tag: object, mapping: object, path: str) -> NodeRef:
+    """A ``node:`` (or similar) mapping of a YAML launch file; ``tag`` is its key node."""
+    import yaml
+
+    assert isinstance(tag, yaml.ScalarNode) and isinstance(mapping, yaml.MappingNode)
+    fields = {k.value: v.value for k, v in mapping.value
+              if isinstance(k, yaml.ScalarNode) and isinstance(v, yaml.ScalarNode)}
+    executable = next((fields[a] for a in NODE_TAGS[tag.value] if a in fields), None)
+    mark = tag.start_mark
+    return NodeRef(_static(fields.get("pkg")), _static(executable),
+                   Span(path, mark.line + 1, mark.column + 1))

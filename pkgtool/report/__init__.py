@@ -1,0 +1,67 @@
+"""Reports: one module per format, each a pure ``render(findings, *, context) -> str``.
+
+Renderers never read files or the environment; everything they need is in the
+:class:`ReportContext` (the rule catalogue for rule metadata, the packages checked, colour).
+"""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Mapping, Sequence
+from dataclasses import dataclass, field
+
+from pkgtool.findings import Finding, Severity
+from pkgtool.rules.registry import Rule
+
+__all__ = ["FORMATS", "PackageLabel", "ReportContext", "counts", "display_path", "render",
+           "sorted_findings"]
+
+FORMATS = ("text", "json", "sarif", "github", "junit")
+"""Output formats, each a module ``pkgtool.report.<format>``."""
+
+
+@dataclass(frozen=True, slots=True)
+class PackageLabel:
+    """A package that was checked: its name and its root as shown (relative to the cwd)."""
+
+    name: str
+    root: str
+
+
+@dataclass(frozen=True, slots=True)
+class ReportContext:
+    """What renderers know besides the findings."""
+
+    packages: Sequence[PackageLabel] = ()
+    rules: Mapping[str, Rule] = field(default_factory=dict)
+    color: bool = False
+
+
+def render(fmt: str, findings: Sequence[Finding], *, context: ReportContext) -> str:
+    """Render ``findings`` in format ``fmt`` (one of :data:`FORMATS`)."""
+    if fmt not in FORMATS:
+        raise ValueError(f"unknown report format {fmt!r}")
+    module = importlib.import_module(f"pkgtool.report.{fmt}")
+    return str(module.render(sorted_findings(findings), context=context))
+
+
+def display_path(finding: Finding) -> str:
+    """The finding's file as the user sees it: the package root joined with the span path."""
+    root, path = finding.root.rstrip("/"), finding.span.path
+    if not path:
+        return root or "."
+    return path if root in ("", ".") else f"{root}/{path}"
+
+
+def sorted_findings(findings: Sequence[Finding]) -> list[Finding]:
+    """Findings in report order: path, line, column, code."""
+    return sorted(findings, key=lambda f: (display_path(f), f.span.line, f.span.col, f.code,
+                                           f.message))
+
+
+def counts(findings: Sequence[Finding]) -> dict[str, int]:
+    """Number of findings per severity, every severity present."""
+    result = {s.value: 0 for s in Severity}
+    for finding in findings:
+        result[finding.severity.value] += 1
+    return result

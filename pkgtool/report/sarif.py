@@ -1,0 +1,81 @@
+"""SARIF 2.1.0 for code-scanning services, with each rule's metadata from the registry."""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Sequence
+from pathlib import PurePosixPath
+from urllib.parse import quote
+
+from pkgtool import __version__
+from pkgtool.findings import Finding, Severity
+from pkgtool.report import ReportContext, display_path
+from pkgtool.rules.registry import FAMILIES, Rule
+
+SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
+LEVELS = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
+
+
+def rule_descriptor(rule: Rule) -> dict[str, object]:
+    """A ``reportingDescriptor``: id, name, descriptions, help and default level."""
+    return {
+        "id": rule.code,
+        "name": rule.name,
+        "shortDescription": {"text": rule.summary},
+        "fullDescription": {"text": _description(rule.doc)},
+        "help": {"text": rule.doc, "markdown": rule.doc},
+        "defaultConfiguration": {"level": LEVELS[rule.severity],
+                                 "enabled": rule.default_enabled},
+        "properties": {"tags": [rule.family, FAMILIES.get(rule.family, "")]},
+    }
+
+
+def _description(doc: str) -> str:
+    """The first paragraph of the ``## What it does`` section, else the summary line."""
+    _, _, rest = doc.partition("## What it does")
+    paragraph = rest.strip().split("\n\n", 1)[0].strip()
+    return " ".join(paragraph.split()) or doc.strip().split("\n", 1)[0]
+
+
+def _uri(path: str) -> dict[str, str]:
+    if PurePosixPath(path).is_absolute():
+        return {"uri": "file://" + quote(path)}
+    return {"uri": quote(path), "uriBaseId": "%SRCROOT%"}
+
+
+def _result(finding: Finding, index: dict[str, int]) -> dict[str, object]:
+    region = {"startLine": finding.span.line} if finding.span.line else {}
+    if region and finding.span.col:
+        region["startColumn"] = finding.span.col
+    location: dict[str, object] = {"artifactLocation": _uri(display_path(finding))}
+    if region:
+        location["region"] = region
+    result: dict[str, object] = {
+        "ruleId": finding.code,
+        "level": LEVELS[finding.severity],
+        "message": {"text": f"{finding.message}. Fix: {finding.fix}" if finding.fix
+                    else finding.message},
+        "locations": [{"physicalLocation": location}],
+        "properties": {"package": finding.package},
+    }
+    if finding.code in index:
+        result["ruleIndex"] = index[finding.code]
+    return result
+
+
+def render(findings: Sequence[Finding], *, context: ReportContext) -> str:
+    """One SARIF run listing every known rule and a result per finding."""
+    rules = [context.rules[code] for code in sorted(context.rules)]
+    index = {rule.code: i for i, rule in enumerate(rules)}
+    run = {
+        "tool": {"driver": {
+            "name": "pkgtool",
+            "version": __version__,
+            "semanticVersion": __version__,
+            "rules": [rule_descriptor(rule) for rule in rules],
+        }},
+        "originalUriBaseIds": {"%SRCROOT%": {"description": {
+            "text": "The folder pkgtool lint ran in"}}},
+        "results": [_result(f, index) for f in findings],
+    }
+    return json.dumps({"$schema": SCHEMA, "version": "2.1.0", "runs": [run]}, indent=2) + "\n"

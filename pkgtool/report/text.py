@@ -1,0 +1,67 @@
+"""Human output: ``path:line:col: CODE message``, an indented ``help:`` line, then a summary."""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from pkgtool.findings import Finding
+from pkgtool.report import ReportContext, counts, display_path
+
+_STYLES = {"error": "bold red", "warning": "yellow", "info": "blue"}
+
+
+def location(finding: Finding) -> str:
+    """``path:line:col`` with unknown (0) line or column left out."""
+    parts = [display_path(finding)]
+    if finding.span.line:
+        parts.append(str(finding.span.line))
+        if finding.span.col:
+            parts.append(str(finding.span.col))
+    return ":".join(parts)
+
+
+def summary(findings: Sequence[Finding], packages: int) -> str:
+    """One line: how many findings of each severity, in how many packages."""
+    noun = "package" if packages == 1 else "packages"
+    if not findings:
+        return f"No findings in {packages} {noun}."
+    number = counts(findings)
+    parts = [_plural(number["error"], "error"), _plural(number["warning"], "warning"),
+             f"{number['info']} info"]
+    affected = len({f.root for f in findings})
+    return f"Found {', '.join(parts)} in {affected} of {packages} {noun}."
+
+
+def _plural(count: int, word: str) -> str:
+    return f"{count} {word}" if count == 1 else f"{count} {word}s"
+
+
+def _lines(findings: Sequence[Finding], packages: int) -> list[list[tuple[str, str]]]:
+    """Each output line as (text, rich style) segments."""
+    lines = []
+    for finding in findings:
+        lines.append([(f"{location(finding)}:", "bold"),
+                      (f" {finding.code}", _STYLES[finding.severity.value]),
+                      (f" {finding.message}", "")])
+        if finding.fix:
+            lines.append([(f"  help: {finding.fix}", "dim")])
+    lines.append([(summary(findings, packages), "bold")])
+    return lines
+
+
+def render(findings: Sequence[Finding], *, context: ReportContext) -> str:
+    """The findings, each with its help line, and a summary; ANSI colour when asked."""
+    lines = _lines(findings, len(context.packages))
+    if not context.color:
+        return "".join("".join(text for text, _ in line) + "\n" for line in lines)
+    import io
+
+    from rich.console import Console
+    from rich.text import Text
+
+    buffer = io.StringIO()
+    console = Console(file=buffer, force_terminal=True, color_system="standard", width=100_000,
+                      highlight=False, soft_wrap=True)
+    for line in lines:
+        console.print(Text.assemble(*line))
+    return buffer.getvalue()

@@ -1,0 +1,58 @@
+"""DAT005: a launch file that is not installed under share/<package>."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.installed import installed_data
+from pkgtool.model.launch import is_launch_file
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.registry import rule
+from pkgtool.rules.setup.common import checked_setup
+
+NOT_INSTALLED_FOLDERS = frozenset({"test", "tests", "doc", "docs"})
+"""Top-level folders whose launch files are test or documentation material."""
+
+
+@rule("DAT005", "uninstalled-launch-file", Severity.ERROR,
+      fix="Add `(os.path.join('share', package_name, 'launch'), glob('launch/*launch.*'))` to "
+          "data_files")
+def uninstalled_launch_file(package: Package) -> Iterator[Hit]:
+    """A launch file of the package is not installed under `share/<package>`.
+
+    ## What it does
+    Reports launch files (`*.launch.py`, `*_launch.py`, XML and YAML variants) that data_files
+    does not install anywhere under `share/<name>`; installing them flat into `share/<name>`
+    or into `share/<name>/launch` are both fine. Launch files under `test/` and `doc/` are
+    ignored.
+
+    ## Why is this bad?
+    `ros2 launch <package> <file>` searches the installed share folder only: the launch file
+    works from the source tree but "file not found" after every build.
+
+    ## Example
+    ```python
+    data_files=[('share/' + package_name, ['package.xml'])]   # launch/robot.launch.py exists
+    ```
+
+    ## Use instead
+    ```python
+    data_files=[
+        ('share/' + package_name, ['package.xml']),
+        (os.path.join('share', package_name, 'launch'), glob('launch/*.launch.py')),
+    ]
+    ```
+    """
+    installed = installed_data(package) if checked_setup(package) else None
+    if installed is None:
+        return
+    share = f"share/{package.name}/"
+    shared = {source for target, source in installed.items() if target.startswith(share)}
+    for path in package.files:
+        if is_launch_file(path) and path.split("/")[0] not in NOT_INSTALLED_FOLDERS and \
+                path not in shared:
+            name = path.rsplit("/", 1)[-1]
+            yield Hit(Span(path, 1, 1), f"`{path}` is not installed under `{share[:-1]}`: "
+                                        f"`ros2 launch {package.name} {name}` will not find it")

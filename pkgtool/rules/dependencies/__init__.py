@@ -1,0 +1,1 @@
+"""DEP: imports versus the dependencies package.xml declares."""

@@ -1,0 +1,185 @@
+"""What the DEP and LCH rules share: which imports need a package.xml key, and which are declared.
+
+An absolute import needs a key unless it is standard library, one of the package's own
+modules, or a module next to the importing file. Third-party names map to rosdep keys through
+:mod:`pkgtool.knowledge.rosdep`; ROS-looking names to ROS packages; a name that is neither is
+``unknown`` and only ever gets a guessed key.
+"""
+
+from __future__ import annotations
+
+import posixpath
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
+from functools import lru_cache
+
+from pkgtool.knowledge.ros_names import looks_like_ros
+from pkgtool.knowledge.rosdep import (PYTHON_MODULE_KEYS, ROS_MODULE_PACKAGES, accepted_keys,
+                                      package_for_ros_module, stdlib_modules, suggested_key)
+from pkgtool.model.manifest import Dependency
+from pkgtool.model.modules import Import, PythonModule
+from pkgtool.model.package import Package
+
+RUNTIME = frozenset({"depend", "exec_depend", "run_depend"})
+BUILD_ONLY = frozenset({"build_depend", "build_export_depend", "buildtool_depend",
+                        "buildtool_export_depend"})
+TEST = frozenset({"test_depend"})
+ANY = RUNTIME | BUILD_ONLY | TEST
+
+
+@dataclass(frozen=True, slots=True)
+class Need:
+    """An import that a package.xml key must provide.
+
+    ``kind`` is ``ros``, ``third-party`` or ``unknown``; ``keys`` are the keys that provide
+    it (the first is the one to suggest); for ``unknown`` the only key is a guess.
+    """
+
+    module: PythonModule
+    imported: Import
+    top: str
+    kind: str
+    keys: tuple[str, ...]
+
+    @property
+    def key(self) -> str:
+        """The key to suggest."""
+        return self.keys[0]
+
+    @property
+    def missing(self) -> str:
+        """How a message names what is not declared: the package, or the module's key."""
+        if self.key == self.top:
+            return "not declared in package.xml"
+        return f"its key `{self.key}` is not declared in package.xml"
+
+
+def declared(package: Package, tags: frozenset[str]) -> dict[str, Dependency]:
+    """Keys declared with one of ``tags`` (``depend`` counts for every kind), first tag wins."""
+    found: dict[str, Dependency] = {}
+    if package.manifest is None:
+        return found
+    for dependency in package.manifest.dependencies:
+        if (dependency.tag in tags or dependency.tag == "depend") and dependency.name:
+            found.setdefault(dependency.name, dependency)
+    return found
+
+
+def _installed_modules(package: Package) -> dict[str, str] | None:
+    try:
+        from pkgtool.model.installed import installed_modules  # type: ignore[import-not-found]
+    except ImportError:
+        return None
+    try:
+        return installed_modules(package)  # type: ignore[no-any-return]
+    except Exception:  # another engineer's model: never let it break these rules
+        return None
+
+
+@dataclass(frozen=True, slots=True)
+class _Layout:
+    """Top-level Python names, folders holding ``__init__.py``, and each folder's entries."""
+
+    names: frozenset[str]
+    packages: frozenset[str]
+    children: dict[str, frozenset[str]]
+
+
+@lru_cache(maxsize=64)
+def _layout(files: tuple[str, ...]) -> _Layout:
+    names: set[str] = set()
+    packages = {posixpath.dirname(p) for p in files if posixpath.basename(p) == "__init__.py"}
+    children: dict[str, set[str]] = {}
+    for path in files:
+        parts = path.split("/")
+        for depth in range(len(parts)):
+            entry = parts[depth]
+            leaf = depth == len(parts) - 1
+            children.setdefault("/".join(parts[:depth]), set()).add(
+                entry[:-3] if leaf and entry.endswith(".py") else entry)
+        if not path.endswith(".py") or _is_launch(parts[-1]):
+            continue
+        if len(parts) == 1:
+            names.add(parts[0][:-3])
+        elif parts[0] in packages or not looks_like_ros(parts[0]):
+            names.add(parts[0])
+            if parts[0] == "src" and len(parts) > 2:
+                names.add(parts[1])
+    return _Layout(frozenset(names), frozenset(packages),
+                   {k: frozenset(v) for k, v in children.items()})
+
+
+def _is_launch(name: str) -> bool:
+    return name.endswith(("launch.py", ".launch.xml", ".launch.yaml"))
+
+
+def own_modules(package: Package) -> frozenset[str]:
+    """Top-level names the package itself provides (never need a key)."""
+    names = set(_layout(package.files).names) | {package.name}
+    installed = _installed_modules(package)
+    if installed:
+        names.update(name.split(".")[0] for name in installed)
+    return frozenset(names)
+
+
+def _siblings(package: Package, path: str) -> frozenset[str]:
+    return _layout(package.files).children.get(posixpath.dirname(path), frozenset())
+
+
+def installed_code(package: Package) -> list[PythonModule]:
+    """Non-test modules that setup.py installs (modules inside Python package folders)."""
+    installed = _installed_modules(package)
+    if installed is not None:
+        files = set(installed.values())
+        return [m for m in package.modules if m.path in files and not m.is_test]
+    packages = _layout(package.files).packages
+    return [m for m in package.modules if not m.is_test and posixpath.dirname(m.path)
+            and posixpath.dirname(m.path) in packages]
+
+
+def test_code(package: Package) -> list[PythonModule]:
+    """Test modules: under test/ or tests/, test_*.py, *_test.py, conftest.py."""
+    return [m for m in package.modules if m.is_test]
+
+
+def classify(top: str, declared_names: Iterable[str]) -> tuple[str, tuple[str, ...]]:
+    """The kind of a top-level import and the keys that provide it."""
+    if top in PYTHON_MODULE_KEYS:
+        return "third-party", accepted_keys(top, PYTHON_MODULE_KEYS[top])
+    if top in ROS_MODULE_PACKAGES or looks_like_ros(top):
+        return "ros", accepted_keys(top, package_for_ros_module(top))
+    if top in declared_names:
+        return "ros", (top,)
+    guess = "python3-" + top.lower().replace("_", "-")
+    return "unknown", (guess, guess + "-pip", top)
+
+
+def needs(package: Package, module: PythonModule, *, guarded: bool | None = False
+          ) -> Iterator[Need]:
+    """Absolute imports of ``module`` that need a key, the first import of each name only.
+
+    ``guarded`` selects unguarded imports (False), guarded ones (True) or both (None).
+    """
+    skip = own_modules(package) | _siblings(package, module.path)
+    stdlib = stdlib_modules()
+    names = declared(package, ANY)
+    seen: set[str] = set()
+    for imported in module.imports:
+        top = imported.top_level
+        if (not top or top in seen or (guarded is not None and imported.guarded != guarded)
+                or top in skip or (top in stdlib and top not in PYTHON_MODULE_KEYS)):
+            continue
+        seen.add(top)
+        kind, keys = classify(top, names)
+        yield Need(module, imported, top, kind, keys)
+
+
+def misnamed(package: Package, key: str) -> str | None:
+    """A declared name that people write for ``key`` (``python-opencv`` for python3-opencv)."""
+    return next((name for name in declared(package, ANY) if suggested_key(name) == key), None)
+
+
+def launch_keys(package: Package, path: str) -> dict[str, Dependency]:
+    """Keys a launch file may use: run-time ones, and test ones for launch files of tests."""
+    is_test = path.split("/", 1)[0] in ("test", "tests")
+    return declared(package, RUNTIME | TEST if is_test else RUNTIME)

@@ -1,0 +1,52 @@
+"""DEP002: installed code imports a package declared only as a build dependency."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.rules.dependencies._imports import BUILD_ONLY, RUNTIME, declared, installed_code, needs
+from pkgtool.rules.registry import rule
+
+
+@rule("DEP002", "import-declared-only-as-build-depend", Severity.ERROR,
+      fix="Declare the package with `<depend>` (build and run) or add an `<exec_depend>`")
+def import_declared_only_as_build_depend(package: Package) -> Iterator[Hit]:
+    """Installed code imports a package that package.xml declares only for the build.
+
+    ## What it does
+    Reports imports in installed modules whose package or rosdep key appears only in
+    `<build_depend>`, `<build_export_depend>` or `<buildtool_depend>`, never in `<depend>` or
+    `<exec_depend>`.
+
+    ## Why is this bad?
+    Build dependencies are not installed with the binary package: an ament_python package
+    imports its dependencies when it runs, not when it is built, so the import fails on
+    every machine that installed the package instead of building it.
+
+    ## Example
+    ```xml
+    <build_depend>python3-numpy</build_depend>
+    ```
+
+    ## Use instead
+    ```xml
+    <depend>python3-numpy</depend>
+    ```
+    """
+    if package.manifest is None:
+        return
+    runtime = declared(package, RUNTIME)
+    build_only = declared(package, BUILD_ONLY)
+    for module in installed_code(package):
+        for need in needs(package, module):
+            if any(k in runtime for k in need.keys):
+                continue
+            key = next((k for k in need.keys if k in build_only), None)
+            if key is None:
+                continue
+            tag = build_only[key].tag
+            yield Hit(need.imported.span,
+                      f"`{need.top}` is imported at run time but `{key}` is only a `{tag}`",
+                      f"Change `<{tag}>{key}</{tag}>` to `<depend>{key}</depend>`")

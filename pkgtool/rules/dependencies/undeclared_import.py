@@ -1,0 +1,64 @@
+"""DEP001: installed code imports a ROS package or Python module that package.xml does not declare."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.manifest import Dependency
+from pkgtool.model.package import Package
+from pkgtool.rules.dependencies._imports import (BUILD_ONLY, RUNTIME, TEST, Need, declared,
+                                                 installed_code, misnamed, needs)
+from pkgtool.rules.registry import rule
+
+
+@rule("DEP001", "undeclared-import", Severity.ERROR,
+      fix="Add an `<exec_depend>` (or `<depend>`) for the imported package to package.xml")
+def undeclared_import(package: Package) -> Iterator[Hit]:
+    """Installed code imports a package that package.xml does not declare for run time.
+
+    ## What it does
+    Checks every absolute, unguarded import in the modules setup.py installs. Standard
+    library modules and the package's own modules are skipped; a ROS import must be covered
+    by `<depend>` or `<exec_depend>` of its package, a third-party module by its rosdep key
+    (`cv2` by `python3-opencv`, `yaml` by `python3-yaml`, ...).
+
+    ## Why is this bad?
+    `rosdep install` and the binary packages built by the ROS buildfarm install only what
+    package.xml declares. The node works on the machine it was written on and fails with
+    `ModuleNotFoundError` on a clean robot or in CI.
+
+    ## Example
+    ```python
+    import tf_transformations  # package.xml declares rclpy and sensor_msgs only
+    ```
+
+    ## Use instead
+    ```xml
+    <exec_depend>tf_transformations</exec_depend>
+    ```
+    """
+    if package.manifest is None:
+        return
+    runtime = declared(package, RUNTIME)
+    build_only = declared(package, BUILD_ONLY)
+    tests = declared(package, TEST)
+    for module in installed_code(package):
+        for need in needs(package, module):
+            if need.kind == "unknown" or any(k in runtime for k in need.keys):
+                continue
+            if any(k in build_only for k in need.keys):
+                continue  # DEP002's case
+            yield Hit(need.imported.span, _message(package, need, tests),
+                      f"Add `<exec_depend>{need.key}</exec_depend>` to package.xml")
+
+
+def _message(package: Package, need: Need, tests: dict[str, Dependency]) -> str:
+    if need.key in tests:
+        return (f"`{need.top}` is imported by installed code but `{need.key}` is only a "
+                f"`test_depend`")
+    text = f"`{need.top}` is imported but {need.missing}"
+    wrong = misnamed(package, need.key)
+    if wrong:
+        text += f" (`{wrong}` is declared, but the rosdep key is `{need.key}`)"
+    return text

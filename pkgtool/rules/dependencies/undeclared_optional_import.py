@@ -1,0 +1,52 @@
+"""DEP005: a guarded (optional) import that package.xml does not declare."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.rules.dependencies._imports import ANY, declared, needs
+from pkgtool.rules.registry import rule
+
+
+@rule("DEP005", "undeclared-optional-import", Severity.INFO,
+      fix="Declare the package if the feature that needs it matters on the robot")
+def undeclared_optional_import(package: Package) -> Iterator[Hit]:
+    """An optional import (inside `try/except ImportError`, `TYPE_CHECKING` or a `find_spec` check) is undeclared.
+
+    ## What it does
+    Reports guarded imports whose package or rosdep key package.xml does not declare in any
+    dependency tag. The code is written to survive without the module, so this is
+    information, not an error.
+
+    ## Why is this bad?
+    Without a declaration the optional feature is silently off on every machine set up with
+    rosdep, which is rarely what the author tested.
+
+    ## Example
+    ```python
+    try:
+        import cv2
+    except ImportError:
+        cv2 = None
+    ```
+
+    ## Use instead
+    ```xml
+    <exec_depend>python3-opencv</exec_depend>
+    ```
+    """
+    if package.manifest is None:
+        return
+    available = declared(package, ANY)
+    modules = [*package.modules, *(f.python for f in package.launch_files if f.python)]
+    for module in modules:
+        required = {need.top for need in needs(package, module)}
+        for need in needs(package, module, guarded=True):
+            if need.top not in required and not any(k in available for k in need.keys):
+                guess = " (a guess from the name)" if need.kind == "unknown" else ""
+                yield Hit(need.imported.span,
+                          f"Optional import `{need.top}` is not declared; its key is "
+                          f"`{need.key}`{guess}",
+                          f"Add `<exec_depend>{need.key}</exec_depend>` if the feature is needed")

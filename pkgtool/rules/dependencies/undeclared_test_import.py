@@ -1,0 +1,45 @@
+"""DEP003: a test imports a package that package.xml declares neither for tests nor for run time."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.rules.dependencies._imports import ANY, declared, needs, test_code
+from pkgtool.rules.registry import rule
+
+
+@rule("DEP003", "undeclared-test-import", Severity.WARNING,
+      fix="Add a `<test_depend>` for the imported package to package.xml")
+def undeclared_test_import(package: Package) -> Iterator[Hit]:
+    """A test module imports a package that package.xml does not declare.
+
+    ## What it does
+    Checks the unguarded absolute imports of test modules (files under `test/`, `test_*.py`,
+    `conftest.py`) against every dependency of package.xml: `<test_depend>`, the run-time
+    dependencies and the build dependencies all make a package available to `colcon test`.
+
+    ## Why is this bad?
+    `rosdep install` (and the buildfarm's test jobs) install only declared dependencies, so
+    the test run fails at collection on a clean machine, often hiding every other test.
+
+    ## Example
+    ```python
+    import pytest  # package.xml has no <test_depend>python3-pytest</test_depend>
+    ```
+
+    ## Use instead
+    ```xml
+    <test_depend>python3-pytest</test_depend>
+    ```
+    """
+    if package.manifest is None:
+        return
+    available = declared(package, ANY)
+    for module in test_code(package):
+        for need in needs(package, module):
+            if need.kind != "unknown" and not any(k in available for k in need.keys):
+                yield Hit(need.imported.span,
+                          f"`{need.top}` is imported by a test but {need.missing}",
+                          f"Add `<test_depend>{need.key}</test_depend>` to package.xml")

@@ -1,0 +1,56 @@
+"""DEP004: an import that is neither a known ROS package nor a curated Python module."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.rules.dependencies._imports import ANY, declared, needs
+from pkgtool.rules.registry import rule
+
+
+@rule("DEP004", "unknown-import", Severity.WARNING,
+      fix="Declare the rosdep key that installs the module (check it with `rosdep resolve`)")
+def unknown_import(package: Package) -> Iterator[Hit]:
+    """A module is imported that pkgtool cannot map to a rosdep key.
+
+    ## What it does
+    Reports unguarded absolute imports (in any module or Python launch file) of names that
+    are not standard library, not the package's own, not ROS by name, and not in pkgtool's
+    curated table of third-party modules, unless a key that looks like it
+    (`python3-<name>`, `python3-<name>-pip` or the bare name) is declared. The suggested key
+    is a guess from the module name.
+
+    ## Why is this bad?
+    An import that package.xml does not cover fails on a clean machine, but pip and rosdep
+    names often differ from import names (`cv2` is `python3-opencv`), so pkgtool cannot tell
+    which key is missing, only that one probably is.
+
+    ## Known problems
+    A Python package of another package in the same workspace is reported too: declare
+    that package by its name.
+
+    ## Example
+    ```python
+    import pyquaternion
+    ```
+
+    ## Use instead
+    ```xml
+    <exec_depend>python3-pyquaternion-pip</exec_depend>
+    ```
+    """
+    if package.manifest is None:
+        return
+    available = declared(package, ANY)
+    modules = [*package.modules, *(f.python for f in package.launch_files if f.python)]
+    for module in modules:
+        for need in needs(package, module):
+            if need.kind == "unknown" and not any(k in available for k in need.keys):
+                yield Hit(need.imported.span,
+                          f"`{need.top}` is not a known ROS package or Python module; its "
+                          f"rosdep key might be `{need.key}` (a guess from the name)",
+                          f"Declare the key that installs `{need.top}`, e.g. "
+                          f"`<exec_depend>{need.key}</exec_depend>` if `rosdep resolve "
+                          f"{need.key}` knows it")

@@ -1,0 +1,1 @@
+"""ENT: console_scripts entry points and the modules and functions they name."""

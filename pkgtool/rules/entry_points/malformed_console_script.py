@@ -1,0 +1,61 @@
+"""ENT001: a console_scripts entry that does not parse as `name = module:function`."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.model.setup_py import EntryPoint
+from pkgtool.rules.registry import rule
+
+SCRIPT_GROUPS = ("console_scripts", "gui_scripts")
+
+
+def problem(entry: EntryPoint) -> str | None:
+    """What is wrong with a script entry point, or None when it is well-formed."""
+    if "=" not in entry.spec:
+        return "has no `=` between the command name and `module:function`"
+    if not entry.name:
+        return "has no command name before `=`"
+    if any(c.isspace() for c in entry.name):
+        return "has a command name with spaces"
+    if not entry.valid:
+        return "does not name a `module:function` of valid Python identifiers"
+    if entry.attr is None:
+        return "names a module but no function (`module:function`)"
+    return None
+
+
+@rule("ENT001", "malformed-console-script", Severity.ERROR,
+      fix="Write the entry as `command = package.module:function`")
+def malformed_console_script(package: Package) -> Iterator[Hit]:
+    """A console script entry point is not `name = module:function`.
+
+    ## What it does
+    Parses each `console_scripts` (and `gui_scripts`) entry the way setuptools does and
+    reports entries without `=`, without a command name, with spaces in the name, with a
+    module or function path that is not made of Python identifiers (`my-pkg.node`, `class`),
+    or without the `:function` part.
+
+    ## Why is this bad?
+    setuptools rejects unparsable entries and the build fails; an entry without `:function`
+    installs a wrapper that calls the module object and fails at run time.
+
+    ## Example
+    ```python
+    entry_points={'console_scripts': ['talker = my_pkg.talker.main',
+                                      'my talker = my_pkg.talker:main']}
+    ```
+
+    ## Use instead
+    ```python
+    entry_points={'console_scripts': ['talker = my_pkg.talker:main']}
+    ```
+    """
+    setup = package.setup_py
+    for entry in setup.entry_points or () if setup else ():
+        if entry.group in SCRIPT_GROUPS:
+            reason = problem(entry)
+            if reason:
+                yield Hit(entry.span, f"Console script `{entry.spec}` {reason}")

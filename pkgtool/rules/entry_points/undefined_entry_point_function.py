@@ -1,0 +1,57 @@
+"""ENT003: a console script whose function the module does not define."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.installed import installed_modules
+from pkgtool.model.package import Package
+from pkgtool.rules.entry_points.malformed_console_script import SCRIPT_GROUPS, problem
+from pkgtool.rules.registry import rule
+from pkgtool.rules.setup.common import checked_setup
+
+
+@rule("ENT003", "undefined-entry-point-function", Severity.ERROR,
+      fix="Define the function at the module's top level, or point the entry at the right one")
+def undefined_entry_point_function(package: Package) -> Iterator[Hit]:
+    """A console script names a function its module does not define at top level.
+
+    ## What it does
+    For console scripts whose module is installed and parses, checks that the first part of
+    `:function` is defined at the module's top level (a `def`, a class, an assignment or an
+    import). Modules with `from x import *` or a module-level `__getattr__` are skipped.
+
+    ## Why is this bad?
+    The build succeeds, but running the command fails with `AttributeError` (or `ImportError`
+    in the generated wrapper), often only after deployment.
+
+    ## Example
+    ```python
+    # setup.py: 'talker = my_pkg.talker:main'
+    def run():          # my_pkg/talker.py defines run, not main
+        ...
+    ```
+
+    ## Use instead
+    ```python
+    def main():
+        ...
+    ```
+    """
+    setup = checked_setup(package)
+    modules = installed_modules(package) if setup else None
+    if setup is None or modules is None:
+        return
+    for entry in setup.entry_points or ():
+        if entry.group not in SCRIPT_GROUPS or problem(entry) or entry.module not in modules:
+            continue
+        module = package.module(modules[entry.module])
+        if module is None or module.syntax_error or "__getattr__" in module.top_level_names:
+            continue
+        if any("*" in i.names for i in module.imports):
+            continue
+        function = (entry.attr or "").split(".")[0]
+        if function not in module.top_level_names:
+            yield Hit(entry.span, f"`{entry.module}` does not define `{function}` at its top "
+                                  f"level (`{modules[entry.module]}`)")

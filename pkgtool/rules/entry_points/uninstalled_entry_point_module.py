@@ -1,0 +1,64 @@
+"""ENT002: a console script whose module setup.py does not install."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.installed import installed_modules, why_not_installed
+from pkgtool.model.package import Package
+from pkgtool.rules.entry_points.malformed_console_script import SCRIPT_GROUPS, problem
+from pkgtool.rules.registry import rule
+from pkgtool.rules.setup.common import checked_setup
+
+
+def _own_roots(package: Package, modules: dict[str, str]) -> set[str]:
+    """Top-level names that belong to this package: installed, in its tree, or its name."""
+    roots = {name.split(".")[0] for name in modules}
+    roots |= {f.split("/")[0] for f in package.files if "/" in f}
+    roots |= {f[:-3] for f in package.files if "/" not in f and f.endswith(".py")}
+    return roots | {package.name}
+
+
+@rule("ENT002", "uninstalled-entry-point-module", Severity.ERROR,
+      fix="Make setup.py install the module: list its package in `packages` (or use "
+          "`find_packages()`), and give every package folder an `__init__.py`")
+def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
+    """A console script names a module that setup.py does not install.
+
+    ## What it does
+    Works out which modules setup.py installs (explicit `packages`, `find_packages` with
+    `where`/`include`/`exclude`, `find_namespace_packages`, `package_dir`, `py_modules`) and
+    reports console scripts whose module is not among them, saying why: the file does not
+    exist, a package list drops subpackages, an `__init__.py` is missing, a pattern excludes
+    it. Modules outside this package's own top-level names are not judged.
+
+    ## Why is this bad?
+    The build succeeds, but running the command fails with `ModuleNotFoundError`. With
+    `colcon build --symlink-install` the source folder is on the path, so the mistake often
+    shows only in a clean or release build.
+
+    ## Example
+    ```python
+    setup(packages=[package_name],   # my_pkg/nodes/ is a subpackage
+          entry_points={'console_scripts': ['talker = my_pkg.nodes.talker:main']})
+    ```
+
+    ## Use instead
+    ```python
+    setup(packages=find_packages(exclude=['test']),
+          entry_points={'console_scripts': ['talker = my_pkg.nodes.talker:main']})
+    ```
+    """
+    setup = checked_setup(package)
+    modules = installed_modules(package) if setup else None
+    if setup is None or modules is None:
+        return
+    roots = _own_roots(package, modules)
+    for entry in setup.entry_points or ():
+        if entry.group not in SCRIPT_GROUPS or problem(entry) or entry.module in modules:
+            continue
+        if entry.module.split(".")[0] not in roots:
+            continue
+        yield Hit(entry.span, f"`{entry.module}` is not installed: "
+                              f"{why_not_installed(package, entry.module)}")

@@ -1,0 +1,1 @@
+"""LCH: launch files and the packages and executables they use."""

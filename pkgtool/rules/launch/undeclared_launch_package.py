@@ -1,0 +1,50 @@
+"""LCH002: a launch file uses another package that package.xml does not declare."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.rules.dependencies._imports import launch_keys
+from pkgtool.rules.registry import rule
+
+
+@rule("LCH002", "undeclared-launch-package", Severity.ERROR,
+      fix="Add an `<exec_depend>` for the package to package.xml")
+def undeclared_launch_package(package: Package) -> Iterator[Hit]:
+    """A launch file starts nodes of, includes from, or reads files of an undeclared package.
+
+    ## What it does
+    Collects the packages a launch file names statically: `Node(package=...)`,
+    `get_package_share_directory(...)`, `FindPackageShare(...)`, `$(find-pkg-share ...)` in
+    XML and YAML launch files. Each one other than this package must be an
+    `<exec_depend>` or `<depend>` (a `<test_depend>` for launch files under `test/`).
+
+    ## Why is this bad?
+    `ros2 launch` fails with "package not found" on machines set up with rosdep, because
+    nothing told rosdep to install the package.
+
+    ## Example
+    ```python
+    Node(package='robot_state_publisher', executable='robot_state_publisher')
+    ```
+
+    ## Use instead
+    ```xml
+    <exec_depend>robot_state_publisher</exec_depend>
+    ```
+    """
+    if package.manifest is None:
+        return
+    for launch in package.launch_files:
+        available = launch_keys(package, launch.path)
+        seen: set[str] = set()
+        used = [(n.package, n.span) for n in launch.nodes if n.package] + [
+            (p.package, p.span) for p in launch.packages]
+        for name, span in sorted(used, key=lambda u: (u[1].line, u[1].col)):
+            if name == package.name or name in available or name in seen:
+                continue
+            seen.add(name)
+            yield Hit(span, f"`{name}` is used by a launch file but not declared in package.xml",
+                      f"Add `<exec_depend>{name}</exec_depend>` to package.xml")

@@ -1,0 +1,53 @@
+"""MAN004: a package.xml element stands where the schema's sequence does not allow it."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.rules.manifest.common import misplaced, tree
+from pkgtool.rules.manifest.schema import ORDER_HINT
+from pkgtool.rules.registry import rule
+
+
+@rule("MAN004", "element-out-of-order", Severity.ERROR,
+      fix="Move the element to where the schema's order puts it")
+def element_out_of_order(package: Package) -> Iterator[Hit]:
+    """The children of ``<package>`` are not in the order the package.xml schema requires.
+
+    ## What it does
+    Checks the order of the children of ``<package>`` against the XSD of the manifest's format:
+    name, version, description, maintainer, license, url, author, then the dependency tags in
+    any order among themselves, then (format 3) group_depend and member_of_group, then export.
+
+    ## Why is this bad?
+    The schemas define ``<package>`` as a sequence: a manifest in another order fails
+    ``ament_xmllint`` (which newer ``ros2 pkg create`` templates run as a test), schema-aware
+    editors and release checks.
+
+    ## Example
+    ```xml
+    <license>MIT</license>
+    <maintainer email="ada@example.com">Ada</maintainer>
+    <exec_depend>rclpy</exec_depend>
+    <url>https://example.com</url>
+    ```
+
+    ## Use instead
+    ```xml
+    <maintainer email="ada@example.com">Ada</maintainer>
+    <license>MIT</license>
+    <url>https://example.com</url>
+    <exec_depend>rclpy</exec_depend>
+    ```
+    """
+    found = tree(package)
+    if found is None:
+        return
+    for item in misplaced(found):
+        if not item.duplicate:
+            yield Hit(item.element.span,
+                      f"`<{item.element.tag}>` must come before `<{item.before.tag}>` "
+                      f"(line {item.before.span.line})",
+                      f"Move `<{item.element.tag}>` up; the order is {ORDER_HINT[found.format]}")

@@ -1,0 +1,81 @@
+"""MAN018: a dependency key that rosdep cannot resolve: pip names, ROS 1 keys, build types."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.rosdep import NOT_PACKAGES, suggested_key
+from pkgtool.model.package import Package
+from pkgtool.model.xml import XmlElement
+from pkgtool.rules.manifest.common import tree
+from pkgtool.rules.manifest.schema import DEPENDS_1, DEPENDS_2, token
+from pkgtool.rules.registry import rule
+
+_CHECKED = frozenset(DEPENDS_1 + DEPENDS_2) - {"conflict", "replace"}
+_STDLIB = frozenset({
+    "abc", "argparse", "array", "asyncio", "base64", "collections", "concurrent", "copy", "csv",
+    "dataclasses", "datetime", "enum", "functools", "glob", "hashlib", "heapq", "importlib",
+    "inspect", "io", "itertools", "json", "logging", "math", "multiprocessing", "os", "pathlib",
+    "pickle", "queue", "random", "re", "shutil", "signal", "socket", "statistics", "string",
+    "struct", "subprocess", "sys", "tempfile", "threading", "time", "traceback", "typing",
+    "unittest", "urllib", "warnings",
+})
+"""Pure-Python standard library modules students declare; none is a rosdep key or ROS package."""
+
+
+def _hit(element: XmlElement) -> Hit | None:
+    key, tag = token(element.text), element.tag
+    if key in NOT_PACKAGES:
+        return Hit(element.span, f"`{key}` is a build type, not a package",
+                   f"Remove this `<{tag}>` and declare `<build_type>{key}</build_type>` in "
+                   "`<export>`")
+    if key in _STDLIB:
+        return Hit(element.span, f"`{key}` is part of the Python standard library, not a rosdep "
+                   "key", f"Remove this `<{tag}>`: the standard library needs no dependency")
+    replacement = suggested_key(key)
+    if replacement is None:
+        return None
+    if key.startswith("python-"):
+        what = "a ROS 1 (Python 2) key that rosdep cannot resolve on ROS 2's Ubuntu releases"
+    else:
+        what = f"not a rosdep key (the key is `{replacement}`)"
+    return Hit(element.span, f"`{key}` is {what}",
+               f"Write `<{tag}>{replacement}</{tag}>`")
+
+
+@rule("MAN018", "not-a-rosdep-key", Severity.ERROR,
+      fix="Use the rosdep key, e.g. `python3-numpy`")
+def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
+    """A dependency names a pip package, an import name, a ROS 1 key or a build type.
+
+    ## What it does
+    Reports dependency keys that are known not to be rosdep keys, with the key to use:
+    pip distribution names (``opencv-python``, ``pyyaml``, ``numpy``), import names (``cv2``),
+    ROS 1 Python 2 keys (``python-opencv``), ``ament_python``, which is a build type, and
+    standard library modules (``math``, ``threading``), which need no dependency.
+
+    ## Why is this bad?
+    ``rosdep install`` stops with "Cannot locate rosdep definition", build farms refuse the
+    package, and the dependency is never installed on a fresh machine. ``ros2 pkg create
+    --build-type ament_python`` adds no ``buildtool_depend`` at all.
+
+    ## Example
+    ```xml
+    <buildtool_depend>ament_python</buildtool_depend>
+    <exec_depend>opencv-python</exec_depend>
+    <exec_depend>python-opencv</exec_depend>
+    ```
+
+    ## Use instead
+    ```xml
+    <exec_depend>python3-opencv</exec_depend>
+    ```
+    """
+    found = tree(package)
+    if found is None:
+        return
+    for element in found.elements():
+        hit = _hit(element) if element.tag in _CHECKED else None
+        if hit:
+            yield hit

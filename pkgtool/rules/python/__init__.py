@@ -1,0 +1,1 @@
+"""PYC: Python code that fails at run time, found without running it."""

@@ -1,0 +1,75 @@
+"""Walking one function scope of a syntax tree: its nodes and the names it binds."""
+
+from __future__ import annotations
+
+import ast
+from collections import Counter
+from collections.abc import Iterator
+
+_NESTED = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda, ast.ListComp,
+           ast.SetComp, ast.DictComp, ast.GeneratorExp)
+_BROAD = frozenset({"Exception", "BaseException"})
+_NAME_ERRORS = _BROAD | {"NameError", "UnboundLocalError"}
+ALWAYS = 1 << 30
+"""Binding count of names declared ``global``/``nonlocal``: never equal to a real count."""
+
+
+def _caught(handler: ast.ExceptHandler) -> set[str]:
+    if handler.type is None:
+        return {"BaseException"}
+    types = handler.type.elts if isinstance(handler.type, ast.Tuple) else [handler.type]
+    return {t.id if isinstance(t, ast.Name) else t.attr for t in types
+            if isinstance(t, (ast.Name, ast.Attribute))}
+
+
+def catches_everything(handler: ast.ExceptHandler) -> bool:
+    """``except:``, ``except Exception:`` or ``except BaseException:`` (also in a tuple)."""
+    return bool(_caught(handler) & _BROAD)
+
+
+def scope_walk(body: list[ast.stmt], *, skip_protected: bool = False) -> Iterator[ast.AST]:
+    """Nodes of ``body`` in this scope: nested functions, classes and comprehensions are
+    yielded but not entered. With ``skip_protected``, the bodies of ``try`` blocks that
+    catch NameError (or anything broader) are skipped too."""
+    stack: list[ast.AST] = list(reversed(body))
+    while stack:
+        node = stack.pop()
+        yield node
+        if isinstance(node, _NESTED):
+            continue
+        if skip_protected and isinstance(node, ast.Try) and any(
+                _caught(h) & _NAME_ERRORS for h in node.handlers):
+            children: list[ast.AST] = [*node.handlers, *node.orelse, *node.finalbody]
+        else:
+            children = list(ast.iter_child_nodes(node))
+        stack.extend(reversed(children))
+
+
+def bound_names(where: ast.stmt | list[ast.stmt] | ast.FunctionDef | ast.AsyncFunctionDef
+                ) -> Counter[str]:
+    """How many times each name is bound in ``where`` (parameters included for a function)."""
+    found: Counter[str] = Counter()
+    if isinstance(where, (ast.FunctionDef, ast.AsyncFunctionDef)):
+        arguments = where.args
+        for arg in (*arguments.posonlyargs, *arguments.args, *arguments.kwonlyargs,
+                    arguments.vararg, arguments.kwarg):
+            if arg is not None:
+                found[arg.arg] += 1
+        body = where.body
+    else:
+        body = where if isinstance(where, list) else [where]
+    for node in scope_walk(body):
+        if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
+            found[node.id] += 1
+        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            found[node.name] += 1
+        elif isinstance(node, (ast.Import, ast.ImportFrom)):
+            found.update((a.asname or a.name).split(".")[0] for a in node.names)
+        elif isinstance(node, ast.ExceptHandler) and node.name:
+            found[node.name] += 1
+        elif isinstance(node, (ast.MatchAs, ast.MatchStar)) and node.name:
+            found[node.name] += 1
+        elif isinstance(node, (ast.Global, ast.Nonlocal)):
+            for name in node.names:
+                found[name] = ALWAYS
+    return found

@@ -1,0 +1,59 @@
+"""PYC002: NumPy aliases and functions that current NumPy releases no longer have."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.numpy_removed import REMOVED
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.python._tree import import_aliases, installed_trees, loaded_attributes
+from pkgtool.rules.registry import rule
+
+
+def _hit(path: str, node: ast.AST, name: str) -> Hit:
+    removed = REMOVED[name]
+    return Hit(Span(path, node.lineno, node.col_offset + 1),  # type: ignore[attr-defined]
+               f"`np.{name}` was removed in NumPy {removed.removed_in} and raises "
+               f"AttributeError", f"Use {removed.use} instead of `np.{name}`")
+
+
+@rule("PYC002", "numpy-removed-alias", Severity.ERROR,
+      fix="Replace the removed NumPy name with its documented replacement")
+def numpy_removed_alias(package: Package) -> Iterator[Hit]:
+    """Installed code uses a NumPy name that NumPy 1.24 or 2.x removed.
+
+    ## What it does
+    Reports attributes of the `numpy` module (through any name bound only to `numpy`, such
+    as `np`) and `from numpy import ...` names that no longer exist: the builtin aliases
+    removed in NumPy 1.24 (`np.float`, `np.int`, `np.object`, `np.bool`, ...) and the names
+    NumPy 2 removed (`np.int0`, `np.float_`, `np.product`, `np.NaN`, ...).
+
+    ## Why is this bad?
+    The line raises `AttributeError` (or `ImportError`) when it runs. ROS 2 Jazzy on Ubuntu
+    24.04 ships NumPy 1.26, pip installs NumPy 2: old tutorials' `np.int0` breaks on the
+    latter, `np.float` and `np.bool` on the former.
+
+    ## Example
+    ```python
+    corners = np.int0(corners)
+    ```
+
+    ## Use instead
+    ```python
+    corners = np.intp(corners)
+    ```
+    """
+    for module, tree in installed_trees(package):
+        aliases = import_aliases(tree)
+        for node, name in loaded_attributes(tree, aliases):
+            owner, _, attr = name.rpartition(".")
+            if owner == "numpy" and attr in REMOVED:
+                yield _hit(module.path, node, attr)
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ImportFrom) and node.module == "numpy" and node.level == 0:
+                for alias in node.names:
+                    if alias.name in REMOVED:
+                        yield _hit(module.path, node, alias.name)

@@ -1,0 +1,58 @@
+"""PYC004: attributes of rclpy modules and classes that do not exist (``ActionClient.GoalStatus``)."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.rclpy_missing import missing_attribute
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.python._tree import import_aliases, installed_trees, loaded_attributes
+from pkgtool.rules.registry import rule
+
+
+@rule("PYC004", "rclpy-missing-attribute", Severity.ERROR,
+      fix="Use the rclpy API that exists (see the message)")
+def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
+    """Installed code uses an rclpy attribute that does not exist.
+
+    ## What it does
+    Reports reads of attributes that rclpy does not have, from a curated table checked
+    against rclpy itself: `ActionClient.GoalStatus` (GoalStatus is a message in
+    `action_msgs.msg`), rospy habits such as `rclpy.is_shutdown()`, `rclpy.loginfo()`,
+    `rclpy.Node` or `Time.now()`. Only names bound solely to rclpy imports are checked.
+
+    ## Why is this bad?
+    The line raises `AttributeError` when it runs, often inside a callback, where the
+    error shows up as a log line and the node silently stops doing its job.
+
+    ## Example
+    ```python
+    if status == ActionClient.GoalStatus.STATUS_SUCCEEDED:
+    ```
+
+    ## Use instead
+    ```python
+    from action_msgs.msg import GoalStatus
+    if status == GoalStatus.STATUS_SUCCEEDED:
+    ```
+    """
+    for module, tree in installed_trees(package):
+        aliases = import_aliases(tree)
+        for node, name in loaded_attributes(tree, aliases):
+            owner, _, attr = name.rpartition(".")
+            use = missing_attribute(owner, attr) if owner.split(".")[0] == "rclpy" else None
+            if use:
+                shown = f"{owner.rsplit('.', 1)[-1]}.{attr}"
+                where = "" if owner == "rclpy" else " in rclpy"
+                yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
+                          f"`{shown}` does not exist{where}", f"Use {use}")
+        for node in ast.walk(tree):
+            if isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
+                for alias in node.names:
+                    use = missing_attribute(node.module, alias.name)
+                    if use and node.module.split(".")[0] == "rclpy":
+                        yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
+                                  f"`{node.module}` has no `{alias.name}`", f"Use {use}")

@@ -1,0 +1,97 @@
+"""PYC005: ``spin_until_future_complete`` without a timeout in node code."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.python._scopes import scope_walk
+from pkgtool.rules.python._tree import import_aliases, installed_trees, qualified
+from pkgtool.rules.registry import rule
+
+_NAME = "spin_until_future_complete"
+REQUESTS = frozenset({"call_async", "send_goal_async", "get_result_async", "cancel_goal_async"})
+"""Calls whose future completes only when a server answers."""
+
+
+def _is_request(node: ast.expr | None) -> bool:
+    return (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+            and node.func.attr in REQUESTS)
+
+
+def _dotted(node: ast.expr) -> str | None:
+    """``future`` or ``self._future`` for names and attribute chains, else None."""
+    attrs: list[str] = []
+    while isinstance(node, ast.Attribute):
+        attrs.append(node.attr)
+        node = node.value
+    return ".".join([node.id, *reversed(attrs)]) if isinstance(node, ast.Name) else None
+
+
+def _request_futures(scope: ast.AST) -> set[str]:
+    """Names and attributes assigned a request's future in ``scope``."""
+    return {name for node in ast.walk(scope) if isinstance(node, ast.Assign)
+            and _is_request(node.value) for target in node.targets
+            for name in [_dotted(target)] if name}
+
+
+def _waited_future(call: ast.Call, aliases: dict[str, str]) -> ast.expr | None:
+    """The future a spin call waits for without a timeout, or None (timeout, not a spin)."""
+    if any(isinstance(a, ast.Starred) for a in call.args) or any(
+            k.arg in (None, "timeout_sec") for k in call.keywords):
+        return None
+    keyword = next((k.value for k in call.keywords if k.arg == "future"), None)
+    if qualified(call.func, aliases) == f"rclpy.{_NAME}" and len(call.args) < 4:
+        return keyword or (call.args[1] if len(call.args) > 1 else None)
+    if (isinstance(call.func, ast.Attribute) and call.func.attr == _NAME
+            and qualified(call.func, aliases) is None and len(call.args) < 2):
+        return keyword or (call.args[0] if call.args else None)
+    return None
+
+
+@rule("PYC005", "spin-without-timeout", Severity.WARNING,
+      fix="Pass `timeout_sec=` and handle the future not being done")
+def spin_without_timeout(package: Package) -> Iterator[Hit]:
+    """Installed code waits for a future with no timeout.
+
+    ## What it does
+    Reports `rclpy.spin_until_future_complete(node, future)` and
+    `executor.spin_until_future_complete(future)` calls in installed modules that pass no
+    `timeout_sec` while waiting for a server's answer: a future from `call_async`,
+    `send_goal_async`, `get_result_async` or `cancel_goal_async`. Spinning until some other
+    future (a main loop that ends on a signal) and an explicit `timeout_sec=None` are taken
+    as intended and not reported.
+
+    ## Why is this bad?
+    If the service or action server never answers (it crashed, its name is misspelled, the
+    request was lost), the call blocks forever and the node hangs without a log line.
+
+    ## Example
+    ```python
+    future = self.client.call_async(request)
+    rclpy.spin_until_future_complete(self, future)
+    ```
+
+    ## Use instead
+    ```python
+    rclpy.spin_until_future_complete(self, future, timeout_sec=5.0)
+    if not future.done():
+        self.get_logger().error('service did not answer within 5 s')
+    ```
+    """
+    for module, tree in installed_trees(package):
+        aliases = import_aliases(tree)
+        attributes = {t for t in _request_futures(tree) if "." in t}
+        for function in ast.walk(tree):
+            if not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                continue
+            futures = attributes | _request_futures(function)
+            for node in scope_walk(function.body):
+                future = _waited_future(node, aliases) if isinstance(node, ast.Call) else None
+                if future is not None and (_is_request(future) or _dotted(future) in futures):
+                    yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
+                              f"`{_NAME}` has no `timeout_sec`: it waits forever if the server "
+                              f"never answers")

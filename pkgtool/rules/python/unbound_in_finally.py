@@ -1,0 +1,111 @@
+"""PYC003: ``finally``/``except`` code uses a name that only the ``try`` body assigns."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.python._scopes import bound_names, catches_everything, scope_walk
+from pkgtool.rules.python._tree import installed_trees
+from pkgtool.rules.registry import rule
+
+_LOOPS = (ast.For, ast.AsyncFor, ast.While)
+
+
+def _harmless(statement: ast.stmt) -> bool:
+    """Statements that cannot raise: ``pass`` and assignments of literals or names."""
+    if isinstance(statement, ast.Pass):
+        return True
+    value = statement.value if isinstance(statement, (ast.Assign, ast.AnnAssign)) else None
+    return value is not None and all(
+        isinstance(n, (ast.Constant, ast.Name, ast.List, ast.Tuple, ast.Dict, ast.Set, ast.Load))
+        for n in ast.walk(value))
+
+
+def _fails_before(body: list[ast.stmt], name: str) -> bool:
+    """True when a statement of ``body`` that may raise runs before ``name`` is bound."""
+    for statement in body:
+        if name in bound_names(statement):
+            return not _harmless(statement)
+        if not _harmless(statement):
+            return True
+    return False
+
+
+def _uses(body: list[ast.stmt], name: str) -> Iterator[ast.Name]:
+    """Reads of ``name`` in ``body``, except inside ``try`` blocks that catch NameError."""
+    for node in scope_walk(body, skip_protected=True):
+        if isinstance(node, ast.Name) and node.id == name and isinstance(node.ctx, ast.Load):
+            yield node
+
+
+def _unbound_uses(function: ast.FunctionDef | ast.AsyncFunctionDef) -> Iterator[
+        tuple[ast.Name, str, int]]:
+    nodes = list(scope_walk(function.body))
+    if any(isinstance(n, ast.Call) and isinstance(n.func, ast.Name)
+           and n.func.id in ("locals", "vars", "globals") for n in nodes):
+        return
+    everywhere = bound_names(function)
+    in_loops = {id(n) for loop in nodes if isinstance(loop, _LOOPS)
+                for n in scope_walk(loop.body + loop.orelse)}
+    for node in nodes:
+        if not isinstance(node, ast.Try) or id(node) in in_loops:
+            continue
+        for name, count in bound_names(node.body).items():
+            if count != everywhere.get(name) or not _fails_before(node.body, name):
+                continue
+            places = [node.finalbody] + [h.body for h in node.handlers if catches_everything(h)]
+            use = next((u for body in places for u in _uses(body, name)), None)
+            if use is not None:
+                line = next(s.lineno for s in node.body if name in bound_names(s))
+                yield use, name, line
+
+
+@rule("PYC003", "unbound-in-finally", Severity.ERROR,
+      fix="Assign the name (e.g. `node = None`) before `try` and check it before use")
+def unbound_in_finally(package: Package) -> Iterator[Hit]:
+    """A `finally` (or catch-all `except`) block uses a name assigned only inside the `try`.
+
+    ## What it does
+    In functions of installed modules, reports a read in `finally:` or in an `except:` /
+    `except Exception:` block of a local name whose only assignments are in the `try` body,
+    after a statement that can raise. `try` blocks inside loops, and uses guarded by
+    `locals()` or a `try/except NameError`, are not reported.
+
+    ## Why is this bad?
+    When the assignment fails (the node's constructor raises, Ctrl-C arrives first), the
+    cleanup code raises `UnboundLocalError` and hides the real error behind a confusing
+    traceback.
+
+    ## Example
+    ```python
+    try:
+        node = MyNode()
+        rclpy.spin(node)
+    finally:
+        node.destroy_node()
+    ```
+
+    ## Use instead
+    ```python
+    node = None
+    try:
+        node = MyNode()
+        rclpy.spin(node)
+    finally:
+        if node is not None:
+            node.destroy_node()
+    ```
+    """
+    for module, tree in installed_trees(package):
+        for function in ast.walk(tree):
+            if isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                for use, name, line in _unbound_uses(function):
+                    yield Hit(Span(module.path, use.lineno, use.col_offset + 1),
+                              f"`{name}` may be unbound here: it is only assigned inside the "
+                              f"`try` block (line {line}), which can fail before that",
+                              f"Assign `{name} = None` before `try` and check "
+                              f"`if {name} is not None:` before using it")

@@ -1,0 +1,55 @@
+"""PYC001: a name used in installed code that is defined nowhere (pyflakes' ``UndefinedName``)."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.python._tree import installed_trees
+from pkgtool.rules.registry import rule
+
+
+@rule("PYC001", "undefined-name", Severity.ERROR,
+      fix="Import or define the name before using it")
+def undefined_name(package: Package) -> Iterator[Hit]:
+    """Installed code uses a name that is not defined, imported or built in.
+
+    ## What it does
+    Runs pyflakes' checker (as a library, on the parsed tree) over every installed module
+    and reports its "undefined name" messages, with pyflakes' own handling of builtins,
+    `__all__`, star imports, conditional definitions and `except NameError` guards.
+
+    ## Why is this bad?
+    The line raises `NameError` when it runs, which for a node usually means inside a
+    callback, long after start-up checks passed.
+
+    ## Example
+    ```python
+    import numpy as np
+    gray = cv2.cvtColor(image, cv2.COLOR_BGR2GRAY)  # cv2 never imported
+    ```
+
+    ## Use instead
+    ```python
+    import cv2
+    import numpy as np
+    gray = cv2.cvtColor(image, cv2.COLOR_BGR2GRAY)
+    ```
+    """
+    from pyflakes.checker import Checker
+    from pyflakes.messages import UndefinedName
+
+    for module, tree in installed_trees(package):
+        try:
+            messages = Checker(tree, filename=module.path).messages
+        except Exception:  # pyflakes on hostile input (deep nesting, ...): skip, never crash
+            continue
+        seen: set[tuple[int, str]] = set()
+        for message in sorted(messages, key=lambda m: (m.lineno, m.col)):
+            name = message.message_args[0] if isinstance(message, UndefinedName) else None
+            if name is not None and (message.lineno, name) not in seen:
+                seen.add((message.lineno, name))
+                yield Hit(Span(module.path, message.lineno, message.col + 1),
+                          f"Undefined name `{name}`")

@@ -1,0 +1,1 @@
+"""SET: setup.py and setup.cfg against package.xml and what colcon needs."""

@@ -1,0 +1,28 @@
+"""What the SET, ENT and DAT rules share: which packages they check, and setup.py's values."""
+
+from __future__ import annotations
+
+from pkgtool.model.installed import is_ament_python
+from pkgtool.model.package import Package
+from pkgtool.model.setup_py import SetupPy, Value
+from pkgtool.model.span import Span
+
+
+def checked_setup(package: Package) -> SetupPy | None:
+    """setup.py of an ament_python package with a package.xml, when it calls setup()."""
+    setup = package.setup_py
+    if package.manifest is None or setup is None or setup.setup_span is None:
+        return None
+    return setup if is_ament_python(package) else None
+
+
+def text_of(value: Value | None) -> tuple[str, Span] | None:
+    """A keyword's value and position when it evaluated to a string."""
+    if value is None or not isinstance(value.value, str):
+        return None
+    return value.value, value.span
+
+
+def same_text(left: str, right: str) -> bool:
+    """Equal ignoring case and runs of whitespace."""
+    return " ".join(left.split()).casefold() == " ".join(right.split()).casefold()

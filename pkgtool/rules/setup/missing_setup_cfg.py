@@ -1,0 +1,46 @@
+"""SET008: console scripts without setup.cfg's script folders."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.rules.registry import rule
+from pkgtool.rules.setup.common import checked_setup
+
+
+@rule("SET008", "missing-setup-cfg", Severity.ERROR,
+      fix="Add `setup.cfg` with `[develop] script_dir=$base/lib/<package>` and `[install] "
+          "install_scripts=$base/lib/<package>`")
+def missing_setup_cfg(package: Package) -> Iterator[Hit]:
+    """The package has console scripts but no setup.cfg.
+
+    ## What it does
+    Reports the first `console_scripts` entry of a package that has no setup.cfg.
+
+    ## Why is this bad?
+    Without `script_dir`/`install_scripts`, setuptools installs the executables into the
+    prefix's `bin/` folder. `ros2 run` and launch files look only in `lib/<package>/`, so
+    they report "No executable found" although the build succeeded.
+
+    ## Example
+    ```text
+    my_pkg/setup.py      entry_points={'console_scripts': ['talker = my_pkg.talker:main']}
+    (no setup.cfg)
+    ```
+
+    ## Use instead
+    ```ini
+    [develop]
+    script_dir=$base/lib/my_pkg
+    [install]
+    install_scripts=$base/lib/my_pkg
+    ```
+    """
+    setup = checked_setup(package)
+    if setup is None or package.has_file("setup.cfg") or not setup.console_scripts:
+        return
+    yield Hit(setup.console_scripts[0].span,
+              f"Without `setup.cfg` console scripts install to `bin/`, where `ros2 run "
+              f"{package.name}` does not look")

@@ -1,0 +1,45 @@
+"""SET003: setup.py's name differs from package.xml's."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.rules.registry import rule
+from pkgtool.rules.setup.common import checked_setup, text_of
+
+
+@rule("SET003", "setup-name-mismatch", Severity.WARNING,
+      fix="Use the `package.xml` name in `setup(name=...)`, e.g. through `package_name`")
+def setup_name_mismatch(package: Package) -> Iterator[Hit]:
+    """`setup(name=...)` is not the name in package.xml.
+
+    ## What it does
+    Compares the statically known `name` keyword of `setup()` with package.xml's `<name>`.
+
+    ## Why is this bad?
+    ROS tools know the package by its package.xml name, setuptools by the setup.py name: the
+    installed egg-info, the console script wrappers and the ament index marker (usually built
+    from the same variable) drift apart, and `ros2 run` or `ros2 pkg` may not find the package.
+
+    ## Example
+    ```python
+    setup(name='robot-monitor', ...)   # package.xml: <name>robot_monitor</name>
+    ```
+
+    ## Use instead
+    ```python
+    package_name = 'robot_monitor'
+    setup(name=package_name, ...)
+    ```
+    """
+    setup = checked_setup(package)
+    manifest = package.manifest
+    found = text_of(setup.name) if setup else None
+    if found is None or manifest is None or manifest.name is None:
+        return
+    name, span = found
+    if name != manifest.name.value:
+        yield Hit(span, f"`setup.py` name `{name}` differs from the `package.xml` name "
+                        f"`{manifest.name.value}`")

@@ -1,0 +1,65 @@
+"""SET009: setup.cfg's script folders are not lib/<this package>."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.registry import rule
+from pkgtool.rules.setup.common import checked_setup
+
+SCRIPT_OPTIONS = (("develop", "script_dir"), ("install", "install_scripts"))
+
+
+def _normal(value: str) -> str:
+    return value.strip().replace("${base}", "$base").rstrip("/")
+
+
+@rule("SET009", "wrong-script-dir", Severity.ERROR,
+      fix="Set `[develop] script_dir` and `[install] install_scripts` to `$base/lib/<package>`")
+def wrong_script_dir(package: Package) -> Iterator[Hit]:
+    """setup.cfg sends console scripts somewhere other than `lib/<this package>`.
+
+    ## What it does
+    Checks `[develop] script_dir` and `[install] install_scripts` in setup.cfg: each must be
+    `$base/lib/<name>` with this package's name. A missing option is reported when the
+    package has console scripts.
+
+    ## Why is this bad?
+    `ros2 run <package> <executable>` and launch files look for executables only in
+    `lib/<package>/`. A folder named after another package (a copied setup.cfg) or a missing
+    option (executables land in `bin/`) makes them "No executable found". `script_dir` is used
+    by `colcon build --symlink-install`, `install_scripts` by a plain `colcon build`.
+
+    ## Example
+    ```ini
+    [develop]
+    script_dir=$base/lib/turtle_demo
+    [install]
+    install_scripts=$base/lib/turtle_demo
+    ```
+
+    ## Use instead
+    ```ini
+    [develop]
+    script_dir=$base/lib/my_pkg
+    [install]
+    install_scripts=$base/lib/my_pkg
+    ```
+    """
+    setup, cfg = checked_setup(package), package.setup_cfg
+    if setup is None or cfg is None:
+        return
+    wanted = f"$base/lib/{package.name}"
+    for section, key in SCRIPT_OPTIONS:
+        option = cfg.get(section, key)
+        if option is None:
+            if setup.console_scripts:
+                yield Hit(Span(cfg.path, 1, 1),
+                          f"`setup.cfg` has no `[{section}] {key}`: console scripts install to "
+                          f"`bin/`, not `lib/{package.name}`")
+        elif _normal(option.value) != wanted:
+            yield Hit(option.span, f"`{option.key}` is `{option.value}`, not `{wanted}`: "
+                                   f"`ros2 run {package.name}` will not find the executables")

@@ -1,0 +1,138 @@
+"""Find the packages to lint from command-line paths: packages, workspaces or files in packages.
+
+A package is a folder holding ``package.xml`` or ``setup.py``. Discovery follows colcon:
+
+- a folder holding an ignore marker (``COLCON_IGNORE``, ``AMENT_IGNORE``, ``CATKIN_IGNORE``) is
+  skipped with everything below it;
+- hidden folders, virtual environments (a ``pyvenv.cfg``), ``__pycache__``, ``node_modules``,
+  ``*.egg-info`` and colcon's ``build``/``install``/``log`` folders are skipped;
+- packages do not nest: once a folder is a package, its sub-folders are not searched.
+
+A folder named on the command line is linted (or searched) even when it holds an ignore
+marker: the user asked for it. A file is linted through its owning package, the nearest
+folder above it that is a package; files in no package, or in a package that discovery would
+skip, are ignored (that is what pre-commit needs).
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable, Sequence
+from dataclasses import dataclass
+from pathlib import Path
+
+PACKAGE_MARKERS = ("package.xml", "setup.py")
+IGNORE_MARKERS = frozenset({"COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE"})
+SKIPPED_NAMES = frozenset({"__pycache__", "node_modules", "site-packages"})
+OUTPUT_DIRS = frozenset({"build", "install", "log"})
+
+
+@dataclass(frozen=True, slots=True)
+class Discovery:
+    """Package roots to lint (absolute, unique, sorted) and the arguments that gave none.
+
+    ``missing`` are arguments that do not exist; ``empty`` are folders with no package below.
+    """
+
+    packages: tuple[Path, ...]
+    missing: tuple[str, ...] = ()
+    empty: tuple[str, ...] = ()
+
+
+def is_package(folder: Path) -> bool:
+    """True when ``folder`` holds a package.xml or a setup.py."""
+    return any((folder / marker).is_file() for marker in PACKAGE_MARKERS)
+
+
+def discover(paths: Sequence[str], *, cwd: Path) -> Discovery:
+    """Resolve command-line ``paths`` (relative to ``cwd``; none means ``cwd``) to packages."""
+    found: dict[str, Path] = {}
+    missing: list[str] = []
+    empty: list[str] = []
+    for argument in paths or ["."]:
+        path = Path(os.path.abspath(cwd / argument))
+        if not os.path.lexists(path):
+            missing.append(argument)
+            continue
+        if path.is_dir():
+            roots = [path] if is_package(path) else list(_walk(path))
+            if not roots:
+                empty.append(argument)
+        else:
+            owner = owning_package(path)
+            roots = [owner] if owner and not _skipped_below(owner, cwd) else []
+        for root in roots:
+            found.setdefault(os.path.realpath(root), root)
+    packages = tuple(sorted(found.values()))
+    return Discovery(packages, tuple(missing), tuple(empty))
+
+
+def owning_package(file: Path) -> Path | None:
+    """The nearest folder above ``file`` that is a package, not crossing a git repository root."""
+    for folder in file.parents:
+        if is_package(folder):
+            return folder
+        if (folder / ".git").exists():
+            return None
+    return None
+
+
+def _skipped_below(root: Path, cwd: Path) -> bool:
+    """True when discovery from ``cwd`` would skip ``root`` (only folders below ``cwd`` count)."""
+    try:
+        relative = root.relative_to(cwd)
+    except ValueError:
+        return _ignored_here(root)
+    folder = cwd
+    for part in relative.parts:
+        folder = folder / part
+        if _skipped_name(part) or _ignored_here(folder) or (folder / "pyvenv.cfg").is_file():
+            return True
+        if part in OUTPUT_DIRS and folder != root:
+            return True
+    return False
+
+
+def _skipped_name(name: str) -> bool:
+    return name.startswith(".") or name in SKIPPED_NAMES or name.endswith(".egg-info")
+
+
+def _ignored_here(folder: Path) -> bool:
+    return any((folder / marker).exists() for marker in IGNORE_MARKERS)
+
+
+def _walk(top: Path) -> Iterable[Path]:
+    """Packages below ``top``; each folder is listed once and symlink cycles are cut."""
+    seen = {os.path.realpath(top)}
+    stack = [_listing(top)[1]]
+    while stack:
+        for sub in stack.pop():
+            real = os.path.realpath(sub)
+            if real in seen:
+                continue
+            seen.add(real)
+            names, subfolders = _listing(sub)
+            if names & IGNORE_MARKERS or "pyvenv.cfg" in names:
+                continue
+            if any(marker in names for marker in PACKAGE_MARKERS) and is_package(sub):
+                yield sub
+            elif sub.name not in OUTPUT_DIRS:
+                stack.append(subfolders)
+
+
+def _listing(folder: Path) -> tuple[frozenset[str], list[Path]]:
+    """The names in ``folder`` and its sub-folders worth searching."""
+    try:
+        with os.scandir(folder) as entries:
+            listed = list(entries)
+    except OSError:
+        return frozenset(), []
+    names = frozenset(e.name for e in listed)
+    return names, [Path(e.path) for e in listed if not _skipped_name(e.name) and _is_dir(e)]
+
+
+def _is_dir(entry: os.DirEntry[str]) -> bool:
+    try:
+        return entry.is_dir()
+    except OSError:
+        return False

@@ -1,0 +1,1 @@
+"""A Python agent commanding humanoid joints through ROS 2 controllers."""

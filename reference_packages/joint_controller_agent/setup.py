@@ -1,0 +1,27 @@
+from setuptools import find_packages, setup
+
+package_name = 'joint_controller_agent'
+
+setup(
+    name=package_name,
+    version='0.1.0',
+    packages=find_packages(exclude=['test']),
+    data_files=[
+        ('share/ament_index/resource_index/packages', ['resource/' + package_name]),
+        ('share/' + package_name, ['package.xml']),
+    ],
+    install_requires=['setuptools'],
+    zip_safe=True,
+    maintainer='pkgtool developers',
+    maintainer_email='dev@example.com',
+    description=('Humanoid joint position agent: JointTrajectory commands and a Trigger '
+                 'homing call'),
+    license='Apache-2.0',
+    extras_require={'test': ['pytest']},
+    entry_points={
+        'console_scripts': [
+            'humanoid_joint_controller = '
+            'joint_controller_agent.humanoid_joint_controller:main',
+        ],
+    },
+)

@@ -1,0 +1,1 @@
+"""Agents that observe and report the robot's state."""

@@ -1,0 +1,1 @@
+"""An agent that sends navigation goals to Nav2's NavigateToPose action server."""

@@ -1,0 +1,1 @@
+"""Battery and temperature health monitors for a robot."""

@@ -1,0 +1,1 @@
+"""Pure models behind the monitor nodes: simulated sensors and status classification."""

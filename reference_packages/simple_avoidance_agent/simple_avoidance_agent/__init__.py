@@ -1,0 +1,1 @@
+"""Obstacle avoidance agents: LaserScan in, geometry_msgs/Twist out."""

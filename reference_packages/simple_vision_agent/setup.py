@@ -1,0 +1,25 @@
+from setuptools import find_packages, setup
+
+package_name = 'simple_vision_agent'
+
+setup(
+    name=package_name,
+    version='0.1.0',
+    packages=find_packages(exclude=['test']),
+    data_files=[
+        ('share/ament_index/resource_index/packages', ['resource/' + package_name]),
+        ('share/' + package_name, ['package.xml']),
+    ],
+    install_requires=['setuptools'],
+    zip_safe=True,
+    maintainer='pkgtool developers',
+    maintainer_email='dev@example.com',
+    description='Colour-based object detection on camera images, without cv_bridge',
+    license='Apache-2.0',
+    extras_require={'test': ['pytest']},
+    entry_points={
+        'console_scripts': [
+            'color_detector = simple_vision_agent.color_detector:main',
+        ],
+    },
+)

@@ -1,0 +1,1 @@
+"""A perception agent: find coloured objects in sensor_msgs/Image streams."""

@@ -1,0 +1,33 @@
+"""Builders for the create tests: a request with fixed maintainer and year, created on disk."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from pathlib import Path
+
+import pytest
+
+from pkgtool.commands.create import CreateResult, Request, run
+
+ALL_KINDS = ("talker:publisher", "listener:subscriber", "server:service", "caller:client",
+             "fib_server:action-server", "fib_client:action-client", "beat:timer")
+
+
+def request(destination: Path, name: str = "demo_pkg", **values: object) -> Request:
+    """A request as the CLI would build it, with the defaults pinned for determinism."""
+    values.setdefault("maintainer_name", "Jane Doe")
+    values.setdefault("maintainer_email", "jane@example.com")
+    values.setdefault("year", 2026)
+    return Request(name=name, destination=destination, **values)  # type: ignore[arg-type]
+
+
+@pytest.fixture
+def create(tmp_path: Path) -> Callable[..., CreateResult]:
+    """Create a package under ``tmp_path`` (or ``destination=``) and return the result."""
+
+    def make(name: str = "demo_pkg", *, destination: Path | None = None, dry_run: bool = False,
+             force: bool = False, **values: object) -> CreateResult:
+        return run(request(destination or tmp_path, name, **values), dry_run=dry_run,
+                   force=force)
+
+    return make

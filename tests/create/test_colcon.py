@@ -1,0 +1,109 @@
+"""Generated packages really build, install runnable nodes and pass their own tests with colcon.
+
+One workspace holds two packages (every node kind with the default interfaces; the other
+interfaces with format 2 and MIT), so one ``colcon build`` and one ``colcon test`` cover them.
+"""
+
+from __future__ import annotations
+
+import os
+import selectors
+import signal
+import subprocess
+import time
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+
+from pkgtool.commands.create import run
+from pkgtool.ros.colcon import colcon_build, colcon_env, colcon_test
+from pkgtool.testing.ros_fixtures import next_domain_id
+from tests.create.conftest import ALL_KINDS, request
+from tests.create.test_render import OTHER_TYPES
+
+pytestmark = [pytest.mark.ros, pytest.mark.colcon, pytest.mark.slow]
+
+PACKAGES = {
+    "demo_nodes": {"nodes": ALL_KINDS, "launch": True, "config": True, "library_name": "util",
+                   "dependencies": ("numpy",)},
+    "other_nodes": {"nodes": OTHER_TYPES, "license": "MIT", "package_format": 2},
+}
+
+
+@pytest.fixture(scope="module")
+def workspace(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, str]]:
+    """A workspace with both packages created and built."""
+    root = tmp_path_factory.mktemp("ws")
+    for name, values in PACKAGES.items():
+        assert not run(request(root / "src", name, **values)).error
+    env = colcon_env(root, domain_id=next_domain_id())
+    build = colcon_build(root, base_paths=[root / "src"], env=env, timeout=300)
+    assert build.ok, build.output
+    return root, env
+
+
+def _script_env(root: Path, env: dict[str, str]) -> dict[str, str]:
+    sites = [str(p) for name in PACKAGES
+             for p in (root / "install" / name / "lib").glob("python3*/site-packages")]
+    return dict(env, PYTHONPATH=os.pathsep.join(sites))
+
+
+def test_console_scripts_are_installed_under_lib(workspace) -> None:
+    root, _ = workspace
+    for name, values in PACKAGES.items():
+        for spec in values["nodes"]:
+            script = root / "install" / name / "lib" / name / spec.split(":")[0]
+            assert script.is_file() and os.access(script, os.X_OK), script
+    share = root / "install" / "demo_nodes" / "share" / "demo_nodes"
+    assert (share / "launch" / "demo_nodes.launch.py").is_file()
+    assert (share / "config" / "params.yaml").is_file()
+
+
+def _wait_for(process: subprocess.Popen, text: str, timeout: float) -> str:
+    """Read ``process``'s output until ``text`` shows up (or the time is up); return it."""
+    seen = b""
+    deadline = time.monotonic() + timeout
+    with selectors.DefaultSelector() as selector:
+        selector.register(process.stdout, selectors.EVENT_READ)
+        while text.encode() not in seen and time.monotonic() < deadline:
+            if selector.select(timeout=0.2):
+                chunk = os.read(process.stdout.fileno(), 65536)
+                if not chunk:
+                    break
+                seen += chunk
+    return seen.decode(errors="replace")
+
+
+def test_installed_nodes_start_talk_and_stop_cleanly_on_sigint(workspace) -> None:
+    root, env = workspace
+    lib = root / "install" / "demo_nodes" / "lib" / "demo_nodes"
+    processes = {name: subprocess.Popen([str(lib / name)], env=_script_env(root, env),
+                                        stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
+                                        stderr=subprocess.STDOUT)
+                 for name in ("talker", "listener")}
+    try:
+        heard = _wait_for(processes["listener"], "Received message", timeout=30)
+        assert "Received message" in heard, heard
+    finally:
+        for process in processes.values():
+            process.send_signal(signal.SIGINT)
+        codes = {name: process.wait(timeout=20) for name, process in processes.items()}
+    output = processes["talker"].stdout.read().decode(errors="replace")
+    assert codes == {"talker": 0, "listener": 0}, output
+    assert "Published message" in output and "Traceback" not in output
+
+
+def test_colcon_test_runs_the_generated_tests_and_they_pass(workspace) -> None:
+    root, env = workspace
+    result = colcon_test(root, base_paths=[root / "src"], env=env, timeout=300)
+    assert result.ok, result.output
+    for name, values in PACKAGES.items():
+        suite = ET.parse(root / "build" / name / "pytest.xml").getroot()
+        cases = {case.get("name"): case for case in suite.iter("testcase")}
+        assert not [n for n, c in cases.items() if c.find("failure") is not None
+                    or c.find("error") is not None], name
+        ran = {n for n, c in cases.items() if c.find("skipped") is None}
+        nodes = {spec.split(":")[0] for spec in values["nodes"]}
+        assert all(any(n.startswith(f"test_{node}_") for n in ran) for node in nodes), sorted(ran)
+        assert {"test_flake8", "test_pep257"} <= ran

@@ -1,0 +1,70 @@
+"""An installed (non-editable) pkgtool finds its templates: build the wheel, install, create.
+
+The wheel is built from a copy of the source (the checkout is never written to) and installed
+into a fresh venv whose only other path is this venv's site-packages (for jinja2 and typer);
+the command runs outside any checkout, so only the packaged templates can be found.
+"""
+
+from __future__ import annotations
+
+import shutil
+import subprocess
+import sys
+import sysconfig
+import zipfile
+from pathlib import Path
+
+import pytest
+
+from tests.create.conftest import ALL_KINDS
+
+pytestmark = pytest.mark.slow
+ROOT = Path(__file__).resolve().parents[2]
+SOURCES = ("pyproject.toml", "setup.py", "MANIFEST.in", "README.md", "pkgtool", "templates",
+           "reference_packages")
+
+
+def _run(*args: str, cwd: Path) -> str:
+    done = subprocess.run(args, cwd=cwd, capture_output=True, text=True, timeout=300,
+                          check=False)
+    assert done.returncode == 0, done.stdout + done.stderr
+    return done.stdout
+
+
+def test_the_built_wheel_carries_the_templates_and_create_uses_them(tmp_path: Path) -> None:
+    source = tmp_path / "src"
+    source.mkdir()
+    for name in SOURCES:
+        if (ROOT / name).is_dir():
+            shutil.copytree(ROOT / name, source / name,
+                            ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+        else:
+            shutil.copy2(ROOT / name, source / name)
+    _run(sys.executable, "-m", "pip", "wheel", "--no-deps", "--no-build-isolation", "-q",
+         "-w", str(tmp_path / "dist"), str(source), cwd=tmp_path)
+    wheel = next((tmp_path / "dist").glob("pkgtool-*.whl"))
+    names = zipfile.ZipFile(wheel).namelist()
+    assert "pkgtool/_resources/templates/package.xml.jinja" in names
+    assert "pkgtool/_resources/templates/licenses/Apache-2.0.txt" in names
+
+    venv = tmp_path / "venv"
+    _run(sys.executable, "-m", "venv", "--without-pip", str(venv), cwd=tmp_path)
+    python = venv / "bin" / "python"
+    _run(sys.executable, "-m", "pip", "--python", str(python), "install", "--no-deps", "-q",
+         str(wheel), cwd=tmp_path)
+    site = Path(_run(str(python), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])",
+                     cwd=tmp_path).strip())
+    (site / "zz_project_deps.pth").write_text(sysconfig.get_paths()["purelib"] + "\n")
+
+    where = _run(str(python), "-c", "import pkgtool.resources as r; "
+                 "print(r.resource_dir('templates'))", cwd=tmp_path).strip()
+    assert where == str(site / "pkgtool" / "_resources" / "templates")
+    out = tmp_path / "out"
+    args = [str(python), "-m", "pkgtool", "create", "demo_pkg", "--destination-directory",
+            str(out), "--maintainer-name", "Jane Doe", "--maintainer-email", "jane@example.com",
+            "--license", "MIT", "--launch", "--config"]
+    for spec in ALL_KINDS:
+        args += ["--node", spec]
+    _run(*args, cwd=tmp_path)
+    assert (out / "demo_pkg" / "demo_pkg" / "fib_client.py").is_file()
+    assert (out / "demo_pkg" / "LICENSE").read_text().startswith("MIT License")

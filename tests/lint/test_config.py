@@ -1,0 +1,104 @@
+"""``[tool.pkgtool]``: validation, layering (workspace < package < CLI), per-file ignores."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from pkgtool.config import ConfigError, ConfigFinder, Layer, expand, parse_table, settings_for
+from pkgtool.findings import Severity
+from pkgtool.rules.registry import load_all
+from tests.helpers import write_tree
+
+CLI = Layer("the command line")
+
+
+def _codes(*layers: Layer) -> set[str]:
+    return {r.code for r in settings_for(layers).rules}
+
+
+def _layer(table: dict[str, object], base: Path = Path("/ws")) -> Layer:
+    return parse_table(table, source="pyproject.toml", base=base)
+
+
+def test_defaults_are_the_default_enabled_rules() -> None:
+    assert _codes(CLI) == {c for c, r in load_all().items() if r.default_enabled}
+
+
+def test_select_replaces_then_extend_select_adds_then_ignore_removes() -> None:
+    workspace = _layer({"select": ["SYN"], "ignore": ["SYN002"]})
+    assert _codes(workspace) == {"SYN001", "SYN003"}
+    package = _layer({"extend-select": ["unreadable-file"]})
+    assert _codes(workspace, package) == {"SYN001", "SYN002", "SYN003"}
+    command_line = Layer("the command line", select=("SYN001",))
+    assert _codes(workspace, package, command_line) == {"SYN001"}
+
+
+def test_all_selects_rules_that_are_off_by_default() -> None:
+    assert _codes(Layer("cli", select=("ALL",))) == set(load_all())
+
+
+def test_strict_and_severity_take_the_innermost_value() -> None:
+    outer = _layer({"strict": True, "severity": {"SYN001": "warning", "SYN002": "info"}})
+    inner = _layer({"strict": False, "severity": {"unparsable-file": "error"}})
+    settings = settings_for([outer, inner, CLI])
+    assert settings.strict is False
+    assert settings.severities == {"SYN001": Severity.ERROR, "SYN002": Severity.INFO}
+    assert settings_for([outer, inner, Layer("cli", strict=True)]).strict is True
+
+
+@pytest.mark.parametrize(("table", "named"), [
+    ({"selct": ["SYN"]}, "`selct`"),
+    ({"extend_select": ["SYN"]}, "Did you mean `extend-select`?"),
+    ({"select": ["NOPE001"]}, "`NOPE001`"),
+    ({"ignore": "SYN001"}, "`ignore`"),
+    ({"strict": "yes"}, "`strict`"),
+    ({"severity": {"XYZ123": "warning"}}, "`XYZ123`"),
+    ({"severity": {"SYN001": "fatal"}}, "`SYN001`"),
+    ({"per-file-ignores": {"test/*": ["BAD999"]}}, "`BAD999`"),
+    ({"per-file-ignores": {"test/*": "SYN001"}}, "`test/*`"),
+])
+def test_invalid_tables_name_the_offending_key(table: dict[str, object], named: str) -> None:
+    with pytest.raises(ConfigError, match="pyproject.toml") as raised:
+        _layer(table)
+    assert named in str(raised.value)
+
+
+def test_known_but_empty_families_are_valid_selectors() -> None:
+    assert expand("syn", where="x") >= {"SYN001"}
+    assert isinstance(expand("LCH", where="x"), frozenset)
+
+
+def test_per_file_ignores_are_relative_to_their_file(tmp_path: Path) -> None:
+    layer = _layer({"per-file-ignores": {"src/*/test/*": ["SYN001"], "*.launch.py": ["SYN"],
+                                         "docs": ["SYN002"]}}, base=tmp_path)
+    settings = settings_for([layer])
+    assert settings.ignores(tmp_path / "src/pkg/test/test_a.py", "SYN001")
+    assert not settings.ignores(tmp_path / "src/pkg/test/test_a.py", "SYN002")
+    assert settings.ignores(tmp_path / "src/pkg/launch/x.launch.py", "SYN003")
+    assert settings.ignores(tmp_path / "docs/conf.py", "SYN002")
+    assert not settings.ignores(tmp_path.parent / "other/src/pkg/test/a.py", "SYN001")
+
+
+def test_finder_layers_workspace_then_package_then_cli(tmp_path: Path) -> None:
+    write_tree(tmp_path, {
+        "pyproject.toml": '[tool.pkgtool]\nselect = ["SYN"]\nstrict = true\n',
+        "src/a/package.xml": "<package/>\n",
+        "src/a/pyproject.toml": '[tool.pkgtool]\nignore = ["SYN003"]\n',
+        "src/b/package.xml": "<package/>\n",
+        "src/b/pyproject.toml": "[project]\nname = 'b'\n",  # not ours: the workspace applies
+    })
+    finder = ConfigFinder(Layer("cli", ignore=("SYN002",)))
+    a = finder.settings(tmp_path / "src/a")
+    assert {r.code for r in a.rules} == {"SYN001"} and a.strict
+    assert {r.code for r in finder.settings(tmp_path / "src/b").rules} == {"SYN001", "SYN003"}
+    isolated = ConfigFinder(CLI, isolated=True).settings(tmp_path / "src/a")
+    assert isolated.strict is False and "SYN003" in {r.code for r in isolated.rules}
+
+
+def test_invalid_toml_names_the_file(tmp_path: Path) -> None:
+    write_tree(tmp_path, {"pyproject.toml": "[tool.pkgtool\nselect = 1\n",
+                          "pkg/package.xml": "<package/>\n"})
+    with pytest.raises(ConfigError, match="not valid TOML"):
+        ConfigFinder(CLI).settings(tmp_path / "pkg")

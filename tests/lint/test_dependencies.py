@@ -1,0 +1,193 @@
+"""Imports versus package.xml (DEP) and launch files (LCH), on packages built in memory."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from pkgtool.model.package import Package
+from pkgtool.rules.dependencies._imports import classify, installed_code, needs, own_modules
+from tests.helpers import MINIMAL_MANIFEST, codes, findings, make_package
+
+SETUP = """
+from setuptools import find_packages, setup
+
+setup(
+    name='demo',
+    version='0.1.0',
+    packages=find_packages(exclude=['test']),
+    data_files=[('share/demo', ['package.xml'])],
+    entry_points={'console_scripts': ['talker = demo.talker:main']},
+)
+"""
+
+
+def _manifest(*extra: str) -> str:
+    lines = "\n  ".join(extra)
+    return MINIMAL_MANIFEST.format(name="demo").replace(
+        "<test_depend>", f"{lines}\n  <test_depend>", 1)
+
+
+def _package(tmp_path: Path, files: dict[str, str], *deps: str) -> Package:
+    tree = {"package.xml": _manifest(*deps), "setup.py": SETUP, "demo/__init__.py": "",
+            "resource/demo": ""}
+    tree.update(files)
+    return make_package(tmp_path / "demo", tree)
+
+
+@pytest.mark.parametrize(("top", "kind", "key"), [
+    ("cv2", "third-party", "python3-opencv"),
+    ("yaml", "third-party", "python3-yaml"),
+    ("tkinter", "third-party", "python3-tk"),
+    ("sensor_msgs", "ros", "sensor_msgs"),
+    ("my_robot_interfaces", "ros", "my_robot_interfaces"),
+    ("tf2_ros", "ros", "tf2_ros_py"),
+    ("urdf_parser_py", "ros", "urdfdom_py"),
+    ("rclpy", "ros", "rclpy"),
+    ("tf_transformations", "ros", "tf_transformations"),
+    ("pyquaternion", "unknown", "python3-pyquaternion"),
+    ("Some_Lib", "unknown", "python3-some-lib"),
+])
+def test_classify(top: str, kind: str, key: str) -> None:
+    assert classify(top, ()) [:1] == (kind,) and classify(top, ())[1][0] == key
+
+
+def test_a_declared_name_is_a_package_not_unknown() -> None:
+    assert classify("my_helpers", {"my_helpers"}) == ("ros", ("my_helpers",))
+
+
+def test_stdlib_own_and_sibling_imports_need_nothing(tmp_path: Path) -> None:
+    package = _package(tmp_path, {
+        "demo/talker.py": "import os\nimport json\nfrom demo import util\nimport util\n"
+                          "from . import util as u\nimport launchlib\n",
+        "demo/util.py": "",
+        "launchlib/__init__.py": "",
+    })
+    module = package.module("demo/talker.py")
+    assert module is not None
+    assert [n.top for n in needs(package, module)] == []
+    assert {"demo", "launchlib"} <= own_modules(package)
+
+
+def test_a_launch_folder_does_not_hide_the_launch_package(tmp_path: Path) -> None:
+    package = _package(tmp_path, {"launch/demo.launch.py": "from launch import LaunchDescription\n",
+                                  "launch/helpers.py": ""})
+    assert "launch" not in own_modules(package)
+
+
+def test_installed_code_follows_setup_py(tmp_path: Path) -> None:
+    package = _package(tmp_path, {
+        "demo/talker.py": "", "demo/sub/__init__.py": "", "demo/sub/x.py": "",
+        "test/test_a.py": "", "examples/e.py": "", "demo/test_helpers.py": "",
+    })
+    assert sorted(m.path for m in installed_code(package)) == [
+        "demo/__init__.py", "demo/sub/__init__.py", "demo/sub/x.py", "demo/talker.py"]
+
+
+def test_installed_code_without_setup_py_uses_package_folders(tmp_path: Path) -> None:
+    package = make_package(tmp_path / "demo", {
+        "package.xml": _manifest(), "demo/__init__.py": "", "demo/talker.py": "import cv2\n",
+        "tools/script.py": "import pandas\n"})
+    assert [m.path for m in installed_code(package)] == ["demo/__init__.py", "demo/talker.py"]
+    assert codes(package, "DEP001") == ["DEP001"]
+
+
+def test_nothing_is_reported_without_a_readable_package_xml(tmp_path: Path) -> None:
+    package = make_package(tmp_path / "demo", {
+        "package.xml": "<package><name>demo</nam></package>", "setup.py": SETUP,
+        "demo/__init__.py": "", "demo/talker.py": "import cv2\n",
+        "test/test_a.py": "import yaml\n",
+        "launch/a.launch.py": "from launch_ros.actions import Node\nNode(package='x')\n"})
+    assert codes(package, "DEP001", "DEP002", "DEP003", "DEP004", "DEP005", "DEP006",
+                 "LCH002", "LCH003") == []
+
+
+def test_tf2_ros_is_covered_by_either_package(tmp_path: Path) -> None:
+    for key in ("tf2_ros", "tf2_ros_py"):
+        package = _package(tmp_path / key, {"demo/talker.py": "import tf2_ros\n"},
+                           f"<exec_depend>{key}</exec_depend>")
+        assert codes(package, "DEP001") == []
+
+
+def test_one_finding_per_imported_package_and_file(tmp_path: Path) -> None:
+    package = _package(tmp_path, {"demo/talker.py": "from sensor_msgs.msg import Imu\n"
+                                                    "from sensor_msgs.msg import Image\n"})
+    assert [f.span.line for f in findings(package, "DEP001")] == [1]
+
+
+def test_build_depend_covers_test_imports(tmp_path: Path) -> None:
+    package = _package(tmp_path, {"test/test_a.py": "import numpy\nimport pytest\n"},
+                       "<build_depend>python3-numpy</build_depend>")
+    assert codes(package, "DEP003") == []
+
+
+def test_test_helpers_next_to_tests_are_own_modules(tmp_path: Path) -> None:
+    package = _package(tmp_path, {"test/test_a.py": "import helpers\nimport pytest\n",
+                                  "test/helpers.py": ""})
+    assert codes(package, "DEP003", "DEP004") == []
+
+
+def test_guarded_and_unguarded_import_of_the_same_module_is_one_error(tmp_path: Path) -> None:
+    package = _package(tmp_path, {"demo/talker.py": "import cv2\ntry:\n    import cv2\n"
+                                                    "except ImportError:\n    pass\n"})
+    assert codes(package, "DEP001", "DEP005") == ["DEP001"]
+
+
+def test_unused_dependency_ignores_conditions_tools_and_mentions(tmp_path: Path) -> None:
+    package = _package(tmp_path, {"demo/talker.py": "NAME = 'std_msgs/msg/String'\n"},
+                       '<exec_depend condition="$ROS_VERSION == 1">rospy_msgs</exec_depend>',
+                       "<exec_depend>std_msgs</exec_depend>",
+                       "<exec_depend>ament_index_python</exec_depend>",
+                       "<exec_depend>ros2launch</exec_depend>",
+                       "<exec_depend>ffmpeg</exec_depend>")
+    assert [f.message for f in findings(package, "DEP006")] == [
+        "`rclpy` is declared but nothing imports or launches it"]
+
+
+def test_unused_dependency_sees_launch_files(tmp_path: Path) -> None:
+    package = _package(tmp_path, {
+        "demo/talker.py": "import rclpy\n",
+        "launch/a.launch.py": "Node(package='turtlesim', executable='turtlesim_node')\n"},
+        "<exec_depend>turtlesim</exec_depend>", "<exec_depend>nav_msgs</exec_depend>")
+    assert [f.message for f in findings(package, "DEP006")] == [
+        "`nav_msgs` is declared but nothing imports or launches it"]
+
+
+def test_launch_executable_from_setup_cfg_entry_points(tmp_path: Path) -> None:
+    package = make_package(tmp_path / "demo", {
+        "package.xml": _manifest(), "demo/__init__.py": "",
+        "setup.py": "from setuptools import setup\nsetup(name='demo')\n",
+        "setup.cfg": "[options.entry_points]\nconsole_scripts =\n    listener = demo.l:main\n",
+        "launch/a.launch.py": "Node(package='demo', executable='listener')\n"
+                              "Node(package='demo', executable='talker')\n"})
+    assert [f.span.line for f in findings(package, "LCH001")] == [2]
+
+
+@pytest.mark.parametrize("setup", [
+    "from setuptools import setup\nsetup(name='demo', entry_points=make_entry_points())\n",
+    "from setuptools import setup\nsetup(name='demo', scripts=['bin/talker_node'])\n",
+    "from setuptools import setup\nsetup(**options)\n",
+])
+def test_launch_executables_unknown_when_setup_py_is_dynamic(tmp_path: Path, setup: str) -> None:
+    package = make_package(tmp_path / "demo", {
+        "package.xml": _manifest(), "demo/__init__.py": "", "setup.py": setup,
+        "launch/a.launch.py": "Node(package='demo', executable='talker_node')\n"})
+    assert codes(package, "LCH001") == []
+
+
+def test_launch_file_of_tests_may_use_test_dependencies(tmp_path: Path) -> None:
+    package = _package(tmp_path, {
+        "test/test_launch.launch.py": "import launch_testing\nimport launch\n"
+                                      "Node(package='turtlesim', executable='t')\n"},
+        "<test_depend>turtlesim</test_depend>", "<test_depend>launch_testing</test_depend>",
+        "<exec_depend>ros2launch</exec_depend>")
+    assert codes(package, "LCH002", "LCH003") == []
+
+
+def test_own_package_in_launch_files_is_never_undeclared(tmp_path: Path) -> None:
+    package = _package(tmp_path, {"launch/a.launch.xml":
+                                  '<launch><node pkg="demo" exec="talker"/>'
+                                  '<include file="$(find-pkg-share demo)/launch/b.launch.py"/>'
+                                  "</launch>"})
+    assert codes(package, "LCH001", "LCH002") == []

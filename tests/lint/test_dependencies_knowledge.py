@@ -1,0 +1,101 @@
+"""The curated tables are facts: checked against real NumPy and real rclpy, not assumed."""
+
+from __future__ import annotations
+
+import importlib
+import pkgutil
+import re
+import warnings
+
+import pytest
+
+from pkgtool.knowledge.numpy_removed import REMOVED
+from pkgtool.knowledge.rclpy_missing import entries, missing_attribute, owners
+from pkgtool.knowledge.ros_names import looks_like_ros
+from pkgtool.knowledge.rosdep import (NOT_ROSDEP_KEYS, PYTHON_MODULE_KEYS, accepted_keys,
+                                      key_for_python_module, package_for_ros_module,
+                                      stdlib_modules, suggested_key)
+
+KEY = re.compile(r"^[a-z0-9][a-z0-9.+-]*$")
+
+
+def test_rosdep_keys_look_like_keys() -> None:
+    assert all(KEY.match(key) for key in PYTHON_MODULE_KEYS.values())
+    assert all(KEY.match(key) for key in NOT_ROSDEP_KEYS.values())
+
+
+def test_public_lookups() -> None:
+    assert key_for_python_module("cv2") == "python3-opencv"
+    assert key_for_python_module("pyquaternion") is None
+    assert suggested_key("python-opencv") == "python3-opencv"
+    assert suggested_key("opencv-python") == "python3-opencv"
+    assert suggested_key("yaml") is None  # a real rosdep key (libyaml)
+    assert package_for_ros_module("tf2_ros") == "tf2_ros_py"
+    assert package_for_ros_module("sensor_msgs") == "sensor_msgs"
+    assert accepted_keys("pkg_resources", "python3-setuptools") == (
+        "python3-setuptools", "python3-pkg-resources")
+    assert "os" in stdlib_modules() and "numpy" not in stdlib_modules()
+
+
+@pytest.mark.parametrize("name", ["sensor_msgs", "std_srvs", "my_robot_interfaces", "rclpy",
+                                  "rcl_interfaces", "tf2_geometry_msgs", "launch_ros",
+                                  "cv_bridge", "ament_index_python", "nav2_simple_commander"])
+def test_ros_names(name: str) -> None:
+    assert looks_like_ros(name)
+
+
+@pytest.mark.parametrize("name", ["numpy", "launchpadlib", "rospy_helpers_x", "messages",
+                                  "mylib"])
+def test_not_ros_names(name: str) -> None:
+    assert not looks_like_ros(name)
+
+
+def test_numpy_names_are_really_gone_from_numpy_2() -> None:
+    numpy = pytest.importorskip("numpy")
+    assert int(numpy.__version__.split(".")[0]) >= 2
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        present = [name for name, removed in REMOVED.items()
+                   if "back in 2.0" not in removed.removed_in and hasattr(numpy, name)]
+        back = [name for name, removed in REMOVED.items()
+                if "back in 2.0" in removed.removed_in and not hasattr(numpy, name)]
+    assert present == [] and back == []
+
+
+def test_numpy_2_expired_names_with_replacements_are_covered() -> None:
+    expired = pytest.importorskip("numpy._expired_attrs_2_0").__expired_attributes__
+    common = {"float_", "complex_", "string_", "unicode_", "Inf", "NaN", "PINF", "NINF",
+              "alltrue", "sometrue", "round_", "cfloat", "longfloat", "asfarray", "mat"}
+    assert common <= set(expired) and common <= set(REMOVED)
+
+
+def _import_all_of_rclpy() -> None:
+    rclpy = importlib.import_module("rclpy")
+    for info in pkgutil.walk_packages(rclpy.__path__, "rclpy."):
+        try:
+            importlib.import_module(info.name)
+        except Exception:  # noqa: BLE001 - optional submodules (e.g. needing other packages)
+            continue
+
+
+def _resolve(dotted: str) -> object:
+    module, _, name = dotted.rpartition(".")
+    try:
+        return importlib.import_module(dotted)
+    except ImportError:
+        return getattr(importlib.import_module(module), name)
+
+
+@pytest.mark.ros
+def test_rclpy_attributes_in_the_table_do_not_exist() -> None:
+    _import_all_of_rclpy()
+    existing = [(owner, attr) for owner, attr in entries() if hasattr(_resolve(owner), attr)]
+    assert existing == []
+
+
+@pytest.mark.ros
+def test_rclpy_class_aliases_are_the_same_classes() -> None:
+    for canonical, aliases in owners().items():
+        assert all(_resolve(alias) is _resolve(canonical) for alias in aliases)
+    assert missing_attribute("rclpy.action.client.ActionClient", "GoalStatus")
+    assert missing_attribute("rclpy.action.ActionClient", "send_goal_async") is None

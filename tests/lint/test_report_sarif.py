@@ -1,0 +1,49 @@
+"""SARIF 2.1.0: rule metadata from the registry, one result per finding."""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+from pkgtool.findings import Finding
+from pkgtool.report import ReportContext, render
+from pkgtool.rules.registry import load_all
+from tests.helpers import make_finding
+
+
+def _run(*findings: Finding) -> dict[str, Any]:
+    document = json.loads(render("sarif", list(findings), context=ReportContext(rules=load_all())))
+    assert document["version"] == "2.1.0"
+    assert document["$schema"].endswith("sarif-2.1.0.json")
+    (run,) = document["runs"]
+    return run
+
+
+def test_driver_lists_every_rule_with_metadata() -> None:
+    driver = _run()["tool"]["driver"]
+    assert driver["name"] == "pkgtool" and driver["version"]
+    assert [r["id"] for r in driver["rules"]] == list(load_all())
+    syn001 = next(r for r in driver["rules"] if r["id"] == "SYN001")
+    assert syn001["name"] == "unparsable-file"
+    assert syn001["shortDescription"]["text"] == load_all()["SYN001"].summary
+    assert syn001["fullDescription"]["text"].startswith("Reports XML that is not well-formed")
+    assert "## Why is this bad?" in syn001["help"]["markdown"]
+    assert syn001["defaultConfiguration"]["level"] == "error"
+
+
+def test_results_locations_and_levels() -> None:
+    run = _run(make_finding(), make_finding("SYN002", "info", path="", line=0, col=0),
+               make_finding(root="/abs/my pkg", path="package.xml", line=2, col=0))
+    third, second, first = run["results"]  # report order: by path
+    assert first["ruleId"] == "SYN001" and first["level"] == "error"
+    assert first["ruleIndex"] == list(load_all()).index("SYN001")
+    assert first["message"]["text"].startswith("Python syntax error: invalid syntax. Fix: ")
+    location = first["locations"][0]["physicalLocation"]
+    assert location == {
+        "artifactLocation": {"uri": "src/pkg/pkg/node.py", "uriBaseId": "%SRCROOT%"},
+        "region": {"startLine": 3, "startColumn": 5}}
+    assert second["level"] == "note"
+    assert "region" not in second["locations"][0]["physicalLocation"]
+    assert third["locations"][0]["physicalLocation"] == {
+        "artifactLocation": {"uri": "file:///abs/my%20pkg/package.xml"},
+        "region": {"startLine": 2}}

@@ -1,0 +1,110 @@
+"""Package discovery: packages, workspaces (colcon's skip rules) and files inside packages."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pytest
+
+from pkgtool.workspace import discover, owning_package
+from tests.helpers import write_tree
+
+MANIFEST = "<package format='3'><name>x</name></package>\n"
+
+
+def _names(root: Path, *paths: str) -> list[str]:
+    found = discover(list(paths), cwd=root)
+    assert not found.missing
+    return [p.relative_to(root).as_posix() for p in found.packages]
+
+
+@pytest.fixture()
+def workspace(tmp_path: Path) -> Path:
+    write_tree(tmp_path, {
+        "src/alpha/package.xml": MANIFEST,
+        "src/alpha/alpha/__init__.py": "",
+        "src/alpha/nested/package.xml": MANIFEST,  # colcon does not look inside packages
+        "src/group/beta/package.xml": MANIFEST,
+        "src/group/pure/setup.py": "from setuptools import setup\nsetup()\n",
+        "src/ignored/COLCON_IGNORE": "",
+        "src/ignored/gamma/package.xml": MANIFEST,
+        "src/ament_ignored/AMENT_IGNORE": "",
+        "src/ament_ignored/package.xml": MANIFEST,
+        "src/.hidden/delta/package.xml": MANIFEST,
+        "venv/pyvenv.cfg": "home = /usr/bin\n",
+        "venv/lib/site/package.xml": MANIFEST,
+        "build/alpha/package.xml": MANIFEST,
+        "install/alpha/share/alpha/package.xml": MANIFEST,
+        "log/latest/package.xml": MANIFEST,
+        "src/node_modules/epsilon/package.xml": MANIFEST,
+        "README.md": "workspace\n",
+    })
+    return tmp_path
+
+
+def test_workspace_discovery_follows_colcon(workspace: Path) -> None:
+    assert _names(workspace, ".") == ["src/alpha", "src/group/beta", "src/group/pure"]
+
+
+def test_no_path_means_the_current_folder(workspace: Path) -> None:
+    assert _names(workspace) == _names(workspace, ".")
+
+
+def test_a_package_folder_is_linted_alone_even_with_an_ignore_marker(workspace: Path) -> None:
+    assert _names(workspace, "src/alpha") == ["src/alpha"]
+    assert _names(workspace, "src/ament_ignored") == ["src/ament_ignored"]
+
+
+def test_files_map_to_their_owning_package_once(workspace: Path) -> None:
+    files = ["src/alpha/package.xml", "src/alpha/alpha/__init__.py", "src/group/beta/package.xml"]
+    assert _names(workspace, *files) == ["src/alpha", "src/group/beta"]
+
+
+def test_files_outside_packages_or_in_skipped_places_are_ignored(workspace: Path) -> None:
+    found = discover(["README.md", "src/ignored/gamma/package.xml", "venv/lib/site/package.xml",
+                      "src/.hidden/delta/package.xml", "build/alpha/package.xml"], cwd=workspace)
+    assert found.packages == () and found.missing == () and found.empty == ()
+
+
+def test_missing_paths_are_reported(workspace: Path) -> None:
+    found = discover(["src/alpha", "nope", "src/nope.py"], cwd=workspace)
+    assert found.missing == ("nope", "src/nope.py")
+
+
+def test_folder_without_packages_is_reported_as_empty(tmp_path: Path) -> None:
+    write_tree(tmp_path, {"docs/index.md": "hi\n"})
+    found = discover(["docs"], cwd=tmp_path)
+    assert found.packages == () and found.empty == ("docs",)
+
+
+def test_absolute_paths_and_paths_outside_the_cwd(workspace: Path, tmp_path: Path) -> None:
+    elsewhere = workspace / "src" / "group"
+    found = discover([str(elsewhere)], cwd=workspace / "src" / "alpha")
+    assert [p.name for p in found.packages] == ["beta", "pure"]
+
+
+def test_symlinked_packages_are_found_once_and_cycles_stop(workspace: Path) -> None:
+    (workspace / "src" / "link_to_beta").symlink_to(workspace / "src" / "group" / "beta")
+    (workspace / "src" / "group" / "loop").symlink_to(workspace / "src")
+    assert len(_names(workspace, ".")) == 3
+
+
+def test_owning_package_stops_at_the_repository_root(tmp_path: Path) -> None:
+    write_tree(tmp_path, {"package.xml": MANIFEST, "repo/.git/HEAD": "ref\n",
+                          "repo/tools/run.py": "print()\n"})
+    assert owning_package(tmp_path / "repo" / "tools" / "run.py") is None
+
+
+def test_unreadable_folders_are_skipped(workspace: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """chmod cannot lock root out, so the refusal is simulated at os.scandir."""
+    locked = str(workspace / "src" / "group")
+    scandir = os.scandir
+
+    def refusing(path: object = ".") -> object:
+        if os.fspath(path) == locked:  # type: ignore[arg-type]
+            raise PermissionError(13, "Permission denied", locked)
+        return scandir(path)  # type: ignore[arg-type]
+
+    monkeypatch.setattr(os, "scandir", refusing)
+    assert _names(workspace, ".") == ["src/alpha"]
