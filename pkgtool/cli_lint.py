@@ -60,31 +60,33 @@ def _colour(fmt: Format, output: Optional[Path]) -> bool:
 def lint(
     paths: Annotated[Optional[list[str]], typer.Argument(
         help="Packages, workspaces or files inside packages (default: the current folder).",
-        show_default=False)] = None,
+        show_default=False, metavar="PATH...")] = None,
     fmt: Annotated[Format, typer.Option("--format", "-f", help="Report format.")] = Format.TEXT,
     output: Annotated[Optional[Path], typer.Option(
         "--output", "-o", help="Write the report to this file instead of stdout.",
-        dir_okay=False)] = None,
+        dir_okay=False, metavar="FILE")] = None,
     select: Annotated[Optional[list[str]], typer.Option(
-        help="Run only these rules. " + _RULES_HELP, show_default=False)] = None,
+        help="Run only these rules. " + _RULES_HELP, show_default=False, metavar="RULES")] = None,
     ignore: Annotated[Optional[list[str]], typer.Option(
-        help="Do not run these rules. " + _RULES_HELP, show_default=False)] = None,
+        help="Do not run these rules. " + _RULES_HELP, show_default=False,
+        metavar="RULES")] = None,
     extend_select: Annotated[Optional[list[str]], typer.Option(
-        help="Run these rules too. " + _RULES_HELP, show_default=False)] = None,
+        help="Run these rules too. " + _RULES_HELP, show_default=False, metavar="RULES")] = None,
     strict: Annotated[Optional[bool], typer.Option(
         "--strict/--no-strict", help="Warnings fail too (default: from configuration, else off).",
         show_default=False)] = None,
     exit_zero: Annotated[bool, typer.Option(
-        help="Exit 0 even when findings fail (usage and internal errors still exit 2 and 3).",
+        "--exit-zero", help="Exit 0 even when findings fail (usage and internal errors still exit 2 and 3).",
     )] = False,
     quiet: Annotated[bool, typer.Option(
         "--quiet", "-q", help="Leave info findings out of the report (they never fail).")] = False,
     isolated: Annotated[bool, typer.Option(
-        help="Ignore [tool.pkgtool] in pyproject.toml files.")] = False,
+        "--isolated", help="Ignore [tool.pkgtool] in pyproject.toml files.")] = False,
     explain: Annotated[Optional[str], typer.Option(
         help="Print the documentation of a rule (code, name or family) and exit.",
-        show_default=False)] = None,
-    list_rules: Annotated[bool, typer.Option(help="List every rule and exit.")] = False,
+        show_default=False, metavar="RULE")] = None,
+    list_rules: Annotated[bool, typer.Option("--list-rules", help="List every rule and exit.")
+                          ] = False,
 ) -> None:
     """Check ament_python packages statically: package.xml, setup.py, setup.cfg, imports, launch.
 

@@ -16,14 +16,14 @@ from pkgtool.commands import ExitCode
 if TYPE_CHECKING:
     from rich.console import Console
 
-    from pkgtool.commands.reference import PackageReport, TestRunResult
+    from pkgtool.commands.reference import TestRunResult
 
 reference_app = typer.Typer(
     help="The packages the course documents describe: list, generate, lint, build and test.",
     no_args_is_help=True)
 
-_NAMES = typer.Argument(help="Reference package names (see `pkgtool reference list`).",
-                        show_default=False)
+_NAMES = typer.Argument(metavar="NAME...", show_default=False,
+                        help="Reference package names (see `pkgtool reference list`).")
 _ALL = typer.Option("--all", help="Every reference package.")
 
 
@@ -84,11 +84,11 @@ def test_command(
         help="Build in this new or empty folder and keep it (default: a temporary folder).",
         show_default=False)] = None,
 ) -> None:
-    """Generate into a workspace, lint (strict), colcon build and colcon test; exit 1 on failure."""
+    """Generate into a workspace, lint --strict, colcon build and test; exit 1 on failures."""
     from pkgtool.commands.reference import run_tests
 
     console = _console()
-    with _progress(console) as report:
+    with _Progress(console) as report:
         result = run_tests(names or (), all_=all_, jobs=jobs, keep=keep, progress=report)
     if result.errors:
         raise _fail(result.errors, result.exit_code)
@@ -96,7 +96,7 @@ def test_command(
     raise typer.Exit(int(result.exit_code))
 
 
-class _progress:  # noqa: N801 - used like a function, as a context manager
+class _Progress:
     """A live per-package progress display on a terminal; one line per event elsewhere (CI)."""
 
     def __init__(self, console: Console) -> None:
@@ -115,7 +115,7 @@ class _progress:  # noqa: N801 - used like a function, as a context manager
 
     def report(self, name: str, stage: str) -> None:
         if self.bar is None:
-            self.console.print(f"{name}: {stage}")
+            self.console.print(f"{name}: {stage}", markup=False)
             return
         if name not in self.tasks:
             self.tasks[name] = self.bar.add_task(name, total=None)
@@ -126,33 +126,34 @@ class _progress:  # noqa: N801 - used like a function, as a context manager
             self.bar.stop()
 
 
-def _tests_cell(report: PackageReport) -> str:
-    if report.summary is None:
-        return "[dim]not run[/]"
-    counts = report.summary.counts
-    failed = counts["failed"] + counts["error"]
-    if report.summary.problem or not report.summary.ran:
-        return f"[red]{report.summary.describe()}[/]"
-    return f"[{'red' if failed else 'green'}]{counts['passed']} passed / {failed} failed[/]"
-
-
 def _print_results(console: Console, result: TestRunResult) -> None:
     from rich.table import Table
 
-    table = Table("package", "lint findings", "build", "tests", "time", title="reference test")
+    table = Table(title="reference test")
+    table.add_column("package", no_wrap=True)
+    for column in ("lint findings", "build", "tests passed", "tests failed", "time"):
+        table.add_column(column, justify="left" if column == "build" else "right")
     for report in result.packages:
+        summary = report.summary
+        if summary is None:
+            passed, failed = "[dim]-[/]", "[dim]-[/]"
+        else:
+            bad = summary.counts["failed"] + summary.counts["error"]
+            passed = f"[{'green' if summary.ok else 'red'}]{summary.passed}[/]"
+            failed = f"[{'red' if bad else 'green'}]{bad}[/]"
         table.add_row(
             report.name,
             f"[{'red' if report.findings else 'green'}]{len(report.findings)}[/]",
             "[green]ok[/]" if report.built else "[red]failed[/]",
-            _tests_cell(report),
-            f"{report.seconds:.1f} s")
+            passed, failed, f"{report.seconds:.1f} s")
     console.print(table)
     for report in result.packages:
         details = list(report.findings)
         if report.summary is not None:
             details += [f"{c.name}: {c.outcome}: {c.message}" for c in report.summary.cases
                         if c.outcome in ("failed", "error")]
+            if report.summary.problem or not report.summary.ran:
+                details.append(f"tests: {report.summary.describe()}")
         if not report.built and report.output:
             details.append(report.output)
         if details:

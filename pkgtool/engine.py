@@ -8,15 +8,17 @@ from dataclasses import dataclass, field
 from pkgtool.findings import Finding, Severity
 from pkgtool.model.package import ALL, Package
 from pkgtool.model.span import Span
-from pkgtool.rules.registry import Rule, load_all, resolve
+from pkgtool.rules.registry import Rule
 
 
 @dataclass(frozen=True, slots=True)
 class Selection:
-    """Which rules run and at what severity (from the CLI and ``[tool.pkgtool]``).
+    """Which rules run and at what severity, for callers without configuration files.
 
-    ``select`` empty means every rule enabled by default; a selector is a code, a family prefix
-    or a rule name. ``severities`` overrides a rule's severity by code.
+    ``select`` empty means every rule enabled by default; a selector is ``ALL``, a code, a
+    family, a code prefix or a rule name (an unknown one raises
+    :class:`pkgtool.config.ConfigError`). ``severities`` overrides a rule's severity by code.
+    ``pkgtool lint`` layers configuration files with :mod:`pkgtool.config` instead.
     """
 
     select: tuple[str, ...] = ()
@@ -26,16 +28,11 @@ class Selection:
 
     def rules(self) -> list[Rule]:
         """The rules this selection runs, in code order."""
-        catalogue = load_all()
-        if self.select:
-            chosen = {r.code: r for s in self.select for r in resolve(s)}
-        else:
-            chosen = {c: r for c, r in catalogue.items() if r.default_enabled}
-        chosen.update({r.code: r for s in self.extend_select for r in resolve(s)})
-        for selector in self.ignore:
-            for ignored in resolve(selector):
-                chosen.pop(ignored.code, None)
-        return [chosen[c] for c in sorted(chosen)]
+        from pkgtool.config import Layer, settings_for
+
+        layer = Layer("the selection", None, self.select or None, self.ignore,
+                      self.extend_select)
+        return list(settings_for([layer]).rules)
 
 
 def _suppressed(package: Package, finding: Finding, rule: Rule) -> bool:

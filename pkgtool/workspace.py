@@ -9,9 +9,9 @@ A package is a folder holding ``package.xml`` or ``setup.py``. Discovery follows
 - packages do not nest: once a folder is a package, its sub-folders are not searched.
 
 A folder named on the command line is linted (or searched) even when it holds an ignore
-marker: the user asked for it. A file is linted through its owning package, the nearest
-folder above it that is a package; files in no package, or in a package that discovery would
-skip, are ignored (that is what pre-commit needs).
+marker: the user asked for it. A file, or a folder inside a package with no package below it,
+is linted through its owning package, the nearest folder above it that is a package; files in
+no package, or in a package that discovery would skip, are ignored (what pre-commit needs).
 """
 
 from __future__ import annotations
@@ -55,16 +55,20 @@ def discover(paths: Sequence[str], *, cwd: Path) -> Discovery:
             missing.append(argument)
             continue
         if path.is_dir():
-            roots = [path] if is_package(path) else list(_walk(path))
+            roots = [path] if is_package(path) else list(_walk(path)) or _owner(path, cwd)
             if not roots:
                 empty.append(argument)
         else:
-            owner = owning_package(path)
-            roots = [owner] if owner and not _skipped_below(owner, cwd) else []
+            roots = _owner(path, cwd)
         for root in roots:
             found.setdefault(os.path.realpath(root), root)
     packages = tuple(sorted(found.values()))
     return Discovery(packages, tuple(missing), tuple(empty))
+
+
+def _owner(path: Path, cwd: Path) -> list[Path]:
+    owner = owning_package(path)
+    return [owner] if owner and not _skipped_below(owner, cwd) else []
 
 
 def owning_package(file: Path) -> Path | None:

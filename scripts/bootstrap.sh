@@ -20,7 +20,7 @@ stamp="$VENV/.pkgtool-installed"
 want="$(cat "$ROOT/requirements/lock.txt" "$ROOT/pyproject.toml" | sha256sum | cut -d' ' -f1)"
 if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ]; then
     echo "bootstrap: installing the locked requirements into $VENV" >&2
-    "$VENV/bin/uv" pip install -q --python "$VENV/bin/python" -r "$ROOT/requirements/lock.txt"
+    "$VENV/bin/uv" pip install -q --compile-bytecode --python "$VENV/bin/python" -r "$ROOT/requirements/lock.txt"
     "$VENV/bin/uv" pip install -q --python "$VENV/bin/python" --no-deps -e "$ROOT"
     "$VENV/bin/python" -m pkgtool.ros.wheel_fixups "$VENV"
     echo "$want" > "$stamp"

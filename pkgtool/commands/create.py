@@ -76,6 +76,6 @@ def run(request: Request, *, dry_run: bool = False, force: bool = False,
         return CreateResult(ExitCode.USAGE, error=f"Cannot write `{error.filename or ''}`: "
                             f"{error.strerror or error}. Nothing was left behind; check the "
                             "destination's permissions and free space.")
-    marks = {p: "exists, kept" for p in kept}
+    marks = dict.fromkeys(kept, "exists, kept")
     return CreateResult(ExitCode.OK, plan.root, tuple(written), tuple(kept),
                         tree(plan.name, list(files), marks), dry_run=dry_run)

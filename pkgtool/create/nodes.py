@@ -27,6 +27,11 @@ EXAMPLES = {
 """Interfaces whose fields the templates fill in; any other type is sent default-constructed."""
 
 
+_GENERATED_NAMES = frozenset({"Node", "Parameter", "ActionServer", "ActionClient", "GoalStatus",
+                              "ExternalShutdownException"})
+"""Names the generated modules import besides the interface type."""
+
+
 @dataclass(frozen=True, slots=True)
 class Kind:
     """One node kind: its template, the interface family it uses and its parameters."""
@@ -92,10 +97,7 @@ class NodeSpec:
     def class_name(self) -> str:
         """The node class: ``my_talker`` -> ``MyTalker`` (``Node`` appended on a clash)."""
         base = "".join(part.capitalize() for part in self.name.split("_"))
-        taken = {"Node", "Parameter", "ActionServer", "ActionClient", "GoalStatus",
-                 "ExternalShutdownException"}
-        if self.interface:
-            taken.add(self.interface.name)
+        taken = _GENERATED_NAMES | {self.interface.name if self.interface else ""}
         return base + "Node" if base in taken else base
 
     @property
@@ -119,6 +121,9 @@ def parse_interface(text: str, family: str) -> Interface:
     if not match or match.group(2) != family:
         raise ValueError(f"Invalid {family} type `{text}`: write it as "
                          f"`package/{family}/Name`, e.g. `{DEFAULT_TYPES[family]}`.")
+    if match.group(3) in _GENERATED_NAMES:
+        raise ValueError(f"The {family} type `{text}` has the name of a class the generated "
+                         "code imports from rclpy: rename the type or write the node by hand.")
     return Interface(match.group(1), family, match.group(3))
 
 

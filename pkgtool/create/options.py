@@ -17,11 +17,11 @@ from pkgtool.create.licenses import LICENSES
 from pkgtool.create.nodes import NodeSpec, parse_node
 from pkgtool.knowledge import rosdep
 
-# REP 144: lowercase alphanumerics, single underscores between, a letter first, 2+ characters.
+# REP 144: lowercase alphanumerics with single underscores between them, a letter first.
 _NAME = re.compile(r"^[a-z][a-z0-9]*(_[a-z0-9]+)*$")
 _ROSDEP_KEY = re.compile(r"^python3-[a-z0-9][a-z0-9.+-]*$")
 _RESERVED = {"test": "it is the folder of the package's tests, which setup.py excludes"}
-_LINTER_TESTS = frozenset({"copyright", "flake8", "pep257"})
+_TEST_FILES = frozenset({"conftest", "copyright", "flake8", "pep257"})
 MAX_NAME = {"package name": 40, "node name": 32, "library name": 32}
 """Longer names do not fit the 99-character lines of ament's flake8 settings."""
 _FORMATS = (2, 3)
@@ -29,7 +29,11 @@ _FORMATS = (2, 3)
 
 @dataclass(frozen=True, slots=True)
 class Request:
-    """The raw values from the command line (``None``: not given, take the default)."""
+    """The raw values from the command line (``None``: not given, take the default).
+
+    The maintainer and the year have no default here: the CLI fills them with
+    :func:`pkgtool.commands.create.defaults` (git config, SOURCE_DATE_EPOCH).
+    """
 
     name: str
     destination: Path
@@ -47,7 +51,7 @@ class Request:
     action: str | None = None
     launch: bool = False
     config: bool = False
-    year: int = 1970
+    year: int | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -141,9 +145,9 @@ def _nodes(request: Request) -> tuple[NodeSpec, ...]:
     seen: set[str] = set()
     for spec in specs:
         check_name(spec.name, "node name")
-        if spec.name in _LINTER_TESTS:
-            raise CreateError(f"Invalid node name `{spec.name}`: its test would be "
-                              f"test/test_{spec.name}.py, the ament linter test. Rename it.")
+        if spec.name in _TEST_FILES:
+            raise CreateError(f"Invalid node name `{spec.name}`: it is taken by a generated "
+                              "test file (conftest.py or an ament linter test). Rename it.")
         if spec.name in seen or spec.name == request.library_name:
             raise CreateError(f"Node name `{spec.name}` is used twice: give each node and the "
                               "library its own name.")
@@ -154,6 +158,8 @@ def _nodes(request: Request) -> tuple[NodeSpec, ...]:
 def validate(request: Request) -> Plan:
     """Check every value of ``request``; return the :class:`Plan` or raise CreateError."""
     name = check_name(request.name, "package name")
+    if request.year is None or not 1000 <= request.year <= 9999:
+        raise CreateError(f"Invalid copyright year {request.year}: give four digits.")
     if request.license not in LICENSES:
         raise CreateError(f"Unknown license `{request.license}`. Choose one of: "
                           f"{', '.join(LICENSES)}.")

@@ -27,9 +27,8 @@ _TESTS_WITH_OVERRIDES = frozenset({"publisher", "timer", "client"})
 _CONFTEST: Imports = [("os", None), ("time", None), ("pytest", None), ("rclpy", None),
                       ("rclpy.context", "Context"), ("rclpy.executors", "SingleThreadedExecutor")]
 _LINTER_TESTS: dict[str, Imports] = {
-    "test_copyright": [("pytest", None)],
-    "test_flake8": [("ament_flake8.main", "main_with_errors"), ("pytest", None)],
-    "test_pep257": [("ament_pep257.main", "main"), ("pytest", None)],
+    name: [("pathlib", "Path"), ("pytest", None)]
+    for name in ("test_copyright", "test_flake8", "test_pep257")
 }
 
 

@@ -2,12 +2,13 @@
 
 A new package is written into a hidden staging folder beside the destination and renamed into
 place in one step, so a failure halfway leaves nothing behind. With ``force`` into an existing
-folder, only missing files are added (each by a hard link that fails rather than replace); if
-one fails, the files added so far are removed again.
+folder, only missing files are added (each opened with "x", which fails rather than replace);
+if one fails, the files added so far are removed again.
 """
 
 from __future__ import annotations
 
+import contextlib
 import os
 import secrets
 import shutil
@@ -73,22 +74,28 @@ def write_package(root: Path, files: Mapping[str, str], *, force: bool = False,
     nothing of this call is left on disk.
     """
     missing, kept = check_destination(root, files, force=force)
+    made = [p for p in root.parents if not p.exists()]  # destination folders to create
     root.parent.mkdir(parents=True, exist_ok=True)
     staging = root.parent / f".{root.name}.pkgtool-{os.getpid()}-{secrets.token_hex(4)}"
-    staging.mkdir()  # unlike mkdtemp, keeps the umask's permissions for the renamed folder
     try:
+        staging.mkdir()  # unlike mkdtemp, keeps the umask's permissions for the renamed folder
         _stage({p: files[p] for p in missing}, staging, before_write)
         if root.exists():
             _move_missing(staging, root, missing)
         else:
             os.rename(staging, root)
-    finally:
+    except BaseException:
         shutil.rmtree(staging, ignore_errors=True)
+        for folder in made:  # innermost first; only if still empty
+            with contextlib.suppress(OSError):
+                folder.rmdir()
+        raise
+    shutil.rmtree(staging, ignore_errors=True)
     return missing, kept
 
 
 def _move_missing(staging: Path, root: Path, relpaths: list[str]) -> None:
-    """Link each staged file into ``root``; on any failure undo what this call added."""
+    """Copy each staged file into ``root``; on any failure undo what this call added."""
     added: list[Path] = []
     made: list[Path] = []
     try:
@@ -99,8 +106,9 @@ def _move_missing(staging: Path, root: Path, relpaths: list[str]) -> None:
                 if not folder.exists():
                     folder.mkdir()
                     made.append(folder)
-            os.link(staging / relpath, target)  # fails instead of replacing an existing file
-            added.append(target)
+            with open(target, "xb") as out:  # "x": fails rather than replace an existing file
+                added.append(target)
+                out.write((staging / relpath).read_bytes())
     except BaseException:
         for path in reversed(added):
             path.unlink(missing_ok=True)

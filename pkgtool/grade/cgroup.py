@@ -7,6 +7,7 @@ there is no cgroup and the sandbox relies on rlimits alone.
 
 from __future__ import annotations
 
+import functools
 import itertools
 import os
 import signal
@@ -124,3 +125,13 @@ def create_job_cgroup(*, max_pids: int, memory_bytes: int) -> JobCgroup | None:
         JobCgroup(version, folders).remove()
         return None
     return JobCgroup(version, folders)
+
+
+@functools.cache
+def cgroups_available() -> bool:
+    """True when this process can create job cgroups (probed once by creating one)."""
+    probe = create_job_cgroup(max_pids=16, memory_bytes=64 * 1024 * 1024)
+    if probe is None:
+        return False
+    probe.remove()
+    return True

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import re
+import secrets
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -16,7 +18,7 @@ from pkgtool.model.package import Package
 from pkgtool.ros.colcon import ColconRun
 
 MAX_LINES = 20
-HIDDEN_FOLDER = "pkgtool_hidden_tests"
+_ERROR_LINE = re.compile(r"^(error: |[\w.]*(Error|Exception)\b)")
 
 
 @dataclass
@@ -27,7 +29,8 @@ class Job:
     runner: WorkspaceRunner
     package: Package
     copy: Path
-    _runs: dict[str, tuple[ColconRun, TestSummary | None]] = field(default_factory=dict)
+    _build: ColconRun | None = None
+    _runs: dict[str, tuple[ColconRun, TestSummary]] = field(default_factory=dict)
 
     @property
     def name(self) -> str:
@@ -36,11 +39,11 @@ class Job:
 
     def build(self) -> ColconRun:
         """The (single) colcon build of the job."""
-        if "build" not in self._runs:
-            self._runs["build"] = (self.runner.build([self.name]), None)
-        return self._runs["build"][0]
+        if self._build is None:
+            self._build = self.runner.build([self.name])
+        return self._build
 
-    def tests(self, exclude: tuple[str, ...]) -> tuple[ColconRun, TestSummary | None]:
+    def tests(self, exclude: tuple[str, ...]) -> tuple[ColconRun, TestSummary]:
         """The student's own tests, run once per distinct ``exclude`` list."""
         key = "tests:" + ",".join(exclude)
         if key not in self._runs:
@@ -48,12 +51,14 @@ class Job:
                                                ignore=exclude)
         return self._runs[key]
 
-    def hidden(self, folder: Path) -> tuple[ColconRun, TestSummary | None]:
+    def hidden(self, folder: Path) -> tuple[ColconRun, TestSummary]:
         """Instructor tests from ``folder``, copied into the package copy and run there."""
         key = f"hidden:{folder}"
         if key not in self._runs:
-            dest = place(folder, self.copy / HIDDEN_FOLDER / folder.name, self.runner.box)
-            report = self.runner.workspace / f"hidden-{len(self._runs)}.xml"
+            token = secrets.token_hex(6)  # a name no submission can have planted files under
+            dest = place(folder, self.copy / f"pkgtool_hidden_{token}" / folder.name,
+                         self.runner.box)
+            report = self.runner.workspace / f"hidden-{token}.xml"
             self._runs[key] = self.runner.pytest(dest, report=report,
                                                  test_timeout=self.rubric.test_timeout)
         return self._runs[key]
@@ -84,17 +89,22 @@ def _build(criterion: Criterion, job: Job) -> Outcome:
     if run.ok:
         return criterion.points, [f"`colcon build` succeeded in {run.seconds:.1f} s"], ""
     why = f" ({run.limit})" if run.limit else ""
-    return 0.0, [f"`colcon build` failed{why}"], _tail(run.output)
+    first = next((line.strip() for line in run.output.splitlines()
+                  if _ERROR_LINE.match(line.strip())), None)
+    return 0.0, [f"`colcon build` failed{why}", *([first] if first else [])], _tail(run.output)
 
 
 def _lint(criterion: Criterion, job: Job) -> Outcome:
     rules = Selection(select=criterion.select, ignore=criterion.ignore).rules()
     floor = Severity(criterion.min_severity).rank
-    found = [f for f in check_package(job.package, rules, root_label=job.name)
-             if f.severity.rank >= floor]
+    findings = check_package(job.package, rules, root_label=job.name)
+    broken = [f"Not counted (a pkgtool bug): {f.message}" for f in findings if f.internal]
+    found = [f for f in findings if f.severity.rank >= floor and not f.internal]
     if not found:
-        return criterion.points, [f"No findings from {', '.join(criterion.select)}"], ""
+        return criterion.points, [f"No findings from {', '.join(criterion.select)}",
+                                  *broken], ""
     lines = [f"{f.span.path}:{f.span.line}: {f.code} {f.message}" for f in found[:MAX_LINES]]
+    lines += broken
     if len(found) > MAX_LINES:
         lines.append(f"... and {len(found) - MAX_LINES} more")
     if criterion.per_finding is None:
@@ -111,10 +121,10 @@ def _executables(criterion: Criterion, job: Job) -> Outcome:
 
 def _tests(criterion: Criterion, job: Job) -> Outcome:
     run, summary = job.tests(criterion.exclude)
-    assert summary is not None
+    if summary.problem:
+        return 0.0, [summary.problem, *_limit(run)], _tail(run.output)
     if summary.ran < criterion.min_tests:
-        found = summary.problem or ("no tests ran" if not summary.ran
-                                    else f"only {summary.ran} tests ran")
+        found = f"only {summary.ran} tests ran" if summary.ran else "no tests ran"
         return 0.0, [f"{found}; write at least {criterion.min_tests} test(s)",
                      *_limit(run)], _tail(run.output)
     return _test_outcome(criterion, run, summary)
@@ -123,7 +133,6 @@ def _tests(criterion: Criterion, job: Job) -> Outcome:
 def _hidden(criterion: Criterion, job: Job) -> Outcome:
     assert criterion.path is not None
     run, summary = job.hidden(criterion.path)
-    assert summary is not None
     if not summary.ran:
         return 0.0, [summary.problem or "no instructor test ran", *_limit(run)], \
             _tail(run.output)
@@ -133,7 +142,8 @@ def _hidden(criterion: Criterion, job: Job) -> Outcome:
 def _test_outcome(criterion: Criterion, run: ColconRun, summary: TestSummary) -> Outcome:
     lines = [summary.describe(), *_limit(run)]
     failing = [c for c in summary.cases if c.outcome in ("failed", "error")]
-    lines += [f"{c.outcome.upper()} {c.name}: {c.message}" for c in failing[:MAX_LINES]]
+    lines += [f"{c.outcome.upper()} {c.name}: {(c.message.splitlines() or [''])[0]}"
+              for c in failing[:MAX_LINES]]
     output = "\n".join(f"{c.outcome.upper():7} {c.name} ({c.seconds:.2f} s)"
                        + (f"\n{c.details}" if c.details else "") for c in summary.cases)
     return _credit(criterion, summary.passed, summary.ran), lines, output

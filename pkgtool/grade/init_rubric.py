@@ -69,14 +69,15 @@ def example_rubric() -> str:
 
     parts = [HEADER, _annotate(tomli_w.dumps(_TOP), _TOP_NOTES),
              "# Sandbox limits for every step of every submission.",
-             _annotate(tomli_w.dumps({"limits": _LIMITS}), _LIMIT_NOTES)]
-    for comment, criterion in _CRITERIA:
-        parts += [f"# {comment}", _annotate(tomli_w.dumps({"criteria": [criterion]}), _NOTES)]
+             "[limits]\n" + _annotate(tomli_w.dumps(_LIMITS), _LIMIT_NOTES)]
+    for comment, criterion in _CRITERIA:  # each table's keys by tomli-w, under its header
+        parts += [f"# {comment}", "[[criteria]]\n" + _annotate(tomli_w.dumps(criterion), _NOTES)]
     return "\n".join(parts)
 
 
 def write_example(path: Path) -> list[Path]:
     """Write the example rubric, and its hidden-test folder if absent; return what was written."""
+    path.parent.mkdir(parents=True, exist_ok=True)
     path.write_text(example_rubric(), encoding="utf-8")
     written = [path]
     tests = path.parent / "hidden_tests"

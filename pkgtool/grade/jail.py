@@ -60,11 +60,10 @@ awk '{{n = split($6, o, ","); f = ""; for (i = 1; i <= n; i++) if (o[i] != "rw")
   {mount} -o "remount,bind,ro$flags" "$point" || fail "cannot make $point read-only"
 done || exit {failed}
 cd "$here" || fail "cannot enter $here"  # again: through the writable bind
-if [ -n "$uid" ]; then
-  exec {setpriv} --reuid="$uid" --regid="$uid" --clear-groups --inh-caps=-all \
-    --bounding-set=-all --no-new-privs -- "$@"
-fi
-exec {setpriv} --inh-caps=-all --bounding-set=-all --no-new-privs -- "$@"
+set -- --inh-caps=-all --bounding-set=-all --no-new-privs -- "$@"
+if [ -n "$uid" ]; then set -- --reuid="$uid" --regid="$uid" --clear-groups "$@"; fi
+{setpriv} "$@"
+exit $?  # not exec: a signal death becomes 128 + its number, which unshare cannot re-raise
 """
 
 

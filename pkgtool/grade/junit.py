@@ -8,6 +8,8 @@ from pathlib import Path
 
 MAX_XML_BYTES = 16 * 1024 * 1024
 OUTCOMES = ("passed", "failed", "error", "skipped")
+_COLCON_PLACEHOLDER = ".pytest.missing_result"
+"""The test case colcon writes in place of the report of a pytest that did not write one."""
 
 
 @dataclass(frozen=True, slots=True)
@@ -73,7 +75,10 @@ def parse_junit(path: Path) -> TestSummary:
         return TestSummary(problem="no tests ran (pytest wrote no report)")
     except (OSError, etree.XMLSyntaxError) as error:
         return TestSummary(problem=f"the test report cannot be read: {error}")
-    return TestSummary(tuple(_case(element) for element in root.iter("testcase")))
+    cases = tuple(_case(element) for element in root.iter("testcase"))
+    if any(c.name.endswith(_COLCON_PLACEHOLDER) for c in cases):
+        return TestSummary(problem="pytest ended without a report (it crashed or was stopped)")
+    return TestSummary(cases)
 
 
 def _case(element) -> TestCase:  # type: ignore[no-untyped-def]

@@ -104,6 +104,11 @@ def parse_rubric(data: dict[str, Any], *, base: Path, label: str = "rubric") -> 
         raise RubricError(f"{label}: add at least one [[criteria]] table.")
     criteria = tuple(_criterion(_table(e, f"{label}: criteria[{i}]"), base, f"{label}: "
                                 f"criteria[{i}]") for i, e in enumerate(entries))
+    names = [c.name for c in criteria]
+    twice = next((n for n in names if names.count(n) > 1), None)
+    if twice:
+        raise RubricError(f"{label}: the criterion name `{twice}` is used twice; give each "
+                          "criterion its own `name`.")
     package = data.get("package")
     if package is not None and not isinstance(package, str):
         raise RubricError(f"{label}: `package` must be a package name.")

@@ -67,7 +67,7 @@ class WorkspaceRunner:
         run = colcon_test(self.workspace, base_paths=[self.src], env=self.env,
                           packages=[package], pytest_args=args, runner=self.box.run,
                           timeout=self.box.limits.timeout)
-        return run, parse_junit(self.workspace / "build" / package / "pytest.xml")
+        return run, _checked(run, parse_junit(self.workspace / "build" / package / "pytest.xml"))
 
     def installed_env(self) -> dict[str, str]:
         """The environment with every installed package of the workspace on the paths."""
@@ -94,7 +94,7 @@ class WorkspaceRunner:
                    "junit_family=xunit2", f"--junit-xml={report}", *_timeout_args(test_timeout),
                    str(tests)]
         run = self.box.run(command, tests, self.installed_env())
-        return run, parse_junit(report)
+        return run, _checked(run, parse_junit(report))
 
     def entry_points(self, package: str, names: Sequence[str]) -> dict[str, str]:
         """For each console script name, "" when installed and loadable, else the problem."""
@@ -124,6 +124,18 @@ def place(source: Path, dest: Path, box: Sandbox) -> Path:
                     ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
     box.give(dest)
     return dest
+
+
+def _checked(run: ColconRun, summary: TestSummary) -> TestSummary:
+    """``summary``, unless the run failed while its report says every test passed.
+
+    The report is written by a process that also runs the submission's code: a report of
+    success from a failed run is not believed.
+    """
+    if summary.ok and run.returncode != 0:
+        return TestSummary(problem="the test report claims success but the test run failed "
+                                   f"(exit status {run.returncode}); it is not counted")
+    return summary
 
 
 def _timeout_args(seconds: float | None) -> list[str]:

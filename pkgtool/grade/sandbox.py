@@ -19,12 +19,12 @@ import subprocess
 import sys
 import tempfile
 import time
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from dataclasses import dataclass
 from pathlib import Path
 
-from pkgtool.grade.cgroup import create_job_cgroup
+from pkgtool.grade.cgroup import cgroups_available, create_job_cgroup
 from pkgtool.grade.jail import JAIL_FAILED, SYSTEM_PATH, jail_command, jail_support
 from pkgtool.ros.colcon import ColconRun
 
@@ -51,7 +51,12 @@ class Sandbox:
         self.limits = limits
         self.mode = mode or jail_support().mode
         self.uid = 1_000_000 + secrets.randbelow(1_000_000) if self.mode == "root" else None
-        self._cgroups_work: bool | None = None
+        self.cgroups = cgroups_available()
+
+    @property
+    def bounds_processes(self) -> bool:
+        """True when a process-count limit really holds (root ignores RLIMIT_NPROC)."""
+        return self.cgroups or self.uid is not None or os.geteuid() != 0
 
     def give(self, path: Path) -> None:
         """Hand ``path`` (and everything below it) to the sandbox's uid so commands can write."""
@@ -78,7 +83,9 @@ class Sandbox:
                           f"unprivileged uid {self.uid}"],
                  "userns": ["namespaces: user, net, pid, mount (read-only machine)"],
                  "none": [f"no namespaces ({jail_support().reason or 'disabled'})"]}[self.mode]
-        parts.append("cgroup: pids, memory" if self._cgroups_work else "no cgroup")
+        parts.append("cgroup: pids, memory" if self.cgroups else "no cgroup")
+        if not self.bounds_processes:
+            parts.append("process count NOT limited (root without namespaces or cgroups)")
         limits = self.limits
         parts.append(f"limits: {limits.timeout:g} s wall, {limits.memory_mb} MB, "
                      f"{limits.processes} processes, {limits.cpu_seconds} s CPU, "
@@ -89,9 +96,10 @@ class Sandbox:
             timeout: float | None = None) -> ColconRun:
         """Run ``command`` in the sandbox; never raises for anything the command does."""
         limit = min(timeout or self.limits.timeout, self.limits.timeout)
-        cgroup = create_job_cgroup(max_pids=self.limits.processes,
-                                   memory_bytes=self.limits.memory_mb * MB)
-        self._cgroups_work = cgroup is not None
+        cgroup = None
+        if self.cgroups:
+            cgroup = create_job_cgroup(max_pids=self.limits.processes,
+                                       memory_bytes=self.limits.memory_mb * MB)
         full = list(command) if self.mode == "none" else jail_command(
             command, workspace=self.workspace, uid=self.uid, mode=self.mode)
         start = time.monotonic()
@@ -120,7 +128,7 @@ class Sandbox:
         return ColconRun(tuple(command), process.returncode, output, seconds,
                          timed_out=stopped == "timeout", limit="; ".join(hits) or None)
 
-    def _preexec(self, procs: list[int], in_cgroup: bool):  # type: ignore[no-untyped-def]
+    def _preexec(self, procs: list[int], in_cgroup: bool) -> Callable[[], None]:
         """The function run in the child before exec: join the cgroup, set the rlimits."""
         limits = self.limits
         rlimits = [(resource.RLIMIT_CPU, limits.cpu_seconds, limits.cpu_seconds + 5),

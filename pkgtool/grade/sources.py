@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import hashlib
 import os
+import re
 import shutil
 import stat
 from collections.abc import Iterable, Sequence
@@ -19,7 +20,10 @@ from pkgtool.grade.extract import ExtractLimits, SubmissionError
 from pkgtool.model.package import load_package
 from pkgtool.workspace import discover
 
-_SKIPPED = frozenset({".git", "__pycache__", "build", "install", "log", ".pytest_cache"})
+_SKIPPED = frozenset({".git", "__pycache__", ".pytest_cache"})
+_OUTPUT = frozenset({"build", "install", "log"})
+"""colcon's output folders: skipped at a package's root unless they are Python packages."""
+_SAFE_NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9_.-]{0,99}$")
 
 
 @dataclass(frozen=True, slots=True)
@@ -78,6 +82,9 @@ def copy_packages(packages: Iterable[SourcePackage], dest: Path,
     counter = [0, 0]
     copies = {}
     for package in packages:
+        if not _SAFE_NAME.match(package.name) or ".." in package.name:
+            raise SubmissionError(f"the package name {package.name!r} is not a valid ROS "
+                                  "package name (letters, digits and underscores)")
         copies[package.name] = dest / package.name
         _copy_tree(package.root, copies[package.name], limits, counter)
     return copies
@@ -87,17 +94,16 @@ def _copy_tree(source: Path, dest: Path, limits: ExtractLimits, counter: list[in
     real_root = os.path.realpath(source)
     for folder, dirs, files in os.walk(source):
         relative = Path(folder).relative_to(source)
-        dirs[:] = [d for d in dirs if d not in _SKIPPED and not d.endswith(".egg-info")
-                   and not os.path.islink(os.path.join(folder, d))]
+        dirs[:] = [d for d in dirs if not _skipped(Path(folder) / d, relative == Path("."))]
         (dest / relative).mkdir(parents=True, exist_ok=True)
         for name in files:
             path = os.path.join(folder, name)
             info = os.lstat(path)
-            if stat.S_ISLNK(info.st_mode):
-                target = os.path.realpath(path)
-                if target.startswith(real_root + os.sep) and os.path.isfile(target):
-                    os.symlink(os.readlink(path), dest / relative / name)
-                continue
+            if stat.S_ISLNK(info.st_mode):  # kept as a copy, and only when it stays inside
+                path = os.path.realpath(path)
+                if not (path.startswith(real_root + os.sep) and os.path.isfile(path)):
+                    continue
+                info = os.stat(path)
             if not stat.S_ISREG(info.st_mode):
                 continue
             counter[0] += 1
@@ -107,6 +113,13 @@ def _copy_tree(source: Path, dest: Path, limits: ExtractLimits, counter: list[in
                                       f"or {limits.max_bytes // (1024 * 1024)} MB")
             shutil.copyfile(path, dest / relative / name, follow_symlinks=False)
             os.chmod(dest / relative / name, 0o755 if info.st_mode & 0o111 else 0o644)
+
+
+def _skipped(folder: Path, at_root: bool) -> bool:
+    name = folder.name
+    if name in _SKIPPED or name.endswith(".egg-info") or folder.is_symlink():
+        return True
+    return at_root and name in _OUTPUT and not (folder / "__init__.py").is_file()
 
 
 def tree_digest(path: Path) -> str:

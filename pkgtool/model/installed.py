@@ -23,6 +23,8 @@ _CFG_KEYWORDS = {
     "entry_points": ("options.entry_points", None), "data_files": ("options.data_files", None),
 }
 """Where setup.cfg's declarative configuration can give each setup() keyword."""
+_INSTALL_KEYWORDS = frozenset({"packages", "package_dir", "py_modules", "data_files"})
+"""Keywords whose effect custom ``cmdclass`` commands can change."""
 
 
 def is_ament_python(package: Package) -> bool:
@@ -40,6 +42,8 @@ def keyword_known(package: Package, keyword: str) -> bool:
         return False
     if setup.is_unresolved(keyword) or setup.is_unresolved("**"):
         return False
+    if keyword in _INSTALL_KEYWORDS and "cmdclass" in (*setup.keywords, *dict(setup.unresolved)):
+        return False  # custom build or install commands may install anything
     if keyword in setup.keywords or package.setup_cfg is None:
         return True
     section, option = _CFG_KEYWORDS.get(keyword, (None, None))
@@ -107,8 +111,8 @@ def installed_data(package: Package) -> dict[str, str] | None:
     return installed
 
 
-def why_not_installed(package: Package, module: str) -> str:
-    """A short explanation of why ``module`` is not among the installed modules."""
+def why_not_installed(package: Package, module: str) -> tuple[str, bool]:
+    """Why ``module`` is not among the installed modules, and whether its source file exists."""
     setup = package.setup_py
     assert setup is not None
     package_dir = setup.package_dir or {}
@@ -119,14 +123,11 @@ def why_not_installed(package: Package, module: str) -> str:
     if source is None:
         near = _same_file_elsewhere(package, module)
         hint = f" (`{near}` exists, but `package_dir` does not point there)" if near else ""
-        return f"there is no `{candidates[1]}` or `{candidates[0]}`{hint}"
-    if source.endswith("/__init__.py"):
-        owner = module
-    else:
-        owner = parent
+        return f"there is no `{candidates[1]}` or `{candidates[0]}`{hint}", False
+    owner = module if source.endswith("/__init__.py") else parent
     if not owner:
-        return f"`{leaf}.py` is a top-level module, and `py_modules` does not list `{leaf}`"
-    return _why_package_missing(package, owner)
+        return f"`{leaf}.py` is a top-level module, and `py_modules` does not list `{leaf}`", True
+    return _why_package_missing(package, owner), True
 
 
 def _same_file_elsewhere(package: Package, module: str) -> str | None:

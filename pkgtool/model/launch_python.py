@@ -22,15 +22,24 @@ PLUGIN_ACTIONS = frozenset({"ComposableNode"})
 JOINS = frozenset({"join", "PathJoinSubstitution", "joinpath"})
 CONCATENATING = ("LaunchDescriptionSource", "Command")
 _MAX_DEPTH = 40
+_MAX_TEXT = 4096
+"""Longest string the evaluator builds (doubling concatenations stay bounded)."""
 
 
 @dataclass(frozen=True, slots=True)
 class Share:
-    """A package's share folder (``share``) or install prefix, plus static path parts."""
+    """A package's share folder (``share``) or install prefix, and the text appended to it."""
 
     package: str
-    parts: tuple[str, ...] = ()
+    suffix: str = ""
     share: bool = True
+
+    @property
+    def parts(self) -> tuple[str, ...] | None:
+        """Path components below the folder; None unless the suffix is a clean ``/a/b``."""
+        if self.suffix and not self.suffix.startswith("/"):
+            return None
+        return _split(self.suffix)
 
 
 Value = str | Share | tuple | None
@@ -95,6 +104,7 @@ class _Reader(ast.NodeVisitor):
     def __init__(self, path: str, tree: ast.Module) -> None:
         self.path = path
         self.scopes = [_bindings(tree.body, None)]
+        self.cache: list[dict[str, Value]] = [{}]
         self.nodes: list[NodeRef] = []
         self.packages: list[PackageRef] = []
         self.files: list[FileRef] = []
@@ -108,9 +118,11 @@ class _Reader(ast.NodeVisitor):
             if default is not None:
                 self.visit(default)
         self.scopes.append(_bindings(node.body, node.args))
+        self.cache.append({})
         for statement in node.body:
             self.visit(statement)
         self.scopes.pop()
+        self.cache.pop()
 
     visit_AsyncFunctionDef = visit_FunctionDef
 
@@ -139,10 +151,15 @@ class _Reader(ast.NodeVisitor):
         return None
 
     def _name_value(self, name: str, depth: int, top: int | None) -> Value:
-        levels = self.scopes if top is None else self.scopes[: top + 1]
-        for level in range(len(levels) - 1, -1, -1):
-            if name in levels[level]:
-                return self.value(levels[level][name], depth + 1, level)
+        """A name's value in the innermost scope binding it (each evaluated once per scope)."""
+        last = len(self.scopes) - 1 if top is None else top
+        for level in range(last, -1, -1):
+            if name in self.scopes[level]:
+                cache = self.cache[level]
+                if name not in cache:
+                    cache[name] = None  # a name defined through itself stays unknown
+                    cache[name] = self.value(self.scopes[level][name], depth + 1, level)
+                return cache[name]
         return None
 
     def _call_value(self, node: ast.Call, depth: int, top: int | None) -> Value:
@@ -150,7 +167,7 @@ class _Reader(ast.NodeVisitor):
         first = node.args[0] if node.args else None
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
             package = self.value(_keyword(node, "package") or first, depth + 1, top)
-            return Share(package, (), name in SHARE_LOOKUPS) if isinstance(package, str) else None
+            return Share(package, "", name in SHARE_LOOKUPS) if isinstance(package, str) else None
         if name in JOINS:
             items = [self.value(a, depth + 1, top) for a in node.args]
             if isinstance(node.func, ast.Attribute) and name == "joinpath":
@@ -216,11 +233,10 @@ def _concat(items: list[Value]) -> Value:
     if any(isinstance(i, Share) for i in rest):
         return None
     tail = "".join(str(i) for i in rest)
+    if len(tail) + len(head.suffix if isinstance(head, Share) else str(head)) > _MAX_TEXT:
+        return None
     if isinstance(head, Share):
-        if tail and not tail.startswith("/"):
-            return None
-        parts = _split(tail)
-        return None if parts is None else Share(head.package, head.parts + parts, head.share)
+        return Share(head.package, head.suffix + tail, head.share)
     return str(head) + tail
 
 
@@ -229,13 +245,12 @@ def _join(items: list[Value]) -> Value:
     if not items or not isinstance(items[0], Share):
         return None
     head = items[0]
-    parts = list(head.parts)
+    suffix = head.suffix
     for item in items[1:]:
-        piece = _split(item) if isinstance(item, str) and not item.startswith("/") else None
-        if piece is None:
+        if not isinstance(item, str) or item.startswith("/"):
             return None
-        parts.extend(piece)
-    return Share(head.package, tuple(parts), head.share)
+        suffix = f"{suffix.rstrip('/')}/{item}"
+    return Share(head.package, suffix, head.share)
 
 
 def read_python_launch(path: str, tree: ast.Module) -> tuple[

@@ -115,7 +115,8 @@ def _yaml(path: str, text: str) -> tuple[list[NodeRef], list[tuple[str, Span]]] 
         line, col = (mark.line + 1, mark.column + 1) if mark else (1, 1)
         return ParseProblem("yaml-syntax", Span(path, line, col), str(error.problem or error))
     except (yaml.YAMLError, RecursionError) as error:
-        return ParseProblem("yaml-syntax", Span(path, 1, 1), str(error) or "YAML nested too deeply")
+        detail = str(error) or "the YAML is nested too deeply"
+        return ParseProblem("yaml-syntax", Span(path, 1, 1), detail)
     nodes: list[NodeRef] = []
     values: list[tuple[str, Span]] = []
     seen: set[int] = set()

@@ -11,6 +11,14 @@ from pkgtool.commands.create import CreateResult, Request, run
 
 ALL_KINDS = ("talker:publisher", "listener:subscriber", "server:service", "caller:client",
              "fib_server:action-server", "fib_client:action-client", "beat:timer")
+"""Every node kind with its default interface."""
+OTHER_TYPES = ("twist_pub:publisher:geometry_msgs/msg/Twist",
+               "twist_sub:subscriber:geometry_msgs/msg/Twist",
+               "switch:service:std_srvs/srv/SetBool", "switcher:client:std_srvs/srv/SetBool",
+               "empty:service:std_srvs/srv/Empty", "empty_caller:client:std_srvs/srv/Empty",
+               "nested:action-server:test_msgs/action/NestedMessage",
+               "nested_client:action-client:test_msgs/action/NestedMessage")
+"""Interfaces the templates know nothing about (sent default-constructed), and SetBool."""
 
 
 def request(destination: Path, name: str = "demo_pkg", **values: object) -> Request:

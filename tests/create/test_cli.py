@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import subprocess
+import sys
 from pathlib import Path
 
 import pytest
@@ -80,3 +82,12 @@ def test_maintainer_defaults_come_from_git_and_the_year_from_source_date_epoch(
     assert "Copyright (c) 2024" not in (tmp_path / "y/my_pkg/LICENSE").read_text()  # Apache
     assert explicit.exit_code == 0
     assert (tmp_path / "y/my_pkg/setup.py").read_text().startswith("# Copyright 2024 Jane Doe")
+
+
+def test_create_help_loads_neither_jinja2_nor_the_create_package() -> None:
+    code = ("import sys\nfrom pkgtool import cli\ncli._register()\ntry:\n"
+            "    cli.app(['create', '--help'])\nexcept SystemExit:\n    pass\n"
+            "print('LOADED:', *(m for m in ('jinja2', 'pkgtool.create') if m in sys.modules))")
+    done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                          check=True, timeout=60)
+    assert done.stdout.rpartition("LOADED:")[2].split() == []

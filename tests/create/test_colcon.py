@@ -19,8 +19,7 @@ import pytest
 from pkgtool.commands.create import run
 from pkgtool.ros.colcon import colcon_build, colcon_env, colcon_test
 from pkgtool.testing.ros_fixtures import next_domain_id
-from tests.create.conftest import ALL_KINDS, request
-from tests.create.test_render import OTHER_TYPES
+from tests.create.conftest import ALL_KINDS, OTHER_TYPES, request
 
 pytestmark = [pytest.mark.ros, pytest.mark.colcon, pytest.mark.slow]
 
@@ -31,16 +30,16 @@ PACKAGES = {
 }
 
 
-@pytest.fixture(scope="module")
-def workspace(tmp_path_factory: pytest.TempPathFactory) -> tuple[Path, dict[str, str]]:
-    """A workspace with both packages created and built."""
-    root = tmp_path_factory.mktemp("ws")
+def test_generated_packages_build_run_and_pass_colcon_test(tmp_path: Path) -> None:
+    """One test, not three sharing a fixture: xdist could build the workspace once per worker."""
     for name, values in PACKAGES.items():
-        assert not run(request(root / "src", name, **values)).error
-    env = colcon_env(root, domain_id=next_domain_id())
-    build = colcon_build(root, base_paths=[root / "src"], env=env, timeout=300)
+        assert not run(request(tmp_path / "src", name, **values)).error
+    env = colcon_env(tmp_path, domain_id=next_domain_id())
+    build = colcon_build(tmp_path, base_paths=[tmp_path / "src"], env=env, timeout=300)
     assert build.ok, build.output
-    return root, env
+    _check_console_scripts(tmp_path)
+    _check_nodes_talk_and_stop_cleanly(tmp_path, env)
+    _check_colcon_test(tmp_path, env)
 
 
 def _script_env(root: Path, env: dict[str, str]) -> dict[str, str]:
@@ -49,8 +48,8 @@ def _script_env(root: Path, env: dict[str, str]) -> dict[str, str]:
     return dict(env, PYTHONPATH=os.pathsep.join(sites))
 
 
-def test_console_scripts_are_installed_under_lib(workspace) -> None:
-    root, _ = workspace
+def _check_console_scripts(root: Path) -> None:
+    """Every node is a console script under install/<pkg>/lib/<pkg>/; data files are there."""
     for name, values in PACKAGES.items():
         for spec in values["nodes"]:
             script = root / "install" / name / "lib" / name / spec.split(":")[0]
@@ -75,27 +74,30 @@ def _wait_for(process: subprocess.Popen, text: str, timeout: float) -> str:
     return seen.decode(errors="replace")
 
 
-def test_installed_nodes_start_talk_and_stop_cleanly_on_sigint(workspace) -> None:
-    root, env = workspace
+def _check_nodes_talk_and_stop_cleanly(root: Path, env: dict[str, str]) -> None:
+    """Start the installed talker and listener; the listener hears; SIGINT stops both with 0."""
     lib = root / "install" / "demo_nodes" / "lib" / "demo_nodes"
-    processes = {name: subprocess.Popen([str(lib / name)], env=_script_env(root, env),
-                                        stdin=subprocess.DEVNULL, stdout=subprocess.PIPE,
-                                        stderr=subprocess.STDOUT)
+    topic = f"chatter_{os.getpid()}"  # ours alone, whoever else shares the domain
+    processes = {name: subprocess.Popen([str(lib / name), "--ros-args", "-p", f"topic:={topic}"],
+                                        env=_script_env(root, env), stdin=subprocess.DEVNULL,
+                                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
                  for name in ("talker", "listener")}
     try:
-        heard = _wait_for(processes["listener"], "Received message", timeout=30)
-        assert "Received message" in heard, heard
+        said = _wait_for(processes["talker"], "Published message", timeout=60)
+        heard = _wait_for(processes["listener"], "Received message", timeout=60)
     finally:
         for process in processes.values():
             process.send_signal(signal.SIGINT)
-        codes = {name: process.wait(timeout=20) for name, process in processes.items()}
-    output = processes["talker"].stdout.read().decode(errors="replace")
-    assert codes == {"talker": 0, "listener": 0}, output
-    assert "Published message" in output and "Traceback" not in output
+        codes = {name: process.wait(timeout=30) for name, process in processes.items()}
+    assert "Published message" in said, said
+    assert "Received message" in heard, heard
+    assert codes == {"talker": 0, "listener": 0}, said + heard
+    rest = b"".join(process.stdout.read() for process in processes.values())
+    assert b"Traceback" not in rest, rest.decode(errors="replace")
 
 
-def test_colcon_test_runs_the_generated_tests_and_they_pass(workspace) -> None:
-    root, env = workspace
+def _check_colcon_test(root: Path, env: dict[str, str]) -> None:
+    """``colcon test`` passes, and every node's own test really ran (not skipped)."""
     result = colcon_test(root, base_paths=[root / "src"], env=env, timeout=300)
     assert result.ok, result.output
     for name, values in PACKAGES.items():

@@ -38,6 +38,7 @@ def test_unknown_license_lists_the_valid_ones(tmp_path: Path) -> None:
     ("talker:publisher:std_msgs/String", "Invalid msg type"),
     ("talker:publisher:std_srvs/srv/Trigger", "Invalid msg type"),
     ("beat:timer:std_msgs/msg/String", "uses no interface"),
+    ("talker:publisher:my_msgs/msg/Node", "has the name of a class"),
 ])
 def test_bad_nodes_are_refused(tmp_path: Path, node: str, message: str) -> None:
     with pytest.raises(CreateError, match=message.replace("(", r"\(")):
@@ -52,9 +53,9 @@ def test_duplicate_node_names_are_refused(tmp_path: Path) -> None:
 
 
 def test_type_options_apply_to_their_kinds(tmp_path: Path) -> None:
-    plan = validate(request(tmp_path, nodes=("talker:publisher", "server:service",
-                                            "twist:subscriber:geometry_msgs/msg/Twist"),
-                            msg="sensor_msgs/msg/Image", srv="std_srvs/srv/SetBool"))
+    nodes = ("talker:publisher", "server:service", "twist:subscriber:geometry_msgs/msg/Twist")
+    plan = validate(request(tmp_path, nodes=nodes, msg="sensor_msgs/msg/Image",
+                            srv="std_srvs/srv/SetBool"))
     types = {node.name: node.interface.full for node in plan.nodes if node.interface}
     assert types == {"talker": "sensor_msgs/msg/Image", "server": "std_srvs/srv/SetBool",
                      "twist": "geometry_msgs/msg/Twist"}

@@ -1,8 +1,9 @@
 """An installed (non-editable) pkgtool finds its templates: build the wheel, install, create.
 
-The wheel is built from a copy of the source (the checkout is never written to) and installed
-into a fresh venv whose only other path is this venv's site-packages (for jinja2 and typer);
-the command runs outside any checkout, so only the packaged templates can be found.
+The wheel is built (``uv build``: an isolated PEP 517 build, with setup.py's resource step)
+from a copy of the source (the checkout is never written to) and installed into a fresh venv
+whose only other path is this venv's site-packages (for jinja2 and typer); the command runs
+outside any checkout, so only the packaged templates can be found.
 """
 
 from __future__ import annotations
@@ -20,6 +21,7 @@ from tests.create.conftest import ALL_KINDS
 
 pytestmark = pytest.mark.slow
 ROOT = Path(__file__).resolve().parents[2]
+UV = str(Path(sys.executable).parent / "uv")  # the project's installer (scripts/bootstrap.sh)
 SOURCES = ("pyproject.toml", "setup.py", "MANIFEST.in", "README.md", "pkgtool", "templates",
            "reference_packages")
 
@@ -40,8 +42,7 @@ def test_the_built_wheel_carries_the_templates_and_create_uses_them(tmp_path: Pa
                             ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
         else:
             shutil.copy2(ROOT / name, source / name)
-    _run(sys.executable, "-m", "pip", "wheel", "--no-deps", "--no-build-isolation", "-q",
-         "-w", str(tmp_path / "dist"), str(source), cwd=tmp_path)
+    _run(UV, "build", "--wheel", "-q", "-o", str(tmp_path / "dist"), str(source), cwd=tmp_path)
     wheel = next((tmp_path / "dist").glob("pkgtool-*.whl"))
     names = zipfile.ZipFile(wheel).namelist()
     assert "pkgtool/_resources/templates/package.xml.jinja" in names
@@ -50,10 +51,10 @@ def test_the_built_wheel_carries_the_templates_and_create_uses_them(tmp_path: Pa
     venv = tmp_path / "venv"
     _run(sys.executable, "-m", "venv", "--without-pip", str(venv), cwd=tmp_path)
     python = venv / "bin" / "python"
-    _run(sys.executable, "-m", "pip", "--python", str(python), "install", "--no-deps", "-q",
-         str(wheel), cwd=tmp_path)
-    site = Path(_run(str(python), "-c", "import sysconfig; print(sysconfig.get_paths()['purelib'])",
-                     cwd=tmp_path).strip())
+    _run(UV, "pip", "install", "--python", str(python), "--no-deps", "-q", str(wheel),
+         cwd=tmp_path)
+    purelib = "import sysconfig; print(sysconfig.get_paths()['purelib'])"
+    site = Path(_run(str(python), "-c", purelib, cwd=tmp_path).strip())
     (site / "zz_project_deps.pth").write_text(sysconfig.get_paths()["purelib"] + "\n")
 
     where = _run(str(python), "-c", "import pkgtool.resources as r; "

@@ -1,4 +1,4 @@
-"""Generated packages: the right files, lint-clean under every rule, byte-for-byte deterministic."""
+"""Generated packages: the right files, lint-clean under every rule, deterministic to the byte."""
 
 from __future__ import annotations
 
@@ -11,16 +11,8 @@ import pytest
 
 from pkgtool.create.licenses import LICENSES, license_text
 from pkgtool.model.package import load_package
-from tests.create.conftest import ALL_KINDS
+from tests.create.conftest import ALL_KINDS, OTHER_TYPES
 from tests.helpers import findings
-
-OTHER_TYPES = ("twist_pub:publisher:geometry_msgs/msg/Twist",
-               "twist_sub:subscriber:geometry_msgs/msg/Twist",
-               "switch:service:std_srvs/srv/SetBool", "switcher:client:std_srvs/srv/SetBool",
-               "empty:service:std_srvs/srv/Empty", "empty_caller:client:std_srvs/srv/Empty",
-               "nested:action-server:test_msgs/action/NestedMessage",
-               "nested_client:action-client:test_msgs/action/NestedMessage")
-
 
 def _files(root: Path) -> dict[str, bytes]:
     return {p.relative_to(root).as_posix(): p.read_bytes() for p in sorted(root.rglob("*"))
@@ -68,7 +60,10 @@ def test_the_package_has_what_ros2_pkg_create_writes_and_more(create) -> None:
     assert "find_packages(exclude=['test'])" in setup_py
     assert files["setup.cfg"].decode() == (f"[develop]\nscript_dir=$base/lib/{name}\n"
                                            f"[install]\ninstall_scripts=$base/lib/{name}\n")
-    assert "pytest.importorskip('ament_copyright.main')" in files["test/test_copyright.py"].decode()
+    copyright_test = files["test/test_copyright.py"].decode()
+    assert "pytest.importorskip('pkgtool.style.api'" in copyright_test
+    for linter in ("flake8", "pep257"):
+        assert f"from ament_{linter}.main import" in files[f"test/test_{linter}.py"].decode()
     for path, data in files.items():
         if path.endswith(".py"):
             text = data.decode()

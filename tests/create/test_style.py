@@ -10,8 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from tests.create.conftest import ALL_KINDS
-from tests.create.test_render import OTHER_TYPES
+from tests.create.conftest import ALL_KINDS, OTHER_TYPES
 
 CASES = {
     "all_kinds": {"nodes": ALL_KINDS, "launch": True, "config": True, "library_name": "util"},

@@ -76,10 +76,11 @@ def _failing_after(count: int):
 
 
 def test_a_failure_halfway_leaves_no_half_written_package(tmp_path: Path) -> None:
-    result = run(request(tmp_path, nodes=ALL_KINDS), before_write=_failing_after(5))
+    result = run(request(tmp_path / "new" / "ws", nodes=ALL_KINDS),
+                 before_write=_failing_after(5))
     assert result.exit_code == ExitCode.USAGE
     assert "No space left on device" in result.error and "Nothing was left behind" in result.error
-    assert list(tmp_path.iterdir()) == []  # neither the package nor the staging folder
+    assert list(tmp_path.iterdir()) == []  # no package, staging or destination folder
 
 
 def test_a_failure_with_force_removes_only_what_it_added(create, tmp_path: Path) -> None:

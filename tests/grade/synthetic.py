@@ -90,7 +90,7 @@ setup(
     packages=find_packages(exclude=['test']),
     data_files=[
         ('share/ament_index/resource_index/packages', ['resource/' + package_name]),
-        ('share/' + package_name, ['package.xml']{extra_data}),
+        ('share/' + package_name, ['package.xml'{extra_data}]),
     ],
     install_requires=['setuptools'],
     zip_safe=True,

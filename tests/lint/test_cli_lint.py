@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import sys
 from collections.abc import Iterator
 from pathlib import Path
 
@@ -159,3 +160,23 @@ def test_any_other_bug_exits_three_with_details(workspace: Path,
     result = run_cli("lint", cwd=workspace)
     assert result.exit_code == ExitCode.INTERNAL
     assert "Internal error: KeyError: 'lost'. Please report this pkgtool bug" in result.stderr
+
+
+@pytest.mark.parametrize(("tty", "no_color", "fmt", "output", "coloured"), [
+    (True, None, "text", None, True),
+    (True, "1", "text", None, False),
+    (False, None, "text", None, False),
+    (True, None, "json", None, False),
+    (True, None, "text", Path("report.txt"), False),
+])
+def test_colour_only_on_a_terminal_without_no_color(monkeypatch: pytest.MonkeyPatch, tty: bool,
+                                                    no_color: str | None, fmt: str,
+                                                    output: Path | None, coloured: bool) -> None:
+    from pkgtool import cli_lint
+
+    monkeypatch.setattr(sys.stdout, "isatty", lambda: tty)
+    if no_color is None:
+        monkeypatch.delenv("NO_COLOR", raising=False)
+    else:
+        monkeypatch.setenv("NO_COLOR", no_color)
+    assert cli_lint._colour(cli_lint.Format(fmt), output) is coloured

@@ -258,3 +258,9 @@ def test_yaml_aliases_are_walked_once() -> None:
 def test_deeply_nested_python_is_not_a_crash() -> None:
     launch = _py("x = " + "+".join(["'a'"] * 2000) + "\n")
     assert launch.problem is None or launch.problem.kind == "python-syntax"
+
+
+def test_doubling_names_stay_bounded() -> None:
+    lines = ["a0 = 'x'"] + [f"a{i} = a{i - 1} + a{i - 1}" for i in range(1, 64)]
+    launch = _py("\n".join(lines) + "\nNode(package=a63, executable=a3)\n")
+    assert _nodes(launch) == [(None, "x" * 8, 65)]

@@ -122,7 +122,7 @@ def test_pathlib_globbing_and_str_of_paths() -> None:
         from setuptools import setup
         launch = Path('launch')
         setup(data_files=[
-            ('share/demo/launch', [str(p) for p in launch.glob('*.launch.py')]),
+            ('share/demo/launch', [str(p) for p in sorted(launch.glob('*.launch.py'))]),
             ('share/demo/all', [p.as_posix() for p in Path('.').rglob('*.yaml')]),
             ('share/demo', [str(Path('package.xml'))]),
             ('share/demo/none', [str(p) for p in launch.glob('*.xml')]),
@@ -269,3 +269,41 @@ def test_data_files_string_sources_and_bare_files() -> None:
     assert text_entry.sources_is_text
     assert bare.destination == "" and bare.sources[0].matches == ("tool.py",)
     assert missing.sources[0].matches == () and not missing.sources[0].is_glob
+
+
+def test_setup_py_without_setup_call_is_complete() -> None:
+    setup = evaluate("")
+    assert setup.setup_span is None and setup.unresolved == () and setup.keywords == ()
+    assert not setup.is_unresolved("name") and setup.console_scripts == ()
+
+
+def test_try_runs_the_body_and_distrusts_handlers() -> None:
+    setup = evaluate("""
+        try:
+            from setuptools import setup
+        except ImportError:
+            from distutils.core import setup
+        files = ['package.xml']
+        try:
+            import yaml
+        except ImportError:
+            files = []
+        setup(name='demo', data_files=[('share/demo', files)])
+    """)
+    assert setup.name and setup.is_unresolved("data_files") and not setup.is_unresolved("**")
+
+
+def test_a_failed_statement_only_taints_what_it_can_change() -> None:
+    setup = evaluate("""
+        import os
+        from setuptools import setup
+        name = 'demo'
+        files = ['package.xml']
+        other = []
+        walked = [os.path.join(name, r) for r, _, fs in os.walk('models')]
+        unknown_helper(files, name)
+        setup(name=name, version=os.path.join('1', '0'), data_files=[('share', files)],
+              py_modules=other)
+    """)
+    assert setup.name and setup.version and setup.py_modules == ()
+    assert setup.is_unresolved("data_files")

@@ -36,8 +36,11 @@ def test_explicit_list_installs_only_direct_modules(tmp_path: Path) -> None:
                   "demo/nodes/x.py", "tool.py", "setup_helpers.py")
     assert installed_modules(pkg) == {"demo": "demo/__init__.py",
                                       "demo.talker": "demo/talker.py", "tool": "tool.py"}
-    assert "drops subpackages" in why_not_installed(pkg, "demo.nodes.x")
-    assert "py_modules" in why_not_installed(pkg, "setup_helpers")
+    assert "drops subpackages" in why_not_installed(pkg, "demo.nodes.x")[0]
+    assert why_not_installed(pkg, "setup_helpers") == (
+        "`setup_helpers.py` is a top-level module, and `py_modules` does not list "
+        "`setup_helpers`", True)
+    assert why_not_installed(pkg, "demo.absent")[1] is False
 
 
 def test_src_layout_and_namespace_packages(tmp_path: Path) -> None:
@@ -81,3 +84,10 @@ def test_build_type_decides_ament_python(tmp_path: Path) -> None:
         "CMakeLists.txt": "project(demo)\n",
         "setup.py": "from setuptools import setup\nsetup()\n"})
     assert not is_ament_python(cmake)
+
+
+def test_custom_commands_make_installation_unknown(tmp_path: Path) -> None:
+    pkg = package(tmp_path, "setup(packages=['demo'], data_files=[], cmdclass={})",
+                  "demo/__init__.py")
+    assert installed_modules(pkg) is None and installed_data(pkg) is None
+    assert keyword_known(pkg, "entry_points")

@@ -108,3 +108,9 @@ def test_unreadable_folders_are_skipped(workspace: Path, monkeypatch: pytest.Mon
 
     monkeypatch.setattr(os, "scandir", refusing)
     assert _names(workspace, ".") == ["src/alpha"]
+
+
+def test_a_folder_inside_a_package_lints_its_package(workspace: Path) -> None:
+    assert _names(workspace, "src/alpha/alpha") == ["src/alpha"]
+    found = discover(["."], cwd=workspace / "src" / "alpha" / "alpha")
+    assert found.packages == (workspace / "src" / "alpha",) and found.empty == ()

@@ -68,5 +68,6 @@ def test_generated_interface_has_the_jazzy_fields(installed: tuple[Path, dict[st
 
 def test_action_is_registered_in_the_ament_index(installed: tuple[Path, dict[str, str]]) -> None:
     prefix, _ = installed
-    marker = prefix / "share" / "ament_index" / "resource_index" / "rosidl_interfaces" / "nav2_msgs"
+    index = prefix / "share" / "ament_index" / "resource_index"
+    marker = index / "rosidl_interfaces" / "nav2_msgs"
     assert "action/NavigateToPose.action" in marker.read_text().split()

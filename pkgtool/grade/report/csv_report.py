@@ -18,6 +18,12 @@ def render(results: Sequence[SubmissionResult], *, rubric: Rubric) -> str:
     writer.writerow(["submission", "package", "score", "max_score", *names, "error",
                      "unchanged", "seconds"])
     for r in results:
-        writer.writerow([r.label, r.package or "", r.score, r.max_score,
-                         *(c.score for c in r.criteria), r.error or "", r.unchanged, r.seconds])
+        writer.writerow([_cell(r.label), _cell(r.package or ""), r.score, r.max_score,
+                         *(c.score for c in r.criteria), _cell(r.error or ""), r.unchanged,
+                         r.seconds])
     return buffer.getvalue()
+
+
+def _cell(text: str) -> str:
+    """Text a spreadsheet will not run as a formula (labels come from students' file names)."""
+    return f"'{text}" if text[:1] in ("=", "+", "-", "@", "\t", "\r") else text

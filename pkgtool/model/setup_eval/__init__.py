@@ -53,9 +53,13 @@ def _unreached_call(runner: Runner, module: ast.Module) -> SetupCall | None:
     return None
 
 
+_FIELDS = (*_VALUE_FIELDS, "packages", "package_dir", "py_modules", "data_files", "entry_points")
+
+
 def _setup_py(path: str, call: SetupCall | None, tree: Tree) -> SetupPy:
     if call is None:
-        return SetupPy(path, None, (), *([None] * 15))  # type: ignore[arg-type]
+        return SetupPy(path=path, setup_span=None, keywords=(),
+                       **dict.fromkeys(_FIELDS))  # type: ignore[arg-type]
     fields: dict[str, Any] = {}
     unresolved = list(call.unresolved)
     for key, value in call.values.items():
@@ -65,8 +69,7 @@ def _setup_py(path: str, call: SetupCall | None, tree: Tree) -> SetupPy:
             unresolved.append((key, call.sources[key]))
             fields.pop(key, None)
     keywords = tuple(dict.fromkeys([*call.values, *(k for k, _ in unresolved if k != "**")]))
-    known = {name: fields.get(name) for name in (*_VALUE_FIELDS, "packages", "package_dir",
-                                                 "py_modules", "data_files", "entry_points")}
+    known = {name: fields.get(name) for name in _FIELDS}
     return SetupPy(path=path, setup_span=call.span, keywords=keywords,
                    unresolved=tuple(unresolved), **known)
 

@@ -109,6 +109,10 @@ def _sequence(interp: Interpreter, args: list[Any], node: ast.Call, make: Any) -
     return make(items, interp.span(node), origins_of(*args))
 
 
+def _sort_key(value: Any) -> Any:
+    return value.pure if isinstance(value, PathValue) else value
+
+
 def _str(interp: Interpreter, args: list[Any], node: ast.Call) -> str:
     if not args:
         return ""
@@ -173,7 +177,7 @@ def _builtin(interp: Interpreter, name: str, args: list[Any], kwargs: dict[str, 
             raise interp.refuse(node)
         result = _sequence(interp, args, node, tagged_list)
         if name == "sorted":
-            interp.guard(lambda: result.sort(key=str, reverse=bool(kwargs.get("reverse"))),
+            interp.guard(lambda: result.sort(key=_sort_key, reverse=bool(kwargs.get("reverse"))),
                          node)
         return result
     if name == "tuple":

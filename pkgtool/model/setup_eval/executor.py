@@ -12,6 +12,7 @@ from typing import Any
 from pkgtool.model.setup_eval.builtins import CONSTANTS, MODULES, SETUP_FUNCTIONS, is_function
 from pkgtool.model.setup_eval.evaluator import Interpreter
 from pkgtool.model.setup_eval.scope import Scope
+from pkgtool.model.setup_eval.taint import changed_names
 from pkgtool.model.setup_eval.values import BoundMethod, Builtin, NotStatic, Opaque, UserFunc
 from pkgtool.model.span import Unresolved
 
@@ -63,49 +64,9 @@ class Runner(Interpreter):
 
     def taint(self, node: ast.AST, scope: Scope, why: Unresolved) -> None:
         """Bind every name ``node`` may assign or mutate to an opaque value."""
-        for name in self._changed_names(node, scope, set()):
+        for name in changed_names(node, scope):
             owner = _owner(scope, name)
             owner.names[name] = Opaque(why)
-
-    def _changed_names(self, node: ast.AST, scope: Scope, seen: set[int]) -> set[str]:
-        names: set[str] = set()
-        for child in ast.walk(node):
-            if isinstance(child, ast.Name) and isinstance(child.ctx, (ast.Store, ast.Del)):
-                names.add(child.id)
-            elif isinstance(child, (ast.Subscript, ast.Attribute)) and \
-                    isinstance(child.ctx, ast.Store):
-                names.update(_base_name(child))
-            elif isinstance(child, (ast.Import, ast.ImportFrom)):
-                names.update((a.asname or a.name).split(".")[0] for a in child.names)
-            elif isinstance(child, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
-                names.add(child.name)
-            elif isinstance(child, ast.Call):
-                names.update(self._call_changes(child, scope, seen))
-        return names
-
-    def _call_changes(self, node: ast.Call, scope: Scope, seen: set[int]) -> set[str]:
-        """Names a call may mutate: its receiver, container arguments, a function's globals."""
-        names = set(_base_name(node.func)) if isinstance(node.func, ast.Attribute) else set()
-        for argument in (*node.args, *(k.value for k in node.keywords)):
-            if isinstance(argument, (ast.Name, ast.Starred)):
-                names.update(_base_name(argument))
-        if isinstance(node.func, ast.Name):
-            try:
-                function = scope.lookup(node.func.id)
-            except KeyError:
-                return names
-            if isinstance(function, UserFunc) and id(function.node) not in seen:
-                seen.add(id(function.node))
-                inner = Scope(function.scope)
-                local = {n.id for n in ast.walk(function.node) if isinstance(n, ast.Name)
-                         and isinstance(n.ctx, ast.Store)}
-                declared = {n for g in ast.walk(function.node) if isinstance(g, ast.Global)
-                            for n in g.names}
-                changed = set()
-                for statement in function.node.body:
-                    changed |= self._changed_names(statement, inner, seen)
-                names |= {n for n in changed if n not in local or n in declared}
-        return names
 
     def call_user(self, function: UserFunc, args: list[Any], kwargs: dict[str, Any],
                   node: ast.Call) -> Any:
@@ -211,8 +172,17 @@ class Runner(Interpreter):
         self.run_block(node.body if test else node.orelse, scope)
 
     def _run_Try(self, node: ast.Try, scope: Scope) -> None:
+        """Run the body as if nothing raised; what a handler would change becomes opaque.
+
+        Handlers made only of imports (``except ImportError: from distutils.core import
+        setup``) are fallbacks to an equivalent module and change nothing.
+        """
         self.run_block(node.body, scope)
         self.run_block(node.orelse, scope)
+        fallbacks = (ast.Import, ast.ImportFrom, ast.Pass)
+        for handler in node.handlers:
+            if not all(isinstance(statement, fallbacks) for statement in handler.body):
+                self.taint(handler, scope, self.unresolved(handler))
         self.run_block(node.finalbody, scope)
 
     _run_TryStar = _run_Try
@@ -285,9 +255,3 @@ def _owner(scope: Scope, name: str) -> Scope:
             return current.module if name in current.declared_global else current
         current = current.parent
     return scope
-
-
-def _base_name(node: ast.AST) -> list[str]:
-    while isinstance(node, (ast.Attribute, ast.Subscript, ast.Starred)):
-        node = node.value
-    return [node.id] if isinstance(node, ast.Name) else []

@@ -8,7 +8,7 @@ from pkgtool.model.setup_eval.values import Builtin
 
 BUILTIN_NAMES = frozenset({
     "str", "list", "tuple", "dict", "set", "frozenset", "sorted", "len", "range", "enumerate",
-    "zip", "reversed", "min", "max", "any", "all", "bool", "int", "print", "isinstance",
+    "zip", "reversed", "min", "max", "any", "all", "bool", "int", "print",
 })
 """Python builtins the evaluator computes itself (all pure)."""
 

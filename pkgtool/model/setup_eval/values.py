@@ -38,6 +38,15 @@ class Tup(tuple):  # type: ignore[type-arg]
     origins: tuple[GlobOrigin, ...] = ()
 
 
+class Found(Lst):
+    """The result of ``find_packages``/``find_namespace_packages`` with the finder's arguments."""
+
+    kind: str = "find_packages"
+    where: str = "."
+    include: tuple[str, ...] = ("*",)
+    exclude: tuple[str, ...] = ()
+
+
 @dataclass(frozen=True, slots=True)
 class PathValue:
     """A ``pathlib`` path, relative to the package root; ``glob`` when a glob produced it."""
@@ -141,12 +150,3 @@ def plain(value: object, where: Unresolved) -> object:
     if isinstance(value, dict):
         return {plain(k, where): plain(v, where) for k, v in value.items()}
     raise NotStatic(where)
-
-
-class Found(Lst):
-    """The result of ``find_packages``/``find_namespace_packages`` with the finder's arguments."""
-
-    kind: str = "find_packages"
-    where: str = "."
-    include: tuple[str, ...] = ("*",)
-    exclude: tuple[str, ...] = ()

@@ -16,6 +16,8 @@ from functools import lru_cache
 from pkgtool.knowledge.ros_names import looks_like_ros
 from pkgtool.knowledge.rosdep import (PYTHON_MODULE_KEYS, ROS_MODULE_PACKAGES, accepted_keys,
                                       package_for_ros_module, stdlib_modules, suggested_key)
+from pkgtool.model.installed import installed_modules
+from pkgtool.model.launch import is_launch_file
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.package import Package
@@ -65,17 +67,6 @@ def declared(package: Package, tags: frozenset[str]) -> dict[str, Dependency]:
     return found
 
 
-def _installed_modules(package: Package) -> dict[str, str] | None:
-    try:
-        from pkgtool.model.installed import installed_modules  # type: ignore[import-not-found]
-    except ImportError:
-        return None
-    try:
-        return installed_modules(package)  # type: ignore[no-any-return]
-    except Exception:  # another engineer's model: never let it break these rules
-        return None
-
-
 @dataclass(frozen=True, slots=True)
 class _Layout:
     """Top-level Python names, folders holding ``__init__.py``, and each folder's entries."""
@@ -97,7 +88,7 @@ def _layout(files: tuple[str, ...]) -> _Layout:
             leaf = depth == len(parts) - 1
             children.setdefault("/".join(parts[:depth]), set()).add(
                 entry[:-3] if leaf and entry.endswith(".py") else entry)
-        if not path.endswith(".py") or _is_launch(parts[-1]):
+        if not path.endswith(".py") or is_launch_file(path):
             continue
         if len(parts) == 1:
             names.add(parts[0][:-3])
@@ -109,14 +100,10 @@ def _layout(files: tuple[str, ...]) -> _Layout:
                    {k: frozenset(v) for k, v in children.items()})
 
 
-def _is_launch(name: str) -> bool:
-    return name.endswith(("launch.py", ".launch.xml", ".launch.yaml"))
-
-
 def own_modules(package: Package) -> frozenset[str]:
     """Top-level names the package itself provides (never need a key)."""
     names = set(_layout(package.files).names) | {package.name}
-    installed = _installed_modules(package)
+    installed = installed_modules(package)
     if installed:
         names.update(name.split(".")[0] for name in installed)
     return frozenset(names)
@@ -128,7 +115,7 @@ def _siblings(package: Package, path: str) -> frozenset[str]:
 
 def installed_code(package: Package) -> list[PythonModule]:
     """Non-test modules that setup.py installs (modules inside Python package folders)."""
-    installed = _installed_modules(package)
+    installed = installed_modules(package)
     if installed is not None:
         files = set(installed.values())
         return [m for m in package.modules if m.path in files and not m.is_test]

@@ -1,4 +1,4 @@
-"""DEP001: installed code imports a ROS package or Python module that package.xml does not declare."""
+"""DEP001: installed code imports a package or module that package.xml does not declare."""
 
 from __future__ import annotations
 

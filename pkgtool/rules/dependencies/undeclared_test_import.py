@@ -1,4 +1,4 @@
-"""DEP003: a test imports a package that package.xml declares neither for tests nor for run time."""
+"""DEP003: a test imports a package that package.xml declares for neither tests nor run time."""
 
 from __future__ import annotations
 

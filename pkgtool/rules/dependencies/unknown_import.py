@@ -33,12 +33,13 @@ def unknown_import(package: Package) -> Iterator[Hit]:
 
     ## Example
     ```python
-    import pyquaternion
+    from filterpy.kalman import KalmanFilter  # pkgtool guesses `python3-filterpy`
     ```
 
     ## Use instead
+    The key rosdep really has (`rosdep resolve`, or rosdistro's rosdep/python.yaml):
     ```xml
-    <exec_depend>python3-pyquaternion-pip</exec_depend>
+    <exec_depend>python3-filterpy-pip</exec_depend>
     ```
     """
     if package.manifest is None:

@@ -60,5 +60,6 @@ def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
             continue
         if entry.module.split(".")[0] not in roots:
             continue
-        yield Hit(entry.span, f"`{entry.module}` is not installed: "
-                              f"{why_not_installed(package, entry.module)}")
+        reason, exists = why_not_installed(package, entry.module)
+        fix = None if exists else "Write the module, or point the entry at an existing one"
+        yield Hit(entry.span, f"`{entry.module}` is not installed: {reason}", fix)

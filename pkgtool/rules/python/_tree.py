@@ -1,4 +1,4 @@
-"""What the PYC rules share: parsed trees of installed modules and static name resolution.
+"""What the PYC rules share: parsed installed modules, indexed once, and static name resolution.
 
 Names are resolved only when every binding of the name in the module is the same import
 (``import numpy as np`` everywhere ``np`` is bound); a name also assigned, passed as a
@@ -9,59 +9,100 @@ from __future__ import annotations
 
 import ast
 from collections.abc import Iterator
+from dataclasses import dataclass, field
 from functools import lru_cache
 
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
 from pkgtool.rules.dependencies._imports import installed_code
 
+FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
+
+
+@dataclass(frozen=True, slots=True)
+class Index:
+    """The nodes of one module the PYC rules look at, collected in a single walk.
+
+    ``aliases`` maps names bound only by imports to the dotted name they stand for;
+    ``parents`` maps ``id(node)`` to the node's parent.
+    """
+
+    attributes: list[ast.Attribute] = field(default_factory=list)
+    calls: list[ast.Call] = field(default_factory=list)
+    import_froms: list[ast.ImportFrom] = field(default_factory=list)
+    tries: list[ast.Try] = field(default_factory=list)
+    parents: dict[int, ast.AST] = field(default_factory=dict)
+    aliases: dict[str, str] = field(default_factory=dict)
+
+    def enclosing_function(self, node: ast.AST) -> ast.FunctionDef | ast.AsyncFunctionDef | None:
+        """The innermost function around ``node`` (None at module or class level)."""
+        parent = self.parents.get(id(node))
+        while parent is not None and not isinstance(parent, (*FUNCTIONS, ast.ClassDef)):
+            parent = self.parents.get(id(parent))
+        return parent if isinstance(parent, FUNCTIONS) else None
+
+
+def _bindings(node: ast.AST) -> Iterator[tuple[str, str | None]]:
+    """The names ``node`` binds, each with the dotted import it stands for (None: not one)."""
+    if isinstance(node, ast.Import):
+        for alias in node.names:
+            top = alias.name.split(".")[0]
+            yield alias.asname or top, alias.name if alias.asname else top
+    elif isinstance(node, ast.ImportFrom):
+        for alias in node.names:
+            target = f"{node.module}.{alias.name}" if node.level == 0 and node.module else None
+            yield alias.asname or alias.name, target
+    elif isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
+        yield node.id, None
+    elif isinstance(node, ast.arg):
+        yield node.arg, None
+    elif isinstance(node, (*FUNCTIONS, ast.ClassDef)):
+        yield node.name, None
+    elif isinstance(node, (ast.ExceptHandler, ast.MatchAs, ast.MatchStar)) and node.name:
+        yield node.name, None
+
+
+def _index(tree: ast.Module) -> Index:
+    index = Index()
+    bound: dict[str, set[str | None]] = {}
+    stack: list[ast.AST] = [tree]
+    while stack:
+        node = stack.pop()
+        for name, target in _bindings(node):
+            bound.setdefault(name, set()).add(target)
+        if isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Load):
+            index.attributes.append(node)
+        elif isinstance(node, ast.Call):
+            index.calls.append(node)
+        elif isinstance(node, ast.ImportFrom):
+            index.import_froms.append(node)
+        elif isinstance(node, ast.Try):
+            index.tries.append(node)
+        for child in ast.iter_child_nodes(node):
+            index.parents[id(child)] = node
+            stack.append(child)
+    index.aliases.update({name: target for name, (target, *more) in bound.items()
+                          if not more and target is not None and name != "*"})
+    return index
+
 
 @lru_cache(maxsize=256)
-def _parse(path: str, text: str) -> ast.Module | None:
+def _parsed(path: str, text: str) -> tuple[ast.Module, Index] | None:
     try:
-        return ast.parse(text, filename=path)
+        tree = ast.parse(text, filename=path)
     except (SyntaxError, ValueError, RecursionError, MemoryError):
         return None
+    return tree, _index(tree)
 
 
-def installed_trees(package: Package) -> Iterator[tuple[PythonModule, ast.Module]]:
-    """Installed, parseable modules with their syntax trees."""
+def installed_trees(package: Package) -> Iterator[tuple[PythonModule, ast.Module, Index]]:
+    """Installed, parseable modules with their syntax trees and indexes."""
     for module in installed_code(package):
         text = package.texts.get(module.path)
-        tree = _parse(module.path, text) if text is not None and not module.syntax_error else None
-        if tree is not None:
-            yield module, tree
-
-
-def _bind(found: dict[str, set[str | None]], name: str, target: str | None) -> None:
-    found.setdefault(name, set()).add(target)
-
-
-@lru_cache(maxsize=256)
-def import_aliases(tree: ast.Module) -> dict[str, str]:
-    """Names bound only by imports, each to the one dotted name it stands for."""
-    found: dict[str, set[str | None]] = {}
-    for node in ast.walk(tree):
-        if isinstance(node, ast.Import):
-            for alias in node.names:
-                top = alias.name.split(".")[0]
-                _bind(found, alias.asname or top, alias.name if alias.asname else top)
-        elif isinstance(node, ast.ImportFrom):
-            for alias in node.names:
-                target = f"{node.module}.{alias.name}" if node.level == 0 and node.module else None
-                _bind(found, alias.asname or alias.name, target)
-        elif isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
-            _bind(found, node.id, None)
-        elif isinstance(node, ast.arg):
-            _bind(found, node.arg, None)
-        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
-            _bind(found, node.name, None)
-        elif isinstance(node, ast.ExceptHandler) and node.name:
-            _bind(found, node.name, None)
-        elif isinstance(node, (ast.MatchAs, ast.MatchStar)) and node.name:
-            _bind(found, node.name, None)
-    return {name: next(iter(targets)) for name, targets in found.items()  # type: ignore[misc]
-            if len(targets) == 1 and None not in targets and name != "*"}
+        parsed = _parsed(module.path, text) if text is not None and not module.syntax_error \
+            else None
+        if parsed is not None:
+            yield module, *parsed
 
 
 def qualified(node: ast.expr, aliases: dict[str, str]) -> str | None:
@@ -75,11 +116,10 @@ def qualified(node: ast.expr, aliases: dict[str, str]) -> str | None:
     return ".".join([aliases[node.id], *reversed(attrs)])
 
 
-def loaded_attributes(tree: ast.Module, aliases: dict[str, str]
-                      ) -> Iterator[tuple[ast.Attribute, str]]:
-    """Every attribute read whose base resolves, with its dotted name (outermost first)."""
-    for node in ast.walk(tree):
-        if isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Load):
-            name = qualified(node, aliases)
-            if name is not None:
-                yield node, name
+def resolved_attributes(index: Index) -> Iterator[tuple[ast.Attribute, str, str]]:
+    """Attribute reads whose base resolves: the node, the owner's dotted name, the attribute."""
+    for node in index.attributes:
+        name = qualified(node, index.aliases)
+        if name is not None:
+            owner, _, attr = name.rpartition(".")
+            yield node, owner, attr

@@ -9,7 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.numpy_removed import REMOVED
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._tree import import_aliases, installed_trees, loaded_attributes
+from pkgtool.rules.python._tree import installed_trees, resolved_attributes
 from pkgtool.rules.registry import rule
 
 
@@ -46,14 +46,12 @@ def numpy_removed_alias(package: Package) -> Iterator[Hit]:
     corners = np.intp(corners)
     ```
     """
-    for module, tree in installed_trees(package):
-        aliases = import_aliases(tree)
-        for node, name in loaded_attributes(tree, aliases):
-            owner, _, attr = name.rpartition(".")
+    for module, _, index in installed_trees(package):
+        for node, owner, attr in resolved_attributes(index):
             if owner == "numpy" and attr in REMOVED:
                 yield _hit(module.path, node, attr)
-        for node in ast.walk(tree):
-            if isinstance(node, ast.ImportFrom) and node.module == "numpy" and node.level == 0:
+        for node in index.import_froms:
+            if node.module == "numpy" and node.level == 0:
                 for alias in node.names:
                     if alias.name in REMOVED:
                         yield _hit(module.path, node, alias.name)

@@ -1,15 +1,14 @@
-"""PYC004: attributes of rclpy modules and classes that do not exist (``ActionClient.GoalStatus``)."""
+"""PYC004: rclpy attributes that do not exist, such as ``ActionClient.GoalStatus``."""
 
 from __future__ import annotations
 
-import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rclpy_missing import missing_attribute
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._tree import import_aliases, installed_trees, loaded_attributes
+from pkgtool.rules.python._tree import installed_trees, resolved_attributes
 from pkgtool.rules.registry import rule
 
 
@@ -39,18 +38,16 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
     if status == GoalStatus.STATUS_SUCCEEDED:
     ```
     """
-    for module, tree in installed_trees(package):
-        aliases = import_aliases(tree)
-        for node, name in loaded_attributes(tree, aliases):
-            owner, _, attr = name.rpartition(".")
+    for module, _, index in installed_trees(package):
+        for node, owner, attr in resolved_attributes(index):
             use = missing_attribute(owner, attr) if owner.split(".")[0] == "rclpy" else None
             if use:
                 shown = f"{owner.rsplit('.', 1)[-1]}.{attr}"
                 where = "" if owner == "rclpy" else " in rclpy"
                 yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
                           f"`{shown}` does not exist{where}", f"Use {use}")
-        for node in ast.walk(tree):
-            if isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
+        for node in index.import_froms:
+            if node.level == 0 and node.module:
                 for alias in node.names:
                     use = missing_attribute(node.module, alias.name)
                     if use and node.module.split(".")[0] == "rclpy":

@@ -8,8 +8,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._scopes import scope_walk
-from pkgtool.rules.python._tree import import_aliases, installed_trees, qualified
+from pkgtool.rules.python._tree import installed_trees, qualified
 from pkgtool.rules.registry import rule
 
 _NAME = "spin_until_future_complete"
@@ -82,16 +81,19 @@ def spin_without_timeout(package: Package) -> Iterator[Hit]:
         self.get_logger().error('service did not answer within 5 s')
     ```
     """
-    for module, tree in installed_trees(package):
-        aliases = import_aliases(tree)
-        attributes = {t for t in _request_futures(tree) if "." in t}
-        for function in ast.walk(tree):
-            if not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
+    for module, tree, index in installed_trees(package):
+        attributes: set[str] | None = None
+        for node in index.calls:
+            future = _waited_future(node, index.aliases)
+            if future is None:
                 continue
-            futures = attributes | _request_futures(function)
-            for node in scope_walk(function.body):
-                future = _waited_future(node, aliases) if isinstance(node, ast.Call) else None
-                if future is not None and (_is_request(future) or _dotted(future) in futures):
-                    yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
-                              f"`{_NAME}` has no `timeout_sec`: it waits forever if the server "
-                              f"never answers")
+            if not _is_request(future):
+                if attributes is None:
+                    attributes = {t for t in _request_futures(tree) if "." in t}
+                function = index.enclosing_function(node)
+                local = _request_futures(function) if function is not None else set()
+                if _dotted(future) not in attributes | local:
+                    continue
+            yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
+                      f"`{_NAME}` has no `timeout_sec`: it waits forever if the server never "
+                      f"answers")

@@ -3,13 +3,15 @@
 from __future__ import annotations
 
 import ast
+from collections import Counter
 from collections.abc import Iterator
+from functools import lru_cache
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._scopes import bound_names, catches_everything, scope_walk
-from pkgtool.rules.python._tree import installed_trees
+from pkgtool.rules.python._tree import Index, installed_trees
 from pkgtool.rules.registry import rule
 
 _LOOPS = (ast.For, ast.AsyncFor, ast.While)
@@ -42,26 +44,39 @@ def _uses(body: list[ast.stmt], name: str) -> Iterator[ast.Name]:
             yield node
 
 
-def _unbound_uses(function: ast.FunctionDef | ast.AsyncFunctionDef) -> Iterator[
-        tuple[ast.Name, str, int]]:
-    nodes = list(scope_walk(function.body))
-    if any(isinstance(n, ast.Call) and isinstance(n.func, ast.Name)
-           and n.func.id in ("locals", "vars", "globals") for n in nodes):
+def _unbound_uses(index: Index, node: ast.Try) -> Iterator[tuple[ast.Name, str, int]]:
+    places = [node.finalbody] + [h.body for h in node.handlers if catches_everything(h)]
+    function = index.enclosing_function(node)
+    if function is None or not any(places) or _in_loop(index, node, function):
         return
-    everywhere = bound_names(function)
-    in_loops = {id(n) for loop in nodes if isinstance(loop, _LOOPS)
-                for n in scope_walk(loop.body + loop.orelse)}
-    for node in nodes:
-        if not isinstance(node, ast.Try) or id(node) in in_loops:
+    everywhere = _function_bindings(function)
+    if everywhere is None:
+        return
+    for name, count in bound_names(node.body).items():
+        if count != everywhere.get(name) or not _fails_before(node.body, name):
             continue
-        for name, count in bound_names(node.body).items():
-            if count != everywhere.get(name) or not _fails_before(node.body, name):
-                continue
-            places = [node.finalbody] + [h.body for h in node.handlers if catches_everything(h)]
-            use = next((u for body in places for u in _uses(body, name)), None)
-            if use is not None:
-                line = next(s.lineno for s in node.body if name in bound_names(s))
-                yield use, name, line
+        use = next((u for body in places for u in _uses(body, name)), None)
+        if use is not None:
+            yield use, name, next(s.lineno for s in node.body if name in bound_names(s))
+
+
+def _in_loop(index: Index, node: ast.AST, function: ast.AST) -> bool:
+    parent = index.parents.get(id(node))
+    while parent is not None and parent is not function:
+        if isinstance(parent, _LOOPS):
+            return True
+        parent = index.parents.get(id(parent))
+    return False
+
+
+@lru_cache(maxsize=512)
+def _function_bindings(function: ast.FunctionDef | ast.AsyncFunctionDef) -> Counter[str] | None:
+    """Binding counts of a function, or None when it inspects its own namespace."""
+    for node in scope_walk(function.body):
+        if (isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
+                and node.func.id in ("locals", "vars", "globals")):
+            return None
+    return bound_names(function)
 
 
 @rule("PYC003", "unbound-in-finally", Severity.ERROR,
@@ -100,12 +115,11 @@ def unbound_in_finally(package: Package) -> Iterator[Hit]:
             node.destroy_node()
     ```
     """
-    for module, tree in installed_trees(package):
-        for function in ast.walk(tree):
-            if isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
-                for use, name, line in _unbound_uses(function):
-                    yield Hit(Span(module.path, use.lineno, use.col_offset + 1),
-                              f"`{name}` may be unbound here: it is only assigned inside the "
-                              f"`try` block (line {line}), which can fail before that",
-                              f"Assign `{name} = None` before `try` and check "
-                              f"`if {name} is not None:` before using it")
+    for module, _, index in installed_trees(package):
+        for node in index.tries:
+            for use, name, line in _unbound_uses(index, node):
+                yield Hit(Span(module.path, use.lineno, use.col_offset + 1),
+                          f"`{name}` may be unbound here: it is only assigned inside the "
+                          f"`try` block (line {line}), which can fail before that",
+                          f"Assign `{name} = None` before `try` and check "
+                          f"`if {name} is not None:` before using it")

@@ -41,7 +41,7 @@ def undefined_name(package: Package) -> Iterator[Hit]:
     from pyflakes.checker import Checker
     from pyflakes.messages import UndefinedName
 
-    for module, tree in installed_trees(package):
+    for module, tree, _ in installed_trees(package):
         try:
             messages = Checker(tree, filename=module.path).messages
         except Exception:  # pyflakes on hostile input (deep nesting, ...): skip, never crash

@@ -14,9 +14,17 @@ from pkgtool.rules.setup.common import checked_setup, same_text, text_of
 _SEPARATORS = re.compile(r"\s+(?:or|and)\s+|\s*[,;/]\s*", re.IGNORECASE)
 
 
+def _loose(text: str) -> str:
+    """``Apache License, Version 2.0`` -> ``apache2``; ``GPLv3 only`` -> ``gpl3``."""
+    words = re.sub(r"\b(?:licen[sc]e|version|the|only)\b", " ", text.lower())
+    compact = re.sub(r"v(?=\d)", "", re.sub(r"[^a-z0-9.]", "", words))
+    return re.sub(r"\.0(?=\D|$)", "", compact)
+
+
 def _matches(license_text: str, declared: list[str]) -> bool:
     ids = set(spdx_ids_for(license_text))
-    return any(same_text(license_text, d) or ids & set(spdx_ids_for(d)) for d in declared)
+    return any(same_text(license_text, d) or ids & set(spdx_ids_for(d)) or
+               _loose(license_text) == _loose(d) for d in declared)
 
 
 @rule("SET005", "setup-license-mismatch", Severity.WARNING,

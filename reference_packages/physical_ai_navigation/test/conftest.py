@@ -58,12 +58,6 @@ class RosHarness:
         assert self.spin_until(lambda: publisher.get_subscription_count() > 0), topic
         return publisher
 
-    def publish_all(self, publisher, messages) -> None:
-        """Publish ``messages`` one by one, spinning in between so no queue overflows."""
-        for message in messages:
-            publisher.publish(message)
-            self.executor.spin_once(timeout_sec=0.05)
-
     def collect(self, msg_type, topic: str, qos=10) -> list:
         """Return a list that fills with the messages published on ``topic``."""
         received = []

@@ -57,13 +57,13 @@ def goal(x: float, y: float) -> PoseStamped:
 
 
 def plan(ros, planner: str, target: PoseStamped) -> Path:
-    ros.start(PathPlannerNode, planner=planner, robot_radius=0.15)
+    node = ros.start(PathPlannerNode, planner=planner, robot_radius=0.15)
     paths = ros.collect(Path, '/plan')
     ros.probe.create_publisher(OccupancyGrid, '/map', MAP_QOS).publish(occupancy_grid())
     odom = ros.publisher(Odometry, '/odom')
     goals = ros.publisher(PoseStamped, '/goal_pose')
     odom.publish(odometry(-1.52, -1.52))
-    ros.spin_until(lambda: False, timeout=0.2)  # let the map and odometry arrive
+    assert ros.spin_until(lambda: node.grid is not None and node.position == (-1.52, -1.52))
     assert ros.spin_until(lambda: paths, action=lambda: goals.publish(target))
     return paths[0]
 

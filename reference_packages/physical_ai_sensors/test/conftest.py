@@ -58,10 +58,15 @@ class RosHarness:
         return publisher
 
     def publish_all(self, publisher, messages) -> None:
-        """Publish ``messages`` one by one, spinning in between so no queue overflows."""
-        for message in messages:
+        """Publish ``messages`` one at a time, each once the last arrived (no queue overflows)."""
+        echoed = []
+        echo = self.probe.create_subscription(
+            type(messages[0]), publisher.topic_name, echoed.append, len(messages))
+        assert self.spin_until(lambda: publisher.get_subscription_count() >= 2)
+        for index, message in enumerate(messages):
             publisher.publish(message)
-            self.executor.spin_once(timeout_sec=0.05)
+            assert self.spin_until(lambda: len(echoed) > index), f'message {index} was lost'
+        self.probe.destroy_subscription(echo)
 
     def collect(self, msg_type, topic: str, qos=10) -> list:
         """Return a list that fills with the messages published on ``topic``."""

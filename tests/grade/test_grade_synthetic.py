@@ -1,0 +1,142 @@
+"""`pkgtool grade --batch --jobs 2` over synthetic submissions, each with one defect.
+
+One batch grades them all (about a minute on 2 cores): each gets its expected score and
+message, the bad ones do not disturb the good ones, and no submission changes on disk.
+"""
+
+from __future__ import annotations
+
+import json
+import uuid
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from pkgtool.grade.sandbox import Limits, sandbox
+from pkgtool.grade.sources import tree_digest
+from tests.grade import synthetic
+from tests.helpers import run_cli
+
+pytestmark = [pytest.mark.ros, pytest.mark.colcon, pytest.mark.slow]
+
+Batch = dict[str, Any]
+Entry = dict[str, Any]
+NAMES = ("correct", "missing_entry_point", "undeclared_dependency", "build_failure",
+         "failing_test", "infinite_loop", "writes_outside", "fork_bomb")
+
+
+@pytest.fixture(scope="module")
+def batch(tmp_path_factory: pytest.TempPathFactory) -> Batch:
+    root = tmp_path_factory.mktemp("grading")
+    subs = root / "submissions"
+    token = uuid.uuid4().hex[:10]
+    markers = {"tmp": Path(f"/tmp/pkgtool-escape-{token}"),
+               "root": Path(f"/root/pkgtool-escape-{token}")}
+    with sandbox(Limits()) as box:
+        bounded = box.bounds_processes  # the fork bomb runs only where processes are capped
+    names = [n for n in NAMES if bounded or n != "fork_bomb"]
+    for name, files in synthetic.variants({n: subs / n for n in NAMES}, markers).items():
+        if name in names:
+            synthetic.write_submission(subs / name, files)
+    staging = root / "staging"
+    synthetic.write_submission(staging / "talker_pkg", synthetic.correct())
+    synthetic.tar_gz(subs / "correct_tgz.tar.gz", staging / "talker_pkg")
+    synthetic.zip_with_traversal(subs / "zip_traversal.zip", staging / "talker_pkg")
+    before = {p.name: tree_digest(p) for p in subs.iterdir()}
+    (root / "rubric.toml").write_text(synthetic.RUBRIC.format(timeout=30,
+                                                              hidden=synthetic.HIDDEN))
+    result = run_cli("grade", "submissions", "--batch", "--rubric", "rubric.toml", "--jobs", "2",
+                     "--format", "json", "--output", "report.json", cwd=root)
+    assert result.exit_code == 0, result.output
+    report = json.loads((root / "report.json").read_text())
+    graded = {s["label"]: s for s in report["submissions"]}
+    after = {p.name: tree_digest(p) for p in subs.iterdir()}
+    return {"graded": graded, "before": before, "after": after, "markers": markers,
+            "names": names, "escaped": [root / "escaped.txt", root / "submissions" /
+                                        "escaped.txt", Path("/tmp/escaped.txt")]}
+
+
+def _criterion(entry: Entry, kind: str) -> Entry:
+    return next(c for c in entry["criteria"] if c["kind"] == kind)
+
+
+def _feedback(entry: Entry, kind: str) -> str:
+    return "\n".join(_criterion(entry, kind)["feedback"])
+
+
+def test_every_submission_is_graded_and_left_unchanged(batch: Batch) -> None:
+    graded = batch["graded"]
+    assert set(graded) == {*batch["names"], "correct_tgz", "zip_traversal"}
+    assert batch["before"] == batch["after"]
+    assert all(entry["unchanged"] for entry in graded.values())
+
+
+@pytest.mark.parametrize("label", ["correct", "correct_tgz"])
+def test_a_correct_submission_gets_full_marks(batch: Batch, label: str) -> None:
+    entry = batch["graded"][label]
+    assert entry["score"] == entry["max_score"] == 11, json.dumps(entry, indent=1)
+    assert "unprivileged uid" in entry["isolation"] or "namespaces" in entry["isolation"] \
+        or entry["isolation"].startswith("no namespaces")
+
+
+def test_missing_entry_point(batch: Batch) -> None:
+    entry = batch["graded"]["missing_entry_point"]
+    assert _criterion(entry, "executables")["score"] == 0
+    assert "No module named 'talker_pkg.talker'" in _feedback(entry, "executables")
+    assert _criterion(entry, "lint")["score"] == 1 and "ENT002" in _feedback(entry, "lint")
+    assert entry["score"] == 8
+
+
+def test_undeclared_dependency(batch: Batch) -> None:
+    entry = batch["graded"]["undeclared_dependency"]
+    assert "DEP001 `numpy` is imported" in _feedback(entry, "lint")
+    assert "Declare what you import" in _feedback(entry, "lint")
+    assert entry["score"] == 10
+
+
+def test_build_failure(batch: Batch) -> None:
+    entry = batch["graded"]["build_failure"]
+    assert _criterion(entry, "build")["score"] == 0
+    assert "missing.yaml" in _feedback(entry, "build")
+    for kind in ("executables", "tests", "hidden"):
+        assert "does not build" in _feedback(entry, kind)
+    assert entry["score"] == 3
+
+
+def test_failing_test(batch: Batch) -> None:
+    entry = batch["graded"]["failing_test"]
+    assert _criterion(entry, "tests")["score"] == 1
+    assert "1 passed, 1 failed" in _feedback(entry, "tests")
+    assert "FAILED talker_pkg.test.test_greet.test_greets_anyone" in _feedback(entry, "tests")
+    assert entry["score"] == 10
+
+
+def test_infinite_loop_in_a_test(batch: Batch) -> None:
+    entry = batch["graded"]["infinite_loop"]
+    assert _criterion(entry, "tests")["score"] == pytest.approx(1.33)
+    assert "Timeout (>5.0s)" in _feedback(entry, "tests")
+    assert _criterion(entry, "hidden")["score"] == 2
+
+
+def test_writing_outside_the_package_changes_nothing(batch: Batch) -> None:
+    entry = batch["graded"]["writes_outside"]
+    assert _criterion(entry, "tests")["score"] == pytest.approx(0.8)
+    feedback = _feedback(entry, "tests")
+    assert feedback.count("Read-only file system") + feedback.count("Permission denied") == 3
+    assert not any(marker.exists() for marker in batch["markers"].values())
+
+
+def test_a_fork_bomb_is_stopped_without_harm(batch: Batch) -> None:
+    if "fork_bomb" not in batch["names"]:
+        pytest.skip("no process limit can be enforced on this machine")
+    entry = batch["graded"]["fork_bomb"]
+    assert "too many processes (limit 64)" in _feedback(entry, "tests")
+    assert _criterion(entry, "tests")["score"] < 2
+    assert _criterion(entry, "hidden")["score"] == 2
+
+
+def test_a_zip_with_parent_paths_is_refused(batch: Batch) -> None:
+    entry = batch["graded"]["zip_traversal"]
+    assert entry["score"] == 0 and "points outside the submission" in entry["error"]
+    assert not any(path.exists() for path in batch["escaped"])
