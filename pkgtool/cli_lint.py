@@ -76,7 +76,8 @@ def lint(
         "--strict/--no-strict", help="Warnings fail too (default: from configuration, else off).",
         show_default=False)] = None,
     exit_zero: Annotated[bool, typer.Option(
-        "--exit-zero", help="Exit 0 even when findings fail (usage and internal errors still exit 2 and 3).",
+        "--exit-zero",
+        help="Exit 0 even when findings fail (usage and internal errors still exit 2 and 3).",
     )] = False,
     quiet: Annotated[bool, typer.Option(
         "--quiet", "-q", help="Leave info findings out of the report (they never fail).")] = False,

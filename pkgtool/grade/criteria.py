@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import re
-import secrets
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -13,7 +12,7 @@ from pkgtool.findings import Severity
 from pkgtool.grade.junit import TestSummary
 from pkgtool.grade.results import CriterionResult
 from pkgtool.grade.rubric import Criterion, Rubric
-from pkgtool.grade.runner import WorkspaceRunner, place
+from pkgtool.grade.runner import WorkspaceRunner
 from pkgtool.model.package import Package
 from pkgtool.ros.colcon import ColconRun
 
@@ -55,18 +54,26 @@ class Job:
         """Instructor tests from ``folder``, copied into the package copy and run there."""
         key = f"hidden:{folder}"
         if key not in self._runs:
-            token = secrets.token_hex(6)  # a name no submission can have planted files under
-            dest = place(folder, self.copy / f"pkgtool_hidden_{token}" / folder.name,
-                         self.runner.box)
-            report = self.runner.workspace / f"hidden-{token}.xml"
-            self._runs[key] = self.runner.pytest(dest, report=report,
+            self._runs[key] = self.runner.pytest(folder, into=self.copy,
                                                  test_timeout=self.rubric.test_timeout)
         return self._runs[key]
 
 
+STATIC = ("lint", "style")
+"""Kinds that only read the submission: graded before any of its code runs."""
+
+
+def evaluate_all(job: Job) -> tuple[CriterionResult, ...]:
+    """Every criterion of the rubric, static ones first, reported in the rubric's order."""
+    criteria = job.rubric.criteria
+    order = sorted(range(len(criteria)), key=lambda i: criteria[i].kind not in STATIC)
+    results = {i: evaluate(criteria[i], job) for i in order}
+    return tuple(results[i] for i in range(len(criteria)))
+
+
 def evaluate(criterion: Criterion, job: Job) -> CriterionResult:
     """Score ``criterion`` on ``job``; the rubric's feedback is added when marks are lost."""
-    if criterion.kind in ("lint", "style"):
+    if criterion.kind in STATIC:
         score, lines, output = _lint(criterion, job)
     elif criterion.kind == "build":
         score, lines, output = _build(criterion, job)

@@ -7,7 +7,7 @@ import time
 import traceback
 from pathlib import Path
 
-from pkgtool.grade.criteria import Job, evaluate
+from pkgtool.grade.criteria import Job, evaluate_all
 from pkgtool.grade.extract import SubmissionError, extract, is_archive
 from pkgtool.grade.results import CriterionResult, SubmissionResult
 from pkgtool.grade.rubric import Rubric
@@ -34,7 +34,7 @@ def grade_submission(path: Path, rubric: Rubric, *, label: str | None = None, sl
         with sandbox(rubric.limits, mode=mode) as box:
             job = _prepare(path, rubric, box, slot)
             package = job.name
-            criteria = tuple(evaluate(c, job) for c in rubric.criteria)
+            criteria = evaluate_all(job)
             isolation = box.describe()
     except SubmissionError as problem:
         error = str(problem)

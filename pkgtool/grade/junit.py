@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
@@ -60,10 +61,17 @@ class TestSummary:
         return ", ".join(f"{n} {outcome}" for outcome, n in self.counts.items() if n)
 
 
-def parse_junit(path: Path) -> TestSummary:
-    """The test cases of a pytest JUnit XML file; a missing or bad file is a ``problem``."""
+def parse_junit(path: Path, *, within: Path | None = None) -> TestSummary:
+    """The test cases of a pytest JUnit XML file; a missing or bad file is a ``problem``.
+
+    When the file was written by untrusted code, ``within`` names the folder it must stay
+    in: a report resolving (through symbolic links) outside it is not read.
+    """
     from lxml import etree
 
+    if within is not None and os.path.lexists(path) and not os.path.realpath(path).startswith(
+            os.path.realpath(within) + os.sep):
+        return TestSummary(problem="the test report points outside the workspace; not read")
     try:
         size = path.stat().st_size
         if size > MAX_XML_BYTES:

@@ -9,6 +9,7 @@ from __future__ import annotations
 import importlib.util
 import json
 import os
+import secrets
 import shutil
 import sys
 import sysconfig
@@ -67,7 +68,8 @@ class WorkspaceRunner:
         run = colcon_test(self.workspace, base_paths=[self.src], env=self.env,
                           packages=[package], pytest_args=args, runner=self.box.run,
                           timeout=self.box.limits.timeout)
-        return run, _checked(run, parse_junit(self.workspace / "build" / package / "pytest.xml"))
+        report = self.workspace / "build" / package / "pytest.xml"
+        return run, _checked(run, parse_junit(report, within=self.workspace))
 
     def installed_env(self) -> dict[str, str]:
         """The environment with every installed package of the workspace on the paths."""
@@ -79,22 +81,31 @@ class WorkspaceRunner:
         env["PYTHONPATH"] = os.pathsep.join(str(p) for p in _site_packages(prefixes))
         return env
 
-    def pytest(self, tests: Path, *, report: Path,
+    def pytest(self, source: Path, *, into: Path,
                test_timeout: float | None = None) -> tuple[ColconRun, TestSummary]:
-        """Run pytest on the folder ``tests`` against the installed packages.
+        """Copy the instructor's test folder ``source`` into ``into`` and run it there.
 
-        Only ``tests``'s own conftest files and an empty configuration apply: nothing of the
-        package around it (its setup.cfg, pytest.ini or conftest.py) can change the run.
+        ``into`` (a folder of the package copy) gets a fresh, randomly named, root-owned
+        folder holding the tests and an empty pytest configuration: only the tests' own
+        conftest files apply, nothing of the package around them (setup.cfg, pytest.ini,
+        conftest.py) can change the run, and the sandboxed user cannot edit the tests.
         """
-        config = self.workspace / "pkgtool-pytest.ini"
+        token = secrets.token_hex(6)
+        home = Path(os.path.realpath(into)) / f"pkgtool_hidden_{token}"
+        if not str(home).startswith(os.path.realpath(self.workspace) + os.sep):
+            return _refused("the package folder was replaced by a link out of the workspace")
+        home.mkdir(mode=0o755)
+        tests = home / source.name
+        shutil.copytree(source, tests, ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
+        config = home / "pytest.ini"
         config.write_text("[pytest]\n")
-        self.box.give(config)
+        report = self.workspace / f"hidden-{token}.xml"
         command = [sys.executable, "-m", "pytest", "-c", str(config), "--rootdir", str(tests),
                    "--confcutdir", str(tests), "-p", "no:cacheprovider", "-o",
                    "junit_family=xunit2", f"--junit-xml={report}", *_timeout_args(test_timeout),
                    str(tests)]
         run = self.box.run(command, tests, self.installed_env())
-        return run, _checked(run, parse_junit(report))
+        return run, _checked(run, parse_junit(report, within=self.workspace))
 
     def entry_points(self, package: str, names: Sequence[str]) -> dict[str, str]:
         """For each console script name, "" when installed and loadable, else the problem."""
@@ -118,12 +129,8 @@ class WorkspaceRunner:
         return problems
 
 
-def place(source: Path, dest: Path, box: Sandbox) -> Path:
-    """Copy the instructor folder ``source`` to ``dest`` in the workspace, owned by the sandbox."""
-    shutil.copytree(source, dest, symlinks=False, dirs_exist_ok=True,
-                    ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
-    box.give(dest)
-    return dest
+def _refused(problem: str) -> tuple[ColconRun, TestSummary]:
+    return ColconRun((), 1, problem, 0.0), TestSummary(problem=problem)
 
 
 def _checked(run: ColconRun, summary: TestSummary) -> TestSummary:

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 from setuptools import find_packages, setup
 
 package_name = 'joint_controller_agent'

@@ -146,6 +146,18 @@ def test_greets_anyone():
 """
 
 
+CHEAT = """\
+import pytest
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_makereport(item, call):
+    outcome = yield
+    outcome.get_result().outcome = 'passed'
+"""
+"""A conftest.py that reports every test as passed, if pytest ever loads it."""
+
+
 def correct() -> dict[str, str]:
     """The files of a correct submission."""
     return {
@@ -194,7 +206,12 @@ def test_writes_to_the_home_of_root():
     bomb["test/test_bomb.py"] = ("import os\n\n\ndef test_fork_bomb():\n    while True:\n"
                                  "        try:\n            os.fork()\n"
                                  "        except OSError:\n            pass\n")
-    return {"correct": correct(), "missing_entry_point": missing_entry,
+    cheater = correct()
+    cheater["talker_pkg/greet.py"] = GREET.replace("f'Hello, {name}!'", "'Hi'")
+    cheater["test/test_greet.py"] = TESTS.format(expected="Hi").replace("Hello, Ada!", "Hi")
+    cheater["conftest.py"] = CHEAT
+    cheater["setup.cfg"] += "[tool:pytest]\naddopts = -p no:junitxml\n"
+    return {"correct": correct(), "cheater": cheater, "missing_entry_point": missing_entry,
             "undeclared_dependency": undeclared, "build_failure": broken,
             "failing_test": failing, "infinite_loop": looping, "writes_outside": escape,
             "fork_bomb": bomb}

@@ -22,7 +22,7 @@ pytestmark = [pytest.mark.ros, pytest.mark.colcon, pytest.mark.slow]
 
 Batch = dict[str, Any]
 Entry = dict[str, Any]
-NAMES = ("correct", "missing_entry_point", "undeclared_dependency", "build_failure",
+NAMES = ("correct", "cheater", "missing_entry_point", "undeclared_dependency", "build_failure",
          "failing_test", "infinite_loop", "writes_outside", "fork_bomb")
 
 
@@ -78,6 +78,13 @@ def test_a_correct_submission_gets_full_marks(batch: Batch, label: str) -> None:
     assert entry["score"] == entry["max_score"] == 11, json.dumps(entry, indent=1)
     assert "unprivileged uid" in entry["isolation"] or "namespaces" in entry["isolation"] \
         or entry["isolation"].startswith("no namespaces")
+
+
+def test_a_conftest_or_setup_cfg_of_the_submission_cannot_touch_instructor_tests(
+        batch: Batch) -> None:
+    entry = batch["graded"]["cheater"]
+    hidden = _criterion(entry, "hidden")
+    assert hidden["score"] == 0 and "2 failed" in _feedback(entry, "hidden")
 
 
 def test_missing_entry_point(batch: Batch) -> None:

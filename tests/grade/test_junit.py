@@ -67,3 +67,15 @@ def test_garbage_and_colcon_placeholders_are_problems(tmp_path: Path) -> None:
         '</testcase></testsuite>')
     summary = parse_junit(tmp_path / "colcon.xml")
     assert not summary.ok and "without a report" in summary.describe()
+
+
+def test_a_report_linked_out_of_the_workspace_is_not_read(tmp_path: Path) -> None:
+    outside = tmp_path / "secret.xml"
+    outside.write_text(REPORT)
+    workspace = tmp_path / "ws"
+    workspace.mkdir()
+    (workspace / "pytest.xml").symlink_to(outside)
+    summary = parse_junit(workspace / "pytest.xml", within=workspace)
+    assert not summary.cases and "outside the workspace" in summary.describe()
+    (workspace / "real.xml").write_text(REPORT)
+    assert parse_junit(workspace / "real.xml", within=workspace).ran == 3

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import subprocess
 import sys
 from collections.abc import Iterator
 from pathlib import Path
@@ -180,3 +181,19 @@ def test_colour_only_on_a_terminal_without_no_color(monkeypatch: pytest.MonkeyPa
     else:
         monkeypatch.setenv("NO_COLOR", no_color)
     assert cli_lint._colour(cli_lint.Format(fmt), output) is coloured
+
+
+def test_large_workspaces_are_checked_in_parallel_with_the_same_report(tmp_path: Path) -> None:
+    """40 packages: a process pool on a multi-core machine; the report must not change."""
+    from pkgtool.commands.lint import PACKAGES_PER_WORKER
+
+    count = 2 * PACKAGES_PER_WORKER + 8
+    for index in range(count):
+        _package(tmp_path / "src", f"pkg_{index:02d}", BROKEN if index % 3 == 0 else "X = 1\n")
+    done = subprocess.run([sys.executable, "-m", "pkgtool", "lint", "--select", "SYN", "-f",
+                           "json"], cwd=tmp_path, capture_output=True, text=True, timeout=300)
+    assert done.returncode == ExitCode.FINDINGS, done.stderr
+    document = json.loads(done.stdout)
+    assert document["summary"]["packages"] == count
+    assert [f["path"] for f in document["findings"]] == [
+        f"src/pkg_{i:02d}/pkg_{i:02d}/node.py" for i in range(0, count, 3)]

@@ -6,6 +6,7 @@ import json
 from pathlib import Path
 
 import pytest
+from typer.testing import Result
 
 from pkgtool.commands import ExitCode
 from tests.helpers import correct_package_files, run_cli, write_tree
@@ -21,8 +22,8 @@ def workspace(tmp_path: Path) -> Path:
     return write_tree(tmp_path, files)
 
 
-def _codes(result: object) -> list[tuple[str, str, str]]:
-    output = json.loads(result.stdout)  # type: ignore[attr-defined]
+def _codes(result: Result) -> list[tuple[str, str, str]]:
+    output = json.loads(result.stdout)
     return [(f["rule"], f["severity"], f["path"]) for f in output["findings"]]
 
 

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 from pkgtool.docs_gen import DEFAULT_OUTPUT, explain, main, rules_markdown
 from pkgtool.rules.registry import FAMILIES, load_all
 
@@ -28,8 +30,8 @@ def test_families_are_sections_in_registry_order() -> None:
     assert positions == sorted(positions)
 
 
-def test_check_mode_reports_a_stale_file(tmp_path: object) -> None:
-    stale = tmp_path / "rules.md"  # type: ignore[operator]
+def test_check_mode_reports_a_stale_file(tmp_path: Path) -> None:
+    stale = tmp_path / "rules.md"
     stale.write_text("old\n")
     assert main(["--check", str(stale)]) == 1
     assert main([str(stale)]) == 0 and main(["--check", str(stale)]) == 0

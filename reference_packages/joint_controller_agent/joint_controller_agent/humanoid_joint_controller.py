@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Lab 2.3: command humanoid joint positions and call a homing service, never blocking forever."""
 
 from typing import Sequence

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Build trajectory_msgs/JointTrajectory commands (no ROS runtime needed)."""
 
 import math

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Every console script of setup.py names a callable ``main`` that exists."""
 
 import ast

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """The controller driven through ROS: trajectories out, Trigger homing calls with timeouts."""
 
 import time

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Trajectory building and the demo poses, without ROS communication."""
 
 import math

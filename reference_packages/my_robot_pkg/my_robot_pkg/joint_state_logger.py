@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Exercise 2.2: log the name, position, velocity and effort of every joint."""
 
 from typing import Sequence

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Exercise 2.3: answer std_srvs/Trigger calls on ``/robot_status``."""
 
 import rclpy

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Keep every test in this process: discovery OFF, own domain id, logs in a temp folder."""
 
 import os

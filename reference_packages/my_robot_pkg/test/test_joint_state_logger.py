@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """joint_state_logger: formatting and the node driven through ROS."""
 
 from my_robot_pkg.joint_state_logger import describe_joints, format_value, JointStateLogger

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """robot_status_server answers std_srvs/Trigger calls on /robot_status."""
 
 from my_robot_pkg.robot_status_server import RobotStatusService

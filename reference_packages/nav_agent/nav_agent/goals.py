@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Goal poses and result classification for NavigateToPose (pure, no ROS runtime)."""
 
 from enum import Enum

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Lab 2.2: send a NavigateToPose goal to Nav2 and report how it ended."""
 
 from dataclasses import dataclass

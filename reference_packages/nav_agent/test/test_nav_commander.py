@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """NavCommander against a real NavigateToPose action server (nav2_msgs built from source)."""
 
 import threading

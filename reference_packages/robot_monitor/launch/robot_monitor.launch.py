@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Start both health monitors with the parameters of config/params.yaml."""
 
 from launch import LaunchDescription

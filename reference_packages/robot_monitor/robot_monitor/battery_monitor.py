@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Publish the (simulated) battery voltage and warn when it runs low."""
 
 import rclpy

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Publish the (simulated) motor temperature and warn when it runs hot."""
 
 import rclpy

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Battery simulation and the battery_monitor node driven through ROS."""
 
 import pytest

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Packaging: subpackages, launch/config installation, entry points and the shipped YAML."""
 
 import ast

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Exercise 2.1: tell obstacles ahead, on the left and on the right apart."""
 
 import math

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Lab 2.1: stop and turn when an obstacle is ahead, otherwise drive forward."""
 
 from sensor_msgs.msg import LaserScan

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Turn nearest-obstacle distances into a velocity command (pure, no ROS)."""
 
 from dataclasses import dataclass

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """
 Nearest obstacle per angular sector of a LaserScan, for any angle range and resolution.
 

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """LaserScan builders shared by the tests: any angle range, resolution and direction."""
 
 import math

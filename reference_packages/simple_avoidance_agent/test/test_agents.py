@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Both agents driven through ROS: LaserScan on /scan in, Twist on /cmd_vel out."""
 
 import math

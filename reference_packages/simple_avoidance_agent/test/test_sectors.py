@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Sector geometry from angle_min/angle_increment, for every scan layout."""
 
 import math

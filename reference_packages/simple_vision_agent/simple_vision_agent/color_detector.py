@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Detect green objects in camera images and publish what was found."""
 
 import rclpy

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """Find objects of one colour in a BGR image with an HSV threshold (OpenCV, no ROS)."""
 
 from dataclasses import dataclass

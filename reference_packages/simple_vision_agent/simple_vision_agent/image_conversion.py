@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """
 Convert sensor_msgs/Image to and from numpy arrays (a replacement for cv_bridge).
 

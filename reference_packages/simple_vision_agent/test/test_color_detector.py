@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """color_detector driven through ROS: Image in, segmented Image and RegionOfInterest out."""
 
 import numpy as np

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """The lesson's package creation used keys that do not work here."""
 
 import ast

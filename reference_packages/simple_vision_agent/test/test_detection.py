@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """HSV colour thresholding and blob extraction."""
 
 import numpy as np

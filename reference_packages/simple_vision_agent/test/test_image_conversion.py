@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """sensor_msgs/Image <-> numpy without cv_bridge (broken under NumPy 2)."""
 
 import sys

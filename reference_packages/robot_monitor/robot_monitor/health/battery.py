@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """A simulated battery that drains a fixed amount per tick."""
 
 from dataclasses import dataclass

@@ -1,3 +1,6 @@
+# Copyright 2026 pkgtool developers
+# SPDX-License-Identifier: Apache-2.0
+
 """A simulated motor temperature and its warning levels."""
 
 from dataclasses import dataclass
