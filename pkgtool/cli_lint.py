@@ -18,6 +18,8 @@ from pkgtool.commands import ExitCode
 if TYPE_CHECKING:
     from pkgtool.commands.lint import LintOptions, LintResult
 
+STYLE_FAMILIES = ("STY", "CPY")
+"""What ``--style`` adds to the selection."""
 _RULES_HELP = "Rule codes, families (MAN), code prefixes or names; comma-separated or repeated."
 
 
@@ -72,6 +74,9 @@ def lint(
         metavar="RULES")] = None,
     extend_select: Annotated[Optional[list[str]], typer.Option(
         help="Run these rules too. " + _RULES_HELP, show_default=False, metavar="RULES")] = None,
+    style: Annotated[bool, typer.Option(
+        "--style", help="Also run ament's style checks: flake8, pydocstyle and copyright "
+        "headers (the STY and CPY rules).")] = False,
     strict: Annotated[Optional[bool], typer.Option(
         "--strict/--no-strict", help="Warnings fail too (default: from configuration, else off).",
         show_default=False)] = None,
@@ -97,7 +102,8 @@ def lint(
     from pkgtool.commands import lint as command
 
     options = command.LintOptions(_selectors(select) if select else None, _selectors(ignore),
-                                  _selectors(extend_select), strict, exit_zero, quiet, isolated)
+                                  _selectors(extend_select) + (STYLE_FAMILIES if style else ()),
+                                  strict, exit_zero, quiet, isolated)
     try:
         if explain is not None or list_rules:
             _show_rules(explain, fmt, output)

@@ -85,7 +85,7 @@ class Sandbox:
                  "none": [f"no namespaces ({jail_support().reason or 'disabled'})"]}[self.mode]
         parts.append("cgroup: pids, memory" if self.cgroups else "no cgroup")
         if not self.bounds_processes:
-            parts.append("process count NOT limited (root, with neither a cgroup nor a uid change)")
+            parts.append("process count NOT limited (root, without a cgroup or a uid change)")
         limits = self.limits
         parts.append(f"limits: {limits.timeout:g} s wall, {limits.memory_mb} MB, "
                      f"{limits.processes} processes, {limits.cpu_seconds} s CPU, "

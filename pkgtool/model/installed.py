@@ -11,6 +11,7 @@ from __future__ import annotations
 import posixpath
 from fnmatch import fnmatchcase
 
+from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 
 _CFG_KEYWORDS = {
@@ -67,6 +68,7 @@ def package_folder(package_name: str, package_dir: dict[str, str]) -> str:
     return posixpath.normpath(joined) if joined else ""
 
 
+@per_package
 def installed_modules(package: Package) -> dict[str, str] | None:
     """Every dotted module name setup.py installs, mapped to its package-relative file."""
     setup = package.setup_py
@@ -94,6 +96,7 @@ def installed_modules(package: Package) -> dict[str, str] | None:
     return modules
 
 
+@per_package
 def installed_data(package: Package) -> dict[str, str] | None:
     """data_files: installed path (relative to the install prefix) -> source file."""
     setup = package.setup_py

@@ -20,6 +20,7 @@ from pkgtool.model.installed import installed_modules
 from pkgtool.model.launch import is_launch_file
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.modules import Import, PythonModule
+from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 
 RUNTIME = frozenset({"depend", "exec_depend", "run_depend"})
@@ -100,6 +101,7 @@ def _layout(files: tuple[str, ...]) -> _Layout:
                    {k: frozenset(v) for k, v in children.items()})
 
 
+@per_package
 def own_modules(package: Package) -> frozenset[str]:
     """Top-level names the package itself provides (never need a key)."""
     names = set(_layout(package.files).names) | {package.name}
