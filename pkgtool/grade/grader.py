@@ -19,20 +19,23 @@ from pkgtool.model.package import load_package
 
 
 def domain_for(slot: int) -> int:
-    """A ROS domain id (1-101) for job ``slot``, distinct across concurrent jobs and runs."""
-    return 1 + (os.getpid() * 7 + slot) % 101
+    """A ROS domain id (1-101) for job ``slot`` of this process: concurrent slots differ."""
+    return 1 + (os.getpid() + slot) % 101
 
 
-def grade_submission(path: Path, rubric: Rubric, *, label: str | None = None, slot: int = 0,
-                     mode: str | None = None) -> SubmissionResult:
-    """Grade ``path`` (package, workspace or archive); never raises for a bad submission."""
+def grade_submission(path: Path, rubric: Rubric, *, label: str | None = None,
+                     domain_id: int | None = None, mode: str | None = None) -> SubmissionResult:
+    """Grade ``path`` (package, workspace or archive); never raises for a bad submission.
+
+    ``domain_id`` is the job's ROS domain (default: :func:`domain_for` slot 0).
+    """
     label = label or path.name
     start = time.monotonic()
-    before = tree_digest(path) if path.exists() else ""
+    before = _digest(path)
     package, error, criteria, isolation = None, None, (), ""
     try:
         with sandbox(rubric.limits, mode=mode) as box:
-            job = _prepare(path, rubric, box, slot)
+            job = _prepare(path, rubric, box, domain_id or domain_for(0))
             package = job.name
             criteria = evaluate_all(job)
             isolation = box.describe()
@@ -44,7 +47,7 @@ def grade_submission(path: Path, rubric: Rubric, *, label: str | None = None, sl
                  f"({Path(where.filename).name}:{where.lineno})")
     if error:
         criteria = not_graded(rubric, error)
-    unchanged = (tree_digest(path) if path.exists() else "") == before
+    unchanged = _digest(path) == before
     return SubmissionResult(label, str(path), round(sum(c.score for c in criteria), 2),
                             rubric.max_score, criteria, package, error, isolation,
                             round(time.monotonic() - start, 2), unchanged)
@@ -56,7 +59,14 @@ def not_graded(rubric: Rubric, error: str) -> tuple[CriterionResult, ...]:
                                  visibility=c.visibility) for c in rubric.criteria)
 
 
-def _prepare(path: Path, rubric: Rubric, box: Sandbox, slot: int) -> Job:
+def _digest(path: Path) -> str:
+    try:
+        return tree_digest(path) if os.path.lexists(path) else "missing"
+    except OSError as error:
+        return f"unreadable: {error}"
+
+
+def _prepare(path: Path, rubric: Rubric, box: Sandbox, domain_id: int) -> Job:
     if not path.exists():
         raise SubmissionError(f"`{path}` does not exist")
     tree = path
@@ -69,6 +79,6 @@ def _prepare(path: Path, rubric: Rubric, box: Sandbox, slot: int) -> Job:
     available = find_packages(tree)
     target = choose_target(available, rubric.package)
     copies = copy_packages(with_dependencies(target, available), box.workspace / "src")
-    runner = WorkspaceRunner(box, domain_id=domain_for(slot))
+    runner = WorkspaceRunner(box, domain_id=domain_id)
     copy = copies[target.name]
     return Job(rubric, runner, load_package(copy), copy)
