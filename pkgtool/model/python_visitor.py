@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+import functools
 
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.span import ParseProblem, Span
@@ -95,8 +96,13 @@ def _flatten(body: list[ast.stmt]) -> list[ast.stmt]:
     return result
 
 
+@functools.lru_cache(maxsize=512)
 def parse_tree(path: str, text: str) -> ast.Module | ParseProblem:
-    """``ast.parse`` that turns every parser failure into a ``python-syntax`` problem."""
+    """``ast.parse`` that turns every parser failure into a ``python-syntax`` problem.
+
+    Cached: the model and the rules that walk syntax trees share one parse per file. Callers
+    must treat the tree as read-only.
+    """
     try:
         return ast.parse(text, filename=path)
     except (SyntaxError, ValueError) as error:

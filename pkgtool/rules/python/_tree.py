@@ -14,6 +14,8 @@ from functools import lru_cache
 
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
+from pkgtool.model.python_visitor import parse_tree
+from pkgtool.model.span import ParseProblem
 from pkgtool.rules.dependencies._imports import installed_code
 
 FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
@@ -86,13 +88,10 @@ def _index(tree: ast.Module) -> Index:
     return index
 
 
-@lru_cache(maxsize=256)
+@lru_cache(maxsize=512)
 def _parsed(path: str, text: str) -> tuple[ast.Module, Index] | None:
-    try:
-        tree = ast.parse(text, filename=path)
-    except (SyntaxError, ValueError, RecursionError, MemoryError):
-        return None
-    return tree, _index(tree)
+    tree = parse_tree(path, text)
+    return None if isinstance(tree, ParseProblem) else (tree, _index(tree))
 
 
 def installed_trees(package: Package) -> Iterator[tuple[PythonModule, ast.Module, Index]]:
