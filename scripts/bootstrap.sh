@@ -7,6 +7,8 @@ VENV="$ROOT/.venv"
 PY="${PKGTOOL_PYTHON:-python3}"
 UV_VERSION="0.13.9"
 export UV_CACHE_DIR="${UV_CACHE_DIR:-$HOME/.cache/pkgtool-uv}"
+# Copy, never hard-link, from the cache: wheel_fixups edits installed files in place.
+export UV_LINK_MODE=copy
 
 if [ ! -x "$VENV/bin/python" ]; then
     echo "bootstrap: creating $VENV" >&2

@@ -1,0 +1,72 @@
+"""Seeded mistakes: one typical student mistake inserted into a correct package, per case.
+
+A case is a function that mutates a copy of a correct package in place, registered with
+:func:`case` under the rule code lint must report, and where: the file and a piece of text
+on the reported line (the first line of the mutated file that contains it).
+"""
+
+from __future__ import annotations
+
+import textwrap
+from collections.abc import Callable
+from dataclasses import dataclass
+from pathlib import Path
+
+CREATED = "created"
+"""The package ``pkgtool create base_pkg --node talker:publisher --node listener:subscriber
+--node srv:service --launch --config`` writes; other bases are reference package names."""
+
+Mutation = Callable[[Path], None]
+
+
+@dataclass(frozen=True, slots=True)
+class Case:
+    """One seeded mistake and the finding lint must give for it."""
+
+    id: str
+    mutate: Mutation
+    code: str
+    path: str | None
+    at: str | None
+    base: str
+
+
+CASES: list[Case] = []
+
+
+def case(code: str, path: str | None = None, at: str | None = None, *,
+         base: str = CREATED) -> Callable[[Mutation], Mutation]:
+    """Register the decorated mutation: lint must report ``code`` in ``path`` on the line
+    holding ``at`` (any line when ``at`` is None, any file when ``path`` is None)."""
+
+    def register(mutate: Mutation) -> Mutation:
+        CASES.append(Case(mutate.__name__, mutate, code, path, at, base))
+        return mutate
+
+    return register
+
+
+def edit(root: Path, relpath: str, old: str, new: str) -> None:
+    """Replace the first ``old`` in a file by ``new``; ``old`` must be there."""
+    path = root / relpath
+    text = path.read_text()
+    assert old in text, f"{old!r} not in {relpath}"
+    path.write_text(text.replace(old, new, 1))
+
+
+def write(root: Path, relpath: str, text: str) -> None:
+    """Write a (dedented) file, creating its folders."""
+    path = root / relpath
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_text(textwrap.dedent(text).lstrip("\n"))
+
+
+def move(root: Path, source: str, destination: str) -> None:
+    """Move a file inside the package, creating the destination's folders."""
+    (root / destination).parent.mkdir(parents=True, exist_ok=True)
+    (root / source).rename(root / destination)
+
+
+def remove(root: Path, relpath: str) -> None:
+    """Delete a file of the package."""
+    (root / relpath).unlink()
