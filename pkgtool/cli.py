@@ -32,7 +32,8 @@ def _version(value: bool) -> None:
 def _root(
     version: Annotated[
         Optional[bool],
-        typer.Option("--version", callback=_version, is_eager=True, help="Print the version and exit."),
+        typer.Option("--version", callback=_version, is_eager=True,
+                     help="Print the version and exit."),
     ] = None,
 ) -> None:
     """Create, lint, check, test and grade ROS 2 Python (ament_python) packages."""

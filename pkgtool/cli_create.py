@@ -34,7 +34,7 @@ def create(
         help="The package description.", show_default=False)] = None,
     license_: Annotated[str, typer.Option(
         "--license", help="SPDX id: Apache-2.0, BSL-1.0, BSD-2-Clause, BSD-3-Clause, MIT, MIT-0, "
-             "GPL-3.0-only, LGPL-3.0-only.")] = "Apache-2.0",
+        "GPL-3.0-only, LGPL-3.0-only.")] = "Apache-2.0",
     maintainer_name: Annotated[Optional[str], typer.Option(
         help="Default: git config user.name.", show_default=False)] = None,
     maintainer_email: Annotated[Optional[str], typer.Option(

@@ -15,8 +15,10 @@ from pkgtool.rules.registry import load_all
 if TYPE_CHECKING:
     from typer.testing import Result
 
+SCHEMA_LINE = ('<?xml-model href="http://download.ros.org/schema/package_format3.xsd" '
+               'schematypens="http://www.w3.org/2001/XMLSchema"?>')
 MINIMAL_MANIFEST = """<?xml version="1.0"?>
-<?xml-model href="http://download.ros.org/schema/package_format3.xsd" schematypens="http://www.w3.org/2001/XMLSchema"?>
+""" + SCHEMA_LINE + """
 <package format="3">
   <name>{name}</name>
   <version>0.1.0</version>

@@ -68,8 +68,8 @@ def test_lint_core_imports_without_ros() -> None:
 def test_isolation_refuses_the_default_discovery_range() -> None:
     with pytest.raises(ValueError):
         isolated_ros_env(domain_id=1, log_dir="/tmp", discovery_range="SUBNET")
-    env = isolated_ros_env(domain_id=7, log_dir="/tmp/x", base={"RMW_IMPLEMENTATION": "x",
-                                                                  "_ROS_WHEELS_BOOTSTRAP_COMPLETE": "1"})
+    parent = {"RMW_IMPLEMENTATION": "x", "_ROS_WHEELS_BOOTSTRAP_COMPLETE": "1"}
+    env = isolated_ros_env(domain_id=7, log_dir="/tmp/x", base=parent)
     assert env["ROS_AUTOMATIC_DISCOVERY_RANGE"] == "LOCALHOST"
     assert env["ROS_DOMAIN_ID"] == "7" and env["ROS_LOG_DIR"] == "/tmp/x"
     assert "RMW_IMPLEMENTATION" not in env and "_ROS_WHEELS_BOOTSTRAP_COMPLETE" not in env

@@ -42,7 +42,8 @@ def read_text(root: Path, relpath: str, *, allow_empty: bool = True) -> TextFile
     try:
         size = file.stat().st_size
         if size > MAX_FILE_BYTES:
-            return ParseProblem("too-large", span, f"{size} bytes, more than the {MAX_FILE_BYTES} read")
+            return ParseProblem("too-large", span,
+                                f"{size} bytes, more than the {MAX_FILE_BYTES} read")
         data = file.read_bytes()
     except OSError as error:
         return ParseProblem("unreadable", Span(relpath), error.strerror or str(error))

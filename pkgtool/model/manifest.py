@@ -125,7 +125,8 @@ def _manifest(path: str, root: XmlElement, has_schema_line: bool) -> Manifest:
         maintainers=_people(root, "maintainer"),
         authors=_people(root, "author"),
         licenses=tuple(Text(c.text, c.span) for c in root.children if c.tag == "license"),
-        urls=tuple(Url(c.text, c.attribute("type"), c.span) for c in root.children if c.tag == "url"),
+        urls=tuple(Url(c.text, c.attribute("type"), c.span)
+                   for c in root.children if c.tag == "url"),
         dependencies=tuple(
             Dependency(c.tag, c.text, c.span, c.attributes)
             for c in root.children
@@ -133,5 +134,6 @@ def _manifest(path: str, root: XmlElement, has_schema_line: bool) -> Manifest:
         ),
         build_type=_text(build_type),
         has_schema_line=has_schema_line,
-        members_of=tuple(Text(c.text, c.span) for c in root.children if c.tag == "member_of_group"),
+        members_of=tuple(Text(c.text, c.span)
+                         for c in root.children if c.tag == "member_of_group"),
     )

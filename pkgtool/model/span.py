@@ -33,7 +33,7 @@ class ParseProblem:
 
 @dataclass(frozen=True, slots=True)
 class Unresolved:
-    """An expression the static evaluator refused to guess (dynamic code); never an error source."""
+    """An expression the static evaluator refused to guess (dynamic code); never reported."""
 
     source: str
     span: Span

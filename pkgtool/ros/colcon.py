@@ -42,7 +42,7 @@ def colcon_executable() -> str:
 
 
 Runner = Callable[[Sequence[str], Path, Mapping[str, str], float], ColconRun]
-"""Runs ``(command, cwd, env, timeout)``; the default is a plain subprocess, grading sandboxes it."""
+"""Runs ``(command, cwd, env, timeout)``: a plain subprocess by default, sandboxed by grade."""
 
 
 def colcon_env(workspace: Path, *, domain_id: int, extra: Mapping[str, str] | None = None,

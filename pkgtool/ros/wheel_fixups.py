@@ -27,7 +27,7 @@ def _numpy_include() -> str | None:
 
 
 def fix_cmake_exports(prefix: Path) -> list[Path]:
-    """Rewrite the build machine's include folders in ``prefix/share/*/cmake``; return changed files."""
+    """Rewrite the build machine's include folders in ``prefix/share/*/cmake``; list changes."""
     python_include = sysconfig.get_paths()["include"]
     numpy_include = _numpy_include()
     changed = []

@@ -1,4 +1,4 @@
-"""The rule catalogue: the ``@rule`` decorator, stable codes, and lookup by code, family or name."""
+"""The rule catalogue: the ``@rule`` decorator, stable codes, lookup by code, family or name."""
 
 from __future__ import annotations
 
@@ -7,14 +7,14 @@ import pkgutil
 import re
 from collections.abc import Callable, Iterable
 from dataclasses import dataclass
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, TypeAlias
 
 from pkgtool.findings import Hit, Severity
 
 if TYPE_CHECKING:
     from pkgtool.model.package import Package
 
-Check = Callable[["Package"], Iterable[Hit]]
+Check: TypeAlias = "Callable[[Package], Iterable[Hit]]"
 
 CODE_PATTERN = re.compile(r"^[A-Z]{3}\d{3}$")
 NAME_PATTERN = re.compile(r"^[a-z][a-z0-9]*(-[a-z0-9]+)*$")

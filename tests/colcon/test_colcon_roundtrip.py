@@ -46,7 +46,8 @@ setup(
     entry_points={'console_scripts': ['hello = tiny_pkg.hello:main']},
 )
 """,
-    "setup.cfg": "[develop]\nscript_dir=$base/lib/tiny_pkg\n[install]\ninstall_scripts=$base/lib/tiny_pkg\n",
+    "setup.cfg": ("[develop]\nscript_dir=$base/lib/tiny_pkg\n"
+                  "[install]\ninstall_scripts=$base/lib/tiny_pkg\n"),
     "resource/tiny_pkg": "",
     "tiny_pkg/__init__.py": "",
     "tiny_pkg/hello.py": """import rclpy
@@ -98,7 +99,8 @@ def test_colcon_test_really_runs_pytest_and_fails_on_a_failing_test(workspace: P
     assert "1 passed" in passing.output
     assert (workspace / "build" / "tiny_pkg" / "pytest.xml").is_file()
 
-    _write(workspace / "src" / "tiny_pkg", {"test/test_broken.py": "def test_no():\n    assert False\n"})
+    _write(workspace / "src" / "tiny_pkg",
+           {"test/test_broken.py": "def test_no():\n    assert False\n"})
     failing = colcon_test(workspace, base_paths=[workspace / "src"], env=env)
     assert not failing.ok
     assert "1 failed" in failing.output

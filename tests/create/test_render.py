@@ -14,6 +14,7 @@ from pkgtool.model.package import load_package
 from tests.create.conftest import ALL_KINDS, OTHER_TYPES
 from tests.helpers import findings
 
+
 def _files(root: Path) -> dict[str, bytes]:
     return {p.relative_to(root).as_posix(): p.read_bytes() for p in sorted(root.rglob("*"))
             if p.is_file()}

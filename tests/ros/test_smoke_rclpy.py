@@ -96,8 +96,9 @@ def test_fibonacci_action_with_feedback_and_result(ros_context) -> None:
     executor = _executor(ros_context, server_node, client_node)
     _spin_until(executor, client.server_is_ready)
     feedback: list[list[int]] = []
-    send = client.send_goal_async(Fibonacci.Goal(order=5),
-                                  feedback_callback=lambda f: feedback.append(list(f.feedback.sequence)))
+    send = client.send_goal_async(
+        Fibonacci.Goal(order=5),
+        feedback_callback=lambda f: feedback.append(list(f.feedback.sequence)))
     _spin_until(executor, send.done)
     goal_handle = send.result()
     assert goal_handle.accepted

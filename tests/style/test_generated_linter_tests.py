@@ -59,8 +59,8 @@ def test_with_pkgtool_alone(package: Path, tmp_path: Path) -> None:
     assert "3 passed" in _run_linter_tests(package, str(tmp_path))
 
 
-def test_a_style_error_fails_the_generated_test_without_ament(package: Path,
-                                                               tmp_path: Path) -> None:
+def test_a_style_error_fails_the_generated_test_without_ament(
+        package: Path, tmp_path: Path) -> None:
     (tmp_path / "sitecustomize.py").write_text(BLOCK_AMENT)
     module = package / "style_demo" / "talker.py"
     original = module.read_text()
