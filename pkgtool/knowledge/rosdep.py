@@ -67,10 +67,16 @@ separately (python3-tk), so it must be declared.
 """
 
 ALTERNATIVE_KEYS: dict[str, tuple[str, ...]] = {
+    "catkin_pkg": ("python3-catkin-pkg-modules",),
     "pkg_resources": ("python3-pkg-resources",),
+    "rospkg": ("python3-rospkg-modules",),
     "tf2_ros": ("tf2_ros",),
 }
-"""Other keys that provide the same import (accepted, never suggested)."""
+"""Other keys that provide the same import (accepted, never suggested).
+
+The ``-modules`` keys install only the Python modules, without the command line scripts; ROS
+2's own tools (ros2pkg, ament_package users) declare them.
+"""
 
 ROS_MODULE_PACKAGES: dict[str, str] = {
     "tf2_ros": "tf2_ros_py",
@@ -114,6 +120,19 @@ NOT_ROSDEP_KEYS: dict[str, str] = {
 
 ``yaml`` and ``serial`` are not listed: ``yaml`` is a real key (the libyaml C library) and
 ``serial`` is a ROS package in some distributions.
+"""
+
+ROS1_PACKAGES: dict[str, str] = {
+    "rospy": "`rclpy`", "roscpp": "`rclcpp`", "roslib": "`ament_index_python`",
+    "roslaunch": "`launch` and `launch_ros`", "rostest": "`launch_testing_ros`",
+    "rosbag": "`rosbag2_py`", "tf": "`tf2_ros`", "actionlib": "`rclpy.action`",
+    "dynamic_reconfigure": "node parameters", "message_generation": "`rosidl_default_generators`",
+    "message_runtime": "`rosidl_default_runtime`",
+    "catkin": "`<build_type>ament_python</build_type>` in `<export>`",
+}
+"""ROS 1 packages (and their Python modules) that no ROS 2 distribution has -> what replaces them.
+
+``rospy``'s rosdep key resolves only on ROS 1 distributions; ROS 2 has none of these packages.
 """
 
 NOT_PACKAGES: dict[str, str] = {

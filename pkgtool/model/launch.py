@@ -16,12 +16,19 @@ class NodeRef:
     """A node the launch file starts: ``Node(package=, executable=)`` or ``<node pkg= exec=>``.
 
     A field is None when it was absent or not a static string (substitutions, variables that
-    do not resolve).
+    do not resolve). ``action`` is the action's class or tag (``Node``, ``node``);
+    ``arguments`` names the keywords or attributes given (``**`` for a ``**kwargs``, ``*`` for
+    ``*args``); ``package_span`` and ``executable_span`` are where those two values are
+    written, when known.
     """
 
     package: str | None
     executable: str | None
     span: Span
+    action: str = ""
+    arguments: tuple[str, ...] = ()
+    package_span: Span | None = None
+    executable_span: Span | None = None
 
 
 @dataclass(frozen=True, slots=True)

@@ -186,12 +186,19 @@ class _Reader(ast.NodeVisitor):
     def visit_Call(self, node: ast.Call) -> None:
         name = _name(node.func)
         if name in NODE_ACTIONS or name in PLUGIN_ACTIONS:
-            package = self.value(_keyword(node, "package"))
-            executable = None if name in PLUGIN_ACTIONS else self.value(
+            package_node = _keyword(node, "package")
+            executable_node = None if name in PLUGIN_ACTIONS else (
                 _keyword(node, "executable") or _keyword(node, "node_executable"))
-            self.nodes.append(NodeRef(package if isinstance(package, str) else None,
-                                      executable if isinstance(executable, str) else None,
-                                      self._span(node)))
+            package, executable = self.value(package_node), self.value(executable_node)
+            arguments = tuple(k.arg or "**" for k in node.keywords)
+            if any(isinstance(a, ast.Starred) for a in node.args):
+                arguments += ("*",)
+            self.nodes.append(NodeRef(
+                package if isinstance(package, str) else None,
+                executable if isinstance(executable, str) else None, self._span(node), name,
+                arguments,
+                package_node and self._span(package_node),
+                executable_node and self._span(executable_node)))
         elif name == "ExecuteProcess":
             self._ros2_run(node)
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
@@ -218,7 +225,22 @@ class _Reader(ast.NodeVisitor):
     def _record_path(self, node: ast.expr) -> None:
         found = self.value(node)
         if isinstance(found, Share) and found.share and found.parts:
-            self.files.append(FileRef(found.package, found.parts, self._span(node)))
+            self.files.append(FileRef(found.package, found.parts, self._span(_last_part(node))))
+
+
+def _last_part(node: ast.expr) -> ast.expr:
+    """Where a path expression names its file: the last part joined or appended."""
+    if isinstance(node, ast.BinOp):
+        return _last_part(node.right)
+    if isinstance(node, (ast.List, ast.Tuple)) and node.elts:
+        return _last_part(node.elts[-1])
+    if isinstance(node, ast.Call) and node.args:
+        name = _name(node.func)
+        if name in JOINS:
+            return _last_part(node.args[-1])
+        if name.endswith(CONCATENATING) or name in ("Path", "PurePath", "str"):
+            return _last_part(node.args[0])
+    return node
 
 
 def _keyword(node: ast.Call, name: str) -> ast.expr | None:

@@ -91,7 +91,8 @@ def _xml(path: str, text: str) -> tuple[list[NodeRef], list[tuple[str, Span]]] |
             executable = next((element.attribute(a) for a in NODE_TAGS[element.tag]
                                if element.attribute(a) is not None), None)
             nodes.append(NodeRef(_static(element.attribute("pkg")), _static(executable),
-                                 element.span))
+                                 element.span, element.tag,
+                                 tuple(k for k, _ in element.attributes)))
         values.extend((value, element.span) for _, value in element.attributes)
     return nodes, values
 
@@ -105,11 +106,17 @@ def _elements(root: XmlElement) -> Iterator[XmlElement]:
 
 
 # YAML ------------------------------------------------------------------------------------
-def _yaml(path: str, text: str) -> tuple[list[NodeRef], list[tuple[str, Span]]] | ParseProblem:
+def yaml_problem(path: str, text: str, *, documents: bool = True) -> object:
+    """The composed YAML node (or, with ``documents``, the list of them), or a ParseProblem.
+
+    Composing builds no Python object and runs no tag constructor: it only checks syntax.
+    """
     import yaml
 
     try:
-        root = yaml.compose(text, Loader=yaml.SafeLoader)
+        if documents:
+            return list(yaml.compose_all(text, Loader=yaml.SafeLoader))
+        return yaml.compose(text, Loader=yaml.SafeLoader)
     except yaml.MarkedYAMLError as error:
         mark = error.problem_mark or error.context_mark
         line, col = (mark.line + 1, mark.column + 1) if mark else (1, 1)
@@ -117,6 +124,14 @@ def _yaml(path: str, text: str) -> tuple[list[NodeRef], list[tuple[str, Span]]] 
     except (yaml.YAMLError, RecursionError) as error:
         detail = str(error) or "the YAML is nested too deeply"
         return ParseProblem("yaml-syntax", Span(path, 1, 1), detail)
+
+
+def _yaml(path: str, text: str) -> tuple[list[NodeRef], list[tuple[str, Span]]] | ParseProblem:
+    import yaml
+
+    root = yaml_problem(path, text, documents=False)
+    if isinstance(root, ParseProblem):
+        return root
     nodes: list[NodeRef] = []
     values: list[tuple[str, Span]] = []
     seen: set[int] = set()
@@ -146,9 +161,15 @@ def _yaml_node(tag: object, mapping: object, path: str) -> NodeRef:
     import yaml
 
     assert isinstance(tag, yaml.ScalarNode) and isinstance(mapping, yaml.MappingNode)
-    fields = {k.value: v.value for k, v in mapping.value
-              if isinstance(k, yaml.ScalarNode) and isinstance(v, yaml.ScalarNode)}
-    executable = next((fields[a] for a in NODE_TAGS[tag.value] if a in fields), None)
-    mark = tag.start_mark
-    return NodeRef(_static(fields.get("pkg")), _static(executable),
-                   Span(path, mark.line + 1, mark.column + 1))
+    scalars = {k.value: v for k, v in mapping.value
+               if isinstance(k, yaml.ScalarNode) and isinstance(v, yaml.ScalarNode)}
+    fields = {key: value.value for key, value in scalars.items()}
+    key = next((a for a in NODE_TAGS[tag.value] if a in fields), None)
+
+    def span(node: yaml.Node) -> Span:
+        return Span(path, node.start_mark.line + 1, node.start_mark.column + 1)
+
+    names = tuple(str(k.value) for k, _ in mapping.value if isinstance(k, yaml.ScalarNode))
+    return NodeRef(_static(fields.get("pkg")), _static(fields[key] if key else None), span(tag),
+                   str(tag.value), names, span(scalars["pkg"]) if "pkg" in scalars else None,
+                   span(scalars[key]) if key else None)

@@ -8,6 +8,7 @@ from pathlib import Path
 
 from pkgtool.model.files import TextFile, list_files, read_text
 from pkgtool.model.launch import LaunchFile, is_launch_file, parse_launch
+from pkgtool.model.launch_reader import yaml_problem
 from pkgtool.model.manifest import Manifest, parse_manifest
 from pkgtool.model.modules import PythonModule, parse_module
 from pkgtool.model.setup_cfg import SetupCfg, parse_setup_cfg
@@ -102,6 +103,12 @@ def load_package(root: Path) -> Package:
                 launches.append(launch)
                 if launch.problem:
                     problems.append(launch.problem)
+        elif relpath.endswith((".yaml", ".yml")):  # parameter files: only their syntax
+            text = text_of(relpath)
+            if text is not None and "{%" not in text:  # a Jinja template is not YAML yet
+                found = yaml_problem(relpath, text)
+                if isinstance(found, ParseProblem):
+                    problems.append(found)
         elif relpath.endswith(".py") and relpath != "setup.py":
             text = text_of(relpath)
             if text is not None:

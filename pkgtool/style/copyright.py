@@ -13,8 +13,8 @@ from dataclasses import dataclass
 from pkgtool.knowledge.licenses import license_of_header, spdx_in_text
 
 _YEARS = r"\d{4}(?:\s*-\s*\d{4})?(?:,\s*\d{4}(?:\s*-\s*\d{4})?)*"
-COPYRIGHT_LINE = re.compile(
-    rf"^\s*(?:\\copyright\s*)?copyright(?:\s+\(c\))?\s+({_YEARS}),?\s+(\S.*)$", re.IGNORECASE)
+COPYRIGHT_LINE = re.compile(  # ament_copyright's pattern: one stray character may lead
+    rf"^.?\s*(?:\\copyright\s*)?copyright(?:\s+\(c\))?\s+({_YEARS}),?\s+(\S.*)$", re.IGNORECASE)
 
 
 @dataclass(frozen=True, slots=True)

@@ -13,12 +13,13 @@ from pathlib import Path
 import pytest
 
 from pkgtool.commands.create import Request, run
+from pkgtool.findings import Finding
 from pkgtool.model.package import load_package
 from pkgtool.rules.registry import load_all
 from tests.helpers import findings
 from tests.lint.seeded import CASES, CREATED, Case
 from tests.lint.seeded import (  # noqa: F401  (each module registers its cases)
-    data_files, dependencies, entry_points, launch, manifest, python, setup)
+    data_files, dependencies, entry_points, launch, manifest, python, setup_files)
 
 REFERENCE = Path(__file__).resolve().parents[2] / "reference_packages"
 NODES = ("talker:publisher", "listener:subscriber", "srv:service")
@@ -37,7 +38,7 @@ def bases(tmp_path_factory: pytest.TempPathFactory) -> dict[str, Path]:
     return found
 
 
-def _default_findings(root: Path) -> list:
+def _default_findings(root: Path) -> list[Finding]:
     """What a plain ``pkgtool lint`` reports (the rules enabled by default)."""
     codes = [code for code, rule in load_all().items() if rule.default_enabled]
     return findings(load_package(root), *codes)

@@ -45,4 +45,10 @@ def uninstalled_package_xml(package: Package) -> Iterator[Hit]:
     share = f"share/{package.name}"
     if any("package.xml" in source_names(s) for _, s in entries_to(package, share)):
         return
-    yield Hit(setup.setup_span, f"`package.xml` is not installed to `{share}`")
+    elsewhere = next((e for e in setup.data_files or () for source in e.sources
+                      if "package.xml" in source_names(source)), None)
+    if elsewhere is not None:
+        yield Hit(elsewhere.span, f"`package.xml` is installed to `{elsewhere.destination}`, "
+                                  f"not `{share}`", "Install it to `'share/' + package_name`")
+    else:
+        yield Hit(setup.setup_span, f"`package.xml` is not installed to `{share}`")

@@ -54,6 +54,15 @@ def unregistered_package(package: Package) -> Iterator[Hit]:
         shown = ", ".join(f"`{n}`" for n in sorted(names)) or "nothing"
         yield Hit(entry.span, f"The ament index marker installed is {shown}, not "
                               f"`{package.name}`: ROS 2 cannot find `{package.name}`")
+        return
+    elsewhere = next((e for e in setup.data_files or () for source in e.sources
+                      for n in source_names(source) if posixpath.basename(n) == package.name
+                      and ("ament_index" in e.destination or n.startswith("resource/"))), None)
+    if elsewhere is not None:
+        yield Hit(elsewhere.span, f"The ament index marker `{package.name}` is installed to "
+                                  f"`{elsewhere.destination}`, not `{MARKER_FOLDER}`: ROS 2 "
+                                  f"cannot find the package `{package.name}`",
+                  f"Install it to `'{MARKER_FOLDER}'`")
     else:
         yield Hit(setup.setup_span, f"Nothing installs `{MARKER_FOLDER}/{package.name}`: "
                                     f"ROS 2 cannot find the package `{package.name}`")

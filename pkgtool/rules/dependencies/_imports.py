@@ -22,6 +22,7 @@ from pkgtool.model.manifest import Dependency
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
+from pkgtool.rules.dependencies._optional import optional_modules
 
 RUNTIME = frozenset({"depend", "exec_depend", "run_depend"})
 BUILD_ONLY = frozenset({"build_depend", "build_export_depend", "buildtool_depend",
@@ -147,15 +148,18 @@ def needs(package: Package, module: PythonModule, *, guarded: bool | None = Fals
           ) -> Iterator[Need]:
     """Absolute imports of ``module`` that need a key, the first import of each name only.
 
-    ``guarded`` selects unguarded imports (False), guarded ones (True) or both (None).
+    ``guarded`` selects unguarded imports (False), guarded ones (True) or both (None). Every
+    import of an own module that the package itself imports only guarded counts as guarded.
     """
     skip = own_modules(package) | _siblings(package, module.path)
     stdlib = stdlib_modules()
     names = declared(package, ANY)
+    optional = module.path in optional_modules(package)
     seen: set[str] = set()
     for imported in module.imports:
         top = imported.top_level
-        if (not top or top in seen or (guarded is not None and imported.guarded != guarded)
+        is_guarded = imported.guarded or optional
+        if (not top or top in seen or (guarded is not None and is_guarded != guarded)
                 or top in skip or (top in stdlib and top not in PYTHON_MODULE_KEYS)):
             continue
         seen.add(top)

@@ -18,9 +18,10 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     """Installed code imports a package that package.xml does not declare for run time.
 
     ## What it does
-    Checks every absolute, unguarded import in the modules setup.py installs. Standard
-    library modules and the package's own modules are skipped; a ROS import must be covered
-    by `<depend>` or `<exec_depend>` of its package, a third-party module by its rosdep key
+    Checks every absolute, unguarded import in the modules setup.py installs (a module the
+    package itself imports only inside `try/except ImportError` is optional: see DEP005).
+    Standard library modules and the package's own modules are skipped; a ROS import must be
+    covered by `<depend>` or `<exec_depend>` of its package, a third-party module by its rosdep key
     (`cv2` by `python3-opencv`, `yaml` by `python3-yaml`, ...).
 
     ## Why is this bad?

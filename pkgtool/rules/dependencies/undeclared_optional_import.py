@@ -18,7 +18,9 @@ def undeclared_optional_import(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports guarded imports whose package or rosdep key package.xml does not declare in any
     dependency tag. The code is written to survive without the module, so this is
-    information, not an error.
+    information, not an error. The imports of an own module that the package only ever
+    imports under such a guard (an optional back-end, like rqt_py_console's spyder console)
+    count as guarded too.
 
     ## Why is this bad?
     Without a declaration the optional feature is silently off on every machine set up with

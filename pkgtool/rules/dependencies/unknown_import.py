@@ -6,6 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
+from pkgtool.knowledge.rosdep import ROS1_PACKAGES
 from pkgtool.rules.dependencies._imports import ANY, declared, needs
 from pkgtool.rules.registry import rule
 
@@ -20,7 +21,7 @@ def unknown_import(package: Package) -> Iterator[Hit]:
     are not standard library, not the package's own, not ROS by name, and not in pkgtool's
     curated table of third-party modules, unless a key that looks like it
     (`python3-<name>`, `python3-<name>-pip` or the bare name) is declared. The suggested key
-    is a guess from the module name.
+    is a guess from the module name. ROS 1 modules (`rospy`, `tf`) are reported as such.
 
     ## Why is this bad?
     An import that package.xml does not cover fails on a clean machine, but pip and rosdep
@@ -48,7 +49,12 @@ def unknown_import(package: Package) -> Iterator[Hit]:
     modules = [*package.modules, *(f.python for f in package.launch_files if f.python)]
     for module in modules:
         for need in needs(package, module):
-            if need.kind == "unknown" and not any(k in available for k in need.keys):
+            if need.kind != "unknown" or any(k in available for k in need.keys):
+                continue
+            if need.top in ROS1_PACKAGES:
+                yield Hit(need.imported.span, f"`{need.top}` is a ROS 1 module: ROS 2 does not "
+                          "have it", f"Port the code to {ROS1_PACKAGES[need.top]}")
+            else:
                 yield Hit(need.imported.span,
                           f"`{need.top}` is not a known ROS package or Python module; its "
                           f"rosdep key might be `{need.key}` (a guess from the name)",

@@ -31,7 +31,8 @@ def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
     `where`/`include`/`exclude`, `find_namespace_packages`, `package_dir`, `py_modules`) and
     reports console scripts whose module is not among them, saying why: the file does not
     exist, a package list drops subpackages, an `__init__.py` is missing, a pattern excludes
-    it. Modules outside this package's own top-level names are not judged.
+    it. Modules outside this package's own top-level names are not judged, unless the name
+    is an installed module without its package prefix (`talker` for `my_pkg.talker`).
 
     ## Why is this bad?
     The build succeeds, but running the command fails with `ModuleNotFoundError`. With
@@ -59,6 +60,10 @@ def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
         if entry.group not in SCRIPT_GROUPS or problem(entry) or entry.module in modules:
             continue
         if entry.module.split(".")[0] not in roots:
+            near = [m for m in modules if m.endswith(f".{entry.module}")]
+            if len(near) == 1:  # `talker:main` for the installed `my_pkg.talker`
+                yield Hit(entry.span, f"`{entry.module}` is not installed: the module is "
+                                      f"`{near[0]}`", f"Write `{near[0]}:{entry.attr or 'main'}`")
             continue
         reason, exists = why_not_installed(package, entry.module)
         fix = None if exists else "Write the module, or point the entry at an existing one"

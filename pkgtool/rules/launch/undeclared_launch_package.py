@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.dependencies._imports import launch_keys
+from pkgtool.rules.dependencies._imports import ANY, declared, launch_keys
 from pkgtool.rules.registry import rule
 
 
@@ -40,11 +40,14 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
     for launch in package.launch_files:
         available = launch_keys(package, launch.path)
         seen: set[str] = set()
-        used = [(n.package, n.span) for n in launch.nodes if n.package] + [
+        used = [(n.package, n.package_span or n.span) for n in launch.nodes if n.package] + [
             (p.package, p.span) for p in launch.packages]
         for name, span in sorted(used, key=lambda u: (u[1].line, u[1].col)):
             if name == package.name or name in available or name in seen:
                 continue
             seen.add(name)
-            yield Hit(span, f"`{name}` is used by a launch file but not declared in package.xml",
+            other = declared(package, ANY).get(name)
+            missing = (f"declared only as `<{other.tag}>`" if other else
+                       "not declared in package.xml")
+            yield Hit(span, f"`{name}` is used by a launch file but {missing}",
                       f"Add `<exec_depend>{name}</exec_depend>` to package.xml")

@@ -74,7 +74,7 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
                 continue
             if node.executable not in known:
                 choices = ", ".join(f"`{n}`" for n in sorted(known)) or "none"
-                yield Hit(node.span,
+                yield Hit(node.executable_span or node.span,
                           f"`{node.executable}` is not an executable of `{package.name}` "
                           f"(it installs: {choices})",
                           f"Add `{node.executable} = {package.name}.<module>:main` to "

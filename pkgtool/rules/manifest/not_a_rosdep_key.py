@@ -5,10 +5,10 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.rosdep import NOT_PACKAGES, suggested_key
+from pkgtool.knowledge.rosdep import NOT_PACKAGES, ROS1_PACKAGES, suggested_key
 from pkgtool.model.package import Package
 from pkgtool.model.xml import XmlElement
-from pkgtool.rules.manifest.common import tree
+from pkgtool.rules.manifest.common import build_types, tree
 from pkgtool.rules.manifest.schema import DEPENDS_1, DEPENDS_2, token
 from pkgtool.rules.registry import rule
 
@@ -24,7 +24,7 @@ _STDLIB = frozenset({
 """Pure-Python standard library modules students declare; none is a rosdep key or ROS package."""
 
 
-def _hit(element: XmlElement) -> Hit | None:
+def _hit(element: XmlElement, ros2: bool) -> Hit | None:
     key, tag = token(element.text), element.tag
     if key in NOT_PACKAGES:
         return Hit(element.span, f"`{key}` is a build type, not a package",
@@ -33,6 +33,9 @@ def _hit(element: XmlElement) -> Hit | None:
     if key in _STDLIB:
         return Hit(element.span, f"`{key}` is part of the Python standard library, not a rosdep "
                    "key", f"Remove this `<{tag}>`: the standard library needs no dependency")
+    if key in ROS1_PACKAGES and ros2 and element.attribute("condition") is None:
+        return Hit(element.span, f"`{key}` is a ROS 1 package that ROS 2 does not have",
+                   f"Replace it with {ROS1_PACKAGES[key]}")
     replacement = suggested_key(key)
     if replacement is None:
         return None
@@ -52,7 +55,9 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports dependency keys that are known not to be rosdep keys, with the key to use:
     pip distribution names (``opencv-python``, ``pyyaml``, ``numpy``), import names (``cv2``),
-    ROS 1 Python 2 keys (``python-opencv``), ``ament_python``, which is a build type, and
+    ROS 1 Python 2 keys (``python-opencv``), ROS 1 packages (``rospy``, ``catkin``) in a package
+    whose build type is ``ament_*`` (not when the tag has a ``condition``, as packages for both
+    ROS versions do), ``ament_python``, which is a build type, and
     standard library modules (``math``, ``threading``), which need no dependency.
 
     ## Why is this bad?
@@ -75,7 +80,8 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
     found = tree(package)
     if found is None:
         return
+    ros2 = any(b.text.startswith("ament_") for b in build_types(found))
     for element in found.elements():
-        hit = _hit(element) if element.tag in _CHECKED else None
+        hit = _hit(element, ros2) if element.tag in _CHECKED else None
         if hit:
             yield hit

@@ -21,7 +21,8 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
     Reports reads of attributes that rclpy does not have, from a curated table checked
     against rclpy itself: `ActionClient.GoalStatus` (GoalStatus is a message in
     `action_msgs.msg`), rospy habits such as `rclpy.is_shutdown()`, `rclpy.loginfo()`,
-    `rclpy.Node` or `Time.now()`. Only names bound solely to rclpy imports are checked.
+    `rclpy.Node` (also as a module: `from rclpy.Node import Node`) or `Time.now()`. Only names
+    bound solely to rclpy imports are checked.
 
     ## Why is this bad?
     The line raises `AttributeError` when it runs, often inside a callback, where the
@@ -47,7 +48,12 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
                 yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
                           f"`{shown}` does not exist{where}", f"Use {use}")
         for node in index.import_froms:
-            if node.level == 0 and node.module:
+            owner, _, leaf = (node.module or "").rpartition(".")
+            use = missing_attribute(owner, leaf) if node.level == 0 and owner == "rclpy" else None
+            if use:  # `from rclpy.Node import Node`: no such module
+                yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
+                          f"`{node.module}` does not exist in rclpy", f"Use {use}")
+            elif node.level == 0 and node.module:
                 for alias in node.names:
                     use = missing_attribute(node.module, alias.name)
                     if use and node.module.split(".")[0] == "rclpy":

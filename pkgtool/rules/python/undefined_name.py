@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
+from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.python._tree import installed_trees
 from pkgtool.rules.registry import rule
@@ -14,16 +16,18 @@ from pkgtool.rules.registry import rule
 @rule("PYC001", "undefined-name", Severity.ERROR,
       fix="Import or define the name before using it")
 def undefined_name(package: Package) -> Iterator[Hit]:
-    """Installed code uses a name that is not defined, imported or built in.
+    """Installed code, setup.py or a launch file uses a name that is not defined.
 
     ## What it does
-    Runs pyflakes' checker (as a library, on the parsed tree) over every installed module
-    and reports its "undefined name" messages, with pyflakes' own handling of builtins,
+    Runs pyflakes' checker (as a library, on the parsed tree) over every installed module,
+    setup.py and every Python launch file (not those calling `exec()`, which may define any
+    name) and reports its "undefined name" messages, with pyflakes' own handling of builtins,
     `__all__`, star imports, conditional definitions and `except NameError` guards.
 
     ## Why is this bad?
     The line raises `NameError` when it runs, which for a node usually means inside a
-    callback, long after start-up checks passed.
+    callback, long after start-up checks passed; in setup.py it fails the build, in a launch
+    file the launch.
 
     ## Example
     ```python
@@ -41,9 +45,15 @@ def undefined_name(package: Package) -> Iterator[Hit]:
     from pyflakes.checker import Checker
     from pyflakes.messages import UndefinedName
 
-    for module, tree, _ in installed_trees(package):
+    trees = [(module.path, tree) for module, tree, _ in installed_trees(package)]
+    for path in ("setup.py", *(f.path for f in package.launch_files if f.kind == "python")):
+        tree = parse_tree(path, package.texts[path]) if path in package.texts else None
+        if isinstance(tree, ast.Module) and not any(  # exec() may define any name
+                isinstance(n, ast.Name) and n.id == "exec" for n in ast.walk(tree)):
+            trees.append((path, tree))
+    for path, tree in trees:
         try:
-            messages = Checker(tree, filename=module.path).messages
+            messages = Checker(tree, filename=path).messages
         except Exception:  # pyflakes on hostile input (deep nesting, ...): skip, never crash
             continue
         seen: set[tuple[int, str]] = set()
@@ -51,5 +61,4 @@ def undefined_name(package: Package) -> Iterator[Hit]:
             name = message.message_args[0] if isinstance(message, UndefinedName) else None
             if name is not None and (message.lineno, name) not in seen:
                 seen.add((message.lineno, name))
-                yield Hit(Span(module.path, message.lineno, message.col + 1),
-                          f"Undefined name `{name}`")
+                yield Hit(Span(path, message.lineno, message.col + 1), f"Undefined name `{name}`")

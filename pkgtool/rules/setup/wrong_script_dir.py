@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
+from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
+from pkgtool.model.setup_cfg import CfgOption
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
 from pkgtool.rules.setup.common import checked_setup
@@ -17,6 +19,17 @@ def _normal(value: str) -> str:
     return value.strip().replace("${base}", "$base").rstrip("/")
 
 
+def _near_miss(options: tuple[CfgOption, ...], section: str, key: str) -> CfgOption | None:
+    """A misspelt key in the right section, or the right key in a misspelt section."""
+    for option in options:
+        same_key = option.key.replace("-", "_") == key
+        if (option.section == section and not same_key and
+                get_close_matches(option.key, [key], cutoff=0.8)) or \
+                (same_key and get_close_matches(option.section, [section], cutoff=0.7)):
+            return option
+    return None
+
+
 @rule("SET009", "wrong-script-dir", Severity.ERROR,
       fix="Set `[develop] script_dir` and `[install] install_scripts` to `$base/lib/<package>`")
 def wrong_script_dir(package: Package) -> Iterator[Hit]:
@@ -25,7 +38,8 @@ def wrong_script_dir(package: Package) -> Iterator[Hit]:
     ## What it does
     Checks `[develop] script_dir` and `[install] install_scripts` in setup.cfg: each must be
     `$base/lib/<name>` with this package's name. A missing option is reported when the
-    package has console scripts.
+    package has console scripts, at a misspelt key (`install_script`) or section
+    (`[instal]`) when there is one.
 
     ## Why is this bad?
     `ros2 run <package> <executable>` and launch files look for executables only in
@@ -56,7 +70,12 @@ def wrong_script_dir(package: Package) -> Iterator[Hit]:
     for section, key in SCRIPT_OPTIONS:
         option = cfg.get(section, key)
         if option is None:
-            if setup.console_scripts:
+            near = _near_miss(cfg.options, section, key)
+            if near is not None:
+                yield Hit(near.span, f"`[{near.section}] {near.key}` is not `[{section}] {key}`: "
+                                     f"console scripts install to `bin/`, not "
+                                     f"`lib/{package.name}`", f"Write `[{section}] {key}`")
+            elif setup.console_scripts:
                 yield Hit(Span(cfg.path, 1, 1),
                           f"`setup.cfg` has no `[{section}] {key}`: console scripts install to "
                           f"`bin/`, not `lib/{package.name}`")

@@ -29,8 +29,8 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     """A package file (package.xml, setup.py, setup.cfg, a module, a launch file) does not parse.
 
     ## What it does
-    Reports XML that is not well-formed, Python with a syntax error, YAML or setup.cfg that
-    does not parse, at the line and column the parser gave.
+    Reports XML that is not well-formed, Python with a syntax error, YAML (launch and
+    parameter files) or setup.cfg that does not parse, at the line and column the parser gave.
 
     ## Why is this bad?
     colcon, rosdep and ``ros2 launch`` stop at the first unparsable file, and an installed

@@ -1,0 +1,66 @@
+"""DEP007: an installed module imports a module next to it as if it were top-level."""
+
+from __future__ import annotations
+
+import posixpath
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.rosdep import PYTHON_MODULE_KEYS, stdlib_modules
+from pkgtool.model.installed import installed_modules
+from pkgtool.model.package import Package
+from pkgtool.rules.dependencies._imports import installed_code
+from pkgtool.rules.registry import rule
+
+
+@rule("DEP007", "sibling-module-import", Severity.ERROR,
+      fix="Import it through its package: `from my_pkg.helpers import x` or `from .helpers "
+          "import x`")
+def sibling_module_import(package: Package) -> Iterator[Hit]:
+    """An installed module imports a module of its own folder as a top-level module.
+
+    ## What it does
+    Reports unguarded absolute imports (`import helpers`, `from helpers import x`) in modules
+    that setup.py installs, when `helpers.py` (or a `helpers/` package) sits in the same
+    folder and is not itself installed as a top-level module. Names of the standard library
+    and of known third-party modules are left alone.
+
+    ## Why is this bad?
+    `python3 my_pkg/node.py` puts the file's folder on `sys.path`, so the import works while
+    developing. The console script that `ros2 run` starts imports `my_pkg.node`; nothing puts
+    `my_pkg/` on the path and the node dies with `ModuleNotFoundError: No module named
+    'helpers'`.
+
+    ## Example
+    ```python
+    # my_pkg/node.py
+    from helpers import clamp
+    ```
+
+    ## Use instead
+    ```python
+    # my_pkg/node.py
+    from my_pkg.helpers import clamp
+    ```
+    """
+    installed = installed_modules(package)
+    if installed is None:
+        return
+    names = {file: name for name, file in installed.items()}
+    top_level = {name.split(".")[0] for name in installed}
+    skip = top_level | stdlib_modules() | PYTHON_MODULE_KEYS.keys()
+    for module in installed_code(package):
+        folder = posixpath.dirname(module.path)
+        dotted = names.get(module.path, "")
+        parent = dotted if module.path.endswith("/__init__.py") else dotted.rpartition(".")[0]
+        if not folder or not parent:
+            continue
+        for imported in module.imports:
+            top = imported.top_level
+            if not top or imported.guarded or top in skip or not (
+                    package.has_file(f"{folder}/{top}.py") or
+                    package.has_file(f"{folder}/{top}/__init__.py")):
+                continue
+            yield Hit(imported.span, f"`{top}` is a module next to `{module.path}`, not a "
+                                     f"top-level module: the import fails once installed",
+                      f"Import `{parent}.{top}` (or `.{top}`) instead")

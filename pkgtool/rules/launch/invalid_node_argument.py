@@ -1,0 +1,79 @@
+"""LCH005: a launch node action without its executable, or with arguments ROS 2 rejects."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.launch import NodeRef
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.registry import rule
+
+PYTHON_ACTIONS = frozenset({"Node", "LifecycleNode", "ComposableNodeContainer"})
+"""Python node actions; each needs ``executable=``."""
+FRONTEND_TAGS = frozenset({"node", "lifecycle_node", "node_container"})
+"""XML/YAML node tags; each needs ``exec``."""
+REMOVED_KEYWORDS = {"node_executable": "executable", "node_name": "name",
+                    "node_namespace": "namespace"}
+"""Python keywords of ROS 2 Dashing/Eloquent that later releases removed, and their names now."""
+WRONG_ATTRIBUTES = {"type": "`exec` (`type` is ROS 1)", "executable": "`exec`",
+                    "package": "`pkg`", "ns": "`namespace` (`ns` is ROS 1)",
+                    "node_name": "`name`", "node_executable": "`exec`",
+                    "node_namespace": "`namespace`", "machine": "nothing (ROS 1 only)",
+                    "required": "`on_exit=\"shutdown\"`", "clear_params": "nothing (ROS 1 only)"}
+"""XML/YAML attributes of ``<node>`` that ROS 2's launch rejects, and what to write instead."""
+
+
+def _problems(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
+    """(message, fix, where) for each argument problem of one node action."""
+    given = set(node.arguments)
+    if node.action in PYTHON_ACTIONS:
+        for name in sorted(given & REMOVED_KEYWORDS.keys()):
+            where = node.executable_span if name == "node_executable" else None
+            yield (f"`{node.action}()` has no `{name}` argument since ROS 2 Foxy",
+                   f"Write `{REMOVED_KEYWORDS[name]}=`", where or node.span)
+        if not given & {"executable", "node_executable", "**"}:
+            yield (f"`{node.action}()` has no `executable`",
+                   "Add `executable='<console script>'`", node.span)
+    elif node.action in FRONTEND_TAGS:
+        for name in sorted(given & WRONG_ATTRIBUTES.keys()):
+            yield (f"`<{node.action}>` has no `{name}` attribute in ROS 2",
+                   f"Write {WRONG_ATTRIBUTES[name]} instead", node.span)
+        if "exec" not in given and not given & {"type", "executable", "node_executable"}:
+            yield (f"`<{node.action}>` has no `exec` attribute", "Add `exec=\"<executable>\"`",
+                   node.span)
+
+
+@rule("LCH005", "invalid-launch-node-argument", Severity.ERROR,
+      fix="Name the executable with `executable=` (Python) or `exec` (XML, YAML)")
+def invalid_launch_node_argument(package: Package) -> Iterator[Hit]:
+    """A launch node has no executable, or an argument ROS 2's launch rejects.
+
+    ## What it does
+    Checks the node actions of launch files: Python `Node`, `LifecycleNode` and
+    `ComposableNodeContainer` calls need `executable=` and must not use `node_executable`,
+    `node_name` or `node_namespace` (removed after ROS 2 Eloquent); XML and YAML `node`,
+    `lifecycle_node` and `node_container` need `exec` and must not use ROS 1 or Python
+    attribute names (`type`, `ns`, `executable`, `package`, `required`, ...). Calls that pass
+    `**kwargs` are not checked.
+
+    ## Why is this bad?
+    `ros2 launch` stops before starting anything: Python raises `TypeError: unexpected keyword
+    argument`, and the XML and YAML front ends reject unknown attributes ("Unexpected
+    attribute(s) found in `node`") and a node without `exec`.
+
+    ## Example
+    ```xml
+    <node pkg="my_pkg" type="talker" name="talker" ns="robot1"/>
+    ```
+
+    ## Use instead
+    ```xml
+    <node pkg="my_pkg" exec="talker" name="talker" namespace="robot1"/>
+    ```
+    """
+    for launch in package.launch_files:
+        for node in launch.nodes:
+            for message, fix, where in _problems(node):
+                yield Hit(where, message, fix)

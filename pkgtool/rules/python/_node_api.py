@@ -1,0 +1,52 @@
+"""What PYC007 and PYC008 share: calls of rclpy's Node API and their arguments.
+
+Only modules that import rclpy and do not define a method of the same name themselves are
+looked at, so a project's own ``create_publisher`` wrapper is never judged by rclpy's signature.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.model.modules import PythonModule
+from pkgtool.model.package import Package
+from pkgtool.rules.python._tree import FUNCTIONS, Index, installed_trees
+
+PARAMETERS = {
+    "create_publisher": ("msg_type", "topic", "qos_profile"),
+    "create_lifecycle_publisher": ("msg_type", "topic", "qos_profile"),
+    "create_subscription": ("msg_type", "topic", "callback", "qos_profile"),
+    "create_service": ("srv_type", "srv_name", "callback"),
+    "create_client": ("srv_type", "srv_name"),
+}
+"""Required parameters of rclpy ``Node`` methods (Jazzy), in order."""
+
+
+def node_api_calls(package: Package) -> Iterator[tuple[PythonModule, ast.Call, str, Index]]:
+    """``x.<method>(...)`` calls of the methods in :data:`PARAMETERS`, with the method name."""
+    for module, tree, index in installed_trees(package):
+        if not any(i.top_level == "rclpy" for i in module.imports):
+            continue
+        defined = {n.name for n in ast.walk(tree) if isinstance(n, FUNCTIONS)}
+        for call in index.calls:
+            method = call.func.attr if isinstance(call.func, ast.Attribute) else ""
+            if method in PARAMETERS and method not in defined:
+                yield module, call, method, index
+
+
+def argument(call: ast.Call, parameters: tuple[str, ...], name: str) -> ast.expr | None:
+    """The expression passed for parameter ``name`` (positionally or by keyword), if known."""
+    keyword = next((k.value for k in call.keywords if k.arg == name), None)
+    if keyword is not None:
+        return keyword
+    position = parameters.index(name)
+    positional = [a for a in call.args if not isinstance(a, ast.Starred)]
+    return positional[position] if position < len(positional) and \
+        len(positional) == len(call.args) else None
+
+
+def unpacks(call: ast.Call) -> bool:
+    """True when the call passes ``*args`` or ``**kwargs`` (its arguments are unknown)."""
+    return any(isinstance(a, ast.Starred) for a in call.args) or \
+        any(k.arg is None for k in call.keywords)

@@ -1,0 +1,113 @@
+"""PYC008: a node, topic or service name literal that rcl rejects."""
+
+from __future__ import annotations
+
+import ast
+import re
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.python._node_api import PARAMETERS, argument, node_api_calls
+from pkgtool.rules.python._tree import Index, installed_trees, qualified
+from pkgtool.rules.registry import rule
+
+NODE_CLASSES = frozenset({"rclpy.node.Node", "rclpy.lifecycle.LifecycleNode",
+                          "rclpy.lifecycle.Node", "rclpy.create_node"})
+_NODE_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
+_TOPIC_CHARS = re.compile(r"[A-Za-z0-9_/~]*")
+
+
+def node_name_problem(name: str) -> str | None:
+    """Why rcl rejects ``name`` as a node name (``rmw_validate_node_name``), or None."""
+    if _NODE_NAME.fullmatch(name) and len(name) <= 255:
+        return None
+    if not name:
+        return "it is empty"
+    if name[0].isdigit():
+        return "it starts with a digit"
+    return "only letters, digits and underscores are allowed"
+
+
+def topic_name_problem(name: str) -> str | None:
+    """Why rcl rejects ``name`` as a topic or service name, or None (substitutions: None)."""
+    if "{" in name or "}" in name:
+        return None
+    if not name:
+        return "it is empty"
+    if not _TOPIC_CHARS.fullmatch(name):
+        return "only letters, digits, underscores and `/` are allowed"
+    if name.endswith("/") or "//" in name:
+        return "it has an empty part between slashes"
+    if "~" in name[1:] or (name.startswith("~") and len(name) > 1 and name[1] != "/"):
+        return "`~` is only allowed as `~/` at the start"
+    if any(part[:1].isdigit() for part in name.split("/")):
+        return "a part starts with a digit"
+    return None
+
+
+def name_argument(call: ast.Call) -> ast.expr | None:
+    """The node name given to a Node constructor call, if any."""
+    keyword = next((k.value for k in call.keywords if k.arg == "node_name"), None)
+    first = call.args[0] if call.args and not isinstance(call.args[0], ast.Starred) else None
+    return keyword or first
+
+
+def node_constructions(index: Index, tree: ast.Module) -> Iterator[ast.Call]:
+    """``super().__init__(...)`` calls in Node subclasses, and Node/create_node calls."""
+    node_classes = [c for c in ast.walk(tree) if isinstance(c, ast.ClassDef) and any(
+        qualified(b, index.aliases) in NODE_CLASSES for b in c.bases)]
+    for cls in node_classes:
+        for call in ast.walk(cls):
+            if isinstance(call, ast.Call) and isinstance(call.func, ast.Attribute) and \
+                    call.func.attr == "__init__" and isinstance(call.func.value, ast.Call) and \
+                    getattr(call.func.value.func, "id", "") == "super":
+                yield call
+    yield from (c for c in index.calls if qualified(c.func, index.aliases) in NODE_CLASSES)
+
+
+@rule("PYC008", "invalid-ros-name", Severity.ERROR,
+      fix="Use only letters, digits and underscores (and `/` between parts of topic names)")
+def invalid_ros_name(package: Package) -> Iterator[Hit]:
+    """A node, topic or service name written in the code is one ROS 2 rejects.
+
+    ## What it does
+    Checks string literals given as node names (`super().__init__('name')` in a `Node`
+    subclass, `rclpy.create_node('name')`) against `rmw_validate_node_name`, and as topic or
+    service names (`create_publisher`, `create_subscription`, `create_service`,
+    `create_client`) against `rcl_validate_topic_name`: no dashes, spaces or dots, no part
+    starting with a digit, no empty part. Names with `{substitutions}` are not checked.
+
+    ## Why is this bad?
+    ROS 1 and other middleware accept names such as `cmd-vel` or `my node`; rclpy raises
+    `InvalidNodeNameException` or `InvalidTopicNameException` when the node starts.
+
+    ## Example
+    ```python
+    super().__init__('obstacle-detector')
+    self.create_publisher(Twist, 'cmd-vel', 10)
+    ```
+
+    ## Use instead
+    ```python
+    super().__init__('obstacle_detector')
+    self.create_publisher(Twist, 'cmd_vel', 10)
+    ```
+    """
+    for module, tree, index in installed_trees(package):
+        for expr in map(name_argument, node_constructions(index, tree)):
+            problem = node_name_problem(expr.value) if isinstance(expr, ast.Constant) and \
+                isinstance(expr.value, str) else None
+            if problem:
+                yield Hit(Span(module.path, expr.lineno, expr.col_offset + 1),
+                          f"`{expr.value}` is not a valid node name: {problem}")
+    for module, call, method, _ in node_api_calls(package):
+        parameters = PARAMETERS[method]
+        expr = argument(call, parameters, parameters[1])
+        if isinstance(expr, ast.Constant) and isinstance(expr.value, str):
+            problem = topic_name_problem(expr.value)
+            kind = "service" if "srv_name" in parameters else "topic"
+            if problem:
+                yield Hit(Span(module.path, expr.lineno, expr.col_offset + 1),
+                          f"`{expr.value}` is not a valid {kind} name: {problem}")

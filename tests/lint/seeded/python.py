@@ -1,0 +1,149 @@
+"""Seeded mistakes in node code (PYC, and SYN for code that does not parse)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+from tests.lint.seeded import case, edit, write
+
+TALKER = "base_pkg/talker.py"
+LISTENER = "base_pkg/listener.py"
+SRV = "base_pkg/srv.py"
+
+
+@case("SYN001", TALKER, "def publish(self)")
+def missing_colon(root: Path) -> None:
+    edit(root, TALKER, "def publish(self):", "def publish(self)")
+
+
+@case("SYN001", TALKER, "msg.data = f'Hello {self.count}")
+def unterminated_string(root: Path) -> None:
+    edit(root, TALKER, "msg.data = f'Hello {self.count}'", "msg.data = f'Hello {self.count}")
+
+
+@case("SYN001", TALKER, "self.publisher.publish(msg)")
+def tab_indentation(root: Path) -> None:
+    edit(root, TALKER, "        self.publisher.publish(msg)", "\tself.publisher.publish(msg)")
+
+
+@case("PYC001", TALKER, "msg = Strng()")
+def class_name_typo(root: Path) -> None:
+    edit(root, TALKER, "msg = String()", "msg = Strng()")
+
+
+@case("PYC001", TALKER, "cv2.imshow")
+def cv2_used_without_import(root: Path) -> None:
+    edit(root, TALKER, "        self.publisher.publish(msg)\n",
+         "        self.publisher.publish(msg)\n        cv2.imshow('debug', None)\n")
+
+
+@case("PYC001", TALKER, "rclpy.init(args=args)")
+def rclpy_import_forgotten(root: Path) -> None:
+    edit(root, TALKER, "import rclpy\n", "")
+
+
+@case("PYC001", LISTENER, "count += 1")
+def local_instead_of_attribute(root: Path) -> None:
+    edit(root, LISTENER, "        self.count += 1\n        self.last_message",
+         "        count += 1\n        self.last_message")
+
+
+@case("PYC002", TALKER, "np.int0")
+def numpy_int0(root: Path) -> None:
+    edit(root, TALKER, "import rclpy\n", "import numpy as np\nimport rclpy\n")
+    edit(root, TALKER, "        msg = String()\n",
+         "        corners = np.int0([1.5, 2.5])\n        msg = String()\n        msg.data = "
+         "str(corners)\n")
+    edit(root, "package.xml", "  <exec_depend>launch</exec_depend>\n",
+         "  <exec_depend>python3-numpy</exec_depend>\n  <exec_depend>launch</exec_depend>\n")
+
+
+@case("PYC003", TALKER, "node.destroy_node()")
+def node_in_finally_after_failed_construction(root: Path) -> None:
+    edit(root, TALKER, "    node = None\n", "")
+    edit(root, TALKER, "        if node is not None:\n            node.destroy_node()",
+         "        node.destroy_node()")
+
+
+@case("PYC004", SRV, "ActionClient.GoalStatus")
+def goal_status_on_action_client(root: Path) -> None:
+    edit(root, SRV, "from rclpy.node import Node\n",
+         "from rclpy.action import ActionClient\nfrom rclpy.node import Node\n")
+    edit(root, SRV, "        response.success = True\n",
+         "        response.success = self.calls != ActionClient.GoalStatus.STATUS_ABORTED\n")
+
+
+@case("PYC005", SRV, "spin_until_future_complete")
+def wait_without_timeout(root: Path) -> None:
+    edit(root, SRV, "        rclpy.spin(node)\n",
+         "        client = node.create_client(Trigger, 'home')\n"
+         "        future = client.call_async(Trigger.Request())\n"
+         "        rclpy.spin_until_future_complete(node, future)\n        rclpy.spin(node)\n")
+
+
+@case("SYN001", TALKER, "print 'publishing'")
+def python2_print(root: Path) -> None:
+    edit(root, TALKER, "        self.publisher.publish(msg)\n",
+         "        print 'publishing'\n        self.publisher.publish(msg)\n")
+
+
+@case("PYC001", TALKER, "self.create_timer(period, publish)")
+def method_without_self(root: Path) -> None:
+    edit(root, TALKER, "self.create_timer(period, self.publish)",
+         "self.create_timer(period, publish)")
+
+
+@case("PYC004", TALKER, "from rclpy.Node import Node")
+def rclpy_node_module_capitalised(root: Path) -> None:
+    edit(root, TALKER, "from rclpy.node import Node", "from rclpy.Node import Node")
+
+
+@case("PYC006", SRV, "self.history")
+def missing_comma_in_list(root: Path) -> None:
+    edit(root, SRV, "        self.calls = 0\n",
+         "        self.calls = 0\n        self.history = [('start', 0) ('ready', 1)]\n")
+
+
+@case("PYC007", LISTENER, "String, topic, self.on_message)")
+def subscription_without_qos(root: Path) -> None:
+    edit(root, LISTENER, "String, topic, self.on_message, 10)", "String, topic, self.on_message)")
+
+
+@case("PYC007", TALKER, "self.create_publisher(String, topic)")
+def publisher_without_qos(root: Path) -> None:
+    edit(root, TALKER, "self.create_publisher(String, topic, 10)",
+         "self.create_publisher(String, topic)")
+
+
+@case("PYC008", TALKER, "super().__init__('talker-node'")
+def node_name_with_dash(root: Path) -> None:
+    edit(root, TALKER, "super().__init__('talker'", "super().__init__('talker-node'")
+
+
+@case("PYC008", TALKER, "'chatter topic'")
+def topic_name_with_space(root: Path) -> None:
+    edit(root, TALKER, "self.declare_parameter('topic', 'chatter')",
+         "self.declare_parameter('topic', 'chatter')\n        self.status = self.create_publisher("
+         "String, 'chatter topic', 10)")
+
+
+@case("PYC009", TALKER, "super().__init__()")
+def node_name_left_out(root: Path) -> None:
+    edit(root, TALKER, "super().__init__('talker', **kwargs)", "super().__init__()")
+
+
+@case("DEP007", TALKER, "from helpers import clamp")
+def sibling_module_imported_top_level(root: Path) -> None:
+    write(root, "base_pkg/helpers.py", """
+        def clamp(value, low, high):
+            return max(low, min(high, value))
+        """)
+    edit(root, TALKER, "import rclpy\n", "from helpers import clamp\nimport rclpy\n")
+    edit(root, TALKER, "        self.count = 0\n", "        self.count = clamp(0, 0, 1)\n")
+
+
+@case("DEP004", TALKER, "import rospy")
+def ros1_import(root: Path) -> None:
+    edit(root, TALKER, "import rclpy\n", "import rclpy\nimport rospy\n")
+    edit(root, TALKER, "        self.count = 0\n",
+         "        self.count = 0\n        self.rate = rospy.Rate(2)\n")
