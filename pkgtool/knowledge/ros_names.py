@@ -11,8 +11,8 @@ ROS_PYTHON_PACKAGES = frozenset({
     "action_msgs", "angles", "builtin_interfaces", "controller_manager", "cv_bridge",
     "diagnostic_updater", "image_geometry", "interactive_markers", "launch", "laser_geometry",
     "message_filters", "python_qt_binding", "qt_gui", "qt_gui_py_common", "rclpy",
-    "rpyutils", "sensor_msgs_py", "teleop_twist_keyboard", "tf_transformations", "turtlesim",
-    "urdf_parser_py", "xacro",
+    "rpyutils", "sensor_msgs_py", "sros2", "teleop_twist_keyboard", "tf_transformations",
+    "turtlesim", "urdf_parser_py", "xacro",
 })
 """ROS packages (as import names) that the naming patterns below do not catch."""
 

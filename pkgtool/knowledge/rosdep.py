@@ -11,7 +11,8 @@ from __future__ import annotations
 import sys
 
 PYTHON_MODULE_KEYS: dict[str, str] = {
-    "aiohttp": "python3-aiohttp", "autobahn": "python3-autobahn", "boto3": "python3-boto3",
+    "aiohttp": "python3-aiohttp", "argcomplete": "python3-argcomplete",
+    "autobahn": "python3-autobahn", "boto3": "python3-boto3",
     "bs4": "python3-bs4", "bson": "python3-bson", "cairo": "python3-cairo",
     "can": "python3-can", "catkin_pkg": "python3-catkin-pkg", "click": "python3-click",
     "colorama": "python3-colorama", "coverage": "python3-coverage", "crcmod": "python3-crcmod",

@@ -11,6 +11,13 @@ from pkgtool.rules.python._node_api import PARAMETERS, argument, node_api_calls,
 from pkgtool.rules.registry import rule
 
 
+_HINTS = {
+    "queue_size": " (`queue_size` is ROS 1: pass the depth as `qos_profile`)",
+    "qos": " (the keyword is `qos_profile`, not `qos`)",
+    "depth": " (pass the depth as `qos_profile`)",
+}
+
+
 @rule("PYC007", "missing-qos-profile", Severity.ERROR,
       fix="Pass a QoS profile or a history depth as the last argument, e.g. `10`")
 def missing_qos_profile(package: Package) -> Iterator[Hit]:
@@ -46,8 +53,7 @@ def missing_qos_profile(package: Package) -> Iterator[Hit]:
         others = [p for p in parameters if p != "qos_profile"]
         if argument(call, parameters, "qos_profile") is None and len(call.args) <= len(others) \
                 and all(argument(call, parameters, p) is not None for p in others):
-            queue = next((k for k in call.keywords if k.arg == "queue_size"), None)
-            hint = " (`queue_size` is ROS 1: pass the depth as `qos_profile`)" if queue else ""
+            hint = next((_HINTS[k.arg] for k in call.keywords if k.arg in _HINTS), "")
             last = max([*call.args, *(k.value for k in call.keywords)],
                        key=lambda n: (n.end_lineno or 0, n.end_col_offset or 0))
             yield Hit(Span(module.path, last.end_lineno or call.lineno, call.col_offset + 1),
