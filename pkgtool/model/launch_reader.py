@@ -113,10 +113,11 @@ def yaml_problem(path: str, text: str, *, documents: bool = True) -> object:
     """
     import yaml
 
+    loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)  # libyaml when available: ~10x faster
     try:
         if documents:
-            return list(yaml.compose_all(text, Loader=yaml.SafeLoader))
-        return yaml.compose(text, Loader=yaml.SafeLoader)
+            return list(yaml.compose_all(text, Loader=loader))
+        return yaml.compose(text, Loader=loader)
     except yaml.MarkedYAMLError as error:
         mark = error.problem_mark or error.context_mark
         line, col = (mark.line + 1, mark.column + 1) if mark else (1, 1)
