@@ -24,7 +24,8 @@ def _words(values: Optional[list[str]]) -> tuple[str, ...]:
 
 def create(
     ctx: typer.Context,
-    name: Annotated[str, typer.Argument(help="The package name (REP 144: lower_snake_case).")],
+    name: Annotated[str, typer.Argument(
+        help="The package name (REP 144: lower_snake_case).", metavar="NAME")],
     destination_directory: Annotated[Path, typer.Option(
         help="Folder to create the package in.")] = Path("."),
     build_type: Annotated[str, typer.Option(
@@ -36,11 +37,13 @@ def create(
         "--license", help="SPDX id: Apache-2.0, BSL-1.0, BSD-2-Clause, BSD-3-Clause, MIT, MIT-0, "
         "GPL-3.0-only, LGPL-3.0-only.")] = "Apache-2.0",
     maintainer_name: Annotated[Optional[str], typer.Option(
-        help="Default: git config user.name.", show_default=False)] = None,
+        help="Default: git config user.name, else your login name.", show_default=False)] = None,
     maintainer_email: Annotated[Optional[str], typer.Option(
-        help="Default: git config user.email.", show_default=False)] = None,
+        help="Default: git config user.email, else <maintainer>@todo.todo.",
+        show_default=False)] = None,
     dependencies: Annotated[Optional[list[str]], typer.Option(
-        help="ROS packages, Python modules (numpy) or rosdep keys the package depends on.",
+        help="ROS packages, Python modules (numpy) or rosdep keys the package depends on; "
+        "space- or comma-separated, repeatable.",
         show_default=False)] = None,
     node_name: Annotated[Optional[str], typer.Option(
         help="A node to generate, like --node NAME:timer.", show_default=False)] = None,

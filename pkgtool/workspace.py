@@ -106,33 +106,40 @@ def _ignored_here(folder: Path) -> bool:
 
 
 def _walk(top: Path) -> Iterable[Path]:
-    """Packages below ``top``; each folder is listed once and symlink cycles are cut."""
+    """Packages below ``top``; each folder is listed once and symlink cycles are cut.
+
+    Symbolic links are followed only after every real folder, so a package that is also
+    linked is reported at its real path.
+    """
     seen = {os.path.realpath(top)}
-    stack = [_listing(top)[1]]
-    while stack:
-        for sub in stack.pop():
-            real = os.path.realpath(sub)
-            if real in seen:
-                continue
-            seen.add(real)
-            names, subfolders = _listing(sub)
-            if names & IGNORE_MARKERS or "pyvenv.cfg" in names:
-                continue
-            if any(marker in names for marker in PACKAGE_MARKERS) and is_package(sub):
-                yield sub
-            elif sub.name not in OUTPUT_DIRS:
-                stack.append(subfolders)
+    _, folders, links = _listing(top)
+    while folders or links:
+        sub = folders.pop() if folders else links.pop()
+        real = os.path.realpath(sub)
+        if real in seen:
+            continue
+        seen.add(real)
+        names, subfolders, sublinks = _listing(sub)
+        if names & IGNORE_MARKERS or "pyvenv.cfg" in names:
+            continue
+        if any(marker in names for marker in PACKAGE_MARKERS) and is_package(sub):
+            yield sub
+        elif sub.name not in OUTPUT_DIRS:
+            folders += subfolders
+            links += sublinks
 
 
-def _listing(folder: Path) -> tuple[frozenset[str], list[Path]]:
-    """The names in ``folder`` and its sub-folders worth searching."""
+def _listing(folder: Path) -> tuple[frozenset[str], list[Path], list[Path]]:
+    """The names in ``folder``, and its sub-folders worth searching: real ones, then links."""
     try:
         with os.scandir(folder) as entries:
             listed = list(entries)
     except OSError:
-        return frozenset(), []
+        return frozenset(), [], []
     names = frozenset(e.name for e in listed)
-    return names, [Path(e.path) for e in listed if not _skipped_name(e.name) and _is_dir(e)]
+    searched = [e for e in listed if not _skipped_name(e.name) and _is_dir(e)]
+    return (names, [Path(e.path) for e in searched if not e.is_symlink()],
+            [Path(e.path) for e in searched if e.is_symlink()])
 
 
 def _is_dir(entry: os.DirEntry[str]) -> bool:

@@ -1,8 +1,8 @@
 """Style checks of a package folder as plain messages, for generated linter tests.
 
-A package made by ``pkgtool create`` calls these from its test_flake8.py / test_pep257.py /
-test_copyright.py when the ament linters are not installed, so the same checks run with
-pkgtool alone.
+A package made by ``pkgtool create`` calls these from its test_flake8.py / test_pep257.py when
+the ament linters are not installed, so the same checks run with pkgtool alone, and always from
+its test_copyright.py (ament_copyright rejects SPDX headers).
 """
 
 from __future__ import annotations

@@ -34,7 +34,7 @@ def _guide() -> tuple[Any, list[Any]]:
         from flake8.main.application import Application
         from flake8.options.parse_args import parse_args
     except ImportError as error:
-        raise StyleToolMissing("flake8 is not installed; install pkgtool[style]") from error
+        raise StyleToolMissing("`flake8` is not installed") from error
     sink: list[Any] = []
 
     class _Collect(BaseFormatter):  # type: ignore[misc]

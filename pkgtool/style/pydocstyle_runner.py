@@ -14,7 +14,7 @@ def run_pydocstyle(root: Path, files: list[str]) -> list[StyleViolation]:
         import pydocstyle
         from pydocstyle.violations import ErrorRegistry
     except ImportError as error:
-        raise StyleToolMissing("pydocstyle is not installed; install pkgtool[style]") from error
+        raise StyleToolMissing("`pydocstyle` is not installed") from error
     checked = sorted(set(ErrorRegistry.get_error_codes()) - set(AMENT_DOCSTRING_IGNORE))
     violations = []
     paths = [str(root / f) for f in files]

@@ -91,3 +91,9 @@ def test_create_help_loads_neither_jinja2_nor_the_create_package() -> None:
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                           check=True, timeout=60)
     assert done.stdout.rpartition("LOADED:")[2].split() == []
+
+
+def test_help_names_the_argument_as_the_docs_do() -> None:
+    result = CliRunner().invoke(app, ["create", "--help"])
+    assert "Usage: pkgtool create [OPTIONS] {NAME}" in result.output
+    assert "separated, repeatable." in " ".join(result.output.split())

@@ -90,6 +90,12 @@ def test_symlinked_packages_are_found_once_and_cycles_stop(workspace: Path) -> N
     assert len(_names(workspace, ".")) == 3
 
 
+@pytest.mark.parametrize("link", ["src/a_link", "src/group/zz_link", "a_link"])
+def test_a_linked_package_is_reported_at_its_real_path(workspace: Path, link: str) -> None:
+    (workspace / link).symlink_to(workspace / "src" / "group" / "beta")
+    assert _names(workspace, ".") == ["src/alpha", "src/group/beta", "src/group/pure"]
+
+
 def test_owning_package_stops_at_the_repository_root(tmp_path: Path) -> None:
     write_tree(tmp_path, {"package.xml": MANIFEST, "repo/.git/HEAD": "ref\n",
                           "repo/tools/run.py": "print()\n"})

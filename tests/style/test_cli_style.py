@@ -3,7 +3,10 @@
 from __future__ import annotations
 
 import json
+import sys
 from pathlib import Path
+
+import pytest
 
 from tests.helpers import MINIMAL_MANIFEST, run_cli, write_tree
 
@@ -36,3 +39,14 @@ def test_style_clean_package_passes(tmp_path: Path) -> None:
     _package(tmp_path, HEADER + '"""Node."""\n\nSPEED = \'fast\'\n')
     result = run_cli("lint", "--select", "SYN", "--style", "--strict", "demo", cwd=tmp_path)
     assert result.exit_code == 0, result.output
+
+
+def test_a_missing_checker_is_one_finding_with_an_install_hint(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    _package(tmp_path, HEADER + '"""Node."""\n')
+    monkeypatch.setitem(sys.modules, "pydocstyle", None)  # `import pydocstyle` raises
+    result = run_cli("lint", "--select", "STY002", "--format", "json", "demo", cwd=tmp_path)
+    [found] = json.loads(result.output)["findings"]
+    assert (found["path"], found["line"]) == ("demo/package.xml", None)
+    assert found["message"] == "`pydocstyle` is not installed"
+    assert found["fix"] == 'Install the style checkers: `pip install "pkgtool[style]"`'
