@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Annotated, Optional
 
 import typer
 
-from pkgtool.cli_test import emit
+from pkgtool.cli_test import check_output, emit
 from pkgtool.commands import ExitCode
 
 if TYPE_CHECKING:
@@ -65,6 +65,7 @@ def grade(
         raise typer.Exit(0)
     if rubric is None:
         raise _fail("Give the rubric with --rubric FILE (create one with --init-rubric FILE).")
+    check_output(output, "grade")
     result = _run(command, submissions or [], rubric, batch, jobs, fmt)
     if result.errors:
         raise _fail(*result.errors)

@@ -33,6 +33,15 @@ def emit(text: str, output: Optional[Path], verb: str) -> None:
         raise typer.Exit(int(ExitCode.USAGE)) from None
 
 
+def check_output(output: Optional[Path], verb: str) -> None:
+    """Exit with the usage code before any work when ``output``'s folder does not exist."""
+    folder = output.absolute().parent if output is not None else None
+    if folder is not None and not folder.is_dir():
+        typer.echo(f"pkgtool {verb}: Cannot write `{output}`: the folder `{folder}` does not "
+                   "exist. Create it or choose another --output file.", err=True)
+        raise typer.Exit(int(ExitCode.USAGE))
+
+
 def test(
     path: Annotated[str, typer.Argument(help="A package folder, or a workspace to test all of.")],
     timeout: Annotated[float, typer.Option(
@@ -54,6 +63,7 @@ def test(
     from pkgtool.commands.test import run
     from pkgtool.grade.report.package_tests import render
 
+    check_output(output, "test")
     result = run(path, timeout=timeout, test_timeout=test_timeout)
     for message in result.errors:
         typer.echo(f"pkgtool test: {message}", err=True)

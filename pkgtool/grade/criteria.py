@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -12,12 +11,11 @@ from pkgtool.findings import Severity
 from pkgtool.grade.junit import TestSummary
 from pkgtool.grade.results import CriterionResult
 from pkgtool.grade.rubric import Criterion, Rubric
-from pkgtool.grade.runner import WorkspaceRunner
+from pkgtool.grade.runner import WorkspaceRunner, first_error
 from pkgtool.model.package import Package
 from pkgtool.ros.colcon import ColconRun
 
 MAX_LINES = 20
-_ERROR_LINE = re.compile(r"^(error: |[\w.]*(Error|Exception)\b)")
 
 
 @dataclass
@@ -96,8 +94,7 @@ def _build(criterion: Criterion, job: Job) -> Outcome:
     if run.ok:
         return criterion.points, [f"`colcon build` succeeded in {run.seconds:.1f} s"], ""
     why = f" ({run.limit})" if run.limit else ""
-    first = next((line.strip() for line in run.output.splitlines()
-                  if _ERROR_LINE.match(line.strip())), None)
+    first = first_error(run.output)
     return 0.0, [f"`colcon build` failed{why}", *([first] if first else [])], _tail(run.output)
 
 
@@ -120,7 +117,8 @@ def _lint(criterion: Criterion, job: Job) -> Outcome:
 
 
 def _executables(criterion: Criterion, job: Job) -> Outcome:
-    problems = job.runner.entry_points(job.name, criterion.names)
+    problems = job.runner.entry_points(job.name, criterion.names,
+                                       timeout=job.rubric.test_timeout)
     good = [name for name, problem in problems.items() if not problem]
     lines = [problem or f"`{name}` is installed and loads" for name, problem in problems.items()]
     return _credit(criterion, len(good), len(problems)), lines, ""

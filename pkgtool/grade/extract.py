@@ -1,8 +1,10 @@
 """Unpack a submission archive (.zip, .tar, .tar.gz) safely, or refuse it with the reason.
 
-Refused: absolute paths, ``..`` components, links pointing out of the archive (zip: any
-link), device files, more files or bytes than the caps, and zip members whose compression
-ratio betrays a bomb. Nothing is written until every member has been checked.
+Refused: absolute paths, ``..`` components, device files, more files or bytes than the caps,
+and zip members whose compression ratio betrays a bomb. Links pointing out of the archive
+(zip: any link) are skipped, not unpacked: a student's built workspace holds such links
+(colcon's ``log/latest``, ``--symlink-install``), and a folder copy skips them the same way.
+Nothing is written until every member has been checked.
 """
 
 from __future__ import annotations
@@ -72,7 +74,7 @@ def _extract_zip(archive: Path, dest: Path, limits: ExtractLimits) -> None:
             relative = _check_name(info.filename)
             mode = info.external_attr >> 16
             if stat.S_ISLNK(mode):
-                raise SubmissionError(f"archive entry `{info.filename}` is a symbolic link")
+                continue  # never unpacked as a link
             total += info.file_size
             _count(limits, len(members) + 1, total)
             if info.file_size > limits.max_ratio * max(info.compress_size, 1) + MB:
@@ -108,6 +110,8 @@ def _extract_tar(archive: Path, dest: Path, limits: ExtractLimits) -> None:
             _count(limits, len(members) + 1, total)
             try:
                 members.append(tarfile.data_filter(member, str(dest)))
+            except (tarfile.AbsoluteLinkError, tarfile.LinkOutsideDestinationError):
+                continue  # a link out of the submission: skipped
             except tarfile.FilterError as error:
                 raise SubmissionError(f"archive entry `{member.name}` is refused: {error}") \
                     from None

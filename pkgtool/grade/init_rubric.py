@@ -25,7 +25,7 @@ _LIMITS: dict[str, Any] = {"timeout": 300, "test_timeout": 60, "memory_mb": 2048
                            "processes": 256, "cpu_seconds": 600, "file_size_mb": 256,
                            "output_kb": 256}
 _LIMIT_NOTES = {"timeout": "wall-clock seconds per build or test step",
-                "test_timeout": "seconds per single test (pytest-timeout)",
+                "test_timeout": "seconds per single test, and per console script load",
                 "memory_mb": "memory of a whole step", "processes": "processes and threads",
                 "cpu_seconds": "CPU time per process", "file_size_mb": "largest file written",
                 "output_kb": "log kept per step (head and tail)"}

@@ -58,7 +58,8 @@ class TestSummary:
             return self.problem
         if not self.ran:
             return "no tests ran"
-        return ", ".join(f"{n} {outcome}" for outcome, n in self.counts.items() if n)
+        return ", ".join(f"{n} {outcome}{'s' if outcome == 'error' and n > 1 else ''}"
+                         for outcome, n in self.counts.items() if n)
 
 
 def parse_junit(path: Path, *, within: Path | None = None) -> TestSummary:
@@ -101,5 +102,8 @@ def _case(element) -> TestCase:  # type: ignore[no-untyped-def]
         if found is not None:
             text = (found.text or "").strip()
             message = found.get("message") or (text.splitlines() or [""])[-1]
+            if message == "collection failure":  # pytest's words; the reason is in the text
+                raised = [line[1:].strip() for line in text.splitlines() if line[:2] == "E "]
+                message += f": {raised[-1]}" if raised else ""
             return TestCase(full, outcome, seconds, message[:500], text[-4000:])
     return TestCase(full, "passed", seconds)

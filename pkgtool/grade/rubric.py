@@ -133,6 +133,9 @@ def _criterion(entry: dict[str, Any], base: Path, where: str) -> Criterion:
         accepted = (int, float) if wanted is float else (wanted,)
         if isinstance(value, bool) != (wanted is bool) or not isinstance(value, accepted):
             raise RubricError(f"{where}: `{key}` must be {words}.")
+    for key, floor, words in (("per_finding", 0, "more than 0"), ("min_tests", -1, "at least 0")):
+        if values.get(key, floor + 1) <= floor:
+            raise RubricError(f"{where}: `{key}` must be {words}.")
     for key in ("select", "ignore", "names", "exclude"):
         if key in values:
             values[key] = _strings(values[key], f"{where}: `{key}`")

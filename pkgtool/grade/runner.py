@@ -9,6 +9,7 @@ from __future__ import annotations
 import importlib.util
 import json
 import os
+import re
 import secrets
 import shutil
 import sys
@@ -19,6 +20,8 @@ from pathlib import Path
 from pkgtool.grade.junit import TestSummary, parse_junit
 from pkgtool.grade.sandbox import Sandbox
 from pkgtool.ros.colcon import ColconRun, colcon_build, colcon_env, colcon_test
+
+_ERROR_LINE = re.compile(r"^(error: |[\w.]*(Error|Exception)\b)")
 
 _ENTRY_POINT_PROBE = """
 import importlib.metadata as md, json, sys
@@ -107,26 +110,37 @@ class WorkspaceRunner:
         run = self.box.run(command, tests, self.installed_env())
         return run, _checked(run, parse_junit(report, within=self.workspace))
 
-    def entry_points(self, package: str, names: Sequence[str]) -> dict[str, str]:
-        """For each console script name, "" when installed and loadable, else the problem."""
+    def entry_points(self, package: str, names: Sequence[str], *,
+                     timeout: float | None = None) -> dict[str, str]:
+        """For each console script name, "" when installed and loadable, else the problem.
+
+        Each name is loaded in its own run of at most ``timeout`` seconds: a module that
+        hangs at import costs that name only.
+        """
+        return {name: self._entry_point(package, name, timeout) for name in names}
+
+    def _entry_point(self, package: str, name: str, timeout: float | None) -> str:
         prefixes = [self.workspace / "install" / package]
         command = [sys.executable, "-c", _ENTRY_POINT_PROBE,
-                   ":".join(map(str, _site_packages(prefixes))), *names]
-        run = self.box.run(command, self.workspace, self.installed_env())
-        found = {}
-        for line in run.output.splitlines():
-            if line.startswith("PKGTOOL-ENTRY-POINT "):
-                name, problem = json.loads(line.split(" ", 1)[1])
-                found[name] = problem
-        scripts = self.workspace / "install" / package / "lib" / package
-        problems = {}
-        for name in names:
-            problem = found.get(name, f"`{name}` could not be checked ({run.limit or 'crashed'})")
-            if not problem and not os.access(scripts / name, os.X_OK):
-                problem = (f"`{name}` is not installed in `lib/{package}` (`ros2 run` cannot "
-                           "find it; check `setup.cfg`'s script_dir)")
-            problems[name] = problem
-        return problems
+                   ":".join(map(str, _site_packages(prefixes))), name]
+        run = self.box.run(command, self.workspace, self.installed_env(), timeout=timeout)
+        found = dict(json.loads(line.split(" ", 1)[1]) for line in run.output.splitlines()
+                     if line.startswith("PKGTOOL-ENTRY-POINT "))
+        if name not in found and run.timed_out:
+            return (f"`{name}` did not finish loading ({run.limit}): its module must not run "
+                    "the node when imported; start the node in the entry point's function")
+        problem = found.get(name, f"`{name}` could not be checked ({run.limit or 'crashed'})")
+        if not problem and not os.access(self.workspace / "install" / package / "lib" / package
+                                         / name, os.X_OK):
+            problem = (f"`{name}` is not installed in `lib/{package}` (`ros2 run` cannot "
+                       "find it; check `setup.cfg`'s script_dir)")
+        return problem
+
+
+def first_error(output: str) -> str | None:
+    """The first line of a colcon log that names an error (``SyntaxError: ...``), if any."""
+    return next((line.strip() for line in output.splitlines()
+                 if _ERROR_LINE.match(line.strip())), None)
 
 
 def _refused(problem: str) -> tuple[ColconRun, TestSummary]:

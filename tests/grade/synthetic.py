@@ -206,6 +206,10 @@ def test_writes_to_the_home_of_root():
     bomb["test/test_bomb.py"] = ("import os\n\n\ndef test_fork_bomb():\n    while True:\n"
                                  "        try:\n            os.fork()\n"
                                  "        except OSError:\n            pass\n")
+    hangs = correct()
+    hangs["talker_pkg/talker.py"] = TALKER.replace(
+        "import rclpy\n", "import time\n\nimport rclpy\n").replace(
+        "greeting\n\n\n", "greeting\n\ntime.sleep(3600)  # work done at import time\n\n\n")
     cheater = correct()
     cheater["talker_pkg/greet.py"] = GREET.replace("f'Hello, {name}!'", "'Hi'")
     cheater["test/test_greet.py"] = TESTS.format(expected="Hi").replace("Hello, Ada!", "Hi")
@@ -214,7 +218,7 @@ def test_writes_to_the_home_of_root():
     return {"correct": correct(), "cheater": cheater, "missing_entry_point": missing_entry,
             "undeclared_dependency": undeclared, "build_failure": broken,
             "failing_test": failing, "infinite_loop": looping, "writes_outside": escape,
-            "fork_bomb": bomb}
+            "fork_bomb": bomb, "hangs_at_import": hangs}
 
 
 def write_submission(folder: Path, files: dict[str, str]) -> Path:

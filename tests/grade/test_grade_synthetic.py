@@ -23,7 +23,7 @@ pytestmark = [pytest.mark.ros, pytest.mark.colcon, pytest.mark.slow]
 Batch = dict[str, Any]
 Entry = dict[str, Any]
 NAMES = ("correct", "cheater", "missing_entry_point", "undeclared_dependency", "build_failure",
-         "failing_test", "infinite_loop", "writes_outside", "fork_bomb")
+         "failing_test", "infinite_loop", "writes_outside", "fork_bomb", "hangs_at_import")
 
 
 @pytest.fixture(scope="module")
@@ -124,6 +124,14 @@ def test_infinite_loop_in_a_test(batch: Batch) -> None:
     assert _criterion(entry, "tests")["score"] == pytest.approx(1.33)
     assert "Timeout (>5.0s)" in _feedback(entry, "tests")
     assert _criterion(entry, "hidden")["score"] == 2
+
+
+def test_a_module_that_hangs_when_imported_costs_its_executable_only(batch: Batch) -> None:
+    entry = batch["graded"]["hangs_at_import"]
+    assert _criterion(entry, "executables")["score"] == 0
+    assert "`talker` did not finish loading (timed out after 5 s)" in _feedback(
+        entry, "executables"), "the probe is bounded by test_timeout, not the step timeout"
+    assert entry["score"] == 9
 
 
 def test_writing_outside_the_package_changes_nothing(batch: Batch) -> None:

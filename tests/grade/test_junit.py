@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from pathlib import Path
+from xml.sax.saxutils import escape
 
 from pkgtool.grade.junit import parse_junit
 
@@ -79,3 +80,15 @@ def test_a_report_linked_out_of_the_workspace_is_not_read(tmp_path: Path) -> Non
     assert not summary.cases and "outside the workspace" in summary.describe()
     (workspace / "real.xml").write_text(REPORT)
     assert parse_junit(workspace / "real.xml", within=workspace).ran == 3
+
+
+def test_a_collection_error_names_its_exception(tmp_path: Path) -> None:
+    text = ("test/test_a.py:3: in <module>\n    from pkg.node import main\n"
+            "E     File \"/ws/src/pkg/pkg/node.py\", line 4\nE   SyntaxError: expected ':'")
+    case = (f'<testcase classname="test.test_{{}}" name=""><error message="collection failure">'
+            f"{escape(text)}</error></testcase>")
+    (tmp_path / "pytest.xml").write_text(
+        f"<testsuites><testsuite>{case.format('a')}{case.format('b')}</testsuite></testsuites>")
+    summary = parse_junit(tmp_path / "pytest.xml")
+    assert summary.describe() == "2 errors"
+    assert summary.cases[0].message == "collection failure: SyntaxError: expected ':'"

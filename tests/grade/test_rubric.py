@@ -68,6 +68,8 @@ def test_defaults(tmp_path: Path) -> None:
     ('[[criteria]]\nkind = "build"\npoints = 1\n[[criteria]]\nkind = "build"\npoints = 1\n',
      "used twice"),
     ("criteria = [", "not valid TOML"),
+    ('[[criteria]]\nkind = "style"\npoints = 1\nper_finding = -1\n', "more than 0"),
+    ('[[criteria]]\nkind = "tests"\npoints = 1\nmin_tests = -2\n', "`min_tests` must be at"),
 ])
 def test_mistakes_are_reported_with_their_place(tmp_path: Path, text: str, message: str) -> None:
     with pytest.raises(RubricError, match=message):

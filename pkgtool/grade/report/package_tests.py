@@ -9,6 +9,7 @@ from dataclasses import asdict
 from pkgtool import __version__
 from pkgtool.commands.test import TestResult
 from pkgtool.grade.report import SCHEMA_VERSION
+from pkgtool.grade.runner import first_error
 
 FORMATS = ("text", "json", "junit")
 
@@ -24,8 +25,10 @@ def _text(result: TestResult) -> str:
         summary = package.summary
         if summary is None:
             limit = f" ({package.limit})" if package.limit else ""
+            first = first_error(package.output)
             lines += [f"{package.name}: BUILD FAILED{limit}",
-                      *("  " + line for line in package.output.splitlines()[-40:])]
+                      *("  " + line for line in package.output.splitlines()[-40:]),
+                      *([f"{package.name}: first error: {first}"] if first else [])]
             continue
         for case in summary.cases:
             lines.append(f"  {case.outcome.upper():7} {case.name} ({case.seconds:.2f} s)")
@@ -59,7 +62,11 @@ def _junit(result: TestResult) -> str:
     root = ET.Element("testsuites", name="pkgtool test")
     for package in result.packages:
         cases = package.summary.cases if package.summary else ()
-        suite = ET.SubElement(root, "testsuite", name=package.name, tests=str(len(cases)),
+        counts = package.summary.counts if package.summary else {}
+        suite = ET.SubElement(root, "testsuite", name=package.name, tests=str(len(cases) or 1),
+                              failures=str(counts.get("failed", 0)),
+                              errors=str(counts.get("error", 0) if cases else 1),
+                              skipped=str(counts.get("skipped", 0)),
                               time=f"{package.seconds:.2f}")
         if not cases:
             case = ET.SubElement(suite, "testcase", classname=package.name, name="build and test")

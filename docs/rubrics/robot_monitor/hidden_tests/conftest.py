@@ -50,6 +50,17 @@ def start_node():
                 process.wait()
 
 
+@pytest.fixture
+def exit_message():
+    """Say why a started node is gone: status and last output line first, then all output."""
+    def message(name, process):
+        output = process.stdout.read() if process.stdout else ''
+        last = (output.strip().splitlines() or ['no output'])[-1].strip()
+        return f'`{name}` exited with status {process.returncode}: {last}\n{output}'
+
+    return message
+
+
 class Listener:
     """A node of the test's own that collects messages and looks at the ROS graph."""
 

@@ -17,10 +17,11 @@ def _temperature_topic(listener):
     return None
 
 
-def test_runs_and_publishes_a_temperature(start_node, listener):
+def test_runs_and_publishes_a_temperature(start_node, listener, exit_message):
     node = start_node('temperature_monitor')
-    found = listener.spin_until(lambda: _temperature_topic(listener) is not None, 15.0)
-    assert node.poll() is None, f'temperature_monitor exited:\n{node.stdout.read()}'
+    found = listener.spin_until(
+        lambda: _temperature_topic(listener) is not None or node.poll() is not None, 15.0)
+    assert node.poll() is None, exit_message('temperature_monitor', node)
     assert found, ('the node `temperature_monitor` publishes no sensor_msgs/Temperature '
                    '(or std_msgs/Float32) topic')
     topic, msg_type = _temperature_topic(listener)
