@@ -2,13 +2,16 @@
 
 from __future__ import annotations
 
+import atexit
 import os
+import shutil
 import tempfile
 
 # Before anything imports rclpy: no multicast on the machine's interfaces, logs in a temp dir.
 os.environ["ROS_AUTOMATIC_DISCOVERY_RANGE"] = "LOCALHOST"
 os.environ.setdefault("ROS_DOMAIN_ID", "42")
 os.environ["ROS_LOG_DIR"] = tempfile.mkdtemp(prefix="pkgtool-ros-log-")
+atexit.register(shutil.rmtree, os.environ["ROS_LOG_DIR"], ignore_errors=True)
 os.environ.pop("RMW_IMPLEMENTATION", None)
 
 pytest_plugins = ["pkgtool.testing.ros_fixtures"]
