@@ -31,17 +31,21 @@ def _mentions_find_spec(test: ast.expr) -> bool:
 
 
 def _guarded_parts(node: ast.AST, guarded: bool) -> list[tuple[ast.AST, bool]]:
-    """The children of ``node``, each with whether imports under it are guarded."""
+    """The statements directly inside ``node``, each with whether its imports are guarded."""
     if isinstance(node, (ast.Try, ast.TryStar)):
         inner = guarded or any(_catches_import_error(h) for h in node.handlers)
         return ([(s, inner) for s in node.body]
                 + [(p, guarded) for p in (*node.handlers, *node.orelse, *node.finalbody)])
     if isinstance(node, ast.If):
-        inner = guarded or _is_type_checking(node.test) or _mentions_find_spec(node.test)
-        orelse = guarded or _mentions_find_spec(node.test)
-        return ([(node.test, guarded)] + [(s, inner) for s in node.body]
-                + [(s, orelse) for s in node.orelse])
-    return [(child, guarded) for child in ast.iter_child_nodes(node)]
+        spec_check = _mentions_find_spec(node.test)
+        inner = guarded or spec_check or _is_type_checking(node.test)
+        return ([(s, inner) for s in node.body]
+                + [(s, guarded or spec_check) for s in node.orelse])
+    return [(child, guarded) for field in _BLOCK_FIELDS for child in getattr(node, field, ())]
+
+
+_BLOCK_FIELDS = ("body", "orelse", "finalbody", "handlers", "cases")
+"""The fields of compound statements that hold statements (where imports can stand)."""
 
 
 _BLOCK_NODES = (ast.stmt, ast.excepthandler, ast.match_case)

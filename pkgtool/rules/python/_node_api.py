@@ -11,7 +11,7 @@ from collections.abc import Iterator
 
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
-from pkgtool.rules.python._tree import FUNCTIONS, Index, installed_trees
+from pkgtool.rules.python._tree import Index, installed_trees
 
 PARAMETERS = {
     "create_publisher": ("msg_type", "topic", "qos_profile"),
@@ -25,10 +25,10 @@ PARAMETERS = {
 
 def node_api_calls(package: Package) -> Iterator[tuple[PythonModule, ast.Call, str, Index]]:
     """``x.<method>(...)`` calls of the methods in :data:`PARAMETERS`, with the method name."""
-    for module, tree, index in installed_trees(package):
+    for module, _, index in installed_trees(package):
         if not any(i.top_level == "rclpy" for i in module.imports):
             continue
-        defined = {n.name for n in ast.walk(tree) if isinstance(n, FUNCTIONS)}
+        defined = {function.name for function in index.functions}
         for call in index.calls:
             method = call.func.attr if isinstance(call.func, ast.Attribute) else ""
             if method in PARAMETERS and method not in defined:

@@ -33,8 +33,17 @@ class Index:
     calls: list[ast.Call] = field(default_factory=list)
     import_froms: list[ast.ImportFrom] = field(default_factory=list)
     tries: list[ast.Try] = field(default_factory=list)
+    functions: list[ast.FunctionDef | ast.AsyncFunctionDef] = field(default_factory=list)
+    classes: list[ast.ClassDef] = field(default_factory=list)
     parents: dict[int, ast.AST] = field(default_factory=dict)
     aliases: dict[str, str] = field(default_factory=dict)
+
+    def enclosing_class(self, node: ast.AST) -> ast.ClassDef | None:
+        """The innermost class around ``node``, or None."""
+        parent = self.parents.get(id(node))
+        while parent is not None and not isinstance(parent, ast.ClassDef):
+            parent = self.parents.get(id(parent))
+        return parent
 
     def enclosing_function(self, node: ast.AST) -> ast.FunctionDef | ast.AsyncFunctionDef | None:
         """The innermost function around ``node`` (None at module or class level)."""
@@ -80,6 +89,10 @@ def _index(tree: ast.Module) -> Index:
             index.import_froms.append(node)
         elif isinstance(node, ast.Try):
             index.tries.append(node)
+        elif isinstance(node, FUNCTIONS):
+            index.functions.append(node)
+        elif isinstance(node, ast.ClassDef):
+            index.classes.append(node)
         for child in ast.iter_child_nodes(node):
             index.parents[id(child)] = node
             stack.append(child)

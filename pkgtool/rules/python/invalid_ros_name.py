@@ -54,16 +54,16 @@ def name_argument(call: ast.Call) -> ast.expr | None:
     return keyword or first
 
 
-def node_constructions(index: Index, tree: ast.Module) -> Iterator[ast.Call]:
+def node_constructions(index: Index) -> Iterator[ast.Call]:
     """``super().__init__(...)`` calls in Node subclasses, and Node/create_node calls."""
-    node_classes = [c for c in ast.walk(tree) if isinstance(c, ast.ClassDef) and any(
-        qualified(b, index.aliases) in NODE_CLASSES for b in c.bases)]
-    for cls in node_classes:
-        for call in ast.walk(cls):
-            if isinstance(call, ast.Call) and isinstance(call.func, ast.Attribute) and \
-                    call.func.attr == "__init__" and isinstance(call.func.value, ast.Call) and \
-                    getattr(call.func.value.func, "id", "") == "super":
-                yield call
+    node_classes = {id(c) for c in index.classes
+                    if any(qualified(b, index.aliases) in NODE_CLASSES for b in c.bases)}
+    for call in index.calls:
+        if isinstance(call.func, ast.Attribute) and call.func.attr == "__init__" and \
+                isinstance(call.func.value, ast.Call) and \
+                getattr(call.func.value.func, "id", "") == "super" and \
+                id(index.enclosing_class(call)) in node_classes:
+            yield call
     yield from (c for c in index.calls if qualified(c.func, index.aliases) in NODE_CLASSES)
 
 
@@ -95,8 +95,8 @@ def invalid_ros_name(package: Package) -> Iterator[Hit]:
     self.create_publisher(Twist, 'cmd_vel', 10)
     ```
     """
-    for module, tree, index in installed_trees(package):
-        for expr in map(name_argument, node_constructions(index, tree)):
+    for module, _, index in installed_trees(package):
+        for expr in map(name_argument, node_constructions(index)):
             problem = node_name_problem(expr.value) if isinstance(expr, ast.Constant) and \
                 isinstance(expr.value, str) else None
             if problem:

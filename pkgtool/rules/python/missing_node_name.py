@@ -42,8 +42,8 @@ def missing_node_name(package: Package) -> Iterator[Hit]:
             super().__init__('talker')
     ```
     """
-    for module, tree, index in installed_trees(package):
-        for call in node_constructions(index, tree):
+    for module, _, index in installed_trees(package):
+        for call in node_constructions(index):
             if name_argument(call) is None and not unpacks(call):
                 yield Hit(Span(module.path, call.lineno, call.col_offset + 1),
                           "The node is created without a name")
