@@ -5,7 +5,6 @@ Nothing here prints: :func:`run` returns a frozen :class:`LintResult` that the C
 
 from __future__ import annotations
 
-import multiprocessing
 import os
 import threading
 from collections.abc import Iterator, Sequence
@@ -101,8 +100,12 @@ Outcome = Union[tuple[str, list[Finding]], str]
 def _check_all(jobs: list[Job]) -> Iterator[Outcome]:
     """Each job's outcome in order; a process per core once there are enough packages."""
     workers = min(_cpus(), len(jobs) // PACKAGES_PER_WORKER)
-    forkable = "fork" in multiprocessing.get_all_start_methods() and threading.active_count() == 1
-    if workers < 2 or not forkable:
+    if workers < 2 or threading.active_count() > 1:
+        yield from map(_check, jobs)
+        return
+    import multiprocessing  # only here: importing it costs a small lint run ~10 ms
+
+    if "fork" not in multiprocessing.get_all_start_methods():
         yield from map(_check, jobs)
         return
     from concurrent.futures import ProcessPoolExecutor

@@ -8,6 +8,7 @@ dot, as REP 127/140/149 and catkin_pkg do.
 
 from __future__ import annotations
 
+import functools
 import re
 from dataclasses import dataclass
 
@@ -35,6 +36,7 @@ DEPEND_CONDITION = re.compile(r"[$A-Za-z0-9_ \t\n\r\"'<>!=()-]*")
 GROUP_CONDITION = re.compile(r"[$A-Za-z0-9_ \t\n\r<>!=()-]*")
 
 
+@functools.cache
 def _uri_reference() -> re.Pattern[str]:
     """RFC 3986 URI-reference, which libxml2 checks ``xs:anyURI`` values against."""
     pct = r"%[0-9A-Fa-f]{2}"
@@ -51,7 +53,6 @@ def _uri_reference() -> re.Pattern[str]:
     return re.compile(rf"(?:[A-Za-z][A-Za-z0-9+.\-]*:{hier}|{relative}){tail}")
 
 
-_URI_REFERENCE = _uri_reference()
 _URI_LAX = re.compile("[\x00-\x20\x7f-\U0010ffff<>\"{}|\\\\^`']")
 
 
@@ -60,7 +61,7 @@ def valid_any_uri(value: str) -> bool:
 
     Like libxml2, characters URIs must escape (spaces, non-ASCII, quotes...) count as escaped.
     """
-    return _URI_REFERENCE.fullmatch(_URI_LAX.sub("_", token(value))) is not None
+    return _uri_reference().fullmatch(_URI_LAX.sub("_", token(value))) is not None
 
 
 @dataclass(frozen=True, slots=True)
