@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING, Annotated, Optional
 
 import typer
 
-from pkgtool.cli_test import check_output, emit
+from pkgtool.cli_output import check_output, emit
 from pkgtool.commands import ExitCode
 
 if TYPE_CHECKING:

@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Annotated, Optional
 
 import typer
 
+from pkgtool.cli_output import emit
 from pkgtool.commands import ExitCode
 
 if TYPE_CHECKING:
@@ -41,17 +42,6 @@ def _fail(*messages: str, code: ExitCode) -> typer.Exit:
     for message in messages:
         typer.echo(f"pkgtool lint: {message}", err=True)
     return typer.Exit(int(code))
-
-
-def _emit(text: str, output: Optional[Path]) -> None:
-    if output is None:
-        sys.stdout.write(text)
-        return
-    try:
-        output.write_text(text, encoding="utf-8")
-    except OSError as error:
-        raise _fail(f"Cannot write `{output}`: {error.strerror or error}. Choose another "
-                    "--output file.", code=ExitCode.USAGE) from None
 
 
 def _colour(fmt: Format, output: Optional[Path]) -> bool:
@@ -138,7 +128,7 @@ def _show_rules(explain: Optional[str], fmt: Format, output: Optional[Path]) -> 
              else command.list_rules(as_json=fmt is Format.JSON))
     if shown.errors:
         raise _fail(*shown.errors, code=shown.exit_code)
-    _emit(shown.text, output)
+    emit(shown.text, output, "lint")
     raise typer.Exit(int(shown.exit_code))
 
 
@@ -147,7 +137,7 @@ def _report(result: LintResult, fmt: Format, output: Optional[Path]) -> None:
     from pkgtool.rules.registry import load_all
 
     context = ReportContext(result.packages, load_all(), _colour(fmt, output))
-    _emit(render(fmt.value, result.findings, context=context), output)
+    emit(render(fmt.value, result.findings, context=context), output, "lint")
 
 
 def register(app: typer.Typer) -> None:

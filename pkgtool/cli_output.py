@@ -1,0 +1,33 @@
+"""Where a command's report goes: stdout, or an ``--output`` file checked before any work."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+from typing import Optional
+
+import typer
+
+from pkgtool.commands import ExitCode
+
+
+def emit(text: str, output: Optional[Path], verb: str) -> None:
+    """Print ``text``, or write it to ``output``; a write error exits with the usage code."""
+    if output is None:
+        sys.stdout.write(text)
+        return
+    try:
+        output.write_text(text, encoding="utf-8")
+    except OSError as error:
+        typer.echo(f"pkgtool {verb}: Cannot write `{output}`: {error.strerror or error}. "
+                   "Choose another --output file.", err=True)
+        raise typer.Exit(int(ExitCode.USAGE)) from None
+
+
+def check_output(output: Optional[Path], verb: str) -> None:
+    """Exit with the usage code before any work when ``output``'s folder does not exist."""
+    folder = output.absolute().parent if output is not None else None
+    if folder is not None and not folder.is_dir():
+        typer.echo(f"pkgtool {verb}: Cannot write `{output}`: the folder `{folder}` does not "
+                   "exist. Create it or choose another --output file.", err=True)
+        raise typer.Exit(int(ExitCode.USAGE))
