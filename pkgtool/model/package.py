@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -80,10 +81,16 @@ def load_package(root: Path) -> Package:
     problems: list[ParseProblem] = []
     texts: dict[str, str] = {}
 
+    unreadable: set[str] = set()
+
     def text_of(relpath: str) -> str | None:
+        """The file's text, read once; an unreadable file is recorded once."""
+        if relpath in texts or relpath in unreadable:
+            return texts.get(relpath)
         result = read_text(root, relpath)
         if isinstance(result, ParseProblem):
             problems.append(result)
+            unreadable.add(relpath)
             return None
         assert isinstance(result, TextFile)
         texts[relpath] = result.text
@@ -96,7 +103,7 @@ def load_package(root: Path) -> Package:
     modules: list[PythonModule] = []
     launches: list[LaunchFile] = []
     for relpath in files:
-        if is_launch_file(relpath):
+        if is_launch_file(relpath) or _launch_by_content(relpath, text_of):
             text = text_of(relpath)
             if text is not None:
                 launch = parse_launch(relpath, text)
@@ -121,6 +128,26 @@ def load_package(root: Path) -> Package:
         suppressions.update(_suppressions(relpath, text))
     return Package(root, files, manifest, setup_py, setup_cfg, tuple(modules), tuple(launches),
                    tuple(problems), suppressions, texts, frozenset(files))
+
+
+_LAUNCH_XML = re.compile(r"\s*(?:<\?xml[^>]*\?>\s*)?(?:<!--.*?-->\s*)*<launch[\s>/]", re.S)
+_LAUNCH_YAML = re.compile(r"^launch\s*:", re.M)
+
+
+def _launch_by_content(relpath: str, text_of: Callable[[str], str | None]) -> bool:
+    """An XML or YAML file in a ``launch`` folder whose root is ``launch``, whatever its name.
+
+    ``ros2 launch`` accepts any file name; only files in a folder named ``launch`` are read
+    for this, so URDF, RViz and parameter files elsewhere cost nothing.
+    """
+    if "launch" not in relpath.split("/")[:-1] or not relpath.endswith((".xml", ".yaml", ".yml")):
+        return False
+    text = text_of(relpath)
+    if text is None:
+        return False
+    if relpath.endswith(".xml"):
+        return _LAUNCH_XML.match(text) is not None
+    return _LAUNCH_YAML.search(text) is not None
 
 
 def _parsed(problems, relpath, text_of, parse, files):  # type: ignore[no-untyped-def]

@@ -50,9 +50,9 @@ def uninstalled_launch_file(package: Package) -> Iterator[Hit]:
         return
     share = f"share/{package.name}/"
     shared = {source for target, source in installed.items() if target.startswith(share)}
-    for path in package.files:
-        if is_launch_file(path) and path.split("/")[0] not in NOT_INSTALLED_FOLDERS and \
-                path not in shared:
+    for path in sorted({*(f for f in package.files if is_launch_file(f)),
+                        *(launch.path for launch in package.launch_files)}):
+        if path.split("/")[0] not in NOT_INSTALLED_FOLDERS and path not in shared:
             name = path.rsplit("/", 1)[-1]
             yield Hit(Span(path, 1, 1), f"`{path}` is not installed under `{share[:-1]}`: "
                                         f"`ros2 launch {package.name} {name}` will not find it")
