@@ -46,8 +46,12 @@ def missing_setup_py(package: Package) -> Iterator[Hit]:
         return
     if manifest.build_type is not None:
         if manifest.build_type.value == "ament_python":
+            cmake = package.has_file("CMakeLists.txt")
             yield Hit(manifest.build_type.span,
-                      "`package.xml` declares `ament_python`, but there is no `setup.py`")
+                      "`package.xml` declares `ament_python`, but there is no `setup.py`"
+                      + (" (there is a `CMakeLists.txt`)" if cmake else ""),
+                      "Declare `<build_type>ament_cmake</build_type>` if CMake builds this "
+                      "package; otherwise add a `setup.py`" if cmake else None)
         return
     has_python = any(not m.is_test for m in package.modules)
     if has_python and not package.has_file("CMakeLists.txt"):
