@@ -13,7 +13,7 @@ CHECKED_KEYWORDS = {
     "packages": "installed modules", "package_dir": "installed modules",
     "py_modules": "installed modules", "data_files": "installed files",
     "entry_points": "console scripts", "name": "the name", "version": "the version",
-    "**": "every keyword",
+    "**": "all keywords",
 }
 """Keywords the SET, ENT and DAT rules read, and what is not checked without them."""
 
@@ -52,5 +52,5 @@ def unevaluated_setup_keyword(package: Package) -> Iterator[Hit]:
             reported.add(keyword)
             shown = "`**` keywords" if keyword == "**" else f"`{keyword}`"
             yield Hit(unresolved.span, f"{shown} could not be evaluated statically "
-                                       f"(`{unresolved.source}`): {CHECKED_KEYWORDS[keyword]} "
-                                       "are not checked")
+                                       f"(`{unresolved.source}`): checks of "
+                                       f"{CHECKED_KEYWORDS[keyword]} are skipped")
