@@ -127,6 +127,11 @@ def installed_code(package: Package) -> list[PythonModule]:
             and posixpath.dirname(m.path) in packages]
 
 
+def all_python(package: Package) -> list[PythonModule]:
+    """Every parsed Python file: the package's modules and its Python launch files."""
+    return [*package.modules, *(f.python for f in package.launch_files if f.python)]
+
+
 def test_code(package: Package) -> list[PythonModule]:
     """Test modules: under test/ or tests/, test_*.py, *_test.py, conftest.py."""
     return [m for m in package.modules if m.is_test]

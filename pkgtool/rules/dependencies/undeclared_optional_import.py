@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.dependencies._imports import ANY, declared, needs
+from pkgtool.rules.dependencies._imports import ANY, all_python, declared, needs
 from pkgtool.rules.registry import rule
 
 
@@ -42,7 +42,7 @@ def undeclared_optional_import(package: Package) -> Iterator[Hit]:
     if package.manifest is None:
         return
     available = declared(package, ANY)
-    modules = [*package.modules, *(f.python for f in package.launch_files if f.python)]
+    modules = all_python(package)
     for module in modules:
         required = {need.top for need in needs(package, module)}
         for need in needs(package, module, guarded=True):

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.knowledge.rosdep import ROS1_PACKAGES
-from pkgtool.rules.dependencies._imports import ANY, declared, needs
+from pkgtool.rules.dependencies._imports import ANY, all_python, declared, needs
 from pkgtool.rules.registry import rule
 
 
@@ -46,7 +46,7 @@ def unknown_import(package: Package) -> Iterator[Hit]:
     if package.manifest is None:
         return
     available = declared(package, ANY)
-    modules = [*package.modules, *(f.python for f in package.launch_files if f.python)]
+    modules = all_python(package)
     for module in modules:
         for need in needs(package, module):
             if need.kind != "unknown" or any(k in available for k in need.keys):

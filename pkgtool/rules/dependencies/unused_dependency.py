@@ -9,7 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.ros_names import looks_like_ros
 from pkgtool.knowledge.rosdep import ALTERNATIVE_KEYS, PYTHON_MODULE_KEYS, ROS_MODULE_PACKAGES
 from pkgtool.model.package import Package
-from pkgtool.rules.dependencies._imports import RUNTIME, declared, needs
+from pkgtool.rules.dependencies._imports import RUNTIME, all_python, declared, needs
 from pkgtool.rules.registry import rule
 
 NEVER_IMPORTED = frozenset({
@@ -66,7 +66,7 @@ def unused_dependency(package: Package) -> Iterator[Hit]:
     if build_type is None or build_type.value != "ament_python":
         return
     used: set[str] = set()
-    modules = [*package.modules, *(f.python for f in package.launch_files if f.python)]
+    modules = all_python(package)
     for module in modules:
         for need in needs(package, module, guarded=None):
             used.update(need.keys)
