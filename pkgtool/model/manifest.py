@@ -49,11 +49,6 @@ class Dependency:
         return dict(self.attributes).get("condition")
 
 
-RUNTIME_TAGS = frozenset({"depend", "exec_depend", "run_depend"})
-"""Dependency tags that make a key available when the package runs."""
-TEST_TAGS = frozenset({"test_depend"})
-
-
 @dataclass(frozen=True, slots=True)
 class Manifest:
     """The parsed package.xml. ``root`` is the whole tree for structural rules."""
@@ -76,11 +71,6 @@ class Manifest:
     def depends(self, tags: frozenset[str] | set[str]) -> frozenset[str]:
         """Names declared with any of ``tags`` (``depend`` counts for every kind)."""
         return frozenset(d.name for d in self.dependencies if d.tag in tags or d.tag == "depend")
-
-    @property
-    def runtime_depends(self) -> frozenset[str]:
-        """Keys available at run time: depend, exec_depend (and format 1's run_depend)."""
-        return self.depends(RUNTIME_TAGS)
 
 
 def parse_manifest(path: str, text: str) -> Manifest | ParseProblem:
