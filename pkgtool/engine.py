@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 from pkgtool.findings import Finding, Severity
 from pkgtool.model.package import ALL, Package
@@ -17,14 +17,13 @@ class Selection:
 
     ``select`` empty means every rule enabled by default; a selector is ``ALL``, a code, a
     family, a code prefix or a rule name (an unknown one raises
-    :class:`pkgtool.config.ConfigError`). ``severities`` overrides a rule's severity by code.
-    ``pkgtool lint`` layers configuration files with :mod:`pkgtool.config` instead.
+    :class:`pkgtool.config.ConfigError`). ``pkgtool lint`` layers configuration files (and
+    per-rule severities) with :mod:`pkgtool.config` instead.
     """
 
     select: tuple[str, ...] = ()
     ignore: tuple[str, ...] = ()
     extend_select: tuple[str, ...] = ()
-    severities: Mapping[str, Severity] = field(default_factory=dict)
 
     def rules(self) -> list[Rule]:
         """The rules this selection runs, in code order."""
