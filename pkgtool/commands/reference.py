@@ -255,15 +255,32 @@ def _build_and_test(workspace: Path, findings: dict[str, tuple[str, ...]],
                     spent: dict[str, float], jobs: int | None,
                     report: Progress) -> tuple[PackageReport, ...]:
     """Build every package in one colcon run, then test those that built."""
-    from pkgtool.grade.grader import domain_for
-    from pkgtool.grade.junit import parse_junit
-    from pkgtool.ros.colcon import colcon_build, colcon_env, colcon_test
+    from pkgtool.ros.domains import leased_domain
 
     workers = f"  parallel-workers: {jobs}\n" if jobs else ""
     (workspace / "colcon_defaults.yaml").write_text(
         f"build:\n  continue-on-error: true\n{workers}test:\n{workers or '  {}'}\n")
-    env = colcon_env(workspace, domain_id=domain_for(0))
-    names, src, build_dir = list(findings), [workspace / "src"], workspace / "build"
+    names = list(findings)
+    with leased_domain() as domain_id:
+        built, summaries = _colcon_build_test(workspace, names, domain_id, report)
+    seconds = _job_seconds(workspace / "log" / "latest_build" / "events.log")
+    tested = _job_seconds(workspace / "log" / "latest_test" / "events.log")
+    logs = workspace / "log" / "latest_build"
+    skipped = "colcon did not build it: a dependency failed, or the build timed out"
+    return tuple(PackageReport(n, findings[n], n in built, summaries.get(n),
+                               spent[n] + seconds.get(n, 0.0) + tested.get(n, 0.0),
+                               "" if n in built else _tail(logs / n / "stdout_stderr.log")
+                               or skipped) for n in names)
+
+
+def _colcon_build_test(workspace: Path, names: list[str], domain_id: int,
+                       report: Progress) -> tuple[list[str], dict[str, TestSummary]]:
+    """Build ``names`` in one colcon run and test those that built; (built, summaries)."""
+    from pkgtool.grade.junit import parse_junit
+    from pkgtool.ros.colcon import colcon_build, colcon_env, colcon_test
+
+    env = colcon_env(workspace, domain_id=domain_id)
+    src, build_dir = [workspace / "src"], workspace / "build"
     for name in names:
         report(name, "building")
     _watched(lambda: colcon_build(workspace, base_paths=src, env=env, packages=names,
@@ -273,22 +290,14 @@ def _build_and_test(workspace: Path, findings: dict[str, tuple[str, ...]],
     built = [n for n in names if _read(build_dir / n / "colcon_build.rc") == "0"]
     for name in built:
         report(name, "testing")
-    summaries = {}
-    if built:
-        _watched(lambda: colcon_test(workspace, base_paths=src, env=env, packages=built,
-                                     timeout=1800),
-                 {n: build_dir / n / "colcon_test.rc" for n in built}, report,
-                 lambda name, rc: "passed" if parse_junit(build_dir / name / "pytest.xml").ok
-                 else "failed")
-        summaries = {n: parse_junit(build_dir / n / "pytest.xml") for n in built}
-    seconds = _job_seconds(workspace / "log" / "latest_build" / "events.log")
-    tested = _job_seconds(workspace / "log" / "latest_test" / "events.log")
-    logs = workspace / "log" / "latest_build"
-    skipped = "colcon did not build it: a dependency failed, or the build timed out"
-    return tuple(PackageReport(n, findings[n], n in built, summaries.get(n),
-                               spent[n] + seconds.get(n, 0.0) + tested.get(n, 0.0),
-                               "" if n in built else _tail(logs / n / "stdout_stderr.log")
-                               or skipped) for n in names)
+    if not built:
+        return built, {}
+    _watched(lambda: colcon_test(workspace, base_paths=src, env=env, packages=built,
+                                 timeout=1800),
+             {n: build_dir / n / "colcon_test.rc" for n in built}, report,
+             lambda name, rc: "passed" if parse_junit(build_dir / name / "pytest.xml").ok
+             else "failed")
+    return built, {n: parse_junit(build_dir / n / "pytest.xml") for n in built}
 
 
 def _read(path: Path) -> str | None:

@@ -80,15 +80,15 @@ def _targets(folder: Path) -> tuple[list[SourcePackage], list[SourcePackage]]:
 def _build_and_test(targets: Sequence[SourcePackage], available: Sequence[SourcePackage],
                     timeout: float, test_timeout: float | None,
                     mode: str | None) -> tuple[tuple[PackageTests, ...], str]:
-    from pkgtool.grade.grader import domain_for
     from pkgtool.grade.runner import WorkspaceRunner
     from pkgtool.grade.sandbox import Limits, sandbox
     from pkgtool.grade.sources import copy_packages
+    from pkgtool.ros.domains import leased_domain
 
     needed = {p.name: p for t in targets for p in with_dependencies(t, available)}
-    with sandbox(Limits(timeout=timeout), mode=mode) as box:
+    with sandbox(Limits(timeout=timeout), mode=mode) as box, leased_domain() as domain_id:
         copy_packages(needed.values(), box.workspace / "src")
-        runner = WorkspaceRunner(box, domain_id=domain_for(0))
+        runner = WorkspaceRunner(box, domain_id=domain_id)
         names = [t.name for t in targets]
         build = runner.build(names)
         if not build.ok:

@@ -8,7 +8,7 @@ from concurrent.futures import Future, ProcessPoolExecutor, as_completed
 from pathlib import Path
 
 from pkgtool.grade.extract import is_archive
-from pkgtool.grade.grader import domain_for, grade_submission, not_graded
+from pkgtool.grade.grader import grade_submission, not_graded
 from pkgtool.grade.results import SubmissionResult
 from pkgtool.grade.rubric import Rubric
 
@@ -48,16 +48,14 @@ def grade_all(items: Sequence[Item], rubric: Rubric, *, jobs: int = 1, mode: str
     if jobs <= 1 or len(items) <= 1:
         results = []
         for slot, (label, path) in enumerate(items):
-            results.append(grade_submission(path, rubric, label=label, mode=mode,
-                                            domain_id=domain_for(slot)))
+            results.append(grade_submission(path, rubric, label=label, mode=mode))
             notify(results[-1])
         return results
     done: dict[int, SubmissionResult] = {}
     context = multiprocessing.get_context("spawn")
     with ProcessPoolExecutor(max_workers=jobs, mp_context=context) as pool:
         futures: dict[Future[SubmissionResult], int] = {
-            pool.submit(grade_submission, path, rubric, label=label, mode=mode,
-                        domain_id=domain_for(slot)): slot
+            pool.submit(grade_submission, path, rubric, label=label, mode=mode): slot
             for slot, (label, path) in enumerate(items)}
         for future in as_completed(futures):
             slot = futures[future]

@@ -5,6 +5,7 @@ from __future__ import annotations
 import os
 import time
 import traceback
+from contextlib import AbstractContextManager, nullcontext
 from pathlib import Path
 
 from pkgtool.grade.criteria import Job, evaluate_all
@@ -16,26 +17,23 @@ from pkgtool.grade.sandbox import Sandbox, sandbox
 from pkgtool.grade.sources import (choose_target, copy_packages, find_packages, tree_digest,
                                    with_dependencies)
 from pkgtool.model.package import load_package
-
-
-def domain_for(slot: int) -> int:
-    """A ROS domain id (1-101) for job ``slot`` of this process: concurrent slots differ."""
-    return 1 + (os.getpid() + slot) % 101
+from pkgtool.ros.domains import leased_domain
 
 
 def grade_submission(path: Path, rubric: Rubric, *, label: str | None = None,
                      domain_id: int | None = None, mode: str | None = None) -> SubmissionResult:
     """Grade ``path`` (package, workspace or archive); never raises for a bad submission.
 
-    ``domain_id`` is the job's ROS domain (default: :func:`domain_for` slot 0).
+    ``domain_id`` is the job's ROS domain (default: one leased for the job from
+    :mod:`pkgtool.ros.domains`).
     """
     label = label or path.name
     start = time.monotonic()
     before = _digest(path)
     package, error, criteria, isolation = None, None, (), ""
     try:
-        with sandbox(rubric.limits, mode=mode) as box:
-            job = _prepare(path, rubric, box, domain_id or domain_for(0))
+        with sandbox(rubric.limits, mode=mode) as box, _domain(domain_id) as domain:
+            job = _prepare(path, rubric, box, domain)
             package = job.name
             criteria = evaluate_all(job)
             isolation = box.describe()
@@ -51,6 +49,11 @@ def grade_submission(path: Path, rubric: Rubric, *, label: str | None = None,
     return SubmissionResult(label, str(path), round(sum(c.score for c in criteria), 2),
                             rubric.max_score, criteria, package, error, isolation,
                             round(time.monotonic() - start, 2), unchanged)
+
+
+def _domain(given: int | None) -> AbstractContextManager[int]:
+    """The job's ROS domain: ``given``, else one leased for the job."""
+    return nullcontext(given) if given is not None else leased_domain()
 
 
 def not_graded(rubric: Rubric, error: str) -> tuple[CriterionResult, ...]:

@@ -1,37 +1,35 @@
 """pytest fixtures giving each test an isolated, in-process ROS 2 context.
 
 Load with ``pytest_plugins = ["pkgtool.testing.ros_fixtures"]``. Each test gets its own
-``rclpy`` context with discovery OFF, its own domain id and a temporary log folder, shut down
-even when the test fails. Nothing here talks to the real network.
+``rclpy`` context with discovery OFF, its own leased domain id and a temporary log folder, shut
+down even when the test fails. Nothing here talks to the real network.
 """
 
 from __future__ import annotations
 
-import itertools
-import os
 from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
 
-_domain_ids = itertools.cycle(range(1, 102))
 
+@pytest.fixture
+def ros_domain() -> Iterator[int]:
+    """A ROS domain id leased for this test alone: no other process on the machine uses it."""
+    from pkgtool.ros.domains import leased_domain
 
-def next_domain_id() -> int:
-    """A domain id (1-101) distinct for consecutive tests, offset per pytest-xdist worker."""
-    worker = os.environ.get("PYTEST_XDIST_WORKER", "gw0").removeprefix("gw")
-    offset = int(worker) * 17 if worker.isdigit() else 0
-    return (next(_domain_ids) + offset - 1) % 101 + 1
+    with leased_domain() as domain_id:
+        yield domain_id
 
 
 @pytest.fixture
-def ros_env(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> dict[str, str]:
+def ros_env(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, ros_domain: int) -> dict[str, str]:
     """Set the isolation variables in this process for the test's duration and return them."""
     from pkgtool.ros.isolation import isolated_ros_env
 
     log_dir = tmp_path / "ros_log"
     log_dir.mkdir()
-    env = isolated_ros_env(domain_id=next_domain_id(), log_dir=str(log_dir), discovery_range="OFF",
+    env = isolated_ros_env(domain_id=ros_domain, log_dir=str(log_dir), discovery_range="OFF",
                            base={})
     for key, value in env.items():
         monkeypatch.setenv(key, value)

@@ -77,8 +77,8 @@ def workspace(tmp_path: Path) -> Path:
     return tmp_path
 
 
-def test_build_installs_a_runnable_console_script(workspace: Path) -> None:
-    env = colcon_env(workspace, domain_id=61)
+def test_build_installs_a_runnable_console_script(workspace: Path, ros_domain: int) -> None:
+    env = colcon_env(workspace, domain_id=ros_domain)
     build = colcon_build(workspace, base_paths=[workspace / "src"], env=env)
     assert build.ok, build.output
     script = workspace / "install" / "tiny_pkg" / "lib" / "tiny_pkg" / "hello"
@@ -91,8 +91,9 @@ def test_build_installs_a_runnable_console_script(workspace: Path) -> None:
     assert not list((workspace / "src" / "tiny_pkg").glob("*.egg-info")), "source tree was written"
 
 
-def test_colcon_test_really_runs_pytest_and_fails_on_a_failing_test(workspace: Path) -> None:
-    env = colcon_env(workspace, domain_id=62)
+def test_colcon_test_really_runs_pytest_and_fails_on_a_failing_test(
+        workspace: Path, ros_domain: int) -> None:
+    env = colcon_env(workspace, domain_id=ros_domain)
     assert colcon_build(workspace, base_paths=[workspace / "src"], env=env).ok
     passing = colcon_test(workspace, base_paths=[workspace / "src"], env=env)
     assert passing.ok, passing.output

@@ -18,7 +18,6 @@ import pytest
 
 from pkgtool.commands.create import run
 from pkgtool.ros.colcon import colcon_build, colcon_env, colcon_test
-from pkgtool.testing.ros_fixtures import next_domain_id
 from tests.create.conftest import ALL_KINDS, OTHER_TYPES, request
 
 pytestmark = [pytest.mark.ros, pytest.mark.colcon, pytest.mark.slow]
@@ -30,11 +29,12 @@ PACKAGES = {
 }
 
 
-def test_generated_packages_build_run_and_pass_colcon_test(tmp_path: Path) -> None:
+def test_generated_packages_build_run_and_pass_colcon_test(tmp_path: Path,
+                                                           ros_domain: int) -> None:
     """One test, not three sharing a fixture: xdist could build the workspace once per worker."""
     for name, values in PACKAGES.items():
         assert not run(request(tmp_path / "src", name, **values)).error
-    env = colcon_env(tmp_path, domain_id=next_domain_id())
+    env = colcon_env(tmp_path, domain_id=ros_domain)
     build = colcon_build(tmp_path, base_paths=[tmp_path / "src"], env=env, timeout=300)
     assert build.ok, build.output
     _check_console_scripts(tmp_path)
