@@ -19,7 +19,7 @@ from typing import TYPE_CHECKING
 from pkgtool.commands import ExitCode
 
 if TYPE_CHECKING:
-    from pkgtool.grade.junit import TestSummary
+    from pkgtool.testresults import TestSummary
 
 __all__ = ["Entry", "GenerateResult", "ListResult", "PackageReport", "RequestError",
            "TestRunResult", "catalog", "generate", "list_packages", "run_tests"]
@@ -276,7 +276,7 @@ def _build_and_test(workspace: Path, findings: dict[str, tuple[str, ...]],
 def _colcon_build_test(workspace: Path, names: list[str], domain_id: int,
                        report: Progress) -> tuple[list[str], dict[str, TestSummary]]:
     """Build ``names`` in one colcon run and test those that built; (built, summaries)."""
-    from pkgtool.grade.junit import parse_junit
+    from pkgtool.testresults import parse_junit
     from pkgtool.ros.colcon import colcon_build, colcon_env, colcon_test
 
     env = colcon_env(workspace, domain_id=domain_id)

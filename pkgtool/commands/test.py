@@ -13,7 +13,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from pkgtool.commands import ExitCode
-from pkgtool.grade.junit import TestSummary
+from pkgtool.testresults import TestSummary
 from pkgtool.grade.sources import SourcePackage, find_packages, with_dependencies
 from pkgtool.workspace import is_package
 

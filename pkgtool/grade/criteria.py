@@ -8,7 +8,7 @@ from pathlib import Path
 
 from pkgtool.engine import Selection, check_package
 from pkgtool.findings import Severity
-from pkgtool.grade.junit import TestSummary
+from pkgtool.testresults import TestSummary
 from pkgtool.grade.results import CriterionResult
 from pkgtool.grade.rubric import Criterion, Rubric
 from pkgtool.grade.runner import WorkspaceRunner, first_error

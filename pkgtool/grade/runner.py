@@ -17,7 +17,7 @@ import sysconfig
 from collections.abc import Sequence
 from pathlib import Path
 
-from pkgtool.grade.junit import TestSummary, parse_junit
+from pkgtool.testresults import TestSummary, parse_junit
 from pkgtool.grade.sandbox import Sandbox
 from pkgtool.ros.colcon import ColconRun, colcon_build, colcon_env, colcon_test
 

@@ -9,7 +9,7 @@ import pytest
 
 from pkgtool.commands import ExitCode
 from pkgtool.commands import test as command
-from pkgtool.grade import junit
+from pkgtool import testresults as junit
 from pkgtool.grade.report.package_tests import render
 from pkgtool.style.pydocstyle_runner import run_pydocstyle
 from tests.grade import synthetic
