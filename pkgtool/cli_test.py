@@ -45,7 +45,7 @@ def test(
     for message in result.errors:
         typer.echo(f"pkgtool test: {message}", err=True)
     if result.packages:
-        emit(render(fmt.value, result), output, "test")
+        emit(render(fmt.value, result.packages, isolation=result.isolation), output, "test")
     raise typer.Exit(int(result.exit_code))
 
 

@@ -107,3 +107,20 @@ def _case(element) -> TestCase:  # type: ignore[no-untyped-def]
                 message += f": {raised[-1]}" if raised else ""
             return TestCase(full, outcome, seconds, message[:500], text[-4000:])
     return TestCase(full, "passed", seconds)
+
+
+@dataclass(frozen=True, slots=True)
+class PackageTests:
+    """One package's build and test outcome; ``summary`` is None when the build failed."""
+
+    name: str
+    built: bool
+    summary: TestSummary | None
+    output: str = ""
+    limit: str | None = None
+    seconds: float = 0.0
+
+    @property
+    def ok(self) -> bool:
+        """True when it built, tests ran, and all of them passed."""
+        return self.built and self.summary is not None and self.summary.ok

@@ -13,28 +13,11 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from pkgtool.commands import ExitCode
-from pkgtool.testresults import TestSummary
 from pkgtool.grade.sources import SourcePackage, find_packages, with_dependencies
+from pkgtool.testresults import PackageTests
 from pkgtool.workspace import is_package
 
-__all__ = ["PackageTests", "TestResult", "run"]
-
-
-@dataclass(frozen=True, slots=True)
-class PackageTests:
-    """One package's build and test outcome; ``summary`` is None when the build failed."""
-
-    name: str
-    built: bool
-    summary: TestSummary | None
-    output: str = ""
-    limit: str | None = None
-    seconds: float = 0.0
-
-    @property
-    def ok(self) -> bool:
-        """True when it built, tests ran, and all of them passed."""
-        return self.built and self.summary is not None and self.summary.ok
+__all__ = ["TestResult", "run"]
 
 
 @dataclass(frozen=True, slots=True)

@@ -7,8 +7,6 @@ from pathlib import Path
 
 import pytest
 
-from pkgtool.commands import ExitCode
-from pkgtool.commands import test as command
 from pkgtool import testresults as junit
 from pkgtool.grade.report.package_tests import render
 from pkgtool.style.pydocstyle_runner import run_pydocstyle
@@ -34,13 +32,12 @@ def test_an_unparsable_file_leaves_stderr_clean(tmp_path: Path,
 def test_test_reports_count_outcomes_and_name_the_first_build_error() -> None:
     summary = junit.TestSummary(tuple(junit.TestCase(f"t.test_{outcome}", outcome, 0.1)
                                       for outcome in ("passed", "failed", "error", "skipped")))
-    result = command.TestResult(ExitCode.FINDINGS, (
-        command.PackageTests("good", True, summary),
-        command.PackageTests("bad", False, None, BUILD_LOG)))
-    suites = ET.fromstring(render("junit", result)).findall("testsuite")
+    packages = (junit.PackageTests("good", True, summary),
+                junit.PackageTests("bad", False, None, BUILD_LOG))
+    suites = ET.fromstring(render("junit", packages, isolation="")).findall("testsuite")
     assert [(s.get("tests"), s.get("failures"), s.get("errors"), s.get("skipped"))
             for s in suites] == [("4", "1", "1", "1"), ("1", "0", "1", "0")]
-    text = render("text", result)
+    text = render("text", packages, isolation="")
     assert "bad: first error: SyntaxError: invalid syntax. Perhaps you forgot a comma?" in text
 
 

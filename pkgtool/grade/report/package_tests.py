@@ -4,24 +4,25 @@ from __future__ import annotations
 
 import json
 import xml.etree.ElementTree as ET
+from collections.abc import Sequence
 from dataclasses import asdict
 
 from pkgtool import __version__
-from pkgtool.commands.test import TestResult
 from pkgtool.grade.report import SCHEMA_VERSION
 from pkgtool.grade.runner import first_error
+from pkgtool.testresults import PackageTests
 
 FORMATS = ("text", "json", "junit")
 
 
-def render(fmt: str, result: TestResult) -> str:
-    """``result`` in ``fmt`` (one of FORMATS)."""
-    return {"text": _text, "json": _json, "junit": _junit}[fmt](result)
+def render(fmt: str, packages: Sequence[PackageTests], *, isolation: str) -> str:
+    """The tested ``packages`` in ``fmt`` (one of FORMATS); ``isolation`` is the sandbox used."""
+    return {"text": _text, "json": _json, "junit": _junit}[fmt](packages, isolation)
 
 
-def _text(result: TestResult) -> str:
+def _text(packages: Sequence[PackageTests], isolation: str) -> str:
     lines = []
-    for package in result.packages:
+    for package in packages:
         summary = package.summary
         if summary is None:
             limit = f" ({package.limit})" if package.limit else ""
@@ -38,29 +39,30 @@ def _text(result: TestResult) -> str:
         limit = f"; {package.limit}" if package.limit else ""
         lines.append(f"{package.name}: {verdict}: {summary.describe()}{limit} "
                      f"({package.seconds:.1f} s)")
-    lines.append(f"sandbox: {result.isolation}")
+    lines.append(f"sandbox: {isolation}")
     return "\n".join(lines) + "\n"
 
 
-def _json(result: TestResult) -> str:
-    packages = []
-    for package in result.packages:
+def _json(packages: Sequence[PackageTests], isolation: str) -> str:
+    entries = []
+    for package in packages:
         entry = {"name": package.name, "ok": package.ok, "built": package.built,
                  "limit": package.limit, "seconds": round(package.seconds, 2),
                  "counts": package.summary.counts if package.summary else None,
                  "problem": package.summary.problem if package.summary else "build failed",
                  "tests": [asdict(c) for c in package.summary.cases] if package.summary else [],
                  "output": package.output if not package.ok else ""}
-        packages.append(entry)
+        entries.append(entry)
     document = {"schema_version": SCHEMA_VERSION, "tool": "pkgtool", "version": __version__,
-                "ok": result.exit_code == 0, "isolation": result.isolation,
-                "packages": packages}
+                "ok": bool(packages) and all(p.ok for p in packages), "isolation": isolation,
+                "packages": entries}
     return json.dumps(document, indent=2) + "\n"
 
 
-def _junit(result: TestResult) -> str:
+def _junit(packages: Sequence[PackageTests], isolation: str) -> str:
+    del isolation  # JUnit has no place for it
     root = ET.Element("testsuites", name="pkgtool test")
-    for package in result.packages:
+    for package in packages:
         cases = package.summary.cases if package.summary else ()
         counts = package.summary.counts if package.summary else {}
         suite = ET.SubElement(root, "testsuite", name=package.name, tests=str(len(cases) or 1),
