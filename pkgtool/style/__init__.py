@@ -1,1 +1,1 @@
-"""ament's style checks (flake8, pydocstyle, copyright headers) run in-process, without ament."""
+"""ament's style checks (the STY and CPY rules) as plain messages, for packages' linter tests."""

@@ -9,7 +9,7 @@ import pytest
 
 from pkgtool import testresults as junit
 from pkgtool.grade.report.package_tests import render
-from pkgtool.style.pydocstyle_runner import run_pydocstyle
+from pkgtool.ament.pydocstyle_runner import run_pydocstyle
 from tests.grade import synthetic
 from tests.helpers import run_cli
 

@@ -9,8 +9,8 @@ from pathlib import Path
 
 import pytest
 
-from pkgtool.style.flake8_runner import run_flake8
-from pkgtool.style.pydocstyle_runner import run_pydocstyle
+from pkgtool.ament.flake8_runner import run_flake8
+from pkgtool.ament.pydocstyle_runner import run_pydocstyle
 from tests.helpers import write_tree
 
 CORPUS = {

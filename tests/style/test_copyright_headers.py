@@ -8,7 +8,7 @@ import pytest
 
 from pkgtool.knowledge.licenses import spdx_ids_for
 from pkgtool.style.api import copyright_errors
-from pkgtool.style.copyright import read_header
+from pkgtool.ament.copyright import read_header
 from tests.helpers import MINIMAL_MANIFEST, write_tree
 
 APACHE = """# Copyright 2015 Open Source Robotics Foundation, Inc.

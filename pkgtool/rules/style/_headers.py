@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.model.package import Package
 from pkgtool.rules.style._run import readable_sources
-from pkgtool.style.copyright import Header, read_header
+from pkgtool.ament.copyright import Header, read_header
 
 
 def headers(package: Package) -> Iterator[tuple[str, Header]]:

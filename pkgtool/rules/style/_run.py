@@ -8,8 +8,8 @@ from pathlib import Path
 from pkgtool.findings import Hit
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.style.ament_settings import style_checked_files
-from pkgtool.style.flake8_runner import StyleToolMissing, StyleViolation
+from pkgtool.ament.settings import style_checked_files
+from pkgtool.ament.flake8_runner import StyleToolMissing, StyleViolation
 
 Runner = Callable[[Path, list[str]], list[StyleViolation]]
 

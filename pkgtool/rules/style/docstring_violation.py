@@ -8,7 +8,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
 from pkgtool.rules.style._run import tool_hits
-from pkgtool.style.pydocstyle_runner import run_pydocstyle
+from pkgtool.ament.pydocstyle_runner import run_pydocstyle
 
 
 @rule("STY002", "docstring-violation", Severity.ERROR, default_enabled=False,

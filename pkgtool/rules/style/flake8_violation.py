@@ -8,7 +8,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
 from pkgtool.rules.style._run import tool_hits
-from pkgtool.style.flake8_runner import run_flake8
+from pkgtool.ament.flake8_runner import run_flake8
 
 
 @rule("STY001", "flake8-violation", Severity.ERROR, default_enabled=False,

@@ -7,7 +7,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from pkgtool.style.ament_settings import AMENT_FLAKE8_ARGS
+from pkgtool.ament.settings import AMENT_FLAKE8_ARGS
 
 
 @dataclass(frozen=True, slots=True)

@@ -5,8 +5,8 @@ from __future__ import annotations
 import logging
 from pathlib import Path
 
-from pkgtool.style.ament_settings import AMENT_DOCSTRING_IGNORE
-from pkgtool.style.flake8_runner import StyleToolMissing, StyleViolation
+from pkgtool.ament.settings import AMENT_DOCSTRING_IGNORE
+from pkgtool.ament.flake8_runner import StyleToolMissing, StyleViolation
 
 logging.getLogger("pydocstyle").addHandler(logging.NullHandler())
 """pydocstyle logs a file it cannot parse to stderr; SYN001 reports that file instead."""
