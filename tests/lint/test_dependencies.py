@@ -7,7 +7,7 @@ from pathlib import Path
 import pytest
 
 from pkgtool.model.package import Package
-from pkgtool.rules.dependencies._imports import classify, installed_code, needs, own_modules
+from pkgtool.rules.imports import classify, installed_code, needs, own_modules
 from tests.helpers import MINIMAL_MANIFEST, codes, findings, make_package
 
 SETUP = """

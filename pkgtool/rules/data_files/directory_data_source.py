@@ -9,7 +9,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.setup_eval.tree import normalize
 from pkgtool.rules.data_files.common import is_folder
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup.common import checked_setup
+from pkgtool.rules.setup_values import checked_setup
 
 
 @rule("DAT007", "directory-data-source", Severity.ERROR,

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup.common import checked_setup
+from pkgtool.rules.setup_values import checked_setup
 
 
 @rule("DAT002", "empty-data-glob", Severity.WARNING,

@@ -10,7 +10,7 @@ from pkgtool.model.launch import is_launch_file
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup.common import checked_setup
+from pkgtool.rules.setup_values import checked_setup
 
 NOT_INSTALLED_FOLDERS = frozenset({"test", "tests", "doc", "docs"})
 """Top-level folders whose launch files are test or documentation material."""

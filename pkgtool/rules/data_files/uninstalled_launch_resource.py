@@ -9,7 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import installed_data
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup.common import checked_setup
+from pkgtool.rules.setup_values import checked_setup
 
 
 @rule("DAT006", "uninstalled-launch-resource", Severity.WARNING,

@@ -10,7 +10,7 @@ from pkgtool.model.installed import keyword_known
 from pkgtool.model.package import Package
 from pkgtool.rules.data_files.common import MARKER_FOLDER, entries_to, source_names
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup.common import checked_setup
+from pkgtool.rules.setup_values import checked_setup
 
 
 @rule("DAT003", "unregistered-package", Severity.ERROR,

@@ -6,8 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.dependencies._imports import (BUILD_ONLY, RUNTIME, declared, installed_code,
-                                                 needs)
+from pkgtool.rules.imports import BUILD_ONLY, RUNTIME, declared, installed_code, needs
 from pkgtool.rules.registry import rule
 
 

@@ -9,7 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdep import PYTHON_MODULE_KEYS, stdlib_modules
 from pkgtool.model.installed import installed_modules
 from pkgtool.model.package import Package
-from pkgtool.rules.dependencies._imports import installed_code
+from pkgtool.rules.imports import installed_code
 from pkgtool.rules.registry import rule
 
 

@@ -7,8 +7,8 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.package import Package
-from pkgtool.rules.dependencies._imports import (BUILD_ONLY, RUNTIME, TEST, Need, declared,
-                                                 installed_code, misnamed, needs)
+from pkgtool.rules.imports import (BUILD_ONLY, RUNTIME, TEST, Need, declared,
+                                   installed_code, misnamed, needs)
 from pkgtool.rules.registry import rule
 
 

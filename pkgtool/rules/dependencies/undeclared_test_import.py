@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.dependencies._imports import ANY, declared, needs, test_code
+from pkgtool.rules.imports import ANY, declared, needs, test_code
 from pkgtool.rules.registry import rule
 
 

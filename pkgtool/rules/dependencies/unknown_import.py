@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.knowledge.rosdep import ROS1_PACKAGES
-from pkgtool.rules.dependencies._imports import ANY, all_python, declared, needs
+from pkgtool.rules.imports import ANY, all_python, declared, needs
 from pkgtool.rules.registry import rule
 
 

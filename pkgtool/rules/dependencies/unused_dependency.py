@@ -9,7 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.ros_names import looks_like_ros
 from pkgtool.knowledge.rosdep import ALTERNATIVE_KEYS, PYTHON_MODULE_KEYS, ROS_MODULE_PACKAGES
 from pkgtool.model.package import Package
-from pkgtool.rules.dependencies._imports import RUNTIME, all_python, declared, needs
+from pkgtool.rules.imports import RUNTIME, all_python, declared, needs
 from pkgtool.rules.registry import rule
 
 NEVER_IMPORTED = frozenset({

@@ -7,9 +7,9 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import installed_modules, why_not_installed
 from pkgtool.model.package import Package
-from pkgtool.rules.entry_points.malformed_console_script import SCRIPT_GROUPS, problem
+from pkgtool.rules.entry_points._scripts import SCRIPT_GROUPS, problem
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup.common import checked_setup
+from pkgtool.rules.setup_values import checked_setup
 
 
 def _own_roots(package: Package, modules: dict[str, str]) -> set[str]:

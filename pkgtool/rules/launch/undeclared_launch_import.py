@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.ros_names import LAUNCH_RUNTIME
 from pkgtool.model.package import Package
-from pkgtool.rules.dependencies._imports import launch_keys, needs
+from pkgtool.rules.imports import launch_keys, needs
 from pkgtool.rules.registry import rule
 
 

@@ -1,4 +1,4 @@
-"""What PYC007 and PYC008 share: calls of rclpy's Node API and their arguments.
+"""What PYC007-PYC009 share: calls of rclpy's Node API and their arguments, Node constructions.
 
 Only modules that import rclpy and do not define a method of the same name themselves are
 looked at, so a project's own ``create_publisher`` wrapper is never judged by rclpy's signature.
@@ -11,7 +11,7 @@ from collections.abc import Iterator
 
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
-from pkgtool.rules.python._tree import Index, installed_trees
+from pkgtool.rules.python._tree import Index, installed_trees, qualified
 
 PARAMETERS = {
     "create_publisher": ("msg_type", "topic", "qos_profile"),
@@ -21,6 +21,9 @@ PARAMETERS = {
     "create_client": ("srv_type", "srv_name"),
 }
 """Required parameters of rclpy ``Node`` methods (Jazzy), in order."""
+NODE_CLASSES = frozenset({"rclpy.node.Node", "rclpy.lifecycle.LifecycleNode",
+                          "rclpy.lifecycle.Node", "rclpy.create_node"})
+"""What constructs a node: rclpy's node classes and ``create_node``."""
 
 
 def node_api_calls(package: Package) -> Iterator[tuple[PythonModule, ast.Call, str, Index]]:
@@ -50,3 +53,23 @@ def unpacks(call: ast.Call) -> bool:
     """True when the call passes ``*args`` or ``**kwargs`` (its arguments are unknown)."""
     return any(isinstance(a, ast.Starred) for a in call.args) or \
         any(k.arg is None for k in call.keywords)
+
+
+def name_argument(call: ast.Call) -> ast.expr | None:
+    """The node name given to a Node constructor call, if any."""
+    keyword = next((k.value for k in call.keywords if k.arg == "node_name"), None)
+    first = call.args[0] if call.args and not isinstance(call.args[0], ast.Starred) else None
+    return keyword or first
+
+
+def node_constructions(index: Index) -> Iterator[ast.Call]:
+    """``super().__init__(...)`` calls in Node subclasses, and Node/create_node calls."""
+    node_classes = {id(c) for c in index.classes
+                    if any(qualified(b, index.aliases) in NODE_CLASSES for b in c.bases)}
+    for call in index.calls:
+        if isinstance(call.func, ast.Attribute) and call.func.attr == "__init__" and \
+                isinstance(call.func.value, ast.Call) and \
+                getattr(call.func.value.func, "id", "") == "super" and \
+                id(index.enclosing_class(call)) in node_classes:
+            yield call
+    yield from (c for c in index.calls if qualified(c.func, index.aliases) in NODE_CLASSES)

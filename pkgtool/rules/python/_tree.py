@@ -16,7 +16,7 @@ from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import ParseProblem
-from pkgtool.rules.dependencies._imports import installed_code
+from pkgtool.rules.imports import installed_code
 
 FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
 

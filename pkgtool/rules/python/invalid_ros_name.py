@@ -9,12 +9,11 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._node_api import PARAMETERS, argument, node_api_calls
-from pkgtool.rules.python._tree import Index, installed_trees, qualified
+from pkgtool.rules.python._node_api import (PARAMETERS, argument, name_argument,
+                                            node_api_calls, node_constructions)
+from pkgtool.rules.python._tree import installed_trees
 from pkgtool.rules.registry import rule
 
-NODE_CLASSES = frozenset({"rclpy.node.Node", "rclpy.lifecycle.LifecycleNode",
-                          "rclpy.lifecycle.Node", "rclpy.create_node"})
 _NODE_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
 _TOPIC_CHARS = re.compile(r"[A-Za-z0-9_/~]*")
 
@@ -45,26 +44,6 @@ def topic_name_problem(name: str) -> str | None:
     if any(part[:1].isdigit() for part in name.split("/")):
         return "a part starts with a digit"
     return None
-
-
-def name_argument(call: ast.Call) -> ast.expr | None:
-    """The node name given to a Node constructor call, if any."""
-    keyword = next((k.value for k in call.keywords if k.arg == "node_name"), None)
-    first = call.args[0] if call.args and not isinstance(call.args[0], ast.Starred) else None
-    return keyword or first
-
-
-def node_constructions(index: Index) -> Iterator[ast.Call]:
-    """``super().__init__(...)`` calls in Node subclasses, and Node/create_node calls."""
-    node_classes = {id(c) for c in index.classes
-                    if any(qualified(b, index.aliases) in NODE_CLASSES for b in c.bases)}
-    for call in index.calls:
-        if isinstance(call.func, ast.Attribute) and call.func.attr == "__init__" and \
-                isinstance(call.func.value, ast.Call) and \
-                getattr(call.func.value.func, "id", "") == "super" and \
-                id(index.enclosing_class(call)) in node_classes:
-            yield call
-    yield from (c for c in index.calls if qualified(c.func, index.aliases) in NODE_CLASSES)
 
 
 @rule("PYC008", "invalid-ros-name", Severity.ERROR,

@@ -8,7 +8,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import keyword_known, package_folder
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup.common import checked_setup
+from pkgtool.rules.setup_values import checked_setup
 
 
 @rule("SET011", "missing-package-folder", Severity.ERROR,

@@ -9,7 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.licenses import spdx_ids_for
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup.common import checked_setup, same_text, text_of
+from pkgtool.rules.setup_values import checked_setup, same_text, text_of
 
 _SEPARATORS = re.compile(r"\s+(?:or|and)\s+|\s*[,;/]\s*", re.IGNORECASE)
 

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup.common import checked_setup, same_text, text_of
+from pkgtool.rules.setup_values import checked_setup, same_text, text_of
 
 
 @rule("SET006", "setup-maintainer-mismatch", Severity.INFO,

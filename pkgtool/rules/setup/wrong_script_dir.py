@@ -10,7 +10,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.setup_cfg import CfgOption
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup.common import checked_setup
+from pkgtool.rules.setup_values import checked_setup
 
 SCRIPT_OPTIONS = (("develop", "script_dir"), ("install", "install_scripts"))
 

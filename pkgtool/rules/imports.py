@@ -1,4 +1,4 @@
-"""What the DEP and LCH rules share: which imports need a package.xml key, and which are declared.
+"""What the DEP, LCH and PYC rules share: which imports need a package.xml key, which are declared.
 
 An absolute import needs a key unless it is standard library, one of the package's own
 modules, or a module next to the importing file. Third-party names map to rosdep keys through
@@ -22,7 +22,7 @@ from pkgtool.model.manifest import Dependency
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
-from pkgtool.rules.dependencies._optional import optional_modules
+from pkgtool.rules.optional_imports import optional_modules
 
 RUNTIME = frozenset({"depend", "exec_depend", "run_depend"})
 BUILD_ONLY = frozenset({"build_depend", "build_export_depend", "buildtool_depend",
