@@ -80,7 +80,10 @@ def _run(command, submissions: list[str], rubric: str, batch: bool,  # type: ign
          jobs: int, fmt: Format) -> GradeResult:
     """Grade, with a progress bar on an interactive stderr when there are several."""
     from rich.console import Console
+    from rich.markup import escape
     from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn
+
+    from pkgtool.report.untrusted import line
 
     if fmt is Format.GRADESCOPE and (batch or len(submissions) != 1):
         raise _fail("The gradescope format takes exactly one submission (not --batch).")
@@ -92,7 +95,7 @@ def _run(command, submissions: list[str], rubric: str, batch: bool,  # type: ign
         return command.run(
             submissions, rubric=rubric, batch=batch, jobs=jobs,
             on_start=lambda total: progress.update(task, total=total),
-            on_done=lambda r: progress.update(task, advance=1, description=r.label))
+            on_done=lambda r: progress.update(task, advance=1, description=escape(line(r.label))))
 
 
 def register(app: typer.Typer) -> None:

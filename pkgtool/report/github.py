@@ -6,13 +6,14 @@ from collections.abc import Sequence
 
 from pkgtool.findings import Finding, Severity
 from pkgtool.report import ReportContext, display_path
+from pkgtool.report.untrusted import block
 
 COMMANDS = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "notice"}
 
 
 def _data(text: str) -> str:
-    """Escape a command's message (GitHub's ``escapeData``)."""
-    return text.replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A")
+    """Escape a command's message (GitHub's ``escapeData``) once it is made safe."""
+    return block(text).replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A")
 
 
 def _property(text: str) -> str:

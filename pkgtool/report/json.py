@@ -1,16 +1,42 @@
-"""Machine output: a versioned JSON document whose keys a contract test pins."""
+"""JSON: the one writer of lint, test and grade (and of SARIF and Gradescope), and lint's report.
+
+pkgtool's own JSON documents share one schema (docs/json.md): the keys of :func:`document`,
+then the command's own keys. Every string passes through :func:`pkgtool.report.untrusted.block`.
+"""
 
 from __future__ import annotations
 
 import json
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 
 from pkgtool import __version__
 from pkgtool.findings import Finding
 from pkgtool.report import ReportContext, counts, display_path
+from pkgtool.report.untrusted import block
 
 SCHEMA_VERSION = 1
 """Bumped when a key is renamed or removed (adding keys keeps the version)."""
+
+
+def _safe(value: object) -> object:
+    if isinstance(value, str):
+        return block(value)
+    if isinstance(value, Mapping):
+        return {_safe(k): _safe(v) for k, v in value.items()}
+    if isinstance(value, (list, tuple)):
+        return [_safe(v) for v in value]
+    return value
+
+
+def dumps(value: object) -> str:
+    """``value`` as indented JSON, every string in it made safe."""
+    return json.dumps(_safe(value), indent=2) + "\n"
+
+
+def document(command: str, body: Mapping[str, object]) -> str:
+    """A pkgtool JSON document: ``schema_version``, ``tool``, ``version``, ``command``, body."""
+    return dumps({"schema_version": SCHEMA_VERSION, "tool": "pkgtool", "version": __version__,
+                  "command": command, **body})
 
 
 def finding_dict(finding: Finding) -> dict[str, object]:
@@ -28,11 +54,6 @@ def finding_dict(finding: Finding) -> dict[str, object]:
 
 
 def render(findings: Sequence[Finding], *, context: ReportContext) -> str:
-    """``{"version", "schema_version", "findings", "summary"}`` as indented JSON."""
-    document = {
-        "version": __version__,
-        "schema_version": SCHEMA_VERSION,
-        "findings": [finding_dict(f) for f in findings],
-        "summary": {**counts(findings), "packages": len(context.packages)},
-    }
-    return json.dumps(document, indent=2) + "\n"
+    """lint's findings and a summary of them."""
+    return document("lint", {"findings": [finding_dict(f) for f in findings],
+                             "summary": {**counts(findings), "packages": len(context.packages)}})

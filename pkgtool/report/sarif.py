@@ -1,8 +1,10 @@
-"""SARIF 2.1.0 for code-scanning services, with each rule's metadata from the registry."""
+"""SARIF 2.1.0 for code-scanning services, with each rule's metadata from the registry.
+
+Written by :func:`pkgtool.report.json.dumps`: every string is made safe.
+"""
 
 from __future__ import annotations
 
-import json
 from collections.abc import Sequence
 from pathlib import PurePosixPath
 from urllib.parse import quote
@@ -10,6 +12,7 @@ from urllib.parse import quote
 from pkgtool import __version__
 from pkgtool.findings import Finding, Severity
 from pkgtool.report import ReportContext, display_path
+from pkgtool.report.json import dumps
 from pkgtool.rules.registry import FAMILIES, Rule
 
 SCHEMA = "https://json.schemastore.org/sarif-2.1.0.json"
@@ -78,4 +81,4 @@ def render(findings: Sequence[Finding], *, context: ReportContext) -> str:
             "text": "The folder pkgtool lint ran in"}}},
         "results": [_result(f, index) for f in findings],
     }
-    return json.dumps({"$schema": SCHEMA, "version": "2.1.0", "runs": [run]}, indent=2) + "\n"
+    return dumps({"$schema": SCHEMA, "version": "2.1.0", "runs": [run]})

@@ -1,4 +1,8 @@
-"""Human output: ``path:line:col: CODE message``, an indented ``help:`` line, then a summary."""
+"""Human output: ``path:line:col: CODE message``, an indented ``help:`` line, then a summary.
+
+Paths and messages pass through :func:`pkgtool.report.untrusted.line`: a file name or a quoted
+file content can neither start a line of its own nor send terminal escapes.
+"""
 
 from __future__ import annotations
 
@@ -6,18 +10,25 @@ from collections.abc import Sequence
 
 from pkgtool.findings import Finding
 from pkgtool.report import ReportContext, counts, display_path
+from pkgtool.report.untrusted import line
 
 _STYLES = {"error": "bold red", "warning": "yellow", "info": "blue"}
 
 
 def location(finding: Finding) -> str:
     """``path:line:col`` with unknown (0) line or column left out."""
-    parts = [display_path(finding)]
+    parts = [line(display_path(finding))]
     if finding.span.line:
         parts.append(str(finding.span.line))
         if finding.span.col:
             parts.append(str(finding.span.col))
     return ":".join(parts)
+
+
+def finding_lines(finding: Finding) -> str:
+    """``path:line:col: CODE message`` and, when there is a fix, an indented ``help:`` line."""
+    first = f"{location(finding)}: {finding.code} {line(finding.message)}"
+    return first + (f"\n  help: {line(finding.fix)}" if finding.fix else "")
 
 
 def summary(findings: Sequence[Finding], packages: int) -> str:
@@ -42,9 +53,9 @@ def _lines(findings: Sequence[Finding], packages: int) -> list[list[tuple[str, s
     for finding in findings:
         lines.append([(f"{location(finding)}:", "bold"),
                       (f" {finding.code}", _STYLES[finding.severity.value]),
-                      (f" {finding.message}", "")])
+                      (f" {line(finding.message)}", "")])
         if finding.fix:
-            lines.append([(f"  help: {finding.fix}", "dim")])
+            lines.append([(f"  help: {line(finding.fix)}", "dim")])
     lines.append([(summary(findings, packages), "bold")])
     return lines
 
@@ -53,7 +64,7 @@ def render(findings: Sequence[Finding], *, context: ReportContext) -> str:
     """The findings, each with its help line, and a summary; ANSI colour when asked."""
     lines = _lines(findings, len(context.packages))
     if not context.color:
-        return "".join("".join(text for text, _ in line) + "\n" for line in lines)
+        return "".join("".join(text for text, _ in segments) + "\n" for segments in lines)
     import io
 
     from rich.console import Console
@@ -62,6 +73,6 @@ def render(findings: Sequence[Finding], *, context: ReportContext) -> str:
     buffer = io.StringIO()
     console = Console(file=buffer, force_terminal=True, color_system="standard", width=100_000,
                       highlight=False, soft_wrap=True)
-    for line in lines:
-        console.print(Text.assemble(*line))
+    for segments in lines:
+        console.print(Text.assemble(*segments))
     return buffer.getvalue()

@@ -21,10 +21,10 @@ def test_levels_and_properties() -> None:
 
 
 def test_escaping() -> None:
-    finding = make_finding(root="a,b:c", message="100% sure\r\nreally", fix=None)
+    finding = make_finding(root="a,b:c", message="100% sure\r\nreally\rnot\x1b[2J", fix=None)
     line = render("github", [finding], context=ReportContext())
     assert line == ("::error file=a%2Cb%3Ac/pkg/node.py,line=3,col=5,title=SYN001::"
-                    "100%25 sure%0D%0Areally\n")
+                    "100%25 sure%0Areally\\x0dnot\\x1b[2J\n")
 
 
 def test_nothing_to_annotate() -> None:

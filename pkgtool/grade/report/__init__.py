@@ -1,6 +1,9 @@
 """Render grading results: text, JSON, JUnit XML, Gradescope results.json, CSV gradebook.
 
-Each format is a pure function ``render(results, *, rubric) -> str`` in its own module.
+Each format is a pure function ``render(results, *, rubric) -> str`` in the module of its name,
+written with the format's one writer in :mod:`pkgtool.report`; :mod:`.package_tests` renders
+``pkgtool test``. What a student controls (labels, package names, error text, test names and
+output) is made safe by those writers.
 """
 
 from __future__ import annotations
@@ -12,12 +15,13 @@ from pkgtool.grade.results import SubmissionResult
 from pkgtool.grade.rubric import Rubric
 
 FORMATS = ("text", "json", "junit", "gradescope", "csv")
-SCHEMA_VERSION = 1
 
 
 def render(fmt: str, results: Sequence[SubmissionResult], *, rubric: Rubric) -> str:
     """``results`` in format ``fmt`` (one of FORMATS)."""
-    module = importlib.import_module(f"pkgtool.grade.report.{fmt}_report")
+    if fmt not in FORMATS:
+        raise ValueError(f"unknown report format {fmt!r}")
+    module = importlib.import_module(f"pkgtool.grade.report.{fmt}")
     return module.render(results, rubric=rubric)  # type: ignore[no-any-return]
 
 

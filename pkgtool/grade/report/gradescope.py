@@ -2,16 +2,17 @@
 
 Format: https://gradescope-autograders.readthedocs.io/en/latest/specs/ (score, execution_time,
 output, stdout_visibility, and tests with name, score, max_score, status, output, visibility).
+Written by :func:`pkgtool.report.json.dumps`: every string is made safe.
 """
 
 from __future__ import annotations
 
-import json
 from collections.abc import Sequence
 
 from pkgtool import __version__
 from pkgtool.grade.results import SubmissionResult
 from pkgtool.grade.rubric import Rubric
+from pkgtool.report.json import dumps
 
 
 def render(results: Sequence[SubmissionResult], *, rubric: Rubric) -> str:
@@ -30,4 +31,4 @@ def render(results: Sequence[SubmissionResult], *, rubric: Rubric) -> str:
                    "output": "\n".join(c.feedback) + (f"\n\n{c.output}" if c.output else ""),
                    "visibility": c.visibility} for c in result.criteria],
     }
-    return json.dumps(document, indent=2) + "\n"
+    return dumps(document)
