@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from pathlib import Path
 from typing import Any
 
 from pkgtool.findings import Finding
@@ -47,3 +48,21 @@ def test_results_locations_and_levels() -> None:
     assert third["locations"][0]["physicalLocation"] == {
         "artifactLocation": {"uri": "file:///abs/my%20pkg/package.xml"},
         "region": {"startLine": 2}}
+
+
+def test_the_document_is_valid_against_the_official_sarif_schema() -> None:
+    """tests/data holds the OASIS schema (see its NOTICE); nothing is fetched."""
+    import jsonschema
+
+    schema = json.loads((Path(__file__).parent.parent / "data" / "sarif-schema-2.1.0.json")
+                        .read_text(encoding="utf-8"))
+    validator = jsonschema.validators.validator_for(schema)(schema)
+    findings = [make_finding(), make_finding("SYN002", "info", path="", line=0, col=0),
+                make_finding("MAN013", "warning", root="/abs/my pkg", path="package.xml",
+                             line=2, col=0, fix=None),
+                make_finding(message="bad\x00text\x1b[2J\nPASS", path="odd\nname.py")]
+    document = json.loads(render("sarif", findings, context=ReportContext(rules=load_all())))
+    errors = sorted(validator.iter_errors(document), key=str)
+    assert not errors, "\n".join(f"{list(e.absolute_path)}: {e.message}" for e in errors[:5])
+    broken = {**document, "runs": [{**document["runs"][0], "results": [{"level": "fatal"}]}]}
+    assert not validator.is_valid(broken)  # the validator does reject what the schema forbids
