@@ -9,12 +9,11 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import catkin_pkg.package as catkin_package  # the test extra declares catkin-pkg
 import pytest
 
 from tests.helpers import findings, make_package
 from tests.lint.test_manifest_xsd_oracle import EXPORT, doc, head
-
-catkin_package = pytest.importorskip("catkin_pkg.package")
 
 CATKIN_RULES = ("MAN003", "MAN005", "MAN006", "MAN007", "MAN011", "MAN012", "MAN014")
 

@@ -87,3 +87,23 @@ def test_pydocstyle_matches_ament_pep257(corpus: Path) -> None:
     ours = {(v.path, v.line, v.code) for v in run_pydocstyle(corpus, _files(corpus))}
     assert len(theirs) >= 5, output
     assert ours == theirs
+
+
+PLUGINS = {"flake8-builtins": "A", "flake8-comprehensions": "C4", "flake8-docstrings": "D",
+           "flake8-import-order": "I", "flake8-quotes": "Q"}
+"""The plugins ament_flake8 runs with in a ROS 2 workspace, and the code prefix each reports."""
+
+
+def test_the_plugins_parity_rests_on_are_pinned_installed_and_reporting(corpus: Path) -> None:
+    """Without a plugin both sides would agree on missing its codes: parity would prove little."""
+    import importlib.metadata
+
+    from pkgtool.compat import tomllib
+
+    style = tomllib.loads((Path(__file__).parents[2] / "pyproject.toml").read_text())[
+        "project"]["optional-dependencies"]["style"]
+    pinned = dict(entry.split("==") for entry in style if "==" in entry)
+    codes = {v.code for v in run_flake8(corpus, _files(corpus))}
+    for plugin, prefix in PLUGINS.items():
+        assert pinned.get(plugin) == importlib.metadata.version(plugin), plugin
+        assert any(code.startswith(prefix) for code in codes), (plugin, sorted(codes))
