@@ -182,10 +182,8 @@ def read_pyproject(path: Path) -> Layer | None:
         raise ConfigError(f"Cannot read {path}: {error}. Fix or remove the file.") from None
     if "pkgtool" not in text:
         return None
-    try:
-        import tomllib
-    except ModuleNotFoundError:  # Python 3.10
-        import tomli as tomllib  # type: ignore[no-redef]
+    from pkgtool.compat import tomllib
+
     try:
         table = tomllib.loads(text).get("tool", {}).get("pkgtool")
     except tomllib.TOMLDecodeError as error:

@@ -7,6 +7,8 @@ from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
 
+from pkgtool.safe_xml import parser
+
 MAX_XML_BYTES = 16 * 1024 * 1024
 OUTCOMES = ("passed", "failed", "error", "skipped")
 _COLCON_PLACEHOLDER = ".pytest.missing_result"
@@ -77,9 +79,7 @@ def parse_junit(path: Path, *, within: Path | None = None) -> TestSummary:
         size = path.stat().st_size
         if size > MAX_XML_BYTES:
             return TestSummary(problem=f"the test report is {size} bytes, too large to read")
-        parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
-                                 huge_tree=False)
-        root = etree.parse(str(path), parser).getroot()
+        root = etree.parse(str(path), parser()).getroot()
     except FileNotFoundError:
         return TestSummary(problem="no tests ran (pytest wrote no report)")
     except (OSError, etree.XMLSyntaxError) as error:

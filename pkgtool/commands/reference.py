@@ -100,10 +100,7 @@ def _root() -> Path:
 
 def catalog(root: Path | None = None) -> tuple[Entry, ...]:
     """The entries of ``catalog.toml`` (default: the shipped one); RequestError if unreadable."""
-    try:
-        import tomllib
-    except ImportError:  # Python 3.10
-        import tomli as tomllib  # type: ignore[no-redef]
+    from pkgtool.compat import tomllib
 
     path = (root or _root()) / "catalog.toml"
     try:
@@ -255,11 +252,13 @@ def _build_and_test(workspace: Path, findings: dict[str, tuple[str, ...]],
                     spent: dict[str, float], jobs: int | None,
                     report: Progress) -> tuple[PackageReport, ...]:
     """Build every package in one colcon run, then test those that built."""
+    import yaml
+
     from pkgtool.ros.domains import leased_domain
 
-    workers = f"  parallel-workers: {jobs}\n" if jobs else ""
-    (workspace / "colcon_defaults.yaml").write_text(
-        f"build:\n  continue-on-error: true\n{workers}test:\n{workers or '  {}'}\n")
+    workers = {"parallel-workers": jobs} if jobs else {}
+    defaults = {"build": {"continue-on-error": True, **workers}, "test": workers}
+    (workspace / "colcon_defaults.yaml").write_text(yaml.safe_dump(defaults, sort_keys=False))
     names = list(findings)
     with leased_domain() as domain_id:
         built, summaries = _colcon_build_test(workspace, names, domain_id, report)

@@ -5,17 +5,12 @@ See docs/grading.md for the format; ``pkgtool grade --init-rubric`` writes a com
 
 from __future__ import annotations
 
-import sys
 from dataclasses import dataclass, field, fields
 from pathlib import Path
 from typing import Any
 
+from pkgtool.compat import tomllib
 from pkgtool.grade.sandbox import Limits
-
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover
-    import tomli as tomllib
 
 KINDS = ("build", "executables", "lint", "style", "tests", "hidden")
 VISIBILITIES = ("visible", "hidden", "after_due_date", "after_published")

@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 from pkgtool.model.span import ParseProblem, Span
+from pkgtool.safe_xml import parser
 
 
 @dataclass(frozen=True, slots=True)
@@ -33,10 +34,8 @@ def parse_xml(path: str, text: str) -> XmlElement | ParseProblem:
         line = text[: max(text.find("<!DOCTYPE"), text.find("<!ENTITY"))].count("\n") + 1
         return ParseProblem("xml-entity", Span(path, line, 1),
                             "DOCTYPE and entity declarations are not allowed in package files")
-    parser = etree.XMLParser(resolve_entities=False, no_network=True, load_dtd=False,
-                             huge_tree=False, remove_comments=False, dtd_validation=False)
     try:
-        root = etree.fromstring(text.encode("utf-8"), parser)
+        root = etree.fromstring(text.encode("utf-8"), parser())
     except etree.XMLSyntaxError as error:
         line, col = error.position if error.position else (1, 1)
         message = error.msg or str(error)
