@@ -16,10 +16,6 @@ AMENT_FLAKE8_ARGS = (
 )
 """ament_flake8.ini as flake8 command-line options (plugins read theirs when parsed)."""
 
-FLAKE8_PLUGINS = ("flake8-builtins", "flake8-comprehensions", "flake8-docstrings",
-                  "flake8-import-order", "flake8-quotes")
-"""The plugin set a ROS 2 workspace installs beside flake8 (ros-dev-tools)."""
-
 
 def style_checked_files(files: tuple[str, ...]) -> list[str]:
     """The .py files ament's linters check: not under folders starting with '.' or '_'."""

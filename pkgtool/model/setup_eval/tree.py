@@ -134,8 +134,3 @@ class Tree:
 
 def _join(base: str, name: str) -> str:
     return f"{base}/{name}" if base else name
-
-
-def has_magic(pattern: str) -> bool:
-    """True when ``pattern`` contains glob wildcards."""
-    return bool(_MAGIC.search(pattern))
