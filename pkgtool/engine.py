@@ -5,8 +5,9 @@ from __future__ import annotations
 from collections.abc import Iterable, Mapping
 from dataclasses import dataclass
 
+from pkgtool.config import ALL, Layer, settings_for
 from pkgtool.findings import Finding, Severity
-from pkgtool.model.package import ALL, Package
+from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import Rule
 
@@ -27,16 +28,17 @@ class Selection:
 
     def rules(self) -> list[Rule]:
         """The rules this selection runs, in code order."""
-        from pkgtool.config import Layer, settings_for
-
         layer = Layer("the selection", None, self.select or None, self.ignore,
                       self.extend_select)
         return list(settings_for([layer]).rules)
 
 
 def _suppressed(package: Package, finding: Finding, rule: Rule) -> bool:
+    """True when the finding's line silences every rule (bare, or ``ALL``) or this one."""
     codes = package.suppressions.get((finding.span.path, finding.span.line))
-    return bool(codes) and (ALL in codes or rule.code in codes or rule.name in codes)
+    if codes is None:
+        return False
+    return not codes or ALL in codes or rule.code in codes or rule.name in codes
 
 
 def check_package(package: Package, rules: Iterable[Rule], *, root_label: str,

@@ -19,16 +19,14 @@ from pkgtool.model.span import ParseProblem
 _PY_SUPPRESSION = re.compile(r"#\s*pkgtool:\s*ignore(?:\[([A-Za-z0-9_,\s-]*)\])?")
 _XML_SUPPRESSION = re.compile(r"<!--\s*pkgtool:\s*ignore\b([A-Za-z0-9_,\s-]*)-->")
 
-ALL = "*"
-
 
 @dataclass(frozen=True, slots=True)
 class Package:
     """A package folder: its files and everything parsed from them.
 
     ``files`` lists every file (POSIX, relative to ``root``). ``problems`` holds files that could
-    not be read or parsed. ``suppressions`` maps (path, line) to the rule codes or names
-    silenced there (``*`` for all).
+    not be read or parsed. ``suppressions`` maps (path, line) to the rule selectors silenced
+    there as written (codes, names, ``ALL``), an empty set for a bare ``pkgtool: ignore``.
     """
 
     root: Path
@@ -68,8 +66,8 @@ def _suppressions(path: str, text: str) -> dict[tuple[str, int], frozenset[str]]
         match = pattern.search(line)
         if not match:
             continue
-        codes = frozenset(c for c in re.split(r"[\s,]+", match.group(1) or "") if c) or {ALL}
-        found[(path, number)] = frozenset(codes)
+        codes = frozenset(c for c in re.split(r"[\s,]+", match.group(1) or "") if c)
+        found[(path, number)] = codes
         if path.endswith(".xml") and line.strip().startswith("<!--"):
             found[(path, number + 1)] = frozenset(codes)  # a comment line covers the next line
     return found
