@@ -27,17 +27,35 @@ def _codes(result: Result) -> list[tuple[str, str, str]]:
     return [(f["rule"], f["severity"], f["path"]) for f in output["findings"]]
 
 
-@pytest.mark.parametrize("args", [["--select", "SYN002"], ["--ignore", "SYN001"],
-                                  ["--ignore", "unparsable-file"],
-                                  ["--select", "SYN", "--ignore", "SYN0"]])
-def test_select_and_ignore_by_code_family_prefix_and_name(workspace: Path,
-                                                          args: list[str]) -> None:
-    assert run_cli("lint", *args, cwd=workspace).exit_code == ExitCode.OK
+@pytest.fixture()
+def two_defects(workspace: Path) -> Path:
+    """The workspace plus a binary module: one SYN001 per broken module and one SYN002."""
+    (workspace / "src" / "pkg" / "pkg" / "blob.py").write_bytes(b"\x00\x01 binary")
+    return workspace
+
+
+@pytest.mark.parametrize(("args", "expected"), [
+    (["--select", "SYN002"], {"SYN002"}),
+    (["--ignore", "SYN001"], {"SYN002"}),
+    (["--ignore", "unparsable-file"], {"SYN002"}),
+    (["--select", "SYN", "--ignore", "SYN001"], {"SYN002"}),
+    (["--select", "SYN00", "--ignore", "unparsable-file"], {"SYN002"}),
+    (["--select", "unparsable-file"], {"SYN001"}),
+    ([], {"SYN001", "SYN002"}),
+    (["--select", "SYN", "--ignore", "SYN0"], set()),
+])
+def test_select_and_ignore_by_code_family_prefix_and_name(two_defects: Path, args: list[str],
+                                                          expected: set[str]) -> None:
+    result = run_cli("lint", "-f", "json", *args, cwd=two_defects)
+    assert {code for code, _, _ in _codes(result)} == expected
+    assert result.exit_code == (ExitCode.FINDINGS if expected else ExitCode.OK)
 
 
 def test_extend_select_adds_to_the_selection(workspace: Path) -> None:
-    result = run_cli("lint", "--select", "SYN002", "--extend-select", "SYN001", cwd=workspace)
+    result = run_cli("lint", "-f", "json", "--select", "SYN002", "--extend-select", "SYN001",
+                     cwd=workspace)
     assert result.exit_code == ExitCode.FINDINGS
+    assert {code for code, _, _ in _codes(result)} == {"SYN001"}
 
 
 def test_unknown_selector_on_the_command_line_is_a_usage_error(workspace: Path) -> None:

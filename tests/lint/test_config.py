@@ -6,6 +6,7 @@ from pathlib import Path
 
 import pytest
 
+from pkgtool import config
 from pkgtool.config import ConfigError, ConfigFinder, Layer, expand, parse_table, settings_for
 from pkgtool.findings import Severity
 from pkgtool.rules.registry import load_all
@@ -65,9 +66,13 @@ def test_invalid_tables_name_the_offending_key(table: dict[str, object], named: 
     assert named in str(raised.value)
 
 
-def test_known_but_empty_families_are_valid_selectors() -> None:
-    assert expand("syn", where="x") >= {"SYN001"}
-    assert isinstance(expand("LCH", where="x"), frozenset)
+def test_a_family_selects_its_rules_and_a_known_family_without_rules_selects_none(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    assert expand("syn", where="x") == {c for c in load_all() if c.startswith("SYN")} != set()
+    monkeypatch.setitem(config.FAMILIES, "NEW", "a family whose first rule is not written yet")
+    assert expand("NEW", where="x") == frozenset()
+    with pytest.raises(ConfigError, match="Unknown rule selector `XYZ` in x"):
+        expand("XYZ", where="x")
 
 
 def test_per_file_ignores_are_relative_to_their_file(tmp_path: Path) -> None:
