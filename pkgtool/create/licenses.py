@@ -41,7 +41,10 @@ def license_text(spdx_id: str, *, year: int, holder: str) -> str:
     for number, line in enumerate(lines[:3]):
         match = _PLACEHOLDER_LINE.match(line)
         if match:
-            lines[number] = f"Copyright {match.group(1) or ''}{year} {holder}{line[match.end():]}"
+            rest = line[match.end():]
+            if holder.endswith(".") and rest.startswith("."):
+                rest = rest[1:]  # "<owner>." after "Ada L." is one sentence end, not two
+            lines[number] = f"Copyright {match.group(1) or ''}{year} {holder}{rest}"
     return "\n".join(line.rstrip() for line in lines) + "\n"
 
 

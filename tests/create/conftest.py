@@ -39,3 +39,21 @@ def create(tmp_path: Path) -> Callable[..., CreateResult]:
                    force=force)
 
     return make
+
+
+def expected_files(name: str, nodes: tuple[str, ...] = (), *, launch: bool = False,
+                   config: bool = False) -> list[str]:
+    """The files ``create`` writes, from the template list: the package's own files, a module
+    and a test per node (``NAME:KIND``) plus a conftest, each linter test template, launch and
+    config; sorted as ``CreateResult.written`` lists them."""
+    from pkgtool.resources import resource_dir
+
+    node_names = [spec.split(":")[0] for spec in nodes]
+    linter_tests = [p.name.removesuffix(".jinja")
+                    for p in (resource_dir("templates") / "tests").glob("test_*.py.jinja")]
+    files = ["package.xml", "setup.py", "setup.cfg", f"resource/{name}", "LICENSE",
+             f"{name}/__init__.py", *(f"{name}/{n}.py" for n in node_names),
+             *(f"test/test_{n}.py" for n in node_names), *(["test/conftest.py"] * bool(nodes)),
+             *(f"test/{t}" for t in linter_tests), *([f"launch/{name}.launch.py"] * launch),
+             *(["config/params.yaml"] * config)]
+    return sorted(files)

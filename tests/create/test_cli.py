@@ -11,6 +11,7 @@ from typer.testing import CliRunner
 
 from pkgtool.cli import _register, app
 from pkgtool.model.package import load_package
+from tests.create.conftest import expected_files
 
 _register()
 MAINTAINER = ["--maintainer-name", "Jane Doe", "--maintainer-email", "jane@example.com"]
@@ -59,7 +60,9 @@ def test_dry_run_prints_the_tree(tmp_path: Path) -> None:
     result = _create(tmp_path, "my_pkg", *MAINTAINER, "--dry-run", "--node", "talker:publisher",
                      "--launch", "--config")
     assert result.exit_code == 0
-    assert result.output.startswith(f"Would create `{tmp_path / 'my_pkg'}` (14 files):\nmy_pkg/\n")
+    count = len(expected_files("my_pkg", ("talker:publisher",), launch=True, config=True))
+    assert result.output.startswith(
+        f"Would create `{tmp_path / 'my_pkg'}` ({count} files):\nmy_pkg/\n")
     assert "│   └── params.yaml" in result.output
     assert list(tmp_path.iterdir()) == []
 

