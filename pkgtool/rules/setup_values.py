@@ -26,3 +26,16 @@ def text_of(value: Value | None) -> tuple[str, Span] | None:
 def same_text(left: str, right: str) -> bool:
     """Equal ignoring case and runs of whitespace."""
     return " ".join(left.split()).casefold() == " ".join(right.split()).casefold()
+
+
+def beside_manifest(package: Package, key: str) -> tuple[str, Span, str] | None:
+    """setup.py's string ``key`` (``name``, ``version``), its position, and package.xml's value.
+
+    None unless setup.py of a checked package gives a string and package.xml has the element.
+    """
+    setup = checked_setup(package)
+    found = text_of(getattr(setup, key)) if setup else None
+    element = getattr(package.manifest, key, None)
+    if found is None or element is None:
+        return None
+    return found[0], found[1], element.value

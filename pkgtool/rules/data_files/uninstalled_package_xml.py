@@ -34,8 +34,8 @@ def uninstalled_package_xml(package: Package) -> Iterator[Hit]:
     ## Use instead
     ```python
     data_files=[
-        ('share/ament_index/resource_index/packages', ['resource/' + package_name]),
         ('share/' + package_name, ['package.xml']),
+        ('share/ament_index/resource_index/packages', ['resource/' + package_name]),
     ]
     ```
     """

@@ -36,10 +36,8 @@ def unregistered_package(package: Package) -> Iterator[Hit]:
 
     ## Use instead
     ```python
-    data_files=[
-        ('share/ament_index/resource_index/packages', ['resource/' + package_name]),
-        ('share/' + package_name, ['package.xml']),
-    ]
+    data_files=[('share/ament_index/resource_index/packages', ['resource/' + package_name]),
+                ('share/' + package_name, ['package.xml'])]
     ```
     """
     setup = checked_setup(package)

@@ -39,11 +39,8 @@ def undeclared_optional_import(package: Package) -> Iterator[Hit]:
     <exec_depend>python3-opencv</exec_depend>
     ```
     """
-    if package.manifest is None:
-        return
     available = declared(package, ANY)
-    modules = all_python(package)
-    for module in modules:
+    for module in all_python(package) if package.manifest else ():
         required = {need.top for need in needs(package, module)}
         for need in needs(package, module, guarded=True):
             if need.top not in required and not any(k in available for k in need.keys):

@@ -43,11 +43,8 @@ def unknown_import(package: Package) -> Iterator[Hit]:
     <exec_depend>python3-filterpy-pip</exec_depend>
     ```
     """
-    if package.manifest is None:
-        return
     available = declared(package, ANY)
-    modules = all_python(package)
-    for module in modules:
+    for module in all_python(package) if package.manifest else ():
         for need in needs(package, module):
             if need.kind != "unknown" or any(k in available for k in need.keys):
                 continue

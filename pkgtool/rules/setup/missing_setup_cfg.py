@@ -28,16 +28,16 @@ def missing_setup_cfg(package: Package) -> Iterator[Hit]:
 
     ## Example
     ```text
-    my_pkg/setup.py      entry_points={'console_scripts': ['talker = my_pkg.talker:main']}
+    my_robot/setup.py    entry_points={'console_scripts': ['talker = my_robot.talker:main']}
     (no setup.cfg)
     ```
 
     ## Use instead
     ```ini
     [develop]
-    script_dir=$base/lib/my_pkg
+    script_dir=$base/lib/my_robot
     [install]
-    install_scripts=$base/lib/my_pkg
+    install_scripts=$base/lib/my_robot
     ```
     """
     setup = checked_setup(package)

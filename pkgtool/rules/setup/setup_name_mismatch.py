@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup_values import checked_setup, text_of
+from pkgtool.rules.setup_values import beside_manifest
 
 
 @rule("SET003", "setup-name-mismatch", Severity.WARNING,
@@ -34,12 +34,7 @@ def setup_name_mismatch(package: Package) -> Iterator[Hit]:
     setup(name=package_name, ...)
     ```
     """
-    setup = checked_setup(package)
-    manifest = package.manifest
-    found = text_of(setup.name) if setup else None
-    if found is None or manifest is None or manifest.name is None:
-        return
-    name, span = found
-    if name != manifest.name.value:
-        yield Hit(span, f"`setup.py` name `{name}` differs from the `package.xml` name "
-                        f"`{manifest.name.value}`")
+    found = beside_manifest(package, "name")
+    if found and found[0] != found[2]:
+        name, span, wanted = found
+        yield Hit(span, f"`setup.py` name `{name}` differs from the `package.xml` name `{wanted}`")

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup_values import checked_setup, text_of
+from pkgtool.rules.setup_values import beside_manifest
 
 
 @rule("SET004", "setup-version-mismatch", Severity.WARNING,
@@ -33,12 +33,8 @@ def setup_version_mismatch(package: Package) -> Iterator[Hit]:
     setup(name='my_pkg', version='1.2.0', ...)
     ```
     """
-    setup = checked_setup(package)
-    manifest = package.manifest
-    found = text_of(setup.version) if setup else None
-    if found is None or manifest is None or manifest.version is None:
-        return
-    version, span = found
-    if version.strip() != manifest.version.value:
+    found = beside_manifest(package, "version")
+    if found and found[0].strip() != found[2]:
+        version, span, wanted = found
         yield Hit(span, f"`setup.py` version `{version}` differs from the `package.xml` version "
-                        f"`{manifest.version.value}`")
+                        f"`{wanted}`")
