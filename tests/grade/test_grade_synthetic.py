@@ -13,6 +13,7 @@ from typing import Any
 
 import pytest
 
+from pkgtool.grade.rubric import Rubric, load_rubric
 from pkgtool.grade.sandbox import Limits, sandbox
 from pkgtool.grade.sources import tree_digest
 from tests.grade import synthetic
@@ -53,6 +54,7 @@ def batch(tmp_path_factory: pytest.TempPathFactory) -> Batch:
     graded = {s["label"]: s for s in report["submissions"]}
     after = {p.name: tree_digest(p) for p in subs.iterdir()}
     return {"graded": graded, "before": before, "after": after, "markers": markers,
+            "rubric": load_rubric(root / "rubric.toml"),
             "names": names, "escaped": [root / "escaped.txt", root / "submissions" /
                                         "escaped.txt", Path("/tmp/escaped.txt")]}
 
@@ -65,6 +67,21 @@ def _feedback(entry: Entry, kind: str) -> str:
     return "\n".join(_criterion(entry, kind)["feedback"])
 
 
+OWN_TESTS = 2
+"""The tests of ``synthetic.correct()``; both pass. Variants add failing ones."""
+
+
+def _points(batch: Batch, kind: str) -> float:
+    """The points of the rubric's criterion of ``kind``."""
+    rubric: Rubric = batch["rubric"]
+    return next(c.points for c in rubric.criteria if c.kind == kind)
+
+
+def _per_finding(batch: Batch) -> float:
+    rubric: Rubric = batch["rubric"]
+    return next(c.per_finding or 0.0 for c in rubric.criteria if c.kind == "lint")
+
+
 def test_every_submission_is_graded_and_left_unchanged(batch: Batch) -> None:
     graded = batch["graded"]
     assert set(graded) == {*batch["names"], "correct_tgz", "zip_traversal"}
@@ -75,7 +92,8 @@ def test_every_submission_is_graded_and_left_unchanged(batch: Batch) -> None:
 @pytest.mark.parametrize("label", ["correct", "correct_tgz"])
 def test_a_correct_submission_gets_full_marks(batch: Batch, label: str) -> None:
     entry = batch["graded"][label]
-    assert entry["score"] == entry["max_score"] == 11, json.dumps(entry, indent=1)
+    assert entry["score"] == entry["max_score"] == batch["rubric"].max_score, \
+        json.dumps(entry, indent=1)
     assert "unprivileged uid" in entry["isolation"] or "namespaces" in entry["isolation"] \
         or entry["isolation"].startswith("no namespaces")
 
@@ -91,15 +109,17 @@ def test_missing_entry_point(batch: Batch) -> None:
     entry = batch["graded"]["missing_entry_point"]
     assert _criterion(entry, "executables")["score"] == 0
     assert "No module named 'talker_pkg.talker'" in _feedback(entry, "executables")
-    assert _criterion(entry, "lint")["score"] == 1 and "ENT002" in _feedback(entry, "lint")
-    assert entry["score"] == 8
+    lint = _points(batch, "lint") - _per_finding(batch)  # one finding: ENT002
+    assert _criterion(entry, "lint")["score"] == lint and "ENT002" in _feedback(entry, "lint")
+    assert entry["score"] == entry["max_score"] - _points(batch, "executables") - \
+        _per_finding(batch)
 
 
 def test_undeclared_dependency(batch: Batch) -> None:
     entry = batch["graded"]["undeclared_dependency"]
     assert "DEP001 `numpy` is imported" in _feedback(entry, "lint")
     assert "Declare what you import" in _feedback(entry, "lint")
-    assert entry["score"] == 10
+    assert entry["score"] == entry["max_score"] - _per_finding(batch)  # one finding: DEP001
 
 
 def test_build_failure(batch: Batch) -> None:
@@ -108,22 +128,25 @@ def test_build_failure(batch: Batch) -> None:
     assert "missing.yaml" in _feedback(entry, "build")
     for kind in ("executables", "tests", "hidden"):
         assert "does not build" in _feedback(entry, kind)
-    assert entry["score"] == 3
+    assert entry["score"] == _points(batch, "lint") + _points(batch, "style")  # static only
 
 
 def test_failing_test(batch: Batch) -> None:
     entry = batch["graded"]["failing_test"]
-    assert _criterion(entry, "tests")["score"] == 1
+    credit = round(_points(batch, "tests") * (OWN_TESTS - 1) / OWN_TESTS, 2)  # partial credit
+    assert _criterion(entry, "tests")["score"] == credit
     assert "1 passed, 1 failed" in _feedback(entry, "tests")
     assert "FAILED talker_pkg.test.test_greet.test_greets_anyone" in _feedback(entry, "tests")
-    assert entry["score"] == 10
+    assert entry["score"] == entry["max_score"] - _points(batch, "tests") + credit
 
 
 def test_infinite_loop_in_a_test(batch: Batch) -> None:
     entry = batch["graded"]["infinite_loop"]
-    assert _criterion(entry, "tests")["score"] == pytest.approx(1.33)
+    looping = 1  # the variant adds one test that never ends
+    assert _criterion(entry, "tests")["score"] == round(
+        _points(batch, "tests") * OWN_TESTS / (OWN_TESTS + looping), 2)  # scores are in cents
     assert "Timeout (>5.0s)" in _feedback(entry, "tests")
-    assert _criterion(entry, "hidden")["score"] == 2
+    assert _criterion(entry, "hidden")["score"] == _points(batch, "hidden")
 
 
 def test_a_module_that_hangs_when_imported_costs_its_executable_only(batch: Batch) -> None:
@@ -131,14 +154,17 @@ def test_a_module_that_hangs_when_imported_costs_its_executable_only(batch: Batc
     assert _criterion(entry, "executables")["score"] == 0
     assert "`talker` did not finish loading (timed out after 5 s)" in _feedback(
         entry, "executables"), "the probe is bounded by test_timeout, not the step timeout"
-    assert entry["score"] == 9
+    assert entry["score"] == entry["max_score"] - _points(batch, "executables")
 
 
 def test_writing_outside_the_package_changes_nothing(batch: Batch) -> None:
     entry = batch["graded"]["writes_outside"]
-    assert _criterion(entry, "tests")["score"] == pytest.approx(0.8)
+    writers = 3  # the variant adds three tests that write outside the job
+    assert _criterion(entry, "tests")["score"] == round(
+        _points(batch, "tests") * OWN_TESTS / (OWN_TESTS + writers), 2)
     feedback = _feedback(entry, "tests")
-    assert feedback.count("Read-only file system") + feedback.count("Permission denied") == 3
+    assert feedback.count("Read-only file system") + feedback.count("Permission denied") \
+        == writers
     assert not any(marker.exists() for marker in batch["markers"].values())
 
 
@@ -147,8 +173,8 @@ def test_a_fork_bomb_is_stopped_without_harm(batch: Batch) -> None:
         pytest.skip("no process limit can be enforced on this machine")
     entry = batch["graded"]["fork_bomb"]
     assert "too many processes (limit 64)" in _feedback(entry, "tests")
-    assert _criterion(entry, "tests")["score"] < 2
-    assert _criterion(entry, "hidden")["score"] == 2
+    assert _criterion(entry, "tests")["score"] < _points(batch, "tests")
+    assert _criterion(entry, "hidden")["score"] == _points(batch, "hidden")
 
 
 def test_a_zip_with_parent_paths_is_refused(batch: Batch) -> None:
