@@ -172,6 +172,17 @@ def needs(package: Package, module: PythonModule, *, guarded: bool | None = Fals
         yield Need(module, imported, top, kind, keys)
 
 
+def unmet_runtime_needs(package: Package) -> Iterator[Need]:
+    """Needs of installed code that no run-time key provides (none without a package.xml)."""
+    if package.manifest is None:
+        return
+    runtime = declared(package, RUNTIME)
+    for module in installed_code(package):
+        for need in needs(package, module):
+            if not any(k in runtime for k in need.keys):
+                yield need
+
+
 def misnamed(package: Package, key: str) -> str | None:
     """A declared name that people write for ``key`` (``python-opencv`` for python3-opencv)."""
     return next((name for name in declared(package, ANY) if suggested_key(name) == key), None)

@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import BUILD_ONLY, RUNTIME, declared, installed_code, needs
+from pkgtool.rules.imports import BUILD_ONLY, declared, unmet_runtime_needs
 from pkgtool.rules.registry import rule
 
 
@@ -35,18 +35,12 @@ def import_declared_only_as_build_depend(package: Package) -> Iterator[Hit]:
     <depend>python3-numpy</depend>
     ```
     """
-    if package.manifest is None:
-        return
-    runtime = declared(package, RUNTIME)
     build_only = declared(package, BUILD_ONLY)
-    for module in installed_code(package):
-        for need in needs(package, module):
-            if any(k in runtime for k in need.keys):
-                continue
-            key = next((k for k in need.keys if k in build_only), None)
-            if key is None:
-                continue
-            tag = build_only[key].tag
-            yield Hit(need.imported.span,
-                      f"`{need.top}` is imported at run time but `{key}` is only a `{tag}`",
-                      f"Change `<{tag}>{key}</{tag}>` to `<depend>{key}</depend>`")
+    for need in unmet_runtime_needs(package):
+        key = next((k for k in need.keys if k in build_only), None)
+        if key is None:
+            continue
+        tag = build_only[key].tag
+        yield Hit(need.imported.span,
+                  f"`{need.top}` is imported at run time but `{key}` is only a `{tag}`",
+                  f"Change `<{tag}>{key}</{tag}>` to `<depend>{key}</depend>`")

@@ -7,8 +7,8 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import (BUILD_ONLY, RUNTIME, TEST, Need, declared,
-                                   installed_code, misnamed, needs)
+from pkgtool.rules.imports import (BUILD_ONLY, TEST, Need, declared, misnamed,
+                                   unmet_runtime_needs)
 from pkgtool.rules.registry import rule
 
 
@@ -39,19 +39,13 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     <exec_depend>tf_transformations</exec_depend>
     ```
     """
-    if package.manifest is None:
-        return
-    runtime = declared(package, RUNTIME)
     build_only = declared(package, BUILD_ONLY)
     tests = declared(package, TEST)
-    for module in installed_code(package):
-        for need in needs(package, module):
-            if need.kind == "unknown" or any(k in runtime for k in need.keys):
-                continue
-            if any(k in build_only for k in need.keys):
-                continue  # DEP002's case
-            yield Hit(need.imported.span, _message(package, need, tests),
-                      f"Add `<exec_depend>{need.key}</exec_depend>` to package.xml")
+    for need in unmet_runtime_needs(package):
+        if need.kind == "unknown" or any(k in build_only for k in need.keys):
+            continue  # DEP004's case, DEP002's case
+        yield Hit(need.imported.span, _message(package, need, tests),
+                  f"Add `<exec_depend>{need.key}</exec_depend>` to package.xml")
 
 
 def _message(package: Package, need: Need, tests: dict[str, Dependency]) -> str:

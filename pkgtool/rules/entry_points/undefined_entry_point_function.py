@@ -5,11 +5,9 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.installed import installed_modules
 from pkgtool.model.package import Package
-from pkgtool.rules.entry_points._scripts import SCRIPT_GROUPS, problem
+from pkgtool.rules.entry_points._scripts import scripts_and_modules
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup_values import checked_setup
 
 
 @rule("ENT003", "undefined-entry-point-function", Severity.ERROR,
@@ -39,12 +37,9 @@ def undefined_entry_point_function(package: Package) -> Iterator[Hit]:
         ...
     ```
     """
-    setup = checked_setup(package)
-    modules = installed_modules(package) if setup else None
-    if setup is None or modules is None:
-        return
-    for entry in setup.entry_points or ():
-        if entry.group not in SCRIPT_GROUPS or problem(entry) or entry.module not in modules:
+    entries, modules = scripts_and_modules(package)
+    for entry in entries:
+        if entry.module not in modules:
             continue
         module = package.module(modules[entry.module])
         if module is None or module.syntax_error or "__getattr__" in module.top_level_names:

@@ -5,11 +5,10 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.installed import installed_modules, why_not_installed
+from pkgtool.model.installed import why_not_installed
 from pkgtool.model.package import Package
-from pkgtool.rules.entry_points._scripts import SCRIPT_GROUPS, problem
+from pkgtool.rules.entry_points._scripts import scripts_and_modules
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup_values import checked_setup
 
 
 def _own_roots(package: Package, modules: dict[str, str]) -> set[str]:
@@ -51,13 +50,10 @@ def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
           entry_points={'console_scripts': ['talker = my_pkg.nodes.talker:main']})
     ```
     """
-    setup = checked_setup(package)
-    modules = installed_modules(package) if setup else None
-    if setup is None or modules is None:
-        return
-    roots = _own_roots(package, modules)
-    for entry in setup.entry_points or ():
-        if entry.group not in SCRIPT_GROUPS or problem(entry) or entry.module in modules:
+    entries, modules = scripts_and_modules(package)
+    roots = _own_roots(package, modules) if entries else set()
+    for entry in entries:
+        if entry.module in modules:
             continue
         if entry.module.split(".")[0] not in roots:
             near = [m for m in modules if m.endswith(f".{entry.module}")]
