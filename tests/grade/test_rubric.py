@@ -2,18 +2,15 @@
 
 from __future__ import annotations
 
+import subprocess
 import sys
 from pathlib import Path
 
 import pytest
 
+from pkgtool.compat import tomllib
 from pkgtool.grade.init_rubric import example_rubric, write_example
 from pkgtool.grade.rubric import RubricError, load_rubric
-
-if sys.version_info >= (3, 11):
-    import tomllib
-else:  # pragma: no cover
-    import tomli as tomllib
 
 REPO = Path(__file__).resolve().parents[2]
 
@@ -79,3 +76,14 @@ def test_mistakes_are_reported_with_their_place(tmp_path: Path, text: str, messa
 def test_a_missing_rubric_is_a_clear_error(tmp_path: Path) -> None:
     with pytest.raises(RubricError, match="Cannot read the rubric"):
         load_rubric(tmp_path / "nope.toml")
+
+
+def test_tomli_w_is_imported_only_to_write_the_example() -> None:
+    script = ("import sys\nimport pkgtool.cli, pkgtool.commands.grade, pkgtool.grade.init_rubric\n"
+              "import pkgtool.grade.report, pkgtool.grade.rubric\n"
+              "before = 'tomli_w' in sys.modules\n"
+              "pkgtool.grade.init_rubric.example_rubric()\n"
+              "print(before, 'tomli_w' in sys.modules)\n")
+    done = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True,
+                          timeout=60, check=True)
+    assert done.stdout.split() == ["False", "True"]
