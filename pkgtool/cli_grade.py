@@ -27,8 +27,10 @@ class Format(str, Enum):
 
 
 def _fail(*messages: str) -> typer.Exit:
+    from pkgtool.report.untrusted import block
+
     for message in messages:
-        typer.echo(f"pkgtool grade: {message}", err=True)
+        typer.echo(f"pkgtool grade: {block(message)}", err=True)
     return typer.Exit(int(ExitCode.USAGE))
 
 

@@ -39,9 +39,16 @@ def _selectors(values: Optional[list[str]]) -> tuple[str, ...]:
 
 
 def _fail(*messages: str, code: ExitCode) -> typer.Exit:
-    for message in messages:
-        typer.echo(f"pkgtool lint: {message}", err=True)
+    _say(*messages)
     return typer.Exit(int(code))
+
+
+def _say(*messages: str) -> None:
+    """Messages to stderr; they may quote a package's paths and text, so made safe first."""
+    from pkgtool.report.untrusted import block
+
+    for message in messages:
+        typer.echo(f"pkgtool lint: {block(message)}", err=True)
 
 
 def _colour(fmt: Format, output: Optional[Path]) -> bool:
@@ -115,8 +122,7 @@ def _lint(paths: list[str], options: LintOptions, fmt: Format, output: Optional[
     if result.exit_code is ExitCode.USAGE:
         raise _fail(*result.notes, *result.errors, code=result.exit_code)
     _report(result, fmt, output)
-    for message in (*result.notes, *result.errors):
-        typer.echo(f"pkgtool lint: {message}", err=True)
+    _say(*result.notes, *result.errors)
     raise typer.Exit(int(result.exit_code))
 
 

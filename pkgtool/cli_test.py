@@ -39,11 +39,12 @@ def test(
     """
     from pkgtool.commands.test import run
     from pkgtool.grade.report.package_tests import render
+    from pkgtool.report.untrusted import block
 
     check_output(output, "test")
     result = run(path, timeout=timeout, test_timeout=test_timeout)
     for message in result.errors:
-        typer.echo(f"pkgtool test: {message}", err=True)
+        typer.echo(f"pkgtool test: {block(message)}", err=True)
     if result.packages:
         emit(render(fmt.value, result.packages, isolation=result.isolation), output, "test")
     raise typer.Exit(int(result.exit_code))
