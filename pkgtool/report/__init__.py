@@ -1,6 +1,10 @@
-"""Reports: one module per format, each a pure ``render(findings, *, context) -> str``.
+"""Reports: one writer per format for lint, test and grade, and lint's report in each format.
 
-Renderers never read files or the environment; everything they need is in the
+A format's module holds its one writer (:func:`pkgtool.report.junit.write`,
+:func:`pkgtool.report.json.document`, :func:`pkgtool.report.csv.write`) and lint's pure
+``render(findings, *, context) -> str``; test and grade map their results onto the same writers.
+Text a package or a student controls passes through :mod:`pkgtool.report.untrusted`.
+Renderers never read files or the environment; everything lint's need is in the
 :class:`ReportContext` (the rule catalogue for rule metadata, the packages checked, colour).
 """
 
