@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.model.xml import XmlElement, parse_xml
@@ -18,19 +18,10 @@ class Text:
 
 @dataclass(frozen=True, slots=True)
 class Person:
-    """A ``<maintainer>`` or ``<author>``."""
+    """A ``<maintainer>``."""
 
     name: str
     email: str | None
-    span: Span
-
-
-@dataclass(frozen=True, slots=True)
-class Url:
-    """A ``<url type=...>``."""
-
-    url: str
-    type: str | None
     span: Span
 
 
@@ -60,13 +51,10 @@ class Manifest:
     version: Text | None
     description: Text | None
     maintainers: tuple[Person, ...]
-    authors: tuple[Person, ...]
     licenses: tuple[Text, ...]
-    urls: tuple[Url, ...]
     dependencies: tuple[Dependency, ...]
     build_type: Text | None
     has_schema_line: bool = False
-    members_of: tuple[Text, ...] = field(default=())
 
     def depends(self, tags: frozenset[str] | set[str]) -> frozenset[str]:
         """Names declared with any of ``tags`` (``depend`` counts for every kind)."""
@@ -113,10 +101,7 @@ def _manifest(path: str, root: XmlElement, has_schema_line: bool) -> Manifest:
         version=_text(_first(root, "version")),
         description=_text(_first(root, "description")),
         maintainers=_people(root, "maintainer"),
-        authors=_people(root, "author"),
         licenses=tuple(Text(c.text, c.span) for c in root.children if c.tag == "license"),
-        urls=tuple(Url(c.text, c.attribute("type"), c.span)
-                   for c in root.children if c.tag == "url"),
         dependencies=tuple(
             Dependency(c.tag, c.text, c.span, c.attributes)
             for c in root.children
@@ -124,6 +109,4 @@ def _manifest(path: str, root: XmlElement, has_schema_line: bool) -> Manifest:
         ),
         build_type=_text(build_type),
         has_schema_line=has_schema_line,
-        members_of=tuple(Text(c.text, c.span)
-                         for c in root.children if c.tag == "member_of_group"),
     )
