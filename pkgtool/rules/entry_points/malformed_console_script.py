@@ -21,7 +21,7 @@ def problem(entry: EntryPoint) -> str | None:
     if any(c.isspace() for c in entry.name):
         return "has a command name with spaces"
     if not entry.valid:
-        return "does not name a `module:function` of valid Python identifiers"
+        return "does not name a `module:function` of letters, digits and underscores"
     if entry.attr is None:
         return "names a module but no function (`module:function`)"
     return None
@@ -35,8 +35,9 @@ def malformed_console_script(package: Package) -> Iterator[Hit]:
     ## What it does
     Parses each `console_scripts` (and `gui_scripts`) entry the way setuptools does and
     reports entries without `=`, without a command name, with spaces in the name, with a
-    module or function path that is not made of Python identifiers (`my-pkg.node`, `class`),
-    or without the `:function` part.
+    module or function path that is not dotted words of letters, digits and underscores
+    (`my-pkg.node`), or without the `:function` part. Parts need not be Python identifiers:
+    the wrapper setuptools installs loads `pkg.96:main` with `importlib`, which works.
 
     ## Why is this bad?
     setuptools rejects unparsable entries and the build fails; an entry without `:function`
