@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from pkgtool.model.files import TextFile, list_files, read_text
-from pkgtool.model.launch import LaunchFile, is_launch_file, parse_launch
+from pkgtool.model.launch import LaunchFile, is_launch_file, parse_launch, python_folders
 from pkgtool.model.launch_reader import yaml_problem
 from pkgtool.model.manifest import Manifest, parse_manifest
 from pkgtool.model.modules import PythonModule, parse_module
@@ -102,8 +102,9 @@ def load_package(root: Path) -> Package:
     setup_cfg = _parsed(problems, "setup.cfg", text_of, parse_setup_cfg, files)
     modules: list[PythonModule] = []
     launches: list[LaunchFile] = []
+    folders = python_folders(files)
     for relpath in files:
-        if is_launch_file(relpath) or _launch_by_content(relpath, text_of):
+        if is_launch_file(relpath, folders) or _launch_by_content(relpath, text_of):
             text = text_of(relpath)
             if text is not None:
                 launch = parse_launch(relpath, text)

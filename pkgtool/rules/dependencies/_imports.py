@@ -17,7 +17,7 @@ from pkgtool.knowledge.ros_names import looks_like_ros
 from pkgtool.knowledge.rosdep import (PYTHON_MODULE_KEYS, ROS_MODULE_PACKAGES, accepted_keys,
                                       package_for_ros_module, stdlib_modules, suggested_key)
 from pkgtool.model.installed import installed_modules
-from pkgtool.model.launch import is_launch_file
+from pkgtool.model.launch import is_launch_file, python_folders
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.memo import per_package
@@ -81,7 +81,7 @@ class _Layout:
 @lru_cache(maxsize=64)
 def _layout(files: tuple[str, ...]) -> _Layout:
     names: set[str] = set()
-    packages = {posixpath.dirname(p) for p in files if posixpath.basename(p) == "__init__.py"}
+    packages = python_folders(files)
     children: dict[str, set[str]] = {}
     for path in files:
         parts = path.split("/")
@@ -90,7 +90,7 @@ def _layout(files: tuple[str, ...]) -> _Layout:
             leaf = depth == len(parts) - 1
             children.setdefault("/".join(parts[:depth]), set()).add(
                 entry[:-3] if leaf and entry.endswith(".py") else entry)
-        if not path.endswith(".py") or is_launch_file(path):
+        if not path.endswith(".py") or is_launch_file(path, packages):
             continue
         if len(parts) == 1:
             names.add(parts[0][:-3])
@@ -98,7 +98,7 @@ def _layout(files: tuple[str, ...]) -> _Layout:
             names.add(parts[0])
             if parts[0] == "src" and len(parts) > 2:
                 names.add(parts[1])
-    return _Layout(frozenset(names), frozenset(packages),
+    return _Layout(frozenset(names), packages,
                    {k: frozenset(v) for k, v in children.items()})
 
 
