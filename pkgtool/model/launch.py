@@ -19,7 +19,8 @@ class NodeRef:
     do not resolve). ``action`` is the action's class or tag (``Node``, ``node``);
     ``arguments`` names the keywords or attributes given (``**`` for a ``**kwargs``, ``*`` for
     ``*args``); ``package_span`` and ``executable_span`` are where those two values are
-    written, when known.
+    written, when known. ``optional`` marks a node started only after the launch file checked
+    that its package is installed (``if 'x' in get_packages_with_prefixes():``).
     """
 
     package: str | None
@@ -29,14 +30,19 @@ class NodeRef:
     arguments: tuple[str, ...] = ()
     package_span: Span | None = None
     executable_span: Span | None = None
+    optional: bool = False
 
 
 @dataclass(frozen=True, slots=True)
 class PackageRef:
-    """A package named by get_package_share_directory, FindPackageShare or $(find-pkg-share)."""
+    """A package named by get_package_share_directory, FindPackageShare or $(find-pkg-share).
+
+    ``optional`` as for :class:`NodeRef`.
+    """
 
     package: str
     span: Span
+    optional: bool = False
 
 
 @dataclass(frozen=True, slots=True)
