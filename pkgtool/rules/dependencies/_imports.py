@@ -127,14 +127,29 @@ def installed_code(package: Package) -> list[PythonModule]:
             and posixpath.dirname(m.path) in packages]
 
 
+@per_package
+def pytest_plugins(package: Package) -> frozenset[str]:
+    """Files of modules that a ``pytest11`` entry point names: pytest loads them, nothing else."""
+    setup, installed = package.setup_py, installed_modules(package) or {}
+    return frozenset(installed[e.module] for e in (setup.entry_points or ()) if setup
+                     if e.group == "pytest11" and e.module in installed)
+
+
+def runtime_code(package: Package) -> list[PythonModule]:
+    """Installed code that runs outside tests: all of it except pytest plugins."""
+    plugins = pytest_plugins(package)
+    return [m for m in installed_code(package) if m.path not in plugins]
+
+
 def all_python(package: Package) -> list[PythonModule]:
     """Every parsed Python file: the package's modules and its Python launch files."""
     return [*package.modules, *(f.python for f in package.launch_files if f.python)]
 
 
 def test_code(package: Package) -> list[PythonModule]:
-    """Test modules: under test/ or tests/, test_*.py, *_test.py, conftest.py."""
-    return [m for m in package.modules if m.is_test]
+    """Test modules (under test/ or tests/, test_*.py, *_test.py, conftest.py), pytest plugins."""
+    plugins = pytest_plugins(package)
+    return [m for m in package.modules if m.is_test or m.path in plugins]
 
 
 def classify(top: str, declared_names: Iterable[str]) -> tuple[str, tuple[str, ...]]:

@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.dependencies._imports import (BUILD_ONLY, RUNTIME, declared, installed_code,
+from pkgtool.rules.dependencies._imports import (BUILD_ONLY, RUNTIME, declared, runtime_code,
                                                  needs)
 from pkgtool.rules.registry import rule
 
@@ -19,7 +19,8 @@ def import_declared_only_as_build_depend(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports imports in installed modules whose package or rosdep key appears only in
     `<build_depend>`, `<build_export_depend>` or `<buildtool_depend>`, never in `<depend>` or
-    `<exec_depend>`.
+    `<exec_depend>`. A module that only a `pytest11` entry point names is a pytest plugin,
+    test code that runs where pytest runs; its imports are checked as test imports (DEP003).
 
     ## Why is this bad?
     Build dependencies are not installed with the binary package: an ament_python package
@@ -40,7 +41,7 @@ def import_declared_only_as_build_depend(package: Package) -> Iterator[Hit]:
         return
     runtime = declared(package, RUNTIME)
     build_only = declared(package, BUILD_ONLY)
-    for module in installed_code(package):
+    for module in runtime_code(package):
         for need in needs(package, module):
             if any(k in runtime for k in need.keys):
                 continue

@@ -8,7 +8,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.package import Package
 from pkgtool.rules.dependencies._imports import (BUILD_ONLY, RUNTIME, TEST, Need, declared,
-                                                 installed_code, misnamed, needs)
+                                                 runtime_code, misnamed, needs)
 from pkgtool.rules.registry import rule
 
 
@@ -22,7 +22,8 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     package itself imports only inside `try/except ImportError` is optional: see DEP005).
     Standard library modules and the package's own modules are skipped; a ROS import must be
     covered by `<depend>` or `<exec_depend>` of its package, a third-party module by its rosdep key
-    (`cv2` by `python3-opencv`, `yaml` by `python3-yaml`, ...).
+    (`cv2` by `python3-opencv`, `yaml` by `python3-yaml`, ...). Modules that only a
+    `pytest11` entry point names are pytest plugins, checked as test code (DEP003).
 
     ## Why is this bad?
     `rosdep install` and the binary packages built by the ROS buildfarm install only what
@@ -44,7 +45,7 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     runtime = declared(package, RUNTIME)
     build_only = declared(package, BUILD_ONLY)
     tests = declared(package, TEST)
-    for module in installed_code(package):
+    for module in runtime_code(package):
         for need in needs(package, module):
             if need.kind == "unknown" or any(k in runtime for k in need.keys):
                 continue
