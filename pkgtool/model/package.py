@@ -112,6 +112,8 @@ def load_package(root: Path) -> Package:
                 if launch.problem:
                     problems.append(launch.problem)
         elif relpath.endswith((".yaml", ".yml")):  # parameter files: only their syntax
+            if _test_material(relpath):
+                continue  # test data, deliberately broken at times: not package files
             text = text_of(relpath)
             if text is not None and "{%" not in text:  # a Jinja template is not YAML yet
                 found = yaml_problem(relpath, text)
@@ -122,7 +124,7 @@ def load_package(root: Path) -> Package:
             if text is not None:
                 module = parse_module(relpath, text)
                 modules.append(module)
-                if module.syntax_error:
+                if module.syntax_error and not _test_data(relpath):
                     problems.append(module.syntax_error)
     suppressions: dict[tuple[str, int], frozenset[str]] = {}
     for relpath, text in texts.items():
@@ -133,6 +135,18 @@ def load_package(root: Path) -> Package:
 
 _LAUNCH_XML = re.compile(r"\s*(?:<\?xml[^>]*\?>\s*)?(?:<!--.*?-->\s*)*<launch[\s>/]", re.S)
 _LAUNCH_YAML = re.compile(r"^launch\s*:", re.M)
+
+
+def _test_material(relpath: str) -> bool:
+    """A file under ``test/`` or ``tests/``."""
+    return relpath.split("/", 1)[0] in ("test", "tests")
+
+
+def _test_data(relpath: str) -> bool:
+    """A Python file under ``test/`` that pytest does not collect (a fixture, sample input)."""
+    name = relpath.rsplit("/", 1)[-1]
+    collected = name.startswith("test_") or name.endswith("_test.py") or name == "conftest.py"
+    return _test_material(relpath) and not collected
 
 
 def _launch_by_content(relpath: str, text_of: Callable[[str], str | None]) -> bool:
