@@ -126,6 +126,9 @@ def load_package(root: Path) -> Package:
                 modules.append(module)
                 if module.syntax_error and not _test_data(relpath):
                     problems.append(module.syntax_error)
+    for readme in ("README.md", "README.rst", "README.txt", "README"):
+        if readme in files:  # what the package says about itself (`ros2 run ...`)
+            text_of(readme)
     suppressions: dict[tuple[str, int], frozenset[str]] = {}
     for relpath, text in texts.items():
         suppressions.update(_suppressions(relpath, text))
