@@ -130,8 +130,9 @@ def installed_code(package: Package) -> list[PythonModule]:
 @per_package
 def pytest_plugins(package: Package) -> frozenset[str]:
     """Files of modules that a ``pytest11`` entry point names: pytest loads them, nothing else."""
-    setup, installed = package.setup_py, installed_modules(package) or {}
-    return frozenset(installed[e.module] for e in (setup.entry_points or ()) if setup
+    entries = package.setup_py.entry_points if package.setup_py else None
+    installed = installed_modules(package) or {}
+    return frozenset(installed[e.module] for e in entries or ()
                      if e.group == "pytest11" and e.module in installed)
 
 
