@@ -141,8 +141,8 @@ _LAUNCH_YAML = re.compile(r"^launch\s*:", re.M)
 
 
 def _test_material(relpath: str) -> bool:
-    """A file under ``test/`` or ``tests/``."""
-    return relpath.split("/", 1)[0] in ("test", "tests")
+    """A file in a ``test`` or ``tests`` folder (also one inside the Python package)."""
+    return any(part in ("test", "tests") for part in relpath.split("/")[:-1])
 
 
 def _test_data(relpath: str) -> bool:

@@ -3,7 +3,8 @@
 Command-line tools (`ros2`, `rqt`, linters, code generators) install their scripts to `bin/`
 on purpose. Scripts count as meant for `ros2 run` when there is evidence: a launch file of
 the package starts one of the package's executables, the package's README names `ros2 run
-<package>`, or a script's module imports rclpy (it builds a node).
+<package>`, or a script's module imports rclpy's `Node` (it builds a node; `ros2` and `rqt`
+import rclpy for other things).
 """
 
 from __future__ import annotations
@@ -12,6 +13,7 @@ import re
 
 from pkgtool.model.installed import installed_modules
 from pkgtool.model.memo import per_package
+from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
 
 README_NAMES = ("README.md", "README.rst", "README.txt", "README")
@@ -32,9 +34,16 @@ def meant_for_ros2_run(package: Package) -> bool:
     files = installed_modules(package) or {}
     for entry in setup.console_scripts:
         module = package.module(files.get(entry.module, ""))
-        if module is not None and any(i.top_level == "rclpy" for i in module.imports):
+        if module is not None and any(_imports_node(i) for i in module.imports):
             return True
     return False
+
+
+def _imports_node(imported: Import) -> bool:
+    """``from rclpy.node import Node``, ``import rclpy.node``, rclpy's lifecycle nodes."""
+    return imported.top_level == "rclpy" and (
+        imported.module.startswith(("rclpy.node", "rclpy.lifecycle"))
+        or any(name in ("Node", "LifecycleNode", "create_node") for name in imported.names))
 
 
 def is_rqt_plugin(package: Package) -> bool:

@@ -20,7 +20,7 @@ def missing_setup_cfg(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports the first `console_scripts` entry of a package that has no setup.cfg, when the
     scripts are meant for `ros2 run`: a launch file of the package starts one, the README
-    names `ros2 run <package>`, or a script's module imports rclpy. Command-line tools
+    names `ros2 run <package>`, or a script's module imports rclpy's `Node`. Command-line tools
     (`ros2`, linters, code generators) install to `bin/` on purpose; without such evidence
     the package gets SET013 (info) instead. An rqt plugin (package.xml exports `<rqt_gui
     plugin=...>`) is exempt: rqt tools install their standalone script to `bin/` on purpose,

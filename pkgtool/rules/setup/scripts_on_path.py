@@ -21,9 +21,9 @@ def console_scripts_on_path(package: Package) -> Iterator[Hit]:
     Notes the first `console_scripts` entry of a package whose scripts install to the prefix's
     `bin/` (no setup.cfg, or one without `[install] install_scripts`) when no evidence says
     they are nodes for `ros2 run`: no launch file of the package starts them, the README does
-    not name `ros2 run <package>`, and no script's module imports rclpy. That is right for a
-    command-line tool (`ros2`, linters, code generators), so this is only information; with
-    such evidence the package gets SET008 or SET009 (errors) instead.
+    not name `ros2 run <package>`, and no script's module imports rclpy's `Node`. That is
+    right for a command-line tool (`ros2`, linters, code generators), so this is only
+    information; with such evidence the package gets SET008 or SET009 (errors) instead.
 
     ## Why is this bad?
     It is not, for a tool meant for the shell. For a node it is: `ros2 run <package>
@@ -32,7 +32,7 @@ def console_scripts_on_path(package: Package) -> Iterator[Hit]:
     ## Example
     ```text
     my_tool/setup.py   entry_points={'console_scripts': ['my_tool = my_tool.cli:main']}
-    (no setup.cfg; my_tool/cli.py parses arguments and never imports rclpy)
+    (no setup.cfg; my_tool/cli.py parses arguments and builds no node)
     ```
 
     ## Use instead
