@@ -2,10 +2,13 @@
 
 A package is a folder holding ``package.xml`` or ``setup.py``. Discovery follows colcon:
 
-- a folder holding an ignore marker (``COLCON_IGNORE``, ``AMENT_IGNORE``, ``CATKIN_IGNORE``) is
-  skipped with everything below it;
-- hidden folders, virtual environments (a ``pyvenv.cfg``), ``__pycache__``, ``node_modules``,
-  ``*.egg-info`` and colcon's ``build``/``install``/``log`` folders are skipped;
+- a folder holding an ignore marker (``COLCON_IGNORE``, ``AMENT_IGNORE``, ``CATKIN_IGNORE``) or
+  the marker of an old catkin/ament_tools install space (``_setup_util.py``,
+  ``_order_isolated_packages.py``) is skipped with everything below it; colcon writes
+  ``COLCON_IGNORE`` into its ``build``/``install``/``log`` folders, which is why those are
+  skipped: a folder merely named ``build`` is searched, as colcon does;
+- hidden folders are skipped (colcon too); so are, beyond colcon, virtual environments (a
+  ``pyvenv.cfg``), ``__pycache__``, ``node_modules``, ``site-packages`` and ``*.egg-info``;
 - packages do not nest: once a folder is a package, its sub-folders are not searched.
 
 A folder named on the command line is linted (or searched) even when it holds an ignore
@@ -22,9 +25,9 @@ from dataclasses import dataclass
 from pathlib import Path
 
 PACKAGE_MARKERS = ("package.xml", "setup.py")
-IGNORE_MARKERS = frozenset({"COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE"})
+IGNORE_MARKERS = frozenset({"COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE",
+                            "_setup_util.py", "_order_isolated_packages.py"})
 SKIPPED_NAMES = frozenset({"__pycache__", "node_modules", "site-packages"})
-OUTPUT_DIRS = frozenset({"build", "install", "log"})
 
 
 @dataclass(frozen=True, slots=True)
@@ -92,8 +95,6 @@ def _skipped_below(root: Path, cwd: Path) -> bool:
         folder = folder / part
         if _skipped_name(part) or _ignored_here(folder) or (folder / "pyvenv.cfg").is_file():
             return True
-        if part in OUTPUT_DIRS and folder != root:
-            return True
     return False
 
 
@@ -124,7 +125,7 @@ def _walk(top: Path) -> Iterable[Path]:
             continue
         if any(marker in names for marker in PACKAGE_MARKERS) and is_package(sub):
             yield sub
-        elif sub.name not in OUTPUT_DIRS:
+        else:
             folders += subfolders
             links += sublinks
 

@@ -19,7 +19,8 @@ class NodeRef:
     do not resolve). ``action`` is the action's class or tag (``Node``, ``node``);
     ``arguments`` names the keywords or attributes given (``**`` for a ``**kwargs``, ``*`` for
     ``*args``); ``package_span`` and ``executable_span`` are where those two values are
-    written, when known.
+    written, when known. ``optional`` marks a node started only after the launch file checked
+    that its package is installed (``if 'x' in get_packages_with_prefixes():``).
     """
 
     package: str | None
@@ -29,14 +30,19 @@ class NodeRef:
     arguments: tuple[str, ...] = ()
     package_span: Span | None = None
     executable_span: Span | None = None
+    optional: bool = False
 
 
 @dataclass(frozen=True, slots=True)
 class PackageRef:
-    """A package named by get_package_share_directory, FindPackageShare or $(find-pkg-share)."""
+    """A package named by get_package_share_directory, FindPackageShare or $(find-pkg-share).
+
+    ``optional`` as for :class:`NodeRef`.
+    """
 
     package: str
     span: Span
+    optional: bool = False
 
 
 @dataclass(frozen=True, slots=True)
@@ -65,10 +71,32 @@ class LaunchFile:
     problem: ParseProblem | None = None
 
 
-def is_launch_file(path: str) -> bool:
-    """True for the launch file names ros2 launch recognises."""
-    name = path.rsplit("/", 1)[-1]
-    return name.endswith(LAUNCH_SUFFIXES)
+NOT_LAUNCH_FOLDERS = frozenset({"test", "tests", "example", "examples", "doc", "docs"})
+"""Top-level folders of test and documentation material: a launch-like name there is not enough."""
+
+
+def is_launch_file(path: str, python_folders: frozenset[str] = frozenset()) -> bool:
+    """True for a file with a launch file name that the package keeps as a launch file.
+
+    Anything named like a launch file in a ``launch`` folder is one. Elsewhere the name is not
+    enough: a module inside a Python package folder (``python_folders``: folders holding an
+    ``__init__.py``; it is installed as code), a test (``test_*``) and files under
+    ``test/``, ``examples/`` or ``doc/`` (run by pytest, or by ``main()`` with a
+    ``LaunchService``) are not launch files.
+    """
+    folder, _, name = path.rpartition("/")
+    if not name.endswith(LAUNCH_SUFFIXES):
+        return False
+    parts = folder.split("/") if folder else []
+    if "launch" in parts:
+        return True
+    return not (name.startswith("test_") or (parts and parts[0] in NOT_LAUNCH_FOLDERS)
+                or folder in python_folders)
+
+
+def python_folders(files: tuple[str, ...] | list[str]) -> frozenset[str]:
+    """Folders holding an ``__init__.py``."""
+    return frozenset(p.rpartition("/")[0] for p in files if p.rpartition("/")[2] == "__init__.py")
 
 
 def parse_launch(path: str, text: str) -> LaunchFile:

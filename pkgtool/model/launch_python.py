@@ -12,6 +12,7 @@ import ast
 from dataclasses import dataclass
 
 from pkgtool.model.launch import FileRef, NodeRef, PackageRef
+from pkgtool.model.launch_scopes import bindings, import_origins
 from pkgtool.model.span import Span
 
 SHARE_LOOKUPS = frozenset({"get_package_share_directory", "get_package_share_path",
@@ -21,6 +22,10 @@ NODE_ACTIONS = frozenset({"Node", "LifecycleNode", "ComposableNodeContainer"})
 PLUGIN_ACTIONS = frozenset({"ComposableNode"})
 JOINS = frozenset({"join", "PathJoinSubstitution", "joinpath"})
 CONCATENATING = ("LaunchDescriptionSource", "Command")
+PRESENCE_CHECKS = frozenset({"get_packages_with_prefixes", "get_package_prefix",
+                             "get_package_share_directory", "get_package_share_path",
+                             "has_resource", "get_resource"})
+"""ament_index calls a launch file makes to find out whether a package is installed."""
 _MAX_DEPTH = 40
 _MAX_TEXT = 4096
 """Longest string the evaluator builds (doubling concatenations stay bounded)."""
@@ -56,58 +61,16 @@ def _split(text: str) -> tuple[str, ...] | None:
     return None if ".." in parts else parts
 
 
-def _bindings(body: list[ast.stmt], params: ast.arguments | None) -> dict[str, ast.expr | None]:
-    """Names bound in one scope: the single assigned expression, or None when ambiguous."""
-    found: dict[str, ast.expr | None] = {}
-    if params is not None:
-        for arg in (*params.posonlyargs, *params.args, *params.kwonlyargs,
-                    params.vararg, params.kwarg):
-            if arg is not None:
-                found[arg.arg] = None
-    nodes = _scope_nodes(body)
-    simple = {id(n.targets[0]) for n in nodes if _simple_assignment(n)}
-    for node in nodes:
-        if _simple_assignment(node):
-            name = node.targets[0].id  # type: ignore[attr-defined]
-            found[name] = None if name in found else node.value  # type: ignore[attr-defined]
-        elif isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
-            if id(node) not in simple:
-                found[node.id] = None
-        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
-            found[node.name] = None
-        elif isinstance(node, (ast.Import, ast.ImportFrom)):
-            found.update({(a.asname or a.name).split(".")[0]: None for a in node.names})
-        elif isinstance(node, (ast.Global, ast.Nonlocal)):
-            found.update({name: None for name in node.names})
-    return found
-
-
-def _simple_assignment(node: ast.AST) -> bool:
-    return (isinstance(node, ast.Assign) and len(node.targets) == 1
-            and isinstance(node.targets[0], ast.Name))
-
-
-def _scope_nodes(body: list[ast.stmt]) -> list[ast.AST]:
-    """Every node of ``body`` that belongs to this scope (nested defs appear, not their body)."""
-    result: list[ast.AST] = []
-    stack: list[ast.AST] = list(reversed(body))
-    while stack:
-        node = stack.pop()
-        result.append(node)
-        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)):
-            continue
-        stack.extend(reversed(list(ast.iter_child_nodes(node))))
-    return result
-
-
 class _Reader(ast.NodeVisitor):
     def __init__(self, path: str, tree: ast.Module) -> None:
         self.path = path
-        self.scopes = [_bindings(tree.body, None)]
+        self.scopes = [bindings(tree.body, None)]
         self.cache: list[dict[str, Value]] = [{}]
         self.nodes: list[NodeRef] = []
         self.packages: list[PackageRef] = []
         self.files: list[FileRef] = []
+        self.origins = import_origins(tree)
+        self.optional = 0  # > 0 inside a block that runs only if some package is installed
 
     def _span(self, node: ast.AST) -> Span:
         return Span(self.path, getattr(node, "lineno", 1), getattr(node, "col_offset", 0) + 1)
@@ -117,7 +80,7 @@ class _Reader(ast.NodeVisitor):
         for default in (*node.args.defaults, *node.args.kw_defaults, *node.decorator_list):
             if default is not None:
                 self.visit(default)
-        self.scopes.append(_bindings(node.body, node.args))
+        self.scopes.append(bindings(node.body, node.args))
         self.cache.append({})
         for statement in node.body:
             self.visit(statement)
@@ -125,6 +88,46 @@ class _Reader(ast.NodeVisitor):
         self.cache.pop()
 
     visit_AsyncFunctionDef = visit_FunctionDef
+
+    # blocks that run only when a package is installed ------------------------------------
+    def visit_If(self, node: ast.If) -> None:
+        self.visit(node.test)
+        checked = any(isinstance(n, ast.Call) and _name(n.func) in PRESENCE_CHECKS
+                      for n in ast.walk(node.test))
+        self._visit_block(node.body, checked)
+        self._visit_block(node.orelse, False)
+
+    def visit_Try(self, node: ast.Try) -> None:
+        checked = any(isinstance(n, (ast.Name, ast.Attribute)) and
+                      _name(n) == "PackageNotFoundError"
+                      for handler in node.handlers if handler.type for n in ast.walk(handler.type))
+        self._visit_block(node.body, checked)
+        for part in (*node.handlers, *node.orelse, *node.finalbody):
+            self.visit(part)
+
+    def _visit_block(self, body: list[ast.stmt], optional: bool) -> None:
+        self.optional += optional
+        for statement in body:
+            self.visit(statement)
+        self.optional -= optional
+
+    def _action(self, func: ast.expr) -> str:
+        """The launch action a call constructs, through the file's imports ('' for none).
+
+        ``Node`` imported from rclpy is not one; ``LaunchNode`` imported as launch_ros's
+        ``Node`` is. A name the file never imports (a star import) keeps the benefit of the
+        doubt.
+        """
+        base = func
+        while isinstance(base, ast.Attribute):
+            base = base.value
+        origins = self.origins.get(base.id) if isinstance(base, ast.Name) else None
+        if not origins:
+            return _name(func)
+        launch = sorted(o for o in origins if o.split(".")[0] == "launch_ros")
+        if not launch:
+            return ""
+        return launch[0].rsplit(".", 1)[-1] if isinstance(func, ast.Name) else _name(func)
 
     # evaluation -------------------------------------------------------------------------
     def value(self, node: ast.expr | None, depth: int = 0, top: int | None = None) -> Value:
@@ -184,10 +187,10 @@ class _Reader(ast.NodeVisitor):
 
     # recording --------------------------------------------------------------------------
     def visit_Call(self, node: ast.Call) -> None:
-        name = _name(node.func)
-        if name in NODE_ACTIONS or name in PLUGIN_ACTIONS:
+        name, action = _name(node.func), self._action(node.func)
+        if action in NODE_ACTIONS or action in PLUGIN_ACTIONS:
             package_node = _keyword(node, "package")
-            executable_node = None if name in PLUGIN_ACTIONS else (
+            executable_node = None if action in PLUGIN_ACTIONS else (
                 _keyword(node, "executable") or _keyword(node, "node_executable"))
             package, executable = self.value(package_node), self.value(executable_node)
             arguments = tuple(k.arg or "**" for k in node.keywords)
@@ -195,16 +198,17 @@ class _Reader(ast.NodeVisitor):
                 arguments += ("*",)
             self.nodes.append(NodeRef(
                 package if isinstance(package, str) else None,
-                executable if isinstance(executable, str) else None, self._span(node), name,
+                executable if isinstance(executable, str) else None, self._span(node), action,
                 arguments,
                 package_node and self._span(package_node),
-                executable_node and self._span(executable_node)))
+                executable_node and self._span(executable_node), bool(self.optional)))
         elif name == "ExecuteProcess":
             self._ros2_run(node)
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
             found = self.value(node)
             if isinstance(found, Share):
-                self.packages.append(PackageRef(found.package, self._span(node)))
+                self.packages.append(PackageRef(found.package, self._span(node),
+                                                bool(self.optional)))
         self._record_path(node)
         self.generic_visit(node)
 
@@ -212,7 +216,8 @@ class _Reader(ast.NodeVisitor):
         command = self.value(_keyword(node, "cmd"))
         if (isinstance(command, tuple) and len(command) >= 4 and command[:2] == ("ros2", "run")
                 and all(isinstance(c, str) for c in command[2:4])):
-            self.nodes.append(NodeRef(command[2], command[3], self._span(node)))
+            self.nodes.append(NodeRef(command[2], command[3], self._span(node),
+                                      optional=bool(self.optional)))
 
     def visit_BinOp(self, node: ast.BinOp) -> None:
         self._record_path(node)

@@ -8,7 +8,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from pkgtool.model.files import TextFile, list_files, read_text
-from pkgtool.model.launch import LaunchFile, is_launch_file, parse_launch
+from pkgtool.model.launch import LaunchFile, is_launch_file, parse_launch, python_folders
 from pkgtool.model.launch_reader import yaml_problem
 from pkgtool.model.manifest import Manifest, parse_manifest
 from pkgtool.model.modules import PythonModule, parse_module
@@ -100,8 +100,9 @@ def load_package(root: Path) -> Package:
     setup_cfg = _parsed(problems, "setup.cfg", text_of, parse_setup_cfg, files)
     modules: list[PythonModule] = []
     launches: list[LaunchFile] = []
+    folders = python_folders(files)
     for relpath in files:
-        if is_launch_file(relpath) or _launch_by_content(relpath, text_of):
+        if is_launch_file(relpath, folders) or _launch_by_content(relpath, text_of):
             text = text_of(relpath)
             if text is not None:
                 launch = parse_launch(relpath, text)
@@ -109,6 +110,8 @@ def load_package(root: Path) -> Package:
                 if launch.problem:
                     problems.append(launch.problem)
         elif relpath.endswith((".yaml", ".yml")):  # parameter files: only their syntax
+            if _test_material(relpath):
+                continue  # test data, deliberately broken at times: not package files
             text = text_of(relpath)
             if text is not None and "{%" not in text:  # a Jinja template is not YAML yet
                 found = yaml_problem(relpath, text)
@@ -119,8 +122,11 @@ def load_package(root: Path) -> Package:
             if text is not None:
                 module = parse_module(relpath, text)
                 modules.append(module)
-                if module.syntax_error:
+                if module.syntax_error and not _test_data(relpath):
                     problems.append(module.syntax_error)
+    for readme in ("README.md", "README.rst", "README.txt", "README"):
+        if readme in files:  # what the package says about itself (`ros2 run ...`)
+            text_of(readme)
     suppressions: dict[tuple[str, int], frozenset[str]] = {}
     for relpath, text in texts.items():
         suppressions.update(_suppressions(relpath, text))
@@ -130,6 +136,18 @@ def load_package(root: Path) -> Package:
 
 _LAUNCH_XML = re.compile(r"\s*(?:<\?xml[^>]*\?>\s*)?(?:<!--.*?-->\s*)*<launch[\s>/]", re.S)
 _LAUNCH_YAML = re.compile(r"^launch\s*:", re.M)
+
+
+def _test_material(relpath: str) -> bool:
+    """A file in a ``test`` or ``tests`` folder (also one inside the Python package)."""
+    return any(part in ("test", "tests") for part in relpath.split("/")[:-1])
+
+
+def _test_data(relpath: str) -> bool:
+    """A Python file under ``test/`` that pytest does not collect (a fixture, sample input)."""
+    name = relpath.rsplit("/", 1)[-1]
+    collected = name.startswith("test_") or name.endswith("_test.py") or name == "conftest.py"
+    return _test_material(relpath) and not collected
 
 
 def _launch_by_content(relpath: str, text_of: Callable[[str], str | None]) -> bool:

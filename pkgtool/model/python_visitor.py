@@ -7,6 +7,7 @@ import functools
 
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.span import ParseProblem, Span
+from pkgtool.model.static_branches import mentions_module_name, module_constants, truth
 
 _GUARD_EXCEPTIONS = frozenset({"ImportError", "ModuleNotFoundError", "Exception", "BaseException"})
 
@@ -30,17 +31,20 @@ def _mentions_find_spec(test: ast.expr) -> bool:
                for n in ast.walk(test))
 
 
-def _guarded_parts(node: ast.AST, guarded: bool) -> list[tuple[ast.AST, bool]]:
+def _guarded_parts(node: ast.AST, guarded: bool, constants: dict[str, bool]
+                   ) -> list[tuple[ast.AST, bool]]:
     """The statements directly inside ``node``, each with whether its imports are guarded."""
     if isinstance(node, (ast.Try, ast.TryStar)):
         inner = guarded or any(_catches_import_error(h) for h in node.handlers)
         return ([(s, inner) for s in node.body]
-                + [(p, guarded) for p in (*node.handlers, *node.orelse, *node.finalbody)])
+                + [(h, guarded or _catches_import_error(h)) for h in node.handlers]
+                + [(p, guarded) for p in (*node.orelse, *node.finalbody)])
     if isinstance(node, ast.If):
-        spec_check = _mentions_find_spec(node.test)
-        inner = guarded or spec_check or _is_type_checking(node.test)
+        value = truth(node.test, constants)
+        either = guarded or _mentions_find_spec(node.test) or mentions_module_name(node.test)
+        inner = either or _is_type_checking(node.test) or value is False
         return ([(s, inner) for s in node.body]
-                + [(s, guarded or spec_check) for s in node.orelse])
+                + [(s, either or value is True) for s in node.orelse])
     return [(child, guarded) for field in _BLOCK_FIELDS for child in getattr(node, field, ())]
 
 
@@ -54,6 +58,7 @@ _BLOCK_NODES = (ast.stmt, ast.excepthandler, ast.match_case)
 def _imports(path: str, tree: ast.Module) -> list[Import]:
     """Every import of the module in source order (an explicit stack: no recursion limit)."""
     found: list[Import] = []
+    constants = module_constants(tree)
     stack: list[tuple[ast.AST, bool]] = [(tree, False)]
     while stack:
         node, guarded = stack.pop()
@@ -65,7 +70,7 @@ def _imports(path: str, tree: ast.Module) -> list[Import]:
                 names = tuple(alias.name for alias in node.names)
                 found.append(Import(node.module or "", node.level, names, span, guarded))
         else:  # imports are statements: expressions need no visit (5x faster on real code)
-            stack.extend(part for part in _guarded_parts(node, guarded)
+            stack.extend(part for part in _guarded_parts(node, guarded, constants)
                          if isinstance(part[0], _BLOCK_NODES))
     return sorted(found, key=lambda i: (i.span.line, i.span.col))
 

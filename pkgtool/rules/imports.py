@@ -17,7 +17,7 @@ from pkgtool.knowledge.ros_names import looks_like_ros
 from pkgtool.knowledge.rosdep import (PYTHON_MODULE_KEYS, ROS_MODULE_PACKAGES, accepted_keys,
                                       package_for_ros_module, stdlib_modules, suggested_key)
 from pkgtool.model.installed import installed_modules
-from pkgtool.model.launch import is_launch_file
+from pkgtool.model.launch import is_launch_file, python_folders
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.memo import per_package
@@ -81,7 +81,7 @@ class _Layout:
 @lru_cache(maxsize=64)
 def _layout(files: tuple[str, ...]) -> _Layout:
     names: set[str] = set()
-    packages = {posixpath.dirname(p) for p in files if posixpath.basename(p) == "__init__.py"}
+    packages = python_folders(files)
     children: dict[str, set[str]] = {}
     for path in files:
         parts = path.split("/")
@@ -90,7 +90,7 @@ def _layout(files: tuple[str, ...]) -> _Layout:
             leaf = depth == len(parts) - 1
             children.setdefault("/".join(parts[:depth]), set()).add(
                 entry[:-3] if leaf and entry.endswith(".py") else entry)
-        if not path.endswith(".py") or is_launch_file(path):
+        if not path.endswith(".py") or is_launch_file(path, packages):
             continue
         if len(parts) == 1:
             names.add(parts[0][:-3])
@@ -98,7 +98,7 @@ def _layout(files: tuple[str, ...]) -> _Layout:
             names.add(parts[0])
             if parts[0] == "src" and len(parts) > 2:
                 names.add(parts[1])
-    return _Layout(frozenset(names), frozenset(packages),
+    return _Layout(frozenset(names), packages,
                    {k: frozenset(v) for k, v in children.items()})
 
 
@@ -127,14 +127,30 @@ def installed_code(package: Package) -> list[PythonModule]:
             and posixpath.dirname(m.path) in packages]
 
 
+@per_package
+def pytest_plugins(package: Package) -> frozenset[str]:
+    """Files of modules that a ``pytest11`` entry point names: pytest loads them, nothing else."""
+    entries = package.setup_py.entry_points if package.setup_py else None
+    installed = installed_modules(package) or {}
+    return frozenset(installed[e.module] for e in entries or ()
+                     if e.group == "pytest11" and e.module in installed)
+
+
+def runtime_code(package: Package) -> list[PythonModule]:
+    """Installed code that runs outside tests: all of it except pytest plugins."""
+    plugins = pytest_plugins(package)
+    return [m for m in installed_code(package) if m.path not in plugins]
+
+
 def all_python(package: Package) -> list[PythonModule]:
     """Every parsed Python file: the package's modules and its Python launch files."""
     return [*package.modules, *(f.python for f in package.launch_files if f.python)]
 
 
 def test_code(package: Package) -> list[PythonModule]:
-    """Test modules: under test/ or tests/, test_*.py, *_test.py, conftest.py."""
-    return [m for m in package.modules if m.is_test]
+    """Test modules (under test/ or tests/, test_*.py, *_test.py, conftest.py), pytest plugins."""
+    plugins = pytest_plugins(package)
+    return [m for m in package.modules if m.is_test or m.path in plugins]
 
 
 def classify(top: str, declared_names: Iterable[str]) -> tuple[str, tuple[str, ...]]:
@@ -173,11 +189,11 @@ def needs(package: Package, module: PythonModule, *, guarded: bool | None = Fals
 
 
 def unmet_runtime_needs(package: Package) -> Iterator[Need]:
-    """Needs of installed code that no run-time key provides (none without a package.xml)."""
+    """Needs of run-time code that no run-time key provides (none without a package.xml)."""
     if package.manifest is None:
         return
     runtime = declared(package, RUNTIME)
-    for module in installed_code(package):
+    for module in runtime_code(package):
         for need in needs(package, module):
             if not any(k in runtime for k in need.keys):
                 yield need

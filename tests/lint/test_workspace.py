@@ -34,9 +34,15 @@ def workspace(tmp_path: Path) -> Path:
         "src/.hidden/delta/package.xml": MANIFEST,
         "venv/pyvenv.cfg": "home = /usr/bin\n",
         "venv/lib/site/package.xml": MANIFEST,
+        "build/COLCON_IGNORE": "",  # colcon writes the marker into what it creates
         "build/alpha/package.xml": MANIFEST,
+        "install/COLCON_IGNORE": "",
         "install/alpha/share/alpha/package.xml": MANIFEST,
+        "log/COLCON_IGNORE": "",
         "log/latest/package.xml": MANIFEST,
+        "src/build/zeta/package.xml": MANIFEST,  # only a name: colcon finds it
+        "old_install/_setup_util.py": "",  # a catkin install space
+        "old_install/share/eta/package.xml": MANIFEST,
         "src/node_modules/epsilon/package.xml": MANIFEST,
         "README.md": "workspace\n",
     })
@@ -44,7 +50,8 @@ def workspace(tmp_path: Path) -> Path:
 
 
 def test_workspace_discovery_follows_colcon(workspace: Path) -> None:
-    assert _names(workspace, ".") == ["src/alpha", "src/group/beta", "src/group/pure"]
+    assert _names(workspace, ".") == ["src/alpha", "src/build/zeta", "src/group/beta",
+                                      "src/group/pure"]
 
 
 def test_no_path_means_the_current_folder(workspace: Path) -> None:
@@ -87,13 +94,14 @@ def test_absolute_paths_and_paths_outside_the_cwd(workspace: Path, tmp_path: Pat
 def test_symlinked_packages_are_found_once_and_cycles_stop(workspace: Path) -> None:
     (workspace / "src" / "link_to_beta").symlink_to(workspace / "src" / "group" / "beta")
     (workspace / "src" / "group" / "loop").symlink_to(workspace / "src")
-    assert len(_names(workspace, ".")) == 3
+    assert len(_names(workspace, ".")) == 4
 
 
 @pytest.mark.parametrize("link", ["src/a_link", "src/group/zz_link", "a_link"])
 def test_a_linked_package_is_reported_at_its_real_path(workspace: Path, link: str) -> None:
     (workspace / link).symlink_to(workspace / "src" / "group" / "beta")
-    assert _names(workspace, ".") == ["src/alpha", "src/group/beta", "src/group/pure"]
+    assert _names(workspace, ".") == ["src/alpha", "src/build/zeta", "src/group/beta",
+                                      "src/group/pure"]
 
 
 def test_owning_package_stops_at_the_repository_root(tmp_path: Path) -> None:
@@ -113,7 +121,7 @@ def test_unreadable_folders_are_skipped(workspace: Path, monkeypatch: pytest.Mon
         return scandir(path)  # type: ignore[arg-type]
 
     monkeypatch.setattr(os, "scandir", refusing)
-    assert _names(workspace, ".") == ["src/alpha"]
+    assert _names(workspace, ".") == ["src/alpha", "src/build/zeta"]
 
 
 def test_a_folder_inside_a_package_lints_its_package(workspace: Path) -> None:

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import keyword
 import re
 from typing import Any
 
@@ -20,9 +19,16 @@ _SECTION = re.compile(r"^\[\s*(?P<group>[^\]]+?)\s*\]$")
 _VALUE = re.compile(r"^(?P<module>[^:\[\s]+)\s*(?::\s*(?P<attr>[^\[\s]+)\s*)?(?P<extras>\[.*\])?$")
 
 
+_PART = re.compile(r"\w+")
+
+
 def _dotted(name: str | None) -> bool:
-    return bool(name) and all(p.isidentifier() and not keyword.iskeyword(p)
-                              for p in name.split("."))  # type: ignore[union-attr]
+    """Dotted parts of word characters, as setuptools' entry-point pattern requires.
+
+    Not Python identifiers: the console-script wrapper loads the module with ``importlib``
+    and the function with ``getattr``, so ``pkg.96:main`` or ``pkg.class:main`` work.
+    """
+    return bool(name) and all(_PART.fullmatch(p) for p in name.split("."))  # type: ignore
 
 
 def parse_entry_point(group: str, spec: str, span: Span) -> EntryPoint:

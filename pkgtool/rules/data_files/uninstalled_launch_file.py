@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import installed_data
-from pkgtool.model.launch import is_launch_file
+from pkgtool.model.launch import is_launch_file, python_folders
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
@@ -26,7 +26,8 @@ def uninstalled_launch_file(package: Package) -> Iterator[Hit]:
     Reports launch files (`*.launch.py`, `*_launch.py`, XML and YAML variants) that data_files
     does not install anywhere under `share/<name>`; installing them flat into `share/<name>`
     or into `share/<name>/launch` are both fine. Launch files under `test/` and `doc/` are
-    ignored.
+    ignored, and so are files that only look like launch files: outside a `launch` folder, a
+    module inside the Python package, a `test_*` file or a file under `examples/`.
 
     ## Why is this bad?
     `ros2 launch <package> <file>` searches the installed share folder only: the launch file
@@ -50,7 +51,8 @@ def uninstalled_launch_file(package: Package) -> Iterator[Hit]:
         return
     share = f"share/{package.name}/"
     shared = {source for target, source in installed.items() if target.startswith(share)}
-    for path in sorted({*(f for f in package.files if is_launch_file(f)),
+    folders = python_folders(package.files)
+    for path in sorted({*(f for f in package.files if is_launch_file(f, folders)),
                         *(launch.path for launch in package.launch_files)}):
         if path.split("/")[0] not in NOT_INSTALLED_FOLDERS and path not in shared:
             name = path.rsplit("/", 1)[-1]

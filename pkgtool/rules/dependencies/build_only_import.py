@@ -18,7 +18,8 @@ def import_declared_only_as_build_depend(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports imports in installed modules whose package or rosdep key appears only in
     `<build_depend>`, `<build_export_depend>` or `<buildtool_depend>`, never in `<depend>` or
-    `<exec_depend>`.
+    `<exec_depend>`. A module that only a `pytest11` entry point names is a pytest plugin,
+    test code that runs where pytest runs; its imports are checked as test imports (DEP003).
 
     ## Why is this bad?
     Build dependencies are not installed with the binary package: an ament_python package

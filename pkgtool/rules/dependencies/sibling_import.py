@@ -9,7 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdep import PYTHON_MODULE_KEYS, stdlib_modules
 from pkgtool.model.installed import installed_modules
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import installed_code
+from pkgtool.rules.imports import ANY, declared, installed_code
 from pkgtool.rules.registry import rule
 
 
@@ -22,8 +22,11 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports unguarded absolute imports (`import helpers`, `from helpers import x`) in modules
     that setup.py installs, when `helpers.py` (or a `helpers/` package) sits in the same
-    folder and is not itself installed as a top-level module. Names of the standard library
-    and of known third-party modules are left alone.
+    folder and is not itself installed as a top-level module. Names of the standard library,
+    of known third-party modules and of package.xml's dependencies are left alone, and so is
+    a module importing its own name (`import rclpy` in `rclpy.py`): Python 3 imports are
+    absolute, so those mean the real package. Fallbacks (`except ImportError:`, `if '.' in
+    __name__:`) are guarded and never reported.
 
     ## Why is this bad?
     `python3 my_pkg/node.py` puts the file's folder on `sys.path`, so the import works while
@@ -48,16 +51,17 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
         return
     names = {file: name for name, file in installed.items()}
     top_level = {name.split(".")[0] for name in installed}
-    skip = top_level | stdlib_modules() | PYTHON_MODULE_KEYS.keys()
+    skip = top_level | stdlib_modules() | PYTHON_MODULE_KEYS.keys() | declared(package, ANY).keys()
     for module in installed_code(package):
         folder = posixpath.dirname(module.path)
         dotted = names.get(module.path, "")
         parent = dotted if module.path.endswith("/__init__.py") else dotted.rpartition(".")[0]
         if not folder or not parent:
             continue
+        own_name = posixpath.basename(module.path)[:-3]
         for imported in module.imports:
             top = imported.top_level
-            if not top or imported.guarded or top in skip or not (
+            if not top or imported.guarded or top in skip or top == own_name or not (
                     package.has_file(f"{folder}/{top}.py") or
                     package.has_file(f"{folder}/{top}/__init__.py")):
                 continue

@@ -22,7 +22,8 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     package itself imports only inside `try/except ImportError` is optional: see DEP005).
     Standard library modules and the package's own modules are skipped; a ROS import must be
     covered by `<depend>` or `<exec_depend>` of its package, a third-party module by its rosdep key
-    (`cv2` by `python3-opencv`, `yaml` by `python3-yaml`, ...).
+    (`cv2` by `python3-opencv`, `yaml` by `python3-yaml`, ...). Modules that only a
+    `pytest11` entry point names are pytest plugins, checked as test code (DEP003).
 
     ## Why is this bad?
     `rosdep install` and the binary packages built by the ROS buildfarm install only what

@@ -19,7 +19,7 @@ def problem(entry: EntryPoint) -> str | None:
     if any(c.isspace() for c in entry.name):
         return "has a command name with spaces"
     if not entry.valid:
-        return "does not name a `module:function` of valid Python identifiers"
+        return "does not name a `module:function` of letters, digits and underscores"
     if entry.attr is None:
         return "names a module but no function (`module:function`)"
     return None

@@ -18,8 +18,9 @@ def malformed_console_script(package: Package) -> Iterator[Hit]:
     ## What it does
     Parses each `console_scripts` (and `gui_scripts`) entry the way setuptools does and
     reports entries without `=`, without a command name, with spaces in the name, with a
-    module or function path that is not made of Python identifiers (`my-pkg.node`, `class`),
-    or without the `:function` part.
+    module or function path that is not dotted words of letters, digits and underscores
+    (`my-pkg.node`), or without the `:function` part. Parts need not be Python identifiers:
+    the wrapper setuptools installs loads `pkg.96:main` with `importlib`, which works.
 
     ## Why is this bad?
     setuptools rejects unparsable entries and the build fails; an entry without `:function`

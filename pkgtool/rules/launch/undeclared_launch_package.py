@@ -20,6 +20,9 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
     `get_package_share_directory(...)`, `FindPackageShare(...)`, `$(find-pkg-share ...)` in
     XML and YAML launch files. Each one other than this package must be an
     `<exec_depend>` or `<depend>` (a `<test_depend>` for launch files under `test/`).
+    Packages used only after the launch file checked that they are installed (`if 'nav2_bringup'
+    in get_packages_with_prefixes():`, or in a `try` that catches `PackageNotFoundError`) are
+    optional and left alone.
 
     ## Why is this bad?
     `ros2 launch` fails with "package not found" on machines set up with rosdep, because
@@ -40,8 +43,9 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
     for launch in package.launch_files:
         available = launch_keys(package, launch.path)
         seen: set[str] = set()
-        used = [(n.package, n.package_span or n.span) for n in launch.nodes if n.package] + [
-            (p.package, p.span) for p in launch.packages]
+        used = [(n.package, n.package_span or n.span) for n in launch.nodes
+                if n.package and not n.optional] + [
+            (p.package, p.span) for p in launch.packages if not p.optional]
         for name, span in sorted(used, key=lambda u: (u[1].line, u[1].col)):
             if name == package.name or name in available or name in seen:
                 continue

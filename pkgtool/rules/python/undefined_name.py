@@ -9,6 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
+from pkgtool.model.static_branches import dead_lines
 from pkgtool.rules.python._tree import installed_trees
 from pkgtool.rules.registry import rule
 
@@ -22,7 +23,10 @@ def undefined_name(package: Package) -> Iterator[Hit]:
     Runs pyflakes' checker (as a library, on the parsed tree) over every installed module,
     setup.py and every Python launch file (not those calling `exec()`, which may define any
     name) and reports its "undefined name" messages, with pyflakes' own handling of builtins,
-    `__all__`, star imports, conditional definitions and `except NameError` guards.
+    `__all__`, star imports, conditional definitions and `except NameError` guards. Code that
+    never runs on Python 3 is skipped: branches of `if sys.version_info < (3,):`, `if
+    six.PY2:` or of a module constant set once to False, and annotations of assignments in a
+    function body, which Python never evaluates.
 
     ## Why is this bad?
     The line raises `NameError` when it runs, which for a node usually means inside a
@@ -57,8 +61,26 @@ def undefined_name(package: Package) -> Iterator[Hit]:
         except Exception:  # pyflakes on hostile input (deep nesting, ...): skip, never crash
             continue
         seen: set[tuple[int, str]] = set()
+        dead, notes = dead_lines(tree), _unevaluated_annotations(tree)
         for message in sorted(messages, key=lambda m: (m.lineno, m.col)):
             name = message.message_args[0] if isinstance(message, UndefinedName) else None
+            where = (message.lineno, message.col)
+            if any(first <= message.lineno <= last for first, last in dead) or \
+                    any(start <= where <= end for start, end in notes):
+                continue
             if name is not None and (message.lineno, name) not in seen:
                 seen.add((message.lineno, name))
                 yield Hit(Span(path, message.lineno, message.col + 1), f"Undefined name `{name}`")
+
+
+def _unevaluated_annotations(tree: ast.Module) -> list[tuple[tuple[int, int], tuple[int, int]]]:
+    """Where annotations of assignments inside functions stand (PEP 526: never evaluated)."""
+    ranges = []
+    for function in ast.walk(tree):
+        if isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            for node in ast.walk(function):
+                if isinstance(node, ast.AnnAssign):
+                    note = node.annotation
+                    ranges.append(((note.lineno, note.col_offset),
+                                   (note.end_lineno or note.lineno, note.end_col_offset or 0)))
+    return ranges

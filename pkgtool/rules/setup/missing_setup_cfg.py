@@ -7,6 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
+from pkgtool.rules.setup._ros2_run import is_rqt_plugin, meant_for_ros2_run
 from pkgtool.rules.setup_values import checked_setup
 
 
@@ -17,9 +18,13 @@ def missing_setup_cfg(package: Package) -> Iterator[Hit]:
     """The package has console scripts but no setup.cfg.
 
     ## What it does
-    Reports the first `console_scripts` entry of a package that has no setup.cfg. An rqt
-    plugin (package.xml exports `<rqt_gui plugin=...>`) is exempt: rqt tools install their
-    standalone script to `bin/` on purpose, so that `rqt_graph` runs without `ros2 run`.
+    Reports the first `console_scripts` entry of a package that has no setup.cfg, when the
+    scripts are meant for `ros2 run`: a launch file of the package starts one, the README
+    names `ros2 run <package>`, or a script's module imports rclpy's `Node`. Command-line tools
+    (`ros2`, linters, code generators) install to `bin/` on purpose; without such evidence
+    the package gets SET013 (info) instead. An rqt plugin (package.xml exports `<rqt_gui
+    plugin=...>`) is exempt: rqt tools install their standalone script to `bin/` on purpose,
+    so that `rqt_graph` runs without `ros2 run`.
 
     ## Why is this bad?
     Without `script_dir`/`install_scripts`, setuptools installs the executables into the
@@ -43,16 +48,8 @@ def missing_setup_cfg(package: Package) -> Iterator[Hit]:
     setup = checked_setup(package)
     if setup is None or package.has_file("setup.cfg") or not setup.console_scripts:
         return
-    if _is_rqt_plugin(package):
+    if is_rqt_plugin(package) or not meant_for_ros2_run(package):
         return
     yield Hit(setup.console_scripts[0].span,
               f"Without `setup.cfg` console scripts install to `bin/`, where `ros2 run "
               f"{package.name}` does not look")
-
-
-def _is_rqt_plugin(package: Package) -> bool:
-    """package.xml exports an rqt_gui plugin."""
-    if package.manifest is None:
-        return False
-    return any(child.tag == "rqt_gui" for export in package.manifest.root.children
-               if export.tag == "export" for child in export.children)

@@ -10,6 +10,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.setup_cfg import CfgOption
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
+from pkgtool.rules.setup._ros2_run import meant_for_ros2_run
 from pkgtool.rules.setup_values import checked_setup
 
 SCRIPT_OPTIONS = (("develop", "script_dir"), ("install", "install_scripts"))
@@ -37,9 +38,10 @@ def wrong_script_dir(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Checks `[develop] script_dir` and `[install] install_scripts` in setup.cfg: each must be
-    `$base/lib/<name>` with this package's name. A missing option is reported when the
-    package has console scripts, at a misspelt key (`install_script`) or section
-    (`[instal]`) when there is one.
+    `$base/lib/<name>` with this package's name. A missing option is reported at a misspelt
+    key (`install_script`) or section (`[instal]`) when there is one, else when the package
+    has console scripts meant for `ros2 run` (see SET008 for the evidence; a command-line
+    tool whose setup.cfg holds only other sections gets SET013, info).
 
     ## Why is this bad?
     `ros2 run <package> <executable>` and launch files look for executables only in
@@ -75,7 +77,7 @@ def wrong_script_dir(package: Package) -> Iterator[Hit]:
                 yield Hit(near.span, f"`[{near.section}] {near.key}` is not `[{section}] {key}`: "
                                      f"console scripts install to `bin/`, not "
                                      f"`lib/{package.name}`", f"Write `[{section}] {key}`")
-            elif setup.console_scripts:
+            elif setup.console_scripts and meant_for_ros2_run(package):
                 yield Hit(Span(cfg.path, 1, 1),
                           f"`setup.cfg` has no `[{section}] {key}`: console scripts install to "
                           f"`bin/`, not `lib/{package.name}`")

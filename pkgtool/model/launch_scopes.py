@@ -1,0 +1,64 @@
+"""Names a Python launch file binds: per scope for the evaluator, and what its imports bind."""
+
+from __future__ import annotations
+
+import ast
+
+
+def bindings(body: list[ast.stmt], params: ast.arguments | None) -> dict[str, ast.expr | None]:
+    """Names bound in one scope: the single assigned expression, or None when ambiguous."""
+    found: dict[str, ast.expr | None] = {}
+    if params is not None:
+        for arg in (*params.posonlyargs, *params.args, *params.kwonlyargs,
+                    params.vararg, params.kwarg):
+            if arg is not None:
+                found[arg.arg] = None
+    nodes = scope_nodes(body)
+    simple = {id(n.targets[0]) for n in nodes if simple_assignment(n)}
+    for node in nodes:
+        if simple_assignment(node):
+            name = node.targets[0].id  # type: ignore[attr-defined]
+            found[name] = None if name in found else node.value  # type: ignore[attr-defined]
+        elif isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
+            if id(node) not in simple:
+                found[node.id] = None
+        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            found[node.name] = None
+        elif isinstance(node, (ast.Import, ast.ImportFrom)):
+            found.update({(a.asname or a.name).split(".")[0]: None for a in node.names})
+        elif isinstance(node, (ast.Global, ast.Nonlocal)):
+            found.update({name: None for name in node.names})
+    return found
+
+
+def simple_assignment(node: ast.AST) -> bool:
+    return (isinstance(node, ast.Assign) and len(node.targets) == 1
+            and isinstance(node.targets[0], ast.Name))
+
+
+def scope_nodes(body: list[ast.stmt]) -> list[ast.AST]:
+    """Every node of ``body`` that belongs to this scope (nested defs appear, not their body)."""
+    result: list[ast.AST] = []
+    stack: list[ast.AST] = list(reversed(body))
+    while stack:
+        node = stack.pop()
+        result.append(node)
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)):
+            continue
+        stack.extend(reversed(list(ast.iter_child_nodes(node))))
+    return result
+
+
+def import_origins(tree: ast.Module) -> dict[str, set[str]]:
+    """Each name any import of the file binds, with the dotted names it was imported as."""
+    origins: dict[str, set[str]] = {}
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            for alias in node.names:
+                local = alias.asname or alias.name.split(".")[0]
+                origins.setdefault(local, set()).add(alias.name if alias.asname else local)
+        elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
+            for alias in node.names:
+                origins.setdefault(alias.asname or alias.name, set()).add(
+                    f"{node.module}.{alias.name}")
+    return origins

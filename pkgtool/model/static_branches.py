@@ -1,0 +1,123 @@
+"""Branches of a module that never run on the target Python, decided without running anything.
+
+A test is decided only when it is certain for every Python 3: ``sys.version_info`` (or its
+``[0]``/``.major``) compared with constants, ``six.PY2``/``PY2``/``PY3``, literal constants,
+a module-level name assigned once to a constant and never again, and ``not``/``and``/``or``
+of those. Anything else is undecided (None) and both branches count as running.
+"""
+
+from __future__ import annotations
+
+import ast
+import operator
+from collections import Counter
+
+_COMPARE = {ast.Lt: operator.lt, ast.LtE: operator.le, ast.Gt: operator.gt,
+            ast.GtE: operator.ge, ast.Eq: operator.eq, ast.NotEq: operator.ne}
+_PYTHON3 = ((3, 0, 0, "alpha", 0), (3, 99, 99, "final", 0))
+"""Two versions that bound every Python 3 a test is asked about."""
+MODULE_DUNDERS = frozenset({"__name__", "__package__", "__spec__"})
+
+
+def module_constants(tree: ast.Module) -> dict[str, bool]:
+    """Names assigned exactly once in the whole file, at module level, to a constant."""
+    stores = Counter(n.id for n in ast.walk(tree)
+                     if isinstance(n, ast.Name) and not isinstance(n.ctx, ast.Load))
+    stores.update(name for n in ast.walk(tree) if isinstance(n, (ast.Global, ast.Nonlocal))
+                  for name in n.names)
+    found: dict[str, bool] = {}
+    for node in tree.body:
+        if (isinstance(node, ast.Assign) and len(node.targets) == 1
+                and isinstance(node.targets[0], ast.Name)
+                and isinstance(node.value, ast.Constant) and stores[node.targets[0].id] == 1):
+            found[node.targets[0].id] = bool(node.value.value)
+    return found
+
+
+def truth(test: ast.expr, constants: dict[str, bool]) -> bool | None:
+    """The value of an ``if`` test on every Python 3, or None when it is not certain."""
+    if isinstance(test, ast.Constant):
+        return bool(test.value)
+    if isinstance(test, ast.UnaryOp) and isinstance(test.op, ast.Not):
+        inner = truth(test.operand, constants)
+        return None if inner is None else not inner
+    if isinstance(test, ast.BoolOp):
+        values = [truth(v, constants) for v in test.values]
+        wanted = isinstance(test.op, ast.Or)
+        if wanted in values:
+            return wanted
+        return None if None in values else not wanted
+    name = _plain_name(test)
+    if name in ("PY2", "PY3"):
+        return name == "PY3"
+    if isinstance(test, ast.Name) and test.id in constants:
+        return constants[test.id]
+    return _version_test(test) if isinstance(test, ast.Compare) else None
+
+
+def _plain_name(node: ast.expr) -> str | None:
+    if isinstance(node, ast.Name):
+        return node.id
+    if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and \
+            node.value.id == "six":
+        return node.attr
+    return None
+
+
+def _version_test(test: ast.Compare) -> bool | None:
+    """``sys.version_info >= (3,)``, ``sys.version_info[0] == 2``, ``.major < 3``..."""
+    if len(test.ops) != 1 or type(test.ops[0]) not in _COMPARE:
+        return None
+    left, right = _version_side(test.left), _constant(test.comparators[0])
+    if left is None or right is None:
+        return None
+    compare = _COMPARE[type(test.ops[0])]
+    try:
+        results = {compare(version if left == "tuple" else version[0], right)
+                   for version in _PYTHON3}
+    except TypeError:
+        return None
+    return results.pop() if len(results) == 1 else None
+
+
+def _version_side(node: ast.expr) -> str | None:
+    """``tuple`` for sys.version_info, ``major`` for its first item, else None."""
+    def is_version_info(n: ast.expr) -> bool:
+        return isinstance(n, ast.Attribute) and n.attr == "version_info" and \
+            isinstance(n.value, ast.Name) and n.value.id == "sys"
+
+    if is_version_info(node):
+        return "tuple"
+    if isinstance(node, ast.Subscript) and is_version_info(node.value) and \
+            isinstance(node.slice, ast.Constant) and node.slice.value == 0:
+        return "int"
+    if isinstance(node, ast.Attribute) and node.attr == "major" and is_version_info(node.value):
+        return "int"
+    return None
+
+
+def _constant(node: ast.expr) -> tuple[int, ...] | int | None:
+    if isinstance(node, ast.Constant) and isinstance(node.value, int):
+        return node.value
+    if isinstance(node, ast.Tuple) and all(isinstance(e, ast.Constant) and
+                                           isinstance(e.value, int) for e in node.elts):
+        return tuple(e.value for e in node.elts)  # type: ignore[attr-defined]
+    return None
+
+
+def mentions_module_name(test: ast.expr) -> bool:
+    """The test looks at ``__name__``/``__package__``/``__spec__``: run as script or package."""
+    return any(isinstance(n, ast.Name) and n.id in MODULE_DUNDERS for n in ast.walk(test))
+
+
+def dead_lines(tree: ast.Module) -> list[tuple[int, int]]:
+    """Line ranges (first, last) of ``if`` branches that never run on Python 3."""
+    constants = module_constants(tree)
+    ranges: list[tuple[int, int]] = []
+    for node in ast.walk(tree):
+        if isinstance(node, ast.If):
+            value = truth(node.test, constants)
+            branch = node.body if value is False else node.orelse if value is True else []
+            if branch:
+                ranges.append((branch[0].lineno, branch[-1].end_lineno or branch[-1].lineno))
+    return ranges
