@@ -1,0 +1,71 @@
+"""The generated data tables under ``pkgtool/knowledge/data/``: their text format, read and written.
+
+A table is UTF-8 text. ``#`` lines are comments; a ``source ...`` line names where the data
+came from; a ``@FLAGS`` line starts a group; every other line is one entry, a name and
+optional space-separated values. An entry takes the flags of the group it is in (``hjkr``:
+the distributions, ``-`` none). Tables are read on first use only: lint start-up never pays
+for a table no rule asks for.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from dataclasses import dataclass
+from functools import cache
+from pathlib import Path
+
+DATA = Path(__file__).resolve().parent / "data"
+
+DISTROS = ("humble", "jazzy", "kilted", "rolling")
+"""The ROS 2 distributions the tables know, oldest first."""
+FLAGS = {distro: distro[0] for distro in DISTROS}
+"""The one-letter flag of each distribution in a table."""
+
+
+@dataclass(frozen=True, slots=True)
+class Table:
+    """A parsed table: its ``source`` line (without the word), each entry's group flags and
+    the values of the entries that have any (as one space-separated string)."""
+
+    source: str
+    flags: dict[str, str]
+    values: dict[str, str]
+
+
+@cache
+def read(name: str) -> Table:
+    """The table ``data/<name>.txt``, parsed once per process (plain dicts: ~1 ms a table)."""
+    source = ""
+    group = ""
+    flags: dict[str, str] = {}
+    values: dict[str, str] = {}
+    for line in (DATA / f"{name}.txt").read_text(encoding="utf-8").splitlines():
+        first = line[:1]
+        if first == "@":
+            group = line[1:]
+        elif first == "#" or not line:
+            continue
+        elif line.startswith("source "):
+            source = line[len("source "):]
+        else:
+            entry, _, rest = line.partition(" ")
+            flags[entry] = group
+            if rest:
+                values[entry] = rest
+    return Table(source, flags, values)
+
+
+def render(title: str, source: str, groups: Iterable[tuple[str, Iterable[str]]]) -> str:
+    """The text of a table: a comment ``title``, the ``source`` line and each (flags, lines)."""
+    out = [f"# {line}" if line else "#" for line in title.splitlines()]
+    out.append(f"source {source}")
+    for flags, lines in groups:
+        out.append(f"@{flags}")
+        out.extend(lines)
+    return "\n".join(out) + "\n"
+
+
+def flags_of(distros: Iterable[str]) -> str:
+    """The flag letters of ``distros`` in the order of :data:`DISTROS` (``-`` for none)."""
+    chosen = set(distros)
+    return "".join(FLAGS[d] for d in DISTROS if d in chosen) or "-"
