@@ -1,10 +1,11 @@
-"""Generate the interface table from installed ROS wheels: ``python -m pkgtool.knowledge.generate_interfaces``.
+"""Generate ``data/interfaces.txt`` from the installed ROS interface wheels.
 
-Run it in pkgtool's locked environment (``.venv``, which installs the ROS 2 Jazzy wheels of the
-``ros`` and ``interfaces`` extras). Every installed distribution whose files include
+Run ``python -m pkgtool.knowledge.generate_interfaces`` in pkgtool's locked environment
+(``.venv``, which installs the ROS 2 Jazzy wheels of the ``ros`` and ``interfaces`` extras).
+Every installed distribution whose files include
 ``share/<package>/{msg,srv,action}/<Name>.<msg|srv|action|idl>`` contributes its package's
-names, when that package is released for Jazzy (``ros_packages.txt``). Writes
-``pkgtool/knowledge/data/interfaces.txt`` with the distributions and versions it read.
+names, when that package is released for Jazzy (``ros_packages.txt``). The table records the
+distributions and versions it read.
 """
 
 from __future__ import annotations

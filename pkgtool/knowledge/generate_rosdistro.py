@@ -1,6 +1,7 @@
-"""Generate the rosdistro tables from a ros/rosdistro checkout: ``python -m pkgtool.knowledge.generate_rosdistro``.
+"""Generate the rosdistro tables from a ros/rosdistro checkout.
 
-Reads ``<distro>/distribution.yaml`` (humble, jazzy, kilted, rolling) and ``rosdep/base.yaml``
+``python -m pkgtool.knowledge.generate_rosdistro``
+reads ``<distro>/distribution.yaml`` (humble, jazzy, kilted, rolling) and ``rosdep/base.yaml``
 and ``rosdep/python.yaml`` (default: ``../shared/data/rosdistro`` beside the repository) and
 writes three tables to ``pkgtool/knowledge/data/``:
 
@@ -41,7 +42,8 @@ DIST_MODULES: dict[str, tuple[str, ...]] = {
     "setuptools": ("setuptools", "pkg_resources", "_distutils_hack"),
     "pkg-resources": ("pkg_resources",), "libgpiod": ("gpiod",), "tz": ("pytz",),
     "pykdl": ("PyKDL",), "python-orocos-kdl": ("PyKDL",), "tk": ("tkinter",),
-    "protobuf": ("google.protobuf",), "pycryptodome": ("Crypto",), "pycryptodomex": ("Cryptodome",),
+    "protobuf": ("google.protobuf",), "pycryptodome": ("Crypto",),
+    "pycryptodomex": ("Cryptodome",),
     "pyjwt": ("jwt",), "python-xlib": ("Xlib",), "xlib": ("Xlib",), "attrs": ("attr", "attrs"),
     "msgpack-python": ("msgpack",), "netcdf4": ("netCDF4",), "pynacl": ("nacl",),
     "python-magic": ("magic",), "python-slugify": ("slugify",), "wxpython": ("wx",),

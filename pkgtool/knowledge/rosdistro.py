@@ -63,8 +63,6 @@ def is_known_dependency(name: str, distro: str = DEFAULT_DISTRO) -> bool:
     return is_released_package(name, distro) or is_rosdep_key(name)
 
 
-
-
 def keys_for_import(top_level: str, distro: str = DEFAULT_DISTRO) -> tuple[str, ...]:
     """The rosdep keys that install the top-level module ``top_level``, best first.
 

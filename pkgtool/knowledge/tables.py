@@ -1,4 +1,4 @@
-"""The generated data tables under ``pkgtool/knowledge/data/``: their text format, read and written.
+"""The generated tables under ``pkgtool/knowledge/data/``: their text format, read and written.
 
 A table is UTF-8 text. ``#`` lines are comments; a ``source ...`` line names where the data
 came from; a ``@FLAGS`` line starts a group; every other line is one entry, a name and
