@@ -13,8 +13,9 @@ from pathlib import Path
 from typing import Union
 
 from pkgtool.commands import ExitCode
-from pkgtool.config import ConfigError, ConfigFinder, Layer, Settings
+from pkgtool.config import ConfigError, ConfigFinder, Layer, Settings, check_rosdistro
 from pkgtool.findings import Finding, Severity
+from pkgtool.model.context import Context, workspace_of
 from pkgtool.report import PackageLabel
 from pkgtool.workspace import discover
 
@@ -35,6 +36,7 @@ class LintOptions:
     exit_zero: bool = False
     hide_info: bool = False
     isolated: bool = False
+    rosdistro: str | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -60,8 +62,12 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
         return LintResult(ExitCode.USAGE, errors=tuple(
             f"Path `{p}` does not exist. Check the spelling, or run from another folder."
             for p in found.missing))
+    try:
+        rosdistro = options.rosdistro and check_rosdistro(options.rosdistro, "`--rosdistro`")
+    except ConfigError as error:
+        return LintResult(ExitCode.USAGE, errors=(str(error),))
     command_line = Layer("the command line", None, options.select, options.ignore,
-                         options.extend_select, options.strict)
+                         options.extend_select, options.strict, rosdistro=rosdistro or None)
     finder = ConfigFinder(command_line, isolated=options.isolated)
     notes = tuple(f"No package (a folder with package.xml or setup.py) found under `{p}`."
                   for p in found.empty)
@@ -71,12 +77,14 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
             finder.settings(here)  # still validate the command line and the config in reach
     except ConfigError as error:
         return LintResult(ExitCode.USAGE, errors=(str(error),), notes=notes)
-    jobs = [(root, _label(root, here), setting) for root, setting in zip(found.packages, settings)]
+    workspace = workspace_of(found.packages)
+    jobs = [(root, _label(root, here), Context(setting.rosdistro, workspace), setting)
+            for root, setting in zip(found.packages, settings)]
     findings: list[Finding] = []
     labels: list[PackageLabel] = []
     errors: list[str] = []
     failing = False
-    for (root, label, setting), outcome in zip(jobs, _check_all(jobs)):
+    for (root, label, _, setting), outcome in zip(jobs, _check_all(jobs)):
         if isinstance(outcome, str):
             errors.append(outcome)
             labels.append(PackageLabel(root.name, label))
@@ -93,7 +101,7 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
     return LintResult(code, tuple(findings), tuple(labels), tuple(errors), notes)
 
 
-Job = tuple[Path, str, Settings]
+Job = tuple[Path, str, Context, Settings]
 Outcome = Union[tuple[str, list[Finding]], str]
 
 
@@ -127,9 +135,9 @@ def _check(job: Job) -> Outcome:
     from pkgtool.engine import check_package
     from pkgtool.model.package import load_package
 
-    root, label, settings = job
+    root, label, context, settings = job
     try:
-        package = load_package(root)
+        package = load_package(root, context)
         found = check_package(package, settings.rules, root_label=label,
                               severities=settings.severities)
     except Exception as error:  # noqa: BLE001 - report it, keep linting the others

@@ -10,13 +10,13 @@ from __future__ import annotations
 import difflib
 from functools import cache
 
-from pkgtool.knowledge.tables import DISTROS, FLAGS, read
+from pkgtool.knowledge.tables import DEFAULT_DISTRO, DISTROS, FLAGS, read
 
-__all__ = ["DEFAULT_DISTRO", "DISTROS", "PYTHON_VERSIONS", "close_names", "is_known_dependency",
-           "is_released_package", "is_rosdep_key", "key_resolves", "keys_for_import",
-           "released_packages", "rosdep_keys", "source_commit"]
+__all__ = ["DEFAULT_DISTRO", "DISTROS", "PYTHON_VERSIONS", "alternative_key", "close_names",
+           "is_known_dependency", "is_released_package", "is_rosdep_key", "key_resolves",
+           "keys_for_import", "modules_of_key", "released_packages", "rosdep_keys",
+           "source_commit", "stdlib_modules"]
 
-DEFAULT_DISTRO = "jazzy"
 PYTHON_VERSIONS = {"humble": "3.10", "jazzy": "3.12", "kilted": "3.12", "rolling": "3.12"}
 """The Python of each distribution's primary platform (Ubuntu's ``python3``)."""
 
@@ -74,6 +74,29 @@ def keys_for_import(top_level: str, distro: str = DEFAULT_DISTRO) -> tuple[str, 
     return tuple(usable + [k for k in keys if k not in usable])
 
 
+@cache
+def _modules_by_key() -> dict[str, tuple[str, ...]]:
+    found: dict[str, list[str]] = {}
+    for module, keys in read("python_imports").values.items():
+        for key in keys.split():
+            found.setdefault(key, []).append(module)
+    return {key: tuple(modules) for key, modules in found.items()}
+
+
+def modules_of_key(key: str) -> tuple[str, ...]:
+    """The top-level modules (lower case) that rosdep ``key`` installs, as far as known."""
+    return _modules_by_key().get(key, ())
+
+
+def alternative_key(key: str, distro: str = DEFAULT_DISTRO) -> str | None:
+    """Another key installing a module of ``key`` that resolves on ``distro``, if any."""
+    for module in modules_of_key(key):
+        best = keys_for_import(module, distro)
+        if best and best[0] != key and key_resolves(best[0], distro):
+            return best[0]
+    return None
+
+
 def close_names(name: str, distro: str = DEFAULT_DISTRO, *, extra: frozenset[str] = frozenset(),
                 limit: int = 1) -> list[str]:
     """Released packages, rosdep keys and ``extra`` names spelled like ``name`` (near misses)."""
@@ -89,3 +112,12 @@ def _candidates(distro: str) -> frozenset[str]:
 def source_commit() -> str:
     """The ros/rosdistro commit the tables were generated from."""
     return read("ros_packages").source.split()[-1]
+
+
+@cache
+def stdlib_modules(distro: str = DEFAULT_DISTRO) -> frozenset[str]:
+    """Top-level standard library modules of ``distro``'s Python (the stdlib-list package)."""
+    from stdlib_list import stdlib_list
+
+    _check(distro)
+    return frozenset(m for m in stdlib_list(PYTHON_VERSIONS[distro]) if "." not in m)

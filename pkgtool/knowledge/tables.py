@@ -18,6 +18,8 @@ DATA = Path(__file__).resolve().parent / "data"
 
 DISTROS = ("humble", "jazzy", "kilted", "rolling")
 """The ROS 2 distributions the tables know, oldest first."""
+DEFAULT_DISTRO = "jazzy"
+"""The distribution linted for when none is configured."""
 FLAGS = {distro: distro[0] for distro in DISTROS}
 """The one-letter flag of each distribution in a table."""
 

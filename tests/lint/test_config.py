@@ -48,12 +48,22 @@ def test_strict_and_severity_take_the_innermost_value() -> None:
     assert settings_for([outer, inner, Layer("cli", strict=True)]).strict is True
 
 
+def test_rosdistro_takes_the_innermost_value_and_defaults_to_jazzy() -> None:
+    assert settings_for([CLI]).rosdistro == "jazzy"
+    outer, inner = _layer({"rosdistro": "humble"}), _layer({"rosdistro": "rolling"})
+    assert settings_for([outer, CLI]).rosdistro == "humble"
+    assert settings_for([outer, inner, CLI]).rosdistro == "rolling"
+    assert settings_for([outer, Layer("cli", rosdistro="kilted")]).rosdistro == "kilted"
+
+
 @pytest.mark.parametrize(("table", "named"), [
     ({"selct": ["SYN"]}, "`selct`"),
     ({"extend_select": ["SYN"]}, "Did you mean `extend-select`?"),
     ({"select": ["NOPE001"]}, "`NOPE001`"),
     ({"ignore": "SYN001"}, "`ignore`"),
     ({"strict": "yes"}, "`strict`"),
+    ({"rosdistro": "jazy"}, "Did you mean `jazzy`?"),
+    ({"rosdistro": 3}, "`rosdistro`"),
     ({"severity": {"XYZ123": "warning"}}, "`XYZ123`"),
     ({"severity": {"SYN001": "fatal"}}, "`SYN001`"),
     ({"per-file-ignores": {"test/*": ["BAD999"]}}, "`BAD999`"),
