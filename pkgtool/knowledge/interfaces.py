@@ -10,12 +10,13 @@ from __future__ import annotations
 
 import difflib
 from collections.abc import Mapping
+from dataclasses import dataclass
 from functools import cache
 
 from pkgtool.knowledge.tables import read
 
 __all__ = ["KINDS", "close_interfaces", "interface_kind", "interfaces_of", "is_known_package",
-           "kind_in", "parse_type", "type_problem"]
+           "kind_in", "mismatch", "parse_type", "type_problem"]
 
 KINDS = ("msg", "srv", "action")
 Interfaces = Mapping[str, frozenset[str]]
@@ -76,12 +77,24 @@ def parse_type(text: str) -> tuple[str, str | None, str] | None:
     return None
 
 
-_WORDS = {"msg": "message", "srv": "service", "action": "action"}
+WORDS = {"msg": "message", "srv": "service", "action": "action"}
 
 
-def type_problem(package: str, kind: str | None, name: str,
-                 interfaces: Interfaces | None = None) -> str | None:
-    """Why ``package/kind/name`` is not an interface type, or None when it is (or is unknown).
+@dataclass(frozen=True, slots=True)
+class Mismatch:
+    """Why ``package/kind/name`` is no interface: ``actual`` is the kind the name really has
+    (None when the package has no such name); ``close`` a near miss as (kind, name)."""
+
+    package: str
+    kind: str | None
+    name: str
+    actual: str | None
+    close: tuple[str, str] | None
+
+
+def mismatch(package: str, kind: str | None, name: str,
+             interfaces: Interfaces | None = None) -> Mismatch | None:
+    """What is wrong with ``package/kind/name``; None when it exists or nothing is known.
 
     ``interfaces`` are the package's when the caller knows them (a workspace package);
     otherwise the table's are used. Unknown packages give None: nothing is known about them.
@@ -89,13 +102,23 @@ def type_problem(package: str, kind: str | None, name: str,
     known = interfaces if interfaces is not None else interfaces_of(package)
     if known is None:
         return None
-    found = kind_in(known, name)
-    if found is not None and kind in (None, found):
+    actual = kind_in(known, name)
+    if actual is not None and kind in (None, actual):
         return None
-    if found is not None:
-        return (f"`{package}/{name}` is a {_WORDS[found]}, not a {_WORDS[str(kind)]}: "
-                f"write `{package}/{found}/{name}`")
-    what = _WORDS[kind] if kind else "message, service or action"
-    close = close_interfaces(known, name, kind)
-    hint = f" (did you mean `{package}/{kind_in(known, close[0])}/{close[0]}`?)" if close else ""
+    close = close_interfaces(known, name, kind) if actual is None else []
+    found = (str(kind_in(known, close[0])), close[0]) if close else None
+    return Mismatch(package, kind, name, actual, found)
+
+
+def type_problem(package: str, kind: str | None, name: str,
+                 interfaces: Interfaces | None = None) -> str | None:
+    """Why ``package/kind/name`` is not an interface type, or None when it is (or is unknown)."""
+    found = mismatch(package, kind, name, interfaces)
+    if found is None:
+        return None
+    if found.actual is not None:
+        return (f"`{package}/{name}` is a {WORDS[found.actual]}, not a {WORDS[str(kind)]}: "
+                f"write `{package}/{found.actual}/{name}`")
+    what = WORDS[kind] if kind else "message, service or action"
+    hint = f" (did you mean `{package}/{found.close[0]}/{found.close[1]}`?)" if found.close else ""
     return f"`{package}` has no {what} `{name}`{hint}"
