@@ -15,7 +15,7 @@ from pkgtool.knowledge.tables import DEFAULT_DISTRO, DISTROS, FLAGS, read
 __all__ = ["DEFAULT_DISTRO", "DISTROS", "PYTHON_VERSIONS", "alternative_key", "close_names",
            "is_known_dependency", "is_released_package", "is_rosdep_key", "key_resolves",
            "keys_for_import", "modules_of_key", "released_packages", "rosdep_keys",
-           "source_commit", "stdlib_modules"]
+           "source_commit", "stdlib_modules", "any_stdlib_module"]
 
 PYTHON_VERSIONS = {"humble": "3.10", "jazzy": "3.12", "kilted": "3.12", "rolling": "3.12"}
 """The Python of each distribution's primary platform (Ubuntu's ``python3``)."""
@@ -121,3 +121,15 @@ def stdlib_modules(distro: str = DEFAULT_DISTRO) -> frozenset[str]:
 
     _check(distro)
     return frozenset(m for m in stdlib_list(PYTHON_VERSIONS[distro]) if "." not in m)
+
+
+STDLIB_VERSIONS = tuple(f"3.{minor}" for minor in range(6, 15))
+"""The Python 3 versions whose standard library :func:`any_stdlib_module` knows."""
+
+
+@cache
+def any_stdlib_module() -> frozenset[str]:
+    """Top-level modules in the standard library of any Python 3 from 3.6 to 3.14."""
+    from stdlib_list import stdlib_list
+
+    return frozenset(m for v in STDLIB_VERSIONS for m in stdlib_list(v) if "." not in m)

@@ -18,7 +18,8 @@ from functools import lru_cache
 from pkgtool.knowledge.ros_names import looks_like_ros
 from pkgtool.knowledge.rosdep import (ALTERNATIVE_KEYS, COVERED_BY, ROS_MODULE_PACKAGES,
                                       accepted_keys, package_for_ros_module, suggested_key)
-from pkgtool.knowledge.rosdistro import is_released_package, keys_for_import, stdlib_modules
+from pkgtool.knowledge.rosdistro import (any_stdlib_module, is_released_package,
+                                         keys_for_import, stdlib_modules)
 from pkgtool.model.context import Context
 from pkgtool.model.installed import installed_modules
 from pkgtool.model.launch import is_launch_file
@@ -168,6 +169,13 @@ def classify(top: str, declared_names: Iterable[str], context: Context = Context
     return "unknown", (guess, guess + "-pip", top)
 
 
+@lru_cache(maxsize=8)
+def _stdlib(distro: str) -> frozenset[str]:
+    """Standard library names never needing a key: the target's, and (PYC010's case) any
+    Python 3's."""
+    return stdlib_modules(distro) | any_stdlib_module()
+
+
 def needs(package: Package, module: PythonModule, *, guarded: bool | None = False
           ) -> Iterator[Need]:
     """Absolute imports of ``module`` that need a key, the first import of each name only.
@@ -176,7 +184,7 @@ def needs(package: Package, module: PythonModule, *, guarded: bool | None = Fals
     import of an own module that the package itself imports only guarded counts as guarded.
     """
     skip = own_modules(package) | _siblings(package, module.path)
-    stdlib = stdlib_modules(package.context.distro)
+    stdlib = _stdlib(package.context.distro)
     names = declared(package, ANY)
     optional = module.path in optional_modules(package)
     seen: set[str] = set()
