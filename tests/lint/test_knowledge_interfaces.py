@@ -54,6 +54,8 @@ def test_lookups() -> None:
 @pytest.mark.parametrize(("text", "problem"), [
     ("std_msgs/msg/String", None),
     ("geometry_msgs/Twist", None),
+    ("test_msgs/srv/BasicTypes", None),  # a message and a service of the same name
+    ("test_msgs/msg/BasicTypes", None),
     ("nav2_msgs/action/NavigateToPose", None),
     ("std_msgs/msg/NoSuch", "`std_msgs` has no message `NoSuch`"),
     ("geometry_msgs/msg/Twsit",
@@ -73,3 +75,9 @@ def test_workspace_interfaces_override_the_table() -> None:
     assert interfaces.type_problem("my_msgs", "msg", "Readng", mine) == (
         "`my_msgs` has no message `Readng` (did you mean `my_msgs/msg/Reading`?)")
     assert interfaces.parse_type("not a type") is None
+
+
+def test_the_table_speaks_for_jazzy_only() -> None:
+    assert interfaces.interface_kind("std_msgs", "String", "jazzy") == "msg"
+    assert not interfaces.is_known_package("std_msgs", "rolling")
+    assert interfaces.type_problem("std_msgs", "msg", "NoSuch", distro="humble") is None

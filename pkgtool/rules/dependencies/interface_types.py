@@ -1,8 +1,9 @@
 """What DEP008 and DEP009 share: the interfaces a package name stands for, where known.
 
 Known are the package's own ``msg/``, ``srv/`` and ``action/`` folders, those of the other
-packages of the workspace, and the shipped table of the Jazzy interface wheels
-(:mod:`pkgtool.knowledge.interfaces`), in that order. Anything else is unknown: no finding.
+packages of the workspace, and (for a jazzy target) the shipped table of the Jazzy interface
+wheels (:mod:`pkgtool.knowledge.interfaces`), in that order. Anything else is unknown: no
+finding.
 """
 
 from __future__ import annotations
@@ -34,4 +35,4 @@ def interfaces_for(package: Package, name: str) -> Interfaces | None:
     neighbour = package.context.workspace.get(name)
     if neighbour is not None and neighbour.interfaces:
         return neighbour.interfaces
-    return interfaces_of(name)
+    return interfaces_of(name, package.context.distro)

@@ -22,6 +22,7 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
     Python file against the interfaces of `<pkg>` when they are known: the package's own
     `msg/`, `srv/` and `action/` folders, those of the other packages of the workspace, and
     pkgtool's table of the interface packages of ROS 2 Jazzy that are installable as wheels
+    (for a jazzy target only: other distributions have other interfaces)
     (`std_msgs`, `geometry_msgs`, `sensor_msgs`, `std_srvs`, ...). Packages that are not
     known (`nav2_msgs`) are never reported.
 

@@ -32,9 +32,9 @@ def unknown_interface_type(package: Package) -> Iterator[Hit]:
     ## What it does
     Finds interface types written as `<pkg>/msg|srv|action/<Name>` in launch files (Python,
     XML, YAML) and YAML files outside `test/` (parameters, bridge configurations) and checks
-    them like DEP008:
-    against the package's own interface folders, the workspace's interface packages and
-    pkgtool's table of the ROS 2 Jazzy interface packages. Unknown packages are not reported.
+    them like DEP008: against the package's own interface folders, the workspace's interface
+    packages and (for a jazzy target) pkgtool's table of the ROS 2 Jazzy interface packages.
+    Unknown packages are not reported.
 
     ## Why is this bad?
     Types in strings are only resolved when the launch runs: `ros2 topic pub`, a bridge or a
