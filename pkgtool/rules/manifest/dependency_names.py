@@ -25,7 +25,7 @@ _NOT_CHECKED = frozenset({"group_depend", "conflict", "replace"})
 
 @dataclass(frozen=True, slots=True)
 class Unknown:
-    """A dependency nothing provides: the nearest known name, and distros that release it."""
+    """A dependency nothing provides: distros that release it, else the nearest known name."""
 
     dependency: Dependency
     close: str | None
@@ -76,7 +76,7 @@ def unknown_dependencies(package: Package) -> list[Unknown]:
         name = dependency.name
         if name in local or rosdistro.is_known_dependency(name, distro) or name in stdlib:
             continue
-        close = rosdistro.close_names(name, distro, extra=local)
         elsewhere = tuple(d for d in DISTROS if rosdistro.is_released_package(name, d))
+        close = [] if elsewhere else rosdistro.close_names(name, distro, extra=local)
         found.append(Unknown(dependency, close[0] if close else None, elsewhere))
     return found
