@@ -7,15 +7,16 @@ from __future__ import annotations
 
 import os
 import threading
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
 from typing import Union
 
 from pkgtool.commands import ExitCode
 from pkgtool.config import ConfigError, ConfigFinder, Layer, Settings, check_rosdistro
 from pkgtool.findings import Finding, Severity
-from pkgtool.model.context import Context, workspace_of
+from pkgtool.model.context import Context, WorkspacePackage, workspace_of
 from pkgtool.report import PackageLabel
 from pkgtool.workspace import discover
 
@@ -77,14 +78,14 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
             finder.settings(here)  # still validate the command line and the config in reach
     except ConfigError as error:
         return LintResult(ExitCode.USAGE, errors=(str(error),), notes=notes)
-    workspace = workspace_of(found.packages)
-    jobs = [(root, _label(root, here), Context(setting.rosdistro, workspace), setting)
-            for root, setting in zip(found.packages, settings)]
+    workspace = workspace_of(found.packages, [here / p for p in paths or ["."]
+                                              if (here / p).is_dir()])
+    jobs = [(root, _label(root, here), setting) for root, setting in zip(found.packages, settings)]
     findings: list[Finding] = []
     labels: list[PackageLabel] = []
     errors: list[str] = []
     failing = False
-    for (root, label, _, setting), outcome in zip(jobs, _check_all(jobs)):
+    for (root, label, setting), outcome in zip(jobs, _check_all(jobs, workspace)):
         if isinstance(outcome, str):
             errors.append(outcome)
             labels.append(PackageLabel(root.name, label))
@@ -101,26 +102,28 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
     return LintResult(code, tuple(findings), tuple(labels), tuple(errors), notes)
 
 
-Job = tuple[Path, str, Context, Settings]
+Job = tuple[Path, str, Settings]
+Workspace = Mapping[str, WorkspacePackage]
 Outcome = Union[tuple[str, list[Finding]], str]
 
 
-def _check_all(jobs: list[Job]) -> Iterator[Outcome]:
+def _check_all(jobs: list[Job], workspace: Workspace) -> Iterator[Outcome]:
     """Each job's outcome in order; a process per core once there are enough packages."""
+    check = partial(_check, workspace=workspace)
     workers = min(_cpus(), len(jobs) // PACKAGES_PER_WORKER)
     if workers < 2 or threading.active_count() > 1:
-        yield from map(_check, jobs)
+        yield from map(check, jobs)
         return
     import multiprocessing  # only here: importing it costs a small lint run ~10 ms
 
     if "fork" not in multiprocessing.get_all_start_methods():
-        yield from map(_check, jobs)
+        yield from map(check, jobs)
         return
     from concurrent.futures import ProcessPoolExecutor
 
     context = multiprocessing.get_context("fork")  # workers inherit the loaded rules; no threads
     with ProcessPoolExecutor(workers, mp_context=context) as pool:
-        yield from pool.map(_check, jobs, chunksize=max(1, len(jobs) // (workers * 8)))
+        yield from pool.map(check, jobs, chunksize=max(1, len(jobs) // (workers * 8)))
 
 
 def _cpus() -> int:
@@ -130,14 +133,14 @@ def _cpus() -> int:
         return os.cpu_count() or 1
 
 
-def _check(job: Job) -> Outcome:
+def _check(job: Job, workspace: Workspace) -> Outcome:
     """Read one package and check it; an exception becomes an internal-error message."""
     from pkgtool.engine import check_package
     from pkgtool.model.package import load_package
 
-    root, label, context, settings = job
+    root, label, settings = job
     try:
-        package = load_package(root, context)
+        package = load_package(root, Context(settings.rosdistro, workspace))
         found = check_package(package, settings.rules, root_label=label,
                               severities=settings.severities)
     except Exception as error:  # noqa: BLE001 - report it, keep linting the others

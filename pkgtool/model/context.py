@@ -80,14 +80,21 @@ def colcon_src(root: Path) -> Path | None:
     return None
 
 
-def workspace_of(roots: Iterable[Path]) -> dict[str, WorkspacePackage]:
-    """The workspace index of the packages at ``roots`` (absolute): they and their neighbours."""
+def workspace_of(roots: Iterable[Path], searched: Iterable[Path] = ()
+                 ) -> dict[str, WorkspacePackage]:
+    """The workspace index of the packages at ``roots`` (absolute): they and their neighbours.
+
+    A colcon ``src`` folder inside one of the ``searched`` folders (those discovery already
+    walked) is not walked again.
+    """
     from pkgtool.workspace import discover
 
     everything = set(roots)
+    walked = tuple(searched)
     for source in {colcon_src(root) for root in everything} - {None}:
         assert source is not None
-        everything.update(discover([str(source)], cwd=source).packages)
+        if not any(source == top or top in source.parents for top in walked):
+            everything.update(discover([str(source)], cwd=source).packages)
     found: dict[str, WorkspacePackage] = {}
     for root in sorted(everything):
         package = read_workspace_package(root)
