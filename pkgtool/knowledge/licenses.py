@@ -38,7 +38,9 @@ upstream license list.
 AMBIGUOUS = {"bsd": ("BSD-2-Clause", "BSD-3-Clause"), "gpl": ("GPL-3.0-only",),
              "lgpl": ("LGPL-3.0-only",)}
 
-_BY_ALIAS = {alias: spdx for spdx, aliases in SPDX_ALIASES.items() for alias in aliases}
+_BY_ALIAS = {alias: spdx for spdx, aliases in SPDX_ALIASES.items()
+             for alias in (spdx.lower(), *aliases)}
+"""Informal spellings and (a fast path that spares importing packaging's SPDX list) the ids."""
 _OPERATORS = frozenset({"AND", "OR", "WITH", "(", ")"})
 _GNU = re.compile(r"^(A?GPL|LGPL|GFDL)-(\d\.\d)(-only|-or-later|\+)?$")
 

@@ -8,14 +8,14 @@ function takes the target ``distro`` (one of :data:`DISTROS`, default :data:`DEF
 from __future__ import annotations
 
 import difflib
-from functools import cache
+from functools import cache, lru_cache
 
 from pkgtool.knowledge.tables import DEFAULT_DISTRO, DISTROS, FLAGS, read
 
 __all__ = ["DEFAULT_DISTRO", "DISTROS", "PYTHON_VERSIONS", "alternative_key", "close_names",
            "is_known_dependency", "is_released_package", "is_rosdep_key", "key_resolves",
            "keys_for_import", "modules_of_key", "released_packages", "rosdep_keys",
-           "source_commit", "stdlib_modules", "any_stdlib_module"]
+           "source_commit", "stdlib_modules", "any_stdlib_module", "stdlib_versions"]
 
 PYTHON_VERSIONS = {"humble": "3.10", "jazzy": "3.12", "kilted": "3.12", "rolling": "3.12"}
 """The Python of each distribution's primary platform (Ubuntu's ``python3``)."""
@@ -63,6 +63,7 @@ def is_known_dependency(name: str, distro: str = DEFAULT_DISTRO) -> bool:
     return is_released_package(name, distro) or is_rosdep_key(name)
 
 
+@lru_cache(maxsize=4096)
 def keys_for_import(top_level: str, distro: str = DEFAULT_DISTRO) -> tuple[str, ...]:
     """The rosdep keys that install the top-level module ``top_level``, best first.
 
@@ -114,22 +115,28 @@ def source_commit() -> str:
     return read("ros_packages").source.split()[-1]
 
 
+def _version_flag(version: str) -> str:
+    return format(int(version.split(".")[1]), "x")
+
+
 @cache
 def stdlib_modules(distro: str = DEFAULT_DISTRO) -> frozenset[str]:
-    """Top-level standard library modules of ``distro``'s Python (the stdlib-list package)."""
-    from stdlib_list import stdlib_list
-
-    _check(distro)
-    return frozenset(m for m in stdlib_list(PYTHON_VERSIONS[distro]) if "." not in m)
+    """Top-level standard library modules of ``distro``'s Python (``data/stdlib.txt``)."""
+    flag = _version_flag(PYTHON_VERSIONS[distro])
+    return frozenset(name for name, flags in _flags("stdlib").items() if flag in flags)
 
 
 STDLIB_VERSIONS = tuple(f"3.{minor}" for minor in range(6, 15))
-"""The Python 3 versions whose standard library :func:`any_stdlib_module` knows."""
+"""The Python 3 versions whose standard library ``data/stdlib.txt`` lists."""
 
 
 @cache
 def any_stdlib_module() -> frozenset[str]:
     """Top-level modules in the standard library of any Python 3 from 3.6 to 3.14."""
-    from stdlib_list import stdlib_list
+    return frozenset(_flags("stdlib"))
 
-    return frozenset(m for v in STDLIB_VERSIONS for m in stdlib_list(v) if "." not in m)
+
+def stdlib_versions(module: str) -> tuple[str, ...]:
+    """The Python 3 versions (3.6-3.14) whose standard library has ``module``."""
+    flags = _flags("stdlib").get(module, "")
+    return tuple(v for v in STDLIB_VERSIONS if _version_flag(v) in flags)

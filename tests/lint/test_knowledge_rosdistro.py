@@ -147,3 +147,28 @@ def test_near_misses() -> None:
     assert rosdistro.close_names("python3-numpi") == ["python3-numpy"]
     assert rosdistro.close_names("my_local_pkg_", extra=frozenset({"my_local_pkg"})) == [
         "my_local_pkg"]
+
+
+def test_stdlib_table_is_what_stdlib_list_says() -> None:
+    from stdlib_list import stdlib_list
+
+    from pkgtool.knowledge.generate_stdlib import table
+
+    assert (DATA / "stdlib.txt").read_text(encoding="utf-8") == table(), (
+        "stdlib.txt is stale: run python -m pkgtool.knowledge.generate_stdlib")
+    for distro, version in rosdistro.PYTHON_VERSIONS.items():
+        expected = {m for m in stdlib_list(version) if "." not in m}
+        assert rosdistro.stdlib_modules(distro) == expected
+    assert "imp" in rosdistro.stdlib_modules("humble")
+    assert "imp" not in rosdistro.stdlib_modules("jazzy")
+    assert "tomllib" not in rosdistro.stdlib_modules("humble")
+    assert rosdistro.stdlib_versions("asyncore") == ("3.6", "3.7", "3.8", "3.9", "3.10", "3.11")
+
+
+def test_stdlib_table_agrees_with_the_running_interpreter() -> None:
+    import sys
+
+    running = f"3.{sys.version_info[1]}"
+    listed = {m for m in rosdistro.any_stdlib_module() if running in rosdistro.stdlib_versions(m)}
+    public = {m for m in sys.stdlib_module_names if not m.startswith("_")}
+    assert public - listed == set()

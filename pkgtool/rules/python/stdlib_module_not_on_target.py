@@ -3,11 +3,10 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
-from functools import cache
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import (PYTHON_VERSIONS, STDLIB_VERSIONS, any_stdlib_module,
-                                         keys_for_import, stdlib_modules)
+                                         keys_for_import, stdlib_modules, stdlib_versions)
 from pkgtool.model.package import Package
 from pkgtool.rules.dependencies._imports import all_python
 from pkgtool.rules.registry import rule
@@ -18,17 +17,9 @@ _INSTEAD = {"imp": "`importlib`", "distutils": "`setuptools`, `sysconfig` or `sh
 """What replaces a removed module (the "What's New" of the release that removed it)."""
 
 
-@cache
-def _history(module: str) -> tuple[str, ...]:
-    """The Python 3 versions (3.6-3.14) whose standard library has ``module``."""
-    from stdlib_list import stdlib_list
-
-    return tuple(v for v in _VERSIONS if module in stdlib_list(v))
-
-
 def _why(module: str, version: str) -> tuple[str, str]:
     """The reason and the fix for ``module`` missing from Python ``version``."""
-    history = _history(module)
+    history = stdlib_versions(module)
     target = _VERSIONS.index(version)
     older = [v for v in history if _VERSIONS.index(v) < target]
     if not older:
@@ -50,8 +41,8 @@ def stdlib_module_not_on_target(package: Package) -> Iterator[Hit]:
     distribution with `--rosdistro` or `rosdistro` in `[tool.pkgtool]`), not of the Python
     running pkgtool: a module that some Python 3 has in its standard library but the target's
     has not, either removed (`imp`, `distutils`, `asyncore` in 3.12) or newer (`tomllib` on
-    humble). Module lists come from the stdlib-list package. Imports inside `try/except
-    ImportError` are alternatives and stay silent.
+    humble). Module lists come from a table generated from the stdlib-list package. Imports
+    inside `try/except ImportError` are alternatives and stay silent.
 
     ## Why is this bad?
     The node fails with `ModuleNotFoundError` on the robot's Python although it ran on the
