@@ -23,6 +23,7 @@ from pathlib import Path
 
 import yaml
 
+from pkgtool.knowledge.rosdistro import any_stdlib_module
 from pkgtool.knowledge.tables import DATA, DISTROS, flags_of, render
 
 DEFAULT_SOURCE = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "rosdistro"
@@ -143,13 +144,6 @@ def _rank(key: str, name: str) -> tuple[int, int, str]:
     return (tier, len(key), key)
 
 
-def _stdlib() -> frozenset[str]:
-    from stdlib_list import stdlib_list
-
-    return frozenset(m for v in ("3.10", "3.11", "3.12", "3.13") for m in stdlib_list(v)
-                     if "." not in m)
-
-
 def tables(source: Path, commit: str) -> dict[str, str]:
     """The text of each table generated from the checkout at ``source``."""
     distributions = {d: _load(source / d / "distribution.yaml") for d in DISTROS}
@@ -164,7 +158,7 @@ def tables(source: Path, commit: str) -> dict[str, str]:
     by_key = {key: {d for d in DISTROS if any(resolves(definition, "ubuntu", c)
                                               for c in platforms[d])}
               for key, definition in rosdep.items()}
-    stdlib = _stdlib()
+    stdlib = any_stdlib_module()
     by_module: dict[str, set[str]] = {}
     for key, definition in rosdep.items():
         for distribution in distribution_names(definition):
