@@ -10,12 +10,11 @@ distributions and versions it read.
 
 from __future__ import annotations
 
-import argparse
 import importlib.metadata
-from pathlib import Path, PurePosixPath
+from pathlib import PurePosixPath
 
 from pkgtool.knowledge.rosdistro import is_released_package
-from pkgtool.knowledge.tables import DATA, render
+from pkgtool.knowledge.tables import generator_main, render
 
 KINDS = ("msg", "srv", "action")
 SUFFIXES = frozenset({".msg", ".srv", ".action", ".idl"})
@@ -56,13 +55,7 @@ def table() -> str:
 
 def main(argv: list[str] | None = None) -> None:
     """Write the table."""
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--output", type=Path, default=DATA, help="where to write the table")
-    args = parser.parse_args(argv)
-    text = table()
-    target = args.output / "interfaces.txt"
-    target.write_text(text, encoding="utf-8")
-    print(f"{target}: {len(text.encode())} bytes")
+    generator_main("interfaces", table, __doc__.splitlines()[0], argv)
 
 
 if __name__ == "__main__":

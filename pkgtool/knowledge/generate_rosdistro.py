@@ -24,7 +24,7 @@ from pathlib import Path
 import yaml
 
 from pkgtool.knowledge.rosdistro import any_stdlib_module
-from pkgtool.knowledge.tables import DATA, DISTROS, flags_of, render
+from pkgtool.knowledge.tables import DATA, DISTROS, flags_of, render, write
 
 DEFAULT_SOURCE = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "rosdistro"
 INSTALLERS = frozenset({"pip", "apt", "source", "packages"})
@@ -192,17 +192,14 @@ def _grouped(flags_by_name: dict[str, set[str]]) -> list[tuple[str, list[str]]]:
 
 
 def main(argv: list[str] | None = None) -> None:
-    """Write the tables (or check them with ``--check``)."""
+    """Write the tables."""
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--source", type=Path, default=DEFAULT_SOURCE,
                         help="a ros/rosdistro checkout (default: %(default)s)")
     parser.add_argument("--commit", help="the checkout's commit (default: read from README.md)")
     parser.add_argument("--output", type=Path, default=DATA, help="where to write the tables")
     args = parser.parse_args(argv)
-    args.output.mkdir(parents=True, exist_ok=True)
-    for name, text in tables(args.source, args.commit or _commit(args.source)).items():
-        (args.output / f"{name}.txt").write_text(text, encoding="utf-8")
-        print(f"{args.output / name}.txt: {len(text.encode())} bytes")
+    write(tables(args.source, args.commit or _commit(args.source)), args.output)
 
 
 if __name__ == "__main__":

@@ -8,11 +8,9 @@ instead of a list per version.
 
 from __future__ import annotations
 
-import argparse
 import importlib.metadata
-from pathlib import Path
 
-from pkgtool.knowledge.tables import DATA, render
+from pkgtool.knowledge.tables import generator_main, render
 
 VERSIONS = tuple(f"3.{minor}" for minor in range(6, 15))
 FLAG = {version: format(int(version.split(".")[1]), "x") for version in VERSIONS}
@@ -40,13 +38,7 @@ def table() -> str:
 
 def main(argv: list[str] | None = None) -> None:
     """Write the table."""
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--output", type=Path, default=DATA, help="where to write the table")
-    args = parser.parse_args(argv)
-    text = table()
-    target = args.output / "stdlib.txt"
-    target.write_text(text, encoding="utf-8")
-    print(f"{target}: {len(text.encode())} bytes")
+    generator_main("stdlib", table, __doc__.splitlines()[0], argv)
 
 
 if __name__ == "__main__":

@@ -9,7 +9,7 @@ for a table no rule asks for.
 
 from __future__ import annotations
 
-from collections.abc import Iterable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
@@ -72,3 +72,22 @@ def flags_of(distros: Iterable[str]) -> str:
     """The flag letters of ``distros`` in the order of :data:`DISTROS` (``-`` for none)."""
     chosen = set(distros)
     return "".join(FLAGS[d] for d in DISTROS if d in chosen) or "-"
+
+
+def write(texts: dict[str, str], output: Path) -> None:
+    """Write each table ``name -> text`` to ``output/<name>.txt`` and say how big it is."""
+    output.mkdir(parents=True, exist_ok=True)
+    for name, text in texts.items():
+        target = output / f"{name}.txt"
+        target.write_text(text, encoding="utf-8")
+        print(f"{target}: {len(text.encode())} bytes")
+
+
+def generator_main(name: str, make: Callable[[], str], description: str,
+                   argv: list[str] | None = None) -> None:
+    """The command line of a generator that writes the one table ``name`` from ``make()``."""
+    import argparse
+
+    parser = argparse.ArgumentParser(description=description)
+    parser.add_argument("--output", type=Path, default=DATA, help="where to write the table")
+    write({name: make()}, parser.parse_args(argv).output)
