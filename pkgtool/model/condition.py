@@ -31,18 +31,20 @@ Tokens = list[str]
 
 
 def _or(tokens: Tokens, env: dict[str, str]) -> tuple[bool, Tokens]:
-    value, tokens = _and(tokens, env)
-    while tokens and tokens[0] == "or":
-        right, tokens = _and(tokens[1:], env)
-        value = value or right
-    return value, tokens
+    return _chain(tokens, env, "or")
 
 
 def _and(tokens: Tokens, env: dict[str, str]) -> tuple[bool, Tokens]:
-    value, tokens = _comparison(tokens, env)
-    while tokens and tokens[0] == "and":
-        right, tokens = _comparison(tokens[1:], env)
-        value = value and right
+    return _chain(tokens, env, "and")
+
+
+def _chain(tokens: Tokens, env: dict[str, str], word: str) -> tuple[bool, Tokens]:
+    """Operands joined by ``word``; ``and`` binds tighter than ``or``."""
+    operand = _and if word == "or" else _comparison
+    value, tokens = operand(tokens, env)
+    while tokens and tokens[0] == word:
+        right, tokens = operand(tokens[1:], env)
+        value = (value or right) if word == "or" else (value and right)
     return value, tokens
 
 

@@ -112,3 +112,16 @@ def test_invalid_toml_names_the_file(tmp_path: Path) -> None:
                           "pkg/package.xml": "<package/>\n"})
     with pytest.raises(ConfigError, match="not valid TOML"):
         ConfigFinder(CLI).settings(tmp_path / "pkg")
+
+
+@pytest.mark.parametrize(("condition", "value"), [
+    ("$ROS_VERSION == 2", True), ("$ROS_VERSION == 1", False),
+    ("$ROS_VERSION == 2 and $ROS_DISTRO != humble", True),
+    ("$ROS_DISTRO == humble or $ROS_DISTRO == jazzy and $ROS_VERSION == 1", False),
+    ("($ROS_DISTRO == humble or $ROS_DISTRO == jazzy) and $ROS_VERSION == 2", True),
+    ("$UNSET == ''", None), ("$ROS_VERSION ==", None), ("$ROS_DISTRO >= humble", None),
+])
+def test_rep149_conditions_for_a_jazzy_target(condition: str, value: bool | None) -> None:
+    from pkgtool.model.condition import environment, evaluate
+
+    assert evaluate(condition, environment("jazzy")) is value
