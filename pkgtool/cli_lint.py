@@ -85,6 +85,10 @@ def lint(
         "--quiet", "-q", help="Leave info findings out of the report (they never fail).")] = False,
     isolated: Annotated[bool, typer.Option(
         "--isolated", help="Ignore [tool.pkgtool] in pyproject.toml files.")] = False,
+    rosdistro: Annotated[Optional[str], typer.Option(
+        "--rosdistro", help="The ROS 2 distribution to check against: humble, jazzy, kilted or "
+        "rolling (default: `rosdistro` in [tool.pkgtool], else jazzy).", show_default=False,
+        metavar="NAME")] = None,
     explain: Annotated[Optional[str], typer.Option(
         help="Print the documentation of a rule (code, name or family) and exit.",
         show_default=False, metavar="RULE")] = None,
@@ -100,7 +104,7 @@ def lint(
 
     options = command.LintOptions(_selectors(select) if select else None, _selectors(ignore),
                                   _selectors(extend_select) + (STYLE_FAMILIES if style else ()),
-                                  strict, exit_zero, quiet, isolated)
+                                  strict, exit_zero, quiet, isolated, rosdistro)
     try:
         if explain is not None or list_rules:
             _show_rules(explain, fmt, output)

@@ -4,8 +4,9 @@ A package's settings come from up to three layers, later ones winning: the neare
 ``pyproject.toml`` with a ``[tool.pkgtool]`` table above the package (the workspace), the one
 at the package root, and the command line. Rule selection composes like ruff's: a layer's
 ``select`` replaces the rules chosen so far, then ``extend-select`` adds and ``ignore`` removes.
-``strict`` is taken from the last layer that sets it; ``severity`` entries override one by
-one; ``per-file-ignores`` of every layer apply, with globs relative to that file's folder.
+``strict`` and ``rosdistro`` are taken from the last layer that sets them; ``severity``
+entries override one by one; ``per-file-ignores`` of every layer apply, with globs relative
+to that file's folder.
 """
 
 from __future__ import annotations
@@ -18,10 +19,12 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from pkgtool.findings import Severity
+from pkgtool.knowledge.tables import DEFAULT_DISTRO, DISTROS
 from pkgtool.rules.registry import FAMILIES, Rule, load_all, resolve
 
 PYPROJECT = "pyproject.toml"
-KEYS = ("select", "ignore", "extend-select", "strict", "severity", "per-file-ignores")
+KEYS = ("select", "ignore", "extend-select", "strict", "severity", "per-file-ignores",
+        "rosdistro")
 ALL = "ALL"
 
 
@@ -44,11 +47,13 @@ class Layer:
     strict: bool | None = None
     severity: tuple[tuple[str, Severity], ...] = ()
     per_file_ignores: tuple[tuple[str, frozenset[str]], ...] = ()
+    rosdistro: str | None = None
 
 
 @dataclass(frozen=True, slots=True)
 class Settings:
-    """What applies to one package: rules to run, severity overrides, strictness, path ignores.
+    """What applies to one package: rules to run, severity overrides, strictness, path ignores
+    and the target ROS distribution.
 
     Rules are kept by code so settings pickle cheaply to worker processes.
     """
@@ -57,6 +62,7 @@ class Settings:
     severities: Mapping[str, Severity]
     strict: bool
     path_ignores: tuple[tuple[Path, str, frozenset[str]], ...] = ()
+    rosdistro: str = DEFAULT_DISTRO
 
     @property
     def rules(self) -> tuple[Rule, ...]:
@@ -99,8 +105,10 @@ def settings_for(layers: Iterable[Layer]) -> Settings:
     chosen = {code for code, r in catalogue.items() if r.default_enabled}
     severities: dict[str, Severity] = {}
     strict = False
+    rosdistro = DEFAULT_DISTRO
     ignores: list[tuple[Path, str, frozenset[str]]] = []
     for layer in layers:
+        rosdistro = layer.rosdistro or rosdistro
         if layer.select is not None:
             chosen = set().union(*(expand(s, where=layer.source) for s in layer.select))
         chosen |= set().union(*(expand(s, where=layer.source) for s in layer.extend_select))
@@ -109,7 +117,7 @@ def settings_for(layers: Iterable[Layer]) -> Settings:
         severities.update(layer.severity)
         if layer.base is not None:
             ignores.extend((layer.base, glob, codes) for glob, codes in layer.per_file_ignores)
-    return Settings(tuple(sorted(chosen)), severities, strict, tuple(ignores))
+    return Settings(tuple(sorted(chosen)), severities, strict, tuple(ignores), rosdistro)
 
 
 def parse_table(table: Mapping[str, object], *, source: str, base: Path) -> Layer:
@@ -127,10 +135,23 @@ def parse_table(table: Mapping[str, object], *, source: str, base: Path) -> Laye
     if strict is not None and not isinstance(strict, bool):
         raise ConfigError(f"{where('strict')} must be true or false.")
     select = _selectors(table, "select", where) if "select" in table else None
+    rosdistro = table.get("rosdistro")
+    if rosdistro is not None:
+        check_rosdistro(rosdistro, where("rosdistro"))
     return Layer(source, base, select, _selectors(table, "ignore", where),
                  _selectors(table, "extend-select", where), strict,
                  _severities(table.get("severity", {}), where("severity")),
-                 _per_file(table.get("per-file-ignores", {}), where("per-file-ignores")))
+                 _per_file(table.get("per-file-ignores", {}), where("per-file-ignores")),
+                 rosdistro)
+
+
+def check_rosdistro(value: object, where: str) -> str:
+    """``value`` when it names a distribution pkgtool knows, else ConfigError."""
+    if isinstance(value, str) and value in DISTROS:
+        return value
+    close = difflib.get_close_matches(str(value), DISTROS, n=1)
+    hint = f" Did you mean `{close[0]}`?" if close else ""
+    raise ConfigError(f"{where} must be one of {', '.join(DISTROS)}, not `{value}`.{hint}")
 
 
 def _selectors(table: Mapping[str, object], key: str,

@@ -7,14 +7,16 @@ from __future__ import annotations
 
 import os
 import threading
-from collections.abc import Iterator, Sequence
+from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
 from typing import Union
 
 from pkgtool.commands import ExitCode
-from pkgtool.config import ConfigError, ConfigFinder, Layer, Settings
+from pkgtool.config import ConfigError, ConfigFinder, Layer, Settings, check_rosdistro
 from pkgtool.findings import Finding, Severity
+from pkgtool.model.context import Context, WorkspacePackage, workspace_of
 from pkgtool.report import PackageLabel
 from pkgtool.workspace import discover
 
@@ -35,6 +37,7 @@ class LintOptions:
     exit_zero: bool = False
     hide_info: bool = False
     isolated: bool = False
+    rosdistro: str | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -60,8 +63,12 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
         return LintResult(ExitCode.USAGE, errors=tuple(
             f"Path `{p}` does not exist. Check the spelling, or run from another folder."
             for p in found.missing))
+    try:
+        rosdistro = options.rosdistro and check_rosdistro(options.rosdistro, "`--rosdistro`")
+    except ConfigError as error:
+        return LintResult(ExitCode.USAGE, errors=(str(error),))
     command_line = Layer("the command line", None, options.select, options.ignore,
-                         options.extend_select, options.strict)
+                         options.extend_select, options.strict, rosdistro=rosdistro or None)
     finder = ConfigFinder(command_line, isolated=options.isolated)
     notes = tuple(f"No package (a folder with package.xml or setup.py) found under `{p}`."
                   for p in found.empty)
@@ -71,12 +78,14 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
             finder.settings(here)  # still validate the command line and the config in reach
     except ConfigError as error:
         return LintResult(ExitCode.USAGE, errors=(str(error),), notes=notes)
+    workspace = workspace_of(found.packages, [here / p for p in paths or ["."]
+                                              if (here / p).is_dir()])
     jobs = [(root, _label(root, here), setting) for root, setting in zip(found.packages, settings)]
     findings: list[Finding] = []
     labels: list[PackageLabel] = []
     errors: list[str] = []
     failing = False
-    for (root, label, setting), outcome in zip(jobs, _check_all(jobs)):
+    for (root, label, setting), outcome in zip(jobs, _check_all(jobs, workspace)):
         if isinstance(outcome, str):
             errors.append(outcome)
             labels.append(PackageLabel(root.name, label))
@@ -94,25 +103,27 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
 
 
 Job = tuple[Path, str, Settings]
+Workspace = Mapping[str, WorkspacePackage]
 Outcome = Union[tuple[str, list[Finding]], str]
 
 
-def _check_all(jobs: list[Job]) -> Iterator[Outcome]:
+def _check_all(jobs: list[Job], workspace: Workspace) -> Iterator[Outcome]:
     """Each job's outcome in order; a process per core once there are enough packages."""
+    check = partial(_check, workspace=workspace)
     workers = min(_cpus(), len(jobs) // PACKAGES_PER_WORKER)
     if workers < 2 or threading.active_count() > 1:
-        yield from map(_check, jobs)
+        yield from map(check, jobs)
         return
     import multiprocessing  # only here: importing it costs a small lint run ~10 ms
 
     if "fork" not in multiprocessing.get_all_start_methods():
-        yield from map(_check, jobs)
+        yield from map(check, jobs)
         return
     from concurrent.futures import ProcessPoolExecutor
 
     context = multiprocessing.get_context("fork")  # workers inherit the loaded rules; no threads
     with ProcessPoolExecutor(workers, mp_context=context) as pool:
-        yield from pool.map(_check, jobs, chunksize=max(1, len(jobs) // (workers * 8)))
+        yield from pool.map(check, jobs, chunksize=max(1, len(jobs) // (workers * 8)))
 
 
 def _cpus() -> int:
@@ -122,14 +133,14 @@ def _cpus() -> int:
         return os.cpu_count() or 1
 
 
-def _check(job: Job) -> Outcome:
+def _check(job: Job, workspace: Workspace) -> Outcome:
     """Read one package and check it; an exception becomes an internal-error message."""
     from pkgtool.engine import check_package
     from pkgtool.model.package import load_package
 
     root, label, settings = job
     try:
-        package = load_package(root)
+        package = load_package(root, Context(settings.rosdistro, workspace))
         found = check_package(package, settings.rules, root_label=label,
                               severities=settings.severities)
     except Exception as error:  # noqa: BLE001 - report it, keep linting the others

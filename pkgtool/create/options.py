@@ -16,6 +16,7 @@ from pkgtool.create import CreateError
 from pkgtool.create.licenses import LICENSES
 from pkgtool.create.nodes import NodeSpec, parse_node
 from pkgtool.knowledge import rosdep
+from pkgtool.knowledge.rosdistro import is_rosdep_key
 
 # REP 144: lowercase alphanumerics with single underscores between them, a letter first.
 _NAME = re.compile(r"^[a-z][a-z0-9]*(_[a-z0-9]+)*$")
@@ -117,10 +118,9 @@ def sort_dependencies(values: tuple[str, ...]) -> tuple[set[str], set[str]]:
     """Split ``--dependencies`` into ROS packages (depend) and rosdep keys (exec_depend)."""
     ros: set[str] = set()
     python: set[str] = set()
-    keys = set(rosdep.PYTHON_MODULE_KEYS.values())
     for value in values:
         key = rosdep.key_for_python_module(value)
-        if key or value in keys or _ROSDEP_KEY.match(value):
+        if key or is_rosdep_key(value) or _ROSDEP_KEY.match(value):
             python.add(key or value)
         elif value in rosdep.stdlib_modules():
             raise CreateError(f"Dependency `{value}` is in Python's standard library: it needs "

@@ -1,83 +1,27 @@
 """Which package.xml key provides an import, and which keys are not rosdep keys.
 
-Third-party keys were checked against rosdep's ``python.yaml`` and ``base.yaml`` in
-ros/rosdistro; they are data, not guesses: a module absent here is reported as unknown, never
-mapped. ROS import names map to the ROS package of the same name unless listed in
-:data:`ROS_MODULE_PACKAGES`.
+Third-party modules map to rosdep keys through rosdep's own data
+(:func:`pkgtool.knowledge.rosdistro.keys_for_import`); a module rosdep has no key for is
+reported as unknown, never mapped. ROS import names map to the ROS package of the same name
+unless listed in :data:`ROS_MODULE_PACKAGES`. The tables here hold what no data source decides.
 """
 
 from __future__ import annotations
 
-import sys
-
-PYTHON_MODULE_KEYS: dict[str, str] = {
-    "aiohttp": "python3-aiohttp", "argcomplete": "python3-argcomplete",
-    "autobahn": "python3-autobahn", "boto3": "python3-boto3",
-    "bs4": "python3-bs4", "bson": "python3-bson", "cairo": "python3-cairo",
-    "can": "python3-can", "catkin_pkg": "python3-catkin-pkg", "click": "python3-click",
-    "colorama": "python3-colorama", "coverage": "python3-coverage", "crcmod": "python3-crcmod",
-    "cryptography": "python3-cryptography", "cv2": "python3-opencv",
-    "dateutil": "python3-dateutil", "dbus": "python3-dbus", "deepdiff": "python3-deepdiff",
-    "defusedxml": "python3-defusedxml", "docker": "python3-docker",
-    "docopt": "python3-docopt", "docutils": "python3-docutils", "em": "python3-empy",
-    "evdev": "python3-evdev", "fastapi": "python3-fastapi", "flask": "python3-flask",
-    "geographiclib": "python3-geographiclib", "geopy": "python3-geopy",
-    "gi": "python3-gi", "git": "python3-git", "gpiod": "python3-libgpiod",
-    "gpiozero": "python3-gpiozero", "grpc": "python3-grpcio", "h5py": "python3-h5py",
-    "httplib2": "python3-httplib2", "hypothesis": "python3-hypothesis",
-    "imageio": "python3-imageio", "jinja2": "python3-jinja2", "joblib": "python3-joblib",
-    "jsonschema": "python3-jsonschema", "lark": "python3-lark-parser", "lxml": "python3-lxml",
-    "mako": "python3-mako", "markdown": "python3-markdown", "matplotlib": "python3-matplotlib",
-    "mediapipe": "python3-mediapipe-pip", "mock": "python3-mock",
-    "msgpack": "python3-msgpack", "netifaces": "python3-netifaces",
-    "networkx": "python3-networkx", "nose": "python3-nose", "numpy": "python3-numpy",
-    "onnxruntime": "python3-onnxruntime-pip", "open3d": "python3-open3d-pip",
-    "openai": "python3-openai-pip", "OpenGL": "python3-opengl",
-    "packaging": "python3-packaging", "paho": "python3-paho-mqtt", "pandas": "python3-pandas",
-    "paramiko": "python3-paramiko", "pexpect": "python3-pexpect", "pika": "python3-pika",
-    "PIL": "python3-pil", "pkg_resources": "python3-setuptools",
-    "prettytable": "python3-prettytable", "psutil": "python3-psutil",
-    "pyaudio": "python3-pyaudio", "pybullet": "python3-pybullet-pip",
-    "pydantic": "python3-pydantic", "pydot": "python3-pydot",
-    "pygame": "python3-pygame", "pygraphviz": "python3-pygraphviz", "PyKDL": "python3-pykdl",
-    "pymodbus": "python3-pymodbus", "pymongo": "python3-pymongo",
-    "pynmea2": "python3-pynmea2", "pynput": "pynput-pip", "pyparsing": "python3-pyparsing",
-    "pyproj": "python3-pyproj", "PyQt5": "python3-pyqt5", "pyqtgraph": "python3-pyqtgraph",
-    "pytest": "python3-pytest", "pytz": "python3-tz", "qtpy": "python3-qtpy",
-    "requests": "python3-requests", "rospkg": "python3-rospkg", "ruamel": "python3-ruamel.yaml",
-    "scipy": "python3-scipy", "serial": "python3-serial", "setuptools": "python3-setuptools",
-    "shapely": "python3-shapely", "simplejson": "python3-simplejson",
-    "six": "python3-six", "skimage": "python3-skimage", "sklearn": "python3-sklearn",
-    "smbus": "python3-smbus", "smbus2": "python3-smbus2-pip",
-    "sounddevice": "python3-sounddevice-pip", "sqlalchemy": "python3-sqlalchemy",
-    "sympy": "python3-sympy", "tabulate": "python3-tabulate", "termcolor": "python3-termcolor",
-    "tkinter": "python3-tk", "toml": "python3-toml", "tornado": "python3-tornado",
-    "tqdm": "python3-tqdm", "transforms3d": "python3-transforms3d",
-    "transitions": "python3-transitions", "trimesh": "python3-trimesh-pip",
-    "twisted": "python3-twisted", "typing_extensions": "python3-typing-extensions",
-    "ujson": "python3-ujson", "urllib3": "python3-urllib3", "usb": "python3-usb",
-    "uvicorn": "python3-uvicorn", "watchdog": "python3-watchdog",
-    "websocket": "python3-websocket", "websockets": "python3-websockets",
-    "werkzeug": "python3-werkzeug", "xmltodict": "python3-xmltodict", "yaml": "python3-yaml",
-    "zmq": "python3-zmq",
-}
-"""Third-party top-level import name -> the rosdep key that installs it (all in python.yaml).
-
-``tkinter`` is here although it is in the standard library: Debian and Ubuntu ship it
-separately (python3-tk), so it must be declared.
-"""
+from pkgtool.knowledge.rosdistro import DEFAULT_DISTRO, keys_for_import, stdlib_modules
 
 ALTERNATIVE_KEYS: dict[str, tuple[str, ...]] = {
-    "catkin_pkg": ("python3-catkin-pkg-modules",),
-    "pkg_resources": ("python3-pkg-resources",),
-    "rospkg": ("python3-rospkg-modules",),
-    "tf2_ros": ("tf2_ros",),
+    "PyKDL": ("python_orocos_kdl_vendor",),
 }
-"""Other keys that provide the same import (accepted, never suggested).
+"""ROS packages that also provide a third-party import (accepted, never suggested)."""
 
-The ``-modules`` keys install only the Python modules, without the command line scripts; ROS
-2's own tools (ros2pkg, ament_package users) declare them.
-"""
+COVERED_BY: dict[str, frozenset[str]] = {
+    "ament_lint_common": frozenset({
+        "ament_copyright", "ament_cppcheck", "ament_cpplint", "ament_flake8", "ament_lint",
+        "ament_lint_cmake", "ament_pep257", "ament_uncrustify", "ament_xmllint"}),
+}
+"""Packages whose declaration brings others along: ``ament_lint_common`` depends on the
+``ament_cmake_*`` linters, and they on the Python linters that test files import."""
 
 ROS_MODULE_PACKAGES: dict[str, str] = {
     "tf2_ros": "tf2_ros_py",
@@ -143,14 +87,10 @@ NOT_PACKAGES: dict[str, str] = {
 """Build tools that are not packages at all, as buildtool_depend values."""
 
 
-def stdlib_modules() -> frozenset[str]:
-    """Top-level names of the standard library of the running interpreter."""
-    return frozenset(sys.stdlib_module_names)
-
-
-def key_for_python_module(top_level: str) -> str | None:
-    """The rosdep key providing a third-party top-level import, or None if not curated."""
-    return PYTHON_MODULE_KEYS.get(top_level)
+def key_for_python_module(top_level: str, distro: str = DEFAULT_DISTRO) -> str | None:
+    """The rosdep key providing a third-party top-level import, or None if rosdep has none."""
+    keys = keys_for_import(top_level, distro)
+    return keys[0] if keys else None
 
 
 def suggested_key(declared: str) -> str | None:
@@ -166,3 +106,8 @@ def package_for_ros_module(top_level: str) -> str:
 def accepted_keys(top_level: str, primary: str) -> tuple[str, ...]:
     """Every key that provides ``top_level``: ``primary`` first, then the alternatives."""
     return (primary, *ALTERNATIVE_KEYS.get(top_level, ()))
+
+
+__all__ = ["ALTERNATIVE_KEYS", "COVERED_BY", "NOT_PACKAGES", "NOT_ROSDEP_KEYS", "ROS1_PACKAGES",
+           "ROS_MODULE_PACKAGES", "accepted_keys", "key_for_python_module",
+           "package_for_ros_module", "stdlib_modules", "suggested_key"]

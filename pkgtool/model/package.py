@@ -7,6 +7,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
+from pkgtool.model.context import Context
 from pkgtool.model.files import TextFile, list_files, read_text
 from pkgtool.model.launch import LaunchFile, is_launch_file, parse_launch, python_folders
 from pkgtool.model.launch_reader import yaml_problem
@@ -26,7 +27,8 @@ class Package:
 
     ``files`` lists every file (POSIX, relative to ``root``). ``problems`` holds files that could
     not be read or parsed. ``suppressions`` maps (path, line) to the rule selectors silenced
-    there as written (codes, names, ``ALL``), an empty set for a bare ``pkgtool: ignore``.
+    there as written (codes, names, ``ALL``), an empty set for a bare ``pkgtool: ignore``. ``context`` is the target
+    distribution and the workspace.
     """
 
     root: Path
@@ -40,6 +42,7 @@ class Package:
     suppressions: dict[tuple[str, int], frozenset[str]] = field(default_factory=dict)
     texts: dict[str, str] = field(default_factory=dict, repr=False)
     file_set: frozenset[str] = field(default=frozenset(), repr=False)
+    context: Context = field(default_factory=Context, repr=False)
 
     @property
     def name(self) -> str:
@@ -73,8 +76,11 @@ def _suppressions(path: str, text: str) -> dict[tuple[str, int], frozenset[str]]
     return found
 
 
-def load_package(root: Path) -> Package:
-    """Read the package at ``root``; never raises for bad content, only records problems."""
+def load_package(root: Path, context: Context | None = None) -> Package:
+    """Read the package at ``root``; never raises for bad content, only records problems.
+
+    ``context`` defaults to the default distribution and a workspace of this package alone.
+    """
     files = list_files(root)
     problems: list[ParseProblem] = []
     texts: dict[str, str] = {}
@@ -131,7 +137,7 @@ def load_package(root: Path) -> Package:
     for relpath, text in texts.items():
         suppressions.update(_suppressions(relpath, text))
     return Package(root, files, manifest, setup_py, setup_cfg, tuple(modules), tuple(launches),
-                   tuple(problems), suppressions, texts, frozenset(files))
+                   tuple(problems), suppressions, texts, frozenset(files), context or Context())
 
 
 _LAUNCH_XML = re.compile(r"\s*(?:<\?xml[^>]*\?>\s*)?(?:<!--.*?-->\s*)*<launch[\s>/]", re.S)

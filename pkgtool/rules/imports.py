@@ -1,9 +1,11 @@
 """What the DEP, LCH and PYC rules share: which imports need a package.xml key, which are declared.
 
-An absolute import needs a key unless it is standard library, one of the package's own
-modules, or a module next to the importing file. Third-party names map to rosdep keys through
-:mod:`pkgtool.knowledge.rosdep`; ROS-looking names to ROS packages; a name that is neither is
-``unknown`` and only ever gets a guessed key.
+An absolute import needs a key unless it is standard library (of the target distribution's
+Python), one of the package's own modules, or a module next to the importing file.
+Third-party names map to rosdep keys through rosdep's data
+(:func:`pkgtool.knowledge.rosdistro.keys_for_import`); ROS names (released for the target, or
+ROS-looking) to ROS packages; Python packages of workspace packages to those packages; a name
+that is none of these is ``unknown`` and only ever gets a guessed key.
 """
 
 from __future__ import annotations
@@ -14,8 +16,11 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from pkgtool.knowledge.ros_names import looks_like_ros
-from pkgtool.knowledge.rosdep import (PYTHON_MODULE_KEYS, ROS_MODULE_PACKAGES, accepted_keys,
-                                      package_for_ros_module, stdlib_modules, suggested_key)
+from pkgtool.knowledge.rosdep import (ALTERNATIVE_KEYS, COVERED_BY, ROS_MODULE_PACKAGES,
+                                      accepted_keys, package_for_ros_module, suggested_key)
+from pkgtool.knowledge.rosdistro import (any_stdlib_module, is_released_package,
+                                         keys_for_import, stdlib_modules)
+from pkgtool.model.context import Context
 from pkgtool.model.installed import installed_modules
 from pkgtool.model.launch import is_launch_file, python_folders
 from pkgtool.model.manifest import Dependency
@@ -59,13 +64,20 @@ class Need:
 
 
 def declared(package: Package, tags: frozenset[str]) -> dict[str, Dependency]:
-    """Keys declared with one of ``tags`` (``depend`` counts for every kind), first tag wins."""
+    """Keys declared with one of ``tags`` (``depend`` counts for every kind), first tag wins.
+
+    Packages a declared one brings along (:data:`COVERED_BY`) count as declared by it.
+    """
     found: dict[str, Dependency] = {}
     if package.manifest is None:
         return found
     for dependency in package.manifest.dependencies:
         if (dependency.tag in tags or dependency.tag == "depend") and dependency.name:
             found.setdefault(dependency.name, dependency)
+    for name, covered in COVERED_BY.items():
+        if name in found:
+            for other in covered:
+                found.setdefault(other, found[name])
     return found
 
 
@@ -153,16 +165,31 @@ def test_code(package: Package) -> list[PythonModule]:
     return [m for m in package.modules if m.is_test or m.path in plugins]
 
 
-def classify(top: str, declared_names: Iterable[str]) -> tuple[str, tuple[str, ...]]:
-    """The kind of a top-level import and the keys that provide it."""
-    if top in PYTHON_MODULE_KEYS:
-        return "third-party", accepted_keys(top, PYTHON_MODULE_KEYS[top])
-    if top in ROS_MODULE_PACKAGES or looks_like_ros(top):
+def classify(top: str, declared_names: Iterable[str], context: Context = Context()
+             ) -> tuple[str, tuple[str, ...]]:
+    """The kind of a top-level import and the keys that provide it, for ``context``'s target."""
+    distro = context.distro
+    released = is_released_package(top, distro)
+    keys = keys_for_import(top, distro)
+    if keys:
+        also = (*ALTERNATIVE_KEYS.get(top, ()), *((top,) if released else ()))
+        return "third-party", (*keys, *also)
+    if top in ROS_MODULE_PACKAGES or released or looks_like_ros(top):
         return "ros", accepted_keys(top, package_for_ros_module(top))
+    provider = context.provider(top)
+    if provider:
+        return "ros", (provider,)
     if top in declared_names:
         return "ros", (top,)
     guess = "python3-" + top.lower().replace("_", "-")
     return "unknown", (guess, guess + "-pip", top)
+
+
+@lru_cache(maxsize=8)
+def _stdlib(distro: str) -> frozenset[str]:
+    """Standard library names never needing a key: the target's, and (PYC010's case) any
+    Python 3's."""
+    return stdlib_modules(distro) | any_stdlib_module()
 
 
 def needs(package: Package, module: PythonModule, *, guarded: bool | None = False
@@ -173,7 +200,7 @@ def needs(package: Package, module: PythonModule, *, guarded: bool | None = Fals
     import of an own module that the package itself imports only guarded counts as guarded.
     """
     skip = own_modules(package) | _siblings(package, module.path)
-    stdlib = stdlib_modules()
+    stdlib = _stdlib(package.context.distro)
     names = declared(package, ANY)
     optional = module.path in optional_modules(package)
     seen: set[str] = set()
@@ -181,10 +208,10 @@ def needs(package: Package, module: PythonModule, *, guarded: bool | None = Fals
         top = imported.top_level
         is_guarded = imported.guarded or optional
         if (not top or top in seen or (guarded is not None and is_guarded != guarded)
-                or top in skip or (top in stdlib and top not in PYTHON_MODULE_KEYS)):
+                or top in skip or (top in stdlib and not keys_for_import(top))):
             continue
         seen.add(top)
-        kind, keys = classify(top, names)
+        kind, keys = classify(top, names, package.context)
         yield Need(module, imported, top, kind, keys)
 
 
@@ -199,9 +226,20 @@ def unmet_runtime_needs(package: Package) -> Iterator[Need]:
                 yield need
 
 
-def misnamed(package: Package, key: str) -> str | None:
-    """A declared name that people write for ``key`` (``python-opencv`` for python3-opencv)."""
-    return next((name for name in declared(package, ANY) if suggested_key(name) == key), None)
+def misnamed(package: Package, need: Need) -> str | None:
+    """Why a declared name does not provide ``need``, if one looks like it should.
+
+    ``python-opencv`` declared for python3-opencv; ``tf2_ros`` (the C++ package) declared for
+    ``import tf2_ros``, which ``tf2_ros_py`` provides.
+    """
+    names = declared(package, ANY)
+    wrong = next((name for name in names if suggested_key(name) == need.key), None)
+    if wrong:
+        return f"`{wrong}` is declared, but the rosdep key is `{need.key}`"
+    if need.top in names and need.top not in need.keys:
+        return (f"`{need.top}` is declared, but that package does not provide the Python "
+                f"module: `{need.key}` does")
+    return None
 
 
 def launch_keys(package: Package, path: str) -> dict[str, Dependency]:

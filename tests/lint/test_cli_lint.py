@@ -142,7 +142,7 @@ def test_a_crashing_rule_becomes_an_internal_error_finding(workspace: Path,
 
 def test_a_crash_while_reading_a_package_exits_three(workspace: Path,
                                                      monkeypatch: pytest.MonkeyPatch) -> None:
-    def broken_reader(root: Path) -> None:
+    def broken_reader(root: Path, context: object = None) -> None:
         raise ValueError("cannot model this")
 
     monkeypatch.setattr("pkgtool.model.package.load_package", broken_reader)
@@ -197,3 +197,32 @@ def test_large_workspaces_are_checked_in_parallel_with_the_same_report(tmp_path:
     assert document["summary"]["packages"] == count
     assert [f["path"] for f in document["findings"]] == [
         f"src/pkg_{i:02d}/pkg_{i:02d}/node.py" for i in range(0, count, 3)]
+
+
+def test_rosdistro_option_and_config_choose_the_target(tmp_path: Path) -> None:
+    manifest = MINIMAL_MANIFEST.format(name="app").replace(
+        "<exec_depend>rclpy</exec_depend>", "<exec_depend>create_msgs</exec_depend>")
+    write_tree(tmp_path / "ws" / "src" / "app", {"package.xml": manifest})
+    write_tree(tmp_path / "ws" / "src" / "app_msgs", {
+        "package.xml": MINIMAL_MANIFEST.format(name="app_msgs")})
+    ws = tmp_path / "ws"
+    jazzy = run_cli("lint", "--select", "MAN022", "src/app", cwd=ws)
+    assert "`create_msgs` is not a ROS package released for jazzy" in jazzy.stdout
+    assert run_cli("lint", "--select", "MAN022", "--rosdistro", "humble", "src/app",
+                   cwd=ws).exit_code == ExitCode.OK
+    (ws / "pyproject.toml").write_text('[tool.pkgtool]\nrosdistro = "humble"\n')
+    assert "No findings" in run_cli("lint", "--select", "MAN022", "src/app", cwd=ws).stdout
+    wrong = run_cli("lint", "--rosdistro", "jazy", "src/app", cwd=ws)
+    assert wrong.exit_code == ExitCode.USAGE and "Did you mean `jazzy`?" in wrong.stderr
+
+
+def test_packages_of_the_colcon_workspace_count_as_known(tmp_path: Path) -> None:
+    manifest = MINIMAL_MANIFEST.format(name="app").replace(
+        "<exec_depend>rclpy</exec_depend>", "<exec_depend>app_driver</exec_depend>")
+    write_tree(tmp_path / "ws" / "src" / "app", {"package.xml": manifest})
+    result = run_cli("lint", "--select", "MAN022", "src/app", cwd=tmp_path / "ws")
+    assert "`app_driver` is not a ROS package" in result.stdout
+    write_tree(tmp_path / "ws" / "src" / "drivers" / "app_driver", {
+        "package.xml": MINIMAL_MANIFEST.format(name="app_driver")})
+    result = run_cli("lint", "--select", "MAN022", "src/app", cwd=tmp_path / "ws")
+    assert result.exit_code == ExitCode.OK, result.output

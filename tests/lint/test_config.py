@@ -49,12 +49,22 @@ def test_strict_and_severity_take_the_innermost_value() -> None:
     assert settings_for([outer, inner, Layer("cli", strict=True)]).strict is True
 
 
+def test_rosdistro_takes_the_innermost_value_and_defaults_to_jazzy() -> None:
+    assert settings_for([CLI]).rosdistro == "jazzy"
+    outer, inner = _layer({"rosdistro": "humble"}), _layer({"rosdistro": "rolling"})
+    assert settings_for([outer, CLI]).rosdistro == "humble"
+    assert settings_for([outer, inner, CLI]).rosdistro == "rolling"
+    assert settings_for([outer, Layer("cli", rosdistro="kilted")]).rosdistro == "kilted"
+
+
 @pytest.mark.parametrize(("table", "named"), [
     ({"selct": ["SYN"]}, "`selct`"),
     ({"extend_select": ["SYN"]}, "Did you mean `extend-select`?"),
     ({"select": ["NOPE001"]}, "`NOPE001`"),
     ({"ignore": "SYN001"}, "`ignore`"),
     ({"strict": "yes"}, "`strict`"),
+    ({"rosdistro": "jazy"}, "Did you mean `jazzy`?"),
+    ({"rosdistro": 3}, "`rosdistro`"),
     ({"severity": {"XYZ123": "warning"}}, "`XYZ123`"),
     ({"severity": {"SYN001": "fatal"}}, "`SYN001`"),
     ({"per-file-ignores": {"test/*": ["BAD999"]}}, "`BAD999`"),
@@ -107,3 +117,16 @@ def test_invalid_toml_names_the_file(tmp_path: Path) -> None:
                           "pkg/package.xml": "<package/>\n"})
     with pytest.raises(ConfigError, match="not valid TOML"):
         ConfigFinder(CLI).settings(tmp_path / "pkg")
+
+
+@pytest.mark.parametrize(("condition", "value"), [
+    ("$ROS_VERSION == 2", True), ("$ROS_VERSION == 1", False),
+    ("$ROS_VERSION == 2 and $ROS_DISTRO != humble", True),
+    ("$ROS_DISTRO == humble or $ROS_DISTRO == jazzy and $ROS_VERSION == 1", False),
+    ("($ROS_DISTRO == humble or $ROS_DISTRO == jazzy) and $ROS_VERSION == 2", True),
+    ("$UNSET == ''", None), ("$ROS_VERSION ==", None), ("$ROS_DISTRO >= humble", None),
+])
+def test_rep149_conditions_for_a_jazzy_target(condition: str, value: bool | None) -> None:
+    from pkgtool.model.condition import environment, evaluate
+
+    assert evaluate(condition, environment("jazzy")) is value

@@ -104,11 +104,16 @@ def test_nothing_is_reported_without_a_readable_package_xml(tmp_path: Path) -> N
                  "LCH002", "LCH003") == []
 
 
-def test_tf2_ros_is_covered_by_either_package(tmp_path: Path) -> None:
-    for key in ("tf2_ros", "tf2_ros_py"):
-        package = _package(tmp_path / key, {"demo/talker.py": "import tf2_ros\n"},
-                           f"<exec_depend>{key}</exec_depend>")
-        assert codes(package, "DEP001") == []
+def test_tf2_ros_module_needs_the_python_package_not_the_cpp_one(tmp_path: Path) -> None:
+    python = _package(tmp_path / "py", {"demo/talker.py": "import tf2_ros\n"},
+                      "<exec_depend>tf2_ros_py</exec_depend>")
+    assert codes(python, "DEP001") == []
+    cpp = _package(tmp_path / "cpp", {"demo/talker.py": "import tf2_ros\n"},
+                   "<exec_depend>tf2_ros</exec_depend>")
+    [finding] = findings(cpp, "DEP001")
+    assert "`tf2_ros` is declared, but that package does not provide the Python module: " \
+        "`tf2_ros_py` does" in finding.message
+    assert finding.fix == "Add `<exec_depend>tf2_ros_py</exec_depend>` to package.xml"
 
 
 def test_one_finding_per_imported_package_and_file(tmp_path: Path) -> None:

@@ -4,7 +4,10 @@ Fixtures live in ``tests/fixtures/<CODE>/{good,bad}/<case>/`` as minimal package
 In ``bad`` cases each expected finding is marked on its line: ``# expect: CODE`` (Python,
 setup.cfg, YAML) or ``<!-- expect: CODE -->`` (XML). Findings with no line of their own (a
 missing file) are listed in an ``EXPECT`` file of the case as ``path:line CODE`` lines.
-``good`` cases must give no finding of that code.
+``good`` cases must give no finding of that code. A case that is not a package but a colcon
+workspace (``<case>/src/<package>/...``) is linted package by package with its workspace, as
+``pkgtool lint`` does; its paths are then relative to the case. A case may name the target
+distribution in a ``ROSDISTRO`` file.
 """
 
 from __future__ import annotations
@@ -14,7 +17,10 @@ from pathlib import Path
 
 import pytest
 
+from pkgtool.findings import Finding
+from pkgtool.model.context import Context, workspace_of
 from pkgtool.model.package import load_package
+from pkgtool.workspace import discover, is_package
 from pkgtool.rules.registry import load_all
 from tests.helpers import findings
 
@@ -49,9 +55,21 @@ def _expected(case: Path, code: str) -> set[tuple[str, int]]:
     return expected
 
 
+def _findings(case: Path, code: str) -> list[tuple[str, Finding]]:
+    """(package folder relative to the case, finding) for every finding of ``code``."""
+    marker = case / "ROSDISTRO"
+    distro = marker.read_text().strip() if marker.is_file() else Context().distro
+    is_workspace = not is_package(case) and (case / "src").is_dir()
+    roots = list(discover(["src"], cwd=case).packages) if is_workspace else [case]
+    workspace = workspace_of(roots) if is_workspace else {}
+    return [("" if root == case else root.relative_to(case).as_posix() + "/", finding)
+            for root in roots
+            for finding in findings(load_package(root, Context(distro, workspace)), code)]
+
+
 @pytest.mark.parametrize(("code", "case"), _cases("bad"), ids=lambda v: getattr(v, "name", v))
 def test_bad_fixture_reports_exactly_the_marked_lines(code: str, case: Path) -> None:
-    got = {(f.span.path, f.span.line) for f in findings(load_package(case), code)}
+    got = {(prefix + f.span.path, f.span.line) for prefix, f in _findings(case, code)}
     expected = _expected(case, code)
     assert expected, f"{case} marks no expected {code} finding"
     assert got == expected
@@ -59,7 +77,7 @@ def test_bad_fixture_reports_exactly_the_marked_lines(code: str, case: Path) -> 
 
 @pytest.mark.parametrize(("code", "case"), _cases("good"), ids=lambda v: getattr(v, "name", v))
 def test_good_fixture_reports_nothing(code: str, case: Path) -> None:
-    assert findings(load_package(case), code) == []
+    assert _findings(case, code) == []
 
 
 def test_every_rule_has_good_and_bad_fixtures() -> None:

@@ -6,7 +6,7 @@ import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.rosdep import PYTHON_MODULE_KEYS, stdlib_modules
+from pkgtool.knowledge.rosdistro import keys_for_import, stdlib_modules
 from pkgtool.model.installed import installed_modules
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import ANY, declared, installed_code
@@ -51,7 +51,7 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
         return
     names = {file: name for name, file in installed.items()}
     top_level = {name.split(".")[0] for name in installed}
-    skip = top_level | stdlib_modules() | PYTHON_MODULE_KEYS.keys() | declared(package, ANY).keys()
+    skip = top_level | stdlib_modules(package.context.distro) | declared(package, ANY).keys()
     for module in installed_code(package):
         folder = posixpath.dirname(module.path)
         dotted = names.get(module.path, "")
@@ -61,7 +61,8 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
         own_name = posixpath.basename(module.path)[:-3]
         for imported in module.imports:
             top = imported.top_level
-            if not top or imported.guarded or top in skip or top == own_name or not (
+            if (not top or imported.guarded or top in skip or top == own_name
+                    or keys_for_import(top, package.context.distro)) or not (
                     package.has_file(f"{folder}/{top}.py") or
                     package.has_file(f"{folder}/{top}/__init__.py")):
                 continue

@@ -20,9 +20,12 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     ## What it does
     Checks every absolute, unguarded import in the modules setup.py installs (a module the
     package itself imports only inside `try/except ImportError` is optional: see DEP005).
-    Standard library modules and the package's own modules are skipped; a ROS import must be
-    covered by `<depend>` or `<exec_depend>` of its package, a third-party module by its rosdep key
-    (`cv2` by `python3-opencv`, `yaml` by `python3-yaml`, ...). Modules that only a
+    Standard library modules (of the target distribution's Python) and the package's own
+    modules are skipped; a ROS import must be covered by `<depend>` or `<exec_depend>` of its
+    package (`tf2_ros` by `tf2_ros_py`, not the C++ `tf2_ros`), the Python package of a
+    workspace package by that package, and a third-party module by one of the rosdep keys that
+    rosdep's data says install it (`cv2` by `python3-opencv`, `rosdistro` by
+    `python3-rosdistro-modules`, `pyflakes` by `pyflakes3`, ...). Modules that only a
     `pytest11` entry point names are pytest plugins, checked as test code (DEP003).
 
     ## Why is this bad?
@@ -54,7 +57,7 @@ def _message(package: Package, need: Need, tests: dict[str, Dependency]) -> str:
         return (f"`{need.top}` is imported by installed code but `{need.key}` is only a "
                 f"`test_depend`")
     text = f"`{need.top}` is imported but {need.missing}"
-    wrong = misnamed(package, need.key)
+    wrong = misnamed(package, need)
     if wrong:
-        text += f" (`{wrong}` is declared, but the rosdep key is `{need.key}`)"
+        text += f" ({wrong})"
     return text

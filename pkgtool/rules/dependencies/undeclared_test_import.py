@@ -19,6 +19,8 @@ def undeclared_test_import(package: Package) -> Iterator[Hit]:
     Checks the unguarded absolute imports of test modules (files under `test/`, `test_*.py`,
     `conftest.py`) against every dependency of package.xml: `<test_depend>`, the run-time
     dependencies and the build dependencies all make a package available to `colcon test`.
+    `ament_lint_common` brings the ament linters along (`ament_flake8`, `ament_pep257`,
+    `ament_copyright`, ...), so a test importing them is covered by it.
 
     ## Why is this bad?
     `rosdep install` (and the buildfarm's test jobs) install only declared dependencies, so

@@ -18,8 +18,10 @@ def unknown_import(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Reports unguarded absolute imports (in any module or Python launch file) of names that
-    are not standard library, not the package's own, not ROS by name, and not in pkgtool's
-    curated table of third-party modules, unless a key that looks like it
+    are not standard library (of the target distribution's Python), not the package's own,
+    not ROS (released for the target distribution, or ROS by name), and not a module that
+    rosdep's data maps to a key (the pip and Debian names in rosdistro's `python.yaml`),
+    unless a key that looks like it
     (`python3-<name>`, `python3-<name>-pip` or the bare name) is declared. The suggested key
     is a guess from the module name. ROS 1 modules (`rospy`, `tf`) are reported as such.
 
@@ -28,9 +30,8 @@ def unknown_import(package: Package) -> Iterator[Hit]:
     names often differ from import names (`cv2` is `python3-opencv`), so pkgtool cannot tell
     which key is missing, only that one probably is.
 
-    ## Known problems
-    A Python package of another package in the same workspace is reported too: declare
-    that package by its name.
+    A Python package of another package of the same workspace (linted in the same run, or
+    under the same colcon `src` folder) maps to that package (DEP001 then wants it declared).
 
     ## Example
     ```python

@@ -7,7 +7,8 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.ros_names import looks_like_ros
-from pkgtool.knowledge.rosdep import ALTERNATIVE_KEYS, PYTHON_MODULE_KEYS, ROS_MODULE_PACKAGES
+from pkgtool.knowledge.rosdep import ALTERNATIVE_KEYS, ROS_MODULE_PACKAGES
+from pkgtool.knowledge.rosdistro import modules_of_key
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import RUNTIME, all_python, declared, needs
 from pkgtool.rules.registry import rule
@@ -24,17 +25,18 @@ _CONFIG_SUFFIXES = (".yaml", ".yml", ".json", ".urdf", ".xacro", ".sdf", ".world
 
 def _import_names(key: str) -> set[str]:
     names = {key}
-    names.update(m for m, k in PYTHON_MODULE_KEYS.items() if k == key)
+    names.update(modules_of_key(key))
     names.update(m for m, k in ROS_MODULE_PACKAGES.items() if k == key)
     names.update(m for m, keys in ALTERNATIVE_KEYS.items() if key in keys)
     return names
 
 
 def _import_only(key: str) -> bool:
-    """Keys whose only use is being imported: curated Python keys and ROS Python packages."""
+    """Keys whose only use is being imported: Python keys of rosdep and ROS Python packages."""
     if key in NEVER_IMPORTED or key.startswith("ament_"):
         return False
-    return key in PYTHON_MODULE_KEYS.values() or looks_like_ros(key)
+    python_key = key.startswith("python3-") or key.endswith("-pip")
+    return (python_key and bool(modules_of_key(key))) or looks_like_ros(key)
 
 
 @rule("DEP006", "unused-dependency", Severity.INFO,
@@ -83,4 +85,5 @@ def unused_dependency(package: Package) -> Iterator[Hit]:
 
 
 def _mentioned(key: str, texts: str) -> bool:
-    return any(re.search(rf"\b{re.escape(name)}\b", texts) for name in _import_names(key))
+    return any(re.search(rf"\b{re.escape(name)}\b", texts, re.IGNORECASE)
+               for name in _import_names(key))

@@ -2,34 +2,29 @@
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.licenses import AMBIGUOUS, gnu_choices, spdx_expression, spdx_ids_for
 from pkgtool.model.package import Package
 from pkgtool.rules.manifest.common import tree
 from pkgtool.rules.registry import rule
 
-_ALIASES: dict[tuple[str, ...], tuple[str, ...]] = {
-    ("apache 2", "apache 2.0", "apache2", "apache2.0", "apache-2", "apache v2", "apache v2.0",
-     "apache license 2.0", "apache license, version 2.0", "apache license version 2.0",
-     "apache 2.0 license", "apache license v2.0", "al2", "asl 2.0", "asl2.0"): ("Apache-2.0",),
-    ("mit license", "the mit license", "expat"): ("MIT",),
-    ("bsd 3-clause", "bsd-3", "bsd3", "bsd 3 clause", "3-clause bsd", "new bsd", "bsd new",
-     "bsd 3-clause license", "bsd-3-clause license", "modified bsd"): ("BSD-3-Clause",),
-    ("bsd 2-clause", "bsd-2", "bsd2", "bsd 2 clause", "2-clause bsd", "simplified bsd",
-     "freebsd"): ("BSD-2-Clause",),
-    ("gplv3", "gpl v3", "gpl-3", "gpl3", "gpl 3", "gpl-3.0", "gnu gpl v3", "gpl version 3"):
-        ("GPL-3.0-only", "GPL-3.0-or-later"),
-    ("gplv2", "gpl v2", "gpl-2", "gpl2", "gpl 2", "gpl-2.0", "gnu gpl v2", "gpl version 2"):
-        ("GPL-2.0-only", "GPL-2.0-or-later"),
-    ("lgplv3", "lgpl v3", "lgpl-3", "lgpl3", "lgpl-3.0"): ("LGPL-3.0-only", "LGPL-3.0-or-later"),
-    ("lgplv2.1", "lgpl v2.1", "lgpl-2.1", "lgpl2.1"): ("LGPL-2.1-only", "LGPL-2.1-or-later"),
-    ("mpl 2.0", "mpl2", "mpl-2", "mpl2.0", "mozilla public license 2.0"): ("MPL-2.0",),
-    ("epl 2.0", "epl2", "epl-2", "eclipse public license 2.0"): ("EPL-2.0",),
-    ("boost software license", "boost software license 1.0", "boost 1.0"): ("BSL-1.0",),
-}
-_SPDX = {alias: ids for aliases, ids in _ALIASES.items() for alias in aliases}
+
+def _suggestion(text: str) -> str | None:
+    """The SPDX way to write ``text`` when it is another spelling of a known license."""
+    expression = spdx_expression(text)
+    if expression is None:
+        ids = spdx_ids_for(text)
+        if len(ids) != 1 or " ".join(text.lower().split()) in AMBIGUOUS:
+            return None
+        expression = ids[0].replace("-only", "")  # an informal GPLv3 says neither -only nor +
+    tokens = expression.replace("(", " ").replace(")", " ").split()
+    for token in tokens:
+        choices = gnu_choices(token)
+        if choices:
+            return " or ".join(f"`{expression.replace(token, choice)}`" for choice in choices)
+    return f"`{expression}`" if expression != text.strip() else None
 
 
 @rule("MAN019", "non-spdx-license", Severity.INFO, default_enabled=False,
@@ -39,8 +34,11 @@ def non_spdx_license(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Reports license names that unambiguously denote one SPDX license, or an ``-only`` /
-    ``-or-later`` pair (``Apache License 2.0``, ``GPLv3``, ``BSD 3-Clause``), with the
-    identifier to use. Unknown, custom and ambiguous names such as ``BSD`` are left alone.
+    ``-or-later`` pair (``Apache License 2.0``, ``GPLv3``, ``BSD 3-Clause``), SPDX identifiers
+    and expressions in another case (``apache-2.0``, ``mit or apache-2.0``) and deprecated
+    GNU identifiers (``GPL-3.0``, ``LGPL-2.1+``), with what to write. Every SPDX identifier is
+    known (``packaging.licenses``); unknown, custom and ambiguous names such as ``BSD`` are
+    left alone.
     This rule is off by default (many ROS 2 core packages write ``Apache License 2.0``);
     enable it with ``--select MAN019`` or ``extend-select``.
 
@@ -62,8 +60,7 @@ def non_spdx_license(package: Package) -> Iterator[Hit]:
     if found is None:
         return
     for element in found.named("license"):
-        ids = _SPDX.get(re.sub(r"\s+", " ", element.text.strip().lower()))
-        if ids:
-            written = " or ".join(f"`{i}`" for i in ids)
+        suggestion = _suggestion(element.text)
+        if suggestion:
             yield Hit(element.span, f"License `{element.text}` is not an SPDX identifier",
-                      f"Write {written}")
+                      f"Write {suggestion}")

@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.licenses import spdx_ids_for
+from pkgtool.knowledge.licenses import same_license, spdx_ids_for
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
@@ -32,9 +32,11 @@ def license_header_mismatch(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Compares the license of each file header (SPDX line or standard header text) with the
-    `<license>` elements of package.xml, understanding common spellings ("Apache License 2.0",
-    "BSD", "GPLv3"). Compound SPDX expressions are compared as written. Unknown package.xml
-    licenses are not judged. Enabled by `--style`.
+    `<license>` elements of package.xml, understanding every SPDX identifier and expression
+    (`packaging.licenses`; `GPL-3.0-only` and `GPL-3.0-or-later` count as one license) and
+    common spellings ("Apache License 2.0", "BSD", "GPLv3"). A header expression agrees when
+    one of its licenses is declared. Unknown package.xml licenses are not judged. Enabled by
+    `--style`.
 
     ## Why is this bad?
     Packagers (bloom, Debian) and users trust package.xml; a file under other terms is a
@@ -60,7 +62,7 @@ def license_header_mismatch(package: Package) -> Iterator[Hit]:
         if header.license is None or header.license_line is None:
             continue
         found = spdx_ids_for(header.license) or (header.license,)
-        if not set(found) & declared:
+        if not any(same_license(i, d) for i in found for d in declared):
             yield Hit(Span(path, header.license_line, 1),
                       f"`{path}` is licensed `{header.license}` but package.xml declares "
                       f"`{', '.join(sorted(declared))}`")

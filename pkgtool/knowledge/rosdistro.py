@@ -1,0 +1,142 @@
+"""What ros/rosdistro says: released ROS packages, rosdep keys, and which keys provide an import.
+
+Lookups over the generated tables in ``data/`` (see
+:mod:`pkgtool.knowledge.generate_rosdistro`); each table is read on its first use. Every
+function takes the target ``distro`` (one of :data:`DISTROS`, default :data:`DEFAULT_DISTRO`).
+"""
+
+from __future__ import annotations
+
+import difflib
+from functools import cache, lru_cache
+
+from pkgtool.knowledge.tables import DEFAULT_DISTRO, DISTROS, FLAGS, read
+
+__all__ = ["DEFAULT_DISTRO", "DISTROS", "PYTHON_VERSIONS", "alternative_key", "close_names",
+           "is_known_dependency", "is_released_package", "is_rosdep_key", "key_resolves",
+           "keys_for_import", "modules_of_key", "released_packages", "rosdep_keys",
+           "source_commit", "stdlib_modules", "any_stdlib_module", "stdlib_versions"]
+
+PYTHON_VERSIONS = {"humble": "3.10", "jazzy": "3.12", "kilted": "3.12", "rolling": "3.12"}
+"""The Python of each distribution's primary platform (Ubuntu's ``python3``)."""
+
+
+def _check(distro: str) -> str:
+    if distro not in FLAGS:
+        raise ValueError(f"unknown ROS distribution {distro!r}; known: {', '.join(DISTROS)}")
+    return FLAGS[distro]
+
+
+def _flags(table: str) -> dict[str, str]:
+    return read(table).flags
+
+
+@cache
+def released_packages(distro: str = DEFAULT_DISTRO) -> frozenset[str]:
+    """Every ROS package ``distro`` releases."""
+    flag = _check(distro)
+    return frozenset(name for name, flags in _flags("ros_packages").items() if flag in flags)
+
+
+def is_released_package(name: str, distro: str = DEFAULT_DISTRO) -> bool:
+    """True when ``name`` is a ROS package released for ``distro``."""
+    return _check(distro) in _flags("ros_packages").get(name, "")
+
+
+def rosdep_keys() -> frozenset[str]:
+    """Every key of rosdep's base.yaml and python.yaml."""
+    return frozenset(_flags("rosdep_keys"))
+
+
+def is_rosdep_key(name: str) -> bool:
+    """True when ``name`` is a key of rosdep's base.yaml or python.yaml."""
+    return name in _flags("rosdep_keys")
+
+
+def key_resolves(key: str, distro: str = DEFAULT_DISTRO) -> bool:
+    """True when rosdep ``key`` installs something on ``distro``'s Ubuntu release."""
+    return _check(distro) in _flags("rosdep_keys").get(key, "")
+
+
+def is_known_dependency(name: str, distro: str = DEFAULT_DISTRO) -> bool:
+    """True when ``name`` is a ROS package released for ``distro`` or a rosdep key."""
+    return is_released_package(name, distro) or is_rosdep_key(name)
+
+
+@lru_cache(maxsize=4096)
+def keys_for_import(top_level: str, distro: str = DEFAULT_DISTRO) -> tuple[str, ...]:
+    """The rosdep keys that install the top-level module ``top_level``, best first.
+
+    The first key is one that resolves on ``distro`` when any does; empty when rosdep has no
+    key for the module. Module names are matched ignoring case, as Debian's names do.
+    """
+    keys = read("python_imports").values.get(top_level.lower(), "").split()
+    usable = [k for k in keys if key_resolves(k, distro)]
+    return tuple(usable + [k for k in keys if k not in usable])
+
+
+@cache
+def _modules_by_key() -> dict[str, tuple[str, ...]]:
+    found: dict[str, list[str]] = {}
+    for module, keys in read("python_imports").values.items():
+        for key in keys.split():
+            found.setdefault(key, []).append(module)
+    return {key: tuple(modules) for key, modules in found.items()}
+
+
+def modules_of_key(key: str) -> tuple[str, ...]:
+    """The top-level modules (lower case) that rosdep ``key`` installs, as far as known."""
+    return _modules_by_key().get(key, ())
+
+
+def alternative_key(key: str, distro: str = DEFAULT_DISTRO) -> str | None:
+    """Another key installing a module of ``key`` that resolves on ``distro``, if any."""
+    for module in modules_of_key(key):
+        best = keys_for_import(module, distro)
+        if best and best[0] != key and key_resolves(best[0], distro):
+            return best[0]
+    return None
+
+
+def close_names(name: str, distro: str = DEFAULT_DISTRO, *, extra: frozenset[str] = frozenset(),
+                limit: int = 1) -> list[str]:
+    """Released packages, rosdep keys and ``extra`` names spelled like ``name`` (near misses)."""
+    candidates = _candidates(distro) | extra
+    return difflib.get_close_matches(name, candidates, n=limit, cutoff=0.85)
+
+
+@cache
+def _candidates(distro: str) -> frozenset[str]:
+    return released_packages(distro) | rosdep_keys()
+
+
+def source_commit() -> str:
+    """The ros/rosdistro commit the tables were generated from."""
+    return read("ros_packages").source.split()[-1]
+
+
+def _version_flag(version: str) -> str:
+    return format(int(version.split(".")[1]), "x")
+
+
+@cache
+def stdlib_modules(distro: str = DEFAULT_DISTRO) -> frozenset[str]:
+    """Top-level standard library modules of ``distro``'s Python (``data/stdlib.txt``)."""
+    flag = _version_flag(PYTHON_VERSIONS[distro])
+    return frozenset(name for name, flags in _flags("stdlib").items() if flag in flags)
+
+
+STDLIB_VERSIONS = tuple(f"3.{minor}" for minor in range(6, 15))
+"""The Python 3 versions whose standard library ``data/stdlib.txt`` lists."""
+
+
+@cache
+def any_stdlib_module() -> frozenset[str]:
+    """Top-level modules in the standard library of any Python 3 from 3.6 to 3.14."""
+    return frozenset(_flags("stdlib"))
+
+
+def stdlib_versions(module: str) -> tuple[str, ...]:
+    """The Python 3 versions (3.6-3.14) whose standard library has ``module``."""
+    flags = _flags("stdlib").get(module, "")
+    return tuple(v for v in STDLIB_VERSIONS if _version_flag(v) in flags)

@@ -1,0 +1,65 @@
+"""DEP009: a `pkg/msg/Type` in a launch or parameter file that `pkg` does not define."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.interfaces import type_problem
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.dependencies.interface_types import interfaces_for
+from pkgtool.rules.registry import rule
+
+_TYPE = re.compile(r"(?<![\w/.-])([a-z][a-z0-9_]*)/(msg|srv|action)/([A-Za-z]\w*)(?![\w/]|\.\w)")
+
+
+def _files(package: Package) -> Iterator[str]:
+    launch = {f.path for f in package.launch_files}
+    for path in package.texts:
+        if path in launch or (path.endswith((".yaml", ".yml"))
+                              and path.split("/", 1)[0] not in ("test", "tests")):
+            yield path
+
+
+@rule("DEP009", "unknown-interface-type", Severity.ERROR,
+      fix="Write a type the package defines, as `pkg/msg/Name`, `pkg/srv/Name` or "
+          "`pkg/action/Name`")
+def unknown_interface_type(package: Package) -> Iterator[Hit]:
+    """A launch or YAML file names an interface type (`pkg/msg/Name`) that does not exist.
+
+    ## What it does
+    Finds interface types written as `<pkg>/msg|srv|action/<Name>` in launch files (Python,
+    XML, YAML) and YAML files outside `test/` (parameters, bridge configurations) and checks
+    them like DEP008: against the package's own interface folders, the workspace's interface
+    packages and (for a jazzy target) pkgtool's table of the ROS 2 Jazzy interface packages.
+    Unknown packages are not reported.
+
+    ## Why is this bad?
+    Types in strings are only resolved when the launch runs: `ros2 topic pub`, a bridge or a
+    recorder started with a misspelled type fails on the robot ("The passed message type is
+    invalid"), not when the package is built.
+
+    ## Example
+    ```yaml
+    - topic_name: /cmd_vel
+      ros_type_name: geometry_msgs/msg/Twsit
+    ```
+
+    ## Use instead
+    ```yaml
+    - topic_name: /cmd_vel
+      ros_type_name: geometry_msgs/msg/Twist
+    ```
+    """
+    for path in _files(package):
+        text = package.texts[path]
+        for match in _TYPE.finditer(text):
+            name, kind, leaf = match.groups()
+            known = interfaces_for(package, name)
+            problem = type_problem(name, kind, leaf, known) if known is not None else None
+            if problem:
+                line = text.count("\n", 0, match.start()) + 1
+                column = match.start() - (text.rfind("\n", 0, match.start()) + 1) + 1
+                yield Hit(Span(path, line, column), problem)

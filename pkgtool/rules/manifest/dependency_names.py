@@ -1,0 +1,82 @@
+"""What MAN021-MAN023 share: dependency keys that rosdep cannot resolve for the target distro.
+
+A ``*_depend`` key resolves when it is a ROS package released for the target distribution, a
+rosdep key, or a package of the same workspace. Keys that MAN018 already explains (pip and
+ROS 1 names, build types, standard library modules), keys whose REP 149 condition is false
+(or not understood) for the target, and ROS 1 (catkin) manifests are left out.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass
+
+from pkgtool.knowledge import rosdistro
+from pkgtool.knowledge.rosdep import NOT_PACKAGES, ROS1_PACKAGES, suggested_key
+from pkgtool.knowledge.tables import DISTROS
+from pkgtool.model.condition import environment, evaluate
+from pkgtool.model.manifest import Dependency
+from pkgtool.model.memo import per_package
+from pkgtool.model.package import Package
+
+_KEY = re.compile(r"[A-Za-z0-9][A-Za-z0-9._+-]*")
+_NOT_CHECKED = frozenset({"group_depend", "conflict", "replace"})
+
+
+@dataclass(frozen=True, slots=True)
+class Unknown:
+    """A dependency nothing provides: distros that release it, else the nearest known name."""
+
+    dependency: Dependency
+    close: str | None
+    elsewhere: tuple[str, ...]
+
+    def describe(self, distro: str) -> str:
+        """`key` is not ... (the first half of a message)."""
+        text = (f"`{self.dependency.name}` is not a ROS package released for {distro}, a rosdep "
+                "key or a package of this workspace")
+        if self.elsewhere:
+            text += f" (it is released for {', '.join(self.elsewhere)})"
+        return text
+
+
+def checked_dependencies(package: Package) -> list[Dependency]:
+    """The package's dependency keys that apply to the target distribution."""
+    manifest = package.manifest
+    if manifest is None or _is_ros1(package):
+        return []
+    variables = environment(package.context.distro)
+    found = []
+    for dependency in manifest.dependencies:
+        name, condition = dependency.name, dependency.condition
+        if (dependency.tag in _NOT_CHECKED or not _KEY.fullmatch(name or "")
+                or (condition is not None and evaluate(condition, variables) is not True)):
+            continue
+        if name in NOT_PACKAGES or name in ROS1_PACKAGES or suggested_key(name):
+            continue  # MAN018's
+        found.append(dependency)
+    return found
+
+
+def _is_ros1(package: Package) -> bool:
+    manifest = package.manifest
+    build_type = manifest.build_type.value if manifest and manifest.build_type else ""
+    return build_type == "catkin" or bool(manifest and "catkin" in manifest.depends(
+        {"buildtool_depend"}))
+
+
+@per_package
+def unknown_dependencies(package: Package) -> list[Unknown]:
+    """Dependencies of ``package`` that nothing provides for its target distribution."""
+    distro = package.context.distro
+    local = frozenset(package.context.workspace) | {package.name}
+    stdlib = rosdistro.stdlib_modules(distro)
+    found = []
+    for dependency in checked_dependencies(package):
+        name = dependency.name
+        if name in local or rosdistro.is_known_dependency(name, distro) or name in stdlib:
+            continue
+        elsewhere = tuple(d for d in DISTROS if rosdistro.is_released_package(name, d))
+        close = [] if elsewhere else rosdistro.close_names(name, distro, extra=local)
+        found.append(Unknown(dependency, close[0] if close else None, elsewhere))
+    return found

@@ -1,0 +1,47 @@
+"""MAN021: a dependency key that resolves to nothing but is spelled like one that does."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.rules.manifest.dependency_names import unknown_dependencies
+from pkgtool.rules.registry import rule
+
+
+@rule("MAN021", "misspelled-dependency", Severity.ERROR,
+      fix="Write the name of the ROS package or rosdep key you meant")
+def misspelled_dependency(package: Package) -> Iterator[Hit]:
+    """A ``*_depend`` names nothing rosdep knows, and a known name is spelled almost the same.
+
+    ## What it does
+    Checks every dependency key of package.xml against the ROS packages released for the
+    target distribution (``--rosdistro``, or ``rosdistro`` in ``[tool.pkgtool]``; default
+    jazzy), the rosdep keys of rosdep's ``base.yaml`` and ``python.yaml``, and the packages
+    of the same workspace (those linted in the same run, and every package under the ``src``
+    folder of the colcon workspace the package is in). A key that is none of these but is
+    spelled like one of them is reported with that name. Dependencies whose REP 149
+    ``condition`` is false for the target (``$ROS_VERSION == 1``) are skipped, and so are
+    ROS 1 (catkin) manifests. Names with no near miss are MAN022's.
+
+    ## Why is this bad?
+    ``rosdep install`` stops with "Cannot locate rosdep definition", the build farm rejects
+    the release, and colcon orders the build without the intended dependency.
+
+    ## Example
+    ```xml
+    <exec_depend>sensor_msg</exec_depend>
+    ```
+
+    ## Use instead
+    ```xml
+    <exec_depend>sensor_msgs</exec_depend>
+    ```
+    """
+    for unknown in unknown_dependencies(package):
+        if unknown.close:
+            tag = unknown.dependency.tag
+            yield Hit(unknown.dependency.span,
+                      f"{unknown.describe(package.context.distro)}; did you mean "
+                      f"`{unknown.close}`?", f"Write `<{tag}>{unknown.close}</{tag}>`")

@@ -1,0 +1,75 @@
+"""PYC010: a standard library module that the target distribution's Python does not have."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.rosdistro import (PYTHON_VERSIONS, STDLIB_VERSIONS, any_stdlib_module,
+                                         keys_for_import, stdlib_modules, stdlib_versions)
+from pkgtool.model.package import Package
+from pkgtool.rules.imports import all_python
+from pkgtool.rules.registry import rule
+
+_VERSIONS = STDLIB_VERSIONS
+_INSTEAD = {"imp": "`importlib`", "distutils": "`setuptools`, `sysconfig` or `shutil`",
+            "asyncore": "`asyncio`", "asynchat": "`asyncio`", "smtpd": "`aiosmtpd`"}
+"""What replaces a removed module (the "What's New" of the release that removed it)."""
+
+
+def _why(module: str, version: str) -> tuple[str, str]:
+    """The reason and the fix for ``module`` missing from Python ``version``."""
+    history = stdlib_versions(module)
+    target = _VERSIONS.index(version)
+    older = [v for v in history if _VERSIONS.index(v) < target]
+    if not older:
+        return (f"it is new in Python {history[0]}",
+                f"Do without `{module}` (or a backport from PyPI) on this distribution")
+    gone = _VERSIONS[_VERSIONS.index(older[-1]) + 1]
+    return (f"it was removed in Python {gone}",
+            f"Use {_INSTEAD.get(module, 'its replacement')} instead of `{module}`")
+
+
+@rule("PYC010", "stdlib-module-not-on-target", Severity.ERROR,
+      fix="Use a module that the target distribution's Python has")
+def stdlib_module_not_on_target(package: Package) -> Iterator[Hit]:
+    """A standard library module is imported that the target's Python does not have.
+
+    ## What it does
+    Checks unguarded imports of every Python file against the standard library of the
+    target distribution's Python (humble 3.10, jazzy 3.12, kilted and rolling 3.12; set the
+    distribution with `--rosdistro` or `rosdistro` in `[tool.pkgtool]`), not of the Python
+    running pkgtool: a module that some Python 3 has in its standard library but the target's
+    has not, either removed (`imp`, `distutils`, `asyncore` in 3.12) or newer (`tomllib` on
+    humble). Module lists come from a table generated from the stdlib-list package. Imports
+    inside `try/except ImportError` are alternatives and stay silent.
+
+    ## Why is this bad?
+    The node fails with `ModuleNotFoundError` on the robot's Python although it ran on the
+    developer's.
+
+    ## Example
+    ```python
+    import imp  # jazzy: Python 3.12 has no imp
+    ```
+
+    ## Use instead
+    ```python
+    import importlib
+    ```
+    """
+    distro = package.context.distro
+    version = PYTHON_VERSIONS[distro]
+    here = stdlib_modules(distro)
+    known = any_stdlib_module()
+    for module in all_python(package):
+        seen: set[str] = set()
+        for imported in module.imports:
+            top = imported.top_level
+            if (not top or top in seen or imported.guarded or top in here or top not in known
+                    or keys_for_import(top, distro)):
+                continue
+            seen.add(top)
+            why, fix = _why(top, version)
+            yield Hit(imported.span, f"`{top}` is not in the standard library of Python "
+                      f"{version} ({distro}): {why}", fix)
