@@ -137,6 +137,16 @@ def sort_dependencies(values: tuple[str, ...]) -> tuple[set[str], set[str]]:
     return ros, python
 
 
+def node_dependencies(nodes: tuple[NodeSpec, ...]) -> tuple[set[str], set[str]]:
+    """(run-time ROS packages, test keys) that the generated modules and tests of ``nodes`` use."""
+    if not nodes:
+        return set(), set()
+    ros = {"rclpy"} | {n.interface.package for n in nodes if n.interface}
+    tests = {"python3-pytest"} | ({"action_msgs"} if any(n.kind.interface == "action"
+                                                          for n in nodes) else set())
+    return ros, tests
+
+
 def _nodes(request: Request) -> tuple[NodeSpec, ...]:
     specs = [parse_node(text, msg=request.msg, srv=request.srv, action=request.action)
              for text in request.nodes]
@@ -173,10 +183,9 @@ def validate(request: Request) -> Plan:
         raise CreateError("--launch and --config need at least one node: add `--node "
                           "NAME:KIND`.")
     ros, python = sort_dependencies(request.dependencies)
-    ros |= ({"rclpy"} if nodes else set()) | {n.interface.package for n in nodes if n.interface}
-    tests = {"ament_copyright", "ament_flake8", "ament_pep257", "python3-pytest"}
-    if any(n.kind.interface == "action" for n in nodes):
-        tests.add("action_msgs")
+    node_ros, node_tests = node_dependencies(nodes)
+    ros |= node_ros
+    tests = {"ament_copyright", "ament_flake8", "ament_pep257", "python3-pytest"} | node_tests
     execs = python | ({"launch", "launch_ros"} if request.launch else set())
     description = request.description or f"The {name} ROS 2 Python package."
     return Plan(

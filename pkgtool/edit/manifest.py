@@ -14,7 +14,7 @@ from bisect import bisect_right
 from pkgtool.create.pysource import xml_text
 from pkgtool.edit.core import Edit, EditError
 from pkgtool.edit.source import Source
-from pkgtool.edit.xml_scan import Element, scan, unescape
+from pkgtool.edit.xml_scan import Element, insert_after, insert_before, scan, unescape
 from pkgtool.rules.manifest.schema import slot_index
 
 DEPEND_ORDER = ("buildtool_depend", "buildtool_export_depend", "build_depend",
@@ -73,39 +73,27 @@ class ManifestDoc:
         if names == sorted(names):
             index = bisect_right(names, text.lower())
         if index == 0:
-            first = same[0]
-            indent = self.source.indent_at(first.start) or ""
-            return Edit(self.source.path, first.start, first.start,
-                        element + self.source.newline + indent)
-        return self._after(same[index - 1], element, blank=False)
+            return insert_before(self.source, same[0], element)
+        return insert_after(self.source, same[index - 1], element)
 
     def _new_group(self, tag: str, element: str) -> Edit:
         rank = _rank(tag, self.format)
         before = [c for c in self.children if _rank(c.local, self.format) <= rank]
         if before:
             anchor = before[-1]
-            return self._after(anchor, element, blank=self._blank_after(anchor))
+            return insert_after(self.source, anchor, element, blank=self._blank_after(anchor))
         first = self.children[0] if self.children else None
         if first is None:
             at = self.root.inner_start
             return Edit(self.source.path, at, at, self.source.newline + "  " + element +
                         self.source.newline)
-        indent = self.source.indent_at(first.start) or ""
-        return Edit(self.source.path, first.start, first.start,
-                    element + self.source.newline + indent)
-
-    def _after(self, anchor: Element, element: str, *, blank: bool) -> Edit:
-        """Insert on a new line after ``anchor`` (and what follows it on its line)."""
-        at = _line_tail(self.source, anchor.end)
-        indent = self.source.indent_at(anchor.start) or ""
-        newline = self.source.newline
-        return Edit(self.source.path, at, at, newline * (2 if blank else 1) + indent + element)
+        return insert_before(self.source, first, element)
 
     def _blank_after(self, anchor: Element) -> bool:
         """True when a blank line follows ``anchor`` before the next element or the end."""
         following = [c.start for c in self.children if c.start > anchor.start]
         stop = following[0] if following else self.root.inner_end
-        gap = self.source.text[_line_tail(self.source, anchor.end):stop]
+        gap = self.source.text[insert_after(self.source, anchor, "").start:stop]
         return any(not line.strip() for line in re.split(r"\r\n|\r|\n", gap)[1:-1])
 
     # Removing ----------------------------------------------------------------------------
@@ -142,11 +130,3 @@ def _rank(tag: str, fmt: int) -> tuple[int, int]:
     order = DEPEND_ORDER.index(tag) if tag in DEPEND_ORDER else 0
     return (slot if slot is not None else -1, order)
 
-
-def _line_tail(source: Source, end: int) -> int:
-    """Where a new line after an element goes: after any comment that shares its line."""
-    line_end = source.line_end(end)
-    rest = source.text[end:line_end].strip()
-    while rest.startswith("<!--") and "-->" in rest:
-        rest = rest[rest.index("-->") + 3:].strip()
-    return line_end if not rest else end

@@ -91,6 +91,14 @@ class PyDoc:
             return self._inline(container, open_at, close_at, items, item, comma)
         return self._on_new_line(open_at, items, item, last_end, comma)
 
+    def item_indent(self, container: ast.AST, items: Sequence[tuple[int, int]]) -> str:
+        """The indentation a new item of a multi-line ``container`` gets."""
+        indent = self.source.indent_at(items[-1][0]) if items else None
+        if indent is None:
+            opening = self.source.line_start(self.start(container))
+            indent = _leading(self.text, opening) + self.indent_unit()
+        return indent
+
     def _into_empty(self, open_at: int, close_at: int, item: str) -> list[Edit]:
         inner = self.text[open_at + 1:close_at]
         path = self.source.path
@@ -160,35 +168,42 @@ class PyDoc:
                     return True
         return False
 
-    def add_import(self, module: str, name: str | None = None) -> list[Edit]:
-        """Edits adding ``import module`` or ``from module import name`` in google order."""
-        if self.has_import(module, name):
-            return []
-        line = f"import {module}" if name is None else f"from {module} import {name}"
-        key = (_group(module), module.lower())
+    def add_imports(self, wanted: Sequence[tuple[str, str | None]]) -> list[Edit]:
+        """Edits adding each ``(module, name)`` import that is missing, in google order.
+
+        ``(module, None)`` is ``import module``; imports that land on one spot share one edit.
+        """
+        sites: dict[tuple[int, str, str], list[tuple[tuple[int, str], str]]] = {}
+        for module, name in dict.fromkeys(wanted):
+            if self.has_import(module, name):
+                continue
+            line = f"import {module}" if name is None else f"from {module} import {name}"
+            key = (_group(module), module.lower())
+            sites.setdefault(self._import_site(key), []).append((key, line))
+        return [Edit(self.source.path, at, at,
+                     lead + self.source.newline.join(line for _, line in sorted(lines)) + trail)
+                for (at, lead, trail), lines in sites.items()]
+
+    def _import_site(self, key: tuple[int, str]) -> tuple[int, str, str]:
+        """Where an import with sort ``key`` goes: (offset, text before it, text after it)."""
         imports = _import_block(self.tree.body)
         newline = self.source.newline
-        path = self.source.path
         same = [n for n in imports if _key(n)[0] == key[0]]
         if same:
             later = [n for n in same if _key(n) > key]
             if later:
-                at = self.source.line_start(self.start(later[0]))
-                return [Edit(path, at, at, line + newline)]
-            at = self.source.line_end(self.end(same[-1]))
-            return [Edit(path, at, at, newline + line)]
+                return self.source.line_start(self.start(later[0])), "", newline
+            return self.source.line_end(self.end(same[-1])), newline, ""
         if imports:
             if key[0] < _key(imports[0])[0]:
-                at = self.source.line_start(self.start(imports[0]))
-                return [Edit(path, at, at, line + newline + newline)]
-            at = self.source.line_end(self.end(imports[-1]))
-            return [Edit(path, at, at, newline + newline + line)]
+                return self.source.line_start(self.start(imports[0])), "", newline * 2
+            return self.source.line_end(self.end(imports[-1])), newline * 2, ""
         body = self.tree.body
         if body and _is_docstring(body[0]):
-            at = self.source.line_end(self.end(body[0]))
-            return [Edit(path, at, at, newline + newline + line)]
-        at = self.source.line_start(self.start(body[0])) if body else len(self.text)
-        return [Edit(path, at, at, line + newline + (newline if body else ""))]
+            return self.source.line_end(self.end(body[0])), newline * 2, ""
+        if body:
+            return self.source.line_start(self.start(body[0])), "", newline * 2
+        return len(self.text), "", newline
 
 
 def _leading(text: str, line_start: int) -> str:

@@ -10,6 +10,9 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field
 
+from pkgtool.edit.core import Edit
+from pkgtool.edit.source import Source
+
 _MARKUP = re.compile(
     r"<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|<!DOCTYPE[^>]*>"
     r"|</(?P<close>[^\s>]+)\s*>"
@@ -61,6 +64,27 @@ def scan(text: str) -> Element | None:
             element = stack.pop()
             element.inner_end, element.end = match.start(), match.end()
     return root if root is not None and not stack and root.end >= 0 else None
+
+
+def insert_after(source: Source, anchor: Element, element: str, *, blank: bool = False
+                 ) -> Edit:
+    """An edit putting ``element`` on a new line after ``anchor``, indented like it.
+
+    A comment sharing the anchor's line stays with the anchor.
+    """
+    line_end = source.line_end(anchor.end)
+    rest = source.text[anchor.end:line_end].strip()
+    while rest.startswith("<!--") and "-->" in rest:
+        rest = rest[rest.index("-->") + 3:].strip()
+    at = line_end if not rest else anchor.end
+    indent = source.indent_at(anchor.start) or ""
+    return Edit(source.path, at, at, source.newline * (2 if blank else 1) + indent + element)
+
+
+def insert_before(source: Source, anchor: Element, element: str) -> Edit:
+    """An edit putting ``element`` on its own line just before ``anchor``, indented like it."""
+    indent = source.indent_at(anchor.start) or ""
+    return Edit(source.path, anchor.start, anchor.start, element + source.newline + indent)
 
 
 def _attributes(text: str) -> dict[str, str]:
