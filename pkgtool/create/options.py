@@ -137,6 +137,15 @@ def sort_dependencies(values: tuple[str, ...]) -> tuple[set[str], set[str]]:
     return ros, python
 
 
+def check_node_name(name: str) -> str:
+    """``name`` if a node (module, executable and test file) may be called so, else CreateError."""
+    check_name(name, "node name")
+    if name in _TEST_FILES:
+        raise CreateError(f"Invalid node name `{name}`: it is taken by a generated test file "
+                          "(conftest.py or an ament linter test). Rename it.")
+    return name
+
+
 def node_dependencies(nodes: tuple[NodeSpec, ...]) -> tuple[set[str], set[str]]:
     """(run-time ROS packages, test keys) that the generated modules and tests of ``nodes`` use."""
     if not nodes:
@@ -154,10 +163,7 @@ def _nodes(request: Request) -> tuple[NodeSpec, ...]:
         specs.insert(0, parse_node(f"{request.node_name}:timer"))
     seen: set[str] = set()
     for spec in specs:
-        check_name(spec.name, "node name")
-        if spec.name in _TEST_FILES:
-            raise CreateError(f"Invalid node name `{spec.name}`: it is taken by a generated "
-                              "test file (conftest.py or an ament linter test). Rename it.")
+        check_node_name(spec.name)
         if spec.name in seen or spec.name == request.library_name:
             raise CreateError(f"Node name `{spec.name}` is used twice: give each node and the "
                               "library its own name.")

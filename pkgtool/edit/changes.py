@@ -127,6 +127,9 @@ class Session:
 
     def apply(self, edits: Iterable[Edit]) -> None:
         """Apply ``edits`` (against the current texts) in memory."""
+        edits = list(edits)
+        for edit in edits:
+            self.source(edit.path)
         for path, change in ((c.path, c) for c in compute(self.root, edits, self.current).files):
             base = self.original.get(path)
             template = base if base is not None else Source(path, "")

@@ -113,11 +113,19 @@ def _yaml(source: Source, package: str, executable: str) -> list[Edit]:
     dash = source.text.rfind("-", 0, last.start_mark.index)
     column = dash - source.line_start(dash)
     step = last.start_mark.column - column
-    end = last.end_mark.index
-    while end > 0 and source.text[end - 1] in " \t\r\n":
-        end -= 1
+    end = _last_scalar(last).end_mark.index
     pad, inner = " " * column, " " * (column + step * 2)
     lines = [f"{pad}- node:", f"{inner}pkg: {package}", f"{inner}exec: {executable}",
              f"{inner}name: {executable}"]
     newline = source.newline
     return [Edit(source.path, end, end, newline + newline.join(lines))]
+
+
+def _last_scalar(node: object) -> object:
+    """The last scalar inside ``node``: its end mark is exact (a collection's runs on)."""
+    import yaml
+
+    while isinstance(node, (yaml.MappingNode, yaml.SequenceNode)) and node.value:
+        last = node.value[-1]
+        node = last[1] if isinstance(node, yaml.MappingNode) else last
+    return node

@@ -8,7 +8,7 @@ from pkgtool.edit.core import Edit, EditError
 from pkgtool.edit.source import Source
 
 _SECTION = re.compile(r"^\[(?P<name>[^\]]+)\]\s*(?:[#;].*)?$")
-_OPTION = re.compile(r"^(?P<key>[^\s=:#;][^=:]*?)\s*(?P<sep>\s*[=:]\s*)(?P<value>.*?)\s*$")
+_OPTION = re.compile(r"^(?P<key>[^\s=:#;][^=:]*?)(?P<sep>\s*[=:]\s*)(?P<value>.*?)\s*$")
 
 
 def _lines(source: Source) -> list[tuple[int, str]]:

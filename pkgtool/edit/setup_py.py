@@ -79,6 +79,15 @@ class SetupDoc:
         listed = self._literal(scripts, "the console scripts")
         return self._into_sequence(listed, self.doc.string(spec))
 
+    def console_scripts(self) -> list[tuple[str, str]]:
+        """(name, module) of each console script, as far as setup.py evaluates."""
+        value = self.call.values.get("entry_points")
+        try:
+            found = entry_points(value, self.call.spans["entry_points"]) if value else ()
+        except Malformed:
+            return []
+        return [(e.name, e.module) for e in found if e.group == "console_scripts" and e.valid]
+
     # data_files --------------------------------------------------------------------------
 
     def installs(self, destination: str, path: str) -> bool:

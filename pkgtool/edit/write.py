@@ -65,16 +65,21 @@ def write_all(root: Path, writes: Sequence[Write]) -> None:
     except BaseException:
         for item in reversed(staged):
             _undo(item)
+        _clean(staged)
         for folder in reversed(made):
             with contextlib.suppress(OSError):
                 folder.rmdir()
         raise
-    finally:
-        for item in staged:
-            for leftover in (item.temporary, item.backup):
-                if leftover is not None:
-                    with contextlib.suppress(OSError):
-                        leftover.unlink()
+    _clean(staged)
+
+
+def _clean(staged: list[_Staged]) -> None:
+    """Remove the temporary files and backups that are left."""
+    for item in staged:
+        for leftover in (item.temporary, item.backup):
+            if leftover is not None:
+                with contextlib.suppress(OSError):
+                    leftover.unlink()
 
 
 def _make_parents(root: Path, folder: Path) -> list[Path]:
