@@ -1,4 +1,4 @@
-"""``pkgtool add node|launch|config|dependency``: thin adapters over :mod:`pkgtool.commands.add`."""
+"""``pkgtool add node|launch|config|dependency``: adapters over :mod:`pkgtool.commands.add`."""
 
 from __future__ import annotations
 

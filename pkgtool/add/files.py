@@ -85,8 +85,10 @@ def node_parameters(target: Target, script: str) -> tuple[tuple[str, object], ..
         return ()
     found: dict[str, object] = {}
     for node in ast.walk(tree):
-        if isinstance(node, ast.Call) and getattr(node.func, "attr", "") == "declare_parameter" \
-                and len(node.args) >= 2 and all(isinstance(a, ast.Constant) for a in node.args[:2]):
+        if not (isinstance(node, ast.Call) and len(node.args) >= 2
+                and getattr(node.func, "attr", "") == "declare_parameter"):
+            continue
+        if all(isinstance(a, ast.Constant) for a in node.args[:2]):
             key, value = node.args[0].value, node.args[1].value  # type: ignore[attr-defined]
             if isinstance(key, str) and isinstance(value, _SCALARS):
                 found.setdefault(key, value)

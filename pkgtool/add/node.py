@@ -67,7 +67,8 @@ def pick_launch_file(target: Target) -> str | None:
     if len(paths) <= 1:
         return paths[0] if paths else None
     for path in paths:
-        if path.rsplit("/", 1)[-1].startswith((f"{target.name}.launch.", f"{target.name}_launch.")):
+        name = path.rsplit("/", 1)[-1]
+        if name.startswith((f"{target.name}.launch.", f"{target.name}_launch.")):
             return path
     target.notes.append(f"Not added to a launch file: the package has {len(paths)} "
                         "(give one with --launch-file).")

@@ -48,8 +48,9 @@ def _run(path: Path, operation: Callable[..., object], *, dry_run: bool) -> AddR
                          "and free space.")
     created = tuple(c.path for c in changes.files if c.before is None)
     edited = tuple(c.path for c in changes.files if c.before is not None)
-    return AddResult(ExitCode.OK, path, created, edited, changes.diff("" if path == Path(".") else str(path)),
-                     tuple(target.notes), dry_run)
+    label = "" if path == Path(".") else str(path)
+    return AddResult(ExitCode.OK, path, created, edited, changes.diff(label), tuple(target.notes),
+                     dry_run)
 
 
 def node(path: Path, spec: str, *, dry_run: bool = False, year: int | None = None,

@@ -151,8 +151,8 @@ def node_dependencies(nodes: tuple[NodeSpec, ...]) -> tuple[set[str], set[str]]:
     if not nodes:
         return set(), set()
     ros = {"rclpy"} | {n.interface.package for n in nodes if n.interface}
-    tests = {"python3-pytest"} | ({"action_msgs"} if any(n.kind.interface == "action"
-                                                          for n in nodes) else set())
+    actions = any(n.kind.interface == "action" for n in nodes)
+    tests = {"python3-pytest"} | ({"action_msgs"} if actions else set())
     return ros, tests
 
 

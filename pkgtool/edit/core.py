@@ -11,7 +11,7 @@ from dataclasses import dataclass
 
 
 class EditError(Exception):
-    """An edit pkgtool refuses to make; the message is a full sentence saying why and what to do."""
+    """An edit pkgtool refuses to make; the message says why and what to do instead."""
 
 
 @dataclass(frozen=True, slots=True, order=True)

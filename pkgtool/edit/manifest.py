@@ -20,7 +20,7 @@ from pkgtool.rules.manifest.schema import slot_index
 DEPEND_ORDER = ("buildtool_depend", "buildtool_export_depend", "build_depend",
                 "build_export_depend", "depend", "exec_depend", "run_depend", "test_depend",
                 "doc_depend", "conflict", "replace")
-"""The order ``ros2 pkg create`` and catkin write the dependency tags in (the schema allows any)."""
+"""The order ``ros2 pkg create`` and catkin write dependency tags in (the schema allows any)."""
 
 
 class ManifestDoc:
@@ -129,4 +129,3 @@ def _rank(tag: str, fmt: int) -> tuple[int, int]:
     slot = slot_index(tag, fmt)
     order = DEPEND_ORDER.index(tag) if tag in DEPEND_ORDER else 0
     return (slot if slot is not None else -1, order)
-

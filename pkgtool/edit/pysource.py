@@ -36,11 +36,13 @@ class PyDoc:
 
     def start(self, node: ast.AST) -> int:
         """Offset of the first character of ``node``."""
-        return self.source.offset_of_utf8(node.lineno, node.col_offset)  # type: ignore[attr-defined]
+        line, column = node.lineno, node.col_offset  # type: ignore[attr-defined]
+        return self.source.offset_of_utf8(line, column)
 
     def end(self, node: ast.AST) -> int:
         """Offset just past ``node``."""
-        return self.source.offset_of_utf8(node.end_lineno, node.end_col_offset)  # type: ignore[attr-defined]
+        line, column = node.end_lineno, node.end_col_offset  # type: ignore[attr-defined]
+        return self.source.offset_of_utf8(line, column)
 
     def segment(self, node: ast.AST) -> str:
         """The source text of ``node``."""
@@ -133,7 +135,8 @@ class PyDoc:
         inner = _leading(self.text, line_start) + self.indent_unit()
         pieces = [self.text[s:e] for s, e in items] + [item]
         body = "".join(newline + inner + piece + "," for piece in pieces)
-        return [Edit(path, open_at + 1, close_at, body + newline + _leading(self.text, line_start))]
+        closing = newline + _leading(self.text, line_start)
+        return [Edit(path, open_at + 1, close_at, body + closing)]
 
     def _on_new_line(self, open_at: int, items: Sequence[tuple[int, int]], item: str,
                      last_end: int, comma: int | None) -> list[Edit]:
@@ -153,7 +156,8 @@ class PyDoc:
 
     def _line_with(self, open_at: int, close_at: int, item: str) -> str:
         start = self.source.line_start(open_at)
-        return self.text[start:open_at + 1] + item + self.text[close_at:self.source.line_end(close_at)]
+        end = self.source.line_end(close_at)
+        return self.text[start:open_at + 1] + item + self.text[close_at:end]
 
     # Imports -----------------------------------------------------------------------------
 

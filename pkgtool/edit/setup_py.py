@@ -40,7 +40,8 @@ class SetupDoc:
         self.nodes: dict[tuple[int, int], list[ast.AST]] = {}
         for node in ast.walk(self.doc.tree):
             if hasattr(node, "col_offset"):
-                self.nodes.setdefault((node.lineno, node.col_offset + 1), []).append(node)  # type: ignore[attr-defined]
+                where = (node.lineno, node.col_offset + 1)  # type: ignore[attr-defined]
+                self.nodes.setdefault(where, []).append(node)
         span = self.call.span
         self.node = next((n for n in self.nodes.get((span.line, span.col), [])
                           if isinstance(n, ast.Call)), None)
@@ -203,4 +204,5 @@ def _at(node: ast.AST, item: object) -> bool:
     span = getattr(item, "span", None)
     if not isinstance(node, _LITERALS) or span is None:
         return True
-    return (span.line, span.col) == (node.lineno, node.col_offset + 1)  # type: ignore[attr-defined]
+    where = (node.lineno, node.col_offset + 1)  # type: ignore[attr-defined]
+    return (span.line, span.col) == where

@@ -91,7 +91,8 @@ def _make_parents(root: Path, folder: Path) -> list[Path]:
 
 def _temporary(target: Path, write: Write) -> Path:
     """A temporary file beside ``target`` holding the new data, mode and owner set."""
-    handle, name = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".pkgtool", dir=target.parent)
+    handle, name = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".pkgtool",
+                                    dir=target.parent)
     temporary = Path(name)
     try:
         with os.fdopen(handle, "wb") as out:

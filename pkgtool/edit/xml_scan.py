@@ -16,14 +16,15 @@ from pkgtool.edit.source import Source
 _MARKUP = re.compile(
     r"<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|<!DOCTYPE[^>]*>"
     r"|</(?P<close>[^\s>]+)\s*>"
-    r"|<(?P<open>[^\s/>!?]+)(?P<attrs>(?:\s+[^\s=/>]+\s*=\s*(?:\"[^\"]*\"|'[^']*'))*)\s*(?P<empty>/?)>",
+    r"|<(?P<open>[^\s/>!?]+)"
+    r"(?P<attrs>(?:\s+[^\s=/>]+\s*=\s*(?:\"[^\"]*\"|'[^']*'))*)\s*(?P<empty>/?)>",
     re.S)
 _ATTRIBUTE = re.compile(r"([^\s=/>]+)\s*=\s*(?:\"([^\"]*)\"|'([^']*)')")
 
 
 @dataclass
 class Element:
-    """One element: ``start``..``end`` spans it whole, ``inner_start``..``inner_end`` its content."""
+    """An element: ``start``..``end`` is all of it, ``inner_start``..``inner_end`` its content."""
 
     tag: str
     start: int
@@ -97,4 +98,3 @@ def unescape(text: str) -> str:
     import html
 
     return html.unescape(text)
-

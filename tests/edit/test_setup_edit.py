@@ -80,7 +80,8 @@ def test_a_line_that_would_get_too_long_is_split_one_item_per_line() -> None:
 
 
 def test_crlf_and_a_bom_free_utf8_file_keep_their_line_breaks() -> None:
-    before = "# é\r\nfrom setuptools import setup\r\nsetup(entry_points={'console_scripts': [\r\n    'a = demo.a:main',\r\n]})\r\n"
+    before = ("# é\r\nfrom setuptools import setup\r\nsetup(entry_points={'console_scripts': "
+              "[\r\n    'a = demo.a:main',\r\n]})\r\n")
     result = apply_edits(before, SetupDoc(Source("setup.py", before), FILES).add_console_script(
         "b", "demo.b:main"))
     assert result == before.replace("main',\r\n", "main',\r\n    'b = demo.b:main',\r\n")
