@@ -12,9 +12,9 @@ from pkgtool.commands import ExitCode
 add_app = typer.Typer(
     name="add", no_args_is_help=True, rich_markup_mode=None,
     help="Add a node, launch file, parameter file or dependency to an existing package. "
-    "Existing files are edited in place (every other byte kept) and never replaced.")
+    "Existing files are edited in place, every other byte kept; no file is overwritten.")
 
-_PATH = Annotated[Path, typer.Argument(help="The package folder.", show_default=True)]
+_PATH = Annotated[Path, typer.Argument(help="The package folder.", metavar="PATH")]
 _DRY = Annotated[bool, typer.Option("--dry-run", help="Print the changes as a unified diff; "
                                     "write nothing.")]
 
