@@ -41,6 +41,8 @@ def declare(target: Target, *, ros: Iterable[str] = (), exec_only: Iterable[str]
 
 def _declare(target: Target, name: str, covered_by: tuple[str, ...], *, ros: bool,
              test: bool = False) -> None:
+    if name == target.name:
+        raise EditError(f"`{name}` is this package itself: a package does not depend on itself.")
     source = target.session.source("package.xml")
     assert source is not None
     doc = ManifestDoc(source)

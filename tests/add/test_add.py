@@ -107,6 +107,7 @@ def test_add_dependency_maps_modules_to_rosdep_keys(package: Path) -> None:
     (["node", "conftest:timer"], "taken by a generated test file"),
     (["dependency", "os"], "standard library"),
     (["dependency", "opencv-python"], "python3-opencv"),
+    (["dependency", "grow"], "this package itself"),
     (["launch", "--name", "bringup.py"], "does not end in"),
 ])
 def test_clear_refusals_change_nothing(package: Path, args: list[str], message: str) -> None:
