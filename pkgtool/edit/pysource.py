@@ -85,6 +85,10 @@ class PyDoc:
         """
         open_at = self.start(container) if opening is None else opening
         close_at = self.end(container) - 1
+        if self.text[open_at] not in "([{" or self.text[close_at] not in ")]}":
+            line = getattr(container, "lineno", 0)
+            raise EditError(f"`{self.source.path}` line {line} has a container without "
+                            "brackets: pkgtool does not extend it. Edit it by hand.")
         if not items:
             return self._into_empty(open_at, close_at, item)
         last_end = items[-1][1]
@@ -129,7 +133,9 @@ class PyDoc:
         line_start = self.source.line_start(open_at)
         new_line = (self.text[line_start:at] + addition +
                     self.text[at:self.source.line_end(close_at)])
-        if len(new_line) <= MAX_LINE or "\n" in self.text[open_at:close_at]:
+        multi_line_item = "\n" in item or "\r" in item
+        if not multi_line_item and (len(new_line) <= MAX_LINE or
+                                    "\n" in self.text[open_at:close_at]):
             return [Edit(path, at, at, addition)]
         newline = self.source.newline
         inner = _leading(self.text, line_start) + self.indent_unit()

@@ -98,3 +98,13 @@ def test_setup_cfg_options_are_set_and_removed_in_place() -> None:
     assert removed == "[develop]\r\nscript-dir = $base/lib/demo  \r\n; note\r\n[install]\r\n"
     assert setup_cfg.set_option(Source("setup.cfg", fixed), "develop", "script_dir",
                                 "$base/lib/demo") == []
+
+
+def test_an_inline_launch_list_is_split_for_the_multi_line_node() -> None:
+    text = ("from launch import LaunchDescription\nfrom launch_ros.actions import Node\n\n\n"
+            "def generate_launch_description():\n"
+            "    return LaunchDescription([Node(package='demo', executable='talker')])\n")
+    assert _add("a.launch.py", text).endswith(
+        "    return LaunchDescription([\n        Node(package='demo', executable='talker'),\n"
+        "        Node(\n            package='demo',\n            executable='listener',\n"
+        "            name='listener',\n        ),\n    ])\n")

@@ -157,3 +157,18 @@ def test_data_files_already_installed_by_another_pattern_change_nothing() -> Non
 def test_a_setup_py_without_setup_call_is_refused() -> None:
     with pytest.raises(EditError, match="no `setup"):
         SetupDoc(Source("setup.py", "print('hi')\n"), FILES)
+
+
+def test_an_item_too_long_for_the_line_splits_an_inline_list() -> None:
+    text = IMPORT + "setup(data_files=[('share/demo', ['package.xml'])])\n"
+    result = apply_edits(text, SetupDoc(Source("setup.py", text), FILES).add_data_files(
+        "launch", "launch/*.launch.py", "demo"))
+    assert result.endswith("setup(data_files=[\n    ('share/demo', ['package.xml']),\n"
+                           "    (os.path.join('share', 'demo', 'launch'), "
+                           "glob('launch/*.launch.py')),\n])\n")
+
+
+def test_a_tuple_without_brackets_is_refused() -> None:
+    text = IMPORT + "scripts = 'a = demo.a:main',\nsetup(entry_points={'console_scripts': scripts})\n"
+    with pytest.raises(EditError, match="without brackets"):
+        SetupDoc(Source("setup.py", text), FILES).add_console_script("b", "demo.b:main")
