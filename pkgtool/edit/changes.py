@@ -11,7 +11,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 from pathlib import Path
 
-from pkgtool.edit.core import Edit, EditError, apply_edits
+from pkgtool.edit.core import Edit, EditError, Fix, apply_edits, select_fixes
 from pkgtool.edit.source import Source
 from pkgtool.edit.write import Write, inside, write_all
 
@@ -105,6 +105,18 @@ def _change(path: str, source: Source | None, edits: list[Edit]) -> FileChange |
         raise EditError(f"pkgtool's edit of `{path}` would not parse; nothing was written. "
                         "Please report this as a pkgtool bug.")
     return FileChange(path, source.text, after, source.encode(after))
+
+
+def fix_changes(root: Path, fixes: Iterable[Fix], *, unsafe: bool = False
+                ) -> tuple[Changes, list[Fix], list[Fix]]:
+    """(changes, applied, deferred) for ``fixes``: safe ones only unless ``unsafe``.
+
+    A fix that overlaps one applied before it is deferred: apply the changes, re-read the
+    package and ask the rules again, as ``lint --fix`` loops until nothing changes.
+    """
+    wanted = [fix for fix in fixes if fix.safe or unsafe]
+    applied, deferred = select_fixes(wanted)
+    return compute(root, [e for fix in applied for e in fix.edits]), applied, deferred
 
 
 class Session:

@@ -152,3 +152,19 @@ def test_write_all_refuses_a_folder_in_the_way(tmp_path: Path) -> None:
     (root / "folder").mkdir()
     with pytest.raises(EditError, match="folder"):
         write_all(root, [Write("folder", b"x", create=True)])
+
+
+def test_fix_changes_apply_safe_fixes_and_defer_overlaps(tmp_path: Path) -> None:
+    from pkgtool.edit import Fix
+    from pkgtool.edit.changes import fix_changes
+
+    root = _package(tmp_path)
+    first = Fix("comment", (Edit("package.xml", 0, 0, "<!-- a -->\n"),))
+    clash = Fix("other comment", (Edit("package.xml", 0, 0, "<!-- b -->\n"),))
+    risky = Fix("drop x", (Edit("setup.py", 0, 5, "x = 2"),), safe=False)
+    changes, applied, deferred = fix_changes(root, [first, clash, risky])
+    assert (applied, deferred) == ([first], [clash])
+    assert changes.paths == ("package.xml",)
+    changes, applied, _ = fix_changes(root, [risky], unsafe=True)
+    changes.write()
+    assert (root / "setup.py").read_bytes() == b"\xef\xbb\xbfx = 2\r\n"
