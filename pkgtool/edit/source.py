@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import codecs
 import re
+from bisect import bisect_right
 from dataclasses import dataclass
 from functools import cached_property
 
@@ -64,10 +65,6 @@ class Source:
         """Offset of the first character of each line (index 0 is line 1)."""
         return [0] + [m.end() for m in _LINE_BREAK.finditer(self.text)]
 
-    def offset(self, line: int, column: int = 0) -> int:
-        """Character offset of 1-based ``line`` and 0-based character ``column``."""
-        return self.line_starts[line - 1] + column
-
     def offset_of_utf8(self, line: int, byte_column: int) -> int:
         """Character offset of ``ast``'s position (1-based line, column in UTF-8 bytes)."""
         start = self.line_starts[line - 1]
@@ -82,15 +79,7 @@ class Source:
 
     def line_start(self, offset: int) -> int:
         """Offset of the first character of the line that holds ``offset``."""
-        starts = self.line_starts
-        low, high = 0, len(starts) - 1
-        while low < high:
-            middle = (low + high + 1) // 2
-            if starts[middle] <= offset:
-                low = middle
-            else:
-                high = middle - 1
-        return starts[low]
+        return self.line_starts[bisect_right(self.line_starts, offset) - 1]
 
     def indent_at(self, offset: int) -> str | None:
         """The whitespace before ``offset`` on its line, or None if other text precedes it."""
