@@ -89,7 +89,8 @@ def insert_before(source: Source, anchor: Element, element: str) -> Edit:
 
 
 def _attributes(text: str) -> dict[str, str]:
-    return {m.group(1): m.group(2) if m.group(2) is not None else m.group(3)
+    """Attribute values by name, entities resolved."""
+    return {m.group(1): unescape(m.group(2) if m.group(2) is not None else m.group(3))
             for m in _ATTRIBUTE.finditer(text or "")}
 
 

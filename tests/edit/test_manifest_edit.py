@@ -63,8 +63,11 @@ def test_tabs_crlf_attributes_and_a_trailing_comment_are_kept() -> None:
 
 
 def test_adding_what_is_there_changes_nothing() -> None:
-    text = HEAD + "  <exec_depend>\n    rclpy\n  </exec_depend>\n</package>\n"
-    assert ManifestDoc(Source("package.xml", text)).add("exec_depend", "rclpy") == []
+    text = HEAD + ("  <exec_depend>\n    rclpy\n  </exec_depend>\n"
+                   "  <depend condition='$X &gt;= 2'>a&amp;b</depend>\n</package>\n")
+    doc = ManifestDoc(Source("package.xml", text))
+    assert doc.add("exec_depend", "rclpy") == []
+    assert doc.add("depend", "a&b", {"condition": "$X >= 2"}) == []
 
 
 def test_format_one_and_unknown_tags() -> None:
