@@ -4,7 +4,8 @@ Not a test and not run in CI: libcst is not a pkgtool dependency (this measureme
 Run it with libcst importable, e.g. from a scratch virtual environment:
 
     python3 -m venv /tmp/cstvenv && /tmp/cstvenv/bin/pip install libcst==1.9.0
-    PKGTOOL_LIBCST=/tmp/cstvenv/lib/python3.11/site-packages .venv/bin/python bench/edit_vs_libcst.py
+    export PKGTOOL_LIBCST=/tmp/cstvenv/lib/python3.11/site-packages
+    .venv/bin/python bench/edit_vs_libcst.py
 
 Both editors add a console script to the list literal that pkgtool's static evaluator located,
 on the setup.py files of the property tests (random quotes, layout, comments, CRLF). For each

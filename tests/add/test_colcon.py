@@ -43,8 +43,8 @@ def _grow(src: Path) -> tuple[Path, Path]:
     return grown, forced
 
 
-def test_grown_packages_build_install_and_pass_colcon_test(tmp_path: Path,
-                                                          ros_domain: int) -> None:
+def test_grown_packages_build_install_and_pass_colcon_test(
+        tmp_path: Path, ros_domain: int) -> None:
     grown, forced = _grow(tmp_path / "src")
     for package in (grown, forced):
         assert [f for f in strict_findings(package) if not f.startswith("DEP006")] == []

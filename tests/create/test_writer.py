@@ -60,8 +60,8 @@ def test_force_adds_missing_files_and_keeps_the_user_s(create, tmp_path: Path) -
     assert (root / "demo_pkg" / "beat.py").is_file()
 
 
-def test_force_refuses_nodes_it_cannot_register_and_writes_nothing(create, tmp_path: Path
-                                                                    ) -> None:
+def test_force_refuses_nodes_it_cannot_register_and_writes_nothing(
+        create, tmp_path: Path) -> None:
     root = create(nodes=("talker:publisher",)).root
     (root / "setup.py").write_text("# edited by the user\n")
     before = _snapshot(tmp_path)

@@ -169,6 +169,7 @@ def test_an_item_too_long_for_the_line_splits_an_inline_list() -> None:
 
 
 def test_a_tuple_without_brackets_is_refused() -> None:
-    text = IMPORT + "scripts = 'a = demo.a:main',\nsetup(entry_points={'console_scripts': scripts})\n"
+    text = IMPORT + ("scripts = 'a = demo.a:main',\n"
+                     "setup(entry_points={'console_scripts': scripts})\n")
     with pytest.raises(EditError, match="without brackets"):
         SetupDoc(Source("setup.py", text), FILES).add_console_script("b", "demo.b:main")
