@@ -47,7 +47,7 @@ def _register() -> None:
         importlib.import_module(f"pkgtool.cli_{verb}").register(app)
 
 
-VERBS: tuple[str, ...] = ("lint", "create", "test", "grade", "reference")
+VERBS: tuple[str, ...] = ("lint", "create", "add", "test", "grade", "reference")
 """Verbs with a ``pkgtool/cli_<verb>.py`` exposing ``register(app)``; add a verb when it works."""
 
 

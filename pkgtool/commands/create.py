@@ -6,15 +6,13 @@ Nothing here prints: :func:`run` returns a frozen :class:`CreateResult` that the
 from __future__ import annotations
 
 import getpass
-import os
 import subprocess
-import time
 from dataclasses import dataclass, replace
 from pathlib import Path
 
 from pkgtool.commands import ExitCode
 from pkgtool.create import CreateError
-from pkgtool.create.options import Request, validate
+from pkgtool.create.options import Plan, Request, validate
 from pkgtool.create.writer import Hook, check_destination, tree, write_package
 
 __all__ = ["CreateResult", "Request", "defaults", "run"]
@@ -52,8 +50,9 @@ def defaults(request: Request, *, maintainer_name: str | None,
     name = maintainer_name or _git_config("user.name") or getpass.getuser()
     email = maintainer_email or _git_config("user.email") or f"{name.replace(' ', '_')}@todo.todo"
     if year is None:
-        epoch = os.environ.get("SOURCE_DATE_EPOCH", "")
-        year = time.gmtime(int(epoch) if epoch.isdigit() else None).tm_year
+        from pkgtool.create.pysource import copyright_year
+
+        year = copyright_year()
     return replace(request, maintainer_name=name, maintainer_email=email, year=year)
 
 
@@ -65,6 +64,8 @@ def run(request: Request, *, dry_run: bool = False, force: bool = False,
     try:
         plan = validate(request)
         files = render(plan)
+        if force and all((plan.root / f).is_file() for f in ("package.xml", "setup.py")):
+            return _into_package(plan, files, dry_run=dry_run, before_write=before_write)
         if dry_run:
             written, kept = check_destination(plan.root, files, force=force)
         else:
@@ -79,3 +80,43 @@ def run(request: Request, *, dry_run: bool = False, force: bool = False,
     marks = dict.fromkeys(kept, "exists, kept")
     return CreateResult(ExitCode.OK, plan.root, tuple(written), tuple(kept),
                         tree(plan.name, list(files), marks), dry_run=dry_run)
+
+
+def _into_package(plan: Plan, files: dict[str, str], *, dry_run: bool,
+                  before_write: Hook | None) -> CreateResult:
+    """``--force`` into an existing package: nodes, launch and config go through ``add``.
+
+    They are registered (console script, dependencies, data_files, launch entry) by editing
+    the existing files in place; the other missing files are added as usual.
+    """
+    from pkgtool.add.files import add_config, add_launch
+    from pkgtool.add.node import add_node
+    from pkgtool.add.target import open_target
+    from pkgtool.create.render import node_files
+    from pkgtool.edit.core import EditError
+
+    try:
+        target = open_target(plan.root)
+        for spec in plan.nodes:
+            add_node(target, spec, year=plan.year)
+        if plan.config:
+            add_config(target, year=plan.year)
+        if plan.launch:
+            add_launch(target, year=plan.year)
+        changes = target.session.changes()
+    except EditError as error:
+        return CreateResult(ExitCode.USAGE, error=str(error))
+    handled = {*node_files(plan), f"launch/{plan.name}.launch.py", "config/params.yaml"}
+    rest = {path: text for path, text in files.items() if path not in handled}
+    if dry_run:
+        written, kept = check_destination(plan.root, rest, force=True)
+    else:
+        changes.write()
+        written, kept = write_package(plan.root, rest, force=True, before_write=before_write)
+    added = [c.path for c in changes.files if c.before is None]
+    edited = [c.path for c in changes.files if c.before is not None]
+    kept_all = sorted(set(kept) | (handled & set(files)) - set(added) - set(edited))
+    marks = dict.fromkeys(kept_all, "exists, kept") | dict.fromkeys(edited, "edited")
+    return CreateResult(ExitCode.OK, plan.root, tuple(sorted([*written, *added, *edited])),
+                        tuple(kept_all), tree(plan.name, sorted({*files, *edited}), marks),
+                        dry_run=dry_run)

@@ -137,6 +137,25 @@ def sort_dependencies(values: tuple[str, ...]) -> tuple[set[str], set[str]]:
     return ros, python
 
 
+def check_node_name(name: str) -> str:
+    """``name`` if a node (module, executable and test file) may be called so, else CreateError."""
+    check_name(name, "node name")
+    if name in _TEST_FILES:
+        raise CreateError(f"Invalid node name `{name}`: it is taken by a generated test file "
+                          "(conftest.py or an ament linter test). Rename it.")
+    return name
+
+
+def node_dependencies(nodes: tuple[NodeSpec, ...]) -> tuple[set[str], set[str]]:
+    """(run-time ROS packages, test keys) that the generated modules and tests of ``nodes`` use."""
+    if not nodes:
+        return set(), set()
+    ros = {"rclpy"} | {n.interface.package for n in nodes if n.interface}
+    actions = any(n.kind.interface == "action" for n in nodes)
+    tests = {"python3-pytest"} | ({"action_msgs"} if actions else set())
+    return ros, tests
+
+
 def _nodes(request: Request) -> tuple[NodeSpec, ...]:
     specs = [parse_node(text, msg=request.msg, srv=request.srv, action=request.action)
              for text in request.nodes]
@@ -144,10 +163,7 @@ def _nodes(request: Request) -> tuple[NodeSpec, ...]:
         specs.insert(0, parse_node(f"{request.node_name}:timer"))
     seen: set[str] = set()
     for spec in specs:
-        check_name(spec.name, "node name")
-        if spec.name in _TEST_FILES:
-            raise CreateError(f"Invalid node name `{spec.name}`: it is taken by a generated "
-                              "test file (conftest.py or an ament linter test). Rename it.")
+        check_node_name(spec.name)
         if spec.name in seen or spec.name == request.library_name:
             raise CreateError(f"Node name `{spec.name}` is used twice: give each node and the "
                               "library its own name.")
@@ -173,10 +189,9 @@ def validate(request: Request) -> Plan:
         raise CreateError("--launch and --config need at least one node: add `--node "
                           "NAME:KIND`.")
     ros, python = sort_dependencies(request.dependencies)
-    ros |= ({"rclpy"} if nodes else set()) | {n.interface.package for n in nodes if n.interface}
-    tests = {"ament_copyright", "ament_flake8", "ament_pep257", "python3-pytest"}
-    if any(n.kind.interface == "action" for n in nodes):
-        tests.add("action_msgs")
+    node_ros, node_tests = node_dependencies(nodes)
+    ros |= node_ros
+    tests = {"ament_copyright", "ament_flake8", "ament_pep257", "python3-pytest"} | node_tests
     execs = python | ({"launch", "launch_ros"} if request.launch else set())
     description = request.description or f"The {name} ROS 2 Python package."
     return Plan(

@@ -8,7 +8,9 @@ into implicitly concatenated pieces when a line would pass 99 characters.
 from __future__ import annotations
 
 import json
+import os
 import re
+import time
 import sys
 from collections.abc import Iterable
 
@@ -82,13 +84,12 @@ def yaml_value(value: object) -> str:
     return json.dumps(value)
 
 
-def xml_text(value: str) -> str:
-    """``value`` escaped for XML text or a double-quoted attribute."""
-    # not xml.sax.saxutils.escape: importing it pulls in urllib (20 ms of a 0.1 s command)
-    return (value.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
-            .replace('"', "&quot;"))
-
-
 def header(year: int, holder: str, spdx_id: str) -> str:
     """The copyright and SPDX license comment every generated Python file opens with."""
     return f"# Copyright {year} {holder}\n# SPDX-License-Identifier: {spdx_id}\n"
+
+
+def copyright_year() -> int:
+    """The year of SOURCE_DATE_EPOCH when set (reproducible output), else the current year."""
+    epoch = os.environ.get("SOURCE_DATE_EPOCH", "")
+    return time.gmtime(int(epoch) if epoch.isdigit() else None).tm_year

@@ -5,10 +5,12 @@ Pure and deterministic: the same plan gives the same bytes. Nothing is written h
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 from pkgtool.create.licenses import license_text
-from pkgtool.create.pysource import header, import_block, py_str, py_value, xml_text, yaml_value
+from pkgtool.create.pysource import header, import_block, py_str, py_value, yaml_value
+from pkgtool.safe_xml import xml_text
 
 if TYPE_CHECKING:
     from jinja2 import Environment
@@ -92,16 +94,51 @@ def _init_docstring(plan: Plan) -> str:
     return text if len(text) <= 90 else f"The {plan.name} package and its nodes."
 
 
-def render(plan: Plan, env: Environment | None = None) -> dict[str, str]:
-    """Every file of the package, by POSIX path relative to the package folder."""
-    env = env or environment()
+def _renderer(plan: Plan, env: Environment, files: dict[str, str]) -> Callable[..., None]:
+    """``put(path, template, **context)``: render a template of ``plan`` into ``files``."""
     head = header(plan.year, plan.maintainer_name, plan.license)
-    files: dict[str, str] = {}
 
     def put(path: str, template: str, **context: object) -> None:
         text = env.get_template(template).render(plan=plan, header=head, **context)
         files[path] = text.rstrip("\n") + "\n"
 
+    return put
+
+
+def node_files(plan: Plan, env: Environment | None = None) -> dict[str, str]:
+    """The module and the test of each node of ``plan``, and the tests' ``conftest.py``."""
+    files: dict[str, str] = {}
+    put = _renderer(plan, env or environment(), files)
+    for node in plan.nodes:
+        put(f"{plan.name}/{node.name}.py", node.kind.template, node=node,
+            imports=import_block(node_imports(node)))
+        put(f"test/test_{node.name}.py", node.kind.template.replace("nodes/", "tests/"),
+            node=node, imports=import_block(test_imports(plan.name, node)))
+    if plan.nodes:
+        put("test/conftest.py", "tests/conftest.py.jinja", imports=import_block(_CONFTEST))
+    return files
+
+
+def launch_file(plan: Plan, env: Environment | None = None) -> str:
+    """The launch file starting the nodes of ``plan`` (with config/params.yaml if ``config``)."""
+    files: dict[str, str] = {}
+    _renderer(plan, env or environment(), files)("launch", "launch.py.jinja",
+                                                 imports=import_block(_launch_imports(plan)))
+    return files["launch"]
+
+
+def params_file(plan: Plan, env: Environment | None = None) -> str:
+    """config/params.yaml with the parameters of the nodes of ``plan``."""
+    files: dict[str, str] = {}
+    _renderer(plan, env or environment(), files)("params", "params.yaml.jinja")
+    return files["params"]
+
+
+def render(plan: Plan, env: Environment | None = None) -> dict[str, str]:
+    """Every file of the package, by POSIX path relative to the package folder."""
+    env = env or environment()
+    files: dict[str, str] = {}
+    put = _renderer(plan, env, files)
     put("package.xml", "package.xml.jinja")
     put("setup.py", "setup.py.jinja")
     put("setup.cfg", "setup.cfg.jinja")
@@ -111,18 +148,11 @@ def render(plan: Plan, env: Environment | None = None) -> dict[str, str]:
     if plan.library_name:
         put(f"{plan.name}/{plan.library_name}/__init__.py", "__init__.py.jinja",
             docstring=f"The {plan.library_name} library of the {plan.name} package.")
-    for node in plan.nodes:
-        put(f"{plan.name}/{node.name}.py", node.kind.template, node=node,
-            imports=import_block(node_imports(node)))
-        put(f"test/test_{node.name}.py", node.kind.template.replace("nodes/", "tests/"),
-            node=node, imports=import_block(test_imports(plan.name, node)))
-    if plan.nodes:
-        put("test/conftest.py", "tests/conftest.py.jinja", imports=import_block(_CONFTEST))
+    files.update(node_files(plan, env))
     for name, imports in _LINTER_TESTS.items():
         put(f"test/{name}.py", f"tests/{name}.py.jinja", imports=import_block(imports))
     if plan.launch:
-        put(f"launch/{plan.name}.launch.py", "launch.py.jinja",
-            imports=import_block(_launch_imports(plan)))
+        files[f"launch/{plan.name}.launch.py"] = launch_file(plan, env)
     if plan.config:
-        put("config/params.yaml", "params.yaml.jinja")
+        files["config/params.yaml"] = params_file(plan, env)
     return dict(sorted(files.items()))

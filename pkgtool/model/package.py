@@ -27,8 +27,8 @@ class Package:
 
     ``files`` lists every file (POSIX, relative to ``root``). ``problems`` holds files that could
     not be read or parsed. ``suppressions`` maps (path, line) to the rule selectors silenced
-    there as written (codes, names, ``ALL``), an empty set for a bare ``pkgtool: ignore``. ``context`` is the target
-    distribution and the workspace.
+    there as written (codes, names, ``ALL``), an empty set for a bare ``pkgtool: ignore``.
+    ``context`` is the target distribution and the workspace.
     """
 
     root: Path

@@ -43,16 +43,31 @@ def test_an_existing_destination_is_refused_untouched(create, tmp_path: Path) ->
 def test_force_adds_missing_files_and_keeps_the_user_s(create, tmp_path: Path) -> None:
     first = create(nodes=("talker:publisher",))
     root = first.root
-    (root / "setup.py").write_text("# edited by the user\n")
+    setup = (root / "setup.py").read_text()
+    (root / "setup.py").write_text("# edited by the user\n" + setup)
     (root / "demo_pkg" / "talker.py").unlink()
     (root / "notes.txt").write_text("mine\n")
     again = create(nodes=("talker:publisher", "beat:timer"), force=True)
     assert again.exit_code == ExitCode.OK
-    assert set(again.written) == {"demo_pkg/talker.py", "demo_pkg/beat.py", "test/test_beat.py"}
-    assert "setup.py" in again.kept and "(exists, kept)" in again.tree
-    assert (root / "setup.py").read_text() == "# edited by the user\n"
+    assert set(again.written) == {"demo_pkg/talker.py", "demo_pkg/beat.py", "test/test_beat.py",
+                                  "setup.py"}
+    assert "package.xml" in again.kept and "(exists, kept)" in again.tree
+    assert "setup.py  (edited)" in again.tree
+    assert (root / "setup.py").read_text() == "# edited by the user\n" + setup.replace(
+        "'talker = demo_pkg.talker:main',\n",
+        "'talker = demo_pkg.talker:main',\n            'beat = demo_pkg.beat:main',\n")
     assert (root / "notes.txt").read_text() == "mine\n"
     assert (root / "demo_pkg" / "beat.py").is_file()
+
+
+def test_force_refuses_nodes_it_cannot_register_and_writes_nothing(
+        create, tmp_path: Path) -> None:
+    root = create(nodes=("talker:publisher",)).root
+    (root / "setup.py").write_text("# edited by the user\n")
+    before = _snapshot(tmp_path)
+    again = create(nodes=("beat:timer",), force=True)
+    assert again.exit_code == ExitCode.USAGE and "no `setup(...)` call" in again.error
+    assert _snapshot(tmp_path) == before
 
 
 def test_force_refuses_a_file_where_a_folder_belongs(create, tmp_path: Path) -> None:

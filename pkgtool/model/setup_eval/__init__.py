@@ -9,6 +9,7 @@ recorded as :class:`~pkgtool.model.span.Unresolved` under the keyword it would f
 from __future__ import annotations
 
 import ast
+from dataclasses import dataclass
 from typing import Any
 
 from pkgtool.model.setup_eval.entries import Malformed, data_files, entry_points
@@ -24,8 +25,18 @@ _VALUE_FIELDS = ("name", "version", "description", "license", "maintainer", "mai
                  "tests_require", "extras_require", "install_requires")
 
 
-def read_setup(path: str, text: str, files: tuple[str, ...]) -> SetupPy | ParseProblem:
-    """Evaluate setup.py ``text`` statically; a syntax error gives a ParseProblem."""
+@dataclass(frozen=True, slots=True)
+class Evaluation:
+    """One run of setup.py: its ``ast``, the module scope at the end, the setup() call."""
+
+    module: ast.Module
+    scope: Scope
+    call: SetupCall | None
+    tree: Tree
+
+
+def evaluate(path: str, text: str, files: tuple[str, ...]) -> Evaluation | ParseProblem:
+    """Run setup.py ``text`` over evaluated data; a syntax error gives a ParseProblem."""
     try:
         module = ast.parse(text, filename=path)
     except (SyntaxError, ValueError, RecursionError, MemoryError) as error:
@@ -34,12 +45,21 @@ def read_setup(path: str, text: str, files: tuple[str, ...]) -> SetupPy | ParseP
         detail = getattr(error, "msg", None) or str(error) or type(error).__name__
         return ParseProblem("python-syntax", Span(path, line, column), detail)
     runner = Runner(path, text, files)
+    scope = Scope()
     try:
-        runner.run_block(module.body, Scope())
+        runner.run_block(module.body, scope)
     except CONTROL_FLOW:
         pass
     call = runner.setup_calls[0] if runner.setup_calls else _unreached_call(runner, module)
-    return _setup_py(path, call, runner.tree)
+    return Evaluation(module, scope, call, runner.tree)
+
+
+def read_setup(path: str, text: str, files: tuple[str, ...]) -> SetupPy | ParseProblem:
+    """Evaluate setup.py ``text`` statically; a syntax error gives a ParseProblem."""
+    found = evaluate(path, text, files)
+    if isinstance(found, ParseProblem):
+        return found
+    return _setup_py(path, found.call, found.tree)
 
 
 def _unreached_call(runner: Runner, module: ast.Module) -> SetupCall | None:

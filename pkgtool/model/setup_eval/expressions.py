@@ -10,7 +10,8 @@ from pkgtool.model.setup_eval import builtins
 from pkgtool.model.setup_eval.scope import Scope
 from pkgtool.model.setup_eval.tree import Tree
 from pkgtool.model.setup_eval.values import (
-    NotStatic, OutOfBudget, PathValue, origins_of, tagged_list, tagged_str, tagged_tuple,
+    NotStatic, OutOfBudget, PathValue, origins_of, tagged_dict, tagged_list, tagged_str,
+    tagged_tuple,
 )
 from pkgtool.model.span import Span, Unresolved
 
@@ -79,6 +80,8 @@ class ExpressionEvaluator:
             return tagged_list(value, self.span(node))
         if kind is tuple:
             return tagged_tuple(value, self.span(node))
+        if kind is dict:
+            return tagged_dict(value, self.span(node))
         return value
 
     def iterate(self, value: Any, node: ast.AST) -> list[Any]:

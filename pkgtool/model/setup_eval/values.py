@@ -38,6 +38,12 @@ class Tup(tuple):  # type: ignore[type-arg]
     origins: tuple[GlobOrigin, ...] = ()
 
 
+class Dct(dict):  # type: ignore[type-arg]
+    """A dict with the span of the expression that made it."""
+
+    span: Span | None = None
+
+
 class Found(Lst):
     """The result of ``find_packages``/``find_namespace_packages`` with the finder's arguments."""
 
@@ -121,6 +127,13 @@ def tagged_tuple(items: Any, span: Span | None, origins: tuple[GlobOrigin, ...] 
     result = Tup(items)
     result.span = span
     result.origins = origins
+    return result
+
+
+def tagged_dict(items: Any, span: Span | None) -> Dct:
+    """``items`` as a :class:`Dct` carrying ``span``."""
+    result = Dct(items)
+    result.span = span
     return result
 
 
