@@ -10,11 +10,12 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from catkin_pkg import package as catkin_package
 
 from tests.helpers import findings, make_package
 from tests.lint.test_manifest_xsd_oracle import EXPORT, doc, head
 
-catkin_package = pytest.importorskip("catkin_pkg.package")
+pytestmark = pytest.mark.oracle
 
 CATKIN_RULES = ("MAN003", "MAN005", "MAN006", "MAN007", "MAN011", "MAN012", "MAN014")
 
