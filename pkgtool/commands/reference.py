@@ -279,7 +279,9 @@ def _colcon_build_test(workspace: Path, names: list[str], domain_id: int,
     from pkgtool.grade.junit import parse_junit
     from pkgtool.ros.colcon import colcon_build, colcon_env, colcon_test
 
-    env = colcon_env(workspace, domain_id=domain_id)
+    temp = workspace / "tmp"  # the packages' tests' temporary files go away with the workspace
+    temp.mkdir(exist_ok=True)
+    env = colcon_env(workspace, domain_id=domain_id, extra={"TMPDIR": str(temp)})
     src, build_dir = [workspace / "src"], workspace / "build"
     for name in names:
         report(name, "building")
