@@ -15,7 +15,8 @@ from pathlib import Path
 from pkgtool.commands import ExitCode
 from pkgtool.create import CreateError
 from pkgtool.create.options import Request, validate
-from pkgtool.create.writer import Hook, check_destination, tree, write_package
+from pkgtool.create.writer import (Hook, check_destination, enclosing_package, tree,
+                                   write_package)
 
 __all__ = ["CreateResult", "Request", "defaults", "run"]
 
@@ -31,6 +32,7 @@ class CreateResult:
     tree: str = ""
     dry_run: bool = False
     error: str = ""
+    warnings: tuple[str, ...] = ()
 
 
 def _git_config(key: str) -> str:
@@ -64,6 +66,12 @@ def run(request: Request, *, dry_run: bool = False, force: bool = False,
 
     try:
         plan = validate(request)
+        outer = enclosing_package(plan.destination)
+        if outer is not None:
+            raise CreateError(
+                f"`{plan.destination}` is inside the package `{outer.name}` ({outer}): colcon "
+                "does not look for packages inside packages. Create it beside that package, "
+                f"e.g. with --destination-directory {outer.parent}.")
         files = render(plan)
         if dry_run:
             written, kept = check_destination(plan.root, files, force=force)
@@ -78,4 +86,5 @@ def run(request: Request, *, dry_run: bool = False, force: bool = False,
                             "destination's permissions and free space.")
     marks = dict.fromkeys(kept, "exists, kept")
     return CreateResult(ExitCode.OK, plan.root, tuple(written), tuple(kept),
-                        tree(plan.name, list(files), marks), dry_run=dry_run)
+                        tree(plan.name, list(files), marks), dry_run=dry_run,
+                        warnings=plan.warnings)

@@ -88,7 +88,3 @@ def xml_text(value: str) -> str:
     return (value.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
             .replace('"', "&quot;"))
 
-
-def header(year: int, holder: str, spdx_id: str) -> str:
-    """The copyright and SPDX license comment every generated Python file opens with."""
-    return f"# Copyright {year} {holder}\n# SPDX-License-Identifier: {spdx_id}\n"

@@ -104,8 +104,9 @@ def test_files_get_the_umask_s_permissions(create, tmp_path: Path) -> None:
     assert stat.S_IMODE((result.root / "setup.py").stat().st_mode) == 0o644
 
 
-@pytest.mark.parametrize("bad", ["bad-name", "ok_name"])
-def test_nothing_is_written_for_a_refused_request(tmp_path: Path, bad: str) -> None:
-    result = run(request(tmp_path, bad, license="WTFPL"))
+@pytest.mark.parametrize("bad, values", [("bad-name", {}),
+                                         ("ok_name", {"nodes": ("talker:teleporter",)})])
+def test_nothing_is_written_for_a_refused_request(tmp_path: Path, bad: str, values: dict) -> None:
+    result = run(request(tmp_path, bad, **values))
     assert result.exit_code == ExitCode.USAGE and result.error
     assert list(tmp_path.iterdir()) == []
