@@ -110,7 +110,8 @@ def _python() -> Iterator[Check]:
 
 
 def _ros() -> Iterator[Check]:
-    ros_fix = install_command(_declared("ros") or ["ros-jazzy-rclpy", "ros-jazzy-rmw-fastrtps-cpp"])
+    ros_fix = install_command(_declared("ros") or ["ros-jazzy-rclpy",
+                                                   "ros-jazzy-rmw-fastrtps-cpp"])
     if importlib.util.find_spec("rclpy") is None:
         yield Check("rclpy", False, "not installed", ros_fix)
         return
@@ -143,9 +144,9 @@ def _tools() -> Iterator[Check]:
                     _declared(names={"colcon-common-extensions"}) or ["colcon-common-extensions"]))
     for module, distribution in LINTERS.items():
         ok = importlib.util.find_spec(module) is not None
+        fix = "" if ok else install_command(_declared(names={distribution}) or [distribution])
         yield Check(module, ok, "used by the generated test_*.py" if ok else
-                    "absent: the generated tests fall back to pkgtool's own checks",
-                    "" if ok else install_command(_declared(names={distribution}) or [distribution]))
+                    "absent: the generated tests fall back to pkgtool's own checks", fix)
     ok = importlib.util.find_spec("ament_copyright") is not None
     yield Check("ament_copyright", ok, "used by the generated test_copyright.py" if ok else
                 "absent (it has no PyPI wheel): test_copyright.py falls back to pkgtool's check",

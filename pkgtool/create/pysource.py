@@ -87,4 +87,3 @@ def xml_text(value: str) -> str:
     # not xml.sax.saxutils.escape: importing it pulls in urllib (20 ms of a 0.1 s command)
     return (value.replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
             .replace('"', "&quot;"))
-

@@ -31,8 +31,8 @@ reverse, pkgtool rejecting a header ament accepts, would be a false error: never
 
 
 def _case(spdx_id: str, spdx_line: bool) -> str:
-    return spdx_id.lower().replace("-", "_").replace(".", "_") + ("_spdx_line" if spdx_line
-                                                                   else "") + ".py"
+    stem = spdx_id.lower().replace("-", "_").replace(".", "_")
+    return stem + ("_spdx_line" if spdx_line else "") + ".py"
 
 
 @pytest.mark.parametrize("spdx_line", [False, True])

@@ -1,6 +1,6 @@
 # Copyright 2026 Jane Doe
 
-import os
+X = 1
 #
 # Licensed under the Apache License, Version 2.0 (the "License");
 # you may not use this file except in compliance with the License.
