@@ -2,7 +2,8 @@
 
 The REP 127/140/149 XSDs in ``tests/data/rep-xsd`` (a copy, see its README.md) are the
 oracle, validated with lxml offline (``package_common.xsd`` is included by a relative path).
-pkgtool never reads them. Deliberate deviations are listed in :data:`DEVIATIONS` with the reason and checked too.
+pkgtool never reads them. Deliberate deviations are listed in :data:`DEVIATIONS` with the
+reason and checked too.
 """
 
 from __future__ import annotations
