@@ -72,6 +72,14 @@ def test_the_package_has_what_ros2_pkg_create_writes_and_more(create) -> None:
             ast.parse(text, path)
 
 
+@pytest.mark.parametrize("launch", [True, False])
+def test_the_parameters_file_says_how_its_values_reach_the_nodes(create, launch: bool) -> None:
+    result = create(nodes=("talker:publisher",), config=True, launch=launch)
+    comment = (result.root / "config" / "params.yaml").read_text().split("\ntalker:")[0]
+    assert ("launch/demo_pkg.launch.py" in comment) == launch
+    assert ("--params-file install/demo_pkg/share/demo_pkg/config/params.yaml" in comment) != launch
+
+
 def test_a_license_ament_copyright_does_not_know_is_checked_by_pkgtool_alone(create) -> None:
     result = create(license="GPL-2.0-or-later", nodes=("beat:timer",))
     copyright_test = (result.root / "test" / "test_copyright.py").read_text()
