@@ -77,7 +77,8 @@ def test_the_parameters_file_says_how_its_values_reach_the_nodes(create, launch:
     result = create(nodes=("talker:publisher",), config=True, launch=launch)
     comment = (result.root / "config" / "params.yaml").read_text().split("\ntalker:")[0]
     assert ("launch/demo_pkg.launch.py" in comment) == launch
-    assert ("--params-file install/demo_pkg/share/demo_pkg/config/params.yaml" in comment) != launch
+    params_file = "--params-file install/demo_pkg/share/demo_pkg/config/params.yaml"
+    assert (params_file in comment) != launch
 
 
 def test_a_license_ament_copyright_does_not_know_is_checked_by_pkgtool_alone(create) -> None:
