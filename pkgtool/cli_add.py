@@ -7,12 +7,16 @@ from typing import Annotated, Optional
 
 import typer
 
+from pkgtool.cli import examples
 from pkgtool.commands import ExitCode
 
 add_app = typer.Typer(
     name="add", no_args_is_help=True, rich_markup_mode=None,
     help="Add a node, launch file, parameter file or dependency to an existing package. "
-    "Existing files are edited in place, every other byte kept; no file is overwritten.")
+    "Existing files are edited in place, every other byte kept; no file is overwritten.",
+    epilog=examples("pkgtool add node scan_filter:subscriber:sensor_msgs/msg/LaserScan my_pkg",
+                    "pkgtool add dependency numpy tf2_ros --path my_pkg",
+                    "pkgtool add launch my_pkg --dry-run"))
 
 _PATH = Annotated[Path, typer.Argument(help="The package folder.", metavar="PATH")]
 _DRY = Annotated[bool, typer.Option("--dry-run", help="Print the changes as a unified diff; "
@@ -39,14 +43,16 @@ def _render(result, verb: str) -> None:  # type: ignore[no-untyped-def]
     raise typer.Exit(int(ExitCode.OK))
 
 
-@add_app.command("node")
+@add_app.command("node", epilog=examples(
+    "pkgtool add node talker:publisher my_pkg",
+    "pkgtool add node mover:action-client:nav2_msgs/action/NavigateToPose my_pkg --dry-run"))
 def node(
     spec: Annotated[str, typer.Argument(
         metavar="NAME:KIND[:TYPE]", help="KIND: publisher, subscriber, service, client, "
         "action-server, action-client, timer; TYPE as in `pkgtool create --node`.")],
     path: _PATH = Path("."),
     launch_file: Annotated[Optional[str], typer.Option(
-        help="The launch file (package-relative) to start the node from, when the package "
+        metavar="FILE", help="The launch file (package-relative) to start the node from, when the package "
         "has several.", show_default=False)] = None,
     dry_run: _DRY = False,
 ) -> None:
@@ -56,11 +62,12 @@ def node(
     _render(add.node(path, spec, dry_run=dry_run, launch_file=launch_file), "node")
 
 
-@add_app.command("launch")
+@add_app.command("launch", epilog=examples(
+    "pkgtool add launch my_pkg", "pkgtool add launch my_pkg --name demo.launch.py"))
 def launch(
     path: _PATH = Path("."),
     name: Annotated[Optional[str], typer.Option(
-        help="File name under launch/ [<package>.launch.py].", show_default=False)] = None,
+        metavar="FILE", help="File name under launch/ [<package>.launch.py].", show_default=False)] = None,
     dry_run: _DRY = False,
 ) -> None:
     """Add a launch file that starts the package's nodes, and install it."""
@@ -69,7 +76,7 @@ def launch(
     _render(add.launch(path, name=name, dry_run=dry_run), "launch")
 
 
-@add_app.command("config")
+@add_app.command("config", epilog=examples("pkgtool add config my_pkg"))
 def config(path: _PATH = Path("."), dry_run: _DRY = False) -> None:
     """Add config/params.yaml with the parameters the nodes declare, and install it."""
     from pkgtool.commands import add
@@ -77,12 +84,14 @@ def config(path: _PATH = Path("."), dry_run: _DRY = False) -> None:
     _render(add.config(path, dry_run=dry_run), "config")
 
 
-@add_app.command("dependency")
+@add_app.command("dependency", epilog=examples(
+    "pkgtool add dependency sensor_msgs numpy --path my_pkg",
+    "pkgtool add dependency python3-pytest --test --path my_pkg"))
 def dependency(
     names: Annotated[list[str], typer.Argument(
         metavar="NAME...", help="ROS packages (sensor_msgs), Python modules (numpy, mapped to "
         "their rosdep key) or rosdep keys (python3-numpy).")],
-    path: Annotated[Path, typer.Option(help="The package folder.")] = Path("."),
+    path: Annotated[Path, typer.Option(help="The package folder.", metavar="DIR")] = Path("."),
     test: Annotated[bool, typer.Option("--test", help="Needed by the tests only "
                                        "(<test_depend>).")] = False,
     dry_run: _DRY = False,

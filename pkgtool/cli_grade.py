@@ -9,6 +9,7 @@ from typing import TYPE_CHECKING, Annotated, Optional
 
 import typer
 
+from pkgtool.cli import examples
 from pkgtool.cli_output import check_output, emit
 from pkgtool.commands import ExitCode
 
@@ -37,20 +38,21 @@ def _fail(*messages: str) -> typer.Exit:
 def grade(
     submissions: Annotated[Optional[list[str]], typer.Argument(
         help="Packages, workspaces or .zip/.tar.gz archives (with --batch: folders of them).",
-        show_default=False)] = None,
+        show_default=False, metavar="SUBMISSION...")] = None,
     rubric: Annotated[Optional[str], typer.Option(
-        "--rubric", "-r", help="The rubric TOML file.", show_default=False)] = None,
+        "--rubric", "-r", help="The rubric TOML file.  [required, except with --init-rubric]",
+        show_default=False, metavar="FILE")] = None,
     batch: Annotated[bool, typer.Option(
         help="Each SUBMISSION is a folder whose entries are submissions.")] = False,
     jobs: Annotated[int, typer.Option("--jobs", "-j", help="Submissions graded at once.",
-                                      min=1)] = 1,
+                                      min=1, metavar="N")] = 1,
     fmt: Annotated[Format, typer.Option("--format", "-f", help="Report format.")] = Format.TEXT,
     output: Annotated[Optional[Path], typer.Option(
         "--output", "-o", help="Write the report to this file instead of stdout.",
-        dir_okay=False)] = None,
+        dir_okay=False, metavar="FILE")] = None,
     init_rubric: Annotated[Optional[Path], typer.Option(
         help="Write a commented example rubric (and hidden_tests/) to this file and exit.",
-        dir_okay=False, show_default=False)] = None,
+        dir_okay=False, show_default=False, metavar="FILE")] = None,
 ) -> None:
     """Grade student submissions against a rubric, each built and tested in a sandbox.
 
@@ -102,4 +104,7 @@ def _run(command, submissions: list[str], rubric: str, batch: bool,  # type: ign
 
 def register(app: typer.Typer) -> None:
     """Attach ``grade`` to the root app."""
-    app.command("grade")(grade)
+    app.command("grade", options_metavar="--rubric FILE [OPTIONS]", epilog=examples(
+        "pkgtool grade --init-rubric rubric.toml     # a commented example to start from",
+        "pkgtool grade --rubric rubric.toml submissions/alice.zip",
+        "pkgtool grade -r rubric.toml --batch submissions/ -j 2 -f csv -o grades.csv"))(grade)

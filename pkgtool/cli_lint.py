@@ -13,6 +13,7 @@ from typing import TYPE_CHECKING, Annotated, Optional
 
 import typer
 
+from pkgtool.cli import examples
 from pkgtool.cli_output import emit
 from pkgtool.commands import ExitCode
 
@@ -152,4 +153,8 @@ def _report(result: LintResult, fmt: Format, output: Optional[Path]) -> None:
 
 def register(app: typer.Typer) -> None:
     """Attach ``lint`` to the root app."""
-    app.command("lint")(lint)
+    app.command("lint", epilog=examples(
+        "pkgtool lint                              # the package or workspace here",
+        "pkgtool lint --strict --style src/my_robot",
+        "pkgtool lint ws/src --format sarif -o lint.sarif",
+        "pkgtool lint --explain MAN003"))(lint)

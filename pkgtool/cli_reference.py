@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING, Annotated, Optional
 
 import typer
 
+from pkgtool.cli import examples
 from pkgtool.commands import ExitCode
 
 if TYPE_CHECKING:
@@ -20,7 +21,9 @@ if TYPE_CHECKING:
 
 reference_app = typer.Typer(
     help="The packages the course documents describe: list, generate, lint, build and test.",
-    no_args_is_help=True)
+    no_args_is_help=True, epilog=examples(
+        "pkgtool reference list", "pkgtool reference generate --all --dest ws/src",
+        "pkgtool reference test robot_monitor"))
 
 _NAMES = typer.Argument(metavar="NAME...", show_default=False,
                         help="Reference package names (see `pkgtool reference list`).")
@@ -39,7 +42,7 @@ def _console() -> Console:
     return Console(highlight=False)
 
 
-@reference_app.command("list")
+@reference_app.command("list", epilog=examples("pkgtool reference list"))
 def list_command() -> None:
     """Show each reference package with its source document and nodes."""
     from rich.table import Table
@@ -55,11 +58,14 @@ def list_command() -> None:
     _console().print(table)
 
 
-@reference_app.command("generate")
+@reference_app.command("generate", epilog=examples(
+    "pkgtool reference generate robot_monitor --dest ws/src",
+    "pkgtool reference generate --all --dest ws/src"))
 def generate_command(
     names: Annotated[Optional[list[str]], _NAMES] = None,
     all_: Annotated[bool, _ALL] = False,
-    dest: Annotated[Path, typer.Option(help="Folder to write the packages into.")] = Path("."),
+    dest: Annotated[Path, typer.Option(help="Folder to write the packages into.",
+                                       metavar="DIR")] = Path("."),
 ) -> None:
     """Copy reference packages (and the support packages they need) into a folder."""
     from pkgtool.commands.reference import generate
@@ -73,16 +79,18 @@ def generate_command(
         raise _fail(result.errors, result.exit_code)
 
 
-@reference_app.command("test")
+@reference_app.command("test", epilog=examples(
+    "pkgtool reference test robot_monitor nav_agent",
+    "pkgtool reference test --all -j 2 --keep /tmp/reference-ws"))
 def test_command(
     names: Annotated[Optional[list[str]], _NAMES] = None,
     all_: Annotated[bool, _ALL] = False,
     jobs: Annotated[Optional[int], typer.Option(
         "--jobs", "-j", min=1, help="Packages colcon builds and tests in parallel "
-        "(default: colcon's, one per CPU).", show_default=False)] = None,
+        "(default: colcon's, one per CPU).", show_default=False, metavar="N")] = None,
     keep: Annotated[Optional[Path], typer.Option(
         help="Build in this new or empty folder and keep it (default: a temporary folder).",
-        show_default=False)] = None,
+        show_default=False, metavar="DIR")] = None,
 ) -> None:
     """Generate into a workspace, lint --strict, colcon build and test; exit 1 on failures."""
     from pkgtool.commands.reference import run_tests

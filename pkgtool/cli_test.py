@@ -8,6 +8,7 @@ from typing import Annotated, Optional
 
 import typer
 
+from pkgtool.cli import examples
 from pkgtool.cli_output import check_output, emit
 
 
@@ -20,16 +21,18 @@ class Format(str, Enum):
 
 
 def test(
-    path: Annotated[str, typer.Argument(help="A package folder, or a workspace to test all of.")],
+    path: Annotated[str, typer.Argument(
+        help="A package folder, or a workspace to test all of.", metavar="PATH")],
     timeout: Annotated[float, typer.Option(
-        help="Wall-clock seconds for the build, and again for the tests.", min=1)] = 600.0,
+        help="Wall-clock seconds for the build, and again for the tests.", min=1,
+        metavar="SECONDS")] = 600.0,
     test_timeout: Annotated[Optional[float], typer.Option(
         help="Seconds per single test (needs pytest-timeout).", min=1,
-        show_default=False)] = None,
+        show_default=False, metavar="SECONDS")] = None,
     fmt: Annotated[Format, typer.Option("--format", "-f", help="Report format.")] = Format.TEXT,
     output: Annotated[Optional[Path], typer.Option(
         "--output", "-o", help="Write the report to this file instead of stdout.",
-        dir_okay=False)] = None,
+        dir_okay=False, metavar="FILE")] = None,
 ) -> None:
     """Build a package with colcon in a temporary sandboxed workspace and run its tests.
 
@@ -52,4 +55,6 @@ def test(
 
 def register(app: typer.Typer) -> None:
     """Attach ``test`` to the root app."""
-    app.command("test")(test)
+    app.command("test", epilog=examples(
+        "pkgtool test src/my_robot", "pkgtool test ws/ --format junit -o results.xml",
+        "pkgtool test src/my_robot --test-timeout 60"))(test)

@@ -23,6 +23,8 @@ want="$(cat "$ROOT/requirements/lock.txt" "$ROOT/pyproject.toml" | sha256sum | c
 if [ ! -f "$stamp" ] || [ "$(cat "$stamp")" != "$want" ]; then
     echo "bootstrap: installing the locked requirements into $VENV" >&2
     "$VENV/bin/uv" pip install -q --compile-bytecode --python "$VENV/bin/python" -r "$ROOT/requirements/lock.txt"
+    # The distribution was first named `pkgtool`: drop that editable install from an older venv.
+    "$VENV/bin/uv" pip uninstall -q --python "$VENV/bin/python" pkgtool 2>/dev/null || true
     "$VENV/bin/uv" pip install -q --python "$VENV/bin/python" --no-deps -e "$ROOT"
     "$VENV/bin/python" -m pkgtool.ros.wheel_fixups "$VENV"
     echo "$want" > "$stamp"

@@ -7,6 +7,8 @@ import os
 import shutil
 import tempfile
 
+import pytest
+
 from pkgtool.ros.domains import lease_domain
 
 # Before anything imports rclpy: no multicast on the machine's interfaces, logs in a temp dir.
@@ -17,3 +19,13 @@ atexit.register(shutil.rmtree, os.environ["ROS_LOG_DIR"], ignore_errors=True)
 os.environ.pop("RMW_IMPLEMENTATION", None)
 
 pytest_plugins = ["pkgtool.testing.ros_fixtures"]
+
+
+@pytest.hookimpl(hookwrapper=True)
+def pytest_runtest_makereport(item: pytest.Item, call: pytest.CallInfo) -> object:
+    """An ``oracle`` test that skips has checked nothing: report it as a failure."""
+    outcome = yield
+    report = outcome.get_result()
+    if report.skipped and item.get_closest_marker("oracle") is not None:
+        report.outcome = "failed"
+        report.longrepr = f"oracle test skipped, which counts as a failure: {report.longrepr}"

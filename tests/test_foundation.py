@@ -73,3 +73,16 @@ def test_isolation_refuses_the_default_discovery_range() -> None:
     assert env["ROS_AUTOMATIC_DISCOVERY_RANGE"] == "LOCALHOST"
     assert env["ROS_DOMAIN_ID"] == "7" and env["ROS_LOG_DIR"] == "/tmp/x"
     assert "RMW_IMPLEMENTATION" not in env and "_ROS_WHEELS_BOOTSTRAP_COMPLETE" not in env
+
+
+def test_a_skipped_oracle_test_is_reported_as_failed(tmp_path: Path) -> None:
+    (tmp_path / "test_oracle.py").write_text(
+        "import pytest\n\n\n@pytest.mark.oracle\ndef test_x():\n    pytest.skip('no data')\n\n\n"
+        "def test_plain():\n    pytest.skip('fine')\n")
+    done = subprocess.run([sys.executable, "-m", "pytest", "-p", "tests.conftest", "-q",
+                           "-o", "markers=oracle", "-p", "no:cacheprovider", "--rootdir",
+                           str(tmp_path), str(tmp_path / "test_oracle.py")],
+                          cwd=ROOT, capture_output=True, text=True, timeout=120)
+    assert done.returncode == 1, done.stdout + done.stderr
+    assert "1 failed, 1 skipped" in done.stdout, done.stdout
+    assert "oracle test skipped" in done.stdout

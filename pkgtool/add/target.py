@@ -5,6 +5,8 @@ from __future__ import annotations
 from dataclasses import dataclass
 from pathlib import Path
 
+from pkgtool.create import CreateError
+from pkgtool.create.license_choice import choose_license
 from pkgtool.create.options import Plan
 from pkgtool.create.pysource import copyright_year
 from pkgtool.edit.changes import Session
@@ -61,9 +63,13 @@ class Target:
         manifest = self.package.manifest
         assert manifest is not None
         person = manifest.maintainers[0] if manifest.maintainers else None
+        try:
+            license_ = choose_license(manifest.licenses[0].value if manifest.licenses else "")
+        except CreateError:  # none, or not one line: the headers say TODO
+            license_ = choose_license("TODO")
         fields: dict[str, object] = dict(
             name=self.name, destination=self.root.parent, description="",
-            license=manifest.licenses[0].value if manifest.licenses else "TODO",
+            license=license_.value, license_expression=license_.expression,
             maintainer_name=person.name if person else "", maintainer_email="",
             year=year or copyright_year(), package_format=manifest.format or 3, nodes=(),
             library_name=None, depends=(), exec_depends=(), test_depends=(), launch=False,

@@ -1,8 +1,9 @@
 """Find the copyright notice and license of a source file as ament_copyright does.
 
-ament_copyright reads every block of ``#`` comment lines of a file (after a shebang or coding
-line) and wants a ``Copyright <years> <holder>`` line plus a known license header in the same
-block. pkgtool also accepts an ``SPDX-License-Identifier:`` line as the license.
+ament_copyright reads the first block of ``#`` comment lines of a file (those starting in the
+first column, after a shebang or coding line) and wants a ``Copyright <years> <holder>`` line
+plus a known license header in that block. pkgtool also accepts an ``SPDX-License-Identifier:``
+line as the license, and recognises a header by its key phrases (ament wants the whole text).
 """
 
 from __future__ import annotations
@@ -26,35 +27,38 @@ class Header:
     license_line: int | None
 
 
-def _comment_blocks(text: str) -> list[tuple[int, list[str]]]:
-    """Runs of consecutive ``#`` comment lines as (first line number, stripped texts)."""
-    blocks: list[tuple[int, list[str]]] = []
-    current: list[str] = []
+def _first_comment_block(text: str) -> tuple[int, list[str]]:
+    """ament_copyright's block: the first run of ``#`` lines, after shebang and coding lines.
+
+    Returns (first line number, texts without the ``#`` and surrounding blanks); (0, []) when
+    the file has no comment line.
+    """
+    lines = text.splitlines()
     start = 0
-    for number, line in enumerate(text.splitlines(), 1):
-        stripped = line.lstrip()
-        is_comment = stripped.startswith("#") and not (number == 1 and stripped.startswith("#!"))
-        if is_comment:
-            if not current:
-                start = number
-            current.append(stripped[1:].strip())
-        elif current:
-            blocks.append((start, current))
-            current = []
-    if current:
-        blocks.append((start, current))
-    return blocks
+    while start < len(lines) and lines[start].startswith("#") and (
+            lines[start].startswith("#!") or "coding=" in lines[start]
+            or "coding:" in lines[start]):
+        start += 1
+    first = next((n for n in range(start, len(lines)) if lines[n].startswith("#")), None)
+    if first is None:
+        return 0, []
+    block = []
+    for line in lines[first:]:
+        if not line.startswith("#"):
+            break
+        block.append(line[1:].strip())
+    return first + 1, block
 
 
 def read_header(text: str) -> Header:
-    """The first copyright notice and the first license found in the comment blocks."""
+    """The copyright notice and the license found in the first comment block."""
+    start, lines = _first_comment_block(text)
     copyright_line = license_ = license_line = None
-    for start, lines in _comment_blocks(text):
-        for offset, line in enumerate(lines):
-            if copyright_line is None and COPYRIGHT_LINE.match(line):
-                copyright_line = start + offset
-            if license_ is None and spdx_in_text(line):
-                license_, license_line = spdx_in_text(line), start + offset
-        if license_ is None and license_of_header("\n".join(lines)):
-            license_, license_line = license_of_header("\n".join(lines)), start
+    for offset, line in enumerate(lines):
+        if copyright_line is None and COPYRIGHT_LINE.match(line):
+            copyright_line = start + offset
+        if license_ is None and spdx_in_text(line):
+            license_, license_line = spdx_in_text(line), start + offset
+    if license_ is None and license_of_header("\n".join(lines)):
+        license_, license_line = license_of_header("\n".join(lines)), start
     return Header(copyright_line, license_, license_line)

@@ -22,7 +22,7 @@ class StyleViolation:
 
 
 class StyleToolMissing(RuntimeError):
-    """flake8 or pydocstyle is not installed (they come with ``pkgtool[style]``)."""
+    """flake8 or pydocstyle is not installed (they come with ``pkgtool-ros[style]``)."""
 
 
 @functools.lru_cache(maxsize=1)

@@ -13,7 +13,8 @@ from pathlib import Path
 from pkgtool.commands import ExitCode
 from pkgtool.create import CreateError
 from pkgtool.create.options import Plan, Request, validate
-from pkgtool.create.writer import Hook, check_destination, tree, write_package
+from pkgtool.create.writer import (Hook, check_destination, enclosing_package, tree,
+                                   write_package)
 
 __all__ = ["CreateResult", "Request", "defaults", "run"]
 
@@ -29,6 +30,7 @@ class CreateResult:
     tree: str = ""
     dry_run: bool = False
     error: str = ""
+    warnings: tuple[str, ...] = ()
 
 
 def _git_config(key: str) -> str:
@@ -63,6 +65,12 @@ def run(request: Request, *, dry_run: bool = False, force: bool = False,
 
     try:
         plan = validate(request)
+        outer = enclosing_package(plan.destination)
+        if outer is not None:
+            raise CreateError(
+                f"`{plan.destination}` is inside the package `{outer.name}` ({outer}): colcon "
+                "does not look for packages inside packages. Create it beside that package, "
+                f"e.g. with --destination-directory {outer.parent}.")
         files = render(plan)
         if force and all((plan.root / f).is_file() for f in ("package.xml", "setup.py")):
             return _into_package(plan, files, dry_run=dry_run, before_write=before_write)
@@ -79,7 +87,8 @@ def run(request: Request, *, dry_run: bool = False, force: bool = False,
                             "destination's permissions and free space.")
     marks = dict.fromkeys(kept, "exists, kept")
     return CreateResult(ExitCode.OK, plan.root, tuple(written), tuple(kept),
-                        tree(plan.name, list(files), marks), dry_run=dry_run)
+                        tree(plan.name, list(files), marks), dry_run=dry_run,
+                        warnings=plan.warnings)
 
 
 def _into_package(plan: Plan, files: dict[str, str], *, dry_run: bool,
@@ -119,4 +128,4 @@ def _into_package(plan: Plan, files: dict[str, str], *, dry_run: bool,
     marks = dict.fromkeys(kept_all, "exists, kept") | dict.fromkeys(edited, "edited")
     return CreateResult(ExitCode.OK, plan.root, tuple(sorted([*written, *added, *edited])),
                         tuple(kept_all), tree(plan.name, sorted({*files, *edited}), marks),
-                        dry_run=dry_run)
+                        dry_run=dry_run, warnings=plan.warnings)

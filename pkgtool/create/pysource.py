@@ -84,11 +84,6 @@ def yaml_value(value: object) -> str:
     return json.dumps(value)
 
 
-def header(year: int, holder: str, spdx_id: str) -> str:
-    """The copyright and SPDX license comment every generated Python file opens with."""
-    return f"# Copyright {year} {holder}\n# SPDX-License-Identifier: {spdx_id}\n"
-
-
 def copyright_year() -> int:
     """The year of SOURCE_DATE_EPOCH when set (reproducible output), else the current year."""
     epoch = os.environ.get("SOURCE_DATE_EPOCH", "")

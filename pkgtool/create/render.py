@@ -8,8 +8,9 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
+from pkgtool.create.headers import header
 from pkgtool.create.licenses import license_text
-from pkgtool.create.pysource import header, import_block, py_str, py_value, yaml_value
+from pkgtool.create.pysource import import_block, py_str, py_value, yaml_value
 from pkgtool.safe_xml import xml_text
 
 if TYPE_CHECKING:
@@ -20,14 +21,18 @@ if TYPE_CHECKING:
 
 Imports = list[tuple[str, "str | None"]]
 
-_ACTION_IMPORTS = {"action-server": ("rclpy.action", "ActionServer"),
-                   "action-client": ("rclpy.action", "ActionClient")}
+_ACTION_IMPORTS: dict[str, Imports] = {
+    "action-server": [("rclpy.action", "ActionServer"), ("rclpy.action", "CancelResponse"),
+                      ("rclpy.callback_groups", "ReentrantCallbackGroup"), ("time", None)],
+    "action-client": [("rclpy.action", "ActionClient")]}
 # The test of a node uses the other end of the node's action.
 _ACTION_TEST_IMPORTS = {"action-server": ("rclpy.action", "ActionClient"),
                         "action-client": ("rclpy.action", "ActionServer")}
-_TESTS_WITH_OVERRIDES = frozenset({"publisher", "timer", "client"})
-_CONFTEST: Imports = [("os", None), ("time", None), ("pytest", None), ("rclpy", None),
-                      ("rclpy.context", "Context"), ("rclpy.executors", "SingleThreadedExecutor")]
+_TESTS_WITH_OVERRIDES = frozenset({"publisher", "timer", "client", "action-server"})
+_CONFTEST: Imports = [("os", None), ("threading", None), ("time", None), ("pytest", None),
+                      ("rclpy", None), ("rclpy.context", "Context"),
+                      ("rclpy.executors", "MultiThreadedExecutor"),
+                      ("rclpy.executors", "SingleThreadedExecutor")]
 _LINTER_TESTS: dict[str, Imports] = {
     name: [("pathlib", "Path"), ("pytest", None)]
     for name in ("test_copyright", "test_flake8", "test_pep257")
@@ -57,13 +62,12 @@ def environment() -> Environment:
 
 def node_imports(node: NodeSpec) -> Imports:
     """What the module of ``node`` imports."""
-    found: Imports = [("rclpy", None), ("rclpy.executors", "ExternalShutdownException"),
-                      ("rclpy.node", "Node")]
+    found: Imports = [("signal", None), ("rclpy", None),
+                      ("rclpy.executors", "ExternalShutdownException"),
+                      ("rclpy.executors", node.executor), ("rclpy.node", "Node")]
     if node.interface:
         found.append((node.interface.module, node.interface.name))
-    if node.kind.name in _ACTION_IMPORTS:
-        found.append(_ACTION_IMPORTS[node.kind.name])
-    return found
+    return found + _ACTION_IMPORTS.get(node.kind.name, [])
 
 
 def test_imports(package: str, node: NodeSpec) -> Imports:
@@ -96,7 +100,8 @@ def _init_docstring(plan: Plan) -> str:
 
 def _renderer(plan: Plan, env: Environment, files: dict[str, str]) -> Callable[..., None]:
     """``put(path, template, **context)``: render a template of ``plan`` into ``files``."""
-    head = header(plan.year, plan.maintainer_name, plan.license)
+    head = header(year=plan.year, holder=plan.maintainer_name, license_=plan.license,
+                  expression=plan.license_expression, spdx_line=plan.spdx_header)
 
     def put(path: str, template: str, **context: object) -> None:
         text = env.get_template(template).render(plan=plan, header=head, **context)
@@ -143,7 +148,9 @@ def render(plan: Plan, env: Environment | None = None) -> dict[str, str]:
     put("setup.py", "setup.py.jinja")
     put("setup.cfg", "setup.cfg.jinja")
     files[f"resource/{plan.name}"] = ""
-    files["LICENSE"] = license_text(plan.license, year=plan.year, holder=plan.maintainer_name)
+    if plan.license_shipped:
+        files["LICENSE"] = license_text(plan.license, year=plan.year,
+                                        holder=plan.maintainer_name)
     put(f"{plan.name}/__init__.py", "__init__.py.jinja", docstring=_init_docstring(plan))
     if plan.library_name:
         put(f"{plan.name}/{plan.library_name}/__init__.py", "__init__.py.jinja",

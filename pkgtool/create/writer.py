@@ -45,6 +45,14 @@ def conflicts(root: Path, files: Mapping[str, str]) -> list[str]:
     return sorted(set(found))
 
 
+def enclosing_package(folder: Path) -> Path | None:
+    """The package folder (one with a package.xml) that ``folder`` is or is inside, if any."""
+    for candidate in (folder.absolute(), *folder.absolute().parents):
+        if (candidate / "package.xml").is_file():
+            return candidate
+    return None
+
+
 def check_destination(root: Path, files: Mapping[str, str], *,
                       force: bool) -> tuple[list[str], list[str]]:
     """(missing, kept): the paths to write and the existing ones to leave alone.

@@ -111,7 +111,7 @@ def same_license(left: str, right: str) -> bool:
 # first matching entry wins, so more specific licenses come first.
 _HEADER_PHRASES: tuple[tuple[str, tuple[str, ...], tuple[str, ...]], ...] = (
     ("Apache-2.0", ("licensed under the apache license, version 2.0",), ()),
-    ("BSL-1.0", ("boost software license, version 1.0",), ()),
+    ("BSL-1.0", ("boost software license",), ()),
     ("LGPL-3.0-only", ("gnu lesser general public license", "version 3"), ()),
     ("GPL-3.0-only", ("gnu general public license", "version 3"), ("lesser",)),
     ("BSD-3-Clause", ("redistribution and use in source and binary forms",

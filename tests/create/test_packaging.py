@@ -1,9 +1,10 @@
-"""An installed (non-editable) pkgtool finds its templates: build the wheel, install, create.
+"""An installed (non-editable) pkgtool finds its templates: build, install the wheel, create.
 
-The wheel is built (``uv build``: an isolated PEP 517 build, with setup.py's resource step)
-from a copy of the source (the checkout is never written to) and installed into a fresh venv
-whose only other path is this venv's site-packages (for jinja2 and typer); the command runs
-outside any checkout, so only the packaged templates can be found.
+``python -m build`` (as the README tells users) builds the sdist from a copy of the source (the
+checkout is never written to), then the wheel from that sdist, so a file missing from the sdist
+fails here. The wheel is installed into a fresh venv whose only other path is this venv's
+site-packages (for jinja2 and typer); the command runs outside any checkout, so only the
+packaged templates can be found.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from tests.create.conftest import ALL_KINDS
 pytestmark = pytest.mark.slow
 ROOT = Path(__file__).resolve().parents[2]
 UV = str(Path(sys.executable).parent / "uv")  # the project's installer (scripts/bootstrap.sh)
+DIST = "pkgtool_ros"  # the distribution `pkgtool-ros`, normalised as in file names
 SOURCES = ("pyproject.toml", "setup.py", "MANIFEST.in", "README.md", "pkgtool", "templates",
            "reference_packages")
 
@@ -42,11 +44,15 @@ def test_the_built_wheel_carries_the_templates_and_create_uses_them(tmp_path: Pa
                             ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
         else:
             shutil.copy2(ROOT / name, source / name)
-    _run(UV, "build", "--wheel", "-q", "-o", str(tmp_path / "dist"), str(source), cwd=tmp_path)
-    wheel = next((tmp_path / "dist").glob("pkgtool-*.whl"))
+    _run(sys.executable, "-m", "build", "--installer", "uv", "-o", str(tmp_path / "dist"),
+         str(source), cwd=tmp_path)
+    assert len(list((tmp_path / "dist").glob(f"{DIST}-*.tar.gz"))) == 1
+    wheel = next((tmp_path / "dist").glob(f"{DIST}-*-py3-none-any.whl"))
     names = zipfile.ZipFile(wheel).namelist()
     assert "pkgtool/_resources/templates/package.xml.jinja" in names
     assert "pkgtool/_resources/templates/licenses/Apache-2.0.txt" in names
+    metadata = next(n for n in names if n.endswith(".dist-info/METADATA"))
+    assert "Name: pkgtool-ros" in zipfile.ZipFile(wheel).read(metadata).decode()
 
     venv = tmp_path / "venv"
     _run(sys.executable, "-m", "venv", "--without-pip", str(venv), cwd=tmp_path)

@@ -9,6 +9,7 @@ from pathlib import Path
 
 import pytest
 
+from pkgtool.create.headers import header
 from pkgtool.create.licenses import LICENSES, license_text
 from pkgtool.model.package import load_package
 from tests.create.conftest import ALL_KINDS, OTHER_TYPES
@@ -61,16 +62,32 @@ def test_the_package_has_what_ros2_pkg_create_writes_and_more(create) -> None:
     assert "find_packages(exclude=['test'])" in setup_py
     assert files["setup.cfg"].decode() == (f"[develop]\nscript_dir=$base/lib/{name}\n"
                                            f"[install]\ninstall_scripts=$base/lib/{name}\n")
-    copyright_test = files["test/test_copyright.py"].decode()
-    assert "pytest.importorskip('pkgtool.style.api'" in copyright_test
-    for linter in ("flake8", "pep257"):
+    for linter in ("flake8", "pep257", "copyright"):
         assert f"from ament_{linter}.main import" in files[f"test/test_{linter}.py"].decode()
+    head = header(year=2026, holder="Jane Doe", license_="Apache-2.0", expression="Apache-2.0")
     for path, data in files.items():
         if path.endswith(".py"):
             text = data.decode()
-            assert text.startswith("# Copyright 2026 Jane Doe\n"
-                                   "# SPDX-License-Identifier: Apache-2.0\n"), path
+            assert text.startswith(head + "\n"), path
             ast.parse(text, path)
+
+
+@pytest.mark.parametrize("launch", [True, False])
+def test_the_parameters_file_says_how_its_values_reach_the_nodes(create, launch: bool) -> None:
+    result = create(nodes=("talker:publisher",), config=True, launch=launch)
+    comment = (result.root / "config" / "params.yaml").read_text().split("\ntalker:")[0]
+    assert ("launch/demo_pkg.launch.py" in comment) == launch
+    params_file = "--params-file install/demo_pkg/share/demo_pkg/config/params.yaml"
+    assert (params_file in comment) != launch
+
+
+def test_a_license_ament_copyright_does_not_know_is_checked_by_pkgtool_alone(create) -> None:
+    result = create(license="GPL-2.0-or-later", nodes=("beat:timer",))
+    copyright_test = (result.root / "test" / "test_copyright.py").read_text()
+    assert "from ament_copyright" not in copyright_test
+    assert "pytest.importorskip('pkgtool.style.api'" in copyright_test
+    assert not (result.root / "LICENSE").exists()
+    assert findings(load_package(result.root)) == []
 
 
 def test_output_is_deterministic_byte_for_byte(create, tmp_path: Path) -> None:

@@ -79,15 +79,23 @@ def test_force_refuses_a_file_where_a_folder_belongs(create, tmp_path: Path) -> 
     assert _snapshot(tmp_path) == before
 
 
-def _failing_after(count: int):
+def _failing_after(count: int, error: BaseException | None = None):
     seen: list[str] = []
 
     def hook(relpath: str) -> None:
         seen.append(relpath)
         if len(seen) > count:
-            raise OSError(28, "No space left on device", relpath)
+            raise error or OSError(28, "No space left on device", relpath)
 
     return hook
+
+
+def test_ctrl_c_halfway_leaves_nothing_and_goes_on_to_the_cli(tmp_path: Path) -> None:
+    """The CLI then says "Interrupted: nothing was written" (tests/test_cli_conventions.py)."""
+    with pytest.raises(KeyboardInterrupt):
+        run(request(tmp_path / "ws", nodes=ALL_KINDS),
+            before_write=_failing_after(5, KeyboardInterrupt()))
+    assert list(tmp_path.iterdir()) == []
 
 
 def test_a_failure_halfway_leaves_no_half_written_package(tmp_path: Path) -> None:
@@ -119,8 +127,9 @@ def test_files_get_the_umask_s_permissions(create, tmp_path: Path) -> None:
     assert stat.S_IMODE((result.root / "setup.py").stat().st_mode) == 0o644
 
 
-@pytest.mark.parametrize("bad", ["bad-name", "ok_name"])
-def test_nothing_is_written_for_a_refused_request(tmp_path: Path, bad: str) -> None:
-    result = run(request(tmp_path, bad, license="WTFPL"))
+@pytest.mark.parametrize("bad, values", [("bad-name", {}),
+                                         ("ok_name", {"nodes": ("talker:teleporter",)})])
+def test_nothing_is_written_for_a_refused_request(tmp_path: Path, bad: str, values: dict) -> None:
+    result = run(request(tmp_path, bad, **values))
     assert result.exit_code == ExitCode.USAGE and result.error
     assert list(tmp_path.iterdir()) == []

@@ -15,6 +15,8 @@ import pytest
 from tests.helpers import findings, make_package
 from tests.lint.test_manifest_xsd_oracle import EXPORT, doc, head
 
+pytestmark = pytest.mark.oracle
+
 CATKIN_RULES = ("MAN003", "MAN005", "MAN006", "MAN007", "MAN011", "MAN012", "MAN014")
 
 REJECTED = {

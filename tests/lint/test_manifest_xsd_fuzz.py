@@ -13,10 +13,9 @@ import pytest
 from lxml import etree
 
 from pkgtool.rules.manifest.schema import valid_any_uri
-from tests.lint.test_manifest_xsd_oracle import (EXPORT, XSD_DIR, doc, pkgtool_accepts,
-                                                 xsd_accepts)
+from tests.lint.test_manifest_xsd_oracle import EXPORT, doc, pkgtool_accepts, xsd_accepts
 
-needs_xsd = pytest.mark.skipif(not XSD_DIR.is_dir(), reason="the REP XSDs are not available")
+pytestmark = pytest.mark.oracle
 
 _CANONICAL = [
     "<name>demo_pkg</name>", "<version>1.2.3</version>", "<description>d</description>",
@@ -59,7 +58,6 @@ def _mutant(rng: random.Random) -> str:
     return doc("\n  ".join(elements), fmt=fmt, head="")
 
 
-@needs_xsd
 def test_random_documents_agree_with_xsd(tmp_path: Path) -> None:
     rng = random.Random(149)
     disagreements = []

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
 from typer.testing import CliRunner
 
 from pkgtool.cli import _register, app
@@ -34,6 +35,25 @@ def test_generate_copies_the_package_byte_for_byte(tmp_path: Path) -> None:
         assert _tree(tmp_path / name) == _tree(ROOT / name)
     assert sorted(p.name for p in tmp_path.iterdir()) == ["physical_ai_camera",
                                                           "physical_ai_sensors"]
+
+
+def test_ctrl_c_takes_back_the_packages_already_generated(tmp_path: Path,
+                                                          monkeypatch) -> None:
+    from pkgtool.create import writer
+
+    calls = []
+    real = writer.write_package
+
+    def interrupted_second(target, files):  # type: ignore[no-untyped-def]
+        calls.append(target)
+        if len(calls) == 2:
+            raise KeyboardInterrupt
+        return real(target, files)
+
+    monkeypatch.setattr(writer, "write_package", interrupted_second)
+    with pytest.raises(KeyboardInterrupt):
+        generate(["robot_monitor", "nav_agent"], dest=tmp_path)
+    assert len(calls) == 2 and list(tmp_path.iterdir()) == []
 
 
 def test_generate_all_adds_support_packages_once(tmp_path: Path) -> None:

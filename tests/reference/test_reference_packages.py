@@ -6,6 +6,9 @@ README's main job, with real rclpy in each package's own tests.
 
 from __future__ import annotations
 
+import tempfile
+from pathlib import Path
+
 import pytest
 
 from pkgtool.commands import ExitCode
@@ -14,7 +17,12 @@ from pkgtool.commands.reference import catalog, run_tests
 pytestmark = [pytest.mark.ros, pytest.mark.colcon, pytest.mark.slow]
 
 
-def test_every_reference_package_lints_clean_builds_and_passes_its_tests() -> None:
+def test_every_reference_package_lints_clean_builds_and_passes_its_tests(
+        tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    system_temp = tmp_path / "system-temp"  # this run's own system temp folder, empty
+    system_temp.mkdir()
+    monkeypatch.setenv("TMPDIR", str(system_temp))
+    monkeypatch.setattr(tempfile, "tempdir", None)  # re-read TMPDIR
     stages: list[tuple[str, str]] = []
     result = run_tests([], all_=True, jobs=2, progress=lambda *event: stages.append(event))
     problems = [f"{r.name}: findings={list(r.findings)} built={r.built} "
@@ -27,3 +35,4 @@ def test_every_reference_package_lints_clean_builds_and_passes_its_tests() -> No
         assert (report.name, "passed") in stages
         assert report.seconds > 0
     assert result.workspace is None  # the temporary workspace was removed
+    assert sorted(p.name for p in system_temp.iterdir()) == []  # and nothing else was left

@@ -49,4 +49,4 @@ def test_a_missing_checker_is_one_finding_with_an_install_hint(
     [found] = json.loads(result.output)["findings"]
     assert (found["path"], found["line"]) == ("demo/package.xml", None)
     assert found["message"] == "`pydocstyle` is not installed"
-    assert found["fix"] == 'Install the style checkers: `pip install "pkgtool[style]"`'
+    assert found["fix"] == 'Install the style checkers: `pip install "pkgtool-ros[style]"`'

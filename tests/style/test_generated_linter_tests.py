@@ -70,3 +70,33 @@ def test_a_style_error_fails_the_generated_test_without_ament(
             _run_linter_tests(package, str(tmp_path))
     finally:
         module.write_text(original)
+
+
+STAND_IN = """
+import os
+import sys
+
+
+def main(argv=sys.argv[1:]):
+    with open(os.environ['AMENT_ARGV'], 'w') as out:
+        out.write(repr(argv))
+    return int(os.environ['AMENT_RC'])
+"""
+
+
+@pytest.mark.parametrize("verdict", [0, 1])
+def test_copyright_test_runs_ament_copyright_when_it_is_importable(
+        package: Path, tmp_path: Path, verdict: int) -> None:
+    """The real one has no wheel (its verdicts are in tests/data/ament_copyright): a stand-in
+    with its entry point shows that the generated test calls it and trusts its exit code."""
+    (tmp_path / "ament_copyright").mkdir()
+    (tmp_path / "ament_copyright" / "__init__.py").write_text("")
+    (tmp_path / "ament_copyright" / "main.py").write_text(STAND_IN)
+    argv = tmp_path / "argv"
+    env = {"PATH": str(Path(sys.executable).parent), "PYTHONPATH": str(tmp_path),
+           "AMENT_ARGV": str(argv), "AMENT_RC": str(verdict)}
+    done = subprocess.run([sys.executable, "-m", "pytest", "-q", "-p", "no:cacheprovider",
+                           "test/test_copyright.py"], cwd=package, env=env,
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == verdict, done.stdout + done.stderr
+    assert argv.read_text() == repr([str(package)])

@@ -25,7 +25,7 @@ def tool_hits(package: Package, runner: Runner, keep: Callable[[str], bool]) -> 
         violations = runner(package.root, readable_sources(package))
     except StyleToolMissing as error:
         yield Hit(Span("package.xml" if package.manifest else "."), str(error),
-                  'Install the style checkers: `pip install "pkgtool[style]"`')
+                  'Install the style checkers: `pip install "pkgtool-ros[style]"`')
         return
     for v in violations:
         if keep(v.code):

@@ -29,7 +29,10 @@ from rclpy.parameter import Parameter
 # folder (colcon test runs these tests; nothing may reach the network or ~/.ros).
 os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'OFF'
 os.environ.setdefault('ROS_DOMAIN_ID', '72')
-os.environ.setdefault('ROS_LOG_DIR', tempfile.mkdtemp(prefix='physical_ai_camera-log-'))
+# pkgtool's colcon runs set ROS_LOG_DIR; any other run gets a folder removed at exit.
+if 'ROS_LOG_DIR' not in os.environ:
+    _LOG_DIR = tempfile.TemporaryDirectory(prefix='physical_ai_camera-log-')
+    os.environ['ROS_LOG_DIR'] = _LOG_DIR.name
 
 
 class RosHarness:

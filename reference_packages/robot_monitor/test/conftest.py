@@ -14,7 +14,10 @@ from rclpy.executors import SingleThreadedExecutor
 
 os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'OFF'
 os.environ['ROS_DOMAIN_ID'] = '31'
-os.environ.setdefault('ROS_LOG_DIR', tempfile.mkdtemp(prefix='robot_monitor-ros-log-'))
+# pkgtool's colcon runs set ROS_LOG_DIR; any other run gets a folder removed at exit.
+if 'ROS_LOG_DIR' not in os.environ:
+    _LOG_DIR = tempfile.TemporaryDirectory(prefix='robot_monitor-ros-log-')
+    os.environ['ROS_LOG_DIR'] = _LOG_DIR.name
 
 
 def pytest_configure(config):

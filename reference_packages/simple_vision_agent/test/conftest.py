@@ -15,7 +15,10 @@ from rclpy.executors import MultiThreadedExecutor, SingleThreadedExecutor
 
 os.environ['ROS_AUTOMATIC_DISCOVERY_RANGE'] = 'OFF'
 os.environ['ROS_DOMAIN_ID'] = '35'
-os.environ.setdefault('ROS_LOG_DIR', tempfile.mkdtemp(prefix='simple_vision_agent-ros-log-'))
+# pkgtool's colcon runs set ROS_LOG_DIR; any other run gets a folder removed at exit.
+if 'ROS_LOG_DIR' not in os.environ:
+    _LOG_DIR = tempfile.TemporaryDirectory(prefix='simple_vision_agent-ros-log-')
+    os.environ['ROS_LOG_DIR'] = _LOG_DIR.name
 
 
 def pytest_configure(config):

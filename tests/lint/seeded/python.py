@@ -75,10 +75,10 @@ def goal_status_on_action_client(root: Path) -> None:
 
 @case("PYC005", SRV, "spin_until_future_complete")
 def wait_without_timeout(root: Path) -> None:
-    edit(root, SRV, "        rclpy.spin(node)\n",
+    edit(root, SRV, "        executor.spin()\n",
          "        client = node.create_client(Trigger, 'home')\n"
          "        future = client.call_async(Trigger.Request())\n"
-         "        rclpy.spin_until_future_complete(node, future)\n        rclpy.spin(node)\n")
+         "        rclpy.spin_until_future_complete(node, future)\n        executor.spin()\n")
 
 
 @case("SYN001", TALKER, "print 'publishing'")

@@ -1,0 +1,3 @@
+# Copyright 2026 Jane Doe
+
+"""A module."""
