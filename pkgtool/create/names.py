@@ -44,6 +44,17 @@ def python_module_reason(name: str) -> str | None:
     return None
 
 
+def ros_package_reason(name: str) -> str | None:
+    """Why ``name`` may not be a package name because a released ROS package has it, or None."""
+    from pkgtool.knowledge.rosdistro import DEFAULT_DISTRO, is_released_package
+
+    if not is_released_package(name, DEFAULT_DISTRO):
+        return None
+    return (f"a ROS package of that name is released for {DEFAULT_DISTRO}: next to it (installed "
+            "or in the workspace) colcon, rosdep and Python imports would take one for the "
+            "other. Pick a name of your own (a prefix such as `my_` does it)")
+
+
 def check_name(value: str, what: str) -> str:
     """``value`` if it is a valid REP 144 name usable as a Python module, else CreateError."""
     problem = None
@@ -60,7 +71,7 @@ def check_name(value: str, what: str) -> str:
     elif value in _RESERVED:
         problem = _RESERVED[value]
     elif what == "package name":
-        problem = python_module_reason(value)
+        problem = python_module_reason(value) or ros_package_reason(value)
     if problem:
         raise CreateError(f"Invalid {what} `{value}`: {problem}.")
     return value

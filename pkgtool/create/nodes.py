@@ -171,6 +171,11 @@ def parse_interface(text: str, family: str) -> Interface:
     if match.group(3) in _GENERATED_NAMES:
         raise ValueError(f"The {family} type `{text}` has the name of a class the generated "
                          "code imports from rclpy: rename the type or write the node by hand.")
+    from pkgtool.knowledge.interfaces import type_problem
+
+    problem = type_problem(match.group(1), family, match.group(3))
+    if problem:  # only for packages the Jazzy interface table knows; others are trusted
+        raise ValueError(f"Unknown {family} type `{text}`: {problem}.")
     return Interface(match.group(1), family, match.group(3))
 
 

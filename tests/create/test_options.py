@@ -24,6 +24,18 @@ def test_rep_144_names_are_accepted(tmp_path: Path, name: str) -> None:
     assert validate(request(tmp_path, name)).name == name
 
 
+@pytest.mark.parametrize("name", ["rclpy", "std_msgs", "launch", "turtlesim", "nav2_msgs"])
+def test_names_of_released_ros_packages_are_refused(tmp_path: Path, name: str) -> None:
+    with pytest.raises(CreateError, match=f"Invalid package name `{name}`: a ROS package of "
+                       "that name is released for jazzy"):
+        validate(request(tmp_path, name))
+
+
+def test_types_of_packages_the_table_does_not_know_are_trusted(tmp_path: Path) -> None:
+    plan = validate(request(tmp_path, nodes=("talker:publisher:my_msgs/msg/Anything",)))
+    assert plan.nodes[0].interface.full == "my_msgs/msg/Anything"
+
+
 @pytest.mark.parametrize("name, reason", [
     ("pytest", "`colcon test` runs every package's tests with pytest"),
     ("setuptools", "colcon builds every ament_python package with setuptools"),
@@ -104,6 +116,10 @@ def test_the_default_topic_comes_from_the_type(tmp_path: Path, node: str, topic:
     ("talker:publisher:std_srvs/srv/Trigger", "Invalid msg type"),
     ("beat:timer:std_msgs/msg/String", "uses no interface"),
     ("talker:publisher:my_msgs/msg/Node", "has the name of a class"),
+    ("talker:publisher:std_msgs/msg/NoSuch", "`std_msgs` has no message `NoSuch`"),
+    ("talker:publisher:std_msgs/msg/Strng", "did you mean `std_msgs/msg/String`?"),
+    ("talker:publisher:std_srvs/msg/Trigger", "is a service, not a message"),
+    ("ask:client:std_srvs/srv/Trigr", "did you mean `std_srvs/srv/Trigger`?"),
 ])
 def test_bad_nodes_are_refused(tmp_path: Path, node: str, message: str) -> None:
     with pytest.raises(CreateError, match=message.replace("(", r"\(")):
