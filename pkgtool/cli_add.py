@@ -52,8 +52,8 @@ def node(
         "action-server, action-client, timer; TYPE as in `pkgtool create --node`.")],
     path: _PATH = Path("."),
     launch_file: Annotated[Optional[str], typer.Option(
-        metavar="FILE", help="The launch file (package-relative) to start the node from, when the package "
-        "has several.", show_default=False)] = None,
+        metavar="FILE", help="The launch file (package-relative) to start the node from, "
+        "when the package has several.", show_default=False)] = None,
     dry_run: _DRY = False,
 ) -> None:
     """Add a node: its module and test, console script, dependencies and launch entry."""
@@ -67,7 +67,8 @@ def node(
 def launch(
     path: _PATH = Path("."),
     name: Annotated[Optional[str], typer.Option(
-        metavar="FILE", help="File name under launch/ [<package>.launch.py].", show_default=False)] = None,
+        metavar="FILE", help="File name under launch/ [<package>.launch.py].",
+        show_default=False)] = None,
     dry_run: _DRY = False,
 ) -> None:
     """Add a launch file that starts the package's nodes, and install it."""

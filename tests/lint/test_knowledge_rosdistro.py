@@ -1,13 +1,18 @@
 """The shipped rosdistro tables against the shared ros/rosdistro files, read here independently.
 
-The files are ``../shared/data/rosdistro`` beside the repository (always present on the
-project's machines and in CI); the tests read them with plain PyYAML, not with the generator.
+The files are ``shared/data/rosdistro`` beside the checkout, or beside the repository a clean
+clone was made from (CI clones the project's repository elsewhere), or ``$PKGTOOL_SHARED_DIR``.
+They cannot ship with pkgtool (only tables generated from them do), so where none of those
+exists the module is skipped with that reason. The tests read them with plain PyYAML, not with
+the generator.
 """
 
 from __future__ import annotations
 
 import importlib.metadata
+import os
 import re
+import subprocess
 from functools import cache
 from pathlib import Path
 
@@ -18,7 +23,23 @@ from pkgtool.knowledge import rosdistro
 from pkgtool.knowledge.generate_rosdistro import tables
 from pkgtool.knowledge.tables import DATA, DISTROS
 
-SHARED = Path(__file__).resolve().parents[2].parent / "shared" / "data" / "rosdistro"
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _shared_rosdistro() -> Path | None:
+    places = [Path(os.environ["PKGTOOL_SHARED_DIR"])] if "PKGTOOL_SHARED_DIR" in os.environ else []
+    places.append(ROOT.parent / "shared")
+    origin = subprocess.run(["git", "-C", str(ROOT), "config", "--get", "remote.origin.url"],
+                            capture_output=True, text=True, check=False).stdout.strip()
+    if origin and Path(origin).is_dir():
+        places.append(Path(origin).resolve().parent / "shared")
+    return next((p / "data" / "rosdistro" for p in places
+                 if (p / "data" / "rosdistro" / "jazzy" / "distribution.yaml").is_file()), None)
+
+
+SHARED = _shared_rosdistro() or Path("shared-data-not-found")
+pytestmark = pytest.mark.skipif(_shared_rosdistro() is None, reason=(
+    "no shared/data/rosdistro beside the checkout or its origin, and no $PKGTOOL_SHARED_DIR"))
 
 
 @cache
