@@ -25,6 +25,7 @@ class Format(str, Enum):
     JUNIT = "junit"
     GRADESCOPE = "gradescope"
     CSV = "csv"
+    HTML = "html"
 
 
 def _fail(*messages: str) -> typer.Exit:
@@ -107,4 +108,5 @@ def register(app: typer.Typer) -> None:
     app.command("grade", options_metavar="--rubric FILE [OPTIONS]", epilog=examples(
         "pkgtool grade --init-rubric rubric.toml     # a commented example to start from",
         "pkgtool grade --rubric rubric.toml submissions/alice.zip",
-        "pkgtool grade -r rubric.toml --batch submissions/ -j 2 -f csv -o grades.csv"))(grade)
+        "pkgtool grade -r rubric.toml --batch submissions/ -j 2 -f csv -o grades.csv",
+        "pkgtool grade -r rubric.toml --batch submissions/ -f html -o report.html"))(grade)

@@ -4,6 +4,7 @@
 set -euo pipefail
 ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 source "$ROOT/scripts/bootstrap.sh"
+bash "$ROOT/scripts/system-packages.sh"
 cd "$ROOT"
 jobs="${PKGTOOL_TEST_JOBS:-auto}"
 set +e

@@ -16,6 +16,7 @@ import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
 
+import lxml.html
 import pytest
 
 from pkgtool import testresults as results
@@ -40,6 +41,9 @@ def assert_harmless(text: str, fmt: str) -> None:
         assert not FORGED.search(text), (fmt, FORGED.search(text))
     elif fmt == "junit":
         ET.fromstring(text)
+    elif fmt == "html":
+        page = lxml.html.fromstring(text)
+        assert not page.xpath("//script|//img|//iframe|//*[@onerror]|//*[@src]"), fmt
     elif fmt == "csv":
         for row in csv.reader(io.StringIO(text)):
             assert not any(c[:1].isspace() or c.lstrip()[:1] in "=+-@" for c in row if c

@@ -1,4 +1,4 @@
-"""Render grading results: text, JSON, JUnit XML, Gradescope results.json, CSV gradebook.
+"""Render grading results: text, JSON, JUnit XML, Gradescope results.json, CSV, HTML.
 
 Each format is a pure function ``render(results, *, rubric) -> str`` in the module of its name,
 written with the format's one writer in :mod:`pkgtool.report`; :mod:`.package_tests` renders
@@ -14,7 +14,7 @@ from collections.abc import Sequence
 from pkgtool.grade.results import SubmissionResult
 from pkgtool.grade.rubric import Rubric
 
-FORMATS = ("text", "json", "junit", "gradescope", "csv")
+FORMATS = ("text", "json", "junit", "gradescope", "csv", "html")
 
 
 def render(fmt: str, results: Sequence[SubmissionResult], *, rubric: Rubric) -> str:
