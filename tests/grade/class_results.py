@@ -1,4 +1,4 @@
-"""A graded class written by hand for the class-report tests: scores, lint feedback, hostile text."""
+"""A graded class written by hand for the class-report tests (scores, lint, hostile text)."""
 
 from __future__ import annotations
 
