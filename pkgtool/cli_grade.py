@@ -54,6 +54,10 @@ def grade(
     init_rubric: Annotated[Optional[Path], typer.Option(
         help="Write a commented example rubric (and hidden_tests/) to this file and exit.",
         dir_okay=False, show_default=False, metavar="FILE")] = None,
+    export_gradescope: Annotated[Optional[Path], typer.Option(
+        help="Write a Gradescope autograder bundle (setup.sh, run_autograder, the rubric and "
+        "its hidden tests, pkgtool's wheel, the locked ROS 2 wheels' list) for --rubric to "
+        "this .zip and exit.", dir_okay=False, show_default=False, metavar="FILE")] = None,
 ) -> None:
     """Grade student submissions against a rubric, each built and tested in a sandbox.
 
@@ -70,6 +74,12 @@ def grade(
         raise typer.Exit(0)
     if rubric is None:
         raise _fail("Give the rubric with --rubric FILE (create one with --init-rubric FILE).")
+    if export_gradescope is not None:
+        done = command.export_gradescope(Path(rubric), export_gradescope)
+        if done.errors:
+            raise _fail(*done.errors)
+        typer.echo(f"wrote {export_gradescope}: {', '.join(done.written)}", err=True)
+        raise typer.Exit(0)
     check_output(output, "grade")
     result = _run(command, submissions or [], rubric, batch, jobs, fmt)
     if result.errors:
@@ -109,4 +119,5 @@ def register(app: typer.Typer) -> None:
         "pkgtool grade --init-rubric rubric.toml     # a commented example to start from",
         "pkgtool grade --rubric rubric.toml submissions/alice.zip",
         "pkgtool grade -r rubric.toml --batch submissions/ -j 2 -f csv -o grades.csv",
-        "pkgtool grade -r rubric.toml --batch submissions/ -f html -o report.html"))(grade)
+        "pkgtool grade -r rubric.toml --batch submissions/ -f html -o report.html",
+        "pkgtool grade -r rubric.toml --export-gradescope autograder.zip"))(grade)

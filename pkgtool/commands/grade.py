@@ -16,7 +16,7 @@ from pkgtool.commands import ExitCode
 from pkgtool.grade.results import SubmissionResult
 from pkgtool.grade.rubric import Rubric
 
-__all__ = ["GradeResult", "init_rubric", "run"]
+__all__ = ["GradeResult", "export_gradescope", "init_rubric", "run"]
 
 
 @dataclass(frozen=True, slots=True)
@@ -43,6 +43,20 @@ def init_rubric(path: Path) -> GradeResult:
         return GradeResult(ExitCode.USAGE, errors=(
             f"Cannot write `{path}`: {error.strerror or error}. Choose another folder.",))
     return GradeResult(ExitCode.OK, written=tuple(map(str, written)))
+
+
+def export_gradescope(rubric: Path, output: Path) -> GradeResult:
+    """Write the Gradescope autograder bundle for ``rubric`` to ``output``."""
+    from pkgtool.grade.gradescope_bundle import BundleError, build
+
+    try:
+        written = build(rubric, output)
+    except BundleError as error:
+        return GradeResult(ExitCode.USAGE, errors=(str(error),))
+    except OSError as error:
+        return GradeResult(ExitCode.USAGE, errors=(
+            f"Cannot write `{output}`: {error.strerror or error}. Choose another folder.",))
+    return GradeResult(ExitCode.OK, written=tuple(written))
 
 
 def run(submissions: Sequence[str], *, rubric: str, batch: bool = False, jobs: int = 1,

@@ -21,6 +21,8 @@ def render(results: Sequence[SubmissionResult], *, rubric: Rubric) -> str:
         raise ValueError("the Gradescope format holds exactly one submission")
     result = results[0]
     summary = f"Graded by pkgtool {__version__} with the rubric `{rubric.title}`."
+    if result.isolation:
+        summary += f"\nSandbox: {result.isolation}"
     document = {
         "score": result.score,
         "execution_time": round(result.seconds),
