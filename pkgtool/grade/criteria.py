@@ -139,19 +139,29 @@ def _hidden(criterion: Criterion, job: Job) -> Outcome:
     assert criterion.path is not None
     run, summary = job.hidden(criterion.path)
     if not summary.ran:
-        return 0.0, [summary.problem or "no instructor test ran", *_limit(run)], \
-            _tail(run.output)
+        output = "" if criterion.details == "summary" else _tail(run.output)
+        return 0.0, [summary.problem or "no instructor test ran", *_limit(run)], output
     return _test_outcome(criterion, run, summary)
 
 
 def _test_outcome(criterion: Criterion, run: ColconRun, summary: TestSummary) -> Outcome:
     lines = [summary.describe(), *_limit(run)]
     failing = [c for c in summary.cases if c.outcome in ("failed", "error")]
-    lines += [f"{c.outcome.upper()} {c.name}: {(c.message.splitlines() or [''])[0]}"
+    lines += [f"{c.outcome.upper()} {c.name}: {_first_line(c.message)}"
               for c in failing[:MAX_LINES]]
-    output = "\n".join(f"{c.outcome.upper():7} {c.name} ({c.seconds:.2f} s)"
-                       + (f"\n{c.details}" if c.details else "") for c in summary.cases)
+    if criterion.details == "summary":
+        output = "\n".join(f"{c.outcome.upper():7} {c.name}"
+                           + (f"\n        {_first_line(c.message)}" if c in failing else "")
+                           for c in summary.cases)
+    else:
+        output = "\n".join(f"{c.outcome.upper():7} {c.name} ({c.seconds:.2f} s)"
+                           + (f"\n{c.details}" if c.details else "") for c in summary.cases)
     return _credit(criterion, summary.passed, summary.ran), lines, output
+
+
+def _first_line(message: str) -> str:
+    """The exception and its message, without pytest's assertion explanation or source."""
+    return (message.splitlines() or [""])[0]
 
 
 def _credit(criterion: Criterion, good: int, total: int) -> float:

@@ -15,14 +15,15 @@ from pkgtool.grade.sandbox import Limits
 KINDS = ("build", "executables", "lint", "style", "tests", "hidden")
 VISIBILITIES = ("visible", "hidden", "after_due_date", "after_published")
 SEVERITIES = ("error", "warning", "info")
+DETAILS = ("full", "summary")
 _COMMON = {"kind", "name", "points", "visibility", "feedback"}
 _KEYS = {
     "build": set(),
     "executables": {"names", "partial"},
     "lint": {"select", "ignore", "per_finding", "min_severity"},
     "style": {"select", "ignore", "per_finding", "min_severity"},
-    "tests": {"partial", "min_tests", "exclude"},
-    "hidden": {"path", "partial"},
+    "tests": {"partial", "min_tests", "exclude", "details"},
+    "hidden": {"path", "partial", "details"},
 }
 _DEFAULT_NAMES = {"build": "Builds with colcon", "executables": "Executables installed",
                   "lint": "Lint", "style": "Style (ament flake8 and pep257)",
@@ -56,6 +57,7 @@ class Criterion:
     min_tests: int = 1
     exclude: tuple[str, ...] = ()
     path: Path | None = None
+    details: str = "full"
 
 
 @dataclass(frozen=True, slots=True)
@@ -136,6 +138,8 @@ def _criterion(entry: dict[str, Any], base: Path, where: str) -> Criterion:
             values[key] = _strings(values[key], f"{where}: `{key}`")
     if values.get("min_severity", "warning") not in SEVERITIES:
         raise RubricError(f"{where}: `min_severity` must be one of {', '.join(SEVERITIES)}.")
+    if values.get("details", "full") not in DETAILS:
+        raise RubricError(f"{where}: `details` must be one of {', '.join(DETAILS)}.")
     if kind == "style":
         values.setdefault("select", ("STY",))
     if kind in ("lint", "style"):
