@@ -9,6 +9,7 @@ from pathlib import Path
 
 from pkgtool.grade.extract import is_archive
 from pkgtool.grade.grader import grade_submission, not_graded
+from pkgtool.grade.lms import lms_submission
 from pkgtool.grade.results import SubmissionResult
 from pkgtool.grade.rubric import Rubric
 
@@ -20,16 +21,26 @@ def expand(paths: Sequence[Path], *, batch: bool) -> list[Item]:
     """Submissions named by ``paths``; with ``batch`` each is a folder of submissions.
 
     In a batch folder every visible sub-folder and archive is one submission, labelled with
-    its name (the file name without the archive suffix).
+    its name (the file name without the archive suffix), or by student for Moodle and Canvas
+    downloads (:mod:`pkgtool.grade.lms`). A label seen twice gets ``-2``, ``-3``...
     """
     if not batch:
         return [(_label(p), p) for p in paths]
-    items = []
+    items: list[Item] = []
     for folder in paths:
         for entry in sorted(folder.iterdir()):
             if not entry.name.startswith(".") and (entry.is_dir() or is_archive(entry)):
-                items.append((_label(entry), entry))
-    return items
+                items.append(lms_submission(entry) or (_label(entry), entry))
+    return _unique(items)
+
+
+def _unique(items: list[Item]) -> list[Item]:
+    seen: dict[str, int] = {}
+    unique = []
+    for label, path in items:
+        seen[label] = seen.get(label, 0) + 1
+        unique.append((label if seen[label] == 1 else f"{label}-{seen[label]}", path))
+    return unique
 
 
 def _label(path: Path) -> str:

@@ -1,0 +1,38 @@
+"""Submissions as Moodle and Canvas download them, labelled by student.
+
+Moodle's "Download all submissions", unpacked, holds one folder per student named
+``Full Name_123456_assignsubmission_file_`` with the uploaded files inside. Canvas's
+``submissions.zip``, unpacked, holds one file per student named
+``lastfirst_[LATE_]123456_7890123_original-name.zip``. Both become one submission labelled
+``<name>_<id>``; any other entry keeps the plain label of :mod:`pkgtool.grade.batch`.
+"""
+
+from __future__ import annotations
+
+import re
+from pathlib import Path
+
+from pkgtool.grade.extract import is_archive
+
+_MOODLE = re.compile(r"(?P<name>.+?)_(?P<id>\d+)_assignsubmission_[a-z]+_?")
+_CANVAS = re.compile(r"(?P<name>[A-Za-z0-9-]+?)_(?:LATE_)?(?P<id>\d+)_\d+_.+", re.IGNORECASE)
+
+
+def lms_submission(entry: Path) -> tuple[str, Path] | None:
+    """``(label, path)`` when ``entry`` is a Moodle student folder or a Canvas file, else None.
+
+    A Moodle folder holding exactly one archive (and nothing else visible) is graded as that
+    archive; a folder of loose files is graded as the folder.
+    """
+    if entry.is_dir() and not entry.is_symlink():
+        found = _MOODLE.fullmatch(entry.name)
+        if found is None:
+            return None
+        visible = [e for e in entry.iterdir() if not e.name.startswith(".")]
+        only = visible[0] if len(visible) == 1 else None
+        graded = only if only is not None and only.is_file() and is_archive(only) else entry
+        return f"{found['name']}_{found['id']}", graded
+    found = _CANVAS.fullmatch(entry.name)
+    if found is None or not is_archive(entry):
+        return None
+    return f"{found['name']}_{found['id']}", entry
