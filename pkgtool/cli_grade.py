@@ -58,6 +58,9 @@ def grade(
         help="Write a Gradescope autograder bundle (setup.sh, run_autograder, the rubric and "
         "its hidden tests, pkgtool's wheel, the locked ROS 2 wheels' list) for --rubric to "
         "this .zip and exit.", dir_okay=False, show_default=False, metavar="FILE")] = None,
+    cache: Annotated[Optional[str], typer.Option(
+        help="Reuse results stored in this folder; grade only submissions and criteria that "
+        "changed.", show_default=False, metavar="DIR")] = None,
 ) -> None:
     """Grade student submissions against a rubric, each built and tested in a sandbox.
 
@@ -81,7 +84,7 @@ def grade(
         typer.echo(f"wrote {export_gradescope}: {', '.join(done.written)}", err=True)
         raise typer.Exit(0)
     check_output(output, "grade")
-    result = _run(command, submissions or [], rubric, batch, jobs, fmt)
+    result = _run(command, submissions or [], rubric, batch, jobs, fmt, cache)
     if result.errors:
         raise _fail(*result.errors)
     from pkgtool.grade.report import render
@@ -92,7 +95,7 @@ def grade(
 
 
 def _run(command, submissions: list[str], rubric: str, batch: bool,  # type: ignore[no-untyped-def]
-         jobs: int, fmt: Format) -> GradeResult:
+         jobs: int, fmt: Format, cache: str | None = None) -> GradeResult:
     """Grade, with a progress bar on an interactive stderr when there are several."""
     from rich.console import Console
     from rich.markup import escape
@@ -108,7 +111,7 @@ def _run(command, submissions: list[str], rubric: str, batch: bool,  # type: ign
     task = progress.add_task("", total=None)
     with progress:
         return command.run(
-            submissions, rubric=rubric, batch=batch, jobs=jobs,
+            submissions, rubric=rubric, batch=batch, jobs=jobs, cache=cache,
             on_start=lambda total: progress.update(task, total=total),
             on_done=lambda r: progress.update(task, advance=1, description=escape(line(r.label))))
 

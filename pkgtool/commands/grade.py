@@ -60,12 +60,13 @@ def export_gradescope(rubric: Path, output: Path) -> GradeResult:
 
 
 def run(submissions: Sequence[str], *, rubric: str, batch: bool = False, jobs: int = 1,
-        cwd: Path | None = None, mode: str | None = None,
+        cwd: Path | None = None, mode: str | None = None, cache: str | None = None,
         on_start: Callable[[int], None] | None = None,
         on_done: Callable[[SubmissionResult], None] | None = None) -> GradeResult:
     """Grade ``submissions`` (with ``batch``: folders of them) against the ``rubric`` file.
 
-    ``on_start`` hears how many submissions will be graded, ``on_done`` each result.
+    ``on_start`` hears how many submissions will be graded, ``on_done`` each result;
+    ``cache`` is a folder of stored results to reuse (:mod:`pkgtool.grade.cache`).
     """
     from pkgtool.grade.batch import expand, grade_all
     from pkgtool.grade.rubric import RubricError, load_rubric
@@ -88,5 +89,6 @@ def run(submissions: Sequence[str], *, rubric: str, batch: bool = False, jobs: i
     items = expand(paths, batch=batch)
     if on_start:
         on_start(len(items))
-    results = grade_all(items, loaded, jobs=max(1, jobs), mode=mode, on_done=on_done)
+    results = grade_all(items, loaded, jobs=max(1, jobs), mode=mode, on_done=on_done,
+                        cache=here / cache if cache else None)
     return GradeResult(ExitCode.OK, tuple(results), loaded)

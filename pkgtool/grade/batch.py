@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import multiprocessing
+from functools import partial
 from collections.abc import Callable, Sequence
 from concurrent.futures import Future, ProcessPoolExecutor, as_completed
 from pathlib import Path
@@ -52,21 +53,29 @@ def _label(path: Path) -> str:
 
 
 def grade_all(items: Sequence[Item], rubric: Rubric, *, jobs: int = 1, mode: str | None = None,
-              on_done: Callable[[SubmissionResult], None] | None = None
-              ) -> list[SubmissionResult]:
-    """Grade ``items`` (in their order in the result); ``on_done`` hears of each as it ends."""
+              on_done: Callable[[SubmissionResult], None] | None = None,
+              cache: Path | None = None) -> list[SubmissionResult]:
+    """Grade ``items`` (in their order in the result); ``on_done`` hears of each as it ends.
+
+    With ``cache`` (a folder), results stored there are reused (:mod:`pkgtool.grade.cache`).
+    """
     notify = on_done or (lambda _: None)
+    grade: Callable[..., SubmissionResult] = grade_submission
+    if cache is not None:
+        from pkgtool.grade.cache import grade_cached
+
+        grade = partial(grade_cached, folder=cache)
     if jobs <= 1 or len(items) <= 1:
         results = []
         for slot, (label, path) in enumerate(items):
-            results.append(grade_submission(path, rubric, label=label, mode=mode))
+            results.append(grade(path, rubric, label=label, mode=mode))
             notify(results[-1])
         return results
     done: dict[int, SubmissionResult] = {}
     context = multiprocessing.get_context("spawn")
     with ProcessPoolExecutor(max_workers=jobs, mp_context=context) as pool:
         futures: dict[Future[SubmissionResult], int] = {
-            pool.submit(grade_submission, path, rubric, label=label, mode=mode): slot
+            pool.submit(grade, path, rubric, label=label, mode=mode): slot
             for slot, (label, path) in enumerate(items)}
         for future in as_completed(futures):
             slot = futures[future]
