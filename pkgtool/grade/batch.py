@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-import multiprocessing
 from collections.abc import Callable, Sequence
-from concurrent.futures import Future, ProcessPoolExecutor, as_completed
+from functools import partial
 from pathlib import Path
 
 from pkgtool.grade.extract import is_archive
 from pkgtool.grade.grader import grade_submission, not_graded
+from pkgtool.grade.jobs import Task, run_tasks
 from pkgtool.grade.results import SubmissionResult
 from pkgtool.grade.rubric import Rubric
 
@@ -19,15 +19,16 @@ Item = tuple[str, Path]
 def expand(paths: Sequence[Path], *, batch: bool) -> list[Item]:
     """Submissions named by ``paths``; with ``batch`` each is a folder of submissions.
 
-    In a batch folder every visible sub-folder and archive is one submission, labelled with
-    its name (the file name without the archive suffix).
+    In a batch folder every visible sub-folder, archive and link is one submission, labelled
+    with its name (the file name without the archive suffix); a link is refused when graded.
     """
     if not batch:
         return [(_label(p), p) for p in paths]
     items = []
     for folder in paths:
         for entry in sorted(folder.iterdir()):
-            if not entry.name.startswith(".") and (entry.is_dir() or is_archive(entry)):
+            if not entry.name.startswith(".") and (entry.is_symlink() or entry.is_dir()
+                                                    or is_archive(entry)):
                 items.append((_label(entry), entry))
     return items
 
@@ -43,31 +44,26 @@ def _label(path: Path) -> str:
 def grade_all(items: Sequence[Item], rubric: Rubric, *, jobs: int = 1, mode: str | None = None,
               on_done: Callable[[SubmissionResult], None] | None = None
               ) -> list[SubmissionResult]:
-    """Grade ``items`` (in their order in the result); ``on_done`` hears of each as it ends."""
-    notify = on_done or (lambda _: None)
-    if jobs <= 1 or len(items) <= 1:
-        results = []
-        for slot, (label, path) in enumerate(items):
-            results.append(grade_submission(path, rubric, label=label, mode=mode))
-            notify(results[-1])
-        return results
-    done: dict[int, SubmissionResult] = {}
-    context = multiprocessing.get_context("spawn")
-    with ProcessPoolExecutor(max_workers=jobs, mp_context=context) as pool:
-        futures: dict[Future[SubmissionResult], int] = {
-            pool.submit(grade_submission, path, rubric, label=label, mode=mode): slot
-            for slot, (label, path) in enumerate(items)}
-        for future in as_completed(futures):
-            slot = futures[future]
-            try:
-                done[slot] = future.result()
-            except Exception as crash:  # noqa: BLE001 - a dead worker fails its job only
-                done[slot] = _crashed(items[slot], rubric, crash)
-            notify(done[slot])
-    return [done[slot] for slot in range(len(items))]
+    """Grade ``items`` (in their order in the result); ``on_done`` hears of each as it ends.
+
+    Each submission is graded in a process of its own (:mod:`pkgtool.grade.jobs`) under the
+    deadline of :func:`deadline`.
+    """
+    tasks = [Task(grade_submission, (path, rubric, label, mode), deadline(rubric),
+                  partial(_failed, label, str(path), rubric), rubric.limits.memory_mb + 2048)
+             for label, path in items]
+    return run_tasks(tasks, jobs=jobs, on_done=on_done)
 
 
-def _crashed(item: Item, rubric: Rubric, crash: Exception) -> SubmissionResult:
-    error = f"internal error: the grading process died ({type(crash).__name__}: {crash})"
-    return SubmissionResult(item[0], str(item[1]), 0.0, rubric.max_score,
-                            not_graded(rubric, error), error=error)
+def deadline(rubric: Rubric) -> float:
+    """Seconds one submission may take in all: every step at its limit, plus a margin."""
+    steps = 2 + sum(1 for c in rubric.criteria if c.kind in ("tests", "hidden"))
+    probes = sum(len(c.names) for c in rubric.criteria if c.kind == "executables")
+    return steps * rubric.limits.timeout + probes * min(rubric.test_timeout,
+                                                        rubric.limits.timeout) + 120
+
+
+def _failed(label: str, path: str, rubric: Rubric, reason: str) -> SubmissionResult:
+    error = f"not graded: {reason}"
+    return SubmissionResult(label, path, 0.0, rubric.max_score, not_graded(rubric, error),
+                            error=error)
