@@ -20,33 +20,14 @@ HIDDEN_TESTS = 4
 RUBRIC = """\
 title = "talker assignment under attack"
 package = "talker_pkg"
-
-[limits]
-timeout = 120
-test_timeout = 60
-processes = 128
-memory_mb = 1024
-output_kb = 64
-disk_mb = {disk_mb}
-
-[[criteria]]
-kind = "build"
-points = 1
-
-[[criteria]]
-kind = "executables"
-points = 1
-names = ["talker"]
-
-[[criteria]]
-kind = "tests"
-points = 1
-min_tests = 1
-
-[[criteria]]
-kind = "hidden"
-points = {hidden_points}
-path = "{hidden}"
+limits = {{ timeout = 120, test_timeout = 60, processes = 128, memory_mb = 1024, output_kb = 64, \
+disk_mb = {disk_mb} }}
+criteria = [
+  {{ kind = "build", points = 1 }},
+  {{ kind = "executables", points = 1, names = ["talker"] }},
+  {{ kind = "tests", points = 1, min_tests = 1 }},
+  {{ kind = "hidden", points = {hidden_points}, path = "{hidden}" }},
+]
 """
 
 WRONG = synthetic.GREET.replace("f'Hello, {name}!'", "'Hi'")
@@ -262,6 +243,8 @@ def variants(bob: Path) -> dict[str, dict[str, str]]:
         "forger": cheater(**{"talker_pkg/talker.py": FORGER}),
         "spoof_probe": cheater(**{"talker_pkg/talker.py": SPOOF_PROBE}),
         "fifo_report": {**synthetic.correct(), "test/conftest.py": FIFO_REPORT},
+        "printing_setup": {**synthetic.correct(), "setup.py": "print('hello from setup.py')\n"
+                           + synthetic.correct()["setup.py"]},
     }
 
 

@@ -129,6 +129,13 @@ def test_an_archive_cannot_write_outside_the_job(batch: Batch) -> None:
     assert sorted(p.name for p in victim.parent.iterdir()) == [victim.name]
 
 
+def test_output_of_setup_py_gets_a_precise_reason(batch: Batch) -> None:
+    entry = batch["graded"]["printing_setup"]
+    feedback = "\n".join(_criterion(entry, "build")["feedback"])
+    assert "setup.py printed to standard output (`hello from setup.py`)" in feedback, feedback
+    assert "internal error" not in json.dumps(entry)
+
+
 def test_a_fifo_for_a_report_does_not_hang_the_grader(batch: Batch) -> None:
     entry = batch["graded"]["fifo_report"]
     tests = _criterion(entry, "tests")

@@ -13,6 +13,7 @@ from typing import Any
 
 import pytest
 
+from pkgtool.grade.jail import jail_support
 from pkgtool.grade.rubric import Rubric, load_rubric
 from pkgtool.grade.sandbox import Limits, sandbox
 from pkgtool.grade.sources import tree_digest
@@ -94,8 +95,10 @@ def test_a_correct_submission_gets_full_marks(batch: Batch, label: str) -> None:
     entry = batch["graded"][label]
     assert entry["score"] == entry["max_score"] == batch["rubric"].max_score, \
         json.dumps(entry, indent=1)
-    assert "unprivileged uid" in entry["isolation"] or "namespaces" in entry["isolation"] \
-        or entry["isolation"].startswith("no namespaces")
+    expected = {"root": "namespaces: mount, net (loopback only), pid, ipc, uts, cgroup",
+                "userns": "namespaces: user, mount, net (loopback only), pid, ipc, uts, cgroup",
+                "none": "no namespaces"}[jail_support().mode]
+    assert entry["isolation"].startswith(expected), entry["isolation"]
 
 
 def test_a_conftest_or_setup_cfg_of_the_submission_cannot_touch_instructor_tests(
