@@ -163,11 +163,14 @@ def test_a_module_that_hangs_when_imported_costs_its_executable_only(batch: Batc
 def test_writing_outside_the_package_changes_nothing(batch: Batch) -> None:
     entry = batch["graded"]["writes_outside"]
     writers = 3  # the variant adds three tests that write outside the job
+    # in a jail /tmp is the job's own: that write succeeds there and never reaches the machine
+    jailed = jail_support().mode != "none"
+    failing = writers - 1 if jailed else writers
     assert _criterion(entry, "tests")["score"] == round(
-        _points(batch, "tests") * OWN_TESTS / (OWN_TESTS + writers), 2)
+        _points(batch, "tests") * (OWN_TESTS + writers - failing) / (OWN_TESTS + writers), 2)
     feedback = _feedback(entry, "tests")
-    assert feedback.count("Read-only file system") + feedback.count("Permission denied") \
-        == writers
+    assert feedback.count("FAILED talker_pkg.test.test_escape.") == failing, feedback
+    assert ("test_escape.test_writes_to_tmp" in feedback) is not jailed, feedback
     assert not any(marker.exists() for marker in batch["markers"].values())
 
 
