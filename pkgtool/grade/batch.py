@@ -27,8 +27,8 @@ def expand(paths: Sequence[Path], *, batch: bool) -> list[Item]:
     items = []
     for folder in paths:
         for entry in sorted(folder.iterdir()):
-            if not entry.name.startswith(".") and (entry.is_symlink() or entry.is_dir()
-                                                    or is_archive(entry)):
+            wanted = entry.is_symlink() or entry.is_dir() or is_archive(entry)
+            if wanted and not entry.name.startswith("."):
                 items.append((_label(entry), entry))
     return items
 

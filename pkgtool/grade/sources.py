@@ -21,7 +21,7 @@ from typing import BinaryIO
 
 from pkgtool.grade.extract import ExtractLimits, SubmissionError
 from pkgtool.safe_fs import (MB, Entry, TreeWriter, UnsafeFile, lexical_target, open_path,
-                              walk_tree)
+                             walk_tree)
 from pkgtool.model.package import load_package
 from pkgtool.workspace import IGNORE_MARKERS, discover
 

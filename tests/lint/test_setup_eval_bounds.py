@@ -20,7 +20,8 @@ import pytest
 from tests.helpers import MINIMAL_MANIFEST, write_tree
 
 LIMIT = 768 * 1024 * 1024
-DEEP = tuple("/".join(f"d{b}" for b in bits) + "/f.py" for bits in itertools.product("ab", repeat=10))
+DEEP = tuple("/".join(f"d{b}" for b in bits) + "/f.py"
+             for bits in itertools.product("ab", repeat=10))
 ATTACKS = {
     "format": ("name", "", "name='{:>1500000000}'.format('x')"),
     "f_string": ("name", "", "name=f'{\"x\":>{1500000000}}'"),
