@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 import sys
 from enum import Enum
 from pathlib import Path
@@ -15,6 +16,8 @@ from pkgtool.commands import ExitCode
 
 if TYPE_CHECKING:
     from pkgtool.commands.grade import GradeResult
+    from pkgtool.grade.results import SubmissionResult
+    from pkgtool.grade.rubric import Rubric
 
 
 class Format(str, Enum):
@@ -26,6 +29,20 @@ class Format(str, Enum):
     GRADESCOPE = "gradescope"
     CSV = "csv"
     HTML = "html"
+
+
+class SandboxMode(str, Enum):
+    """Sandbox modes (see docs/grading.md): the strongest available, or one forced."""
+
+    AUTO = "auto"
+    ROOT = "root"
+    USERNS = "userns"
+    NONE = "none"
+
+
+SANDBOX_HELP = ("Isolation of the builds and tests: auto (the strongest this machine allows), "
+                "root (namespaces, own uid, cgroups), userns (namespaces without root), or "
+                "none (limits and a process group only).")
 
 
 def _fail(*messages: str) -> typer.Exit:
@@ -61,10 +78,12 @@ def grade(
     cache: Annotated[Optional[str], typer.Option(
         help="Reuse results stored in this folder; grade only submissions and criteria that "
         "changed.", show_default=False, metavar="DIR")] = None,
+    sandbox: Annotated[SandboxMode, typer.Option(help=SANDBOX_HELP)] = SandboxMode.AUTO,
 ) -> None:
     """Grade student submissions against a rubric, each built and tested in a sandbox.
 
-    Exit codes: 0 graded (whatever the scores), 2 usage error (bad rubric, missing path).
+    With --output the report file is rewritten as each submission finishes. Exit codes:
+    0 graded (whatever the scores), 2 usage error (bad rubric, missing path).
     """
     from pkgtool.commands import grade as command
 
@@ -84,7 +103,8 @@ def grade(
         typer.echo(f"wrote {export_gradescope}: {', '.join(done.written)}", err=True)
         raise typer.Exit(0)
     check_output(output, "grade")
-    result = _run(command, submissions or [], rubric, batch, jobs, fmt, cache)
+    mode = None if sandbox is SandboxMode.AUTO else sandbox.value
+    result = _run(command, submissions or [], rubric, batch, jobs, fmt, mode, output, cache)
     if result.errors:
         raise _fail(*result.errors)
     from pkgtool.grade.report import render
@@ -95,7 +115,8 @@ def grade(
 
 
 def _run(command, submissions: list[str], rubric: str, batch: bool,  # type: ignore[no-untyped-def]
-         jobs: int, fmt: Format, cache: str | None = None) -> GradeResult:
+         jobs: int, fmt: Format, mode: str | None, output: Optional[Path],
+         cache: str | None = None) -> GradeResult:
     """Grade, with a progress bar on an interactive stderr when there are several."""
     from rich.console import Console
     from rich.markup import escape
@@ -109,11 +130,42 @@ def _run(command, submissions: list[str], rubric: str, batch: bool,  # type: ign
                         TextColumn("{task.description}"), transient=True,
                         console=Console(stderr=True), disable=not sys.stderr.isatty())
     task = progress.add_task("", total=None)
+    partial = _PartialReport(fmt, output)
+
+    def started(total: int, loaded: Rubric) -> None:
+        progress.update(task, total=total)
+        partial.rubric = loaded
+
+    def finished(result: SubmissionResult) -> None:
+        progress.update(task, advance=1, description=escape(line(result.label)))
+        partial.add(result)
+
     with progress:
-        return command.run(
-            submissions, rubric=rubric, batch=batch, jobs=jobs, cache=cache,
-            on_start=lambda total: progress.update(task, total=total),
-            on_done=lambda r: progress.update(task, advance=1, description=escape(line(r.label))))
+        return command.run(submissions, rubric=rubric, batch=batch, jobs=jobs, mode=mode, cache=cache,
+                           on_start=started, on_done=finished)
+
+
+class _PartialReport:
+    """Rewrites the --output file (atomically) with every result so far, as jobs end."""
+
+    def __init__(self, fmt: Format, output: Optional[Path]) -> None:
+        self.fmt, self.output = fmt, output
+        self.rubric: Rubric | None = None
+        self.results: list[SubmissionResult] = []
+
+    def add(self, result: SubmissionResult) -> None:
+        self.results.append(result)
+        if self.output is None or self.rubric is None:
+            return
+        from pkgtool.grade.report import render
+
+        temporary = self.output.with_name(f".{self.output.name}.partial")
+        try:
+            temporary.write_text(render(self.fmt.value, self.results, rubric=self.rubric),
+                                 encoding="utf-8")
+            os.replace(temporary, self.output)
+        except OSError:
+            pass  # the final write reports the problem
 
 
 def register(app: typer.Typer) -> None:

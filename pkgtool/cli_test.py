@@ -9,6 +9,7 @@ from typing import Annotated, Optional
 import typer
 
 from pkgtool.cli import examples
+from pkgtool.cli_grade import SANDBOX_HELP, SandboxMode
 from pkgtool.cli_output import check_output, emit
 
 
@@ -33,6 +34,7 @@ def test(
     output: Annotated[Optional[Path], typer.Option(
         "--output", "-o", help="Write the report to this file instead of stdout.",
         dir_okay=False, metavar="FILE")] = None,
+    sandbox: Annotated[SandboxMode, typer.Option(help=SANDBOX_HELP)] = SandboxMode.AUTO,
 ) -> None:
     """Build a package with colcon in a temporary sandboxed workspace and run its tests.
 
@@ -45,7 +47,8 @@ def test(
     from pkgtool.report.untrusted import block
 
     check_output(output, "test")
-    result = run(path, timeout=timeout, test_timeout=test_timeout)
+    result = run(path, timeout=timeout, test_timeout=test_timeout,
+                 mode=None if sandbox is SandboxMode.AUTO else sandbox.value)
     for message in result.errors:
         typer.echo(f"pkgtool test: {block(message)}", err=True)
     if result.packages:

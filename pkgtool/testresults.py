@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import os
 from collections import Counter
 from dataclasses import dataclass
 from pathlib import Path
@@ -68,21 +67,36 @@ def parse_junit(path: Path, *, within: Path | None = None) -> TestSummary:
     """The test cases of a pytest JUnit XML file; a missing or bad file is a ``problem``.
 
     When the file was written by untrusted code, ``within`` names the folder it must stay
-    in: a report resolving (through symbolic links) outside it is not read.
+    in: it is opened component by component without following links, as a regular file
+    only (a FIFO or device there cannot block or feed the reader), at most MAX_XML_BYTES.
     """
-    from lxml import etree
+    from pkgtool.safe_fs import UnsafeFile, read_regular
 
-    if within is not None and os.path.lexists(path) and not os.path.realpath(path).startswith(
-            os.path.realpath(within) + os.sep):
-        return TestSummary(problem="the test report points outside the workspace; not read")
     try:
-        size = path.stat().st_size
-        if size > MAX_XML_BYTES:
-            return TestSummary(problem=f"the test report is {size} bytes, too large to read")
-        root = etree.parse(str(path), parser()).getroot()
+        if within is None:
+            size = path.stat().st_size
+            if size > MAX_XML_BYTES:
+                return TestSummary(problem=f"the test report is {size} bytes, too large to read")
+            data = path.read_bytes()
+        else:
+            data = read_regular(path, within=within, max_bytes=MAX_XML_BYTES)
     except FileNotFoundError:
         return TestSummary(problem="no tests ran (pytest wrote no report)")
-    except (OSError, etree.XMLSyntaxError) as error:
+    except UnsafeFile as error:
+        return TestSummary(problem=f"the test report is not a plain file of the workspace "
+                                   f"({error}); not read")
+    except OSError as error:
+        return TestSummary(problem=f"the test report cannot be read: {error}")
+    return parse_junit_bytes(data)
+
+
+def parse_junit_bytes(data: bytes) -> TestSummary:
+    """The test cases of a JUnit XML document (bytes); a bad document is a ``problem``."""
+    from lxml import etree
+
+    try:
+        root = etree.fromstring(data, parser())
+    except etree.XMLSyntaxError as error:
         return TestSummary(problem=f"the test report cannot be read: {error}")
     cases = tuple(_case(element) for element in root.iter("testcase"))
     if any(c.name.endswith(_COLCON_PLACEHOLDER) for c in cases):

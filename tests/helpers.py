@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 import textwrap
+import time
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -172,3 +173,26 @@ def make_finding(code: str = "SYN001", severity: str = "error", *, root: str = "
 
     return Finding(code, Severity(severity), root.rsplit("/", 1)[-1], root, Span(path, line, col),
                    message, fix)
+
+
+def processes_with(marker: str) -> list[int]:
+    """Pids of this machine's processes (but this one) whose command line holds ``marker``."""
+    found = []
+    for entry in Path("/proc").iterdir():
+        if entry.name.isdigit() and entry.name != str(os.getpid()):
+            try:
+                if marker.encode() in (entry / "cmdline").read_bytes():
+                    found.append(int(entry.name))
+            except OSError:
+                pass
+    return found
+
+
+def no_process_with(marker: str, within: float = 10.0) -> bool:
+    """True once no process holds ``marker`` (polled: the kernel reaps asynchronously)."""
+    deadline = time.monotonic() + within
+    while processes_with(marker):
+        if time.monotonic() > deadline:
+            return False
+        time.sleep(0.05)
+    return True

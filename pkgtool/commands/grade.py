@@ -61,16 +61,22 @@ def export_gradescope(rubric: Path, output: Path) -> GradeResult:
 
 def run(submissions: Sequence[str], *, rubric: str, batch: bool = False, jobs: int = 1,
         cwd: Path | None = None, mode: str | None = None, cache: str | None = None,
-        on_start: Callable[[int], None] | None = None,
+        on_start: Callable[[int, Rubric], None] | None = None,
         on_done: Callable[[SubmissionResult], None] | None = None) -> GradeResult:
     """Grade ``submissions`` (with ``batch``: folders of them) against the ``rubric`` file.
 
-    ``on_start`` hears how many submissions will be graded, ``on_done`` each result;
-    ``cache`` is a folder of stored results to reuse (:mod:`pkgtool.grade.cache`).
+    ``on_start`` hears how many submissions will be graded against which rubric, ``on_done``
+    each result as its job ends. ``mode`` forces a sandbox mode (see
+    :mod:`pkgtool.grade.jail`); the default is the strongest this machine allows. ``cache`` is
+    a folder of stored results to reuse (:mod:`pkgtool.grade.cache`).
     """
     from pkgtool.grade.batch import expand, grade_all
+    from pkgtool.grade.jail import mode_error
     from pkgtool.grade.rubric import RubricError, load_rubric
 
+    unavailable = mode_error(mode)
+    if unavailable:
+        return GradeResult(ExitCode.USAGE, errors=(unavailable,))
     here = Path(os.path.abspath(cwd or Path.cwd()))
     try:
         loaded = load_rubric(here / rubric)
@@ -88,7 +94,7 @@ def run(submissions: Sequence[str], *, rubric: str, batch: bool = False, jobs: i
             f"With --batch, `{s}` must be a folder of submissions." for s in not_folders))
     items = expand(paths, batch=batch)
     if on_start:
-        on_start(len(items))
+        on_start(len(items), loaded)
     results = grade_all(items, loaded, jobs=max(1, jobs), mode=mode, on_done=on_done,
                         cache=here / cache if cache else None)
     return GradeResult(ExitCode.OK, tuple(results), loaded)

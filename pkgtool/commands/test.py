@@ -10,6 +10,7 @@ from __future__ import annotations
 import os
 from collections.abc import Sequence
 from dataclasses import dataclass
+from functools import partial
 from pathlib import Path
 
 from pkgtool.commands import ExitCode
@@ -33,6 +34,11 @@ class TestResult:
 def run(path: str, *, timeout: float = 600.0, test_timeout: float | None = None,
         cwd: Path | None = None, mode: str | None = None) -> TestResult:
     """Build and test the package at ``path``, or every package of the workspace there."""
+    from pkgtool.grade.jail import mode_error
+
+    unavailable = mode_error(mode)
+    if unavailable:
+        return TestResult(ExitCode.USAGE, errors=(unavailable,))
     folder = Path(os.path.abspath((cwd or Path.cwd()) / path))
     if not folder.is_dir():
         return TestResult(ExitCode.USAGE, errors=(
@@ -63,16 +69,32 @@ def _targets(folder: Path) -> tuple[list[SourcePackage], list[SourcePackage]]:
 def _build_and_test(targets: Sequence[SourcePackage], available: Sequence[SourcePackage],
                     timeout: float, test_timeout: float | None,
                     mode: str | None) -> tuple[tuple[PackageTests, ...], str]:
+    from pkgtool.grade.jobs import Task, run_tasks
+
+    needed = tuple({p.name: p for t in targets for p in with_dependencies(t, available)}
+                   .values())
+    names = tuple(t.name for t in targets)
+    task = Task(build_and_test, (names, needed, timeout, test_timeout, mode),
+                (len(names) + 1) * timeout + 120, partial(_failed, names))
+    return run_tasks([task])[0]  # type: ignore[no-any-return]
+
+
+def build_and_test(names: Sequence[str], needed: Sequence[SourcePackage], timeout: float,
+                   test_timeout: float | None,
+                   mode: str | None) -> tuple[tuple[PackageTests, ...], str]:
+    """Copy ``needed`` into a sandbox, build ``names`` and test each (in a job process)."""
+    from pkgtool.grade.extract import SubmissionError
     from pkgtool.grade.runner import WorkspaceRunner
     from pkgtool.grade.sandbox import Limits, sandbox
     from pkgtool.grade.sources import copy_packages
     from pkgtool.ros.domains import leased_domain
 
-    needed = {p.name: p for t in targets for p in with_dependencies(t, available)}
     with sandbox(Limits(timeout=timeout), mode=mode) as box, leased_domain() as domain_id:
-        copy_packages(needed.values(), box.workspace / "src")
+        try:
+            copy_packages(needed, box.workspace / "src")
+        except SubmissionError as error:
+            return _failed(names, f"cannot copy the packages: {error}")
         runner = WorkspaceRunner(box, domain_id=domain_id)
-        names = [t.name for t in targets]
         build = runner.build(names)
         if not build.ok:
             failed = tuple(PackageTests(n, False, None, build.output, build.limit, build.seconds)
@@ -83,3 +105,7 @@ def _build_and_test(targets: Sequence[SourcePackage], available: Sequence[Source
             run, summary = runner.test(name, test_timeout=test_timeout)
             results.append(PackageTests(name, True, summary, run.output, run.limit, run.seconds))
         return tuple(results), box.describe()
+
+
+def _failed(names: Sequence[str], reason: str) -> tuple[tuple[PackageTests, ...], str]:
+    return tuple(PackageTests(n, False, None, reason) for n in names), ""

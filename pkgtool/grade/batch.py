@@ -2,14 +2,13 @@
 
 from __future__ import annotations
 
-import multiprocessing
-from functools import partial
 from collections.abc import Callable, Sequence
-from concurrent.futures import Future, ProcessPoolExecutor, as_completed
+from functools import partial
 from pathlib import Path
 
 from pkgtool.grade.extract import is_archive
 from pkgtool.grade.grader import grade_submission, not_graded
+from pkgtool.grade.jobs import Task, run_tasks
 from pkgtool.grade.lms import lms_submission
 from pkgtool.grade.results import SubmissionResult
 from pkgtool.grade.rubric import Rubric
@@ -21,16 +20,18 @@ Item = tuple[str, Path]
 def expand(paths: Sequence[Path], *, batch: bool) -> list[Item]:
     """Submissions named by ``paths``; with ``batch`` each is a folder of submissions.
 
-    In a batch folder every visible sub-folder and archive is one submission, labelled with
-    its name (the file name without the archive suffix), or by student for Moodle and Canvas
-    downloads (:mod:`pkgtool.grade.lms`). A label seen twice gets ``-2``, ``-3``...
+    In a batch folder every visible sub-folder, archive and link is one submission, labelled
+    with its name (the file name without the archive suffix), or by student for Moodle and
+    Canvas downloads (:mod:`pkgtool.grade.lms`); a link is refused when graded. A label seen
+    twice gets ``-2``, ``-3``...
     """
     if not batch:
         return [(_label(p), p) for p in paths]
     items: list[Item] = []
     for folder in paths:
         for entry in sorted(folder.iterdir()):
-            if not entry.name.startswith(".") and (entry.is_dir() or is_archive(entry)):
+            wanted = entry.is_symlink() or entry.is_dir() or is_archive(entry)
+            if wanted and not entry.name.startswith("."):
                 items.append(lms_submission(entry) or (_label(entry), entry))
     return _unique(items)
 
@@ -57,37 +58,34 @@ def grade_all(items: Sequence[Item], rubric: Rubric, *, jobs: int = 1, mode: str
               cache: Path | None = None) -> list[SubmissionResult]:
     """Grade ``items`` (in their order in the result); ``on_done`` hears of each as it ends.
 
-    With ``cache`` (a folder), results stored there are reused (:mod:`pkgtool.grade.cache`).
+    Each submission is graded in a process of its own (:mod:`pkgtool.grade.jobs`) under the
+    deadline of :func:`deadline`. With ``cache`` (a folder), results stored there are reused
+    (:mod:`pkgtool.grade.cache`).
     """
-    notify = on_done or (lambda _: None)
-    grade: Callable[..., SubmissionResult] = grade_submission
-    if cache is not None:
-        from pkgtool.grade.cache import grade_cached
-
-        grade = partial(grade_cached, folder=cache)
-    if jobs <= 1 or len(items) <= 1:
-        results = []
-        for slot, (label, path) in enumerate(items):
-            results.append(grade(path, rubric, label=label, mode=mode))
-            notify(results[-1])
-        return results
-    done: dict[int, SubmissionResult] = {}
-    context = multiprocessing.get_context("spawn")
-    with ProcessPoolExecutor(max_workers=jobs, mp_context=context) as pool:
-        futures: dict[Future[SubmissionResult], int] = {
-            pool.submit(grade, path, rubric, label=label, mode=mode): slot
-            for slot, (label, path) in enumerate(items)}
-        for future in as_completed(futures):
-            slot = futures[future]
-            try:
-                done[slot] = future.result()
-            except Exception as crash:  # noqa: BLE001 - a dead worker fails its job only
-                done[slot] = _crashed(items[slot], rubric, crash)
-            notify(done[slot])
-    return [done[slot] for slot in range(len(items))]
+    tasks = [Task(_grade, (path, rubric, label, mode, cache), deadline(rubric),
+                  partial(_failed, label, str(path), rubric), rubric.limits.memory_mb + 2048)
+             for label, path in items]
+    return run_tasks(tasks, jobs=jobs, on_done=on_done)
 
 
-def _crashed(item: Item, rubric: Rubric, crash: Exception) -> SubmissionResult:
-    error = f"internal error: the grading process died ({type(crash).__name__}: {crash})"
-    return SubmissionResult(item[0], str(item[1]), 0.0, rubric.max_score,
-                            not_graded(rubric, error), error=error)
+def _grade(path: Path, rubric: Rubric, label: str, mode: str | None,
+           cache: Path | None) -> SubmissionResult:
+    if cache is None:
+        return grade_submission(path, rubric, label, mode)
+    from pkgtool.grade.cache import grade_cached
+
+    return grade_cached(path, rubric, folder=cache, label=label, mode=mode)
+
+
+def deadline(rubric: Rubric) -> float:
+    """Seconds one submission may take in all: every step at its limit, plus a margin."""
+    steps = 2 + sum(1 for c in rubric.criteria if c.kind in ("tests", "hidden"))
+    probes = sum(len(c.names) for c in rubric.criteria if c.kind == "executables")
+    return steps * rubric.limits.timeout + probes * min(rubric.test_timeout,
+                                                        rubric.limits.timeout) + 120
+
+
+def _failed(label: str, path: str, rubric: Rubric, reason: str) -> SubmissionResult:
+    error = f"not graded: {reason}"
+    return SubmissionResult(label, path, 0.0, rubric.max_score, not_graded(rubric, error),
+                            error=error)

@@ -1,8 +1,11 @@
-"""A cgroup per sandboxed job, nested under our own: process-count and memory caps that hold.
+"""A cgroup per sandboxed step, nested under our own: process-count and memory caps that hold.
 
 cgroup v1 (one hierarchy per controller) and v2 (one unified hierarchy, when our cgroup
 delegates ``pids`` and ``memory`` to its children) are both handled; without write access
-there is no cgroup and the sandbox relies on rlimits alone.
+there is no cgroup and the sandbox relies on rlimits alone. A step's cgroup is named
+``pkgtool-<pid>-<n>`` after the grading process that made it: when that process is gone
+(killed, even by SIGKILL), :func:`sweep` kills whatever is left in its cgroups and removes
+them, and every grading run sweeps those of dead processes when it starts.
 """
 
 from __future__ import annotations
@@ -10,6 +13,7 @@ from __future__ import annotations
 import functools
 import itertools
 import os
+import re
 import signal
 import time
 from dataclasses import dataclass
@@ -24,6 +28,7 @@ _FILES = {
 }
 _ROOT = Path("/sys/fs/cgroup")
 _names = itertools.count()
+_NAME = re.compile(r"^pkgtool-(\d+)-\d+$")
 
 
 @dataclass(frozen=True, slots=True)
@@ -46,7 +51,11 @@ class JobCgroup:
         return counts
 
     def kill_all(self) -> None:
-        """SIGKILL every process left in the cgroup (repeatedly, forks race the killer)."""
+        """SIGKILL every process left in the cgroup (v2: ``cgroup.kill``; v1: repeatedly,
+        forks race the killer, ``pids.max`` bounds them)."""
+        kill = self.folders["pids"] / "cgroup.kill"
+        if self.version == 2 and kill.is_file():
+            kill.write_text("1")
         for _ in range(50):
             pids = {int(p) for f in self.procs_files() for p in _read(f).split() if p.isdigit()}
             if not pids:
@@ -106,6 +115,45 @@ def _parents() -> tuple[int, dict[str, Path]] | None:
         if {"pids", "memory"} <= set(_read(parent / "cgroup.subtree_control").split()):
             return 2, {"pids": parent, "memory": parent}
     return None
+
+
+def sweep(pid: int | None = None) -> int:
+    """Kill and remove the cgroups of grading process ``pid`` (default: of every dead one).
+
+    Returns how many were removed.
+    """
+    found = _parents()
+    if found is None or os.geteuid() != 0:
+        return 0
+    version, parents = found
+    listed = [_listing(parent) for parent in set(parents.values())]
+    names = {n for n in set.intersection(*listed) if _stale(n, pid)}  # ours: in every parent
+    for name in names:
+        JobCgroup(version, {c: p / name for c, p in parents.items()}).remove()
+    return len(names)
+
+
+def _listing(folder: Path) -> set[str]:
+    try:
+        return {entry.name for entry in os.scandir(folder) if entry.is_dir()}
+    except OSError:
+        return set()
+
+
+def _stale(name: str, pid: int | None) -> bool:
+    match = _NAME.match(name)
+    if match is None:
+        return False
+    owner = int(match.group(1))
+    if pid is not None:
+        return owner == pid
+    try:
+        os.kill(owner, 0)
+    except ProcessLookupError:
+        return True
+    except PermissionError:
+        return False
+    return False
 
 
 def create_job_cgroup(*, max_pids: int, memory_bytes: int) -> JobCgroup | None:

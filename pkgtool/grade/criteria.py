@@ -25,7 +25,6 @@ class Job:
     rubric: Rubric
     runner: WorkspaceRunner
     package: Package
-    copy: Path
     _build: ColconRun | None = None
     _runs: dict[str, tuple[ColconRun, TestSummary]] = field(default_factory=dict)
 
@@ -49,11 +48,10 @@ class Job:
         return self._runs[key]
 
     def hidden(self, folder: Path) -> tuple[ColconRun, TestSummary]:
-        """Instructor tests from ``folder``, copied into the package copy and run there."""
+        """Instructor tests from ``folder``, run against the installed workspace."""
         key = f"hidden:{folder}"
         if key not in self._runs:
-            self._runs[key] = self.runner.pytest(folder, into=self.copy,
-                                                 test_timeout=self.rubric.test_timeout)
+            self._runs[key] = self.runner.pytest(folder, test_timeout=self.rubric.test_timeout)
         return self._runs[key]
 
 

@@ -9,19 +9,22 @@ from contextlib import AbstractContextManager, nullcontext
 from pathlib import Path
 
 from pkgtool.grade.criteria import Job, evaluate_all
-from pkgtool.grade.extract import SubmissionError, extract, is_archive
+from pkgtool.grade.extract import SubmissionError
+from pkgtool.safe_fs import UnsafeFile, remove_tree
 from pkgtool.grade.results import CriterionResult, SubmissionResult
 from pkgtool.grade.rubric import Rubric
 from pkgtool.grade.runner import WorkspaceRunner
 from pkgtool.grade.sandbox import Sandbox, sandbox
 from pkgtool.grade.sources import (choose_target, copy_packages, find_packages, tree_digest,
                                    with_dependencies)
+from pkgtool.grade.stage import stage
 from pkgtool.model.package import load_package
 from pkgtool.ros.domains import leased_domain
 
 
-def grade_submission(path: Path, rubric: Rubric, *, label: str | None = None,
-                     domain_id: int | None = None, mode: str | None = None) -> SubmissionResult:
+def grade_submission(path: Path, rubric: Rubric, label: str | None = None,
+                     mode: str | None = None, *, domain_id: int | None = None
+                     ) -> SubmissionResult:
     """Grade ``path`` (package, workspace or archive); never raises for a bad submission.
 
     ``domain_id`` is the job's ROS domain (default: one leased for the job from
@@ -65,23 +68,15 @@ def not_graded(rubric: Rubric, error: str) -> tuple[CriterionResult, ...]:
 def _digest(path: Path) -> str:
     try:
         return tree_digest(path) if os.path.lexists(path) else "missing"
-    except OSError as error:
+    except (OSError, UnsafeFile) as error:
         return f"unreadable: {error}"
 
 
 def _prepare(path: Path, rubric: Rubric, box: Sandbox, domain_id: int) -> Job:
-    if not path.exists():
-        raise SubmissionError(f"`{path}` does not exist")
-    tree = path
-    if is_archive(path):
-        tree = box.workspace.parent / "unpacked"
-        tree.mkdir(mode=0o700)
-        extract(path, tree)
-    elif not path.is_dir():
-        raise SubmissionError(f"`{path.name}` is neither a folder nor a .zip/.tar.gz archive")
+    tree = stage(path, box)
     available = find_packages(tree)
     target = choose_target(available, rubric.package)
     copies = copy_packages(with_dependencies(target, available), box.workspace / "src")
+    remove_tree(tree)
     runner = WorkspaceRunner(box, domain_id=domain_id)
-    copy = copies[target.name]
-    return Job(rubric, runner, load_package(copy), copy)
+    return Job(rubric, runner, load_package(copies[target.name]))

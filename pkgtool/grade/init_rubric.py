@@ -23,17 +23,18 @@ _TOP_NOTES = {"title": "shown in reports",
               "package": "the graded package when a submission holds several"}
 _LIMITS: dict[str, Any] = {"timeout": 300, "test_timeout": 60, "memory_mb": 2048,
                            "processes": 256, "cpu_seconds": 600, "file_size_mb": 256,
-                           "output_kb": 256}
+                           "output_kb": 256, "disk_mb": 1024}
 _LIMIT_NOTES = {"timeout": "wall-clock seconds per build or test step",
                 "test_timeout": "seconds per single test, and per console script load",
                 "memory_mb": "memory of a whole step", "processes": "processes and threads",
                 "cpu_seconds": "CPU time per process", "file_size_mb": "largest file written",
-                "output_kb": "log kept per step (head and tail)"}
+                "output_kb": "log kept per step (head and tail)",
+                "disk_mb": "the job's own filesystem (as root; else per file only)"}
 _NOTES = {"visibility": "Gradescope: visible, hidden, after_due_date, after_published",
           "per_finding": "points lost per finding; leave out for all-or-nothing",
           "partial": "proportional credit (false: all or nothing)",
           "min_tests": "fewer tests than this scores zero",
-          "path": "relative to this file; copied into the package and run there",
+          "path": "relative to this file; run against the installed package",
           "select": "rule codes, families or names", "names": "console_scripts entries"}
 _CRITERIA: list[tuple[str, dict[str, Any]]] = [
     ("The package builds with `colcon build`; without it no test below can run.",
@@ -49,7 +50,7 @@ _CRITERIA: list[tuple[str, dict[str, Any]]] = [
      {"kind": "style", "points": 1, "per_finding": 0.25}),
     ("The student's own tests (`colcon test`) pass; credit in proportion to passing tests.",
      {"kind": "tests", "points": 1, "min_tests": 1, "exclude": ["test/test_copyright.py"]}),
-    ("Instructor tests, copied into a temporary copy of the package and run against it.",
+    ("Instructor tests, run by the grader's own pytest against the installed package.",
      {"kind": "hidden", "name": "Instructor tests", "points": 6, "path": "hidden_tests",
       "visibility": "after_published",
       "feedback": "Compare your nodes with the assignment's topic names and message types"}),

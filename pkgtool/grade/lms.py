@@ -30,7 +30,8 @@ def lms_submission(entry: Path) -> tuple[str, Path] | None:
             return None
         visible = [e for e in entry.iterdir() if not e.name.startswith(".")]
         only = visible[0] if len(visible) == 1 else None
-        graded = only if only is not None and only.is_file() and is_archive(only) else entry
+        graded = (only if only is not None and not only.is_symlink() and only.is_file()
+                  and is_archive(only) else entry)
         return f"{found['name']}_{found['id']}", graded
     found = _CANVAS.fullmatch(entry.name)
     if found is None or not is_archive(entry):

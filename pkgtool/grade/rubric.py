@@ -10,7 +10,7 @@ from pathlib import Path
 from typing import Any
 
 from pkgtool.compat import tomllib
-from pkgtool.grade.sandbox import Limits
+from pkgtool.grade.limits import Limits
 
 KINDS = ("build", "executables", "lint", "style", "tests", "hidden")
 VISIBILITIES = ("visible", "hidden", "after_due_date", "after_published")

@@ -6,17 +6,15 @@ Used by ``pkgtool test`` and by the grading criteria. Every command runs through
 
 from __future__ import annotations
 
-import importlib.util
 import json
 import os
 import re
-import secrets
-import shutil
 import sys
 import sysconfig
 from collections.abc import Sequence
 from pathlib import Path
 
+from pkgtool.grade.hidden import run_hidden, timeout_args
 from pkgtool.testresults import TestSummary, parse_junit
 from pkgtool.grade.sandbox import Sandbox
 from pkgtool.ros.colcon import ColconRun, colcon_build, colcon_env, colcon_test
@@ -24,23 +22,26 @@ from pkgtool.ros.colcon import ColconRun, colcon_build, colcon_env, colcon_test
 _ERROR_LINE = re.compile(r"^(error: |[\w.]*(Error|Exception)\b)")
 
 _ENTRY_POINT_PROBE = """
-import importlib.metadata as md, json, sys
-scripts = {}
-for dist in md.distributions(path=sys.argv[1].split(':')):
-    for ep in dist.entry_points:
-        if ep.group == 'console_scripts':
-            scripts[ep.name] = ep
-for name in sys.argv[2:]:
-    ep = scripts.get(name)
-    if ep is None:
-        problem = f'`{name}` is not declared in `console_scripts`'
-    else:
-        try:
-            problem = '' if callable(ep.load()) else f'`{ep.value}` is not callable'
-        except BaseException as error:
-            problem = f'`{ep.value}` cannot be loaded: {type(error).__name__}: {error}'
-    print('PKGTOOL-ENTRY-POINT ' + json.dumps([name, problem]), flush=True)
+import importlib.metadata as md, json, os, sys
+fd = int(os.environ.pop('PKGTOOL_RESULTS_FD'))
+os.set_inheritable(fd, False)
+paths = [p for p in sys.argv[1].split(':') if p]
+sys.path.extend(paths)
+name = sys.argv[2]
+scripts = {ep.name: ep for dist in md.distributions(path=paths) for ep in dist.entry_points
+           if ep.group == 'console_scripts'}
+ep = scripts.get(name)
+if ep is None:
+    problem = f'`{name}` is not declared in `console_scripts`'
+else:
+    try:
+        problem = '' if callable(ep.load()) else f'`{ep.value}` is not callable'
+    except BaseException as error:
+        problem = f'`{ep.value}` cannot be loaded: {type(error).__name__}: {error}'
+os.write(fd, json.dumps([name, problem]).encode() + b'\\n')
 """
+"""Loads one console script's function in the sandbox; the answer goes to the private pipe
+only (``-I``: the submission cannot customise the interpreter before the probe runs)."""
 
 
 class WorkspaceRunner:
@@ -67,7 +68,7 @@ class WorkspaceRunner:
     def test(self, package: str, *, test_timeout: float | None = None,
              ignore: Sequence[str] = ()) -> tuple[ColconRun, TestSummary]:
         """``colcon test`` one package and read its ``pytest.xml``."""
-        args = [*_timeout_args(test_timeout), *(f"--ignore={path}" for path in ignore)]
+        args = [*timeout_args(test_timeout), *(f"--ignore={path}" for path in ignore)]
         run = colcon_test(self.workspace, base_paths=[self.src], env=self.env,
                           packages=[package], pytest_args=args, runner=self.box.run,
                           timeout=self.box.limits.timeout)
@@ -75,40 +76,31 @@ class WorkspaceRunner:
         return run, _checked(run, parse_junit(report, within=self.workspace))
 
     def installed_env(self) -> dict[str, str]:
-        """The environment with every installed package of the workspace on the paths."""
+        """The environment with every installed package of the workspace on the paths.
+
+        The grader's own prefixes stay first on ``AMENT_PREFIX_PATH``: the submission adds
+        its packages, it does not replace anyone else's.
+        """
         env = dict(self.env)
-        install = self.workspace / "install"
-        prefixes = sorted(p for p in install.iterdir() if p.is_dir()) if install.is_dir() else []
-        env["AMENT_PREFIX_PATH"] = os.pathsep.join([*map(str, prefixes),
-                                                    env.get("AMENT_PREFIX_PATH", "")])
-        env["PYTHONPATH"] = os.pathsep.join(str(p) for p in _site_packages(prefixes))
+        env["AMENT_PREFIX_PATH"] = os.pathsep.join([env.get("AMENT_PREFIX_PATH", ""),
+                                                    *map(str, self._prefixes())]).strip(":")
+        env["PYTHONPATH"] = os.pathsep.join(map(str, self.student_paths()))
         return env
 
-    def pytest(self, source: Path, *, into: Path,
-               test_timeout: float | None = None) -> tuple[ColconRun, TestSummary]:
-        """Copy the instructor's test folder ``source`` into ``into`` and run it there.
+    def _prefixes(self) -> list[Path]:
+        install = self.workspace / "install"
+        return sorted(p for p in install.iterdir() if p.is_dir() and not p.is_symlink()) \
+            if install.is_dir() else []
 
-        ``into`` (a folder of the package copy) gets a fresh, randomly named, root-owned
-        folder holding the tests and an empty pytest configuration: only the tests' own
-        conftest files apply, nothing of the package around them (setup.cfg, pytest.ini,
-        conftest.py) can change the run, and the sandboxed user cannot edit the tests.
-        """
-        token = secrets.token_hex(6)
-        home = Path(os.path.realpath(into)) / f"pkgtool_hidden_{token}"
-        if not str(home).startswith(os.path.realpath(self.workspace) + os.sep):
-            return _refused("the package folder was replaced by a link out of the workspace")
-        home.mkdir(mode=0o755)
-        tests = home / source.name
-        shutil.copytree(source, tests, ignore=shutil.ignore_patterns("__pycache__", "*.pyc"))
-        config = home / "pytest.ini"
-        config.write_text("[pytest]\n")
-        report = self.workspace / f"hidden-{token}.xml"
-        command = [sys.executable, "-m", "pytest", "-c", str(config), "--rootdir", str(tests),
-                   "--confcutdir", str(tests), "-p", "no:cacheprovider", "-o",
-                   "junit_family=xunit2", f"--junit-xml={report}", *_timeout_args(test_timeout),
-                   str(tests)]
-        run = self.box.run(command, tests, self.installed_env())
-        return run, _checked(run, parse_junit(report, within=self.workspace))
+    def student_paths(self) -> list[Path]:
+        """The site-packages folders of the workspace's installed packages."""
+        return _site_packages(self._prefixes())
+
+    def pytest(self, source: Path, *,
+               test_timeout: float | None = None) -> tuple[ColconRun, TestSummary]:
+        """Run the instructor's test folder ``source`` (see :mod:`pkgtool.grade.hidden`)."""
+        return run_hidden(self.box, source, self.installed_env(), self.student_paths(),
+                          test_timeout)
 
     def entry_points(self, package: str, names: Sequence[str], *,
                      timeout: float | None = None) -> dict[str, str]:
@@ -121,24 +113,49 @@ class WorkspaceRunner:
 
     def _entry_point(self, package: str, name: str, timeout: float | None) -> str:
         prefixes = [self.workspace / "install" / package]
-        command = [sys.executable, "-c", _ENTRY_POINT_PROBE,
+        command = [sys.executable, "-I", "-B", "-c", _ENTRY_POINT_PROBE,
                    ":".join(map(str, _site_packages(prefixes))), name]
-        run = self.box.run(command, self.workspace, self.installed_env(), timeout=timeout)
-        found = dict(json.loads(line.split(" ", 1)[1]) for line in run.output.splitlines()
-                     if line.startswith("PKGTOOL-ENTRY-POINT "))
-        if name not in found and run.timed_out:
+        run = self.box.run(command, self.workspace, self.installed_env(), timeout=timeout,
+                           channel=True)
+        answer = _answer(run.channel, name)
+        if answer is None and run.timed_out:
             return (f"`{name}` did not finish loading ({run.limit}): its module must not run "
                     "the node when imported; start the node in the entry point's function")
-        problem = found.get(name, f"`{name}` could not be checked ({run.limit or 'crashed'})")
-        if not problem and not os.access(self.workspace / "install" / package / "lib" / package
-                                         / name, os.X_OK):
-            problem = (f"`{name}` is not installed in `lib/{package}` (`ros2 run` cannot "
-                       "find it; check `setup.cfg`'s script_dir)")
-        return problem
+        if answer is None:
+            return (f"`{name}` could not be checked: its module ended the check while "
+                    f"loading ({run.limit or f'exit status {run.returncode}'})")
+        if not answer and not os.access(self.workspace / "install" / package / "lib" / package
+                                        / name, os.X_OK):
+            return (f"`{name}` is not installed in `lib/{package}` (`ros2 run` cannot "
+                    "find it; check `setup.cfg`'s script_dir)")
+        return answer
+
+
+def _answer(channel: bytes, name: str) -> str | None:
+    """The probe's problem text for ``name`` ("" when fine), or None without a valid answer."""
+    try:
+        found = json.loads(channel.splitlines()[-1]) if channel.strip() else None
+    except ValueError:
+        return None
+    if not (isinstance(found, list) and len(found) == 2 and found[0] == name
+            and isinstance(found[1], str)):
+        return None
+    return found[1]
 
 
 def first_error(output: str) -> str | None:
-    """The first line of a colcon log that names an error (``SyntaxError: ...``), if any."""
+    """The first line of a colcon log that names an error (``SyntaxError: ...``), if any.
+
+    colcon reads what setup.py prints as the package's metadata: output there makes that
+    reading fail, which is said in those words, with the printed line.
+    """
+    if "_get_setup_information" in output and "literal_eval" in output:
+        lines = output.splitlines()
+        printed = next((lines[i + 1].strip() for i, line in enumerate(lines[:-1])
+                        if line.strip().startswith('File "<unknown>"')), "")
+        shown = f" (`{printed[:80]}`)" if printed else ""
+        return (f"setup.py printed to standard output{shown}: colcon reads that output as "
+                "the package's metadata; remove the print (or print to sys.stderr)")
     return next((line.strip() for line in output.splitlines()
                  if _ERROR_LINE.match(line.strip())), None)
 
@@ -157,13 +174,6 @@ def _checked(run: ColconRun, summary: TestSummary) -> TestSummary:
         return TestSummary(problem="the test report claims success but the test run failed "
                                    f"(exit status {run.returncode}); it is not counted")
     return summary
-
-
-def _timeout_args(seconds: float | None) -> list[str]:
-    """pytest-timeout's per-test limit, when that plugin is installed."""
-    if not seconds or importlib.util.find_spec("pytest_timeout") is None:
-        return []
-    return [f"--timeout={seconds:g}"]
 
 
 def _site_packages(prefixes: Sequence[Path]) -> list[Path]:

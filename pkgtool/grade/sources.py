@@ -1,8 +1,11 @@
 """Which packages to build and how to copy them into a job's workspace without trusting them.
 
-Packages are found with :mod:`pkgtool.workspace` discovery and read with
-:func:`pkgtool.model.package.load_package`; the copy follows no symlink out of a package,
-skips special files and colcon's output folders, and stops at the submission caps.
+Copies walk the source with :mod:`pkgtool.safe_fs`: no symbolic link is followed out of the
+copied folder (the folder itself included: a submission that is a link is refused), a file
+link is copied as its target only when that target, read on the text alone and opened
+component by component, is a regular file inside; special files are skipped; colcon's
+output folders, ``.git`` and caches are left out; the caps of :class:`ExtractLimits` hold.
+Packages are then found in the copy, which holds no link at all.
 """
 
 from __future__ import annotations
@@ -10,19 +13,21 @@ from __future__ import annotations
 import hashlib
 import os
 import re
-import shutil
 import stat
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
+from typing import BinaryIO
 
 from pkgtool.grade.extract import ExtractLimits, SubmissionError
+from pkgtool.safe_fs import (MB, Entry, TreeWriter, UnsafeFile, lexical_target, open_path,
+                             walk_tree)
 from pkgtool.model.package import load_package
-from pkgtool.workspace import discover
+from pkgtool.workspace import IGNORE_MARKERS, discover
 
 _SKIPPED = frozenset({".git", "__pycache__", ".pytest_cache"})
 _OUTPUT = frozenset({"build", "install", "log"})
-"""colcon's output folders: skipped at a package's root unless they are Python packages."""
+"""colcon's output folders: skipped beside a package.xml unless they are Python packages."""
 _SAFE_NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9_.-]{0,99}$")
 
 
@@ -36,9 +41,15 @@ class SourcePackage:
 
 
 def find_packages(tree: Path) -> list[SourcePackage]:
-    """Every package under ``tree`` (or ``tree`` itself), named as its package.xml says."""
+    """Every package in ``tree`` (or ``tree`` itself), named as its package.xml says.
+
+    Only folders inside ``tree`` count: nothing above it is ever a package of it.
+    """
     found = []
-    for root in discover(["."], cwd=Path(os.path.abspath(tree))).packages:
+    top = Path(os.path.abspath(tree))
+    for root in discover(["."], cwd=top).packages:
+        if root != top and top not in root.parents:
+            continue
         package = load_package(root)
         manifest = package.manifest
         depends = frozenset(d.name for d in manifest.dependencies) if manifest else frozenset()
@@ -86,62 +97,80 @@ def copy_packages(packages: Iterable[SourcePackage], dest: Path,
             raise SubmissionError(f"the package name {package.name!r} is not a valid ROS "
                                   "package name (letters, digits and underscores)")
         copies[package.name] = dest / package.name
-        _copy_tree(package.root, copies[package.name], limits, counter)
+        copy_tree(package.root, copies[package.name], limits, counter)
     return copies
 
 
-def _copy_tree(source: Path, dest: Path, limits: ExtractLimits, counter: list[int]) -> None:
-    real_root = os.path.realpath(source)
-    for folder, dirs, files in os.walk(source):
-        relative = Path(folder).relative_to(source)
-        dirs[:] = [d for d in dirs if not _skipped(Path(folder) / d, relative == Path("."))]
-        (dest / relative).mkdir(parents=True, exist_ok=True)
-        for name in files:
-            path = os.path.join(folder, name)
-            info = os.lstat(path)
-            if stat.S_ISLNK(info.st_mode):  # kept as a copy, and only when it stays inside
-                path = os.path.realpath(path)
-                if not (path.startswith(real_root + os.sep) and os.path.isfile(path)):
-                    continue
-                info = os.stat(path)
-            if not stat.S_ISREG(info.st_mode):
+def copy_tree(source: Path, dest: Path, limits: ExtractLimits = ExtractLimits(),
+              counter: list[int] | None = None) -> None:
+    """Copy the folder ``source`` to the new folder ``dest`` the careful way (see above).
+
+    ``counter`` (files, bytes) carries the caps across several copies.
+    """
+    counter = counter if counter is not None else [0, 0]
+    dest.mkdir(parents=True)
+    writer = TreeWriter(dest)
+    try:
+        for entry in walk_tree(source, max_depth=limits.max_depth, keep=_keep):
+            if stat.S_ISDIR(entry.info.st_mode):
+                os.close(writer.folder(entry.parts))
                 continue
-            counter[0] += 1
-            counter[1] += info.st_size
-            if counter[0] > limits.max_files or counter[1] > limits.max_bytes:
-                raise SubmissionError(f"the submission has more than {limits.max_files} files "
-                                      f"or {limits.max_bytes // (1024 * 1024)} MB")
-            shutil.copyfile(path, dest / relative / name, follow_symlinks=False)
-            os.chmod(dest / relative / name, 0o755 if info.st_mode & 0o111 else 0o644)
+            handle = _source_file(source, entry)
+            if handle is None:
+                continue
+            with handle:
+                info = os.fstat(handle.fileno())
+                counter[0], counter[1] = counter[0] + 1, counter[1] + info.st_size
+                if counter[0] > limits.max_files or counter[1] > limits.max_bytes:
+                    raise SubmissionError(f"the submission has more than {limits.max_files} "
+                                          f"files or {limits.max_bytes // MB} MB")
+                writer.file(entry.parts, iter(lambda: handle.read(MB), b""),
+                            executable=bool(info.st_mode & 0o111))
+    except UnsafeFile as error:
+        raise SubmissionError(f"`{source.name}` cannot be copied: {error}") from None
 
 
-def _skipped(folder: Path, at_root: bool) -> bool:
-    name = folder.name
-    if name in _SKIPPED or name.endswith(".egg-info") or folder.is_symlink():
-        return True
-    return at_root and name in _OUTPUT and not (folder / "__init__.py").is_file()
+def _source_file(source: Path, entry: Entry) -> BinaryIO | None:
+    """The open regular file behind ``entry`` (a file, or a link to one inside), or None."""
+    try:
+        if stat.S_ISREG(entry.info.st_mode):
+            return entry.open()
+        if stat.S_ISLNK(entry.info.st_mode):
+            target = lexical_target(entry.parts[:-1], entry.readlink())
+            return open_path(source, target) if target else None
+    except (UnsafeFile, OSError):
+        return None
+    return None
+
+
+def _keep(parts: tuple[str, ...], beside: frozenset[str], inside: frozenset[str]) -> bool:
+    name = parts[-1]
+    if name in _SKIPPED or name.endswith(".egg-info") or inside & IGNORE_MARKERS:
+        return False
+    return not (name in _OUTPUT and "package.xml" in beside and "__init__.py" not in inside)
 
 
 def tree_digest(path: Path) -> str:
-    """SHA-256 over every entry's relative path, type, mode bits and content (or link target)."""
+    """SHA-256 over every entry's relative path, type, mode bits and content (or link target).
+
+    Nothing is followed: a link (the path itself included) counts by its target's text.
+    """
     digest = hashlib.sha256()
-    if path.is_file():
-        _hash_file(digest, path)
-        return digest.hexdigest()
-    for folder, dirs, files in os.walk(path):
-        dirs.sort()
-        for name in sorted(dirs + files):
-            full = os.path.join(folder, name)
-            info = os.lstat(full)
-            digest.update(f"{os.path.relpath(full, path)}\0{info.st_mode:o}\0".encode())
-            if stat.S_ISLNK(info.st_mode):
-                digest.update(os.readlink(full).encode())
-            elif stat.S_ISREG(info.st_mode):
-                _hash_file(digest, Path(full))
+    if path.is_symlink():
+        digest.update(os.readlink(path).encode(errors="replace"))
+    elif path.is_file():
+        _hash(digest, open_path(path.parent, (path.name,)))
+    else:
+        for entry in walk_tree(path, max_depth=512):
+            digest.update(f"{'/'.join(entry.parts)}\0{entry.info.st_mode:o}\0".encode())
+            if stat.S_ISLNK(entry.info.st_mode):
+                digest.update(entry.readlink().encode(errors="replace"))
+            elif stat.S_ISREG(entry.info.st_mode):
+                _hash(digest, entry.open())
     return digest.hexdigest()
 
 
-def _hash_file(digest: "hashlib._Hash", path: Path) -> None:
-    with open(path, "rb") as handle:
-        for chunk in iter(lambda: handle.read(1 << 20), b""):
+def _hash(digest: "hashlib._Hash", handle: BinaryIO) -> None:
+    with handle:
+        for chunk in iter(lambda: handle.read(MB), b""):
             digest.update(chunk)

@@ -28,6 +28,8 @@ class ColconRun:
     timed_out: bool = False
     limit: str | None = None
     """The sandbox limit that ended the run, e.g. ``timed out after 60 s`` (None: none hit)."""
+    channel: bytes = b""
+    """What the command wrote to its private results descriptor (sandboxed runs only)."""
 
     @property
     def ok(self) -> bool:

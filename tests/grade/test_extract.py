@@ -134,3 +134,35 @@ def test_a_corrupt_archive_is_a_submission_error(tmp_path: Path) -> None:
     archive.write_bytes(b"PK\x03\x04 not really")
     with pytest.raises(SubmissionError, match="not a readable archive"):
         extract(archive, _dest(tmp_path))
+
+
+def _non_utf8_zip(tmp_path: Path) -> Path:
+    """A zip whose name is flagged UTF-8 but holds a byte that is not (what some tools write)."""
+    archive = _zip(tmp_path, {"pkg/caf\u00e9.py": b"x"})
+    archive.write_bytes(archive.read_bytes().replace("\u00e9".encode(), b"\xff\xa9"))
+    return archive
+
+
+@pytest.mark.parametrize(("build", "reason"), [
+    (_non_utf8_zip, "has file names that are not valid UTF-8; rename the files"),
+    (lambda tmp: _zip(tmp, {"pkg/" + "n" * 300 + ".py": b"x"}), "longer than 255 bytes"),
+    (lambda tmp: _zip(tmp, {"/".join(["d" * 200] * 6) + "/x.py": b"x"}),
+     "has a path longer than 1024 bytes"),
+    (lambda tmp: _zip(tmp, {"pkg": b"x", "pkg/setup.py": b"x"}),
+     "archive entry `pkg/setup.py` is inside `pkg`, which is a file"),
+    (lambda tmp: _tar(tmp, lambda t: (_add(t, "pkg", type=tarfile.DIRTYPE),
+                                      _add(t, "pkg"))),
+     "archive entry `pkg` is a file and a folder; each name may appear once"),
+    (lambda tmp: _tar(tmp, lambda t: _add(t, "pkg/fifo", type=tarfile.FIFOTYPE)),
+     "is a device file or a FIFO"),
+])
+def test_unusable_names_and_members_get_a_precise_reason(
+        tmp_path: Path, build: Callable[[Path], Path], reason: str) -> None:
+    with pytest.raises(SubmissionError) as refused:
+        extract(build(tmp_path), _dest(tmp_path))
+    assert reason in str(refused.value)
+    assert not list(_dest_root(tmp_path).rglob("*.py"))
+
+
+def _dest_root(tmp_path: Path) -> Path:
+    return tmp_path / "out"

@@ -13,6 +13,7 @@ from typing import Any
 
 import pytest
 
+from pkgtool.grade.jail import jail_support
 from pkgtool.grade.rubric import Rubric, load_rubric
 from pkgtool.grade.sandbox import Limits, sandbox
 from pkgtool.grade.sources import tree_digest
@@ -94,8 +95,10 @@ def test_a_correct_submission_gets_full_marks(batch: Batch, label: str) -> None:
     entry = batch["graded"][label]
     assert entry["score"] == entry["max_score"] == batch["rubric"].max_score, \
         json.dumps(entry, indent=1)
-    assert "unprivileged uid" in entry["isolation"] or "namespaces" in entry["isolation"] \
-        or entry["isolation"].startswith("no namespaces")
+    expected = {"root": "namespaces: mount, net (loopback only), pid, ipc, uts, cgroup",
+                "userns": "namespaces: user, mount, net (loopback only), pid, ipc, uts, cgroup",
+                "none": "no namespaces"}[jail_support().mode]
+    assert entry["isolation"].startswith(expected), entry["isolation"]
 
 
 def test_a_conftest_or_setup_cfg_of_the_submission_cannot_touch_instructor_tests(
@@ -160,11 +163,14 @@ def test_a_module_that_hangs_when_imported_costs_its_executable_only(batch: Batc
 def test_writing_outside_the_package_changes_nothing(batch: Batch) -> None:
     entry = batch["graded"]["writes_outside"]
     writers = 3  # the variant adds three tests that write outside the job
+    # in a jail /tmp is the job's own: that write succeeds there and never reaches the machine
+    jailed = jail_support().mode != "none"
+    failing = writers - 1 if jailed else writers
     assert _criterion(entry, "tests")["score"] == round(
-        _points(batch, "tests") * OWN_TESTS / (OWN_TESTS + writers), 2)
+        _points(batch, "tests") * (OWN_TESTS + writers - failing) / (OWN_TESTS + writers), 2)
     feedback = _feedback(entry, "tests")
-    assert feedback.count("Read-only file system") + feedback.count("Permission denied") \
-        == writers
+    assert feedback.count("FAILED talker_pkg.test.test_escape.") == failing, feedback
+    assert ("test_escape.test_writes_to_tmp" in feedback) is not jailed, feedback
     assert not any(marker.exists() for marker in batch["markers"].values())
 
 

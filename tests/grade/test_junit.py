@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import os
+
 from pathlib import Path
 from xml.sax.saxutils import escape
 
@@ -77,9 +79,23 @@ def test_a_report_linked_out_of_the_workspace_is_not_read(tmp_path: Path) -> Non
     workspace.mkdir()
     (workspace / "pytest.xml").symlink_to(outside)
     summary = parse_junit(workspace / "pytest.xml", within=workspace)
-    assert not summary.cases and "outside the workspace" in summary.describe()
+    assert not summary.cases and "is a symbolic link" in summary.describe()
     (workspace / "real.xml").write_text(REPORT)
     assert parse_junit(workspace / "real.xml", within=workspace).ran == 3
+
+
+def test_a_fifo_or_a_linked_folder_for_a_report_is_refused_without_blocking(
+        tmp_path: Path) -> None:
+    """A FIFO where the report belongs would block a plain open forever (issue 11)."""
+    workspace = tmp_path / "ws"
+    (workspace / "real").mkdir(parents=True)
+    (workspace / "real" / "pytest.xml").write_text(REPORT)
+    os.mkfifo(workspace / "pytest.xml")
+    (workspace / "linked").symlink_to(workspace / "real")
+    fifo = parse_junit(workspace / "pytest.xml", within=workspace)
+    assert not fifo.cases and "not a regular file" in fifo.describe()
+    linked = parse_junit(workspace / "linked" / "pytest.xml", within=workspace)
+    assert not linked.cases and "is a link" in linked.describe()
 
 
 def test_a_collection_error_names_its_exception(tmp_path: Path) -> None:

@@ -11,6 +11,7 @@ import posixpath
 from pathlib import PurePosixPath
 from typing import TYPE_CHECKING, Any
 
+from pkgtool.model.setup_eval.bounds import bounded_format, bounded_join, bounded_replace
 from pkgtool.model.setup_eval.tree import normalize
 from pkgtool.model.setup_eval.values import (
     PRIMITIVES, BoundMethod, Builtin, Found, GlobOrigin, PathValue, Str, UserFunc, origins_of,
@@ -72,7 +73,7 @@ def _relative(interp: Interpreter, value: Any, node: ast.AST) -> str:
 
 def _glob(interp: Interpreter, pattern: Any, node: ast.AST, *, recursive: bool) -> list[Str]:
     origin = GlobOrigin(_relative(interp, pattern, node), interp.span(node))
-    found = interp.tree.glob(origin.pattern, recursive=recursive)
+    found = interp.guard(lambda: interp.tree.glob(origin.pattern, recursive=recursive), node)
     items = [tagged_str(path, origin.span, origin) for path in found]
     return tagged_list(items, origin.span, (origin,))
 
@@ -80,7 +81,8 @@ def _glob(interp: Interpreter, pattern: Any, node: ast.AST, *, recursive: bool) 
 def _path_glob(interp: Interpreter, base: PathValue, pattern: Any, node: ast.AST) -> list[Any]:
     joined = posixpath.join(str(base), text(interp, pattern, node))
     origin = GlobOrigin(_relative(interp, joined, node), interp.span(node))
-    found = interp.tree.glob(origin.pattern, recursive=True, hidden=True, dirs_only_at_end=True)
+    found = interp.guard(lambda: interp.tree.glob(origin.pattern, recursive=True, hidden=True,
+                                                  dirs_only_at_end=True), node)
     items = [PathValue(PurePosixPath(path), origin) for path in found]
     return tagged_list(items, origin.span, (origin,))
 
@@ -95,8 +97,8 @@ def _finder(interp: Interpreter, args: list[Any], kwargs: dict[str, Any], node: 
     patterns = {key: tuple(text(interp, p, node) for p in interp.iterate(given[key], node))
                 for key in ("exclude", "include") if key in given}
     exclude, include = patterns.get("exclude", ()), patterns.get("include", ("*",))
-    found = Found(interp.tree.find_packages(where, include, exclude,
-                                            namespace=kind == "find_namespace_packages"))
+    found = Found(interp.guard(lambda: interp.tree.find_packages(
+        where, include, exclude, namespace=kind == "find_namespace_packages"), node))
     found.span, found.kind, found.where = interp.span(node), kind, where
     found.include, found.exclude = include, exclude
     return found
@@ -177,6 +179,7 @@ def _builtin(interp: Interpreter, name: str, args: list[Any], kwargs: dict[str, 
             raise interp.refuse(node)
         result = _sequence(interp, args, node, tagged_list)
         if name == "sorted":
+            interp.guard(lambda: interp.budget.charge(len(result) * 17), node)
             interp.guard(lambda: result.sort(key=_sort_key, reverse=bool(kwargs.get("reverse"))),
                          node)
         return result
@@ -194,6 +197,8 @@ def _builtin(interp: Interpreter, name: str, args: list[Any], kwargs: dict[str, 
     if name in simple and all(not isinstance(a, (PathValue, Builtin)) for a in args):
         if name == "range" and interp.guard(lambda: len(range(*args)), node) > 100_000:
             raise interp.refuse(node)
+        interp.guard(lambda: interp.budget.charge(sum(len(a) for a in args
+                                                      if hasattr(a, "__len__"))), node)
         return interp.guard(lambda: simple[name](*args), node)
     raise interp.refuse(node)
 
@@ -234,24 +239,44 @@ def _method(interp: Interpreter, method: BoundMethod, args: list[Any], kwargs: d
     if isinstance(value, PathValue):
         return _path_method(interp, value, name, args, node)
     if isinstance(value, str):
-        plain_args = [formattable(interp, a, node) for a in args]
-        plain_kwargs = {k: formattable(interp, v, node) for k, v in kwargs.items()}
-        if name == "join":
-            if len(args) != 1 or kwargs:
-                raise interp.refuse(node)
-            return str(value).join(text(interp, i, node) for i in interp.iterate(args[0], node))
-        return interp.guard(lambda: getattr(str(value), name)(*plain_args, **plain_kwargs), node)
+        return _str_method(interp, str(value), name, args, kwargs, node)
+    interp.guard(lambda: interp.budget.charge(len(value)), node)
     if isinstance(value, list) and name == "extend" and len(args) == 1:
-        value.extend(interp.iterate(args[0], node))
+        items = interp.iterate(args[0], node)
+        interp.guard(lambda: interp.budget.size(len(value) + len(items)), node)
+        value.extend(items)
         if hasattr(value, "origins"):
             value.origins = origins_of(value, args[0])
         return None
     if name == "sort" and (kwargs or args):
         raise interp.refuse(node)
+    if isinstance(value, list) and name in ("append", "insert"):
+        interp.guard(lambda: interp.budget.size(len(value) + 1), node)
     result = interp.guard(lambda: getattr(value, name)(*args, **kwargs), node)
     if name in ("items", "keys", "values"):
         return tagged_list(list(result), interp.span(node))
     return result
+
+
+def _str_method(interp: Interpreter, value: str, name: str, args: list[Any],
+                kwargs: dict[str, Any], node: ast.Call) -> Any:
+    plain_args = [formattable(interp, a, node) for a in args]
+    plain_kwargs = {k: formattable(interp, v, node) for k, v in kwargs.items()}
+    budget = interp.budget
+    if name == "join":
+        if len(args) != 1 or kwargs:
+            raise interp.refuse(node)
+        raw = interp.iterate(args[0], node)
+        sizes = [len(i) if isinstance(i, str) else 4096 for i in raw]
+        interp.guard(lambda: bounded_join(budget, value, sizes), node)
+        return value.join([text(interp, i, node) for i in raw])
+    if name == "format":
+        return interp.guard(lambda: bounded_format(budget, value, plain_args, plain_kwargs),
+                            node)
+    if name == "replace" and not kwargs:
+        return interp.guard(lambda: bounded_replace(budget, value, plain_args), node)
+    interp.guard(lambda: budget.charge(len(value)), node)
+    return interp.guard(lambda: getattr(value, name)(*plain_args, **plain_kwargs), node)
 
 
 def _path_method(interp: Interpreter, path: PathValue, name: str, args: list[Any],

@@ -17,6 +17,9 @@ from pkgtool.model.setup_eval.values import BoundMethod, Builtin, NotStatic, Opa
 from pkgtool.model.span import Unresolved
 
 MAX_CALL_DEPTH = 16
+TAINT_COST = 250
+"""Budget units per syntax node walked to taint a refused statement (a Python-level walk
+costs about what 250 characters of string work do)."""
 
 
 class _Break(Exception):
@@ -44,6 +47,10 @@ class Runner(Interpreter):
 
     depth = 0
 
+    def __init__(self, path: str, text: str, files: tuple[str, ...]) -> None:
+        super().__init__(path, text, files)
+        self._sizes: dict[int, int] = {}
+
     def run_block(self, statements: list[ast.stmt], scope: Scope) -> None:
         """Run ``statements`` in order."""
         for statement in statements:
@@ -63,7 +70,13 @@ class Runner(Interpreter):
             self.taint(statement, scope, self.unresolved(statement))
 
     def taint(self, node: ast.AST, scope: Scope, why: Unresolved) -> None:
-        """Bind every name ``node`` may assign or mutate to an opaque value."""
+        """Bind every name ``node`` may assign or mutate to an opaque value.
+
+        Walking ``node`` costs its size: charged, so a refused statement in a long loop
+        exhausts the budget instead of being walked again and again.
+        """
+        size = self._sizes.setdefault(id(node), sum(1 for _ in ast.walk(node)))
+        self.budget.cost += TAINT_COST * size
         for name in changed_names(node, scope):
             owner = _owner(scope, name)
             owner.names[name] = Opaque(why)

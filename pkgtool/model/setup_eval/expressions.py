@@ -7,6 +7,10 @@ import operator
 from typing import Any
 
 from pkgtool.model.setup_eval import builtins
+from pkgtool.model.setup_eval.bounds import (
+    MAX_COST, MAX_SIZE, MAX_STEPS, Budget, TooLarge, binary_size, bounded_percent, length,
+    spec_size,
+)
 from pkgtool.model.setup_eval.scope import Scope
 from pkgtool.model.setup_eval.tree import Tree
 from pkgtool.model.setup_eval.values import (
@@ -14,11 +18,6 @@ from pkgtool.model.setup_eval.values import (
     tagged_tuple,
 )
 from pkgtool.model.span import Span, Unresolved
-
-MAX_STEPS = 200_000
-"""Evaluation steps before the evaluator gives up (loops over huge globs, runaway code)."""
-MAX_SIZE = 100_000
-"""Longest string or list the evaluator builds."""
 
 _COMPARE = {ast.Eq: operator.eq, ast.NotEq: operator.ne, ast.Lt: operator.lt,
             ast.LtE: operator.le, ast.Gt: operator.gt, ast.GtE: operator.ge,
@@ -35,7 +34,8 @@ class ExpressionEvaluator:
     def __init__(self, path: str, text: str, files: tuple[str, ...]) -> None:
         self.path = path
         self.lines = text.splitlines()
-        self.tree = Tree(files)
+        self.budget = Budget()
+        self.tree = Tree(files, self.budget)
         self.steps = 0
         self.uncertain = 0
 
@@ -59,9 +59,9 @@ class ExpressionEvaluator:
         return NotStatic(self.unresolved(node))
 
     def tick(self, node: ast.AST) -> None:
-        """Count one step; past the budget every evaluation is refused."""
+        """Count one step; past the steps or the cost budget every evaluation is refused."""
         self.steps += 1
-        if self.steps > MAX_STEPS:
+        if self.steps > MAX_STEPS or self.budget.cost > MAX_COST:
             raise OutOfBudget(self.unresolved(node))
 
     def eval(self, node: ast.AST, scope: Scope) -> Any:
@@ -87,8 +87,7 @@ class ExpressionEvaluator:
     def iterate(self, value: Any, node: ast.AST) -> list[Any]:
         """The items of an iterable value (dict keys, string characters)."""
         if isinstance(value, (list, tuple, str, dict, set, frozenset, range)):
-            if len(value) > MAX_SIZE:
-                raise OutOfBudget(self.unresolved(node))
+            self.guard(lambda: self.budget.size(len(value)), node)
             return list(value)
         raise self.refuse(node)
 
@@ -113,9 +112,12 @@ class ExpressionEvaluator:
             raise self.refuse(target)
 
     def guard(self, compute: Any, node: ast.AST) -> Any:
-        """Run a pure operation on evaluated data; a Python error in it is refused."""
+        """Run a pure operation on evaluated data; a Python error in it is refused, and so is
+        one past the bounds of :mod:`~pkgtool.model.setup_eval.bounds`."""
         try:
             return compute()
+        except TooLarge:
+            raise OutOfBudget(self.unresolved(node)) from None
         except (TypeError, ValueError, KeyError, IndexError, AttributeError, ZeroDivisionError,
                 OverflowError):
             raise self.refuse(node) from None
@@ -128,11 +130,10 @@ class ExpressionEvaluator:
         function = _ARITHMETIC.get(type(op))
         if function is None or not _operand_ok(left) or not _operand_ok(right):
             raise self.refuse(node)
-        if isinstance(op, ast.Mult) and isinstance(left, (str, list, tuple)) and \
-                isinstance(right, int) and len(left) * right > MAX_SIZE:
-            raise OutOfBudget(self.unresolved(node))
         if isinstance(op, ast.Mod) and isinstance(left, str):
-            return self.guard(lambda: left % builtins.formattable(self, right, node), node)
+            values = builtins.formattable(self, right, node)
+            return self.guard(lambda: bounded_percent(self.budget, left, values), node)
+        self.guard(lambda: self.budget.size(binary_size(type(op).__name__, left, right)), node)
         result = self.guard(lambda: function(left, right), node)
         if isinstance(result, list):
             return tagged_list(result, self.span(node), origins_of(left, right))
@@ -146,12 +147,13 @@ class ExpressionEvaluator:
         return node.value
 
     def _eval_JoinedStr(self, node: ast.JoinedStr, scope: Scope) -> str:
-        pieces = []
+        pieces: list[str] = []
         for part in node.values:
             if isinstance(part, ast.FormattedValue):
                 pieces.append(self._formatted(part, scope))
             else:
                 pieces.append(str(self.eval(part, scope)))
+            self.guard(lambda: self.budget.size(sum(map(len, pieces))), node)
         return "".join(pieces)
 
     def _formatted(self, part: ast.FormattedValue, scope: Scope) -> str:
@@ -162,6 +164,7 @@ class ExpressionEvaluator:
         convert = {115: str, 114: repr, 97: ascii}.get(part.conversion)
         value = convert(value) if convert else value
         spec = str(self.eval(part.format_spec, scope)) if part.format_spec else ""
+        self.guard(lambda: self.budget.size(spec_size(value, spec)), part)
         return str(self.guard(lambda: format(value, spec), part))
 
     def _eval_Subscript(self, node: ast.Subscript, scope: Scope) -> Any:
@@ -203,6 +206,7 @@ class ExpressionEvaluator:
             right = self.eval(comparator, scope)
             if not (_operand_ok(left) and _operand_ok(right)):
                 raise self.refuse(node)
+            self.guard(lambda: self.budget.charge(length(right)), node)
             if not self.guard(lambda: _COMPARE[type(op)](left, right), node):
                 return False
             left = right

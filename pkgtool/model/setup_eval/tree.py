@@ -11,7 +11,16 @@ import re
 from collections.abc import Iterable, Iterator
 from fnmatch import fnmatchcase
 
+from pkgtool.model.setup_eval.bounds import MAX_COST, Budget, TooLarge
+
 _MAGIC = re.compile(r"[*?[]")
+
+VISIT_COST = 20
+"""Budget units per folder entry a glob visits (Python-level work: about 20 characters' worth
+of string work each)."""
+
+MAX_GLOB_COST = 2_000_000
+"""Budget units one glob may spend (about 100,000 visited entries)."""
 
 FINDER_EXCLUDES = ("ez_setup", "*__pycache__")
 """Patterns setuptools' package finders always exclude."""
@@ -30,9 +39,12 @@ def normalize(path: str) -> str | None:
 
 
 class Tree:
-    """Files and the folders that hold them."""
+    """Files and the folders that hold them; globbing charges each visited entry to
+    ``budget`` (a nested ``**`` pattern costs its real work, and is refused past the bound)."""
 
-    def __init__(self, files: Iterable[str]) -> None:
+    def __init__(self, files: Iterable[str], budget: Budget | None = None) -> None:
+        self.budget = budget or Budget()
+        self.stop_at = MAX_COST
         self.files = frozenset(files)
         self.children: dict[str, set[str]] = {"": set()}
         for file in self.files:
@@ -51,7 +63,9 @@ class Tree:
 
     def listdir(self, folder: str) -> list[str]:
         """Sorted entry names of ``folder``."""
-        return sorted(self.children.get(folder, ()))
+        names = self.children.get(folder, ())
+        self._charge(len(names))
+        return sorted(names)
 
     def subdirs(self, folder: str) -> list[str]:
         """Sorted names of the sub-folders of ``folder``."""
@@ -62,6 +76,7 @@ class Tree:
         """Paths matching ``pattern`` like ``glob.glob`` (``hidden``: pathlib's rules)."""
         if not pattern:
             return []
+        self.stop_at = self.budget.cost + MAX_GLOB_COST
         parts = pattern.split("/")
         trailing = parts[-1] == ""
         if trailing:
@@ -73,6 +88,7 @@ class Tree:
 
     def _match(self, base: str, parts: list[str], recursive: bool, hidden: bool
                ) -> Iterator[str]:
+        self._charge(1)
         if not parts:
             yield base
             return
@@ -98,6 +114,7 @@ class Tree:
 
     def _below(self, base: str, hidden: bool, *, dirs: bool) -> Iterator[str]:
         """``base`` and every folder (and file, unless ``dirs``) below it, hidden ones skipped."""
+        self._charge(1)
         yield base
         for name in self.listdir(base):
             path = _join(base, name)
@@ -107,6 +124,12 @@ class Tree:
                 yield from self._below(path, hidden, dirs=dirs)
             elif not dirs:
                 yield path
+
+    def _charge(self, entries: int) -> None:
+        """Charge visited entries; one glob may cost MAX_GLOB_COST at most."""
+        self.budget.charge(VISIT_COST * entries)
+        if self.budget.cost > self.stop_at:
+            raise TooLarge("glob")
 
     def find_packages(self, where: str, include: tuple[str, ...], exclude: tuple[str, ...],
                       *, namespace: bool) -> list[str]:
