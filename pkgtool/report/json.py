@@ -39,9 +39,14 @@ def document(command: str, body: Mapping[str, object]) -> str:
                   "command": command, **body})
 
 
-def finding_dict(finding: Finding) -> dict[str, object]:
-    """One finding as plain data; an unknown line or column (0) is null."""
-    return {
+def finding_dict(finding: Finding, fixable: Mapping[str, bool] | None = None
+                 ) -> dict[str, object]:
+    """One finding as plain data; an unknown line or column (0) is null.
+
+    With ``fixable`` (lint), ``fixable`` says whether ``lint --fix`` repairs it: ``safe``,
+    ``unsafe`` (only with ``--unsafe-fixes``) or null.
+    """
+    found = {
         "rule": finding.code,
         "severity": finding.severity.value,
         "package": finding.package,
@@ -51,9 +56,14 @@ def finding_dict(finding: Finding) -> dict[str, object]:
         "message": finding.message,
         "fix": finding.fix,
     }
+    if fixable is not None:
+        safe = fixable.get(finding.code)
+        found["fixable"] = None if safe is None else "safe" if safe else "unsafe"
+    return found
 
 
 def render(findings: Sequence[Finding], *, context: ReportContext) -> str:
     """lint's findings and a summary of them."""
-    return document("lint", {"findings": [finding_dict(f) for f in findings],
+    return document("lint", {"findings": [finding_dict(f, context.fixable)
+                                          for f in findings],
                              "summary": {**counts(findings), "packages": len(context.packages)}})
