@@ -55,4 +55,3 @@ def fix_package(root: Path, label: str, check: Check, *, unsafe: bool, write: bo
     except EditError as error:
         return FixOutcome(tuple(applied), error=f"`{label}`: {error}")
     return FixOutcome(tuple(applied))
-

@@ -39,14 +39,14 @@ def document(command: str, body: Mapping[str, object]) -> str:
                   "command": command, **body})
 
 
-def finding_dict(finding: Finding, fixable: Mapping[str, bool] | None = None
-                 ) -> dict[str, object]:
+def finding_dict(finding: Finding, fixable: Mapping[str, bool]) -> dict[str, object]:
     """One finding as plain data; an unknown line or column (0) is null.
 
-    With ``fixable`` (lint), ``fixable`` says whether ``lint --fix`` repairs it: ``safe``,
-    ``unsafe`` (only with ``--unsafe-fixes``) or null.
+    ``fixable`` (rule code -> safe) gives the ``fixable`` key: whether ``lint --fix`` repairs
+    it, ``safe``, ``unsafe`` (only with ``--unsafe-fixes``) or null.
     """
-    found = {
+    safe = fixable.get(finding.code)
+    return {
         "rule": finding.code,
         "severity": finding.severity.value,
         "package": finding.package,
@@ -55,11 +55,8 @@ def finding_dict(finding: Finding, fixable: Mapping[str, bool] | None = None
         "column": finding.span.col or None,
         "message": finding.message,
         "fix": finding.fix,
+        "fixable": None if safe is None else "safe" if safe else "unsafe",
     }
-    if fixable is not None:
-        safe = fixable.get(finding.code)
-        found["fixable"] = None if safe is None else "safe" if safe else "unsafe"
-    return found
 
 
 def render(findings: Sequence[Finding], *, context: ReportContext) -> str:
