@@ -1,14 +1,16 @@
-"""Fixers that remove package.xml elements: repeated and unused dependencies."""
+"""Fixers of package.xml elements: repeated, redundant and unused dependencies, SPDX spelling."""
 
 from __future__ import annotations
 
 from collections.abc import Iterator
 
-from pkgtool.edit.core import Fix
+from pkgtool.edit.core import Edit, Fix
 from pkgtool.findings import Finding
 from pkgtool.fix.common import child_at, manifest_doc
 from pkgtool.fix.registry import fixer
 from pkgtool.model.package import Package
+from pkgtool.rules.manifest.non_spdx_license import spdx_spelling
+from pkgtool.safe_xml import xml_text
 
 
 def _remove_lines(package: Package, findings: list[Finding], title: str, *, safe: bool
@@ -32,3 +34,27 @@ def repeated(package: Package, findings: list[Finding]) -> Iterator[Fix]:
 def unused(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Delete the dependency: unsafe, as something lint cannot see may still need it."""
     yield from _remove_lines(package, findings, "Remove unused", safe=False)
+
+
+@fixer("MAN012", "Remove the dependency tag that `<depend>` already covers")
+def redundant(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Delete the narrower tag; the ``<depend>`` it repeats stays."""
+    yield from _remove_lines(package, findings, "Remove redundant", safe=True)
+
+
+@fixer("MAN019", "Write the SPDX license identifier")
+def spdx(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Replace a license spelling by its SPDX identifier when exactly one is meant."""
+    doc = manifest_doc(package)
+    if doc is None:
+        return
+    for finding in findings:
+        element = child_at(doc, finding.span.line)
+        if element is None or element.local != "license":
+            continue
+        suggestion = spdx_spelling(doc.text_of(element))
+        if suggestion and suggestion.count("`") == 2:
+            identifier = suggestion.strip("`")
+            edit = Edit(doc.source.path, element.inner_start, element.inner_end,
+                        xml_text(identifier))
+            yield Fix(f"Write `{identifier}`", (edit,))
