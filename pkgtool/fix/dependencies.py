@@ -23,13 +23,17 @@ def _declare(package: Package, findings: list[Finding], found: Iterable[Need], t
     wanted = {_at(f.span) for f in findings}
     keys: list[str] = []
     for need in found:
-        if need.kind != "unknown" and _at(need.imported.span) in wanted and need.key not in keys:
+        if need.kind != "unknown" and _at(need.imported.span) in wanted \
+                and need.key not in keys and _resolves(package, need.key):
             keys.append(need.key)
     for key in keys:
         yield from _add(doc, tag, key)
 
 
 def _resolves(package: Package, name: str) -> bool:
+    """True for a released package or rosdep key of the target distribution, or a workspace
+    package: an unknown name may be misspelled or live elsewhere, and declaring it would only
+    turn the finding into MAN021/MAN022."""
     context = package.context
     return name in context.workspace or is_known_dependency(name, context.distro)
 
@@ -72,8 +76,7 @@ def launch_import(package: Package, findings: list[Finding]) -> Iterator[Fix]:
 def launch_package(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Declare each ROS package a launch file starts or includes (the name is its key).
 
-    Only names that resolve (released for the target distribution, or in the workspace): an
-    unknown one may be misspelled, and declaring it would only move the finding.
+    Only names that resolve, as for every key these fixers add (see :func:`_resolves`).
     """
     doc = manifest_doc(package)
     if doc is None:
