@@ -1,4 +1,4 @@
-"""Fixers of package.xml elements: repeated, redundant and unused dependencies, SPDX spelling."""
+"""Fixers of package.xml elements: dependencies (repeated, redundant, unused, pip names), SPDX."""
 
 from __future__ import annotations
 
@@ -8,6 +8,7 @@ from pkgtool.edit.core import Edit, Fix
 from pkgtool.findings import Finding
 from pkgtool.fix.common import child_at, manifest_doc
 from pkgtool.fix.registry import fixer
+from pkgtool.knowledge.rosdep import suggested_key
 from pkgtool.model.package import Package
 from pkgtool.rules.manifest.non_spdx_license import spdx_spelling
 from pkgtool.safe_xml import xml_text
@@ -58,3 +59,23 @@ def spdx(package: Package, findings: list[Finding]) -> Iterator[Fix]:
             edit = Edit(doc.source.path, element.inner_start, element.inner_end,
                         xml_text(identifier))
             yield Fix(f"Write `{identifier}`", (edit,))
+
+
+@fixer("MAN018", "Write the rosdep key instead of the pip or import name")
+def rosdep_key(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename the key rosdep data names (``numpy`` -> ``python3-numpy``); when that tag already
+    declares the right key, drop the wrong one. Build types and ROS 1 packages stay manual."""
+    doc = manifest_doc(package)
+    if doc is None:
+        return
+    for finding in findings:
+        element = child_at(doc, finding.span.line)
+        key = suggested_key(doc.text_of(element)) if element is not None else None
+        if element is None or key is None:
+            continue
+        if doc.find(element.local, key):
+            yield Fix(f"Remove `{doc.text_of(element)}`: `{key}` is declared",
+                      (doc.remove(element),))
+        else:
+            yield Fix(f"Write `{key}`", (Edit(doc.source.path, element.inner_start,
+                                              element.inner_end, xml_text(key)),))
