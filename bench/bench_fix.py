@@ -52,7 +52,8 @@ def mutants(scratch: Path, colcon: bool) -> None:
                           config=True, year=2026))
     bases = {CREATED: made.root}
     fixable = [c for c in CASES if c.code in fixers()]
-    cleared, built = [], []
+    cleared: list[bool] = []
+    built: list[set[str]] = []
     for index, case in enumerate(fixable):
         root = scratch / f"m{index}" / "base_pkg"
         source = bases.get(case.base) or REFERENCE / case.base
@@ -64,17 +65,30 @@ def mutants(scratch: Path, colcon: bool) -> None:
         if not ok:
             print(f"  not cleared: {case.id} ({case.code})")
         if colcon and ok:
-            from pkgtool.commands.test import run as test
-
-            passed = test(str(root)).exit_code == 0
-            built.append(passed)
-            if not passed:
-                print(f"  fixed but fails colcon: {case.id}")
+            failed = colcon_failures(root)
+            built.append(failed)
+            if failed:
+                print(f"  fixed but fails under colcon: {case.id}: {sorted(failed)}")
     print(f"mutants of fixable rules: {len(fixable)}; --fix clears the rule: {sum(cleared)} "
           f"({100 * sum(cleared) / len(fixable):.0f}%)")
     if colcon:
-        print(f"cleared and colcon build + test pass: {sum(built)} of {len(fixable)} "
-              f"({100 * sum(built) / len(fixable):.0f}%)")
+        passed = sum(1 for failed in built if not failed)
+        functional = sum(1 for failed in built if failed <= {"test_flake8"})
+        print(f"cleared, built and every test passed: {passed} of {len(fixable)} "
+              f"({100 * passed / len(fixable):.0f}%); all but ament_flake8 (style the "
+              f"mutation itself seeds in .py files no fix edits): {functional} "
+              f"({100 * functional / len(fixable):.0f}%)")
+
+
+def colcon_failures(root: Path) -> set[str]:
+    """Names of the tests that fail (``build`` when it does not build) under colcon."""
+    from pkgtool.commands.test import run as test
+
+    (tested,) = test(str(root)).packages
+    if not tested.built or tested.summary is None:
+        return {"build"}
+    return {case.name.rsplit(".", 1)[0].rsplit(".", 1)[-1] for case in tested.summary.cases
+            if case.outcome not in ("passed", "skipped")}
 
 
 def clean(scratch: Path) -> None:
