@@ -90,6 +90,14 @@ def lint(
         "--rosdistro", help="The ROS 2 distribution to check against: humble, jazzy, kilted or "
         "rolling (default: `rosdistro` in [tool.pkgtool], else jazzy).", show_default=False,
         metavar="NAME")] = None,
+    fix: Annotated[bool, typer.Option(
+        "--fix", help="Apply the safe fixes, then report what is left.")] = False,
+    diff: Annotated[bool, typer.Option(
+        "--diff", help="Print the fixes as a unified diff and write nothing (exit 1 when "
+        "there is one).")] = False,
+    unsafe_fixes: Annotated[bool, typer.Option(
+        "--unsafe-fixes", help="With --fix or --diff, also apply fixes that may change "
+        "behaviour (removing a dependency).")] = False,
     explain: Annotated[Optional[str], typer.Option(
         help="Print the documentation of a rule (code, name or family) and exit.",
         show_default=False, metavar="RULE")] = None,
@@ -105,7 +113,8 @@ def lint(
 
     options = command.LintOptions(_selectors(select) if select else None, _selectors(ignore),
                                   _selectors(extend_select) + (STYLE_FAMILIES if style else ()),
-                                  strict, exit_zero, quiet, isolated, rosdistro)
+                                  strict, exit_zero, quiet, isolated, rosdistro, fix, diff,
+                                  unsafe_fixes)
     try:
         if explain is not None or list_rules:
             _show_rules(explain, fmt, output)
@@ -126,7 +135,12 @@ def _lint(paths: list[str], options: LintOptions, fmt: Format, output: Optional[
     result = run(paths, options=options)
     if result.exit_code is ExitCode.USAGE:
         raise _fail(*result.notes, *result.errors, code=result.exit_code)
-    _report(result, fmt, output)
+    if options.diff:
+        emit(result.diff, output, "lint")
+    else:
+        _report(result, fmt, output)
+    if result.fixed:
+        _say(f"fixed {len(result.fixed)}:", *(f"  {title}" for title in result.fixed))
     _say(*result.notes, *result.errors)
     raise typer.Exit(int(result.exit_code))
 
@@ -144,10 +158,12 @@ def _show_rules(explain: Optional[str], fmt: Format, output: Optional[Path]) -> 
 
 
 def _report(result: LintResult, fmt: Format, output: Optional[Path]) -> None:
+    from pkgtool.fix.registry import fixers
     from pkgtool.report import ReportContext, render
     from pkgtool.rules.registry import load_all
 
-    context = ReportContext(result.packages, load_all(), _colour(fmt, output))
+    fixable = {code: entry.safe for code, entry in fixers().items()}
+    context = ReportContext(result.packages, load_all(), _colour(fmt, output), fixable)
     emit(render(fmt.value, result.findings, context=context), output, "lint")
 
 

@@ -12,6 +12,7 @@ import sys
 from collections.abc import Iterable, Mapping, Sequence
 from pathlib import Path
 
+from pkgtool.fix.registry import Fixer, describe, fixers
 from pkgtool.rules.registry import FAMILIES, Rule, load_all
 
 DEFAULT_OUTPUT = Path(__file__).resolve().parent.parent / "docs" / "rules.md"
@@ -26,7 +27,7 @@ def _facts(rule: Rule) -> str:
     default = "" if rule.default_enabled else " (not enabled by default: select it)"
     return (f"Severity: {rule.severity.value}{default}. "
             f"Family: {rule.family} ({FAMILIES.get(rule.family, '')}).\n\n"
-            f"Fix: {rule.fix}.")
+            f"Fix: {rule.fix}. Autofix (`lint --fix`): {describe(rule.code)}.")
 
 
 def _body(doc: str, *, level: int) -> str:
@@ -69,13 +70,21 @@ def _cell(text: str) -> str:
     return text.replace("|", "\\|")
 
 
+def _fix_mark(entry: Fixer | None) -> str:
+    """``safe``, ``unsafe`` or empty: the FIX column of ``--list-rules``."""
+    if entry is None:
+        return ""
+    return "safe" if entry.safe else "unsafe"
+
+
 def rules_table(rules: Mapping[str, Rule]) -> str:
     """``--list-rules``: aligned columns code, name, severity, summary (``*`` = off by default)."""
-    rows = [("CODE", "NAME", "SEVERITY", "SUMMARY")]
-    rows += [(r.code, r.name, r.severity.value + ("" if r.default_enabled else "*"), r.summary)
-             for r in rules.values()]
-    widths = [max(len(row[i]) for row in rows) for i in range(3)]
-    lines = ["  ".join(cell.ljust(width) for cell, width in zip(row, widths)) + "  " + row[3]
+    found = fixers()
+    rows = [("CODE", "NAME", "SEVERITY", "FIX", "SUMMARY")]
+    rows += [(r.code, r.name, r.severity.value + ("" if r.default_enabled else "*"),
+              _fix_mark(found.get(r.code)), r.summary) for r in rules.values()]
+    widths = [max(len(row[i]) for row in rows) for i in range(4)]
+    lines = ["  ".join(cell.ljust(width) for cell, width in zip(row, widths)) + "  " + row[4]
              for row in rows]
     if any(not r.default_enabled for r in rules.values()):
         lines.append("\n* off by default: turn on with --select or --extend-select")

@@ -13,7 +13,6 @@ import subprocess
 import sys
 from pathlib import Path
 
-import pytest
 import yaml
 
 from tests.helpers import run_cli
@@ -93,10 +92,12 @@ def test_strict_makes_warnings_fail(tmp_path: Path) -> None:
     assert _run(tmp_path, paths="gh_demo", strict="true")[0] == {"exit-code": "1"}
 
 
-@pytest.mark.skipif("--diff" in run_cli("lint", "--help", cwd=ROOT).output,
-                    reason="this pkgtool has lint --diff: the pending-fix test covers fix-check")
-def test_fix_check_says_plainly_when_pkgtool_cannot_diff(tmp_path: Path) -> None:
+def test_fix_check_fails_on_pending_fixes_and_passes_a_clean_package(tmp_path: Path) -> None:
     _package(tmp_path, broken=False)
-    outputs, stdout = _run(tmp_path, paths="gh_demo", fix_check="true")
-    assert outputs == {"exit-code": "2"}
-    assert "has no `lint --diff`" in stdout
+    assert _run(tmp_path, paths="gh_demo", fix_check="true")[0] == {"exit-code": "0"}
+    (tmp_path / "broken").mkdir()
+    _package(tmp_path / "broken", broken=True)
+    outputs, stdout = _run(tmp_path / "broken", paths="gh_demo", fix_check="true")
+    assert outputs == {"exit-code": "1"}
+    assert "would change files" in stdout
+    assert "+  <exec_depend>python3-numpy</exec_depend>" in stdout

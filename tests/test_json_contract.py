@@ -28,7 +28,7 @@ ENVELOPE = ["schema_version", "tool", "version", "command"]
 KEYS: dict[str, dict[str, list[str]]] = {
     "lint": {"": [*ENVELOPE, "findings", "summary"],
              "finding": ["rule", "severity", "package", "path", "line", "column", "message",
-                         "fix"],
+                         "fix", "fixable"],
              "summary": ["error", "warning", "info", "packages"]},
     "test": {"": [*ENVELOPE, "ok", "isolation", "packages"],
              "tested_package": ["name", "ok", "built", "limit", "seconds", "counts", "problem",

@@ -11,7 +11,7 @@ from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass
 from functools import partial
 from pathlib import Path
-from typing import Union
+from typing import TYPE_CHECKING, Union
 
 from pkgtool.commands import ExitCode
 from pkgtool.config import ConfigError, ConfigFinder, Layer, Settings, check_rosdistro
@@ -19,6 +19,9 @@ from pkgtool.findings import Finding, Severity
 from pkgtool.model.context import Context, WorkspacePackage, workspace_of
 from pkgtool.report import PackageLabel
 from pkgtool.workspace import discover
+
+if TYPE_CHECKING:
+    from pkgtool.model.package import Package
 
 __all__ = ["LintOptions", "LintResult", "TextResult", "explain", "list_rules", "run"]
 
@@ -38,6 +41,9 @@ class LintOptions:
     hide_info: bool = False
     isolated: bool = False
     rosdistro: str | None = None
+    fix: bool = False
+    diff: bool = False
+    unsafe_fixes: bool = False
 
 
 @dataclass(frozen=True, slots=True)
@@ -53,6 +59,9 @@ class LintResult:
     packages: tuple[PackageLabel, ...] = ()
     errors: tuple[str, ...] = ()
     notes: tuple[str, ...] = ()
+    fixed: tuple[str, ...] = ()
+    diff: str = ""
+    """``--fix``: the titles of the fixes applied; ``--diff``: what they would change."""
 
 
 def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) -> LintResult:
@@ -84,6 +93,8 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
     findings: list[Finding] = []
     labels: list[PackageLabel] = []
     errors: list[str] = []
+    fixed, diff = _fix_all(jobs, workspace, options, errors) if options.fix or options.diff \
+        else ((), "")
     failing = False
     for (root, label, setting), outcome in zip(jobs, _check_all(jobs, workspace)):
         if isinstance(outcome, str):
@@ -99,7 +110,42 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
     internal = bool(errors) or any(f.internal for f in findings)
     code = (ExitCode.INTERNAL if internal else
             ExitCode.FINDINGS if failing and not options.exit_zero else ExitCode.OK)
-    return LintResult(code, tuple(findings), tuple(labels), tuple(errors), notes)
+    if options.diff:
+        code = ExitCode.FINDINGS if diff and not options.exit_zero else ExitCode.OK
+    return LintResult(code, tuple(findings), tuple(labels), tuple(errors), notes, fixed, diff)
+
+
+def _fix_all(jobs: list[Job], workspace: Workspace, options: LintOptions, errors: list[str]
+             ) -> tuple[tuple[str, ...], str]:
+    """Apply (or, with ``--diff``, show) the fixes of every package; refusals go to errors."""
+    from pkgtool.fix.apply import fix_package
+
+    fixed: list[str] = []
+    diffs: list[str] = []
+    for root, label, settings in jobs:
+        outcome = fix_package(root, label, partial(_model_and_findings, label=label,
+                                                   settings=settings, workspace=workspace),
+                              unsafe=options.unsafe_fixes, write=not options.diff)
+        fixed.extend(f"{label}: {title}" for title in outcome.applied)
+        diffs.append(outcome.diff)
+        if outcome.error:
+            errors.append(outcome.error)
+    return tuple(fixed), "".join(diffs)
+
+
+def _model_and_findings(root: Path, *, label: str, settings: Settings, workspace: Workspace
+                        ) -> tuple[Package, list[Finding]]:
+    """Read and check one package (exceptions propagate: ``_check`` reports them)."""
+    from pkgtool.engine import check_package
+    from pkgtool.model.package import load_package
+
+    package = load_package(root, Context(settings.rosdistro, workspace))
+    found = check_package(package, settings.rules, root_label=label,
+                          severities=settings.severities)
+    if settings.path_ignores:
+        found = [f for f in found
+                 if f.internal or not settings.ignores(root / f.span.path, f.code)]
+    return package, found
 
 
 Job = tuple[Path, str, Settings]
@@ -135,20 +181,13 @@ def _cpus() -> int:
 
 def _check(job: Job, workspace: Workspace) -> Outcome:
     """Read one package and check it; an exception becomes an internal-error message."""
-    from pkgtool.engine import check_package
-    from pkgtool.model.package import load_package
-
     root, label, settings = job
     try:
-        package = load_package(root, Context(settings.rosdistro, workspace))
-        found = check_package(package, settings.rules, root_label=label,
-                              severities=settings.severities)
+        package, found = _model_and_findings(root, label=label, settings=settings,
+                                             workspace=workspace)
     except Exception as error:  # noqa: BLE001 - report it, keep linting the others
         return (f"Internal error while reading the package at `{label}`: "
                 f"{type(error).__name__}: {error}. Please report this pkgtool bug.")
-    if settings.path_ignores:
-        found = [f for f in found
-                 if f.internal or not settings.ignores(root / f.span.path, f.code)]
     return package.name, found
 
 

@@ -39,6 +39,8 @@ class ReportContext:
     packages: Sequence[PackageLabel] = ()
     rules: Mapping[str, Rule] = field(default_factory=dict)
     color: bool = False
+    fixable: Mapping[str, bool] = field(default_factory=dict)
+    """Rule codes ``lint --fix`` can repair, each mapped to whether the fix is safe."""
 
 
 def render(fmt: str, findings: Sequence[Finding], *, context: ReportContext) -> str:

@@ -39,8 +39,13 @@ def document(command: str, body: Mapping[str, object]) -> str:
                   "command": command, **body})
 
 
-def finding_dict(finding: Finding) -> dict[str, object]:
-    """One finding as plain data; an unknown line or column (0) is null."""
+def finding_dict(finding: Finding, fixable: Mapping[str, bool]) -> dict[str, object]:
+    """One finding as plain data; an unknown line or column (0) is null.
+
+    ``fixable`` (rule code -> safe) gives the ``fixable`` key: whether ``lint --fix`` repairs
+    it, ``safe``, ``unsafe`` (only with ``--unsafe-fixes``) or null.
+    """
+    safe = fixable.get(finding.code)
     return {
         "rule": finding.code,
         "severity": finding.severity.value,
@@ -50,10 +55,12 @@ def finding_dict(finding: Finding) -> dict[str, object]:
         "column": finding.span.col or None,
         "message": finding.message,
         "fix": finding.fix,
+        "fixable": None if safe is None else "safe" if safe else "unsafe",
     }
 
 
 def render(findings: Sequence[Finding], *, context: ReportContext) -> str:
     """lint's findings and a summary of them."""
-    return document("lint", {"findings": [finding_dict(f) for f in findings],
+    return document("lint", {"findings": [finding_dict(f, context.fixable)
+                                          for f in findings],
                              "summary": {**counts(findings), "packages": len(context.packages)}})

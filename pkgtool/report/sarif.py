@@ -5,7 +5,7 @@ Written by :func:`pkgtool.report.json.dumps`: every string is made safe.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 from pathlib import PurePosixPath
 from urllib.parse import quote
 
@@ -46,20 +46,24 @@ def _uri(path: str) -> dict[str, str]:
     return {"uri": quote(path), "uriBaseId": "%SRCROOT%"}
 
 
-def _result(finding: Finding, index: dict[str, int]) -> dict[str, object]:
+def _result(finding: Finding, index: dict[str, int], fixable: Mapping[str, bool]
+            ) -> dict[str, object]:
     region = {"startLine": finding.span.line} if finding.span.line else {}
     if region and finding.span.col:
         region["startColumn"] = finding.span.col
     location: dict[str, object] = {"artifactLocation": _uri(display_path(finding))}
     if region:
         location["region"] = region
+    properties = {"package": finding.package}
+    if finding.code in fixable:
+        properties["fixable"] = "safe" if fixable[finding.code] else "unsafe"
     result: dict[str, object] = {
         "ruleId": finding.code,
         "level": LEVELS[finding.severity],
         "message": {"text": f"{finding.message}. Fix: {finding.fix}" if finding.fix
                     else finding.message},
         "locations": [{"physicalLocation": location}],
-        "properties": {"package": finding.package},
+        "properties": properties,
     }
     if finding.code in index:
         result["ruleIndex"] = index[finding.code]
@@ -79,6 +83,6 @@ def render(findings: Sequence[Finding], *, context: ReportContext) -> str:
         }},
         "originalUriBaseIds": {"%SRCROOT%": {"description": {
             "text": "The folder pkgtool lint ran in"}}},
-        "results": [_result(f, index) for f in findings],
+        "results": [_result(f, index, context.fixable) for f in findings],
     }
     return dumps({"$schema": SCHEMA, "version": "2.1.0", "runs": [run]})

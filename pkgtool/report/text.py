@@ -6,7 +6,7 @@ file content can neither start a line of its own nor send terminal escapes.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Mapping, Sequence
 
 from pkgtool.findings import Finding
 from pkgtool.report import ReportContext, counts, display_path
@@ -31,6 +31,22 @@ def finding_lines(finding: Finding) -> str:
     return first + (f"\n  help: {line(finding.fix)}" if finding.fix else "")
 
 
+def _mark(finding: Finding, fixable: Mapping[str, bool]) -> str:
+    """`` [*]`` after a code ``--fix`` repairs, `` [-]`` for an ``--unsafe-fixes`` one."""
+    if finding.code not in fixable:
+        return ""
+    return " [*]" if fixable[finding.code] else " [-]"
+
+
+def _fixable_note(findings: Sequence[Finding], fixable: Mapping[str, bool]) -> str:
+    safe = sum(1 for f in findings if fixable.get(f.code))
+    unsafe = sum(1 for f in findings if fixable.get(f.code) is False)
+    parts = [f"[*] {safe} fixable with `--fix`"] if safe else []
+    if unsafe:
+        parts.append(f"[-] {unsafe} more with `--fix --unsafe-fixes`")
+    return "; ".join(parts) + "." if parts else ""
+
+
 def summary(findings: Sequence[Finding], packages: int) -> str:
     """One line: how many findings of each severity, in how many packages."""
     noun = "package" if packages == 1 else "packages"
@@ -47,22 +63,27 @@ def _plural(count: int, word: str) -> str:
     return f"{count} {word}" if count == 1 else f"{count} {word}s"
 
 
-def _lines(findings: Sequence[Finding], packages: int) -> list[list[tuple[str, str]]]:
+def _lines(findings: Sequence[Finding], packages: int, fixable: Mapping[str, bool]
+           ) -> list[list[tuple[str, str]]]:
     """Each output line as (text, rich style) segments."""
     lines = []
     for finding in findings:
         lines.append([(f"{location(finding)}:", "bold"),
                       (f" {finding.code}", _STYLES[finding.severity.value]),
+                      (_mark(finding, fixable), "bold"),
                       (f" {line(finding.message)}", "")])
         if finding.fix:
             lines.append([(f"  help: {line(finding.fix)}", "dim")])
     lines.append([(summary(findings, packages), "bold")])
+    note = _fixable_note(findings, fixable)
+    if note:
+        lines.append([(note, "")])
     return lines
 
 
 def render(findings: Sequence[Finding], *, context: ReportContext) -> str:
     """The findings, each with its help line, and a summary; ANSI colour when asked."""
-    lines = _lines(findings, len(context.packages))
+    lines = _lines(findings, len(context.packages), context.fixable)
     if not context.color:
         return "".join("".join(text for text, _ in segments) + "\n" for segments in lines)
     import io

@@ -107,7 +107,7 @@ def test_explain_unknown_rule_is_a_usage_error(tmp_path: Path) -> None:
 def test_list_rules_shows_every_rule(tmp_path: Path) -> None:
     table = run_cli("lint", "--list-rules", cwd=tmp_path)
     assert table.exit_code == ExitCode.OK
-    assert table.stdout.splitlines()[0].split() == ["CODE", "NAME", "SEVERITY", "SUMMARY"]
+    assert table.stdout.splitlines()[0].split() == ["CODE", "NAME", "SEVERITY", "FIX", "SUMMARY"]
     listed = json.loads(run_cli("lint", "--list-rules", "-f", "json", cwd=tmp_path).stdout)
     assert [row["code"] for row in listed] == list(load_all())
     for code in load_all():

@@ -30,8 +30,8 @@ def _git(repo: Path, *args: str) -> None:
     subprocess.run(["git", *args], cwd=repo, check=True, capture_output=True, timeout=60)
 
 
-def _local_config() -> str:
-    (hook,) = yaml.safe_load(HOOKS.read_text())
+def _local_config(hook_id: str = "pkgtool-lint") -> str:
+    (hook,) = [h for h in yaml.safe_load(HOOKS.read_text()) if h["id"] == hook_id]
     command, _, arguments = hook["entry"].partition(" ")
     assert command == "pkgtool"
     hook.update(language="system", entry=f"{shlex.quote(sys.executable)} -m pkgtool {arguments}")
@@ -88,4 +88,20 @@ def test_staged_files_then_the_fix(repo: Path) -> None:
     write_tree(repo / "src" / "broken_pkg", {"broken_pkg/talker.py": fixed})
     _git(repo, "add", "-A")
     second = _pre_commit(repo)
+    assert second.returncode == 0, second.stdout
+
+
+def test_the_fixing_hook_fails_when_it_changes_files_then_passes(repo: Path) -> None:
+    manifest = repo / "src" / "fixed_pkg" / "package.xml"
+    duplicate = "  <exec_depend>rclpy</exec_depend>\n"
+    manifest.write_text(manifest.read_text().replace(duplicate, duplicate * 2))
+    write_tree(repo, {".pre-commit-config.yaml": _local_config("pkgtool-fix")})
+    _git(repo, "add", "-A")
+    files = ("--files", "src/fixed_pkg/package.xml")
+    first = _pre_commit(repo, *files)
+    assert first.returncode == 1, first.stdout
+    assert "files were modified by this hook" in first.stdout
+    assert manifest.read_text().count(duplicate) == 1
+    assert manifest.read_text() == correct_package_files("fixed_pkg")["package.xml"]
+    second = _pre_commit(repo, *files)
     assert second.returncode == 0, second.stdout

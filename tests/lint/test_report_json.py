@@ -7,7 +7,8 @@ import json
 from pkgtool.report import PackageLabel, ReportContext, render
 from tests.helpers import make_finding
 
-CONTEXT = ReportContext(packages=(PackageLabel("pkg", "src/pkg"), PackageLabel("b", "src/b")))
+CONTEXT = ReportContext(packages=(PackageLabel("pkg", "src/pkg"), PackageLabel("b", "src/b")),
+                        fixable={"MAN013": True})
 
 
 def test_values() -> None:
@@ -17,10 +18,10 @@ def test_values() -> None:
     assert document["findings"] == [
         {"rule": "MAN013", "severity": "warning", "package": "pkg",
          "path": "src/pkg/package.xml", "line": None, "column": None,
-         "message": "Python syntax error: invalid syntax", "fix": None},
+         "message": "Python syntax error: invalid syntax", "fix": None, "fixable": "safe"},
         {"rule": "SYN001", "severity": "error", "package": "pkg", "path": "src/pkg/pkg/node.py",
          "line": 3, "column": 5, "message": "Python syntax error: invalid syntax",
-         "fix": "Fix the syntax at the reported line and column"},
+         "fix": "Fix the syntax at the reported line and column", "fixable": None},
     ]
     assert document["summary"] == {"error": 1, "warning": 1, "info": 0, "packages": 2}
 

@@ -11,7 +11,7 @@ from pkgtool.rules.manifest.common import tree
 from pkgtool.rules.registry import rule
 
 
-def _suggestion(text: str) -> str | None:
+def spdx_spelling(text: str) -> str | None:
     """The SPDX way to write ``text`` when it is another spelling of a known license."""
     expression = spdx_expression(text)
     if expression is None:
@@ -60,7 +60,7 @@ def non_spdx_license(package: Package) -> Iterator[Hit]:
     if found is None:
         return
     for element in found.named("license"):
-        suggestion = _suggestion(element.text)
+        suggestion = spdx_spelling(element.text)
         if suggestion:
             yield Hit(element.span, f"License `{element.text}` is not an SPDX identifier",
                       f"Write {suggestion}")

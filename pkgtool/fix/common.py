@@ -1,0 +1,31 @@
+"""Helpers shared by fixers: the package.xml document and its elements by line."""
+
+from __future__ import annotations
+
+from pkgtool.edit.changes import read_source
+from pkgtool.edit.core import EditError
+from pkgtool.edit.manifest import ManifestDoc
+from pkgtool.edit.xml_scan import Element
+from pkgtool.model.package import Package
+
+
+def manifest_doc(package: Package) -> ManifestDoc | None:
+    """package.xml as the editor sees it; None when it is missing or not editable."""
+    try:
+        source = read_source(package.root, "package.xml")
+        return ManifestDoc(source) if source is not None else None
+    except EditError:
+        return None
+
+
+def child_at(doc: ManifestDoc, line: int) -> Element | None:
+    """The child of ``<package>`` that starts on ``line`` (1-based), if exactly one does."""
+    starts = doc.source.line_starts
+    found = [c for c in doc.children if _line(starts, c.start) == line]
+    return found[0] if len(found) == 1 else None
+
+
+def _line(starts: list[int], offset: int) -> int:
+    from bisect import bisect_right
+
+    return bisect_right(starts, offset)

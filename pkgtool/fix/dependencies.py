@@ -1,0 +1,92 @@
+"""Fixers that declare what code imports: the rosdep key as the right ``*_depend``."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator
+
+from pkgtool.edit.core import EditError, Fix
+from pkgtool.edit.manifest import ManifestDoc
+from pkgtool.findings import Finding
+from pkgtool.fix.common import manifest_doc
+from pkgtool.fix.registry import fixer
+from pkgtool.knowledge.rosdistro import is_known_dependency
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.imports import Need, needs, test_code, unmet_runtime_needs
+
+
+def _declare(package: Package, findings: list[Finding], found: Iterable[Need], tag: str
+             ) -> Iterator[Fix]:
+    doc = manifest_doc(package)
+    if doc is None:
+        return
+    wanted = {_at(f.span) for f in findings}
+    keys: list[str] = []
+    for need in found:
+        if need.kind != "unknown" and _at(need.imported.span) in wanted \
+                and need.key not in keys and _resolves(package, need.key):
+            keys.append(need.key)
+    for key in keys:
+        yield from _add(doc, tag, key)
+
+
+def _resolves(package: Package, name: str) -> bool:
+    """True for a released package or rosdep key of the target distribution, or a workspace
+    package: an unknown name may be misspelled or live elsewhere, and declaring it would only
+    turn the finding into MAN021/MAN022."""
+    context = package.context
+    return name in context.workspace or is_known_dependency(name, context.distro)
+
+
+def _at(span: Span) -> tuple[str, int, int]:
+    return (span.path, span.line, span.col)
+
+
+def _add(doc: ManifestDoc, tag: str, key: str) -> Iterator[Fix]:
+    try:
+        edits = doc.add(tag, key)
+    except EditError:
+        return
+    if edits:
+        yield Fix(f"Add `<{tag}>{key}</{tag}>`", tuple(edits))
+
+
+@fixer("DEP001", "Add an `<exec_depend>` with the rosdep key")
+def undeclared(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Declare each import's rosdep key for run time."""
+    yield from _declare(package, findings, unmet_runtime_needs(package), "exec_depend")
+
+
+@fixer("DEP003", "Add a `<test_depend>` with the rosdep key")
+def undeclared_test(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Declare each test import's rosdep key for tests."""
+    found = (need for module in test_code(package) for need in needs(package, module))
+    yield from _declare(package, findings, found, "test_depend")
+
+
+@fixer("LCH003", "Add an `<exec_depend>` for what the launch file imports")
+def launch_import(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Declare each launch-file import's rosdep key for run time."""
+    found = (need for launch in package.launch_files if launch.python is not None
+             for need in needs(package, launch.python))
+    yield from _declare(package, findings, found, "exec_depend")
+
+
+@fixer("LCH002", "Add an `<exec_depend>` for the package the launch file uses")
+def launch_package(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Declare each ROS package a launch file starts or includes (the name is its key).
+
+    Only names that resolve, as for every key these fixers add (see :func:`_resolves`).
+    """
+    doc = manifest_doc(package)
+    if doc is None:
+        return
+    wanted = {_at(f.span) for f in findings}
+    names = []
+    for launch in package.launch_files:
+        used = [(n.package, n.package_span or n.span) for n in launch.nodes if n.package] + [
+            (p.package, p.span) for p in launch.packages]
+        names += [name for name, span in used
+                  if _at(span) in wanted and name not in names and _resolves(package, name)]
+    for name in names:
+        yield from _add(doc, "exec_depend", name)

@@ -1,0 +1,54 @@
+"""The fixer catalogue: which rule codes have a fix, whether it is safe, and the fixer itself."""
+
+from __future__ import annotations
+
+import importlib
+from collections.abc import Callable, Iterable
+from dataclasses import dataclass
+from typing import TypeAlias
+
+from pkgtool.edit.core import Fix
+from pkgtool.findings import Finding
+from pkgtool.model.package import Package
+
+Make: TypeAlias = Callable[[Package, list[Finding]], Iterable[Fix]]
+
+_MODULES = ("pkgtool.fix.dependencies", "pkgtool.fix.manifest")
+
+
+@dataclass(frozen=True, slots=True)
+class Fixer:
+    """How findings of ``code`` are repaired; ``safe`` fixes keep the package's behaviour."""
+
+    code: str
+    safe: bool
+    title: str
+    make: Make
+
+
+_FIXERS: dict[str, Fixer] = {}
+
+
+def fixer(code: str, title: str, *, safe: bool = True) -> Callable[[Make], Make]:
+    """Register ``make`` as the fixer of rule ``code``."""
+
+    def register(make: Make) -> Make:
+        _FIXERS[code] = Fixer(code, safe, title, make)
+        return make
+
+    return register
+
+
+def fixers() -> dict[str, Fixer]:
+    """Every fixer, keyed by rule code."""
+    for name in _MODULES:
+        importlib.import_module(name)
+    return dict(sorted(_FIXERS.items()))
+
+
+def describe(code: str) -> str:
+    """``safe fix``, ``unsafe fix`` or ``no fix``: what ``--list-rules`` and the docs show."""
+    found = fixers().get(code)
+    if found is None:
+        return "no fix"
+    return "safe fix" if found.safe else "unsafe fix (--unsafe-fixes)"
