@@ -10,12 +10,12 @@ from __future__ import annotations
 import ast
 from collections.abc import Iterator
 from dataclasses import dataclass, field
-from functools import lru_cache
 
+from pkgtool.model.ast_nodes import child_nodes
+from pkgtool.model.memo import per_object
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
-from pkgtool.model.span import ParseProblem
 from pkgtool.rules.imports import installed_code
 
 FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
@@ -93,7 +93,7 @@ def _index(tree: ast.Module) -> Index:
             index.functions.append(node)
         elif isinstance(node, ast.ClassDef):
             index.classes.append(node)
-        for child in ast.iter_child_nodes(node):
+        for child in child_nodes(node):
             index.parents[id(child)] = node
             stack.append(child)
     index.aliases.update({name: target for name, (target, *more) in bound.items()
@@ -101,20 +101,24 @@ def _index(tree: ast.Module) -> Index:
     return index
 
 
-@lru_cache(maxsize=512)
-def _parsed(path: str, text: str) -> tuple[ast.Module, Index] | None:
-    tree = parse_tree(path, text)
-    return None if isinstance(tree, ParseProblem) else (tree, _index(tree))
+index_of = per_object(64)(_index)
+"""The :class:`Index` of a tree, built on first use (only rules that need one pay for it)."""
+
+
+def installed_modules(package: Package) -> Iterator[tuple[PythonModule, ast.Module]]:
+    """Installed, parseable modules with their syntax trees (the model's parse, shared)."""
+    for module in installed_code(package):
+        text = package.texts.get(module.path)
+        tree = parse_tree(module.path, text) if text is not None and not module.syntax_error \
+            else None
+        if isinstance(tree, ast.Module):
+            yield module, tree
 
 
 def installed_trees(package: Package) -> Iterator[tuple[PythonModule, ast.Module, Index]]:
     """Installed, parseable modules with their syntax trees and indexes."""
-    for module in installed_code(package):
-        text = package.texts.get(module.path)
-        parsed = _parsed(module.path, text) if text is not None and not module.syntax_error \
-            else None
-        if parsed is not None:
-            yield module, *parsed
+    for module, tree in installed_modules(package):
+        yield module, tree, index_of(tree)
 
 
 def qualified(node: ast.expr, aliases: dict[str, str]) -> str | None:
