@@ -90,6 +90,12 @@ def lint(
         "--rosdistro", help="The ROS 2 distribution to check against: humble, jazzy, kilted or "
         "rolling (default: `rosdistro` in [tool.pkgtool], else jazzy).", show_default=False,
         metavar="NAME")] = None,
+    no_cache: Annotated[bool, typer.Option(
+        "--no-cache", help="Neither read nor write the lint cache.")] = False,
+    cache_dir: Annotated[Optional[str], typer.Option(
+        "--cache-dir", help="Where the lint cache lives (default: $PKGTOOL_CACHE_DIR, else "
+        ".pkgtool_cache in the project root: the nearest folder up with a pyproject.toml, else "
+        "the current folder).", show_default=False, metavar="DIR")] = None,
     explain: Annotated[Optional[str], typer.Option(
         help="Print the documentation of a rule (code, name or family) and exit.",
         show_default=False, metavar="RULE")] = None,
@@ -105,7 +111,8 @@ def lint(
 
     options = command.LintOptions(_selectors(select) if select else None, _selectors(ignore),
                                   _selectors(extend_select) + (STYLE_FAMILIES if style else ()),
-                                  strict, exit_zero, quiet, isolated, rosdistro)
+                                  strict, exit_zero, quiet, isolated, rosdistro,
+                                  cache=not no_cache, cache_dir=cache_dir)
     try:
         if explain is not None or list_rules:
             _show_rules(explain, fmt, output)

@@ -8,10 +8,10 @@ from __future__ import annotations
 import os
 import threading
 from collections.abc import Iterator, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import partial
 from pathlib import Path
-from typing import Union
+from typing import TYPE_CHECKING, Union
 
 from pkgtool.commands import ExitCode
 from pkgtool.config import ConfigError, ConfigFinder, Layer, Settings, check_rosdistro
@@ -20,8 +20,13 @@ from pkgtool.model.context import Context, WorkspacePackage, workspace_of
 from pkgtool.report import PackageLabel
 from pkgtool.workspace import discover
 
+if TYPE_CHECKING:
+    from pkgtool.cache.store import LintCache
+
 __all__ = ["LintOptions", "LintResult", "TextResult", "explain", "list_rules", "run"]
 
+CACHE_FOLDER = ".pkgtool_cache"
+"""The cache's default folder name, in the project root."""
 PACKAGES_PER_WORKER = 16
 """Below this many packages per extra process, a process pool costs more than it saves."""
 
@@ -38,6 +43,10 @@ class LintOptions:
     hide_info: bool = False
     isolated: bool = False
     rosdistro: str | None = None
+    cache: bool = False
+    """Reuse and record findings in the lint cache (``cache_dir``, else ``$PKGTOOL_CACHE_DIR``,
+    else ``.pkgtool_cache`` in the project root)."""
+    cache_dir: str | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -85,7 +94,9 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
     labels: list[PackageLabel] = []
     errors: list[str] = []
     failing = False
-    for (root, label, setting), outcome in zip(jobs, _check_all(jobs, workspace)):
+    cache = _open_cache(options, here, workspace)
+    outcomes = _check_all(jobs, workspace) if cache is None else _cached(jobs, workspace, cache)
+    for (root, label, setting), outcome in zip(jobs, outcomes):
         if isinstance(outcome, str):
             errors.append(outcome)
             labels.append(PackageLabel(root.name, label))
@@ -110,7 +121,7 @@ Outcome = Union[tuple[str, list[Finding]], str]
 def _check_all(jobs: list[Job], workspace: Workspace) -> Iterator[Outcome]:
     """Each job's outcome in order; a process per core once there are enough packages."""
     check = partial(_check, workspace=workspace)
-    workers = min(_cpus(), len(jobs) // PACKAGES_PER_WORKER)
+    workers = _workers(len(jobs))
     if workers < 2 or threading.active_count() > 1:
         yield from map(check, jobs)
         return
@@ -124,6 +135,55 @@ def _check_all(jobs: list[Job], workspace: Workspace) -> Iterator[Outcome]:
     context = multiprocessing.get_context("fork")  # workers inherit the loaded rules; no threads
     with ProcessPoolExecutor(workers, mp_context=context) as pool:
         yield from pool.map(check, jobs, chunksize=max(1, len(jobs) // (workers * 8)))
+
+
+def _open_cache(options: LintOptions, cwd: Path, workspace: Workspace) -> LintCache | None:
+    """The cache this run uses, if any."""
+    if not options.cache:
+        return None
+    from pkgtool.cache.store import LintCache
+
+    folder = options.cache_dir or os.environ.get("PKGTOOL_CACHE_DIR")
+    return LintCache(cwd / folder if folder else project_root(cwd) / CACHE_FOLDER, workspace)
+
+
+def project_root(cwd: Path) -> Path:
+    """The nearest folder from ``cwd`` up holding a pyproject.toml, else ``cwd``."""
+    return next((folder for folder in (cwd, *cwd.parents)
+                 if (folder / "pyproject.toml").is_file()), cwd)
+
+
+def _cached(jobs: list[Job], workspace: Workspace, cache: LintCache) -> Iterator[Outcome]:
+    """Each job's outcome in order: from the cache when valid, else checked and recorded.
+
+    Entries hold findings without the package's label, so a package linted from another
+    folder still hits.
+    """
+    lookups = [cache.lookup(root, setting) for root, _, setting in jobs]
+    fresh = _check_all([job for job, found in zip(jobs, lookups) if found.hit is None],
+                       workspace)
+    for (root, label, _), found in zip(jobs, lookups):
+        if found.hit is not None:
+            name, stored = found.hit
+            if found.refresh:
+                cache.store(root, found, name, stored)
+            yield name, [replace(f, root=label) for f in stored]
+            continue
+        outcome = next(fresh)
+        if not isinstance(outcome, str) and not any(f.internal for f in outcome[1]):
+            cache.store(root, found, outcome[0], [replace(f, root="") for f in outcome[1]])
+        yield outcome
+
+
+def _workers(packages: int) -> int:
+    """``$PKGTOOL_LINT_JOBS`` when set (1: no pool), else one per core once worth it."""
+    try:
+        chosen = int(os.environ.get("PKGTOOL_LINT_JOBS", "0"))
+    except ValueError:
+        chosen = 0
+    if chosen > 0:
+        return min(chosen, packages)
+    return min(_cpus(), packages // PACKAGES_PER_WORKER)
 
 
 def _cpus() -> int:
