@@ -54,7 +54,9 @@ class Files:
 
     def unchanged(self, root: Path) -> bool:
         """True when every file still has the size and time it had when hashed."""
-        return all(_stat(root / path)[:2] == stat[:2] for path, stat in self.stats.items()) \
+        base = os.fspath(root)
+        return all(_stat(os.path.join(base, path)) == stat[:2]
+                   for path, stat in self.stats.items()) \
             and set(list_files(root)) == set(self.stats)
 
 
@@ -77,11 +79,17 @@ class LintCache:
         self.base = folder
         self._run_key = _digest([SCHEMA, _code_fingerprint(), _workspace_key(workspace)])
 
-    def lookup(self, root: Path, settings: Settings) -> Lookup:
-        """The key of the package at ``root`` and, when its entry is valid, the findings."""
+    def lookup(self, root: Path, settings: Settings, *, read: bool = True) -> Lookup | None:
+        """The key of the package at ``root`` and, when its entry is valid, the findings.
+
+        With ``read`` False only sizes and times are looked at: None when some file would
+        have to be read (a quick probe that leaves the reading to a worker process).
+        """
         entry = self._read(root)
         old = entry.get("files") if isinstance(entry.get("files"), dict) else {}
-        files = _hash_files(root, old, entry.get("taken_ns"))
+        files = _hash_files(root, old, entry.get("taken_ns"), read)
+        if files is None:
+            return None
         key = _digest([self._run_key, _settings_key(settings), files.digest()])
         if entry.get("key") != key:
             return Lookup(key, files, None, False)
@@ -139,7 +147,7 @@ class LintCache:
             ignore.write_text(_GITIGNORE, encoding="utf-8")
 
 
-def _stat(path: Path) -> list[Any]:
+def _stat(path: str) -> list[Any]:
     try:
         stat = os.stat(path)
     except OSError:
@@ -147,20 +155,28 @@ def _stat(path: Path) -> list[Any]:
     return [stat.st_size, stat.st_mtime_ns]
 
 
-def _hash_files(root: Path, old: dict[str, Any], old_taken: Any) -> Files:
-    """Every file's size, time and content hash, reusing settled hashes of ``old``."""
+def _hash_files(root: Path, old: dict[str, Any], old_taken: Any, read: bool) -> Files | None:
+    """Every file's size, time and content hash, reusing settled hashes of ``old``.
+
+    None when ``read`` is False and some file would have to be read.
+    """
     taken = time.time_ns()
     stats: dict[str, list[Any]] = {}
     trusted_before = old_taken - _SETTLED_NS if isinstance(old_taken, int) else -1
+    base = os.fspath(root)
     for path in list_files(root):
-        size_time = _stat(root / path)
+        full = os.path.join(base, path)
+        size_time = _stat(full)
         previous = old.get(path)
         if isinstance(previous, list) and len(previous) == 3 and previous[:2] == size_time \
                 and size_time[1] < trusted_before and isinstance(previous[2], str):
             stats[path] = previous
             continue
+        if not read:
+            return None
         try:
-            content = hashlib.sha256((root / path).read_bytes()).hexdigest()
+            with open(full, "rb") as stream:
+                content = hashlib.sha256(stream.read()).hexdigest()
         except OSError:
             content = "unreadable"
         stats[path] = [*size_time, content]
@@ -194,7 +210,8 @@ def _code_fingerprint() -> list[Any]:
     files = []
     for folder, folders, names in os.walk(package):
         folders[:] = sorted(f for f in folders if f != "__pycache__")
-        files.extend([os.path.relpath(os.path.join(folder, n), package), *_stat(Path(folder, n))]
+        files.extend([os.path.relpath(os.path.join(folder, n), package),
+                      *_stat(os.path.join(folder, n))]
                      for n in sorted(names))
     distributions = sorted(name for entry in sys.path if entry.endswith("-packages")
                            and os.path.isdir(entry) for name in os.listdir(entry)

@@ -21,7 +21,7 @@ from pkgtool.report import PackageLabel
 from pkgtool.workspace import discover
 
 if TYPE_CHECKING:
-    from pkgtool.cache.store import LintCache
+    from pkgtool.cache.store import LintCache, Lookup
 
 __all__ = ["LintOptions", "LintResult", "TextResult", "explain", "list_rules", "run"]
 
@@ -118,9 +118,10 @@ Workspace = Mapping[str, WorkspacePackage]
 Outcome = Union[tuple[str, list[Finding]], str]
 
 
-def _check_all(jobs: list[Job], workspace: Workspace) -> Iterator[Outcome]:
+def _check_all(jobs: list[Job], workspace: Workspace, cache: LintCache | None = None
+               ) -> Iterator[Outcome]:
     """Each job's outcome in order; a process per core once there are enough packages."""
-    check = partial(_check, workspace=workspace)
+    check = partial(_check, workspace=workspace, cache=cache)
     workers = _workers(len(jobs))
     if workers < 2 or threading.active_count() > 1:
         yield from map(check, jobs)
@@ -154,25 +155,20 @@ def project_root(cwd: Path) -> Path:
 
 
 def _cached(jobs: list[Job], workspace: Workspace, cache: LintCache) -> Iterator[Outcome]:
-    """Each job's outcome in order: from the cache when valid, else checked and recorded.
+    """Each job's outcome in order: entries whose files kept their sizes and times come from
+    the cache here; the others are looked up (reading files), checked and recorded by
+    :func:`_check`, in the worker processes when there are enough of them."""
+    probes = [cache.lookup(root, setting, read=False) for root, _, setting in jobs]
+    fresh = _check_all([job for job, probe in zip(jobs, probes) if probe is None or
+                        probe.hit is None], workspace, cache)
+    for (_, label, _), probe in zip(jobs, probes):
+        yield _relabelled(probe, label) if probe is not None and probe.hit else next(fresh)
 
-    Entries hold findings without the package's label, so a package linted from another
-    folder still hits.
-    """
-    lookups = [cache.lookup(root, setting) for root, _, setting in jobs]
-    fresh = _check_all([job for job, found in zip(jobs, lookups) if found.hit is None],
-                       workspace)
-    for (root, label, _), found in zip(jobs, lookups):
-        if found.hit is not None:
-            name, stored = found.hit
-            if found.refresh:
-                cache.store(root, found, name, stored)
-            yield name, [replace(f, root=label) for f in stored]
-            continue
-        outcome = next(fresh)
-        if not isinstance(outcome, str) and not any(f.internal for f in outcome[1]):
-            cache.store(root, found, outcome[0], [replace(f, root="") for f in outcome[1]])
-        yield outcome
+
+def _relabelled(found: Lookup, label: str) -> Outcome:
+    assert found.hit is not None
+    name, stored = found.hit
+    return name, [replace(f, root=label) for f in stored]
 
 
 def _workers(packages: int) -> int:
@@ -193,7 +189,24 @@ def _cpus() -> int:
         return os.cpu_count() or 1
 
 
-def _check(job: Job, workspace: Workspace) -> Outcome:
+def _check(job: Job, workspace: Workspace, cache: LintCache | None) -> Outcome:
+    """One package's outcome: from ``cache`` when valid, else checked (and recorded)."""
+    if cache is None:
+        return _lint_one(job, workspace)
+    root, label, settings = job
+    found = cache.lookup(root, settings)
+    assert found is not None
+    if found.hit is not None:
+        if found.refresh:  # some file was read again: record its times, trusted next run
+            cache.store(root, found, *found.hit)
+        return _relabelled(found, label)
+    outcome = _lint_one(job, workspace)
+    if not isinstance(outcome, str) and not any(f.internal for f in outcome[1]):
+        cache.store(root, found, outcome[0], [replace(f, root="") for f in outcome[1]])
+    return outcome
+
+
+def _lint_one(job: Job, workspace: Workspace) -> Outcome:
     """Read one package and check it; an exception becomes an internal-error message."""
     from pkgtool.engine import check_package
     from pkgtool.model.package import load_package
