@@ -8,6 +8,7 @@ and keeps the list for the trees in use (``parse_tree`` returns one tree per fil
 from __future__ import annotations
 
 import ast
+from dataclasses import dataclass
 
 from pkgtool.model.memo import per_object
 
@@ -27,12 +28,31 @@ def child_nodes(node: ast.AST) -> list[ast.AST]:
     return found
 
 
+@dataclass(frozen=True, slots=True)
+class Walk:
+    """Every node of a tree breadth first (the order of ``ast.walk``), and each node's parent
+    by ``id(node)``."""
+
+    nodes: tuple[ast.AST, ...]
+    parents: dict[int, ast.AST]
+
+
 @per_object(_TREES)
-def nodes_of(tree: ast.AST) -> tuple[ast.AST, ...]:
-    """``tuple(ast.walk(tree))``, computed once per tree object; treat the tree as read-only."""
+def walk_once(tree: ast.AST) -> Walk:
+    """The :class:`Walk` of ``tree``, computed once per tree object; treat both as read-only."""
     found: list[ast.AST] = [tree]
+    parents: dict[int, ast.AST] = {}
     position = 0
     while position < len(found):
-        found.extend(child_nodes(found[position]))
+        node = found[position]
+        children = child_nodes(node)
+        for child in children:
+            parents[id(child)] = node
+        found.extend(children)
         position += 1
-    return tuple(found)
+    return Walk(tuple(found), parents)
+
+
+def nodes_of(tree: ast.AST) -> tuple[ast.AST, ...]:
+    """``tuple(ast.walk(tree))``, computed once per tree object."""
+    return walk_once(tree).nodes

@@ -11,7 +11,7 @@ import ast
 from collections.abc import Iterator
 from dataclasses import dataclass, field
 
-from pkgtool.model.ast_nodes import child_nodes
+from pkgtool.model.ast_nodes import walk_once
 from pkgtool.model.memo import per_object
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
@@ -73,29 +73,33 @@ def _bindings(node: ast.AST) -> Iterator[tuple[str, str | None]]:
         yield node.name, None
 
 
+_BINDERS = (ast.Import, ast.ImportFrom, ast.arg, *FUNCTIONS, ast.ClassDef, ast.ExceptHandler,
+            ast.MatchAs, ast.MatchStar)
+"""Nodes that bind names besides stored ``Name``s (those are tested directly: most nodes)."""
+_COLLECTED = ((ast.Call, "calls"), (ast.ImportFrom, "import_froms"), (ast.Try, "tries"),
+              (FUNCTIONS, "functions"), (ast.ClassDef, "classes"))
+
+
 def _index(tree: ast.Module) -> Index:
-    index = Index()
+    walk = walk_once(tree)
+    index = Index(parents=walk.parents)
     bound: dict[str, set[str | None]] = {}
-    stack: list[ast.AST] = [tree]
-    while stack:
-        node = stack.pop()
-        for name, target in _bindings(node):
-            bound.setdefault(name, set()).add(target)
-        if isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Load):
-            index.attributes.append(node)
-        elif isinstance(node, ast.Call):
-            index.calls.append(node)
-        elif isinstance(node, ast.ImportFrom):
-            index.import_froms.append(node)
-        elif isinstance(node, ast.Try):
-            index.tries.append(node)
-        elif isinstance(node, FUNCTIONS):
-            index.functions.append(node)
-        elif isinstance(node, ast.ClassDef):
-            index.classes.append(node)
-        for child in child_nodes(node):
-            index.parents[id(child)] = node
-            stack.append(child)
+    for node in walk.nodes:
+        if isinstance(node, ast.Name):
+            if not isinstance(node.ctx, ast.Load):
+                bound.setdefault(node.id, set()).add(None)
+            continue
+        if isinstance(node, ast.Attribute):
+            if isinstance(node.ctx, ast.Load):
+                index.attributes.append(node)
+            continue
+        if isinstance(node, _BINDERS):
+            for name, target in _bindings(node):
+                bound.setdefault(name, set()).add(target)
+        for kind, field_name in _COLLECTED:
+            if isinstance(node, kind):
+                getattr(index, field_name).append(node)
+                break
     index.aliases.update({name: target for name, (target, *more) in bound.items()
                           if not more and target is not None and name != "*"})
     return index
