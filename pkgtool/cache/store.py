@@ -139,12 +139,14 @@ class LintCache:
         return self.folder / (hashlib.sha256(str(root).encode()).hexdigest()[:32] + ".json")
 
     def _prepare(self) -> None:
+        """Create the folders; a cache folder pkgtool creates gets a ``.gitignore`` (never one
+        the user named that exists already, such as ``--cache-dir .``)."""
         if self.folder.is_dir():
             return
-        self.folder.mkdir(parents=True, exist_ok=True)
-        ignore = self.base / ".gitignore"
-        if not ignore.exists():
-            ignore.write_text(_GITIGNORE, encoding="utf-8")
+        if not self.base.exists():
+            self.base.mkdir(parents=True, exist_ok=True)
+            (self.base / ".gitignore").write_text(_GITIGNORE, encoding="utf-8")
+        self.folder.mkdir(exist_ok=True)
 
 
 def _stat(path: str) -> list[Any]:

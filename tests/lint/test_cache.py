@@ -124,6 +124,8 @@ def test_the_cache_folder_is_chosen_by_option_environment_or_project(tmp_path: P
     _lint(root, "--cache-dir", "here", env={"PKGTOOL_CACHE_DIR": str(tmp_path / "env")})
     assert list((tmp_path / "env" / "lint").glob("*.json"))
     assert list((root / "here" / "lint").glob("*.json"))
+    _lint(root, "--cache-dir", ".")  # an existing folder: no .gitignore written into it
+    assert (root / "lint").is_dir() and not (root / ".gitignore").exists()
     shutil.rmtree(project / ".pkgtool_cache")
     _lint(root, "--no-cache")
     assert not (project / ".pkgtool_cache").exists()
