@@ -190,9 +190,9 @@ def _digest(parts: list[Any]) -> str:
 
 
 def _settings_key(settings: Settings) -> list[Any]:
+    ignores = [[str(base), glob, sorted(codes)] for base, glob, codes in settings.path_ignores]
     return [list(settings.codes), sorted((c, s.value) for c, s in settings.severities.items()),
-            [[str(base), pattern, sorted(codes)] for base, pattern, codes in settings.path_ignores],
-            settings.rosdistro]
+            ignores, settings.rosdistro]
 
 
 def _workspace_key(workspace: Mapping[str, WorkspacePackage]) -> list[Any]:

@@ -85,8 +85,9 @@ def test_an_edit_a_sibling_or_other_settings_invalidate(tmp_path: Path) -> None:
     talker = correct_package_files("talker")
     listener = correct_package_files("listener")
     listener["listener/use.py"] = "import talker\n"
-    ws = write_tree(tmp_path / "ws", {**{f"src/talker/{k}": v for k, v in talker.items()},
-                                     **{f"src/listener/{k}": v for k, v in listener.items()}})
+    files = {**{f"src/talker/{k}": v for k, v in talker.items()},
+             **{f"src/listener/{k}": v for k, v in listener.items()}}
+    ws = write_tree(tmp_path / "ws", files)
     first = _lint(ws).stdout
     assert _lint(ws).stdout == first  # warm
     shutil.rmtree(ws / "src" / "talker" / "talker")  # the sibling no longer provides `talker`
