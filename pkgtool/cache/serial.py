@@ -2,16 +2,24 @@
 
 A dataclass becomes ``{"@": "module:Class", field: value, ...}``, an enum member
 ``{"@": "module:Class", "value": ...}``, a tuple ``{"@": "tuple", "items": [...]}``. Reading
-accepts only classes of pkgtool's own modules that are already imported (nothing is imported
-or executed because of what a cache file says); anything else raises :class:`BadEntry`.
+accepts only classes of pkgtool's own modules: already imported ones, or the data-only modules
+of :data:`_MODULE` (nothing else is imported or executed because of what a cache file says);
+anything else raises :class:`BadEntry`.
 """
 
 from __future__ import annotations
 
 import dataclasses
+import importlib
+import re
 import sys
 from enum import Enum
 from typing import Any
+
+
+_MODULE = re.compile(r"pkgtool\.(?:findings|model(?:\.\w+)+|edit(?:\.\w+)+)")
+"""Modules a finding's values may come from that are safe to import because of an entry:
+they only define data (a fix carries ``pkgtool.edit`` records, for example)."""
 
 
 class BadEntry(ValueError):
@@ -73,11 +81,17 @@ def _name(cls: type) -> str:
 
 
 def _class(tag: Any) -> type:
-    """An already imported pkgtool dataclass or enum named by ``tag``."""
+    """The pkgtool dataclass or enum named by ``tag``: from a module already imported, or one
+    of the side-effect-free modules findings are made of (imported on demand)."""
     if not isinstance(tag, str) or ":" not in tag:
         raise BadEntry(f"bad tag {tag!r}")
     module_name, _, name = tag.partition(":")
     module = sys.modules.get(module_name) if module_name.split(".")[0] == "pkgtool" else None
+    if module is None and _MODULE.fullmatch(module_name):
+        try:
+            module = importlib.import_module(module_name)
+        except ImportError:
+            module = None
     cls = getattr(module, name, None) if module is not None and "." not in name else None
     if not isinstance(cls, type) or not (dataclasses.is_dataclass(cls) or issubclass(cls, Enum)):
         raise BadEntry(f"unknown class {tag!r}")

@@ -139,6 +139,22 @@ def test_findings_round_trip_whatever_they_carry() -> None:
               "spans": (Span("b.py"), Span("c.py", 3)), "severity": Severity.INFO}
     assert decode(json.loads(json.dumps(encode(nested)))) == nested
     for data in ({"@": "os.path:join"}, {"@": "pkgtool.findings:Finding", "code": 1},
-                 {"@": "tuple", "items": 3}, {"@": "builtins:type"}):
+                 {"@": "tuple", "items": 3}, {"@": "builtins:type"},
+                 {"@": "pkgtool.__main__:main"}):
         with pytest.raises(BadEntry):
             decode(data)
+    assert "pkgtool.__main__" not in sys.modules  # never imported because an entry said so
+
+
+def test_a_finding_carrying_a_fix_round_trips_in_a_fresh_process() -> None:
+    from dataclasses import replace
+
+    from pkgtool.edit.core import Edit, Fix
+
+    finding = replace(make_finding(), fix=Fix("Add the comma", (Edit("setup.py", 3, 3, ","),)))
+    data = json.dumps(encode([finding]))
+    script = ("import json, sys; from pkgtool.cache.serial import decode; "
+              "print(repr(decode(json.loads(sys.stdin.read()))))")
+    done = subprocess.run([sys.executable, "-c", script], input=data, capture_output=True,
+                          text=True, timeout=120, check=True)
+    assert done.stdout.strip() == repr([finding])
