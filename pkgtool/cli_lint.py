@@ -98,6 +98,12 @@ def lint(
     unsafe_fixes: Annotated[bool, typer.Option(
         "--unsafe-fixes", help="With --fix or --diff, also apply fixes that may change "
         "behaviour (removing a dependency).")] = False,
+    no_cache: Annotated[bool, typer.Option(
+        "--no-cache", help="Neither read nor write the lint cache.")] = False,
+    cache_dir: Annotated[Optional[str], typer.Option(
+        "--cache-dir", help="Where the lint cache lives (default: $PKGTOOL_CACHE_DIR, else "
+        ".pkgtool_cache in the project root: the nearest folder up with a pyproject.toml, else "
+        "the current folder).", show_default=False, metavar="DIR")] = None,
     explain: Annotated[Optional[str], typer.Option(
         help="Print the documentation of a rule (code, name or family) and exit.",
         show_default=False, metavar="RULE")] = None,
@@ -114,7 +120,7 @@ def lint(
     options = command.LintOptions(_selectors(select) if select else None, _selectors(ignore),
                                   _selectors(extend_select) + (STYLE_FAMILIES if style else ()),
                                   strict, exit_zero, quiet, isolated, rosdistro, fix, diff,
-                                  unsafe_fixes)
+                                  unsafe_fixes, cache=not no_cache, cache_dir=cache_dir)
     try:
         if explain is not None or list_rules:
             _show_rules(explain, fmt, output)

@@ -8,7 +8,7 @@ from __future__ import annotations
 import os
 import threading
 from collections.abc import Iterator, Mapping, Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Union
@@ -21,10 +21,13 @@ from pkgtool.report import PackageLabel
 from pkgtool.workspace import discover
 
 if TYPE_CHECKING:
+    from pkgtool.cache.store import LintCache, Lookup
     from pkgtool.model.package import Package
 
 __all__ = ["LintOptions", "LintResult", "TextResult", "explain", "list_rules", "run"]
 
+CACHE_FOLDER = ".pkgtool_cache"
+"""The cache's default folder name, in the project root."""
 PACKAGES_PER_WORKER = 16
 """Below this many packages per extra process, a process pool costs more than it saves."""
 
@@ -44,6 +47,10 @@ class LintOptions:
     fix: bool = False
     diff: bool = False
     unsafe_fixes: bool = False
+    cache: bool = False
+    """Reuse and record findings in the lint cache (``cache_dir``, else ``$PKGTOOL_CACHE_DIR``,
+    else ``.pkgtool_cache`` in the project root)."""
+    cache_dir: str | None = None
 
 
 @dataclass(frozen=True, slots=True)
@@ -96,7 +103,9 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
     fixed, diff = _fix_all(jobs, workspace, options, errors) if options.fix or options.diff \
         else ((), "")
     failing = False
-    for (root, label, setting), outcome in zip(jobs, _check_all(jobs, workspace)):
+    cache = _open_cache(options, here, workspace)
+    outcomes = _check_all(jobs, workspace) if cache is None else _cached(jobs, workspace, cache)
+    for (root, label, setting), outcome in zip(jobs, outcomes):
         if isinstance(outcome, str):
             errors.append(outcome)
             labels.append(PackageLabel(root.name, label))
@@ -153,10 +162,11 @@ Workspace = Mapping[str, WorkspacePackage]
 Outcome = Union[tuple[str, list[Finding]], str]
 
 
-def _check_all(jobs: list[Job], workspace: Workspace) -> Iterator[Outcome]:
+def _check_all(jobs: list[Job], workspace: Workspace, cache: LintCache | None = None
+               ) -> Iterator[Outcome]:
     """Each job's outcome in order; a process per core once there are enough packages."""
-    check = partial(_check, workspace=workspace)
-    workers = min(_cpus(), len(jobs) // PACKAGES_PER_WORKER)
+    check = partial(_check, workspace=workspace, cache=cache)
+    workers = _workers(len(jobs))
     if workers < 2 or threading.active_count() > 1:
         yield from map(check, jobs)
         return
@@ -172,6 +182,50 @@ def _check_all(jobs: list[Job], workspace: Workspace) -> Iterator[Outcome]:
         yield from pool.map(check, jobs, chunksize=max(1, len(jobs) // (workers * 8)))
 
 
+def _open_cache(options: LintOptions, cwd: Path, workspace: Workspace) -> LintCache | None:
+    """The cache this run uses, if any."""
+    if not options.cache:
+        return None
+    from pkgtool.cache.store import LintCache
+
+    folder = options.cache_dir or os.environ.get("PKGTOOL_CACHE_DIR")
+    return LintCache(cwd / folder if folder else project_root(cwd) / CACHE_FOLDER, workspace)
+
+
+def project_root(cwd: Path) -> Path:
+    """The nearest folder from ``cwd`` up holding a pyproject.toml, else ``cwd``."""
+    return next((folder for folder in (cwd, *cwd.parents)
+                 if (folder / "pyproject.toml").is_file()), cwd)
+
+
+def _cached(jobs: list[Job], workspace: Workspace, cache: LintCache) -> Iterator[Outcome]:
+    """Each job's outcome in order: entries whose files kept their sizes and times come from
+    the cache here; the others are looked up (reading files), checked and recorded by
+    :func:`_check`, in the worker processes when there are enough of them."""
+    probes = [cache.lookup(root, setting, read=False) for root, _, setting in jobs]
+    fresh = _check_all([job for job, probe in zip(jobs, probes) if probe is None or
+                        probe.hit is None], workspace, cache)
+    for (_, label, _), probe in zip(jobs, probes):
+        yield _relabelled(probe, label) if probe is not None and probe.hit else next(fresh)
+
+
+def _relabelled(found: Lookup, label: str) -> Outcome:
+    assert found.hit is not None
+    name, stored = found.hit
+    return name, [replace(f, root=label) for f in stored]
+
+
+def _workers(packages: int) -> int:
+    """``$PKGTOOL_LINT_JOBS`` when set (1: no pool), else one per core once worth it."""
+    try:
+        chosen = int(os.environ.get("PKGTOOL_LINT_JOBS", "0"))
+    except ValueError:
+        chosen = 0
+    if chosen > 0:
+        return min(chosen, packages)
+    return min(_cpus(), packages // PACKAGES_PER_WORKER)
+
+
 def _cpus() -> int:
     try:
         return len(os.sched_getaffinity(0))
@@ -179,7 +233,24 @@ def _cpus() -> int:
         return os.cpu_count() or 1
 
 
-def _check(job: Job, workspace: Workspace) -> Outcome:
+def _check(job: Job, workspace: Workspace, cache: LintCache | None) -> Outcome:
+    """One package's outcome: from ``cache`` when valid, else checked (and recorded)."""
+    if cache is None:
+        return _lint_one(job, workspace)
+    root, label, settings = job
+    found = cache.lookup(root, settings)
+    assert found is not None
+    if found.hit is not None:
+        if found.refresh:  # some file was read again: record its times, trusted next run
+            cache.store(root, found, *found.hit)
+        return _relabelled(found, label)
+    outcome = _lint_one(job, workspace)
+    if not isinstance(outcome, str) and not any(f.internal for f in outcome[1]):
+        cache.store(root, found, outcome[0], [replace(f, root="") for f in outcome[1]])
+    return outcome
+
+
+def _lint_one(job: Job, workspace: Workspace) -> Outcome:
     """Read one package and check it; an exception becomes an internal-error message."""
     root, label, settings = job
     try:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -17,14 +18,15 @@ BUILD_OUTPUT_DIRS = frozenset({"build", "install", "log"})
 """colcon's output folders: skipped at the package root when they hold no Python package."""
 
 
-def _skipped(folder: Path, root: Path) -> bool:
-    name = folder.name
+def _skipped(folder: str, name: str, at_root: bool) -> bool:
+    """True for a folder (``name`` in ``folder``) whose files are not the package's."""
     if name.startswith(".") or name in SKIPPED_DIRS or name.endswith(".egg-info"):
         return True
-    if (folder / "pyvenv.cfg").is_file() or (folder / "package.xml").is_file():
+    if os.path.isfile(os.path.join(folder, "pyvenv.cfg")) or \
+            os.path.isfile(os.path.join(folder, "package.xml")):
         return True  # a virtual environment, or a nested package of its own
-    return (folder.parent == root and name in BUILD_OUTPUT_DIRS
-            and not (folder / "__init__.py").is_file())
+    return (at_root and name in BUILD_OUTPUT_DIRS
+            and not os.path.isfile(os.path.join(folder, "__init__.py")))
 
 
 @dataclass(frozen=True, slots=True)
@@ -66,19 +68,22 @@ def list_files(root: Path) -> tuple[str, ...]:
     part of this package.
     """
     found: list[str] = []
-    stack = [root]
+    stack = [(os.fspath(root), "")]
     while stack:
-        folder = stack.pop()
+        folder, prefix = stack.pop()
         try:
-            entries = list(folder.iterdir())
+            with os.scandir(folder) as listing:
+                entries = list(listing)
         except OSError:
             continue
-        for entry in entries:
-            if entry.is_symlink() and not entry.exists():
+        for entry in entries:  # is_dir/is_file follow symbolic links; broken ones are neither
+            try:
+                if entry.is_dir():
+                    if not entry.is_symlink() and not _skipped(entry.path, entry.name,
+                                                               not prefix):
+                        stack.append((entry.path, f"{prefix}{entry.name}/"))
+                elif entry.is_file():
+                    found.append(prefix + entry.name)
+            except OSError:
                 continue
-            if entry.is_dir():
-                if not entry.is_symlink() and not _skipped(entry, root):
-                    stack.append(entry)
-            elif entry.is_file():
-                found.append(entry.relative_to(root).as_posix())
     return tuple(sorted(found))

@@ -19,18 +19,28 @@ _KEEP = 4
 
 def per_package(function: Callable[[P], R]) -> Callable[[P], R]:
     """Cache ``function(package)`` per package object (identity), for the last few packages."""
-    cache: OrderedDict[int, tuple[P, R]] = OrderedDict()
+    return per_object(_KEEP)(function)
 
-    @functools.wraps(function)
-    def cached(package: P) -> R:
-        key = id(package)
-        hit = cache.get(key)
-        if hit is not None and hit[0] is package:
-            return hit[1]
-        result = function(package)
-        cache[key] = (package, result)
-        if len(cache) > _KEEP:
-            cache.popitem(last=False)
-        return result
 
-    return cached
+def per_object(keep: int) -> Callable[[Callable[[P], R]], Callable[[P], R]]:
+    """Cache ``function(obj)`` per object identity for the last ``keep`` objects (any type,
+    e.g. a syntax tree shared read-only by the model and the rules)."""
+
+    def decorate(function: Callable[[P], R]) -> Callable[[P], R]:
+        cache: OrderedDict[int, tuple[P, R]] = OrderedDict()
+
+        @functools.wraps(function)
+        def cached(obj: P) -> R:
+            key = id(obj)
+            hit = cache.get(key)
+            if hit is not None and hit[0] is obj:
+                return hit[1]
+            result = function(obj)
+            cache[key] = (obj, result)
+            if len(cache) > keep:
+                cache.popitem(last=False)
+            return result
+
+        return cached
+
+    return decorate

@@ -12,6 +12,9 @@ import ast
 import operator
 from collections import Counter
 
+from pkgtool.model.ast_nodes import nodes_of
+from pkgtool.model.memo import per_object
+
 _COMPARE = {ast.Lt: operator.lt, ast.LtE: operator.le, ast.Gt: operator.gt,
             ast.GtE: operator.ge, ast.Eq: operator.eq, ast.NotEq: operator.ne}
 _PYTHON3 = ((3, 0, 0, "alpha", 0), (3, 99, 99, "final", 0))
@@ -19,11 +22,16 @@ _PYTHON3 = ((3, 0, 0, "alpha", 0), (3, 99, 99, "final", 0))
 MODULE_DUNDERS = frozenset({"__name__", "__package__", "__spec__"})
 
 
+@per_object(64)
 def module_constants(tree: ast.Module) -> dict[str, bool]:
-    """Names assigned exactly once in the whole file, at module level, to a constant."""
-    stores = Counter(n.id for n in ast.walk(tree)
+    """Names assigned exactly once in the whole file, at module level, to a constant.
+
+    Computed once per tree; callers must not change the returned dict.
+    """
+    nodes = nodes_of(tree)
+    stores = Counter(n.id for n in nodes
                      if isinstance(n, ast.Name) and not isinstance(n.ctx, ast.Load))
-    stores.update(name for n in ast.walk(tree) if isinstance(n, (ast.Global, ast.Nonlocal))
+    stores.update(name for n in nodes if isinstance(n, (ast.Global, ast.Nonlocal))
                   for name in n.names)
     found: dict[str, bool] = {}
     for node in tree.body:
@@ -114,7 +122,7 @@ def dead_lines(tree: ast.Module) -> list[tuple[int, int]]:
     """Line ranges (first, last) of ``if`` branches that never run on Python 3."""
     constants = module_constants(tree)
     ranges: list[tuple[int, int]] = []
-    for node in ast.walk(tree):
+    for node in nodes_of(tree):
         if isinstance(node, ast.If):
             value = truth(node.test, constants)
             branch = node.body if value is False else node.orelse if value is True else []

@@ -12,6 +12,7 @@ import ast
 from dataclasses import dataclass
 from typing import Any
 
+from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.setup_eval.entries import Malformed, data_files, entry_points
 from pkgtool.model.setup_eval.evaluator import SetupCall
 from pkgtool.model.setup_eval.executor import CONTROL_FLOW, Runner
@@ -37,13 +38,9 @@ class Evaluation:
 
 def evaluate(path: str, text: str, files: tuple[str, ...]) -> Evaluation | ParseProblem:
     """Run setup.py ``text`` over evaluated data; a syntax error gives a ParseProblem."""
-    try:
-        module = ast.parse(text, filename=path)
-    except (SyntaxError, ValueError, RecursionError, MemoryError) as error:
-        line = getattr(error, "lineno", None) or 1
-        column = getattr(error, "offset", None) or 1
-        detail = getattr(error, "msg", None) or str(error) or type(error).__name__
-        return ParseProblem("python-syntax", Span(path, line, column), detail)
+    module = parse_tree(path, text)  # the parse PYC001 and PYC006 share
+    if isinstance(module, ParseProblem):
+        return module
     runner = Runner(path, text, files)
     scope = Scope()
     try:

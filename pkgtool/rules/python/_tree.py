@@ -10,12 +10,12 @@ from __future__ import annotations
 import ast
 from collections.abc import Iterator
 from dataclasses import dataclass, field
-from functools import lru_cache
 
+from pkgtool.model.ast_nodes import walk_once
+from pkgtool.model.memo import per_object
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
-from pkgtool.model.span import ParseProblem
 from pkgtool.rules.imports import installed_code
 
 FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
@@ -73,48 +73,56 @@ def _bindings(node: ast.AST) -> Iterator[tuple[str, str | None]]:
         yield node.name, None
 
 
+_BINDERS = (ast.Import, ast.ImportFrom, ast.arg, *FUNCTIONS, ast.ClassDef, ast.ExceptHandler,
+            ast.MatchAs, ast.MatchStar)
+"""Nodes that bind names besides stored ``Name``s (those are tested directly: most nodes)."""
+_COLLECTED = ((ast.Call, "calls"), (ast.ImportFrom, "import_froms"), (ast.Try, "tries"),
+              (FUNCTIONS, "functions"), (ast.ClassDef, "classes"))
+
+
 def _index(tree: ast.Module) -> Index:
-    index = Index()
+    walk = walk_once(tree)
+    index = Index(parents=walk.parents)
     bound: dict[str, set[str | None]] = {}
-    stack: list[ast.AST] = [tree]
-    while stack:
-        node = stack.pop()
-        for name, target in _bindings(node):
-            bound.setdefault(name, set()).add(target)
-        if isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Load):
-            index.attributes.append(node)
-        elif isinstance(node, ast.Call):
-            index.calls.append(node)
-        elif isinstance(node, ast.ImportFrom):
-            index.import_froms.append(node)
-        elif isinstance(node, ast.Try):
-            index.tries.append(node)
-        elif isinstance(node, FUNCTIONS):
-            index.functions.append(node)
-        elif isinstance(node, ast.ClassDef):
-            index.classes.append(node)
-        for child in ast.iter_child_nodes(node):
-            index.parents[id(child)] = node
-            stack.append(child)
+    for node in walk.nodes:
+        if isinstance(node, ast.Name):
+            if not isinstance(node.ctx, ast.Load):
+                bound.setdefault(node.id, set()).add(None)
+            continue
+        if isinstance(node, ast.Attribute):
+            if isinstance(node.ctx, ast.Load):
+                index.attributes.append(node)
+            continue
+        if isinstance(node, _BINDERS):
+            for name, target in _bindings(node):
+                bound.setdefault(name, set()).add(target)
+        for kind, field_name in _COLLECTED:
+            if isinstance(node, kind):
+                getattr(index, field_name).append(node)
+                break
     index.aliases.update({name: target for name, (target, *more) in bound.items()
                           if not more and target is not None and name != "*"})
     return index
 
 
-@lru_cache(maxsize=512)
-def _parsed(path: str, text: str) -> tuple[ast.Module, Index] | None:
-    tree = parse_tree(path, text)
-    return None if isinstance(tree, ParseProblem) else (tree, _index(tree))
+index_of = per_object(64)(_index)
+"""The :class:`Index` of a tree, built on first use (only rules that need one pay for it)."""
+
+
+def installed_modules(package: Package) -> Iterator[tuple[PythonModule, ast.Module]]:
+    """Installed, parseable modules with their syntax trees (the model's parse, shared)."""
+    for module in installed_code(package):
+        text = package.texts.get(module.path)
+        tree = parse_tree(module.path, text) if text is not None and not module.syntax_error \
+            else None
+        if isinstance(tree, ast.Module):
+            yield module, tree
 
 
 def installed_trees(package: Package) -> Iterator[tuple[PythonModule, ast.Module, Index]]:
     """Installed, parseable modules with their syntax trees and indexes."""
-    for module in installed_code(package):
-        text = package.texts.get(module.path)
-        parsed = _parsed(module.path, text) if text is not None and not module.syntax_error \
-            else None
-        if parsed is not None:
-            yield module, *parsed
+    for module, tree in installed_modules(package):
+        yield module, tree, index_of(tree)
 
 
 def qualified(node: ast.expr, aliases: dict[str, str]) -> str | None:

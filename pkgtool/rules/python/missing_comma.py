@@ -8,6 +8,7 @@ import warnings
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import nodes_of
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
@@ -15,6 +16,16 @@ from pkgtool.rules.registry import rule
 
 _HINT = "; perhaps you missed a comma?"
 _QUOTED = re.compile(r"'(\w+)'")
+_LITERALS = (ast.Constant, ast.Tuple, ast.List, ast.ListComp, ast.Set, ast.SetComp, ast.Dict,
+             ast.DictComp, ast.GeneratorExp, ast.JoinedStr, ast.FormattedValue)
+"""Every node kind CPython's compiler warns about when called or indexed (a superset)."""
+
+
+def _may_warn(tree: ast.Module) -> bool:
+    """True when some call or subscript applies to a literal: only then is compiling needed."""
+    return any(isinstance(node, ast.Call) and isinstance(node.func, _LITERALS)
+               or isinstance(node, ast.Subscript) and isinstance(node.value, _LITERALS)
+               for node in nodes_of(tree))
 
 
 def comma_warnings(path: str, tree: ast.Module) -> Iterator[tuple[int, str]]:
@@ -69,6 +80,6 @@ def missing_comma(package: Package) -> Iterator[Hit]:
     """
     for path, text in sorted(package.texts.items()):
         tree = parse_tree(path, text) if path.endswith(".py") else None
-        if isinstance(tree, ast.Module):
+        if isinstance(tree, ast.Module) and _may_warn(tree):
             for line, problem in comma_warnings(path, tree):
                 yield Hit(Span(path, line, 1), f"Missing comma: {problem}")

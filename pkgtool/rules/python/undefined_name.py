@@ -6,11 +6,12 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import nodes_of
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import dead_lines
-from pkgtool.rules.python._tree import installed_trees
+from pkgtool.rules.python._tree import installed_modules
 from pkgtool.rules.registry import rule
 
 
@@ -49,11 +50,11 @@ def undefined_name(package: Package) -> Iterator[Hit]:
     from pyflakes.checker import Checker
     from pyflakes.messages import UndefinedName
 
-    trees = [(module.path, tree) for module, tree, _ in installed_trees(package)]
+    trees = [(module.path, tree) for module, tree in installed_modules(package)]
     for path in ("setup.py", *(f.path for f in package.launch_files if f.kind == "python")):
         tree = parse_tree(path, package.texts[path]) if path in package.texts else None
         if isinstance(tree, ast.Module) and not any(  # exec() may define any name
-                isinstance(n, ast.Name) and n.id == "exec" for n in ast.walk(tree)):
+                isinstance(n, ast.Name) and n.id == "exec" for n in nodes_of(tree)):
             trees.append((path, tree))
     for path, tree in trees:
         try:
@@ -75,8 +76,10 @@ def undefined_name(package: Package) -> Iterator[Hit]:
 
 def _unevaluated_annotations(tree: ast.Module) -> list[tuple[tuple[int, int], tuple[int, int]]]:
     """Where annotations of assignments inside functions stand (PEP 526: never evaluated)."""
-    ranges = []
-    for function in ast.walk(tree):
+    ranges: list[tuple[tuple[int, int], tuple[int, int]]] = []
+    if not any(isinstance(node, ast.AnnAssign) for node in nodes_of(tree)):
+        return ranges
+    for function in nodes_of(tree):
         if isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
             for node in ast.walk(function):
                 if isinstance(node, ast.AnnAssign):

@@ -1,0 +1,221 @@
+"""The cache on disk: one JSON entry per package, trusted only when its key matches exactly.
+
+The key of a package is a SHA-256 over: the cache schema, pkgtool's version and a fingerprint
+of its installed code and data, the Python version and the installed distributions, the
+package's effective settings (rule selection, severities, path ignores, target distribution),
+the workspace index its rules read (every sibling package's name, interfaces and Python
+packages), and the path and content hash of every file of the package. A file's content hash
+is reused from the entry when its size and modification time are unchanged and it was last
+modified well before it was hashed (so an edit within the file system's time granularity is
+never missed); otherwise the file is read again.
+
+Entries are written to a temporary file and renamed into place, so concurrent runs never see a
+half-written entry. An entry that cannot be read, parsed or decoded, or whose key differs, is
+ignored and rewritten after linting.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import hashlib
+import json
+import os
+import sys
+import tempfile
+import time
+from collections.abc import Mapping
+from dataclasses import dataclass
+from pathlib import Path
+from typing import Any
+
+from pkgtool.cache.serial import BadEntry, decode, encode
+from pkgtool.config import Settings
+from pkgtool.findings import Finding
+from pkgtool.model.context import WorkspacePackage
+from pkgtool.model.files import list_files
+
+SCHEMA = "pkgtool-lint-cache-1"
+_SETTLED_NS = 2_000_000_000
+"""A file modified this long before it was hashed is trusted by size and time afterwards."""
+_GITIGNORE = "# Created by pkgtool: the lint cache is never committed.\n*\n"
+
+
+@dataclass(frozen=True, slots=True)
+class Files:
+    """What a package's files were when they were hashed: path -> [size, mtime_ns, sha256]."""
+
+    stats: dict[str, list[Any]]
+    taken_ns: int
+
+    def digest(self) -> str:
+        """The paths and contents of the files, as one hash."""
+        listing = "\0".join(f"{path}\0{stat[2]}" for path, stat in sorted(self.stats.items()))
+        return hashlib.sha256(listing.encode()).hexdigest()
+
+    def unchanged(self, root: Path) -> bool:
+        """True when every file still has the size and time it had when hashed."""
+        base = os.fspath(root)
+        return all(_stat(os.path.join(base, path)) == stat[:2]
+                   for path, stat in self.stats.items()) \
+            and set(list_files(root)) == set(self.stats)
+
+
+@dataclass(frozen=True, slots=True)
+class Lookup:
+    """A package's key and files; ``hit`` holds (name, findings) when the entry was valid."""
+
+    key: str
+    files: Files
+    hit: tuple[str, list[Finding]] | None
+    refresh: bool
+    """The entry was valid but some file had to be hashed again: rewrite its times."""
+
+
+class LintCache:
+    """The lint cache in ``folder`` for one run (one code version, one workspace)."""
+
+    def __init__(self, folder: Path, workspace: Mapping[str, WorkspacePackage]) -> None:
+        self.folder = folder / "lint"
+        self.base = folder
+        self._run_key = _digest([SCHEMA, _code_fingerprint(), _workspace_key(workspace)])
+
+    def lookup(self, root: Path, settings: Settings, *, read: bool = True) -> Lookup | None:
+        """The key of the package at ``root`` and, when its entry is valid, the findings.
+
+        With ``read`` False only sizes and times are looked at: None when some file would
+        have to be read (a quick probe that leaves the reading to a worker process).
+        """
+        entry = self._read(root)
+        old = entry.get("files") if isinstance(entry.get("files"), dict) else {}
+        files = _hash_files(root, old, entry.get("taken_ns"), read)
+        if files is None:
+            return None
+        key = _digest([self._run_key, _settings_key(settings), files.digest()])
+        if entry.get("key") != key:
+            return Lookup(key, files, None, False)
+        try:
+            findings = decode(entry.get("findings"))
+            name = entry.get("name")
+            if not isinstance(name, str) or not isinstance(findings, list) or \
+                    not all(isinstance(f, Finding) for f in findings):
+                raise BadEntry("not a list of findings")
+        except (BadEntry, RecursionError):
+            return Lookup(key, files, None, False)
+        refresh = any(old.get(path) != stat for path, stat in files.stats.items())
+        return Lookup(key, files, (name, findings), refresh)
+
+    def store(self, root: Path, lookup: Lookup, name: str, findings: list[Finding]) -> None:
+        """Write the entry of ``root`` atomically; skipped when a file changed meanwhile."""
+        if not lookup.files.unchanged(root):
+            return
+        entry = {"schema": SCHEMA, "root": str(root), "key": lookup.key, "name": name,
+                 "taken_ns": lookup.files.taken_ns, "files": lookup.files.stats,
+                 "findings": encode(findings)}
+        try:
+            self._prepare()
+            handle, temporary = tempfile.mkstemp(dir=self.folder, prefix=".tmp-")
+        except OSError:  # a read-only or full disk: linting still works, uncached
+            return
+        try:
+            with os.fdopen(handle, "w", encoding="utf-8") as stream:
+                json.dump(entry, stream, separators=(",", ":"))
+            os.replace(temporary, self._path(root))
+        except OSError:
+            with contextlib.suppress(OSError):
+                os.unlink(temporary)
+
+    def _read(self, root: Path) -> dict[str, Any]:
+        try:
+            with open(self._path(root), encoding="utf-8") as stream:
+                entry = json.load(stream)
+        except (OSError, ValueError, RecursionError):
+            return {}
+        if not isinstance(entry, dict) or entry.get("schema") != SCHEMA or \
+                entry.get("root") != str(root):
+            return {}
+        return entry
+
+    def _path(self, root: Path) -> Path:
+        return self.folder / (hashlib.sha256(str(root).encode()).hexdigest()[:32] + ".json")
+
+    def _prepare(self) -> None:
+        """Create the folders; a cache folder pkgtool creates gets a ``.gitignore`` (never one
+        the user named that exists already, such as ``--cache-dir .``)."""
+        if self.folder.is_dir():
+            return
+        if not self.base.exists():
+            self.base.mkdir(parents=True, exist_ok=True)
+            (self.base / ".gitignore").write_text(_GITIGNORE, encoding="utf-8")
+        self.folder.mkdir(exist_ok=True)
+
+
+def _stat(path: str) -> list[Any]:
+    try:
+        stat = os.stat(path)
+    except OSError:
+        return [-1, -1]
+    return [stat.st_size, stat.st_mtime_ns]
+
+
+def _hash_files(root: Path, old: dict[str, Any], old_taken: Any, read: bool) -> Files | None:
+    """Every file's size, time and content hash, reusing settled hashes of ``old``.
+
+    None when ``read`` is False and some file would have to be read.
+    """
+    taken = time.time_ns()
+    stats: dict[str, list[Any]] = {}
+    trusted_before = old_taken - _SETTLED_NS if isinstance(old_taken, int) else -1
+    base = os.fspath(root)
+    for path in list_files(root):
+        full = os.path.join(base, path)
+        size_time = _stat(full)
+        previous = old.get(path)
+        if isinstance(previous, list) and len(previous) == 3 and previous[:2] == size_time \
+                and size_time[1] < trusted_before and isinstance(previous[2], str):
+            stats[path] = previous
+            continue
+        if not read:
+            return None
+        try:
+            with open(full, "rb") as stream:
+                content = hashlib.sha256(stream.read()).hexdigest()
+        except OSError:
+            content = "unreadable"
+        stats[path] = [*size_time, content]
+    return Files(stats, taken)
+
+
+def _digest(parts: list[Any]) -> str:
+    return hashlib.sha256(json.dumps(parts, separators=(",", ":")).encode()).hexdigest()
+
+
+def _settings_key(settings: Settings) -> list[Any]:
+    ignores = [[str(base), glob, sorted(codes)] for base, glob, codes in settings.path_ignores]
+    return [list(settings.codes), sorted((c, s.value) for c, s in settings.severities.items()),
+            ignores, settings.rosdistro]
+
+
+def _workspace_key(workspace: Mapping[str, WorkspacePackage]) -> list[Any]:
+    return [[name, p.name, sorted((k, sorted(v)) for k, v in p.interfaces.items()),
+             sorted(p.modules)] for name, p in sorted(workspace.items())]
+
+
+def _code_fingerprint() -> list[Any]:
+    """pkgtool's version, its files' sizes and times, Python's version, installed distributions.
+
+    An edited rule or table (an editable install) or an upgraded dependency (pyflakes, lxml)
+    changes the key, so results of other code are never reused.
+    """
+    import pkgtool
+
+    package = Path(pkgtool.__file__).parent
+    files = []
+    for folder, folders, names in os.walk(package):
+        folders[:] = sorted(f for f in folders if f != "__pycache__")
+        files.extend([os.path.relpath(os.path.join(folder, n), package),
+                      *_stat(os.path.join(folder, n))]
+                     for n in sorted(names))
+    distributions = sorted(name for entry in sys.path if entry.endswith("-packages")
+                           and os.path.isdir(entry) for name in os.listdir(entry)
+                           if name.endswith(".dist-info"))
+    return [pkgtool.__version__, sys.version, files, distributions]

@@ -1,0 +1,160 @@
+"""The lint cache: findings identical in every mode, and never trusted when anything changed."""
+
+from __future__ import annotations
+
+import importlib.util
+import json
+import os
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from pkgtool.cache.serial import BadEntry, decode, encode
+from pkgtool.findings import Severity
+from pkgtool.model.span import ParseProblem, Span
+from tests.helpers import correct_package_files, make_finding, write_tree
+from tests.lint.seeded import CASES, CREATED
+from tests.lint.seeded import (  # noqa: F401  (each module registers its cases)
+    data_files, dependencies, entry_points, launch, manifest, python, setup_files)
+
+ROOT = Path(__file__).resolve().parents[2]
+REFERENCE = ROOT / "reference_packages"
+GENERATED = 40
+"""Generated packages: with the others more than enough for a worker pool."""
+
+
+def _lint(cwd: Path, *args: str, jobs: int = 1, env: dict[str, str] | None = None
+          ) -> subprocess.CompletedProcess[str]:
+    inherited = {k: v for k, v in os.environ.items() if k != "PKGTOOL_CACHE_DIR"}
+    environment = {**inherited, "PKGTOOL_LINT_JOBS": str(jobs), **(env or {})}
+    done = subprocess.run([sys.executable, "-m", "pkgtool", "lint", "--format", "json", *args],
+                          cwd=cwd, capture_output=True, text=True, timeout=600, env=environment)
+    assert "Traceback" not in done.stderr and done.returncode in (0, 1), done.stderr
+    return done
+
+
+def _bench_generator():  # type: ignore[no-untyped-def]
+    spec = importlib.util.spec_from_file_location("bench_lint", ROOT / "bench" / "bench_lint.py")
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module.write_package
+
+
+@pytest.fixture(scope="module")
+def corpus(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """A workspace: the reference packages, every seeded mistake, generated packages."""
+    from pkgtool.commands.create import Request, run
+
+    work = tmp_path_factory.mktemp("cache-corpus")
+    created = run(Request("base_pkg", work, maintainer_name="Jane Doe",
+                          maintainer_email="jane@example.com",
+                          nodes=("talker:publisher", "listener:subscriber", "srv:service"),
+                          launch=True, config=True, year=2026)).root
+    assert created is not None
+    source = work / "ws" / "src"
+    for reference in sorted(p for p in REFERENCE.iterdir() if (p / "package.xml").is_file()):
+        shutil.copytree(reference, source / reference.name)
+    for number, case in enumerate(CASES):
+        root = source / f"seeded_{number:03d}"
+        shutil.copytree(created if case.base == CREATED else REFERENCE / case.base, root)
+        case.mutate(root)
+    write_package = _bench_generator()
+    for index in range(GENERATED):
+        write_package(source / f"gen_{index:03d}", f"gen_{index:03d}")
+    return work / "ws"
+
+
+def test_findings_are_identical_with_and_without_cache_and_workers(corpus: Path) -> None:
+    serial = _lint(corpus, "--no-cache", jobs=1).stdout
+    pooled = _lint(corpus, "--no-cache", jobs=2).stdout
+    cold = _lint(corpus, jobs=2).stdout
+    entries = list((corpus / ".pkgtool_cache" / "lint").glob("*.json"))
+    warm = _lint(corpus, jobs=1).stdout
+    assert json.loads(serial)["findings"], "the corpus has findings to compare"
+    assert len(entries) == len(list((corpus / "src").iterdir()))
+    assert pooled == serial
+    assert cold == serial
+    assert warm == serial
+
+
+def test_an_edit_a_sibling_or_other_settings_invalidate(tmp_path: Path) -> None:
+    talker = correct_package_files("talker")
+    listener = correct_package_files("listener")
+    listener["listener/use.py"] = "import talker\n"
+    files = {**{f"src/talker/{k}": v for k, v in talker.items()},
+             **{f"src/listener/{k}": v for k, v in listener.items()}}
+    ws = write_tree(tmp_path / "ws", files)
+    first = _lint(ws).stdout
+    assert _lint(ws).stdout == first  # warm
+    shutil.rmtree(ws / "src" / "talker" / "talker")  # the sibling no longer provides `talker`
+    assert _lint(ws, "--no-cache").stdout == _lint(ws).stdout != first
+    (ws / "src" / "listener" / "listener" / "use.py").write_text("import talker\nx = y\n")
+    edited = _lint(ws).stdout
+    assert edited == _lint(ws, "--no-cache").stdout
+    assert "PYC001" in edited
+    assert "PYC001" not in _lint(ws, "--ignore", "PYC001").stdout
+
+
+def test_corrupt_or_foreign_entries_are_ignored_and_rewritten(tmp_path: Path) -> None:
+    root = write_tree(tmp_path / "pkg", correct_package_files("demo"))
+    (root / "demo" / "bad.py").write_text("x = y\n")
+    expected = _lint(root).stdout
+    entry = next((root / ".pkgtool_cache" / "lint").glob("*.json"))
+    good = json.loads(entry.read_text())
+    lies = {**good, "findings": []}
+    foreign = {**lies, "root": "/elsewhere"}
+    evil = {**good, "findings": {"@": "os:system", "value": "touch /tmp/x"}}
+    for text in ("{not json", "[]", json.dumps(foreign), json.dumps({**lies, "key": "0" * 64}),
+                 json.dumps(evil), json.dumps({**good, "schema": "other"})):
+        entry.write_text(text)
+        assert _lint(root).stdout == expected
+        assert json.loads(entry.read_text())["findings"] == good["findings"], text
+
+
+def test_the_cache_folder_is_chosen_by_option_environment_or_project(tmp_path: Path) -> None:
+    project = write_tree(tmp_path / "project", {"pyproject.toml": "[project]\nname = 'x'\n"})
+    root = write_tree(project / "src" / "demo", correct_package_files("demo"))
+    _lint(root)
+    assert (project / ".pkgtool_cache" / ".gitignore").read_text().splitlines()[-1] == "*"
+    assert not (root / ".pkgtool_cache").exists()
+    _lint(root, env={"PKGTOOL_CACHE_DIR": str(tmp_path / "env")})
+    _lint(root, "--cache-dir", "here", env={"PKGTOOL_CACHE_DIR": str(tmp_path / "env")})
+    assert list((tmp_path / "env" / "lint").glob("*.json"))
+    assert list((root / "here" / "lint").glob("*.json"))
+    _lint(root, "--cache-dir", ".")  # an existing folder: no .gitignore written into it
+    assert (root / "lint").is_dir() and not (root / ".gitignore").exists()
+    shutil.rmtree(project / ".pkgtool_cache")
+    _lint(root, "--no-cache")
+    assert not (project / ".pkgtool_cache").exists()
+
+
+def test_findings_round_trip_whatever_they_carry() -> None:
+    finding = make_finding()
+    assert decode(json.loads(json.dumps(encode([finding])))) == [finding]
+    nested = {"problem": ParseProblem("python-syntax", Span("a.py", 1, 2), "bad"),
+              "spans": (Span("b.py"), Span("c.py", 3)), "severity": Severity.INFO}
+    assert decode(json.loads(json.dumps(encode(nested)))) == nested
+    for data in ({"@": "os.path:join"}, {"@": "pkgtool.findings:Finding", "code": 1},
+                 {"@": "tuple", "items": 3}, {"@": "builtins:type"},
+                 {"@": "pkgtool.__main__:main"}):
+        with pytest.raises(BadEntry):
+            decode(data)
+    assert "pkgtool.__main__" not in sys.modules  # never imported because an entry said so
+
+
+def test_a_finding_carrying_a_fix_round_trips_in_a_fresh_process() -> None:
+    from dataclasses import replace
+
+    from pkgtool.edit.core import Edit, Fix
+
+    finding = replace(make_finding(), fix=Fix("Add the comma", (Edit("setup.py", 3, 3, ","),)))
+    data = json.dumps(encode([finding]))
+    script = ("import json, sys; from pkgtool.cache.serial import decode; "
+              "print(repr(decode(json.loads(sys.stdin.read()))))")
+    done = subprocess.run([sys.executable, "-c", script], input=data, capture_output=True,
+                          text=True, timeout=120, check=True)
+    assert done.stdout.strip() == repr([finding])
