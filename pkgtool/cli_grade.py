@@ -141,8 +141,8 @@ def _run(command, submissions: list[str], rubric: str, batch: bool,  # type: ign
         partial.add(result)
 
     with progress:
-        return command.run(submissions, rubric=rubric, batch=batch, jobs=jobs, mode=mode, cache=cache,
-                           on_start=started, on_done=finished)
+        return command.run(submissions, rubric=rubric, batch=batch, jobs=jobs, mode=mode,
+                           cache=cache, on_start=started, on_done=finished)
 
 
 class _PartialReport:

@@ -36,6 +36,13 @@ def _rubric(tmp_path: Path, points: int):  # type: ignore[no-untyped-def]
     return load_rubric(path)
 
 
+def _grade_cached(items, rubric, store: Path):  # type: ignore[no-untyped-def]
+    """What grade_all does with a cache, in this process (its jobs run in processes of their
+    own, where the spy below is not installed)."""
+    return [cache_module.grade_cached(path, rubric, folder=store, label=label, mode="none")
+            for label, path in items]
+
+
 def test_a_changed_criterion_alone_is_regraded(tmp_path: Path,
                                                monkeypatch: pytest.MonkeyPatch) -> None:
     good = write_submission(tmp_path / "alice" / "talker_pkg", correct())
@@ -52,13 +59,13 @@ def test_a_changed_criterion_alone_is_regraded(tmp_path: Path,
 
     monkeypatch.setattr(cache_module, "grade_submission", spy)
     store = tmp_path / "cache"
-    first = grade_all(items, _rubric(tmp_path, 3), cache=store, mode="none")
+    first = _grade_cached(items, _rubric(tmp_path, 3), store)
     assert graded == [("alice", ("deps", "entry points")), ("bob", ("deps", "entry points"))]
     assert [r.score for r in first] == [5.0, 2.0]
     graded.clear()
-    again = grade_all(items, _rubric(tmp_path, 3), cache=store, mode="none")
+    again = _grade_cached(items, _rubric(tmp_path, 3), store)
     assert graded == [] and [r.criteria for r in again] == [r.criteria for r in first]
-    changed = grade_all(items, _rubric(tmp_path, 4), cache=store, mode="none")
+    changed = _grade_cached(items, _rubric(tmp_path, 4), store)
     assert graded == [("alice", ("entry points",)), ("bob", ("entry points",))]
     assert [r.score for r in changed] == [6.0, 2.0]
     assert [c.name for c in changed[1].criteria] == ["deps", "entry points"]
@@ -66,8 +73,10 @@ def test_a_changed_criterion_alone_is_regraded(tmp_path: Path,
     graded.clear()
     (bad / "setup.py").write_text(correct()["setup.py"])
     (bad / "README.md").write_text("fixed")
-    fixed = grade_all(items, _rubric(tmp_path, 4), cache=store, mode="none")
+    fixed = _grade_cached(items, _rubric(tmp_path, 4), store)
     assert graded == [("bob", ("deps", "entry points"))] and fixed[1].score == 6.0
+    through_jobs = grade_all(items, _rubric(tmp_path, 4), cache=store, mode="none")
+    assert [r.criteria for r in through_jobs] == [r.criteria for r in fixed]
     graded.clear()
     (bad / "README.md").unlink()
     same_as_alice = grade_all(items, _rubric(tmp_path, 4), cache=store, mode="none")
