@@ -66,6 +66,20 @@ def is_archive(path: Path) -> bool:
     return path.is_file() and path.name.lower().endswith(ARCHIVE_SUFFIXES)
 
 
+def lone_archive(folder: Path) -> Path | None:
+    """The archive ``folder`` holds when it is the folder's only visible entry (a regular file,
+    not a link), else None: Gradescope, Moodle and hand-made folders often hold just the
+    uploaded ``.zip``."""
+    try:
+        visible = [e for e in folder.iterdir() if not e.name.startswith(".")]
+    except OSError:
+        return None
+    only = visible[0] if len(visible) == 1 else None
+    if only is None or only.is_symlink():
+        return None
+    return only if is_archive(only) else None
+
+
 def extract(archive: Path, dest: Path, limits: ExtractLimits = ExtractLimits()) -> int:
     """Unpack ``archive`` into the existing empty folder ``dest``; returns the files written.
 

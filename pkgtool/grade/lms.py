@@ -21,18 +21,12 @@ _CANVAS = re.compile(r"(?P<name>[A-Za-z0-9-]+?)_(?:LATE_)?(?P<id>\d+)_\d+_.+", r
 def lms_submission(entry: Path) -> tuple[str, Path] | None:
     """``(label, path)`` when ``entry`` is a Moodle student folder or a Canvas file, else None.
 
-    A Moodle folder holding exactly one archive (and nothing else visible) is graded as that
-    archive; a folder of loose files is graded as the folder.
+    A Moodle folder holding only the uploaded archive is unpacked as that archive when graded
+    (:func:`pkgtool.grade.extract.lone_archive`).
     """
     if entry.is_dir() and not entry.is_symlink():
         found = _MOODLE.fullmatch(entry.name)
-        if found is None:
-            return None
-        visible = [e for e in entry.iterdir() if not e.name.startswith(".")]
-        only = visible[0] if len(visible) == 1 else None
-        graded = (only if only is not None and not only.is_symlink() and only.is_file()
-                  and is_archive(only) else entry)
-        return f"{found['name']}_{found['id']}", graded
+        return None if found is None else (f"{found['name']}_{found['id']}", entry)
     found = _CANVAS.fullmatch(entry.name)
     if found is None or not is_archive(entry):
         return None

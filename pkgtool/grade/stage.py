@@ -8,7 +8,7 @@ import os
 import sys
 from pathlib import Path
 
-from pkgtool.grade.extract import ExtractLimits, SubmissionError, is_archive
+from pkgtool.grade.extract import ExtractLimits, SubmissionError, is_archive, lone_archive
 from pkgtool.safe_fs import MB, UnsafeFile, open_path, remove_tree
 from pkgtool.grade.sandbox import Sandbox
 from pkgtool.grade.sources import copy_tree
@@ -18,8 +18,9 @@ def stage(path: Path, box: Sandbox, limits: ExtractLimits = ExtractLimits()) -> 
     """Copy or unpack the submission ``path`` into ``<workspace>/submission``; returns it.
 
     A folder is copied the careful way of :func:`pkgtool.grade.sources.copy_tree`; an
-    archive is copied as one regular file and unpacked inside the sandbox, as the job's uid,
-    by :mod:`pkgtool.grade.extract`. The result holds no link.
+    archive (or a folder holding only an archive) is copied as one regular file and unpacked
+    inside the sandbox, as the job's uid, by :mod:`pkgtool.grade.extract`. The result holds
+    no link.
     """
     tree = box.workspace / "submission"
     if not os.path.lexists(path):
@@ -27,8 +28,9 @@ def stage(path: Path, box: Sandbox, limits: ExtractLimits = ExtractLimits()) -> 
     if path.is_symlink():
         raise SubmissionError(f"`{path.name}` is a symbolic link; submit the folder or the "
                               "archive itself")
-    if is_archive(path):
-        _unpack(path, box, tree, limits)
+    archive = path if is_archive(path) else lone_archive(path) if path.is_dir() else None
+    if archive is not None:
+        _unpack(archive, box, tree, limits)
     elif path.is_dir():
         copy_tree(path, tree, limits)
         box.give(tree)

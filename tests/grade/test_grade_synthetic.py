@@ -44,6 +44,8 @@ def batch(tmp_path_factory: pytest.TempPathFactory) -> Batch:
     staging = root / "staging"
     synthetic.write_submission(staging / "talker_pkg", synthetic.correct())
     synthetic.tar_gz(subs / "correct_tgz.tar.gz", staging / "talker_pkg")
+    (subs / "archive_in_folder").mkdir()  # as Gradescope and Moodle hand over an upload
+    synthetic.tar_gz(subs / "archive_in_folder" / "upload.tar.gz", staging / "talker_pkg")
     synthetic.zip_with_traversal(subs / "zip_traversal.zip", staging / "talker_pkg")
     before = {p.name: tree_digest(p) for p in subs.iterdir()}
     (root / "rubric.toml").write_text(synthetic.RUBRIC.format(timeout=30,
@@ -85,12 +87,13 @@ def _per_finding(batch: Batch) -> float:
 
 def test_every_submission_is_graded_and_left_unchanged(batch: Batch) -> None:
     graded = batch["graded"]
-    assert set(graded) == {*batch["names"], "correct_tgz", "zip_traversal"}
+    assert set(graded) == {*batch["names"], "correct_tgz", "archive_in_folder",
+                           "zip_traversal"}
     assert batch["before"] == batch["after"]
     assert all(entry["unchanged"] for entry in graded.values())
 
 
-@pytest.mark.parametrize("label", ["correct", "correct_tgz"])
+@pytest.mark.parametrize("label", ["correct", "correct_tgz", "archive_in_folder"])
 def test_a_correct_submission_gets_full_marks(batch: Batch, label: str) -> None:
     entry = batch["graded"][label]
     assert entry["score"] == entry["max_score"] == batch["rubric"].max_score, \

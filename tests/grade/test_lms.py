@@ -6,6 +6,7 @@ import zipfile
 from pathlib import Path
 
 from pkgtool.grade.batch import expand
+from pkgtool.grade.extract import lone_archive
 
 
 def _zip(path: Path) -> Path:
@@ -22,8 +23,20 @@ def test_moodle_folders_are_labelled_by_student(tmp_path: Path) -> None:
     (bob / "robot_monitor").mkdir(parents=True)
     (bob / "robot_monitor" / "package.xml").write_text("<package/>")
     (bob / "notes.txt").write_text("two entries: the folder itself is graded")
-    assert expand([tmp_path], batch=True) == [("Alice Smith_101", upload),
+    assert expand([tmp_path], batch=True) == [("Alice Smith_101", alice),
                                               ("Bob Jones_102", bob)]
+    assert lone_archive(alice) == upload and lone_archive(bob) is None
+
+
+def test_only_a_lone_regular_archive_stands_for_its_folder(tmp_path: Path) -> None:
+    linked = tmp_path / "linked"
+    linked.mkdir()
+    (linked / "upload.zip").symlink_to(_zip(tmp_path / "elsewhere.zip"))
+    hidden_too = tmp_path / "hidden_too"
+    hidden_too.mkdir()
+    upload = _zip(hidden_too / "upload.zip")
+    (hidden_too / ".DS_Store").write_text("ignored")
+    assert lone_archive(linked) is None and lone_archive(hidden_too) == upload
 
 
 def test_canvas_files_are_labelled_by_student(tmp_path: Path) -> None:
