@@ -140,6 +140,10 @@ def _criterion(entry: dict[str, Any], base: Path, where: str) -> Criterion:
         raise RubricError(f"{where}: `min_severity` must be one of {', '.join(SEVERITIES)}.")
     if values.get("details", "full") not in DETAILS:
         raise RubricError(f"{where}: `details` must be one of {', '.join(DETAILS)}.")
+    if values.get("feedback") in DETAILS:
+        raise RubricError(f"{where}: `feedback` is the text shown to students; to choose how "
+                          f"much of the test output they see, write `details = "
+                          f"\"{values['feedback']}\"`.")
     if kind == "style":
         values.setdefault("select", ("STY",))
     if kind in ("lint", "style"):

@@ -6,6 +6,8 @@ import subprocess
 import sys
 from pathlib import Path
 
+import pytest
+
 from pkgtool.grade.criteria import _test_outcome
 from pkgtool.grade.rubric import Criterion, RubricError, parse_rubric
 from pkgtool.ros.colcon import ColconRun
@@ -59,3 +61,11 @@ def test_details_takes_full_or_summary_only(tmp_path: Path) -> None:
         assert "`details` must be one of full, summary" in str(error)
     else:
         raise AssertionError("an unknown details value is refused")
+
+
+def test_feedback_summary_points_to_details(tmp_path: Path) -> None:
+    (tmp_path / "hidden").mkdir()
+    wrong = {"criteria": [{"kind": "hidden", "points": 1, "path": "hidden",
+                           "feedback": "summary"}]}
+    with pytest.raises(RubricError, match='write `details = "summary"`'):
+        parse_rubric(wrong, base=tmp_path)
