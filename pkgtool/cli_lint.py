@@ -164,12 +164,17 @@ def _show_rules(explain: Optional[str], fmt: Format, output: Optional[Path]) -> 
 
 
 def _report(result: LintResult, fmt: Format, output: Optional[Path]) -> None:
-    from pkgtool.fix.registry import fixers
     from pkgtool.report import ReportContext, render
-    from pkgtool.rules.registry import load_all
+    from pkgtool.rules.registry import load, load_all
 
-    fixable = {code: entry.safe for code, entry in fixers().items()}
-    context = ReportContext(result.packages, load_all(), _colour(fmt, output), fixable)
+    # SARIF describes every rule; the others only the rules that found something.
+    rules = load_all() if fmt is Format.SARIF else load(f.code for f in result.findings)
+    fixable: dict[str, bool] = {}
+    if result.findings:
+        from pkgtool.fix.registry import fixers
+
+        fixable = {code: entry.safe for code, entry in fixers().items()}
+    context = ReportContext(result.packages, rules, _colour(fmt, output), fixable)
     emit(render(fmt.value, result.findings, context=context), output, "lint")
 
 

@@ -20,7 +20,7 @@ from pathlib import Path
 
 from pkgtool.findings import Severity
 from pkgtool.knowledge.tables import DEFAULT_DISTRO, DISTROS
-from pkgtool.rules.registry import FAMILIES, Rule, load_all, resolve
+from pkgtool.rules.registry import FAMILIES, Rule, index, load, matching
 
 PYPROJECT = "pyproject.toml"
 KEYS = ("select", "ignore", "extend-select", "strict", "severity", "per-file-ignores",
@@ -67,8 +67,7 @@ class Settings:
     @property
     def rules(self) -> tuple[Rule, ...]:
         """The rules to run, in code order."""
-        catalogue = load_all()
-        return tuple(catalogue[code] for code in self.codes)
+        return tuple(load(self.codes).values())
 
     def ignores(self, path: Path, code: str) -> bool:
         """True when a per-file-ignores glob silences ``code`` at absolute ``path``."""
@@ -91,8 +90,8 @@ def expand(selector: str, *, where: str) -> frozenset[str]:
     """Rule codes a selector names: ``ALL``, a family, a code, a code prefix or a rule name."""
     key = selector.strip()
     if key.upper() == ALL:
-        return frozenset(load_all())
-    found = frozenset(r.code for r in resolve(key)) if key else frozenset()
+        return frozenset(index())
+    found = frozenset(matching(key)) if key else frozenset()
     if found or key.upper() in FAMILIES:
         return found
     raise ConfigError(f"Unknown rule selector `{selector}` in {where}. "
@@ -101,8 +100,7 @@ def expand(selector: str, *, where: str) -> frozenset[str]:
 
 def settings_for(layers: Iterable[Layer]) -> Settings:
     """Combine layers (outermost first) into the settings of one package."""
-    catalogue = load_all()
-    chosen = {code for code, r in catalogue.items() if r.default_enabled}
+    chosen = {code for code, r in index().items() if r.default_enabled}
     severities: dict[str, Severity] = {}
     strict = False
     rosdistro = DEFAULT_DISTRO
@@ -168,7 +166,7 @@ def _selectors(table: Mapping[str, object], key: str,
 def _severities(value: object, where: str) -> tuple[tuple[str, Severity], ...]:
     if not isinstance(value, dict):
         raise ConfigError(f"{where} must be a table such as `MAN003 = \"warning\"`.")
-    catalogue = load_all()
+    catalogue = index()
     by_name = {r.name: r.code for r in catalogue.values()}
     result = []
     for key, level in value.items():

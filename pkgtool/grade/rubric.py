@@ -157,12 +157,12 @@ def _criterion(entry: dict[str, Any], base: Path, where: str) -> Criterion:
 
 
 def _check_selectors(select: tuple[str, ...], ignore: tuple[str, ...], where: str) -> None:
-    from pkgtool.rules.registry import FAMILIES, resolve
+    from pkgtool.rules.registry import FAMILIES, matching
 
     if not select:
         raise RubricError(f"{where}: list rule codes, families or names in `select`.")
     for selector in select + ignore:
-        if not resolve(selector):
+        if not matching(selector):
             raise RubricError(f"{where}: `{selector}` matches no lint rule (families: "
                               f"{', '.join(FAMILIES)}).")
 

@@ -6,8 +6,9 @@ import importlib
 import pkgutil
 import re
 from collections.abc import Callable, Iterable
+from functools import cache
 from dataclasses import dataclass
-from typing import TYPE_CHECKING, TypeAlias
+from typing import TYPE_CHECKING, NamedTuple, TypeAlias
 
 from pkgtool.findings import Hit, Severity
 
@@ -56,6 +57,17 @@ class Rule:
     def summary(self) -> str:
         """The first line of the rule's documentation."""
         return self.doc.strip().splitlines()[0] if self.doc.strip() else self.name
+
+
+class RuleInfo(NamedTuple):
+    """What selecting a rule needs, known without importing it (see :func:`index`)."""
+
+    code: str
+    name: str
+    severity: Severity
+    default_enabled: bool
+    module: str
+    """The module defining the rule, relative to :mod:`pkgtool.rules`."""
 
 
 _RULES: dict[str, Rule] = {}
@@ -112,13 +124,40 @@ def load_all() -> dict[str, Rule]:
     return dict(sorted(_RULES.items()))
 
 
-def resolve(selector: str) -> list[Rule]:
-    """Rules matching a code (``MAN003``), a family (``MAN``), a code prefix or a rule name."""
-    rules = load_all()
+@cache
+def index() -> dict[str, RuleInfo]:
+    """Every rule's code, name, severity and module, in code order, from the generated
+    :mod:`pkgtool.rules._index` (``python -m pkgtool.docs_gen``): selecting rules imports none.
+    Shared: do not change the result."""
+    from pkgtool.rules._index import RULES
+
+    return {code: RuleInfo(code, name, Severity(severity), default, module)
+            for code, (name, severity, default, module) in RULES.items()}
+
+
+def load(codes: Iterable[str]) -> dict[str, Rule]:
+    """The rules of ``codes``, importing only their modules."""
+    wanted = sorted(set(codes))
+    if not _loaded:
+        catalogue = index()
+        for module in sorted({catalogue[code].module for code in wanted if code in catalogue}):
+            importlib.import_module(f"pkgtool.rules.{module}")
+    return {code: _RULES[code] for code in wanted}
+
+
+def matching(selector: str) -> list[str]:
+    """Codes matching a code (``MAN003``), a family (``MAN``), a code prefix or a rule name,
+    read from the index (nothing imported)."""
+    rules = index()
     key = selector.strip()
     if key.upper() in rules:
-        return [rules[key.upper()]]
-    by_name = [r for r in rules.values() if r.name == key.lower()]
+        return [key.upper()]
+    by_name = [r.code for r in rules.values() if r.name == key.lower()]
     if by_name:
         return by_name
-    return [r for r in rules.values() if r.code.startswith(key.upper())] if key else []
+    return [code for code in rules if code.startswith(key.upper())] if key else []
+
+
+def resolve(selector: str) -> list[Rule]:
+    """The rules :func:`matching` ``selector``, in code order."""
+    return list(load(matching(selector)).values())

@@ -12,7 +12,8 @@ import pytest
 
 from pkgtool.commands import ExitCode
 from pkgtool.findings import Severity
-from pkgtool.rules.registry import _RULES, Rule, load_all
+from pkgtool.rules import registry
+from pkgtool.rules.registry import _RULES, Rule, RuleInfo, load_all
 from tests.helpers import MINIMAL_MANIFEST, run_cli, write_tree
 
 BROKEN = "def talk(:\n    pass\n"
@@ -123,8 +124,10 @@ def crashing_rule() -> Iterator[str]:
     load_all()
     _RULES["SYN999"] = Rule("SYN999", "test-explosion", Severity.WARNING, "Do nothing",
                             explode, "Explodes.")
+    registry.index()["SYN999"] = RuleInfo("SYN999", "test-explosion", Severity.WARNING, True,
+                                          "none")
     yield "SYN999"
-    del _RULES["SYN999"]
+    del _RULES["SYN999"], registry.index()["SYN999"]
 
 
 def test_a_crashing_rule_becomes_an_internal_error_finding(workspace: Path,
