@@ -130,9 +130,10 @@ def load_package(root: Path, context: Context | None = None) -> Package:
                 modules.append(module)
                 if module.syntax_error and not _test_data(relpath):
                     problems.append(module.syntax_error)
-    for readme in ("README.md", "README.rst", "README.txt", "README"):
-        if readme in files:  # what the package says about itself (`ros2 run ...`)
-            text_of(readme)
+    for other in ("README.md", "README.rst", "README.txt", "README",  # `ros2 run ...`
+                  "pytest.ini", ".pytest.ini", "pyproject.toml", "tox.ini"):  # pytest's settings
+        if other in files:
+            text_of(other)
     suppressions: dict[tuple[str, int], frozenset[str]] = {}
     for relpath, text in texts.items():
         suppressions.update(_suppressions(relpath, text))
