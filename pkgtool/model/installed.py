@@ -24,6 +24,10 @@ _CFG_KEYWORDS = {
     "entry_points": ("options.entry_points", None), "data_files": ("options.data_files", None),
 }
 """Where setup.cfg's declarative configuration can give each setup() keyword."""
+DATA_FOLDERS = frozenset({"launch", "config", "params", "param", "resource", "test", "tests",
+                          "models", "meshes", "urdf", "worlds", "maps", "rviz", "msg", "srv",
+                          "action", "doc", "docs"})
+"""Folders of a ROS package that hold data, launch files or tests, never its Python code."""
 _INSTALL_KEYWORDS = frozenset({"packages", "package_dir", "py_modules", "data_files"})
 """Keywords whose effect custom ``cmdclass`` commands can change."""
 
@@ -52,6 +56,14 @@ def keyword_known(package: Package, keyword: str) -> bool:
     if option is None:
         return not any(o.section == section for o in cfg.options)
     return cfg.get(section, option) is None
+
+
+def found_top_level(package: Package) -> frozenset[str]:
+    """Top-level packages ``find_packages()``/``find_namespace_packages()`` install, if known."""
+    spec = package.setup_py.packages if package.setup_py else None
+    if spec is None or spec.kind == "list" or not keyword_known(package, "packages"):
+        return frozenset()
+    return frozenset(name.split(".")[0] for name in spec.names)
 
 
 def package_folder(package_name: str, package_dir: dict[str, str]) -> str:

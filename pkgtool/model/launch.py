@@ -12,6 +12,19 @@ LAUNCH_SUFFIXES = (".launch.py", "_launch.py", ".launch.xml", "_launch.xml", ".l
 
 
 @dataclass(frozen=True, slots=True)
+class FileRef:
+    """A file the launch file reads from a package's share folder, e.g. ('config', 'p.yaml').
+
+    ``package`` is the package whose share folder is used (None if unknown); ``parts`` are the
+    static path components after the share folder.
+    """
+
+    package: str | None
+    parts: tuple[str, ...]
+    span: Span
+
+
+@dataclass(frozen=True, slots=True)
 class NodeRef:
     """A node the launch file starts: ``Node(package=, executable=)`` or ``<node pkg= exec=>``.
 
@@ -21,6 +34,8 @@ class NodeRef:
     ``*args``); ``package_span`` and ``executable_span`` are where those two values are
     written, when known. ``optional`` marks a node started only after the launch file checked
     that its package is installed (``if 'x' in get_packages_with_prefixes():``).
+    ``parameter_files`` are the share files given as its parameters (``parameters=[path]``,
+    ``<param from=...>``), where the path is static.
     """
 
     package: str | None
@@ -31,6 +46,7 @@ class NodeRef:
     package_span: Span | None = None
     executable_span: Span | None = None
     optional: bool = False
+    parameter_files: tuple[FileRef, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)
@@ -43,19 +59,6 @@ class PackageRef:
     package: str
     span: Span
     optional: bool = False
-
-
-@dataclass(frozen=True, slots=True)
-class FileRef:
-    """A file the launch file reads from a package's share folder, e.g. ('config', 'p.yaml').
-
-    ``package`` is the package whose share folder is used (None if unknown); ``parts`` are the
-    static path components after the share folder.
-    """
-
-    package: str | None
-    parts: tuple[str, ...]
-    span: Span
 
 
 @dataclass(frozen=True, slots=True)

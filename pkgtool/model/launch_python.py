@@ -201,7 +201,8 @@ class _Reader(ast.NodeVisitor):
                 executable if isinstance(executable, str) else None, self._span(node), action,
                 arguments,
                 package_node and self._span(package_node),
-                executable_node and self._span(executable_node), bool(self.optional)))
+                executable_node and self._span(executable_node), bool(self.optional),
+                self._parameter_files(_keyword(node, "parameters"))))
         elif name == "ExecuteProcess":
             self._ros2_run(node)
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
@@ -211,6 +212,17 @@ class _Reader(ast.NodeVisitor):
                                                 bool(self.optional)))
         self._record_path(node)
         self.generic_visit(node)
+
+    def _parameter_files(self, node: ast.expr | None) -> tuple[FileRef, ...]:
+        """The share files among a node's ``parameters=[...]`` (dicts and unknowns left out)."""
+        items = node.elts if isinstance(node, (ast.List, ast.Tuple)) else [node] if node else []
+        found: list[FileRef] = []
+        for item in items:
+            value = self.value(item)
+            for part in value if isinstance(value, tuple) else (value,):
+                if isinstance(part, Share) and part.share and part.parts:
+                    found.append(FileRef(part.package, part.parts, self._span(_last_part(item))))
+        return tuple(found)
 
     def _ros2_run(self, node: ast.Call) -> None:
         command = self.value(_keyword(node, "cmd"))

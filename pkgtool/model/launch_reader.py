@@ -69,12 +69,19 @@ def _substitutions(values: list[tuple[str, Span]]) -> tuple[tuple[PackageRef, ..
     files: list[FileRef] = []
     for value, span in values:
         packages.extend(PackageRef(m.group(2), span) for m in _LOOKUP.finditer(value))
-        share = _SHARE_PATH.match(value.strip())
-        if share:
-            parts = tuple(p for p in share.group(2).split("/") if p not in ("", "."))
-            if parts and ".." not in parts:
-                files.append(FileRef(share.group(1), parts, span))
+        found = _share_file(value, span)
+        if found:
+            files.append(found)
     return tuple(packages), tuple(files)
+
+
+def _share_file(value: str, span: Span) -> FileRef | None:
+    """The share file a ``$(find-pkg-share pkg)/a/b`` value names, if it is that and static."""
+    share = _SHARE_PATH.match(value.strip())
+    if not share:
+        return None
+    parts = tuple(p for p in share.group(2).split("/") if p not in ("", "."))
+    return FileRef(share.group(1), parts, span) if parts and ".." not in parts else None
 
 
 # XML -------------------------------------------------------------------------------------
@@ -90,9 +97,12 @@ def _xml(path: str, text: str) -> tuple[list[NodeRef], list[tuple[str, Span]]] |
         if element.tag in NODE_TAGS:
             executable = next((element.attribute(a) for a in NODE_TAGS[element.tag]
                                if element.attribute(a) is not None), None)
+            params = (_share_file(c.attribute("from") or "", c.span)
+                      for c in element.children if c.tag == "param")
             nodes.append(NodeRef(_static(element.attribute("pkg")), _static(executable),
                                  element.span, element.tag,
-                                 tuple(k for k, _ in element.attributes)))
+                                 tuple(k for k, _ in element.attributes),
+                                 parameter_files=tuple(p for p in params if p)))
         values.extend((value, element.span) for _, value in element.attributes)
     return nodes, values
 
@@ -171,6 +181,13 @@ def _yaml_node(tag: object, mapping: object, path: str) -> NodeRef:
         return Span(path, node.start_mark.line + 1, node.start_mark.column + 1)
 
     names = tuple(str(k.value) for k, _ in mapping.value if isinstance(k, yaml.ScalarNode))
+    params = [_share_file(str(v.value), span(v))
+              for k, entries in mapping.value if isinstance(k, yaml.ScalarNode)
+              and k.value == "param" and isinstance(entries, yaml.SequenceNode)
+              for entry in entries.value if isinstance(entry, yaml.MappingNode)
+              for f, v in entry.value if isinstance(f, yaml.ScalarNode) and f.value == "from"
+              and isinstance(v, yaml.ScalarNode)]
     return NodeRef(_static(fields.get("pkg")), _static(fields[key] if key else None), span(tag),
                    str(tag.value), names, span(scalars["pkg"]) if "pkg" in scalars else None,
-                   span(scalars[key]) if key else None)
+                   span(scalars[key]) if key else None,
+                   parameter_files=tuple(p for p in params if p))

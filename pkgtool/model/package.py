@@ -116,7 +116,7 @@ def load_package(root: Path, context: Context | None = None) -> Package:
                 if launch.problem:
                     problems.append(launch.problem)
         elif relpath.endswith((".yaml", ".yml")):  # parameter files: only their syntax
-            if _test_material(relpath):
+            if is_test_material(relpath):
                 continue  # test data, deliberately broken at times: not package files
             text = text_of(relpath)
             if text is not None and "{%" not in text:  # a Jinja template is not YAML yet
@@ -130,9 +130,10 @@ def load_package(root: Path, context: Context | None = None) -> Package:
                 modules.append(module)
                 if module.syntax_error and not _test_data(relpath):
                     problems.append(module.syntax_error)
-    for readme in ("README.md", "README.rst", "README.txt", "README"):
-        if readme in files:  # what the package says about itself (`ros2 run ...`)
-            text_of(readme)
+    for other in ("README.md", "README.rst", "README.txt", "README",  # `ros2 run ...`
+                  "pytest.ini", ".pytest.ini", "pyproject.toml", "tox.ini"):  # pytest's settings
+        if other in files:
+            text_of(other)
     suppressions: dict[tuple[str, int], frozenset[str]] = {}
     for relpath, text in texts.items():
         suppressions.update(_suppressions(relpath, text))
@@ -144,7 +145,7 @@ _LAUNCH_XML = re.compile(r"\s*(?:<\?xml[^>]*\?>\s*)?(?:<!--.*?-->\s*)*<launch[\s
 _LAUNCH_YAML = re.compile(r"^launch\s*:", re.M)
 
 
-def _test_material(relpath: str) -> bool:
+def is_test_material(relpath: str) -> bool:
     """A file in a ``test`` or ``tests`` folder (also one inside the Python package)."""
     return any(part in ("test", "tests") for part in relpath.split("/")[:-1])
 
@@ -153,7 +154,7 @@ def _test_data(relpath: str) -> bool:
     """A Python file under ``test/`` that pytest does not collect (a fixture, sample input)."""
     name = relpath.rsplit("/", 1)[-1]
     collected = name.startswith("test_") or name.endswith("_test.py") or name == "conftest.py"
-    return _test_material(relpath) and not collected
+    return is_test_material(relpath) and not collected
 
 
 def _launch_by_content(relpath: str, text_of: Callable[[str], str | None]) -> bool:

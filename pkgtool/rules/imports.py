@@ -21,7 +21,7 @@ from pkgtool.knowledge.rosdep import (ALTERNATIVE_KEYS, COVERED_BY, ROS_MODULE_P
 from pkgtool.knowledge.rosdistro import (any_stdlib_module, is_released_package,
                                          keys_for_import, stdlib_modules)
 from pkgtool.model.context import Context
-from pkgtool.model.installed import installed_modules
+from pkgtool.model.installed import DATA_FOLDERS, installed_modules
 from pkgtool.model.launch import is_launch_file, python_folders
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.modules import Import, PythonModule
@@ -116,12 +116,31 @@ def _layout(files: tuple[str, ...]) -> _Layout:
 
 @per_package
 def own_modules(package: Package) -> frozenset[str]:
-    """Top-level names the package itself provides (never need a key)."""
+    """Top-level names the package itself provides (never need a key).
+
+    A data folder installed by mistake under the name of another provider's module
+    (:func:`shadowing_folders`) is not one: imports of that name mean the other module.
+    """
     names = set(_layout(package.files).names) | {package.name}
     installed = installed_modules(package)
     if installed:
         names.update(name.split(".")[0] for name in installed)
-    return frozenset(names)
+    return frozenset(names - shadowing_folders(package))
+
+
+def provided_elsewhere(name: str, context: Context) -> bool:
+    """True when ``name`` is a module the standard library, ROS or rosdep provides."""
+    return (name in _stdlib(context.distro) or is_released_package(name, context.distro)
+            or bool(keys_for_import(name, context.distro)))
+
+
+@per_package
+def shadowing_folders(package: Package) -> frozenset[str]:
+    """Data folders (``launch/``, ``test/``) holding Python files or an ``__init__.py`` that are
+    named like another provider's module (``launch``): never the package's own code."""
+    folders = {p.split("/")[0] for p in package.files if "/" in p and p.endswith(".py")}
+    return frozenset(n for n in folders & DATA_FOLDERS if n != package.name
+                     and provided_elsewhere(n, package.context))
 
 
 def _siblings(package: Package, path: str) -> frozenset[str]:

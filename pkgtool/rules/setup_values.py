@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
-from pkgtool.model.installed import is_ament_python
+from collections.abc import Iterator
+
+from pkgtool.model.installed import is_ament_python, keyword_known, package_folder
 from pkgtool.model.package import Package
 from pkgtool.model.setup_py import SetupPy, Value
 from pkgtool.model.span import Span
@@ -39,3 +41,14 @@ def beside_manifest(package: Package, key: str) -> tuple[str, Span, str] | None:
     if found is None or element is None:
         return None
     return found[0], found[1], element.value
+
+
+def listed_packages(package: Package) -> Iterator[tuple[str, str, Span]]:
+    """(name, folder, span) for each name of an explicit ``packages=[...]`` list of a checked
+    setup.py, the folder mapped through ``package_dir`` as setuptools does."""
+    setup = checked_setup(package)
+    if setup is None or setup.packages is None or setup.packages.kind != "list" or \
+            not keyword_known(package, "package_dir"):
+        return
+    for name in setup.packages.names:
+        yield name, package_folder(name, setup.package_dir or {}), setup.packages.span

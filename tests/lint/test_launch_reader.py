@@ -22,6 +22,10 @@ def _files(launch: LaunchFile) -> list[tuple[str | None, tuple[str, ...], int]]:
     return [(f.package, f.parts, f.span.line) for f in launch.files]
 
 
+def _parameter_files(launch: LaunchFile) -> list[tuple[str | None, tuple[str, ...], int]]:
+    return [(f.package, f.parts, f.span.line) for n in launch.nodes for f in n.parameter_files]
+
+
 def test_launch_file_names() -> None:
     assert all(is_launch_file(p) for p in ("launch/a.launch.py", "b_launch.py", "c.launch.xml",
                                            "d.launch.yaml", "e_launch.yml"))
@@ -156,6 +160,21 @@ def test_python_unknown_or_absolute_parts_give_no_file_ref() -> None:
     assert launch.files == () and [p.package for p in launch.packages] == ["demo"]
 
 
+def test_python_node_parameter_files() -> None:
+    launch = _py("""
+        import os
+        from ament_index_python.packages import get_package_share_directory
+        from launch_ros.actions import Node
+        share = get_package_share_directory('demo')
+        params = [os.path.join(share, 'config', 'a.yaml')]
+        Node(package='demo', executable='t', parameters=[
+            os.path.join(share, 'config', 'b.yaml'), {'x': 1}, LaunchConfiguration('p')])
+        Node(package='demo', executable='t', parameters=params)
+        """)
+    assert _parameter_files(launch) == [("demo", ("config", "b.yaml"), 8),
+                                        ("demo", ("config", "a.yaml"), 9)]
+
+
 def test_python_execute_process_ros2_run() -> None:
     launch = _py("ExecuteProcess(cmd=['ros2', 'run', 'turtlesim', 'turtlesim_node'])\n")
     assert _nodes(launch) == [("turtlesim", "turtlesim_node", 1)]
@@ -208,6 +227,7 @@ def test_xml_nodes_includes_and_params() -> None:
         ("demo", 4), ("nav2_bringup", 7), ("demo", 11)]
     assert _files(launch) == [("demo", ("config", "params.yaml"), 4),
                               ("nav2_bringup", ("launch", "navigation_launch.py"), 7)]
+    assert _parameter_files(launch) == [("demo", ("config", "params.yaml"), 4)]
 
 
 @pytest.mark.parametrize(("text", "kind"), [
@@ -237,6 +257,7 @@ def test_yaml_nodes_and_substitutions() -> None:
     assert [p.package for p in launch.packages] == ["demo", "nav2_bringup"]
     assert _files(launch) == [("demo", ("config", "params.yaml"), 8),
                               ("nav2_bringup", ("launch", "navigation_launch.py"), 10)]
+    assert _parameter_files(launch) == [("demo", ("config", "params.yaml"), 8)]
 
 
 def test_yaml_syntax_error_has_a_line() -> None:

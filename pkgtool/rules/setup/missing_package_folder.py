@@ -5,10 +5,9 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.installed import keyword_known, package_folder
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup_values import checked_setup
+from pkgtool.rules.setup_values import listed_packages
 
 
 @rule("SET011", "missing-package-folder", Severity.ERROR,
@@ -36,14 +35,7 @@ def missing_package_folder(package: Package) -> Iterator[Hit]:
     setup(name=package_name, packages=['monitor'])
     ```
     """
-    setup = checked_setup(package)
-    if setup is None or setup.packages is None or setup.packages.kind != "list" or \
-            not keyword_known(package, "package_dir"):
-        return
     folders = {f.rsplit("/", 1)[0] for f in package.files if "/" in f}
-    package_dir = setup.package_dir or {}
-    for name in setup.packages.names:
-        folder = package_folder(name, package_dir)
+    for name, folder, span in listed_packages(package):
         if folder and not any(f == folder or f.startswith(folder + "/") for f in folders):
-            yield Hit(setup.packages.span,
-                      f"`packages` lists `{name}`, but there is no folder `{folder}`")
+            yield Hit(span, f"`packages` lists `{name}`, but there is no folder `{folder}`")

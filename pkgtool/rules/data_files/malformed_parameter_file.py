@@ -1,0 +1,186 @@
+"""DAT008: a ROS parameter file whose structure rcl's YAML parameter parser rejects."""
+
+from __future__ import annotations
+
+import posixpath
+import re
+from collections.abc import Iterator
+from difflib import SequenceMatcher
+
+import yaml
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.installed import installed_data
+from pkgtool.model.launch_reader import yaml_problem
+from pkgtool.model.package import Package, is_test_material
+from pkgtool.model.span import Span
+from pkgtool.rules.registry import rule
+
+PARAMS_KEY = "ros__parameters"
+_ALIASES = frozenset({"parameters", "parameter", "params", "param"})
+"""Keys that stand for ``ros__parameters`` right under a node name, once a file is known to
+hold parameters."""
+
+
+def _normal(key: str) -> str:
+    return re.sub(r"[^a-z]", "", key.lower())
+
+
+def _near_miss(key: str, value: yaml.Node) -> bool:
+    """``ros_parameters:``, ``ros__parameter:``, ``ros_params:``... holding a mapping."""
+    normal = _normal(key)
+    return isinstance(value, yaml.MappingNode) and not key.startswith(PARAMS_KEY) and \
+        normal.startswith("ros") and SequenceMatcher(None, normal, "rosparameters").ratio() >= 0.75
+
+
+def _items(node: yaml.Node) -> Iterator[tuple[str, yaml.Node]]:
+    """Every (key, value) reachable from ``node`` through mappings alone (each node once)."""
+    seen: set[int] = set()
+    stack = [node]
+    while stack:
+        current = stack.pop()
+        if id(current) in seen or not isinstance(current, yaml.MappingNode):
+            continue
+        seen.add(id(current))
+        for key, value in current.value:
+            if isinstance(key, yaml.ScalarNode):
+                yield str(key.value), value
+            stack.append(value)
+
+
+def _holds_parameters(node: yaml.Node) -> bool:
+    """True when a key reachable through mappings is ``ros__parameters`` or a near miss."""
+    return any(k.startswith(PARAMS_KEY) or _near_miss(k, v) for k, v in _items(node))
+
+
+def _span(path: str, node: yaml.Node) -> Span:
+    return Span(path, node.start_mark.line + 1, node.start_mark.column + 1)
+
+
+def _node_level(path: str, mapping: yaml.MappingNode, names: tuple[str, ...], passed: bool,
+                depth: int = 0) -> Iterator[Hit]:
+    """Hits of a mapping above ``ros__parameters`` (node names and namespaces).
+
+    Unless the file is ``passed`` to a node, a branch without ``ros__parameters`` (or a near
+    miss) is other data of a file read by code, and only values beside ``ros__parameters``
+    are reported.
+    """
+    if depth > 50:
+        return
+    keys = [str(k.value) for k, _ in mapping.value if isinstance(k, yaml.ScalarNode)]
+    beside = any(k.startswith(PARAMS_KEY) for k in keys)
+    stray_reported = False
+    for key, value in mapping.value:
+        if not isinstance(key, yaml.ScalarNode):
+            continue
+        name = str(key.value)
+        if name.startswith(PARAMS_KEY):
+            if not names:
+                yield Hit(_span(path, key), "`ros__parameters` has no node name above it",
+                          "Put it under the node's name, or `/**:` for every node")
+            elif not isinstance(value, yaml.MappingNode):
+                yield Hit(_span(path, key), f"`ros__parameters` of `{'/'.join(names)}` is not "
+                          "a mapping of parameters", "Write `ros__parameters: {}` or indent "
+                          "the parameters under it")
+        elif _misspelled(name, value, names) and not _holds_parameters(value):
+            yield Hit(_span(path, key), f"`{name}` is not `ros__parameters`: ROS 2 reads no "
+                      "parameters from it and rejects the file", f"Rename `{name}` to "
+                      "`ros__parameters`")
+        elif isinstance(value, yaml.MappingNode):
+            if passed or _holds_parameters(value):
+                yield from _node_level(path, value, (*names, name), passed, depth + 1)
+        elif not stray_reported and (passed or beside):
+            stray_reported = True
+            yield Hit(_span(path, key), _stray(name, names, beside),
+                      "Move the parameters under `<node name>: ros__parameters:`")
+
+
+def _misspelled(key: str, value: yaml.Node, names: tuple[str, ...]) -> bool:
+    """A near miss, or ``parameters:``/``params:`` right under a node name."""
+    return _near_miss(key, value) or (bool(names) and key.lower() in _ALIASES and
+                                      isinstance(value, yaml.MappingNode))
+
+
+def _stray(name: str, names: tuple[str, ...], beside: bool) -> str:
+    """Why a value outside ``ros__parameters`` is wrong, from where it is."""
+    if beside:
+        return f"`{name}` is beside `ros__parameters`, not inside it"
+    if not names:
+        return f"`{name}` is a value at the top level, outside any `<node>: ros__parameters:`"
+    return f"`{'/'.join(names)}` holds values but no `ros__parameters` key above them"
+
+
+def _launch_parameter_files(package: Package) -> set[str]:
+    """Package files a launch file of the package passes to a node as its parameters."""
+    data = installed_data(package) or {}
+    found: set[str] = set()
+    for launch in package.launch_files:
+        for node in launch.nodes:
+            for ref in node.parameter_files:
+                if ref.package != package.name:
+                    continue
+                relative = posixpath.join(*ref.parts)
+                source = data.get(posixpath.join("share", package.name, relative))
+                found.update(p for p in (source, relative) if p and package.has_file(p))
+    return found
+
+
+def _candidates(package: Package) -> Iterator[str]:
+    launch = {f.path for f in package.launch_files}
+    for path, text in package.texts.items():
+        if path.endswith((".yaml", ".yml")) and path not in launch and \
+                not is_test_material(path) and "{%" not in text:
+            yield path
+
+
+@rule("DAT008", "malformed-parameter-file", Severity.ERROR,
+      fix="Write the file as `<node name>: ros__parameters: {...}`")
+def malformed_parameter_file(package: Package) -> Iterator[Hit]:
+    """A ROS parameter file has a structure that ROS 2's parameter parser rejects.
+
+    ## What it does
+    Checks YAML parameter files the way `rcl_yaml_param_parser` reads them: above
+    `ros__parameters` every key is a node name or namespace (`node:`, `/ns/node:`, `/**:`,
+    nested `ns: {node: ...}`), holding mappings only; `ros__parameters` needs a node name
+    above it and holds a mapping. It reports a misspelled `ros__parameters` (`ros_parameters`,
+    `ros__parameter`, `ros_params`, or `parameters` right under a node name), values outside
+    `ros__parameters` (beside it, at the top level, or under a node without it), and a file
+    passed to a node whose top level is a list.
+
+    A YAML file is checked in full when a launch file of the package passes it to a node
+    (`parameters=[...]`, `<param from=...>`, the path written statically). Otherwise only
+    the blocks holding `ros__parameters` or a near miss of it are checked, and the rest is
+    taken for data the code reads itself (files mixing both exist); YAML without any such key
+    (maps, RViz or bridge configurations, waypoints), files under `test/` and launch files
+    are not checked. YAML that does not parse is SYN001.
+
+    ## Why is this bad?
+    The node does not start: rcl stops with "Cannot have a value before ros__parameters" or
+    "There are no node names before ros__parameters", and a misspelled key means the same.
+
+    ## Example
+    ```yaml
+    talker:
+      ros_parameters:
+        rate: 10.0
+    ```
+
+    ## Use instead
+    ```yaml
+    talker:
+      ros__parameters:
+        rate: 10.0
+    ```
+    """
+    passed = _launch_parameter_files(package)
+    for path in _candidates(package):
+        documents = yaml_problem(path, package.texts[path])
+        if not isinstance(documents, list):
+            continue  # SYN001
+        for root in documents:
+            if isinstance(root, yaml.MappingNode) and (path in passed or
+                                                       _holds_parameters(root)):
+                yield from _node_level(path, root, (), path in passed)
+            elif isinstance(root, yaml.SequenceNode) and path in passed:
+                yield Hit(_span(path, root), "A file passed to a node as parameters is a list, "
+                          "not a mapping of node names")
