@@ -53,7 +53,7 @@ class SetupDoc:
     def add_console_script(self, name: str, target: str) -> list[Edit]:
         """Register ``name = target`` in ``entry_points['console_scripts']``."""
         spec = f"{name} = {target}"
-        value = self._value("entry_points", "the entry points")
+        value = self.value("entry_points", "the entry points")
         if value is None:
             item = "entry_points=" + "{" + f"{self.doc.string('console_scripts')}: " \
                 f"[{self.doc.string(spec)}]" + "}"
@@ -93,7 +93,7 @@ class SetupDoc:
 
     def installs(self, destination: str, path: str) -> bool:
         """True when data_files already installs ``path`` into ``destination``."""
-        value = self._value("data_files", "data_files")
+        value = self.value("data_files", "data_files")
         if value is None:
             return False
         try:
@@ -119,16 +119,65 @@ class SetupDoc:
         name = self._bound_to(package, str) or self.doc.string(package)
         item = (f"({join}({self.doc.string('share')}, {name}, {self.doc.string(folder)}), "
                 f"{glob}({self.doc.string(pattern)}))")
-        value = self._value("data_files", "data_files")
+        value = self.value("data_files", "data_files")
         if value is None:
             edits = self._into_call(f"data_files=[{item}]")
         else:
             edits = self._into_sequence(self._literal(value, "data_files"), item)
         return edits + self.doc.add_imports([*join_import, *glob_import])
 
+    # Values ------------------------------------------------------------------------------
+
+    def replace_value(self, value: object, replacement: str, what: str) -> Edit:
+        """An edit writing the expression ``replacement`` over the literal that is ``value``.
+
+        Only a string literal that produced exactly ``value`` (wherever it is written, e.g.
+        ``package_name = '...'``) is replaced; anything computed is refused.
+        """
+        span = getattr(value, "span", None)
+        candidates = self.nodes.get((span.line, span.col), []) if span else []
+        node = next((n for n in candidates if isinstance(n, ast.Constant)
+                     and isinstance(value, str) and n.value == value), None)
+        if node is None:
+            line = f" (line {span.line})" if span else ""
+            raise EditError(f"setup.py computes {what} with code{line}, not as one string "
+                            "literal: make the change by hand.")
+        return Edit(self.doc.source.path, self.doc.start(node), self.doc.end(node), replacement)
+
+    def keyword(self, name: str) -> ast.keyword | None:
+        """The ``name=`` keyword of the setup() call, if given."""
+        assert isinstance(self.node, ast.Call)
+        return next((k for k in self.node.keywords if k.arg == name), None)
+
+    def replace_keyword(self, name: str, replacement: str) -> Edit:
+        """An edit writing ``replacement`` (``key=value``) over the whole ``name=...``."""
+        found = self.keyword(name)
+        assert found is not None
+        return Edit(self.doc.source.path, self.doc.start(found), self.doc.end(found),
+                    replacement)
+
+    def remove_keyword(self, name: str) -> Edit:
+        """An edit deleting ``name=...`` from the setup() call, with its comma and line."""
+        found = self.keyword(name)
+        assert found is not None
+        return self.doc.remove_item(self.doc.start(found), self.doc.end(found),
+                                    self.doc.end(self.node) - 1)
+
+    def add_to_dict(self, value: Any, item: str, what: str) -> list[Edit]:
+        """Edits adding ``key: value`` source ``item`` to the dict literal that is ``value``."""
+        node = self._literal(value, what)
+        assert isinstance(node, ast.Dict)
+        return self._into_dict(node, item)
+
+    def expression(self, value: object, fallback: str) -> str:
+        """A module-level name bound to the string ``value`` (``package_name``), else
+        ``fallback``."""
+        return self._bound_to(value, str) or fallback
+
     # Helpers -----------------------------------------------------------------------------
 
-    def _value(self, keyword: str, what: str) -> Any:
+    def value(self, keyword: str, what: str) -> Any:
+        """The evaluated value of ``keyword`` (None when absent); EditError when computed."""
         if any(key == keyword for key, _ in self.call.unresolved):
             raise self._refusal(keyword, what)
         return self.call.values.get(keyword)

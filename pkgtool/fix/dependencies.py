@@ -7,12 +7,13 @@ from collections.abc import Iterable, Iterator
 from pkgtool.edit.core import EditError, Fix
 from pkgtool.edit.manifest import ManifestDoc
 from pkgtool.findings import Finding
-from pkgtool.fix.common import manifest_doc
+from pkgtool.fix.common import child_at, manifest_doc
 from pkgtool.fix.registry import fixer
 from pkgtool.knowledge.rosdistro import is_known_dependency
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.imports import Need, needs, test_code, unmet_runtime_needs
+from pkgtool.rules.imports import (BUILD_ONLY, Need, declared, needs, test_code,
+                                   unmet_runtime_needs)
 
 
 def _declare(package: Package, findings: list[Finding], found: Iterable[Need], tag: str
@@ -55,6 +56,29 @@ def _add(doc: ManifestDoc, tag: str, key: str) -> Iterator[Fix]:
 def undeclared(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Declare each import's rosdep key for run time."""
     yield from _declare(package, findings, unmet_runtime_needs(package), "exec_depend")
+
+
+@fixer("DEP002", "Make the build-only dependency `<depend>`, or add an `<exec_depend>`")
+def build_only(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """A ``<build_depend>`` becomes ``<depend>`` (build, export and run); a key declared only
+    as ``<buildtool_depend>`` or ``<build_export_depend>`` keeps it and gains an
+    ``<exec_depend>``. Safe: the key was declared already, the fix only adds run time."""
+    doc = manifest_doc(package)
+    if doc is None:
+        return
+    wanted = {_at(f.span) for f in findings}
+    only = declared(package, BUILD_ONLY)
+    found = (next((k for k in need.keys if k in only), None)
+             for need in unmet_runtime_needs(package) if _at(need.imported.span) in wanted)
+    for key in dict.fromkeys(k for k in found if k is not None):
+        dependency = only[key]
+        element = child_at(doc, dependency.span.line)
+        if dependency.tag == "build_depend" and element is not None and \
+                element.local == "build_depend" and doc.text_of(element) == key:
+            yield Fix(f"Change `<build_depend>{key}</build_depend>` to `<depend>`",
+                      tuple(doc.retag(element, "depend")))
+        else:
+            yield from _add(doc, "exec_depend", key)
 
 
 @fixer("DEP003", "Add a `<test_depend>` with the rosdep key")
