@@ -12,7 +12,7 @@ from __future__ import annotations
 import ast
 import posixpath
 from fnmatch import fnmatchcase
-from typing import Any
+from typing import Any, NoReturn
 
 from pkgtool.edit.core import Edit, EditError
 from pkgtool.edit.pysource import PyDoc
@@ -143,6 +143,10 @@ class SetupDoc:
             raise EditError(f"setup.py computes {what} with code{line}, not as one string "
                             "literal: make the change by hand.")
         return Edit(self.doc.source.path, self.doc.start(node), self.doc.end(node), replacement)
+
+    def refuse(self, why: str) -> NoReturn:
+        """Raise the EditError saying setup.py ``why`` (what it does that pkgtool won't edit)."""
+        raise EditError(f"setup.py {why}: make the change by hand.")
 
     def keyword(self, name: str) -> ast.keyword | None:
         """The ``name=`` keyword of the setup() call, if given."""

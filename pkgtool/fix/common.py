@@ -2,13 +2,29 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable, Iterator, Sequence
+
 from pkgtool.edit.changes import read_source
-from pkgtool.edit.core import EditError
+from pkgtool.edit.core import Edit, EditError, Fix
 from pkgtool.edit.manifest import ManifestDoc
 from pkgtool.edit.setup_py import SetupDoc
 from pkgtool.edit.source import Source
 from pkgtool.edit.xml_scan import Element
+from pkgtool.fix.registry import Refusal
 from pkgtool.model.package import Package
+
+
+def offer(title: str, build: Callable[[], Sequence[Edit]], *, safe: bool = True
+          ) -> Iterator[Fix | Refusal]:
+    """The fix of ``build``'s edits; a Refusal with the editor's reason when it refuses;
+    nothing when there is nothing to change."""
+    try:
+        edits = build()
+    except EditError as error:
+        yield Refusal(str(error))
+        return
+    if edits:
+        yield Fix(title, tuple(edits), safe)
 
 
 def manifest_doc(package: Package) -> ManifestDoc | None:
