@@ -21,7 +21,7 @@ from pkgtool.model.setup_eval import Evaluation, evaluate
 from pkgtool.model.setup_eval.entries import Malformed, data_files, entry_points
 from pkgtool.model.setup_eval.tree import normalize
 from pkgtool.model.setup_eval.values import Builtin, Dct, Lst, Tup
-from pkgtool.model.span import ParseProblem
+from pkgtool.model.span import ParseProblem, Span
 
 _LITERALS = (ast.Constant, ast.List, ast.Tuple, ast.Dict, ast.JoinedStr)
 
@@ -109,22 +109,65 @@ class SetupDoc:
                     return True
         return False
 
-    def add_data_files(self, folder: str, pattern: str, package: str) -> list[Edit]:
-        """Install files matching ``pattern`` into ``share/<package>/<folder>``."""
-        destination = posixpath.join("share", package, folder)
+    def add_data_files(self, folder: str, pattern: str, package: str, *, files: bool = False
+                       ) -> list[Edit]:
+        """Install ``pattern`` (a glob; a literal path with ``files``) into
+        ``share/<package>/<folder>``."""
+        destination = posixpath.join("share", package, folder).rstrip("/")
         if self.installs(destination, pattern):
             return []
-        join, join_import = self._function("os.path.join", ("os", None))
-        glob, glob_import = self._function("glob.glob", ("glob", "glob"))
-        name = self._bound_to(package, str) or self.doc.string(package)
-        item = (f"({join}({self.doc.string('share')}, {name}, {self.doc.string(folder)}), "
-                f"{glob}({self.doc.string(pattern)}))")
+        name = self._bound_to(package, str)
+        if folder:
+            join, imports = self._function("os.path.join", ("os", None))
+            target = (f"{join}({self.doc.string('share')}, {name or self.doc.string(package)}"
+                      f", {self.doc.string(folder)})")
+        else:
+            imports = []
+            target = f"{self.doc.string('share/')} + {name}" if name \
+                else self.doc.string(destination)
+        if files:
+            sources = f"[{self.doc.string(pattern)}]"
+        else:
+            sources, glob_import = self.glob_call(pattern)
+            imports += glob_import
+        return self.add_data_entry(f"({target}, {sources})") + self.doc.add_imports(imports)
+
+    def add_data_entry(self, item: str) -> list[Edit]:
+        """Edits appending the entry ``item`` (source text) to data_files."""
         value = self.value("data_files", "data_files")
         if value is None:
-            edits = self._into_call(f"data_files=[{item}]")
-        else:
-            edits = self._into_sequence(self._literal(value, "data_files"), item)
-        return edits + self.doc.add_imports([*join_import, *glob_import])
+            return self._into_call(f"data_files=[{item}]")
+        return self._into_sequence(self._literal(value, "data_files"), item)
+
+    def glob_call(self, pattern: str) -> tuple[str, list[tuple[str, str | None]]]:
+        """``glob('pattern')`` as setup.py spells it, and the import it needs."""
+        glob, glob_import = self._function("glob.glob", ("glob", "glob"))
+        return f"{glob}({self.doc.string(pattern)})", glob_import
+
+    def replace_sequence(self, value: Any, replacement: str, what: str) -> Edit:
+        """An edit writing ``replacement`` over the list or tuple literal that is ``value``."""
+        return self.edit(self._literal(value, what), replacement)
+
+    def remove_from(self, sequence: Any, item: object, what: str) -> Edit:
+        """An edit deleting the string literal ``item`` from the list literal ``sequence``."""
+        node = self._literal(sequence, what)
+        span = getattr(item, "span", None)
+        element = next((e for e in node.elts  # type: ignore[attr-defined]
+                        if span and isinstance(e, ast.Constant) and e.value == item
+                        and (e.lineno, e.col_offset + 1) == (span.line, span.col)), None)
+        if element is None:
+            self.refuse(f"computes an item of {what}")
+        return self.doc.remove_item(self.doc.start(element), self.doc.end(element),
+                                    self.doc.end(node) - 1)
+
+    def glob_pattern(self, span: Span) -> ast.Constant:
+        """The string literal giving the pattern of the glob call at ``span``."""
+        call = next((n for n in self.nodes.get((span.line, span.col), [])
+                     if isinstance(n, ast.Call)), None)
+        first = call.args[0] if call is not None and call.args else None
+        if not isinstance(first, ast.Constant) or not isinstance(first.value, str):
+            self.refuse(f"builds the glob pattern on line {span.line} with code")
+        return first
 
     # Values ------------------------------------------------------------------------------
 
@@ -142,6 +185,10 @@ class SetupDoc:
             line = f" (line {span.line})" if span else ""
             raise EditError(f"setup.py computes {what} with code{line}, not as one string "
                             "literal: make the change by hand.")
+        return self.edit(node, replacement)
+
+    def edit(self, node: ast.AST, replacement: str) -> Edit:
+        """An edit writing ``replacement`` over ``node``'s source."""
         return Edit(self.doc.source.path, self.doc.start(node), self.doc.end(node), replacement)
 
     def refuse(self, why: str) -> NoReturn:
@@ -157,8 +204,7 @@ class SetupDoc:
         """An edit writing ``replacement`` (``key=value``) over the whole ``name=...``."""
         found = self.keyword(name)
         assert found is not None
-        return Edit(self.doc.source.path, self.doc.start(found), self.doc.end(found),
-                    replacement)
+        return self.edit(found, replacement)
 
     def remove_keyword(self, name: str) -> Edit:
         """An edit deleting ``name=...`` from the setup() call, with its comma and line."""
