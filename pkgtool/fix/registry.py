@@ -12,7 +12,6 @@ from pkgtool.findings import Finding
 from pkgtool.model.package import Package
 
 
-
 @dataclass(frozen=True, slots=True)
 class Refusal:
     """A finding a fixer leaves to the user, and why (``lint --fix`` and ``--diff`` say it)."""
