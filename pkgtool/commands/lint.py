@@ -100,8 +100,9 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
     findings: list[Finding] = []
     labels: list[PackageLabel] = []
     errors: list[str] = []
-    fixed, diff = _fix_all(jobs, workspace, options, errors) if options.fix or options.diff \
-        else ((), "")
+    fixed, diff, refused = _fix_all(jobs, workspace, options, errors) \
+        if options.fix or options.diff else ((), "", ())
+    notes += refused
     failing = False
     cache = _open_cache(options, here, workspace)
     outcomes = _check_all(jobs, workspace) if cache is None else _cached(jobs, workspace, cache)
@@ -125,21 +126,24 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
 
 
 def _fix_all(jobs: list[Job], workspace: Workspace, options: LintOptions, errors: list[str]
-             ) -> tuple[tuple[str, ...], str]:
-    """Apply (or, with ``--diff``, show) the fixes of every package; refusals go to errors."""
+             ) -> tuple[tuple[str, ...], str, tuple[str, ...]]:
+    """Apply (or, with ``--diff``, show) the fixes of every package: (titles applied, diff,
+    notes on findings left to the user); edits the engine refuses go to errors."""
     from pkgtool.fix.apply import fix_package
 
     fixed: list[str] = []
     diffs: list[str] = []
+    refused: list[str] = []
     for root, label, settings in jobs:
         outcome = fix_package(root, label, partial(_model_and_findings, label=label,
                                                    settings=settings, workspace=workspace),
                               unsafe=options.unsafe_fixes, write=not options.diff)
         fixed.extend(f"{label}: {title}" for title in outcome.applied)
+        refused.extend(f"{label}: not fixed: {why}" for why in outcome.refused)
         diffs.append(outcome.diff)
         if outcome.error:
             errors.append(outcome.error)
-    return tuple(fixed), "".join(diffs)
+    return tuple(fixed), "".join(diffs), tuple(refused)
 
 
 def _model_and_findings(root: Path, *, label: str, settings: Settings, workspace: Workspace

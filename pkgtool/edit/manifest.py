@@ -96,6 +96,19 @@ class ManifestDoc:
         gap = self.source.text[insert_after(self.source, anchor, "").start:stop]
         return any(not line.strip() for line in re.split(r"\r\n|\r|\n", gap)[1:-1])
 
+    def retag(self, element: Element, tag: str) -> list[Edit]:
+        """Edits renaming ``element`` to ``tag``; attributes, text and layout stay."""
+        path, name = self.source.path, element.tag
+        edits = [Edit(path, element.start + 1, element.start + 1 + len(name), tag)]
+        if element.inner_end != element.end:  # not an empty element: the end tag too
+            at = element.inner_end + 2
+            edits.append(Edit(path, at, at + len(name), tag))
+        return edits
+
+    def replace_text(self, element: Element, text: str) -> Edit:
+        """An edit writing ``text`` (escaped) as the content of ``element``."""
+        return Edit(self.source.path, element.inner_start, element.inner_end, xml_text(text))
+
     # Removing ----------------------------------------------------------------------------
 
     def remove(self, element: Element) -> Edit:

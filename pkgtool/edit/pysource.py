@@ -105,6 +105,30 @@ class PyDoc:
             indent = _leading(self.text, opening) + self.indent_unit()
         return indent
 
+    def remove_item(self, start: int, end: int, close_at: int) -> Edit:
+        """An edit deleting the container item at ``start``..``end`` and its comma.
+
+        An item alone on its line(s) goes with those whole lines (a comment after it too); an
+        inline one with the comma after it, or, when it is last, the comma before it.
+        ``close_at`` is the offset of the container's closing bracket.
+        """
+        path = self.source.path
+        comma = _comma_after(self.text, end, close_at)
+        after = comma + 1 if comma is not None else end
+        line_start = self.source.line_start(start)
+        line_end = self.source.line_end(after)
+        if not self.text[line_start:start].strip() and _line_tail(self.source, after) == line_end:
+            return Edit(path, line_start, min(line_end + len(self.source.newline),
+                                              len(self.text)), "")
+        if comma is not None:
+            while after < close_at and self.text[after] in " \t":
+                after += 1
+            return Edit(path, start, after, "")
+        before = start
+        while before > 0 and self.text[before - 1].isspace():
+            before -= 1
+        return Edit(path, before - 1 if self.text[before - 1] == "," else start, end, "")
+
     def _into_empty(self, open_at: int, close_at: int, item: str) -> list[Edit]:
         inner = self.text[open_at + 1:close_at]
         path = self.source.path

@@ -1,4 +1,4 @@
-"""Edits of setup.cfg: set or remove one option, keeping every other line as written."""
+"""Edits of setup.cfg: set, rename or remove one option or section, keeping every other line."""
 
 from __future__ import annotations
 
@@ -17,11 +17,15 @@ def _lines(source: Source) -> list[tuple[int, str]]:
             if start < len(source.text) or start == 0]
 
 
-def _find(source: Source, section: str, key: str) -> tuple[int | None, int | None, int | None]:
-    """(section header offset, option line offset, end of the section's last line)."""
+def _find(source: Source, section: str, key: str, *, exact: bool = False
+          ) -> tuple[int | None, int | None, int | None]:
+    """(section header offset, option line offset, end of the section's last line).
+
+    Keys match with dashes and underscores alike unless ``exact``.
+    """
     header = option = last = None
     current = None
-    wanted = key.replace("-", "_")
+    wanted = key if exact else key.replace("-", "_")
     for start, line in _lines(source):
         found = _SECTION.match(line.strip())
         if found:
@@ -35,7 +39,8 @@ def _find(source: Source, section: str, key: str) -> tuple[int | None, int | Non
             last = source.line_end(start)
             match = _OPTION.match(line)
             if match and not line[:1].isspace() and \
-                    match.group("key").replace("-", "_") == wanted:
+                    (match.group("key") if exact else match.group("key").replace("-", "_")) \
+                    == wanted:
                 option = start
     return header, option, last
 
@@ -75,3 +80,25 @@ def remove_option(source: Source, section: str, key: str) -> list[Edit]:
         end = following
     stop = min(end + len(source.newline), len(source.text))
     return [Edit(source.path, option, stop, "")]
+
+
+def rename_option(source: Source, section: str, key: str, new_key: str) -> list[Edit]:
+    """Edits renaming the option written exactly ``key`` in ``[section]``, value kept."""
+    _, option, _ = _find(source, section, key, exact=True)
+    if option is None:
+        return []
+    return [Edit(source.path, option, option + len(key), new_key)]
+
+
+def rename_section(source: Source, section: str, new_name: str) -> list[Edit]:
+    """Edits renaming the header ``[section]`` (the first one) to ``[new_name]``."""
+    header, _, _ = _find(source, section, "")
+    if header is None:
+        return []
+    at = source.text.index(section, header)
+    return [Edit(source.path, at, at + len(section), new_name)]
+
+
+def has_section(source: Source, section: str) -> bool:
+    """True when setup.cfg has a ``[section]`` header."""
+    return _find(source, section, "")[0] is not None

@@ -12,7 +12,7 @@ from __future__ import annotations
 import ast
 import posixpath
 from fnmatch import fnmatchcase
-from typing import Any
+from typing import Any, NoReturn
 
 from pkgtool.edit.core import Edit, EditError
 from pkgtool.edit.pysource import PyDoc
@@ -21,7 +21,7 @@ from pkgtool.model.setup_eval import Evaluation, evaluate
 from pkgtool.model.setup_eval.entries import Malformed, data_files, entry_points
 from pkgtool.model.setup_eval.tree import normalize
 from pkgtool.model.setup_eval.values import Builtin, Dct, Lst, Tup
-from pkgtool.model.span import ParseProblem
+from pkgtool.model.span import ParseProblem, Span
 
 _LITERALS = (ast.Constant, ast.List, ast.Tuple, ast.Dict, ast.JoinedStr)
 
@@ -53,7 +53,7 @@ class SetupDoc:
     def add_console_script(self, name: str, target: str) -> list[Edit]:
         """Register ``name = target`` in ``entry_points['console_scripts']``."""
         spec = f"{name} = {target}"
-        value = self._value("entry_points", "the entry points")
+        value = self.value("entry_points", "the entry points")
         if value is None:
             item = "entry_points=" + "{" + f"{self.doc.string('console_scripts')}: " \
                 f"[{self.doc.string(spec)}]" + "}"
@@ -93,7 +93,7 @@ class SetupDoc:
 
     def installs(self, destination: str, path: str) -> bool:
         """True when data_files already installs ``path`` into ``destination``."""
-        value = self._value("data_files", "data_files")
+        value = self.value("data_files", "data_files")
         if value is None:
             return False
         try:
@@ -109,26 +109,125 @@ class SetupDoc:
                     return True
         return False
 
-    def add_data_files(self, folder: str, pattern: str, package: str) -> list[Edit]:
-        """Install files matching ``pattern`` into ``share/<package>/<folder>``."""
-        destination = posixpath.join("share", package, folder)
+    def add_data_files(self, folder: str, pattern: str, package: str, *, files: bool = False
+                       ) -> list[Edit]:
+        """Install ``pattern`` (a glob; a literal path with ``files``) into
+        ``share/<package>/<folder>``."""
+        destination = posixpath.join("share", package, folder).rstrip("/")
         if self.installs(destination, pattern):
             return []
-        join, join_import = self._function("os.path.join", ("os", None))
-        glob, glob_import = self._function("glob.glob", ("glob", "glob"))
-        name = self._bound_to(package, str) or self.doc.string(package)
-        item = (f"({join}({self.doc.string('share')}, {name}, {self.doc.string(folder)}), "
-                f"{glob}({self.doc.string(pattern)}))")
-        value = self._value("data_files", "data_files")
-        if value is None:
-            edits = self._into_call(f"data_files=[{item}]")
+        name = self._bound_to(package, str)
+        if folder:
+            join, imports = self._function("os.path.join", ("os", None))
+            target = (f"{join}({self.doc.string('share')}, {name or self.doc.string(package)}"
+                      f", {self.doc.string(folder)})")
         else:
-            edits = self._into_sequence(self._literal(value, "data_files"), item)
-        return edits + self.doc.add_imports([*join_import, *glob_import])
+            imports = []
+            target = f"{self.doc.string('share/')} + {name}" if name \
+                else self.doc.string(destination)
+        if files:
+            sources = f"[{self.doc.string(pattern)}]"
+        else:
+            sources, glob_import = self.glob_call(pattern)
+            imports += glob_import
+        return self.add_data_entry(f"({target}, {sources})") + self.doc.add_imports(imports)
+
+    def add_data_entry(self, item: str) -> list[Edit]:
+        """Edits appending the entry ``item`` (source text) to data_files."""
+        value = self.value("data_files", "data_files")
+        if value is None:
+            return self._into_call(f"data_files=[{item}]")
+        return self._into_sequence(self._literal(value, "data_files"), item)
+
+    def glob_call(self, pattern: str) -> tuple[str, list[tuple[str, str | None]]]:
+        """``glob('pattern')`` as setup.py spells it, and the import it needs."""
+        glob, glob_import = self._function("glob.glob", ("glob", "glob"))
+        return f"{glob}({self.doc.string(pattern)})", glob_import
+
+    def replace_sequence(self, value: Any, replacement: str, what: str) -> Edit:
+        """An edit writing ``replacement`` over the list or tuple literal that is ``value``."""
+        return self.edit(self._literal(value, what), replacement)
+
+    def remove_from(self, sequence: Any, item: object, what: str) -> Edit:
+        """An edit deleting the string literal ``item`` from the list literal ``sequence``."""
+        node = self._literal(sequence, what)
+        span = getattr(item, "span", None)
+        element = next((e for e in node.elts  # type: ignore[attr-defined]
+                        if span and isinstance(e, ast.Constant) and e.value == item
+                        and (e.lineno, e.col_offset + 1) == (span.line, span.col)), None)
+        if element is None:
+            self.refuse(f"computes an item of {what}")
+        return self.doc.remove_item(self.doc.start(element), self.doc.end(element),
+                                    self.doc.end(node) - 1)
+
+    def glob_pattern(self, span: Span) -> ast.Constant:
+        """The string literal giving the pattern of the glob call at ``span``."""
+        call = next((n for n in self.nodes.get((span.line, span.col), [])
+                     if isinstance(n, ast.Call)), None)
+        first = call.args[0] if call is not None and call.args else None
+        if not isinstance(first, ast.Constant) or not isinstance(first.value, str):
+            self.refuse(f"builds the glob pattern on line {span.line} with code")
+        return first
+
+    # Values ------------------------------------------------------------------------------
+
+    def replace_value(self, value: object, replacement: str, what: str) -> Edit:
+        """An edit writing the expression ``replacement`` over the literal that is ``value``.
+
+        Only a string literal that produced exactly ``value`` (wherever it is written, e.g.
+        ``package_name = '...'``) is replaced; anything computed is refused.
+        """
+        span = getattr(value, "span", None)
+        candidates = self.nodes.get((span.line, span.col), []) if span else []
+        node = next((n for n in candidates if isinstance(n, ast.Constant)
+                     and isinstance(value, str) and n.value == value), None)
+        if node is None:
+            line = f" (line {span.line})" if span else ""
+            raise EditError(f"setup.py computes {what} with code{line}, not as one string "
+                            "literal: make the change by hand.")
+        return self.edit(node, replacement)
+
+    def edit(self, node: ast.AST, replacement: str) -> Edit:
+        """An edit writing ``replacement`` over ``node``'s source."""
+        return Edit(self.doc.source.path, self.doc.start(node), self.doc.end(node), replacement)
+
+    def refuse(self, why: str) -> NoReturn:
+        """Raise the EditError saying setup.py ``why`` (what it does that pkgtool won't edit)."""
+        raise EditError(f"setup.py {why}: make the change by hand.")
+
+    def keyword(self, name: str) -> ast.keyword | None:
+        """The ``name=`` keyword of the setup() call, if given."""
+        assert isinstance(self.node, ast.Call)
+        return next((k for k in self.node.keywords if k.arg == name), None)
+
+    def replace_keyword(self, name: str, replacement: str) -> Edit:
+        """An edit writing ``replacement`` (``key=value``) over the whole ``name=...``."""
+        found = self.keyword(name)
+        assert found is not None
+        return self.edit(found, replacement)
+
+    def remove_keyword(self, name: str) -> Edit:
+        """An edit deleting ``name=...`` from the setup() call, with its comma and line."""
+        found = self.keyword(name)
+        assert found is not None
+        return self.doc.remove_item(self.doc.start(found), self.doc.end(found),
+                                    self.doc.end(self.node) - 1)
+
+    def add_to_dict(self, value: Any, item: str, what: str) -> list[Edit]:
+        """Edits adding ``key: value`` source ``item`` to the dict literal that is ``value``."""
+        node = self._literal(value, what)
+        assert isinstance(node, ast.Dict)
+        return self._into_dict(node, item)
+
+    def expression(self, value: object, fallback: str) -> str:
+        """A module-level name bound to the string ``value`` (``package_name``), else
+        ``fallback``."""
+        return self._bound_to(value, str) or fallback
 
     # Helpers -----------------------------------------------------------------------------
 
-    def _value(self, keyword: str, what: str) -> Any:
+    def value(self, keyword: str, what: str) -> Any:
+        """The evaluated value of ``keyword`` (None when absent); EditError when computed."""
         if any(key == keyword for key, _ in self.call.unresolved):
             raise self._refusal(keyword, what)
         return self.call.values.get(keyword)

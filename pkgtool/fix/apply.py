@@ -9,7 +9,7 @@ from pathlib import Path
 from pkgtool.edit.changes import fix_changes
 from pkgtool.edit.core import EditError, Fix
 from pkgtool.findings import Finding
-from pkgtool.fix.registry import fixers
+from pkgtool.fix.registry import Refusal, fixers
 from pkgtool.model.package import Package
 
 ROUNDS = 8
@@ -20,38 +20,49 @@ Check = Callable[[Path], tuple[Package, list[Finding]]]
 
 @dataclass(frozen=True, slots=True)
 class FixOutcome:
-    """What fixing one package did: fixes applied, the diff (``--diff``), and a refusal."""
+    """What fixing one package did: fixes applied, the diff (``--diff``), an error, and the
+    findings fixers left to the user (``CODE: why``)."""
 
     applied: tuple[str, ...] = ()
     diff: str = ""
     error: str | None = None
+    refused: tuple[str, ...] = ()
 
 
-def fixes_for(package: Package, findings: list[Finding], *, unsafe: bool) -> list[Fix]:
-    """The fixes the registered fixers offer for ``findings`` (safe only unless ``unsafe``)."""
+def fixes_for(package: Package, findings: list[Finding], *, unsafe: bool
+              ) -> tuple[list[Fix], list[str]]:
+    """The fixes the registered fixers offer for ``findings`` (safe only unless ``unsafe``),
+    and their refusals as ``CODE: why``."""
     found: list[Fix] = []
+    refused: list[str] = []
     for code, entry in fixers().items():
         mine = [f for f in findings if f.code == code and not f.internal]
         if mine and (entry.safe or unsafe):
-            found.extend(entry.make(package, mine))
-    return found
+            for offer in entry.make(package, mine):
+                if isinstance(offer, Refusal):
+                    refused.append(f"{code}: {offer.reason}")
+                else:
+                    found.append(offer)
+    return found, list(dict.fromkeys(refused))
 
 
 def fix_package(root: Path, label: str, check: Check, *, unsafe: bool, write: bool
                 ) -> FixOutcome:
     """Fix the package at ``root``; with ``write`` False, only the first round's diff."""
     applied: list[str] = []
+    refused: list[str] = []
     try:
         for _ in range(ROUNDS):
             package, findings = check(root)
-            changes, done, _deferred = fix_changes(
-                root, fixes_for(package, findings, unsafe=unsafe), unsafe=unsafe)
+            offered, refused = fixes_for(package, findings, unsafe=unsafe)
+            changes, done, _deferred = fix_changes(root, offered, unsafe=unsafe)
             if not changes:
                 break
             if not write:
-                return FixOutcome(tuple(f.title for f in done), changes.diff(label))
+                return FixOutcome(tuple(f.title for f in done), changes.diff(label),
+                                  refused=tuple(refused))
             changes.write()
             applied.extend(f.title for f in done)
     except EditError as error:
         return FixOutcome(tuple(applied), error=f"`{label}`: {error}")
-    return FixOutcome(tuple(applied))
+    return FixOutcome(tuple(applied), refused=tuple(refused))

@@ -1,12 +1,30 @@
-"""Helpers shared by fixers: the package.xml document and its elements by line."""
+"""Helpers shared by fixers: package.xml, setup.py and setup.cfg as editors see them."""
 
 from __future__ import annotations
 
+from collections.abc import Callable, Iterator, Sequence
+
 from pkgtool.edit.changes import read_source
-from pkgtool.edit.core import EditError
+from pkgtool.edit.core import Edit, EditError, Fix
 from pkgtool.edit.manifest import ManifestDoc
+from pkgtool.edit.setup_py import SetupDoc
+from pkgtool.edit.source import Source
 from pkgtool.edit.xml_scan import Element
+from pkgtool.fix.registry import Refusal
 from pkgtool.model.package import Package
+
+
+def offer(title: str, build: Callable[[], Sequence[Edit]], *, safe: bool = True
+          ) -> Iterator[Fix | Refusal]:
+    """The fix of ``build``'s edits; a Refusal with the editor's reason when it refuses;
+    nothing when there is nothing to change."""
+    try:
+        edits = build()
+    except EditError as error:
+        yield Refusal(str(error))
+        return
+    if edits:
+        yield Fix(title, tuple(edits), safe)
 
 
 def manifest_doc(package: Package) -> ManifestDoc | None:
@@ -14,6 +32,23 @@ def manifest_doc(package: Package) -> ManifestDoc | None:
     try:
         source = read_source(package.root, "package.xml")
         return ManifestDoc(source) if source is not None else None
+    except EditError:
+        return None
+
+
+def setup_doc(package: Package) -> SetupDoc | None:
+    """setup.py as the editor sees it; None when it is missing or its setup() is unreadable."""
+    try:
+        source = read_source(package.root, "setup.py")
+        return SetupDoc(source, package.files) if source is not None else None
+    except EditError:
+        return None
+
+
+def cfg_source(package: Package) -> Source | None:
+    """setup.cfg's text; None when it is missing or cannot be edited."""
+    try:
+        return read_source(package.root, "setup.cfg")
     except EditError:
         return None
 

@@ -4,19 +4,20 @@ from __future__ import annotations
 
 from collections.abc import Iterable, Iterator
 
-from pkgtool.edit.core import EditError, Fix
+from pkgtool.edit.core import Fix
 from pkgtool.edit.manifest import ManifestDoc
 from pkgtool.findings import Finding
-from pkgtool.fix.common import manifest_doc
-from pkgtool.fix.registry import fixer
+from pkgtool.fix.common import child_at, manifest_doc, offer
+from pkgtool.fix.registry import Refusal, fixer
 from pkgtool.knowledge.rosdistro import is_known_dependency
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.imports import Need, needs, test_code, unmet_runtime_needs
+from pkgtool.rules.imports import (BUILD_ONLY, Need, declared, needs, test_code,
+                                   unmet_runtime_needs)
 
 
 def _declare(package: Package, findings: list[Finding], found: Iterable[Need], tag: str
-             ) -> Iterator[Fix]:
+             ) -> Iterator[Fix | Refusal]:
     doc = manifest_doc(package)
     if doc is None:
         return
@@ -42,30 +43,48 @@ def _at(span: Span) -> tuple[str, int, int]:
     return (span.path, span.line, span.col)
 
 
-def _add(doc: ManifestDoc, tag: str, key: str) -> Iterator[Fix]:
-    try:
-        edits = doc.add(tag, key)
-    except EditError:
-        return
-    if edits:
-        yield Fix(f"Add `<{tag}>{key}</{tag}>`", tuple(edits))
+def _add(doc: ManifestDoc, tag: str, key: str) -> Iterator[Fix | Refusal]:
+    return offer(f"Add `<{tag}>{key}</{tag}>`", lambda: doc.add(tag, key))
 
 
 @fixer("DEP001", "Add an `<exec_depend>` with the rosdep key")
-def undeclared(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+def undeclared(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
     """Declare each import's rosdep key for run time."""
     yield from _declare(package, findings, unmet_runtime_needs(package), "exec_depend")
 
 
+@fixer("DEP002", "Make the build-only dependency `<depend>`, or add an `<exec_depend>`")
+def build_only(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
+    """A ``<build_depend>`` becomes ``<depend>`` (build, export and run); a key declared only
+    as ``<buildtool_depend>`` or ``<build_export_depend>`` keeps it and gains an
+    ``<exec_depend>``. Safe: the key was declared already, the fix only adds run time."""
+    doc = manifest_doc(package)
+    if doc is None:
+        return
+    wanted = {_at(f.span) for f in findings}
+    only = declared(package, BUILD_ONLY)
+    found = (next((k for k in need.keys if k in only), None)
+             for need in unmet_runtime_needs(package) if _at(need.imported.span) in wanted)
+    for key in dict.fromkeys(k for k in found if k is not None):
+        dependency = only[key]
+        element = child_at(doc, dependency.span.line)
+        if dependency.tag == "build_depend" and element is not None and \
+                element.local == "build_depend" and doc.text_of(element) == key:
+            yield Fix(f"Change `<build_depend>{key}</build_depend>` to `<depend>`",
+                      tuple(doc.retag(element, "depend")))
+        else:
+            yield from _add(doc, "exec_depend", key)
+
+
 @fixer("DEP003", "Add a `<test_depend>` with the rosdep key")
-def undeclared_test(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+def undeclared_test(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
     """Declare each test import's rosdep key for tests."""
     found = (need for module in test_code(package) for need in needs(package, module))
     yield from _declare(package, findings, found, "test_depend")
 
 
 @fixer("LCH003", "Add an `<exec_depend>` for what the launch file imports")
-def launch_import(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+def launch_import(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
     """Declare each launch-file import's rosdep key for run time."""
     found = (need for launch in package.launch_files if launch.python is not None
              for need in needs(package, launch.python))
@@ -73,7 +92,7 @@ def launch_import(package: Package, findings: list[Finding]) -> Iterator[Fix]:
 
 
 @fixer("LCH002", "Add an `<exec_depend>` for the package the launch file uses")
-def launch_package(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+def launch_package(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
     """Declare each ROS package a launch file starts or includes (the name is its key).
 
     Only names that resolve, as for every key these fixers add (see :func:`_resolves`).

@@ -1,17 +1,20 @@
-"""Fixers of package.xml elements: dependencies (repeated, redundant, unused, pip names), SPDX."""
+"""Fixers of package.xml elements: dependencies (repeated, redundant, unused, pip names,
+misspelled), SPDX."""
 
 from __future__ import annotations
 
 from collections.abc import Iterator
 
-from pkgtool.edit.core import Edit, Fix
+from pkgtool.edit.core import Fix
+from pkgtool.edit.manifest import ManifestDoc
+from pkgtool.edit.xml_scan import Element
 from pkgtool.findings import Finding
 from pkgtool.fix.common import child_at, manifest_doc
 from pkgtool.fix.registry import fixer
 from pkgtool.knowledge.rosdep import suggested_key
+from pkgtool.knowledge.rosdistro import close_names
 from pkgtool.model.package import Package
 from pkgtool.rules.manifest.non_spdx_license import spdx_spelling
-from pkgtool.safe_xml import xml_text
 
 
 def _remove_lines(package: Package, findings: list[Finding], title: str, *, safe: bool
@@ -56,9 +59,7 @@ def spdx(package: Package, findings: list[Finding]) -> Iterator[Fix]:
         suggestion = spdx_spelling(doc.text_of(element))
         if suggestion and suggestion.count("`") == 2:
             identifier = suggestion.strip("`")
-            edit = Edit(doc.source.path, element.inner_start, element.inner_end,
-                        xml_text(identifier))
-            yield Fix(f"Write `{identifier}`", (edit,))
+            yield Fix(f"Write `{identifier}`", (doc.replace_text(element, identifier),))
 
 
 @fixer("MAN018", "Write the rosdep key instead of the pip or import name")
@@ -71,11 +72,32 @@ def rosdep_key(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     for finding in findings:
         element = child_at(doc, finding.span.line)
         key = suggested_key(doc.text_of(element)) if element is not None else None
-        if element is None or key is None:
+        if element is not None and key is not None:
+            yield _rename(doc, element, key)
+
+
+@fixer("MAN021", "Write the one known name the misspelled dependency is close to")
+def misspelled(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename the key when exactly one released package, rosdep key or workspace package is
+    spelled like it. Safe: the misspelled key resolves to nothing, so no working dependency
+    changes. With two or more near misses there is no fix: the user chooses."""
+    doc = manifest_doc(package)
+    if doc is None:
+        return
+    local = frozenset(package.context.workspace) | {package.name}
+    for finding in findings:
+        element = child_at(doc, finding.span.line)
+        if element is None:
             continue
-        if doc.find(element.local, key):
-            yield Fix(f"Remove `{doc.text_of(element)}`: `{key}` is declared",
-                      (doc.remove(element),))
-        else:
-            yield Fix(f"Write `{key}`", (Edit(doc.source.path, element.inner_start,
-                                              element.inner_end, xml_text(key)),))
+        close = close_names(doc.text_of(element), package.context.distro, extra=local, limit=2)
+        if len(close) == 1:
+            yield _rename(doc, element, close[0])
+
+
+def _rename(doc: ManifestDoc, element: Element, key: str) -> Fix:
+    """Write ``key`` into the dependency ``element``, or drop it when its tag declares ``key``
+    already."""
+    if doc.find(element.local, key):
+        return Fix(f"Remove `{doc.text_of(element)}`: `{key}` is declared",
+                   (doc.remove(element),))
+    return Fix(f"Write `{key}`", (doc.replace_text(element, key),))

@@ -11,9 +11,18 @@ from pkgtool.edit.core import Fix
 from pkgtool.findings import Finding
 from pkgtool.model.package import Package
 
-Make: TypeAlias = Callable[[Package, list[Finding]], Iterable[Fix]]
 
-_MODULES = ("pkgtool.fix.dependencies", "pkgtool.fix.manifest")
+@dataclass(frozen=True, slots=True)
+class Refusal:
+    """A finding a fixer leaves to the user, and why (``lint --fix`` and ``--diff`` say it)."""
+
+    reason: str
+
+
+Make: TypeAlias = Callable[[Package, list[Finding]], Iterable["Fix | Refusal"]]
+
+_MODULES = ("pkgtool.fix.data_files", "pkgtool.fix.dependencies", "pkgtool.fix.manifest",
+            "pkgtool.fix.setup_cfg", "pkgtool.fix.setup_py")
 
 
 @dataclass(frozen=True, slots=True)

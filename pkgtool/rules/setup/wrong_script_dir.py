@@ -20,7 +20,7 @@ def _normal(value: str) -> str:
     return value.strip().replace("${base}", "$base").rstrip("/")
 
 
-def _near_miss(options: tuple[CfgOption, ...], section: str, key: str) -> CfgOption | None:
+def near_miss(options: tuple[CfgOption, ...], section: str, key: str) -> CfgOption | None:
     """A misspelt key in the right section, or the right key in a misspelt section."""
     for option in options:
         same_key = option.key.replace("-", "_") == key
@@ -72,7 +72,7 @@ def wrong_script_dir(package: Package) -> Iterator[Hit]:
     for section, key in SCRIPT_OPTIONS:
         option = cfg.get(section, key)
         if option is None:
-            near = _near_miss(cfg.options, section, key)
+            near = near_miss(cfg.options, section, key)
             if near is not None:
                 yield Hit(near.span, f"`[{near.section}] {near.key}` is not `[{section}] {key}`: "
                                      f"console scripts install to `bin/`, not "

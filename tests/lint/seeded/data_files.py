@@ -102,3 +102,13 @@ def glob_matches_folder(root: Path) -> None:
 @case("SYN001", "config/params.yaml", "period: 0.5")
 def parameter_file_bad_indentation(root: Path) -> None:
     edit(root, "config/params.yaml", "    period: 0.5", "   period: 0.5")
+
+
+@case("DAT007", SETUP, "['config']")
+def config_folder_as_data_file(root: Path) -> None:
+    edit(root, SETUP, "glob('config/*.yaml')", "['config']")
+
+
+@case("DAT004")
+def package_xml_replaced_by_license(root: Path) -> None:
+    edit(root, SETUP, "['package.xml']", "['LICENSE']")

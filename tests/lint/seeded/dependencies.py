@@ -133,3 +133,8 @@ def numpy_dependency_dropped(root: Path) -> None:
 @case("DEP001", f"{CAMERA}/nodes/image_subscriber.py", "sensor_msgs", base=CAMERA)
 def sensor_msgs_dependency_dropped(root: Path) -> None:
     edit(root, XML, "  <depend>sensor_msgs</depend>\n", "")
+
+
+@case("DEP002", "base_pkg/srv.py", "from std_srvs.srv import")
+def service_package_only_buildtool_depend(root: Path) -> None:
+    edit(root, XML, "<depend>std_srvs</depend>", "<buildtool_depend>std_srvs</buildtool_depend>")

@@ -88,3 +88,8 @@ def main_renamed(root: Path) -> None:
 def module_file_named_with_dash(root: Path) -> None:
     move(root, "base_pkg/talker.py", "base_pkg/talker-node.py")
     edit(root, SETUP, "base_pkg.talker:main", "base_pkg.talker-node:main")
+
+
+@case("ENT005", SETUP, "'talker = base_pkg.talker:main'")
+def console_scripts_group_capitalised(root: Path) -> None:
+    edit(root, SETUP, "'console_scripts'", "'Console_Scripts'")

@@ -219,3 +219,14 @@ def misspelled_version_attribute(root: Path) -> None:
 def ros1_buildtool(root: Path) -> None:
     edit(root, XML, "  <depend>rclpy</depend>",
          "  <buildtool_depend>catkin</buildtool_depend>\n\n  <depend>rclpy</depend>")
+
+
+@case("MAN021", XML, "<depend>std_msg</depend>")
+def message_package_misspelled(root: Path) -> None:
+    edit(root, XML, "<depend>std_msgs</depend>", "<depend>std_msg</depend>")
+
+
+@case("MAN021", XML, "<exec_depend>launch_ro</exec_depend>")
+def launch_package_misspelled(root: Path) -> None:
+    edit(root, XML, "<exec_depend>launch_ros</exec_depend>",
+         "<exec_depend>launch_ro</exec_depend>")

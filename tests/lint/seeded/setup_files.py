@@ -122,3 +122,29 @@ def install_scripts_key_misspelled(root: Path) -> None:
 @case("PYC001", SETUP, "name=package_nme")
 def package_name_variable_typo(root: Path) -> None:
     edit(root, SETUP, "name=package_name,", "name=package_nme,")
+
+
+@case("SET009", CFG, "script_dir")
+def develop_script_dir_of_another_package(root: Path) -> None:
+    edit(root, CFG, "script_dir=$base/lib/base_pkg", "script_dir=$base/lib/turtle_demo")
+
+
+@case("SET009", CFG, "install_scripts")
+def install_section_misspelled(root: Path) -> None:
+    edit(root, CFG, "[install]", "[instal]")
+
+
+@case("SET004", SETUP, "version='1.2.0'")
+def setup_version_ahead(root: Path) -> None:
+    edit(root, SETUP, "version='0.0.0'", "version='1.2.0'")
+
+
+@case("SET005", SETUP, "license='BSD-3-Clause'")
+def setup_license_other(root: Path) -> None:
+    edit(root, SETUP, "license='Apache-2.0'", "license='BSD-3-Clause'")
+
+
+@case("SET007", SETUP, "tests_require")
+def tests_require_beside_other_extras(root: Path) -> None:
+    edit(root, SETUP, "extras_require={'test': ['pytest']}",
+         "tests_require=['pytest'],\n    extras_require={'docs': ['sphinx']}")

@@ -1,0 +1,118 @@
+"""Fixers of setup() keywords: metadata package.xml decides, the script group, the test extra."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.edit.core import Edit, Fix
+from pkgtool.edit.setup_cfg import rename_option
+from pkgtool.edit.setup_py import SetupDoc
+from pkgtool.findings import Finding
+from pkgtool.fix.common import cfg_source, offer, setup_doc
+from pkgtool.fix.registry import Refusal, fixer
+from pkgtool.model.package import Package
+from pkgtool.rules.entry_points.misspelled_script_group import misspelt
+from pkgtool.rules.setup.tests_require import TEST_EXTRAS
+
+ENTRY_POINTS = "options.entry_points"
+
+
+def _from_manifest(package: Package, keyword: str, wanted: str | None
+                   ) -> Iterator[Fix | Refusal]:
+    """Write package.xml's ``wanted`` over the string literal setup() takes ``keyword`` from."""
+    doc = setup_doc(package)
+    if doc is None or wanted is None:
+        return
+
+    def build() -> list[Edit]:
+        value = doc.value(keyword, f"`{keyword}`")
+        return [doc.replace_value(value, doc.doc.string(wanted), f"`{keyword}`")]
+
+    yield from offer(f"Write `{keyword}={wanted!r}` from package.xml", build)
+
+
+@fixer("SET003", "Write package.xml's name into setup.py")
+def name(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
+    """package.xml wins: the string literal the name comes from (usually ``package_name =
+    '...'``) gets package.xml's name, so data_files paths built from it follow. Safe: ROS tools
+    know the package by package.xml's name only; a name computed by code is refused."""
+    manifest = package.manifest
+    yield from _from_manifest(package, "name", manifest.name.value if manifest and
+                              manifest.name else None)
+
+
+@fixer("SET004", "Write package.xml's version into setup.py")
+def version(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
+    """package.xml wins (bloom releases its version). Safe: only metadata changes."""
+    manifest = package.manifest
+    yield from _from_manifest(package, "version", manifest.version.value if manifest and
+                              manifest.version else None)
+
+
+@fixer("SET005", "Write package.xml's license into setup.py")
+def license_(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
+    """package.xml wins; several ``<license>`` tags are joined with ``, `` as catkin_pkg's
+    ``generate_distutils_setup`` does (no OR or AND is claimed). Safe: only metadata changes."""
+    licenses = package.manifest.licenses if package.manifest else ()
+    if licenses:
+        yield from _from_manifest(package, "license", ", ".join(x.value for x in licenses))
+
+
+@fixer("ENT005", "Name the entry point group `console_scripts`")
+def script_group(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
+    """Rename the misspelt group key (setup.py's dict literal or setup.cfg's option). Safe:
+    the executables the author listed get installed. A group that exists already as well
+    would need merging, and an INI string in setup.py is not edited: both are refused."""
+    lines = {f.span.line for f in findings if f.span.path == "setup.cfg"}
+    cfg, source = package.setup_cfg, cfg_source(package)
+    for option in cfg.options if cfg and source and lines else ():
+        wanted = misspelt(option.key) if option.section == ENTRY_POINTS else None
+        if wanted and option.span.line in lines:
+            if cfg.get(ENTRY_POINTS, wanted) is not None:
+                yield Refusal(f"setup.cfg has both `{option.key}` and `{wanted}`: merge them "
+                              "by hand.")
+            else:
+                yield Fix(f"Rename `{option.key}` to `{wanted}`",
+                          tuple(rename_option(source, ENTRY_POINTS, option.key, wanted)))
+    setup, doc = package.setup_py, setup_doc(package)
+    at = {(f.span.line, f.span.col) for f in findings if f.span.path == "setup.py"}
+    groups = {e.group for e in setup.entry_points or () if (e.span.line, e.span.col) in at} \
+        if setup and doc else set()
+    for group in sorted(groups):
+        yield from offer(f"Rename the group `{group}` to `{misspelt(group)}`",
+                         lambda group=group: _rename_group(doc, group))
+
+
+def _rename_group(doc: SetupDoc, group: str) -> list[Edit]:
+    groups = doc.value("entry_points", "the entry points")
+    wanted = misspelt(group)
+    if not isinstance(groups, dict) or wanted is None:
+        return doc.refuse("gives entry_points as a string, which pkgtool does not edit")
+    if wanted in groups:
+        return doc.refuse(f"has both `{group}` and `{wanted}` groups: merge them by hand")
+    key = next(k for k in groups if k == group)
+    return [doc.replace_value(key, doc.doc.string(wanted), "the entry point group")]
+
+
+@fixer("SET007", "Replace `tests_require` by the `test` extra")
+def tests_require(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
+    """``tests_require=X`` becomes ``extras_require={'test': X}`` (or joins the extras given).
+    Safe: colcon reads pytest from either, and setuptools 72+ only knows the extra."""
+    doc = setup_doc(package)
+    if doc is not None:
+        yield from offer("Move `tests_require` into `extras_require['test']`",
+                         lambda: _test_extra(doc))
+
+
+def _test_extra(doc: SetupDoc) -> list[Edit]:
+    found = doc.keyword("tests_require")
+    if found is None:
+        return []
+    value = doc.doc.segment(found.value)
+    item = f"{doc.doc.string('test')}: {value}"
+    extras = doc.value("extras_require", "extras_require")
+    if extras is None:
+        return [doc.replace_keyword("tests_require", "extras_require={" + item + "}")]
+    if isinstance(extras, dict) and any(key in extras for key in TEST_EXTRAS):
+        return []
+    return doc.add_to_dict(extras, item, "extras_require") + [doc.remove_keyword("tests_require")]

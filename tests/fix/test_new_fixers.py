@@ -1,0 +1,180 @@
+"""The DEP002, MAN021, SET, ENT005 and DAT fixers: exact edits, idempotence, refusals."""
+
+from __future__ import annotations
+
+import textwrap
+from pathlib import Path
+
+from pkgtool.commands.lint import LintOptions, LintResult, run
+from tests.helpers import correct_package_files, write_tree
+
+RCLPY = "  <exec_depend>rclpy</exec_depend>\n"
+STD_MSGS = "  <exec_depend>std_msgs</exec_depend>\n"
+SETUP_CFG = "[develop]\nscript_dir=$base/lib/pkg\n[install]\ninstall_scripts=$base/lib/pkg\n"
+LAUNCH = "        (os.path.join('share', package_name, 'launch'), glob('launch/*.launch.py')),\n"
+MARKER = "('share/ament_index/resource_index/packages', ['resource/' + package_name]),\n"
+
+
+def _package(tmp_path: Path, **changes: tuple[str, str]) -> Path:
+    """The correct package ``pkg`` with ``file=(old, new)`` replacements (``.`` for ``/``)."""
+    files = correct_package_files("pkg")
+    for key, (old, new) in changes.items():
+        path = key.replace("__", "/").replace("_dot_", ".")
+        text = textwrap.dedent(str(files[path])).lstrip("\n")
+        assert old in text, (path, old)
+        files[path] = text.replace(old, new, 1)
+    root = tmp_path / "pkg"
+    write_tree(root, files)
+    return root
+
+
+def _fix(root: Path, code: str) -> LintResult:
+    return run([str(root)], options=LintOptions(isolated=True, fix=True, select=(code,)))
+
+
+def _read(root: Path, path: str) -> str:
+    return (root / path).read_text()
+
+
+def _fixed_once(root: Path, code: str, path: str) -> str:
+    """Fix ``code``, check no finding of it is left and a second run changes nothing."""
+    result = _fix(root, code)
+    assert not [f for f in result.findings if f.code == code], result.findings
+    text = _read(root, path)
+    again = _fix(root, code)
+    assert not again.fixed and _read(root, path) == text
+    return text
+
+
+def test_build_depend_becomes_depend_keeping_its_attributes(tmp_path: Path) -> None:
+    root = _package(tmp_path, package_dot_xml=(
+        STD_MSGS, '  <build_depend version_gte="1.0.0">std_msgs</build_depend>\n'))
+    before = _read(root, "package.xml")
+    after = _fixed_once(root, "DEP002", "package.xml")
+    assert after == before.replace("<build_depend version_gte", "<depend version_gte").replace(
+        "std_msgs</build_depend>", "std_msgs</depend>")
+
+
+def test_buildtool_depend_gains_an_exec_depend(tmp_path: Path) -> None:
+    root = _package(tmp_path, package_dot_xml=(
+        STD_MSGS, "  <buildtool_depend>std_msgs</buildtool_depend>\n"))
+    after = _fixed_once(root, "DEP002", "package.xml")
+    assert "<buildtool_depend>std_msgs</buildtool_depend>" in after
+    assert "<exec_depend>std_msgs</exec_depend>" in after
+
+
+def test_misspelled_dependency_with_one_near_miss_is_written(tmp_path: Path) -> None:
+    root = _package(tmp_path, package_dot_xml=(STD_MSGS, "  <exec_depend>std_msg</exec_depend>\n"))
+    before = _read(root, "package.xml")
+    assert _fixed_once(root, "MAN021", "package.xml") == before.replace(
+        ">std_msg<", ">std_msgs<")
+
+
+def test_misspelled_dependency_with_two_near_misses_stays(tmp_path: Path) -> None:
+    root = _package(tmp_path, package_dot_xml=(
+        RCLPY, RCLPY + "  <exec_depend>python3-numpi</exec_depend>\n"))
+    before = _read(root, "package.xml")
+    result = _fix(root, "MAN021")
+    assert [f.code for f in result.findings] == ["MAN021"]
+    assert _read(root, "package.xml") == before
+
+
+def test_missing_setup_cfg_is_written(tmp_path: Path) -> None:
+    root = _package(tmp_path)
+    (root / "setup.cfg").unlink()
+    assert _fixed_once(root, "SET008", "setup.cfg") == SETUP_CFG
+
+
+def test_script_dir_value_is_rewritten_and_comments_stay(tmp_path: Path) -> None:
+    root = _package(tmp_path, setup_dot_cfg=("[develop]\n", "# scripts\n[develop]\n"))
+    (root / "setup.cfg").write_text(_read(root, "setup.cfg").replace("lib/pkg\n[install]",
+                                                                     "lib/other\n[install]"))
+    assert _fixed_once(root, "SET009", "setup.cfg") == "# scripts\n" + SETUP_CFG
+
+
+def test_misspelt_section_is_renamed(tmp_path: Path) -> None:
+    root = _package(tmp_path, setup_dot_cfg=("[install]", "[instal]"))
+    assert _fixed_once(root, "SET009", "setup.cfg") == SETUP_CFG
+
+
+def test_dashed_keys_become_underscored(tmp_path: Path) -> None:
+    root = _package(tmp_path, setup_dot_cfg=("script_dir", "script-dir"))
+    assert _fixed_once(root, "SET010", "setup.cfg") == SETUP_CFG
+
+
+def test_dashed_key_beside_its_underscored_twin_is_left(tmp_path: Path) -> None:
+    root = _package(tmp_path, setup_dot_cfg=("[install]", "script-dir=$base/lib/x\n[install]"))
+    before = _read(root, "setup.cfg")
+    _fix(root, "SET010")
+    assert _read(root, "setup.cfg") == before
+
+
+def test_setup_name_follows_package_xml_through_its_variable(tmp_path: Path) -> None:
+    root = _package(tmp_path, setup_dot_py=("package_name = 'pkg'", "package_name = 'pkg2'"))
+    before = _read(root, "setup.py")
+    assert _fixed_once(root, "SET003", "setup.py") == before.replace("'pkg2'", "'pkg'")
+
+
+def test_computed_setup_name_is_refused_with_the_reason(tmp_path: Path) -> None:
+    root = _package(tmp_path, setup_dot_py=("name=package_name,", "name=package_name.title(),"))
+    before = _read(root, "setup.py")
+    result = _fix(root, "SET003")
+    assert _read(root, "setup.py") == before
+    assert any("not fixed: SET003: setup.py computes `name`" in n for n in result.notes), \
+        result.notes
+
+
+def test_version_and_license_come_from_package_xml(tmp_path: Path) -> None:
+    root = _package(tmp_path, setup_dot_py=("version='0.1.0'", "version='9.9.9'"))
+    before = _read(root, "setup.py")
+    assert _fixed_once(root, "SET004", "setup.py") == before.replace("9.9.9", "0.1.0")
+
+
+def test_misspelt_group_is_renamed_and_a_duplicate_refused(tmp_path: Path) -> None:
+    root = _package(tmp_path, setup_dot_py=("'console_scripts'", "'console_script'"))
+    before = _read(root, "setup.py")
+    assert _fixed_once(root, "ENT005", "setup.py") == before.replace("'console_script'",
+                                                                     "'console_scripts'")
+    both = _package(tmp_path / "both", setup_dot_py=(
+        "'console_scripts': [", "'console_script': ['x = pkg.talker:main'],\n"
+        "        'console_scripts': ["))
+    kept = _read(both, "setup.py")
+    result = _fix(both, "ENT005")
+    assert _read(both, "setup.py") == kept
+    assert any("merge them by hand" in note for note in result.notes)
+
+
+def test_tests_require_joins_the_extras(tmp_path: Path) -> None:
+    root = _package(tmp_path, setup_dot_py=(
+        "    extras_require={'test': ['pytest']},\n",
+        "    tests_require=['pytest'],\n    extras_require={'docs': ['sphinx']},\n"))
+    after = _fixed_once(root, "SET007", "setup.py")
+    assert "tests_require" not in after
+    assert "extras_require={'docs': ['sphinx'], 'test': ['pytest']}," in after
+
+
+def test_missing_marker_is_installed_and_its_file_created(tmp_path: Path) -> None:
+    root = _package(tmp_path, setup_dot_py=(MARKER, ""))
+    (root / "resource" / "pkg").unlink()
+    after = _fixed_once(root, "DAT003", "setup.py")
+    assert "('share/ament_index/resource_index/packages', ['resource/' + package_name])," in after
+    assert _read(root, "resource/pkg") == ""
+
+
+def test_data_files_built_by_code_are_refused_with_the_reason(tmp_path: Path) -> None:
+    launch = LAUNCH
+    root = _package(tmp_path, setup_dot_py=(launch, ""))
+    text = _read(root, "setup.py").replace("    data_files=[", "    data_files=[] + [")
+    (root / "setup.py").write_text(text)
+    result = _fix(root, "DAT005")
+    assert _read(root, "setup.py") == text
+    assert [f.code for f in result.findings] == ["DAT005"]
+    assert any("not fixed: DAT005: setup.py builds data_files with code" in note
+               for note in result.notes), result.notes
+
+
+def test_uninstalled_launch_folder_gets_a_glob(tmp_path: Path) -> None:
+    launch = LAUNCH
+    original = _read(_package(tmp_path / "original"), "setup.py")
+    root = _package(tmp_path, setup_dot_py=(launch, ""))
+    assert _fixed_once(root, "DAT005", "setup.py") == original
