@@ -146,7 +146,8 @@ def _lint(paths: list[str], options: LintOptions, fmt: Format, output: Optional[
     else:
         _report(result, fmt, output)
     if result.fixed:
-        _say(f"fixed {len(result.fixed)}:", *(f"  {title}" for title in result.fixed))
+        done = "would fix" if options.diff else "fixed"
+        _say(f"{done} {len(result.fixed)}:", *(f"  {title}" for title in result.fixed))
     _say(*result.notes, *result.errors)
     raise typer.Exit(int(result.exit_code))
 

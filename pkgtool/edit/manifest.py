@@ -17,6 +17,8 @@ from pkgtool.edit.source import Source
 from pkgtool.edit.xml_scan import Element, insert_after, insert_before, scan, unescape
 from pkgtool.rules.manifest.schema import slot_index
 
+_COMMENT = re.compile(r"<!--.*?-->", re.S)
+
 DEPEND_ORDER = ("buildtool_depend", "buildtool_export_depend", "build_depend",
                 "build_export_depend", "depend", "exec_depend", "run_depend", "test_depend",
                 "doc_depend", "conflict", "replace")
@@ -108,6 +110,38 @@ class ManifestDoc:
     def replace_text(self, element: Element, text: str) -> Edit:
         """An edit writing ``text`` (escaped) as the content of ``element``."""
         return Edit(self.source.path, element.inner_start, element.inner_end, xml_text(text))
+
+    # Ordering ----------------------------------------------------------------------------
+
+    def reorder(self) -> list[Edit]:
+        """One edit putting ``<package>``'s children in the schema's order, or none when they
+        are in it. The sort is stable (elements of one slot, such as the dependency tags, keep
+        their order) and each element moves with its own lines: the comments and blank lines
+        just above it and a comment after it on its last line. Refused when an element shares
+        a line with another element or with ``<package>``'s tags."""
+        children = self.children
+        ranks = [slot_index(c.local, self.format) for c in children]
+        if any(rank is None for rank in ranks):
+            raise EditError("package.xml holds an element its format does not define: fix "
+                            "that first (MAN005/MAN006 say which).")
+        order = sorted(range(len(children)), key=lambda i: ranks[i])
+        if order == list(range(len(children))):
+            return []
+        bounds = [self._own_lines(child) for child in children]
+        starts = [bounds[0][0]] + [end for _, end in bounds[:-1]]
+        chunks = [self.source.text[start:end] for start, (_, end) in zip(starts, bounds)]
+        return [Edit(self.source.path, starts[0], bounds[-1][1],
+                     "".join(chunks[i] for i in order))]
+
+    def _own_lines(self, element: Element) -> tuple[int, int]:
+        """Start of ``element``'s first line and end of its last (line break included)."""
+        text, source = self.source.text, self.source
+        first, last = source.line_start(element.start), source.line_end(element.end)
+        after = _COMMENT.sub("", text[element.end:last])
+        if text[first:element.start].strip() or after.strip() or last >= len(text):
+            raise EditError(f"`<{element.local}>` shares its line with other markup: put each "
+                            "child of `<package>` on lines of its own to have it reordered.")
+        return first, last + len(source.newline)
 
     # Removing ----------------------------------------------------------------------------
 

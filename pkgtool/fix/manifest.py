@@ -1,5 +1,5 @@
-"""Fixers of package.xml elements: dependencies (repeated, redundant, unused, pip names,
-misspelled), SPDX."""
+"""Fixers of package.xml elements: their order, dependencies (repeated, redundant, unused, pip
+names, misspelled), SPDX."""
 
 from __future__ import annotations
 
@@ -9,8 +9,8 @@ from pkgtool.edit.core import Fix
 from pkgtool.edit.manifest import ManifestDoc
 from pkgtool.edit.xml_scan import Element
 from pkgtool.findings import Finding
-from pkgtool.fix.common import child_at, manifest_doc
-from pkgtool.fix.registry import fixer
+from pkgtool.fix.common import child_at, manifest_doc, offer
+from pkgtool.fix.registry import Refusal, fixer
 from pkgtool.knowledge.rosdep import suggested_key
 from pkgtool.knowledge.rosdistro import close_names
 from pkgtool.model.package import Package
@@ -26,6 +26,15 @@ def _remove_lines(package: Package, findings: list[Finding], title: str, *, safe
         element = child_at(doc, finding.span.line) if finding.span.path == "package.xml" else None
         if element is not None:
             yield Fix(f"{title} `{doc.text_of(element)}`", (doc.remove(element),), safe)
+
+
+@fixer("MAN004", "Move the elements into the schema's order")
+def element_order(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
+    """Reorder ``<package>``'s children as the schema's sequence wants them, each with its own
+    comments; elements of one slot keep their order. Safe: the order carries no meaning."""
+    doc = manifest_doc(package)
+    if doc is not None and findings:
+        yield from offer("Put package.xml's elements in the schema's order", doc.reorder)
 
 
 @fixer("MAN013", "Remove the repeated dependency tag")
