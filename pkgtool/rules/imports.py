@@ -1,7 +1,8 @@
 """What the DEP, LCH and PYC rules share: which imports need a package.xml key, which are declared.
 
 An absolute import needs a key unless it is standard library (of the target distribution's
-Python), one of the package's own modules, or a module next to the importing file.
+Python), one of the package's own modules, a module next to the importing file, or (in test
+code) a module pytest puts on ``sys.path``.
 Third-party names map to rosdep keys through rosdep's data
 (:func:`pkgtool.knowledge.rosdistro.keys_for_import`); ROS names (released for the target, or
 ROS-looking) to ROS packages; Python packages of workspace packages to those packages; a name
@@ -11,6 +12,7 @@ that is none of these is ``unknown`` and only ever gets a guessed key.
 from __future__ import annotations
 
 import posixpath
+import re
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from functools import lru_cache
@@ -128,6 +130,32 @@ def _siblings(package: Package, path: str) -> frozenset[str]:
     return _layout(package.files).children.get(posixpath.dirname(path), frozenset())
 
 
+_COLLECTED = re.compile(r"(?:test_.*|.*_test|conftest)\.py")
+
+
+@per_package
+def pytest_path_modules(package: Package) -> frozenset[str]:
+    """Modules pytest's default ``prepend`` import mode lets every test module import.
+
+    For each collected file (``test_*.py``, ``*_test.py``, ``conftest.py``) pytest puts its
+    first folder upwards without ``__init__.py`` on ``sys.path`` for the whole session, so a
+    helper module there (``test/temporary_environment.py``) imports by its bare name.
+    """
+    layout = _layout(package.files)
+    files = set(package.files)
+    names: set[str] = set()
+    for path in package.files:
+        if not _COLLECTED.fullmatch(posixpath.basename(path)):
+            continue
+        folder = posixpath.dirname(path)
+        while folder and folder in layout.packages:
+            folder = posixpath.dirname(folder)
+        prefix = folder + "/" if folder else ""
+        names.update(entry for entry in layout.children.get(folder, ())
+                     if prefix + entry + ".py" in files or prefix + entry in layout.packages)
+    return frozenset(names)
+
+
 def installed_code(package: Package) -> list[PythonModule]:
     """Non-test modules that setup.py installs (modules inside Python package folders)."""
     installed = installed_modules(package)
@@ -200,6 +228,8 @@ def needs(package: Package, module: PythonModule, *, guarded: bool | None = Fals
     import of an own module that the package itself imports only guarded counts as guarded.
     """
     skip = own_modules(package) | _siblings(package, module.path)
+    if module.is_test:
+        skip |= pytest_path_modules(package)
     stdlib = _stdlib(package.context.distro)
     names = declared(package, ANY)
     optional = module.path in optional_modules(package)

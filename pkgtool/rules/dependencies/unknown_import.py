@@ -18,7 +18,8 @@ def unknown_import(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Reports unguarded absolute imports (in any module or Python launch file) of names that
-    are not standard library (of the target distribution's Python), not the package's own,
+    are not standard library (of the target distribution's Python), not the package's own
+    (for test code, also a helper module in a folder pytest puts on `sys.path`),
     not ROS (released for the target distribution, or ROS by name), and not a module that
     rosdep's data maps to a key (the pip and Debian names in rosdistro's `python.yaml`),
     unless a key that looks like it
