@@ -245,6 +245,29 @@ def needs(package: Package, module: PythonModule, *, guarded: bool | None = Fals
         yield Need(module, imported, top, kind, keys)
 
 
+MAX_PLACES = 5
+"""Other places of one mistake a message names (``related`` has them all)."""
+
+
+def grouped(found: Iterable[Need]) -> Iterator[tuple[Need, tuple[Need, ...]]]:
+    """Needs of one top-level name together, first place first: one mistake, one hit."""
+    groups: dict[str, list[Need]] = {}
+    for need in found:
+        groups.setdefault(need.top, []).append(need)
+    for first, *others in groups.values():
+        yield first, tuple(others)
+
+
+def also_imported(others: tuple[Need, ...]) -> str:
+    """``; also imported in `a.py:3`, ...`` for the other places of a need (or nothing)."""
+    if not others:
+        return ""
+    places = ", ".join(f"`{n.imported.span.path}:{n.imported.span.line}`"
+                       for n in others[:MAX_PLACES])
+    more = f" and {len(others) - MAX_PLACES} more" if len(others) > MAX_PLACES else ""
+    return f"; also imported in {places}{more}"
+
+
 def unmet_runtime_needs(package: Package) -> Iterator[Need]:
     """Needs of run-time code that no run-time key provides (none without a package.xml)."""
     if package.manifest is None:
