@@ -58,7 +58,8 @@ def check_package(package: Package, rules: Iterable[Rule], *, root_label: str,
             continue
         for hit in hits:
             finding = Finding(rule.code, overrides.get(rule.code, rule.severity), package.name,
-                              root_label, hit.span, hit.message, hit.fix or rule.fix)
+                              root_label, hit.span, hit.message, hit.fix or rule.fix,
+                              related=hit.related)
             if not _suppressed(package, finding, rule):
                 findings.append(finding)
     return sorted(set(findings), key=lambda f: f.sort_key)

@@ -27,11 +27,14 @@ class Hit:
 
     ``message`` states the problem in sentence case without a final period, names in backticks;
     ``fix`` is an imperative one-liner, or None when the rule's generic fix applies.
+    ``related`` are the other places of the same mistake (one root cause, one hit): ``span``
+    is the first or root place, the message names the others.
     """
 
     span: Span
     message: str
     fix: str | None = None
+    related: tuple[Span, ...] = ()
 
 
 @dataclass(frozen=True, slots=True)
@@ -40,7 +43,8 @@ class Finding:
 
     ``root`` is the package root as the user named it, so reporters can print
     ``root/span.path`` relative to the current directory. ``internal`` marks a rule that
-    raised instead of checking (the message names it); lint then exits with 3.
+    raised instead of checking (the message names it); lint then exits with 3. ``related``
+    are the hit's other places of the same mistake.
     """
 
     code: str
@@ -51,6 +55,7 @@ class Finding:
     message: str
     fix: str | None = None
     internal: bool = False
+    related: tuple[Span, ...] = ()
 
     @property
     def sort_key(self) -> tuple[str, str, int, int, str]:

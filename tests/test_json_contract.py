@@ -8,6 +8,7 @@ the lists below, so no key changes unnoticed.
 from __future__ import annotations
 
 import json
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -20,6 +21,7 @@ from pkgtool.grade.report.package_tests import render as render_tests
 from pkgtool.grade.results import CriterionResult, SubmissionResult
 from pkgtool.grade.rubric import Criterion, Rubric
 from pkgtool.report import PackageLabel, ReportContext, render as render_lint
+from pkgtool.model.span import Span
 from pkgtool.report.json import SCHEMA_VERSION
 from tests.helpers import make_finding
 
@@ -28,7 +30,7 @@ ENVELOPE = ["schema_version", "tool", "version", "command"]
 KEYS: dict[str, dict[str, list[str]]] = {
     "lint": {"": [*ENVELOPE, "findings", "summary"],
              "finding": ["rule", "severity", "package", "path", "line", "column", "message",
-                         "fix", "fixable"],
+                         "fix", "fixable", "related"],
              "summary": ["error", "warning", "info", "packages"]},
     "test": {"": [*ENVELOPE, "ok", "isolation", "packages"],
              "tested_package": ["name", "ok", "built", "limit", "seconds", "counts", "problem",
@@ -46,7 +48,9 @@ RUBRIC = Rubric("demo", (Criterion("build", "Builds", 2.0), Criterion("tests", "
 def _lint() -> dict[str, Any]:
     context = ReportContext(packages=(PackageLabel("pkg", "src/pkg"),))
     findings = [make_finding(), make_finding("MAN013", "warning", path="package.xml", line=0,
-                                             col=0, fix=None)]
+                                             col=0, fix=None),
+                replace(make_finding("MAN004", path="package.xml", line=5),
+                        related=(Span("package.xml", 9, 3), Span("setup.py")))]
     return json.loads(render_lint("json", findings, context=context))
 
 

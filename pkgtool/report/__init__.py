@@ -15,6 +15,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 
 from pkgtool.findings import Finding, Severity
+from pkgtool.model.span import Span
 from pkgtool.rules.registry import Rule
 
 __all__ = ["FORMATS", "PackageLabel", "ReportContext", "counts", "display_path", "render",
@@ -51,9 +52,10 @@ def render(fmt: str, findings: Sequence[Finding], *, context: ReportContext) -> 
     return str(module.render(sorted_findings(findings), context=context))
 
 
-def display_path(finding: Finding) -> str:
-    """The finding's file as the user sees it: the package root joined with the span path."""
-    root, path = finding.root.rstrip("/"), finding.span.path
+def display_path(finding: Finding, span: Span | None = None) -> str:
+    """The finding's file (or ``span``'s, one of its related places) as the user sees it: the
+    package root joined with the span path."""
+    root, path = finding.root.rstrip("/"), (span or finding.span).path
     if not path:
         return root or "."
     return path if root in ("", ".") else f"{root}/{path}"

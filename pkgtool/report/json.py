@@ -43,7 +43,8 @@ def finding_dict(finding: Finding, fixable: Mapping[str, bool]) -> dict[str, obj
     """One finding as plain data; an unknown line or column (0) is null.
 
     ``fixable`` (rule code -> safe) gives the ``fixable`` key: whether ``lint --fix`` repairs
-    it, ``safe``, ``unsafe`` (only with ``--unsafe-fixes``) or null.
+    it, ``safe``, ``unsafe`` (only with ``--unsafe-fixes``) or null. ``related`` lists the
+    other places of the same mistake.
     """
     safe = fixable.get(finding.code)
     return {
@@ -56,6 +57,8 @@ def finding_dict(finding: Finding, fixable: Mapping[str, bool]) -> dict[str, obj
         "message": finding.message,
         "fix": finding.fix,
         "fixable": None if safe is None else "safe" if safe else "unsafe",
+        "related": [{"path": display_path(finding, span), "line": span.line or None,
+                     "column": span.col or None} for span in finding.related],
     }
 
 

@@ -11,6 +11,7 @@ from urllib.parse import quote
 
 from pkgtool import __version__
 from pkgtool.findings import Finding, Severity
+from pkgtool.model.span import Span
 from pkgtool.report import ReportContext, display_path
 from pkgtool.report.json import dumps
 from pkgtool.rules.registry import FAMILIES, Rule
@@ -46,14 +47,19 @@ def _uri(path: str) -> dict[str, str]:
     return {"uri": quote(path), "uriBaseId": "%SRCROOT%"}
 
 
-def _result(finding: Finding, index: dict[str, int], fixable: Mapping[str, bool]
-            ) -> dict[str, object]:
-    region = {"startLine": finding.span.line} if finding.span.line else {}
-    if region and finding.span.col:
-        region["startColumn"] = finding.span.col
-    location: dict[str, object] = {"artifactLocation": _uri(display_path(finding))}
+def _location(finding: Finding, span: Span) -> dict[str, object]:
+    region = {"startLine": span.line} if span.line else {}
+    if region and span.col:
+        region["startColumn"] = span.col
+    location: dict[str, object] = {"artifactLocation": _uri(display_path(finding, span))}
     if region:
         location["region"] = region
+    return location
+
+
+def _result(finding: Finding, index: dict[str, int], fixable: Mapping[str, bool]
+            ) -> dict[str, object]:
+    location = _location(finding, finding.span)
     properties = {"package": finding.package}
     if finding.code in fixable:
         properties["fixable"] = "safe" if fixable[finding.code] else "unsafe"
@@ -65,6 +71,9 @@ def _result(finding: Finding, index: dict[str, int], fixable: Mapping[str, bool]
         "locations": [{"physicalLocation": location}],
         "properties": properties,
     }
+    if finding.related:
+        result["relatedLocations"] = [{"id": number, "physicalLocation": _location(finding, span)}
+                                      for number, span in enumerate(finding.related, 1)]
     if finding.code in index:
         result["ruleIndex"] = index[finding.code]
     return result

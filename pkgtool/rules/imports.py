@@ -1,7 +1,8 @@
 """What the DEP, LCH and PYC rules share: which imports need a package.xml key, which are declared.
 
 An absolute import needs a key unless it is standard library (of the target distribution's
-Python), one of the package's own modules, or a module next to the importing file.
+Python), one of the package's own modules, a module next to the importing file, or (in test
+code) a module pytest puts on ``sys.path``.
 Third-party names map to rosdep keys through rosdep's data
 (:func:`pkgtool.knowledge.rosdistro.keys_for_import`); ROS names (released for the target, or
 ROS-looking) to ROS packages; Python packages of workspace packages to those packages; a name
@@ -11,6 +12,7 @@ that is none of these is ``unknown`` and only ever gets a guessed key.
 from __future__ import annotations
 
 import posixpath
+import re
 from collections.abc import Iterable, Iterator
 from dataclasses import dataclass
 from functools import lru_cache
@@ -147,6 +149,32 @@ def _siblings(package: Package, path: str) -> frozenset[str]:
     return _layout(package.files).children.get(posixpath.dirname(path), frozenset())
 
 
+_COLLECTED = re.compile(r"(?:test_.*|.*_test|conftest)\.py")
+
+
+@per_package
+def pytest_path_modules(package: Package) -> frozenset[str]:
+    """Modules pytest's default ``prepend`` import mode lets every test module import.
+
+    For each collected file (``test_*.py``, ``*_test.py``, ``conftest.py``) pytest puts its
+    first folder upwards without ``__init__.py`` on ``sys.path`` for the whole session, so a
+    helper module there (``test/temporary_environment.py``) imports by its bare name.
+    """
+    layout = _layout(package.files)
+    files = set(package.files)
+    names: set[str] = set()
+    for path in package.files:
+        if not _COLLECTED.fullmatch(posixpath.basename(path)):
+            continue
+        folder = posixpath.dirname(path)
+        while folder and folder in layout.packages:
+            folder = posixpath.dirname(folder)
+        prefix = folder + "/" if folder else ""
+        names.update(entry for entry in layout.children.get(folder, ())
+                     if prefix + entry + ".py" in files or prefix + entry in layout.packages)
+    return frozenset(names)
+
+
 def installed_code(package: Package) -> list[PythonModule]:
     """Non-test modules that setup.py installs (modules inside Python package folders)."""
     installed = installed_modules(package)
@@ -219,6 +247,8 @@ def needs(package: Package, module: PythonModule, *, guarded: bool | None = Fals
     import of an own module that the package itself imports only guarded counts as guarded.
     """
     skip = own_modules(package) | _siblings(package, module.path)
+    if module.is_test:
+        skip |= pytest_path_modules(package)
     stdlib = _stdlib(package.context.distro)
     names = declared(package, ANY)
     optional = module.path in optional_modules(package)
@@ -232,6 +262,29 @@ def needs(package: Package, module: PythonModule, *, guarded: bool | None = Fals
         seen.add(top)
         kind, keys = classify(top, names, package.context)
         yield Need(module, imported, top, kind, keys)
+
+
+MAX_PLACES = 5
+"""Other places of one mistake a message names (``related`` has them all)."""
+
+
+def grouped(found: Iterable[Need]) -> Iterator[tuple[Need, tuple[Need, ...]]]:
+    """Needs of one top-level name together, first place first: one mistake, one hit."""
+    groups: dict[str, list[Need]] = {}
+    for need in found:
+        groups.setdefault(need.top, []).append(need)
+    for first, *others in groups.values():
+        yield first, tuple(others)
+
+
+def also_imported(others: tuple[Need, ...]) -> str:
+    """``; also imported in `a.py:3`, ...`` for the other places of a need (or nothing)."""
+    if not others:
+        return ""
+    places = ", ".join(f"`{n.imported.span.path}:{n.imported.span.line}`"
+                       for n in others[:MAX_PLACES])
+    more = f" and {len(others) - MAX_PLACES} more" if len(others) > MAX_PLACES else ""
+    return f"; also imported in {places}{more}"
 
 
 def unmet_runtime_needs(package: Package) -> Iterator[Need]:

@@ -18,10 +18,12 @@ def test_values() -> None:
     assert document["findings"] == [
         {"rule": "MAN013", "severity": "warning", "package": "pkg",
          "path": "src/pkg/package.xml", "line": None, "column": None,
-         "message": "Python syntax error: invalid syntax", "fix": None, "fixable": "safe"},
+         "message": "Python syntax error: invalid syntax", "fix": None, "fixable": "safe",
+         "related": []},
         {"rule": "SYN001", "severity": "error", "package": "pkg", "path": "src/pkg/pkg/node.py",
          "line": 3, "column": 5, "message": "Python syntax error: invalid syntax",
-         "fix": "Fix the syntax at the reported line and column", "fixable": None},
+         "fix": "Fix the syntax at the reported line and column", "fixable": None,
+         "related": []},
     ]
     assert document["summary"] == {"error": 1, "warning": 1, "info": 0, "packages": 2}
 

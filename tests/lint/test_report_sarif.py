@@ -66,3 +66,19 @@ def test_the_document_is_valid_against_the_official_sarif_schema() -> None:
     assert not errors, "\n".join(f"{list(e.absolute_path)}: {e.message}" for e in errors[:5])
     broken = {**document, "runs": [{**document["runs"][0], "results": [{"level": "fatal"}]}]}
     assert not validator.is_valid(broken)  # the validator does reject what the schema forbids
+
+
+def test_related_places_are_related_locations() -> None:
+    from dataclasses import replace
+
+    from pkgtool.model.span import Span
+
+    finding = replace(make_finding("MAN004", path="package.xml", line=5),
+                      related=(Span("package.xml", 9, 3), Span("setup.py")))
+    (result,) = _run(finding)["results"]
+    assert result["locations"][0]["physicalLocation"]["region"]["startLine"] == 5
+    assert [(r["id"], r["physicalLocation"]["artifactLocation"]["uri"],
+             r["physicalLocation"].get("region")) for r in result["relatedLocations"]] == [
+        (1, "src/pkg/package.xml", {"startLine": 9, "startColumn": 3}),
+        (2, "src/pkg/setup.py", None)]
+    assert "relatedLocations" not in _run(make_finding())["results"][0]

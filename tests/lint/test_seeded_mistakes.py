@@ -64,8 +64,9 @@ def test_seeded_mistake_is_reported(bases: dict[str, Path], tmp_path: Path,
     case.mutate(root)
     got = _default_findings(root)
     line = _line_of(root, case)
-    matching = [f for f in got if f.code == case.code
-                and case.path in (None, f.span.path) and line in (None, f.span.line)]
+    matching = [f for f in got if f.code == case.code  # at its first place or a related one
+                and any(case.path in (None, s.path) and line in (None, s.line)
+                        for s in (f.span, *f.related))]
     where = f" at {case.path}:{line}" if case.path else ""
     assert matching, (f"{case.code}{where} not reported; got: " +
                       "; ".join(f"{f.code} {f.span.path}:{f.span.line} {f.message}" for f in got))

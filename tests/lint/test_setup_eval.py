@@ -116,6 +116,29 @@ def test_globs_match_like_the_glob_module() -> None:
     assert sources["d"].matches == ()
 
 
+def test_globs_keep_the_spelling_glob_returns() -> None:
+    """``glob`` keeps the literal folders as written and a trailing slash (the oracle's finds)."""
+    setup = evaluate("""
+        import os
+        from glob import glob
+        from setuptools import setup
+        setup(description=' '.join(glob('./launch/*.py') + glob(os.path.join('.', 'config', '*'))),
+              maintainer=' '.join(glob('launch//*/') + glob('launch/**/', recursive=True)))
+    """)
+    assert setup.description and setup.description.value == \
+        "./launch/a.launch.py ./launch/b_launch.py ./config/params.yaml"
+    assert setup.maintainer and setup.maintainer.value == "launch/sub/ launch/ launch/sub/"
+
+
+@pytest.mark.parametrize("call", ["glob('missing/**', recursive=True)", "glob('launch/*/./x')",
+                                  "glob('tool.py/**', recursive=True)"])
+def test_globs_glob_answers_oddly_are_unresolved(call: str) -> None:
+    """``glob('missing/**', recursive=True)`` is ``['missing/']`` in CPython: not guessed."""
+    setup = evaluate(f"from glob import glob\nfrom setuptools import setup\n"
+                     f"setup(data_files=[('share/demo', {call})])")
+    assert setup.is_unresolved("data_files")
+
+
 def test_pathlib_globbing_and_str_of_paths() -> None:
     setup = evaluate("""
         from pathlib import Path

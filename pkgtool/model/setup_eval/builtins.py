@@ -12,7 +12,7 @@ from pathlib import PurePosixPath
 from typing import TYPE_CHECKING, Any
 
 from pkgtool.model.setup_eval.bounds import bounded_format, bounded_join, bounded_replace
-from pkgtool.model.setup_eval.tree import normalize
+from pkgtool.model.setup_eval.tree import normalize, spelled_as_written
 from pkgtool.model.setup_eval.values import (
     PRIMITIVES, BoundMethod, Builtin, Found, GlobOrigin, PathValue, Str, UserFunc, origins_of,
     tagged_list, tagged_str, tagged_tuple,
@@ -72,9 +72,16 @@ def _relative(interp: Interpreter, value: Any, node: ast.AST) -> str:
 
 
 def _glob(interp: Interpreter, pattern: Any, node: ast.AST, *, recursive: bool) -> list[Str]:
-    origin = GlobOrigin(_relative(interp, pattern, node), interp.span(node))
-    found = interp.guard(lambda: interp.tree.glob(origin.pattern, recursive=recursive), node)
-    items = [tagged_str(path, origin.span, origin) for path in found]
+    written = text(interp, pattern, node)
+    origin = GlobOrigin(_relative(interp, written, node), interp.span(node))
+    slash = "/" if written.endswith("/") and origin.pattern else ""
+    found = interp.guard(lambda: interp.tree.glob(origin.pattern + slash, recursive=recursive),
+                         node)
+    spelled = spelled_as_written(written, found)
+    if spelled is None or recursive and not found and origin.pattern.endswith("**"):
+        # glob('missing/**', recursive=True) is ['missing/'] in CPython, not []
+        raise interp.refuse(node)
+    items = [tagged_str(path, origin.span, origin) for path in spelled]
     return tagged_list(items, origin.span, (origin,))
 
 

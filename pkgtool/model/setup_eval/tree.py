@@ -155,5 +155,29 @@ class Tree:
         return sorted(found)
 
 
+def spelled_as_written(pattern: str, matches: list[str]) -> list[str] | None:
+    """``matches`` of ``normalize(pattern)`` spelled as ``glob.glob(pattern)`` returns them.
+
+    glob keeps the literal folders before the first wildcard as written (``./launch/x``) and a
+    trailing slash; None when other spellings (``*/./x``, ``*//x``) would need more care.
+    """
+    parts = pattern.split("/")
+    first = next((i for i, part in enumerate(parts) if _MAGIC.search(part)), len(parts))
+    rest = parts[first:]
+    if any(part in ("", ".", "..") for part in rest[:-1]) or rest[-1:] in (["."], [".."]):
+        return None
+    trailing = "/" if pattern.endswith("/") else ""
+    if not rest:
+        return [pattern for _ in matches]
+    head = "/".join(parts[:first]).rstrip("/")
+    normal = normalize(head) if head else ""
+    if normal is None:
+        return None
+    cut = len(normal) + 1 if normal else 0
+    prefix = head + "/" if head else ""
+    return [prefix + match[cut:].rstrip("/") + trailing if match != normal + "/" else
+            prefix for match in matches]
+
+
 def _join(base: str, name: str) -> str:
     return f"{base}/{name}" if base else name

@@ -7,8 +7,8 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import (BUILD_ONLY, TEST, Need, declared, misnamed,
-                                   unmet_runtime_needs)
+from pkgtool.rules.imports import (BUILD_ONLY, TEST, Need, also_imported, declared, grouped,
+                                   misnamed, unmet_runtime_needs)
 from pkgtool.rules.registry import rule
 
 
@@ -45,11 +45,12 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     """
     build_only = declared(package, BUILD_ONLY)
     tests = declared(package, TEST)
-    for need in unmet_runtime_needs(package):
-        if need.kind == "unknown" or any(k in build_only for k in need.keys):
-            continue  # DEP004's case, DEP002's case
-        yield Hit(need.imported.span, _message(package, need, tests),
-                  f"Add `<exec_depend>{need.key}</exec_depend>` to package.xml")
+    unmet = (need for need in unmet_runtime_needs(package)  # not DEP004's, DEP002's cases
+             if need.kind != "unknown" and not any(k in build_only for k in need.keys))
+    for need, others in grouped(unmet):
+        yield Hit(need.imported.span, _message(package, need, tests) + also_imported(others),
+                  f"Add `<exec_depend>{need.key}</exec_depend>` to package.xml",
+                  related=tuple(other.imported.span for other in others))
 
 
 def _message(package: Package, need: Need, tests: dict[str, Dependency]) -> str:

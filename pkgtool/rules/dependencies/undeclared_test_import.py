@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import ANY, declared, needs, test_code
+from pkgtool.rules.imports import ANY, also_imported, declared, grouped, needs, test_code
 from pkgtool.rules.registry import rule
 
 
@@ -39,9 +39,10 @@ def undeclared_test_import(package: Package) -> Iterator[Hit]:
     if package.manifest is None:
         return
     available = declared(package, ANY)
-    for module in test_code(package):
-        for need in needs(package, module):
-            if need.kind != "unknown" and not any(k in available for k in need.keys):
-                yield Hit(need.imported.span,
-                          f"`{need.top}` is imported by a test but {need.missing}",
-                          f"Add `<test_depend>{need.key}</test_depend>` to package.xml")
+    unmet = (need for module in test_code(package) for need in needs(package, module)
+             if need.kind != "unknown" and not any(k in available for k in need.keys))
+    for need, others in grouped(unmet):
+        yield Hit(need.imported.span,
+                  f"`{need.top}` is imported by a test but {need.missing}" + also_imported(others),
+                  f"Add `<test_depend>{need.key}</test_depend>` to package.xml",
+                  related=tuple(other.imported.span for other in others))

@@ -7,7 +7,8 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.knowledge.rosdep import ROS1_PACKAGES
-from pkgtool.rules.imports import ANY, all_python, declared, needs
+from pkgtool.model.modules import PythonModule
+from pkgtool.rules.imports import ANY, also_imported, declared, grouped, needs
 from pkgtool.rules.registry import rule
 
 
@@ -18,7 +19,8 @@ def unknown_import(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Reports unguarded absolute imports (in any module or Python launch file) of names that
-    are not standard library (of the target distribution's Python), not the package's own,
+    are not standard library (of the target distribution's Python), not the package's own
+    (for test code, also a helper module in a folder pytest puts on `sys.path`),
     not ROS (released for the target distribution, or ROS by name), and not a module that
     rosdep's data maps to a key (the pip and Debian names in rosdistro's `python.yaml`),
     unless a key that looks like it
@@ -44,18 +46,30 @@ def unknown_import(package: Package) -> Iterator[Hit]:
     <exec_depend>python3-filterpy-pip</exec_depend>
     ```
     """
+    if package.manifest is None:
+        return
     available = declared(package, ANY)
-    for module in all_python(package) if package.manifest else ():
-        for need in needs(package, module):
-            if need.kind != "unknown" or any(k in available for k in need.keys):
-                continue
+    for modules in _by_kind(package):
+        unknown = (need for module in modules for need in needs(package, module)
+                   if need.kind == "unknown" and not any(k in available for k in need.keys))
+        for need, others in grouped(unknown):
+            related = tuple(other.imported.span for other in others)
             if need.top in ROS1_PACKAGES:
                 yield Hit(need.imported.span, f"`{need.top}` is a ROS 1 module: ROS 2 does not "
-                          "have it", f"Port the code to {ROS1_PACKAGES[need.top]}")
+                          f"have it{also_imported(others)}",
+                          f"Port the code to {ROS1_PACKAGES[need.top]}", related)
             else:
                 yield Hit(need.imported.span,
                           f"`{need.top}` is not a known ROS package or Python module; its "
-                          f"rosdep key might be `{need.key}` (a guess from the name)",
+                          f"rosdep key might be `{need.key}` (a guess from the name)"
+                          f"{also_imported(others)}",
                           f"Declare the key that installs `{need.top}`, e.g. "
                           f"`<exec_depend>{need.key}</exec_depend>` if `rosdep resolve "
-                          f"{need.key}` knows it")
+                          f"{need.key}` knows it", related)
+
+
+def _by_kind(package: Package) -> tuple[list[PythonModule], ...]:
+    """Code, tests and launch files: one finding per unknown name and kind of file."""
+    launch = [f.python for f in package.launch_files if f.python]
+    return ([m for m in package.modules if not m.is_test],
+            [m for m in package.modules if m.is_test], launch)

@@ -20,6 +20,7 @@ def element_out_of_order(package: Package) -> Iterator[Hit]:
     Checks the order of the children of ``<package>`` against the XSD of the manifest's format:
     name, version, description, maintainer, license, url, author, then the dependency tags in
     any order among themselves, then (format 3) group_depend and member_of_group, then export.
+    One finding per package.xml, at the first misplaced element; it lists the others.
 
     ## Why is this bad?
     The schemas define ``<package>`` as a sequence: a manifest in another order fails
@@ -45,9 +46,16 @@ def element_out_of_order(package: Package) -> Iterator[Hit]:
     found = tree(package)
     if found is None:
         return
-    for item in misplaced(found):
-        if not item.duplicate:
-            yield Hit(item.element.span,
-                      f"`<{item.element.tag}>` must come before `<{item.before.tag}>` "
-                      f"(line {item.before.span.line})",
-                      f"Move `<{item.element.tag}>` up; the order is {ORDER_HINT[found.format]}")
+    items = [item for item in misplaced(found) if not item.duplicate]
+    if not items:
+        return
+    first, others = items[0], items[1:]
+    message = (f"`<{first.element.tag}>` must come before `<{first.before.tag}>` "
+               f"(line {first.before.span.line})")
+    if others:
+        message += "; also out of order: " + ", ".join(
+            f"`<{o.element.tag}>` (line {o.element.span.line})" for o in others)
+    moved = ", ".join(dict.fromkeys(f"`<{item.element.tag}>`" for item in items))
+    yield Hit(first.element.span, message,
+              f"Move {moved} up; the order is {ORDER_HINT[found.format]}",
+              related=tuple(o.element.span for o in others))
