@@ -3,8 +3,8 @@
     python bench/bench_fix.py [--colcon] [--corpus DIR]
 
 1. Mutants: every seeded mistake (tests/lint/seeded) of a rule that has a fix, applied to the
-   package ``pkgtool create`` writes or to a reference package. Share that ``--fix`` returns to
-   no finding of that rule (and, with ``--colcon``, that then build and pass their tests).
+   package ``pkgtool create`` writes or to a reference package. Share that ``--fix`` (with
+   ``--unsafe-fixes`` for a rule whose fix is unsafe) returns to no finding of that rule (and, with ``--colcon``, that then build and pass their tests).
 2. Clean packages (the created one, the reference packages): ``--fix --unsafe-fixes`` must not
    change a byte.
 3. The real-world corpus (bench/realworld/corpus.py build): packages without fixable findings
@@ -59,7 +59,7 @@ def mutants(scratch: Path, colcon: bool) -> None:
         source = bases.get(case.base) or REFERENCE / case.base
         shutil.copytree(source, root)
         case.mutate(root)
-        after = keys(root, fix=True)
+        after = keys(root, fix=True, unsafe_fixes=not fixers()[case.code].safe)
         ok = not any(code == case.code for code, _, _ in after)
         cleared.append(ok)
         if not ok:

@@ -4,6 +4,7 @@ names, misspelled), SPDX."""
 from __future__ import annotations
 
 from collections.abc import Iterator
+from dataclasses import replace
 
 from pkgtool.edit.core import Fix
 from pkgtool.edit.manifest import ManifestDoc
@@ -85,22 +86,24 @@ def rosdep_key(package: Package, findings: list[Finding]) -> Iterator[Fix]:
             yield _rename(doc, element, key)
 
 
-@fixer("MAN021", "Write the one known name the misspelled dependency is close to")
+@fixer("MAN021", "Write the one known name the misspelled dependency is close to",
+       safe=False)
 def misspelled(package: Package, findings: list[Finding]) -> Iterator[Fix]:
-    """Rename the key when exactly one released package, rosdep key or workspace package is
-    spelled like it. Safe: the misspelled key resolves to nothing, so no working dependency
-    changes. With two or more near misses there is no fix: the user chooses."""
+    """Rename the key when exactly one released package, rosdep key or other workspace package
+    is spelled like it. Unsafe: the key may name a package pkgtool cannot see (another
+    repository, a sibling when one package is linted alone), which the rename would replace.
+    With two or more near misses there is no fix: the user chooses."""
     doc = manifest_doc(package)
     if doc is None:
         return
-    local = frozenset(package.context.workspace) | {package.name}
+    others = frozenset(package.context.workspace) - {package.name}
     for finding in findings:
         element = child_at(doc, finding.span.line)
         if element is None:
             continue
-        close = close_names(doc.text_of(element), package.context.distro, extra=local, limit=2)
+        close = close_names(doc.text_of(element), package.context.distro, extra=others, limit=2)
         if len(close) == 1:
-            yield _rename(doc, element, close[0])
+            yield replace(_rename(doc, element, close[0]), safe=False)
 
 
 def _rename(doc: ManifestDoc, element: Element, key: str) -> Fix:

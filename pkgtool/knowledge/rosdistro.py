@@ -100,9 +100,30 @@ def alternative_key(key: str, distro: str = DEFAULT_DISTRO) -> str | None:
 
 def close_names(name: str, distro: str = DEFAULT_DISTRO, *, extra: frozenset[str] = frozenset(),
                 limit: int = 1) -> list[str]:
-    """Released packages, rosdep keys and ``extra`` names spelled like ``name`` (near misses)."""
+    """Released packages, rosdep keys and ``extra`` names spelled like ``name``: near misses
+    that are also a typo away (one edit for names under 14 characters, else two; a swap of
+    neighbours is one), so that a different package with a similar name is not offered."""
     candidates = _candidates(distro) | extra
-    return difflib.get_close_matches(name, candidates, n=limit, cutoff=0.85)
+    similar = difflib.get_close_matches(name, candidates, n=max(limit, 20), cutoff=0.7)
+    budget = 1 if len(name) < 14 else 2
+    return [c for c in similar if typo_distance(name, c, budget) <= budget][:limit]
+
+
+def typo_distance(first: str, second: str, budget: int) -> int:
+    """Edits (insert, delete, replace, swap of neighbours) from ``first`` to ``second``;
+    anything above ``budget`` is reported as ``budget + 1``."""
+    if abs(len(first) - len(second)) > budget:
+        return budget + 1
+    before: list[int] = []
+    row = list(range(len(second) + 1))
+    for i, a in enumerate(first, 1):
+        current = [i] + [0] * len(second)
+        for j, b in enumerate(second, 1):
+            current[j] = min(row[j] + 1, current[j - 1] + 1, row[j - 1] + (a != b))
+            if i > 1 and j > 1 and a == second[j - 2] and first[i - 2] == b:
+                current[j] = min(current[j], before[j - 2] + 1)
+        before, row = row, current
+    return min(row[-1], budget + 1)
 
 
 @cache

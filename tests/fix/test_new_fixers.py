@@ -28,20 +28,21 @@ def _package(tmp_path: Path, **changes: tuple[str, str]) -> Path:
     return root
 
 
-def _fix(root: Path, code: str) -> LintResult:
-    return run([str(root)], options=LintOptions(isolated=True, fix=True, select=(code,)))
+def _fix(root: Path, code: str, *, unsafe: bool = False) -> LintResult:
+    return run([str(root)], options=LintOptions(isolated=True, fix=True, select=(code,),
+                                                 unsafe_fixes=unsafe))
 
 
 def _read(root: Path, path: str) -> str:
     return (root / path).read_text()
 
 
-def _fixed_once(root: Path, code: str, path: str) -> str:
+def _fixed_once(root: Path, code: str, path: str, *, unsafe: bool = False) -> str:
     """Fix ``code``, check no finding of it is left and a second run changes nothing."""
-    result = _fix(root, code)
+    result = _fix(root, code, unsafe=unsafe)
     assert not [f for f in result.findings if f.code == code], result.findings
     text = _read(root, path)
-    again = _fix(root, code)
+    again = _fix(root, code, unsafe=unsafe)
     assert not again.fixed and _read(root, path) == text
     return text
 
@@ -66,15 +67,28 @@ def test_buildtool_depend_gains_an_exec_depend(tmp_path: Path) -> None:
 def test_misspelled_dependency_with_one_near_miss_is_written(tmp_path: Path) -> None:
     root = _package(tmp_path, package_dot_xml=(STD_MSGS, "  <exec_depend>std_msg</exec_depend>\n"))
     before = _read(root, "package.xml")
-    assert _fixed_once(root, "MAN021", "package.xml") == before.replace(
+    _fix(root, "MAN021")
+    assert _read(root, "package.xml") == before, "an unsafe fix needs --unsafe-fixes"
+    assert _fixed_once(root, "MAN021", "package.xml", unsafe=True) == before.replace(
         ">std_msg<", ">std_msgs<")
+
+
+def test_a_dependency_unlike_any_known_name_is_not_renamed(tmp_path: Path) -> None:
+    """`science_interfaces` is close to the released `soccer_interfaces` by ratio, but no typo
+    turns one into the other: a package pkgtool cannot see, not a misspelling."""
+    root = _package(tmp_path, package_dot_xml=(
+        STD_MSGS, "  <exec_depend>science_interfaces</exec_depend>\n"))
+    before = _read(root, "package.xml")
+    result = _fix(root, "MAN", unsafe=True)
+    assert _read(root, "package.xml") == before
+    assert [f.code for f in result.findings] == ["MAN022"]
 
 
 def test_misspelled_dependency_with_two_near_misses_stays(tmp_path: Path) -> None:
     root = _package(tmp_path, package_dot_xml=(
-        RCLPY, RCLPY + "  <exec_depend>python3-numpi</exec_depend>\n"))
+        RCLPY, RCLPY + "  <exec_depend>python3-pyqt</exec_depend>\n"))  # pyqt5 or pyqt6?
     before = _read(root, "package.xml")
-    result = _fix(root, "MAN021")
+    result = _fix(root, "MAN021", unsafe=True)
     assert [f.code for f in result.findings] == ["MAN021"]
     assert _read(root, "package.xml") == before
 

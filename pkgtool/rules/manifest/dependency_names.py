@@ -77,6 +77,7 @@ def unknown_dependencies(package: Package) -> list[Unknown]:
         if name in local or rosdistro.is_known_dependency(name, distro) or name in stdlib:
             continue
         elsewhere = tuple(d for d in DISTROS if rosdistro.is_released_package(name, d))
-        close = [] if elsewhere else rosdistro.close_names(name, distro, extra=local)
+        others = local - {package.name}  # depending on itself is MAN014's, never a near miss
+        close = [] if elsewhere else rosdistro.close_names(name, distro, extra=others)
         found.append(Unknown(dependency, close[0] if close else None, elsewhere))
     return found
