@@ -4,7 +4,8 @@
 
 1. Mutants: every seeded mistake (tests/lint/seeded) of a rule that has a fix, applied to the
    package ``pkgtool create`` writes or to a reference package. Share that ``--fix`` (with
-   ``--unsafe-fixes`` for a rule whose fix is unsafe) returns to no finding of that rule (and, with ``--colcon``, that then build and pass their tests).
+   ``--unsafe-fixes`` for a rule whose fix is unsafe) returns to no finding of that rule
+   (and, with ``--colcon``, that then build and pass their tests).
 2. Clean packages (the created one, the reference packages): ``--fix --unsafe-fixes`` must not
    change a byte.
 3. The real-world corpus (bench/realworld/corpus.py build): packages without fixable findings

@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from pkgtool.config import ALL, Layer, settings_for
-from pkgtool.findings import Finding, Severity
+from pkgtool.findings import Finding, Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import Rule
@@ -48,21 +48,45 @@ def check_package(package: Package, rules: Iterable[Rule], *, root_label: str,
     A rule that raises does not stop the run: its hits so far are dropped and it yields one
     error finding marked ``internal`` that names the rule and the exception.
     """
-    findings = []
+    found: list[tuple[Finding, Hit | None]] = []
     overrides = severities or {}
     for rule in rules:
         try:
             hits = list(rule.check(package))
         except Exception as error:  # noqa: BLE001 - a broken rule must not hide the others
-            findings.append(_internal_error(package, rule, error, root_label))
+            found.append((_internal_error(package, rule, error, root_label), None))
             continue
         for hit in hits:
             finding = Finding(rule.code, overrides.get(rule.code, rule.severity), package.name,
                               root_label, hit.span, hit.message, hit.fix or rule.fix,
                               related=hit.related)
             if not _suppressed(package, finding, rule):
-                findings.append(finding)
-    return sorted(set(findings), key=lambda f: f.sort_key)
+                found.append((finding, hit))
+    return sorted(set(_fold_consequences(found)), key=lambda f: f.sort_key)
+
+
+def _fold_consequences(found: list[tuple[Finding, Hit | None]]) -> list[Finding]:
+    """One finding per root cause: consequence hits join the finding that states their cause
+    (its places in ``related``, named in its message, its severity the worst of them)."""
+    causes = {hit.cause: finding for finding, hit in found
+              if hit is not None and hit.cause and not hit.consequence}
+    joined: dict[str, list[Finding]] = {}
+    kept = []
+    for finding, hit in found:
+        if hit is not None and hit.consequence and hit.cause in causes:
+            joined.setdefault(hit.cause, []).append(finding)
+        else:
+            kept.append(finding)
+    for cause, parts in joined.items():
+        stated = causes[cause]
+        parts.sort(key=lambda f: f.sort_key)
+        places = ", ".join(f"`{f.span.path}:{f.span.line}` ({f.code})" for f in parts)
+        worst = max((stated, *parts), key=lambda f: f.severity.rank).severity
+        related = stated.related + tuple(span for f in parts for span in (f.span, *f.related))
+        kept[kept.index(stated)] = replace(
+            stated, severity=worst, related=related,
+            message=f"{stated.message}; the same mistake shows in {places}")
+    return kept
 
 
 def _internal_error(package: Package, rule: Rule, error: Exception, root_label: str) -> Finding:

@@ -29,12 +29,19 @@ class Hit:
     ``fix`` is an imperative one-liner, or None when the rule's generic fix applies.
     ``related`` are the other places of the same mistake (one root cause, one hit): ``span``
     is the first or root place, the message names the others.
+
+    ``cause`` names a root cause that hits of several rules can share (``package-name:x``:
+    the package is called ``x`` somewhere it should not be). A ``consequence`` hit is folded by
+    the engine into the hit of the same cause that is not one (the hit stating the cause),
+    when that one is reported too; otherwise it stands alone.
     """
 
     span: Span
     message: str
     fix: str | None = None
     related: tuple[Span, ...] = ()
+    cause: str = ""
+    consequence: bool = False
 
 
 @dataclass(frozen=True, slots=True)

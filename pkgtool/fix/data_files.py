@@ -47,6 +47,22 @@ def _literal_only(entry: DataFile, doc: SetupDoc) -> tuple[object, object] | Non
     return None
 
 
+@fixer("DAT001", "Create the missing ament index marker file")
+def missing_marker(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Create the empty ``resource/<package>`` that data_files installs as the ament index
+    marker (after a rename, say). Safe: the marker's content is never read. Any other missing
+    file has content only its author knows: no fix."""
+    marker_path = f"resource/{package.name}"
+    entries = package.setup_py.data_files or () if package.setup_py else ()
+    for finding in findings:
+        sources = (source for entry in entries if entry.destination.rstrip("/") == MARKER_FOLDER
+                   for source in entry.sources)
+        if any(s.span == finding.span and posixpath.normpath(s.pattern) == marker_path
+               for s in sources) and _marker_file(package):
+            yield Fix(f"Create the empty `{marker_path}`", tuple(_marker_file(package)))
+            return
+
+
 @fixer("DAT003", "Install the ament index marker")
 def marker(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
     """Add the marker entry (creating the empty ``resource/<package>``), or correct the

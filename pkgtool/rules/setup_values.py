@@ -10,6 +10,12 @@ from pkgtool.model.setup_py import SetupPy, Value
 from pkgtool.model.span import Span
 
 
+def name_cause(name: str) -> str:
+    """The root cause "the package is called ``name`` here, not its package.xml name": SET003
+    states it; SET009, DAT003 and DAT004 hits that use ``name`` are its consequences."""
+    return f"package-name:{name}"
+
+
 def checked_setup(package: Package) -> SetupPy | None:
     """setup.py of an ament_python package with a package.xml, when it calls setup()."""
     setup = package.setup_py

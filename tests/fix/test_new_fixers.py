@@ -29,8 +29,8 @@ def _package(tmp_path: Path, **changes: tuple[str, str]) -> Path:
 
 
 def _fix(root: Path, code: str, *, unsafe: bool = False) -> LintResult:
-    return run([str(root)], options=LintOptions(isolated=True, fix=True, select=(code,),
-                                                 unsafe_fixes=unsafe))
+    options = LintOptions(isolated=True, fix=True, select=(code,), unsafe_fixes=unsafe)
+    return run([str(root)], options=options)
 
 
 def _read(root: Path, path: str) -> str:

@@ -9,7 +9,7 @@ from pkgtool.model.installed import keyword_known
 from pkgtool.model.package import Package
 from pkgtool.rules.data_files.common import entries_to, source_names
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup_values import checked_setup
+from pkgtool.rules.setup_values import checked_setup, name_cause
 
 
 @rule("DAT004", "uninstalled-package-xml", Severity.WARNING,
@@ -49,6 +49,8 @@ def uninstalled_package_xml(package: Package) -> Iterator[Hit]:
                       if "package.xml" in source_names(source)), None)
     if elsewhere is not None:
         yield Hit(elsewhere.span, f"`package.xml` is installed to `{elsewhere.destination}`, "
-                                  f"not `{share}`", "Install it to `'share/' + package_name`")
+                                  f"not `{share}`", "Install it to `'share/' + package_name`",
+                  cause=name_cause(elsewhere.destination.strip("/").removeprefix("share/")),
+                  consequence=True)
     else:
         yield Hit(setup.setup_span, f"`package.xml` is not installed to `{share}`")

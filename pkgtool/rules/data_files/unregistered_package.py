@@ -10,7 +10,7 @@ from pkgtool.model.installed import keyword_known
 from pkgtool.model.package import Package
 from pkgtool.rules.data_files.common import MARKER_FOLDER, entries_to, source_names
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup_values import checked_setup
+from pkgtool.rules.setup_values import checked_setup, name_cause
 
 
 @rule("DAT003", "unregistered-package", Severity.ERROR,
@@ -51,7 +51,9 @@ def unregistered_package(package: Package) -> Iterator[Hit]:
         entry = declared[0][0]
         shown = ", ".join(f"`{n}`" for n in sorted(names)) or "nothing"
         yield Hit(entry.span, f"The ament index marker installed is {shown}, not "
-                              f"`{package.name}`: ROS 2 cannot find `{package.name}`")
+                              f"`{package.name}`: ROS 2 cannot find `{package.name}`",
+                  cause=name_cause(min(names)) if len(names) == 1 else "",
+                  consequence=True)
         return
     elsewhere = next((e for e in setup.data_files or () for source in e.sources
                       for n in source_names(source) if posixpath.basename(n) == package.name

@@ -11,7 +11,7 @@ from pkgtool.model.setup_cfg import CfgOption
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
 from pkgtool.rules.setup._ros2_run import meant_for_ros2_run
-from pkgtool.rules.setup_values import checked_setup
+from pkgtool.rules.setup_values import checked_setup, name_cause
 
 SCRIPT_OPTIONS = (("develop", "script_dir"), ("install", "install_scripts"))
 
@@ -83,4 +83,6 @@ def wrong_script_dir(package: Package) -> Iterator[Hit]:
                           f"`bin/`, not `lib/{package.name}`")
         elif _normal(option.value) != wanted:
             yield Hit(option.span, f"`{option.key}` is `{option.value}`, not `{wanted}`: "
-                                   f"`ros2 run {package.name}` will not find the executables")
+                                   f"`ros2 run {package.name}` will not find the executables",
+                      cause=name_cause(_normal(option.value).rpartition("/lib/")[2]),
+                      consequence=True)

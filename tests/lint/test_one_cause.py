@@ -1,0 +1,38 @@
+"""One root cause, one finding: consequences fold into the finding that states their cause."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+from pkgtool.commands.lint import LintOptions, run
+from pkgtool.findings import Severity
+
+FIXTURE = Path(__file__).parents[1] / "fixtures" / "SET003" / "bad" / \
+    "package_xml_name_differs_everywhere"
+
+
+def _lint(root: Path, **options: object):  # type: ignore[no-untyped-def]
+    return run([str(root)], options=LintOptions(isolated=True, **options)).findings
+
+
+def test_a_name_mistake_is_one_error_listing_its_places() -> None:
+    (finding,) = _lint(FIXTURE)
+    assert finding.code == "SET003" and finding.severity is Severity.ERROR  # worst of its parts
+    assert [(s.path, s.line) for s in finding.related] == [
+        ("setup.cfg", 2), ("setup.cfg", 4), ("setup.py", 12), ("setup.py", 13)]
+    assert "`setup.cfg:2` (SET009)" in finding.message
+
+
+def test_without_the_stated_cause_each_consequence_stands_alone() -> None:
+    found = _lint(FIXTURE, ignore=("SET003",))
+    assert sorted(f.code for f in found) == ["DAT003", "DAT004", "SET009", "SET009"]
+    assert all(not f.related for f in found)
+
+
+def test_fix_follows_package_xml_and_creates_the_marker(tmp_path: Path) -> None:
+    root = tmp_path / "pkg"
+    shutil.copytree(FIXTURE, root)
+    assert not _lint(root, fix=True)
+    assert (root / "resource" / "goodpkg").read_bytes() == b""
+    assert "$base/lib/goodpkg" in (root / "setup.cfg").read_text()
