@@ -6,8 +6,7 @@ import posixpath
 import re
 from collections.abc import Iterator
 from difflib import SequenceMatcher
-
-import yaml
+from typing import TYPE_CHECKING
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import installed_data
@@ -16,10 +15,18 @@ from pkgtool.model.package import Package, is_test_material
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
 
+if TYPE_CHECKING:  # the rule reads nodes yaml_problem built: PyYAML is imported only then
+    import yaml
+
 PARAMS_KEY = "ros__parameters"
 _ALIASES = frozenset({"parameters", "parameter", "params", "param"})
 """Keys that stand for ``ros__parameters`` right under a node name, once a file is known to
 hold parameters."""
+
+
+def _is(node: object, kind: str) -> bool:
+    """True when ``node`` is a YAML node of ``kind`` (``mapping``, ``sequence``, ``scalar``)."""
+    return getattr(node, "id", None) == kind
 
 
 def _normal(key: str) -> str:
@@ -29,7 +36,7 @@ def _normal(key: str) -> str:
 def _near_miss(key: str, value: yaml.Node) -> bool:
     """``ros_parameters:``, ``ros__parameter:``, ``ros_params:``... holding a mapping."""
     normal = _normal(key)
-    return isinstance(value, yaml.MappingNode) and not key.startswith(PARAMS_KEY) and \
+    return _is(value, "mapping") and not key.startswith(PARAMS_KEY) and \
         normal.startswith("ros") and SequenceMatcher(None, normal, "rosparameters").ratio() >= 0.75
 
 
@@ -39,11 +46,11 @@ def _items(node: yaml.Node) -> Iterator[tuple[str, yaml.Node]]:
     stack = [node]
     while stack:
         current = stack.pop()
-        if id(current) in seen or not isinstance(current, yaml.MappingNode):
+        if id(current) in seen or not _is(current, "mapping"):
             continue
         seen.add(id(current))
         for key, value in current.value:
-            if isinstance(key, yaml.ScalarNode):
+            if _is(key, "scalar"):
                 yield str(key.value), value
             stack.append(value)
 
@@ -67,18 +74,18 @@ def _node_level(path: str, mapping: yaml.MappingNode, names: tuple[str, ...], pa
     """
     if depth > 50:
         return
-    keys = [str(k.value) for k, _ in mapping.value if isinstance(k, yaml.ScalarNode)]
+    keys = [str(k.value) for k, _ in mapping.value if _is(k, "scalar")]
     beside = any(k.startswith(PARAMS_KEY) for k in keys)
     stray_reported = False
     for key, value in mapping.value:
-        if not isinstance(key, yaml.ScalarNode):
+        if not _is(key, "scalar"):
             continue
         name = str(key.value)
         if name.startswith(PARAMS_KEY):
             if not names:
                 yield Hit(_span(path, key), "`ros__parameters` has no node name above it",
                           "Put it under the node's name, or `/**:` for every node")
-            elif not isinstance(value, yaml.MappingNode):
+            elif not _is(value, "mapping"):
                 yield Hit(_span(path, key), f"`ros__parameters` of `{'/'.join(names)}` is not "
                           "a mapping of parameters", "Write `ros__parameters: {}` or indent "
                           "the parameters under it")
@@ -86,7 +93,7 @@ def _node_level(path: str, mapping: yaml.MappingNode, names: tuple[str, ...], pa
             yield Hit(_span(path, key), f"`{name}` is not `ros__parameters`: ROS 2 reads no "
                       "parameters from it and rejects the file", f"Rename `{name}` to "
                       "`ros__parameters`")
-        elif isinstance(value, yaml.MappingNode):
+        elif _is(value, "mapping"):
             if passed or _holds_parameters(value):
                 yield from _node_level(path, value, (*names, name), passed, depth + 1)
         elif not stray_reported and (passed or beside):
@@ -98,7 +105,7 @@ def _node_level(path: str, mapping: yaml.MappingNode, names: tuple[str, ...], pa
 def _misspelled(key: str, value: yaml.Node, names: tuple[str, ...]) -> bool:
     """A near miss, or ``parameters:``/``params:`` right under a node name."""
     return _near_miss(key, value) or (bool(names) and key.lower() in _ALIASES and
-                                      isinstance(value, yaml.MappingNode))
+                                      _is(value, "mapping"))
 
 
 def _stray(name: str, names: tuple[str, ...], beside: bool) -> str:
@@ -178,9 +185,9 @@ def malformed_parameter_file(package: Package) -> Iterator[Hit]:
         if not isinstance(documents, list):
             continue  # SYN001
         for root in documents:
-            if isinstance(root, yaml.MappingNode) and (path in passed or
+            if _is(root, "mapping") and (path in passed or
                                                        _holds_parameters(root)):
                 yield from _node_level(path, root, (), path in passed)
-            elif isinstance(root, yaml.SequenceNode) and path in passed:
+            elif _is(root, "sequence") and path in passed:
                 yield Hit(_span(path, root), "A file passed to a node as parameters is a list, "
                           "not a mapping of node names")
