@@ -185,8 +185,7 @@ def malformed_parameter_file(package: Package) -> Iterator[Hit]:
         if not isinstance(documents, list):
             continue  # SYN001
         for root in documents:
-            if _is(root, "mapping") and (path in passed or
-                                                       _holds_parameters(root)):
+            if _is(root, "mapping") and (path in passed or _holds_parameters(root)):
                 yield from _node_level(path, root, (), path in passed)
             elif _is(root, "sequence") and path in passed:
                 yield Hit(_span(path, root), "A file passed to a node as parameters is a list, "
