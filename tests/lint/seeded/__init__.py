@@ -47,11 +47,17 @@ def case(code: str, path: str | None = None, at: str | None = None, *,
 
 
 def edit(root: Path, relpath: str, old: str, new: str) -> None:
-    """Replace the first ``old`` in a file by ``new``; ``old`` must be there."""
+    """Replace the first ``old`` in a file by ``new``; ``old`` must be there. Deleting all a
+    line held deletes the line, as a person would (no whitespace-only line is left)."""
     path = root / relpath
     text = path.read_text()
     assert old in text, f"{old!r} not in {relpath}"
-    path.write_text(text.replace(old, new, 1))
+    at = text.index(old)
+    text = text[:at] + new + text[at + len(old):]
+    start, end = text.rfind("\n", 0, at) + 1, text.find("\n", at)
+    if not new and not old.endswith("\n") and end >= 0 and not text[start:end].strip():
+        text = text[:start] + text[end + 1:]
+    path.write_text(text)
 
 
 def write(root: Path, relpath: str, text: str) -> None:
