@@ -8,6 +8,7 @@ what was installed into the wrong one: none removes an installed file the packag
 
 from __future__ import annotations
 
+import ast
 import posixpath
 from collections.abc import Callable, Iterator, Sequence
 
@@ -47,20 +48,37 @@ def _literal_only(entry: DataFile, doc: SetupDoc) -> tuple[object, object] | Non
     return None
 
 
-@fixer("DAT001", "Create the missing ament index marker file")
-def missing_marker(package: Package, findings: list[Finding]) -> Iterator[Fix]:
-    """Create the empty ``resource/<package>`` that data_files installs as the ament index
-    marker (after a rename, say). Safe: the marker's content is never read. Any other missing
-    file has content only its author knows: no fix."""
+@fixer("DAT001", "Create the missing marker file, or make a string of sources a list")
+def missing_file(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
+    """Write a string given as an entry's sources as a one-item list (setuptools would install
+    each of its characters), or create the empty ``resource/<package>`` data_files installs as
+    the ament index marker. Safe: the list installs what the string meant, and the marker's
+    content is never read. Any other missing file has content only its author knows: no fix."""
     marker_path = f"resource/{package.name}"
     entries = package.setup_py.data_files or () if package.setup_py else ()
     for finding in findings:
-        sources = (source for entry in entries if entry.destination.rstrip("/") == MARKER_FOLDER
-                   for source in entry.sources)
-        if any(s.span == finding.span and posixpath.normpath(s.pattern) == marker_path
-               for s in sources) and _marker_file(package):
-            yield Fix(f"Create the empty `{marker_path}`", tuple(_marker_file(package)))
-            return
+        for entry in entries:
+            source = next((s for s in entry.sources if s.span == finding.span), None)
+            if source is None:
+                continue
+            if entry.sources_is_text:
+                yield from _offer(package, f"Write `['{source.pattern}']`",
+                                  lambda doc, s=source: _as_list(doc, s))
+            elif (entry.destination.rstrip("/") == MARKER_FOLDER
+                  and posixpath.normpath(source.pattern) == marker_path
+                  and _marker_file(package)):
+                yield Fix(f"Create the empty `{marker_path}`", tuple(_marker_file(package)))
+            break
+
+
+def _as_list(doc: SetupDoc, source: DataSource) -> list[Edit]:
+    span = source.span
+    node = next((n for n in doc.nodes.get((span.line, span.col), [])
+                 if isinstance(n, ast.Constant) and n.value == source.pattern), None)
+    if node is None:
+        doc.refuse(f"computes the sources on line {span.line} with code")
+    written = doc.doc.source.text[doc.doc.start(node):doc.doc.end(node)]
+    return [doc.edit(node, f"[{written}]")]
 
 
 @fixer("DAT003", "Install the ament index marker")

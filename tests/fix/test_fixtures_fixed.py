@@ -18,12 +18,11 @@ PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprec
 `python3-numpi` is near both `python3-numpy` and `python-numpy`: no fix guesses, the user
 chooses; the other findings of the case are fixed."""
 MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages"),
-          ("MAN018", "standard_library_modules"), ("DAT001", "string_instead_of_list"),
-          ("DAT001", "typo_in_path")}
+          ("MAN018", "standard_library_modules"), ("DAT001", "typo_in_path")}
 """MAN018 fixes pip and import names only; build types, ROS 1 packages and standard library
-modules need the user (a `<build_type>`, a ROS 2 replacement, or nothing). DAT001 creates
-only the (empty) ament index marker: other missing files have content only their author
-knows."""
+modules need the user (a `<build_type>`, a ROS 2 replacement, or nothing). DAT001 fixes a
+string of sources and creates the (empty) ament index marker: other missing files have content
+only their author knows."""
 
 
 def _keys(path: Path, code: str, **fix: bool) -> list[tuple[str, str]]:
