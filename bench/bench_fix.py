@@ -66,7 +66,7 @@ def mutants(scratch: Path, colcon: bool) -> None:
         cleared.append(ok)
         if not ok:
             print(f"  not cleared: {case.id} ({case.code})")
-        missing = not_installed_here(root) if colcon and ok else []
+        missing = not_installed_here(root, source) if colcon and ok else []
         if missing:
             unmeasured.append(case.id)
             print(f"  not built: {case.id} imports {', '.join(missing)}, not installed here")
@@ -87,11 +87,18 @@ def mutants(scratch: Path, colcon: bool) -> None:
               f"({100 * functional / measured:.0f}%)")
 
 
-def not_installed_here(root: Path) -> list[str]:
-    """Top-level modules the package's Python files import that this environment (the one
-    colcon tests with) cannot import: the mutant's tests fail whatever the fix does."""
-    import ast
+def not_installed_here(root: Path, base: Path) -> list[str]:
+    """Top-level modules the mutant imports, and its base package does not, that this
+    environment (the one colcon tests with) cannot import: its tests fail whatever the fix
+    does."""
     import importlib.util
+
+    added = _imported(root) - _imported(base)
+    return sorted(n for n in added if importlib.util.find_spec(n) is None)
+
+
+def _imported(root: Path) -> set[str]:
+    import ast
 
     names: set[str] = set()
     for path in root.rglob("*.py"):
@@ -100,8 +107,7 @@ def not_installed_here(root: Path) -> list[str]:
                 names.update(alias.name.split(".")[0] for alias in node.names)
             elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
                 names.add(node.module.split(".")[0])
-    own = {p.name for p in root.iterdir() if (p / "__init__.py").is_file()}
-    return sorted(n for n in names - own if importlib.util.find_spec(n) is None)
+    return names
 
 
 def colcon_failures(root: Path) -> set[str]:
