@@ -97,7 +97,7 @@ def lint(
         "there is one).")] = False,
     unsafe_fixes: Annotated[bool, typer.Option(
         "--unsafe-fixes", help="With --fix or --diff, also apply fixes that may change "
-        "behaviour (removing a dependency).")] = False,
+        "behaviour (removing or renaming a dependency).")] = False,
     no_cache: Annotated[bool, typer.Option(
         "--no-cache", help="Neither read nor write the lint cache.")] = False,
     cache_dir: Annotated[Optional[str], typer.Option(
@@ -184,5 +184,6 @@ def register(app: typer.Typer) -> None:
     app.command("lint", epilog=examples(
         "pkgtool lint                              # the package or workspace here",
         "pkgtool lint --strict --style src/my_robot",
+        "pkgtool lint --fix                        # repair what is safe, report the rest",
         "pkgtool lint ws/src --format sarif -o lint.sarif",
         "pkgtool lint --explain MAN003"))(lint)
