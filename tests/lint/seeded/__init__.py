@@ -60,11 +60,44 @@ def edit(root: Path, relpath: str, old: str, new: str) -> None:
     path.write_text(text)
 
 
-def write(root: Path, relpath: str, text: str) -> None:
-    """Write a (dedented) file, creating its folders."""
+def add_import(root: Path, relpath: str, statement: str) -> None:
+    """Put an import among the third-party imports around ``import rclpy``, in the order
+    ament's flake8 (import-order, google style) wants: by module name, case-insensitively."""
+    path = root / relpath
+    lines = path.read_text().splitlines(keepends=True)
+    at = lines.index("import rclpy\n")
+    start, end = at, at
+    while start > 0 and lines[start - 1].startswith(("import ", "from ")):
+        start -= 1
+    while end + 1 < len(lines) and lines[end + 1].startswith(("import ", "from ")):
+        end += 1
+
+    def module(line: str) -> str:
+        return line.split()[1].lower()
+
+    place = next((i for i in range(start, end + 1)
+                  if module(lines[i]) > module(statement)), end + 1)
+    lines.insert(place, statement + "\n")
+    path.write_text("".join(lines))
+
+
+def header(root: Path) -> str:
+    """The package's license header (the leading comment block of its setup.py), which a
+    person copies into a file they add."""
+    kept = []
+    for line in (root / "setup.py").read_text().splitlines(keepends=True):
+        if not line.startswith("#"):
+            break
+        kept.append(line)
+    return "".join(kept) + ("\n" if kept else "")
+
+
+def write(root: Path, relpath: str, text: str, *, licensed: bool = False) -> None:
+    """Write a (dedented) file, creating its folders; ``licensed`` puts the package's
+    license header first."""
     path = root / relpath
     path.parent.mkdir(parents=True, exist_ok=True)
-    path.write_text(textwrap.dedent(text).lstrip("\n"))
+    path.write_text((header(root) if licensed else "") + textwrap.dedent(text).lstrip("\n"))
 
 
 def move(root: Path, source: str, destination: str) -> None:

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from tests.lint.seeded import case, edit, write
+from tests.lint.seeded import add_import, case, edit, write
 
 XML = "package.xml"
 TALKER = "base_pkg/talker.py"
@@ -13,7 +13,7 @@ CAMERA = "physical_ai_camera"
 
 def _import(root: Path, module: str, line: str, use: str) -> None:
     """Add ``line`` to the imports of ``module`` and ``use`` to its first method."""
-    edit(root, module, "import rclpy\n", f"import rclpy\n{line}\n")
+    add_import(root, module, line)
     edit(root, module, "        self.count = 0\n", f"        self.count = 0\n        {use}\n")
 
 
@@ -105,7 +105,7 @@ def test_imports_undeclared(root: Path) -> None:
 
         def test_zeros():
             assert numpy.zeros(2).sum() == 0
-        """)
+        """, licensed=True)
 
 
 @case("DEP001", "base_pkg/nodes/camera.py", "import cv2")
@@ -117,7 +117,7 @@ def undeclared_in_subpackage(root: Path) -> None:
 
         def show(frame):
             cv2.imshow('camera', frame)
-        """)
+        """, licensed=True)
 
 
 @case("DEP001", f"{CAMERA}/nodes/image_subscriber.py", "cv2", base=CAMERA)

@@ -180,6 +180,7 @@ def launch_ament_index_undeclared(root: Path) -> None:
          "    share = get_package_share_directory('base_pkg')\n"
          "    params = PathJoinSubstitution(\n")
     edit(root, PY, "FindPackageShare('base_pkg'), 'config'", "share, 'config'")
+    edit(root, PY, "from launch_ros.substitutions import FindPackageShare\n", "")
 
 
 @case("LCH005", PY, "Node(")
