@@ -13,9 +13,9 @@ from pkgtool.fix.registry import fixers
 FIXTURES = Path(__file__).resolve().parents[1] / "fixtures"
 CASES = [(code, case) for code in fixers() for case in sorted((FIXTURES / code / "bad").iterdir())]
 PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprecated_ids"),
-          ("LCH002", "undeclared_packages"), ("MAN021", "near_misses")}
-"""GPLv3 can mean -only or -or-later, `my_robot_description` is no known package,
-`python3-numpi` is near both `python3-numpy` and `python-numpy`: no fix guesses, the user
+          ("LCH002", "undeclared_packages"), ("DAT008", "wrong_shapes")}
+"""GPLv3 can mean -only or -or-later, `my_robot_description` is no known package, values
+outside `ros__parameters` belong to a node only the user knows: no fix guesses, the user
 chooses; the other findings of the case are fixed."""
 MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages"),
           ("MAN018", "standard_library_modules"), ("DAT001", "typo_in_path")}

@@ -19,9 +19,17 @@ if TYPE_CHECKING:  # the rule reads nodes yaml_problem built: PyYAML is imported
     import yaml
 
 PARAMS_KEY = "ros__parameters"
+RENAME = "Rename `{name}` to `ros__parameters`"
+"""The fix text of a misspelled key, which the DAT008 fixer reads back with :func:`renamed`."""
 _ALIASES = frozenset({"parameters", "parameter", "params", "param"})
 """Keys that stand for ``ros__parameters`` right under a node name, once a file is known to
 hold parameters."""
+
+
+def renamed(fix: str | None) -> str | None:
+    """The misspelled key a DAT008 finding's ``fix`` text asks to rename, else None."""
+    found = re.fullmatch(re.escape(RENAME).replace(r"\{name\}", "(.+)"), fix or "")
+    return found.group(1) if found else None
 
 
 def _is(node: object, kind: str) -> bool:
@@ -91,8 +99,7 @@ def _node_level(path: str, mapping: yaml.MappingNode, names: tuple[str, ...], pa
                           "the parameters under it")
         elif _misspelled(name, value, names) and not _holds_parameters(value):
             yield Hit(_span(path, key), f"`{name}` is not `ros__parameters`: ROS 2 reads no "
-                      "parameters from it and rejects the file", f"Rename `{name}` to "
-                      "`ros__parameters`")
+                      "parameters from it and rejects the file", RENAME.format(name=name))
         elif _is(value, "mapping"):
             if passed or _holds_parameters(value):
                 yield from _node_level(path, value, (*names, name), passed, depth + 1)
