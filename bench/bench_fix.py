@@ -15,6 +15,7 @@
 from __future__ import annotations
 
 import argparse
+import functools
 import shutil
 import sys
 import tempfile
@@ -97,7 +98,9 @@ def not_installed_here(root: Path, base: Path) -> list[str]:
     return sorted(n for n in added if importlib.util.find_spec(n) is None)
 
 
-def _imported(root: Path) -> set[str]:
+@functools.cache
+def _imported(root: Path) -> frozenset[str]:
+    """Top-level modules the package's Python files import (read once per folder)."""
     import ast
 
     names: set[str] = set()
@@ -107,7 +110,7 @@ def _imported(root: Path) -> set[str]:
                 names.update(alias.name.split(".")[0] for alias in node.names)
             elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
                 names.add(node.module.split(".")[0])
-    return names
+    return frozenset(names)
 
 
 def colcon_failures(root: Path) -> set[str]:

@@ -14,10 +14,9 @@ from bisect import bisect_right
 from pkgtool.safe_xml import xml_text
 from pkgtool.edit.core import Edit, EditError
 from pkgtool.edit.source import Source
-from pkgtool.edit.xml_scan import Element, insert_after, insert_before, scan, unescape
+from pkgtool.edit.xml_scan import (Element, after_on_line, insert_after, insert_before, scan,
+                                   unescape)
 from pkgtool.rules.manifest.schema import slot_index
-
-_COMMENT = re.compile(r"<!--.*?-->", re.S)
 
 DEPEND_ORDER = ("buildtool_depend", "buildtool_export_depend", "build_depend",
                 "build_export_depend", "depend", "exec_depend", "run_depend", "test_depend",
@@ -137,8 +136,8 @@ class ManifestDoc:
         """Start of ``element``'s first line and end of its last (line break included)."""
         text, source = self.source.text, self.source
         first, last = source.line_start(element.start), source.line_end(element.end)
-        after = _COMMENT.sub("", text[element.end:last])
-        if text[first:element.start].strip() or after.strip() or last >= len(text):
+        if text[first:element.start].strip() or after_on_line(source, element) \
+                or last >= len(text):
             raise EditError(f"`<{element.local}>` shares its line with other markup: put each "
                             "child of `<package>` on lines of its own to have it reordered.")
         return first, last + len(source.newline)

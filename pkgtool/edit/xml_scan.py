@@ -19,6 +19,7 @@ _MARKUP = re.compile(
     r"|<(?P<open>[^\s/>!?]+)"
     r"(?P<attrs>(?:\s+[^\s=/>]+\s*=\s*(?:\"[^\"]*\"|'[^']*'))*)\s*(?P<empty>/?)>",
     re.S)
+_COMMENT = re.compile(r"<!--.*?-->", re.S)
 _ATTRIBUTE = re.compile(r"([^\s=/>]+)\s*=\s*(?:\"([^\"]*)\"|'([^']*)')")
 
 
@@ -73,13 +74,14 @@ def insert_after(source: Source, anchor: Element, element: str, *, blank: bool =
 
     A comment sharing the anchor's line stays with the anchor.
     """
-    line_end = source.line_end(anchor.end)
-    rest = source.text[anchor.end:line_end].strip()
-    while rest.startswith("<!--") and "-->" in rest:
-        rest = rest[rest.index("-->") + 3:].strip()
-    at = line_end if not rest else anchor.end
+    at = anchor.end if after_on_line(source, anchor) else source.line_end(anchor.end)
     indent = source.indent_at(anchor.start) or ""
     return Edit(source.path, at, at, source.newline * (2 if blank else 1) + indent + element)
+
+
+def after_on_line(source: Source, element: Element) -> str:
+    """What follows ``element`` on its last line, comments left out and stripped."""
+    return _COMMENT.sub("", source.text[element.end:source.line_end(element.end)]).strip()
 
 
 def insert_before(source: Source, anchor: Element, element: str) -> Edit:

@@ -65,9 +65,10 @@ def missing_file(package: Package, findings: list[Finding]) -> Iterator[Fix | Re
                 yield from _offer(package, f"Write `['{source.pattern}']`",
                                   lambda doc, s=source: _as_list(doc, s))
             elif (entry.destination.rstrip("/") == MARKER_FOLDER
-                  and posixpath.normpath(source.pattern) == marker_path
-                  and _marker_file(package)):
-                yield Fix(f"Create the empty `{marker_path}`", tuple(_marker_file(package)))
+                  and posixpath.normpath(source.pattern) == marker_path):
+                create = _marker_file(package)
+                if create:
+                    yield Fix(f"Create the empty `{marker_path}`", tuple(create))
             break
 
 

@@ -28,7 +28,7 @@ def stage(path: Path, box: Sandbox, limits: ExtractLimits = ExtractLimits()) -> 
     if path.is_symlink():
         raise SubmissionError(f"`{path.name}` is a symbolic link; submit the folder or the "
                               "archive itself")
-    archive = path if is_archive(path) else lone_archive(path) if path.is_dir() else None
+    archive = path if is_archive(path) else lone_archive(path)
     if archive is not None:
         _unpack(archive, box, tree, limits)
     elif path.is_dir():
