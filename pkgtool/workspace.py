@@ -58,20 +58,21 @@ def discover(paths: Sequence[str], *, cwd: Path) -> Discovery:
             missing.append(argument)
             continue
         if path.is_dir():
-            roots = [path] if is_package(path) else list(_walk(path)) or _owner(path, cwd)
+            roots = [(path, "")] if is_package(path) else list(_walk(path)) or \
+                _owner(path, cwd)
             if not roots:
                 empty.append(argument)
         else:
             roots = _owner(path, cwd)
-        for root in roots:
-            found.setdefault(os.path.realpath(root), root)
+        for root, real in roots:
+            found.setdefault(real or os.path.realpath(root), root)
     packages = tuple(sorted(found.values()))
     return Discovery(packages, tuple(missing), tuple(empty))
 
 
-def _owner(path: Path, cwd: Path) -> list[Path]:
+def _owner(path: Path, cwd: Path) -> list[tuple[Path, str]]:
     owner = owning_package(path)
-    return [owner] if owner and not _skipped_below(owner, cwd) else []
+    return [(owner, "")] if owner and not _skipped_below(owner, cwd) else []
 
 
 def owning_package(file: Path) -> Path | None:
@@ -106,31 +107,38 @@ def _ignored_here(folder: Path) -> bool:
     return any((folder / marker).exists() for marker in IGNORE_MARKERS)
 
 
-def _walk(top: Path) -> Iterable[Path]:
-    """Packages below ``top``; each folder is listed once and symlink cycles are cut.
+def _walk(top: Path) -> Iterable[tuple[Path, str]]:
+    """Packages below ``top``, each with its real path; each folder is listed once and symlink
+    cycles are cut.
 
     Symbolic links are followed only after every real folder, so a package that is also
-    linked is reported at its real path.
+    linked is reported at its real path. The real path of a folder that is no link is its
+    parent's joined with its name (no system call).
     """
-    seen = {os.path.realpath(top)}
-    _, folders, links = _listing(top)
+    real_top = os.path.realpath(top)
+    seen = {real_top}
+    _, folders, links = _listing(top, real_top)
     while folders or links:
-        sub = folders.pop() if folders else links.pop()
-        real = os.path.realpath(sub)
+        sub, real = folders.pop() if folders else links.pop()
+        real = real or os.path.realpath(sub)
         if real in seen:
             continue
         seen.add(real)
-        names, subfolders, sublinks = _listing(sub)
+        names, subfolders, sublinks = _listing(sub, real)
         if names & IGNORE_MARKERS or "pyvenv.cfg" in names:
             continue
         if any(marker in names for marker in PACKAGE_MARKERS) and is_package(sub):
-            yield sub
+            yield sub, real
         else:
             folders += subfolders
             links += sublinks
 
 
-def _listing(folder: Path) -> tuple[frozenset[str], list[Path], list[Path]]:
+Found = list[tuple[Path, str]]
+"""Folders to search, each with its real path ("" for a link: resolved when searched)."""
+
+
+def _listing(folder: Path, real: str) -> tuple[frozenset[str], Found, Found]:
     """The names in ``folder``, and its sub-folders worth searching: real ones, then links."""
     try:
         with os.scandir(folder) as entries:
@@ -139,8 +147,9 @@ def _listing(folder: Path) -> tuple[frozenset[str], list[Path], list[Path]]:
         return frozenset(), [], []
     names = frozenset(e.name for e in listed)
     searched = [e for e in listed if not _skipped_name(e.name) and _is_dir(e)]
-    return (names, [Path(e.path) for e in searched if not e.is_symlink()],
-            [Path(e.path) for e in searched if e.is_symlink()])
+    return (names, [(folder / e.name, os.path.join(real, e.name))
+                    for e in searched if not e.is_symlink()],
+            [(folder / e.name, "") for e in searched if e.is_symlink()])
 
 
 def _is_dir(entry: os.DirEntry[str]) -> bool:

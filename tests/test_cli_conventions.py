@@ -58,6 +58,25 @@ def test_shell_completion_is_offered_and_completes_verbs() -> None:
     assert done.stdout.split() == ["create"], done.stdout + done.stderr
 
 
+def test_a_run_attaches_its_verb_only_and_a_typo_still_gets_suggestions() -> None:
+    count = ("import sys; from pkgtool import cli; cli._register(sys.argv[1:]); "
+             "print(len(cli.app.registered_commands) + len(cli.app.registered_groups))")
+    attached = [subprocess.run([sys.executable, "-c", count, *arguments], capture_output=True,
+                               text=True, timeout=60, check=True).stdout.strip()
+                for arguments in (["lint", "."], ["reference", "list"], ["lnt"], [])]
+    assert attached[:2] == ["1", "1"] and attached[2] == attached[3] != "1"
+    done = subprocess.run([PKGTOOL, "lnt"], capture_output=True, text=True, timeout=60)
+    assert done.returncode == 2 and "lint" in done.stderr, done.stderr
+
+
+def test_completing_a_verbs_options_sees_every_verb() -> None:
+    env = dict(os.environ, _PKGTOOL_COMPLETE="complete_bash", COMP_WORDS="pkgtool lint --no-c",
+               COMP_CWORD="2")
+    done = subprocess.run([PKGTOOL, "lint"], env=env, capture_output=True, text=True,
+                          timeout=60)
+    assert done.stdout.split() == ["--no-cache"], done.stdout + done.stderr
+
+
 def _interrupted(command: list[str], ready: str, env: dict[str, str]) -> tuple[int, str]:
     """Start ``command`` as a shell does, press Ctrl-C once ``ready`` is printed."""
     process = subprocess.Popen(command, env=env, stdout=subprocess.PIPE, stderr=subprocess.PIPE,

@@ -1,5 +1,9 @@
 """The cache on disk: one JSON entry per package, trusted only when its key matches exactly.
 
+The entries live in one file, ``lint/packages.json`` (reading one file is what makes a warm
+run of a large workspace fast); a run reads it once, and the process that started the run
+writes it back once at the end, merged with what other runs wrote meanwhile.
+
 The key of a package is a SHA-256 over: the cache schema, pkgtool's version and a fingerprint
 of its installed code and data, the Python version and the installed distributions, the
 package's effective settings (rule selection, severities, path ignores, target distribution),
@@ -9,9 +13,10 @@ is reused from the entry when its size and modification time are unchanged and i
 modified well before it was hashed (so an edit within the file system's time granularity is
 never missed); otherwise the file is read again.
 
-Entries are written to a temporary file and renamed into place, so concurrent runs never see a
-half-written entry. An entry that cannot be read, parsed or decoded, or whose key differs, is
-ignored and rewritten after linting.
+The file is written to a temporary file and renamed into place, so concurrent runs never see
+it half-written (the last one to finish keeps its own entries). An entry that cannot be read,
+parsed or decoded, or whose key differs, is ignored and rewritten after linting; entries of
+packages that no longer exist are dropped.
 """
 
 from __future__ import annotations
@@ -21,7 +26,6 @@ import hashlib
 import json
 import os
 import sys
-import tempfile
 import time
 from collections.abc import Mapping
 from dataclasses import dataclass
@@ -32,9 +36,11 @@ from pkgtool.cache.serial import BadEntry, decode, encode
 from pkgtool.config import Settings
 from pkgtool.findings import Finding
 from pkgtool.model.context import WorkspacePackage
-from pkgtool.model.files import list_files
+from pkgtool.model.files import scan
 
-SCHEMA = "pkgtool-lint-cache-1"
+SCHEMA = "pkgtool-lint-cache-2"
+PACK = "packages.json"
+"""The file in ``lint/`` holding every entry."""
 _SETTLED_NS = 2_000_000_000
 """A file modified this long before it was hashed is trusted by size and time afterwards."""
 _GITIGNORE = "# Created by pkgtool: the lint cache is never committed.\n*\n"
@@ -53,11 +59,11 @@ class Files:
         return hashlib.sha256(listing.encode()).hexdigest()
 
     def unchanged(self, root: Path) -> bool:
-        """True when every file still has the size and time it had when hashed."""
-        base = os.fspath(root)
-        return all(_stat(os.path.join(base, path)) == stat[:2]
-                   for path, stat in self.stats.items()) \
-            and set(list_files(root)) == set(self.stats)
+        """True when the package has the same files, with the sizes and times they had when
+        hashed."""
+        now = scan(root)
+        return len(now) == len(self.stats) and \
+            all(self.stats.get(path, [])[:2] == size_time for path, size_time in now)
 
 
 @dataclass(frozen=True, slots=True)
@@ -71,6 +77,10 @@ class Lookup:
     """The entry was valid but some file had to be hashed again: rewrite its times."""
 
 
+Entry = dict[str, Any]
+"""A package's cache entry as stored (JSON)."""
+
+
 class LintCache:
     """The lint cache in ``folder`` for one run (one code version, one workspace)."""
 
@@ -78,6 +88,9 @@ class LintCache:
         self.folder = folder / "lint"
         self.base = folder
         self._run_key = _digest([SCHEMA, _code_fingerprint(), _workspace_key(workspace)])
+        self._loaded = _identity(self.folder / PACK)
+        self._entries = _load(self.folder / PACK)
+        self._fresh: dict[str, Entry] = {}
 
     def lookup(self, root: Path, settings: Settings, *, read: bool = True) -> Lookup | None:
         """The key of the package at ``root`` and, when its entry is valid, the findings.
@@ -85,7 +98,8 @@ class LintCache:
         With ``read`` False only sizes and times are looked at: None when some file would
         have to be read (a quick probe that leaves the reading to a worker process).
         """
-        entry = self._read(root)
+        entry = self._entries.get(str(root))
+        entry = entry if isinstance(entry, dict) and entry.get("root") == str(root) else {}
         old = entry.get("files") if isinstance(entry.get("files"), dict) else {}
         files = _hash_files(root, old, entry.get("taken_ns"), read)
         if files is None:
@@ -104,39 +118,43 @@ class LintCache:
         refresh = any(old.get(path) != stat for path, stat in files.stats.items())
         return Lookup(key, files, (name, findings), refresh)
 
-    def store(self, root: Path, lookup: Lookup, name: str, findings: list[Finding]) -> None:
-        """Write the entry of ``root`` atomically; skipped when a file changed meanwhile."""
+    @staticmethod
+    def entry(root: Path, lookup: Lookup, name: str, findings: list[Finding]) -> Entry | None:
+        """The entry recording ``findings`` for ``root`` (:meth:`keep` it in the process that
+        saves); None when a file changed while the package was checked."""
         if not lookup.files.unchanged(root):
+            return None
+        return {"root": str(root), "key": lookup.key, "name": name,
+                "taken_ns": lookup.files.taken_ns, "files": lookup.files.stats,
+                "findings": encode(findings)}
+
+    def keep(self, entry: Entry) -> None:
+        """Record ``entry`` for :meth:`save`."""
+        self._fresh[entry["root"]] = entry
+
+    def save(self) -> None:
+        """Write the kept entries atomically, merged with the file as it is now."""
+        if not self._fresh:
             return
-        entry = {"schema": SCHEMA, "root": str(root), "key": lookup.key, "name": name,
-                 "taken_ns": lookup.files.taken_ns, "files": lookup.files.stats,
-                 "findings": encode(findings)}
+        pack = self.folder / PACK
+        others = self._entries if _identity(pack) == self._loaded else _load(pack)
+        entries = {root: entry for root, entry in others.items()
+                   if root not in self._fresh and os.path.isdir(root)}
+        entries.update(self._fresh)
         try:
             self._prepare()
+            import tempfile
+
             handle, temporary = tempfile.mkstemp(dir=self.folder, prefix=".tmp-")
         except OSError:  # a read-only or full disk: linting still works, uncached
             return
         try:
             with os.fdopen(handle, "w", encoding="utf-8") as stream:
-                json.dump(entry, stream, separators=(",", ":"))
-            os.replace(temporary, self._path(root))
+                json.dump({"schema": SCHEMA, "entries": entries}, stream, separators=(",", ":"))
+            os.replace(temporary, self.folder / PACK)
         except OSError:
             with contextlib.suppress(OSError):
                 os.unlink(temporary)
-
-    def _read(self, root: Path) -> dict[str, Any]:
-        try:
-            with open(self._path(root), encoding="utf-8") as stream:
-                entry = json.load(stream)
-        except (OSError, ValueError, RecursionError):
-            return {}
-        if not isinstance(entry, dict) or entry.get("schema") != SCHEMA or \
-                entry.get("root") != str(root):
-            return {}
-        return entry
-
-    def _path(self, root: Path) -> Path:
-        return self.folder / (hashlib.sha256(str(root).encode()).hexdigest()[:32] + ".json")
 
     def _prepare(self) -> None:
         """Create the folders; a cache folder pkgtool creates gets a ``.gitignore`` (never one
@@ -149,12 +167,26 @@ class LintCache:
         self.folder.mkdir(exist_ok=True)
 
 
-def _stat(path: str) -> list[Any]:
+def _identity(path: Path) -> tuple[int, int, int] | None:
+    """What tells whether the file at ``path`` was replaced (it never changes in place)."""
     try:
         stat = os.stat(path)
     except OSError:
-        return [-1, -1]
-    return [stat.st_size, stat.st_mtime_ns]
+        return None
+    return stat.st_ino, stat.st_mtime_ns, stat.st_size
+
+
+def _load(path: Path) -> dict[str, Any]:
+    """The entries of the cache file by package root; none when it is missing or not ours."""
+    try:
+        with open(path, encoding="utf-8") as stream:
+            pack = json.load(stream)
+    except (OSError, ValueError, RecursionError):
+        return {}
+    if not isinstance(pack, dict) or pack.get("schema") != SCHEMA or \
+            not isinstance(pack.get("entries"), dict):
+        return {}
+    return pack["entries"]
 
 
 def _hash_files(root: Path, old: dict[str, Any], old_taken: Any, read: bool) -> Files | None:
@@ -166,9 +198,7 @@ def _hash_files(root: Path, old: dict[str, Any], old_taken: Any, read: bool) -> 
     stats: dict[str, list[Any]] = {}
     trusted_before = old_taken - _SETTLED_NS if isinstance(old_taken, int) else -1
     base = os.fspath(root)
-    for path in list_files(root):
-        full = os.path.join(base, path)
-        size_time = _stat(full)
+    for path, size_time in scan(root):
         previous = old.get(path)
         if isinstance(previous, list) and len(previous) == 3 and previous[:2] == size_time \
                 and size_time[1] < trusted_before and isinstance(previous[2], str):
@@ -177,7 +207,7 @@ def _hash_files(root: Path, old: dict[str, Any], old_taken: Any, read: bool) -> 
         if not read:
             return None
         try:
-            with open(full, "rb") as stream:
+            with open(os.path.join(base, path), "rb") as stream:
                 content = hashlib.sha256(stream.read()).hexdigest()
         except OSError:
             content = "unreadable"
@@ -208,13 +238,7 @@ def _code_fingerprint() -> list[Any]:
     """
     import pkgtool
 
-    package = Path(pkgtool.__file__).parent
-    files = []
-    for folder, folders, names in os.walk(package):
-        folders[:] = sorted(f for f in folders if f != "__pycache__")
-        files.extend([os.path.relpath(os.path.join(folder, n), package),
-                      *_stat(os.path.join(folder, n))]
-                     for n in sorted(names))
+    files = [[path, *size_time] for path, size_time in scan(Path(pkgtool.__file__).parent)]
     distributions = sorted(name for entry in sys.path if entry.endswith("-packages")
                            and os.path.isdir(entry) for name in os.listdir(entry)
                            if name.endswith(".dist-info"))

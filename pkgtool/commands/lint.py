@@ -11,7 +11,7 @@ from collections.abc import Iterator, Mapping, Sequence
 from dataclasses import dataclass, replace
 from functools import partial
 from pathlib import Path
-from typing import TYPE_CHECKING, Union
+from typing import TYPE_CHECKING, Optional, Union
 
 from pkgtool.commands import ExitCode
 from pkgtool.config import ConfigError, ConfigFinder, Layer, Settings, check_rosdistro
@@ -21,7 +21,7 @@ from pkgtool.report import PackageLabel
 from pkgtool.workspace import discover
 
 if TYPE_CHECKING:
-    from pkgtool.cache.store import LintCache, Lookup
+    from pkgtool.cache.store import Entry, LintCache, Lookup
     from pkgtool.model.package import Package
 
 __all__ = ["LintOptions", "LintResult", "TextResult", "explain", "list_rules", "run"]
@@ -106,7 +106,9 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
     failing = False
     cache = _open_cache(options, here, workspace)
     outcomes = _check_all(jobs, workspace) if cache is None else _cached(jobs, workspace, cache)
-    for (root, label, setting), outcome in zip(jobs, outcomes):
+    for (root, label, setting), (outcome, entry) in zip(jobs, outcomes):
+        if entry is not None and cache is not None:
+            cache.keep(entry)
         if isinstance(outcome, str):
             errors.append(outcome)
             labels.append(PackageLabel(root.name, label))
@@ -117,6 +119,8 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
             mine = [f for f in mine if f.severity is not Severity.INFO]
         failing = failing or any(_fails(f, setting.strict) for f in mine)
         findings.extend(mine)
+    if cache is not None:
+        cache.save()
     internal = bool(errors) or any(f.internal for f in findings)
     code = (ExitCode.INTERNAL if internal else
             ExitCode.FINDINGS if failing and not options.exit_zero else ExitCode.OK)
@@ -164,10 +168,12 @@ def _model_and_findings(root: Path, *, label: str, settings: Settings, workspace
 Job = tuple[Path, str, Settings]
 Workspace = Mapping[str, WorkspacePackage]
 Outcome = Union[tuple[str, list[Finding]], str]
+Checked = tuple[Outcome, Optional["Entry"]]
+"""A package's outcome, and the cache entry to record for it (when there is a new one)."""
 
 
 def _check_all(jobs: list[Job], workspace: Workspace, cache: LintCache | None = None
-               ) -> Iterator[Outcome]:
+               ) -> Iterator[Checked]:
     """Each job's outcome in order; a process per core once there are enough packages."""
     check = partial(_check, workspace=workspace, cache=cache)
     workers = _workers(len(jobs))
@@ -202,15 +208,16 @@ def project_root(cwd: Path) -> Path:
                  if (folder / "pyproject.toml").is_file()), cwd)
 
 
-def _cached(jobs: list[Job], workspace: Workspace, cache: LintCache) -> Iterator[Outcome]:
+def _cached(jobs: list[Job], workspace: Workspace, cache: LintCache) -> Iterator[Checked]:
     """Each job's outcome in order: entries whose files kept their sizes and times come from
-    the cache here; the others are looked up (reading files), checked and recorded by
-    :func:`_check`, in the worker processes when there are enough of them."""
+    the cache here; the others are looked up (reading files) and checked by :func:`_check`,
+    in the worker processes when there are enough of them."""
     probes = [cache.lookup(root, setting, read=False) for root, _, setting in jobs]
     fresh = _check_all([job for job, probe in zip(jobs, probes) if probe is None or
                         probe.hit is None], workspace, cache)
     for (_, label, _), probe in zip(jobs, probes):
-        yield _relabelled(probe, label) if probe is not None and probe.hit else next(fresh)
+        yield (_relabelled(probe, label), None) if probe is not None and probe.hit \
+            else next(fresh)
 
 
 def _relabelled(found: Lookup, label: str) -> Outcome:
@@ -237,21 +244,21 @@ def _cpus() -> int:
         return os.cpu_count() or 1
 
 
-def _check(job: Job, workspace: Workspace, cache: LintCache | None) -> Outcome:
-    """One package's outcome: from ``cache`` when valid, else checked (and recorded)."""
+def _check(job: Job, workspace: Workspace, cache: LintCache | None) -> Checked:
+    """One package's outcome: from ``cache`` when valid, else checked; and the entry to record."""
     if cache is None:
-        return _lint_one(job, workspace)
+        return _lint_one(job, workspace), None
     root, label, settings = job
     found = cache.lookup(root, settings)
     assert found is not None
-    if found.hit is not None:
-        if found.refresh:  # some file was read again: record its times, trusted next run
-            cache.store(root, found, *found.hit)
-        return _relabelled(found, label)
+    if found.hit is not None:  # when some file was read again, record its times: trusted next
+        return _relabelled(found, label), cache.entry(root, found, *found.hit) \
+            if found.refresh else None
     outcome = _lint_one(job, workspace)
-    if not isinstance(outcome, str) and not any(f.internal for f in outcome[1]):
-        cache.store(root, found, outcome[0], [replace(f, root="") for f in outcome[1]])
-    return outcome
+    if isinstance(outcome, str) or any(f.internal for f in outcome[1]):
+        return outcome, None
+    return outcome, cache.entry(root, found, outcome[0],
+                                [replace(f, root="") for f in outcome[1]])
 
 
 def _lint_one(job: Job, workspace: Workspace) -> Outcome:

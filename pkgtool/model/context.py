@@ -44,7 +44,7 @@ class Context:
         return next((p.name for p in self.workspace.values() if module in p.modules), None)
 
 
-def _listing(folder: Path) -> list[os.DirEntry[str]]:
+def _listing(folder: str) -> list[os.DirEntry[str]]:
     try:
         with os.scandir(folder) as entries:
             return list(entries)
@@ -54,19 +54,22 @@ def _listing(folder: Path) -> list[os.DirEntry[str]]:
 
 def read_workspace_package(root: Path) -> WorkspacePackage:
     """Name (package.xml, else the folder), interfaces and Python packages of ``root``."""
+    base = os.fspath(root)
     try:
-        text = (root / "package.xml").read_text(encoding="utf-8", errors="replace")
-        found = _NAME.search(text)
+        with open(os.path.join(base, "package.xml"), encoding="utf-8", errors="replace") as f:
+            found = _NAME.search(f.read())
         name = found.group(1) if found else root.name
     except OSError:
         name = root.name
+    listed = _listing(base)
     interfaces = {}
     for kind in _KINDS:
-        names = frozenset(e.name.rsplit(".", 1)[0] for e in _listing(root / kind)
-                          if e.name.endswith(_SUFFIXES))
-        if names:
-            interfaces[kind] = names
-    modules = frozenset(e.name for e in _listing(root) if e.name.isidentifier()
+        if any(entry.name == kind for entry in listed):
+            names = frozenset(e.name.rsplit(".", 1)[0] for e in _listing(os.path.join(base, kind))
+                              if e.name.endswith(_SUFFIXES))
+            if names:
+                interfaces[kind] = names
+    modules = frozenset(e.name for e in listed if e.name.isidentifier()
                         and e.name not in _NOT_MODULES and e.is_dir()
                         and os.path.isfile(os.path.join(e.path, "__init__.py")))
     return WorkspacePackage(name, interfaces, modules)

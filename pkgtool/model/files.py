@@ -18,15 +18,16 @@ BUILD_OUTPUT_DIRS = frozenset({"build", "install", "log"})
 """colcon's output folders: skipped at the package root when they hold no Python package."""
 
 
-def _skipped(folder: str, name: str, at_root: bool) -> bool:
-    """True for a folder (``name`` in ``folder``) whose files are not the package's."""
-    if name.startswith(".") or name in SKIPPED_DIRS or name.endswith(".egg-info"):
-        return True
-    if os.path.isfile(os.path.join(folder, "pyvenv.cfg")) or \
-            os.path.isfile(os.path.join(folder, "package.xml")):
+def _skipped_name(name: str) -> bool:
+    """True for a folder never descended into, whatever it holds."""
+    return name.startswith(".") or name in SKIPPED_DIRS or name.endswith(".egg-info")
+
+
+def _not_the_packages(name: str, files: set[str], at_root: bool) -> bool:
+    """True for a folder ``name`` holding ``files`` whose files are not the package's."""
+    if "pyvenv.cfg" in files or "package.xml" in files:
         return True  # a virtual environment, or a nested package of its own
-    return (at_root and name in BUILD_OUTPUT_DIRS
-            and not os.path.isfile(os.path.join(folder, "__init__.py")))
+    return at_root and name in BUILD_OUTPUT_DIRS and "__init__.py" not in files
 
 
 @dataclass(frozen=True, slots=True)
@@ -67,23 +68,50 @@ def list_files(root: Path) -> tuple[str, ...]:
     Nested packages (a sub-folder holding its own package.xml) and virtual environments are not
     part of this package.
     """
-    found: list[str] = []
-    stack = [(os.fspath(root), "")]
+    return tuple(sorted(path for path, _ in _walk(root)))
+
+
+def scan(root: Path) -> list[tuple[str, list[int]]]:
+    """Every file of :func:`list_files` (sorted) with its ``[size, mtime_ns]``, in one walk.
+
+    A file that vanishes or cannot be examined meanwhile gets ``[-1, -1]``.
+    """
+    return sorted((path, _size_time(entry)) for path, entry in _walk(root))
+
+
+def _walk(root: Path) -> list[tuple[str, os.DirEntry[str]]]:
+    """The package's files (POSIX paths relative to ``root``), each folder listed once."""
+    found: list[tuple[str, os.DirEntry[str]]] = []
+    stack = [("", _entries(os.fspath(root)))]
     while stack:
-        folder, prefix = stack.pop()
-        try:
-            with os.scandir(folder) as listing:
-                entries = list(listing)
-        except OSError:
-            continue
+        prefix, entries = stack.pop()
         for entry in entries:  # is_dir/is_file follow symbolic links; broken ones are neither
             try:
                 if entry.is_dir():
-                    if not entry.is_symlink() and not _skipped(entry.path, entry.name,
-                                                               not prefix):
-                        stack.append((entry.path, f"{prefix}{entry.name}/"))
+                    if entry.is_symlink() or _skipped_name(entry.name):
+                        continue
+                    inside = _entries(entry.path)
+                    files = {e.name for e in inside if e.is_file()}
+                    if not _not_the_packages(entry.name, files, not prefix):
+                        stack.append((f"{prefix}{entry.name}/", inside))
                 elif entry.is_file():
-                    found.append(prefix + entry.name)
+                    found.append((prefix + entry.name, entry))
             except OSError:
                 continue
-    return tuple(sorted(found))
+    return found
+
+
+def _entries(folder: str) -> list[os.DirEntry[str]]:
+    try:
+        with os.scandir(folder) as listing:
+            return list(listing)
+    except OSError:
+        return []
+
+
+def _size_time(entry: os.DirEntry[str]) -> list[int]:
+    try:
+        stat = entry.stat()
+    except OSError:
+        return [-1, -1]
+    return [stat.st_size, stat.st_mtime_ns]

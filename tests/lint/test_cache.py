@@ -36,6 +36,11 @@ def _lint(cwd: Path, *args: str, jobs: int = 1, env: dict[str, str] | None = Non
     return done
 
 
+def _entries(cache: Path) -> dict[str, dict]:
+    """The cache's entries by package root."""
+    return json.loads((cache / "lint" / "packages.json").read_text())["entries"]
+
+
 def _bench_generator():  # type: ignore[no-untyped-def]
     spec = importlib.util.spec_from_file_location("bench_lint", ROOT / "bench" / "bench_lint.py")
     assert spec is not None and spec.loader is not None
@@ -72,7 +77,7 @@ def test_findings_are_identical_with_and_without_cache_and_workers(corpus: Path)
     serial = _lint(corpus, "--no-cache", jobs=1).stdout
     pooled = _lint(corpus, "--no-cache", jobs=2).stdout
     cold = _lint(corpus, jobs=2).stdout
-    entries = list((corpus / ".pkgtool_cache" / "lint").glob("*.json"))
+    entries = _entries(corpus / ".pkgtool_cache")
     warm = _lint(corpus, jobs=1).stdout
     assert json.loads(serial)["findings"], "the corpus has findings to compare"
     assert len(entries) == len(list((corpus / "src").iterdir()))
@@ -103,16 +108,34 @@ def test_corrupt_or_foreign_entries_are_ignored_and_rewritten(tmp_path: Path) ->
     root = write_tree(tmp_path / "pkg", correct_package_files("demo"))
     (root / "demo" / "bad.py").write_text("x = y\n")
     expected = _lint(root).stdout
-    entry = next((root / ".pkgtool_cache" / "lint").glob("*.json"))
-    good = json.loads(entry.read_text())
+    pack = root / ".pkgtool_cache" / "lint" / "packages.json"
+    whole = json.loads(pack.read_text())
+    good = whole["entries"][str(root)]
     lies = {**good, "findings": []}
     foreign = {**lies, "root": "/elsewhere"}
     evil = {**good, "findings": {"@": "os:system", "value": "touch /tmp/x"}}
-    for text in ("{not json", "[]", json.dumps(foreign), json.dumps({**lies, "key": "0" * 64}),
-                 json.dumps(evil), json.dumps({**good, "schema": "other"})):
-        entry.write_text(text)
+    entries = [foreign, {**lies, "key": "0" * 64}, evil, [], "text"]
+    texts = ["{not json", "[]", json.dumps({**whole, "schema": "other"}),
+             json.dumps({**whole, "entries": []}),
+             *(json.dumps({**whole, "entries": {str(root): entry}}) for entry in entries)]
+    for text in texts:
+        pack.write_text(text)
         assert _lint(root).stdout == expected
-        assert json.loads(entry.read_text())["findings"] == good["findings"], text
+        assert _entries(root / ".pkgtool_cache")[str(root)]["findings"] == good["findings"], text
+
+
+def test_entries_of_other_runs_are_kept_and_of_removed_packages_dropped(tmp_path: Path) -> None:
+    files = {f"src/{name}/{path}": text for name in ("one", "two")
+             for path, text in correct_package_files(name).items()}
+    ws = write_tree(tmp_path / "ws", files)
+    _lint(ws, "src/one")
+    _lint(ws, "src/two")
+    roots = {str(ws / "src" / "one"), str(ws / "src" / "two")}
+    assert set(_entries(ws / ".pkgtool_cache")) == roots
+    shutil.rmtree(ws / "src" / "one")
+    (ws / "src" / "two" / "two" / "new.py").write_text('"""New."""\n')
+    _lint(ws, "src/two")
+    assert set(_entries(ws / ".pkgtool_cache")) == {str(ws / "src" / "two")}
 
 
 def test_the_cache_folder_is_chosen_by_option_environment_or_project(tmp_path: Path) -> None:
@@ -123,8 +146,7 @@ def test_the_cache_folder_is_chosen_by_option_environment_or_project(tmp_path: P
     assert not (root / ".pkgtool_cache").exists()
     _lint(root, env={"PKGTOOL_CACHE_DIR": str(tmp_path / "env")})
     _lint(root, "--cache-dir", "here", env={"PKGTOOL_CACHE_DIR": str(tmp_path / "env")})
-    assert list((tmp_path / "env" / "lint").glob("*.json"))
-    assert list((root / "here" / "lint").glob("*.json"))
+    assert _entries(tmp_path / "env") and _entries(root / "here")
     _lint(root, "--cache-dir", ".")  # an existing folder: no .gitignore written into it
     assert (root / "lint").is_dir() and not (root / ".gitignore").exists()
     shutil.rmtree(project / ".pkgtool_cache")
