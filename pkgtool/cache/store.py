@@ -150,7 +150,8 @@ class LintCache:
             return
         try:
             with os.fdopen(handle, "w", encoding="utf-8") as stream:
-                json.dump({"schema": SCHEMA, "entries": entries}, stream, separators=(",", ":"))
+                stream.write(json.dumps({"schema": SCHEMA, "entries": entries},
+                                        separators=(",", ":")))  # dump() writes piecemeal
             os.replace(temporary, self.folder / PACK)
         except OSError:
             with contextlib.suppress(OSError):
