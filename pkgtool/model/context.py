@@ -16,6 +16,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from pkgtool.knowledge.tables import DEFAULT_DISTRO
+from pkgtool.model.files import listing
 
 _NAME = re.compile(r"<name>\s*([^<\s]+)\s*</name>")
 _KINDS = ("msg", "srv", "action")
@@ -44,14 +45,6 @@ class Context:
         return next((p.name for p in self.workspace.values() if module in p.modules), None)
 
 
-def _listing(folder: str) -> list[os.DirEntry[str]]:
-    try:
-        with os.scandir(folder) as entries:
-            return list(entries)
-    except OSError:
-        return []
-
-
 def read_workspace_package(root: Path) -> WorkspacePackage:
     """Name (package.xml, else the folder), interfaces and Python packages of ``root``."""
     base = os.fspath(root)
@@ -61,11 +54,11 @@ def read_workspace_package(root: Path) -> WorkspacePackage:
         name = found.group(1) if found else root.name
     except OSError:
         name = root.name
-    listed = _listing(base)
+    listed = listing(base)
     interfaces = {}
     for kind in _KINDS:
         if any(entry.name == kind for entry in listed):
-            names = frozenset(e.name.rsplit(".", 1)[0] for e in _listing(os.path.join(base, kind))
+            names = frozenset(e.name.rsplit(".", 1)[0] for e in listing(os.path.join(base, kind))
                               if e.name.endswith(_SUFFIXES))
             if names:
                 interfaces[kind] = names

@@ -82,7 +82,7 @@ def scan(root: Path) -> list[tuple[str, list[int]]]:
 def _walk(root: Path) -> list[tuple[str, os.DirEntry[str]]]:
     """The package's files (POSIX paths relative to ``root``), each folder listed once."""
     found: list[tuple[str, os.DirEntry[str]]] = []
-    stack = [("", _entries(os.fspath(root)))]
+    stack = [("", listing(os.fspath(root)))]
     while stack:
         prefix, entries = stack.pop()
         for entry in entries:  # is_dir/is_file follow symbolic links; broken ones are neither
@@ -90,7 +90,7 @@ def _walk(root: Path) -> list[tuple[str, os.DirEntry[str]]]:
                 if entry.is_dir():
                     if entry.is_symlink() or _skipped_name(entry.name):
                         continue
-                    inside = _entries(entry.path)
+                    inside = listing(entry.path)
                     files = {e.name for e in inside if e.is_file()}
                     if not _not_the_packages(entry.name, files, not prefix):
                         stack.append((f"{prefix}{entry.name}/", inside))
@@ -101,10 +101,11 @@ def _walk(root: Path) -> list[tuple[str, os.DirEntry[str]]]:
     return found
 
 
-def _entries(folder: str) -> list[os.DirEntry[str]]:
+def listing(folder: str) -> list[os.DirEntry[str]]:
+    """The entries of ``folder``; none when it cannot be listed."""
     try:
-        with os.scandir(folder) as listing:
-            return list(listing)
+        with os.scandir(folder) as entries:
+            return list(entries)
     except OSError:
         return []
 
