@@ -7,7 +7,7 @@ report (almost) nothing and the times measure the checks, not the reporting.
 Measures, each as wall time of a fresh process (cold start included):
 
 - one package: ``pkgtool lint --no-cache PKG`` versus ``flake8 PKG`` (median of ``--repeat``
-  runs), and ``pkgtool lint PKG`` with a warm cache;
+  runs, the two tools taking turns), and ``pkgtool lint PKG`` with a warm cache;
 - generated workspaces (default 100, 500 and 1,000 packages): with the cache emptied before
   each run (cold), packages per second and the time per package at each size (linear in N
   means a flat time per package), versus ``flake8 WS`` (up to ``--flake8-up-to`` packages);
@@ -215,9 +215,14 @@ def measure(repeat: int, sizes: list[int], flake8_up_to: int, work: Path) -> dic
     single = work / "single"
     write_package(single, "bench_single")
     python_s, _, _ = _time([sys.executable, "-c", "pass"], work, repeat)
-    lint_one, lint_cpu, lint_code = _time(lint + ["--no-cache", "."], single, repeat)
-    warm_one, _, _ = _time(lint + ["."], single, repeat)
-    flake8_one, flake8_cpu, _ = _time(flake8 + ["."], single, repeat)
+    # Interleaved, run by run: the machine's speed drifts, and a ratio must compare like
+    # with like.
+    runs = [(_time(lint + ["--no-cache", "."], single, 1), _time(lint + ["."], single, 1),
+             _time(flake8 + ["."], single, 1)) for _ in range(repeat)]
+    lint_one, lint_cpu = (statistics.median(r[0][i] for r in runs) for i in range(2))
+    lint_code = runs[-1][0][2]
+    warm_one = statistics.median(r[1][0] for r in runs)
+    flake8_one, flake8_cpu = (statistics.median(r[2][i] for r in runs) for i in range(2))
     result: dict[str, Any] = {
         "calibration": {"python_startup_s": python_s, "flake8_single_s": flake8_one},
         "single": {"pkgtool_s": lint_one, "pkgtool_cpu_s": lint_cpu, "flake8_s": flake8_one,
