@@ -155,10 +155,14 @@ def _model_and_findings(root: Path, *, label: str, settings: Settings, workspace
     """Read and check one package (exceptions propagate: ``_check`` reports them)."""
     from pkgtool.engine import check_package
     from pkgtool.model.package import load_package
+    from pkgtool.model.python_visitor import forget_trees
 
     package = load_package(root, Context(settings.rosdistro, workspace))
-    found = check_package(package, settings.rules, root_label=label,
-                          severities=settings.severities)
+    try:
+        found = check_package(package, settings.rules, root_label=label,
+                              severities=settings.severities)
+    finally:
+        forget_trees()
     if settings.path_ignores:
         found = [f for f in found
                  if f.internal or not settings.ignores(root / f.span.path, f.code)]

@@ -124,6 +124,12 @@ def parse_tree(path: str, text: str) -> ast.Module | ParseProblem:
                             "the code is nested too deeply to parse")
 
 
+def forget_trees() -> None:
+    """Drop the trees :func:`parse_tree` keeps: call it when done with a package, so the
+    next packages' work does not carry (and the garbage collector does not walk) them."""
+    parse_tree.cache_clear()
+
+
 def module_from_tree(path: str, tree: ast.Module) -> PythonModule:
     """The imports and top-level names of an already parsed module."""
     return PythonModule(path, tuple(_imports(path, tree)), _top_level_names(tree))

@@ -5,9 +5,9 @@ from __future__ import annotations
 import ast
 from collections import Counter
 from collections.abc import Iterator
-from functools import lru_cache
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.memo import per_object
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._scopes import bound_names, catches_everything, scope_walk
@@ -69,7 +69,7 @@ def _in_loop(index: Index, node: ast.AST, function: ast.AST) -> bool:
     return False
 
 
-@lru_cache(maxsize=512)
+@per_object(64)
 def _function_bindings(function: ast.FunctionDef | ast.AsyncFunctionDef) -> Counter[str] | None:
     """Binding counts of a function, or None when it inspects its own namespace."""
     for node in scope_walk(function.body):
