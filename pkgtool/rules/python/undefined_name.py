@@ -11,6 +11,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import dead_lines
+from pkgtool.rules.python._names_proof import every_name_defined
 from pkgtool.rules.python._tree import installed_modules
 from pkgtool.rules.registry import rule
 
@@ -21,7 +22,8 @@ def undefined_name(package: Package) -> Iterator[Hit]:
     """Installed code, setup.py or a launch file uses a name that is not defined.
 
     ## What it does
-    Runs pyflakes' checker (as a library, on the parsed tree) over every installed module,
+    Runs pyflakes' checker (as a library, on the parsed tree; a quick proof first spares it
+    the files where it would surely find nothing) over every installed module,
     setup.py and every Python launch file (not those calling `exec()`, which may define any
     name) and reports its "undefined name" messages, with pyflakes' own handling of builtins,
     `__all__`, star imports, conditional definitions and `except NameError` guards. Code that
@@ -47,9 +49,6 @@ def undefined_name(package: Package) -> Iterator[Hit]:
     gray = cv2.cvtColor(image, cv2.COLOR_BGR2GRAY)
     ```
     """
-    from pyflakes.checker import Checker
-    from pyflakes.messages import UndefinedName
-
     trees = [(module.path, tree) for module, tree in installed_modules(package)]
     for path in ("setup.py", *(f.path for f in package.launch_files if f.kind == "python")):
         tree = parse_tree(path, package.texts[path]) if path in package.texts else None
@@ -57,21 +56,30 @@ def undefined_name(package: Package) -> Iterator[Hit]:
                 isinstance(n, ast.Name) and n.id == "exec" for n in nodes_of(tree)):
             trees.append((path, tree))
     for path, tree in trees:
-        try:
-            messages = Checker(tree, filename=path).messages
-        except Exception:  # pyflakes on hostile input (deep nesting, ...): skip, never crash
+        if every_name_defined(tree):  # pyflakes would find nothing: spare it (most files)
             continue
         seen: set[tuple[int, str]] = set()
         dead, notes = dead_lines(tree), _unevaluated_annotations(tree)
-        for message in sorted(messages, key=lambda m: (m.lineno, m.col)):
-            name = message.message_args[0] if isinstance(message, UndefinedName) else None
-            where = (message.lineno, message.col)
-            if any(first <= message.lineno <= last for first, last in dead) or \
-                    any(start <= where <= end for start, end in notes):
+        for line, column, name in _pyflakes_undefined(path, tree):
+            if any(first <= line <= last for first, last in dead) or \
+                    any(start <= (line, column) <= end for start, end in notes):
                 continue
-            if name is not None and (message.lineno, name) not in seen:
-                seen.add((message.lineno, name))
-                yield Hit(Span(path, message.lineno, message.col + 1), f"Undefined name `{name}`")
+            if (line, name) not in seen:
+                seen.add((line, name))
+                yield Hit(Span(path, line, column + 1), f"Undefined name `{name}`")
+
+
+def _pyflakes_undefined(path: str, tree: ast.Module) -> list[tuple[int, int, str]]:
+    """pyflakes' undefined names in ``tree``: (line, column from 0, name), in order."""
+    from pyflakes.checker import Checker  # only for files the proof could not clear
+    from pyflakes.messages import UndefinedName
+
+    try:
+        messages = Checker(tree, filename=path).messages
+    except Exception:  # pyflakes on hostile input (deep nesting, ...): skip, never crash
+        return []
+    return sorted((m.lineno, m.col, m.message_args[0]) for m in messages
+                  if isinstance(m, UndefinedName))
 
 
 def _unevaluated_annotations(tree: ast.Module) -> list[tuple[tuple[int, int], tuple[int, int]]]:
