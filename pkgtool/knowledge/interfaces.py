@@ -16,12 +16,25 @@ from functools import cache
 
 from pkgtool.knowledge.tables import DEFAULT_DISTRO, FLAGS, read
 
-__all__ = ["KINDS", "close_interfaces", "interface_kind", "interfaces_of", "is_known_package",
-           "kind_in", "mismatch", "parse_type", "type_problem"]
+__all__ = ["COMPANIONS", "KINDS", "close_interfaces", "companion_of", "interface_kind",
+           "interfaces_of", "is_known_package", "kind_in", "mismatch", "parse_type",
+           "type_problem"]
 
 KINDS = ("msg", "srv", "action")
 Interfaces = Mapping[str, frozenset[str]]
 """Kind (``msg``, ``srv``, ``action``) -> the interface names of one package."""
+
+COMPANIONS: dict[str, dict[str, str | None]] = {
+    "srv": {"Request": "Request", "Response": "Response", "Event": None},
+    "action": {f"{call}_{part}": f"Impl.{call}Service.{part}" if part != "Event" else None
+               for call in ("SendGoal", "GetResult") for part in ("Request", "Response", "Event")},
+}
+"""Kind -> suffix -> attribute: ``<pkg>.<kind>`` exports, with each interface ``X``, the
+companion types ``X_<suffix>`` (rosidl_generator_py since Iron). Humble exports ``X`` alone;
+its companions are reached as ``X.<attribute>``, and those without one (service events) do
+not exist there."""
+_NO_COMPANIONS = frozenset({"humble"})
+"""The distributions whose ``<pkg>.<kind>`` modules export no companion types."""
 
 
 @cache
@@ -49,6 +62,27 @@ def interfaces_of(package: str, distro: str = DEFAULT_DISTRO) -> Interfaces | No
 def kind_in(interfaces: Interfaces, name: str) -> str | None:
     """The kind (``msg``, ``srv``, ``action``) of ``name`` among ``interfaces``, or None."""
     return next((kind for kind in KINDS if name in interfaces.get(kind, ())), None)
+
+
+def companion_of(interfaces: Interfaces, name: str, kind: str | None = None) -> str | None:
+    """How humble reaches the companion type ``name`` of an interface (of ``kind``, or any)
+    among ``interfaces``: ``Trigger.Request`` for ``Trigger_Request``; None for no companion
+    or one humble does not have."""
+    for each in (kind,) if kind else KINDS:
+        for suffix, attribute in COMPANIONS.get(each, {}).items():
+            base = name[:-len(suffix) - 1]
+            if attribute and name.endswith("_" + suffix) and base in interfaces.get(each, ()):
+                return f"{base}.{attribute}"
+    return None
+
+
+def _with_companions(interfaces: Interfaces, distro: str) -> Interfaces:
+    """``interfaces`` and, where ``distro`` exports them, their companion types."""
+    if distro in _NO_COMPANIONS:
+        return interfaces
+    return {kind: names | {f"{name}_{suffix}" for name in names
+                           for suffix in COMPANIONS.get(kind, ())}
+            for kind, names in interfaces.items()}
 
 
 def interface_kind(package: str, name: str, distro: str = DEFAULT_DISTRO) -> str | None:
@@ -87,13 +121,17 @@ WORDS = {"msg": "message", "srv": "service", "action": "action"}
 @dataclass(frozen=True, slots=True)
 class Mismatch:
     """Why ``package/kind/name`` is no interface: ``actual`` is the kind the name really has
-    (None when the package has no such name); ``close`` a near miss as (kind, name)."""
+    (None when the package has no such name); ``close`` a near miss as (kind, name);
+    ``companion`` how Python code reaches the companion type ``name`` on ``distro`` when its
+    module does not export it (``Trigger.Request`` for ``Trigger_Request`` on humble)."""
 
     package: str
     kind: str | None
     name: str
     actual: str | None
     close: tuple[str, str] | None
+    companion: str | None = None
+    distro: str = DEFAULT_DISTRO
 
 
 def mismatch(package: str, kind: str | None, name: str, interfaces: Interfaces | None = None,
@@ -102,16 +140,25 @@ def mismatch(package: str, kind: str | None, name: str, interfaces: Interfaces |
 
     ``interfaces`` are the package's when the caller knows them (a workspace package);
     otherwise the table's are used. Unknown packages give None: nothing is known about them.
+    The companion types of a service or action (:data:`COMPANIONS`) exist where ``distro``
+    exports them.
     """
-    known = interfaces if interfaces is not None else interfaces_of(package, distro)
-    if known is None or (kind is not None and name in known.get(kind, ())):
+    interfaces = interfaces if interfaces is not None else interfaces_of(package, distro)
+    if interfaces is None:
+        return None
+    known = _with_companions(interfaces, distro)
+    if kind is not None and name in known.get(kind, ()):
         return None
     actual = kind_in(known, name)
     if actual is not None and kind in (None, actual):
         return None
+    companion = None if actual or distro not in _NO_COMPANIONS else (
+        companion_of(interfaces, name, kind))
+    if companion is not None:
+        return Mismatch(package, kind, name, None, None, companion, distro)
     close = close_interfaces(known, name, kind) if actual is None else []
     found = (str(kind_in(known, close[0])), close[0]) if close else None
-    return Mismatch(package, kind, name, actual, found)
+    return Mismatch(package, kind, name, actual, found, distro=distro)
 
 
 def type_problem(package: str, kind: str | None, name: str, interfaces: Interfaces | None = None,

@@ -24,7 +24,10 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
     pkgtool's table of the interface packages of ROS 2 Jazzy that are installable as wheels
     (for a jazzy target only: other distributions have other interfaces)
     (`std_msgs`, `geometry_msgs`, `sensor_msgs`, `std_srvs`, ...). Packages that are not
-    known (`nav2_msgs`) are never reported.
+    known (`nav2_msgs`) are never reported. The types generated with each service `X`
+    (`X_Request`, `X_Response`, `X_Event`) and action `A` (`A_SendGoal_Request`,
+    `A_GetResult_Response`, ...) exist where the target distribution's modules export them:
+    since Iron; on humble they are reported with the attribute to use (`X.Request`).
 
     ## Why is this bad?
     The node dies at start-up with `ImportError: cannot import name ...`; a service imported
@@ -51,13 +54,17 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
             if known is None:
                 continue
             for name in imported.names:
-                found = None if name == "*" else mismatch(parts[0], parts[1], name, known)
+                found = None if name == "*" else mismatch(
+                    parts[0], parts[1], name, known, package.context.distro)
                 if found:
                     yield Hit(imported.span, _message(found), _fix(found))
 
 
 def _message(found: Mismatch) -> str:
     module = f"{found.package}.{found.kind}"
+    if found.companion:
+        return (f"`{module}` exports `{found.name}` only since Iron, not on {found.distro}: "
+                f"use `{found.companion}`")
     if found.actual:
         return (f"`{found.name}` is a {WORDS[found.actual]} of `{found.package}`, not a "
                 f"{WORDS[str(found.kind)]}: `{module}` has no `{found.name}`")
@@ -70,5 +77,7 @@ def _message(found: Mismatch) -> str:
 
 
 def _fix(found: Mismatch) -> str | None:
+    if found.companion:
+        return f"Import `{found.companion.split('.', 1)[0]}` and use `{found.companion}`"
     kind, name = (found.actual, found.name) if found.actual else found.close or (None, None)
     return f"Write `from {found.package}.{kind} import {name}`" if kind else None

@@ -34,7 +34,8 @@ def unknown_interface_type(package: Package) -> Iterator[Hit]:
     XML, YAML) and YAML files outside `test/` (parameters, bridge configurations) and checks
     them like DEP008: against the package's own interface folders, the workspace's interface
     packages and (for a jazzy target) pkgtool's table of the ROS 2 Jazzy interface packages.
-    Unknown packages are not reported.
+    Unknown packages are not reported; the companion types of services and actions
+    (`std_srvs/srv/Trigger_Event`) count as DEP008 counts them.
 
     ## Why is this bad?
     Types in strings are only resolved when the launch runs: `ros2 topic pub`, a bridge or a
@@ -58,7 +59,8 @@ def unknown_interface_type(package: Package) -> Iterator[Hit]:
         for match in _TYPE.finditer(text):
             name, kind, leaf = match.groups()
             known = interfaces_for(package, name)
-            problem = type_problem(name, kind, leaf, known) if known is not None else None
+            problem = None if known is None else type_problem(
+                name, kind, leaf, known, package.context.distro)
             if problem:
                 line = text.count("\n", 0, match.start()) + 1
                 column = match.start() - (text.rfind("\n", 0, match.start()) + 1) + 1
