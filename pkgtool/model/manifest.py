@@ -60,6 +60,12 @@ class Manifest:
         """Names declared with any of ``tags`` (``depend`` counts for every kind)."""
         return frozenset(d.name for d in self.dependencies if d.tag in tags or d.tag == "depend")
 
+    @property
+    def is_ros1(self) -> bool:
+        """True for a ROS 1 (catkin) package: built by catkin, or with catkin as build tool."""
+        build_type = self.build_type.value if self.build_type else ""
+        return build_type == "catkin" or "catkin" in self.depends({"buildtool_depend"})
+
 
 def parse_manifest(path: str, text: str) -> Manifest | ParseProblem:
     """Parse package.xml text; malformed XML or entity tricks give a ParseProblem."""

@@ -245,6 +245,7 @@ def needs(package: Package, module: PythonModule, *, guarded: bool | None = Fals
 
     ``guarded`` selects unguarded imports (False), guarded ones (True) or both (None). Every
     import of an own module that the package itself imports only guarded counts as guarded.
+    ROS modules of a ROS 1 package are provided by their own name (:func:`_ros1_keys`).
     """
     skip = own_modules(package) | _siblings(package, module.path)
     if module.is_test:
@@ -252,6 +253,7 @@ def needs(package: Package, module: PythonModule, *, guarded: bool | None = Fals
     stdlib = _stdlib(package.context.distro)
     names = declared(package, ANY)
     optional = module.path in optional_modules(package)
+    ros1 = package.manifest is not None and package.manifest.is_ros1
     seen: set[str] = set()
     for imported in module.imports:
         top = imported.top_level
@@ -261,7 +263,17 @@ def needs(package: Package, module: PythonModule, *, guarded: bool | None = Fals
             continue
         seen.add(top)
         kind, keys = classify(top, names, package.context)
+        if ros1 and kind == "ros":
+            keys = _ros1_keys(top, keys)
         yield Need(module, imported, top, kind, keys)
+
+
+def _ros1_keys(top: str, keys: tuple[str, ...]) -> tuple[str, ...]:
+    """The keys of a ROS import in a ROS 1 package: the module's own name counts too, and
+    comes first where only ROS 2 moved the module to another package (``tf2_ros``, which
+    ``tf2_ros_py`` provides in ROS 2 only)."""
+    ordered = (top, *keys) if top in ROS_MODULE_PACKAGES else (*keys, top)
+    return tuple(dict.fromkeys(ordered))
 
 
 MAX_PLACES = 5

@@ -43,7 +43,7 @@ class Unknown:
 def checked_dependencies(package: Package) -> list[Dependency]:
     """The package's dependency keys that apply to the target distribution."""
     manifest = package.manifest
-    if manifest is None or _is_ros1(package):
+    if manifest is None or manifest.is_ros1:
         return []
     variables = environment(package.context.distro)
     found = []
@@ -56,13 +56,6 @@ def checked_dependencies(package: Package) -> list[Dependency]:
             continue  # MAN018's
         found.append(dependency)
     return found
-
-
-def _is_ros1(package: Package) -> bool:
-    manifest = package.manifest
-    build_type = manifest.build_type.value if manifest and manifest.build_type else ""
-    return build_type == "catkin" or bool(manifest and "catkin" in manifest.depends(
-        {"buildtool_depend"}))
 
 
 @per_package
