@@ -30,6 +30,8 @@ DATA_FOLDERS = frozenset({"launch", "config", "params", "param", "resource", "te
 """Folders of a ROS package that hold data, launch files or tests, never its Python code."""
 _INSTALL_KEYWORDS = frozenset({"packages", "package_dir", "py_modules", "data_files"})
 """Keywords whose effect custom ``cmdclass`` commands can change."""
+PROJECT_FILES = frozenset({"setup.py", "pyproject.toml"})
+"""Files that make their folder a Python project of its own."""
 
 
 def is_ament_python(package: Package) -> bool:
@@ -38,6 +40,22 @@ def is_ament_python(package: Package) -> bool:
     if manifest is not None and manifest.build_type is not None:
         return manifest.build_type.value == "ament_python"
     return not package.has_file("CMakeLists.txt")
+
+
+@per_package
+def separate_projects(package: Package) -> frozenset[str]:
+    """Folders below the package root with their own setup.py or pyproject.toml.
+
+    Each is a Python project of its own (a pip-installable API, a vendored tool): colcon
+    installs none of its files as this package's code, whatever the package's build type.
+    """
+    return frozenset(folder for folder, _, name in (p.rpartition("/") for p in package.files)
+                     if folder and name in PROJECT_FILES)
+
+
+def in_separate_project(package: Package, path: str) -> bool:
+    """True for a file inside one of the package's :func:`separate_projects`."""
+    return any(path.startswith(folder + "/") for folder in separate_projects(package))
 
 
 def keyword_known(package: Package, keyword: str) -> bool:

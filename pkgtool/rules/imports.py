@@ -23,7 +23,8 @@ from pkgtool.knowledge.rosdep import (ALTERNATIVE_KEYS, COVERED_BY, ROS_MODULE_P
 from pkgtool.knowledge.rosdistro import (any_stdlib_module, is_released_package,
                                          keys_for_import, stdlib_modules)
 from pkgtool.model.context import Context
-from pkgtool.model.installed import DATA_FOLDERS, installed_modules
+from pkgtool.model.installed import (DATA_FOLDERS, in_separate_project, installed_modules,
+                                     separate_projects)
 from pkgtool.model.launch import is_launch_file, python_folders
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.modules import Import, PythonModule
@@ -120,10 +121,17 @@ def _layout(files: tuple[str, ...]) -> _Layout:
 def own_modules(package: Package) -> frozenset[str]:
     """Top-level names the package itself provides (never need a key).
 
-    A data folder installed by mistake under the name of another provider's module
-    (:func:`shadowing_folders`) is not one: imports of that name mean the other module.
+    Modules at the top of a separate Python project inside the package (scripts and examples
+    import them from the source tree) are. A data folder installed by mistake under the name of
+    another provider's module (:func:`shadowing_folders`) is not: imports of that name mean the
+    other module.
     """
-    names = set(_layout(package.files).names) | {package.name}
+    layout = _layout(package.files)
+    names = set(layout.names) | {package.name}
+    for folder in separate_projects(package):
+        names.update(entry for entry in layout.children.get(folder, ())
+                     if package.has_file(f"{folder}/{entry}.py") and entry != "setup"
+                     or f"{folder}/{entry}" in layout.packages)
     installed = installed_modules(package)
     if installed:
         names.update(name.split(".")[0] for name in installed)
@@ -176,14 +184,19 @@ def pytest_path_modules(package: Package) -> frozenset[str]:
 
 
 def installed_code(package: Package) -> list[PythonModule]:
-    """Non-test modules that setup.py installs (modules inside Python package folders)."""
+    """Non-test modules that colcon installs: those setup.py installs when that is known, else
+    modules inside Python package folders. A setup.py and the files of a separate Python project
+    inside the package (:func:`~pkgtool.model.installed.separate_projects`) never are."""
     installed = installed_modules(package)
     if installed is not None:
-        files = set(installed.values())
-        return [m for m in package.modules if m.path in files and not m.is_test]
-    packages = _layout(package.files).packages
-    return [m for m in package.modules if not m.is_test and posixpath.dirname(m.path)
-            and posixpath.dirname(m.path) in packages]
+        files = frozenset(installed.values())
+    else:
+        packages = _layout(package.files).packages
+        files = frozenset(m.path for m in package.modules if posixpath.dirname(m.path) in packages
+                          and posixpath.dirname(m.path))
+    return [m for m in package.modules if m.path in files and not m.is_test
+            and posixpath.basename(m.path) != "setup.py"
+            and not in_separate_project(package, m.path)]
 
 
 @per_package

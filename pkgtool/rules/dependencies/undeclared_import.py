@@ -26,7 +26,11 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     workspace package by that package, and a third-party module by one of the rosdep keys that
     rosdep's data says install it (`cv2` by `python3-opencv`, `rosdistro` by
     `python3-rosdistro-modules`, `pyflakes` by `pyflakes3`, ...). Modules that only a
-    `pytest11` entry point names are pytest plugins, checked as test code (DEP003).
+    `pytest11` entry point names are pytest plugins, checked as test code (DEP003). Without a
+    setup.py at the root (ament_cmake) the modules inside Python package folders count as
+    installed. A folder below the root with its own setup.py or pyproject.toml is a separate
+    Python project (a pip-installable client library): its files are never the package's
+    installed code, and its top-level modules count as the package's own.
 
     ## Why is this bad?
     `rosdep install` and the binary packages built by the ROS buildfarm install only what
