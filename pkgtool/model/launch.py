@@ -35,7 +35,9 @@ class NodeRef:
     written, when known. ``optional`` marks a node started only after the launch file checked
     that its package is installed (``if 'x' in get_packages_with_prefixes():``).
     ``parameter_files`` are the share files given as its parameters (``parameters=[path]``,
-    ``<param from=...>``), where the path is static.
+    ``<param from=...>``), where the path is static. ``other_distros`` marks a node inside a
+    branch of a test on the ROS distribution (``if os.environ['ROS_DISTRO'] < 'foxy':``): it
+    may be written for distributions other than the target.
     """
 
     package: str | None
@@ -47,6 +49,7 @@ class NodeRef:
     executable_span: Span | None = None
     optional: bool = False
     parameter_files: tuple[FileRef, ...] = ()
+    other_distros: bool = False
 
 
 @dataclass(frozen=True, slots=True)

@@ -14,6 +14,7 @@ from dataclasses import dataclass
 from pkgtool.model.launch import FileRef, NodeRef, PackageRef
 from pkgtool.model.launch_scopes import bindings, import_origins
 from pkgtool.model.span import Span
+from pkgtool.model.static_branches import depends_on_ros_distro
 
 SHARE_LOOKUPS = frozenset({"get_package_share_directory", "get_package_share_path",
                            "FindPackageShare"})
@@ -71,6 +72,7 @@ class _Reader(ast.NodeVisitor):
         self.files: list[FileRef] = []
         self.origins = import_origins(tree)
         self.optional = 0  # > 0 inside a block that runs only if some package is installed
+        self.distro_branches = 0  # > 0 inside a branch of a test on the ROS distribution
 
     def _span(self, node: ast.AST) -> Span:
         return Span(self.path, getattr(node, "lineno", 1), getattr(node, "col_offset", 0) + 1)
@@ -94,8 +96,15 @@ class _Reader(ast.NodeVisitor):
         self.visit(node.test)
         checked = any(isinstance(n, ast.Call) and _name(n.func) in PRESENCE_CHECKS
                       for n in ast.walk(node.test))
+        distro = depends_on_ros_distro(node.test, self._assigned)
+        self.distro_branches += distro
         self._visit_block(node.body, checked)
         self._visit_block(node.orelse, False)
+        self.distro_branches -= distro
+
+    def _assigned(self, name: str) -> ast.expr | None:
+        """The one expression ``name`` is assigned in the innermost scope binding it."""
+        return next((scope[name] for scope in reversed(self.scopes) if name in scope), None)
 
     def visit_Try(self, node: ast.Try) -> None:
         checked = any(isinstance(n, (ast.Name, ast.Attribute)) and
@@ -202,7 +211,8 @@ class _Reader(ast.NodeVisitor):
                 arguments,
                 package_node and self._span(package_node),
                 executable_node and self._span(executable_node), bool(self.optional),
-                self._parameter_files(_keyword(node, "parameters"))))
+                self._parameter_files(_keyword(node, "parameters")),
+                other_distros=bool(self.distro_branches)))
         elif name == "ExecuteProcess":
             self._ros2_run(node)
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:

@@ -4,6 +4,10 @@ A test is decided only when it is certain for every Python 3: ``sys.version_info
 ``[0]``/``.major``) compared with constants, ``six.PY2``/``PY2``/``PY3``, literal constants,
 a module-level name assigned once to a constant and never again, and ``not``/``and``/``or``
 of those. Anything else is undecided (None) and both branches count as running.
+
+Tests on the ROS distribution (the ``ROS_DISTRO`` environment variable) are never decided:
+:func:`depends_on_ros_distro` tells the rules about API that a ROS release removed or renamed
+that both branches hold code written for some distributions only.
 """
 
 from __future__ import annotations
@@ -11,6 +15,7 @@ from __future__ import annotations
 import ast
 import operator
 from collections import Counter
+from collections.abc import Callable
 
 from pkgtool.model.ast_nodes import nodes_of
 from pkgtool.model.memo import per_object
@@ -129,3 +134,48 @@ def dead_lines(tree: ast.Module) -> list[tuple[int, int]]:
             if branch:
                 ranges.append((branch[0].lineno, branch[-1].end_lineno or branch[-1].lineno))
     return ranges
+
+
+ROS_DISTRO_VARIABLE = "ROS_DISTRO"
+
+
+def reads_ros_distro(node: ast.AST) -> bool:
+    """``os.environ['ROS_DISTRO']``, ``os.environ.get('ROS_DISTRO', ...)``, ``os.getenv(...)``
+    (also through ``from os import environ, getenv``)."""
+    if isinstance(node, ast.Subscript):
+        return _is_environ(node.value) and _names_ros_distro(node.slice)
+    if not isinstance(node, ast.Call) or not node.args:
+        return False
+    func = node.func
+    getenv = (isinstance(func, ast.Name) and func.id == "getenv") or (
+        isinstance(func, ast.Attribute) and func.attr == "getenv" and _is_name(func.value, "os"))
+    get = isinstance(func, ast.Attribute) and func.attr == "get" and _is_environ(func.value)
+    return (getenv or get) and _names_ros_distro(node.args[0])
+
+
+def depends_on_ros_distro(test: ast.expr,
+                          assigned: Callable[[str], ast.expr | None] = lambda name: None) -> bool:
+    """The test reads the ROS distribution: directly, or through a name whose one assignment
+    (``assigned`` looks it up in the enclosing scopes) reads it. Code in either branch is
+    written for some distributions only."""
+    for node in ast.walk(test):
+        if reads_ros_distro(node):
+            return True
+        if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
+            value = assigned(node.id)
+            if value is not None and any(reads_ros_distro(n) for n in ast.walk(value)):
+                return True
+    return False
+
+
+def _is_name(node: ast.expr, name: str) -> bool:
+    return isinstance(node, ast.Name) and node.id == name
+
+
+def _is_environ(node: ast.expr) -> bool:
+    return _is_name(node, "environ") or (
+        isinstance(node, ast.Attribute) and node.attr == "environ" and _is_name(node.value, "os"))
+
+
+def _names_ros_distro(node: ast.expr) -> bool:
+    return isinstance(node, ast.Constant) and node.value == ROS_DISTRO_VARIABLE

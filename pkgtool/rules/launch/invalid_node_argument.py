@@ -29,7 +29,7 @@ def _problems(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
     """(message, fix, where) for each argument problem of one node action."""
     given = set(node.arguments)
     if node.action in PYTHON_ACTIONS:
-        for name in sorted(given & REMOVED_KEYWORDS.keys()):
+        for name in sorted(given & REMOVED_KEYWORDS.keys() if not node.other_distros else ()):
             where = node.executable_span if name == "node_executable" else None
             yield (f"`{node.action}()` has no `{name}` argument since ROS 2 Foxy",
                    f"Write `{REMOVED_KEYWORDS[name]}=`", where or node.span)
@@ -56,7 +56,10 @@ def invalid_launch_node_argument(package: Package) -> Iterator[Hit]:
     `node_name` or `node_namespace` (removed after ROS 2 Eloquent); XML and YAML `node`,
     `lifecycle_node` and `node_container` need `exec` and must not use ROS 1 or Python
     attribute names (`type`, `ns`, `executable`, `package`, `required`, ...). Calls that pass
-    `**kwargs` are not checked.
+    `**kwargs` are not checked, nor the removed keywords of calls in either branch of a test
+    on the ROS distribution (`if os.environ['ROS_DISTRO'] <= 'eloquent':`, also through a
+    variable assigned from `os.environ.get('ROS_DISTRO')` or `os.getenv('ROS_DISTRO')`): that
+    code is written for older distributions on purpose.
 
     ## Why is this bad?
     `ros2 launch` stops before starting anything: Python raises `TypeError: unexpected keyword
