@@ -35,3 +35,12 @@ def test_misspelled_keys_are_renamed_and_the_rest_is_left_to_the_user(tmp_path: 
     assert (root / "config" / "params.yaml").read_text() == AFTER
     assert left == ["`stray` is beside `ros__parameters`, not inside it"], left
     assert _fix(root) == left and (root / "config" / "params.yaml").read_text() == AFTER
+
+
+def test_a_near_miss_in_other_yaml_is_left_alone(tmp_path: Path) -> None:
+    """A file no launch file passes, with a scalar above the near miss, is not renamed."""
+    text = "model: x1\nbase:\n  ros_parameters:\n    wheel_radius: 0.1\n"
+    root = tmp_path / "pkg"
+    write_tree(root, {**correct_package_files("pkg"), "config/robot.yaml": text})
+    assert _fix(root) == []
+    assert (root / "config" / "robot.yaml").read_text() == text

@@ -48,24 +48,40 @@ def _near_miss(key: str, value: yaml.Node) -> bool:
         normal.startswith("ros") and SequenceMatcher(None, normal, "rosparameters").ratio() >= 0.75
 
 
-def _items(node: yaml.Node) -> Iterator[tuple[str, yaml.Node]]:
-    """Every (key, value) reachable from ``node`` through mappings alone (each node once)."""
+def _nested_only(node: yaml.Node) -> bool:
+    """True when ``node`` is a mapping whose values are all mappings, as every mapping above
+    ``ros__parameters`` is (node names and namespaces): a scalar or a list beside them is
+    impossible in a parameter file."""
+    return _is(node, "mapping") and all(_is(value, "mapping") for _, value in node.value)
+
+
+def _items(node: yaml.Node, nested: bool = True) -> Iterator[tuple[str, yaml.Node, bool]]:
+    """Every (key, value, nested) reachable from ``node`` through mappings alone (each node
+    once); ``nested`` is True when ``nested`` was given and every mapping from ``node`` to the
+    key's (both included) holds only mappings."""
     seen: set[int] = set()
-    stack = [node]
+    stack = [(node, nested)]
     while stack:
-        current = stack.pop()
+        current, above = stack.pop()
         if id(current) in seen or not _is(current, "mapping"):
             continue
         seen.add(id(current))
+        here = above and _nested_only(current)
         for key, value in current.value:
             if _is(key, "scalar"):
-                yield str(key.value), value
-            stack.append(value)
+                yield str(key.value), value, here
+            stack.append((value, here))
 
 
-def _holds_parameters(node: yaml.Node) -> bool:
-    """True when a key reachable through mappings is ``ros__parameters`` or a near miss."""
-    return any(k.startswith(PARAMS_KEY) or _near_miss(k, v) for k, v in _items(node))
+def _holds_parameters(node: yaml.Node, strict: bool = False, nested: bool = True) -> bool:
+    """True when a key reachable through mappings is ``ros__parameters`` or a near miss.
+
+    With ``strict`` (a file no launch file passes to a node), a near miss counts only when
+    every mapping on its path holds only mappings, ``nested`` telling whether those above
+    ``node`` do: otherwise the YAML is some other data, which a parameter file cannot be.
+    """
+    return any(k.startswith(PARAMS_KEY) or (_near_miss(k, v) and (here or not strict))
+               for k, v, here in _items(node, nested))
 
 
 def _span(path: str, node: yaml.Node) -> Span:
@@ -73,15 +89,17 @@ def _span(path: str, node: yaml.Node) -> Span:
 
 
 def _node_level(path: str, mapping: yaml.MappingNode, names: tuple[str, ...], passed: bool,
-                depth: int = 0) -> Iterator[Hit]:
+                nested: bool = True, depth: int = 0) -> Iterator[Hit]:
     """Hits of a mapping above ``ros__parameters`` (node names and namespaces).
 
     Unless the file is ``passed`` to a node, a branch without ``ros__parameters`` (or a near
     miss) is other data of a file read by code, and only values beside ``ros__parameters``
-    are reported.
+    are reported; a misspelled key counts only when ``nested`` (every mapping above this one
+    holds only mappings) and this one holds only mappings too.
     """
     if depth > 50:
         return
+    nested = nested and _nested_only(mapping)
     keys = [str(k.value) for k, _ in mapping.value if _is(k, "scalar")]
     beside = any(k.startswith(PARAMS_KEY) for k in keys)
     stray_reported = False
@@ -97,12 +115,13 @@ def _node_level(path: str, mapping: yaml.MappingNode, names: tuple[str, ...], pa
                 yield Hit(_span(path, key), f"`ros__parameters` of `{'/'.join(names)}` is not "
                           "a mapping of parameters", "Write `ros__parameters: {}` or indent "
                           "the parameters under it")
-        elif _misspelled(name, value, names) and not _holds_parameters(value):
+        elif (passed or nested) and _misspelled(name, value, names) and \
+                not _holds_parameters(value):
             yield Hit(_span(path, key), f"`{name}` is not `ros__parameters`: ROS 2 reads no "
                       "parameters from it and rejects the file", RENAME.format(name=name))
         elif _is(value, "mapping"):
-            if passed or _holds_parameters(value):
-                yield from _node_level(path, value, (*names, name), passed, depth + 1)
+            if passed or _holds_parameters(value, strict=True, nested=nested):
+                yield from _node_level(path, value, (*names, name), passed, nested, depth + 1)
         elif not stray_reported and (passed or beside):
             stray_reported = True
             yield Hit(_span(path, key), _stray(name, names, beside),
@@ -166,7 +185,11 @@ def malformed_parameter_file(package: Package) -> Iterator[Hit]:
     the blocks holding `ros__parameters` or a near miss of it are checked, and the rest is
     taken for data the code reads itself (files mixing both exist); YAML without any such key
     (maps, RViz or bridge configurations, waypoints), files under `test/` and launch files
-    are not checked. YAML that does not parse is SYN001.
+    are not checked. In such a file a near miss (or `parameters:` under a node name) counts
+    only when every mapping above it, the top level included, holds only mappings, as node
+    names and namespaces do: beside a scalar or a list (`serial_number: a200`, `urdf: null`)
+    it is a key of some other YAML, such as a robot description read by code.
+    YAML that does not parse is SYN001.
 
     ## Why is this bad?
     The node does not start: rcl stops with "Cannot have a value before ros__parameters" or
@@ -192,7 +215,7 @@ def malformed_parameter_file(package: Package) -> Iterator[Hit]:
         if not isinstance(documents, list):
             continue  # SYN001
         for root in documents:
-            if _is(root, "mapping") and (path in passed or _holds_parameters(root)):
+            if _is(root, "mapping") and (path in passed or _holds_parameters(root, strict=True)):
                 yield from _node_level(path, root, (), path in passed)
             elif _is(root, "sequence") and path in passed:
                 yield Hit(_span(path, root), "A file passed to a node as parameters is a list, "
