@@ -17,6 +17,12 @@ def environment(distro: str) -> dict[str, str]:
     return {"ROS_VERSION": "2", "ROS_PYTHON_VERSION": "3", "ROS_DISTRO": distro}
 
 
+def applies(condition: str | None, distro: str) -> bool:
+    """True when a tag with this ``condition`` is used for a ROS 2 ``distro``: it has none, or
+    it is true (one that is false or not understood leaves the tag out)."""
+    return condition is None or evaluate(condition, environment(distro)) is True
+
+
 def evaluate(condition: str, variables: dict[str, str]) -> bool | None:
     """The value of ``condition``; None when it is not a valid condition."""
     tokens = _TOKEN.findall(condition)

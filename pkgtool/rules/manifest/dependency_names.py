@@ -14,7 +14,7 @@ from dataclasses import dataclass
 from pkgtool.knowledge import rosdistro
 from pkgtool.knowledge.rosdep import NOT_PACKAGES, ROS1_PACKAGES, suggested_key
 from pkgtool.knowledge.tables import DISTROS
-from pkgtool.model.condition import environment, evaluate
+from pkgtool.model.condition import applies
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
@@ -45,12 +45,11 @@ def checked_dependencies(package: Package) -> list[Dependency]:
     manifest = package.manifest
     if manifest is None or manifest.is_ros1:
         return []
-    variables = environment(package.context.distro)
     found = []
     for dependency in manifest.dependencies:
-        name, condition = dependency.name, dependency.condition
+        name = dependency.name
         if (dependency.tag in _NOT_CHECKED or not _KEY.fullmatch(name or "")
-                or (condition is not None and evaluate(condition, variables) is not True)):
+                or not applies(dependency.condition, package.context.distro)):
             continue
         if name in NOT_PACKAGES or name in ROS1_PACKAGES or suggested_key(name):
             continue  # MAN018's

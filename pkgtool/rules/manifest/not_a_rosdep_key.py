@@ -6,6 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdep import NOT_PACKAGES, ROS1_PACKAGES, suggested_key
+from pkgtool.model.condition import applies
 from pkgtool.model.package import Package
 from pkgtool.model.xml import XmlElement
 from pkgtool.rules.manifest.common import build_types, tree
@@ -33,7 +34,7 @@ def _hit(element: XmlElement, ros2: bool) -> Hit | None:
     if key in _STDLIB:
         return Hit(element.span, f"`{key}` is part of the Python standard library, not a rosdep "
                    "key", f"Remove this `<{tag}>`: the standard library needs no dependency")
-    if key in ROS1_PACKAGES and ros2 and element.attribute("condition") is None:
+    if key in ROS1_PACKAGES and ros2:
         return Hit(element.span, f"`{key}` is a ROS 1 package that ROS 2 does not have",
                    f"Replace it with {ROS1_PACKAGES[key]}")
     replacement = suggested_key(key)
@@ -56,9 +57,11 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
     Reports dependency keys that are known not to be rosdep keys, with the key to use:
     pip distribution names (``opencv-python``, ``pyyaml``, ``numpy``), import names (``cv2``),
     ROS 1 Python 2 keys (``python-opencv``), ROS 1 packages (``rospy``, ``catkin``) in a package
-    whose build type is ``ament_*`` (not when the tag has a ``condition``, as packages for both
-    ROS versions do), ``ament_python``, which is a build type, and
+    whose build type is ``ament_*``, ``ament_python``, which is a build type, and
     standard library modules (``math``, ``threading``), which need no dependency.
+    A tag whose REP 149 ``condition`` is false for the target ROS 2 distribution (or not
+    understood) is not used there and not checked, as packages for both ROS versions have:
+    ``<exec_depend condition="$ROS_PYTHON_VERSION == 2">python-numpy</exec_depend>``.
 
     ## Why is this bad?
     ``rosdep install`` stops with "Cannot locate rosdep definition", build farms refuse the
@@ -82,6 +85,7 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
         return
     ros2 = any(b.text.startswith("ament_") for b in build_types(found))
     for element in found.elements():
-        hit = _hit(element, ros2) if element.tag in _CHECKED else None
+        hit = _hit(element, ros2) if element.tag in _CHECKED and \
+            applies(element.attribute("condition"), package.context.distro) else None
         if hit:
             yield hit
