@@ -96,4 +96,5 @@ RULES = {
     "SYN001": ("unparsable-file", "error", True, "syntax.unparsable_file"),
     "SYN002": ("unreadable-file", "error", True, "syntax.unreadable_file"),
     "SYN003": ("xml-entity-declaration", "error", True, "syntax.xml_entity_declaration"),
+    "SYN004": ("oversized-file", "info", True, "syntax.oversized_file"),
 }

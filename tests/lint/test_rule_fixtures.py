@@ -7,18 +7,21 @@ missing file) are listed in an ``EXPECT`` file of the case as ``path:line CODE``
 ``good`` cases must give no finding of that code. A case that is not a package but a colcon
 workspace (``<case>/src/<package>/...``) is linted package by package with its workspace, as
 ``pkgtool lint`` does; its paths are then relative to the case. A case may name the target
-distribution in a ``ROSDISTRO`` file.
+distribution in a ``ROSDISTRO`` file, and list in a ``GROW`` file (one path a line) files the
+test pads with blank lines past pkgtool's read limit, so no multi-megabyte file is committed.
 """
 
 from __future__ import annotations
 
 import re
+import shutil
 from pathlib import Path
 
 import pytest
 
 from pkgtool.findings import Finding
 from pkgtool.model.context import Context, workspace_of
+from pkgtool.model.files import MAX_FILE_BYTES
 from pkgtool.model.package import load_package
 from pkgtool.workspace import discover, is_package
 from pkgtool.rules.registry import load_all
@@ -55,6 +58,20 @@ def _expected(case: Path, code: str) -> set[tuple[str, int]]:
     return expected
 
 
+def _grown(case: Path, into: Path) -> Path:
+    """``case``, or its copy in ``into`` with the files its ``GROW`` file lists made larger
+    than pkgtool reads."""
+    listing = case / "GROW"
+    if not listing.is_file():
+        return case
+    copy = into / case.name
+    shutil.copytree(case, copy)
+    for name in listing.read_text().split():
+        with (copy / name).open("ab") as file:
+            file.write(b"\n" * (MAX_FILE_BYTES + 1))
+    return copy
+
+
 def _findings(case: Path, code: str) -> list[tuple[str, Finding]]:
     """(package folder relative to the case, finding) for every finding of ``code``."""
     marker = case / "ROSDISTRO"
@@ -68,16 +85,18 @@ def _findings(case: Path, code: str) -> list[tuple[str, Finding]]:
 
 
 @pytest.mark.parametrize(("code", "case"), _cases("bad"), ids=lambda v: getattr(v, "name", v))
-def test_bad_fixture_reports_exactly_the_marked_lines(code: str, case: Path) -> None:
-    got = {(prefix + f.span.path, f.span.line) for prefix, f in _findings(case, code)}
+def test_bad_fixture_reports_exactly_the_marked_lines(code: str, case: Path,
+                                                      tmp_path: Path) -> None:
+    got = {(prefix + f.span.path, f.span.line)
+           for prefix, f in _findings(_grown(case, tmp_path), code)}
     expected = _expected(case, code)
     assert expected, f"{case} marks no expected {code} finding"
     assert got == expected
 
 
 @pytest.mark.parametrize(("code", "case"), _cases("good"), ids=lambda v: getattr(v, "name", v))
-def test_good_fixture_reports_nothing(code: str, case: Path) -> None:
-    assert _findings(case, code) == []
+def test_good_fixture_reports_nothing(code: str, case: Path, tmp_path: Path) -> None:
+    assert _findings(_grown(case, tmp_path), code) == []
 
 
 def test_every_rule_has_good_and_bad_fixtures() -> None:

@@ -109,20 +109,23 @@ BAD_FILES: dict[str, bytes] = {
     "bad/binary.py": b"import os\x00\x01\x02\n",
     "bad/latin1.py": "# caf\u00e9 = 1\n".encode("latin-1"),
     "bad/utf16.py": "x = 1\n".encode("utf-16"),
-    "bad/huge.py": b"# padding\n" * (MAX_FILE_BYTES // 10 + 1),
     "launch/bad.launch.py": b"\xff\xfe\x00\x00",
 }
+HUGE = {"bad/huge.py": b"# padding\n" * (MAX_FILE_BYTES // 10 + 1)}
+"""A file over pkgtool's read limit: a note that it was not checked (SYN004), no error."""
 
 
 def test_bad_files_become_findings_not_tracebacks(tmp_path: Path) -> None:
     files: dict[str, str | bytes] = dict(correct_package_files("bad"))
-    files.update(BAD_FILES)
+    files.update(BAD_FILES | HUGE)
     root = write_tree(tmp_path / "bad", files)
     before = _snapshot(root)
     done = _lint_subprocess(root, "--format", "json")
     _assert_clean_exit(done)
-    reported = {f["path"] for f in json.loads(done.stdout)["findings"] if f["rule"] == "SYN002"}
-    assert reported == set(BAD_FILES)
+    found = json.loads(done.stdout)["findings"]
+    assert {f["path"] for f in found if f["rule"] == "SYN002"} == set(BAD_FILES)
+    assert {(f["path"], f["severity"]) for f in found if f["rule"] == "SYN004"} == {
+        (path, "info") for path in HUGE}
     _assert_only_cache_added(root, before)
 
 

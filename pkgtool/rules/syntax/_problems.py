@@ -2,14 +2,26 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator, Mapping
+from collections.abc import Callable, Iterator, Mapping
 
 from pkgtool.findings import Hit
 from pkgtool.model.package import Package
+from pkgtool.model.span import ParseProblem
+
+BUILD_FILES = frozenset({"package.xml", "setup.py", "setup.cfg"})
+"""Files no real package has beyond pkgtool's read limit: one that large is an error (SYN002),
+any other file that large a note that it was not checked (SYN004)."""
 
 
-def problem_hits(package: Package, labels: Mapping[str, str]) -> Iterator[Hit]:
-    """A hit for each problem whose kind ``labels`` names, the label before the detail."""
+def is_oversized_build_file(problem: ParseProblem) -> bool:
+    """True for a ``too-large`` problem of package.xml, setup.py or setup.cfg."""
+    return problem.kind == "too-large" and problem.span.path in BUILD_FILES
+
+
+def problem_hits(package: Package, labels: Mapping[str, str],
+                 keep: Callable[[ParseProblem], bool] = lambda _: True) -> Iterator[Hit]:
+    """A hit for each problem whose kind ``labels`` names and that ``keep`` accepts, the label
+    before the detail."""
     for problem in package.problems:
-        if problem.kind in labels:
+        if problem.kind in labels and keep(problem):
             yield Hit(problem.span, f"{labels[problem.kind]}: {problem.detail}")
