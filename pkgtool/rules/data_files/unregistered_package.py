@@ -13,6 +13,10 @@ from pkgtool.rules.registry import rule
 from pkgtool.rules.setup_values import checked_setup, name_cause
 
 
+_UNFOUND = ("only colcon's fallback (deprecated) installs the right one; released or "
+            "pip-installed, ROS 2 cannot find the package")
+
+
 @rule("DAT003", "unregistered-package", Severity.ERROR,
       fix="Create the empty file `resource/<package>` and add `('share/ament_index/"
           "resource_index/packages', ['resource/' + package_name])` to data_files")
@@ -25,9 +29,11 @@ def unregistered_package(package: Package) -> Iterator[Hit]:
     reported by DAT001 instead.
 
     ## Why is this bad?
-    ROS 2 finds installed packages through this marker only: without it `ros2 run`,
-    `ros2 launch`, `ros2 pkg list` and `get_package_share_directory()` report "package not
-    found", although the build succeeded.
+    ROS 2 finds installed packages through this marker only. colcon still adds a missing one
+    itself, with a warning that this fallback will be removed; a release build (bloom's
+    Debian packages) or a pip install does not, and there `ros2 run`, `ros2 launch`,
+    `ros2 pkg list` and `get_package_share_directory()` report "package not found", although
+    the build succeeded.
 
     ## Example
     ```python
@@ -51,7 +57,7 @@ def unregistered_package(package: Package) -> Iterator[Hit]:
         entry = declared[0][0]
         shown = ", ".join(f"`{n}`" for n in sorted(names)) or "nothing"
         yield Hit(entry.span, f"The ament index marker installed is {shown}, not "
-                              f"`{package.name}`: ROS 2 cannot find `{package.name}`",
+                              f"`{package.name}`: {_UNFOUND}",
                   cause=name_cause(min(names)) if len(names) == 1 else "",
                   consequence=True)
         return
@@ -60,9 +66,9 @@ def unregistered_package(package: Package) -> Iterator[Hit]:
                       and ("ament_index" in e.destination or n.startswith("resource/"))), None)
     if elsewhere is not None:
         yield Hit(elsewhere.span, f"The ament index marker `{package.name}` is installed to "
-                                  f"`{elsewhere.destination}`, not `{MARKER_FOLDER}`: ROS 2 "
-                                  f"cannot find the package `{package.name}`",
+                                  f"`{elsewhere.destination}`, not `{MARKER_FOLDER}`: "
+                                  f"{_UNFOUND}",
                   f"Install it to `'{MARKER_FOLDER}'`")
     else:
         yield Hit(setup.setup_span, f"Nothing installs `{MARKER_FOLDER}/{package.name}`: "
-                                    f"ROS 2 cannot find the package `{package.name}`")
+                                    f"{_UNFOUND}")
