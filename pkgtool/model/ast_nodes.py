@@ -16,18 +16,6 @@ _TREES = 64
 """How many trees' node lists stay: more than any package has modules being checked at once."""
 
 
-def child_nodes(node: ast.AST) -> list[ast.AST]:
-    """The direct children of ``node`` in field order (``ast.iter_child_nodes``, as a list)."""
-    found: list[ast.AST] = []
-    for name in node._fields:
-        value = getattr(node, name, None)
-        if isinstance(value, ast.AST):
-            found.append(value)
-        elif isinstance(value, list):
-            found.extend(item for item in value if isinstance(item, ast.AST))
-    return found
-
-
 @dataclass(frozen=True, slots=True)
 class Walk:
     """Every node of a tree breadth first (the order of ``ast.walk``), and each node's parent
@@ -39,17 +27,25 @@ class Walk:
 
 @per_object(_TREES)
 def walk_once(tree: ast.AST) -> Walk:
-    """The :class:`Walk` of ``tree``, computed once per tree object; treat both as read-only."""
+    """The :class:`Walk` of ``tree``, computed once per tree object; treat both as read-only.
+
+    Children are taken in field order (``ast.iter_child_nodes``), inline: this walk is the
+    one every rule shares, and a call per node doubled its cost.
+    """
     found: list[ast.AST] = [tree]
     parents: dict[int, ast.AST] = {}
-    position = 0
-    while position < len(found):
-        node = found[position]
-        children = child_nodes(node)
-        for child in children:
-            parents[id(child)] = node
-        found.extend(children)
-        position += 1
+    append = found.append
+    for node in found:  # the list grows while it is read: breadth first
+        for name in node._fields:
+            value = getattr(node, name, None)
+            if type(value) is list:
+                for item in value:
+                    if isinstance(item, ast.AST):
+                        parents[id(item)] = node
+                        append(item)
+            elif isinstance(value, ast.AST):
+                parents[id(value)] = node
+                append(value)
     return Walk(tuple(found), parents)
 
 
