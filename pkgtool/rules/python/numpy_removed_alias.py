@@ -47,6 +47,8 @@ def numpy_removed_alias(package: Package) -> Iterator[Hit]:
     ```
     """
     for module, _, index in installed_trees(package):
+        if not any(i.top_level == "numpy" for i in module.imports):
+            continue  # nothing can resolve to numpy (the common case: no walk over attributes)
         for node, owner, attr in resolved_attributes(index):
             if owner == "numpy" and attr in REMOVED:
                 yield _hit(module.path, node, attr)
