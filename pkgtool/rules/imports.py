@@ -185,15 +185,18 @@ def pytest_path_modules(package: Package) -> frozenset[str]:
 
 def installed_code(package: Package) -> list[PythonModule]:
     """Non-test modules that colcon installs: those setup.py installs when that is known, else
-    modules inside Python package folders. A setup.py and the files of a separate Python project
-    inside the package (:func:`~pkgtool.model.installed.separate_projects`) never are."""
+    modules inside Python package folders other than data folders (``launch/``). A setup.py
+    and the files of a separate Python project inside the package
+    (:func:`~pkgtool.model.installed.separate_projects`) never are."""
     installed = installed_modules(package)
     if installed is not None:
         files = frozenset(installed.values())
-    else:
+    else:  # CMake installs launch/, config/, ... to share/, whatever __init__.py they hold
         packages = _layout(package.files).packages
+        data = DATA_FOLDERS - {package.name}
         files = frozenset(m.path for m in package.modules if posixpath.dirname(m.path) in packages
-                          and posixpath.dirname(m.path))
+                          and posixpath.dirname(m.path)
+                          and m.path.split("/", 1)[0] not in data)
     return [m for m in package.modules if m.path in files and not m.is_test
             and posixpath.basename(m.path) != "setup.py"
             and not in_separate_project(package, m.path)]
