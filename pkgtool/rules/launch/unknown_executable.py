@@ -15,11 +15,16 @@ def executables(package: Package) -> frozenset[str] | None:
 
     Console scripts of setup.py and setup.cfg count, and so do files that data_files copies
     into ``lib/<package>``. Anything dynamic (unevaluated keywords, ``scripts=``, a setup.cfg or
-    pyproject.toml that did not parse or may declare scripts) makes the answer unknown.
+    pyproject.toml that did not parse or may declare scripts) makes the answer unknown, and so
+    does a build type other than ament_python (CMake installs the executables then).
     """
     setup = package.setup_py
     if setup is None or "scripts" in setup.keywords or package.has_file("pyproject.toml"):
         return None
+    manifest = package.manifest
+    if manifest is not None and manifest.build_type is not None and \
+            manifest.build_type.value != "ament_python":
+        return None  # CMake installs its executables; a setup.py beside it is not run
     if any(setup.is_unresolved(k) for k in ("entry_points", "data_files", "**")):
         return None
     if package.has_file("setup.cfg") and package.setup_cfg is None:
