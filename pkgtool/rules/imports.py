@@ -197,18 +197,30 @@ def installed_code(package: Package) -> list[PythonModule]:
         files = frozenset(m.path for m in package.modules if posixpath.dirname(m.path) in packages
                           and posixpath.dirname(m.path)
                           and m.path.split("/", 1)[0] not in data)
-    return [m for m in package.modules if m.path in files and not m.is_test
+    scripts = console_script_files(package)
+    return [m for m in package.modules if m.path in files
+            and (not m.is_test or m.path in scripts)
             and posixpath.basename(m.path) != "setup.py"
             and not in_separate_project(package, m.path)]
+
+
+def _entry_point_files(package: Package, group: str) -> frozenset[str]:
+    entries = package.setup_py.entry_points if package.setup_py else None
+    installed = installed_modules(package) or {}
+    return frozenset(installed[e.module] for e in entries or ()
+                     if e.group == group and e.module in installed)
 
 
 @per_package
 def pytest_plugins(package: Package) -> frozenset[str]:
     """Files of modules that a ``pytest11`` entry point names: pytest loads them, nothing else."""
-    entries = package.setup_py.entry_points if package.setup_py else None
-    installed = installed_modules(package) or {}
-    return frozenset(installed[e.module] for e in entries or ()
-                     if e.group == "pytest11" and e.module in installed)
+    return _entry_point_files(package, "pytest11")
+
+
+@per_package
+def console_script_files(package: Package) -> frozenset[str]:
+    """Files of modules a console script runs: installed nodes, even when named ``*_test.py``."""
+    return _entry_point_files(package, "console_scripts")
 
 
 def runtime_code(package: Package) -> list[PythonModule]:
@@ -224,8 +236,9 @@ def all_python(package: Package) -> list[PythonModule]:
 
 def test_code(package: Package) -> list[PythonModule]:
     """Test modules (under test/ or tests/, test_*.py, *_test.py, conftest.py), pytest plugins."""
-    plugins = pytest_plugins(package)
-    return [m for m in package.modules if m.is_test or m.path in plugins]
+    plugins, scripts = pytest_plugins(package), console_script_files(package)
+    return [m for m in package.modules
+            if (m.is_test and m.path not in scripts) or m.path in plugins]
 
 
 def classify(top: str, declared_names: Iterable[str], context: Context = Context()
