@@ -140,16 +140,21 @@ Found = list[tuple[Path, str]]
 
 def _listing(folder: Path, real: str) -> tuple[frozenset[str], Found, Found]:
     """The names in ``folder``, and its sub-folders worth searching: real ones, then links."""
-    try:
-        with os.scandir(folder) as entries:
-            listed = list(entries)
-    except OSError:
-        return frozenset(), [], []
+    listed = listing(folder)
     names = frozenset(e.name for e in listed)
     searched = [e for e in listed if not _skipped_name(e.name) and _is_dir(e)]
     return (names, [(folder / e.name, os.path.join(real, e.name))
                     for e in searched if not e.is_symlink()],
             [(folder / e.name, "") for e in searched if e.is_symlink()])
+
+
+def listing(folder: str | Path) -> list[os.DirEntry[str]]:
+    """The entries of ``folder``; none when it cannot be listed."""
+    try:
+        with os.scandir(folder) as entries:
+            return list(entries)
+    except OSError:
+        return []
 
 
 def _is_dir(entry: os.DirEntry[str]) -> bool:

@@ -141,10 +141,10 @@ class LintCache:
         entries = {root: entry for root, entry in others.items()
                    if root not in self._fresh and os.path.isdir(root)}
         entries.update(self._fresh)
+        import tempfile  # only a run that writes pays for it
+
         try:
             self._prepare()
-            import tempfile
-
             handle, temporary = tempfile.mkstemp(dir=self.folder, prefix=".tmp-")
         except OSError:  # a read-only or full disk: linting still works, uncached
             return

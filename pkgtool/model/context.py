@@ -16,7 +16,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from pkgtool.knowledge.tables import DEFAULT_DISTRO
-from pkgtool.model.files import listing
+from pkgtool.workspace import listing
 
 _NAME = re.compile(r"<name>\s*([^<\s]+)\s*</name>")
 _KINDS = ("msg", "srv", "action")

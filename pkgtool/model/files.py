@@ -7,6 +7,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from pkgtool.model.span import ParseProblem, Span
+from pkgtool.workspace import listing
 
 MAX_FILE_BYTES = 2 * 1024 * 1024
 """Files larger than this are not parsed (a ``too-large`` problem instead)."""
@@ -99,15 +100,6 @@ def _walk(root: Path) -> list[tuple[str, os.DirEntry[str]]]:
             except OSError:
                 continue
     return found
-
-
-def listing(folder: str) -> list[os.DirEntry[str]]:
-    """The entries of ``folder``; none when it cannot be listed."""
-    try:
-        with os.scandir(folder) as entries:
-            return list(entries)
-    except OSError:
-        return []
 
 
 def _size_time(entry: os.DirEntry[str]) -> list[int]:

@@ -136,10 +136,10 @@ def dead_lines(tree: ast.Module) -> list[tuple[int, int]]:
     return ranges
 
 
-ROS_DISTRO_VARIABLE = "ROS_DISTRO"
+_ROS_DISTRO_VARIABLE = "ROS_DISTRO"
 
 
-def reads_ros_distro(node: ast.AST) -> bool:
+def _reads_ros_distro(node: ast.AST) -> bool:
     """``os.environ['ROS_DISTRO']``, ``os.environ.get('ROS_DISTRO', ...)``, ``os.getenv(...)``
     (also through ``from os import environ, getenv``)."""
     if isinstance(node, ast.Subscript):
@@ -159,11 +159,11 @@ def depends_on_ros_distro(test: ast.expr,
     (``assigned`` looks it up in the enclosing scopes) reads it. Code in either branch is
     written for some distributions only."""
     for node in ast.walk(test):
-        if reads_ros_distro(node):
+        if _reads_ros_distro(node):
             return True
         if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
             value = assigned(node.id)
-            if value is not None and any(reads_ros_distro(n) for n in ast.walk(value)):
+            if value is not None and any(_reads_ros_distro(n) for n in ast.walk(value)):
                 return True
     return False
 
@@ -178,4 +178,4 @@ def _is_environ(node: ast.expr) -> bool:
 
 
 def _names_ros_distro(node: ast.expr) -> bool:
-    return isinstance(node, ast.Constant) and node.value == ROS_DISTRO_VARIABLE
+    return isinstance(node, ast.Constant) and node.value == _ROS_DISTRO_VARIABLE

@@ -29,7 +29,8 @@ def _problems(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
     """(message, fix, where) for each argument problem of one node action."""
     given = set(node.arguments)
     if node.action in PYTHON_ACTIONS:
-        for name in sorted(given & REMOVED_KEYWORDS.keys() if not node.other_distros else ()):
+        removed = set() if node.other_distros else given & REMOVED_KEYWORDS.keys()
+        for name in sorted(removed):
             where = node.executable_span if name == "node_executable" else None
             yield (f"`{node.action}()` has no `{name}` argument since ROS 2 Foxy",
                    f"Write `{REMOVED_KEYWORDS[name]}=`", where or node.span)

@@ -6,6 +6,7 @@ import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.installed import is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
 
@@ -16,14 +17,13 @@ def executables(package: Package) -> frozenset[str] | None:
     Console scripts of setup.py and setup.cfg count, and so do files that data_files copies
     into ``lib/<package>``. Anything dynamic (unevaluated keywords, ``scripts=``, a setup.cfg or
     pyproject.toml that did not parse or may declare scripts) makes the answer unknown, and so
-    does a build type other than ament_python (CMake installs the executables then).
+    does a package colcon builds with CMake (another build type, or a CMakeLists.txt and none):
+    CMake installs the executables then.
     """
     setup = package.setup_py
     if setup is None or "scripts" in setup.keywords or package.has_file("pyproject.toml"):
         return None
-    manifest = package.manifest
-    if manifest is not None and manifest.build_type is not None and \
-            manifest.build_type.value != "ament_python":
+    if not is_ament_python(package):
         return None  # CMake installs its executables; a setup.py beside it is not run
     if any(setup.is_unresolved(k) for k in ("entry_points", "data_files", "**")):
         return None

@@ -17,7 +17,9 @@ from __future__ import annotations
 import ast
 import builtins
 from collections import deque
+from collections.abc import Callable
 from functools import cache
+from typing import Any
 
 from pkgtool.model.ast_nodes import nodes_of
 
@@ -27,7 +29,6 @@ _KNOWN = frozenset(dir(builtins)) | {"__file__", "__builtins__", "__annotations_
 _UNDECIDED = (ast.Global, ast.Nonlocal, ast.NamedExpr, ast.Match)
 _TYPING = frozenset({"typing", "typing_extensions"})
 _FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)
-_COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
 
 
 class Undecided(Exception):
@@ -175,17 +176,16 @@ class _Walk:
         for statement in node.body if isinstance(node.body, list) else [node.body]:
             self.visit(statement)
 
-    def visit_comprehension_scope(self, node: ast.AST) -> None:
+    def _comprehension(self, node: ast.AST) -> None:
         self.stack.append(_Scope())
         self.children(node)
         self.stack.pop()
 
-    visit_ListComp = visit_SetComp = visit_DictComp = visit_GeneratorExp = \
-        visit_comprehension_scope
+    visit_ListComp = visit_SetComp = visit_DictComp = visit_GeneratorExp = _comprehension
 
 
 @cache
-def _handler(kind: type[ast.AST]):  # type: ignore[no-untyped-def]
+def _handler(kind: type[ast.AST]) -> Callable[[_Walk, Any], None] | None:
     """The method of :class:`_Walk` for nodes of ``kind``, if it has one."""
     return getattr(_Walk, "visit_" + kind.__name__, None)
 
