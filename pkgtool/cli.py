@@ -8,6 +8,7 @@ Ctrl-C ends the run with one line, "Interrupted: nothing was written", and exit 
 
 from __future__ import annotations
 
+import gc
 import os
 import sys
 from collections.abc import Sequence
@@ -95,4 +96,5 @@ def main() -> None:
         code = INTERRUPTED
     if code == INTERRUPTED:
         sys.stderr.write("Interrupted: nothing was written\n")
+    gc.freeze()  # exit frees what is left: the final collection would only walk it (~20 ms)
     sys.exit(code if isinstance(code, int) else 0)
