@@ -13,12 +13,16 @@ Measures, each as wall time of a fresh process (cold start included):
   means a flat time per package), versus ``flake8 WS`` (up to ``--flake8-up-to`` packages);
   again with nothing changed (warm cache); and with one module of one package changed.
 
+With ``--hook-venv`` the one-package case is also timed where pre-commit runs the hook: a
+fresh virtual environment holding ``pkgtool-ros[style]`` alone (no ROS wheels, whose ``.pth``
+re-executes every Python start in the project's venv, and no editable-install finder).
+
 Prints a table and writes the numbers to ``bench/results/lint-<UTC time>.json``; the time of
 ``python -c pass`` and of flake8 on one package calibrate the machine's load.
 Targets (issue 15): one package <= 0.6x flake8; cold >= 500 packages/s on 2 cores, linear to
 5,000; warm >= 3,000 packages/s; one file changed in 500 packages <= 0.3 s.
 
-    .venv/bin/python bench/bench_lint.py [--repeat 5] [--sizes 100 500 1000 5000]
+    .venv/bin/python bench/bench_lint.py [--repeat 5] [--sizes 100 500 1000 5000] [--hook-venv]
 """
 
 from __future__ import annotations
@@ -209,27 +213,50 @@ def _one_file_changed(workspace: Path, size: int) -> Callable[[int], None]:
     return change
 
 
-def measure(repeat: int, sizes: list[int], flake8_up_to: int, work: Path) -> dict[str, Any]:
-    """Every measurement as a JSON-ready dict."""
+def _single(bin_folder: Path, single: Path, repeat: int) -> dict[str, Any]:
+    """pkgtool (no cache, warm cache) and flake8 of ``bin_folder`` on one package, taking
+    turns run by run: the machine's speed drifts, and a ratio must compare like with like."""
+    lint, flake8 = [str(bin_folder / "pkgtool"), "lint"], [str(bin_folder / "flake8")]
+    runs = [(_time(lint + ["--no-cache", "."], single, 1), _time(lint + ["."], single, 1),
+             _time(flake8 + ["."], single, 1)) for _ in range(repeat)]
+    lint_one, lint_cpu = (statistics.median(r[0][i] for r in runs) for i in range(2))
+    warm_one = statistics.median(r[1][0] for r in runs)
+    flake8_one, flake8_cpu = (statistics.median(r[2][i] for r in runs) for i in range(2))
+    return {"pkgtool_s": lint_one, "pkgtool_cpu_s": lint_cpu, "flake8_s": flake8_one,
+            "flake8_cpu_s": flake8_cpu, "pkgtool_warm_s": warm_one,
+            "ratio_pkgtool_over_flake8": lint_one / flake8_one,
+            "ratio_warm_over_flake8": warm_one / flake8_one,
+            "pkgtool_exit_code": runs[-1][0][2]}
+
+
+def hook_environment(work: Path) -> Path:
+    """A virtual environment like the one pre-commit gives the hook: pkgtool-ros[style]
+    installed from this checkout (not editable, bytecode compiled), no ROS wheels. Its
+    ``bin`` folder."""
+    venv = work / "hook-venv"
+    subprocess.run([sys.executable, "-m", "venv", str(venv)], check=True)
+    checkout = Path(__file__).resolve().parents[1]
+    subprocess.run([str(venv / "bin" / "python"), "-m", "pip", "install", "--quiet",
+                    "--disable-pip-version-check", f"{checkout}[style]"],
+                   check=True, env={**os.environ, "PYTHONDONTWRITEBYTECODE": ""})
+    return venv / "bin"
+
+
+def measure(repeat: int, sizes: list[int], flake8_up_to: int, work: Path,
+            hook_venv: Path | None = None) -> dict[str, Any]:
+    """Every measurement as a JSON-ready dict (``hook_venv``: also the one-package case with
+    that environment's pkgtool and flake8)."""
     lint, flake8 = [str(BIN / "pkgtool"), "lint"], [str(BIN / "flake8")]
     single = work / "single"
     write_package(single, "bench_single")
     python_s, _, _ = _time([sys.executable, "-c", "pass"], work, repeat)
-    # Interleaved, run by run: the machine's speed drifts, and a ratio must compare like
-    # with like.
-    runs = [(_time(lint + ["--no-cache", "."], single, 1), _time(lint + ["."], single, 1),
-             _time(flake8 + ["."], single, 1)) for _ in range(repeat)]
-    lint_one, lint_cpu = (statistics.median(r[0][i] for r in runs) for i in range(2))
-    lint_code = runs[-1][0][2]
-    warm_one = statistics.median(r[1][0] for r in runs)
-    flake8_one, flake8_cpu = (statistics.median(r[2][i] for r in runs) for i in range(2))
+    single_result = _single(BIN, single, repeat)
     result: dict[str, Any] = {
-        "calibration": {"python_startup_s": python_s, "flake8_single_s": flake8_one},
-        "single": {"pkgtool_s": lint_one, "pkgtool_cpu_s": lint_cpu, "flake8_s": flake8_one,
-                   "flake8_cpu_s": flake8_cpu, "pkgtool_warm_s": warm_one,
-                   "ratio_pkgtool_over_flake8": lint_one / flake8_one,
-                   "ratio_warm_over_flake8": warm_one / flake8_one,
-                   "pkgtool_exit_code": lint_code}}
+        "calibration": {"python_startup_s": python_s,
+                        "flake8_single_s": single_result["flake8_s"]},
+        "single": single_result}
+    if hook_venv is not None:
+        result["single_hook_venv"] = _single(hook_venv, single, repeat)
     workspaces: list[dict[str, Any]] = []
     for size in sizes:
         workspace = work / f"ws{size}"
@@ -259,14 +286,19 @@ def _cell(value: float | None, form: str) -> str:
     return "-" if value is None else format(value, form)
 
 
+def _single_row(label: str, single: dict[str, Any]) -> tuple[str, ...]:
+    return (label, f"{single['pkgtool_s']:.3f}", f"{single['pkgtool_cpu_s']:.3f}",
+            f"{single['flake8_s']:.3f}", f"{single['ratio_pkgtool_over_flake8']:.2f}", "", "",
+            f"{single['pkgtool_warm_s']:.3f}", "", "")
+
+
 def table(result: dict[str, Any]) -> str:
     """The measurements as an aligned text table."""
-    single = result["single"]
     rows = [("case", "pkgtool s", "cpu s", "flake8 s", "pkgtool/flake8", "packages/s",
              "ms/package", "warm s", "warm pkg/s", "1 changed s"),
-            ("1 package", f"{single['pkgtool_s']:.3f}", f"{single['pkgtool_cpu_s']:.3f}",
-             f"{single['flake8_s']:.3f}", f"{single['ratio_pkgtool_over_flake8']:.2f}", "", "",
-             f"{single['pkgtool_warm_s']:.3f}", "", "")]
+            *(_single_row(label, result[key]) for label, key in
+              (("1 package", "single"), ("1 package, hook venv", "single_hook_venv"))
+              if key in result)]
     for ws in result["workspaces"]:
         rows.append((f"{ws['packages']} packages", f"{ws['pkgtool_s']:.3f}",
                      f"{ws['pkgtool_cpu_s']:.3f}", _cell(ws["flake8_s"], ".3f"),
@@ -289,12 +321,16 @@ def main() -> int:
     parser.add_argument("--sizes", type=int, nargs="+", default=[100, 500, 1000])
     parser.add_argument("--flake8-up-to", type=int, default=500,
                         help="time flake8 on workspaces up to this many packages")
+    parser.add_argument("--hook-venv", action="store_true",
+                        help="also time one package in a fresh venv holding pkgtool-ros[style] "
+                             "alone, as pre-commit installs the hook (needs the package index)")
     args = parser.parse_args()
     # An installed pkgtool has its bytecode compiled; a checkout run with
     # PYTHONDONTWRITEBYTECODE would compile every module on every start.
     compileall.compile_dir(str(Path(__file__).resolve().parents[1] / "pkgtool"), quiet=1)
     with tempfile.TemporaryDirectory(prefix="pkgtool-bench-") as work:
-        result = measure(args.repeat, args.sizes, args.flake8_up_to, Path(work))
+        hook = hook_environment(Path(work)) if args.hook_venv else None
+        result = measure(args.repeat, args.sizes, args.flake8_up_to, Path(work), hook)
     result["machine"] = {"cpus": os.cpu_count(), "python": platform.python_version(),
                          "platform": platform.platform(),
                          "load_average": os.getloadavg()}
