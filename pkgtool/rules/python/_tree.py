@@ -45,6 +45,22 @@ class Index:
             parent = self.parents.get(id(parent))
         return parent
 
+    def in_unevaluated_annotation(self, node: ast.AST) -> bool:
+        """True when ``node`` is inside an annotation Python never evaluates: that of an
+        assignment in a function body (PEP 526), or any under ``from __future__ import
+        annotations`` (PEP 563)."""
+        postponed = any(i.module == "__future__" and any(a.name == "annotations" for a in i.names)
+                        for i in self.import_froms)
+        child, parent = node, self.parents.get(id(node))
+        while parent is not None:
+            if isinstance(parent, ast.AnnAssign) and parent.annotation is child:
+                return postponed or self.enclosing_function(parent) is not None
+            if postponed and (isinstance(parent, ast.arg) and parent.annotation is child or
+                              isinstance(parent, FUNCTIONS) and parent.returns is child):
+                return True
+            child, parent = parent, self.parents.get(id(parent))
+        return False
+
     def enclosing_function(self, node: ast.AST) -> ast.FunctionDef | ast.AsyncFunctionDef | None:
         """The innermost function around ``node`` (None at module or class level)."""
         parent = self.parents.get(id(node))

@@ -29,7 +29,9 @@ def numpy_removed_alias(package: Package) -> Iterator[Hit]:
     Reports attributes of the `numpy` module (through any name bound only to `numpy`, such
     as `np`) and `from numpy import ...` names that no longer exist: the builtin aliases
     removed in NumPy 1.24 (`np.float`, `np.int`, `np.object`, `np.bool`, ...) and the names
-    NumPy 2 removed (`np.int0`, `np.float_`, `np.product`, `np.NaN`, ...).
+    NumPy 2 removed (`np.int0`, `np.float_`, `np.product`, `np.NaN`, ...). Annotations Python
+    never evaluates (of an assignment in a function, or under `from __future__ import
+    annotations`) are not checked.
 
     ## Why is this bad?
     The line raises `AttributeError` (or `ImportError`) when it runs. ROS 2 Jazzy on Ubuntu
@@ -50,7 +52,7 @@ def numpy_removed_alias(package: Package) -> Iterator[Hit]:
         if not any(i.top_level == "numpy" for i in module.imports):
             continue  # nothing can resolve to numpy (the common case: no walk over attributes)
         for node, owner, attr in resolved_attributes(index):
-            if owner == "numpy" and attr in REMOVED:
+            if owner == "numpy" and attr in REMOVED and not index.in_unevaluated_annotation(node):
                 yield _hit(module.path, node, attr)
         for node in index.import_froms:
             if node.module == "numpy" and node.level == 0:

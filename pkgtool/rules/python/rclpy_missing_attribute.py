@@ -22,7 +22,9 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
     against rclpy itself: `ActionClient.GoalStatus` (GoalStatus is a message in
     `action_msgs.msg`), rospy habits such as `rclpy.is_shutdown()`, `rclpy.loginfo()`,
     `rclpy.Node` (also as a module: `from rclpy.Node import Node`) or `Time.now()`. Only names
-    bound solely to rclpy imports are checked.
+    bound solely to rclpy imports are checked, and not in annotations Python never evaluates
+    (`self.node: rclpy.Node = node` in a method, any under `from __future__ import
+    annotations`): a type checker's business.
 
     ## Why is this bad?
     The line raises `AttributeError` when it runs, often inside a callback, where the
@@ -42,7 +44,7 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
     for module, _, index in installed_trees(package):
         for node, owner, attr in resolved_attributes(index):
             use = missing_attribute(owner, attr) if owner.split(".")[0] == "rclpy" else None
-            if use:
+            if use and not index.in_unevaluated_annotation(node):
                 shown = f"{owner.rsplit('.', 1)[-1]}.{attr}"
                 where = "" if owner == "rclpy" else " in rclpy"
                 yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
