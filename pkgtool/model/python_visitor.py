@@ -31,21 +31,36 @@ def _mentions_find_spec(test: ast.expr) -> bool:
                for n in ast.walk(test))
 
 
+def _is_find_spec_exit(node: ast.AST) -> bool:
+    """True for a guard clause on a module's presence: ``if find_spec("x") is None: raise``."""
+    return isinstance(node, ast.If) and bool(node.body) and \
+        isinstance(node.body[-1], (ast.Raise, ast.Return)) and _mentions_find_spec(node.test)
+
+
+def _block(statements: list[ast.AST], guarded: bool) -> list[tuple[ast.AST, bool]]:
+    """``statements`` each with whether its imports are guarded: those after a
+    :func:`_is_find_spec_exit` guard clause are, like those inside such an ``if``."""
+    parts = []
+    for statement in statements:
+        parts.append((statement, guarded))
+        guarded = guarded or _is_find_spec_exit(statement)
+    return parts
+
+
 def _guarded_parts(node: ast.AST, guarded: bool, constants: dict[str, bool]
                    ) -> list[tuple[ast.AST, bool]]:
     """The statements directly inside ``node``, each with whether its imports are guarded."""
     if isinstance(node, (ast.Try, ast.TryStar)):
         inner = guarded or any(_catches_import_error(h) for h in node.handlers)
-        return ([(s, inner) for s in node.body]
+        return (_block(node.body, inner)
                 + [(h, guarded or _catches_import_error(h)) for h in node.handlers]
-                + [(p, guarded) for p in (*node.orelse, *node.finalbody)])
+                + _block(node.orelse, guarded) + _block(node.finalbody, guarded))
     if isinstance(node, ast.If):
         value = truth(node.test, constants)
         either = guarded or _mentions_find_spec(node.test) or mentions_module_name(node.test)
         inner = either or _is_type_checking(node.test) or value is False
-        return ([(s, inner) for s in node.body]
-                + [(s, either or value is True) for s in node.orelse])
-    return [(child, guarded) for field in _BLOCK_FIELDS for child in getattr(node, field, ())]
+        return _block(node.body, inner) + _block(node.orelse, either or value is True)
+    return [part for field in _BLOCK_FIELDS for part in _block(getattr(node, field, []), guarded)]
 
 
 _BLOCK_FIELDS = ("body", "orelse", "finalbody", "handlers", "cases")
