@@ -3,15 +3,16 @@
 The workspace of a package is every package linted in the same run plus, when the package
 lies under the ``src`` folder of a colcon workspace (a folder ``ws`` with ``ws/src``), every
 package colcon would find there. For each one the index keeps its name, the interfaces of its
-``msg/``, ``srv/`` and ``action/`` folders, and its top-level Python packages. Reading is
-cheap (package.xml's name and three folder listings) and never raises.
+``msg/``, ``srv/`` and ``action/`` folders (their subfolders too: see :func:`interface_file`),
+and its top-level Python packages. Reading is cheap (package.xml's name and a few folder
+listings) and never raises.
 """
 
 from __future__ import annotations
 
 import os
 import re
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -20,7 +21,9 @@ from pkgtool.workspace import listing
 
 _NAME = re.compile(r"<name>\s*([^<\s]+)\s*</name>")
 _KINDS = ("msg", "srv", "action")
-_SUFFIXES = (".msg", ".srv", ".action", ".idl")
+_SUFFIX_KINDS = {".msg": "msg", ".srv": "srv", ".action": "action"}
+_DEPTH = 4
+"""How deep interface folders are read (``msg/a/b/c/X.msg`` at most)."""
 _NOT_MODULES = frozenset({"test", "tests", "launch", "resource", "build", "install", "log"})
 
 
@@ -45,6 +48,37 @@ class Context:
         return next((p.name for p in self.workspace.values() if module in p.modules), None)
 
 
+def interface_file(path: str) -> tuple[str, str] | None:
+    """The kind and name of the interface the package file ``path`` (POSIX) defines, or None.
+
+    rosidl's adapter takes the kind of a ``.msg``, ``.srv`` or ``.action`` file from its suffix
+    and flattens its folders (``msg/motion/Twist.msg`` is ``msg/Twist``), so such files count
+    anywhere under the three kind folders; an ``.idl`` file counts directly inside one.
+    """
+    folder, _, name = path.rpartition("/")
+    top = folder.split("/", 1)[0]
+    stem, dot, suffix = name.rpartition(".")
+    if top not in _KINDS or not dot or not stem:
+        return None
+    if f".{suffix}" in _SUFFIX_KINDS:
+        return _SUFFIX_KINDS[f".{suffix}"], stem
+    return (folder, stem) if suffix == "idl" and folder == top else None
+
+
+def _files_under(base: str, folder: str, depth: int = _DEPTH) -> Iterator[str]:
+    """Paths (POSIX, relative to ``base``) of the files in ``folder`` and its subfolders."""
+    for entry in listing(os.path.join(base, folder)):
+        path = f"{folder}/{entry.name}"
+        try:
+            is_folder = entry.is_dir(follow_symlinks=False)
+        except OSError:
+            continue
+        if not is_folder:
+            yield path
+        elif depth > 1:
+            yield from _files_under(base, path, depth - 1)
+
+
 def read_workspace_package(root: Path) -> WorkspacePackage:
     """Name (package.xml, else the folder), interfaces and Python packages of ``root``."""
     base = os.fspath(root)
@@ -55,13 +89,11 @@ def read_workspace_package(root: Path) -> WorkspacePackage:
     except OSError:
         name = root.name
     listed = listing(base)
-    interfaces = {}
-    for kind in _KINDS:
-        if any(entry.name == kind for entry in listed):
-            names = frozenset(e.name.rsplit(".", 1)[0] for e in listing(os.path.join(base, kind))
-                              if e.name.endswith(_SUFFIXES))
-            if names:
-                interfaces[kind] = names
+    kinds: dict[str, set[str]] = {}
+    for folder in (e.name for e in listed if e.name in _KINDS):
+        for kind, stem in filter(None, map(interface_file, _files_under(base, folder))):
+            kinds.setdefault(kind, set()).add(stem)
+    interfaces = {kind: frozenset(names) for kind, names in kinds.items()}
     modules = frozenset(e.name for e in listed if e.name.isidentifier()
                         and e.name not in _NOT_MODULES and e.is_dir()
                         and os.path.isfile(os.path.join(e.path, "__init__.py")))

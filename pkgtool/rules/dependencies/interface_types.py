@@ -3,35 +3,52 @@
 Known are the package's own ``msg/``, ``srv/`` and ``action/`` folders, those of the other
 packages of the workspace, and (for a jazzy target) the shipped table of the Jazzy interface
 wheels (:mod:`pkgtool.knowledge.interfaces`), in that order. Anything else is unknown: no
-finding.
+finding. A ROS 1 (catkin) package knows only its own interfaces, laid out as ROS 1 generates
+them: an action ``A`` is the messages ``AAction``, ``AGoal``, ... of ``pkg.msg``.
 """
 
 from __future__ import annotations
 
-import posixpath
-
-from pkgtool.knowledge.interfaces import KINDS, Interfaces, interfaces_of
+from pkgtool.knowledge.interfaces import Interfaces, interfaces_of
+from pkgtool.model.context import interface_file
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 
-_SUFFIXES = (".msg", ".srv", ".action", ".idl")
+ROS1_ACTION_MESSAGES = ("Action", "ActionGoal", "ActionResult", "ActionFeedback", "Goal",
+                        "Result", "Feedback")
+"""The messages catkin's actionlib generates for each action ``A`` (``AActionGoal``, ...)."""
 
 
 @per_package
 def own_interfaces(package: Package) -> Interfaces:
-    """Kind -> names of the interface files in the package's own top-level kind folders."""
+    """Kind -> names of the interface files in the package's own kind folders."""
     found: dict[str, set[str]] = {}
-    for path in package.files:
-        folder, name = posixpath.split(path)
-        if folder in KINDS and name.endswith(_SUFFIXES):
-            found.setdefault(folder, set()).add(name.rsplit(".", 1)[0])
+    for kind, name in filter(None, map(interface_file, package.files)):
+        found.setdefault(kind, set()).add(name)
     return {kind: frozenset(names) for kind, names in found.items()}
 
 
+def ros1_layout(interfaces: Interfaces) -> Interfaces:
+    """``interfaces`` as ROS 1 Python modules hold them: actions as messages, no ``action``."""
+    actions = interfaces.get("action", frozenset())
+    messages = interfaces.get("msg", frozenset()) | {
+        action + suffix for action in actions for suffix in ROS1_ACTION_MESSAGES}
+    layout = {kind: names for kind, names in interfaces.items() if kind != "action"}
+    return {**layout, "msg": messages} if messages else layout
+
+
 def interfaces_for(package: Package, name: str) -> Interfaces | None:
-    """The interfaces of the package called ``name`` as seen from ``package``, or None."""
+    """The interfaces of the package called ``name`` as seen from ``package``, or None.
+
+    For a ROS 1 package only its own are known (the workspace index and the tables describe
+    ROS 2's layout).
+    """
+    ros1 = package.manifest is not None and package.manifest.is_ros1
     if name == package.name:
-        return own_interfaces(package) or None
+        own = own_interfaces(package)
+        return (ros1_layout(own) if ros1 else own) or None
+    if ros1:
+        return None
     neighbour = package.context.workspace.get(name)
     if neighbour is not None and neighbour.interfaces:
         return neighbour.interfaces

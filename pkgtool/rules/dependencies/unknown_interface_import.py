@@ -20,14 +20,17 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
     ## What it does
     Checks the names of unguarded `from <pkg>.msg|srv|action import ...` imports in every
     Python file against the interfaces of `<pkg>` when they are known: the package's own
-    `msg/`, `srv/` and `action/` folders, those of the other packages of the workspace, and
+    `msg/`, `srv/` and `action/` folders (their subfolders too: rosidl flattens
+    `msg/motion/Twist.msg` into `msg/Twist`), those of the other packages of the workspace, and
     pkgtool's table of the interface packages of ROS 2 Jazzy that are installable as wheels
     (for a jazzy target only: other distributions have other interfaces)
     (`std_msgs`, `geometry_msgs`, `sensor_msgs`, `std_srvs`, ...). Packages that are not
     known (`nav2_msgs`) are never reported. The types generated with each service `X`
     (`X_Request`, `X_Response`, `X_Event`) and action `A` (`A_SendGoal_Request`,
     `A_GetResult_Response`, ...) exist where the target distribution's modules export them:
-    since Iron; on humble they are reported with the attribute to use (`X.Request`).
+    since Iron; on humble they are reported with the attribute to use (`X.Request`). A ROS 1
+    (catkin) package is checked against its own interfaces only, where an action `A` is the
+    messages `AAction`, `AGoal`, `AResult`, ... of `pkg.msg`.
 
     ## Why is this bad?
     The node dies at start-up with `ImportError: cannot import name ...`; a service imported
