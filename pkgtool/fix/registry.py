@@ -22,7 +22,8 @@ class Refusal:
 Make: TypeAlias = Callable[[Package, list[Finding]], Iterable["Fix | Refusal"]]
 
 _MODULES = ("pkgtool.fix.data_files", "pkgtool.fix.dependencies", "pkgtool.fix.manifest",
-            "pkgtool.fix.parameters", "pkgtool.fix.setup_cfg", "pkgtool.fix.setup_py")
+            "pkgtool.fix.parameters", "pkgtool.fix.python", "pkgtool.fix.setup_cfg",
+            "pkgtool.fix.setup_py")
 
 
 @dataclass(frozen=True, slots=True)

@@ -75,6 +75,8 @@ RULES = {
     "PYC010": ("stdlib-module-not-on-target", "error", True, "python.stdlib_module_not_on_target"),
     "PYC011": ("syntax-not-on-target", "error", True, "python.syntax_not_on_target"),
     "PYC012": ("uncollected-test", "warning", True, "python.uncollected_test"),
+    "PYC013": ("callback-called", "error", True, "python.callback_called"),
+    "PYC015": ("rclpy-not-initialised", "error", True, "python.rclpy_not_initialised"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

@@ -27,6 +27,7 @@ from pkgtool.model.installed import (DATA_FOLDERS, in_separate_project, installe
                                      separate_projects)
 from pkgtool.model.launch import is_launch_file, python_folders
 from pkgtool.model.manifest import Dependency
+from pkgtool.model.setup_py import EntryPoint
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
@@ -204,11 +205,16 @@ def installed_code(package: Package) -> list[PythonModule]:
             and not in_separate_project(package, m.path)]
 
 
-def _entry_point_files(package: Package, group: str) -> frozenset[str]:
+def entry_points_installed(package: Package, group: str) -> list[tuple[EntryPoint, str]]:
+    """Entry points of ``group`` whose module setup.py installs, each with the module's file."""
     entries = package.setup_py.entry_points if package.setup_py else None
     installed = installed_modules(package) or {}
-    return frozenset(installed[e.module] for e in entries or ()
-                     if e.group == group and e.module in installed)
+    return [(e, installed[e.module]) for e in entries or ()
+            if e.group == group and e.module in installed]
+
+
+def _entry_point_files(package: Package, group: str) -> frozenset[str]:
+    return frozenset(file for _, file in entry_points_installed(package, group))
 
 
 @per_package

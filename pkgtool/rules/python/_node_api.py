@@ -1,4 +1,5 @@
-"""What PYC007-PYC009 share: calls of rclpy's Node API and their arguments, Node constructions.
+"""What PYC007-PYC009, PYC013 and PYC015 share: calls of rclpy's API and their arguments, Node
+constructions.
 
 Only modules that import rclpy and do not define a method of the same name themselves are
 looked at, so a project's own ``create_publisher`` wrapper is never judged by rclpy's signature.
@@ -7,7 +8,7 @@ looked at, so a project's own ``create_publisher`` wrapper is never judged by rc
 from __future__ import annotations
 
 import ast
-from collections.abc import Iterator
+from collections.abc import Collection, Iterator
 
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
@@ -24,24 +25,45 @@ PARAMETERS = {
 NODE_CLASSES = frozenset({"rclpy.node.Node", "rclpy.lifecycle.LifecycleNode",
                           "rclpy.lifecycle.Node", "rclpy.create_node"})
 """What constructs a node: rclpy's node classes and ``create_node``."""
+CALLBACKS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
+    "create_subscription": (("msg_type", "topic", "callback"), ("callback",)),
+    "create_service": (("srv_type", "srv_name", "callback"), ("callback",)),
+    "create_timer": (("timer_period_sec", "callback"), ("callback",)),
+    "create_guard_condition": (("callback",), ("callback",)),
+    "add_on_set_parameters_callback": (("callback",), ("callback",)),
+    "add_pre_set_parameters_callback": (("callback",), ("callback",)),
+    "add_post_set_parameters_callback": (("callback",), ("callback",)),
+    "send_goal_async": (("goal", "feedback_callback"), ("feedback_callback",)),
+    "send_goal": (("goal", "feedback_callback"), ("feedback_callback",)),
+    "add_done_callback": (("callback",), ("callback",)),
+}
+"""rclpy methods (Jazzy) taking callables: their leading positional parameters, in order, and
+which of them (or of their keyword-only parameters) are callbacks."""
+ACTION_SERVERS = frozenset({"rclpy.action.ActionServer", "rclpy.action.server.ActionServer"})
+ACTION_SERVER_CALLBACKS = (("node", "action_type", "action_name", "execute_callback"),
+                           ("execute_callback", "goal_callback", "handle_accepted_callback",
+                            "cancel_callback"))
+"""``ActionServer.__init__``'s positional parameters and its callbacks (Jazzy)."""
 
 
-def node_api_calls(package: Package) -> Iterator[tuple[PythonModule, ast.Call, str, Index]]:
-    """``x.<method>(...)`` calls of the methods in :data:`PARAMETERS`, with the method name."""
+def node_api_calls(package: Package, methods: Collection[str] = PARAMETERS
+                   ) -> Iterator[tuple[PythonModule, ast.Call, str, Index]]:
+    """``x.<method>(...)`` calls of ``methods`` (:data:`PARAMETERS`), with the method name."""
     for module, _, index in installed_trees(package):
         if not any(i.top_level == "rclpy" for i in module.imports):
             continue
         defined = {function.name for function in index.functions}
         for call in index.calls:
             method = call.func.attr if isinstance(call.func, ast.Attribute) else ""
-            if method in PARAMETERS and method not in defined:
+            if method in methods and method not in defined:
                 yield module, call, method, index
 
 
 def argument(call: ast.Call, parameters: tuple[str, ...], name: str) -> ast.expr | None:
-    """The expression passed for parameter ``name`` (positionally or by keyword), if known."""
+    """The expression passed for parameter ``name`` (positionally or by keyword), if known;
+    a ``name`` not among the positional ``parameters`` is keyword-only."""
     keyword = next((k.value for k in call.keywords if k.arg == name), None)
-    if keyword is not None:
+    if keyword is not None or name not in parameters:
         return keyword
     position = parameters.index(name)
     positional = [a for a in call.args if not isinstance(a, ast.Starred)]
@@ -60,6 +82,20 @@ def name_argument(call: ast.Call) -> ast.expr | None:
     keyword = next((k.value for k in call.keywords if k.arg == "node_name"), None)
     first = call.args[0] if call.args and not isinstance(call.args[0], ast.Starred) else None
     return keyword or first
+
+
+def node_subclasses(index: Index) -> list[ast.ClassDef]:
+    """Classes of the module derived from rclpy's node classes (directly or through others)."""
+    found: list[ast.ClassDef] = []
+    grew = True
+    while grew:
+        names = {c.name for c in found}
+        more = [c for c in index.classes if c not in found and any(
+            qualified(b, index.aliases) in NODE_CLASSES or
+            isinstance(b, ast.Name) and b.id in names for b in c.bases)]
+        found.extend(more)
+        grew = bool(more)
+    return found
 
 
 def node_constructions(index: Index) -> Iterator[ast.Call]:

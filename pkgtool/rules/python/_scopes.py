@@ -73,3 +73,28 @@ def bound_names(where: ast.stmt | list[ast.stmt] | ast.FunctionDef | ast.AsyncFu
             for name in node.names:
                 found[name] = ALWAYS
     return found
+
+
+_PLAIN_DECORATORS = frozenset({"staticmethod", "classmethod"})
+
+
+def _stub(function: ast.FunctionDef) -> bool:
+    """A body of only a docstring, ``pass``, ``...`` and ``raise``: a placeholder to override."""
+    return all(isinstance(s, (ast.Pass, ast.Raise)) or isinstance(s, ast.Expr) and
+               isinstance(s.value, ast.Constant) for s in function.body)
+
+
+def returns_none(function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
+    """True when calling ``function`` certainly gives None: a plain ``def`` (no decorator but
+    ``staticmethod``/``classmethod``, no stub) with no ``return <value>`` and no ``yield``."""
+    if not isinstance(function, ast.FunctionDef) or _stub(function) or any(
+            not (isinstance(d, ast.Name) and d.id in _PLAIN_DECORATORS)
+            for d in function.decorator_list):
+        return False
+    for node in scope_walk(function.body):
+        if isinstance(node, (ast.Yield, ast.YieldFrom)):
+            return False
+        if isinstance(node, ast.Return) and node.value is not None and not (
+                isinstance(node.value, ast.Constant) and node.value.value is None):
+            return False
+    return True
