@@ -8,7 +8,10 @@ unless listed in :data:`ROS_MODULE_PACKAGES`. The tables here hold what no data 
 
 from __future__ import annotations
 
+from functools import cache
+
 from pkgtool.knowledge.rosdistro import DEFAULT_DISTRO, keys_for_import, stdlib_modules
+from pkgtool.knowledge.tables import read
 
 ALTERNATIVE_KEYS: dict[str, tuple[str, ...]] = {
     "PyKDL": ("python_orocos_kdl_vendor",),
@@ -87,6 +90,24 @@ NOT_PACKAGES: dict[str, str] = {
 """Build tools that are not packages at all, as buildtool_depend values."""
 
 
+@cache
+def brought_in(name: str) -> frozenset[str]:
+    """Every package a declared ``name`` brings in: :data:`COVERED_BY`'s, and a released
+    metapackage's run dependencies (``data/metapackages.txt``), through nested metapackages
+    only (a regular package's own dependencies are its business, and may change)."""
+    members = read("metapackages").values
+    found = set(COVERED_BY.get(name, ()))
+    pending, seen = [name], {name}
+    while pending:
+        for member in members.get(pending.pop(), "").split():
+            found.add(member)
+            if member in members and member not in seen:
+                seen.add(member)
+                pending.append(member)
+    found.discard(name)
+    return frozenset(found)
+
+
 def key_for_python_module(top_level: str, distro: str = DEFAULT_DISTRO) -> str | None:
     """The rosdep key providing a third-party top-level import, or None if rosdep has none."""
     keys = keys_for_import(top_level, distro)
@@ -109,5 +130,5 @@ def accepted_keys(top_level: str, primary: str) -> tuple[str, ...]:
 
 
 __all__ = ["ALTERNATIVE_KEYS", "COVERED_BY", "NOT_PACKAGES", "NOT_ROSDEP_KEYS", "ROS1_PACKAGES",
-           "ROS_MODULE_PACKAGES", "accepted_keys", "key_for_python_module",
+           "ROS_MODULE_PACKAGES", "accepted_keys", "brought_in", "key_for_python_module",
            "package_for_ros_module", "stdlib_modules", "suggested_key"]

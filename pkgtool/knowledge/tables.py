@@ -9,7 +9,7 @@ for a table no rule asks for.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable
+from collections.abc import Callable, Iterable, Sequence
 from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
@@ -26,7 +26,7 @@ FLAGS = {distro: distro[0] for distro in DISTROS}
 
 @dataclass(frozen=True, slots=True)
 class Table:
-    """A parsed table: its ``source`` line (without the word), each entry's group flags and
+    """A parsed table: its first ``source`` line (without the word), each entry's group flags and
     the values of the entries that have any (as one space-separated string)."""
 
     source: str
@@ -58,10 +58,12 @@ def read(name: str) -> Table:
     return Table(source, flags, values)
 
 
-def render(title: str, source: str, groups: Iterable[tuple[str, Iterable[str]]]) -> str:
-    """The text of a table: a comment ``title``, the ``source`` line and each (flags, lines)."""
+def render(title: str, source: str | Sequence[str],
+           groups: Iterable[tuple[str, Iterable[str]]]) -> str:
+    """The text of a table: a comment ``title``, the ``source`` line (one per source when
+    there are several) and each (flags, lines)."""
     out = [f"# {line}" if line else "#" for line in title.splitlines()]
-    out.append(f"source {source}")
+    out.extend(f"source {s}" for s in ([source] if isinstance(source, str) else source))
     for flags, lines in groups:
         out.append(f"@{flags}")
         out.extend(lines)

@@ -18,8 +18,8 @@ from dataclasses import dataclass
 from functools import lru_cache
 
 from pkgtool.knowledge.ros_names import looks_like_ros
-from pkgtool.knowledge.rosdep import (ALTERNATIVE_KEYS, COVERED_BY, ROS_MODULE_PACKAGES,
-                                      accepted_keys, package_for_ros_module, suggested_key)
+from pkgtool.knowledge.rosdep import (ALTERNATIVE_KEYS, ROS_MODULE_PACKAGES, accepted_keys,
+                                      brought_in, package_for_ros_module, suggested_key)
 from pkgtool.knowledge.rosdistro import (any_stdlib_module, is_released_package,
                                          keys_for_import, stdlib_modules)
 from pkgtool.model.context import Context
@@ -67,10 +67,14 @@ class Need:
         return f"its key `{self.key}` is not declared in package.xml"
 
 
-def declared(package: Package, tags: frozenset[str]) -> dict[str, Dependency]:
+def declared(package: Package, tags: frozenset[str], *, bringing: bool = True
+             ) -> dict[str, Dependency]:
     """Keys declared with one of ``tags`` (``depend`` counts for every kind), first tag wins.
 
-    Packages a declared one brings along (:data:`COVERED_BY`) count as declared by it.
+    With ``bringing``, packages a declared one brings in
+    (:func:`~pkgtool.knowledge.rosdep.brought_in`: ``ament_lint_common``'s linters, a
+    metapackage's members) count as declared by its entry; without, only what package.xml
+    names does.
     """
     found: dict[str, Dependency] = {}
     if package.manifest is None:
@@ -78,11 +82,19 @@ def declared(package: Package, tags: frozenset[str]) -> dict[str, Dependency]:
     for dependency in package.manifest.dependencies:
         if (dependency.tag in tags or dependency.tag == "depend") and dependency.name:
             found.setdefault(dependency.name, dependency)
-    for name, covered in COVERED_BY.items():
-        if name in found:
-            for other in covered:
-                found.setdefault(other, found[name])
+    if bringing:
+        for name, dependency in list(found.items()):
+            for other in brought_in(name):
+                found.setdefault(other, dependency)
     return found
+
+
+def declaration(key: str, dependency: Dependency) -> str:
+    """How a message names the entry declaring ``key``: its tag, or the entry bringing it in."""
+    tag = dependency.tag
+    if dependency.name == key:
+        return f"`<{tag}>`"
+    return f"`<{tag}>{dependency.name}</{tag}>` (which brings it in)"
 
 
 @dataclass(frozen=True, slots=True)
@@ -351,7 +363,7 @@ def misnamed(package: Package, need: Need) -> str | None:
     ``python-opencv`` declared for python3-opencv; ``tf2_ros`` (the C++ package) declared for
     ``import tf2_ros``, which ``tf2_ros_py`` provides.
     """
-    names = declared(package, ANY)
+    names = declared(package, ANY, bringing=False)
     wrong = next((name for name in names if suggested_key(name) == need.key), None)
     if wrong:
         return f"`{wrong}` is declared, but the rosdep key is `{need.key}`"

@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import BUILD_ONLY, declared, unmet_runtime_needs
+from pkgtool.rules.imports import BUILD_ONLY, declaration, declared, unmet_runtime_needs
 from pkgtool.rules.registry import rule
 
 
@@ -41,7 +41,9 @@ def import_declared_only_as_build_depend(package: Package) -> Iterator[Hit]:
         key = next((k for k in need.keys if k in build_only), None)
         if key is None:
             continue
-        tag = build_only[key].tag
+        dependency = build_only[key]
+        tag, name = dependency.tag, dependency.name
         yield Hit(need.imported.span,
-                  f"`{need.top}` is imported at run time but `{key}` is only a `{tag}`",
-                  f"Change `<{tag}>{key}</{tag}>` to `<depend>{key}</depend>`")
+                  f"`{need.top}` is imported at run time but `{key}` is declared only as "
+                  f"{declaration(key, dependency)}",
+                  f"Change `<{tag}>{name}</{tag}>` to `<depend>{name}</depend>`")

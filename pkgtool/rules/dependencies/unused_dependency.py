@@ -7,7 +7,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.ros_names import looks_like_ros
-from pkgtool.knowledge.rosdep import ALTERNATIVE_KEYS, ROS_MODULE_PACKAGES
+from pkgtool.knowledge.rosdep import ALTERNATIVE_KEYS, ROS_MODULE_PACKAGES, brought_in
 from pkgtool.knowledge.rosdistro import modules_of_key
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import RUNTIME, all_python, declared, needs
@@ -46,7 +46,8 @@ def unused_dependency(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Reports `<depend>`/`<exec_depend>` keys of Python modules and ROS Python packages that no
-    module, test or launch file of an ament_python package imports, launches or mentions.
+    module, test or launch file of an ament_python package imports, launches or mentions (a
+    metapackage counts as used when a package it brings in is).
     Keys used by tools rather
     than imports (`ros2launch`, `launch_ros`, `rosidl_default_runtime`, `ament_*`,
     `python3-pytest`, ...) are never reported, nor are interface packages when the package has
@@ -77,8 +78,9 @@ def unused_dependency(package: Package) -> Iterator[Hit]:
         used.update(p.package for p in launch.packages)
     texts = "\n".join(t for p, t in package.texts.items() if p != "package.xml")
     has_config = any(p.endswith(_CONFIG_SUFFIXES) and p != "package.xml" for p in package.files)
-    for key, dependency in declared(package, RUNTIME).items():
-        if (dependency.condition or key in used or not _import_only(key)
+    for key, dependency in declared(package, RUNTIME, bringing=False).items():
+        if (dependency.condition or key in used or brought_in(key) & used
+                or not _import_only(key)
                 or (has_config and looks_like_ros(key)) or _mentioned(key, texts)):
             continue
         yield Hit(dependency.span, f"`{key}` is declared but nothing imports or launches it")

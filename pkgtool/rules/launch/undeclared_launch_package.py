@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import ANY, declared, launch_keys
+from pkgtool.rules.imports import ANY, declaration, declared, launch_keys
 from pkgtool.rules.registry import rule
 
 
@@ -19,7 +19,9 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
     Collects the packages a launch file names statically: `Node(package=...)`,
     `get_package_share_directory(...)`, `FindPackageShare(...)`, `$(find-pkg-share ...)` in
     XML and YAML launch files. Each one other than this package must be an
-    `<exec_depend>` or `<depend>` (a `<test_depend>` for launch files under `test/`).
+    `<exec_depend>` or `<depend>` (a `<test_depend>` for launch files under `test/`), or be
+    brought in by a released metapackage declared so (`ros2_control` brings `controller_manager`;
+    metapackages nest, but a regular package's own dependencies never count).
     Packages used only after the launch file checked that they are installed (`if 'nav2_bringup'
     in get_packages_with_prefixes():`, or in a `try` that catches `PackageNotFoundError`) are
     optional and left alone.
@@ -51,7 +53,7 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
                 continue
             seen.add(name)
             other = declared(package, ANY).get(name)
-            missing = (f"declared only as `<{other.tag}>`" if other else
+            missing = (f"declared only as {declaration(name, other)}" if other else
                        "not declared in package.xml")
             yield Hit(span, f"`{name}` is used by a launch file but {missing}",
                       f"Add `<exec_depend>{name}</exec_depend>` to package.xml")
