@@ -37,7 +37,12 @@ class NodeRef:
     ``parameter_files`` are the share files given as its parameters (``parameters=[path]``,
     ``<param from=...>``), where the path is static. ``other_distros`` marks a node inside a
     branch of a test on the ROS distribution (``if os.environ['ROS_DISTRO'] < 'foxy':``): it
-    may be written for distributions other than the target.
+    may be written for distributions other than the target. ``name`` and ``namespace`` are
+    the static node name (``name=``, ``<node name=>``, a ``__node:=`` remapping) and
+    namespace; ``name_unknown`` marks a name given in a way not read statically (a
+    substitution, remappings or arguments that are not literals). ``other_parameters``
+    marks ``parameters`` holding something besides dicts and static share files (a launch
+    argument): any file may reach the node through it.
     """
 
     package: str | None
@@ -50,6 +55,10 @@ class NodeRef:
     optional: bool = False
     parameter_files: tuple[FileRef, ...] = ()
     other_distros: bool = False
+    name: str | None = None
+    namespace: str | None = None
+    name_unknown: bool = False
+    other_parameters: bool = False
 
 
 @dataclass(frozen=True, slots=True)

@@ -27,6 +27,8 @@ PRESENCE_CHECKS = frozenset({"get_packages_with_prefixes", "get_package_prefix",
                              "get_package_share_directory", "get_package_share_path",
                              "has_resource", "get_resource"})
 """ament_index calls a launch file makes to find out whether a package is installed."""
+NAME_REMAPS = frozenset({"__node", "__name"})
+"""Remapping keys that rename a node."""
 _MAX_DEPTH = 40
 _MAX_TEXT = 4096
 """Longest string the evaluator builds (doubling concatenations stay bounded)."""
@@ -205,14 +207,19 @@ class _Reader(ast.NodeVisitor):
             arguments = tuple(k.arg or "**" for k in node.keywords)
             if any(isinstance(a, ast.Starred) for a in node.args):
                 arguments += ("*",)
+            files, other = self._parameter_files(_keyword(node, "parameters"))
+            name, unknown = self._node_name(node)
+            namespace = self.value(_keyword(node, "namespace"))
             self.nodes.append(NodeRef(
                 package if isinstance(package, str) else None,
                 executable if isinstance(executable, str) else None, self._span(node), action,
                 arguments,
                 package_node and self._span(package_node),
                 executable_node and self._span(executable_node), bool(self.optional),
-                self._parameter_files(_keyword(node, "parameters")),
-                other_distros=bool(self.distro_branches)))
+                files, other_distros=bool(self.distro_branches), name=name,
+                namespace=namespace if isinstance(namespace, str) else None,
+                name_unknown=unknown or "**" in arguments or "*" in arguments,
+                other_parameters=other or "**" in arguments))
         elif name == "ExecuteProcess":
             self._ros2_run(node)
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
@@ -223,23 +230,56 @@ class _Reader(ast.NodeVisitor):
         self._record_path(node)
         self.generic_visit(node)
 
-    def _parameter_files(self, node: ast.expr | None) -> tuple[FileRef, ...]:
-        """The share files among a node's ``parameters=[...]`` (dicts and unknowns left out)."""
+    def _parameter_files(self, node: ast.expr | None) -> tuple[tuple[FileRef, ...], bool]:
+        """The share files among a node's ``parameters=[...]``, and whether anything else
+        than those and dicts is given (a launch argument, a value not read statically)."""
         items = node.elts if isinstance(node, (ast.List, ast.Tuple)) else [node] if node else []
         found: list[FileRef] = []
+        other = False
         for item in items:
+            if self._is_dict(item):
+                continue
             value = self.value(item)
             for part in value if isinstance(value, tuple) else (value,):
                 if isinstance(part, Share) and part.share and part.parts:
                     found.append(FileRef(part.package, part.parts, self._span(_last_part(item))))
-        return tuple(found)
+                else:
+                    other = True
+        return tuple(found), other
+
+    def _is_dict(self, node: ast.expr, depth: int = 0) -> bool:
+        """True for a dict display, or a name assigned one."""
+        if isinstance(node, ast.Name) and depth < _MAX_DEPTH:
+            assigned = self._assigned(node.id)
+            return assigned is not None and self._is_dict(assigned, depth + 1)
+        return isinstance(node, (ast.Dict, ast.DictComp))
+
+    def _node_name(self, node: ast.Call) -> tuple[str | None, bool]:
+        """The static node name (``name=``, a ``__node`` remapping), and whether a name is
+        given that is not read statically."""
+        given = _keyword(node, "name") or _keyword(node, "node_name")
+        value = self.value(given) if given is not None else None
+        names = [value if isinstance(value, str) else None] if given is not None else []
+        remaps = _keyword(node, "remappings")
+        for pair in _items(self.value(remaps)) if remaps is not None else ():
+            if not isinstance(pair, tuple) or not pair or not isinstance(pair[0], str):
+                names.append(None)
+            elif pair[0] in NAME_REMAPS:
+                names.append(pair[1] if len(pair) == 2 and isinstance(pair[1], str) else None)
+        for keyword in ("arguments", "ros_arguments"):
+            given_arguments = _keyword(node, keyword)
+            if given_arguments is not None:
+                names.extend(_remapped_names(_items(self.value(given_arguments))))
+        known = [n for n in names if n is not None]
+        return (known[-1] if known else None), None in names
 
     def _ros2_run(self, node: ast.Call) -> None:
         command = self.value(_keyword(node, "cmd"))
         if (isinstance(command, tuple) and len(command) >= 4 and command[:2] == ("ros2", "run")
                 and all(isinstance(c, str) for c in command[2:4])):
             self.nodes.append(NodeRef(command[2], command[3], self._span(node),
-                                      optional=bool(self.optional)))
+                                      optional=bool(self.optional), name_unknown=True,
+                                      other_parameters=True))
 
     def visit_BinOp(self, node: ast.BinOp) -> None:
         self._record_path(node)
@@ -268,6 +308,30 @@ def _last_part(node: ast.expr) -> ast.expr:
         if name.endswith(CONCATENATING) or name in ("Path", "PurePath", "str"):
             return _last_part(node.args[0])
     return node
+
+
+def _items(value: Value) -> tuple[Value, ...]:
+    """The items of a list value; a single unknown item when the list itself is unknown."""
+    return value if isinstance(value, tuple) else (value,)
+
+
+def _remapped_names(arguments: tuple[Value, ...]) -> list[str | None]:
+    """Node names a ``__node:=name`` argument sets; None for an argument not read
+    statically (it may set one)."""
+    found: list[str | None] = []
+    for argument in arguments:
+        if not isinstance(argument, str):
+            found.append(None)
+        else:
+            found.extend(remapped_name(word) for word in argument.split()
+                         if remapped_name(word) is not None)
+    return found
+
+
+def remapped_name(argument: str) -> str | None:
+    """The node name of a ``__node:=name`` (or ``__name:=``) argument, else None."""
+    key, sep, name = argument.partition(":=")
+    return name if sep and key in NAME_REMAPS else None
 
 
 def _keyword(node: ast.Call, name: str) -> ast.expr | None:

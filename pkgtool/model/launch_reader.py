@@ -8,8 +8,10 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator
+from dataclasses import replace
 
 from pkgtool.model.launch import FileRef, LaunchFile, NodeRef, PackageRef
+from pkgtool.model.launch_python import NAME_REMAPS, remapped_name
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.model.xml import XmlElement
 
@@ -97,14 +99,39 @@ def _xml(path: str, text: str) -> tuple[list[NodeRef], list[tuple[str, Span]]] |
         if element.tag in NODE_TAGS:
             executable = next((element.attribute(a) for a in NODE_TAGS[element.tag]
                                if element.attribute(a) is not None), None)
-            params = (_share_file(c.attribute("from") or "", c.span)
-                      for c in element.children if c.tag == "param")
-            nodes.append(NodeRef(_static(element.attribute("pkg")), _static(executable),
-                                 element.span, element.tag,
-                                 tuple(k for k, _ in element.attributes),
-                                 parameter_files=tuple(p for p in params if p)))
+            froms = [(c.attribute("from") or "", c.span) for c in element.children
+                     if c.tag == "param" and c.attribute("from") is not None]
+            remaps = [(c.attribute("from"), c.attribute("to"))
+                      for c in element.children if c.tag == "remap"]
+            arguments = [element.attribute(a) for a in ("args", "ros_args")]
+            nodes.append(_named(NodeRef(
+                _static(element.attribute("pkg")), _static(executable), element.span,
+                element.tag, tuple(k for k, _ in element.attributes)),
+                element.attribute("name"), element.attribute("namespace"), froms, remaps,
+                arguments))
         values.extend((value, element.span) for _, value in element.attributes)
     return nodes, values
+
+
+def _named(node: NodeRef, name: str | None, namespace: str | None,
+           froms: list[tuple[str, Span]], remaps: list[tuple[str | None, str | None]],
+           arguments: list[str | None]) -> NodeRef:
+    """``node`` with the name, namespace and parameter files of an XML or YAML launch node.
+
+    ``froms`` are its parameter files (``<param from=>``) where written, ``remaps`` its
+    ``(from, to)`` remappings and ``arguments`` its ``args`` and ``ros_args`` values.
+    """
+    files = [_share_file(text, span) for text, span in froms]
+    names: list[str | None] = [_static(name)] if name is not None else []
+    names.extend(_static(to) if to else None for key, to in remaps
+                 if key is None or "$(" in key or key in NAME_REMAPS)
+    for text in (a for a in arguments if a):
+        names.extend(_static(remapped_name(word)) for word in text.split()
+                     if "$(" in word or remapped_name(word) is not None)
+    known = [n for n in names if n is not None]
+    return replace(node, parameter_files=tuple(f for f in files if f),
+                   other_parameters=None in files, name=known[-1] if known else None,
+                   namespace=_static(namespace), name_unknown=None in names)
 
 
 def _elements(root: XmlElement) -> Iterator[XmlElement]:
@@ -181,13 +208,32 @@ def _yaml_node(tag: object, mapping: object, path: str) -> NodeRef:
         return Span(path, node.start_mark.line + 1, node.start_mark.column + 1)
 
     names = tuple(str(k.value) for k, _ in mapping.value if isinstance(k, yaml.ScalarNode))
-    params = [_share_file(str(v.value), span(v))
-              for k, entries in mapping.value if isinstance(k, yaml.ScalarNode)
-              and k.value == "param" and isinstance(entries, yaml.SequenceNode)
-              for entry in entries.value if isinstance(entry, yaml.MappingNode)
-              for f, v in entry.value if isinstance(f, yaml.ScalarNode) and f.value == "from"
-              and isinstance(v, yaml.ScalarNode)]
-    return NodeRef(_static(fields.get("pkg")), _static(fields[key] if key else None), span(tag),
+    node = NodeRef(_static(fields.get("pkg")), _static(fields[key] if key else None), span(tag),
                    str(tag.value), names, span(scalars["pkg"]) if "pkg" in scalars else None,
-                   span(scalars[key]) if key else None,
-                   parameter_files=tuple(p for p in params if p))
+                   span(scalars[key]) if key else None)
+    params = [p["from"] for p in _yaml_entries(mapping, "param") if "from" in p]
+    remaps = [(r.get("from"), r.get("to")) for r in _yaml_entries(mapping, "remap")]
+    return _named(node, fields.get("name"), fields.get("namespace"),
+                  [(str(p.value), span(p)) for p in params if isinstance(p, yaml.ScalarNode)],
+                  [tuple(_text(v) for v in pair) for pair in remaps],  # type: ignore[misc]
+                  [fields.get("args"), fields.get("ros_args")])
+
+
+def _text(node: object) -> str | None:
+    return str(getattr(node, "value")) if getattr(node, "id", "") == "scalar" else None
+
+
+def _yaml_entries(mapping: object, key: str) -> list[dict[str, object]]:
+    """The entries of a YAML launch node's ``param:`` or ``remap:`` list: field name -> YAML
+    value node (an entry that is not a mapping has no fields)."""
+    import yaml
+
+    assert isinstance(mapping, yaml.MappingNode)
+    found: list[dict[str, object]] = []
+    for k, entries in mapping.value:
+        if isinstance(k, yaml.ScalarNode) and k.value == key and \
+                isinstance(entries, yaml.SequenceNode):
+            found.extend({str(f.value): v for f, v in
+                          (e.value if isinstance(e, yaml.MappingNode) else ())
+                          if isinstance(f, yaml.ScalarNode)} for e in entries.value)
+    return found

@@ -2,17 +2,16 @@
 
 from __future__ import annotations
 
-import posixpath
 import re
 from collections.abc import Iterator
 from difflib import SequenceMatcher
 from typing import TYPE_CHECKING
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.installed import installed_data
 from pkgtool.model.launch_reader import yaml_problem
 from pkgtool.model.package import Package, is_test_material
 from pkgtool.model.span import Span
+from pkgtool.rules.node_parameters import parameter_file_nodes
 from pkgtool.rules.registry import rule
 
 if TYPE_CHECKING:  # the rule reads nodes yaml_problem built: PyYAML is imported only then
@@ -143,21 +142,6 @@ def _stray(name: str, names: tuple[str, ...], beside: bool) -> str:
     return f"`{'/'.join(names)}` holds values but no `ros__parameters` key above them"
 
 
-def _launch_parameter_files(package: Package) -> set[str]:
-    """Package files a launch file of the package passes to a node as its parameters."""
-    data = installed_data(package) or {}
-    found: set[str] = set()
-    for launch in package.launch_files:
-        for node in launch.nodes:
-            for ref in node.parameter_files:
-                if ref.package != package.name:
-                    continue
-                relative = posixpath.join(*ref.parts)
-                source = data.get(posixpath.join("share", package.name, relative))
-                found.update(p for p in (source, relative) if p and package.has_file(p))
-    return found
-
-
 def _candidates(package: Package) -> Iterator[str]:
     launch = {f.path for f in package.launch_files}
     for path, text in package.texts.items():
@@ -209,7 +193,7 @@ def malformed_parameter_file(package: Package) -> Iterator[Hit]:
         rate: 10.0
     ```
     """
-    passed = _launch_parameter_files(package)
+    passed = set(parameter_file_nodes(package))
     for path in _candidates(package):
         documents = yaml_problem(path, package.texts[path])
         if not isinstance(documents, list):

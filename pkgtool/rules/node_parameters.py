@@ -1,0 +1,445 @@
+"""What DAT009-DAT011 and PYC014 share: the parameters a package's Node subclasses declare,
+the nodes its launch files pass each parameter file to, and rcl's typing of YAML values.
+
+A class is analysed only when it derives from rclpy's ``Node`` directly; a ``skip`` reason
+says why its declarations are not known in full (undeclared parameters allowed, a name that
+is not a literal, a project base class, ``self`` handed to other code).
+"""
+
+from __future__ import annotations
+
+import ast
+import posixpath
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass
+
+from pkgtool.model.installed import installed_data
+from pkgtool.model.launch import NodeRef
+from pkgtool.model.memo import per_package
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.entry_points._scripts import scripts_and_modules
+from pkgtool.rules.python._node_api import NODE_CLASSES, name_argument, node_constructions
+from pkgtool.rules.python._tree import Index, installed_trees, qualified
+
+PERMISSIVE = frozenset({"allow_undeclared_parameters",
+                        "automatically_declare_parameters_from_overrides"})
+"""Node options that accept parameters nobody declares."""
+READS = frozenset({"get_parameter", "get_parameters"})
+"""Node methods that raise ParameterNotDeclaredException for an undeclared name."""
+BUILT_IN = frozenset({"use_sim_time", "start_type_description_service"})
+"""Parameters rclpy's Node declares itself (Jazzy)."""
+_BOOLS = frozenset({"Y", "y", "yes", "Yes", "YES", "true", "True", "TRUE", "on", "On", "ON",
+                    "N", "n", "no", "No", "NO", "false", "False", "FALSE", "off", "Off", "OFF"})
+"""Plain scalars rcl's YAML parameter parser reads as booleans."""
+_INT = re.compile(r"[+-]?(0[xX][0-9a-fA-F]+|0[0-7]*|[1-9][0-9]*)")
+_FLOAT = re.compile(r"[+-]?((\d+\.?\d*|\.\d+)([eE][+-]?\d+)?|inf|infinity|nan)", re.I)
+_SPECIAL_FLOATS = frozenset(f"{sign}.{word}" for sign in ("", "+", "-")
+                            for word in ("inf", "Inf", "INF")) | {".nan", ".NaN", ".NAN"}
+
+
+@dataclass(frozen=True, slots=True)
+class Declared:
+    """A parameter a class declares: its full name, the ROS type of its literal default (None:
+    not a literal, or the type is not checked: dynamic typing, an unknown descriptor,
+    ``ignore_override``) and where it is declared."""
+
+    name: str
+    type: str | None
+    span: Span
+
+
+@dataclass(frozen=True, slots=True)
+class NodeClass:
+    """A class of installed code that is a node: its default node name (the literal passed to
+    ``super().__init__``, else None), declared parameters, literal ``get_parameter`` reads
+    and, when its declarations are not known in full, why."""
+
+    path: str
+    name: str
+    default_name: str | None
+    declared: tuple[Declared, ...]
+    reads: tuple[tuple[str, Span], ...]
+    skip: str | None
+
+    def declares(self, parameter: str) -> Declared | None:
+        """The declaration of ``parameter``, if the class has one."""
+        return next((d for d in self.declared if d.name == parameter), None)
+
+
+def _literal_string(node: ast.expr | None) -> str | None:
+    return node.value if isinstance(node, ast.Constant) and isinstance(node.value, str) \
+        else None
+
+
+def _argument(call: ast.Call, position: int, keyword: str) -> ast.expr | None:
+    found = next((k.value for k in call.keywords if k.arg == keyword), None)
+    if found is None and len(call.args) > position and \
+            not any(isinstance(a, ast.Starred) for a in call.args[:position + 1]):
+        found = call.args[position]
+    return found
+
+
+def python_type(value: object) -> str | None:
+    """The ROS parameter type of a Python default (None for None, mixed or empty lists)."""
+    scalar = {bool: "BOOL", int: "INTEGER", float: "DOUBLE", str: "STRING"}
+    if type(value) in scalar:
+        return scalar[type(value)]
+    if isinstance(value, (list, tuple)) and value:
+        kinds = {scalar.get(type(v)) for v in value}
+        return f"{kinds.pop()}_ARRAY" if len(kinds) == 1 and None not in kinds else None
+    return None
+
+
+def _default_type(call: ast.Call, value: ast.expr | None, descriptor: ast.expr | None
+                  ) -> str | None:
+    """The checked type of a declaration's default (see :class:`Declared`)."""
+    if value is None or _flag(call, "ignore_override") is not False or not _static_typing(
+            descriptor):
+        return None
+    try:
+        return python_type(ast.literal_eval(value))
+    except (ValueError, TypeError, SyntaxError, MemoryError, RecursionError):
+        return None
+
+
+def _flag(call: ast.Call, keyword: str) -> bool | None:
+    """A keyword's literal boolean: False when absent, None when not a literal."""
+    found = next((k.value for k in call.keywords if k.arg == keyword), None)
+    if found is None:
+        return False
+    return found.value if isinstance(found, ast.Constant) and \
+        isinstance(found.value, bool) else None
+
+
+def _static_typing(descriptor: ast.expr | None) -> bool:
+    """True when no descriptor, or a ``ParameterDescriptor(...)`` without dynamic typing."""
+    if descriptor is None:
+        return True
+    return isinstance(descriptor, ast.Call) and \
+        getattr(descriptor.func, "id", getattr(descriptor.func, "attr", "")) == \
+        "ParameterDescriptor" and _flag(descriptor, "dynamic_typing") is False
+
+
+def _declarations(call: ast.Call, path: str) -> list[Declared] | None:
+    """The parameters a ``declare_parameter(s)`` call declares; None when not all literal."""
+    span = Span(path, call.lineno, call.col_offset + 1)
+    method = call.func.attr if isinstance(call.func, ast.Attribute) else ""
+    if method == "declare_parameter":
+        name = _literal_string(_argument(call, 0, "name"))
+        if name is None:
+            return None
+        return [Declared(name, _default_type(call, _argument(call, 1, "value"),
+                                             _argument(call, 2, "descriptor")), span)]
+    namespace = _literal_string(_argument(call, 0, "namespace"))
+    items = _argument(call, 1, "parameters")
+    if namespace is None or not isinstance(items, (ast.List, ast.Tuple)):
+        return None
+    found: list[Declared] = []
+    for item in items.elts:
+        parts = item.elts if isinstance(item, ast.Tuple) else []
+        name = _literal_string(parts[0]) if parts else None
+        if name is None:
+            return None
+        full = f"{namespace}.{name}" if namespace else name
+        found.append(Declared(full, _default_type(call, parts[1] if len(parts) > 1 else None,
+                                                  parts[2] if len(parts) > 2 else None), span))
+    return found
+
+
+def _method_calls(index: Index, names: frozenset[str]) -> Iterator[ast.Call]:
+    for call in index.calls:
+        if isinstance(call.func, ast.Attribute) and call.func.attr in names:
+            yield call
+
+
+def _is_self(node: ast.expr) -> bool:
+    return isinstance(node, ast.Name) and node.id == "self"
+
+
+def _node_class(path: str, cls: ast.ClassDef, index: Index, module_skip: str | None
+                ) -> NodeClass:
+    """The analysis of one direct Node subclass."""
+    inside = [c for c in index.calls if _within(index, c, cls)]
+    name = next((_literal_string(name_argument(c)) for c in node_constructions(index)
+                 if _within(index, c, cls) and isinstance(c.func, ast.Attribute)), None)
+    declared: list[Declared] = []
+    skip = module_skip
+    if len(cls.bases) != 1 or cls.keywords:
+        skip = skip or "it derives from another class besides Node"
+    for call in _method_calls(index, frozenset({"declare_parameter", "declare_parameters"})):
+        found = _declarations(call, path)
+        if found is None:
+            skip = skip or "it declares a parameter whose name is not a literal"
+        else:
+            declared.extend(found)
+    if any(_is_self(a) for c in inside for a in (*c.args, *(k.value for k in c.keywords))):
+        skip = skip or "it hands `self` to other code, which may declare parameters"
+    reads = [(n, Span(path, c.lineno, c.col_offset + 1))
+             for c in inside if isinstance(c.func, ast.Attribute) and
+             c.func.attr in READS and _is_self(c.func.value) for n in _read_names(c)]
+    return NodeClass(path, cls.name, name, tuple(declared), tuple(reads), skip)
+
+
+def _read_names(call: ast.Call) -> list[str]:
+    """Literal parameter names a ``get_parameter(s)`` call reads."""
+    assert isinstance(call.func, ast.Attribute)
+    first = _argument(call, 0, "name" if call.func.attr == "get_parameter" else "names")
+    items = first.elts if call.func.attr == "get_parameters" and \
+        isinstance(first, (ast.List, ast.Tuple)) else [first]
+    return [n for n in map(_literal_string, items) if n is not None]
+
+
+def _within(index: Index, node: ast.AST, cls: ast.ClassDef) -> bool:
+    parent = index.parents.get(id(node))
+    while parent is not None and parent is not cls:
+        parent = index.parents.get(id(parent))
+    return parent is cls
+
+
+def _module_skip(tree: ast.Module) -> str | None:
+    for node in ast.walk(tree):
+        if isinstance(node, ast.keyword) and node.arg in PERMISSIVE:
+            return f"it uses `{node.arg}`"
+    return None
+
+
+@dataclass(frozen=True, slots=True)
+class ModuleNodes:
+    """The nodes of one installed module: its direct Node subclasses, whether it defines
+    other classes (a node may derive from them), and the literal names of Node() calls."""
+
+    classes: tuple[NodeClass, ...]
+    other_classes: bool
+    constructed: tuple[str | None, ...]
+
+
+@per_package
+def module_nodes(package: Package) -> dict[str, ModuleNodes]:
+    """Every installed, parseable module's :class:`ModuleNodes`, by path."""
+    found: dict[str, ModuleNodes] = {}
+    for module, tree, index in installed_trees(package):
+        skip = _module_skip(tree)
+        direct = [c for c in index.classes
+                  if any(qualified(b, index.aliases) in NODE_CLASSES for b in c.bases)]
+        calls = tuple(_literal_string(name_argument(c)) for c in index.calls
+                      if qualified(c.func, index.aliases) in NODE_CLASSES)
+        found[module.path] = ModuleNodes(
+            tuple(_node_class(module.path, c, index, skip) for c in direct),
+            len(index.classes) > len(direct), calls)
+    return found
+
+
+def node_classes(package: Package) -> Iterator[NodeClass]:
+    """Every direct Node subclass of installed code."""
+    for nodes in module_nodes(package).values():
+        yield from nodes.classes
+
+
+@per_package
+def executable_nodes(package: Package) -> dict[str, tuple[str | None, NodeClass | None]]:
+    """Console script -> (default node name, Node class) of the node its module runs.
+
+    Known when the module defines exactly one class, a direct Node subclass, and constructs
+    no other node (the name then comes from ``super().__init__``), or defines no class and
+    constructs one node with ``Node('name')`` / ``create_node('name')`` (the class is None).
+    A script missing from the result, or a None name, is not known.
+    """
+    entries, modules = scripts_and_modules(package)
+    nodes = module_nodes(package)
+    found: dict[str, tuple[str | None, NodeClass | None]] = {}
+    for entry in entries:
+        module = nodes.get(modules.get(entry.module, ""))
+        if module is None or module.other_classes:
+            continue
+        if len(module.classes) == 1 and not module.constructed:
+            found[entry.name] = (module.classes[0].default_name, module.classes[0])
+        elif not module.classes and len(module.constructed) == 1:
+            found[entry.name] = (module.constructed[0], None)
+    return found
+
+
+def node_name(package: Package, node: NodeRef) -> str | None:
+    """The name a launched node runs under (static name, or its code's default), if known."""
+    if node.name_unknown:
+        return None
+    if node.name is not None:
+        return node.name.rpartition("/")[2]
+    if node.package != package.name or node.executable is None:
+        return None
+    return executable_nodes(package).get(node.executable, (None, None))[0]
+
+
+def node_class(package: Package, node: NodeRef) -> NodeClass | None:
+    """The Node class a launched node of this package runs, when known."""
+    if node.package != package.name or node.executable is None:
+        return None
+    return executable_nodes(package).get(node.executable, (None, None))[1]
+
+
+@per_package
+def parameter_file_nodes(package: Package) -> dict[str, tuple[NodeRef, ...]]:
+    """Package file -> the nodes the package's launch files pass it to as parameters."""
+    data = installed_data(package) or {}
+    found: dict[str, list[NodeRef]] = {}
+    for launch in package.launch_files:
+        for node in launch.nodes:
+            for ref in node.parameter_files:
+                if ref.package != package.name:
+                    continue
+                relative = posixpath.join(*ref.parts)
+                source = data.get(posixpath.join("share", package.name, relative))
+                for path in {p for p in (source, relative) if p and package.has_file(p)}:
+                    found.setdefault(path, []).append(node)
+    return {path: tuple(nodes) for path, nodes in found.items()}
+
+
+@per_package
+def fully_seen_parameter_files(package: Package) -> dict[str, tuple[NodeRef, ...]]:
+    """:func:`parameter_file_nodes`, for files whose every user pkgtool sees.
+
+    Empty when a launch file does not parse or gives a node parameters that are not read
+    statically (a launch argument may name any file); a file whose name the package's
+    Python code mentions (it may read it itself) is left out.
+    """
+    launches = package.launch_files
+    if any(f.problem for f in launches) or any(n.other_parameters for f in launches
+                                               for n in f.nodes):
+        return {}
+    code = [package.texts.get(p, "") for p in package.files
+            if p.endswith(".py") and p not in {f.path for f in launches}]
+    return {path: nodes for path, nodes in parameter_file_nodes(package).items()
+            if not any(posixpath.basename(path) in text for text in code)}
+
+
+def yaml_type(node: object) -> str | None:
+    """The ROS type rcl's parameter parser gives a YAML value (None: not known, or rejected:
+    an empty or mixed list, an empty or out-of-range value)."""
+    import yaml
+
+    if isinstance(node, yaml.SequenceNode):
+        kinds = {scalar_type(v) if isinstance(v, yaml.ScalarNode) else None for v in node.value}
+        return f"{kinds.pop()}_ARRAY" if len(kinds) == 1 and None not in kinds else None
+    return scalar_type(node) if isinstance(node, yaml.ScalarNode) else None
+
+
+def mixed_list(node: object) -> bool:
+    """True for a YAML list of scalars of different ROS types, which rcl rejects."""
+    import yaml
+
+    if not isinstance(node, yaml.SequenceNode) or \
+            not all(isinstance(v, yaml.ScalarNode) for v in node.value):
+        return False
+    kinds = {scalar_type(v) for v in node.value}
+    return None not in kinds and len(kinds) > 1
+
+
+def scalar_type(node: object) -> str | None:
+    """rcl's ``get_value``: quoted -> STRING; plain: bool words, ``strtol``, ``strtod``."""
+    text = str(getattr(node, "value", ""))
+    if getattr(node, "style", None) in ("'", '"'):
+        return "STRING"
+    if not text or getattr(node, "tag", "").startswith("tag:yaml.org,2002:") is False:
+        return None
+    if text in _BOOLS:
+        return "BOOL"
+    if _INT.fullmatch(text):
+        return "INTEGER" if -2 ** 63 <= int(text, 8 if _octal(text) else 0) < 2 ** 63 else None
+    if text in _SPECIAL_FLOATS:
+        return "DOUBLE"
+    if _FLOAT.fullmatch(text):
+        value = float(text)
+        return "DOUBLE" if value not in (float("inf"), -float("inf")) or "inf" in \
+            text.lower() else None
+    return "STRING"
+
+
+def _octal(text: str) -> bool:
+    digits = text.lstrip("+-")
+    return len(digits) > 1 and digits[0] == "0" and digits[1] not in "xX"
+
+
+def flat_parameters(mapping: object, prefix: str = "") -> Iterator[tuple[str, object, object]]:
+    """(dotted name, key node, value node) of every parameter under ``ros__parameters``."""
+    import yaml
+
+    if not isinstance(mapping, yaml.MappingNode):
+        return
+    for key, value in mapping.value:
+        if not isinstance(key, yaml.ScalarNode):
+            continue
+        name = f"{prefix}{key.value}"
+        if isinstance(value, yaml.MappingNode):
+            yield from flat_parameters(value, name + ".")
+        else:
+            yield name, key, value
+
+
+@dataclass(frozen=True, slots=True)
+class FileEntry:
+    """A ``<node>: ros__parameters:`` block of a parameter file whose users are all known:
+    the node key (namespaces joined with ``/``), where it is written, the launched nodes it
+    applies to, every node the file is passed to with their names, and the parameters."""
+
+    path: str
+    key: str
+    span: Span
+    matched: tuple[NodeRef, ...]
+    names: tuple[str, ...]
+    parameters: object
+
+
+def _matches(key: str, name: str) -> bool:
+    from fnmatch import fnmatchcase
+
+    return fnmatchcase(name, key.rpartition("/")[2])
+
+
+def file_entries(package: Package) -> Iterator[FileEntry]:
+    """The node blocks of every fully seen parameter file whose nodes all have known names."""
+    from pkgtool.model.launch_reader import yaml_problem
+
+    for path, nodes in sorted(fully_seen_parameter_files(package).items()):
+        names = [node_name(package, n) for n in nodes]
+        text = package.texts.get(path)
+        documents = yaml_problem(path, text) if text is not None else None
+        if None in names or not isinstance(documents, list):
+            continue
+        known = tuple(n for n in names if n is not None)
+        for document in documents:
+            for key, span, parameters in _blocks(path, document, ""):
+                matched = tuple(n for n, name in zip(nodes, known) if _matches(key, name))
+                yield FileEntry(path, key, span, matched, tuple(sorted(set(known))), parameters)
+
+
+def _blocks(path: str, mapping: object, prefix: str, depth: int = 0
+            ) -> Iterator[tuple[str, Span, object]]:
+    import yaml
+
+    if not isinstance(mapping, yaml.MappingNode) or depth > 20:
+        return
+    for key, value in mapping.value:
+        if not isinstance(key, yaml.ScalarNode) or not isinstance(value, yaml.MappingNode):
+            continue
+        name = f"{prefix}/{key.value}" if prefix else str(key.value)
+        inner = {str(k.value): v for k, v in value.value if isinstance(k, yaml.ScalarNode)}
+        if "ros__parameters" in inner:
+            yield name, Span(path, key.start_mark.line + 1, key.start_mark.column + 1), \
+                inner["ros__parameters"]
+        else:
+            yield from _blocks(path, value, name, depth + 1)
+
+
+def analysed_classes(package: Package, nodes: tuple[NodeRef, ...]) -> list[NodeClass] | None:
+    """The Node classes ``nodes`` run, when every one is known and declares only literals."""
+    classes = [node_class(package, n) for n in nodes]
+    if not classes or any(c is None or c.skip for c in classes):
+        return None
+    return [c for c in classes if c is not None]
+
+
+def span_of(path: str, node: object) -> Span:
+    """Where a YAML node starts."""
+    mark = getattr(node, "start_mark")
+    return Span(path, mark.line + 1, mark.column + 1)
