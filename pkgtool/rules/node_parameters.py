@@ -11,6 +11,7 @@ from __future__ import annotations
 import ast
 import posixpath
 import re
+from difflib import get_close_matches
 from collections.abc import Iterator
 from dataclasses import dataclass
 
@@ -19,9 +20,9 @@ from pkgtool.model.launch import NodeRef
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.entry_points._scripts import scripts_and_modules
-from pkgtool.rules.python._node_api import NODE_CLASSES, name_argument, node_constructions
-from pkgtool.rules.python._tree import Index, installed_trees, qualified
+from pkgtool.rules.console_scripts import scripts_and_modules
+from pkgtool.rules.node_api import NODE_CLASSES, name_argument, node_constructions
+from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
 
 PERMISSIVE = frozenset({"allow_undeclared_parameters",
                         "automatically_declare_parameters_from_overrides"})
@@ -443,3 +444,9 @@ def span_of(path: str, node: object) -> Span:
     """Where a YAML node starts."""
     mark = getattr(node, "start_mark")
     return Span(path, mark.line + 1, mark.column + 1)
+
+
+def near(word: str, choices: list[str] | tuple[str, ...]) -> str:
+    """`` (did you mean `x`?)`` for a close match of ``word``, else ''."""
+    found = get_close_matches(word, sorted(set(choices)), n=1)
+    return f" (did you mean `{found[0]}`?)" if found else ""

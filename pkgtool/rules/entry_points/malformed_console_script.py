@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.entry_points._scripts import SCRIPT_GROUPS, problem
+from pkgtool.rules.console_scripts import SCRIPT_GROUPS, problem
 from pkgtool.rules.registry import rule
 
 

@@ -7,7 +7,7 @@ from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.entry_points._scripts import SCRIPT_GROUPS
+from pkgtool.rules.console_scripts import SCRIPT_GROUPS
 from pkgtool.rules.registry import rule
 
 

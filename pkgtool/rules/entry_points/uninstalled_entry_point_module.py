@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import why_not_installed
 from pkgtool.model.package import Package
-from pkgtool.rules.entry_points._scripts import scripts_and_modules
+from pkgtool.rules.console_scripts import scripts_and_modules
 from pkgtool.rules.registry import rule
 
 

@@ -8,10 +8,10 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._node_api import (ACTION_SERVER_CALLBACKS, ACTION_SERVERS, CALLBACKS,
-                                            argument, node_api_calls)
+from pkgtool.rules.node_api import (ACTION_SERVER_CALLBACKS, ACTION_SERVERS, CALLBACKS,
+                                    argument, node_api_calls)
 from pkgtool.rules.python._scopes import bound_names, returns_none
-from pkgtool.rules.python._tree import FUNCTIONS, Index, installed_trees, qualified
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees, qualified
 from pkgtool.rules.registry import rule
 
 

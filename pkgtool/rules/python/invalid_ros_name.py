@@ -9,9 +9,9 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._node_api import (PARAMETERS, argument, name_argument,
-                                            node_api_calls, node_constructions)
-from pkgtool.rules.python._tree import installed_trees
+from pkgtool.rules.node_api import (PARAMETERS, argument, name_argument,
+                                    node_api_calls, node_constructions)
+from pkgtool.rules.syntax_trees import installed_trees
 from pkgtool.rules.registry import rule
 
 _NODE_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")

@@ -7,8 +7,8 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._node_api import name_argument, node_constructions, unpacks
-from pkgtool.rules.python._tree import installed_trees
+from pkgtool.rules.node_api import name_argument, node_constructions, unpacks
+from pkgtool.rules.syntax_trees import installed_trees
 from pkgtool.rules.registry import rule
 
 

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._node_api import PARAMETERS, argument, node_api_calls, unpacks
+from pkgtool.rules.node_api import PARAMETERS, argument, node_api_calls, unpacks
 from pkgtool.rules.registry import rule
 
 

@@ -9,7 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.numpy_removed import REMOVED
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._tree import installed_trees, resolved_attributes
+from pkgtool.rules.syntax_trees import installed_trees, resolved_attributes
 from pkgtool.rules.registry import rule
 
 

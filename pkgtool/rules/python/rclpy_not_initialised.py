@@ -11,8 +11,8 @@ from pkgtool.knowledge.rosdistro import any_stdlib_module
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.imports import entry_points_installed
-from pkgtool.rules.python._node_api import NODE_CLASSES, node_subclasses
-from pkgtool.rules.python._tree import FUNCTIONS, Index, installed_trees, qualified
+from pkgtool.rules.node_api import NODE_CLASSES, node_subclasses
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees, qualified
 from pkgtool.rules.registry import rule
 
 _INITS = frozenset({"rclpy.init", "rclpy.utilities.init"})

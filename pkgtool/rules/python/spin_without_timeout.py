@@ -8,7 +8,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._tree import installed_trees, qualified
+from pkgtool.rules.syntax_trees import installed_trees, qualified
 from pkgtool.rules.registry import rule
 
 _NAME = "spin_until_future_complete"

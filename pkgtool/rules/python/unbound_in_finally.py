@@ -11,7 +11,7 @@ from pkgtool.model.memo import per_object
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._scopes import bound_names, catches_everything, scope_walk
-from pkgtool.rules.python._tree import Index, installed_trees
+from pkgtool.rules.syntax_trees import Index, installed_trees
 from pkgtool.rules.registry import rule
 
 _LOOPS = (ast.For, ast.AsyncFor, ast.While)

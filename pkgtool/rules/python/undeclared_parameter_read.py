@@ -6,8 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.data_files.parameter_files import near
-from pkgtool.rules.node_parameters import BUILT_IN, node_classes
+from pkgtool.rules.node_parameters import BUILT_IN, near, node_classes
 from pkgtool.rules.registry import rule
 
 

@@ -12,7 +12,7 @@ from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import dead_lines
 from pkgtool.rules.python._names_proof import every_name_defined
-from pkgtool.rules.python._tree import installed_modules
+from pkgtool.rules.syntax_trees import installed_modules
 from pkgtool.rules.registry import rule
 
 

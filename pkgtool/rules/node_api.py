@@ -12,7 +12,7 @@ from collections.abc import Collection, Iterator
 
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
-from pkgtool.rules.python._tree import Index, installed_trees, qualified
+from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
 
 PARAMETERS = {
     "create_publisher": ("msg_type", "topic", "qos_profile"),

@@ -1,0 +1,61 @@
+"""DAT011: a parameter file gives a value of another type than the declared default."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.rules.node_parameters import (
+    analysed_classes, file_entries, flat_parameters, mixed_list, span_of, yaml_type)
+from pkgtool.rules.registry import rule
+
+
+@rule("DAT011", "parameter-type-mismatch", Severity.ERROR,
+      fix="Write the value with the declared type (`1.0`, not `1`, for a double)")
+def parameter_type_mismatch(package: Package) -> Iterator[Hit]:
+    """A parameter file gives a value of another type than the node declares.
+
+    ## What it does
+    For the parameters DAT010 checks, compares the type rcl's YAML parser gives the value
+    (quoted: string; `true`/`yes`/`on`...: bool; an integer literal: integer; else a
+    number: double; else string; a list: an array of its items' type) with the type of the
+    literal default of `declare_parameter`. Declarations whose default is not a literal, that
+    pass a `ParameterDescriptor` with `dynamic_typing=True` (or a descriptor not written
+    in the call) or `ignore_override=True` are not checked. A list mixing types is reported
+    in any block of those files: rcl rejects the whole file.
+
+    ## Why is this bad?
+    The node dies at start-up: `declare_parameter` raises `InvalidParameterTypeException`.
+    `1` is an integer, and an integer is not accepted for a double parameter.
+
+    ## Example
+    ```python
+    self.declare_parameter('period', 0.5)
+    ```
+    ```yaml
+    talker:
+      ros__parameters:
+        period: 1
+    ```
+
+    ## Use instead
+    ```yaml
+    talker:
+      ros__parameters:
+        period: 1.0
+    ```
+    """
+    for entry in file_entries(package):
+        classes = analysed_classes(package, entry.matched) or []
+        for name, _, value in flat_parameters(entry.parameters):
+            if mixed_list(value):
+                yield Hit(span_of(entry.path, value), f"`{name}` mixes value types in one "
+                          "list: rcl rejects the file")
+                continue
+            found = yaml_type(value)
+            wanted = {d.type for c in classes for d in c.declared if d.name == name} - {None}
+            if found is not None and wanted and found not in wanted:
+                yield Hit(span_of(entry.path, value), f"`{name}` is declared "
+                          f"{' or '.join(sorted(wanted))} but the file gives {found}: the node "
+                          "raises InvalidParameterTypeException")

@@ -1,0 +1,57 @@
+"""DAT010: a parameter file sets a parameter its node never declares."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.rules.node_parameters import (
+    BUILT_IN, analysed_classes, file_entries, flat_parameters, near, span_of)
+from pkgtool.rules.registry import rule
+
+
+@rule("DAT010", "unknown-parameter-in-file", Severity.WARNING,
+      fix="Use the name the node declares, or declare the parameter in the node")
+def unknown_parameter_in_file(package: Package) -> Iterator[Hit]:
+    """A parameter file sets a parameter that the node's code never declares.
+
+    ## What it does
+    For the blocks of parameter files checked by DAT009, when every node a block applies to
+    runs an executable of this package whose `Node` subclass is known (as for DAT009),
+    checks each parameter under `ros__parameters` (nested mappings are dotted names:
+    `pid: {p: 1}` is `pid.p`) against the names the class's module declares with
+    `declare_parameter('name', ...)` and `declare_parameters('ns', [('name', ...)])`.
+    Skipped when the module uses `allow_undeclared_parameters` or
+    `automatically_declare_parameters_from_overrides`, declares a name that is not a literal,
+    when the class derives from another class besides `Node`, or hands `self` to other code.
+    `use_sim_time` and `qos_overrides.*` are never reported.
+
+    ## Why is this bad?
+    rclpy ignores values of undeclared parameters: a misspelled name leaves the node on its
+    default without a word.
+
+    ## Example
+    ```yaml
+    talker:
+      ros__parameters:
+        perod: 1.0  # the node declares `period`
+    ```
+
+    ## Use instead
+    ```yaml
+    talker:
+      ros__parameters:
+        period: 1.0
+    ```
+    """
+    for entry in file_entries(package):
+        classes = analysed_classes(package, entry.matched)
+        if classes is None:
+            continue
+        declared = [d.name for c in classes for d in c.declared]
+        for name, key, _ in flat_parameters(entry.parameters):
+            if name not in declared and name not in BUILT_IN and \
+                    not name.startswith("qos_overrides."):
+                yield Hit(span_of(entry.path, key), f"`{entry.key}` declares no parameter "
+                          f"`{name}`{near(name, declared)}: the value is ignored")
