@@ -7,6 +7,7 @@ from pathlib import Path
 from tests.lint.seeded import case, edit, move, remove
 
 SETUP = "setup.py"
+PARAMETERS = "config/params.yaml"
 MARKER = "('share/ament_index/resource_index/packages', ['resource/' + package_name]),"
 LAUNCH = "(os.path.join('share', package_name, 'launch'), glob('launch/*.launch.py')),"
 CONFIG = "(os.path.join('share', package_name, 'config'), glob('config/*.yaml')),"
@@ -112,3 +113,18 @@ def config_folder_as_data_file(root: Path) -> None:
 @case("DAT004")
 def package_xml_replaced_by_license(root: Path) -> None:
     edit(root, SETUP, "['package.xml']", "['LICENSE']")
+
+
+@case("DAT009", PARAMETERS, "talkr:")
+def parameter_block_for_misspelled_node(root: Path) -> None:
+    edit(root, PARAMETERS, "talker:", "talkr:")
+
+
+@case("DAT010", PARAMETERS, "perod: 0.5")
+def misspelled_parameter_in_file(root: Path) -> None:
+    edit(root, PARAMETERS, "period: 0.5", "perod: 0.5")
+
+
+@case("DAT011", PARAMETERS, "period: 1")
+def integer_for_a_double_parameter(root: Path) -> None:
+    edit(root, PARAMETERS, "period: 0.5", "period: 1")

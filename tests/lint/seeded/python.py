@@ -147,3 +147,24 @@ def ros1_import(root: Path) -> None:
     edit(root, TALKER, "import rclpy\n", "import rclpy\nimport rospy\n")
     edit(root, TALKER, "        self.count = 0\n",
          "        self.count = 0\n        self.rate = rospy.Rate(2)\n")
+
+
+@case("PYC013", TALKER, "self.create_timer(period, self.publish())")
+def timer_callback_called(root: Path) -> None:
+    edit(root, TALKER, "self.create_timer(period, self.publish)",
+         "self.create_timer(period, self.publish())")
+
+
+@case("PYC013", LISTENER, "self.on_message(), 10)")
+def subscription_callback_called(root: Path) -> None:
+    edit(root, LISTENER, "self.on_message, 10)", "self.on_message(), 10)")
+
+
+@case("PYC014", TALKER, "get_parameter('perod')")
+def undeclared_parameter_read(root: Path) -> None:
+    edit(root, TALKER, "self.get_parameter('period')", "self.get_parameter('perod')")
+
+
+@case("PYC015", LISTENER)
+def rclpy_init_forgotten(root: Path) -> None:
+    edit(root, LISTENER, "    rclpy.init(args=args)\n", "")
