@@ -3,9 +3,10 @@
 The workspace of a package is every package linted in the same run plus, when the package
 lies under the ``src`` folder of a colcon workspace (a folder ``ws`` with ``ws/src``), every
 package colcon would find there. For each one the index keeps its name, the interfaces of its
-``msg/``, ``srv/`` and ``action/`` folders (their subfolders too: see :func:`interface_file`),
-and its top-level Python packages. Reading is cheap (package.xml's name and a few folder
-listings) and never raises.
+``msg/``, ``srv/`` and ``action/`` folders (their subfolders too: see :func:`interface_file`)
+and the other files its CMakeLists.txt generates interfaces from (none when that list is
+open), and its top-level Python packages. Reading is cheap (package.xml's name,
+CMakeLists.txt and a few folder listings) and never raises.
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from pkgtool.knowledge.tables import DEFAULT_DISTRO
+from pkgtool.model.cmake_interfaces import with_listed
 from pkgtool.workspace import listing
 
 _NAME = re.compile(r"<name>\s*([^<\s]+)\s*</name>")
@@ -82,22 +84,30 @@ def _files_under(base: str, folder: str, depth: int = _DEPTH) -> Iterator[str]:
 def read_workspace_package(root: Path) -> WorkspacePackage:
     """Name (package.xml, else the folder), interfaces and Python packages of ``root``."""
     base = os.fspath(root)
-    try:
-        with open(os.path.join(base, "package.xml"), encoding="utf-8", errors="replace") as f:
-            found = _NAME.search(f.read())
-        name = found.group(1) if found else root.name
-    except OSError:
-        name = root.name
+    manifest = _read(os.path.join(base, "package.xml"))
+    found = _NAME.search(manifest) if manifest is not None else None
+    name = found.group(1) if found else root.name
     listed = listing(base)
     kinds: dict[str, set[str]] = {}
     for folder in (e.name for e in listed if e.name in _KINDS):
         for kind, stem in filter(None, map(interface_file, _files_under(base, folder))):
             kinds.setdefault(kind, set()).add(stem)
-    interfaces = {kind: frozenset(names) for kind, names in kinds.items()}
+    folders = {kind: frozenset(names) for kind, names in kinds.items()}
+    cmake = _read(os.path.join(base, "CMakeLists.txt")) if any(
+        entry.name == "CMakeLists.txt" for entry in listed) else None
     modules = frozenset(e.name for e in listed if e.name.isidentifier()
                         and e.name not in _NOT_MODULES and e.is_dir()
                         and os.path.isfile(os.path.join(e.path, "__init__.py")))
-    return WorkspacePackage(name, interfaces, modules)
+    return WorkspacePackage(name, with_listed(folders, cmake) or {}, modules)
+
+
+def _read(path: str) -> str | None:
+    """The text of the file at ``path``, or None when it cannot be read."""
+    try:
+        with open(path, encoding="utf-8", errors="replace") as f:
+            return f.read()
+    except OSError:
+        return None
 
 
 def colcon_src(root: Path) -> Path | None:

@@ -131,7 +131,8 @@ def load_package(root: Path, context: Context | None = None) -> Package:
                 if module.syntax_error and not _test_data(relpath):
                     problems.append(module.syntax_error)
     for other in ("README.md", "README.rst", "README.txt", "README",  # `ros2 run ...`
-                  "pytest.ini", ".pytest.ini", "pyproject.toml", "tox.ini"):  # pytest's settings
+                  "pytest.ini", ".pytest.ini", "pyproject.toml", "tox.ini",  # pytest's settings
+                  "CMakeLists.txt"):  # the interfaces it generates
         if other in files:
             text_of(other)
     suppressions: dict[tuple[str, int], frozenset[str]] = {}

@@ -1,15 +1,18 @@
 """What DEP008 and DEP009 share: the interfaces a package name stands for, where known.
 
-Known are the package's own ``msg/``, ``srv/`` and ``action/`` folders, those of the other
-packages of the workspace, and (for a jazzy target) the shipped table of the Jazzy interface
-wheels (:mod:`pkgtool.knowledge.interfaces`), in that order. Anything else is unknown: no
-finding. A ROS 1 (catkin) package knows only its own interfaces, laid out as ROS 1 generates
-them: an action ``A`` is the messages ``AAction``, ``AGoal``, ... of ``pkg.msg``.
+Known are the package's own ``msg/``, ``srv/`` and ``action/`` folders with the other files
+its CMakeLists.txt passes to ``rosidl_generate_interfaces`` (nothing is known of a package
+that passes files a found package lists), those of the other packages of the workspace, and
+(for a jazzy target) the shipped table of the Jazzy interface wheels
+(:mod:`pkgtool.knowledge.interfaces`), in that order. Anything else is unknown: no finding. A
+ROS 1 (catkin) package knows only its own interfaces, laid out as ROS 1 generates them: an
+action ``A`` is the messages ``AAction``, ``AGoal``, ... of ``pkg.msg``.
 """
 
 from __future__ import annotations
 
 from pkgtool.knowledge.interfaces import Interfaces, interfaces_of
+from pkgtool.model.cmake_interfaces import with_listed
 from pkgtool.model.context import interface_file
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
@@ -20,12 +23,14 @@ ROS1_ACTION_MESSAGES = ("Action", "ActionGoal", "ActionResult", "ActionFeedback"
 
 
 @per_package
-def own_interfaces(package: Package) -> Interfaces:
-    """Kind -> names of the interface files in the package's own kind folders."""
+def own_interfaces(package: Package) -> Interfaces | None:
+    """Kind -> names of the package's interfaces: the files of its kind folders and those its
+    CMakeLists.txt lists; None when that list takes files from another package."""
     found: dict[str, set[str]] = {}
     for kind, name in filter(None, map(interface_file, package.files)):
         found.setdefault(kind, set()).add(name)
-    return {kind: frozenset(names) for kind, names in found.items()}
+    return with_listed({kind: frozenset(names) for kind, names in found.items()},
+                       package.texts.get("CMakeLists.txt"))
 
 
 def ros1_layout(interfaces: Interfaces) -> Interfaces:
@@ -46,6 +51,8 @@ def interfaces_for(package: Package, name: str) -> Interfaces | None:
     ros1 = package.manifest is not None and package.manifest.is_ros1
     if name == package.name:
         own = own_interfaces(package)
+        if own is None:
+            return None
         return (ros1_layout(own) if ros1 else own) or None
     if ros1:
         return None

@@ -21,7 +21,9 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
     Checks the names of unguarded `from <pkg>.msg|srv|action import ...` imports in every
     Python file against the interfaces of `<pkg>` when they are known: the package's own
     `msg/`, `srv/` and `action/` folders (their subfolders too: rosidl flattens
-    `msg/motion/Twist.msg` into `msg/Twist`), those of the other packages of the workspace, and
+    `msg/motion/Twist.msg` into `msg/Twist`) and the other files its CMakeLists.txt passes to
+    `rosidl_generate_interfaces` (none are known when it passes a list that a package it
+    finds sets, such as `${pkg_MSG_FILES}`), those of the other packages of the workspace, and
     pkgtool's table of the interface packages of ROS 2 Jazzy that are installable as wheels
     (for a jazzy target only: other distributions have other interfaces)
     (`std_msgs`, `geometry_msgs`, `sensor_msgs`, `std_srvs`, ...). Packages that are not

@@ -1,0 +1,156 @@
+"""The interface files a CMakeLists.txt passes to ``rosidl_generate_interfaces``, as far as known.
+
+Most packages list files of their own ``msg/``, ``srv/`` and ``action/`` folders, literally or
+through a variable set in the same file (``set(msg_files "msg/A.msg")``, ``file(GLOB ...)``).
+Some list files of other folders (``interfaces/msg/A.msg``: the folder holding a file names
+its kind), and some list files a variable from another package holds
+(``${test_interface_files_MSG_FILES}`` after ``find_package(test_interface_files)``): then
+the package defines interfaces no file of its tree shows, and its set of interfaces is open.
+"""
+
+from __future__ import annotations
+
+import posixpath
+import re
+from dataclasses import dataclass
+
+_CALL = re.compile(r"\b([A-Za-z_]\w*)\s*\(([^()]*(?:\([^()]*\)[^()]*)*)\)", re.S)
+_COMMENT = re.compile(r"#[^\n]*")
+_TOKEN = re.compile(r'"([^"]*)"|(\S+)')
+_VARIABLE = re.compile(r"\$\{(\w+)\}")
+_SOURCE_DIRS = frozenset({"CMAKE_CURRENT_SOURCE_DIR", "PROJECT_SOURCE_DIR", "CMAKE_SOURCE_DIR",
+                          "CMAKE_CURRENT_LIST_DIR"})
+"""Variables holding the package's own folder: a path under them is a path in the package."""
+_KEYWORDS = frozenset({"DEPENDENCIES", "LIBRARY_NAME", "SKIP_INSTALL", "ADD_LINTER_TESTS",
+                       "SKIP_GROUP_MEMBERSHIP_CHECK"})
+"""Where the interface files of a ``rosidl_generate_interfaces`` call end."""
+_KINDS = ("msg", "srv", "action")
+_SUFFIXES = (".msg", ".srv", ".action", ".idl")
+_DEPTH = 8
+_FOUND = "<find_package>"
+"""Where :func:`_variables` keeps the names of the packages the file finds."""
+
+
+@dataclass(frozen=True, slots=True)
+class ListedInterfaces:
+    """What the ``rosidl_generate_interfaces`` calls of a CMakeLists.txt list.
+
+    ``files`` are the package-relative paths of the files listed literally (or through
+    variables set in the file); ``open`` is True when some argument comes from a variable the
+    file never sets and a package it finds does (``${Pkg_MSG_FILES}`` after
+    ``find_package(Pkg)``), so that the package defines interfaces pkgtool cannot see.
+    """
+
+    files: frozenset[str] = frozenset()
+    open: bool = False
+
+
+def listed_interfaces(text: str) -> ListedInterfaces:
+    """The interface files the ``rosidl_generate_interfaces`` calls of ``text`` list."""
+    calls = [(name.lower(), _tokens(args)) for name, args in
+             _CALL.findall(_COMMENT.sub("", text))]
+    variables = _variables(calls)
+    files: set[str] = set()
+    is_open = False
+    for name, args in calls:
+        if name != "rosidl_generate_interfaces":
+            continue
+        for arg in _interface_args(args[1:]):
+            for value in _expand(arg, variables, _DEPTH):
+                if value is None:
+                    is_open = True
+                elif value.endswith(_SUFFIXES):
+                    files.add(posixpath.normpath(value.rsplit(":", 1)[-1].lstrip("/")))
+    return ListedInterfaces(frozenset(files), is_open)
+
+
+def interfaces_of_files(files: frozenset[str]) -> dict[str, frozenset[str]]:
+    """Kind -> interface names of ``files``, the kind being the folder that holds each file."""
+    found: dict[str, set[str]] = {}
+    for path in files:
+        folder, name = posixpath.split(path)
+        kind = posixpath.basename(folder)
+        if kind in _KINDS:
+            found.setdefault(kind, set()).add(name.rsplit(".", 1)[0])
+    return {kind: frozenset(names) for kind, names in found.items()}
+
+
+def _tokens(args: str) -> list[str]:
+    return [bare or quoted for quoted, bare in _TOKEN.findall(args)]
+
+
+def _interface_args(args: list[str]) -> list[str]:
+    """The arguments before the first keyword: the interface files."""
+    listed = []
+    for arg in args:
+        if arg in _KEYWORDS:
+            break
+        listed.append(arg)
+    return listed
+
+
+def _variables(calls: list[tuple[str, list[str]]]) -> dict[str, list[str] | None]:
+    """Variables the file sets: their values, or None for values only a build knows (globs)."""
+    found: dict[str, list[str] | None] = {}
+    for name, args in calls:
+        if name == "set" and args:
+            found.setdefault(args[0], []).extend(a for a in args[1:] if a != "PARENT_SCOPE")
+        elif name == "list" and len(args) > 1 and args[0] == "APPEND":
+            found.setdefault(args[1], []).extend(args[2:])
+        elif name == "file" and len(args) > 1 and args[0] in ("GLOB", "GLOB_RECURSE"):
+            found[args[1]] = None
+        elif name == "foreach" and args:
+            found[args[0]] = None
+        elif name == "project" and args:
+            found["PROJECT_NAME"] = [args[0]]
+        elif name == "find_package" and args:
+            found.setdefault(_FOUND, []).append(args[0])
+    return found
+
+
+def _found_by_package(name: str, variables: dict[str, list[str] | None]) -> bool:
+    """True for a variable a ``find_package``'d package sets (``<Package>_MSG_FILES``)."""
+    return any(name.startswith(package + "_") for package in variables.get(_FOUND) or ())
+
+
+def _expand(arg: str, variables: dict[str, list[str] | None], depth: int
+            ) -> list[str | None]:
+    """The values ``arg`` stands for; None for one that comes from outside the file.
+
+    Variables the file sets by globbing stand for no listed file: a glob lists files of the
+    package's own folders, which the caller sees anyway. A variable nobody sets is empty,
+    unless its name is that of a package the file finds (``find_package(Pkg)`` sets
+    ``Pkg_...``).
+    """
+    for name in _SOURCE_DIRS:
+        arg = arg.replace(f"${{{name}}}", "")
+    names = _VARIABLE.findall(arg)
+    if not names:
+        return [arg]
+    if any(name not in variables and _found_by_package(name, variables) for name in names):
+        return [None]
+    if any(name not in variables for name in names):
+        return []  # never set: empty
+    if depth == 0 or arg != f"${{{names[0]}}}":
+        return []  # a path built from the file's own variables: not followed
+    result: list[str | None] = []
+    for value in variables[names[0]] or ():
+        result.extend(_expand(value, variables, depth - 1))
+    return result
+
+
+def with_listed(found: dict[str, frozenset[str]], cmake: str | None
+                ) -> dict[str, frozenset[str]] | None:
+    """``found`` (kind -> names of the interface folders) and what ``cmake`` lists besides.
+
+    None when the list is open: the package defines interfaces no file of its tree shows.
+    """
+    if cmake is None or "rosidl_generate_interfaces" not in cmake:
+        return found
+    listed = listed_interfaces(cmake)
+    if listed.open:
+        return None
+    merged = dict(found)
+    for kind, names in interfaces_of_files(listed.files).items():
+        merged[kind] = merged.get(kind, frozenset()) | names
+    return merged
