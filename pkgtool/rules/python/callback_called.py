@@ -10,7 +10,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import (ACTION_SERVER_CALLBACKS, ACTION_SERVERS, CALLBACKS,
                                     argument, node_api_calls)
-from pkgtool.rules.python._scopes import bound_names, returns_none
+from pkgtool.rules.scopes import bound_names, returns_none
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees, qualified
 from pkgtool.rules.registry import rule
 

@@ -10,7 +10,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.memo import per_object
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._scopes import bound_names, catches_everything, scope_walk
+from pkgtool.rules.scopes import bound_names, catches_everything, scope_walk
 from pkgtool.rules.syntax_trees import Index, installed_trees
 from pkgtool.rules.registry import rule
 
