@@ -42,7 +42,9 @@ class NodeRef:
     namespace; ``name_unknown`` marks a name given in a way not read statically (a
     substitution, remappings or arguments that are not literals). ``other_parameters``
     marks ``parameters`` holding something besides dicts and static share files (a launch
-    argument): any file may reach the node through it.
+    argument): any file may reach the node through it. ``parameters_not_list`` is where a Python
+    ``parameters=`` gives a value that is certainly no list (a path, a string, a tuple, a
+    dict), None otherwise.
     """
 
     package: str | None
@@ -59,6 +61,7 @@ class NodeRef:
     namespace: str | None = None
     name_unknown: bool = False
     other_parameters: bool = False
+    parameters_not_list: Span | None = None
 
 
 @dataclass(frozen=True, slots=True)

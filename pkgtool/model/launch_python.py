@@ -207,7 +207,8 @@ class _Reader(ast.NodeVisitor):
             arguments = tuple(k.arg or "**" for k in node.keywords)
             if any(isinstance(a, ast.Starred) for a in node.args):
                 arguments += ("*",)
-            files, other = self._parameter_files(_keyword(node, "parameters"))
+            parameters = _keyword(node, "parameters")
+            files, other = self._parameter_files(parameters)
             name, unknown = self._node_name(node)
             namespace = self.value(_keyword(node, "namespace"))
             self.nodes.append(NodeRef(
@@ -219,7 +220,9 @@ class _Reader(ast.NodeVisitor):
                 files, other_distros=bool(self.distro_branches), name=name,
                 namespace=namespace if isinstance(namespace, str) else None,
                 name_unknown=unknown or "**" in arguments or "*" in arguments,
-                other_parameters=other or "**" in arguments))
+                other_parameters=other or "**" in arguments,
+                parameters_not_list=self._span(parameters) if self._not_a_list(parameters)
+                else None))
         elif name == "ExecuteProcess":
             self._ros2_run(node)
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
@@ -246,6 +249,20 @@ class _Reader(ast.NodeVisitor):
                 else:
                     other = True
         return tuple(found), other
+
+    def _not_a_list(self, node: ast.expr | None, depth: int = 0) -> bool:
+        """True when ``node`` is certainly no list: a tuple, dict or set display, a string or
+        number, or a call that gives a path or a string (``PathJoinSubstitution([...])``); also
+        through a name assigned one of those."""
+        if isinstance(node, ast.Name) and depth < _MAX_DEPTH:
+            assigned = self._assigned(node.id)
+            return assigned is not None and self._not_a_list(assigned, depth + 1)
+        if isinstance(node, (ast.Tuple, ast.Dict, ast.DictComp, ast.Set, ast.SetComp,
+                             ast.JoinedStr)):
+            return True
+        if isinstance(node, ast.Constant):
+            return node.value is not None
+        return isinstance(node, ast.Call) and isinstance(self.value(node), (str, Share))
 
     def _is_dict(self, node: ast.expr, depth: int = 0) -> bool:
         """True for a dict display, or a name assigned one."""

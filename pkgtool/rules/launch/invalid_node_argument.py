@@ -37,6 +37,10 @@ def _problems(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
         if not given & {"executable", "node_executable", "**"}:
             yield (f"`{node.action}()` has no `executable`",
                    "Add `executable='<console script>'`", node.span)
+        if node.parameters_not_list:
+            yield (f"`parameters=` of `{node.action}()` is not a list",
+                   "Put the file paths and dicts in a list: `parameters=[params]`",
+                   node.parameters_not_list)
     elif node.action in FRONTEND_TAGS:
         for name in sorted(given & WRONG_ATTRIBUTES.keys()):
             yield (f"`<{node.action}>` has no `{name}` attribute in ROS 2",
@@ -54,7 +58,8 @@ def invalid_launch_node_argument(package: Package) -> Iterator[Hit]:
     ## What it does
     Checks the node actions of launch files: Python `Node`, `LifecycleNode` and
     `ComposableNodeContainer` calls need `executable=` and must not use `node_executable`,
-    `node_name` or `node_namespace` (removed after ROS 2 Eloquent); XML and YAML `node`,
+    `node_name` or `node_namespace` (removed after ROS 2 Eloquent), and their `parameters=`
+    must be a list (not a path, a string, a tuple or a dict); XML and YAML `node`,
     `lifecycle_node` and `node_container` need `exec` and must not use ROS 1 or Python
     attribute names (`type`, `ns`, `executable`, `package`, `required`, ...). Calls that pass
     `**kwargs` are not checked, nor the removed keywords of calls in either branch of a test
@@ -64,7 +69,8 @@ def invalid_launch_node_argument(package: Package) -> Iterator[Hit]:
 
     ## Why is this bad?
     `ros2 launch` stops before starting anything: Python raises `TypeError: unexpected keyword
-    argument`, and the XML and YAML front ends reject unknown attributes ("Unexpected
+    argument` (or, for `parameters=`, launch_ros's "expected 'parameters' to be one of
+    [list]"), and the XML and YAML front ends reject unknown attributes ("Unexpected
     attribute(s) found in `node`") and a node without `exec`.
 
     ## Example

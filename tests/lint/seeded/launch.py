@@ -199,3 +199,16 @@ def include_of_own_launch_file_that_does_not_exist(root: Path) -> None:
          "from launch import LaunchDescription\nfrom launch.actions import "
          "IncludeLaunchDescription\nfrom launch.launch_description_sources import "
          "PythonLaunchDescriptionSource\n")
+
+
+@case("LCH005", PY, "parameters=params")
+def parameters_not_a_list(root: Path) -> None:
+    edit(root, PY, "parameters=[params],\n        ),\n        Node(\n            package='base_pkg',\n"
+         "            executable='listener'",
+         "parameters=params,\n        ),\n        Node(\n            package='base_pkg',\n"
+         "            executable='listener'")
+
+
+@case("LCH006", PY, "def generate_launch_description")
+def launch_description_not_returned(root: Path) -> None:
+    edit(root, PY, "    return LaunchDescription([", "    LaunchDescription([")
