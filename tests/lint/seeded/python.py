@@ -168,3 +168,9 @@ def undeclared_parameter_read(root: Path) -> None:
 @case("PYC015", LISTENER)
 def rclpy_init_forgotten(root: Path) -> None:
     edit(root, LISTENER, "    rclpy.init(args=args)\n", "")
+
+
+@case("PYC016", LISTENER, "get_logger().info(")
+def logger_called_like_print(root: Path) -> None:
+    edit(root, LISTENER, "info(f'Received message {self.count}: {msg}')",
+         "info('Received message', self.count, msg)")

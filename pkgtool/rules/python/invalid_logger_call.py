@@ -1,0 +1,120 @@
+"""PYC016: an rclpy logger called like ``print`` or Python's ``logging``."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
+
+LEVELS = frozenset({"debug", "info", "warning", "warn", "error", "fatal"})
+"""The methods of rclpy's logger taking ``(message, **options)``."""
+OPTIONS = frozenset({"name", "throttle_duration_sec", "throttle_time_source_type",
+                     "skip_first", "once"})
+"""The keyword arguments rclpy's logger accepts (Jazzy)."""
+GETTERS = frozenset({"rclpy.logging.get_logger"})
+
+
+def _is_logger_call(node: ast.AST, index: Index) -> bool:
+    """True for ``<x>.get_logger()`` or ``rclpy.logging.get_logger(...)``."""
+    return isinstance(node, ast.Call) and (
+        isinstance(node.func, ast.Attribute) and node.func.attr == "get_logger"
+        or qualified(node.func, index.aliases) in GETTERS)
+
+
+def _loggers(tree: ast.Module, index: Index) -> set[str]:
+    """Names and ``self.x`` attributes that every binding in the module (assignments, imports,
+    parameters) binds to a logger."""
+    assigned: dict[str, list[ast.AST]] = {name: [tree] for name in index.aliases}
+    for node in ast.walk(tree):
+        if isinstance(node, ast.arg):  # a parameter may be any logger
+            assigned.setdefault(node.arg, []).append(node)
+        targets = node.targets if isinstance(node, ast.Assign) else \
+            [node.target] if isinstance(node, (ast.AnnAssign, ast.AugAssign, ast.For)) else []
+        value = getattr(node, "value", None) if isinstance(node, (ast.Assign, ast.AnnAssign)) \
+            else None
+        for target in targets:
+            key = _key(target)
+            if key is not None:
+                assigned.setdefault(key, []).append(value if value is not None else target)
+    return {key for key, values in assigned.items()
+            if all(_is_logger_call(value, index) for value in values)}
+
+
+def _key(node: ast.expr) -> str | None:
+    """``x`` for a name, ``.x`` for an attribute of any object (``self.logger``)."""
+    if isinstance(node, ast.Name):
+        return node.id
+    return f".{node.attr}" if isinstance(node, ast.Attribute) else None
+
+
+def _problem(call: ast.Call) -> str | None:
+    """What is wrong with the arguments of a logger method call, if anything."""
+    if any(isinstance(a, ast.Starred) for a in call.args) or \
+            any(k.arg is None for k in call.keywords):
+        return None
+    if len(call.args) > 1:
+        return "takes one message: the other arguments raise `TypeError`; format them into " \
+               "the message with an f-string"
+    unknown = sorted(k.arg for k in call.keywords if k.arg and k.arg not in OPTIONS)
+    if unknown:
+        return f"has no option `{unknown[0]}`: rclpy raises `TypeError` (its options are " \
+               "`throttle_duration_sec`, `skip_first`, `once`)"
+    message = call.args[0] if call.args else None
+    if isinstance(message, ast.Constant) and not isinstance(message.value, str) or \
+            isinstance(message, (ast.List, ast.Tuple, ast.Dict, ast.Set)):
+        return "takes a string: rclpy raises `TypeError` for anything else; write " \
+               "`str(...)` or an f-string"
+    return None
+
+
+@rule("PYC016", "invalid-logger-call", Severity.ERROR,
+      fix="Pass one string: `self.get_logger().info(f'Count: {count}')`")
+def invalid_logger_call(package: Package) -> Iterator[Hit]:
+    """An rclpy logger is called with several arguments, an unknown option or no string.
+
+    ## What it does
+    Checks calls of `debug`, `info`, `warning`, `warn`, `error` and `fatal` on rclpy loggers:
+    `<node>.get_logger()`, `rclpy.logging.get_logger(...)`, and names or attributes
+    (`self.logger`) that the module only ever assigns one of those. Each call must pass one
+    message and only rclpy's options (`throttle_duration_sec`, `throttle_time_source_type`,
+    `skip_first`, `once`, `name`). Calls that unpack `*args` or `**kwargs` are not checked.
+
+    ## Why is this bad?
+    rclpy's logger is neither `print` nor Python's `logging`: `info('count', n)` raises
+    `TypeError: RcutilsLogger.info() takes 2 positional arguments but 3 were given`,
+    `info('x %s', n)` too, `info(5)` raises "incompatible function arguments", and an option
+    such as `end=` raises `TypeError: parameter "end" is not one of the recognized logging
+    options`. The node dies in the callback that logs.
+
+    ## Example
+    ```python
+    self.get_logger().info('Received', msg.data)
+    ```
+
+    ## Use instead
+    ```python
+    self.get_logger().info(f'Received {msg.data}')
+    ```
+    """
+    for module, tree, index in installed_trees(package):
+        if not any(i.top_level == "rclpy" for i in module.imports):
+            continue
+        loggers: set[str] | None = None
+        for call in index.calls:
+            func = call.func
+            if not isinstance(func, ast.Attribute) or func.attr not in LEVELS:
+                continue
+            if not _is_logger_call(func.value, index):
+                if loggers is None:
+                    loggers = _loggers(tree, index)
+                if _key(func.value) not in loggers:
+                    continue
+            problem = _problem(call)
+            if problem:
+                yield Hit(Span(module.path, call.lineno, call.col_offset + 1),
+                          f"`{ast.unparse(func)}()` {problem}")
