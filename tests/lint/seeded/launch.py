@@ -203,10 +203,9 @@ def include_of_own_launch_file_that_does_not_exist(root: Path) -> None:
 
 @case("LCH005", PY, "parameters=params")
 def parameters_not_a_list(root: Path) -> None:
-    edit(root, PY, "parameters=[params],\n        ),\n        Node(\n            package='base_pkg',\n"
-         "            executable='listener'",
-         "parameters=params,\n        ),\n        Node(\n            package='base_pkg',\n"
-         "            executable='listener'")
+    listener = "\n        ),\n        Node(\n            package='base_pkg',\n" \
+        "            executable='listener'"
+    edit(root, PY, "parameters=[params]," + listener, "parameters=params," + listener)
 
 
 @case("LCH006", PY, "def generate_launch_description")
