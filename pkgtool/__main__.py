@@ -1,5 +1,5 @@
 """Allow ``python -m pkgtool``."""
 
-from pkgtool.cli import main
+from pkgtool.cli_fast import main
 
 main()

@@ -8,7 +8,6 @@ Ctrl-C ends the run with one line, "Interrupted: nothing was written", and exit 
 
 from __future__ import annotations
 
-import gc
 import os
 import sys
 from collections.abc import Sequence
@@ -17,9 +16,7 @@ from typing import Annotated, Optional
 import typer
 
 from pkgtool import __version__
-
-INTERRUPTED = 130
-"""Exit code of a run stopped by Ctrl-C (128 + SIGINT, as shells report it)."""
+from pkgtool.cli_fast import COMPLETION_VARIABLE, INTERRUPTED, finish
 HELP = {"help_option_names": ["-h", "--help"]}
 
 app = typer.Typer(
@@ -59,11 +56,6 @@ def _root(
     """Create, lint, check, test and grade ROS 2 Python (ament_python) packages."""
 
 
-_COMPLETION_VARIABLE = "_{}_COMPLETE".format(
-    os.path.basename(sys.argv[0]).replace("-", "_").replace(".", "_").upper())
-"""Set by the shell when it asks for completions (click names it after the program)."""
-
-
 def _register(arguments: Sequence[str] = ()) -> None:
     """Attach each verb's command module (imported lazily inside the commands themselves).
 
@@ -74,7 +66,7 @@ def _register(arguments: Sequence[str] = ()) -> None:
     import importlib
 
     chosen = arguments[0] if arguments else ""
-    completing = _COMPLETION_VARIABLE in os.environ
+    completing = COMPLETION_VARIABLE in os.environ
     verbs = (chosen,) if chosen in VERBS and not completing else VERBS
     for verb in verbs:
         importlib.import_module(f"pkgtool.cli_{verb}").register(app)
@@ -94,7 +86,4 @@ def main() -> None:
         code = error.exit_code
     except (typer.Abort, KeyboardInterrupt):
         code = INTERRUPTED
-    if code == INTERRUPTED:
-        sys.stderr.write("Interrupted: nothing was written\n")
-    gc.freeze()  # exit frees what is left: the final collection would only walk it (~20 ms)
-    sys.exit(code if isinstance(code, int) else 0)
+    finish(code if isinstance(code, int) else 0)

@@ -1,60 +1,20 @@
-"""``pkgtool lint``: parse options, call :mod:`pkgtool.commands.lint`, render, exit.
+"""``pkgtool lint``: typer's command line (help, completion, usage errors) over
+:func:`pkgtool.cli_lint_run.lint_call`, which :mod:`pkgtool.cli_fast` also calls.
 
 Only typer and the standard library are imported here, so ``pkgtool --help`` stays fast.
 """
 
 from __future__ import annotations
 
-import os
-import sys
-from enum import Enum
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated, Optional
+from typing import Annotated, Optional
 
 import typer
 
 from pkgtool.cli import examples
-from pkgtool.cli_output import emit
-from pkgtool.commands import ExitCode
+from pkgtool.cli_lint_run import Format, lint_call
 
-if TYPE_CHECKING:
-    from pkgtool.commands.lint import LintOptions, LintResult
-
-STYLE_FAMILIES = ("STY", "CPY")
-"""What ``--style`` adds to the selection."""
 _RULES_HELP = "Rule codes, families (MAN), code prefixes or names; comma-separated or repeated."
-
-
-class Format(str, Enum):
-    """Report formats (see ``pkgtool.report``)."""
-
-    TEXT = "text"
-    JSON = "json"
-    SARIF = "sarif"
-    GITHUB = "github"
-    JUNIT = "junit"
-
-
-def _selectors(values: Optional[list[str]]) -> tuple[str, ...]:
-    return tuple(s.strip() for value in values or () for s in value.split(",") if s.strip())
-
-
-def _fail(*messages: str, code: ExitCode) -> typer.Exit:
-    _say(*messages)
-    return typer.Exit(int(code))
-
-
-def _say(*messages: str) -> None:
-    """Messages to stderr; they may quote a package's paths and text, so made safe first."""
-    from pkgtool.report.untrusted import block
-
-    for message in messages:
-        typer.echo(f"pkgtool lint: {block(message)}", err=True)
-
-
-def _colour(fmt: Format, output: Optional[Path]) -> bool:
-    return (fmt is Format.TEXT and output is None and sys.stdout.isatty()
-            and not os.environ.get("NO_COLOR"))
 
 
 def lint(
@@ -115,68 +75,9 @@ def lint(
     Exit codes: 0 clean (warnings allowed unless --strict), 1 failing findings, 2 usage or
     input error, 3 internal error.
     """
-    from pkgtool.commands import lint as command
-
-    options = command.LintOptions(_selectors(select) if select else None, _selectors(ignore),
-                                  _selectors(extend_select) + (STYLE_FAMILIES if style else ()),
-                                  strict, exit_zero, quiet, isolated, rosdistro, fix, diff,
-                                  unsafe_fixes, cache=not no_cache, cache_dir=cache_dir)
-    try:
-        if explain is not None or list_rules:
-            _show_rules(explain, fmt, output)
-        _lint(paths or [], options, fmt, output)
-    except typer.Exit:
-        raise
-    except Exception as error:  # noqa: BLE001 - a bug in pkgtool: exit 3, not a bare traceback
-        import traceback
-
-        raise _fail(f"Internal error: {type(error).__name__}: {error}. Please report this "
-                    f"pkgtool bug with the details below.\n{traceback.format_exc()}",
-                    code=ExitCode.INTERNAL) from None
-
-
-def _lint(paths: list[str], options: LintOptions, fmt: Format, output: Optional[Path]) -> None:
-    from pkgtool.commands.lint import run
-
-    result = run(paths, options=options)
-    if result.exit_code is ExitCode.USAGE:
-        raise _fail(*result.notes, *result.errors, code=result.exit_code)
-    if options.diff:
-        emit(result.diff, output, "lint")
-    else:
-        _report(result, fmt, output)
-    if result.fixed:
-        done = "would fix" if options.diff else "fixed"
-        _say(f"{done} {len(result.fixed)}:", *(f"  {title}" for title in result.fixed))
-    _say(*result.notes, *result.errors)
-    raise typer.Exit(int(result.exit_code))
-
-
-def _show_rules(explain: Optional[str], fmt: Format, output: Optional[Path]) -> None:
-    """``--explain RULE`` or ``--list-rules``: print and exit."""
-    from pkgtool.commands import lint as command
-
-    shown = (command.explain(explain) if explain is not None
-             else command.list_rules(as_json=fmt is Format.JSON))
-    if shown.errors:
-        raise _fail(*shown.errors, code=shown.exit_code)
-    emit(shown.text, output, "lint")
-    raise typer.Exit(int(shown.exit_code))
-
-
-def _report(result: LintResult, fmt: Format, output: Optional[Path]) -> None:
-    from pkgtool.report import ReportContext, render
-    from pkgtool.rules.registry import load, load_all
-
-    # SARIF describes every rule; the others only the rules that found something.
-    rules = load_all() if fmt is Format.SARIF else load(f.code for f in result.findings)
-    fixable: dict[str, bool] = {}
-    if result.findings:
-        from pkgtool.fix.registry import fixers
-
-        fixable = {code: entry.safe for code, entry in fixers().items()}
-    context = ReportContext(result.packages, rules, _colour(fmt, output), fixable)
-    emit(render(fmt.value, result.findings, context=context), output, "lint")
+    raise typer.Exit(lint_call(
+        paths, fmt, output, select, ignore, extend_select, style, strict, exit_zero, quiet,
+        isolated, rosdistro, fix, diff, unsafe_fixes, no_cache, cache_dir, explain, list_rules))
 
 
 def register(app: typer.Typer) -> None:

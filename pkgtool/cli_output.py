@@ -1,12 +1,14 @@
-"""Where a command's report goes: stdout, or an ``--output`` file checked before any work."""
+"""Where a command's report goes: stdout, or an ``--output`` file checked before any work.
+
+Free of typer, so the fast start of ``pkgtool lint`` (:mod:`pkgtool.cli_fast`) can use it: a
+write error says why on stderr and ends the process with the usage code (``SystemExit``).
+"""
 
 from __future__ import annotations
 
 import sys
 from pathlib import Path
 from typing import Optional
-
-import typer
 
 from pkgtool.commands import ExitCode
 
@@ -19,15 +21,18 @@ def emit(text: str, output: Optional[Path], verb: str) -> None:
     try:
         output.write_text(text, encoding="utf-8")
     except OSError as error:
-        typer.echo(f"pkgtool {verb}: Cannot write `{output}`: {error.strerror or error}. "
-                   "Choose another --output file.", err=True)
-        raise typer.Exit(int(ExitCode.USAGE)) from None
+        _usage_error(verb, f"Cannot write `{output}`: {error.strerror or error}. Choose another "
+                     "--output file.")
 
 
 def check_output(output: Optional[Path], verb: str) -> None:
     """Exit with the usage code before any work when ``output``'s folder does not exist."""
     folder = output.absolute().parent if output is not None else None
     if folder is not None and not folder.is_dir():
-        typer.echo(f"pkgtool {verb}: Cannot write `{output}`: the folder `{folder}` does not "
-                   "exist. Create it or choose another --output file.", err=True)
-        raise typer.Exit(int(ExitCode.USAGE))
+        _usage_error(verb, f"Cannot write `{output}`: the folder `{folder}` does not exist. "
+                     "Create it or choose another --output file.")
+
+
+def _usage_error(verb: str, message: str) -> None:
+    sys.stderr.write(f"pkgtool {verb}: {message}\n")
+    raise SystemExit(int(ExitCode.USAGE))

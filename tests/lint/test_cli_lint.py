@@ -176,14 +176,14 @@ def test_any_other_bug_exits_three_with_details(workspace: Path,
 def test_colour_only_on_a_terminal_without_no_color(monkeypatch: pytest.MonkeyPatch, tty: bool,
                                                     no_color: str | None, fmt: str,
                                                     output: Path | None, coloured: bool) -> None:
-    from pkgtool import cli_lint
+    from pkgtool import cli_lint_run
 
     monkeypatch.setattr(sys.stdout, "isatty", lambda: tty)
     if no_color is None:
         monkeypatch.delenv("NO_COLOR", raising=False)
     else:
         monkeypatch.setenv("NO_COLOR", no_color)
-    assert cli_lint._colour(cli_lint.Format(fmt), output) is coloured
+    assert cli_lint_run._colour(cli_lint_run.Format(fmt), output) is coloured
 
 
 def test_large_workspaces_are_checked_in_parallel_with_the_same_report(tmp_path: Path) -> None:

@@ -1,0 +1,126 @@
+"""The body of ``pkgtool lint``, free of typer: options in, report out, exit code back.
+
+Both ways into ``lint`` call :func:`lint_call` with the same keyword arguments: typer's command
+(:mod:`pkgtool.cli_lint`, which gives ``--help``, completion and usage errors) and the fast start
+(:mod:`pkgtool.cli_fast`, which parses the common command lines without loading typer).
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from enum import Enum
+from pathlib import Path
+from typing import TYPE_CHECKING, Optional
+
+from pkgtool.cli_output import emit
+from pkgtool.commands import ExitCode
+
+if TYPE_CHECKING:
+    from pkgtool.commands.lint import LintOptions, LintResult
+
+STYLE_FAMILIES = ("STY", "CPY")
+"""What ``--style`` adds to the selection."""
+
+
+class Format(str, Enum):
+    """Report formats (see ``pkgtool.report``)."""
+
+    TEXT = "text"
+    JSON = "json"
+    SARIF = "sarif"
+    GITHUB = "github"
+    JUNIT = "junit"
+
+
+def lint_call(paths: Optional[list[str]] = None, fmt: Format = Format.TEXT,
+              output: Optional[Path] = None, select: Optional[list[str]] = None,
+              ignore: Optional[list[str]] = None, extend_select: Optional[list[str]] = None,
+              style: bool = False, strict: Optional[bool] = None, exit_zero: bool = False,
+              quiet: bool = False, isolated: bool = False, rosdistro: Optional[str] = None,
+              fix: bool = False, diff: bool = False, unsafe_fixes: bool = False,
+              no_cache: bool = False, cache_dir: Optional[str] = None,
+              explain: Optional[str] = None, list_rules: bool = False) -> int:
+    """Run ``pkgtool lint`` with the parsed command line; returns the exit code.
+
+    A bug in pkgtool is reported with its traceback and exit code 3, not a bare traceback.
+    """
+    from pkgtool.commands import lint as command
+
+    options = command.LintOptions(_selectors(select) if select else None, _selectors(ignore),
+                                  _selectors(extend_select) + (STYLE_FAMILIES if style else ()),
+                                  strict, exit_zero, quiet, isolated, rosdistro, fix, diff,
+                                  unsafe_fixes, cache=not no_cache, cache_dir=cache_dir)
+    try:
+        if explain is not None or list_rules:
+            return _show_rules(explain, fmt, output)
+        return _lint(paths or [], options, fmt, output)
+    except Exception as error:  # noqa: BLE001 - a bug in pkgtool: exit 3, not a bare traceback
+        import traceback
+
+        say(f"Internal error: {type(error).__name__}: {error}. Please report this pkgtool bug "
+            f"with the details below.\n{traceback.format_exc()}")
+        return int(ExitCode.INTERNAL)
+
+
+def say(*messages: str) -> None:
+    """Messages to stderr; they may quote a package's paths and text, so made safe first."""
+    from pkgtool.report.untrusted import block
+
+    for message in messages:
+        sys.stderr.write(f"pkgtool lint: {block(message)}\n")
+
+
+def _selectors(values: Optional[list[str]]) -> tuple[str, ...]:
+    return tuple(s.strip() for value in values or () for s in value.split(",") if s.strip())
+
+
+def _colour(fmt: Format, output: Optional[Path]) -> bool:
+    return (fmt is Format.TEXT and output is None and sys.stdout.isatty()
+            and not os.environ.get("NO_COLOR"))
+
+
+def _lint(paths: list[str], options: LintOptions, fmt: Format, output: Optional[Path]) -> int:
+    from pkgtool.commands.lint import run
+
+    result = run(paths, options=options)
+    if result.exit_code is ExitCode.USAGE:
+        say(*result.notes, *result.errors)
+        return int(result.exit_code)
+    if options.diff:
+        emit(result.diff, output, "lint")
+    else:
+        _report(result, fmt, output)
+    if result.fixed:
+        done = "would fix" if options.diff else "fixed"
+        say(f"{done} {len(result.fixed)}:", *(f"  {title}" for title in result.fixed))
+    say(*result.notes, *result.errors)
+    return int(result.exit_code)
+
+
+def _show_rules(explain: Optional[str], fmt: Format, output: Optional[Path]) -> int:
+    """``--explain RULE`` or ``--list-rules``: print, and return the exit code."""
+    from pkgtool.commands import lint as command
+
+    shown = (command.explain(explain) if explain is not None
+             else command.list_rules(as_json=fmt is Format.JSON))
+    if shown.errors:
+        say(*shown.errors)
+    else:
+        emit(shown.text, output, "lint")
+    return int(shown.exit_code)
+
+
+def _report(result: LintResult, fmt: Format, output: Optional[Path]) -> None:
+    from pkgtool.report import ReportContext, render
+    from pkgtool.rules.registry import load, load_all
+
+    # SARIF describes every rule; the others only the rules that found something.
+    rules = load_all() if fmt is Format.SARIF else load(f.code for f in result.findings)
+    fixable: dict[str, bool] = {}
+    if result.findings:
+        from pkgtool.fix.registry import fixers
+
+        fixable = {code: entry.safe for code, entry in fixers().items()}
+    context = ReportContext(result.packages, rules, _colour(fmt, output), fixable)
+    emit(render(fmt.value, result.findings, context=context), output, "lint")
