@@ -45,13 +45,15 @@ def launch_function_returns_nothing(package: Package) -> Iterator[Hit]:
     ## Example
     ```python
     def generate_launch_description():
-        LaunchDescription([Node(package='my_pkg', executable='talker')])
+        talker = Node(package='my_pkg', executable='talker')
+        LaunchDescription([talker])
     ```
 
     ## Use instead
     ```python
     def generate_launch_description():
-        return LaunchDescription([Node(package='my_pkg', executable='talker')])
+        talker = Node(package='my_pkg', executable='talker')
+        return LaunchDescription([talker])
     ```
     """
     for launch in package.launch_files:
