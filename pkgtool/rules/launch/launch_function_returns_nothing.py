@@ -9,10 +9,9 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
+from pkgtool.rules.launch._python_launch import FUNCTION, python_launch_files
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import returns_none
-
-FUNCTION = "generate_launch_description"
 
 
 def _launch_function(tree: ast.AST) -> ast.FunctionDef | None:
@@ -56,13 +55,9 @@ def launch_function_returns_nothing(package: Package) -> Iterator[Hit]:
         return LaunchDescription([talker])
     ```
     """
-    for launch in package.launch_files:
-        module = launch.python
-        text = package.texts.get(launch.path)
-        if module is None or module.syntax_error or text is None or module.is_test:
-            continue
-        function = _launch_function(parse_tree(launch.path, text))
+    for path, _module, text in python_launch_files(package):
+        function = _launch_function(parse_tree(path, text))
         if function is not None and returns_none(function):
-            yield Hit(Span(launch.path, function.lineno, function.col_offset + 1),
+            yield Hit(Span(path, function.lineno, function.col_offset + 1),
                       f"`{FUNCTION}()` returns nothing: `ros2 launch` gets None and starts "
                       "nothing")

@@ -10,9 +10,8 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
+from pkgtool.rules.launch._python_launch import FUNCTION, python_launch_files
 from pkgtool.rules.registry import rule
-
-FUNCTION = "generate_launch_description"
 
 
 def _near_miss(path: str, text: str) -> Span:
@@ -52,14 +51,10 @@ def missing_launch_function(package: Package) -> Iterator[Hit]:
         return LaunchDescription([Node(package='my_pkg', executable='talker')])
     ```
     """
-    for launch in package.launch_files:
-        module = launch.python
-        text = package.texts.get(launch.path)
-        if module is None or module.syntax_error or text is None or module.is_test:
-            continue
+    for path, module, text in python_launch_files(package):
         names = module.top_level_names
         if FUNCTION in names or "generate_test_description" in names or \
                 any("*" in i.names for i in module.imports):
             continue
-        yield Hit(_near_miss(launch.path, text),
-                  f"`{launch.path}` defines no `{FUNCTION}()`: `ros2 launch` cannot run it")
+        yield Hit(_near_miss(path, text),
+                  f"`{path}` defines no `{FUNCTION}()`: `ros2 launch` cannot run it")
