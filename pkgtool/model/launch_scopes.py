@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import ast
 
+from pkgtool.model.ast_nodes import nodes_of
+
 
 def bindings(body: list[ast.stmt], params: ast.arguments | None) -> dict[str, ast.expr | None]:
     """Names bound in one scope: the single assigned expression, or None when ambiguous."""
@@ -52,7 +54,7 @@ def scope_nodes(body: list[ast.stmt]) -> list[ast.AST]:
 def import_origins(tree: ast.Module) -> dict[str, set[str]]:
     """Each name any import of the file binds, with the dotted names it was imported as."""
     origins: dict[str, set[str]] = {}
-    for node in ast.walk(tree):
+    for node in nodes_of(tree):
         if isinstance(node, ast.Import):
             for alias in node.names:
                 local = alias.asname or alias.name.split(".")[0]
