@@ -44,7 +44,10 @@ class NodeRef:
     marks ``parameters`` holding something besides dicts and static share files (a launch
     argument): any file may reach the node through it. ``parameters_not_list`` is where a Python
     ``parameters=`` gives a value that is certainly no list (a path, a string, a tuple, a
-    dict), None otherwise.
+    dict), None otherwise. ``unused`` marks a Python action that is never started: its call
+    (or one it is part of) is the whole value of an assignment to a local name its function
+    never reads (``rviz = Node(...)`` left out of the LaunchDescription). The call itself
+    still runs when the file does.
     """
 
     package: str | None
@@ -62,18 +65,22 @@ class NodeRef:
     name_unknown: bool = False
     other_parameters: bool = False
     parameters_not_list: Span | None = None
+    unused: bool = False
 
 
 @dataclass(frozen=True, slots=True)
 class PackageRef:
     """A package named by get_package_share_directory, FindPackageShare or $(find-pkg-share).
 
-    ``optional`` as for :class:`NodeRef`.
+    ``optional`` as for :class:`NodeRef`; ``unused`` marks a substitution
+    (``FindPackageShare``) inside an action that is never started (:class:`NodeRef`): it is
+    never performed.
     """
 
     package: str
     span: Span
     optional: bool = False
+    unused: bool = False
 
 
 @dataclass(frozen=True, slots=True)

@@ -12,13 +12,15 @@ import ast
 from dataclasses import dataclass
 
 from pkgtool.model.launch import FileRef, NodeRef, PackageRef
-from pkgtool.model.launch_scopes import bindings, import_origins
+from pkgtool.model.launch_scopes import bindings, import_origins, unread_calls
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import depends_on_ros_distro
 
 SHARE_LOOKUPS = frozenset({"get_package_share_directory", "get_package_share_path",
                            "FindPackageShare"})
 PREFIX_LOOKUPS = frozenset({"get_package_prefix", "FindPackagePrefix", "FindPackage"})
+SUBSTITUTIONS = frozenset({"FindPackageShare", "FindPackagePrefix", "FindPackage"})
+"""Lookups made only when the action holding them runs (the others run when the file does)."""
 NODE_ACTIONS = frozenset({"Node", "LifecycleNode", "ComposableNodeContainer"})
 PLUGIN_ACTIONS = frozenset({"ComposableNode"})
 JOINS = frozenset({"join", "PathJoinSubstitution", "joinpath"})
@@ -75,6 +77,8 @@ class _Reader(ast.NodeVisitor):
         self.origins = import_origins(tree)
         self.optional = 0  # > 0 inside a block that runs only if some package is installed
         self.distro_branches = 0  # > 0 inside a branch of a test on the ROS distribution
+        self.unread: set[ast.Call] = set()  # calls assigned to local names never read
+        self.dead = 0  # > 0 inside a node action that is never started
 
     def _span(self, node: ast.AST) -> Span:
         return Span(self.path, getattr(node, "lineno", 1), getattr(node, "col_offset", 0) + 1)
@@ -86,6 +90,7 @@ class _Reader(ast.NodeVisitor):
                 self.visit(default)
         self.scopes.append(bindings(node.body, node.args))
         self.cache.append({})
+        self.unread.update(unread_calls(node))
         for statement in node.body:
             self.visit(statement)
         self.scopes.pop()
@@ -198,6 +203,19 @@ class _Reader(ast.NodeVisitor):
 
     # recording --------------------------------------------------------------------------
     def visit_Call(self, node: ast.Call) -> None:
+        dead = self._never_started(node)
+        self.dead += dead
+        self._record_call(node)
+        self.generic_visit(node)
+        self.dead -= dead
+
+    def _never_started(self, node: ast.Call) -> bool:
+        """A node action (or ``ExecuteProcess``) assigned to a local name never read; any
+        other call so assigned may have effects (``unused = ld.add_action(Node(...))``)."""
+        return node in self.unread and (self._action(node.func) in NODE_ACTIONS | PLUGIN_ACTIONS
+                                        or _name(node.func) == "ExecuteProcess")
+
+    def _record_call(self, node: ast.Call) -> None:
         name, action = _name(node.func), self._action(node.func)
         if action in NODE_ACTIONS or action in PLUGIN_ACTIONS:
             package_node = _keyword(node, "package")
@@ -222,16 +240,16 @@ class _Reader(ast.NodeVisitor):
                 name_unknown=unknown or "**" in arguments or "*" in arguments,
                 other_parameters=other or "**" in arguments,
                 parameters_not_list=self._span(parameters) if self._not_a_list(parameters)
-                else None))
+                else None, unused=bool(self.dead)))
         elif name == "ExecuteProcess":
             self._ros2_run(node)
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
             found = self.value(node)
             if isinstance(found, Share):
                 self.packages.append(PackageRef(found.package, self._span(node),
-                                                bool(self.optional)))
+                                                bool(self.optional),
+                                                bool(self.dead) and name in SUBSTITUTIONS))
         self._record_path(node)
-        self.generic_visit(node)
 
     def _parameter_files(self, node: ast.expr | None) -> tuple[tuple[FileRef, ...], bool]:
         """The share files among a node's ``parameters=[...]``, and whether anything else
@@ -296,7 +314,7 @@ class _Reader(ast.NodeVisitor):
                 and all(isinstance(c, str) for c in command[2:4])):
             self.nodes.append(NodeRef(command[2], command[3], self._span(node),
                                       optional=bool(self.optional), name_unknown=True,
-                                      other_parameters=True))
+                                      other_parameters=True, unused=bool(self.dead)))
 
     def visit_BinOp(self, node: ast.BinOp) -> None:
         self._record_path(node)

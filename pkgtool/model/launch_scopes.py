@@ -51,6 +51,30 @@ def scope_nodes(body: list[ast.stmt]) -> list[ast.AST]:
     return result
 
 
+SCOPE_READERS = frozenset({"locals", "vars", "eval", "exec"})
+"""Calls that may read any local name of the function making them."""
+
+
+def unread_calls(function: ast.FunctionDef | ast.AsyncFunctionDef) -> set[ast.Call]:
+    """Calls that are the whole value of an assignment to a local name ``function`` never
+    reads: no load of the name anywhere in it (nested functions included), no ``del``, no
+    ``global`` or ``nonlocal`` declaration, no ``locals()``, ``vars()``, ``eval`` or ``exec``
+    in it, and no ``:=`` inside the call (the value it names may be read)."""
+    read: set[str] = set()
+    for node in ast.walk(function):
+        if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Store):
+            read.add(node.id)
+        elif isinstance(node, (ast.Global, ast.Nonlocal)):
+            read.update(node.names)
+        elif isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and \
+                node.func.id in SCOPE_READERS:
+            return set()
+    return {node.value for node in scope_nodes(function.body)
+            if simple_assignment(node) and isinstance(node.value, ast.Call)
+            and node.targets[0].id not in read  # type: ignore[attr-defined]
+            and not any(isinstance(n, ast.NamedExpr) for n in ast.walk(node.value))}
+
+
 def import_origins(tree: ast.Module) -> dict[str, set[str]]:
     """Each name any import of the file binds, with the dotted names it was imported as."""
     origins: dict[str, set[str]] = {}

@@ -180,6 +180,51 @@ def test_python_execute_process_ros2_run() -> None:
     assert _nodes(launch) == [("turtlesim", "turtlesim_node", 1)]
 
 
+def _unused(launch: LaunchFile) -> list[tuple[str | None, bool]]:
+    return [(n.package, n.unused) for n in launch.nodes]
+
+
+def test_python_node_assigned_to_a_name_never_read_is_unused() -> None:
+    launch = _py("""
+        def generate_launch_description():
+            rviz = Node(package='rviz2', executable='rviz2',
+                        arguments=[FindPackageShare('viewer'), get_package_share_directory('b')])
+            container = ComposableNodeContainer(package='rclcpp_components', executable='c',
+                composable_node_descriptions=[ComposableNode(package='image_proc', plugin='P')])
+            ros2 = ExecuteProcess(cmd=['ros2', 'run', 'turtlesim', 'turtlesim_node'])
+            talker = Node(package='demo', executable='talker')
+            return LaunchDescription([talker])
+        """)
+    assert _unused(launch) == [("rviz2", True), ("rclcpp_components", True),
+                               ("image_proc", True), ("turtlesim", True), ("demo", False)]
+    assert [(p.package, p.unused) for p in launch.packages] == [("viewer", True), ("b", False)]
+
+
+@pytest.mark.parametrize("use", [
+    "ld.add_action(node)", "return [node]", "return LaunchDescription([node])",
+    "def later(context):\n    return [node]", "global node", "del node", "print(locals())",
+    "other = node", "node.name"])
+def test_python_node_read_in_any_way_is_used(use: str) -> None:
+    body = textwrap.indent(use, "    ")
+    launch = _py(f"def generate_launch_description():\n"
+                 f"    node = Node(package='rviz2', executable='rviz2')\n{body}\n")
+    assert _unused(launch) == [("rviz2", False)]
+
+
+@pytest.mark.parametrize("text", [
+    "node = Node(package='rviz2', executable='rviz2')\n",
+    "def f():\n    a = b = Node(package='rviz2', executable='rviz2')\n",
+    "def f():\n    node: Node = Node(package='rviz2', executable='rviz2')\n",
+    "def f():\n    node = [Node(package='rviz2', executable='rviz2')]\n",
+    "def f():\n    done = ld.add_action(Node(package='rviz2', executable='rviz2'))\n",
+    "def f():\n    node = Node(package='rviz2', arguments=[(p := 'x')])\n    return p\n",
+    "def f():\n    node = Node(package='rviz2', executable='rviz2')\n"
+    "    def g():\n        nonlocal node\n",
+    "class A:\n    node = Node(package='rviz2', executable='rviz2')\n"])
+def test_python_node_outside_a_plain_local_assignment_is_used(text: str) -> None:
+    assert _unused(_py(text)) == [("rviz2", False)]
+
+
 def test_python_launch_file_keeps_its_imports() -> None:
     launch = _py("""
         from launch import LaunchDescription

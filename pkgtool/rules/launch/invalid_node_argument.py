@@ -65,7 +65,8 @@ def invalid_launch_node_argument(package: Package) -> Iterator[Hit]:
     `**kwargs` are not checked, nor the removed keywords of calls in either branch of a test
     on the ROS distribution (`if os.environ['ROS_DISTRO'] <= 'eloquent':`, also through a
     variable assigned from `os.environ.get('ROS_DISTRO')` or `os.getenv('ROS_DISTRO')`): that
-    code is written for older distributions on purpose.
+    code is written for older distributions on purpose. Nodes that are never started (left
+    out of the LaunchDescription) are checked too: the call that makes them raises.
 
     ## Why is this bad?
     `ros2 launch` stops before starting anything: Python raises `TypeError: unexpected keyword

@@ -24,7 +24,11 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
     metapackages nest, but a regular package's own dependencies never count).
     Packages used only after the launch file checked that they are installed (`if 'nav2_bringup'
     in get_packages_with_prefixes():`, or in a `try` that catches `PackageNotFoundError`) are
-    optional and left alone.
+    optional and left alone, and so is a node that is never started: one assigned to a local
+    name its function never reads (`rviz = Node(package='rviz2', ...)` left out of the
+    LaunchDescription), with the `FindPackageShare` substitutions inside it, which only a
+    started action performs. `get_package_share_directory` runs when the file does and is
+    always checked.
 
     ## Why is this bad?
     `ros2 launch` fails with "package not found" on machines set up with rosdep, because
@@ -46,8 +50,8 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
         available = launch_keys(package, launch.path)
         seen: set[str] = set()
         used = [(n.package, n.package_span or n.span) for n in launch.nodes
-                if n.package and not n.optional] + [
-            (p.package, p.span) for p in launch.packages if not p.optional]
+                if n.package and not n.optional and not n.unused] + [
+            (p.package, p.span) for p in launch.packages if not p.optional and not p.unused]
         for name, span in sorted(used, key=lambda u: (u[1].line, u[1].col)):
             if name == package.name or name in available or name in seen:
                 continue

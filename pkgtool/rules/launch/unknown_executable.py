@@ -54,7 +54,10 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
     For every `Node(package=..., executable=...)` (or `<node pkg= exec=>`) naming this
     package, checks that the executable is a console script of setup.py or setup.cfg, or a
     file data_files installs into `lib/<package>`. Executables given by launch arguments or
-    other substitutions are not checked.
+    other substitutions are not checked, nor nodes that are never started (assigned to a
+    local name the function never reads): the executable is looked up only when a node
+    starts, so such a node cannot fail. LCH005 still checks their arguments, which the
+    `Node()` call itself rejects.
 
     ## Why is this bad?
     `ros2 launch` looks the executable up in `lib/<package>` only when the launch file runs
@@ -75,7 +78,7 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
         return
     for launch in package.launch_files:
         for node in launch.nodes:
-            if node.package != package.name or node.executable is None:
+            if node.package != package.name or node.executable is None or node.unused:
                 continue
             if node.executable not in known:
                 choices = ", ".join(f"`{n}`" for n in sorted(known)) or "none"
