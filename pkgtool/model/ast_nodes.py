@@ -2,7 +2,8 @@
 
 ``ast.walk`` costs a generator per node; the model and several rules each used to walk the
 same tree again. :func:`nodes_of` walks it once (breadth first, the order of ``ast.walk``)
-and keeps the list for the trees in use (``parse_tree`` returns one tree per file and text).
+and keeps the list for the trees in use (``parse_tree`` returns one tree per file and text);
+:func:`nodes_of_class` gives the nodes of a few classes without looking at the others.
 """
 
 from __future__ import annotations
@@ -18,11 +19,12 @@ _TREES = 64
 
 @dataclass(frozen=True, slots=True)
 class Walk:
-    """Every node of a tree breadth first (the order of ``ast.walk``), and each node's parent
-    by ``id(node)``."""
+    """Every node of a tree breadth first (the order of ``ast.walk``), each node's parent by
+    ``id(node)``, and the nodes of each class (in walk order)."""
 
     nodes: tuple[ast.AST, ...]
     parents: dict[int, ast.AST]
+    by_class: dict[type, list[ast.AST]]
 
 
 @per_object(_TREES)
@@ -34,8 +36,14 @@ def walk_once(tree: ast.AST) -> Walk:
     """
     found: list[ast.AST] = [tree]
     parents: dict[int, ast.AST] = {}
+    by_class: dict[type, list[ast.AST]] = {}
     append = found.append
     for node in found:  # the list grows while it is read: breadth first
+        kind = type(node)
+        if kind in by_class:
+            by_class[kind].append(node)
+        else:
+            by_class[kind] = [node]
         for name in node._fields:
             value = getattr(node, name, None)
             if type(value) is list:
@@ -46,9 +54,16 @@ def walk_once(tree: ast.AST) -> Walk:
             elif isinstance(value, ast.AST):
                 parents[id(value)] = node
                 append(value)
-    return Walk(tuple(found), parents)
+    return Walk(tuple(found), parents, by_class)
 
 
 def nodes_of(tree: ast.AST) -> tuple[ast.AST, ...]:
     """``tuple(ast.walk(tree))``, computed once per tree object."""
     return walk_once(tree).nodes
+
+
+def nodes_of_class(tree: ast.AST, *classes: type[ast.AST]) -> list[ast.AST]:
+    """The nodes of ``tree`` that are instances of exactly these node classes (concrete ones:
+    ``ast.Call``, not ``ast.expr``), grouped by class, each group in walk order."""
+    by_class = walk_once(tree).by_class
+    return [node for kind in classes for node in by_class.get(kind, ())]

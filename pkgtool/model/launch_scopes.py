@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import ast
 
-from pkgtool.model.ast_nodes import nodes_of
+from pkgtool.model.ast_nodes import nodes_of_class
 
 
 def bindings(body: list[ast.stmt], params: ast.arguments | None) -> dict[str, ast.expr | None]:
@@ -78,7 +78,7 @@ def unread_calls(function: ast.FunctionDef | ast.AsyncFunctionDef) -> set[ast.Ca
 def import_origins(tree: ast.Module) -> dict[str, set[str]]:
     """Each name any import of the file binds, with the dotted names it was imported as."""
     origins: dict[str, set[str]] = {}
-    for node in nodes_of(tree):
+    for node in nodes_of_class(tree, ast.Import, ast.ImportFrom):
         if isinstance(node, ast.Import):
             for alias in node.names:
                 local = alias.asname or alias.name.split(".")[0]

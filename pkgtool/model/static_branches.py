@@ -17,7 +17,7 @@ import operator
 from collections import Counter
 from collections.abc import Callable
 
-from pkgtool.model.ast_nodes import nodes_of
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.memo import per_object
 
 _COMPARE = {ast.Lt: operator.lt, ast.LtE: operator.le, ast.Gt: operator.gt,
@@ -33,11 +33,10 @@ def module_constants(tree: ast.Module) -> dict[str, bool]:
 
     Computed once per tree; callers must not change the returned dict.
     """
-    nodes = nodes_of(tree)
-    stores = Counter(n.id for n in nodes
-                     if isinstance(n, ast.Name) and not isinstance(n.ctx, ast.Load))
-    stores.update(name for n in nodes if isinstance(n, (ast.Global, ast.Nonlocal))
-                  for name in n.names)
+    stores = Counter(n.id for n in nodes_of_class(tree, ast.Name)
+                     if not isinstance(n.ctx, ast.Load))  # type: ignore[attr-defined]
+    stores.update(name for n in nodes_of_class(tree, ast.Global, ast.Nonlocal)
+                  for name in n.names)  # type: ignore[attr-defined]
     found: dict[str, bool] = {}
     for node in tree.body:
         if (isinstance(node, ast.Assign) and len(node.targets) == 1
@@ -127,7 +126,7 @@ def dead_lines(tree: ast.Module) -> list[tuple[int, int]]:
     """Line ranges (first, last) of ``if`` branches that never run on Python 3."""
     constants = module_constants(tree)
     ranges: list[tuple[int, int]] = []
-    for node in nodes_of(tree):
+    for node in nodes_of_class(tree, ast.If):
         if isinstance(node, ast.If):
             value = truth(node.test, constants)
             branch = node.body if value is False else node.orelse if value is True else []

@@ -15,7 +15,7 @@ from difflib import get_close_matches
 from collections.abc import Iterator
 from dataclasses import dataclass
 
-from pkgtool.model.ast_nodes import nodes_of
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.installed import installed_data
 from pkgtool.model.launch import NodeRef
 from pkgtool.model.memo import per_package
@@ -201,7 +201,7 @@ def _within(index: Index, node: ast.AST, cls: ast.ClassDef) -> bool:
 
 
 def _module_skip(tree: ast.Module) -> str | None:
-    for node in nodes_of(tree):
+    for node in nodes_of_class(tree, ast.keyword):
         if isinstance(node, ast.keyword) and node.arg in PERMISSIVE:
             return f"it uses `{node.arg}`"
     return None

@@ -21,7 +21,7 @@ from collections.abc import Callable
 from functools import cache
 from typing import Any
 
-from pkgtool.model.ast_nodes import nodes_of
+from pkgtool.model.ast_nodes import nodes_of_class
 
 _KNOWN = frozenset(dir(builtins)) | {"__file__", "__builtins__", "__annotations__",
                                      "WindowsError"}
@@ -202,7 +202,8 @@ def _strings_read_as_annotations(tree: ast.Module) -> bool:
     names: set[str] = set()
     modules: set[str] = set()
     places: list[ast.AST] = []
-    for node in nodes_of(tree):
+    for node in nodes_of_class(tree, ast.Import, ast.ImportFrom, ast.arg, ast.FunctionDef,
+                               ast.AsyncFunctionDef, ast.AnnAssign, ast.Subscript, ast.Call):
         if isinstance(node, ast.Import):
             modules.update(a.asname or a.name for a in node.names if a.name in _TYPING)
         elif isinstance(node, ast.ImportFrom) and node.module in _TYPING:

@@ -6,7 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import nodes_of
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
@@ -31,7 +31,7 @@ def _loggers(tree: ast.Module, index: Index) -> set[str]:
     """Names and ``self.x`` attributes that every binding in the module (assignments, imports,
     parameters) binds to a logger."""
     assigned: dict[str, list[ast.AST]] = {name: [tree] for name in index.aliases}
-    for node in nodes_of(tree):
+    for node in nodes_of_class(tree, ast.arg, ast.Assign, ast.AnnAssign, ast.AugAssign, ast.For):
         if isinstance(node, ast.arg):  # a parameter may be any logger
             assigned.setdefault(node.arg, []).append(node)
         targets = node.targets if isinstance(node, ast.Assign) else \

@@ -8,7 +8,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import any_stdlib_module
-from pkgtool.model.ast_nodes import nodes_of
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.imports import entry_points_installed
@@ -24,7 +24,7 @@ _DYNAMIC = frozenset({"exec", "eval", "__import__", "importlib", "runpy"})
 
 def _initialises(tree: ast.Module, index: Index) -> bool:
     """True when the module may call ``rclpy.init``: any ``.init`` read, any name for it."""
-    return any(isinstance(n, ast.Attribute) and n.attr == "init" for n in nodes_of(tree)) or \
+    return any(n.attr == "init" for n in nodes_of_class(tree, ast.Attribute)) or \
         any(target in _INITS for target in index.aliases.values()) or \
         any(i.module and i.module.split(".")[0] == "rclpy" and
             any(a.name == "init" for a in i.names) for i in index.import_froms)
