@@ -17,8 +17,8 @@ from functools import cache
 from pkgtool.knowledge.tables import DEFAULT_DISTRO, FLAGS, read
 
 __all__ = ["COMPANIONS", "KINDS", "close_interfaces", "companion_of", "interface_kind",
-           "interfaces_of", "is_known_package", "kind_in", "mismatch", "parse_type",
-           "type_problem"]
+           "interfaces_of", "is_known_package", "kind_in", "meant_kind", "mismatch",
+           "parse_type", "type_problem"]
 
 KINDS = ("msg", "srv", "action")
 Interfaces = Mapping[str, frozenset[str]]
@@ -116,6 +116,16 @@ def parse_type(text: str) -> tuple[str, str | None, str] | None:
 
 
 WORDS = {"msg": "message", "srv": "service", "action": "action"}
+_MEANT = {"msg": "msg", "message": "msg", "srv": "srv", "service": "srv", "action": "action"}
+
+
+def meant_kind(word: str) -> str | None:
+    """The kind a misspelled interface module name means (``msgs``, ``Msg``, ``messages``,
+    ``srvs``, ``services``, ``actions``: ``msg``, ``srv``, ``action``); None for a kind
+    itself and for any other word."""
+    lower = word.lower()
+    kind = _MEANT.get(lower[:-1] if lower.endswith("s") else lower)
+    return kind if word not in KINDS else None
 
 
 @dataclass(frozen=True, slots=True)

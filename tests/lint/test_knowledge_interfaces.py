@@ -81,3 +81,12 @@ def test_the_table_speaks_for_jazzy_only() -> None:
     assert interfaces.interface_kind("std_msgs", "String", "jazzy") == "msg"
     assert not interfaces.is_known_package("std_msgs", "rolling")
     assert interfaces.type_problem("std_msgs", "msg", "NoSuch", distro="humble") is None
+
+
+@pytest.mark.parametrize(("word", "kind"), [
+    ("msgs", "msg"), ("Msg", "msg"), ("messages", "msg"), ("srvs", "srv"), ("Service", "srv"),
+    ("actions", "action"), ("msg", None), ("srv", None), ("action", None), ("utils", None),
+    ("ms", None),
+])
+def test_meant_kind(word: str, kind: str | None) -> None:
+    assert interfaces.meant_kind(word) == kind

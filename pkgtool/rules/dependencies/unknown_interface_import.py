@@ -5,7 +5,9 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.interfaces import KINDS, WORDS, Mismatch, mismatch
+from pkgtool.knowledge.interfaces import KINDS, WORDS, Mismatch, kind_in, meant_kind, mismatch
+from pkgtool.knowledge.ros_names import ROS_SUFFIXES
+from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import all_python
 from pkgtool.rules.dependencies.interface_types import interfaces_for
@@ -15,7 +17,7 @@ from pkgtool.rules.registry import rule
 @rule("DEP008", "unknown-interface-import", Severity.ERROR,
       fix="Import an interface the package defines, from the module of its kind")
 def unknown_interface_import(package: Package) -> Iterator[Hit]:
-    """``from pkg.msg import Name`` names no message of ``pkg`` (or a service or action).
+    """``from pkg.msg import Name`` names no message of ``pkg``, or ``pkg.msgs`` no module.
 
     ## What it does
     Checks the names of unguarded `from <pkg>.msg|srv|action import ...` imports in every
@@ -34,26 +36,40 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
     (catkin) package is checked against its own interfaces only, where an action `A` is the
     messages `AAction`, `AGoal`, `AResult`, ... of `pkg.msg`.
 
+    Also reports a misspelled module of an interface package (`std_msgs.msgs`,
+    `geometry_msgs.message`, `example_interfaces.srvs`, `from std_msgs import Msg`): the
+    Python module of a ROS 2 interface package holds only `msg`, `srv` and `action`. An
+    interface package is one whose interfaces are known as above, or one named like an
+    interface package (`*_msgs`, `*_srvs`, `*_interfaces`); a workspace package that has a
+    Python package of its own, and the linted package's own modules (`pkg/messages.py`), may
+    define any submodule and are not reported.
+
     ## Why is this bad?
-    The node dies at start-up with `ImportError: cannot import name ...`; a service imported
-    from `.msg` fails the same way, and only on the robot.
+    The node dies at start-up with `ImportError: cannot import name ...` (or
+    `ModuleNotFoundError: No module named 'std_msgs.msgs'`); a service imported from `.msg`
+    fails the same way, and only on the robot.
 
     ## Example
     ```python
     from std_msgs.msg import Strin
     from std_srvs.msg import Trigger
+    from example_interfaces.srvs import AddTwoInts
     ```
 
     ## Use instead
     ```python
     from std_msgs.msg import String
     from std_srvs.srv import Trigger
+    from example_interfaces.srv import AddTwoInts
     ```
     """
     for module in all_python(package):
         for imported in module.imports:
             parts = imported.module.split(".")
-            if imported.level or imported.guarded or len(parts) != 2 or parts[1] not in KINDS:
+            if imported.level or imported.guarded:
+                continue
+            yield from _misspelled_module(package, imported)
+            if len(parts) != 2 or parts[1] not in KINDS:
                 continue
             known = interfaces_for(package, parts[0])
             if known is None:
@@ -63,6 +79,45 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
                     parts[0], parts[1], name, known, package.context.distro)
                 if found:
                     yield Hit(imported.span, _message(found), _fix(found))
+
+
+def _misspelled_module(package: Package, imported: Import) -> Iterator[Hit]:
+    """``pkg.msgs`` imported (``import pkg.msgs``, ``from pkg.msgs import X``, ``from pkg
+    import msgs``) where ``pkg`` is an interface package: the module meant, as a hit."""
+    name, _, rest = imported.module.partition(".")
+    words = [rest.split(".")[0]] if rest else list(imported.names)
+    for word in words:
+        kind = meant_kind(word)
+        if kind is None or not _interface_package(package, name, word):
+            continue
+        known = interfaces_for(package, name) or {}
+        kind = next(filter(None, (kind_in(known, n) for n in imported.names)), kind)
+        right = f"{name}.{kind}"
+        written = f"{name}.{word}"
+        if not rest:
+            fix = f"Write `from {name} import {kind}`"
+        elif imported.names:
+            fix = f"Write `from {right}{imported.module[len(written):]} import " \
+                f"{', '.join(imported.names)}`"
+        else:
+            fix = f"Write `import {right}{imported.module[len(written):]}`"
+        yield Hit(imported.span, f"`{written}` does not exist: the {WORDS[kind]}s of `{name}` "
+                  f"are in `{right}`", fix)
+
+
+def _interface_package(package: Package, name: str, word: str) -> bool:
+    """True when the Python module of the package ``name`` certainly has no submodule
+    ``word``: an interface package (interfaces known, or named like one) without Python code
+    of its own that could define it."""
+    if name == package.name:
+        if any(f"/{path}".endswith((f"/{name}/{word}.py", f"/{name}/{word}/__init__.py"))
+               for path in package.files):
+            return False
+    else:
+        neighbour = package.context.workspace.get(name)
+        if neighbour is not None:
+            return bool(neighbour.interfaces) and name not in neighbour.modules
+    return interfaces_for(package, name) is not None or name.endswith(ROS_SUFFIXES)
 
 
 def _message(found: Mismatch) -> str:

@@ -138,3 +138,13 @@ def sensor_msgs_dependency_dropped(root: Path) -> None:
 @case("DEP002", "base_pkg/srv.py", "from std_srvs.srv import")
 def service_package_only_buildtool_depend(root: Path) -> None:
     edit(root, XML, "<depend>std_srvs</depend>", "<buildtool_depend>std_srvs</buildtool_depend>")
+
+
+@case("DEP008", TALKER, "from std_msgs.msgs import String")
+def message_module_plural(root: Path) -> None:
+    edit(root, TALKER, "from std_msgs.msg import String", "from std_msgs.msgs import String")
+
+
+@case("DEP008", "base_pkg/srv.py", "from std_srvs.srvs import Trigger")
+def service_module_plural(root: Path) -> None:
+    edit(root, "base_pkg/srv.py", "from std_srvs.srv import", "from std_srvs.srvs import")
