@@ -86,6 +86,7 @@ RULES = {
     "PYC014": ("undeclared-parameter-read", "error", True, "python.undeclared_parameter_read"),
     "PYC015": ("rclpy-not-initialised", "error", True, "python.rclpy_not_initialised"),
     "PYC016": ("invalid-logger-call", "error", True, "python.invalid_logger_call"),
+    "PYC017": ("spin-without-node", "error", True, "python.spin_without_node"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

@@ -174,3 +174,14 @@ def rclpy_init_forgotten(root: Path) -> None:
 def logger_called_like_print(root: Path) -> None:
     edit(root, LISTENER, "info(f'Received message {self.count}: {msg}')",
          "info('Received message', self.count, msg)")
+
+
+@case("PYC017", TALKER, "rclpy.spin()")
+def spin_without_node(root: Path) -> None:
+    edit(root, TALKER, "        executor.add_node(node)\n        executor.spin()\n",
+         "        rclpy.spin()\n")
+
+
+@case("PYC017", LISTENER, "executor.add_node(node)")
+def node_class_not_instantiated(root: Path) -> None:
+    edit(root, LISTENER, "node = Listener()", "node = Listener")

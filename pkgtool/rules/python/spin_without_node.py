@@ -1,0 +1,155 @@
+"""PYC017: ``rclpy.spin()`` or ``executor.add_node()`` given no node, or the node class."""
+
+from __future__ import annotations
+
+import ast
+from collections import Counter
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.node_api import node_subclasses, unpacks
+from pkgtool.rules.registry import rule
+from pkgtool.rules.scopes import bound_names, scope_walk
+from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
+
+SPINS = {"rclpy.spin": ("node",), "rclpy.spin_once": ("node",),
+         "rclpy.spin_until_future_complete": ("node", "future")}
+"""rclpy's spin functions (Jazzy) and their required parameters, in order."""
+ADD_NODE = "add_node"
+"""The executor method taking the node (``Executor.add_node(node)``)."""
+
+Scope = ast.Module | ast.FunctionDef | ast.AsyncFunctionDef
+
+
+def _bound(scope: Scope) -> Counter[str]:
+    """How many times ``scope`` binds each name (a function's parameters included)."""
+    return bound_names(scope.body if isinstance(scope, ast.Module) else scope)
+
+
+def _scopes(node: ast.AST, tree: ast.Module, index: Index) -> list[Scope]:
+    """The functions around ``node``, innermost first, then the module."""
+    found: list[Scope] = []
+    function = index.enclosing_function(node)
+    while function is not None:
+        found.append(function)
+        function = index.enclosing_function(function)
+    return [*found, tree]
+
+
+def _values(name: str, scopes: list[Scope]) -> list[ast.expr]:
+    """What ``name`` may hold where it is read: the values of the plain assignments (``name =
+    value``) of the innermost scope binding it; nothing when it is bound any other way too
+    there (a parameter, a loop, a tuple target, ``global``)."""
+    scope = next((s for s in scopes if _bound(s)[name]), None)
+    if scope is None:
+        return []
+    values = [node.value for node in scope_walk(scope.body)
+              if isinstance(node, (ast.Assign, ast.AnnAssign)) and node.value is not None
+              for target in (node.targets if isinstance(node, ast.Assign) else [node.target])
+              if isinstance(target, ast.Name) and target.id == name]
+    return values if len(values) == _bound(scope)[name] else []
+
+
+def _class_named(value: ast.expr, classes: set[str], scopes: list[Scope]) -> str | None:
+    """The name of the module's Node subclass that ``value`` names, if it is one: bound
+    once, by its ``class`` statement, and in no function around the read."""
+    if isinstance(value, ast.Name) and value.id in classes and _bound(scopes[-1])[value.id] == 1 \
+            and not any(_bound(s)[value.id] for s in scopes[:-1]):
+        return value.id
+    return None
+
+
+def _node_class(value: ast.expr, classes: set[str], scopes: list[Scope]) -> str | None:
+    """The Node subclass that ``value`` certainly is (the class, not an instance): its name,
+    or a variable only ever assigned it (or None)."""
+    if not isinstance(value, ast.Name):
+        return None
+    direct = _class_named(value, classes, scopes)
+    if direct or value.id in classes:
+        return direct
+    found = {_class_named(v, classes, scopes) for v in _values(value.id, scopes)
+             if not (isinstance(v, ast.Constant) and v.value is None)}
+    return found.pop() if len(found) == 1 and None not in found else None
+
+
+def _is_executor(value: ast.expr, index: Index, scopes: list[Scope]) -> bool:
+    """True for a variable only ever assigned an rclpy executor (``SingleThreadedExecutor()``)."""
+    values = _values(value.id, scopes) if isinstance(value, ast.Name) else []
+    names = [qualified(v.func, index.aliases) if isinstance(v, ast.Call) else None
+             for v in values]
+    return bool(names) and all(n and n.startswith("rclpy.") and n.endswith("Executor")
+                               for n in names)
+
+
+def _problem(call: ast.Call, required: tuple[str, ...], classes: set[str],
+             scopes: list[Scope]) -> str | None:
+    """What is wrong with the node passed to a spin or ``add_node`` call, if anything."""
+    if unpacks(call):
+        return None
+    node = call.args[0] if call.args else next(
+        (k.value for k in call.keywords if k.arg == "node"), None)
+    given = len(call.args) + sum(k.arg in required for k in call.keywords)
+    if node is None:
+        return "is given no node: it raises `TypeError`; pass the node object"
+    if given < len(required):
+        return f"takes the node and the {required[-1]}: it raises `TypeError`"
+    cls = _node_class(node, classes, scopes)
+    if cls:
+        return f"is given the class `{cls}`, not a node: spinning it raises `TypeError`; " \
+               f"create the node with `{cls}()` and pass that"
+    return None
+
+
+@rule("PYC017", "spin-without-node", Severity.ERROR,
+      fix="Create the node and pass it: `node = Talker()`, then `rclpy.spin(node)`")
+def spin_without_node(package: Package) -> Iterator[Hit]:
+    """`rclpy.spin()` or an executor's `add_node()` is given no node, or the node class.
+
+    ## What it does
+    Checks the node argument of `rclpy.spin`, `rclpy.spin_once`,
+    `rclpy.spin_until_future_complete` and of `add_node` on a variable only ever assigned an
+    rclpy executor (`executor = SingleThreadedExecutor()`), in installed modules. Reports a
+    call that passes no node (or, for `spin_until_future_complete`, no future), and one that
+    passes a `Node` subclass defined in the module instead of an instance of it: the class
+    name itself, or a variable whose every assignment is the class (or `None`). Calls with
+    `*args` or `**kwargs`, names bound any other way (parameters, loops, imports) and any
+    other expression are not checked.
+
+    ## Why is this bad?
+    `rclpy.spin()` raises `TypeError: spin() missing 1 required positional argument: 'node'`
+    at start-up; passing the class (`rclpy.spin(Talker)`, `node = Talker`) fails inside the
+    executor as soon as it spins, with `TypeError: 'property' object is not iterable`, a
+    message that does not point at the missing parentheses.
+
+    ## Example
+    ```python
+    rclpy.init(args=args)
+    rclpy.spin(Talker)
+    ```
+
+    ## Use instead
+    ```python
+    rclpy.init(args=args)
+    rclpy.spin(Talker())
+    ```
+    """
+    for module, tree, index in installed_trees(package):
+        if not any(i.top_level == "rclpy" for i in module.imports):
+            continue
+        classes = {c.name for c in node_subclasses(index) if c in tree.body}
+        for call in index.calls:
+            target = qualified(call.func, index.aliases)
+            required = SPINS.get(target or "")
+            if required is None and isinstance(call.func, ast.Attribute) and \
+                    call.func.attr == ADD_NODE and target is None:
+                scopes = _scopes(call, tree, index)
+                required = ("node",) if _is_executor(call.func.value, index, scopes) else None
+            if required is None:
+                continue
+            problem = _problem(call, required, classes, _scopes(call, tree, index))
+            if problem:
+                shown = target or ast.unparse(call.func)
+                yield Hit(Span(module.path, call.lineno, call.col_offset + 1),
+                          f"`{shown}()` {problem}")
