@@ -87,6 +87,7 @@ RULES = {
     "PYC015": ("rclpy-not-initialised", "error", True, "python.rclpy_not_initialised"),
     "PYC016": ("invalid-logger-call", "error", True, "python.invalid_logger_call"),
     "PYC017": ("spin-without-node", "error", True, "python.spin_without_node"),
+    "PYC018": ("invalid-qos-profile", "error", True, "python.invalid_qos_profile"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

@@ -1,5 +1,5 @@
-"""What PYC007-PYC009, PYC013 and PYC015 share: calls of rclpy's API and their arguments, Node
-constructions.
+"""What PYC007-PYC009, PYC013, PYC015, PYC017 and PYC018 share: calls of rclpy's API and their
+arguments, Node constructions.
 
 Only modules that import rclpy and do not define a method of the same name themselves are
 looked at, so a project's own ``create_publisher`` wrapper is never judged by rclpy's signature.
@@ -57,6 +57,14 @@ def node_api_calls(package: Package, methods: Collection[str] = PARAMETERS
             method = call.func.attr if isinstance(call.func, ast.Attribute) else ""
             if method in methods and method not in defined:
                 yield module, call, method, index
+
+
+def qos_calls(package: Package) -> Iterator[tuple[PythonModule, ast.Call, str]]:
+    """Calls of the methods taking a ``qos_profile`` (publishers, subscriptions) whose
+    arguments are all known (no ``*args`` or ``**kwargs``), with the method name."""
+    for module, call, method, _ in node_api_calls(package):
+        if "qos_profile" in PARAMETERS[method] and not unpacks(call):
+            yield module, call, method
 
 
 def argument(call: ast.Call, parameters: tuple[str, ...], name: str) -> ast.expr | None:

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_api import PARAMETERS, argument, node_api_calls, unpacks
+from pkgtool.rules.node_api import PARAMETERS, argument, qos_calls
 from pkgtool.rules.registry import rule
 
 
@@ -46,10 +46,8 @@ def missing_qos_profile(package: Package) -> Iterator[Hit]:
     self.create_subscription(String, 'chatter', self.on_message, 10)
     ```
     """
-    for module, call, method, _ in node_api_calls(package):
+    for module, call, method in qos_calls(package):
         parameters = PARAMETERS[method]
-        if "qos_profile" not in parameters or unpacks(call):
-            continue
         others = [p for p in parameters if p != "qos_profile"]
         if argument(call, parameters, "qos_profile") is None and len(call.args) <= len(others) \
                 and all(argument(call, parameters, p) is not None for p in others):

@@ -185,3 +185,15 @@ def spin_without_node(root: Path) -> None:
 @case("PYC017", LISTENER, "executor.add_node(node)")
 def node_class_not_instantiated(root: Path) -> None:
     edit(root, LISTENER, "node = Listener()", "node = Listener")
+
+
+@case("PYC018", TALKER, "self.create_publisher(String, topic, '10')")
+def qos_depth_as_string(root: Path) -> None:
+    edit(root, TALKER, "self.create_publisher(String, topic, 10)",
+         "self.create_publisher(String, topic, '10')")
+
+
+@case("PYC018", LISTENER, "String, topic, self.on_message, 10.0)")
+def qos_depth_as_float(root: Path) -> None:
+    edit(root, LISTENER, "String, topic, self.on_message, 10)",
+         "String, topic, self.on_message, 10.0)")
