@@ -47,7 +47,8 @@ class NodeRef:
     dict), None otherwise. ``unused`` marks a Python action that is never started: its call
     (or one it is part of) is the whole value of an assignment to a local name its function
     never reads (``rviz = Node(...)`` left out of the LaunchDescription). The call itself
-    still runs when the file does.
+    still runs when the file does. ``remappings_not_pairs`` is where a Python ``remappings=``
+    certainly is no list of pairs (:mod:`pkgtool.model.launch_remaps`), None otherwise.
     """
 
     package: str | None
@@ -66,6 +67,7 @@ class NodeRef:
     other_parameters: bool = False
     parameters_not_list: Span | None = None
     unused: bool = False
+    remappings_not_pairs: Span | None = None
 
 
 @dataclass(frozen=True, slots=True)

@@ -12,6 +12,7 @@ import ast
 from dataclasses import dataclass
 
 from pkgtool.model.launch import FileRef, NodeRef, PackageRef
+from pkgtool.model.launch_remaps import not_pairs
 from pkgtool.model.launch_scopes import bindings, import_origins, unread_calls
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import depends_on_ros_distro
@@ -229,6 +230,7 @@ class _Reader(ast.NodeVisitor):
             files, other = self._parameter_files(parameters)
             name, unknown = self._node_name(node)
             namespace = self.value(_keyword(node, "namespace"))
+            remaps = not_pairs(_keyword(node, "remappings"), self._assigned)
             self.nodes.append(NodeRef(
                 package if isinstance(package, str) else None,
                 executable if isinstance(executable, str) else None, self._span(node), action,
@@ -240,7 +242,8 @@ class _Reader(ast.NodeVisitor):
                 name_unknown=unknown or "**" in arguments or "*" in arguments,
                 other_parameters=other or "**" in arguments,
                 parameters_not_list=self._span(parameters) if self._not_a_list(parameters)
-                else None, unused=bool(self.dead)))
+                else None, unused=bool(self.dead),
+                remappings_not_pairs=remaps and self._span(remaps)))
         elif name == "ExecuteProcess":
             self._ros2_run(node)
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:

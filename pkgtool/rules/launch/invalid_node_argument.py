@@ -28,6 +28,10 @@ WRONG_ATTRIBUTES = {"type": "`exec` (`type` is ROS 1)", "executable": "`exec`",
 def _problems(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
     """(message, fix, where) for each argument problem of one node action."""
     given = set(node.arguments)
+    if node.remappings_not_pairs:
+        yield (f"`remappings=` of `{node.action}()` is not a list of (from, to) tuples",
+               "Put each remapping in a tuple of two, in a list: "
+               "`remappings=[('/chatter', '/talk')]`", node.remappings_not_pairs)
     if node.action in PYTHON_ACTIONS:
         removed = set() if node.other_distros else given & REMOVED_KEYWORDS.keys()
         for name in sorted(removed):
@@ -59,7 +63,10 @@ def invalid_launch_node_argument(package: Package) -> Iterator[Hit]:
     Checks the node actions of launch files: Python `Node`, `LifecycleNode` and
     `ComposableNodeContainer` calls need `executable=` and must not use `node_executable`,
     `node_name` or `node_namespace` (removed after ROS 2 Eloquent), and their `parameters=`
-    must be a list (not a path, a string, a tuple or a dict); XML and YAML `node`,
+    must be a list (not a path, a string, a tuple or a dict); their `remappings=` (and
+    those of a `ComposableNode`) must be a list of tuples of two (not a single pair
+    `('/a', '/b')`, a string, a dict, nor a list holding a string `[('/a')]`, a list or a
+    tuple of another length); only displays and literals are judged. XML and YAML `node`,
     `lifecycle_node` and `node_container` need `exec` and must not use ROS 1 or Python
     attribute names (`type`, `ns`, `executable`, `package`, `required`, ...). Calls that pass
     `**kwargs` are not checked, nor the removed keywords of calls in either branch of a test

@@ -211,3 +211,15 @@ def parameters_not_a_list(root: Path) -> None:
 @case("LCH006", PY, "def generate_launch_description")
 def launch_description_not_returned(root: Path) -> None:
     edit(root, PY, "    return LaunchDescription([", "    LaunchDescription([")
+
+
+@case("LCH005", PY, "remappings=('chatter', 'talk')")
+def remapping_pair_not_in_list(root: Path) -> None:
+    edit(root, PY, "            name='talker',\n",
+         "            name='talker',\n            remappings=('chatter', 'talk'),\n")
+
+
+@case("LCH005", PY, "remappings=[('chatter')]")
+def remapping_without_its_pair(root: Path) -> None:
+    edit(root, PY, "            name='listener',\n",
+         "            name='listener',\n            remappings=[('chatter')],\n")
