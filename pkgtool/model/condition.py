@@ -23,6 +23,18 @@ def applies(condition: str | None, distro: str) -> bool:
     return condition is None or evaluate(condition, environment(distro)) is True
 
 
+def under_ros2(condition: str | None) -> bool | None:
+    """Whether a tag with this ``condition`` is used by every ROS 2 distribution: True without
+    one, None when the value depends on the distribution (``$ROS_DISTRO``) or is not a valid
+    condition. Catkin and ament build a package declaring ``condition="$ROS_VERSION == 1"``
+    and ``== 2`` tags under ROS 1 and ROS 2 alike."""
+    if condition is None:
+        return True
+    if "ROS_DISTRO" in condition:
+        return None
+    return evaluate(condition, {"ROS_VERSION": "2", "ROS_PYTHON_VERSION": "3"})
+
+
 def evaluate(condition: str, variables: dict[str, str]) -> bool | None:
     """The value of ``condition``; None when it is not a valid condition."""
     tokens = _TOKEN.findall(condition)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from pkgtool.model.condition import under_ros2
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.model.xml import XmlElement, parse_xml
 
@@ -62,9 +63,13 @@ class Manifest:
 
     @property
     def is_ros1(self) -> bool:
-        """True for a ROS 1 (catkin) package: built by catkin, or with catkin as build tool."""
+        """True for a ROS 1 (catkin) package: built by catkin, or with catkin as build tool.
+        Tags whose ``condition`` is false under ROS 2 (``$ROS_VERSION == 1``) do not count:
+        such a package is built by ament under ROS 2."""
         build_type = self.build_type.value if self.build_type else ""
-        return build_type == "catkin" or "catkin" in self.depends({"buildtool_depend"})
+        return build_type == "catkin" or any(
+            d.tag == "buildtool_depend" and d.name == "catkin" and under_ros2(d.condition)
+            is not False for d in self.dependencies)
 
 
 def parse_manifest(path: str, text: str) -> Manifest | ParseProblem:
@@ -77,6 +82,14 @@ def parse_manifest(path: str, text: str) -> Manifest | ParseProblem:
 
 def _text(element: XmlElement | None) -> Text | None:
     return None if element is None else Text(element.text, element.span)
+
+
+def _build_type(export: XmlElement) -> XmlElement | None:
+    """The ``<build_type>`` ROS 2 uses: the first whose ``condition`` is not false under ROS 2
+    (``$ROS_VERSION == 2`` beside a ``$ROS_VERSION == 1`` catkin), else the first."""
+    found = [c for c in export.children if c.tag == "build_type"]
+    return next((c for c in found if under_ros2(c.attribute("condition")) is not False),
+                found[0] if found else None)
 
 
 def _first(root: XmlElement, tag: str) -> XmlElement | None:
@@ -98,7 +111,7 @@ def _format(root: XmlElement) -> int | None:
 
 def _manifest(path: str, root: XmlElement, has_schema_line: bool) -> Manifest:
     export = _first(root, "export")
-    build_type = _first(export, "build_type") if export is not None else None
+    build_type = _build_type(export) if export is not None else None
     return Manifest(
         path=path,
         root=root,
