@@ -5,6 +5,13 @@ A test is decided only when it is certain for every Python 3: ``sys.version_info
 a module-level name assigned once to a constant and never again, and ``not``/``and``/``or``
 of those. Anything else is undecided (None) and both branches count as running.
 
+Tests on the ROS version are decided for ROS 2, the build pkgtool checks (packages built by
+catkin under ROS 1 and by ament under ROS 2 keep their ROS 1 code under ``if ROS_VERSION ==
+1:``): the ``ROS_VERSION`` environment variable (read with ``os.environ[...]``,
+``os.environ.get``, ``os.getenv``, as is or through ``int()``) or a name or attribute called
+``ROS_VERSION`` (the variable mirroring it, whatever it is assigned from) compared with ``1``
+or ``2``.
+
 Tests on the ROS distribution (the ``ROS_DISTRO`` environment variable) are never decided:
 :func:`depends_on_ros_distro` tells the rules about API that a ROS release removed or renamed
 that both branches hold code written for some distributions only.
@@ -64,7 +71,10 @@ def truth(test: ast.expr, constants: dict[str, bool]) -> bool | None:
         return name == "PY3"
     if isinstance(test, ast.Name) and test.id in constants:
         return constants[test.id]
-    return _version_test(test) if isinstance(test, ast.Compare) else None
+    if not isinstance(test, ast.Compare):
+        return None
+    version = _version_test(test)
+    return _ros_version_test(test) if version is None else version
 
 
 def _plain_name(node: ast.expr) -> str | None:
@@ -117,6 +127,46 @@ def _constant(node: ast.expr) -> tuple[int, ...] | int | None:
     return None
 
 
+_ROS_VERSION = "ROS_VERSION"
+_TARGET_ROS_VERSION = 2
+
+
+def _ros_version_test(test: ast.Compare) -> bool | None:
+    """``os.environ['ROS_VERSION'] == '1'``, ``int(os.getenv('ROS_VERSION')) != 2``,
+    ``ROS_VERSION == 1`` (either side), decided for ROS 2."""
+    if len(test.ops) != 1 or type(test.ops[0]) not in _COMPARE:
+        return None
+    left, right = test.left, test.comparators[0]
+    kind, constant = _ros_version_side(left), right
+    if kind is None:
+        kind, constant = _ros_version_side(right), left
+        if kind is None:
+            return None
+        left, right = right, left
+    if not isinstance(constant, ast.Constant) or str(constant.value) not in ("1", "2") or \
+            isinstance(constant.value, bool):
+        return None
+    text = isinstance(constant.value, str)
+    if kind != "any" and text != (kind == "str"):
+        return None  # '2' == 2 is False under ROS 1 too: a bug, not a test on the version
+    target: str | int = str(_TARGET_ROS_VERSION) if text else _TARGET_ROS_VERSION
+    pair = (target, constant.value) if left is not constant else (constant.value, target)
+    return bool(_COMPARE[type(test.ops[0])](*pair))
+
+
+def _ros_version_side(node: ast.expr) -> str | None:
+    """``str`` for a read of the environment variable, ``int`` for one through ``int()``,
+    ``any`` for a name or attribute called ``ROS_VERSION``; None for anything else."""
+    if isinstance(node, ast.Call) and _is_name(node.func, "int") and len(node.args) == 1:
+        return "int" if _reads_variable(node.args[0], _ROS_VERSION) else None
+    if _reads_variable(node, _ROS_VERSION):
+        return "str"
+    if (isinstance(node, ast.Name) and node.id == _ROS_VERSION) or (
+            isinstance(node, ast.Attribute) and node.attr == _ROS_VERSION):
+        return "any"
+    return None
+
+
 def mentions_module_name(test: ast.expr) -> bool:
     """The test looks at ``__name__``/``__package__``/``__spec__``: run as script or package."""
     return any(isinstance(n, ast.Name) and n.id in MODULE_DUNDERS for n in ast.walk(test))
@@ -141,15 +191,20 @@ _ROS_DISTRO_VARIABLE = "ROS_DISTRO"
 def _reads_ros_distro(node: ast.AST) -> bool:
     """``os.environ['ROS_DISTRO']``, ``os.environ.get('ROS_DISTRO', ...)``, ``os.getenv(...)``
     (also through ``from os import environ, getenv``)."""
+    return _reads_variable(node, _ROS_DISTRO_VARIABLE)
+
+
+def _reads_variable(node: ast.AST, variable: str) -> bool:
+    """``node`` reads the environment variable ``variable`` (as :func:`_reads_ros_distro`)."""
     if isinstance(node, ast.Subscript):
-        return _is_environ(node.value) and _names_ros_distro(node.slice)
+        return _is_environ(node.value) and _names(node.slice, variable)
     if not isinstance(node, ast.Call) or not node.args:
         return False
     func = node.func
     getenv = (isinstance(func, ast.Name) and func.id == "getenv") or (
         isinstance(func, ast.Attribute) and func.attr == "getenv" and _is_name(func.value, "os"))
     get = isinstance(func, ast.Attribute) and func.attr == "get" and _is_environ(func.value)
-    return (getenv or get) and _names_ros_distro(node.args[0])
+    return (getenv or get) and _names(node.args[0], variable)
 
 
 def depends_on_ros_distro(test: ast.expr,
@@ -176,5 +231,5 @@ def _is_environ(node: ast.expr) -> bool:
         isinstance(node, ast.Attribute) and node.attr == "environ" and _is_name(node.value, "os"))
 
 
-def _names_ros_distro(node: ast.expr) -> bool:
-    return isinstance(node, ast.Constant) and node.value == _ROS_DISTRO_VARIABLE
+def _names(node: ast.expr, variable: str) -> bool:
+    return isinstance(node, ast.Constant) and node.value == variable

@@ -251,6 +251,24 @@ def test_unknown_branch_makes_changed_names_unresolved() -> None:
     assert setup.name and setup.is_unresolved("data_files")
 
 
+def test_ros_version_branches_are_decided_for_ros2() -> None:
+    setup = evaluate("""
+        import os
+        ROS_VERSION = int(os.environ['ROS_VERSION'])
+        if ROS_VERSION == 1:
+            from catkin_pkg.python_setup import generate_distutils_setup
+            from distutils.core import setup
+            d = generate_distutils_setup(packages=['demo'])
+            setup(**d)
+        elif ROS_VERSION == 2:
+            from setuptools import setup
+            setup(name='demo', packages=['demo'])
+    """)
+    assert setup.name and setup.name.value == "demo"
+    assert setup.setup_span and setup.setup_span.line == 10
+    assert not setup.is_unresolved("**") and not setup.is_unresolved("packages")
+
+
 def test_setup_call_forms() -> None:
     assert evaluate("print('no setup here')").setup_span is None
     wrapped = evaluate("from helpers import setup\nsetup(name='demo')")

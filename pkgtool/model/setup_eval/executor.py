@@ -15,6 +15,7 @@ from pkgtool.model.setup_eval.scope import Scope
 from pkgtool.model.setup_eval.taint import changed_names
 from pkgtool.model.setup_eval.values import BoundMethod, Builtin, NotStatic, Opaque, UserFunc
 from pkgtool.model.span import Unresolved
+from pkgtool.model.static_branches import truth
 
 MAX_CALL_DEPTH = 16
 TAINT_COST = 250
@@ -170,9 +171,15 @@ class Runner(Interpreter):
         self.run_block(node.orelse, scope)
 
     def _run_If(self, node: ast.If, scope: Scope) -> None:
+        """A test not evaluated runs both branches (uncertain), unless it is one that never
+        changes for a ROS 2 build (``if ROS_VERSION == 1:`` before catkin's setup call)."""
         try:
             test = bool(self.eval(node.test, scope))
         except NotStatic as error:
+            decided = truth(node.test, {})
+            if decided is not None:
+                self.run_block(node.body if decided else node.orelse, scope)
+                return
             self.uncertain += 1
             try:
                 self.run_block(node.body, scope)

@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.rosdep import ROS1_PACKAGES
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import ANY, all_python, declared, needs
 from pkgtool.rules.registry import rule
@@ -20,7 +21,8 @@ def undeclared_optional_import(package: Package) -> Iterator[Hit]:
     dependency tag. The code is written to survive without the module, so this is
     information, not an error. The imports of an own module that the package only ever
     imports under such a guard (an optional back-end, like rqt_py_console's spyder console)
-    count as guarded too.
+    count as guarded too. ROS 1 modules (`rospy`) guarded in a ROS 2 package are its ROS 1
+    code path (`if ROS_VERSION == 1:`, `except ImportError:`): there is nothing to declare.
 
     ## Why is this bad?
     Without a declaration the optional feature is silently off on every machine set up with
@@ -40,9 +42,12 @@ def undeclared_optional_import(package: Package) -> Iterator[Hit]:
     ```
     """
     available = declared(package, ANY)
+    ros2 = package.manifest is not None and not package.manifest.is_ros1
     for module in all_python(package) if package.manifest else ():
         required = {need.top for need in needs(package, module)}
         for need in needs(package, module, guarded=True):
+            if ros2 and need.top in ROS1_PACKAGES:
+                continue
             if need.top not in required and not any(k in available for k in need.keys):
                 guess = " (a guess from the name)" if need.kind == "unknown" else ""
                 yield Hit(need.imported.span,
