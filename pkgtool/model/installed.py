@@ -114,10 +114,11 @@ def installed_modules(package: Package) -> dict[str, str] | None:
             by_folder.setdefault(posixpath.dirname(file), []).append(file)
     modules: dict[str, str] = {}
     for name in setup.packages.names if setup.packages else ():
+        dotted = name.replace("/", ".")  # 'src/pkg' installs to src/pkg: `src.pkg`, namespace
         for file in by_folder.get(package_folder(name, package_dir), ()):
             stem = posixpath.basename(file)[:-3]
             if file != "setup.py":
-                modules[name if stem == "__init__" else f"{name}.{stem}"] = file
+                modules[dotted if stem == "__init__" else f"{dotted}.{stem}"] = file
     for name in setup.py_modules or ():
         parent, _, leaf = name.rpartition(".")
         file = posixpath.join(package_folder(parent, package_dir), leaf + ".py")
