@@ -11,11 +11,14 @@ action ``A`` is the messages ``AAction``, ``AGoal``, ... of ``pkg.msg``.
 
 from __future__ import annotations
 
-from pkgtool.knowledge.interfaces import Interfaces, interfaces_of
+import ast
+
+from pkgtool.knowledge.interfaces import KINDS, Interfaces, interfaces_of
 from pkgtool.model.cmake_interfaces import with_listed
 from pkgtool.model.context import interface_file
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
+from pkgtool.rules.syntax_trees import installed_modules
 
 ROS1_ACTION_MESSAGES = ("Action", "ActionGoal", "ActionResult", "ActionFeedback", "Goal",
                         "Result", "Feedback")
@@ -60,3 +63,21 @@ def interfaces_for(package: Package, name: str) -> Interfaces | None:
     if neighbour is not None and neighbour.interfaces:
         return neighbour.interfaces
     return interfaces_of(name, package.context.distro)
+
+
+@per_package
+def patched_interfaces(package: Package) -> frozenset[tuple[str, str, str]]:
+    """(package, kind, name) that the package's installed code assigns onto an interface
+    module, as ROS 1 compatibility shims do (``rosgraph_msgs.msg.Log = rcl_interfaces.msg.Log``):
+    importable once that code has run."""
+    found: set[tuple[str, str, str]] = set()
+    for _, tree in installed_modules(package):
+        for node in ast.walk(tree):
+            targets = node.targets if isinstance(node, ast.Assign) else [
+                node.target] if isinstance(node, (ast.AnnAssign, ast.AugAssign)) else []
+            for target in targets:
+                owner = target.value if isinstance(target, ast.Attribute) else None
+                if (isinstance(owner, ast.Attribute) and owner.attr in KINDS
+                        and isinstance(owner.value, ast.Name)):
+                    found.add((owner.value.id, owner.attr, target.attr))  # type: ignore
+    return frozenset(found)

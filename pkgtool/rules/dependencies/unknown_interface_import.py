@@ -10,7 +10,7 @@ from pkgtool.knowledge.ros_names import ROS_SUFFIXES
 from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import all_python
-from pkgtool.rules.dependencies.interface_types import interfaces_for
+from pkgtool.rules.dependencies.interface_types import interfaces_for, patched_interfaces
 from pkgtool.rules.registry import rule
 
 
@@ -34,7 +34,9 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
     `A_GetResult_Response`, ...) exist where the target distribution's modules export them:
     since Iron; on humble they are reported with the attribute to use (`X.Request`). A ROS 1
     (catkin) package is checked against its own interfaces only, where an action `A` is the
-    messages `AAction`, `AGoal`, `AResult`, ... of `pkg.msg`.
+    messages `AAction`, `AGoal`, `AResult`, ... of `pkg.msg`. A name the package's installed
+    code assigns onto the module (`rosgraph_msgs.msg.Log = rcl_interfaces.msg.Log`, as ROS 1
+    compatibility shims do) exists.
 
     Also reports a misspelled module of an interface package (`std_msgs.msgs`,
     `geometry_msgs.message`, `example_interfaces.srvs`, `from std_msgs import Msg`): the
@@ -74,7 +76,10 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
             known = interfaces_for(package, parts[0])
             if known is None:
                 continue
+            patched = patched_interfaces(package)
             for name in imported.names:
+                if (parts[0], parts[1], name) in patched:
+                    continue
                 found = None if name == "*" else mismatch(
                     parts[0], parts[1], name, known, package.context.distro)
                 if found:
