@@ -95,10 +95,16 @@ def read_workspace_package(root: Path) -> WorkspacePackage:
     folders = {kind: frozenset(names) for kind, names in kinds.items()}
     cmake = _read(os.path.join(base, "CMakeLists.txt")) if any(
         entry.name == "CMakeLists.txt" for entry in listed) else None
-    modules = frozenset(e.name for e in listed if e.name.isidentifier()
-                        and e.name not in _NOT_MODULES and e.is_dir()
-                        and os.path.isfile(os.path.join(e.path, "__init__.py")))
-    return WorkspacePackage(name, with_listed(folders, cmake) or {}, modules)
+    modules = _python_packages(listed) | (_python_packages(listing(os.path.join(base, "src")))
+                                          if any(e.name == "src" for e in listed) else set())
+    return WorkspacePackage(name, with_listed(folders, cmake) or {}, frozenset(modules))
+
+
+def _python_packages(entries: list[os.DirEntry[str]]) -> set[str]:
+    """Folders among ``entries`` that are Python packages (hold an ``__init__.py``): those at
+    a package's root, and in its ``src`` folder (``package_dir={'': 'src'}``)."""
+    return {e.name for e in entries if e.name.isidentifier() and e.name not in _NOT_MODULES
+            and e.is_dir() and os.path.isfile(os.path.join(e.path, "__init__.py"))}
 
 
 def _read(path: str) -> str | None:
