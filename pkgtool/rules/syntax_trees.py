@@ -93,29 +93,28 @@ _BINDERS = (ast.Import, ast.ImportFrom, ast.arg, *FUNCTIONS, ast.ClassDef, ast.E
             ast.MatchAs, ast.MatchStar)
 """Nodes that bind names besides stored ``Name``s (those are tested directly: most nodes)."""
 _COLLECTED = ((ast.Call, "calls"), (ast.ImportFrom, "import_froms"), (ast.Try, "tries"),
-              (FUNCTIONS, "functions"), (ast.ClassDef, "classes"))
+              (ast.FunctionDef, "functions"), (ast.AsyncFunctionDef, "functions"),
+              (ast.ClassDef, "classes"))
 
 
 def _index(tree: ast.Module) -> Index:
+    """The index of ``tree``, from the nodes of the few classes it needs (the tree's one walk
+    groups them): each list in walk order, ``functions`` the sync ones first."""
     walk = walk_once(tree)
+    by_class = walk.by_class
     index = Index(parents=walk.parents)
     bound: dict[str, set[str | None]] = {}
-    for node in walk.nodes:
-        if isinstance(node, ast.Name):
-            if not isinstance(node.ctx, ast.Load):
-                bound.setdefault(node.id, set()).add(None)
-            continue
-        if isinstance(node, ast.Attribute):
-            if isinstance(node.ctx, ast.Load):
-                index.attributes.append(node)
-            continue
-        if isinstance(node, _BINDERS):
+    for name in by_class.get(ast.Name, ()):
+        if not isinstance(name.ctx, ast.Load):  # type: ignore[attr-defined]
+            bound.setdefault(name.id, set()).add(None)  # type: ignore[attr-defined]
+    index.attributes.extend(node for node in by_class.get(ast.Attribute, ())  # type: ignore
+                            if isinstance(node.ctx, ast.Load))  # type: ignore[attr-defined]
+    for kind in _BINDERS:
+        for node in by_class.get(kind, ()):
             for name, target in _bindings(node):
                 bound.setdefault(name, set()).add(target)
-        for kind, field_name in _COLLECTED:
-            if isinstance(node, kind):
-                getattr(index, field_name).append(node)
-                break
+    for kind, field_name in _COLLECTED:
+        getattr(index, field_name).extend(by_class.get(kind, ()))
     index.aliases.update({name: target for name, (target, *more) in bound.items()
                           if not more and target is not None and name != "*"})
     return index

@@ -14,6 +14,7 @@ from __future__ import annotations
 import ast
 
 from pkgtool.knowledge.interfaces import KINDS, Interfaces, interfaces_of
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.cmake_interfaces import with_listed
 from pkgtool.model.context import interface_file
 from pkgtool.model.memo import per_package
@@ -72,7 +73,7 @@ def patched_interfaces(package: Package) -> frozenset[tuple[str, str, str]]:
     importable once that code has run."""
     found: set[tuple[str, str, str]] = set()
     for _, tree in installed_modules(package):
-        for node in ast.walk(tree):
+        for node in nodes_of_class(tree, ast.Assign, ast.AnnAssign, ast.AugAssign):
             targets = node.targets if isinstance(node, ast.Assign) else [
                 node.target] if isinstance(node, (ast.AnnAssign, ast.AugAssign)) else []
             for target in targets:

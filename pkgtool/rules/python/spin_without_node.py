@@ -7,6 +7,7 @@ from collections import Counter
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.memo import per_object
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import node_subclasses, unpacks
@@ -23,8 +24,10 @@ ADD_NODE = "add_node"
 Scope = ast.Module | ast.FunctionDef | ast.AsyncFunctionDef
 
 
+@per_object(16)
 def _bound(scope: Scope) -> Counter[str]:
-    """How many times ``scope`` binds each name (a function's parameters included)."""
+    """How many times ``scope`` binds each name (a function's parameters included); computed
+    once per scope, the module's included, however many calls read it."""
     return bound_names(scope.body if isinstance(scope, ast.Module) else scope)
 
 
@@ -45,11 +48,20 @@ def _values(name: str, scopes: list[Scope]) -> list[ast.expr]:
     scope = next((s for s in scopes if _bound(s)[name]), None)
     if scope is None:
         return []
-    values = [node.value for node in scope_walk(scope.body)
-              if isinstance(node, (ast.Assign, ast.AnnAssign)) and node.value is not None
-              for target in (node.targets if isinstance(node, ast.Assign) else [node.target])
-              if isinstance(target, ast.Name) and target.id == name]
+    values = _assigned(scope).get(name, [])
     return values if len(values) == _bound(scope)[name] else []
+
+
+@per_object(16)
+def _assigned(scope: Scope) -> dict[str, list[ast.expr]]:
+    """The values of the plain assignments (``name = value``) of ``scope``, by name."""
+    found: dict[str, list[ast.expr]] = {}
+    for node in scope_walk(scope.body):
+        if isinstance(node, (ast.Assign, ast.AnnAssign)) and node.value is not None:
+            for target in node.targets if isinstance(node, ast.Assign) else [node.target]:
+                if isinstance(target, ast.Name):
+                    found.setdefault(target.id, []).append(node.value)
+    return found
 
 
 def _class_named(value: ast.expr, classes: set[str], scopes: list[Scope]) -> str | None:
