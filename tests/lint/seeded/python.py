@@ -197,3 +197,25 @@ def qos_depth_as_string(root: Path) -> None:
 def qos_depth_as_float(root: Path) -> None:
     edit(root, LISTENER, "String, topic, self.on_message, 10)",
          "String, topic, self.on_message, 10.0)")
+
+
+@case("PYC019", TALKER, "msg.dat = f'Hello")
+def message_field_misspelled(root: Path) -> None:
+    edit(root, TALKER, "msg.data = f'Hello {self.count}'", "msg.dat = f'Hello {self.count}'")
+
+
+@case("PYC019", TALKER, "msg = String(text=")
+def message_constructor_keyword_misspelled(root: Path) -> None:
+    edit(root, TALKER, "msg = String()\n        msg.data = f'Hello {self.count}'",
+         "msg = String(text=f'Hello {self.count}')")
+
+
+@case("PYC019", TALKER, "cmd.linear.xx = 0.5")
+def nested_message_field_misspelled(root: Path) -> None:
+    edit(root, TALKER, "from std_msgs.msg import String\n",
+         "from geometry_msgs.msg import Twist\nfrom std_msgs.msg import String\n")
+    edit(root, TALKER, "        self.publisher.publish(msg)\n",
+         "        self.publisher.publish(msg)\n        cmd = Twist()\n"
+         "        cmd.linear.xx = 0.5\n        self.get_logger().info(str(cmd))\n")
+    edit(root, "package.xml", "  <exec_depend>launch</exec_depend>\n",
+         "  <exec_depend>geometry_msgs</exec_depend>\n  <exec_depend>launch</exec_depend>\n")

@@ -1,0 +1,161 @@
+"""Expressions that certainly hold a fresh instance of a known message class (PYC019).
+
+A local variable holds one when its scope (a function, or the module) binds it exactly once,
+``msg = String()``, and nothing in the scope or inside it binds the name otherwise (no
+parameter, no second assignment, no ``for``/``with``/``del``/``global``/``nonlocal``, no
+nested function's parameter or variable): every ``msg`` in the scope is that instance.
+``self.x`` holds one in the methods of a class whose methods all assign ``self.x`` from
+the same message constructor (``self.x = Twist()``, one target), when nothing else in the
+module stores an attribute ``x``, no ``setattr`` could, and the class body defines no ``x``.
+"""
+
+from __future__ import annotations
+
+import ast
+from collections import Counter
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+
+from pkgtool.knowledge.message_fields import Message
+from pkgtool.rules.scopes import bound_names, scope_walk
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index
+
+Known = Callable[[ast.expr], Message | None]
+"""The known message class a constructor's callee stands for, or None."""
+
+
+@dataclass(frozen=True, slots=True)
+class Instance:
+    """Where a message instance is used: ``uses`` are the attributes read or stored on it
+    (``msg.data``, ``self.msg.data``) and ``stored`` the attribute paths assigned anywhere
+    below it (``("header", "stamp")`` for ``msg.header.stamp = ...``)."""
+
+    message: Message
+    uses: list[ast.Attribute]
+    stored: frozenset[tuple[str, ...]]
+
+
+def _all_bindings(nodes: list[ast.AST]) -> Counter[str]:
+    """How often each name is bound among ``nodes`` (every scope: parameters, targets,
+    imports, definitions, ``global``/``nonlocal`` names)."""
+    found: Counter[str] = Counter()
+    for node in nodes:
+        if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
+            found[node.id] += 1
+        elif isinstance(node, ast.arg):
+            found[node.arg] += 1
+        elif isinstance(node, (*FUNCTIONS, ast.ClassDef)):
+            found[node.name] += 1
+        elif isinstance(node, (ast.Import, ast.ImportFrom)):
+            found.update((a.asname or a.name).split(".")[0] for a in node.names)
+        elif isinstance(node, (ast.ExceptHandler, ast.MatchAs, ast.MatchStar)) and node.name:
+            found[node.name] += 1
+        elif isinstance(node, ast.MatchMapping) and node.rest:
+            found[node.rest] += 1
+        elif isinstance(node, (ast.Global, ast.Nonlocal)):
+            found.update(node.names * 2)
+    return found
+
+
+def _path(node: ast.Attribute) -> tuple[str, ...]:
+    """The attribute names of ``node`` after its root: ``("header", "stamp")`` for
+    ``msg.header.stamp``."""
+    names: list[str] = []
+    current: ast.expr = node
+    while isinstance(current, ast.Attribute):
+        names.append(current.attr)
+        current = current.value
+    return tuple(reversed(names))
+
+
+def _on(nodes: list[ast.AST], is_root: Callable[[ast.expr], bool]) -> Iterator[ast.Attribute]:
+    """The attributes among ``nodes`` taken directly on a root expression."""
+    return (n for n in nodes if isinstance(n, ast.Attribute) and is_root(n.value))
+
+
+def _instance(message: Message, uses: list[ast.Attribute], index: Index, skip: int = 0
+              ) -> Instance:
+    """The instance used by ``uses``: the paths stored under it (the first ``skip`` names of
+    each path are the way to the instance itself)."""
+    stored = set()
+    for use in uses:
+        top: ast.AST = use
+        while isinstance(index.parents.get(id(top)), ast.Attribute):
+            top = index.parents[id(top)]
+        if isinstance(top, ast.Attribute) and not isinstance(top.ctx, ast.Load):
+            stored.add(_path(top)[skip:])
+    return Instance(message, uses, frozenset(stored))
+
+
+def _fresh(node: ast.AST) -> tuple[str, ast.Call] | None:
+    """(name, call) of an assignment ``name = call(...)`` to one name."""
+    if isinstance(node, ast.Assign) and len(node.targets) == 1 \
+            and isinstance(node.targets[0], ast.Name) and isinstance(node.value, ast.Call):
+        return node.targets[0].id, node.value
+    return None
+
+
+def local_instances(tree: ast.Module, index: Index, known: Known) -> Iterator[Instance]:
+    """Local variables (of functions and of the module) that hold a fresh message."""
+    for scope in [tree, *index.functions]:
+        made = [(name, message) for name, call in filter(None, map(_fresh, scope_walk(scope.body)))
+                if (message := known(call.func)) is not None]
+        if not made:
+            continue
+        nodes = list(ast.walk(scope))
+        counts = _all_bindings(nodes)
+        own = counts if isinstance(scope, ast.Module) else bound_names(scope)
+        for name, message in made:
+            if counts[name] == own[name] == 1:
+                uses = list(_on(nodes, lambda e: isinstance(e, ast.Name) and e.id == name))
+                yield _instance(message, uses, index)
+
+
+def _receiver(method: ast.AST) -> str | None:
+    """The first parameter of a plain method (no decorator), when the method never rebinds it."""
+    if not isinstance(method, FUNCTIONS) or method.decorator_list:
+        return None
+    positional = [*method.args.posonlyargs, *method.args.args]
+    if not positional or _all_bindings(list(ast.walk(method)))[positional[0].arg] != 1:
+        return None
+    return positional[0].arg
+
+
+def _dynamic(tree: ast.Module) -> bool:
+    """True when the module calls ``setattr`` or ``delattr`` (any attribute may change)."""
+    return any(isinstance(n, ast.Call) and isinstance(n.func, ast.Name)
+               and n.func.id in ("setattr", "delattr") for n in ast.walk(tree))
+
+
+def attribute_instances(tree: ast.Module, index: Index, known: Known) -> Iterator[Instance]:
+    """``self.x`` attributes of classes that always assign them a fresh message."""
+    if _dynamic(tree):
+        return
+    stores = Counter(n.attr for n in ast.walk(tree)
+                     if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load))
+    for cls in index.classes:
+        makers: dict[str, list[Message | None]] = {}
+        uses: dict[str, list[ast.Attribute]] = {}
+        for method in cls.body:
+            receiver = _receiver(method)
+            nodes = list(ast.walk(method)) if receiver else []
+            for node in _on(nodes, lambda e: isinstance(e, ast.Name) and e.id == receiver):
+                if not isinstance(node.ctx, ast.Load):
+                    makers.setdefault(node.attr, []).append(_assigned(node, index, known))
+            for node in _on(nodes, lambda e: isinstance(e, ast.Attribute)
+                            and isinstance(e.value, ast.Name) and e.value.id == receiver):
+                uses.setdefault(node.value.attr, []).append(node)  # type: ignore[attr-defined]
+        defined = bound_names(cls.body)
+        for attr, made in makers.items():
+            if (made[0] is not None and made.count(made[0]) == len(made) == stores[attr]
+                    and not defined[attr]):
+                yield _instance(made[0], uses.get(attr, []), index, skip=1)
+
+
+def _assigned(target: ast.Attribute, index: Index, known: Known) -> Message | None:
+    """The message ``target = Type()`` assigns (the only target), or None."""
+    parent = index.parents.get(id(target))
+    if isinstance(parent, ast.Assign) and parent.targets == [target] \
+            and isinstance(parent.value, ast.Call):
+        return known(parent.value.func)
+    return None

@@ -1,0 +1,180 @@
+"""PYC019: a message constructed or used with a field its class does not have."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.message_fields import (CONSTRUCTOR_OPTIONS, Message, close_field,
+                                              message_of, nested_message)
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.model.static_branches import dead_lines, depends_on_ros_distro
+from pkgtool.rules.python._message_instances import (Instance, Known, attribute_instances,
+                                                     local_instances)
+from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
+from pkgtool.rules.registry import rule
+
+_GUARDS = frozenset({"AttributeError", "Exception", "BaseException"})
+_PROBES = frozenset({"hasattr", "getattr"})
+
+
+def _known(package: Package, index: Index) -> Known:
+    """What a callee stands for: a message class of a package the table speaks for here
+    (not a ROS 1 package, not one of the workspace's own packages)."""
+    manifest = package.manifest
+    ros1 = manifest is not None and manifest.is_ros1
+
+    def known(func: ast.expr) -> Message | None:
+        dotted = qualified(func, index.aliases)
+        if ros1 or dotted is None or package.context.workspace.get(dotted.split(".")[0]):
+            return None
+        return message_of(dotted, package.context.distro)
+    return known
+
+
+def _problem(message: Message, name: str) -> str:
+    """```pkg/msg/Name` has no field `name``` with a near miss or the fields there are."""
+    close = close_field(message, name)
+    fields = ", ".join(f"`{f}`" for f in message.fields)
+    hint = f"did you mean `{close}`?" if close else f"its fields: {fields}" if fields else (
+        "it has no fields")
+    return f"`{message.name}` has no field `{name}` ({hint})"
+
+
+def _silent_lines(tree: ast.Module) -> list[tuple[int, int]]:
+    """Line ranges never checked: branches that do not run under ROS 2 (``if ROS_VERSION ==
+    1:``) and both branches of a test on the ROS distribution (written for some only)."""
+    return [*dead_lines(tree), *((node.lineno, node.end_lineno or node.lineno)
+                                 for node in ast.walk(tree) if isinstance(node, ast.If)
+                                 and depends_on_ros_distro(node.test))]
+
+
+def _probed(index: Index) -> frozenset[str]:
+    """Attribute names the module asks ``hasattr`` or ``getattr`` about."""
+    return frozenset(call.args[1].value for call in index.calls
+                     if isinstance(call.func, ast.Name) and call.func.id in _PROBES
+                     and len(call.args) > 1 and isinstance(call.args[1], ast.Constant)
+                     and isinstance(call.args[1].value, str))
+
+
+def _guarded(node: ast.Attribute, index: Index, probed: frozenset[str]) -> bool:
+    """True for a name the module probes for, or inside a ``try`` that catches
+    AttributeError (or anything): code that expects the attribute may be missing."""
+    if node.attr in probed:
+        return True
+    child, parent = node, index.parents.get(id(node))
+    while parent is not None:
+        if isinstance(parent, ast.Try) and child in parent.body and any(
+                h.type is None or {n.id for n in ast.walk(h.type) if isinstance(n, ast.Name)}
+                & _GUARDS for h in parent.handlers):
+            return True
+        child, parent = parent, index.parents.get(id(parent))
+    return False
+
+
+def _wrong_attributes(instance: Instance, index: Index, probed: frozenset[str]
+                      ) -> Iterator[tuple[ast.Attribute, Message]]:
+    """Attributes taken on the instance, or on its message-typed fields, that the message
+    there does not have."""
+    for use in instance.uses:
+        node: ast.AST = use
+        message: Message | None = instance.message
+        path: tuple[str, ...] = ()
+        while isinstance(node, ast.Attribute) and message is not None:
+            if node.attr.startswith("_"):
+                break
+            if not message.has(node.attr):
+                if not _guarded(node, index, probed):
+                    yield node, message
+                break
+            path = (*path, node.attr)
+            message = None if path in instance.stored else nested_message(message, node.attr)
+            parent = index.parents.get(id(node))
+            node = parent if isinstance(parent, ast.Attribute) and parent.value is node else None
+
+
+@rule("PYC019", "unknown-message-field", Severity.ERROR,
+      fix="Use a field the message has (see `ros2 interface show <type>`)")
+def unknown_message_field(package: Package) -> Iterator[Hit]:
+    """A message is given, set or read a field its class does not have.
+
+    ## What it does
+    Reports keyword arguments of a message constructor that are not fields of the message
+    (`String(date='hi')`), and attributes read or set on a message instance that its class
+    does not have (`msg.dat = 'hi'`, `twist.linear.xx = 1.0`, `msg.header.stamp.secs`), with
+    the field meant when one is spelled alike. Checked are the messages, service requests
+    and responses and action goals, results and feedbacks of pkgtool's table of the Jazzy
+    interface packages installable as wheels (`std_msgs`, `geometry_msgs`, `sensor_msgs`,
+    `nav_msgs`, `std_srvs`, ...), for a jazzy target, imported by name (an import is the
+    only binding of the name in the module). An instance is certain only as a local
+    variable bound once in its function (or module) by `msg = Type()`, never otherwise
+    (no parameter, no second assignment, no `global`), or as `self.x` in a class whose
+    methods all assign `self.x = Type()` when nothing else in the module stores an
+    attribute `x` and no `setattr` could; fields of fields are followed while their message
+    class is certain (not after `msg.pose = ...`). Names starting with `_`, constants
+    (`GoalStatus.STATUS_SUCCEEDED`), code inside `try` blocks that catch `AttributeError`,
+    and names the module passes to `hasattr` are never reported.
+
+    ## Why is this bad?
+    Message classes have `__slots__`: setting or reading a field that does not exist raises
+    `AttributeError`, often inside a callback where it only shows up as a log line. A
+    keyword argument that is not a field is ignored on Jazzy (the value is silently lost;
+    with `ROS_PYTHON_CHECK_FIELDS=1`, and always on Humble, the constructor raises
+    `AssertionError: Invalid arguments passed to constructor`).
+
+    ## Example
+    ```python
+    msg = String()
+    msg.dat = 'hello'
+    cmd = Twist(linear=Vector3(xx=0.5))
+    ```
+
+    ## Use instead
+    ```python
+    msg = String()
+    msg.data = 'hello'
+    cmd = Twist(linear=Vector3(x=0.5))
+    ```
+    """
+    for module, tree, index in installed_trees(package):
+        known = _known(package, index)
+        probed, silent = _probed(index), _silent_lines(tree)
+        for keyword, call, message in _wrong_keywords(index, known):
+            if not _within(keyword, silent):
+                yield Hit(Span(module.path, keyword.lineno, keyword.col_offset + 1),
+                          f"{_problem(message, str(keyword.arg))}: `{ast.unparse(call.func)}` "
+                          "ignores the argument (raises AssertionError where "
+                          "ROS_PYTHON_CHECK_FIELDS=1)", _fix(message, str(keyword.arg)))
+        for instance in [*local_instances(tree, index, known),
+                         *attribute_instances(tree, index, known)]:
+            for node, message in _wrong_attributes(instance, index, probed):
+                if not _within(node, silent):
+                    doing = "reading" if isinstance(node.ctx, ast.Load) else "setting"
+                    yield Hit(Span(module.path, node.end_lineno or node.lineno,
+                                   (node.end_col_offset or 0) - len(node.attr) + 1),
+                              f"{_problem(message, node.attr)}: {doing} `{ast.unparse(node)}` "
+                              "raises AttributeError", _fix(message, node.attr))
+
+
+def _wrong_keywords(index: Index, known: Known
+                    ) -> Iterator[tuple[ast.keyword, ast.Call, Message]]:
+    """Keyword arguments of known message constructors that name no field."""
+    for call in index.calls:
+        message = known(call.func)
+        for keyword in call.keywords if message is not None else ():
+            if keyword.arg and keyword.arg not in message.fields \
+                    and keyword.arg not in CONSTRUCTOR_OPTIONS:
+                yield keyword, call, message
+
+
+def _within(node: ast.AST, ranges: list[tuple[int, int]]) -> bool:
+    """True when ``node`` starts on a line of one of ``ranges``."""
+    line = getattr(node, "lineno", 0)
+    return any(first <= line <= last for first, last in ranges)
+
+
+def _fix(message: Message, name: str) -> str | None:
+    close = close_field(message, name)
+    return f"Write `{close}`" if close else None
