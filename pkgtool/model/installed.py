@@ -114,7 +114,8 @@ def installed_modules(package: Package) -> dict[str, str] | None:
             by_folder.setdefault(posixpath.dirname(file), []).append(file)
     modules: dict[str, str] = {}
     for name in setup.packages.names if setup.packages else ():
-        dotted = name.replace("/", ".")  # 'src/pkg' installs to src/pkg: `src.pkg`, namespace
+        # 'src/pkg' (also 'src/pkg/') installs to src/pkg: `src.pkg`, a namespace package
+        dotted = posixpath.normpath(name).replace("/", ".") if "/" in name else name
         for file in by_folder.get(package_folder(name, package_dir), ()):
             stem = posixpath.basename(file)[:-3]
             if file != "setup.py":
