@@ -7,6 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax._newer_syntax import newer_syntax
 from pkgtool.rules.syntax._problems import problem_hits
 
 _PARSE_KINDS = {
@@ -25,6 +26,12 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports XML that is not well-formed, Python with a syntax error, YAML (launch and
     parameter files) or setup.cfg that does not parse, at the line and column the parser gave.
+    Python is parsed by the Python running pkgtool: when that is older than the target
+    distribution's (3.11 for jazzy's 3.12), a failing line that uses syntax the target's Python
+    added is not reported, as the target may well accept it: an f-string that is complete
+    under Python 3.12's rules but reuses its quotes, spans lines or holds a backslash or a
+    comment in a replacement field (PEP 701), type parameters and `type` aliases, `except*`.
+    Run pkgtool on the target's Python for a complete check.
 
     ## Why is this bad?
     colcon, rosdep and ``ros2 launch`` stop at the first unparsable file, and an installed
@@ -40,4 +47,4 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     <name>my_pkg</name>
     ```
     """
-    yield from problem_hits(package, _PARSE_KINDS)
+    yield from problem_hits(package, _PARSE_KINDS, lambda p: not newer_syntax(package, p))
