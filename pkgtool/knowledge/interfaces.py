@@ -10,6 +10,7 @@ of the linted workspace are passed in by the caller.
 from __future__ import annotations
 
 import difflib
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 from functools import cache
@@ -17,8 +18,8 @@ from functools import cache
 from pkgtool.knowledge.tables import DEFAULT_DISTRO, FLAGS, read
 
 __all__ = ["COMPANIONS", "KINDS", "close_interfaces", "companion_of", "interface_kind",
-           "interfaces_of", "is_known_package", "kind_in", "meant_kind", "mismatch",
-           "parse_type", "type_problem"]
+           "generated_module", "interfaces_of", "is_known_package", "kind_in", "meant_kind",
+           "mismatch", "parse_type", "type_problem"]
 
 KINDS = ("msg", "srv", "action")
 Interfaces = Mapping[str, frozenset[str]]
@@ -93,6 +94,13 @@ def interface_kind(package: str, name: str, distro: str = DEFAULT_DISTRO) -> str
     """
     interfaces = interfaces_of(package, distro)
     return kind_in(interfaces, name) if interfaces else None
+
+
+def generated_module(name: str) -> str:
+    """The submodule of ``<pkg>.<kind>`` rosidl_generator_py writes the interface ``name`` to:
+    ``_`` and its lower case with underscores (``_fibonacci``, ``_add_two_ints``, ``_imu``)."""
+    words = re.sub(r"(.)([A-Z][a-z]+)", r"\1_\2", name)
+    return "_" + re.sub(r"([a-z0-9])([A-Z])", r"\1_\2", words).lower()
 
 
 def close_interfaces(interfaces: Interfaces, name: str, kind: str | None = None) -> list[str]:

@@ -5,7 +5,8 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.interfaces import KINDS, WORDS, Mismatch, kind_in, meant_kind, mismatch
+from pkgtool.knowledge.interfaces import (KINDS, WORDS, Mismatch, generated_module, kind_in,
+                                          meant_kind, mismatch)
 from pkgtool.knowledge.ros_names import ROS_SUFFIXES
 from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
@@ -32,9 +33,10 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
     known (`nav2_msgs`) are never reported. The types generated with each service `X`
     (`X_Request`, `X_Response`, `X_Event`) and action `A` (`A_SendGoal_Request`,
     `A_GetResult_Response`, ...) exist where the target distribution's modules export them:
-    since Iron; on humble they are reported with the attribute to use (`X.Request`). A ROS 1
-    (catkin) package is checked against its own interfaces only, where an action `A` is the
-    messages `AAction`, `AGoal`, `AResult`, ... of `pkg.msg`. A name the package's installed
+    since Iron; on humble they are reported with the attribute to use (`X.Request`). The
+    submodule rosidl writes each interface to (`from pkg.action import _fibonacci`) is no
+    mistake. A ROS 1 (catkin) package is checked against its own interfaces only, where an
+    action `A` is the messages `AAction`, `AGoal`, `AResult`, ... of `pkg.msg`. A name the package's installed
     code assigns onto the module (`rosgraph_msgs.msg.Log = rcl_interfaces.msg.Log`, as ROS 1
     compatibility shims do) exists.
 
@@ -77,10 +79,11 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
             if known is None:
                 continue
             patched = patched_interfaces(package)
+            modules = {generated_module(name) for name in known.get(parts[1], ())}
             for name in imported.names:
                 if (parts[0], parts[1], name) in patched:
                     continue
-                found = None if name == "*" else mismatch(
+                found = None if name == "*" or name in modules else mismatch(
                     parts[0], parts[1], name, known, package.context.distro)
                 if found:
                     yield Hit(imported.span, _message(found), _fix(found))
