@@ -7,8 +7,8 @@ writes it back once at the end, merged with what other runs wrote meanwhile.
 The key of a package is a SHA-256 over: the cache schema, pkgtool's version and a fingerprint
 of its installed code and data, the Python version and the installed distributions, the
 package's effective settings (rule selection, severities, path ignores, target distribution),
-the workspace index its rules read (every sibling package's name, interfaces and Python
-packages), and the path and content hash of every file of the package. A file's content hash
+the workspace index its rules read (every sibling package's folder, name, interfaces and
+Python packages), and the path and content hash of every file of the package. A file's content hash
 is reused from the entry when its size and modification time are unchanged and it was last
 modified well before it was hashed (so an edit within the file system's time granularity is
 never missed); otherwise the file is read again.
@@ -84,7 +84,7 @@ Entry = dict[str, Any]
 class LintCache:
     """The lint cache in ``folder`` for one run (one code version, one workspace)."""
 
-    def __init__(self, folder: Path, workspace: Mapping[str, WorkspacePackage]) -> None:
+    def __init__(self, folder: Path, workspace: Mapping[Path, WorkspacePackage]) -> None:
         self.folder = folder / "lint"
         self.base = folder
         self._run_key = _digest([SCHEMA, _code_fingerprint(), _workspace_key(workspace)])
@@ -226,9 +226,9 @@ def _settings_key(settings: Settings) -> list[Any]:
             ignores, settings.rosdistro]
 
 
-def _workspace_key(workspace: Mapping[str, WorkspacePackage]) -> list[Any]:
-    return [[name, p.name, sorted((k, sorted(v)) for k, v in p.interfaces.items()),
-             sorted(p.modules)] for name, p in sorted(workspace.items())]
+def _workspace_key(workspace: Mapping[Path, WorkspacePackage]) -> list[Any]:
+    return [[str(folder), p.name, sorted((k, sorted(v)) for k, v in p.interfaces.items()),
+             sorted(p.modules)] for folder, p in sorted(workspace.items())]
 
 
 def _code_fingerprint() -> list[Any]:

@@ -16,7 +16,7 @@ from typing import TYPE_CHECKING, Optional, Union
 from pkgtool.commands import ExitCode
 from pkgtool.config import ConfigError, ConfigFinder, Layer, Settings, check_rosdistro
 from pkgtool.findings import Finding, Severity
-from pkgtool.model.context import Context, WorkspacePackage, workspace_of
+from pkgtool.model.context import Context, WorkspacePackage, workspace_index, workspace_near
 from pkgtool.report import PackageLabel
 from pkgtool.workspace import discover
 
@@ -94,8 +94,8 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
             finder.settings(here)  # still validate the command line and the config in reach
     except ConfigError as error:
         return LintResult(ExitCode.USAGE, errors=(str(error),), notes=notes)
-    workspace = workspace_of(found.packages, [here / p for p in paths or ["."]
-                                              if (here / p).is_dir()])
+    workspace = workspace_index(found.packages, [here / p for p in paths or ["."]
+                                                 if (here / p).is_dir()])
     jobs = [(root, _label(root, here), setting) for root, setting in zip(found.packages, settings)]
     findings: list[Finding] = []
     labels: list[PackageLabel] = []
@@ -157,7 +157,7 @@ def _model_and_findings(root: Path, *, label: str, settings: Settings, workspace
     from pkgtool.model.package import load_package
     from pkgtool.model.python_visitor import forget_trees
 
-    package = load_package(root, Context(settings.rosdistro, workspace))
+    package = load_package(root, Context(settings.rosdistro, workspace_near(root, workspace)))
     try:
         found = check_package(package, settings.rules, root_label=label,
                               severities=settings.severities)
@@ -170,7 +170,8 @@ def _model_and_findings(root: Path, *, label: str, settings: Settings, workspace
 
 
 Job = tuple[Path, str, Settings]
-Workspace = Mapping[str, WorkspacePackage]
+Workspace = Mapping[Path, WorkspacePackage]
+"""Every package of the run's workspaces by folder (:func:`workspace_index`)."""
 Outcome = Union[tuple[str, list[Finding]], str]
 Checked = tuple[Outcome, Optional["Entry"]]
 """A package's outcome, and the cache entry to record for it (when there is a new one)."""

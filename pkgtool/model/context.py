@@ -2,17 +2,19 @@
 
 The workspace of a package is every package linted in the same run plus, when the package
 lies under the ``src`` folder of a colcon workspace (a folder ``ws`` with ``ws/src``), every
-package colcon would find there. For each one the index keeps its name, the interfaces of its
-``msg/``, ``srv/`` and ``action/`` folders (their subfolders too: see :func:`interface_file`)
-and the other files its CMakeLists.txt generates interfaces from (none when that list is
-open), and its top-level Python packages. Reading is cheap (package.xml's name,
-CMakeLists.txt and a few folder listings) and never raises.
+package colcon would find there; of several packages of one name (two workspaces linted in one
+run) a package sees the nearest one (:func:`workspace_near`). For each one the index keeps
+its name, the interfaces of its ``msg/``, ``srv/`` and ``action/`` folders (their subfolders
+too: see :func:`interface_file`) and the other files its CMakeLists.txt generates interfaces
+from (none when that list is open), and its top-level Python packages. Reading is cheap
+(package.xml's name, CMakeLists.txt and a few folder listings) and never raises.
 """
 
 from __future__ import annotations
 
 import os
 import re
+from collections import Counter
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -124,9 +126,10 @@ def colcon_src(root: Path) -> Path | None:
     return None
 
 
-def workspace_of(roots: Iterable[Path], searched: Iterable[Path] = ()
-                 ) -> dict[str, WorkspacePackage]:
-    """The workspace index of the packages at ``roots`` (absolute): they and their neighbours.
+def workspace_index(roots: Iterable[Path], searched: Iterable[Path] = ()
+                    ) -> dict[Path, WorkspacePackage]:
+    """Every package of the workspace of the packages at ``roots`` (absolute) by folder: they
+    and their neighbours.
 
     A colcon ``src`` folder inside one of the ``searched`` folders (those discovery already
     walked) is not walked again.
@@ -139,8 +142,21 @@ def workspace_of(roots: Iterable[Path], searched: Iterable[Path] = ()
         assert source is not None
         if not any(source == top or top in source.parents for top in walked):
             everything.update(discover([str(source)], cwd=source).packages)
-    found: dict[str, WorkspacePackage] = {}
-    for root in sorted(everything):
-        package = read_workspace_package(root)
-        found.setdefault(package.name, package)
-    return found
+    return {root: read_workspace_package(root) for root in sorted(everything)}
+
+
+def workspace_near(root: Path, index: Mapping[Path, WorkspacePackage]
+                   ) -> dict[str, WorkspacePackage]:
+    """The workspace the package at ``root`` sees, by name: a name several packages of the
+    ``index`` share (two colcon workspaces linted in one run) is the package nearest ``root``
+    (the deepest folder they share, then the first in the index's order): its own workspace's,
+    not another's.
+    """
+    names = Counter(package.name for package in index.values())
+    found: dict[str, tuple[int, WorkspacePackage]] = {}
+    for folder, package in index.items():
+        depth = len(Path(os.path.commonpath((root, folder))).parts) \
+            if names[package.name] > 1 else 0
+        if package.name not in found or depth > found[package.name][0]:
+            found[package.name] = (depth, package)
+    return {name: package for name, (_, package) in found.items()}

@@ -6,7 +6,8 @@ setup.cfg, YAML) or ``<!-- expect: CODE -->`` (XML). Findings with no line of th
 missing file) are listed in an ``EXPECT`` file of the case as ``path:line CODE`` lines.
 ``good`` cases must give no finding of that code. A case that is not a package but a colcon
 workspace (``<case>/src/<package>/...``) is linted package by package with its workspace, as
-``pkgtool lint`` does; its paths are then relative to the case. A case may name the target
+``pkgtool lint`` does; its paths are then relative to the case. So is a case holding several
+workspaces (``<case>/<ws>/src/<package>/...``), linted in one run. A case may name the target
 distribution in a ``ROSDISTRO`` file, and list in a ``GROW`` file (one path a line) files the
 test pads with blank lines past pkgtool's read limit, so no multi-megabyte file is committed.
 """
@@ -20,7 +21,7 @@ from pathlib import Path
 import pytest
 
 from pkgtool.findings import Finding
-from pkgtool.model.context import Context, workspace_of
+from pkgtool.model.context import Context, workspace_index, workspace_near
 from pkgtool.model.files import MAX_FILE_BYTES
 from pkgtool.model.package import load_package
 from pkgtool.workspace import discover, is_package
@@ -76,12 +77,15 @@ def _findings(case: Path, code: str) -> list[tuple[str, Finding]]:
     """(package folder relative to the case, finding) for every finding of ``code``."""
     marker = case / "ROSDISTRO"
     distro = marker.read_text().strip() if marker.is_file() else Context().distro
-    is_workspace = not is_package(case) and (case / "src").is_dir()
-    roots = list(discover(["src"], cwd=case).packages) if is_workspace else [case]
-    workspace = workspace_of(roots) if is_workspace else {}
+    sources = [] if is_package(case) else [str(src.relative_to(case)) for src in
+                                           [case / "src", *sorted(case.glob("*/src"))]
+                                           if src.is_dir()]
+    is_workspace = bool(sources)
+    roots = list(discover(sources, cwd=case).packages) if is_workspace else [case]
+    index = workspace_index(roots) if is_workspace else {}
     return [("" if root == case else root.relative_to(case).as_posix() + "/", finding)
-            for root in roots
-            for finding in findings(load_package(root, Context(distro, workspace)), code)]
+            for root in roots for finding in
+            findings(load_package(root, Context(distro, workspace_near(root, index))), code)]
 
 
 @pytest.mark.parametrize(("code", "case"), _cases("bad"), ids=lambda v: getattr(v, "name", v))
