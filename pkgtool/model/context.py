@@ -149,14 +149,18 @@ def workspace_near(root: Path, index: Mapping[Path, WorkspacePackage]
                    ) -> dict[str, WorkspacePackage]:
     """The workspace the package at ``root`` sees, by name: a name several packages of the
     ``index`` share (two colcon workspaces linted in one run) is the package nearest ``root``
-    (the deepest folder they share, then the first in the index's order): its own workspace's,
-    not another's.
+    (the deepest folder they share): its own workspace's, not another's. When several are
+    equally near and differ (the name is in other workspaces only), only the name is known.
     """
     names = Counter(package.name for package in index.values())
-    found: dict[str, tuple[int, WorkspacePackage]] = {}
+    nearest: dict[str, tuple[int, list[WorkspacePackage]]] = {}
     for folder, package in index.items():
         depth = len(Path(os.path.commonpath((root, folder))).parts) \
             if names[package.name] > 1 else 0
-        if package.name not in found or depth > found[package.name][0]:
-            found[package.name] = (depth, package)
-    return {name: package for name, (_, package) in found.items()}
+        best = nearest.get(package.name)
+        if best is None or depth > best[0]:
+            nearest[package.name] = (depth, [package])
+        elif depth == best[0]:
+            best[1].append(package)
+    return {name: found[0] if all(p == found[0] for p in found) else WorkspacePackage(name)
+            for name, (_, found) in nearest.items()}
