@@ -36,9 +36,9 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
     since Iron; on humble they are reported with the attribute to use (`X.Request`). The
     submodule rosidl writes each interface to (`from pkg.action import _fibonacci`) is no
     mistake. A ROS 1 (catkin) package is checked against its own interfaces only, where an
-    action `A` is the messages `AAction`, `AGoal`, `AResult`, ... of `pkg.msg`. A name the package's installed
-    code assigns onto the module (`rosgraph_msgs.msg.Log = rcl_interfaces.msg.Log`, as ROS 1
-    compatibility shims do) exists.
+    action `A` is the messages `AAction`, `AGoal`, `AResult`, ... of `pkg.msg`. A name the
+    package's installed code assigns onto the module (`rosgraph_msgs.msg.Log =
+    rcl_interfaces.msg.Log`, as ROS 1 compatibility shims do) exists.
 
     Also reports a misspelled module of an interface package (`std_msgs.msgs`,
     `geometry_msgs.message`, `example_interfaces.srvs`, `from std_msgs import Msg`): the
