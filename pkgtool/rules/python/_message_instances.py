@@ -17,6 +17,7 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 from pkgtool.knowledge.message_fields import Message
+from pkgtool.model.ast_nodes import nodes_of, nodes_of_class
 from pkgtool.rules.scopes import bound_names, scope_walk
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index
 
@@ -102,7 +103,7 @@ def local_instances(tree: ast.Module, index: Index, known: Known) -> Iterator[In
                 if (message := known(call.func)) is not None]
         if not made:
             continue
-        nodes = list(ast.walk(scope))
+        nodes = list(nodes_of(scope) if isinstance(scope, ast.Module) else ast.walk(scope))
         counts = _all_bindings(nodes)
         own = counts if isinstance(scope, ast.Module) else bound_names(scope)
         for name, message in made:
@@ -124,14 +125,14 @@ def _receiver(method: ast.AST) -> str | None:
 def _dynamic(tree: ast.Module) -> bool:
     """True when the module calls ``setattr`` or ``delattr`` (any attribute may change)."""
     return any(isinstance(n, ast.Call) and isinstance(n.func, ast.Name)
-               and n.func.id in ("setattr", "delattr") for n in ast.walk(tree))
+               and n.func.id in ("setattr", "delattr") for n in nodes_of_class(tree, ast.Call))
 
 
 def attribute_instances(tree: ast.Module, index: Index, known: Known) -> Iterator[Instance]:
     """``self.x`` attributes of classes that always assign them a fresh message."""
     if _dynamic(tree):
         return
-    stores = Counter(n.attr for n in ast.walk(tree)
+    stores = Counter(n.attr for n in nodes_of_class(tree, ast.Attribute)
                      if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load))
     for cls in index.classes:
         makers: dict[str, list[Message | None]] = {}

@@ -8,6 +8,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.message_fields import (CONSTRUCTOR_OPTIONS, Message, close_field,
                                               message_of, nested_message)
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import dead_lines, depends_on_ros_distro
@@ -47,7 +48,8 @@ def _silent_lines(tree: ast.Module) -> list[tuple[int, int]]:
     """Line ranges never checked: branches that do not run under ROS 2 (``if ROS_VERSION ==
     1:``) and both branches of a test on the ROS distribution (written for some only)."""
     return [*dead_lines(tree), *((node.lineno, node.end_lineno or node.lineno)
-                                 for node in ast.walk(tree) if isinstance(node, ast.If)
+                                 for node in nodes_of_class(tree, ast.If)
+                                 if isinstance(node, ast.If)
                                  and depends_on_ros_distro(node.test))]
 
 
