@@ -18,7 +18,7 @@ from dataclasses import dataclass
 
 from pkgtool.knowledge.message_fields import Message
 from pkgtool.model.ast_nodes import nodes_of, nodes_of_class
-from pkgtool.rules.scopes import bound_names, scope_walk
+from pkgtool.rules.scopes import bound_names
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index
 
 Known = Callable[[ast.expr], Message | None]
@@ -96,20 +96,37 @@ def _fresh(node: ast.AST) -> tuple[str, ast.Call] | None:
     return None
 
 
+Scope = ast.Module | ast.FunctionDef | ast.AsyncFunctionDef
+
+
 def local_instances(tree: ast.Module, index: Index, known: Known) -> Iterator[Instance]:
     """Local variables (of functions and of the module) that hold a fresh message."""
-    for scope in [tree, *index.functions]:
-        made = [(name, message) for name, call in filter(None, map(_fresh, scope_walk(scope.body)))
-                if (message := known(call.func)) is not None]
-        if not made:
-            continue
+    made: dict[int, tuple[Scope, list[tuple[str, Message]]]] = {}
+    for node in nodes_of_class(tree, ast.Assign):
+        fresh = _fresh(node)
+        message = known(fresh[1].func) if fresh is not None else None
+        scope = _scope(node, tree, index) if message is not None else None
+        if fresh is not None and message is not None and scope is not None:
+            made.setdefault(id(scope), (scope, []))[1].append((fresh[0], message))
+    for scope, found in made.values():
         nodes = list(nodes_of(scope) if isinstance(scope, ast.Module) else ast.walk(scope))
         counts = _all_bindings(nodes)
         own = counts if isinstance(scope, ast.Module) else bound_names(scope)
-        for name, message in made:
+        for name, message in found:
             if counts[name] == own[name] == 1:
                 uses = list(_on(nodes, lambda e: isinstance(e, ast.Name) and e.id == name))
                 yield _instance(message, uses, index)
+
+
+def _scope(statement: ast.AST, tree: ast.Module, index: Index) -> Scope | None:
+    """The function whose own body holds ``statement``, ``tree`` at module level, None in a
+    class body."""
+    parent = index.parents.get(id(statement))
+    while parent is not None and not isinstance(parent, (*FUNCTIONS, ast.ClassDef)):
+        parent = index.parents.get(id(parent))
+    if isinstance(parent, ast.ClassDef):
+        return None
+    return parent if isinstance(parent, FUNCTIONS) else tree
 
 
 def _receiver(method: ast.AST) -> str | None:
@@ -130,7 +147,10 @@ def _dynamic(tree: ast.Module) -> bool:
 
 def attribute_instances(tree: ast.Module, index: Index, known: Known) -> Iterator[Instance]:
     """``self.x`` attributes of classes that always assign them a fresh message."""
-    if _dynamic(tree):
+    if _dynamic(tree) or not any(
+            len(node.targets) == 1 and isinstance(node.targets[0], ast.Attribute)
+            and isinstance(node.value, ast.Call) and known(node.value.func) is not None
+            for node in nodes_of_class(tree, ast.Assign)):  # type: ignore[attr-defined]
         return
     stores = Counter(n.attr for n in nodes_of_class(tree, ast.Attribute)
                      if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load))
