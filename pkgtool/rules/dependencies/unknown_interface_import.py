@@ -79,7 +79,8 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
             if known is None:
                 continue
             patched = patched_interfaces(package)
-            modules = {generated_module(name) for name in known.get(parts[1], ())}
+            modules = {generated_module(name) for name in known.get(parts[1], ())} \
+                if any(name.startswith("_") for name in imported.names) else set()
             for name in imported.names:
                 if (parts[0], parts[1], name) in patched:
                     continue
