@@ -110,6 +110,26 @@ def test_ctrl_c_prints_one_line_and_exits_130(tmp_path: Path) -> None:
     assert (code, err) == (130, "Interrupted: nothing was written\n")
 
 
+FAST_LINT_INTERRUPT = """
+import sys, time
+from pkgtool import cli_fast, cli_lint_run
+
+def sleepy(**call):
+    print('ready', flush=True)
+    time.sleep(60)
+
+cli_lint_run.lint_call = sleepy
+sys.argv = ['pkgtool', 'lint', '--no-cache', '.']
+cli_fast.main()
+"""
+
+
+def test_ctrl_c_in_the_fast_start_of_lint_prints_one_line_and_exits_130() -> None:
+    code, err = _interrupted([sys.executable, "-c", FAST_LINT_INTERRUPT], "ready",
+                             dict(os.environ))
+    assert (code, err) == (130, "Interrupted: nothing was written\n")
+
+
 @pytest.mark.slow
 @pytest.mark.colcon
 def test_ctrl_c_during_a_build_leaves_nothing_behind(tmp_path: Path) -> None:
