@@ -1,5 +1,5 @@
-"""What PYC007-PYC009, PYC013, PYC015, PYC017 and PYC018 share: calls of rclpy's API and their
-arguments, Node constructions.
+"""What PYC007-PYC009, PYC013, PYC015, PYC017, PYC018 and PYC020 share: calls of rclpy's API
+and their arguments, literals, Node constructions.
 
 Only modules that import rclpy and do not define a method of the same name themselves are
 looked at, so a project's own ``create_publisher`` wrapper is never judged by rclpy's signature.
@@ -22,6 +22,9 @@ PARAMETERS = {
     "create_client": ("srv_type", "srv_name"),
 }
 """Required parameters of rclpy ``Node`` methods (Jazzy), in order."""
+_DISPLAYS = {ast.List: "list", ast.Tuple: "tuple", ast.Dict: "dict", ast.Set: "set",
+             ast.JoinedStr: "str"}
+"""Literal displays and the type they build."""
 NODE_CLASSES = frozenset({"rclpy.node.Node", "rclpy.lifecycle.LifecycleNode",
                           "rclpy.lifecycle.Node", "rclpy.create_node"})
 """What constructs a node: rclpy's node classes and ``create_node``."""
@@ -77,6 +80,17 @@ def argument(call: ast.Call, parameters: tuple[str, ...], name: str) -> ast.expr
     positional = [a for a in call.args if not isinstance(a, ast.Starred)]
     return positional[position] if position < len(positional) and \
         len(positional) == len(call.args) else None
+
+
+def literal_type(value: ast.expr) -> str | None:
+    """The type a literal builds (``str`` for ``'a'`` and f-strings, ``int`` for ``-1``,
+    ``NoneType``, ``list`` for a list display, ...); None for anything else."""
+    if isinstance(value, ast.UnaryOp) and isinstance(value.op, (ast.USub, ast.UAdd)) and \
+            isinstance(value.operand, ast.Constant):
+        value = value.operand
+    if isinstance(value, ast.Constant):
+        return type(value.value).__name__
+    return _DISPLAYS.get(type(value))
 
 
 def unpacks(call: ast.Call) -> bool:

@@ -1,4 +1,5 @@
-"""Expressions that certainly hold a fresh instance of a known message class (PYC019).
+"""Expressions that certainly hold a fresh instance of a known message class (PYC019), or
+another object a call certainly makes (a publisher, PYC020).
 
 A local variable holds one when its scope (a function, or the module) binds it exactly once,
 ``msg = String()``, and nothing in the scope or inside it binds the name otherwise (no
@@ -15,25 +16,33 @@ import ast
 from collections import Counter
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
+from typing import Generic, TypeVar
 
-from pkgtool.knowledge.message_fields import Message
+from pkgtool.knowledge.message_fields import Message, message_of
 from pkgtool.model.ast_nodes import nodes_of, nodes_of_class
+from pkgtool.model.package import Package
 from pkgtool.rules.scopes import bound_names
-from pkgtool.rules.syntax_trees import FUNCTIONS, Index
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, qualified
 
 Known = Callable[[ast.expr], Message | None]
 """The known message class a constructor's callee stands for, or None."""
+T = TypeVar("T")
+Maker = Callable[[ast.Call], T | None]
+"""What a call certainly makes (a known message, a publisher), or None."""
 
 
 @dataclass(frozen=True, slots=True)
-class Instance:
-    """Where a message instance is used: ``uses`` are the attributes read or stored on it
-    (``msg.data``, ``self.msg.data``) and ``stored`` the attribute paths assigned anywhere
-    below it (``("header", "stamp")`` for ``msg.header.stamp = ...``)."""
+class Instance(Generic[T]):
+    """Where an object (``message``: a known message or what else a maker makes) is used:
+    ``uses`` are the attributes read or stored on it (``msg.data``, ``self.msg.data``),
+    ``refs`` the expressions reading the object itself (``msg``, ``self.msg``) and ``stored``
+    the attribute paths assigned anywhere below it (``("header", "stamp")`` for
+    ``msg.header.stamp = ...``)."""
 
-    message: Message
+    message: T
     uses: list[ast.Attribute]
     stored: frozenset[tuple[str, ...]]
+    refs: list[ast.expr]
 
 
 def _all_bindings(nodes: list[ast.AST]) -> Counter[str]:
@@ -74,8 +83,8 @@ def _on(nodes: list[ast.AST], is_root: Callable[[ast.expr], bool]) -> Iterator[a
     return (n for n in nodes if isinstance(n, ast.Attribute) and is_root(n.value))
 
 
-def _instance(message: Message, uses: list[ast.Attribute], index: Index, skip: int = 0
-              ) -> Instance:
+def _instance(message: T, uses: list[ast.Attribute], refs: list[ast.expr], index: Index,
+              skip: int = 0) -> Instance[T]:
     """The instance used by ``uses``: the paths stored under it (the first ``skip`` names of
     each path are the way to the instance itself)."""
     stored = set()
@@ -85,7 +94,7 @@ def _instance(message: Message, uses: list[ast.Attribute], index: Index, skip: i
             top = index.parents[id(top)]
         if isinstance(top, ast.Attribute) and not isinstance(top.ctx, ast.Load):
             stored.add(_path(top)[skip:])
-    return Instance(message, uses, frozenset(stored))
+    return Instance(message, uses, frozenset(stored), refs)
 
 
 def _fresh(node: ast.AST) -> tuple[str, ast.Call] | None:
@@ -99,12 +108,12 @@ def _fresh(node: ast.AST) -> tuple[str, ast.Call] | None:
 Scope = ast.Module | ast.FunctionDef | ast.AsyncFunctionDef
 
 
-def local_instances(tree: ast.Module, index: Index, known: Known) -> Iterator[Instance]:
-    """Local variables (of functions and of the module) that hold a fresh message."""
-    made: dict[int, tuple[Scope, list[tuple[str, Message]]]] = {}
+def local_instances(tree: ast.Module, index: Index, make: Maker[T]) -> Iterator[Instance[T]]:
+    """Local variables (of functions and of the module) that hold what ``make`` makes."""
+    made: dict[int, tuple[Scope, list[tuple[str, T]]]] = {}
     for node in nodes_of_class(tree, ast.Assign):
         fresh = _fresh(node)
-        message = known(fresh[1].func) if fresh is not None else None
+        message = make(fresh[1]) if fresh is not None else None
         scope = _scope(node, tree, index) if message is not None else None
         if fresh is not None and message is not None and scope is not None:
             made.setdefault(id(scope), (scope, []))[1].append((fresh[0], message))
@@ -115,7 +124,9 @@ def local_instances(tree: ast.Module, index: Index, known: Known) -> Iterator[In
         for name, message in found:
             if counts[name] == own[name] == 1:
                 uses = list(_on(nodes, lambda e: isinstance(e, ast.Name) and e.id == name))
-                yield _instance(message, uses, index)
+                refs: list[ast.expr] = [n for n in nodes if isinstance(n, ast.Name)
+                                        and n.id == name and isinstance(n.ctx, ast.Load)]
+                yield _instance(message, uses, refs, index)
 
 
 def _scope(statement: ast.AST, tree: ast.Module, index: Index) -> Scope | None:
@@ -145,24 +156,28 @@ def _dynamic(tree: ast.Module) -> bool:
                and n.func.id in ("setattr", "delattr") for n in nodes_of_class(tree, ast.Call))
 
 
-def attribute_instances(tree: ast.Module, index: Index, known: Known) -> Iterator[Instance]:
-    """``self.x`` attributes of classes that always assign them a fresh message."""
+def attribute_instances(tree: ast.Module, index: Index, make: Maker[T]
+                        ) -> Iterator[Instance[T]]:
+    """``self.x`` attributes of classes that always assign them what ``make`` makes."""
     if _dynamic(tree) or not any(
             len(node.targets) == 1 and isinstance(node.targets[0], ast.Attribute)
-            and isinstance(node.value, ast.Call) and known(node.value.func) is not None
+            and isinstance(node.value, ast.Call) and make(node.value) is not None
             for node in nodes_of_class(tree, ast.Assign)):  # type: ignore[attr-defined]
         return
     stores = Counter(n.attr for n in nodes_of_class(tree, ast.Attribute)
                      if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load))
     for cls in index.classes:
-        makers: dict[str, list[Message | None]] = {}
+        makers: dict[str, list[T | None]] = {}
         uses: dict[str, list[ast.Attribute]] = {}
+        refs: dict[str, list[ast.expr]] = {}
         for method in cls.body:
             receiver = _receiver(method)
             nodes = list(ast.walk(method)) if receiver else []
             for node in _on(nodes, lambda e: isinstance(e, ast.Name) and e.id == receiver):
                 if not isinstance(node.ctx, ast.Load):
-                    makers.setdefault(node.attr, []).append(_assigned(node, index, known))
+                    makers.setdefault(node.attr, []).append(_assigned(node, index, make))
+                else:
+                    refs.setdefault(node.attr, []).append(node)
             for node in _on(nodes, lambda e: isinstance(e, ast.Attribute)
                             and isinstance(e.value, ast.Name) and e.value.id == receiver):
                 uses.setdefault(node.value.attr, []).append(node)  # type: ignore[attr-defined]
@@ -170,13 +185,34 @@ def attribute_instances(tree: ast.Module, index: Index, known: Known) -> Iterato
         for attr, made in makers.items():
             if (made[0] is not None and made.count(made[0]) == len(made) == stores[attr]
                     and not defined[attr]):
-                yield _instance(made[0], uses.get(attr, []), index, skip=1)
+                yield _instance(made[0], uses.get(attr, []), refs.get(attr, []), index, skip=1)
 
 
-def _assigned(target: ast.Attribute, index: Index, known: Known) -> Message | None:
-    """The message ``target = Type()`` assigns (the only target), or None."""
+def _assigned(target: ast.Attribute, index: Index, make: Maker[T]) -> T | None:
+    """What ``target = call(...)`` (the only target) assigns, as ``make`` knows, or None."""
     parent = index.parents.get(id(target))
     if isinstance(parent, ast.Assign) and parent.targets == [target] \
             and isinstance(parent.value, ast.Call):
-        return known(parent.value.func)
+        return make(parent.value)
     return None
+
+
+def message_instances(tree: ast.Module, index: Index, known: Known) -> list[Instance[Message]]:
+    """The local variables and ``self.x`` attributes that hold a fresh known message."""
+    def make(call: ast.Call) -> Message | None:
+        return known(call.func)
+    return [*local_instances(tree, index, make), *attribute_instances(tree, index, make)]
+
+
+def known_messages(package: Package, index: Index) -> Known:
+    """What a callee stands for: a message class of a package the table speaks for here
+    (not a ROS 1 package, not one of the workspace's own packages)."""
+    manifest = package.manifest
+    ros1 = manifest is not None and manifest.is_ros1
+
+    def known(func: ast.expr) -> Message | None:
+        dotted = qualified(func, index.aliases)
+        if ros1 or dotted is None or package.context.workspace.get(dotted.split(".")[0]):
+            return None
+        return message_of(dotted, package.context.distro)
+    return known

@@ -7,32 +7,18 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.message_fields import (CONSTRUCTOR_OPTIONS, Message, close_field,
-                                              message_of, nested_message)
+                                              nested_message)
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import dead_lines, depends_on_ros_distro
-from pkgtool.rules.python._message_instances import (Instance, Known, attribute_instances,
-                                                     local_instances)
-from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
+from pkgtool.rules.python._message_instances import (Instance, Known, known_messages,
+                                                     message_instances)
+from pkgtool.rules.syntax_trees import Index, installed_trees
 from pkgtool.rules.registry import rule
 
 _GUARDS = frozenset({"AttributeError", "Exception", "BaseException"})
 _PROBES = frozenset({"hasattr", "getattr"})
-
-
-def _known(package: Package, index: Index) -> Known:
-    """What a callee stands for: a message class of a package the table speaks for here
-    (not a ROS 1 package, not one of the workspace's own packages)."""
-    manifest = package.manifest
-    ros1 = manifest is not None and manifest.is_ros1
-
-    def known(func: ast.expr) -> Message | None:
-        dotted = qualified(func, index.aliases)
-        if ros1 or dotted is None or package.context.workspace.get(dotted.split(".")[0]):
-            return None
-        return message_of(dotted, package.context.distro)
-    return known
 
 
 def _problem(message: Message, name: str) -> str:
@@ -104,10 +90,11 @@ def unknown_message_field(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Reports keyword arguments of a message constructor that are not fields of the message
-    (`String(date='hi')`), and attributes read or set on a message instance that its class
-    does not have (`msg.dat = 'hi'`, `twist.linear.xx = 1.0`, `msg.header.stamp.secs`), with
-    the field meant when one is spelled alike. Checked are the messages, service requests
-    and responses and action goals, results and feedbacks of pkgtool's table of the Jazzy
+    (`String(date='hi')`), positional arguments of a message constructor (`String('hi')`),
+    and attributes read or set on a message instance that its class does not have
+    (`msg.dat = 'hi'`, `twist.linear.xx = 1.0`, `msg.header.stamp.secs`), with the field
+    meant when one is spelled alike. Checked are the messages, service requests and
+    responses and action goals, results and feedbacks of pkgtool's table of the Jazzy
     interface packages installable as wheels (`std_msgs`, `geometry_msgs`, `sensor_msgs`,
     `nav_msgs`, `std_srvs`, ...), for a jazzy target, imported by name (an import is the
     only binding of the name in the module). An instance is certain only as a local
@@ -124,13 +111,15 @@ def unknown_message_field(package: Package) -> Iterator[Hit]:
     `AttributeError`, often inside a callback where it only shows up as a log line. A
     keyword argument that is not a field is ignored on Jazzy (the value is silently lost;
     with `ROS_PYTHON_CHECK_FIELDS=1`, and always on Humble, the constructor raises
-    `AssertionError: Invalid arguments passed to constructor`).
+    `AssertionError: Invalid arguments passed to constructor`). Message constructors take
+    keyword arguments only: `String('hi')` raises `TypeError`.
 
     ## Example
     ```python
     msg = String()
     msg.dat = 'hello'
     cmd = Twist(linear=Vector3(xx=0.5))
+    hello = String('hi')
     ```
 
     ## Use instead
@@ -138,19 +127,25 @@ def unknown_message_field(package: Package) -> Iterator[Hit]:
     msg = String()
     msg.data = 'hello'
     cmd = Twist(linear=Vector3(x=0.5))
+    hello = String(data='hi')
     ```
     """
     for module, tree, index in installed_trees(package):
-        known = _known(package, index)
+        known = known_messages(package, index)
         probed, silent = _probed(index), _silent_lines(tree)
+        for argument, call, message in _positional(index, known):
+            if not _within(argument, silent):
+                yield Hit(Span(module.path, argument.lineno, argument.col_offset + 1),
+                          f"`{ast.unparse(call.func)}` is given the positional argument "
+                          f"`{ast.unparse(argument)}`: `{message.name}` takes fields as keywords "
+                          "only, the constructor raises TypeError", _keyword_fix(message, call))
         for keyword, call, message in _wrong_keywords(index, known):
             if not _within(keyword, silent):
                 yield Hit(Span(module.path, keyword.lineno, keyword.col_offset + 1),
                           f"{_problem(message, str(keyword.arg))}: `{ast.unparse(call.func)}` "
                           "ignores the argument (raises AssertionError where "
                           "ROS_PYTHON_CHECK_FIELDS=1)", _fix(message, str(keyword.arg)))
-        for instance in [*local_instances(tree, index, known),
-                         *attribute_instances(tree, index, known)]:
+        for instance in message_instances(tree, index, known):
             for node, message in _wrong_attributes(instance, index, probed):
                 if not _within(node, silent):
                     doing = "reading" if isinstance(node.ctx, ast.Load) else "setting"
@@ -169,6 +164,22 @@ def _wrong_keywords(index: Index, known: Known
             if keyword.arg and keyword.arg not in message.fields \
                     and keyword.arg not in CONSTRUCTOR_OPTIONS:
                 yield keyword, call, message
+
+
+def _positional(index: Index, known: Known) -> Iterator[tuple[ast.expr, ast.Call, Message]]:
+    """The first positional argument of each known message constructor given some (messages
+    take keyword arguments only); calls unpacking ``*args`` are left alone."""
+    for call in index.calls:
+        if call.args and not any(isinstance(a, ast.Starred) for a in call.args) and (
+                message := known(call.func)) is not None:
+            yield call.args[0], call, message
+
+
+def _keyword_fix(message: Message, call: ast.Call) -> str | None:
+    """Name the fields the positional arguments would fill in order (``String(data=...)``)."""
+    names = list(message.fields)[:len(call.args)]
+    named = ", ".join(f"{name}=..." for name in names)
+    return f"Name the fields: `{ast.unparse(call.func)}({named})`" if names else None
 
 
 def _within(node: ast.AST, ranges: list[tuple[int, int]]) -> bool:

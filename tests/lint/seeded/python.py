@@ -199,6 +199,12 @@ def qos_depth_as_float(root: Path) -> None:
          "String, topic, self.on_message, 10.0)")
 
 
+@case("PYC018", SRV, "qos_profile=10)")
+def service_qos_as_depth(root: Path) -> None:
+    edit(root, SRV, "self.create_service(Trigger, name, self.on_request)",
+         "self.create_service(Trigger, name, self.on_request, qos_profile=10)")
+
+
 @case("PYC019", TALKER, "msg.dat = f'Hello")
 def message_field_misspelled(root: Path) -> None:
     edit(root, TALKER, "msg.data = f'Hello {self.count}'", "msg.dat = f'Hello {self.count}'")
@@ -219,3 +225,20 @@ def nested_message_field_misspelled(root: Path) -> None:
          "        cmd.linear.xx = 0.5\n        self.get_logger().info(str(cmd))\n")
     edit(root, "package.xml", "  <exec_depend>launch</exec_depend>\n",
          "  <exec_depend>geometry_msgs</exec_depend>\n  <exec_depend>launch</exec_depend>\n")
+
+
+@case("PYC019", TALKER, "msg = String(f'Hello")
+def message_constructor_positional(root: Path) -> None:
+    edit(root, TALKER, "msg = String()\n        msg.data = f'Hello {self.count}'",
+         "msg = String(f'Hello {self.count}')")
+
+
+@case("PYC020", TALKER, "self.publisher.publish(f'Hello")
+def publish_a_string(root: Path) -> None:
+    edit(root, TALKER, "self.publisher.publish(msg)",
+         "self.publisher.publish(f'Hello {self.count}')")
+
+
+@case("PYC020", TALKER, "self.publisher.publish(msg.data)")
+def publish_the_data_field(root: Path) -> None:
+    edit(root, TALKER, "self.publisher.publish(msg)", "self.publisher.publish(msg.data)")

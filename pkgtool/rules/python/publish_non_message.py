@@ -1,0 +1,124 @@
+"""PYC020: a publisher given something that is certainly not a message of its type."""
+
+from __future__ import annotations
+
+import ast
+import re
+from collections.abc import Callable, Iterator
+from dataclasses import dataclass
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.message_fields import Message
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.node_api import PARAMETERS, argument, literal_type, unpacks
+from pkgtool.rules.python._message_instances import (Instance, Known, attribute_instances,
+                                                     known_messages, local_instances,
+                                                     message_instances)
+from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import Index, installed_trees
+
+_ACCEPTED = frozenset({"bytes", "NoneType", "ellipsis"})
+"""Literals never reported: ``bytes`` (published raw, serialized) and ``None``/``...``."""
+_BASIC = re.compile(r"boolean|float|double|u?int(?:8|16|32|64)|w?string(?:<\d+>)?")
+"""Field types whose values are plain Python values (``bool``, ``float``, ``int``, ``str``)."""
+
+
+@dataclass(frozen=True, slots=True)
+class Publisher:
+    """A publisher made by rclpy's ``create_publisher``, with its message class if known."""
+
+    message: Message | None
+
+
+def _publisher_maker(known: Known) -> Callable[[ast.Call], Publisher | None]:
+    """What a call makes when it is ``x.create_publisher(Type, ...)`` (rclpy's)."""
+    def make(call: ast.Call) -> Publisher | None:
+        if not isinstance(call.func, ast.Attribute) or call.func.attr != "create_publisher" \
+                or unpacks(call) or any(k.arg == "publisher_class" for k in call.keywords):
+            return None
+        kind = argument(call, PARAMETERS["create_publisher"], "msg_type")
+        return Publisher(known(kind) if kind is not None else None)
+    return make
+
+
+def _published(ref: ast.expr, index: Index) -> ast.expr | None:
+    """The argument of ``ref.publish(argument)``, when ``ref`` is so used."""
+    method = index.parents.get(id(ref))
+    call = index.parents.get(id(method))
+    if not (isinstance(method, ast.Attribute) and method.attr == "publish"
+            and isinstance(call, ast.Call) and call.func is method) or unpacks(call):
+        return None
+    return argument(call, ("msg",), "msg") if len(call.args) + len(call.keywords) == 1 else None
+
+
+def _not_a_message(value: ast.expr, publisher: Publisher,
+                   messages: list[Instance[Message]]) -> str | None:
+    """Why ``value`` is certainly no message of the ``publisher``'s type, if it is."""
+    wrong = literal_type(value)
+    if wrong is not None and wrong not in _ACCEPTED:
+        return f"a literal of type `{wrong}`"
+    for instance in messages:
+        if any(use is value for use in instance.uses) and isinstance(value, ast.Attribute):
+            kind = instance.message.fields.get(value.attr, "")
+            if _BASIC.fullmatch(kind):
+                return f"the `{kind}` field `{value.attr}` of a `{instance.message.name}`"
+        expected = publisher.message
+        if expected is not None and instance.message.name != expected.name and any(
+                ref is value for ref in instance.refs):
+            return f"a `{instance.message.name}`, the publisher's type is `{expected.name}`"
+    return None
+
+
+@rule("PYC020", "publish-non-message", Severity.ERROR,
+      fix="Publish a message of the publisher's type (`msg = String(); msg.data = ...`)")
+def publish_non_message(package: Package) -> Iterator[Hit]:
+    """A publisher is given a value that is certainly not a message of its type.
+
+    ## What it does
+    Checks `publish(...)` calls on publishers certainly made by rclpy's `create_publisher`
+    (a local variable bound once by `pub = node.create_publisher(...)`, or `self.pub` in a
+    class whose methods all assign it that way when nothing else in the module stores an
+    attribute `pub`; not with `publisher_class=`, `*args` or `**kwargs`, nor in modules
+    defining their own `create_publisher`), in installed modules. Reports a string, number,
+    boolean, f-string or list, tuple, dict or set literal (`pub.publish('hello')`); a plain
+    field (`string`, `float`, `int32`, ...) of a message instance PYC019 is certain of
+    (`pub.publish(msg.data)`); and such an instance of another known message class than the
+    publisher's (`create_publisher(String, ...)` then `publish(Float32())`'s instance).
+    `bytes` (published as serialized data), names, calls and unknown types are never reported.
+
+    ## Why is this bad?
+    `Publisher.publish` raises `TypeError: Expected <class 'std_msgs.msg._string.String'>,
+    got <class 'str'>` for anything that is not an instance of the publisher's message class
+    (or `bytes`): the node dies the first time it publishes, often inside a timer callback.
+
+    ## Example
+    ```python
+    self.pub = self.create_publisher(String, 'chatter', 10)
+    self.pub.publish('hello')
+    ```
+
+    ## Use instead
+    ```python
+    self.pub = self.create_publisher(String, 'chatter', 10)
+    self.pub.publish(String(data='hello'))
+    ```
+    """
+    for module, tree, index in installed_trees(package):
+        if not any(i.top_level == "rclpy" for i in module.imports) or \
+                any(f.name == "create_publisher" for f in index.functions):
+            continue
+        known = known_messages(package, index)
+        make = _publisher_maker(known)
+        publishers = [*local_instances(tree, index, make),
+                      *attribute_instances(tree, index, make)]
+        messages = message_instances(tree, index, known) if publishers else []
+        for publisher in publishers:
+            for ref in publisher.refs:
+                value = _published(ref, index)
+                why = _not_a_message(value, publisher.message, messages) if value else None
+                if value is not None and why:
+                    yield Hit(Span(module.path, value.lineno, value.col_offset + 1),
+                              f"`{ast.unparse(ref)}.publish()` is given `{ast.unparse(value)}`,"
+                              f" {why}: rclpy raises TypeError (it publishes messages of the "
+                              "publisher's type only)")
