@@ -75,6 +75,7 @@ class _Reader(ast.NodeVisitor):
         self.nodes: list[NodeRef] = []
         self.packages: list[PackageRef] = []
         self.files: list[FileRef] = []
+        self.extended: set[tuple[str, tuple[str, ...]]] = set()  # share paths text is added to
         self.origins = import_origins(tree)
         self.optional = 0  # > 0 inside a block that runs only if some package is installed
         self.distro_branches = 0  # > 0 inside a branch of a test on the ROS distribution
@@ -321,11 +322,21 @@ class _Reader(ast.NodeVisitor):
 
     def visit_BinOp(self, node: ast.BinOp) -> None:
         self._record_path(node)
+        if isinstance(node.op, ast.Add):
+            self._record_extended(node.left)
         self.generic_visit(node)
 
     def visit_JoinedStr(self, node: ast.JoinedStr) -> None:
         self._record_path(node)
+        if node.values and isinstance(node.values[0], ast.FormattedValue):
+            self._record_extended(node.values[0].value)
         self.generic_visit(node)
+
+    def _record_extended(self, node: ast.expr) -> None:
+        """Remember a share path the code appends text to (``base + '_stereo.yaml'``)."""
+        found = self.value(node)
+        if isinstance(found, Share) and found.share and found.parts:
+            self.extended.add((found.package, found.parts))
 
     def _record_path(self, node: ast.expr) -> None:
         found = self.value(node)
@@ -404,14 +415,21 @@ def _join(items: list[Value]) -> Value:
     return Share(head.package, suffix, head.share)
 
 
+def _extends(longer: FileRef, prefix: FileRef, appended_to: bool) -> bool:
+    """True when ``longer`` names a file inside the folder ``prefix``, or (``appended_to``:
+    the code adds text to ``prefix``) a name built from it; such a prefix is no file itself."""
+    whole, start = "/".join(longer.parts), "/".join(prefix.parts)
+    return longer.package == prefix.package and whole != start and (
+        whole.startswith(start + "/") or (appended_to and whole.startswith(start)))
+
+
 def read_python_launch(path: str, tree: ast.Module) -> tuple[
         tuple[NodeRef, ...], tuple[PackageRef, ...], tuple[FileRef, ...]]:
     """The nodes, package lookups and share files of a parsed Python launch file."""
     reader = _Reader(path, tree)
     reader.visit(tree)
     files = [f for f in reader.files if not any(
-        o.package == f.package and o.parts[: len(f.parts)] == f.parts != o.parts
-        for o in reader.files)]
+        _extends(o, f, (f.package, f.parts) in reader.extended) for o in reader.files)]
     unique = {(f.package, f.parts, f.span.line): f for f in reversed(files)}
     return (tuple(reader.nodes), tuple(reader.packages),
             tuple(sorted(unique.values(), key=lambda f: (f.span.line, f.span.col))))
