@@ -40,6 +40,12 @@ TEST = frozenset({"test_depend"})
 ANY = RUNTIME | BUILD_ONLY | TEST
 
 
+def dependency_cause(key: str) -> str:
+    """The root cause "package.xml misspells ``key``": MAN021 states it for a run dependency;
+    DEP001 and LCH002 hits on ``key`` declared nowhere are its consequences."""
+    return f"misspelled-dependency:{key}"
+
+
 @dataclass(frozen=True, slots=True)
 class Need:
     """An import that a package.xml key must provide.

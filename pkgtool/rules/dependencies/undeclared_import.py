@@ -7,8 +7,8 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import (BUILD_ONLY, TEST, Need, also_imported, declared, grouped,
-                                   misnamed, unmet_runtime_needs)
+from pkgtool.rules.imports import (BUILD_ONLY, TEST, Need, also_imported, declared,
+                                   dependency_cause, grouped, misnamed, unmet_runtime_needs)
 from pkgtool.rules.registry import rule
 
 
@@ -54,7 +54,9 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     for need, others in grouped(unmet):
         yield Hit(need.imported.span, _message(package, need, tests) + also_imported(others),
                   f"Add `<exec_depend>{need.key}</exec_depend>` to package.xml",
-                  related=tuple(other.imported.span for other in others))
+                  related=tuple(other.imported.span for other in others),
+                  cause="" if need.key in tests else dependency_cause(need.key),
+                  consequence=True)
 
 
 def _message(package: Package, need: Need, tests: dict[str, Dependency]) -> str:

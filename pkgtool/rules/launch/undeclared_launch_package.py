@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import ANY, declaration, declared, launch_keys
+from pkgtool.rules.imports import ANY, declaration, declared, dependency_cause, launch_keys
 from pkgtool.rules.registry import rule
 
 
@@ -60,4 +60,5 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
             missing = (f"declared only as {declaration(name, other)}" if other else
                        "not declared in package.xml")
             yield Hit(span, f"`{name}` is used by a launch file but {missing}",
-                      f"Add `<exec_depend>{name}</exec_depend>` to package.xml")
+                      f"Add `<exec_depend>{name}</exec_depend>` to package.xml",
+                      cause="" if other else dependency_cause(name), consequence=True)

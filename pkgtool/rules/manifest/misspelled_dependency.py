@@ -6,6 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
+from pkgtool.rules.imports import RUNTIME, dependency_cause
 from pkgtool.rules.manifest.dependency_names import unknown_dependencies
 from pkgtool.rules.registry import rule
 
@@ -23,7 +24,9 @@ def misspelled_dependency(package: Package) -> Iterator[Hit]:
     folder of the colcon workspace the package is in). A key that is none of these but is
     spelled like one of them is reported with that name. Dependencies whose REP 149
     ``condition`` is false for the target (``$ROS_VERSION == 1``) are skipped, and so are
-    ROS 1 (catkin) manifests. Names with no near miss are MAN022's.
+    ROS 1 (catkin) manifests. Names with no near miss are MAN022's. When the misspelt key is
+    a run dependency, the imports (DEP001) and launch files (LCH002) left without the name it
+    suggests are the same mistake: they are listed in this finding, not reported apart.
 
     ## Why is this bad?
     ``rosdep install`` stops with "Cannot locate rosdep definition", the build farm rejects
@@ -44,4 +47,5 @@ def misspelled_dependency(package: Package) -> Iterator[Hit]:
             tag = unknown.dependency.tag
             yield Hit(unknown.dependency.span,
                       f"{unknown.describe(package.context.distro)}; did you mean "
-                      f"`{unknown.close}`?", f"Write `<{tag}>{unknown.close}</{tag}>`")
+                      f"`{unknown.close}`?", f"Write `<{tag}>{unknown.close}</{tag}>`",
+                      cause=dependency_cause(unknown.close) if tag in RUNTIME else "")
