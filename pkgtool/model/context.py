@@ -21,6 +21,7 @@ from pathlib import Path
 
 from pkgtool.knowledge.tables import DEFAULT_DISTRO
 from pkgtool.model.cmake_interfaces import with_listed
+from pkgtool.model.memo import per_object
 from pkgtool.workspace import listing
 
 _NAME = re.compile(r"<name>\s*([^<\s]+)\s*</name>")
@@ -152,15 +153,28 @@ def workspace_near(root: Path, index: Mapping[Path, WorkspacePackage]
     (the deepest folder they share): its own workspace's, not another's. When several are
     equally near and differ (the name is in other workspaces only), only the name is known.
     """
+    unique, shared = _names(index)
+    near = dict(unique)
+    for name, places in shared.items():
+        depths = [(len(Path(os.path.commonpath((root, folder))).parts), package)
+                  for folder, package in places]
+        deepest = max(depth for depth, _ in depths)
+        found = [package for depth, package in depths if depth == deepest]
+        near[name] = found[0] if all(p == found[0] for p in found) else WorkspacePackage(name)
+    return near
+
+
+@per_object(2)
+def _names(index: Mapping[Path, WorkspacePackage]
+           ) -> tuple[dict[str, WorkspacePackage], dict[str, list[tuple[Path, WorkspacePackage]]]]:
+    """The packages of names one package holds, and the places of names several hold: worked
+    out once per index, not once per package (a run looks every package's workspace up)."""
     names = Counter(package.name for package in index.values())
-    nearest: dict[str, tuple[int, list[WorkspacePackage]]] = {}
+    unique: dict[str, WorkspacePackage] = {}
+    shared: dict[str, list[tuple[Path, WorkspacePackage]]] = {}
     for folder, package in index.items():
-        depth = len(Path(os.path.commonpath((root, folder))).parts) \
-            if names[package.name] > 1 else 0
-        best = nearest.get(package.name)
-        if best is None or depth > best[0]:
-            nearest[package.name] = (depth, [package])
-        elif depth == best[0]:
-            best[1].append(package)
-    return {name: found[0] if all(p == found[0] for p in found) else WorkspacePackage(name)
-            for name, (_, found) in nearest.items()}
+        if names[package.name] == 1:
+            unique[package.name] = package
+        else:
+            shared.setdefault(package.name, []).append((folder, package))
+    return unique, shared
