@@ -83,9 +83,10 @@ def _fold_consequences(found: list[tuple[Finding, Hit | None]]) -> list[Finding]
         places = ", ".join(f"`{f.span.path}:{f.span.line}` ({f.code})" for f in parts)
         worst = max((stated, *parts), key=lambda f: f.severity.rank).severity
         related = stated.related + tuple(span for f in parts for span in (f.span, *f.related))
+        joint = " The" if stated.message.endswith(("?", ".")) else "; the"
         kept[kept.index(stated)] = replace(
             stated, severity=worst, related=related,
-            message=f"{stated.message}; the same mistake shows in {places}")
+            message=f"{stated.message}{joint} same mistake shows in {places}")
     return kept
 
 
