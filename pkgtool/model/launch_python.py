@@ -115,6 +115,15 @@ class _Reader(ast.NodeVisitor):
         """The one expression ``name`` is assigned in the innermost scope binding it."""
         return next((scope[name] for scope in reversed(self.scopes) if name in scope), None)
 
+    def _resolved(self, node: ast.expr | None) -> ast.expr | None:
+        """``node``, or for a name the expression it is assigned, followed through names;
+        None when a name's value is not known (or more than ``_MAX_DEPTH`` names are chained)."""
+        for _ in range(_MAX_DEPTH + 1):
+            if not isinstance(node, ast.Name):
+                return node
+            node = self._assigned(node.id)
+        return None
+
     def visit_Try(self, node: ast.Try) -> None:
         checked = any(isinstance(n, (ast.Name, ast.Attribute)) and
                       _name(n) == "PackageNotFoundError"
@@ -231,7 +240,7 @@ class _Reader(ast.NodeVisitor):
             files, other = self._parameter_files(parameters)
             name, unknown = self._node_name(node)
             namespace = self.value(_keyword(node, "namespace"))
-            remaps = not_pairs(_keyword(node, "remappings"), self._assigned)
+            remaps = not_pairs(_keyword(node, "remappings"), self._resolved)
             self.nodes.append(NodeRef(
                 package if isinstance(package, str) else None,
                 executable if isinstance(executable, str) else None, self._span(node), action,
@@ -272,13 +281,11 @@ class _Reader(ast.NodeVisitor):
                     other = True
         return tuple(found), other
 
-    def _not_a_list(self, node: ast.expr | None, depth: int = 0) -> bool:
+    def _not_a_list(self, node: ast.expr | None) -> bool:
         """True when ``node`` is certainly no list: a tuple, dict or set display, a string or
         number, or a call that gives a path or a string (``PathJoinSubstitution([...])``); also
         through a name assigned one of those."""
-        if isinstance(node, ast.Name) and depth < _MAX_DEPTH:
-            assigned = self._assigned(node.id)
-            return assigned is not None and self._not_a_list(assigned, depth + 1)
+        node = self._resolved(node)
         if isinstance(node, (ast.Tuple, ast.Dict, ast.DictComp, ast.Set, ast.SetComp,
                              ast.JoinedStr)):
             return True
@@ -286,12 +293,9 @@ class _Reader(ast.NodeVisitor):
             return node.value is not None
         return isinstance(node, ast.Call) and isinstance(self.value(node), (str, Share))
 
-    def _is_dict(self, node: ast.expr, depth: int = 0) -> bool:
+    def _is_dict(self, node: ast.expr) -> bool:
         """True for a dict display, or a name assigned one."""
-        if isinstance(node, ast.Name) and depth < _MAX_DEPTH:
-            assigned = self._assigned(node.id)
-            return assigned is not None and self._is_dict(assigned, depth + 1)
-        return isinstance(node, (ast.Dict, ast.DictComp))
+        return isinstance(self._resolved(node), (ast.Dict, ast.DictComp))
 
     def _node_name(self, node: ast.Call) -> tuple[str | None, bool]:
         """The static node name (``name=``, a ``__node`` remapping), and whether a name is

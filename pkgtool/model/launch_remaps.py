@@ -13,7 +13,6 @@ from __future__ import annotations
 import ast
 from collections.abc import Callable
 
-_MAX_DEPTH = 40
 _NO_TUPLES = (ast.Constant, ast.JoinedStr, ast.List, ast.ListComp, ast.Dict, ast.DictComp,
               ast.Set, ast.SetComp)
 """Expressions that never give a tuple."""
@@ -27,14 +26,18 @@ def _not_a_pair(item: ast.expr) -> bool:
     return isinstance(item, _NO_TUPLES)
 
 
-def not_pairs(node: ast.expr | None, assigned: Callable[[str], ast.expr | None],
-              depth: int = 0) -> ast.expr | None:
+def not_pairs(node: ast.expr | None, resolve: Callable[[ast.expr | None], ast.expr | None]
+              ) -> ast.expr | None:
     """The part of a ``remappings=`` value that makes launch_ros reject it: the whole value
-    (a string, a dict, a single pair) or the first item that is no pair; None when the value
-    is not certainly wrong (a name or call not read, ``None``, pairs)."""
-    if isinstance(node, ast.Name) and depth < _MAX_DEPTH:
-        value = assigned(node.id)
-        return node if value is not None and not_pairs(value, assigned, depth + 1) else None
+    (a string, a dict, a single pair) or the first item that is no pair, or the name given
+    when the value it is assigned is wrong; None when the value is not certainly wrong (a name
+    or call not read, ``None``, pairs). ``resolve`` follows a name to its assigned value."""
+    found = _wrong_part(resolve(node))
+    return node if found is not None and isinstance(node, ast.Name) else found
+
+
+def _wrong_part(node: ast.expr | None) -> ast.expr | None:
+    """:func:`not_pairs` of a value that is no name."""
     if isinstance(node, ast.Constant):
         return node if node.value is not None and node.value != "" else None
     if isinstance(node, ast.JoinedStr):
