@@ -15,11 +15,11 @@ import difflib
 import fnmatch
 import os
 from collections.abc import Callable, Iterable, Mapping
-from dataclasses import dataclass
 from pathlib import Path
 
 from pkgtool.findings import Severity
 from pkgtool.knowledge.tables import DEFAULT_DISTRO, DISTROS
+from pkgtool.records import record
 from pkgtool.rules.registry import FAMILIES, Rule, index, load, matching
 
 PYPROJECT = "pyproject.toml"
@@ -32,7 +32,7 @@ class ConfigError(ValueError):
     """Invalid settings; the message names the file and key and says what to do."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Layer:
     """One source of settings: a ``[tool.pkgtool]`` table or the command line.
 
@@ -50,7 +50,7 @@ class Layer:
     rosdistro: str | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Settings:
     """What applies to one package: rules to run, severity overrides, strictness, path ignores
     and the target ROS distribution.

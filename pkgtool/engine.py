@@ -3,16 +3,17 @@
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from dataclasses import dataclass, replace
+from dataclasses import replace
 
 from pkgtool.config import ALL, Layer, settings_for
 from pkgtool.findings import Finding, Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.records import record
 from pkgtool.rules.registry import Rule
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Selection:
     """Which rules run and at what severity, for callers without configuration files.
 

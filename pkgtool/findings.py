@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from enum import Enum
 
 from pkgtool.model.span import Span
+from pkgtool.records import record
 
 
 class Severity(str, Enum):
@@ -21,7 +21,7 @@ class Severity(str, Enum):
         return {"info": 0, "warning": 1, "error": 2}[self.value]
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Hit:
     """One problem a rule found: where, what (``message``) and how to fix it (``fix``).
 
@@ -44,7 +44,7 @@ class Hit:
     consequence: bool = False
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Finding:
     """A hit with its rule's code and (possibly configured) severity, in a named package.
 

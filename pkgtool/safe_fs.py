@@ -13,9 +13,10 @@ import errno
 import os
 import stat
 from collections.abc import Callable, Iterator, Sequence
-from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
 from typing import BinaryIO
+
+from pkgtool.records import record
 
 _DIR = os.O_RDONLY | os.O_DIRECTORY | os.O_NOFOLLOW | os.O_CLOEXEC
 _FILE = os.O_RDONLY | os.O_NOFOLLOW | os.O_NONBLOCK | os.O_NOCTTY | os.O_CLOEXEC
@@ -99,7 +100,7 @@ def lexical_target(base: Sequence[str], target: str) -> tuple[str, ...] | None:
     return tuple(parts) or None
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Entry:
     """A walked entry: its path parts below the root and its lstat; ``open`` and ``readlink``
     work on it (relative to its folder's descriptor) until the walk moves on."""

@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 from collections import Counter
-from dataclasses import dataclass
 from pathlib import Path
 
+from pkgtool.records import record
 from pkgtool.safe_xml import parser
 
 MAX_XML_BYTES = 16 * 1024 * 1024
@@ -14,7 +14,7 @@ _COLCON_PLACEHOLDER = ".pytest.missing_result"
 """The test case colcon writes in place of the report of a pytest that did not write one."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class TestCase:
     """One test: ``name`` is ``classname.name`` as pytest reports it; ``outcome`` in OUTCOMES."""
 
@@ -25,7 +25,7 @@ class TestCase:
     details: str = ""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class TestSummary:
     """The tests of one run, or ``problem`` saying why there are none to read."""
 
@@ -123,7 +123,7 @@ def _case(element) -> TestCase:  # type: ignore[no-untyped-def]
     return TestCase(full, "passed", seconds)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class PackageTests:
     """One package's build and test outcome; ``summary`` is None when the build failed."""
 

@@ -21,8 +21,9 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
 from pathlib import Path
+
+from pkgtool.records import record
 
 PACKAGE_MARKERS = ("package.xml", "setup.py")
 IGNORE_MARKERS = frozenset({"COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE",
@@ -30,7 +31,7 @@ IGNORE_MARKERS = frozenset({"COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE",
 SKIPPED_NAMES = frozenset({"__pycache__", "node_modules", "site-packages"})
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Discovery:
     """Package roots to lint (absolute, unique, sorted) and the arguments that gave none.
 

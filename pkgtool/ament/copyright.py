@@ -9,16 +9,16 @@ line as the license, and recognises a header by its key phrases (ament wants the
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 
 from pkgtool.knowledge.licenses import license_of_header, spdx_in_text
+from pkgtool.records import record
 
 _YEARS = r"\d{4}(?:\s*-\s*\d{4})?(?:,\s*\d{4}(?:\s*-\s*\d{4})?)*"
 COPYRIGHT_LINE = re.compile(  # ament_copyright's pattern: one stray character may lead
     rf"^.?\s*(?:\\copyright\s*)?copyright(?:\s+\(c\))?\s+({_YEARS}),?\s+(\S.*)$", re.IGNORECASE)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Header:
     """What a file's comment blocks say: copyright line number, license (SPDX id) and its line."""
 

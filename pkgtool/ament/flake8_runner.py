@@ -3,14 +3,14 @@
 from __future__ import annotations
 
 import functools
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
 from pkgtool.ament.settings import AMENT_FLAKE8_ARGS
+from pkgtool.records import record
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class StyleViolation:
     """One flake8 or pydocstyle report: package-relative path, 1-based line and column."""
 

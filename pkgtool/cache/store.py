@@ -28,7 +28,6 @@ import os
 import sys
 import time
 from collections.abc import Mapping
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
@@ -37,6 +36,7 @@ from pkgtool.config import Settings
 from pkgtool.findings import Finding
 from pkgtool.model.context import WorkspacePackage
 from pkgtool.model.files import scan
+from pkgtool.records import record
 
 SCHEMA = "pkgtool-lint-cache-2"
 PACK = "packages.json"
@@ -46,7 +46,7 @@ _SETTLED_NS = 2_000_000_000
 _GITIGNORE = "# Created by pkgtool: the lint cache is never committed.\n*\n"
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Files:
     """What a package's files were when they were hashed: path -> [size, mtime_ns, sha256]."""
 
@@ -66,7 +66,7 @@ class Files:
             all(self.stats.get(path, [])[:2] == size_time for path, size_time in now)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Lookup:
     """A package's key and files; ``hit`` holds (name, findings) when the entry was valid."""
 

@@ -8,16 +8,16 @@ or none (``dry_run`` writes nothing and carries the diff).
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 from pathlib import Path
 
 from pkgtool.commands import ExitCode
 from pkgtool.edit.core import EditError
+from pkgtool.records import record
 
 __all__ = ["AddResult", "config", "dependency", "launch", "node"]
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class AddResult:
     """What changed (or would): new and edited files, the diff, notes, or the refusal."""
 

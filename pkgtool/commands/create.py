@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import getpass
 import subprocess
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from pathlib import Path
 
 from pkgtool.commands import ExitCode
@@ -15,11 +15,12 @@ from pkgtool.create import CreateError
 from pkgtool.create.options import Plan, Request, validate
 from pkgtool.create.writer import (Hook, check_destination, enclosing_package, tree,
                                    write_package)
+from pkgtool.records import record
 
 __all__ = ["CreateResult", "Request", "defaults", "run"]
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class CreateResult:
     """What happened: the package folder, the files written and kept, or the error."""
 

@@ -14,12 +14,12 @@ import subprocess
 import sys
 import tempfile
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
 from importlib import metadata
 from pathlib import Path
 
 from pkgtool import __version__
 from pkgtool.commands import ExitCode
+from pkgtool.records import record
 
 __all__ = ["Check", "DoctorResult", "install_command", "run"]
 
@@ -34,7 +34,7 @@ _RCLPY_PROBE = ("import rclpy\nfrom rclpy.utilities import get_rmw_implementatio
                 "rclpy.init()\nprint(get_rmw_implementation_identifier())\nrclpy.shutdown()\n")
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Check:
     """One line of the report: what, whether it works, what was found, the command to fix it."""
 
@@ -44,7 +44,7 @@ class Check:
     fix: str = ""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class DoctorResult:
     """Every check, in report order (exit code 0: doctor reports, it does not judge)."""
 

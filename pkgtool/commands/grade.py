@@ -9,17 +9,17 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass
 from pathlib import Path
 
 from pkgtool.commands import ExitCode
 from pkgtool.grade.results import SubmissionResult
 from pkgtool.grade.rubric import Rubric
+from pkgtool.records import record
 
 __all__ = ["GradeResult", "export_gradescope", "init_rubric", "run"]
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class GradeResult:
     """Graded submissions in the order given, or ``errors`` (sentences) for a usage error."""
 

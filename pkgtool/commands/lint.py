@@ -8,7 +8,7 @@ from __future__ import annotations
 import os
 import threading
 from collections.abc import Iterator, Mapping, Sequence
-from dataclasses import dataclass, replace
+from dataclasses import replace
 from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Optional, Union
@@ -17,6 +17,7 @@ from pkgtool.commands import ExitCode
 from pkgtool.config import ConfigError, ConfigFinder, Layer, Settings, check_rosdistro
 from pkgtool.findings import Finding, Severity
 from pkgtool.model.context import Context, WorkspacePackage, workspace_index, workspace_near
+from pkgtool.records import record
 from pkgtool.report import PackageLabel
 from pkgtool.workspace import discover
 
@@ -32,7 +33,7 @@ PACKAGES_PER_WORKER = 16
 """Below this many packages per extra process, a process pool costs more than it saves."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class LintOptions:
     """Command-line choices; None means "not given" (the configuration files decide)."""
 
@@ -53,7 +54,7 @@ class LintOptions:
     cache_dir: str | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class LintResult:
     """Findings package by package, the packages checked, and what went wrong besides.
 
@@ -290,7 +291,7 @@ def _label(root: Path, cwd: Path) -> str:
         return root.as_posix()
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class TextResult:
     """Text to print (``--explain``, ``--list-rules``) or errors with the exit code."""
 

@@ -12,11 +12,11 @@ import tempfile
 import time
 from collections.abc import Callable, Sequence
 from concurrent.futures import ThreadPoolExecutor, wait
-from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from pkgtool.commands import ExitCode
+from pkgtool.records import record
 
 if TYPE_CHECKING:
     from pkgtool.testresults import TestSummary
@@ -37,7 +37,7 @@ class RequestError(Exception):
     """A request that cannot be done; the message is a full sentence for the user."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Entry:
     """One catalogued package: its seed document, console scripts and support packages."""
 
@@ -47,7 +47,7 @@ class Entry:
     support: tuple[str, ...] = ()
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ListResult:
     """The catalogue, in catalogue order."""
 
@@ -56,7 +56,7 @@ class ListResult:
     errors: tuple[str, ...] = ()
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class GenerateResult:
     """Folders written, support folders kept because they existed, or the errors."""
 
@@ -66,7 +66,7 @@ class GenerateResult:
     errors: tuple[str, ...] = ()
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class PackageReport:
     """One package's lint findings (rendered), build outcome, tests and time spent."""
 
@@ -83,7 +83,7 @@ class PackageReport:
         return not self.findings and self.built and bool(self.summary and self.summary.ok)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class TestRunResult:
     """Every package's report, and the kept workspace (None when it was removed)."""
 

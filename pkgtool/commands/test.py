@@ -9,19 +9,19 @@ from __future__ import annotations
 
 import os
 from collections.abc import Sequence
-from dataclasses import dataclass
 from functools import partial
 from pathlib import Path
 
 from pkgtool.commands import ExitCode
 from pkgtool.grade.sources import SourcePackage, find_packages, with_dependencies
+from pkgtool.records import record
 from pkgtool.testresults import PackageTests
 from pkgtool.workspace import is_package
 
 __all__ = ["TestResult", "run"]
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class TestResult:
     """Every tested package, the sandbox in force, or ``errors`` (sentences) for a usage error."""
 

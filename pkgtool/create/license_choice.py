@@ -7,12 +7,11 @@ a warning. ``--license ?`` lists what ships.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from pkgtool.create import CreateError
 from pkgtool.create.headers import license_ref
 from pkgtool.create.licenses import LICENSES
 from pkgtool.create.spdx import canonical
+from pkgtool.records import record
 
 AMENT_SPELLINGS = {"BSD-2.0": "BSD-3-Clause"}
 """ament_copyright's identifiers that are not SPDX ones -> the SPDX id of the same text.
@@ -26,7 +25,7 @@ _NAMES = {"Apache-2.0": "Apache License 2.0", "BSL-1.0": "Boost Software License
 _LIMIT = 100
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class LicenseChoice:
     """The license as package.xml says it, as the headers' SPDX expression, and warnings."""
 

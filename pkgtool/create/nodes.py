@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 
 from pkgtool.create import CreateError
+from pkgtool.records import record
 
 _TYPE = re.compile(r"^([a-z][a-z0-9_]*)/(msg|srv|action)/([A-Z][A-Za-z0-9]*)$")
 
@@ -57,7 +57,7 @@ _GENERATED_NAMES = frozenset({"Node", "Parameter", "ActionServer", "ActionClient
 """Names the generated modules import besides the interface type."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Kind:
     """One node kind: its template, the interface family it uses and its parameters."""
 
@@ -87,7 +87,7 @@ KINDS = {kind.name: kind for kind in (
 )}
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Interface:
     """A ROS interface type such as ``std_msgs/msg/String``."""
 
@@ -116,7 +116,7 @@ class Interface:
         return TOPICS.get(self.full, self.snake)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class NodeSpec:
     """One node to generate: module/executable/ROS name, kind, interface and parameters."""
 

@@ -7,7 +7,6 @@
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 from pathlib import Path
 
 from pkgtool.create import CreateError
@@ -17,6 +16,7 @@ from pkgtool.create.names import NAME, check_name
 from pkgtool.create.nodes import KINDS, NodeSpec, parse_node
 from pkgtool.knowledge import rosdep
 from pkgtool.knowledge.rosdistro import is_rosdep_key
+from pkgtool.records import record
 
 __all__ = ["Plan", "Request", "check_name", "sort_dependencies", "validate"]
 
@@ -25,7 +25,7 @@ _TEST_FILES = frozenset({"conftest", "copyright", "flake8", "pep257"})
 _FORMATS = (2, 3)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Request:
     """The raw values from the command line (``None``: not given, take the default).
 
@@ -53,7 +53,7 @@ class Request:
     spdx_header: bool = False
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Plan:
     """A checked request: everything the renderer needs, nothing left to default."""
 

@@ -8,15 +8,15 @@ from __future__ import annotations
 
 import difflib
 from collections.abc import Iterable
-from dataclasses import dataclass
 from pathlib import Path
 
 from pkgtool.edit.core import Edit, EditError, Fix, apply_edits, select_fixes
 from pkgtool.edit.source import Source
 from pkgtool.edit.write import Write, inside, write_all
+from pkgtool.records import record
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class FileChange:
     """The text of ``path`` before (None: a new file) and after, and its bytes to write."""
 
@@ -26,7 +26,7 @@ class FileChange:
     data: bytes
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Changes:
     """Changed files of one package, in path order; empty when there is nothing to do."""
 

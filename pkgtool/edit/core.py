@@ -9,6 +9,8 @@ from __future__ import annotations
 from collections.abc import Iterable, Sequence
 from dataclasses import dataclass
 
+from pkgtool.records import record
+
 
 class EditError(Exception):
     """An edit pkgtool refuses to make; the message says why and what to do instead."""
@@ -42,7 +44,7 @@ class Edit:
             (other.start == other.end and self.start < other.start < self.end)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Fix:
     """A titled group of edits applied together or not at all (what a rule can return).
 

@@ -19,6 +19,7 @@ from dataclasses import dataclass
 from pathlib import Path
 
 from pkgtool.edit.core import EditError
+from pkgtool.records import record
 
 
 def inside(root: Path, relpath: str) -> Path:
@@ -33,7 +34,7 @@ def inside(root: Path, relpath: str) -> Path:
     return target
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Write:
     """New ``data`` for ``relpath``; ``create`` when the file must not exist yet."""
 

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
 from pathlib import Path
 
 from pkgtool.edit.changes import fix_changes
@@ -11,6 +10,7 @@ from pkgtool.edit.core import EditError, Fix
 from pkgtool.findings import Finding
 from pkgtool.fix.registry import Refusal, fixers
 from pkgtool.model.package import Package
+from pkgtool.records import record
 
 ROUNDS = 8
 """Fixes deferred for overlapping an earlier one get this many more passes."""
@@ -18,7 +18,7 @@ ROUNDS = 8
 Check = Callable[[Path], tuple[Package, list[Finding]]]
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class FixOutcome:
     """What fixing one package did: fixes applied, the diff (``--diff``), an error, and the
     findings fixers left to the user (``CODE: why``)."""

@@ -4,15 +4,15 @@ from __future__ import annotations
 
 import importlib
 from collections.abc import Callable, Iterable
-from dataclasses import dataclass
 from typing import TypeAlias
 
 from pkgtool.edit.core import Fix
 from pkgtool.findings import Finding
 from pkgtool.model.package import Package
+from pkgtool.records import record
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Refusal:
     """A finding a fixer leaves to the user, and why (``lint --fix`` and ``--diff`` say it)."""
 
@@ -26,7 +26,7 @@ _MODULES = ("pkgtool.fix.data_files", "pkgtool.fix.dependencies", "pkgtool.fix.m
             "pkgtool.fix.setup_py")
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Fixer:
     """How findings of ``code`` are repaired; ``safe`` fixes keep the package's behaviour."""
 

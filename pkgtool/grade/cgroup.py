@@ -16,8 +16,9 @@ import os
 import re
 import signal
 import time
-from dataclasses import dataclass
 from pathlib import Path
+
+from pkgtool.records import record
 
 # controller -> (limit file, events file, event counted), per cgroup version
 _FILES = {
@@ -31,7 +32,7 @@ _names = itertools.count()
 _NAME = re.compile(r"^pkgtool-(\d+)-\d+$")
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class JobCgroup:
     """One job's cgroup folders (controller -> folder) in cgroup ``version`` 1 or 2."""
 

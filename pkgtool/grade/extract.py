@@ -24,10 +24,10 @@ import sys
 import tarfile
 import zipfile
 from collections.abc import Iterator
-from dataclasses import dataclass
 from pathlib import Path, PurePosixPath
 from typing import Any
 
+from pkgtool.records import record
 from pkgtool.safe_fs import MB, TreeWriter, lexical_target
 
 ARCHIVE_SUFFIXES = (".zip", ".tar", ".tar.gz", ".tgz")
@@ -37,7 +37,7 @@ class SubmissionError(Exception):
     """A submission that cannot be graded, with a message for the student."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ExtractLimits:
     """Caps on what one submission may unpack to (name lengths in UTF-8 bytes)."""
 
@@ -49,7 +49,7 @@ class ExtractLimits:
     max_path: int = 1024
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Member:
     """One archive entry: its path parts, kind (file, dir, link), size and origin."""
 

@@ -28,10 +28,10 @@ import sys
 import sysconfig
 import tempfile
 from collections.abc import Sequence
-from dataclasses import dataclass
 from pathlib import Path
 
 import pkgtool
+from pkgtool.records import record
 
 SYSTEM_PATH = "/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin"
 SYSTEM_DIRS = ("/usr", "/bin", "/sbin", "/lib", "/lib32", "/lib64", "/libx32", "/etc")
@@ -87,7 +87,7 @@ exit $?  # not exec: a signal death becomes 128 + its number, which unshare cann
 """
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class JailSupport:
     """What this machine allows: ``mode`` (root, userns, none) and why nothing stronger."""
 

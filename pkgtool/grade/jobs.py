@@ -17,15 +17,15 @@ import signal
 import time
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
-from dataclasses import dataclass
 from multiprocessing.connection import Connection, wait
 from typing import Any
 
 from pkgtool.grade.cgroup import sweep
 from pkgtool.grade.sandbox import remove_job_folders
+from pkgtool.records import record
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Task:
     """One job: ``function(*args)`` in a child process, killed after ``deadline`` seconds.
 

@@ -4,10 +4,11 @@ from __future__ import annotations
 
 import signal
 from collections.abc import Mapping
-from dataclasses import dataclass
+
+from pkgtool.records import record
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Limits:
     """What one sandboxed command may use; ``timeout`` is wall-clock seconds.
 

@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from pkgtool.records import record
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class CriterionResult:
     """One rubric criterion's outcome; ``feedback`` lines are meant for the student."""
 
@@ -23,7 +23,7 @@ class CriterionResult:
         return self.score >= self.max_score
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class SubmissionResult:
     """One graded submission.
 

@@ -5,12 +5,13 @@ See docs/grading.md for the format; ``pkgtool grade --init-rubric`` writes a com
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field, fields
+from dataclasses import field, fields
 from pathlib import Path
 from typing import Any
 
 from pkgtool.compat import tomllib
 from pkgtool.grade.limits import Limits
+from pkgtool.records import record
 
 KINDS = ("build", "executables", "lint", "style", "tests", "hidden")
 VISIBILITIES = ("visible", "hidden", "after_due_date", "after_published")
@@ -39,7 +40,7 @@ class RubricError(Exception):
     """A rubric that cannot be used; the message says where and what to change."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Criterion:
     """One line of the rubric. Kind-specific fields keep their defaults for other kinds."""
 
@@ -60,7 +61,7 @@ class Criterion:
     details: str = "full"
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Rubric:
     """A loaded rubric; ``package`` names the graded package in multi-package submissions."""
 

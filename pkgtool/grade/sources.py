@@ -15,11 +15,11 @@ import os
 import re
 import stat
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
 from pathlib import Path
 from typing import BinaryIO
 
 from pkgtool.grade.extract import ExtractLimits, SubmissionError
+from pkgtool.records import record
 from pkgtool.safe_fs import (MB, Entry, TreeWriter, UnsafeFile, lexical_target, open_path,
                              walk_tree)
 from pkgtool.model.package import load_package
@@ -31,7 +31,7 @@ _OUTPUT = frozenset({"build", "install", "log"})
 _SAFE_NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9_.-]{0,99}$")
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class SourcePackage:
     """A package found in a submission or workspace: its name, folder and declared deps."""
 

@@ -12,10 +12,10 @@ from __future__ import annotations
 import difflib
 import re
 from collections.abc import Mapping
-from dataclasses import dataclass
 from functools import cache
 
 from pkgtool.knowledge.tables import DEFAULT_DISTRO, FLAGS, read
+from pkgtool.records import record
 
 __all__ = ["COMPANIONS", "KINDS", "close_interfaces", "companion_of", "interface_kind",
            "generated_module", "interfaces_of", "is_known_package", "kind_in", "meant_kind",
@@ -136,7 +136,7 @@ def meant_kind(word: str) -> str | None:
     return kind if word not in KINDS else None
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Mismatch:
     """Why ``package/kind/name`` is no interface: ``actual`` is the kind the name really has
     (None when the package has no such name); ``close`` a near miss as (kind, name);

@@ -11,10 +11,10 @@ from __future__ import annotations
 
 import difflib
 import re
-from dataclasses import dataclass
 from functools import cache
 
 from pkgtool.knowledge.tables import DEFAULT_DISTRO, FLAGS, read
+from pkgtool.records import record
 
 __all__ = ["COMPANIONS", "CONSTRUCTOR_OPTIONS", "Message", "close_field", "message_of",
            "nested_message"]
@@ -27,7 +27,7 @@ _NESTED = re.compile(r"[A-Za-z]\w*/[A-Za-z]\w*")
 """A field type that is one message (not a sequence or array of them): ``pkg/Name``."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Message:
     """A message class: ``pkg/kind/Class``, its fields (name -> rosidl type) and constants."""
 

@@ -8,10 +8,10 @@ for ROS 2 Jazzy, so code that uses them breaks on the robot.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from pkgtool.records import record
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Removed:
     """``removed_in`` is the NumPy release that dropped the name; ``use`` the replacement."""
 

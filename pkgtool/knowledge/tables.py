@@ -10,9 +10,10 @@ for a table no rule asks for.
 from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Sequence
-from dataclasses import dataclass
 from functools import cache
 from pathlib import Path
+
+from pkgtool.records import record
 
 DATA = Path(__file__).resolve().parent / "data"
 
@@ -24,7 +25,7 @@ FLAGS = {distro: distro[0] for distro in DISTROS}
 """The one-letter flag of each distribution in a table."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Table:
     """A parsed table: its first ``source`` line (without the word), each entry's group flags and
     the values of the entries that have any (as one space-separated string)."""

@@ -9,15 +9,15 @@ and keeps the list for the trees in use (``parse_tree`` returns one tree per fil
 from __future__ import annotations
 
 import ast
-from dataclasses import dataclass
 
 from pkgtool.model.memo import per_object
+from pkgtool.records import record
 
 _TREES = 64
 """How many trees' node lists stay: more than any package has modules being checked at once."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Walk:
     """Every node of a tree breadth first (the order of ``ast.walk``), each node's parent by
     ``id(node)``, and the nodes of each class (in walk order)."""

@@ -12,7 +12,8 @@ from __future__ import annotations
 
 import posixpath
 import re
-from dataclasses import dataclass
+
+from pkgtool.records import record
 
 _CALL = re.compile(r"\b([A-Za-z_]\w*)\s*\(([^()]*(?:\([^()]*\)[^()]*)*)\)", re.S)
 _COMMENT = re.compile(r"#[^\n]*")
@@ -31,7 +32,7 @@ _FOUND = "<find_package>"
 """Where :func:`_variables` keeps the names of the packages the file finds."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ListedInterfaces:
     """What the ``rosidl_generate_interfaces`` calls of a CMakeLists.txt list.
 

@@ -16,12 +16,13 @@ import os
 import re
 from collections import Counter
 from collections.abc import Iterable, Iterator, Mapping
-from dataclasses import dataclass, field
+from dataclasses import field
 from pathlib import Path
 
 from pkgtool.knowledge.tables import DEFAULT_DISTRO
 from pkgtool.model.cmake_interfaces import with_listed
 from pkgtool.model.memo import per_object
+from pkgtool.records import record
 from pkgtool.workspace import listing
 
 _NAME = re.compile(r"<name>\s*([^<\s]+)\s*</name>")
@@ -32,7 +33,7 @@ _DEPTH = 4
 _NOT_MODULES = frozenset({"test", "tests", "launch", "resource", "build", "install", "log"})
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class WorkspacePackage:
     """Another package of the workspace: its interfaces (kind -> names) and Python packages."""
 
@@ -41,7 +42,7 @@ class WorkspacePackage:
     modules: frozenset[str] = frozenset()
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Context:
     """The target ``distro`` and the workspace's packages by name (the linted one included)."""
 

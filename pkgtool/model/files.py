@@ -3,10 +3,10 @@
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass
 from pathlib import Path
 
 from pkgtool.model.span import ParseProblem, Span
+from pkgtool.records import record
 from pkgtool.workspace import listing
 
 MAX_FILE_BYTES = 2 * 1024 * 1024
@@ -31,7 +31,7 @@ def _not_the_packages(name: str, files: set[str], at_root: bool) -> bool:
     return at_root and name in BUILD_OUTPUT_DIRS and "__init__.py" not in files
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class TextFile:
     """A file's decoded text."""
 

@@ -2,16 +2,15 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.span import ParseProblem, Span
+from pkgtool.records import record
 
 LAUNCH_SUFFIXES = (".launch.py", "_launch.py", ".launch.xml", "_launch.xml", ".launch.yaml",
                    "_launch.yaml", ".launch.yml", "_launch.yml")
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class FileRef:
     """A file the launch file reads from a package's share folder, e.g. ('config', 'p.yaml').
 
@@ -24,7 +23,7 @@ class FileRef:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class NodeRef:
     """A node the launch file starts: ``Node(package=, executable=)`` or ``<node pkg= exec=>``.
 
@@ -70,7 +69,7 @@ class NodeRef:
     remappings_not_pairs: Span | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class PackageRef:
     """A package named by get_package_share_directory, FindPackageShare or $(find-pkg-share).
 
@@ -85,7 +84,7 @@ class PackageRef:
     unused: bool = False
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class LaunchFile:
     """A launch file. ``python`` is the parsed module for Python launch files (its imports)."""
 

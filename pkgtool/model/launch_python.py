@@ -9,13 +9,13 @@ unknown, and unknown values are never reported.
 from __future__ import annotations
 
 import ast
-from dataclasses import dataclass
 
 from pkgtool.model.launch import FileRef, NodeRef, PackageRef
 from pkgtool.model.launch_remaps import not_pairs
 from pkgtool.model.launch_scopes import bindings, import_origins, unread_calls
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import depends_on_ros_distro
+from pkgtool.records import record
 
 SHARE_LOOKUPS = frozenset({"get_package_share_directory", "get_package_share_path",
                            "FindPackageShare"})
@@ -37,7 +37,7 @@ _MAX_TEXT = 4096
 """Longest string the evaluator builds (doubling concatenations stay bounded)."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Share:
     """A package's share folder (``share``) or install prefix, and the text appended to it."""
 

@@ -2,14 +2,13 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from pkgtool.model.condition import under_ros2
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.model.xml import XmlElement, parse_xml
+from pkgtool.records import record
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Text:
     """An element's stripped text content with its position."""
 
@@ -17,7 +16,7 @@ class Text:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Person:
     """A ``<maintainer>``."""
 
@@ -26,7 +25,7 @@ class Person:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Dependency:
     """Any ``*depend`` tag (also format 1's ``run_depend``, and ``conflict``/``replace``)."""
 
@@ -41,7 +40,7 @@ class Dependency:
         return dict(self.attributes).get("condition")
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Manifest:
     """The parsed package.xml. ``root`` is the whole tree for structural rules."""
 

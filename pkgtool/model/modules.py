@@ -2,12 +2,11 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from pkgtool.model.span import ParseProblem, Span
+from pkgtool.records import record
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Import:
     """One imported module.
 
@@ -34,7 +33,7 @@ class Import:
         return self.module.split(".", 1)[0] if self.level == 0 else ""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class PythonModule:
     """A parsed .py file of the package. ``syntax_error`` set means the rest is empty."""
 

@@ -9,10 +9,11 @@ from __future__ import annotations
 
 import configparser
 import shlex
-from dataclasses import dataclass, field
+from dataclasses import field
 
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
+from pkgtool.records import record
 
 DEFAULTS: dict[str, tuple[str, ...]] = {
     "python_files": ("test_*.py", "*_test.py"),
@@ -29,7 +30,7 @@ _SECTIONS = {"pytest.ini": "pytest", ".pytest.ini": "pytest", "tox.ini": "pytest
              "setup.cfg": "tool:pytest"}
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class PytestConfig:
     """The configuration file pytest uses (``""`` for none) and the settings it gives."""
 

@@ -2,12 +2,11 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from pkgtool.model.span import ParseProblem, Span
+from pkgtool.records import record
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class CfgOption:
     """One ``key = value`` with its section and position (key as written, dashes kept)."""
 
@@ -17,7 +16,7 @@ class CfgOption:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class SetupCfg:
     """All options of setup.cfg in file order."""
 

@@ -8,12 +8,11 @@ else is recorded as :class:`Unresolved` with its line, and rules must not report
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from pkgtool.model.span import ParseProblem, Span, Unresolved
+from pkgtool.records import record
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Value:
     """A keyword argument of ``setup()`` that evaluated statically (str, tuple, dict, ...)."""
 
@@ -21,7 +20,7 @@ class Value:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class EntryPoint:
     """One ``name = module:attr`` line of an entry-point group (``valid`` False when malformed)."""
 
@@ -34,7 +33,7 @@ class EntryPoint:
     valid: bool
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class DataSource:
     """One source of a data_files entry: a path or glob pattern and the files it matches.
 
@@ -48,7 +47,7 @@ class DataSource:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class DataFile:
     """One ``(destination, [sources])`` entry of data_files."""
 
@@ -59,7 +58,7 @@ class DataFile:
     """True when the sources were one string, which setuptools reads character by character."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class PackagesSpec:
     """How ``packages=`` was given and what it resolves to.
 
@@ -75,7 +74,7 @@ class PackagesSpec:
     exclude: tuple[str, ...] = ()
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class SetupPy:
     """What ``setup(...)`` in setup.py declares, as far as it evaluates statically.
 

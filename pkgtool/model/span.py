@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from pkgtool.records import record
+
 
 @dataclass(frozen=True, slots=True, order=True)
 class Span:
@@ -18,7 +20,7 @@ class Span:
         return Span(self.path, line, col)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ParseProblem:
     """A file that could not be read or parsed; rules of the SYN family turn these into findings.
 
@@ -31,7 +33,7 @@ class ParseProblem:
     detail: str
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Unresolved:
     """An expression the static evaluator refused to guess (dynamic code); never reported."""
 

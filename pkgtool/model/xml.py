@@ -2,13 +2,12 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from pkgtool.model.span import ParseProblem, Span
+from pkgtool.records import record
 from pkgtool.safe_xml import parser
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class XmlElement:
     """An immutable copy of one XML element: enough for schema-like checks without lxml."""
 

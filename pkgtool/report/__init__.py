@@ -12,10 +12,11 @@ from __future__ import annotations
 
 import importlib
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass, field
+from dataclasses import field
 
 from pkgtool.findings import Finding, Severity
 from pkgtool.model.span import Span
+from pkgtool.records import record
 from pkgtool.rules.registry import Rule
 
 __all__ = ["FORMATS", "PackageLabel", "ReportContext", "counts", "display_path", "render",
@@ -25,7 +26,7 @@ FORMATS = ("text", "json", "sarif", "github", "junit")
 """Output formats, each a module ``pkgtool.report.<format>``."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class PackageLabel:
     """A package that was checked: its name and its root as shown (relative to the cwd)."""
 
@@ -33,7 +34,7 @@ class PackageLabel:
     root: str
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ReportContext:
     """What renderers know besides the findings."""
 

@@ -14,11 +14,11 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Sequence
-from dataclasses import dataclass
 from itertools import groupby
 from xml.etree import ElementTree as ET
 
 from pkgtool.findings import Finding, Severity
+from pkgtool.records import record
 from pkgtool.report import PackageLabel, ReportContext, display_path
 from pkgtool.report.text import finding_lines
 from pkgtool.report.untrusted import block, line
@@ -27,7 +27,7 @@ OUTCOMES = ("passed", "failure", "error", "skipped")
 """A case's outcome; all but ``passed`` are the name of the element that says so."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Case:
     """A ``<testcase>``: ``text`` is the body of its outcome element, ``output`` its stdout."""
 
@@ -42,7 +42,7 @@ class Case:
     file: str = ""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Suite:
     """A ``<testsuite>`` of cases."""
 

@@ -11,13 +11,13 @@ import subprocess
 import sys
 import time
 from collections.abc import Callable, Mapping, Sequence
-from dataclasses import dataclass
 from pathlib import Path
 
+from pkgtool.records import record
 from pkgtool.ros.isolation import isolated_ros_env
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ColconRun:
     """The outcome of one colcon invocation."""
 

@@ -14,7 +14,6 @@ from __future__ import annotations
 import posixpath
 import re
 from collections.abc import Iterable, Iterator
-from dataclasses import dataclass
 from functools import lru_cache
 
 from pkgtool.knowledge.ros_names import looks_like_ros
@@ -31,6 +30,7 @@ from pkgtool.model.setup_py import EntryPoint
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
+from pkgtool.records import record
 from pkgtool.rules.optional_imports import optional_modules
 
 RUNTIME = frozenset({"depend", "exec_depend", "run_depend"})
@@ -46,7 +46,7 @@ def dependency_cause(key: str) -> str:
     return f"misspelled-dependency:{key}"
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Need:
     """An import that a package.xml key must provide.
 
@@ -103,7 +103,7 @@ def declaration(key: str, dependency: Dependency) -> str:
     return f"`<{tag}>{dependency.name}</{tag}>` (which brings it in)"
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class _Layout:
     """Top-level Python names, folders holding ``__init__.py``, and each folder's entries."""
 

@@ -13,7 +13,6 @@ import posixpath
 import re
 from difflib import get_close_matches
 from collections.abc import Iterator
-from dataclasses import dataclass
 
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.installed import installed_data
@@ -21,6 +20,7 @@ from pkgtool.model.launch import NodeRef
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.records import record
 from pkgtool.rules.console_scripts import scripts_and_modules
 from pkgtool.rules.node_api import NODE_CLASSES, name_argument, node_constructions
 from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
@@ -41,7 +41,7 @@ _SPECIAL_FLOATS = frozenset(f"{sign}.{word}" for sign in ("", "+", "-")
                             for word in ("inf", "Inf", "INF")) | {".nan", ".NaN", ".NAN"}
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Declared:
     """A parameter a class declares: its full name, the ROS type of its literal default (None:
     not a literal, or the type is not checked: dynamic typing, an unknown descriptor,
@@ -52,7 +52,7 @@ class Declared:
     span: Span
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class NodeClass:
     """A class of installed code that is a node: its default node name (the literal passed to
     ``super().__init__``, else None), declared parameters, literal ``get_parameter`` reads
@@ -207,7 +207,7 @@ def _module_skip(tree: ast.Module) -> str | None:
     return None
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class ModuleNodes:
     """The nodes of one installed module: its direct Node subclasses, whether it defines
     other classes (a node may derive from them), and the literal names of Node() calls."""
@@ -378,7 +378,7 @@ def flat_parameters(mapping: object, prefix: str = "") -> Iterator[tuple[str, ob
             yield name, key, value
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class FileEntry:
     """A ``<node>: ros__parameters:`` block of a parameter file whose users are all known:
     the node key (namespaces joined with ``/``), where it is written, the launched nodes it

@@ -7,10 +7,10 @@ import pkgutil
 import re
 from collections.abc import Callable, Iterable
 from functools import cache
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, NamedTuple, TypeAlias
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.records import record
 
 if TYPE_CHECKING:
     from pkgtool.model.package import Package
@@ -36,7 +36,7 @@ FAMILIES = {
 """Code prefixes and what each family checks. Codes are never reused or renumbered."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Rule:
     """A registered rule: identity, default severity, documentation and the check itself."""
 

@@ -9,7 +9,6 @@ recorded as :class:`~pkgtool.model.span.Unresolved` under the keyword it would f
 from __future__ import annotations
 
 import ast
-from dataclasses import dataclass
 from typing import Any
 
 from pkgtool.model.python_visitor import parse_tree
@@ -21,12 +20,13 @@ from pkgtool.model.setup_eval.tree import Tree, normalize
 from pkgtool.model.setup_eval.values import Found, NotStatic, plain
 from pkgtool.model.setup_py import PackagesSpec, SetupPy, Value
 from pkgtool.model.span import ParseProblem, Span, Unresolved
+from pkgtool.records import record
 
 _VALUE_FIELDS = ("name", "version", "description", "license", "maintainer", "maintainer_email",
                  "tests_require", "extras_require", "install_requires")
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Evaluation:
     """One run of setup.py: its ``ast``, the module scope at the end, the setup() call."""
 

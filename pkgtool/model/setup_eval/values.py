@@ -2,14 +2,15 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import field
 from pathlib import PurePosixPath
 from typing import Any
 
 from pkgtool.model.span import Span, Unresolved
+from pkgtool.records import record
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class GlobOrigin:
     """A glob call: its pattern (package-relative) and where it was written."""
 
@@ -53,7 +54,7 @@ class Found(Lst):
     exclude: tuple[str, ...] = ()
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class PathValue:
     """A ``pathlib`` path, relative to the package root; ``glob`` when a glob produced it."""
 
@@ -64,14 +65,14 @@ class PathValue:
         return self.pure.as_posix()
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Builtin:
     """A known module or function, by qualified name (``os.path.join``, ``glob``)."""
 
     name: str
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class BoundMethod:
     """``value.name`` where ``value`` is evaluated data and ``name`` an allowed method."""
 
@@ -79,14 +80,14 @@ class BoundMethod:
     name: str
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Opaque:
     """A name bound to something the evaluator refused to compute."""
 
     unresolved: Unresolved
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class UserFunc:
     """A function defined in setup.py: its ``ast.FunctionDef`` and the scope it was defined in."""
 

@@ -3,16 +3,16 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import dataclass
 
 from pkgtool.model.manifest import Manifest
 from pkgtool.model.package import Package
 from pkgtool.model.xml import XmlElement
+from pkgtool.records import record
 from pkgtool.rules.manifest.schema import (FORMATS, SEQUENCES, VERSION_ATTRIBUTES, slot_index,
                                            tags_of)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Tree:
     """A parsed package.xml whose root is ``<package>`` with a known format (1, 2 or 3)."""
 
@@ -30,7 +30,7 @@ class Tree:
         return (child for child in self.root.children if child.tag in tags)
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Misplaced:
     """An element the ``<package>`` sequence does not accept where it stands.
 

@@ -9,7 +9,6 @@ ROS 1 names, build types, standard library modules), keys whose REP 149 conditio
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 
 from pkgtool.knowledge import rosdistro
 from pkgtool.knowledge.rosdep import NOT_PACKAGES, ROS1_PACKAGES, suggested_key
@@ -18,12 +17,13 @@ from pkgtool.model.condition import applies
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
+from pkgtool.records import record
 
 _KEY = re.compile(r"[A-Za-z0-9][A-Za-z0-9._+-]*")
 _NOT_CHECKED = frozenset({"group_depend", "conflict", "replace"})
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Unknown:
     """A dependency nothing provides: distros that release it, else the nearest known name."""
 

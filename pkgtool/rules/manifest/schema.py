@@ -10,7 +10,8 @@ from __future__ import annotations
 
 import functools
 import re
-from dataclasses import dataclass
+
+from pkgtool.records import record
 
 FORMATS = (1, 2, 3)
 
@@ -70,7 +71,7 @@ def valid_any_uri(value: str) -> bool:
     return _uri_reference().fullmatch(_escaped(token(value))) is not None
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Slot:
     """One particle of the ``<package>`` sequence: the tags it accepts and how often."""
 

@@ -15,12 +15,12 @@ from __future__ import annotations
 import ast
 from collections import Counter
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
 from typing import Generic, TypeVar
 
 from pkgtool.knowledge.message_fields import Message, message_of
 from pkgtool.model.ast_nodes import nodes_of, nodes_of_class
 from pkgtool.model.package import Package
+from pkgtool.records import record
 from pkgtool.rules.scopes import bound_names
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, qualified
 
@@ -31,7 +31,7 @@ Maker = Callable[[ast.Call], T | None]
 """What a call certainly makes (a known message, a publisher), or None."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Instance(Generic[T]):
     """Where an object (``message``: a known message or what else a maker makes) is used:
     ``uses`` are the attributes read or stored on it (``msg.data``, ``self.msg.data``),

@@ -5,12 +5,12 @@ from __future__ import annotations
 import ast
 import re
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.message_fields import Message
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.records import record
 from pkgtool.rules.node_api import PARAMETERS, argument, literal_type, unpacks
 from pkgtool.rules.python._message_instances import (Instance, Known, attribute_instances,
                                                      known_messages, local_instances,
@@ -24,7 +24,7 @@ _BASIC = re.compile(r"boolean|float|double|u?int(?:8|16|32|64)|w?string(?:<\d+>)
 """Field types whose values are plain Python values (``bool``, ``float``, ``int``, ``str``)."""
 
 
-@dataclass(frozen=True, slots=True)
+@record
 class Publisher:
     """A publisher made by rclpy's ``create_publisher``, with its message class if known."""
 
