@@ -118,35 +118,39 @@ def _walk(top: Path) -> Iterable[tuple[Path, str]]:
     """
     real_top = os.path.realpath(top)
     seen = {real_top}
-    _, folders, links = _listing(top, real_top)
+    folders: Found = []
+    links: Found = []
+    _below(top, real_top, listing(top), folders, links)
     while folders or links:
         sub, real = folders.pop() if folders else links.pop()
         real = real or os.path.realpath(sub)
         if real in seen:
             continue
         seen.add(real)
-        names, subfolders, sublinks = _listing(sub, real)
-        if names & IGNORE_MARKERS or "pyvenv.cfg" in names:
+        listed = listing(sub)
+        names = {e.name for e in listed}
+        if not names.isdisjoint(IGNORE_MARKERS) or "pyvenv.cfg" in names:
             continue
-        if any(marker in names for marker in PACKAGE_MARKERS) and is_package(sub):
+        if any(e.name in PACKAGE_MARKERS and _is_file(e) for e in listed):
             yield sub, real
         else:
-            folders += subfolders
-            links += sublinks
+            _below(sub, real, listed, folders, links)
 
 
 Found = list[tuple[Path, str]]
 """Folders to search, each with its real path ("" for a link: resolved when searched)."""
 
 
-def _listing(folder: Path, real: str) -> tuple[frozenset[str], Found, Found]:
-    """The names in ``folder``, and its sub-folders worth searching: real ones, then links."""
-    listed = listing(folder)
-    names = frozenset(e.name for e in listed)
-    searched = [e for e in listed if not _skipped_name(e.name) and _is_dir(e)]
-    return (names, [(folder / e.name, os.path.join(real, e.name))
-                    for e in searched if not e.is_symlink()],
-            [(folder / e.name, "") for e in searched if e.is_symlink()])
+def _below(folder: Path, real: str, listed: list[os.DirEntry[str]], folders: Found,
+           links: Found) -> None:
+    """Add the sub-folders of ``folder`` worth searching to ``folders`` (real ones, with their
+    real paths) and ``links``; only then are their paths made (a package's are never)."""
+    for entry in listed:
+        if not _skipped_name(entry.name) and _is_dir(entry):
+            if entry.is_symlink():
+                links.append((folder / entry.name, ""))
+            else:
+                folders.append((folder / entry.name, os.path.join(real, entry.name)))
 
 
 def listing(folder: str | Path) -> list[os.DirEntry[str]]:
@@ -161,5 +165,13 @@ def listing(folder: str | Path) -> list[os.DirEntry[str]]:
 def _is_dir(entry: os.DirEntry[str]) -> bool:
     try:
         return entry.is_dir()
+    except OSError:
+        return False
+
+
+def _is_file(entry: os.DirEntry[str]) -> bool:
+    """As :func:`is_package` sees a marker (links followed), mostly without a system call."""
+    try:
+        return entry.is_file()
     except OSError:
         return False

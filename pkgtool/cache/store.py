@@ -35,10 +35,10 @@ from pkgtool.cache.serial import BadEntry, decode, encode
 from pkgtool.config import Settings
 from pkgtool.findings import Finding
 from pkgtool.model.context import WorkspacePackage
-from pkgtool.model.files import scan
+from pkgtool.model.files import Scan, scan
 from pkgtool.records import record
 
-SCHEMA = "pkgtool-lint-cache-2"
+SCHEMA = "pkgtool-lint-cache-3"
 PACK = "packages.json"
 """The file in ``lint/`` holding every entry."""
 _SETTLED_NS = 2_000_000_000
@@ -82,29 +82,60 @@ Entry = dict[str, Any]
 
 
 class LintCache:
-    """The lint cache in ``folder`` for one run (one code version, one workspace)."""
+    """The lint cache in ``folder`` for one run (one code version, one workspace).
 
-    def __init__(self, folder: Path, workspace: Mapping[Path, WorkspacePackage]) -> None:
+    Opened before the workspace is indexed (:meth:`indexed` spares reading the packages whose
+    files did not change), then :meth:`bind` to the run's workspace index before any lookup.
+    """
+
+    def __init__(self, folder: Path) -> None:
         self.folder = folder / "lint"
         self.base = folder
-        self._run_key = _digest([SCHEMA, _code_fingerprint(), _workspace_key(workspace)])
         self._loaded = _identity(self.folder / PACK)
         self._entries = _load(self.folder / PACK)
         self._fresh: dict[str, Entry] = {}
+        self._run_key = ""
+        self._workspace: Mapping[Path, WorkspacePackage] = {}
+        self._settings_keys: dict[int, tuple[Settings, str]] = {}
 
-    def lookup(self, root: Path, settings: Settings, *, read: bool = True) -> Lookup | None:
+    def indexed(self, scans: Mapping[Path, Scan]) -> dict[Path, WorkspacePackage]:
+        """The workspace-index entries recorded with the packages whose files are all as they
+        were then (the same paths, sizes and settled times): they need not be read again."""
+        known = {}
+        for root, scanned in scans.items():
+            entry = self._entries.get(str(root))
+            if isinstance(entry, dict) and entry.get("root") == str(root) and \
+                    _as_recorded(entry, scanned):
+                package = _index_entry(entry.get("index"))
+                if package is not None:
+                    known[root] = package
+        return known
+
+    def bind(self, workspace: Mapping[Path, WorkspacePackage]) -> None:
+        """Key the lookups to this code and the run's ``workspace`` index."""
+        self._workspace = workspace
+        self._run_key = _digest([SCHEMA, _code_fingerprint(), _workspace_key(workspace)])
+
+    def lookup(self, root: Path, settings: Settings, *, read: bool = True,
+               scanned: Scan | None = None) -> Lookup | None:
         """The key of the package at ``root`` and, when its entry is valid, the findings.
 
         With ``read`` False only sizes and times are looked at: None when some file would
         have to be read (a quick probe that leaves the reading to a worker process).
+        ``scanned``: the package's :func:`scan`, when the caller made it already.
         """
+        assert self._run_key, "bind() the cache to the workspace first"
         entry = self._entries.get(str(root))
         entry = entry if isinstance(entry, dict) and entry.get("root") == str(root) else {}
         old = entry.get("files") if isinstance(entry.get("files"), dict) else {}
-        files = _hash_files(root, old, entry.get("taken_ns"), read)
+        files = _hash_files(root, old, entry.get("taken_ns"), read, scanned)
         if files is None:
             return None
-        key = _digest([self._run_key, _settings_key(settings), files.digest()])
+        refresh = len(old) != len(files.stats) or \
+            any(old.get(path) != stat for path, stat in files.stats.items())
+        recorded = entry.get("digest")
+        digest = recorded if not refresh and isinstance(recorded, str) else files.digest()
+        key = _digest([self._run_key, self._settings_key(settings), digest])
         if entry.get("key") != key:
             return Lookup(key, files, None, False)
         try:
@@ -115,16 +146,27 @@ class LintCache:
                 raise BadEntry("not a list of findings")
         except (BadEntry, RecursionError):
             return Lookup(key, files, None, False)
-        refresh = any(old.get(path) != stat for path, stat in files.stats.items())
         return Lookup(key, files, (name, findings), refresh)
 
-    @staticmethod
-    def entry(root: Path, lookup: Lookup, name: str, findings: list[Finding]) -> Entry | None:
+    def _settings_key(self, settings: Settings) -> str:
+        """The digest of ``settings`` (packages share a few settings objects: worked out once
+        per object)."""
+        known = self._settings_keys.get(id(settings))
+        if known is None:
+            known = self._settings_keys[id(settings)] = (
+                settings, _digest(_settings_parts(settings)))
+        return known[1]
+
+    def entry(self, root: Path, lookup: Lookup, name: str, findings: list[Finding]
+              ) -> Entry | None:
         """The entry recording ``findings`` for ``root`` (:meth:`keep` it in the process that
         saves); None when a file changed while the package was checked."""
         if not lookup.files.unchanged(root):
             return None
+        package = self._workspace.get(root)
         return {"root": str(root), "key": lookup.key, "name": name,
+                "digest": lookup.files.digest(),
+                "index": _index_record(package) if package is not None else None,
                 "taken_ns": lookup.files.taken_ns, "files": lookup.files.stats,
                 "findings": encode(findings)}
 
@@ -190,7 +232,8 @@ def _load(path: Path) -> dict[str, Any]:
     return pack["entries"]
 
 
-def _hash_files(root: Path, old: dict[str, Any], old_taken: Any, read: bool) -> Files | None:
+def _hash_files(root: Path, old: dict[str, Any], old_taken: Any, read: bool,
+                scanned: Scan | None = None) -> Files | None:
     """Every file's size, time and content hash, reusing settled hashes of ``old``.
 
     None when ``read`` is False and some file would have to be read.
@@ -199,7 +242,7 @@ def _hash_files(root: Path, old: dict[str, Any], old_taken: Any, read: bool) -> 
     stats: dict[str, list[Any]] = {}
     trusted_before = old_taken - _SETTLED_NS if isinstance(old_taken, int) else -1
     base = os.fspath(root)
-    for path, size_time in scan(root):
+    for path, size_time in scan(root) if scanned is None else scanned:
         previous = old.get(path)
         if isinstance(previous, list) and len(previous) == 3 and previous[:2] == size_time \
                 and size_time[1] < trusted_before and isinstance(previous[2], str):
@@ -220,7 +263,43 @@ def _digest(parts: list[Any]) -> str:
     return hashlib.sha256(json.dumps(parts, separators=(",", ":")).encode()).hexdigest()
 
 
-def _settings_key(settings: Settings) -> list[Any]:
+def _as_recorded(entry: Entry, scanned: Scan) -> bool:
+    """True when the package's files are those of ``entry``, with the same sizes and times,
+    all settled when recorded (as when a recorded content hash is reused)."""
+    old = entry.get("files")
+    taken = entry.get("taken_ns")
+    if not isinstance(old, dict) or not isinstance(taken, int) or len(old) != len(scanned):
+        return False
+    trusted_before = taken - _SETTLED_NS
+    for path, size_time in scanned:
+        previous = old.get(path)
+        if not isinstance(previous, list) or previous[:2] != size_time or \
+                size_time[1] >= trusted_before:
+            return False
+    return True
+
+
+def _index_record(package: WorkspacePackage) -> list[Any]:
+    return [package.name, {kind: sorted(names) for kind, names in package.interfaces.items()},
+            sorted(package.modules)]
+
+
+def _index_entry(stored: Any) -> WorkspacePackage | None:
+    """The :class:`WorkspacePackage` :func:`_index_record` stored; None when it is not one."""
+    try:
+        name, interfaces, modules = stored
+        if isinstance(name, str) and isinstance(interfaces, dict) and \
+                isinstance(modules, list) and all(isinstance(m, str) for m in modules) and \
+                all(isinstance(k, str) and isinstance(v, list) and
+                    all(isinstance(n, str) for n in v) for k, v in interfaces.items()):
+            return WorkspacePackage(name, {k: frozenset(v) for k, v in interfaces.items()},
+                                    frozenset(modules))
+    except (TypeError, ValueError):
+        pass
+    return None
+
+
+def _settings_parts(settings: Settings) -> list[Any]:
     ignores = [[str(base), glob, sorted(codes)] for base, glob, codes in settings.path_ignores]
     return [list(settings.codes), sorted((c, s.value) for c, s in settings.severities.items()),
             ignores, settings.rosdistro]

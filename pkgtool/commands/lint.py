@@ -23,6 +23,7 @@ from pkgtool.workspace import discover
 
 if TYPE_CHECKING:
     from pkgtool.cache.store import Entry, LintCache, Lookup
+    from pkgtool.model.files import Scan
     from pkgtool.model.package import Package
 
 __all__ = ["LintOptions", "LintResult", "TextResult", "explain", "list_rules", "run"]
@@ -95,8 +96,14 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
             finder.settings(here)  # still validate the command line and the config in reach
     except ConfigError as error:
         return LintResult(ExitCode.USAGE, errors=(str(error),), notes=notes)
-    workspace = workspace_index(found.packages, [here / p for p in paths or ["."]
-                                                 if (here / p).is_dir()])
+    cache = _open_cache(options, here)
+    scans = _scans(found.packages) if cache is not None and not options.fix else {}
+    workspace = workspace_index(
+        found.packages, [here / p for p in paths or ["."] if (here / p).is_dir()],
+        {root: [path for path, _ in listed] for root, listed in scans.items()},
+        cache.indexed(scans) if cache is not None else None)
+    if cache is not None:
+        cache.bind(workspace)
     jobs = [(root, _label(root, here), setting) for root, setting in zip(found.packages, settings)]
     findings: list[Finding] = []
     labels: list[PackageLabel] = []
@@ -105,8 +112,8 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
         if options.fix or options.diff else ((), "", ())
     notes += refused
     failing = False
-    cache = _open_cache(options, here, workspace)
-    outcomes = _check_all(jobs, workspace) if cache is None else _cached(jobs, workspace, cache)
+    outcomes = _check_all(jobs, workspace) if cache is None else \
+        _cached(jobs, workspace, cache, scans)
     for (root, label, setting), (outcome, entry) in zip(jobs, outcomes):
         if entry is not None and cache is not None:
             cache.keep(entry)
@@ -198,14 +205,14 @@ def _check_all(jobs: list[Job], workspace: Workspace, cache: LintCache | None = 
         yield from pool.map(check, jobs, chunksize=max(1, len(jobs) // (workers * 8)))
 
 
-def _open_cache(options: LintOptions, cwd: Path, workspace: Workspace) -> LintCache | None:
+def _open_cache(options: LintOptions, cwd: Path) -> LintCache | None:
     """The cache this run uses, if any."""
     if not options.cache:
         return None
     from pkgtool.cache.store import LintCache
 
     folder = options.cache_dir or os.environ.get("PKGTOOL_CACHE_DIR")
-    return LintCache(cwd / folder if folder else project_root(cwd) / CACHE_FOLDER, workspace)
+    return LintCache(cwd / folder if folder else project_root(cwd) / CACHE_FOLDER)
 
 
 def project_root(cwd: Path) -> Path:
@@ -214,11 +221,21 @@ def project_root(cwd: Path) -> Path:
                  if (folder / "pyproject.toml").is_file()), cwd)
 
 
-def _cached(jobs: list[Job], workspace: Workspace, cache: LintCache) -> Iterator[Checked]:
-    """Each job's outcome in order: entries whose files kept their sizes and times come from
-    the cache here; the others are looked up (reading files) and checked by :func:`_check`,
-    in the worker processes when there are enough of them."""
-    probes = [cache.lookup(root, setting, read=False) for root, _, setting in jobs]
+def _scans(roots: Sequence[Path]) -> dict[Path, Scan]:
+    """Every file of each package with its size and time: read once, for the workspace index
+    and the cache's probes."""
+    from pkgtool.model.files import scan
+
+    return {root: scan(root) for root in roots}
+
+
+def _cached(jobs: list[Job], workspace: Workspace, cache: LintCache,
+            scans: Mapping[Path, Scan]) -> Iterator[Checked]:
+    """Each job's outcome in order: entries whose files kept their sizes and times (in
+    ``scans`` when given) come from the cache here; the others are looked up (reading files)
+    and checked by :func:`_check`, in the worker processes when there are enough of them."""
+    probes = [cache.lookup(root, setting, read=False, scanned=scans.get(root))
+              for root, _, setting in jobs]
     fresh = _check_all([job for job, probe in zip(jobs, probes) if probe is None or
                         probe.hit is None], workspace, cache)
     for (_, label, _), probe in zip(jobs, probes):

@@ -15,15 +15,15 @@ from __future__ import annotations
 import os
 import re
 from collections import Counter
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Iterable, Mapping
 from dataclasses import field
 from pathlib import Path
 
 from pkgtool.knowledge.tables import DEFAULT_DISTRO
 from pkgtool.model.cmake_interfaces import with_listed
+from pkgtool.model.files import list_files
 from pkgtool.model.memo import per_object
 from pkgtool.records import record
-from pkgtool.workspace import listing
 
 _NAME = re.compile(r"<name>\s*([^<\s]+)\s*</name>")
 _KINDS = ("msg", "srv", "action")
@@ -71,44 +71,50 @@ def interface_file(path: str) -> tuple[str, str] | None:
     return (folder, stem) if suffix == "idl" and folder == top else None
 
 
-def _files_under(base: str, folder: str, depth: int = _DEPTH) -> Iterator[str]:
-    """Paths (POSIX, relative to ``base``) of the files in ``folder`` and its subfolders."""
-    for entry in listing(os.path.join(base, folder)):
-        path = f"{folder}/{entry.name}"
-        try:
-            is_folder = entry.is_dir(follow_symlinks=False)
-        except OSError:
-            continue
-        if not is_folder:
-            yield path
-        elif depth > 1:
-            yield from _files_under(base, path, depth - 1)
+def _index_depth(name: str) -> int:
+    """How many folder levels below the top-level folder ``name`` the index reads: interface
+    folders to :data:`_DEPTH`, ``src`` to its Python packages' ``__init__.py``, a Python
+    package to its own ``__init__.py``; nothing else."""
+    if name in _KINDS:
+        return _DEPTH
+    if name == "src":
+        return 2
+    return 1 if name.isidentifier() and name not in _NOT_MODULES else 0
 
 
-def read_workspace_package(root: Path) -> WorkspacePackage:
-    """Name (package.xml, else the folder), interfaces and Python packages of ``root``."""
+def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> WorkspacePackage:
+    """Name (package.xml, else the folder), interfaces and Python packages of ``root``.
+
+    ``files`` are the package's files as :func:`~pkgtool.model.files.list_files` lists them,
+    when the caller has them: the result is the same, without listing folders again.
+    """
     base = os.fspath(root)
     manifest = _read(os.path.join(base, "package.xml"))
     found = _NAME.search(manifest) if manifest is not None else None
     name = found.group(1) if found else root.name
-    listed = listing(base)
     kinds: dict[str, set[str]] = {}
-    for folder in (e.name for e in listed if e.name in _KINDS):
-        for kind, stem in filter(None, map(interface_file, _files_under(base, folder))):
-            kinds.setdefault(kind, set()).add(stem)
+    modules: set[str] = set()
+    cmake = None
+    for path in list_files(root, _index_depth) if files is None else files:
+        parts = path.split("/")
+        if parts[-1] == "__init__.py" and _is_module(parts[:-1]):
+            modules.add(parts[-2])
+        elif parts[0] in _KINDS and len(parts) <= _DEPTH + 1:
+            kind_and_stem = interface_file(path)
+            if kind_and_stem is not None:
+                kinds.setdefault(kind_and_stem[0], set()).add(kind_and_stem[1])
+        elif path == "CMakeLists.txt":
+            cmake = _read(os.path.join(base, path))
     folders = {kind: frozenset(names) for kind, names in kinds.items()}
-    cmake = _read(os.path.join(base, "CMakeLists.txt")) if any(
-        entry.name == "CMakeLists.txt" for entry in listed) else None
-    modules = _python_packages(listed) | (_python_packages(listing(os.path.join(base, "src")))
-                                          if any(e.name == "src" for e in listed) else set())
     return WorkspacePackage(name, with_listed(folders, cmake) or {}, frozenset(modules))
 
 
-def _python_packages(entries: list[os.DirEntry[str]]) -> set[str]:
-    """Folders among ``entries`` that are Python packages (hold an ``__init__.py``): those at
-    a package's root, and in its ``src`` folder (``package_dir={'': 'src'}``)."""
-    return {e.name for e in entries if e.name.isidentifier() and e.name not in _NOT_MODULES
-            and e.is_dir() and os.path.isfile(os.path.join(e.path, "__init__.py"))}
+def _is_module(folders: list[str]) -> bool:
+    """True for the folders of a Python package's ``__init__.py``: one at the package's root,
+    or in its ``src`` folder (``package_dir={'': 'src'}``)."""
+    if len(folders) == 2 and folders[0] == "src":
+        folders = folders[1:]
+    return len(folders) == 1 and folders[0].isidentifier() and folders[0] not in _NOT_MODULES
 
 
 def _read(path: str) -> str | None:
@@ -128,13 +134,17 @@ def colcon_src(root: Path) -> Path | None:
     return None
 
 
-def workspace_index(roots: Iterable[Path], searched: Iterable[Path] = ()
+def workspace_index(roots: Iterable[Path], searched: Iterable[Path] = (),
+                    files: Mapping[Path, Iterable[str]] | None = None,
+                    known: Mapping[Path, WorkspacePackage] | None = None
                     ) -> dict[Path, WorkspacePackage]:
     """Every package of the workspace of the packages at ``roots`` (absolute) by folder: they
     and their neighbours.
 
     A colcon ``src`` folder inside one of the ``searched`` folders (those discovery already
-    walked) is not walked again.
+    walked) is not walked again; ``files`` are the files of some packages, when the caller
+    listed them already (see :func:`read_workspace_package`); ``known`` are packages the
+    caller read already (the lint cache's, for packages whose files did not change).
     """
     from pkgtool.workspace import discover
 
@@ -144,7 +154,9 @@ def workspace_index(roots: Iterable[Path], searched: Iterable[Path] = ()
         assert source is not None
         if not any(source == top or top in source.parents for top in walked):
             everything.update(discover([str(source)], cwd=source).packages)
-    return {root: read_workspace_package(root) for root in sorted(everything)}
+    listed, read = files or {}, known or {}
+    return {root: read[root] if root in read else read_workspace_package(root, listed.get(root))
+            for root in sorted(everything)}
 
 
 def workspace_near(root: Path, index: Mapping[Path, WorkspacePackage]

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import os
 from pathlib import Path
+from typing import Callable
 
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.records import record
@@ -63,16 +64,23 @@ def read_text(root: Path, relpath: str, *, allow_empty: bool = True) -> TextFile
     return TextFile(relpath, text.removeprefix("\ufeff"))
 
 
-def list_files(root: Path) -> tuple[str, ...]:
+def list_files(root: Path, depth: Callable[[str], int | None] | None = None
+               ) -> tuple[str, ...]:
     """Every regular file under ``root`` as sorted POSIX paths, skipping tool and build folders.
 
     Nested packages (a sub-folder holding its own package.xml) and virtual environments are not
-    part of this package.
+    part of this package. ``depth(name)``, when given, says how many folder levels to read
+    below the top-level folder ``name`` (0: not read; None: all): the same files as without
+    it, less those deeper than that.
     """
-    return tuple(sorted(path for path, _ in _walk(root)))
+    return tuple(sorted(path for path, _ in _walk(root, depth)))
 
 
-def scan(root: Path) -> list[tuple[str, list[int]]]:
+Scan = list[tuple[str, list[int]]]
+"""A package's files (sorted POSIX paths) with their ``[size, mtime_ns]``."""
+
+
+def scan(root: Path) -> Scan:
     """Every file of :func:`list_files` (sorted) with its ``[size, mtime_ns]``, in one walk.
 
     A file that vanishes or cannot be examined meanwhile gets ``[-1, -1]``.
@@ -80,21 +88,28 @@ def scan(root: Path) -> list[tuple[str, list[int]]]:
     return sorted((path, _size_time(entry)) for path, entry in _walk(root))
 
 
-def _walk(root: Path) -> list[tuple[str, os.DirEntry[str]]]:
-    """The package's files (POSIX paths relative to ``root``), each folder listed once."""
+def _walk(root: Path, depth: Callable[[str], int | None] | None = None
+          ) -> list[tuple[str, os.DirEntry[str]]]:
+    """The package's files (POSIX paths relative to ``root``), each folder listed once; with
+    ``depth``, only as deep as it says (see :func:`list_files`)."""
     found: list[tuple[str, os.DirEntry[str]]] = []
-    stack = [("", listing(os.fspath(root)))]
+    stack: list[tuple[str, list[os.DirEntry[str]], int | None]] = [
+        ("", listing(os.fspath(root)), None)]
     while stack:
-        prefix, entries = stack.pop()
+        prefix, entries, left = stack.pop()
         for entry in entries:  # is_dir/is_file follow symbolic links; broken ones are neither
             try:
                 if entry.is_dir():
                     if entry.is_symlink() or _skipped_name(entry.name):
                         continue
+                    below = depth(entry.name) if depth and not prefix else left
+                    if below is not None and below < 1:
+                        continue
                     inside = listing(entry.path)
                     files = {e.name for e in inside if e.is_file()}
                     if not _not_the_packages(entry.name, files, not prefix):
-                        stack.append((f"{prefix}{entry.name}/", inside))
+                        deeper = None if below is None else below - 1
+                        stack.append((f"{prefix}{entry.name}/", inside, deeper))
                 elif entry.is_file():
                     found.append((prefix + entry.name, entry))
             except OSError:

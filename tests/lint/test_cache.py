@@ -104,6 +104,39 @@ def test_an_edit_a_sibling_or_other_settings_invalidate(tmp_path: Path) -> None:
     assert "PYC001" not in _lint(ws, "--ignore", "PYC001").stdout
 
 
+def _settle(tree: Path) -> None:
+    """Date every file an hour back: trusted by size and time from the next run on."""
+    hour_ago = os.stat(tree).st_mtime - 3600
+    for file in tree.rglob("*"):
+        if file.is_file() and ".pkgtool_cache" not in file.parts:
+            os.utime(file, (hour_ago, hour_ago))
+
+
+def test_the_workspace_index_is_kept_with_settled_packages_and_read_again_on_change(
+        tmp_path: Path) -> None:
+    talker = correct_package_files("talker")
+    listener = correct_package_files("listener")
+    listener["listener/use.py"] = "import talker\n"
+    ws = write_tree(tmp_path / "ws", {**{f"src/talker/{k}": v for k, v in talker.items()},
+                                      **{f"src/listener/{k}": v for k, v in listener.items()}})
+    _settle(ws)
+    first = _lint(ws).stdout
+    talker_root = str(ws / "src" / "talker")
+    assert _entries(ws / ".pkgtool_cache")[talker_root]["index"] == ["talker", {}, ["talker"]]
+    assert _lint(ws).stdout == first  # the index of both packages comes from the cache
+    pack = ws / ".pkgtool_cache" / "lint" / "packages.json"
+    whole = json.loads(pack.read_text())
+    for broken in ("garbage", ["talker", {"msg": "X"}, []], [1, {}, []], None):
+        whole["entries"][talker_root]["index"] = broken
+        pack.write_text(json.dumps(whole))
+        assert _lint(ws).stdout == first, broken
+    (ws / "src" / "talker" / "talker").rename(ws / "src" / "talker" / "speaker")
+    _settle(ws)
+    moved = _lint(ws).stdout
+    assert moved == _lint(ws, "--no-cache").stdout != first
+    assert _lint(ws).stdout == moved
+
+
 def test_corrupt_or_foreign_entries_are_ignored_and_rewritten(tmp_path: Path) -> None:
     root = write_tree(tmp_path / "pkg", correct_package_files("demo"))
     (root / "demo" / "bad.py").write_text("x = y\n")

@@ -7,6 +7,8 @@ from pathlib import Path
 
 import pytest
 
+from pkgtool.model.context import read_workspace_package
+from pkgtool.model.files import list_files
 from pkgtool.workspace import discover, owning_package
 from tests.helpers import write_tree
 
@@ -128,3 +130,33 @@ def test_a_folder_inside_a_package_lints_its_package(workspace: Path) -> None:
     assert _names(workspace, "src/alpha/alpha") == ["src/alpha"]
     found = discover(["."], cwd=workspace / "src" / "alpha" / "alpha")
     assert found.packages == (workspace / "src" / "alpha",) and found.empty == ()
+
+
+def test_the_workspace_index_reads_the_same_from_the_folders_or_from_a_file_list(
+        tmp_path: Path) -> None:
+    write_tree(tmp_path, {
+        "package.xml": "<package format='3'><name>things</name></package>\n",
+        "CMakeLists.txt":
+            "rosidl_generate_interfaces(${PROJECT_NAME} \"interfaces/msg/Listed.msg\")\n",
+        "msg/Plain.msg": "", "msg/a/b/c/Deep.msg": "", "msg/a/b/c/d/TooDeep.msg": "",
+        "msg/.hidden/Hidden.msg": "", "msg/nested/package.xml": "<package/>",
+        "msg/nested/Nested.msg": "", "srv/Ask.srv": "", "action/Go.action": "",
+        "msg/Shape.idl": "", "msg/motion/Inner.idl": "",
+        "things/__init__.py": "", "things/deep/__init__.py": "", "src/lib/__init__.py": "",
+        "test/__init__.py": "", "launch/__init__.py": "", "not-a-name/__init__.py": "",
+        "empty/readme.txt": "",
+    })
+    (tmp_path / "linked").symlink_to(tmp_path / "things")
+    read = read_workspace_package(tmp_path)
+    assert read == read_workspace_package(tmp_path, list_files(tmp_path))
+    assert read.name == "things"
+    assert read.modules == {"things", "lib"}
+    assert {kind: set(names) for kind, names in read.interfaces.items()} == {
+        "msg": {"Plain", "Deep", "Shape", "Listed"}, "srv": {"Ask"}, "action": {"Go"}}
+
+
+def test_a_depth_limited_listing_is_the_full_one_less_what_lies_deeper(tmp_path: Path) -> None:
+    write_tree(tmp_path, {"a/b/c/one.txt": "", "a/two.txt": "", "top.txt": "", "z/x/y.txt": ""})
+    depth = {"a": 2, "z": 0}.get
+    assert list_files(tmp_path, depth) == ("a/two.txt", "top.txt")
+    assert list_files(tmp_path) == ("a/b/c/one.txt", "a/two.txt", "top.txt", "z/x/y.txt")
