@@ -13,9 +13,12 @@ Measures, each as wall time of a fresh process (cold start included):
   means a flat time per package), versus ``flake8 WS`` (up to ``--flake8-up-to`` packages);
   again with nothing changed (warm cache); and with one module of one package changed.
 
-With ``--hook-venv`` the one-package case is also timed where pre-commit runs the hook: a
-fresh virtual environment holding ``pkgtool-ros[style]`` alone (no ROS wheels, whose ``.pth``
-re-executes every Python start in the project's venv, and no editable-install finder).
+With ``--hook-venv`` the one-package case, and the warm and one-file-changed workspace runs,
+are also timed where pre-commit runs the hook: a fresh virtual environment holding
+``pkgtool-ros[style]`` alone (no ROS wheels, whose ``.pth`` re-executes every Python start in
+the project's venv, and no editable-install finder). Each workspace also gets its walk floor:
+a bare Python process listing every folder and examining every file, the least any cache
+keyed by file sizes and times does (the peer of the warm runs).
 
 Prints a table and writes the numbers to ``bench/results/lint-<UTC time>.json``; the time of
 ``python -c pass`` and of flake8 on one package calibrate the machine's load.
@@ -270,6 +273,8 @@ def measure(repeat: int, sizes: list[int], flake8_up_to: int, work: Path,
         changed_ws, _, _ = _time(lint + ["."], workspace, repeat,
                                  _one_file_changed(workspace, size))
         flake8_ws = _time(flake8 + ["."], workspace, 1)[0] if size <= flake8_up_to else None
+        floor_ws, _, _ = _time([sys.executable, "-S", "-c", WALK_FLOOR, "."], workspace, repeat)
+        hooked = _hook_workspace(hook_venv, workspace, size, repeat) if hook_venv else {}
         workspaces.append({
             "packages": size, "pkgtool_s": lint_ws, "pkgtool_cpu_s": lint_cpu,
             "packages_per_s": size / lint_ws, "ms_per_package": 1000 * lint_ws / size,
@@ -277,9 +282,38 @@ def measure(repeat: int, sizes: list[int], flake8_up_to: int, work: Path,
             "warm_packages_per_s": size / warm_ws, "one_file_changed_s": changed_ws,
             "flake8_s": flake8_ws,
             "ratio_pkgtool_over_flake8": lint_ws / flake8_ws if flake8_ws else None,
-            "pkgtool_exit_code": code})
+            "walk_floor_s": floor_ws, "pkgtool_exit_code": code, **hooked})
     result["workspaces"] = workspaces
     return result
+
+
+WALK_FLOOR = """
+import os, sys
+stack, found = [sys.argv[1]], 0
+while stack:
+    with os.scandir(stack.pop()) as entries:
+        for entry in entries:
+            if entry.is_dir(follow_symlinks=False):
+                stack.append(entry.path)
+            else:
+                entry.stat()
+                found += 1
+"""
+"""The floor of a warm run: a bare Python process listing every folder and examining every
+file (what any cache keyed by file sizes and times must do), with no imports beyond ``os``."""
+
+
+def _hook_workspace(hook_venv: Path, workspace: Path, size: int, repeat: int
+                    ) -> dict[str, Any]:
+    """Warm and one-file-changed runs with the hook environment's pkgtool (no ROS ``.pth``
+    re-executing every Python start), after one cold run that fills its own cache."""
+    lint = [str(hook_venv / "pkgtool"), "lint", "--cache-dir", ".pkgtool_cache_hook", "."]
+    subprocess.run(lint, cwd=workspace, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    time.sleep(2.1)
+    warm, _, _ = _time(lint, workspace, repeat)
+    changed, _, _ = _time(lint, workspace, repeat, _one_file_changed(workspace, size))
+    return {"hook_warm_s": warm, "hook_warm_packages_per_s": size / warm,
+            "hook_one_file_changed_s": changed}
 
 
 def _cell(value: float | None, form: str) -> str:
@@ -306,6 +340,13 @@ def table(result: dict[str, Any]) -> str:
                      f"{ws['packages_per_s']:.0f}", f"{ws['ms_per_package']:.2f}",
                      f"{ws['warm_s']:.3f}", f"{ws['warm_packages_per_s']:.0f}",
                      f"{ws['one_file_changed_s']:.3f}"))
+        if "hook_warm_s" in ws:
+            rows.append((f"{ws['packages']} packages, hook venv", "", "", "", "", "", "",
+                         f"{ws['hook_warm_s']:.3f}", f"{ws['hook_warm_packages_per_s']:.0f}",
+                         f"{ws['hook_one_file_changed_s']:.3f}"))
+        rows.append((f"{ws['packages']} packages, walk floor", "", "", "", "", "", "",
+                     f"{ws['walk_floor_s']:.3f}", f"{ws['packages'] / ws['walk_floor_s']:.0f}",
+                     ""))
     widths = [max(len(row[i]) for row in rows) for i in range(len(rows[0]))]
     lines = ["  ".join(c.rjust(w) for c, w in zip(row, widths)) for row in rows]
     calibration = result["calibration"]
@@ -322,8 +363,9 @@ def main() -> int:
     parser.add_argument("--flake8-up-to", type=int, default=500,
                         help="time flake8 on workspaces up to this many packages")
     parser.add_argument("--hook-venv", action="store_true",
-                        help="also time one package in a fresh venv holding pkgtool-ros[style] "
-                             "alone, as pre-commit installs the hook (needs the package index)")
+                        help="also time one package, and warm workspaces, in a fresh venv "
+                             "holding pkgtool-ros[style] alone, as pre-commit installs the "
+                             "hook (needs the package index)")
     args = parser.parse_args()
     # An installed pkgtool has its bytecode compiled; a checkout run with
     # PYTHONDONTWRITEBYTECODE would compile every module on every start.

@@ -3,13 +3,12 @@
 from __future__ import annotations
 
 from collections.abc import Iterable, Mapping
-from dataclasses import replace
 
 from pkgtool.config import ALL, Layer, settings_for
 from pkgtool.findings import Finding, Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.records import record
+from pkgtool.records import record, replace
 from pkgtool.rules.registry import Rule
 
 

@@ -8,7 +8,6 @@ the lists below, so no key changes unnoticed.
 from __future__ import annotations
 
 import json
-from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
@@ -22,6 +21,7 @@ from pkgtool.grade.results import CriterionResult, SubmissionResult
 from pkgtool.grade.rubric import Criterion, Rubric
 from pkgtool.report import PackageLabel, ReportContext, render as render_lint
 from pkgtool.model.span import Span
+from pkgtool.records import replace
 from pkgtool.report.json import SCHEMA_VERSION
 from tests.helpers import make_finding
 

@@ -1,21 +1,21 @@
-"""Findings to JSON and back, generically: every dataclass field, whatever it holds.
+"""Findings to JSON and back, generically: every record field, whatever it holds.
 
-A dataclass becomes ``{"@": "module:Class", field: value, ...}``, an enum member
-``{"@": "module:Class", "value": ...}``, a tuple ``{"@": "tuple", "items": [...]}``. Reading
-accepts only classes of pkgtool's own modules: already imported ones, or the data-only modules
-of :data:`_MODULE` (nothing else is imported or executed because of what a cache file says);
-anything else raises :class:`BadEntry`.
+A record (:mod:`pkgtool.records`) becomes ``{"@": "module:Class", field: value, ...}``, an
+enum member ``{"@": "module:Class", "value": ...}``, a tuple ``{"@": "tuple", "items": [...]}``.
+Reading accepts only classes of pkgtool's own modules: already imported ones, or the data-only
+modules of :data:`_MODULE` (nothing else is imported or executed because of what a cache file
+says); anything else raises :class:`BadEntry`.
 """
 
 from __future__ import annotations
 
-import dataclasses
 import importlib
 import re
 import sys
 from enum import Enum
 from typing import Any
 
+from pkgtool.records import fields, is_record
 
 _MODULE = re.compile(r"pkgtool\.(?:findings|model(?:\.\w+)+|edit(?:\.\w+)+)")
 """Modules a finding's values may come from that are safe to import because of an entry:
@@ -27,13 +27,12 @@ class BadEntry(ValueError):
 
 
 def encode(value: Any) -> Any:
-    """``value`` (dataclasses, enums, tuples, lists, dicts with str keys, JSON scalars) as JSON."""
+    """``value`` (records, enums, tuples, lists, dicts with str keys, JSON scalars) as JSON."""
     if isinstance(value, Enum):
         return {"@": _name(type(value)), "value": value.value}
-    if dataclasses.is_dataclass(value) and not isinstance(value, type):
-        fields = {f.name: encode(getattr(value, f.name))
-                  for f in dataclasses.fields(value) if f.init}
-        return {"@": _name(type(value)), **fields}
+    if is_record(value) and not isinstance(value, type):
+        return {"@": _name(type(value)),
+                **{f.name: encode(getattr(value, f.name)) for f in fields(value)}}
     if isinstance(value, tuple):
         return {"@": "tuple", "items": [encode(item) for item in value]}
     if isinstance(value, list):
@@ -81,7 +80,7 @@ def _name(cls: type) -> str:
 
 
 def _class(tag: Any) -> type:
-    """The pkgtool dataclass or enum named by ``tag``: from a module already imported, or one
+    """The pkgtool record or enum named by ``tag``: from a module already imported, or one
     of the side-effect-free modules findings are made of (imported on demand)."""
     if not isinstance(tag, str) or ":" not in tag:
         raise BadEntry(f"bad tag {tag!r}")
@@ -93,6 +92,6 @@ def _class(tag: Any) -> type:
         except ImportError:
             module = None
     cls = getattr(module, name, None) if module is not None and "." not in name else None
-    if not isinstance(cls, type) or not (dataclasses.is_dataclass(cls) or issubclass(cls, Enum)):
+    if not isinstance(cls, type) or not (is_record(cls) or issubclass(cls, Enum)):
         raise BadEntry(f"unknown class {tag!r}")
     return cls

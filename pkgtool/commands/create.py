@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import getpass
 import subprocess
-from dataclasses import replace
 from pathlib import Path
 
 from pkgtool.commands import ExitCode
@@ -15,7 +14,7 @@ from pkgtool.create import CreateError
 from pkgtool.create.options import Plan, Request, validate
 from pkgtool.create.writer import (Hook, check_destination, enclosing_package, tree,
                                    write_package)
-from pkgtool.records import record
+from pkgtool.records import record, replace
 
 __all__ = ["CreateResult", "Request", "defaults", "run"]
 

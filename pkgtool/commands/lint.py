@@ -8,7 +8,6 @@ from __future__ import annotations
 import os
 import threading
 from collections.abc import Iterator, Mapping, Sequence
-from dataclasses import replace
 from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Optional, Union
@@ -17,7 +16,7 @@ from pkgtool.commands import ExitCode
 from pkgtool.config import ConfigError, ConfigFinder, Layer, Settings, check_rosdistro
 from pkgtool.findings import Finding, Severity
 from pkgtool.model.context import Context, WorkspacePackage, workspace_index, workspace_near
-from pkgtool.records import record
+from pkgtool.records import record, replace
 from pkgtool.report import PackageLabel
 from pkgtool.workspace import discover
 

@@ -7,7 +7,6 @@ A new file is one edit with ``create=True`` that inserts its whole text at offse
 from __future__ import annotations
 
 from collections.abc import Iterable, Sequence
-from dataclasses import dataclass
 
 from pkgtool.records import record
 
@@ -16,7 +15,7 @@ class EditError(Exception):
     """An edit pkgtool refuses to make; the message says why and what to do instead."""
 
 
-@dataclass(frozen=True, slots=True, order=True)
+@record(order=True)
 class Edit:
     """Replace ``text[start:end]`` of the file at ``path`` (package-relative POSIX)."""
 

@@ -4,7 +4,6 @@ names, misspelled), SPDX."""
 from __future__ import annotations
 
 from collections.abc import Iterator
-from dataclasses import replace
 
 from pkgtool.edit.core import Fix
 from pkgtool.edit.manifest import ManifestDoc
@@ -15,6 +14,7 @@ from pkgtool.fix.registry import Refusal, fixer
 from pkgtool.knowledge.rosdep import suggested_key
 from pkgtool.knowledge.rosdistro import close_names
 from pkgtool.model.package import Package
+from pkgtool.records import replace
 from pkgtool.rules.manifest.non_spdx_license import spdx_spelling
 
 

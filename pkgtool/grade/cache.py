@@ -9,7 +9,6 @@ that failed inside pkgtool (``internal error``) are never stored.
 
 from __future__ import annotations
 
-import dataclasses
 import hashlib
 import json
 import os
@@ -22,14 +21,15 @@ from pkgtool.grade.grader import grade_submission
 from pkgtool.grade.results import CriterionResult, SubmissionResult
 from pkgtool.grade.rubric import Criterion, Rubric
 from pkgtool.grade.sources import tree_digest
+from pkgtool.records import asdict, fields, replace
 
 
 def criterion_digest(criterion: Criterion, rubric: Rubric) -> str:
     """SHA-256 of everything that decides ``criterion``'s result besides the submission."""
-    settings = {f.name: getattr(criterion, f.name) for f in dataclasses.fields(criterion)}
+    settings = {f.name: getattr(criterion, f.name) for f in fields(criterion)}
     if criterion.path is not None:
         settings["path"] = tree_digest(criterion.path)
-    shared = {"package": rubric.package, "limits": dataclasses.asdict(rubric.limits),
+    shared = {"package": rubric.package, "limits": asdict(rubric.limits),
               "test_timeout": rubric.test_timeout, "pkgtool": __version__}
     text = json.dumps([settings, shared], sort_keys=True, default=str)
     return hashlib.sha256(text.encode()).hexdigest()
@@ -65,10 +65,10 @@ def grade_cached(path: Path, rubric: Rubric, *, folder: Path, label: str | None 
     missing = tuple(c for c in rubric.criteria if stored[c.name] is None)
     fresh = None
     if missing:
-        fresh = grade_submission(path, dataclasses.replace(rubric, criteria=missing),
+        fresh = grade_submission(path, replace(rubric, criteria=missing),
                                  label=label, mode=mode)
         for criterion in fresh.criteria:
-            stored[criterion.name] = {"criterion": dataclasses.asdict(criterion),
+            stored[criterion.name] = {"criterion": asdict(criterion),
                                       "package": fresh.package, "error": fresh.error,
                                       "isolation": fresh.isolation}
             if not (fresh.error or "").startswith("internal error"):

@@ -5,13 +5,12 @@ See docs/grading.md for the format; ``pkgtool grade --init-rubric`` writes a com
 
 from __future__ import annotations
 
-from dataclasses import field, fields
 from pathlib import Path
 from typing import Any
 
 from pkgtool.compat import tomllib
 from pkgtool.grade.limits import Limits
-from pkgtool.records import record
+from pkgtool.records import field, fields, record
 
 KINDS = ("build", "executables", "lint", "style", "tests", "hidden")
 VISIBILITIES = ("visible", "hidden", "after_due_date", "after_published")

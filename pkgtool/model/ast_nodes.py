@@ -57,6 +57,28 @@ def walk_once(tree: ast.AST) -> Walk:
     return Walk(tuple(found), parents, by_class)
 
 
+def child_nodes(node: ast.AST) -> list[ast.AST]:
+    """``list(ast.iter_child_nodes(node))``, without its two generators."""
+    found: list[ast.AST] = []
+    for name in node._fields:
+        value = getattr(node, name, None)
+        if type(value) is list:
+            for item in value:
+                if isinstance(item, ast.AST):
+                    found.append(item)
+        elif isinstance(value, ast.AST):
+            found.append(value)
+    return found
+
+
+def subtree(node: ast.AST) -> list[ast.AST]:
+    """``list(ast.walk(node))`` (breadth first), for a part of a tree walked once."""
+    found = [node]
+    for current in found:  # the list grows while it is read: breadth first
+        found.extend(child_nodes(current))
+    return found
+
+
 def nodes_of(tree: ast.AST) -> tuple[ast.AST, ...]:
     """``tuple(ast.walk(tree))``, computed once per tree object."""
     return walk_once(tree).nodes

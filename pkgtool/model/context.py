@@ -16,14 +16,13 @@ import os
 import re
 from collections import Counter
 from collections.abc import Iterable, Mapping
-from dataclasses import field
 from pathlib import Path
 
 from pkgtool.knowledge.tables import DEFAULT_DISTRO
 from pkgtool.model.cmake_interfaces import with_listed
 from pkgtool.model.files import list_files
 from pkgtool.model.memo import per_object
-from pkgtool.records import record
+from pkgtool.records import field, record
 
 _NAME = re.compile(r"<name>\s*([^<\s]+)\s*</name>")
 _KINDS = ("msg", "srv", "action")

@@ -8,12 +8,12 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterator
-from dataclasses import replace
 
 from pkgtool.model.launch import FileRef, LaunchFile, NodeRef, PackageRef
 from pkgtool.model.launch_python import NAME_REMAPS, remapped_name
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.model.xml import XmlElement
+from pkgtool.records import replace
 
 _LOOKUP = re.compile(r"\$\(\s*find-pkg-(share|prefix)\s+([A-Za-z0-9_]+)\s*\)")
 _SHARE_PATH = re.compile(r"^\$\(\s*find-pkg-share\s+([A-Za-z0-9_]+)\s*\)(/[^$]*)$")

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
-from dataclasses import field
 from pathlib import Path
 
 from pkgtool.model.context import Context
@@ -16,7 +15,7 @@ from pkgtool.model.modules import PythonModule, parse_module
 from pkgtool.model.setup_cfg import SetupCfg, parse_setup_cfg
 from pkgtool.model.setup_py import SetupPy, parse_setup_py
 from pkgtool.model.span import ParseProblem
-from pkgtool.records import record
+from pkgtool.records import field, record
 
 _PY_SUPPRESSION = re.compile(r"#\s*pkgtool:\s*ignore(?:\[([A-Za-z0-9_,\s-]*)\])?")
 _XML_SUPPRESSION = re.compile(r"<!--\s*pkgtool:\s*ignore\b([A-Za-z0-9_,\s-]*)-->")

@@ -9,11 +9,10 @@ from __future__ import annotations
 
 import configparser
 import shlex
-from dataclasses import field
 
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
-from pkgtool.records import record
+from pkgtool.records import field, record
 
 DEFAULTS: dict[str, tuple[str, ...]] = {
     "python_files": ("test_*.py", "*_test.py"),

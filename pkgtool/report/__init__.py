@@ -12,11 +12,10 @@ from __future__ import annotations
 
 import importlib
 from collections.abc import Mapping, Sequence
-from dataclasses import field
 
 from pkgtool.findings import Finding, Severity
 from pkgtool.model.span import Span
-from pkgtool.records import record
+from pkgtool.records import field, record
 from pkgtool.rules.registry import Rule
 
 __all__ = ["FORMATS", "PackageLabel", "ReportContext", "counts", "display_path", "render",

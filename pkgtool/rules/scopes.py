@@ -6,6 +6,8 @@ import ast
 from collections import Counter
 from collections.abc import Iterator
 
+from pkgtool.model.ast_nodes import child_nodes
+
 _NESTED = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda, ast.ListComp,
            ast.SetComp, ast.DictComp, ast.GeneratorExp)
 _BROAD = frozenset({"Exception", "BaseException"})
@@ -41,7 +43,7 @@ def scope_walk(body: list[ast.stmt], *, skip_protected: bool = False) -> Iterato
                 _caught(h) & _NAME_ERRORS for h in node.handlers):
             children: list[ast.AST] = [*node.handlers, *node.orelse, *node.finalbody]
         else:
-            children = list(ast.iter_child_nodes(node))
+            children = child_nodes(node)
         stack.extend(reversed(children))
 
 

@@ -9,14 +9,13 @@ from __future__ import annotations
 
 import ast
 from collections.abc import Iterator
-from dataclasses import field
 
 from pkgtool.model.ast_nodes import walk_once
 from pkgtool.model.memo import per_object
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
-from pkgtool.records import record
+from pkgtool.records import field, record
 from pkgtool.rules.imports import installed_code
 
 FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)

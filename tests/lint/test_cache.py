@@ -202,7 +202,7 @@ def test_findings_round_trip_whatever_they_carry() -> None:
 
 
 def test_a_finding_carrying_a_fix_round_trips_in_a_fresh_process() -> None:
-    from dataclasses import replace
+    from pkgtool.records import replace
 
     from pkgtool.edit.core import Edit, Fix
 

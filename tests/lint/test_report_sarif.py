@@ -69,7 +69,7 @@ def test_the_document_is_valid_against_the_official_sarif_schema() -> None:
 
 
 def test_related_places_are_related_locations() -> None:
-    from dataclasses import replace
+    from pkgtool.records import replace
 
     from pkgtool.model.span import Span
 

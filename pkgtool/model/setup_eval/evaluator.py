@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import ast
-from dataclasses import dataclass, field
 from typing import Any
 
 from pkgtool.model.setup_eval import builtins
@@ -13,15 +12,19 @@ from pkgtool.model.setup_eval.values import Builtin, NotStatic, Opaque
 from pkgtool.model.span import Span, Unresolved
 
 
-@dataclass
 class SetupCall:
-    """A ``setup(...)`` call reached while running setup.py, with its evaluated keywords."""
+    """A ``setup(...)`` call reached while running setup.py, filled with its evaluated keywords
+    as the evaluator meets them: their ``values``, ``spans`` and ``sources``, and those it
+    could not evaluate (``unresolved``)."""
 
-    span: Span
-    values: dict[str, Any] = field(default_factory=dict)
-    spans: dict[str, Span] = field(default_factory=dict)
-    sources: dict[str, Unresolved] = field(default_factory=dict)
-    unresolved: list[tuple[str, Unresolved]] = field(default_factory=list)
+    __slots__ = ("span", "values", "spans", "sources", "unresolved")
+
+    def __init__(self, span: Span) -> None:
+        self.span = span
+        self.values: dict[str, Any] = {}
+        self.spans: dict[str, Span] = {}
+        self.sources: dict[str, Unresolved] = {}
+        self.unresolved: list[tuple[str, Unresolved]] = []
 
 
 class Interpreter(ExpressionEvaluator):

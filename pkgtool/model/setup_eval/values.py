@@ -2,12 +2,11 @@
 
 from __future__ import annotations
 
-from dataclasses import field
 from pathlib import PurePosixPath
 from typing import Any
 
 from pkgtool.model.span import Span, Unresolved
-from pkgtool.records import record
+from pkgtool.records import field, record
 
 
 @record

@@ -14,11 +14,12 @@ from __future__ import annotations
 
 import ast
 from collections import Counter
-from collections.abc import Callable, Iterator
-from typing import Generic, TypeVar
+from collections.abc import Callable, Iterable, Iterator
+from typing import Any, Generic, TypeVar
 
 from pkgtool.knowledge.message_fields import Message, message_of
-from pkgtool.model.ast_nodes import nodes_of, nodes_of_class
+from pkgtool.model.ast_nodes import nodes_of, nodes_of_class, subtree
+from pkgtool.model.memo import per_object
 from pkgtool.model.package import Package
 from pkgtool.records import record
 from pkgtool.rules.scopes import bound_names
@@ -45,7 +46,7 @@ class Instance(Generic[T]):
     refs: list[ast.expr]
 
 
-def _all_bindings(nodes: list[ast.AST]) -> Counter[str]:
+def _all_bindings(nodes: Iterable[ast.AST]) -> Counter[str]:
     """How often each name is bound among ``nodes`` (every scope: parameters, targets,
     imports, definitions, ``global``/``nonlocal`` names)."""
     found: Counter[str] = Counter()
@@ -78,7 +79,7 @@ def _path(node: ast.Attribute) -> tuple[str, ...]:
     return tuple(reversed(names))
 
 
-def _on(nodes: list[ast.AST], is_root: Callable[[ast.expr], bool]) -> Iterator[ast.Attribute]:
+def _on(nodes: Iterable[ast.AST], is_root: Callable[[ast.expr], bool]) -> Iterator[ast.Attribute]:
     """The attributes among ``nodes`` taken directly on a root expression."""
     return (n for n in nodes if isinstance(n, ast.Attribute) and is_root(n.value))
 
@@ -108,6 +109,43 @@ def _fresh(node: ast.AST) -> tuple[str, ast.Call] | None:
 Scope = ast.Module | ast.FunctionDef | ast.AsyncFunctionDef
 
 
+@per_object(16)
+def _facts(tree: ast.Module) -> dict[object, Any]:
+    """What the rules derive from ``tree`` whatever they look for, by the id of the scope or
+    class it concerns: worked out once per tree (PYC019 and PYC020 read the same)."""
+    return {}
+
+
+@record
+class _ScopeFacts:
+    """A scope's nodes, how often each name is bound in it and inside it (``counts``) and in
+    it alone (``own``), and by name the attributes taken on a name (``uses``) and the reads
+    of the name (``refs``)."""
+
+    counts: Counter[str]
+    own: Counter[str]
+    uses: dict[str, list[ast.Attribute]]
+    refs: dict[str, list[ast.expr]]
+
+
+def _scope_facts(tree: ast.Module, scope: Scope) -> _ScopeFacts:
+    known = _facts(tree)
+    if id(scope) not in known:
+        nodes = nodes_of(scope) if isinstance(scope, ast.Module) else subtree(scope)
+        counts = _all_bindings(nodes)
+        uses: dict[str, list[ast.Attribute]] = {}
+        refs: dict[str, list[ast.expr]] = {}
+        for node in nodes:
+            if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name):
+                uses.setdefault(node.value.id, []).append(node)
+            elif isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
+                refs.setdefault(node.id, []).append(node)
+        own = counts if isinstance(scope, ast.Module) else bound_names(scope)
+        known[id(scope)] = _ScopeFacts(counts, own, uses, refs)
+    facts: _ScopeFacts = known[id(scope)]
+    return facts
+
+
 def local_instances(tree: ast.Module, index: Index, make: Maker[T]) -> Iterator[Instance[T]]:
     """Local variables (of functions and of the module) that hold what ``make`` makes."""
     made: dict[int, tuple[Scope, list[tuple[str, T]]]] = {}
@@ -118,15 +156,11 @@ def local_instances(tree: ast.Module, index: Index, make: Maker[T]) -> Iterator[
         if fresh is not None and message is not None and scope is not None:
             made.setdefault(id(scope), (scope, []))[1].append((fresh[0], message))
     for scope, found in made.values():
-        nodes = list(nodes_of(scope) if isinstance(scope, ast.Module) else ast.walk(scope))
-        counts = _all_bindings(nodes)
-        own = counts if isinstance(scope, ast.Module) else bound_names(scope)
+        facts = _scope_facts(tree, scope)
         for name, message in found:
-            if counts[name] == own[name] == 1:
-                uses = list(_on(nodes, lambda e: isinstance(e, ast.Name) and e.id == name))
-                refs: list[ast.expr] = [n for n in nodes if isinstance(n, ast.Name)
-                                        and n.id == name and isinstance(n.ctx, ast.Load)]
-                yield _instance(message, uses, refs, index)
+            if facts.counts[name] == facts.own[name] == 1:
+                yield _instance(message, facts.uses.get(name, []), facts.refs.get(name, []),
+                                index)
 
 
 def _scope(statement: ast.AST, tree: ast.Module, index: Index) -> Scope | None:
@@ -140,14 +174,51 @@ def _scope(statement: ast.AST, tree: ast.Module, index: Index) -> Scope | None:
     return parent if isinstance(parent, FUNCTIONS) else tree
 
 
-def _receiver(method: ast.AST) -> str | None:
-    """The first parameter of a plain method (no decorator), when the method never rebinds it."""
+def _receiver(method: ast.AST, nodes: list[ast.AST]) -> str | None:
+    """The first parameter of a plain method (no decorator), when the method (its ``nodes``)
+    never rebinds it."""
     if not isinstance(method, FUNCTIONS) or method.decorator_list:
         return None
     positional = [*method.args.posonlyargs, *method.args.args]
-    if not positional or _all_bindings(list(ast.walk(method)))[positional[0].arg] != 1:
+    if not positional or _all_bindings(nodes)[positional[0].arg] != 1:
         return None
     return positional[0].arg
+
+
+@record
+class _ClassFacts:
+    """The ``self.x`` attributes of a class's methods: by name the stores (in order), the
+    reads of ``self.x`` itself (``refs``) and the attributes taken on it (``uses``), and the
+    names the class body binds (``defined``)."""
+
+    stores: dict[str, list[ast.Attribute]]
+    refs: dict[str, list[ast.expr]]
+    uses: dict[str, list[ast.Attribute]]
+    defined: Counter[str]
+
+
+def _class_facts(tree: ast.Module, cls: ast.ClassDef) -> _ClassFacts:
+    known = _facts(tree)
+    if id(cls) not in known:
+        stores: dict[str, list[ast.Attribute]] = {}
+        refs: dict[str, list[ast.expr]] = {}
+        uses: dict[str, list[ast.Attribute]] = {}
+        for method in cls.body:
+            nodes = subtree(method) if isinstance(method, FUNCTIONS) else []
+            receiver = _receiver(method, nodes)
+            if receiver is None:
+                continue
+            for node in _on(nodes, lambda e: isinstance(e, ast.Name) and e.id == receiver):
+                if not isinstance(node.ctx, ast.Load):
+                    stores.setdefault(node.attr, []).append(node)
+                else:
+                    refs.setdefault(node.attr, []).append(node)
+            for node in _on(nodes, lambda e: isinstance(e, ast.Attribute)
+                            and isinstance(e.value, ast.Name) and e.value.id == receiver):
+                uses.setdefault(node.value.attr, []).append(node)  # type: ignore[attr-defined]
+        known[id(cls)] = _ClassFacts(stores, refs, uses, bound_names(cls.body))
+    facts: _ClassFacts = known[id(cls)]
+    return facts
 
 
 def _dynamic(tree: ast.Module) -> bool:
@@ -167,25 +238,13 @@ def attribute_instances(tree: ast.Module, index: Index, make: Maker[T]
     stores = Counter(n.attr for n in nodes_of_class(tree, ast.Attribute)
                      if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load))
     for cls in index.classes:
-        makers: dict[str, list[T | None]] = {}
-        uses: dict[str, list[ast.Attribute]] = {}
-        refs: dict[str, list[ast.expr]] = {}
-        for method in cls.body:
-            receiver = _receiver(method)
-            nodes = list(ast.walk(method)) if receiver else []
-            for node in _on(nodes, lambda e: isinstance(e, ast.Name) and e.id == receiver):
-                if not isinstance(node.ctx, ast.Load):
-                    makers.setdefault(node.attr, []).append(_assigned(node, index, make))
-                else:
-                    refs.setdefault(node.attr, []).append(node)
-            for node in _on(nodes, lambda e: isinstance(e, ast.Attribute)
-                            and isinstance(e.value, ast.Name) and e.value.id == receiver):
-                uses.setdefault(node.value.attr, []).append(node)  # type: ignore[attr-defined]
-        defined = bound_names(cls.body)
-        for attr, made in makers.items():
+        facts = _class_facts(tree, cls)
+        for attr, targets in facts.stores.items():
+            made = [_assigned(target, index, make) for target in targets]
             if (made[0] is not None and made.count(made[0]) == len(made) == stores[attr]
-                    and not defined[attr]):
-                yield _instance(made[0], uses.get(attr, []), refs.get(attr, []), index, skip=1)
+                    and not facts.defined[attr]):
+                yield _instance(made[0], facts.uses.get(attr, []), facts.refs.get(attr, []),
+                                index, skip=1)
 
 
 def _assigned(target: ast.Attribute, index: Index, make: Maker[T]) -> T | None:
@@ -198,10 +257,17 @@ def _assigned(target: ast.Attribute, index: Index, make: Maker[T]) -> T | None:
 
 
 def message_instances(tree: ast.Module, index: Index, known: Known) -> list[Instance[Message]]:
-    """The local variables and ``self.x`` attributes that hold a fresh known message."""
-    def make(call: ast.Call) -> Message | None:
-        return known(call.func)
-    return [*local_instances(tree, index, make), *attribute_instances(tree, index, make)]
+    """The local variables and ``self.x`` attributes that hold a fresh known message
+    (``known`` must be :func:`known_messages` of the tree's package: the result is kept
+    with the tree)."""
+    facts = _facts(tree)
+    if "messages" not in facts:
+        def make(call: ast.Call) -> Message | None:
+            return known(call.func)
+        facts["messages"] = [*local_instances(tree, index, make),
+                             *attribute_instances(tree, index, make)]
+    instances: list[Instance[Message]] = facts["messages"]
+    return instances
 
 
 def known_messages(package: Package, index: Index) -> Known:
