@@ -267,18 +267,25 @@ def test_code(package: Package) -> list[PythonModule]:
 
 def classify(top: str, declared_names: Iterable[str], context: Context = Context()
              ) -> tuple[str, tuple[str, ...]]:
-    """The kind of a top-level import and the keys that provide it, for ``context``'s target."""
+    """The kind of a top-level import and the keys that provide it, for ``context``'s target.
+
+    A workspace package whose Python package ``top`` is provides it too, and comes first: the
+    workspace builds it from source, though rosdep (``python3-x-pip``) or the distribution
+    (a released package of the same name) may also have one.
+    """
     distro = context.distro
     released = is_released_package(top, distro)
+    provider = context.provider(top)
+    source = (provider,) if provider else ()
     keys = keys_for_import(top, distro)
     if keys:
         also = (*ALTERNATIVE_KEYS.get(top, ()), *((top,) if released else ()))
-        return "third-party", (*keys, *also)
+        return "third-party", tuple(dict.fromkeys((*source, *keys, *also)))
     if top in ROS_MODULE_PACKAGES or released or looks_like_ros(top):
-        return "ros", accepted_keys(top, package_for_ros_module(top))
-    provider = context.provider(top)
+        return "ros", tuple(dict.fromkeys(
+            (*source, *accepted_keys(top, package_for_ros_module(top)))))
     if provider:
-        return "ros", (provider,)
+        return "ros", source
     if top in declared_names:
         return "ros", (top,)
     guess = "python3-" + top.lower().replace("_", "-")

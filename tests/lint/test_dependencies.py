@@ -6,6 +6,7 @@ from pathlib import Path
 
 import pytest
 
+from pkgtool.model.context import Context, WorkspacePackage
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import classify, installed_code, needs, own_modules
 from tests.helpers import MINIMAL_MANIFEST, codes, findings, make_package
@@ -56,6 +57,15 @@ def test_classify(top: str, kind: str, key: str) -> None:
 
 def test_a_declared_name_is_a_package_not_unknown() -> None:
     assert classify("my_helpers", {"my_helpers"}) == ("ros", ("my_helpers",))
+
+
+@pytest.mark.parametrize(("top", "kind"), [("simple_pid", "third-party"),
+                                           ("tf_transformations", "ros")])
+def test_a_workspace_package_providing_the_module_comes_first(top: str, kind: str) -> None:
+    context = Context(workspace={"pid_src": WorkspacePackage("pid_src", modules=frozenset({top}))})
+    found_kind, keys = classify(top, (), context)
+    assert found_kind == kind
+    assert keys[0] == "pid_src" and keys[1:] == classify(top, ())[1]
 
 
 def test_stdlib_own_and_sibling_imports_need_nothing(tmp_path: Path) -> None:

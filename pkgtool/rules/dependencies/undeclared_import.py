@@ -23,9 +23,10 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     Standard library modules (of the target distribution's Python) and the package's own
     modules are skipped; a ROS import must be covered by `<depend>` or `<exec_depend>` of its
     package (`tf2_ros` by `tf2_ros_py`, not the C++ `tf2_ros`), the Python package of a
-    workspace package by that package, and a third-party module by one of the rosdep keys that
-    rosdep's data says install it (`cv2` by `python3-opencv`, `rosdistro` by
-    `python3-rosdistro-modules`, `pyflakes` by `pyflakes3`, ...). Modules that only a
+    workspace package by that package (also where rosdep has a `python3-x-pip` key for it), and
+    a third-party module by one of the rosdep keys that rosdep's data says install it (`cv2` by
+    `python3-opencv`, `rosdistro` by `python3-rosdistro-modules`, `pyflakes` by `pyflakes3`,
+    ...). Modules that only a
     `pytest11` entry point names are pytest plugins, checked as test code (DEP003). Without a
     setup.py at the root (ament_cmake) the modules inside Python package folders count as
     installed. A folder below the root with its own setup.py or pyproject.toml is a separate
