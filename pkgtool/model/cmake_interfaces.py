@@ -6,6 +6,8 @@ Some list files of other folders (``interfaces/msg/A.msg``: the folder holding a
 its kind), and some list files a variable from another package holds
 (``${test_interface_files_MSG_FILES}`` after ``find_package(test_interface_files)``): then
 the package defines interfaces no file of its tree shows, and its set of interfaces is open.
+
+The same reading gives the Python packages ``ament_python_install_package`` installs.
 """
 
 from __future__ import annotations
@@ -48,8 +50,7 @@ class ListedInterfaces:
 
 def listed_interfaces(text: str) -> ListedInterfaces:
     """The interface files the ``rosidl_generate_interfaces`` calls of ``text`` list."""
-    calls = [(name.lower(), _tokens(args)) for name, args in
-             _CALL.findall(_COMMENT.sub("", text))]
+    calls = _calls(text)
     variables = _variables(calls)
     files: set[str] = set()
     is_open = False
@@ -63,6 +64,25 @@ def listed_interfaces(text: str) -> ListedInterfaces:
                 elif value.endswith(_SUFFIXES):
                     files.add(posixpath.normpath(value.rsplit(":", 1)[-1].lstrip("/")))
     return ListedInterfaces(frozenset(files), is_open)
+
+
+def installed_python_packages(text: str) -> frozenset[str]:
+    """The Python packages the ``ament_python_install_package`` calls of ``text`` install.
+
+    The first argument names the package as Python imports it, wherever ``PACKAGE_DIR`` puts
+    its source (``ament_python_install_package(tb_tools PACKAGE_DIR python/tb_tools)``).
+    """
+    calls = _calls(text)
+    variables = _variables(calls)
+    return frozenset(value for name, args in calls
+                     if name == "ament_python_install_package" and args
+                     for value in _expand(args[0], variables, _DEPTH)
+                     if value and value.isidentifier())
+
+
+def _calls(text: str) -> list[tuple[str, list[str]]]:
+    """The commands of a CMake file, names in lower case, with their arguments."""
+    return [(name.lower(), _tokens(args)) for name, args in _CALL.findall(_COMMENT.sub("", text))]
 
 
 def interfaces_of_files(files: frozenset[str]) -> dict[str, frozenset[str]]:

@@ -21,6 +21,7 @@ from pkgtool.knowledge.rosdep import (ALTERNATIVE_KEYS, ROS_MODULE_PACKAGES, acc
                                       brought_in, package_for_ros_module, suggested_key)
 from pkgtool.knowledge.rosdistro import (any_stdlib_module, is_released_package,
                                          keys_for_import, stdlib_modules)
+from pkgtool.model.cmake_interfaces import installed_python_packages
 from pkgtool.model.context import Context
 from pkgtool.model.installed import (DATA_FOLDERS, in_separate_project, installed_modules,
                                      separate_projects)
@@ -141,12 +142,16 @@ def own_modules(package: Package) -> frozenset[str]:
     """Top-level names the package itself provides (never need a key).
 
     Modules at the top of a separate Python project inside the package (scripts and examples
-    import them from the source tree) are. A data folder installed by mistake under the name of
-    another provider's module (:func:`shadowing_folders`) is not: imports of that name mean the
-    other module.
+    import them from the source tree) are, and so are the Python packages its CMakeLists.txt
+    installs with ``ament_python_install_package`` (from any folder). A data folder installed
+    by mistake under the name of another provider's module (:func:`shadowing_folders`) is not:
+    imports of that name mean the other module.
     """
     layout = _layout(package.files)
     names = set(layout.names) | {package.name}
+    cmake = package.texts.get("CMakeLists.txt")
+    if cmake:
+        names.update(installed_python_packages(cmake))
     for folder in separate_projects(package):
         names.update(entry for entry in layout.children.get(folder, ())
                      if package.has_file(f"{folder}/{entry}.py") and entry != "setup"

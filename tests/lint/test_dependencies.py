@@ -87,6 +87,16 @@ def test_a_launch_folder_does_not_hide_the_launch_package(tmp_path: Path) -> Non
     assert "launch" not in own_modules(package)
 
 
+def test_cmake_installed_python_packages_are_own_modules(tmp_path: Path) -> None:
+    cmake = ("project(demo)\n# ament_python_install_package(commented_out)\n"
+             "ament_python_install_package(${PROJECT_NAME})\n"
+             "ament_python_install_package(\n  steps PACKAGE_DIR python/steps)\n")
+    package = make_package(tmp_path / "demo", {
+        "package.xml": _manifest(), "CMakeLists.txt": cmake, "python/steps/__init__.py": ""})
+    assert {"demo", "steps"} <= own_modules(package)
+    assert "commented_out" not in own_modules(package)
+
+
 def test_installed_code_follows_setup_py(tmp_path: Path) -> None:
     package = _package(tmp_path, {
         "demo/talker.py": "", "demo/sub/__init__.py": "", "demo/sub/x.py": "",
