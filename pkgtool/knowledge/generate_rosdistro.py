@@ -48,6 +48,7 @@ DIST_MODULES: dict[str, tuple[str, ...]] = {
     "pyjwt": ("jwt",), "python-xlib": ("Xlib",), "xlib": ("Xlib",), "attrs": ("attr", "attrs"),
     "msgpack-python": ("msgpack",), "netcdf4": ("netCDF4",), "pynacl": ("nacl",),
     "python-magic": ("magic",), "python-slugify": ("slugify",), "wxpython": ("wx",),
+    "matplotlib": ("matplotlib", "mpl_toolkits", "pylab"),
 }
 """Distribution names (PyPI, or Debian/Gentoo without ``python3-``) whose modules have other names.
 
