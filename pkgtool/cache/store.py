@@ -94,18 +94,20 @@ class LintCache:
         self._loaded = _identity(self.folder / PACK)
         self._entries = _load(self.folder / PACK)
         self._fresh: dict[str, Entry] = {}
+        self._code_key = _digest([SCHEMA, _code_fingerprint()])
         self._run_key = ""
         self._workspace: Mapping[Path, WorkspacePackage] = {}
         self._settings_keys: dict[int, tuple[Settings, str]] = {}
 
     def indexed(self, scans: Mapping[Path, Scan]) -> dict[Path, WorkspacePackage]:
-        """The workspace-index entries recorded with the packages whose files are all as they
-        were then (the same paths, sizes and settled times): they need not be read again."""
+        """The workspace-index entries recorded by this code with the packages whose files are
+        all as they were then (the same paths, sizes and settled times): they need not be read
+        again."""
         known = {}
         for root, scanned in scans.items():
             entry = self._entries.get(str(root))
             if isinstance(entry, dict) and entry.get("root") == str(root) and \
-                    _as_recorded(entry, scanned):
+                    entry.get("code") == self._code_key and _as_recorded(entry, scanned):
                 package = _index_entry(entry.get("index"))
                 if package is not None:
                     known[root] = package
@@ -114,7 +116,7 @@ class LintCache:
     def bind(self, workspace: Mapping[Path, WorkspacePackage]) -> None:
         """Key the lookups to this code and the run's ``workspace`` index."""
         self._workspace = workspace
-        self._run_key = _digest([SCHEMA, _code_fingerprint(), _workspace_key(workspace)])
+        self._run_key = _digest([self._code_key, _workspace_key(workspace)])
 
     def lookup(self, root: Path, settings: Settings, *, read: bool = True,
                scanned: Scan | None = None) -> Lookup | None:
@@ -164,7 +166,7 @@ class LintCache:
         if not lookup.files.unchanged(root):
             return None
         package = self._workspace.get(root)
-        return {"root": str(root), "key": lookup.key, "name": name,
+        return {"root": str(root), "key": lookup.key, "name": name, "code": self._code_key,
                 "digest": lookup.files.digest(),
                 "index": _index_record(package) if package is not None else None,
                 "taken_ns": lookup.files.taken_ns, "files": lookup.files.stats,

@@ -6,7 +6,8 @@ package colcon would find there; of several packages of one name (two workspaces
 run) a package sees the nearest one (:func:`workspace_near`). For each one the index keeps
 its name, the interfaces of its ``msg/``, ``srv/`` and ``action/`` folders (their subfolders
 too: see :func:`interface_file`) and the other files its CMakeLists.txt generates interfaces
-from (none when that list is open), and its top-level Python packages. Reading is cheap
+from (none when that list is open), and its top-level Python packages (those its CMakeLists.txt
+installs with ``ament_python_install_package`` too). Reading is cheap
 (package.xml's name, CMakeLists.txt and a few folder listings) and never raises.
 """
 
@@ -19,7 +20,7 @@ from collections.abc import Iterable, Mapping
 from pathlib import Path
 
 from pkgtool.knowledge.tables import DEFAULT_DISTRO
-from pkgtool.model.cmake_interfaces import with_listed
+from pkgtool.model.cmake_interfaces import installed_python_packages, with_listed
 from pkgtool.model.files import list_files
 from pkgtool.model.memo import per_object
 from pkgtool.records import field, record
@@ -105,6 +106,8 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
         elif path == "CMakeLists.txt":
             cmake = _read(os.path.join(base, path))
     folders = {kind: frozenset(names) for kind, names in kinds.items()}
+    if cmake is not None:
+        modules |= installed_python_packages(cmake)
     return WorkspacePackage(name, with_listed(folders, cmake) or {}, frozenset(modules))
 
 

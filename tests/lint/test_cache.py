@@ -114,23 +114,29 @@ def _settle(tree: Path) -> None:
 
 def test_the_workspace_index_is_kept_with_settled_packages_and_read_again_on_change(
         tmp_path: Path) -> None:
-    talker = correct_package_files("talker")
-    listener = correct_package_files("listener")
-    listener["listener/use.py"] = "import talker\n"
-    ws = write_tree(tmp_path / "ws", {**{f"src/talker/{k}": v for k, v in talker.items()},
-                                      **{f"src/listener/{k}": v for k, v in listener.items()}})
+    beta = correct_package_files("beta")
+    beta["beta/use.py"] = "import alpha\n"  # a workspace package's module: DEP001 declare it
+    ws = write_tree(tmp_path / "ws", {
+        **{f"src/alpha/{k}": v for k, v in correct_package_files("alpha").items()},
+        **{f"src/beta/{k}": v for k, v in beta.items()}})
     _settle(ws)
     first = _lint(ws).stdout
-    talker_root = str(ws / "src" / "talker")
-    assert _entries(ws / ".pkgtool_cache")[talker_root]["index"] == ["talker", {}, ["talker"]]
+    assert "DEP001" in first
+    alpha_root = str(ws / "src" / "alpha")
+    assert _entries(ws / ".pkgtool_cache")[alpha_root]["index"] == ["alpha", {}, ["alpha"]]
     assert _lint(ws).stdout == first  # the index of both packages comes from the cache
     pack = ws / ".pkgtool_cache" / "lint" / "packages.json"
     whole = json.loads(pack.read_text())
-    for broken in ("garbage", ["talker", {"msg": "X"}, []], [1, {}, []], None):
-        whole["entries"][talker_root]["index"] = broken
+    recorded = whole["entries"][alpha_root]
+    for broken in ("garbage", ["alpha", {"msg": "X"}, []], [1, {}, []], None):
+        whole["entries"][alpha_root] = {**recorded, "index": broken}
         pack.write_text(json.dumps(whole))
         assert _lint(ws).stdout == first, broken
-    (ws / "src" / "talker" / "talker").rename(ws / "src" / "talker" / "speaker")
+    # what another pkgtool read (no module `alpha`) is not trusted by this one
+    whole["entries"][alpha_root] = {**recorded, "code": "0" * 64, "index": ["alpha", {}, []]}
+    pack.write_text(json.dumps(whole))
+    assert _lint(ws).stdout == first
+    (ws / "src" / "alpha" / "alpha").rename(ws / "src" / "alpha" / "renamed")
     _settle(ws)
     moved = _lint(ws).stdout
     assert moved == _lint(ws, "--no-cache").stdout != first

@@ -137,7 +137,8 @@ def test_the_workspace_index_reads_the_same_from_the_folders_or_from_a_file_list
     write_tree(tmp_path, {
         "package.xml": "<package format='3'><name>things</name></package>\n",
         "CMakeLists.txt":
-            "rosidl_generate_interfaces(${PROJECT_NAME} \"interfaces/msg/Listed.msg\")\n",
+            "rosidl_generate_interfaces(${PROJECT_NAME} \"interfaces/msg/Listed.msg\")\n"
+            "ament_python_install_package(helpers PACKAGE_DIR python/helpers)\n",
         "msg/Plain.msg": "", "msg/a/b/c/Deep.msg": "", "msg/a/b/c/d/TooDeep.msg": "",
         "msg/.hidden/Hidden.msg": "", "msg/nested/package.xml": "<package/>",
         "msg/nested/Nested.msg": "", "srv/Ask.srv": "", "action/Go.action": "",
@@ -150,7 +151,7 @@ def test_the_workspace_index_reads_the_same_from_the_folders_or_from_a_file_list
     read = read_workspace_package(tmp_path)
     assert read == read_workspace_package(tmp_path, list_files(tmp_path))
     assert read.name == "things"
-    assert read.modules == {"things", "lib"}
+    assert read.modules == {"things", "lib", "helpers"}
     assert {kind: set(names) for kind, names in read.interfaces.items()} == {
         "msg": {"Plain", "Deep", "Shape", "Listed"}, "srv": {"Ask"}, "action": {"Go"}}
 
