@@ -5,6 +5,7 @@ Nothing here prints: :func:`run` returns a frozen :class:`LintResult` that the C
 
 from __future__ import annotations
 
+import gc
 import os
 import threading
 from collections.abc import Iterator, Mapping, Sequence
@@ -199,9 +200,14 @@ def _check_all(jobs: list[Job], workspace: Workspace, cache: LintCache | None = 
         return
     from concurrent.futures import ProcessPoolExecutor
 
-    context = multiprocessing.get_context("fork")  # workers inherit the loaded rules; no threads
-    with ProcessPoolExecutor(workers, mp_context=context) as pool:
-        yield from pool.map(check, jobs, chunksize=max(1, len(jobs) // (workers * 8)))
+    yield check(jobs[0])  # loads every table and pattern the rules use, before the workers fork
+    gc.freeze()  # what the workers inherit is never walked by their collections (no copy-on-write)
+    try:
+        context = multiprocessing.get_context("fork")  # workers inherit the loaded rules
+        with ProcessPoolExecutor(workers, mp_context=context) as pool:
+            yield from pool.map(check, jobs[1:], chunksize=max(1, len(jobs) // (workers * 8)))
+    finally:
+        gc.unfreeze()
 
 
 def _open_cache(options: LintOptions, cwd: Path) -> LintCache | None:
