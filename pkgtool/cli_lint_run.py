@@ -51,9 +51,8 @@ def lint_call(paths: Optional[list[str]] = None, fmt: Format = Format.TEXT,
 
     A bug in pkgtool is reported with its traceback and exit code 3, not a bare traceback.
     """
+    gc.set_threshold(*LINT_GC_THRESHOLDS)  # before the imports: they make objects too
     from pkgtool.commands import lint as command
-
-    gc.set_threshold(*LINT_GC_THRESHOLDS)
 
     options = command.LintOptions(_selectors(select) if select else None, _selectors(ignore),
                                   _selectors(extend_select) + (STYLE_FAMILIES if style else ()),
