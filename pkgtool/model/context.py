@@ -50,8 +50,14 @@ class Context:
     workspace: Mapping[str, WorkspacePackage] = field(default_factory=dict)
 
     def provider(self, module: str) -> str | None:
-        """The workspace package whose Python package ``module`` is, if any."""
-        return next((p.name for p in self.workspace.values() if module in p.modules), None)
+        """The workspace package whose Python package ``module`` is, if any: one installing a
+        Python package of that name, else an interface package of that name (rosidl generates
+        the Python package ``<name>`` holding its ``msg``, ``srv`` and ``action`` modules)."""
+        installing = next((p.name for p in self.workspace.values() if module in p.modules), None)
+        if installing is not None:
+            return installing
+        named = self.workspace.get(module)
+        return module if named is not None and named.interfaces else None
 
 
 def interface_file(path: str) -> tuple[str, str] | None:

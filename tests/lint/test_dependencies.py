@@ -68,6 +68,14 @@ def test_a_workspace_package_providing_the_module_comes_first(top: str, kind: st
     assert keys[0] == "pid_src" and keys[1:] == classify(top, ())[1]
 
 
+def test_an_interface_package_of_the_workspace_provides_its_generated_module() -> None:
+    types = WorkspacePackage("arm_types", interfaces={"msg": frozenset({"JointGoal"})})
+    no_interfaces = WorkspacePackage("arm_notes")
+    context = Context(workspace={"arm_types": types, "arm_notes": no_interfaces})
+    assert classify("arm_types", (), context) == ("ros", ("arm_types",))
+    assert classify("arm_notes", (), context)[0] == "unknown"
+
+
 def test_stdlib_own_and_sibling_imports_need_nothing(tmp_path: Path) -> None:
     package = _package(tmp_path, {
         "demo/talker.py": "import os\nimport json\nfrom demo import util\nimport util\n"

@@ -33,7 +33,9 @@ def unknown_import(package: Package) -> Iterator[Hit]:
     which key is missing, only that one probably is.
 
     A Python package of another package of the same workspace (linted in the same run, or
-    under the same colcon `src` folder) maps to that package (DEP001 then wants it declared).
+    under the same colcon `src` folder) maps to that package (DEP001 then wants it declared),
+    and so does the Python package rosidl generates for a workspace interface package (its
+    name, whatever it looks like).
 
     ## Example
     ```python
