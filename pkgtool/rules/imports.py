@@ -345,21 +345,27 @@ MAX_PLACES = 5
 """Other places of one mistake a message names (``related`` has them all)."""
 
 
-def grouped(found: Iterable[Need]) -> Iterator[tuple[Need, tuple[Need, ...]]]:
-    """Needs of one top-level name together, first place first: one mistake, one hit."""
+def grouped(found: Iterable[Need], *, by_key: bool = False
+            ) -> Iterator[tuple[Need, tuple[Need, ...]]]:
+    """Needs of one top-level name together, first place first: one mistake, one hit.
+
+    With ``by_key``, needs of one suggested key together instead (``matplotlib`` and
+    ``mpl_toolkits``, both ``python3-matplotlib``): declaring that key provides each of them.
+    """
     groups: dict[str, list[Need]] = {}
     for need in found:
-        groups.setdefault(need.top, []).append(need)
+        groups.setdefault(need.key if by_key else need.top, []).append(need)
     for first, *others in groups.values():
         yield first, tuple(others)
 
 
-def also_imported(others: tuple[Need, ...]) -> str:
-    """``; also imported in `a.py:3`, ...`` for the other places of a need (or nothing)."""
+def also_imported(others: tuple[Need, ...], *, naming: bool = False) -> str:
+    """``; also imported in `a.py:3`, ...`` for the other places of a need (or nothing);
+    ``naming`` adds the module imported at each place (`` (`b`)``)."""
     if not others:
         return ""
     places = ", ".join(f"`{n.imported.span.path}:{n.imported.span.line}`"
-                       for n in others[:MAX_PLACES])
+                       + (f" (`{n.top}`)" if naming else "") for n in others[:MAX_PLACES])
     more = f" and {len(others) - MAX_PLACES} more" if len(others) > MAX_PLACES else ""
     return f"; also imported in {places}{more}"
 

@@ -1,4 +1,4 @@
-"""The DEP002, MAN021, SET, ENT005 and DAT fixers: exact edits, idempotence, refusals."""
+"""The DEP001, DEP002, MAN021, SET, ENT005 and DAT fixers: exact edits, idempotence, refusals."""
 
 from __future__ import annotations
 
@@ -45,6 +45,18 @@ def _fixed_once(root: Path, code: str, path: str, *, unsafe: bool = False) -> st
     again = _fix(root, code, unsafe=unsafe)
     assert not again.fixed and _read(root, path) == text
     return text
+
+
+def test_modules_of_one_key_get_it_declared_once(tmp_path: Path) -> None:
+    root = _package(tmp_path)
+    (root / "pkg" / "plot.py").write_text("import matplotlib.pyplot\n"
+                                          "from mpl_toolkits.mplot3d import Axes3D\n"
+                                          "import numpy\n")
+    before = _read(root, "package.xml")
+    after = _fixed_once(root, "DEP001", "package.xml")
+    assert after.count("<exec_depend>python3-matplotlib</exec_depend>") == 1
+    assert after.count("<exec_depend>python3-numpy</exec_depend>") == 1
+    assert len(after.splitlines()) == len(before.splitlines()) + 2
 
 
 def test_build_depend_becomes_depend_keeping_its_attributes(tmp_path: Path) -> None:

@@ -150,6 +150,43 @@ def test_one_finding_per_imported_package_and_file(tmp_path: Path) -> None:
     assert [f.span.line for f in findings(package, "DEP001")] == [1]
 
 
+def test_modules_of_one_key_are_one_finding_naming_them_all(tmp_path: Path) -> None:
+    package = _package(tmp_path, {
+        "demo/talker.py": "import matplotlib.pyplot\nfrom mpl_toolkits.mplot3d import Axes3D\n",
+        "demo/viewer.py": "from mpl_toolkits import mplot3d\n"})
+    [finding] = findings(package, "DEP001")
+    assert (finding.span.path, finding.span.line) == ("demo/talker.py", 1)
+    assert [(s.path, s.line) for s in finding.related] == [
+        ("demo/talker.py", 2), ("demo/viewer.py", 1)]
+    assert finding.message.startswith(
+        "`matplotlib` and `mpl_toolkits` are imported but `python3-matplotlib`, which provides "
+        "them, is not declared in package.xml; also imported in `demo/talker.py:2` "
+        "(`mpl_toolkits`)")
+    assert finding.fix == "Add `<exec_depend>python3-matplotlib</exec_depend>` to package.xml"
+
+
+def test_modules_of_one_key_only_tested_are_one_finding(tmp_path: Path) -> None:
+    package = _package(tmp_path, {"demo/talker.py": "import matplotlib\nimport mpl_toolkits\n"},
+                       "<test_depend>python3-matplotlib</test_depend>")
+    assert [f.message for f in findings(package, "DEP001")] == [
+        "`matplotlib` and `mpl_toolkits` are imported by installed code but "
+        "`python3-matplotlib`, which provides them, is only a `test_depend`; also imported in "
+        "`demo/talker.py:2` (`mpl_toolkits`)"]
+
+
+@pytest.mark.parametrize("code", [
+    "import numpy\nimport scipy\n",  # two keys
+    "import pkg_resources\nimport setuptools\n",  # each suggests its own key
+    "import pyquaternion\nimport Pyquaternion\n",  # one guessed key: DEP004, never joined
+    "import my_robot_msgs\nimport my_robot_srvs\n",  # ROS names, each its own package
+])
+def test_modules_of_different_or_unknown_keys_stay_apart(tmp_path: Path, code: str) -> None:
+    package = _package(tmp_path, {"demo/talker.py": code})
+    found = findings(package, "DEP001", "DEP004")
+    assert [f.span.line for f in found] == [1, 2]
+    assert not any(f.related for f in found)
+
+
 def test_build_depend_covers_test_imports(tmp_path: Path) -> None:
     package = _package(tmp_path, {"test/test_a.py": "import numpy\nimport pytest\n"},
                        "<build_depend>python3-numpy</build_depend>")

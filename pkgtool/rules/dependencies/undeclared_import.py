@@ -26,7 +26,9 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     workspace package by that package (also where rosdep has a `python3-x-pip` key for it), and
     a third-party module by one of the rosdep keys that rosdep's data says install it (`cv2` by
     `python3-opencv`, `rosdistro` by `python3-rosdistro-modules`, `pyflakes` by `pyflakes3`,
-    ...). Modules that only a
+    ...). One finding stands for each missing declaration: modules whose suggested key is the
+    same (`matplotlib` and `mpl_toolkits`, both `python3-matplotlib`) are reported together at
+    the first import, their other imports listed. Modules that only a
     `pytest11` entry point names are pytest plugins, checked as test code (DEP003). Without a
     setup.py at the root (ament_cmake) the modules inside Python package folders count as
     installed. A folder below the root with its own setup.py or pyproject.toml is a separate
@@ -52,20 +54,39 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     tests = declared(package, TEST)
     unmet = (need for need in unmet_runtime_needs(package)  # not DEP004's, DEP002's cases
              if need.kind != "unknown" and not any(k in build_only for k in need.keys))
-    for need, others in grouped(unmet):
-        yield Hit(need.imported.span, _message(package, need, tests) + also_imported(others),
+    for need, others in grouped(unmet, by_key=True):
+        tops = _first_per_module((need, *others))
+        yield Hit(need.imported.span,
+                  _message(package, tops, tests) + also_imported(others, naming=len(tops) > 1),
                   f"Add `<exec_depend>{need.key}</exec_depend>` to package.xml",
                   related=tuple(other.imported.span for other in others),
                   cause="" if need.key in tests else dependency_cause(need.key),
                   consequence=True)
 
 
-def _message(package: Package, need: Need, tests: dict[str, Dependency]) -> str:
+def _first_per_module(found: tuple[Need, ...]) -> list[Need]:
+    """The first need of each top-level module, in order."""
+    firsts: dict[str, Need] = {}
+    for need in found:
+        firsts.setdefault(need.top, need)
+    return list(firsts.values())
+
+
+def _message(package: Package, tops: list[Need], tests: dict[str, Dependency]) -> str:
+    """What ``tops`` (needs of one key, one per module) lack, and why a declared name does not
+    provide them."""
+    need = tops[0]
+    if len(tops) == 1:
+        subject, key = f"`{need.top}` is", f"`{need.key}`"
+    else:
+        names = [f"`{n.top}`" for n in tops]
+        subject = f"{', '.join(names[:-1])} and {names[-1]} are"
+        key = f"`{need.key}`, which provides them,"
     if need.key in tests:
-        return (f"`{need.top}` is imported by installed code but `{need.key}` is only a "
-                f"`test_depend`")
-    text = f"`{need.top}` is imported but {need.missing}"
-    wrong = misnamed(package, need)
+        return f"{subject} imported by installed code but {key} is only a `test_depend`"
+    missing = need.missing if len(tops) == 1 else f"{key} is not declared in package.xml"
+    text = f"{subject} imported but {missing}"
+    wrong = dict.fromkeys(filter(None, (misnamed(package, n) for n in tops)))
     if wrong:
-        text += f" ({wrong})"
+        text += f" ({'; '.join(wrong)})"
     return text
