@@ -11,6 +11,7 @@ from __future__ import annotations
 import posixpath
 from fnmatch import fnmatchcase
 
+from pkgtool.model.launch import python_folders
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 
@@ -126,6 +127,25 @@ def installed_modules(package: Package) -> dict[str, str] | None:
         if package.has_file(file):
             modules[name] = file
     return modules
+
+
+@per_package
+def installed_files(package: Package) -> frozenset[str]:
+    """Python files colcon installs as modules, tests included: those setup.py installs when
+    that is known, else files inside Python package folders other than data folders (CMake
+    installs ``launch/``, ``config/``, ... to ``share/``, whatever ``__init__.py`` they hold).
+    A setup.py and the files of a :func:`separate_projects` project never are."""
+    installed = installed_modules(package)
+    if installed is not None:
+        files = frozenset(installed.values())
+    else:
+        packages = python_folders(package.files)
+        data = DATA_FOLDERS - {package.name}
+        files = frozenset(m.path for m in package.modules if posixpath.dirname(m.path) in packages
+                          and posixpath.dirname(m.path)
+                          and m.path.split("/", 1)[0] not in data)
+    return frozenset(f for f in files if posixpath.basename(f) != "setup.py"
+                     and not in_separate_project(package, f))
 
 
 @per_package

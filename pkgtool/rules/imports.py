@@ -23,7 +23,7 @@ from pkgtool.knowledge.rosdistro import (any_stdlib_module, is_released_package,
                                          keys_for_import, stdlib_modules)
 from pkgtool.model.cmake_interfaces import installed_python_packages
 from pkgtool.model.context import Context
-from pkgtool.model.installed import (DATA_FOLDERS, in_separate_project, installed_modules,
+from pkgtool.model.installed import (DATA_FOLDERS, installed_files, installed_modules,
                                      separate_projects)
 from pkgtool.model.launch import is_launch_file, python_folders
 from pkgtool.model.manifest import Dependency
@@ -33,6 +33,7 @@ from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.records import record
 from pkgtool.rules.optional_imports import optional_modules
+from pkgtool.rules.test_modules import is_test_code, test_files
 
 RUNTIME = frozenset({"depend", "exec_depend", "run_depend"})
 BUILD_ONLY = frozenset({"build_depend", "build_export_depend", "buildtool_depend",
@@ -208,24 +209,13 @@ def pytest_path_modules(package: Package) -> frozenset[str]:
 
 
 def installed_code(package: Package) -> list[PythonModule]:
-    """Non-test modules that colcon installs: those setup.py installs when that is known, else
-    modules inside Python package folders other than data folders (``launch/``). A setup.py
-    and the files of a separate Python project inside the package
-    (:func:`~pkgtool.model.installed.separate_projects`) never are."""
-    installed = installed_modules(package)
-    if installed is not None:
-        files = frozenset(installed.values())
-    else:  # CMake installs launch/, config/, ... to share/, whatever __init__.py they hold
-        packages = _layout(package.files).packages
-        data = DATA_FOLDERS - {package.name}
-        files = frozenset(m.path for m in package.modules if posixpath.dirname(m.path) in packages
-                          and posixpath.dirname(m.path)
-                          and m.path.split("/", 1)[0] not in data)
+    """Non-test modules that colcon installs
+    (:func:`~pkgtool.model.installed.installed_files`; a module named like a test counts as
+    test code only where :func:`~pkgtool.rules.test_modules.test_files` says so)."""
+    files, tests = installed_files(package), test_files(package)
     scripts = console_script_files(package)
     return [m for m in package.modules if m.path in files
-            and (not m.is_test or m.path in scripts)
-            and posixpath.basename(m.path) != "setup.py"
-            and not in_separate_project(package, m.path)]
+            and (m.path not in tests or m.path in scripts)]
 
 
 def entry_points_installed(package: Package, group: str) -> list[tuple[EntryPoint, str]]:
@@ -264,10 +254,11 @@ def all_python(package: Package) -> list[PythonModule]:
 
 
 def test_code(package: Package) -> list[PythonModule]:
-    """Test modules (under test/ or tests/, test_*.py, *_test.py, conftest.py), pytest plugins."""
+    """Test modules (:func:`~pkgtool.rules.test_modules.test_files`) and pytest plugins."""
     plugins, scripts = pytest_plugins(package), console_script_files(package)
+    tests = test_files(package)
     return [m for m in package.modules
-            if (m.is_test and m.path not in scripts) or m.path in plugins]
+            if (m.path in tests and m.path not in scripts) or m.path in plugins]
 
 
 def classify(top: str, declared_names: Iterable[str], context: Context = Context()
@@ -313,7 +304,7 @@ def needs(package: Package, module: PythonModule, *, guarded: bool | None = Fals
     ROS modules of a ROS 1 package are provided by their own name (:func:`_ros1_keys`).
     """
     skip = own_modules(package) | _siblings(package, module.path)
-    if module.is_test:
+    if is_test_code(package, module):
         skip |= pytest_path_modules(package)
     stdlib = _stdlib(package.context.distro)
     names = declared(package, ANY)

@@ -13,6 +13,7 @@ from pkgtool.model.installed import installed_modules
 from pkgtool.model.memo import per_package
 from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
+from pkgtool.rules.test_modules import test_files
 
 
 def _targets(name: str, path: str, imported: Import, own: dict[str, str]) -> set[str]:
@@ -42,9 +43,10 @@ def optional_modules(package: Package) -> frozenset[str]:
         return frozenset()
     names = {path: name for name, path in own.items()}
     entries = {e.module for e in setup.entry_points or () if e.valid}
+    tests = test_files(package)
     sites: dict[str, set[bool]] = {}
     for module in package.modules:
-        if module.path not in names or module.is_test:
+        if module.path not in names or module.path in tests:
             continue
         for imported in module.imports:
             for target in _targets(names[module.path], module.path, imported, own):

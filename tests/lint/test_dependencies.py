@@ -9,6 +9,7 @@ import pytest
 from pkgtool.model.context import Context, WorkspacePackage
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import classify, installed_code, needs, own_modules
+from pkgtool.rules import test_modules
 from tests.helpers import MINIMAL_MANIFEST, codes, findings, make_package
 
 SETUP = """
@@ -108,10 +109,23 @@ def test_cmake_installed_python_packages_are_own_modules(tmp_path: Path) -> None
 def test_installed_code_follows_setup_py(tmp_path: Path) -> None:
     package = _package(tmp_path, {
         "demo/talker.py": "", "demo/sub/__init__.py": "", "demo/sub/x.py": "",
-        "test/test_a.py": "", "examples/e.py": "", "demo/test_helpers.py": "",
+        "test/test_a.py": "", "examples/e.py": "", "demo/test_helpers.py": "def test_a(): pass\n",
+        "demo/bench_test.py": "class BenchTest:\n    def run(self):\n        pass\n",
     })
     assert sorted(m.path for m in installed_code(package)) == [
-        "demo/__init__.py", "demo/sub/__init__.py", "demo/sub/x.py", "demo/talker.py"]
+        "demo/__init__.py", "demo/bench_test.py", "demo/sub/__init__.py", "demo/sub/x.py",
+        "demo/talker.py"]
+
+
+def test_installed_module_named_like_a_test_is_a_test_only_if_pytest_runs_it(
+        tmp_path: Path) -> None:
+    test = "def test_a():\n    pass\n"
+    package = _package(tmp_path, {
+        "pytest.ini": "[pytest]\npython_files = check_*.py\n", "demo/test_a.py": test,
+        "demo/check_b_test.py": test, "demo/conftest.py": "", "demo/tests/__init__.py": "",
+        "demo/tests/helper_test.py": ""})
+    assert sorted(test_modules.test_files(package)) == [
+        "demo/check_b_test.py", "demo/conftest.py", "demo/tests/helper_test.py"]
 
 
 def test_installed_code_without_setup_py_uses_package_folders(tmp_path: Path) -> None:

@@ -17,8 +17,11 @@ def undeclared_test_import(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Checks the unguarded absolute imports of test modules (files under `test/`, `test_*.py`,
-    `conftest.py`) against every dependency of package.xml: `<test_depend>`, the run-time
-    dependencies and the build dependencies all make a package available to `colcon test`.
+    `*_test.py`, `conftest.py`) against every dependency of package.xml: `<test_depend>`, the
+    run-time dependencies and the build dependencies all make a package available to
+    `colcon test`. A module named like a test inside a Python package that colcon installs
+    (a base class for other packages' tests) is installed code, checked by DEP001, unless
+    pytest collects it and it defines a test (a test shipped by mistake).
     `ament_lint_common` brings the ament linters along (`ament_flake8`, `ament_pep257`,
     `ament_copyright`, ...), so a test importing them is covered by it.
 

@@ -10,6 +10,7 @@ from pkgtool.knowledge.rosdep import ROS1_PACKAGES
 from pkgtool.model.modules import PythonModule
 from pkgtool.rules.imports import ANY, also_imported, declared, grouped, needs
 from pkgtool.rules.registry import rule
+from pkgtool.rules.test_modules import test_files
 
 
 @rule("DEP004", "unknown-import", Severity.WARNING,
@@ -73,5 +74,6 @@ def unknown_import(package: Package) -> Iterator[Hit]:
 def _by_kind(package: Package) -> tuple[list[PythonModule], ...]:
     """Code, tests and launch files: one finding per unknown name and kind of file."""
     launch = [f.python for f in package.launch_files if f.python]
-    return ([m for m in package.modules if not m.is_test],
-            [m for m in package.modules if m.is_test], launch)
+    tests = test_files(package)
+    return ([m for m in package.modules if m.path not in tests],
+            [m for m in package.modules if m.path in tests], launch)

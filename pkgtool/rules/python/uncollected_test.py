@@ -6,7 +6,6 @@ import ast
 import posixpath
 import re
 from collections.abc import Iterator
-from fnmatch import fnmatch
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import is_ament_python
@@ -15,65 +14,7 @@ from pkgtool.model.pytest_config import PytestConfig, pytest_config
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
-
-_GLOB = frozenset("*?[")
-
-
-def _matches(name: str, patterns: tuple[str, ...]) -> bool:
-    """pytest's name test: a glob matches whole, anything else is a prefix."""
-    return any(fnmatch(name, p) if _GLOB & set(p) else name.startswith(p) for p in patterns)
-
-
-def _first_test(tree: ast.Module, config: PytestConfig) -> ast.AST | None:
-    """The first top-level test function, or class holding test methods, pytest would run."""
-    functions, classes = config.get("python_functions"), config.get("python_classes")
-    for node in tree.body:
-        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and \
-                _matches(node.name, functions):
-            return node
-        if isinstance(node, ast.ClassDef):
-            unittest = any((b.attr if isinstance(b, ast.Attribute) else getattr(b, "id", ""))
-                           == "TestCase" for b in node.bases)
-            methods = ("test",) if unittest else functions
-            if (unittest or _matches(node.name, classes)) and any(
-                    isinstance(m, (ast.FunctionDef, ast.AsyncFunctionDef)) and
-                    _matches(m.name, methods) for m in node.body):
-                return node
-    return None
-
-
-def _why_not_collected(package: Package, path: str, config: PytestConfig) -> str | None:
-    """Why pytest, run in the package folder with no arguments, skips ``path``; None if not."""
-    roots = [r for t in config.get("testpaths") for r in _expand(package, t)]
-    if config.get("testpaths") and not roots:
-        return None  # testpaths names nothing that exists: pytest falls back to the folder
-    root = next((r for r in roots if r in ("", path) or path.startswith(r + "/")), None)
-    if roots and root is None:
-        listed = " ".join(config.get("testpaths"))
-        return f"`testpaths = {listed}` in {config.path} does not include it"
-    if path == root:
-        return None  # named explicitly: collected whatever its name
-    folders = posixpath.dirname(path[len(root) + 1:] if root else path)
-    for folder in folders.split("/") if folders else ():
-        pattern = next((p for p in config.get("norecursedirs") if fnmatch(folder, p)), None)
-        if pattern:
-            return f"`norecursedirs` pattern `{pattern}`{config.where('norecursedirs')} " \
-                   f"skips the folder `{folder}`"
-    patterns = config.get("python_files")
-    if not any(fnmatch(posixpath.basename(path), p) for p in patterns):
-        shown = ", ".join(f"`{p}`" for p in patterns)
-        return f"its name matches none of {shown}{config.where('python_files')}"
-    return None
-
-
-def _expand(package: Package, entry: str) -> list[str]:
-    """Package files and folders a ``testpaths`` entry (a glob) names."""
-    entry = posixpath.normpath(entry)
-    if entry == ".":
-        return [""]
-    folders = {posixpath.dirname(f) for f in package.files} | set(package.files)
-    parents = {"/".join(p.split("/")[:n]) for p in folders for n in range(1, p.count("/") + 2)}
-    return sorted(p for p in parents if fnmatch(p, entry))
+from pkgtool.rules.test_modules import first_test, why_not_collected
 
 
 def _read_by_other_tests(package: Package, path: str) -> bool:
@@ -134,9 +75,9 @@ def uncollected_test(package: Package) -> Iterator[Hit]:
         if path.split("/")[0] not in ("test", "tests") or module.syntax_error or \
                 posixpath.basename(path) in ("conftest.py", "__init__.py"):
             continue
-        reason = _why_not_collected(package, path, config)
+        reason = why_not_collected(package, path, config)
         tree = parse_tree(path, package.texts[path]) if reason else None
-        test = _first_test(tree, config) if isinstance(tree, ast.Module) else None
+        test = first_test(tree, config) if isinstance(tree, ast.Module) else None
         if reason and test is not None and not _read_by_other_tests(package, path):
             yield Hit(Span(path, test.lineno, test.col_offset + 1),
                       f"pytest does not collect `{path}`, so its tests never run: {reason}")
