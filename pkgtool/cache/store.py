@@ -72,6 +72,8 @@ class Lookup:
 
     key: str
     files: Files
+    digest: str
+    """``files.digest()``: the recorded one while no file changed."""
     hit: tuple[str, list[Finding]] | None
     refresh: bool
     """The entry was valid but some file had to be hashed again: rewrite its times."""
@@ -105,9 +107,8 @@ class LintCache:
         again."""
         known = {}
         for root, scanned in scans.items():
-            entry = self._entries.get(str(root))
-            if isinstance(entry, dict) and entry.get("root") == str(root) and \
-                    entry.get("code") == self._code_key and _as_recorded(entry, scanned):
+            entry = self._entry_of(root)
+            if entry.get("code") == self._code_key and _as_recorded(root, entry, scanned):
                 package = _index_entry(entry.get("index"))
                 if package is not None:
                     known[root] = package
@@ -127,8 +128,7 @@ class LintCache:
         ``scanned``: the package's :func:`scan`, when the caller made it already.
         """
         assert self._run_key, "bind() the cache to the workspace first"
-        entry = self._entries.get(str(root))
-        entry = entry if isinstance(entry, dict) and entry.get("root") == str(root) else {}
+        entry = self._entry_of(root)
         old = entry.get("files") if isinstance(entry.get("files"), dict) else {}
         files = _hash_files(root, old, entry.get("taken_ns"), read, scanned)
         if files is None:
@@ -139,7 +139,7 @@ class LintCache:
         digest = recorded if not refresh and isinstance(recorded, str) else files.digest()
         key = _digest([self._run_key, self._settings_key(settings), digest])
         if entry.get("key") != key:
-            return Lookup(key, files, None, False)
+            return Lookup(key, files, digest, None, False)
         try:
             findings = decode(entry.get("findings"))
             name = entry.get("name")
@@ -147,8 +147,14 @@ class LintCache:
                     not all(isinstance(f, Finding) for f in findings):
                 raise BadEntry("not a list of findings")
         except (BadEntry, RecursionError):
-            return Lookup(key, files, None, False)
-        return Lookup(key, files, (name, findings), refresh)
+            return Lookup(key, files, digest, None, False)
+        return Lookup(key, files, digest, (name, findings), refresh)
+
+    def _entry_of(self, root: Path) -> Entry:
+        """The stored entry of the package at ``root``; empty when there is none or it is not
+        one (not a dict, or recorded for another folder)."""
+        entry = self._entries.get(str(root))
+        return entry if isinstance(entry, dict) and entry.get("root") == str(root) else {}
 
     def _settings_key(self, settings: Settings) -> str:
         """The digest of ``settings`` (packages share a few settings objects: worked out once
@@ -167,7 +173,7 @@ class LintCache:
             return None
         package = self._workspace.get(root)
         return {"root": str(root), "key": lookup.key, "name": name, "code": self._code_key,
-                "digest": lookup.files.digest(),
+                "digest": lookup.digest,
                 "index": _index_record(package) if package is not None else None,
                 "taken_ns": lookup.files.taken_ns, "files": lookup.files.stats,
                 "findings": encode(findings)}
@@ -265,20 +271,12 @@ def _digest(parts: list[Any]) -> str:
     return hashlib.sha256(json.dumps(parts, separators=(",", ":")).encode()).hexdigest()
 
 
-def _as_recorded(entry: Entry, scanned: Scan) -> bool:
-    """True when the package's files are those of ``entry``, with the same sizes and times,
-    all settled when recorded (as when a recorded content hash is reused)."""
+def _as_recorded(root: Path, entry: Entry, scanned: Scan) -> bool:
+    """True when the package's files are those of ``entry``, each of them one whose recorded
+    content hash :func:`_hash_files` reuses (same size and time, settled when recorded)."""
     old = entry.get("files")
-    taken = entry.get("taken_ns")
-    if not isinstance(old, dict) or not isinstance(taken, int) or len(old) != len(scanned):
-        return False
-    trusted_before = taken - _SETTLED_NS
-    for path, size_time in scanned:
-        previous = old.get(path)
-        if not isinstance(previous, list) or previous[:2] != size_time or \
-                size_time[1] >= trusted_before:
-            return False
-    return True
+    return isinstance(old, dict) and len(old) == len(scanned) and \
+        _hash_files(root, old, entry.get("taken_ns"), False, scanned) is not None
 
 
 def _index_record(package: WorkspacePackage) -> list[Any]:

@@ -28,6 +28,7 @@ from pkgtool.rules.syntax_trees import FUNCTIONS, Index, qualified
 Known = Callable[[ast.expr], Message | None]
 """The known message class a constructor's callee stands for, or None."""
 T = TypeVar("T")
+R = TypeVar("R")
 Maker = Callable[[ast.Call], T | None]
 """What a call certainly makes (a known message, a publisher), or None."""
 
@@ -116,11 +117,20 @@ def _facts(tree: ast.Module) -> dict[object, Any]:
     return {}
 
 
+def _kept(tree: ast.Module, key: object, work_out: Callable[[], R]) -> R:
+    """``work_out()``, kept with ``tree`` under ``key`` (see :func:`_facts`)."""
+    known = _facts(tree)
+    if key not in known:
+        known[key] = work_out()
+    kept: R = known[key]
+    return kept
+
+
 @record
 class _ScopeFacts:
-    """A scope's nodes, how often each name is bound in it and inside it (``counts``) and in
-    it alone (``own``), and by name the attributes taken on a name (``uses``) and the reads
-    of the name (``refs``)."""
+    """How often each name is bound in a scope and inside it (``counts``) and in it alone
+    (``own``), and by name the attributes taken on the name (``uses``) and its reads
+    (``refs``)."""
 
     counts: Counter[str]
     own: Counter[str]
@@ -128,22 +138,18 @@ class _ScopeFacts:
     refs: dict[str, list[ast.expr]]
 
 
-def _scope_facts(tree: ast.Module, scope: Scope) -> _ScopeFacts:
-    known = _facts(tree)
-    if id(scope) not in known:
-        nodes = nodes_of(scope) if isinstance(scope, ast.Module) else subtree(scope)
-        counts = _all_bindings(nodes)
-        uses: dict[str, list[ast.Attribute]] = {}
-        refs: dict[str, list[ast.expr]] = {}
-        for node in nodes:
-            if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name):
-                uses.setdefault(node.value.id, []).append(node)
-            elif isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
-                refs.setdefault(node.id, []).append(node)
-        own = counts if isinstance(scope, ast.Module) else bound_names(scope)
-        known[id(scope)] = _ScopeFacts(counts, own, uses, refs)
-    facts: _ScopeFacts = known[id(scope)]
-    return facts
+def _scope_facts(scope: Scope) -> _ScopeFacts:
+    nodes = nodes_of(scope) if isinstance(scope, ast.Module) else subtree(scope)
+    counts = _all_bindings(nodes)
+    uses: dict[str, list[ast.Attribute]] = {}
+    refs: dict[str, list[ast.expr]] = {}
+    for node in nodes:
+        if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name):
+            uses.setdefault(node.value.id, []).append(node)
+        elif isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
+            refs.setdefault(node.id, []).append(node)
+    own = counts if isinstance(scope, ast.Module) else bound_names(scope)
+    return _ScopeFacts(counts, own, uses, refs)
 
 
 def local_instances(tree: ast.Module, index: Index, make: Maker[T]) -> Iterator[Instance[T]]:
@@ -156,7 +162,7 @@ def local_instances(tree: ast.Module, index: Index, make: Maker[T]) -> Iterator[
         if fresh is not None and message is not None and scope is not None:
             made.setdefault(id(scope), (scope, []))[1].append((fresh[0], message))
     for scope, found in made.values():
-        facts = _scope_facts(tree, scope)
+        facts = _kept(tree, id(scope), lambda: _scope_facts(scope))
         for name, message in found:
             if facts.counts[name] == facts.own[name] == 1:
                 yield _instance(message, facts.uses.get(name, []), facts.refs.get(name, []),
@@ -197,28 +203,24 @@ class _ClassFacts:
     defined: Counter[str]
 
 
-def _class_facts(tree: ast.Module, cls: ast.ClassDef) -> _ClassFacts:
-    known = _facts(tree)
-    if id(cls) not in known:
-        stores: dict[str, list[ast.Attribute]] = {}
-        refs: dict[str, list[ast.expr]] = {}
-        uses: dict[str, list[ast.Attribute]] = {}
-        for method in cls.body:
-            nodes = subtree(method) if isinstance(method, FUNCTIONS) else []
-            receiver = _receiver(method, nodes)
-            if receiver is None:
-                continue
-            for node in _on(nodes, lambda e: isinstance(e, ast.Name) and e.id == receiver):
-                if not isinstance(node.ctx, ast.Load):
-                    stores.setdefault(node.attr, []).append(node)
-                else:
-                    refs.setdefault(node.attr, []).append(node)
-            for node in _on(nodes, lambda e: isinstance(e, ast.Attribute)
-                            and isinstance(e.value, ast.Name) and e.value.id == receiver):
-                uses.setdefault(node.value.attr, []).append(node)  # type: ignore[attr-defined]
-        known[id(cls)] = _ClassFacts(stores, refs, uses, bound_names(cls.body))
-    facts: _ClassFacts = known[id(cls)]
-    return facts
+def _class_facts(cls: ast.ClassDef) -> _ClassFacts:
+    stores: dict[str, list[ast.Attribute]] = {}
+    refs: dict[str, list[ast.expr]] = {}
+    uses: dict[str, list[ast.Attribute]] = {}
+    for method in cls.body:
+        nodes = subtree(method) if isinstance(method, FUNCTIONS) else []
+        receiver = _receiver(method, nodes)
+        if receiver is None:
+            continue
+        for node in _on(nodes, lambda e: isinstance(e, ast.Name) and e.id == receiver):
+            if not isinstance(node.ctx, ast.Load):
+                stores.setdefault(node.attr, []).append(node)
+            else:
+                refs.setdefault(node.attr, []).append(node)
+        for node in _on(nodes, lambda e: isinstance(e, ast.Attribute)
+                        and isinstance(e.value, ast.Name) and e.value.id == receiver):
+            uses.setdefault(node.value.attr, []).append(node)  # type: ignore[attr-defined]
+    return _ClassFacts(stores, refs, uses, bound_names(cls.body))
 
 
 def _dynamic(tree: ast.Module) -> bool:
@@ -238,7 +240,7 @@ def attribute_instances(tree: ast.Module, index: Index, make: Maker[T]
     stores = Counter(n.attr for n in nodes_of_class(tree, ast.Attribute)
                      if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load))
     for cls in index.classes:
-        facts = _class_facts(tree, cls)
+        facts = _kept(tree, id(cls), lambda: _class_facts(cls))
         for attr, targets in facts.stores.items():
             made = [_assigned(target, index, make) for target in targets]
             if (made[0] is not None and made.count(made[0]) == len(made) == stores[attr]
@@ -260,14 +262,10 @@ def message_instances(tree: ast.Module, index: Index, known: Known) -> list[Inst
     """The local variables and ``self.x`` attributes that hold a fresh known message
     (``known`` must be :func:`known_messages` of the tree's package: the result is kept
     with the tree)."""
-    facts = _facts(tree)
-    if "messages" not in facts:
-        def make(call: ast.Call) -> Message | None:
-            return known(call.func)
-        facts["messages"] = [*local_instances(tree, index, make),
-                             *attribute_instances(tree, index, make)]
-    instances: list[Instance[Message]] = facts["messages"]
-    return instances
+    def make(call: ast.Call) -> Message | None:
+        return known(call.func)
+    return _kept(tree, "messages", lambda: [*local_instances(tree, index, make),
+                                            *attribute_instances(tree, index, make)])
 
 
 def known_messages(package: Package, index: Index) -> Known:
