@@ -18,6 +18,7 @@ from pkgtool.cli_output import emit
 from pkgtool.commands import ExitCode
 
 if TYPE_CHECKING:
+    from pkgtool.cache.replay import Shown, Witness
     from pkgtool.commands.lint import LintOptions, LintResult
 
 STYLE_FAMILIES = ("STY", "CPY")
@@ -52,6 +53,21 @@ def lint_call(paths: Optional[list[str]] = None, fmt: Format = Format.TEXT,
     A bug in pkgtool is reported with its traceback and exit code 3, not a bare traceback.
     """
     gc.set_threshold(*LINT_GC_THRESHOLDS)  # before the imports: they make objects too
+    witness = None
+    if not (no_cache or fix or diff or list_rules or explain is not None) and \
+            all(os.path.isdir(path) for path in paths or ["."]):
+        from pkgtool.cache import cache_folder, replay
+
+        stamp = replay.stamp(
+            {"paths": paths, "format": fmt.value, "output": output and str(output),
+             "select": select, "ignore": ignore, "extend_select": extend_select, "style": style,
+             "strict": strict, "exit_zero": exit_zero, "quiet": quiet, "isolated": isolated,
+             "rosdistro": rosdistro}, _colour(fmt, output))
+        folder = cache_folder(cache_dir, Path.cwd())
+        shown = replay.replayed(folder, stamp)
+        if shown is not None:
+            return _show(shown, output)
+        witness = replay.Witness(folder, stamp)
     from pkgtool.commands import lint as command
 
     options = command.LintOptions(_selectors(select) if select else None, _selectors(ignore),
@@ -61,7 +77,7 @@ def lint_call(paths: Optional[list[str]] = None, fmt: Format = Format.TEXT,
     try:
         if explain is not None or list_rules:
             return _show_rules(explain, fmt, output)
-        return _lint(paths or [], options, fmt, output)
+        return _lint(paths or [], options, fmt, output, witness)
     except Exception as error:  # noqa: BLE001 - a bug in pkgtool: exit 3, not a bare traceback
         import traceback
 
@@ -72,6 +88,8 @@ def lint_call(paths: Optional[list[str]] = None, fmt: Format = Format.TEXT,
 
 def say(*messages: str) -> None:
     """Messages to stderr; they may quote a package's paths and text, so made safe first."""
+    if not messages:
+        return
     from pkgtool.report.untrusted import block
 
     for message in messages:
@@ -87,22 +105,32 @@ def _colour(fmt: Format, output: Optional[Path]) -> bool:
             and not os.environ.get("NO_COLOR"))
 
 
-def _lint(paths: list[str], options: LintOptions, fmt: Format, output: Optional[Path]) -> int:
+def _lint(paths: list[str], options: LintOptions, fmt: Format, output: Optional[Path],
+          witness: Optional[Witness]) -> int:
+    from pkgtool.cache.replay import Shown
     from pkgtool.commands.lint import run
 
-    result = run(paths, options=options)
+    result = run(paths, options=options, witness=witness)
     if result.exit_code is ExitCode.USAGE:
         say(*result.notes, *result.errors)
         return int(result.exit_code)
-    if options.diff:
-        emit(result.diff, output, "lint")
-    else:
-        _report(result, fmt, output)
+    messages = []
     if result.fixed:
         done = "would fix" if options.diff else "fixed"
-        say(f"{done} {len(result.fixed)}:", *(f"  {title}" for title in result.fixed))
-    say(*result.notes, *result.errors)
-    return int(result.exit_code)
+        messages = [f"{done} {len(result.fixed)}:", *(f"  {title}" for title in result.fixed)]
+    report = result.diff if options.diff else _report(result, fmt, output)
+    shown = Shown(int(result.exit_code), report, [*messages, *result.notes, *result.errors])
+    code = _show(shown, output)
+    if witness is not None and result.exit_code in (ExitCode.OK, ExitCode.FINDINGS):
+        witness.keep(shown)
+    return code
+
+
+def _show(shown: Shown, output: Optional[Path]) -> int:
+    """Print (or write) the report, then the messages; the exit code."""
+    emit(shown.report, output, "lint")
+    say(*shown.messages)
+    return shown.code
 
 
 def _show_rules(explain: Optional[str], fmt: Format, output: Optional[Path]) -> int:
@@ -118,7 +146,7 @@ def _show_rules(explain: Optional[str], fmt: Format, output: Optional[Path]) -> 
     return int(shown.exit_code)
 
 
-def _report(result: LintResult, fmt: Format, output: Optional[Path]) -> None:
+def _report(result: LintResult, fmt: Format, output: Optional[Path]) -> str:
     from pkgtool.report import ReportContext, render
     from pkgtool.rules.registry import load, load_all
 
@@ -130,4 +158,4 @@ def _report(result: LintResult, fmt: Format, output: Optional[Path]) -> None:
 
         fixable = {code: entry.safe for code, entry in fixers().items()}
     context = ReportContext(result.packages, rules, _colour(fmt, output), fixable)
-    emit(render(fmt.value, result.findings, context=context), output, "lint")
+    return render(fmt.value, result.findings, context=context)

@@ -232,6 +232,10 @@ class ConfigFinder:
             self._settings[layers] = settings_for(layers)
         return self._settings[layers]
 
+    def consulted(self) -> list[Path]:
+        """Every pyproject.toml path looked at so far, whether it exists or not."""
+        return [folder / PYPROJECT for folder in self._layers]
+
     def _at(self, folder: Path) -> Layer | None:
         if folder not in self._layers:
             file = folder / PYPROJECT

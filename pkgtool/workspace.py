@@ -20,7 +20,8 @@ no package, or in a package that discovery would skip, are ignored (what pre-com
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
+from contextlib import contextmanager
 from pathlib import Path
 
 from pkgtool.records import record
@@ -153,13 +154,42 @@ def _below(folder: Path, real: str, listed: list[os.DirEntry[str]], folders: Fou
                 folders.append((folder / entry.name, os.path.join(real, entry.name)))
 
 
+Witness = Callable[[str, "os.stat_result | None", "list[os.DirEntry[str]]"], None]
+"""Told of every folder :func:`listing` lists: its path, its status taken before listing it
+(None when it has none) and its entries."""
+_witness: Witness | None = None
+
+
+@contextmanager
+def witnessed(witness: Witness) -> Iterator[None]:
+    """Tell ``witness`` of every folder listed meanwhile (what :mod:`pkgtool.cache.replay`
+    records of a run)."""
+    global _witness
+    _witness = witness
+    try:
+        yield
+    finally:
+        _witness = None
+
+
 def listing(folder: str | Path) -> list[os.DirEntry[str]]:
     """The entries of ``folder``; none when it cannot be listed."""
+    status = _status(folder) if _witness is not None else None
     try:
         with os.scandir(folder) as entries:
-            return list(entries)
+            found = list(entries)
     except OSError:
-        return []
+        found = []
+    if _witness is not None:
+        _witness(os.fspath(folder), status, found)
+    return found
+
+
+def _status(path: str | Path) -> os.stat_result | None:
+    try:
+        return os.stat(path)
+    except OSError:
+        return None
 
 
 def _is_dir(entry: os.DirEntry[str]) -> bool:

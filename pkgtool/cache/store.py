@@ -21,7 +21,6 @@ packages that no longer exist are dropped.
 
 from __future__ import annotations
 
-import contextlib
 import hashlib
 import json
 import os
@@ -31,6 +30,8 @@ from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
+from pkgtool.cache import prepare, write_atomically
+from pkgtool.cache.replay import site_folders
 from pkgtool.cache.serial import BadEntry, decode, encode
 from pkgtool.config import Settings
 from pkgtool.findings import Finding
@@ -43,7 +44,6 @@ PACK = "packages.json"
 """The file in ``lint/`` holding every entry."""
 _SETTLED_NS = 2_000_000_000
 """A file modified this long before it was hashed is trusted by size and time afterwards."""
-_GITIGNORE = "# Created by pkgtool: the lint cache is never committed.\n*\n"
 
 
 @record
@@ -191,31 +191,9 @@ class LintCache:
         entries = {root: entry for root, entry in others.items()
                    if root not in self._fresh and os.path.isdir(root)}
         entries.update(self._fresh)
-        import tempfile  # only a run that writes pays for it
-
-        try:
-            self._prepare()
-            handle, temporary = tempfile.mkstemp(dir=self.folder, prefix=".tmp-")
-        except OSError:  # a read-only or full disk: linting still works, uncached
-            return
-        try:
-            with os.fdopen(handle, "w", encoding="utf-8") as stream:
-                stream.write(json.dumps({"schema": SCHEMA, "entries": entries},
-                                        separators=(",", ":")))  # dump() writes piecemeal
-            os.replace(temporary, self.folder / PACK)
-        except OSError:
-            with contextlib.suppress(OSError):
-                os.unlink(temporary)
-
-    def _prepare(self) -> None:
-        """Create the folders; a cache folder pkgtool creates gets a ``.gitignore`` (never one
-        the user named that exists already, such as ``--cache-dir .``)."""
-        if self.folder.is_dir():
-            return
-        if not self.base.exists():
-            self.base.mkdir(parents=True, exist_ok=True)
-            (self.base / ".gitignore").write_text(_GITIGNORE, encoding="utf-8")
-        self.folder.mkdir(exist_ok=True)
+        if prepare(self.base):
+            write_atomically(self.folder, PACK, json.dumps(
+                {"schema": SCHEMA, "entries": entries}, separators=(",", ":")))
 
 
 def _identity(path: Path) -> tuple[int, int, int] | None:
@@ -319,7 +297,6 @@ def _code_fingerprint() -> list[Any]:
     import pkgtool
 
     files = [[path, *size_time] for path, size_time in scan(Path(pkgtool.__file__).parent)]
-    distributions = sorted(name for entry in sys.path if entry.endswith("-packages")
-                           and os.path.isdir(entry) for name in os.listdir(entry)
+    distributions = sorted(name for entry in site_folders() for name in os.listdir(entry)
                            if name.endswith(".dist-info"))
     return [pkgtool.__version__, sys.version, files, distributions]

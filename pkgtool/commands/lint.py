@@ -19,17 +19,16 @@ from pkgtool.findings import Finding, Severity
 from pkgtool.model.context import Context, WorkspacePackage, workspace_index, workspace_near
 from pkgtool.records import record, replace
 from pkgtool.report import PackageLabel
-from pkgtool.workspace import discover
+from pkgtool.workspace import discover, witnessed
 
 if TYPE_CHECKING:
+    from pkgtool.cache.replay import Witness
     from pkgtool.cache.store import Entry, LintCache, Lookup
     from pkgtool.model.files import Scan
     from pkgtool.model.package import Package
 
 __all__ = ["LintOptions", "LintResult", "TextResult", "explain", "list_rules", "run"]
 
-CACHE_FOLDER = ".pkgtool_cache"
-"""The cache's default folder name, in the project root."""
 PACKAGES_PER_WORKER = 16
 """Below this many packages per extra process, a process pool costs more than it saves."""
 
@@ -73,8 +72,20 @@ class LintResult:
     """``--fix``: the titles of the fixes applied; ``--diff``: what they would change."""
 
 
-def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) -> LintResult:
-    """Lint the packages found at ``paths`` (relative to ``cwd``; none means ``cwd``)."""
+def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None,
+        witness: Witness | None = None) -> LintResult:
+    """Lint the packages found at ``paths`` (relative to ``cwd``; none means ``cwd``).
+
+    ``witness`` is told what the run reads, for :mod:`pkgtool.cache.replay`.
+    """
+    if witness is None:
+        return _run(paths, options, cwd)
+    with witnessed(witness):
+        return _run(paths, options, cwd, witness)
+
+
+def _run(paths: Sequence[str], options: LintOptions, cwd: Path | None,
+         witness: Witness | None = None) -> LintResult:
     here = Path(os.path.abspath(cwd or Path.cwd()))
     found = discover(paths, cwd=here)
     if found.missing:
@@ -96,6 +107,11 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None) 
             finder.settings(here)  # still validate the command line and the config in reach
     except ConfigError as error:
         return LintResult(ExitCode.USAGE, errors=(str(error),), notes=notes)
+    if witness is not None:
+        witness.paths(finder.consulted())
+        tops = [Path(os.path.abspath(here / p)) for p in paths or ["."]]
+        witness.replayable = all(any(root == top or top in root.parents for top in tops)
+                                 for root in found.packages)  # else a package above is read
     cache = _open_cache(options, here)
     scans = _scans(found.packages) if cache is not None and not options.fix else {}
     workspace = workspace_index(
@@ -214,16 +230,10 @@ def _open_cache(options: LintOptions, cwd: Path) -> LintCache | None:
     """The cache this run uses, if any."""
     if not options.cache:
         return None
+    from pkgtool.cache import cache_folder
     from pkgtool.cache.store import LintCache
 
-    folder = options.cache_dir or os.environ.get("PKGTOOL_CACHE_DIR")
-    return LintCache(cwd / folder if folder else project_root(cwd) / CACHE_FOLDER)
-
-
-def project_root(cwd: Path) -> Path:
-    """The nearest folder from ``cwd`` up holding a pyproject.toml, else ``cwd``."""
-    return next((folder for folder in (cwd, *cwd.parents)
-                 if (folder / "pyproject.toml").is_file()), cwd)
+    return LintCache(cache_folder(options.cache_dir, cwd))
 
 
 def _scans(roots: Sequence[Path]) -> dict[Path, Scan]:

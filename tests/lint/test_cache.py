@@ -84,6 +84,8 @@ def test_findings_are_identical_with_and_without_cache_and_workers(corpus: Path)
     assert pooled == serial
     assert cold == serial
     assert warm == serial
+    assert list((corpus / ".pkgtool_cache" / "lint").glob("run-*.json")), "a replay record"
+    assert _lint(corpus, jobs=1).stdout == serial  # replayed (tests/lint/test_replay.py)
 
 
 def test_an_edit_a_sibling_or_other_settings_invalidate(tmp_path: Path) -> None:
