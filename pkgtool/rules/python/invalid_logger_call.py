@@ -17,6 +17,8 @@ LEVELS = frozenset({"debug", "info", "warning", "warn", "error", "fatal"})
 OPTIONS = frozenset({"name", "throttle_duration_sec", "throttle_time_source_type",
                      "skip_first", "once"})
 """The keyword arguments rclpy's logger accepts (Jazzy)."""
+MESSAGE = "message"
+"""The name of the methods' one parameter, which a call may also pass by keyword."""
 GETTERS = frozenset({"rclpy.logging.get_logger"})
 
 
@@ -61,11 +63,15 @@ def _problem(call: ast.Call) -> str | None:
     if len(call.args) > 1:
         return "takes one message: the other arguments raise `TypeError`; format them into " \
                "the message with an f-string"
-    unknown = sorted(k.arg for k in call.keywords if k.arg and k.arg not in OPTIONS)
+    by_keyword = [k.value for k in call.keywords if k.arg == MESSAGE]
+    if by_keyword and call.args:
+        return "passes the message twice, by position and as `message=`: rclpy raises " \
+               "`TypeError`"
+    unknown = sorted(k.arg for k in call.keywords if k.arg and k.arg not in OPTIONS | {MESSAGE})
     if unknown:
         return f"has no option `{unknown[0]}`: rclpy raises `TypeError` (its options are " \
                "`throttle_duration_sec`, `skip_first`, `once`)"
-    message = call.args[0] if call.args else None
+    message = call.args[0] if call.args else by_keyword[0] if by_keyword else None
     if isinstance(message, ast.Constant) and not isinstance(message.value, str) or \
             isinstance(message, (ast.List, ast.Tuple, ast.Dict, ast.Set)):
         return "takes a string: rclpy raises `TypeError` for anything else; write " \
@@ -82,8 +88,9 @@ def invalid_logger_call(package: Package) -> Iterator[Hit]:
     Checks calls of `debug`, `info`, `warning`, `warn`, `error` and `fatal` on rclpy loggers:
     `<node>.get_logger()`, `rclpy.logging.get_logger(...)`, and names or attributes
     (`self.logger`) that the module only ever assigns one of those. Each call must pass one
-    message and only rclpy's options (`throttle_duration_sec`, `throttle_time_source_type`,
-    `skip_first`, `once`, `name`). Calls that unpack `*args` or `**kwargs` are not checked.
+    message (by position, or by keyword as `message=`) and only rclpy's options
+    (`throttle_duration_sec`, `throttle_time_source_type`, `skip_first`, `once`, `name`).
+    Calls that unpack `*args` or `**kwargs` are not checked.
 
     ## Why is this bad?
     rclpy's logger is neither `print` nor Python's `logging`: `info('count', n)` raises
