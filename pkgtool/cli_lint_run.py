@@ -64,10 +64,10 @@ def lint_call(paths: Optional[list[str]] = None, fmt: Format = Format.TEXT,
              "strict": strict, "exit_zero": exit_zero, "quiet": quiet, "isolated": isolated,
              "rosdistro": rosdistro}, _colour(fmt, output))
         folder = cache_folder(cache_dir, Path.cwd())
-        shown = replay.replayed(folder, stamp)
-        if shown is not None:
-            return _show(shown, output)
-        witness = replay.Witness(folder, stamp)
+        found = replay.replayed(folder, stamp)
+        if isinstance(found, replay.Shown):
+            return _show(found, output)
+        witness = replay.Witness(folder, stamp, found)
     from pkgtool.commands import lint as command
 
     options = command.LintOptions(_selectors(select) if select else None, _selectors(ignore),

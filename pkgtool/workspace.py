@@ -20,9 +20,10 @@ no package, or in a package that discovery would skip, are ignored (what pre-com
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from pathlib import Path
+from typing import Any
 
 from pkgtool.records import record
 
@@ -154,35 +155,50 @@ def _below(folder: Path, real: str, listed: list[os.DirEntry[str]], folders: Fou
                 folders.append((folder / entry.name, os.path.join(real, entry.name)))
 
 
-Witness = Callable[[str, "os.stat_result | None", "list[os.DirEntry[str]]"], None]
+Witness = Callable[[str, "os.stat_result | None", "list[Any]"], None]
 """Told of every folder :func:`listing` lists: its path, its status taken before listing it
 (None when it has none) and its entries."""
+Known = Mapping[str, "tuple[os.stat_result, list[Any]]"]
+"""Folders whose entries are known without listing them: path -> (status, entries that stand
+in for :class:`os.DirEntry`)."""
 _witness: Witness | None = None
+_known: Known = {}
 
 
 @contextmanager
-def witnessed(witness: Witness) -> Iterator[None]:
-    """Tell ``witness`` of every folder listed meanwhile (what :mod:`pkgtool.cache.replay`
-    records of a run)."""
-    global _witness
-    _witness = witness
+def witnessed(witness: Witness, known: Known | None = None) -> Iterator[None]:
+    """Tell ``witness`` of every folder listed meanwhile, and take the entries of the ``known``
+    folders from there (:mod:`pkgtool.cache.replay` records a run and gives what it knows)."""
+    global _witness, _known
+    _witness, _known = witness, known or {}
     try:
         yield
     finally:
-        _witness = None
+        _witness, _known = None, {}
 
 
-def listing(folder: str | Path) -> list[os.DirEntry[str]]:
-    """The entries of ``folder``; none when it cannot be listed."""
-    status = _status(folder) if _witness is not None else None
+def listing(folder: str | Path) -> list[Any]:
+    """The entries of ``folder`` (:class:`os.DirEntry`, or what stands in for them); none when
+    it cannot be listed."""
+    if _witness is None:
+        return _listed(folder)
+    path = os.fspath(folder)
+    known = _known.get(path)
+    if known is not None:
+        _witness(path, *known)
+        return known[1]
+    status = _status(folder)
+    found = _listed(folder)
+    _witness(path, status, found)
+    return found
+
+
+def _listed(folder: str | Path) -> list[os.DirEntry[str]]:
     try:
         with os.scandir(folder) as entries:
-            found = list(entries)
+            return list(entries)
     except OSError:
-        found = []
-    if _witness is not None:
-        _witness(os.fspath(folder), status, found)
-    return found
+        return []
 
 
 def _status(path: str | Path) -> os.stat_result | None:

@@ -2,19 +2,23 @@
 
 A run of ``pkgtool lint`` on folders, with the cache on and nothing to fix, records what it
 read (:class:`Witness`): every folder it listed (discovery's walk, each package's files, the
-workspace index, pkgtool's own code) with each file in it, the pyproject.toml files the
+workspace index, pkgtool's own code) with each entry in it, the pyproject.toml files the
 settings come from or their absence, and the interpreter's site-packages folders. The next run
 with the same command line, folder, interpreter, pkgtool and colour looks at each of them again
 (one ``stat`` each, less than listing them) and, when every one is as recorded, prints the
-recorded report and exits with the recorded code: nothing is read, indexed or checked.
+recorded report and exits with the recorded code: nothing is read, indexed or checked. When
+only the contents of files changed (every folder is as recorded), the run goes on, but the
+folders are not listed again: their entries come from the record, with the files' statuses
+just examined (:data:`Listings`; the lint cache then rechecks the packages whose files changed).
 
 Folders are compared by change time (``st_ctime_ns``: adding, removing or renaming an entry,
 or a permission change, sets it, and nothing can set it back), files by size, modification and
-change time. A record is never replayed when one of those times is less than
-:data:`SETTLED_NS` older than the record (a later change within the file system's time
-granularity would be invisible); the next run records again. Records are JSON files written
-atomically (``lint/run-<hash>.json``, the newest :data:`KEPT` kept); one that cannot be read or
-is not pkgtool's is ignored and replaced.
+change time. A record is not kept when one of those times is too close to the start of the run
+(:data:`SETTLED_NS`, :data:`FINE_SETTLED_NS`): a later change within the file system's time
+granularity would be invisible; the next run records again. A folder holding a symbolic link is
+always listed (what the link points to may change without the folder changing). Records are
+JSON files written atomically (``lint/run-<hash>.json``, the newest :data:`KEPT` kept); one
+that cannot be read or is not pkgtool's is ignored and replaced.
 """
 
 from __future__ import annotations
@@ -22,18 +26,37 @@ from __future__ import annotations
 import binascii
 import json
 import os
+import re
 import sys
 import time
-from collections.abc import Iterable, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from operator import attrgetter
 from pathlib import Path
-from typing import Any, NamedTuple
+from typing import TYPE_CHECKING, Any, NamedTuple
+
+if TYPE_CHECKING:
+    from pkgtool.model.files import Scan
+    from pkgtool.workspace import Discovery
 
 SCHEMA = "pkgtool-lint-replay-1"
 SETTLED_NS = 2_000_000_000
-"""Times this close to a record's are not trusted (see the module's docstring)."""
+"""Times this close to a record's are not trusted on a file system with coarse times (FAT keeps
+two seconds, HFS+ one, exFAT ten milliseconds): a later change within the same tick would not
+show."""
+FINE_SETTLED_NS = 100_000_000
+"""The same on a file system with fine times (ext4, XFS, Btrfs, tmpfs, APFS, NTFS: nanoseconds
+or a clock tick of a few milliseconds)."""
+_COARSE_NS = 10_000_000
+"""A change time that is a whole number of these comes from a coarse file system (on a fine
+one, the chance is one in ten million): the times changed lately tell which kind holds them."""
 KEPT = 16
 """Records kept per cache folder (one per command line, folder and colour)."""
 _PREFIX = "run-"
+_LAYOUT_PREFIX = "layout-"
+_WALK_PREFIX = "walk-"
+_CHECK = re.compile("[0-9a-f]{8}")
+_TIMES = attrgetter("st_size", "st_mtime_ns", "st_ctime_ns")
+"""What a record compares of each folder and file."""
 
 
 class Shown(NamedTuple):
@@ -44,48 +67,176 @@ class Shown(NamedTuple):
     messages: list[str]
 
 
+class RecordedEntry:
+    """A folder entry as a record saw it, standing in for an :class:`os.DirEntry` (the
+    listing of a folder whose change time shows it unchanged)."""
+
+    __slots__ = ("name", "path", "_status")
+
+    def __init__(self, name: str, path: str, status: os.stat_result | None) -> None:
+        self.name = name
+        self.path = path
+        self._status = status
+        """The file's status as examined before the run; None for a folder."""
+
+    def is_dir(self, *, follow_symlinks: bool = True) -> bool:
+        return self._status is None
+
+    def is_file(self, *, follow_symlinks: bool = True) -> bool:
+        return self._status is not None
+
+    def is_symlink(self) -> bool:
+        return False  # a folder holding a link is never given from a record
+
+    def stat(self, *, follow_symlinks: bool = True) -> os.stat_result:
+        if self._status is None:
+            raise OSError(f"{self.path} is a folder")  # never asked: lists call stat on files
+        return self._status
+
+
+class _Folder(NamedTuple):
+    status: os.stat_result
+    files: list[str]
+    statuses: list[os.stat_result]
+    folders: list[str]
+    linked: bool
+    """Some entry is a symbolic link: what it is may change without the folder changing."""
+
+
+class Listings(Mapping[str, "tuple[os.stat_result, list[RecordedEntry]]"]):
+    """The folders of a record that hold no link: path -> (status, entries), with the
+    statuses :func:`replayed` just examined; entries are made when a folder is asked for."""
+
+    def __init__(self, layout: dict[str, Any], statuses: list[os.stat_result]) -> None:
+        self.layout = layout
+        """The record's layout (its folders and their entries, its other files, its absent
+        paths), which a run that lists nothing else records again as it is."""
+        self._statuses = statuses
+        self._at: dict[str, tuple[int, list[str], list[str]]] = {}
+        self._made: dict[str, tuple[os.stat_result, list[RecordedEntry]]] = {}
+        position = 0
+        for folder, files, subfolders, linked in layout["folders"]:
+            if not linked:
+                self._at[folder] = (position, files, subfolders)
+            position += 1 + len(files)
+
+    def __getitem__(self, folder: str) -> tuple[os.stat_result, list[RecordedEntry]]:
+        made = self._made.get(folder)
+        if made is None:
+            position, files, subfolders = self._at[folder]
+            base = folder if folder.endswith("/") else f"{folder}/"
+            found = self._statuses[position + 1:position + 1 + len(files)]
+            made = self._made[folder] = (self._statuses[position], [
+                *(RecordedEntry(name, base + name, status) for name, status in zip(files, found)),
+                *(RecordedEntry(name, base + name, None) for name in subfolders)])
+        return made
+
+    def folder(self, folder: str) -> _Folder:
+        """What :class:`Witness` keeps of the known ``folder`` (without looking at entries)."""
+        position, files, subfolders = self._at[folder]
+        return _Folder(self._statuses[position], files,
+                       self._statuses[position + 1:position + 1 + len(files)], subfolders, False)
+
+    def statuses(self) -> dict[str, os.stat_result]:
+        """Every file of the folders by path."""
+        found: dict[str, os.stat_result] = {}
+        for folder, (position, files, _) in self._at.items():
+            base = folder if folder.endswith("/") else f"{folder}/"
+            found.update(zip((base + name for name in files),
+                             self._statuses[position + 1:position + 1 + len(files)]))
+        return found
+
+    def __contains__(self, folder: object) -> bool:
+        return folder in self._at
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._at)
+
+    def __len__(self) -> int:
+        return len(self._at)
+
+
 class Witness:
     """What a lint run read, gathered while it runs (the argument of
     :func:`pkgtool.workspace.witnessed`), then :meth:`keep` what it showed."""
 
-    def __init__(self, folder: Path, stamp: list[Any]) -> None:
+    def __init__(self, folder: Path, stamp: list[Any], known: Listings | None = None) -> None:
         from pkgtool.cache import prepare
 
         prepare(folder)  # now: made later, it would change a folder the run lists
         self.folder = folder / "lint"
         self.stamp = stamp
         self.taken_ns = time.time_ns()
-        self.folders: dict[str, tuple[int, list[str], list[int]]] = {}
-        """Folder -> its change time, its files' names and their times (three each)."""
-        self.files: dict[str, list[int]] = {}
+        self.folders: dict[str, _Folder] = {}
+        self.files: dict[str, os.stat_result] = {}
         self.absent: set[str] = set()
         self.replayable = True
         """False once the run read something this record cannot vouch for."""
+        self.known = known
+        """Folders whose entries an earlier record gives (:func:`replayed`)."""
+        self.relayout = False
+        """Write the layout again: some folder was listed, not known, or its walk is missing."""
+        self.walked: tuple[Discovery, Mapping[Path, Scan]] | None = None
+        """What the run found and the files of each package (:meth:`found`)."""
+
+    def hint(self) -> tuple[Discovery, dict[Path, Scan]] | None:
+        """What discovery finds and each package's files with their sizes and times, from the
+        record this run started from: its folders are as recorded, so walking them would find
+        the same (None when the record cannot tell)."""
+        if self.known is None or len(self.known) != len(self.known.layout["folders"]):
+            return None  # a folder holds a link
+        from pkgtool.workspace import Discovery
+
+        try:
+            walked = _read(self.folder / _walk_name(self.known.layout["id"]))
+            found = Discovery(tuple(map(Path, walked["packages"])), (), tuple(walked["empty"]))
+            status = self.known.statuses()
+            scans = {Path(root): [(path, [status[f"{root}/{path}"].st_size,
+                                          status[f"{root}/{path}"].st_mtime_ns])
+                                  for path in paths] for root, paths in walked["scans"]}
+        except (OSError, ValueError, RecursionError, KeyError, TypeError, AttributeError):
+            self.relayout = True
+            return None
+        self.folders = {path: self.known.folder(path) for path in self.known}
+        return found, scans
+
+    def found(self, discovery: Discovery, scans: Mapping[Path, Scan]) -> None:
+        """The run's discovery and the files of its packages (recorded for :meth:`hint`)."""
+        self.walked = discovery, scans
 
     def __call__(self, folder: str, status: os.stat_result | None,
-                 entries: list[os.DirEntry[str]]) -> None:
-        """A folder was listed: remember its time and every file in it."""
+                 entries: list[os.DirEntry[str]] | list[RecordedEntry]) -> None:
+        """A folder was listed: remember its status and every entry in it."""
+        if self.known is not None and folder in self.known:
+            self.folders[folder] = self.known.folder(folder)
+            return
+        self.relayout = True
         if status is None:
             self.absent.add(folder)
             return
-        names: list[str] = []
-        times: list[int] = []
+        files: list[str] = []
+        statuses: list[os.stat_result] = []
+        folders: list[str] = []
+        linked = False
         for entry in entries:
             try:
+                linked = linked or entry.is_symlink()
                 if entry.is_file():
-                    times += _file_times(entry.stat())
-                    names.append(entry.name)
-                elif not entry.is_dir():  # a broken link, which a later file may mend
+                    statuses.append(entry.stat())
+                    files.append(entry.name)
+                elif entry.is_dir():
+                    folders.append(entry.name)
+                else:  # a broken link, which a later file may mend
                     self.absent.add(entry.path)
             except OSError:
                 self.absent.add(entry.path)
-        self.folders[folder] = (status.st_ctime_ns, names, times)
+        self.folders[folder] = _Folder(status, files, statuses, folders, linked)
 
     def paths(self, paths: Iterable[Path]) -> None:
         """Files (or their absence) the run looked at outside the folders it listed."""
         for path in paths:
             try:
-                self.files[os.fspath(path)] = _file_times(os.stat(path))
+                self.files[os.fspath(path)] = os.stat(path)
             except OSError:
                 self.absent.add(os.fspath(path))
 
@@ -96,24 +247,47 @@ class Witness:
             return
         try:
             for folder in site_folders():
-                self.folders[folder] = (os.stat(folder).st_ctime_ns, [], [])
+                self.folders[folder] = _Folder(os.stat(folder), [], [], [], False)
         except OSError:
             return
-        changes = [changed for changed, _, _ in self.folders.values()]
-        changes += [t for _, _, files in self.folders.values() for t in files[2::3]]
-        changes += [stats[2] for stats in self.files.values()]
-        if max(changes, default=0) >= self.taken_ns - SETTLED_NS:
+        layout = self._known_layout()
+        order = [path for path, *_ in layout["folders"]] if layout else list(self.folders)
+        statuses = [s for path in order for s in (self.folders[path].status,
+                                                  *self.folders[path].statuses)]
+        statuses += self.files.values()
+        if not _settled([status.st_ctime_ns for status in statuses], self.taken_ns):
             return
-        times = [t for changed, _, files in self.folders.values() for t in (changed, *files)]
-        times += [t for stats in self.files.values() for t in stats]
-        record = {"schema": SCHEMA, "stamp": self.stamp,
-                  "folders": [[f, names] for f, (_, names, _) in self.folders.items()],
-                  "files": list(self.files), "absent": sorted(self.absent),
-                  "times": hash(tuple(times)), "shown": list(shown)}
-        from pkgtool.cache import write_atomically
-
-        write_atomically(self.folder, _name(self.stamp), json.dumps(record, separators=(",", ":")))
+        if layout is None:
+            layout = {"schema": SCHEMA,
+                      "folders": [[path, folder.files, folder.folders, folder.linked]
+                                  for path, folder in self.folders.items()],
+                      "files": list(self.files), "absent": sorted(self.absent),
+                      "folder_times": hash(tuple(self.folders[path].status.st_ctime_ns
+                                                 for path in order))}
+            layout["id"] = _write(self.folder, _layout_name, layout)
+            if self.walked is not None:
+                found, scans = self.walked
+                _write(self.folder, lambda _: _walk_name(layout["id"]), {
+                    "packages": [str(root) for root in found.packages],
+                    "empty": list(found.empty),
+                    "scans": [[str(root), [path for path, _ in scanned]]
+                              for root, scanned in scans.items()]})
+        record = {"schema": SCHEMA, "stamp": self.stamp, "layout": layout["id"],
+                  "times": hash(tuple(map(_TIMES, statuses))), "shown": list(shown)}
+        _write(self.folder, lambda _: _name(self.stamp), record)
         _prune(self.folder)
+
+    def _known_layout(self) -> dict[str, Any] | None:
+        """The layout of the record this run started from when this run read exactly the
+        folders, files and absent paths it holds (written once, kept by later records)."""
+        if self.known is None or self.relayout:
+            return None
+        layout = self.known.layout
+        if len(layout["folders"]) != len(self.folders) or \
+                any(path not in self.folders for path, *_ in layout["folders"]) or \
+                layout["files"] != list(self.files) or layout["absent"] != sorted(self.absent):
+            return None
+        return layout
 
 
 def stamp(arguments: dict[str, Any], colour: bool) -> list[Any]:
@@ -126,16 +300,24 @@ def stamp(arguments: dict[str, Any], colour: bool) -> list[Any]:
             sorted(arguments.items())]
 
 
-def replayed(folder: Path, stamp: list[Any]) -> Shown | None:
-    """The run recorded in the cache ``folder`` with ``stamp``, when everything it read is as
-    it was; None otherwise."""
+def replayed(folder: Path, stamp: list[Any]) -> Shown | Listings | None:
+    """The run recorded in the cache ``folder`` with ``stamp`` when everything it read is as
+    it was; else, when only the contents of files changed, what its folders hold (the next
+    run need not list them); else None."""
     try:
-        with open(folder / "lint" / _name(stamp), encoding="utf-8") as stream:
-            record = json.load(stream)
+        record = _read(folder / "lint" / _name(stamp))
         if record["schema"] != SCHEMA or record["stamp"] != json.loads(json.dumps(stamp)) or \
-                hash(tuple(_times_now(record["folders"], record["files"]))) != record["times"] \
-                or any(map(os.path.exists, record["absent"])):
+                not _CHECK.fullmatch(record["layout"]):
             return None
+        layout = _read(folder / "lint" / _layout_name(record["layout"]), record["layout"])
+        if layout["schema"] != SCHEMA or any(map(os.path.exists, layout["absent"])):
+            return None
+        layout["id"] = record["layout"]
+        statuses, changed = _now(layout["folders"], layout["files"])
+        if hash(tuple(changed)) != layout["folder_times"]:
+            return None
+        if hash(tuple(map(_TIMES, statuses))) != record["times"]:
+            return Listings(layout, statuses)
         code, report, messages = record["shown"]
         if isinstance(code, int) and isinstance(report, str) and isinstance(messages, list) \
                 and all(isinstance(m, str) for m in messages):
@@ -145,23 +327,28 @@ def replayed(folder: Path, stamp: list[Any]) -> Shown | None:
     return None
 
 
-def _times_now(folders: list[list[Any]], files: list[str]) -> list[int]:
-    """The times :meth:`Witness.keep` hashes, as they are now (OSError for a vanished one)."""
+def _now(folders: list[list[Any]], files: list[str]) -> tuple[list[os.stat_result], list[int]]:
+    """The status now of every folder of a record, each followed by its files', then of its
+    other files; and the change times of the folders (OSError for a vanished one)."""
     stat = os.stat
-    times: list[int] = []
-    for folder, names in folders:
-        times.append(stat(folder).st_ctime_ns)
-        for name in names:
-            now = stat(f"{folder}/{name}")
-            times += (now.st_size, now.st_mtime_ns, now.st_ctime_ns)
-    for path in files:
-        now = stat(path)
-        times += (now.st_size, now.st_mtime_ns, now.st_ctime_ns)
-    return times
+    statuses: list[os.stat_result] = []
+    changed: list[int] = []
+    for folder, names, _, _ in folders:
+        status = stat(folder)
+        statuses.append(status)
+        changed.append(status.st_ctime_ns)
+        base = folder if folder.endswith("/") else f"{folder}/"
+        statuses += [stat(base + name) for name in names]
+    statuses += map(stat, files)
+    return statuses, changed
 
 
-def _file_times(status: os.stat_result) -> list[int]:
-    return [status.st_size, status.st_mtime_ns, status.st_ctime_ns]
+def _settled(changes: list[int], taken_ns: int) -> bool:
+    """True when every change time is old enough at ``taken_ns`` for a later change to show
+    (see :data:`SETTLED_NS`)."""
+    recent = [t for t in changes if t >= taken_ns - SETTLED_NS]  # few: those just changed
+    return not recent or (max(recent) < taken_ns - FINE_SETTLED_NS and
+                          all(t % _COARSE_NS for t in recent))
 
 
 def site_folders() -> Sequence[str]:
@@ -175,12 +362,44 @@ def _name(stamp: list[Any]) -> str:
     return f"{_PREFIX}{binascii.crc32(text.encode()):08x}.json"
 
 
+def _write(folder: Path, name: Callable[[str], str], data: dict[str, Any]) -> str:
+    """Write ``data`` as JSON after its check (a CRC-32 of the JSON) to the file ``name``
+    gives for the check; the check."""
+    from pkgtool.cache import write_atomically
+
+    text = json.dumps(data, separators=(",", ":"))
+    check = f"{binascii.crc32(text.encode()):08x}"
+    write_atomically(folder, name(check), f"{check}\n{text}")
+    return check
+
+
+def _read(path: Path, check: str | None = None) -> Any:
+    """What :func:`_write` wrote to ``path`` (with the ``check`` given, if any); ValueError
+    when the file does not hold it intact."""
+    with open(path, "rb") as stream:
+        found, _, text = stream.read().partition(b"\n")
+    if not _CHECK.fullmatch(found.decode("ascii", "replace")) or \
+            f"{binascii.crc32(text):08x}".encode() != found or \
+            (check is not None and found.decode() != check):
+        raise ValueError(f"{path} is damaged")
+    return json.loads(text)
+
+
+def _layout_name(layout_id: str) -> str:
+    return f"{_LAYOUT_PREFIX}{layout_id}.json"
+
+
+def _walk_name(layout_id: str) -> str:
+    return f"{_WALK_PREFIX}{layout_id}.json"
+
+
 def _prune(folder: Path) -> None:
-    """Keep the newest :data:`KEPT` records."""
+    """Keep the newest :data:`KEPT` records, layouts and walks."""
     try:
-        records = sorted((entry.stat().st_mtime_ns, entry.path) for entry in os.scandir(folder)
-                         if entry.name.startswith(_PREFIX))
-        for _, path in records[:-KEPT]:
-            os.unlink(path)
+        for prefix in (_PREFIX, _LAYOUT_PREFIX, _WALK_PREFIX):
+            kept = sorted((entry.stat().st_mtime_ns, entry.path) for entry in os.scandir(folder)
+                          if entry.name.startswith(prefix))
+            for _, path in kept[:-KEPT]:
+                os.unlink(path)
     except OSError:
         pass

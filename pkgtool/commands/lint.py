@@ -80,14 +80,15 @@ def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None,
     """
     if witness is None:
         return _run(paths, options, cwd)
-    with witnessed(witness):
+    with witnessed(witness, witness.known):
         return _run(paths, options, cwd, witness)
 
 
 def _run(paths: Sequence[str], options: LintOptions, cwd: Path | None,
          witness: Witness | None = None) -> LintResult:
     here = Path(os.path.abspath(cwd or Path.cwd()))
-    found = discover(paths, cwd=here)
+    hint = witness.hint() if witness is not None else None
+    found = hint[0] if hint is not None else discover(paths, cwd=here)
     if found.missing:
         return LintResult(ExitCode.USAGE, errors=tuple(
             f"Path `{p}` does not exist. Check the spelling, or run from another folder."
@@ -113,7 +114,10 @@ def _run(paths: Sequence[str], options: LintOptions, cwd: Path | None,
         witness.replayable = all(any(root == top or top in root.parents for top in tops)
                                  for root in found.packages)  # else a package above is read
     cache = _open_cache(options, here)
-    scans = _scans(found.packages) if cache is not None and not options.fix else {}
+    scans = {} if cache is None or options.fix else \
+        hint[1] if hint is not None else _scans(found.packages)
+    if witness is not None:
+        witness.found(found, scans)
     workspace = workspace_index(
         found.packages, [here / p for p in paths or ["."] if (here / p).is_dir()],
         {root: [path for path, _ in listed] for root, listed in scans.items()},

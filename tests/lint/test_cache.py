@@ -161,6 +161,8 @@ def test_corrupt_or_foreign_entries_are_ignored_and_rewritten(tmp_path: Path) ->
              *(json.dumps({**whole, "entries": {str(root): entry}}) for entry in entries)]
     for text in texts:
         pack.write_text(text)
+        for record in pack.parent.glob("run-*.json"):  # a replay would not read the entries
+            record.unlink()
         assert _lint(root).stdout == expected
         assert _entries(root / ".pkgtool_cache")[str(root)]["findings"] == good["findings"], text
 

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import binascii
 import json
 import os
 import shutil
@@ -31,6 +32,7 @@ def workspace(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> Path:
     monkeypatch.delenv("PKGTOOL_CACHE_DIR", raising=False)
     monkeypatch.delenv("NO_COLOR", raising=False)
     monkeypatch.setattr(replay, "SETTLED_NS", 0)  # trusted at once; _pause() keeps edits apart
+    monkeypatch.setattr(replay, "FINE_SETTLED_NS", 0)
     _pause()
     return ws
 
@@ -120,16 +122,39 @@ def test_the_command_line_colour_and_folder_are_part_of_the_record(
     assert len(_records(workspace)) == 3  # the records of both folders share one cache
 
 
+def _load(path: Path) -> dict:
+    return json.loads(path.read_text().partition("\n")[2])
+
+
+def _store(path: Path, data: object) -> None:
+    """Write ``data`` as pkgtool would, with a valid check: well-formed but wrong."""
+    text = json.dumps(data)
+    path.write_text(f"{binascii.crc32(text.encode()):08x}\n{text}")
+
+
 def test_a_broken_or_foreign_record_is_ignored_and_replaced(workspace: Path, lint: Lint) -> None:
     _, expected, _ = lint()
     record = _records(workspace)[0]
-    whole = json.loads(record.read_text())
+    whole = _load(record)
     lies = {**whole, "shown": [0, "{}", []]}
-    for text in ["{not json", "[]", json.dumps({**lies, "schema": "other"}),
-                 json.dumps({**lies, "stamp": ["other"]}), json.dumps({**lies, "times": 1}),
-                 json.dumps({**whole, "shown": [0, 1, 2]}), json.dumps({**whole, "folders": 3})]:
-        record.write_text(text)
-        assert lint()[:2] == (1, expected), text
+    layout = record.parent / f"layout-{whole['layout']}.json"
+    shape = _load(layout)
+    damaged = [lambda: record.write_text("{not json"), lambda: record.write_text(""),
+               lambda: record.write_bytes(b"\xff\xfe\n{}"),
+               lambda: record.write_text(record.read_text().replace('"shown":[1', '"shown":[0')),
+               lambda: layout.write_text(layout.read_text()[:-2]),
+               *(lambda data=data: _store(record, data) for data in [
+                   [], {**lies, "schema": "other"}, {**lies, "stamp": ["other"]},
+                   {**lies, "times": 1}, {**lies, "layout": "../../x"}, {**lies, "layout": 7},
+                   {**whole, "shown": [0, 1, 2]}]),
+               *(lambda data=data: _store(layout, data) for data in [
+                   {**shape, "folders": 3}, {**shape, "files": 3}, {**shape, "schema": "x"},
+                   {**shape, "folders": shape["folders"][1:]}])]
+    for number, damage in enumerate(damaged):
+        if number >= len(damaged) - 4:
+            _store(record, lies)
+        damage()
+        assert lint()[:2] == (1, expected), number
         assert lint() == (1, expected, True)
 
 
@@ -145,6 +170,7 @@ def test_nothing_is_recorded_for_fixes_files_or_packages_above(workspace: Path, 
 def test_files_changed_just_before_the_run_are_not_trusted(
         workspace: Path, lint: Lint, monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(replay, "SETTLED_NS", 3_600 * 10**9)
+    monkeypatch.setattr(replay, "FINE_SETTLED_NS", 3_600 * 10**9)
     lint()
     assert not lint()[2] and _records(workspace) == []
 
@@ -153,3 +179,47 @@ def test_only_the_newest_records_are_kept(workspace: Path, lint: Lint) -> None:
     for number in range(replay.KEPT + 3):
         lint(select=["PYC001"] * (number + 1))
     assert len(_records(workspace)) == replay.KEPT
+
+
+def test_after_an_edit_the_folders_come_from_the_record(
+        workspace: Path, lint: Lint, monkeypatch: pytest.MonkeyPatch) -> None:
+    from pkgtool import workspace as discovery
+
+    real = discovery._listed
+    listed: list[str] = []
+    monkeypatch.setattr(discovery, "_listed", lambda folder: listed.append(str(folder))
+                        or real(folder))
+    (workspace / "src" / "talker" / "helper").symlink_to(workspace / "src" / "talker" / "talker")
+    _pause()
+    lint()
+    listed.clear()
+    (workspace / "src" / "listener" / "listener" / "use.py").write_text("import talker\n")
+    code, text, replayed = lint()
+    assert {f for f in listed if f.startswith(str(workspace))} == {
+        str(workspace / "src" / "talker")}  # it holds a link: listed again
+    assert not replayed and (code, text) == lint(no_cache=True)[:2]
+    assert lint() == (code, text, True)
+    listed.clear()
+    (workspace / "src" / "listener" / "listener" / "new.py").write_text("x = y\n")
+    code, text, replayed = lint()
+    assert not replayed and "new.py" in text
+    assert str(workspace / "src" / "listener" / "listener") in listed  # changed: listed
+
+
+def test_after_an_edit_the_packages_and_their_files_come_from_the_record(
+        workspace: Path, lint: Lint, monkeypatch: pytest.MonkeyPatch) -> None:
+    walks: list[int] = []
+    real = command.discover
+    monkeypatch.setattr(command, "discover", lambda *a, **k: walks.append(1) or real(*a, **k))
+    lint()
+    use = workspace / "src" / "listener" / "listener" / "use.py"
+    for text in ("import talker\n", "import talker\nx = y\n", "import nothing\n"):
+        walks.clear()
+        use.write_text(text)
+        code, report, replayed = lint()
+        assert not walks and not replayed
+        assert (code, report) == lint(no_cache=True)[:2]
+        _pause()
+    walks.clear()
+    (workspace / "src" / "talker" / "talker" / "new.py").write_text("")
+    assert lint()[:2] == lint(no_cache=True)[:2] and walks  # a folder changed: walked again
