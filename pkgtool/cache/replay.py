@@ -56,6 +56,7 @@ _LAYOUT_PREFIX = "layout-"
 _WALK_PREFIX = "walk-"
 _CHECK = re.compile("[0-9a-f]{8}")
 _TIMES = attrgetter("st_size", "st_mtime_ns", "st_ctime_ns")
+_SIZE_TIME = attrgetter("st_size", "st_mtime_ns")
 """What a record compares of each folder and file."""
 
 
@@ -189,11 +190,11 @@ class Witness:
 
         try:
             walked = _read(self.folder / _walk_name(self.known.layout["id"]))
-            found = Discovery(tuple(map(Path, walked["packages"])), (), tuple(walked["empty"]))
+            roots = {root: Path(root) for root in walked["packages"]}
+            found = Discovery(tuple(roots.values()), (), tuple(walked["empty"]))
             status = self.known.statuses()
-            scans = {Path(root): [(path, [status[f"{root}/{path}"].st_size,
-                                          status[f"{root}/{path}"].st_mtime_ns])
-                                  for path in paths] for root, paths in walked["scans"]}
+            scans = {roots[root]: [(path, _size_time(status[f"{root}/{path}"])) for path in paths]
+                     for root, paths in walked["scans"]}
         except (OSError, ValueError, RecursionError, KeyError, TypeError, AttributeError):
             self.relayout = True
             return None
@@ -341,6 +342,11 @@ def _now(folders: list[list[Any]], files: list[str]) -> tuple[list[os.stat_resul
         statuses += [stat(base + name) for name in names]
     statuses += map(stat, files)
     return statuses, changed
+
+
+def _size_time(status: os.stat_result) -> list[int]:
+    """A file's ``[size, mtime_ns]`` as :func:`pkgtool.model.files.scan` gives it."""
+    return list(_SIZE_TIME(status))
 
 
 def _settled(changes: list[int], taken_ns: int) -> bool:

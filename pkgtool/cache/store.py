@@ -1,8 +1,10 @@
 """The cache on disk: one JSON entry per package, trusted only when its key matches exactly.
 
-The entries live in one file, ``lint/packages.json`` (reading one file is what makes a warm
-run of a large workspace fast); a run reads it once, and the process that started the run
-writes it back once at the end, merged with what other runs wrote meanwhile.
+The entries live in :data:`PACKS` files, ``lint/packages-NN.json``, by a hash of the package's
+folder (reading a few files is what makes a warm run of a large workspace fast, and after an
+edit only the file holding the changed package's entry is written again); a run reads them
+once, and the process that started the run writes those holding new entries once at the end,
+each merged with what other runs wrote to it meanwhile.
 
 The key of a package is a SHA-256 over: the cache schema, pkgtool's version and a fingerprint
 of its installed code and data, the Python version and the installed distributions, the
@@ -13,7 +15,7 @@ is reused from the entry when its size and modification time are unchanged and i
 modified well before it was hashed (so an edit within the file system's time granularity is
 never missed); otherwise the file is read again.
 
-The file is written to a temporary file and renamed into place, so concurrent runs never see
+A file is written to a temporary file and renamed into place, so concurrent runs never see
 it half-written (the last one to finish keeps its own entries). An entry that cannot be read,
 parsed or decoded, or whose key differs, is ignored and rewritten after linting; entries of
 packages that no longer exist are dropped.
@@ -21,6 +23,8 @@ packages that no longer exist are dropped.
 
 from __future__ import annotations
 
+import binascii
+import contextlib
 import hashlib
 import json
 import os
@@ -39,9 +43,11 @@ from pkgtool.model.context import WorkspacePackage
 from pkgtool.model.files import Scan, scan
 from pkgtool.records import record
 
-SCHEMA = "pkgtool-lint-cache-3"
-PACK = "packages.json"
-"""The file in ``lint/`` holding every entry."""
+SCHEMA = "pkgtool-lint-cache-4"
+PACKS = 16
+"""The files in ``lint/`` the entries are spread over (by package folder): a run that checked
+a few packages writes a few small files."""
+_PACKS = [f"packages-{number:02d}.json" for number in range(PACKS)]
 _SETTLED_NS = 2_000_000_000
 """A file modified this long before it was hashed is trusted by size and time afterwards."""
 
@@ -93,8 +99,10 @@ class LintCache:
     def __init__(self, folder: Path) -> None:
         self.folder = folder / "lint"
         self.base = folder
-        self._loaded = _identity(self.folder / PACK)
-        self._entries = _load(self.folder / PACK)
+        self._loaded = {name: _identity(self.folder / name) for name in _PACKS}
+        self._packs = {name: _load(self.folder / name) for name in _PACKS}
+        self._entries = {root: entry for pack in self._packs.values()
+                         for root, entry in pack.items()}
         self._fresh: dict[str, Entry] = {}
         self._code_key = _digest([SCHEMA, _code_fingerprint()])
         self._run_key = ""
@@ -183,17 +191,28 @@ class LintCache:
         self._fresh[entry["root"]] = entry
 
     def save(self) -> None:
-        """Write the kept entries atomically, merged with the file as it is now."""
-        if not self._fresh:
+        """Write the files holding kept entries, or entries of packages that no longer exist,
+        atomically, each merged with the file as it is now."""
+        if not self._fresh or not prepare(self.base):
             return
-        pack = self.folder / PACK
-        others = self._entries if _identity(pack) == self._loaded else _load(pack)
-        entries = {root: entry for root, entry in others.items()
-                   if root not in self._fresh and os.path.isdir(root)}
-        entries.update(self._fresh)
-        if prepare(self.base):
-            write_atomically(self.folder, PACK, json.dumps(
+        with contextlib.suppress(OSError):
+            os.unlink(self.folder / "packages.json")  # where pkgtool 0.1 kept every entry
+        gone = {name for name, pack in self._packs.items()
+                if not all(map(os.path.isdir, pack))}
+        for name in sorted(gone | {pack_of(root) for root in self._fresh}):
+            path = self.folder / name
+            others = self._packs[name] if _identity(path) == self._loaded[name] else _load(path)
+            entries = {root: entry for root, entry in others.items()
+                       if root not in self._fresh and os.path.isdir(root)}
+            entries.update((root, entry) for root, entry in self._fresh.items()
+                           if pack_of(root) == name)
+            write_atomically(self.folder, name, json.dumps(
                 {"schema": SCHEMA, "entries": entries}, separators=(",", ":")))
+
+
+def pack_of(root: str) -> str:
+    """The name of the file in ``lint/`` holding the entry of the package at ``root``."""
+    return f"packages-{binascii.crc32(root.encode()) % PACKS:02d}.json"
 
 
 def _identity(path: Path) -> tuple[int, int, int] | None:

@@ -13,6 +13,7 @@ from pathlib import Path
 import pytest
 
 from pkgtool.cache.serial import BadEntry, decode, encode
+from pkgtool.cache.store import pack_of
 from pkgtool.findings import Severity
 from pkgtool.model.span import ParseProblem, Span
 from tests.helpers import correct_package_files, make_finding, write_tree
@@ -38,7 +39,8 @@ def _lint(cwd: Path, *args: str, jobs: int = 1, env: dict[str, str] | None = Non
 
 def _entries(cache: Path) -> dict[str, dict]:
     """The cache's entries by package root."""
-    return json.loads((cache / "lint" / "packages.json").read_text())["entries"]
+    return {root: entry for pack in sorted((cache / "lint").glob("packages-*.json"))
+            for root, entry in json.loads(pack.read_text())["entries"].items()}
 
 
 def _bench_generator():  # type: ignore[no-untyped-def]
@@ -127,7 +129,7 @@ def test_the_workspace_index_is_kept_with_settled_packages_and_read_again_on_cha
     alpha_root = str(ws / "src" / "alpha")
     assert _entries(ws / ".pkgtool_cache")[alpha_root]["index"] == ["alpha", {}, ["alpha"]]
     assert _lint(ws).stdout == first  # the index of both packages comes from the cache
-    pack = ws / ".pkgtool_cache" / "lint" / "packages.json"
+    pack = ws / ".pkgtool_cache" / "lint" / pack_of(alpha_root)
     whole = json.loads(pack.read_text())
     recorded = whole["entries"][alpha_root]
     for broken in ("garbage", ["alpha", {"msg": "X"}, []], [1, {}, []], None):
@@ -149,7 +151,7 @@ def test_corrupt_or_foreign_entries_are_ignored_and_rewritten(tmp_path: Path) ->
     root = write_tree(tmp_path / "pkg", correct_package_files("demo"))
     (root / "demo" / "bad.py").write_text("x = y\n")
     expected = _lint(root).stdout
-    pack = root / ".pkgtool_cache" / "lint" / "packages.json"
+    pack = root / ".pkgtool_cache" / "lint" / pack_of(str(root))
     whole = json.loads(pack.read_text())
     good = whole["entries"][str(root)]
     lies = {**good, "findings": []}
