@@ -16,9 +16,14 @@ or a permission change, sets it, and nothing can set it back), files by size, mo
 change time. A record is not kept when one of those times is too close to the start of the run
 (:data:`SETTLED_NS`, :data:`FINE_SETTLED_NS`): a later change within the file system's time
 granularity would be invisible; the next run records again. A folder holding a symbolic link is
-always listed (what the link points to may change without the folder changing). Records are
-JSON files written atomically (``lint/run-<hash>.json``, the newest :data:`KEPT` kept); one
-that cannot be read or is not pkgtool's is ignored and replaced.
+always listed (what the link points to may change without the folder changing).
+
+Three kinds of JSON files in ``lint/``, each written atomically and starting with a CRC-32 of
+its content (a damaged or foreign one is ignored and replaced), the newest :data:`KEPT` of each
+kept: ``run-<hash of the stamp>.json`` (the times and what was shown),
+``layout-<check>.json`` (the folders, their entries, the other files and absent paths: written
+once, shared by the records of later runs that read the same) and ``walk-<check>.json`` (the
+packages discovery found and each one's files, for :meth:`Witness.hint`).
 """
 
 from __future__ import annotations
