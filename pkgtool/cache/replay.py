@@ -11,8 +11,9 @@ only the contents of files changed (every folder is as recorded), the run goes o
 folders are not listed again: their entries come from the record, with the files' statuses
 just examined (:data:`Listings`; the lint cache then rechecks the packages whose files changed).
 
-Folders are compared by change time (``st_ctime_ns``: adding, removing or renaming an entry,
-or a permission change, sets it, and nothing can set it back), files by size, modification and
+Folders are compared by change and modification time (``st_ctime_ns``: adding, removing or
+renaming an entry, or a permission change, sets it, and nothing can set it back; Windows gives
+the creation time there, and its modification time tells), files by size, modification and
 change time. A record is not kept when one of those times is too close to the start of the run
 (:data:`SETTLED_NS`, :data:`FINE_SETTLED_NS`): a later change within the file system's time
 granularity would be invisible; the next run records again. A folder holding a symbolic link is
@@ -61,6 +62,10 @@ _LAYOUT_PREFIX = "layout-"
 _WALK_PREFIX = "walk-"
 _CHECK = re.compile("[0-9a-f]{8}")
 _TIMES = attrgetter("st_size", "st_mtime_ns", "st_ctime_ns")
+_FOLDER_TIMES = attrgetter("st_mtime_ns", "st_ctime_ns")
+"""What tells a folder's entries changed: the change time, and the modification time on
+Windows (where ``st_ctime`` is when the folder was created)."""
+_CHANGED = attrgetter("st_mtime_ns" if os.name == "nt" else "st_ctime_ns")
 _SIZE_TIME = attrgetter("st_size", "st_mtime_ns")
 """What a record compares of each folder and file."""
 
@@ -261,14 +266,14 @@ class Witness:
         statuses = [s for path in order for s in (self.folders[path].status,
                                                   *self.folders[path].statuses)]
         statuses += self.files.values()
-        if not _settled([status.st_ctime_ns for status in statuses], self.taken_ns):
+        if not _settled(list(map(_CHANGED, statuses)), self.taken_ns):
             return
         if layout is None:
             layout = {"schema": SCHEMA,
                       "folders": [[path, folder.files, folder.folders, folder.linked]
                                   for path, folder in self.folders.items()],
                       "files": list(self.files), "absent": sorted(self.absent),
-                      "folder_times": hash(tuple(self.folders[path].status.st_ctime_ns
+                      "folder_times": hash(tuple(_FOLDER_TIMES(self.folders[path].status)
                                                  for path in order))}
             layout["id"] = _write(self.folder, _layout_name, layout)
             if self.walked is not None:
@@ -333,16 +338,17 @@ def replayed(folder: Path, stamp: list[Any]) -> Shown | Listings | None:
     return None
 
 
-def _now(folders: list[list[Any]], files: list[str]) -> tuple[list[os.stat_result], list[int]]:
+def _now(folders: list[list[Any]], files: list[str]
+         ) -> tuple[list[os.stat_result], list[tuple[int, int]]]:
     """The status now of every folder of a record, each followed by its files', then of its
-    other files; and the change times of the folders (OSError for a vanished one)."""
+    other files; and the times of the folders (OSError for a vanished one)."""
     stat = os.stat
     statuses: list[os.stat_result] = []
-    changed: list[int] = []
+    changed: list[tuple[int, int]] = []
     for folder, names, _, _ in folders:
         status = stat(folder)
         statuses.append(status)
-        changed.append(status.st_ctime_ns)
+        changed.append(_FOLDER_TIMES(status))
         base = folder if folder.endswith("/") else f"{folder}/"
         statuses += [stat(base + name) for name in names]
     statuses += map(stat, files)
