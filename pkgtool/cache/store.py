@@ -108,6 +108,8 @@ class LintCache:
         self._run_key = ""
         self._workspace: Mapping[Path, WorkspacePackage] = {}
         self._settings_keys: dict[int, tuple[Settings, str]] = {}
+        self._probed: dict[Path, tuple[Scan, Files]] = {}
+        """Packages :meth:`indexed` found as recorded: their scan and files."""
 
     def indexed(self, scans: Mapping[Path, Scan]) -> dict[Path, WorkspacePackage]:
         """The workspace-index entries recorded by this code with the packages whose files are
@@ -116,7 +118,13 @@ class LintCache:
         known = {}
         for root, scanned in scans.items():
             entry = self._entry_of(root)
-            if entry.get("code") == self._code_key and _as_recorded(root, entry, scanned):
+            old = entry.get("files")
+            if entry.get("code") != self._code_key or not isinstance(old, dict) or \
+                    len(old) != len(scanned):
+                continue
+            files = _hash_files(root, old, entry.get("taken_ns"), False, scanned)
+            if files is not None:  # every file as recorded: the lookup need not look again
+                self._probed[root] = scanned, files
                 package = _index_entry(entry.get("index"))
                 if package is not None:
                     known[root] = package
@@ -138,7 +146,9 @@ class LintCache:
         assert self._run_key, "bind() the cache to the workspace first"
         entry = self._entry_of(root)
         old = entry.get("files") if isinstance(entry.get("files"), dict) else {}
-        files = _hash_files(root, old, entry.get("taken_ns"), read, scanned)
+        probed = self._probed.get(root)
+        files = probed[1] if probed is not None and probed[0] is scanned else \
+            _hash_files(root, old, entry.get("taken_ns"), read, scanned)
         if files is None:
             return None
         refresh = len(old) != len(files.stats) or \
@@ -266,14 +276,6 @@ def _hash_files(root: Path, old: dict[str, Any], old_taken: Any, read: bool,
 
 def _digest(parts: list[Any]) -> str:
     return hashlib.sha256(json.dumps(parts, separators=(",", ":")).encode()).hexdigest()
-
-
-def _as_recorded(root: Path, entry: Entry, scanned: Scan) -> bool:
-    """True when the package's files are those of ``entry``, each of them one whose recorded
-    content hash :func:`_hash_files` reuses (same size and time, settled when recorded)."""
-    old = entry.get("files")
-    return isinstance(old, dict) and len(old) == len(scanned) and \
-        _hash_files(root, old, entry.get("taken_ns"), False, scanned) is not None
 
 
 def _index_record(package: WorkspacePackage) -> list[Any]:
