@@ -62,7 +62,7 @@ class Files:
     def digest(self) -> str:
         """The paths and contents of the files, as one hash."""
         listing = "\0".join(f"{path}\0{stat[2]}" for path, stat in sorted(self.stats.items()))
-        return hashlib.sha256(listing.encode()).hexdigest()
+        return hashlib.sha256(listing.encode("utf-8", "surrogateescape")).hexdigest()
 
     def unchanged(self, root: Path) -> bool:
         """True when the package has the same files, with the sizes and times they had when
@@ -222,7 +222,8 @@ class LintCache:
 
 def pack_of(root: str) -> str:
     """The name of the file in ``lint/`` holding the entry of the package at ``root``."""
-    return f"packages-{binascii.crc32(root.encode()) % PACKS:02d}.json"
+    number = binascii.crc32(root.encode("utf-8", "surrogateescape")) % PACKS
+    return f"packages-{number:02d}.json"
 
 
 def _identity(path: Path) -> tuple[int, int, int] | None:

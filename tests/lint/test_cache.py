@@ -225,3 +225,17 @@ def test_a_finding_carrying_a_fix_round_trips_in_a_fresh_process() -> None:
     done = subprocess.run([sys.executable, "-c", script], input=data, capture_output=True,
                           text=True, timeout=120, check=True)
     assert done.stdout.strip() == repr([finding])
+
+
+@pytest.mark.skipif(sys.platform != "linux", reason="file names are bytes on Linux only")
+def test_file_and_folder_names_that_are_not_utf8(tmp_path: Path) -> None:
+    ws = write_tree(tmp_path / "ws", {"src/x": ""})
+    (ws / "src" / "x").unlink()
+    folder = os.fsdecode(os.fsencode(ws / "src") + b"/caf\xe9")
+    write_tree(Path(folder), correct_package_files("cafe"))
+    with open(os.fsencode(folder) + b"/cafe/bad\xff.py", "wb") as stream:
+        stream.write(b"x = y\n")
+    expected = _lint(ws, "--no-cache").stdout
+    assert "PYC001" in expected
+    assert _lint(ws).stdout == expected
+    assert _lint(ws).stdout == expected
