@@ -8,6 +8,10 @@ nested function's parameter or variable): every ``msg`` in the scope is that ins
 ``self.x`` holds one in the methods of a class whose methods all assign ``self.x`` from
 the same message constructor (``self.x = Twist()``, one target), when nothing else in the
 module stores an attribute ``x``, no ``setattr`` could, and the class body defines no ``x``.
+A parameter of a callback holds one when the module registers the function (``self.cb`` a
+plain method of the class registering it, or a plain function bound once in the module) only
+with known interfaces that agree: a subscription's message, a service's request and response,
+an action server's goal (``goal_handle.request``); the function must never rebind the name.
 """
 
 from __future__ import annotations
@@ -22,6 +26,7 @@ from pkgtool.model.ast_nodes import nodes_of, nodes_of_class, subtree
 from pkgtool.model.memo import per_object
 from pkgtool.model.package import Package
 from pkgtool.records import record
+from pkgtool.rules.node_api import ACTION_SERVER_CALLBACKS, ACTION_SERVERS, PARAMETERS, argument
 from pkgtool.rules.scopes import bound_names
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, qualified
 
@@ -265,7 +270,109 @@ def message_instances(tree: ast.Module, index: Index, known: Known) -> list[Inst
     def make(call: ast.Call) -> Message | None:
         return known(call.func)
     return _kept(tree, "messages", lambda: [*local_instances(tree, index, make),
-                                            *attribute_instances(tree, index, make)])
+                                            *attribute_instances(tree, index, make),
+                                            *callback_instances(tree, index, known)])
+
+
+Function = ast.FunctionDef | ast.AsyncFunctionDef
+_Parameter = tuple[int, int, str | None]
+"""A callback parameter: (id of the function, position among its parameters after any
+receiver, the attribute the message is read through: ``request`` of a goal handle)."""
+
+
+def _registrations(index: Index, known: Known
+                   ) -> Iterator[tuple[ast.expr, list[tuple[Message | None, str | None]]]]:
+    """(callback expression, for each leading parameter the message it receives and the
+    attribute it is reached through) of subscriptions, services and action servers."""
+    for call in index.calls:
+        method = call.func.attr if isinstance(call.func, ast.Attribute) else ""
+        if method == "create_subscription" and not any(k.arg == "raw" for k in call.keywords):
+            kind = argument(call, PARAMETERS[method], "msg_type")
+            callback = argument(call, PARAMETERS[method], "callback")
+            parts: list[tuple[ast.expr | None, str | None]] = [(kind, None)]
+        elif method == "create_service":
+            kind = argument(call, PARAMETERS[method], "srv_type")
+            callback = argument(call, PARAMETERS[method], "callback")
+            parts = [(_companion(kind, "Request"), None), (_companion(kind, "Response"), None)]
+        elif qualified(call.func, index.aliases) in ACTION_SERVERS:
+            kind = argument(call, ACTION_SERVER_CALLBACKS[0], "action_type")
+            callback = argument(call, ACTION_SERVER_CALLBACKS[0], "execute_callback")
+            parts = [(_companion(kind, "Goal"), "request")]
+        else:
+            continue
+        if callback is not None:
+            yield callback, [(known(e) if e is not None else None, via) for e, via in parts]
+
+
+def _companion(kind: ast.expr | None, name: str) -> ast.expr | None:
+    """``kind.<name>`` (``Trigger.Request``), or None without a ``kind``."""
+    return None if kind is None else ast.Attribute(value=kind, attr=name, ctx=ast.Load())
+
+
+def _plain(definitions: list[Function], bindings: int) -> Function | None:
+    """The one definition when it is a function without decorators and its name's only
+    binding (``bindings``: how often the name is bound where it is defined)."""
+    if len(definitions) == bindings == 1 and not definitions[0].decorator_list:
+        return definitions[0]
+    return None
+
+
+def _callback(expr: ast.expr, tree: ast.Module, index: Index) -> tuple[Function, int] | None:
+    """The function a callback expression certainly names, and how many leading parameters
+    are not the callback's arguments (1 for a method's receiver)."""
+    if isinstance(expr, ast.Name):
+        bindings = _kept(tree, "bindings", lambda: _all_bindings(nodes_of(tree)))[expr.id]
+        found = _plain([f for f in index.functions if f.name == expr.id], bindings)
+        outside = found is not None and not isinstance(index.parents.get(id(found)), ast.ClassDef)
+        return (found, 0) if outside and found is not None else None
+    cls, caller = index.enclosing_class(expr), index.enclosing_function(expr)
+    if not (isinstance(expr, ast.Attribute) and isinstance(expr.value, ast.Name) and cls
+            and caller in cls.body and _receiver(caller, subtree(caller)) == expr.value.id):
+        return None
+    found = _plain([s for s in cls.body if isinstance(s, FUNCTIONS) and s.name == expr.attr],
+                   _kept(tree, id(cls), lambda: _class_facts(cls)).defined[expr.attr])
+    return (found, 1) if found is not None else None
+
+
+def callback_instances(tree: ast.Module, index: Index, known: Known
+                       ) -> Iterator[Instance[Message]]:
+    """Callback parameters that certainly receive a known message (see the module's doc)."""
+    received: dict[_Parameter, dict[str | None, Message | None]] = {}
+    functions: dict[int, tuple[Function, list[str]]] = {}
+    for expr, parts in _registrations(index, known):
+        found = _callback(expr, tree, index)
+        if found is None:
+            continue
+        function, skip = found
+        arguments = function.args
+        names = [a.arg for a in [*arguments.posonlyargs, *arguments.args][skip:]]
+        functions[id(function)] = (function, names)
+        for position, (message, via) in enumerate(parts):
+            kept = received.setdefault((id(function), position, via), {})
+            kept[message.name if message is not None else None] = message
+    for (key, position, via), messages in received.items():
+        function, parameters = functions[key]
+        message = next(iter(messages.values())) if len(messages) == 1 else None
+        if message is None or position >= len(parameters):
+            continue
+        yield from _parameter_instance(tree, function, parameters[position], message, via,
+                                       index)
+
+
+def _parameter_instance(tree: ast.Module, function: Function, name: str, message: Message,
+                        via: str | None, index: Index) -> Iterator[Instance[Message]]:
+    """The instance a parameter holds (or holds at ``name.<via>``) when never rebound."""
+    facts = _kept(tree, id(function), lambda: _scope_facts(function))
+    if facts.counts[name] != 1:
+        return
+    uses = facts.uses.get(name, [])
+    if via is None:
+        yield _instance(message, uses, facts.refs.get(name, []), index)
+        return
+    refs: list[ast.expr] = [use for use in uses if use.attr == via]
+    deeper = [parent for ref in refs if isinstance(parent := index.parents.get(id(ref)),
+                                                   ast.Attribute) and parent.value is ref]
+    yield _instance(message, deeper, refs, index, skip=1)
 
 
 def known_messages(package: Package, index: Index) -> Known:

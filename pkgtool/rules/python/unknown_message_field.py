@@ -101,7 +101,12 @@ def unknown_message_field(package: Package) -> Iterator[Hit]:
     variable bound once in its function (or module) by `msg = Type()`, never otherwise
     (no parameter, no second assignment, no `global`), or as `self.x` in a class whose
     methods all assign `self.x = Type()` when nothing else in the module stores an
-    attribute `x` and no `setattr` could; fields of fields are followed while their message
+    attribute `x` and no `setattr` could, or as a parameter of a callback the module
+    registers with known types that agree: the message of `create_subscription` (not
+    `raw=True`), the request and response of `create_service`, the goal of an `ActionServer`
+    (`goal_handle.request`), when the callback is a plain method of the registering class
+    (`self.on_message`) or a plain function bound once in the module and never rebinds the
+    parameter; fields of fields are followed while their message
     class is certain (not after `msg.pose = ...`). Names starting with `_`, constants
     (`GoalStatus.STATUS_SUCCEEDED`), code inside `try` blocks that catch `AttributeError`,
     and names the module passes to `hasattr` are never reported.

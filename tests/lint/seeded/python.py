@@ -233,6 +233,16 @@ def message_constructor_positional(root: Path) -> None:
          "msg = String(f'Hello {self.count}')")
 
 
+@case("PYC019", LISTENER, "msg.dat")
+def received_message_field_misspelled(root: Path) -> None:
+    edit(root, LISTENER, "self.last_message = msg\n", "self.last_message = msg.dat\n")
+
+
+@case("PYC019", SRV, "response.sucess = True")
+def service_response_field_misspelled(root: Path) -> None:
+    edit(root, SRV, "response.success = True", "response.sucess = True")
+
+
 @case("PYC020", TALKER, "self.publisher.publish(f'Hello")
 def publish_a_string(root: Path) -> None:
     edit(root, TALKER, "self.publisher.publish(msg)",
