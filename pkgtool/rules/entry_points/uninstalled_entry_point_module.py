@@ -19,6 +19,20 @@ def _own_roots(package: Package, modules: dict[str, str]) -> set[str]:
     return roots | {package.name}
 
 
+def _meant(package: Package, module: str, modules: dict[str, str]) -> str | None:
+    """The installed module an entry outside this package's names stands for: ``talker``
+    for ``my_pkg.talker``, or ``my_pkgs.talker`` (a misspelt or copied package name that
+    package.xml does not declare) when ``my_pkg.talker`` is the one installed module so named
+    below a top-level package."""
+    near = [m for m in modules if m.endswith(f".{module}")]
+    if len(near) == 1:
+        return near[0]
+    root, _, rest = module.partition(".")
+    declared = {d.name for d in package.manifest.dependencies} if package.manifest else {root}
+    near = [m for m in modules if rest and m.partition(".")[2] == rest]
+    return near[0] if len(near) == 1 and root not in declared else None
+
+
 @rule("ENT002", "uninstalled-entry-point-module", Severity.ERROR,
       fix="Make setup.py install the module: list its package in `packages` (or use "
           "`find_packages()`), and give every package folder an `__init__.py`")
@@ -31,7 +45,9 @@ def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
     reports console scripts whose module is not among them, saying why: the file does not
     exist, a package list drops subpackages, an `__init__.py` is missing, a pattern excludes
     it. Modules outside this package's own top-level names are not judged, unless the name
-    is an installed module without its package prefix (`talker` for `my_pkg.talker`).
+    is an installed module without its package prefix (`talker` for `my_pkg.talker`), or
+    with another package prefix that package.xml does not declare (`my_pkgs.talker`, or a
+    prefix copied from another package, for the one installed `my_pkg.talker`).
 
     ## Why is this bad?
     The build succeeds, but running the command fails with `ModuleNotFoundError`. With
@@ -56,10 +72,10 @@ def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
         if entry.module in modules:
             continue
         if entry.module.split(".")[0] not in roots:
-            near = [m for m in modules if m.endswith(f".{entry.module}")]
-            if len(near) == 1:  # `talker:main` for the installed `my_pkg.talker`
+            meant = _meant(package, entry.module, modules)
+            if meant is not None:  # `talker:main` for the installed `my_pkg.talker`
                 yield Hit(entry.span, f"`{entry.module}` is not installed: the module is "
-                                      f"`{near[0]}`", f"Write `{near[0]}:{entry.attr or 'main'}`")
+                                      f"`{meant}`", f"Write `{meant}:{entry.attr or 'main'}`")
             continue
         reason, exists = why_not_installed(package, entry.module)
         fix = None if exists else "Write the module, or point the entry at an existing one"

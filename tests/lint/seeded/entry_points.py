@@ -93,3 +93,13 @@ def module_file_named_with_dash(root: Path) -> None:
 @case("ENT005", SETUP, "'talker = base_pkg.talker:main'")
 def console_scripts_group_capitalised(root: Path) -> None:
     edit(root, SETUP, "'console_scripts'", "'Console_Scripts'")
+
+
+@case("ENT002", SETUP, "base_pkgs.talker:main")
+def package_name_misspelled_in_entry(root: Path) -> None:
+    edit(root, SETUP, "base_pkg.talker:main", "base_pkgs.talker:main")
+
+
+@case("ENT002", SETUP, "my_robot.listener:main")
+def entry_copied_from_another_package(root: Path) -> None:
+    edit(root, SETUP, "base_pkg.listener:main", "my_robot.listener:main")
