@@ -252,3 +252,16 @@ def publish_a_string(root: Path) -> None:
 @case("PYC020", TALKER, "self.publisher.publish(msg.data)")
 def publish_the_data_field(root: Path) -> None:
     edit(root, TALKER, "self.publisher.publish(msg)", "self.publisher.publish(msg.data)")
+
+
+@case("PYC021", LISTENER, "Int32, topic")
+def subscription_type_changed_on_one_side(root: Path) -> None:
+    edit(root, LISTENER, "from std_msgs.msg import String", "from std_msgs.msg import Int32")
+    edit(root, LISTENER, "String, topic", "Int32, topic")
+
+
+@case("PYC022", LISTENER, "String, topic, self.on_message, 10)")
+def best_effort_publisher_reliable_subscription(root: Path) -> None:
+    edit(root, TALKER, "from rclpy.node import Node\n",
+         "from rclpy.node import Node\nfrom rclpy.qos import qos_profile_sensor_data\n")
+    edit(root, TALKER, "(String, topic, 10)", "(String, topic, qos_profile_sensor_data)")

@@ -1,0 +1,216 @@
+"""What PYC021 and PYC022 share: the publishers and subscriptions of a package's installed
+modules whose topic name is certain, with their message type and QoS when known.
+
+A topic name is certain when it is a string literal, a name bound once in its function (or
+module) to one, or a parameter read (``self.get_parameter('topic').value``) the class
+declares once with a literal string default that no parameter file or launch file of the
+package may change: no parameter file block that may apply to the class sets it to another
+value, no launch file quotes it. Topics a launch file quotes (it may remap them), private
+names (``~/x``) and names with substitutions are left out.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+from collections.abc import Iterator
+
+from pkgtool.model.memo import per_package
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.records import record
+from pkgtool.rules.node_api import PARAMETERS, argument, node_api_calls, unpacks
+from pkgtool.rules.node_parameters import analysed_classes, file_entries, flat_parameters
+from pkgtool.rules.scopes import bound_names
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, qualified
+
+_QOS = "rclpy.qos"
+_PRESETS = {"qos_profile_sensor_data": ("BEST_EFFORT", "VOLATILE"),
+            "qos_profile_default": ("RELIABLE", "VOLATILE"),
+            "QoSPresetProfiles.SENSOR_DATA.value": ("BEST_EFFORT", "VOLATILE"),
+            "QoSPresetProfiles.DEFAULT.value": ("RELIABLE", "VOLATILE")}
+"""rclpy's predefined profiles whose reliability and durability are fixed (Jazzy)."""
+_POLICIES = {"reliability": frozenset({"ReliabilityPolicy", "QoSReliabilityPolicy"}),
+             "durability": frozenset({"DurabilityPolicy", "QoSDurabilityPolicy"})}
+_VALUES = frozenset({"RELIABLE", "BEST_EFFORT", "VOLATILE", "TRANSIENT_LOCAL"})
+_READS = frozenset({"value", "string_value"})
+
+
+@record
+class Endpoint:
+    """A publisher or subscription: ``kind`` (``publisher``/``subscription``), the topic,
+    its message type (``pkg/Name``, None when unknown), its (reliability, durability)
+    (None when unknown), and where its type and QoS arguments are."""
+
+    kind: str
+    topic: str
+    type: str | None
+    qos: tuple[str, str] | None
+    type_span: Span
+    qos_span: Span
+
+
+@per_package
+def endpoints(package: Package) -> tuple[Endpoint, ...]:
+    """The package's publishers and subscriptions with a certain topic name."""
+    changed = _overrides(package)
+    found = []
+    for module, call, method, index in node_api_calls(
+            package, ("create_publisher", "create_subscription")):
+        parameters = PARAMETERS[method]
+        topic_expr, kind, qos = (argument(call, parameters, name)
+                                 for name in ("topic", "msg_type", "qos_profile"))
+        topic = _text(topic_expr, index, changed, module.path) if topic_expr else None
+        if topic is None or topic.startswith("~") or "{" in topic or kind is None or \
+                unpacks(call) or topic.lstrip("/") in changed.anywhere:
+            continue
+        found.append(Endpoint(
+            "publisher" if method == "create_publisher" else "subscription", topic,
+            _message(kind, index), _profile(qos, index) if qos is not None else None,
+            Span(module.path, kind.lineno, kind.col_offset + 1),
+            Span(module.path, (qos or kind).lineno, (qos or kind).col_offset + 1)))
+    return tuple(found)
+
+
+def _message(kind: ast.expr, index: Index) -> str | None:
+    """``pkg/Name`` of a message class imported by name, or None."""
+    dotted = qualified(kind, index.aliases)
+    parts = dotted.split(".") if dotted else []
+    return f"{parts[0]}/{parts[-1]}" if len(parts) >= 3 and parts[1] == "msg" else None
+
+
+@record
+class _Overrides:
+    """Values the package's files may give parameters: ``by_class`` for the Node class
+    (module path, class name) a parameter file block certainly applies to, ``anywhere`` for
+    the others (``*``: any value, a launch file quotes the word)."""
+
+    by_class: dict[tuple[str, str], dict[str, set[str]]]
+    anywhere: dict[str, set[str]]
+
+
+def _overrides(package: Package) -> _Overrides:
+    by_class: dict[tuple[str, str], dict[str, set[str]]] = {}
+    anywhere: dict[str, set[str]] = {}
+    seen = set()
+    for entry in file_entries(package):
+        seen.add(entry.path)
+        classes = analysed_classes(package, entry.matched) or [None]
+        for name, _, value in flat_parameters(entry.parameters):
+            for cls in classes:
+                where = by_class.setdefault((cls.path, cls.name), {}) if cls else anywhere
+                where.setdefault(name, set()).add(str(getattr(value, "value", "*")))
+    for path, text in package.texts.items():
+        if path.endswith((".yaml", ".yml")) and path not in seen:
+            for key, value in re.findall(r"^\s*([\w.]+)\s*:\s*(.*?)\s*$", text, re.M):
+                anywhere.setdefault(key, set()).add(value.strip("'\""))
+        elif "launch" in path.rsplit("/", 1)[-1]:
+            for word in re.findall(r"""['"]/?([\w.]+)['"]""", text):
+                anywhere.setdefault(word, set()).add("*")
+    return _Overrides(by_class, anywhere)
+
+
+def _scope_value(name: str, node: ast.AST, index: Index) -> ast.expr | None:
+    """The value of the one assignment binding ``name`` in the function around ``node`` (or,
+    when the function does not bind it, in the module)."""
+    function = index.enclosing_function(node)
+    scopes: list[ast.AST] = [function] if function is not None else []
+    root: ast.AST = node
+    while id(root) in index.parents:
+        root = index.parents[id(root)]
+    for scope in [*scopes, root]:
+        count = bound_names(scope if isinstance(scope, FUNCTIONS) else
+                            getattr(scope, "body", []))[name]
+        if count == 0 and scope is not root:
+            continue
+        if count != 1:
+            return None
+        body = scope.body if isinstance(scope, (*FUNCTIONS, ast.Module)) else []
+        values = [s.value for s in ast.walk(ast.Module(body=body, type_ignores=[]))
+                  if isinstance(s, ast.Assign) and len(s.targets) == 1
+                  and isinstance(s.targets[0], ast.Name) and s.targets[0].id == name]
+        return values[0] if len(values) == 1 else None
+    return None
+
+
+def _text(expr: ast.expr, index: Index, changed: _Overrides, path: str) -> str | None:
+    """The string ``expr`` certainly holds (see the module's doc), or None."""
+    if isinstance(expr, ast.Constant):
+        return expr.value if isinstance(expr.value, str) else None
+    if isinstance(expr, ast.Name):
+        value = _scope_value(expr.id, expr, index)
+        return _text(value, index, changed, path) if value is not None \
+            and not isinstance(value, ast.Name) else None
+    name = _parameter_read(expr)
+    if name is None:
+        return None
+    cls = index.enclosing_class(expr)
+    defaults = [c.args[1] for c in index.calls if index.enclosing_class(c) is cls
+                and isinstance(c.func, ast.Attribute) and c.func.attr == "declare_parameter"
+                and len(c.args) > 1 and isinstance(c.args[0], ast.Constant)
+                and c.args[0].value == name]
+    default = defaults[0] if len(defaults) == 1 and isinstance(defaults[0], ast.Constant) \
+        and isinstance(defaults[0].value, str) else None
+    if cls is None or default is None:
+        return None
+    given = changed.by_class.get((path, cls.name), {}).get(name, set())
+    if (given | changed.anywhere.get(name, set())) - {default.value}:
+        return None
+    return str(default.value)
+
+
+def _parameter_read(expr: ast.expr) -> str | None:
+    """``x`` of ``self.get_parameter('x').value`` (or ``.get_parameter_value().string_value``)."""
+    if not (isinstance(expr, ast.Attribute) and expr.attr in _READS):
+        return None
+    call = expr.value
+    if isinstance(call, ast.Call) and isinstance(call.func, ast.Attribute) \
+            and call.func.attr == "get_parameter_value" and expr.attr == "string_value":
+        call = call.func.value
+    if isinstance(call, ast.Call) and isinstance(call.func, ast.Attribute) \
+            and call.func.attr == "get_parameter" and isinstance(call.func.value, ast.Name) \
+            and call.func.value.id == "self" and len(call.args) == 1 \
+            and isinstance(call.args[0], ast.Constant) and isinstance(call.args[0].value, str):
+        return call.args[0].value
+    return None
+
+
+def _profile(expr: ast.expr, index: Index) -> tuple[str, str] | None:
+    """(reliability, durability) of a QoS argument: a history depth, one of rclpy's fixed
+    profiles, or ``QoSProfile(...)`` with literal policies (directly, or through a name
+    bound once to one and never changed)."""
+    if isinstance(expr, ast.Constant) and type(expr.value) is int:
+        return ("RELIABLE", "VOLATILE")
+    if isinstance(expr, ast.Name) and (value := _scope_value(expr.id, expr, index)) is not None:
+        function = index.enclosing_function(expr)
+        stores = [n for n in ast.walk(function) if isinstance(n, ast.Attribute)
+                  and isinstance(n.value, ast.Name) and n.value.id == expr.id
+                  and not isinstance(n.ctx, ast.Load)] if function is not None else [expr]
+        return None if stores or isinstance(value, ast.Name) else _profile(value, index)
+    dotted = qualified(expr.func if isinstance(expr, ast.Call) else expr, index.aliases) or ""
+    module, _, name = dotted.partition(".qos.")
+    if module != "rclpy" or not name:
+        return None
+    if not isinstance(expr, ast.Call):
+        return _PRESETS.get(name)
+    if name != "QoSProfile" or expr.args or any(k.arg is None for k in expr.keywords):
+        return None
+    policies = {"reliability": "RELIABLE", "durability": "VOLATILE"}
+    for keyword in expr.keywords:
+        if keyword.arg in _POLICIES:
+            value = qualified(keyword.value, index.aliases) or ""
+            owner, _, policy = value.rpartition(".")
+            if not owner.startswith(f"{_QOS}.") or owner.rsplit(".", 1)[1] not in \
+                    _POLICIES[keyword.arg] or policy not in _VALUES:
+                return None
+            policies[keyword.arg] = policy
+    return policies["reliability"], policies["durability"]
+
+
+def by_topic(package: Package) -> Iterator[tuple[list[Endpoint], list[Endpoint]]]:
+    """(publishers, subscriptions) of each topic that has both."""
+    topics: dict[str, tuple[list[Endpoint], list[Endpoint]]] = {}
+    for endpoint in endpoints(package):
+        pair = topics.setdefault(endpoint.topic, ([], []))
+        pair[endpoint.kind == "subscription"].append(endpoint)
+    yield from (pair for pair in topics.values() if all(pair))
