@@ -48,6 +48,8 @@ class NodeRef:
     never reads (``rviz = Node(...)`` left out of the LaunchDescription). The call itself
     still runs when the file does. ``remappings_not_pairs`` is where a Python ``remappings=``
     certainly is no list of pairs (:mod:`pkgtool.model.launch_remaps`), None otherwise.
+    ``inline_parameters`` are the names a Python ``parameters=[{...}]`` dict display sets
+    with literal keys (nested dicts give dotted names), each where its key is written.
     """
 
     package: str | None
@@ -67,6 +69,7 @@ class NodeRef:
     parameters_not_list: Span | None = None
     unused: bool = False
     remappings_not_pairs: Span | None = None
+    inline_parameters: tuple[tuple[str, Span], ...] = ()
 
 
 @record

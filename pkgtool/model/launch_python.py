@@ -9,6 +9,7 @@ unknown, and unknown values are never reported.
 from __future__ import annotations
 
 import ast
+from collections.abc import Iterator
 
 from pkgtool.model.launch import FileRef, NodeRef, PackageRef
 from pkgtool.model.launch_remaps import not_pairs
@@ -253,7 +254,8 @@ class _Reader(ast.NodeVisitor):
                 other_parameters=other or "**" in arguments,
                 parameters_not_list=self._span(parameters) if self._not_a_list(parameters)
                 else None, unused=bool(self.dead),
-                remappings_not_pairs=remaps and self._span(remaps)))
+                remappings_not_pairs=remaps and self._span(remaps),
+                inline_parameters=tuple(self._inline_parameters(parameters))))
         elif name == "ExecuteProcess":
             self._ros2_run(node)
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
@@ -280,6 +282,22 @@ class _Reader(ast.NodeVisitor):
                 else:
                     other = True
         return tuple(found), other
+
+    def _inline_parameters(self, node: ast.expr | None, prefix: str = ""
+                           ) -> Iterator[tuple[str, Span]]:
+        """The literal names the dict displays among ``parameters=[...]`` (or ``node``, a
+        dict, when ``prefix`` is given) set, with where each is written."""
+        items = [node] if prefix else node.elts if isinstance(node, (ast.List, ast.Tuple)) \
+            else []
+        for item in items:
+            found = self._resolved(item)
+            for key, value in zip(*((found.keys, found.values) if isinstance(found, ast.Dict)
+                                    else ((), ()))):
+                if isinstance(key, ast.Constant) and isinstance(key.value, str):
+                    if isinstance(value, ast.Dict):
+                        yield from self._inline_parameters(value, f"{prefix}{key.value}.")
+                    else:
+                        yield f"{prefix}{key.value}", self._span(key)
 
     def _not_a_list(self, node: ast.expr | None) -> bool:
         """True when ``node`` is certainly no list: a tuple, dict or set display, a string or

@@ -14,7 +14,7 @@ from pkgtool.rules.registry import rule
 @rule("DAT010", "unknown-parameter-in-file", Severity.WARNING,
       fix="Use the name the node declares, or declare the parameter in the node")
 def unknown_parameter_in_file(package: Package) -> Iterator[Hit]:
-    """A parameter file sets a parameter that the node's code never declares.
+    """A parameter file or launch file sets a parameter that the node's code never declares.
 
     ## What it does
     For the blocks of parameter files checked by DAT009, when every node a block applies to
@@ -25,7 +25,9 @@ def unknown_parameter_in_file(package: Package) -> Iterator[Hit]:
     Skipped when the module uses `allow_undeclared_parameters` or
     `automatically_declare_parameters_from_overrides`, declares a name that is not a literal,
     when the class derives from another class besides `Node`, or hands `self` to other code.
-    `use_sim_time` and `qos_overrides.*` are never reported.
+    `use_sim_time` and `qos_overrides.*` are never reported. The parameters a Python launch
+    file gives a node of this package as a dict (`parameters=[{'period': 1.0}]`, literal
+    keys) are checked the same way against the class its executable runs.
 
     ## Why is this bad?
     rclpy ignores values of undeclared parameters: a misspelled name leaves the node on its
@@ -51,7 +53,20 @@ def unknown_parameter_in_file(package: Package) -> Iterator[Hit]:
             continue
         declared = [d.name for c in classes for d in c.declared]
         for name, key, _ in flat_parameters(entry.parameters):
-            if name not in declared and name not in BUILT_IN and \
-                    not name.startswith("qos_overrides."):
+            if _unknown(name, declared):
                 yield Hit(span_of(entry.path, key), f"`{entry.key}` declares no parameter "
                           f"`{name}`{near(name, declared)}: the value is ignored")
+    for launch in package.launch_files:
+        for node in launch.nodes:
+            classes = analysed_classes(package, (node,)) if node.inline_parameters else None
+            declared = [d.name for c in classes or () for d in c.declared]
+            for name, span in node.inline_parameters if classes else ():
+                if _unknown(name, declared):
+                    yield Hit(span, f"The node `{node.executable}` declares no parameter "
+                              f"`{name}`{near(name, declared)}: the value is ignored")
+
+
+def _unknown(name: str, declared: list[str]) -> bool:
+    """True when a parameter set for a node is none the node declares (nor built in)."""
+    return name not in declared and name not in BUILT_IN and not name.startswith(
+        "qos_overrides.")

@@ -128,3 +128,9 @@ def misspelled_parameter_in_file(root: Path) -> None:
 @case("DAT011", PARAMETERS, "period: 1")
 def integer_for_a_double_parameter(root: Path) -> None:
     edit(root, PARAMETERS, "period: 0.5", "period: 1")
+
+
+@case("DAT010", "launch/base_pkg.launch.py", "'perod': 1.0")
+def misspelled_parameter_in_launch_dict(root: Path) -> None:
+    edit(root, "launch/base_pkg.launch.py", "name='talker',\n            parameters=[params]",
+         "name='talker',\n            parameters=[params, {'perod': 1.0}]")
