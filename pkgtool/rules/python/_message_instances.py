@@ -185,7 +185,7 @@ def _scope(statement: ast.AST, tree: ast.Module, index: Index) -> Scope | None:
     return parent if isinstance(parent, FUNCTIONS) else tree
 
 
-def _receiver(method: ast.AST, nodes: list[ast.AST]) -> str | None:
+def method_receiver(method: ast.AST, nodes: list[ast.AST]) -> str | None:
     """The first parameter of a plain method (no decorator), when the method (its ``nodes``)
     never rebinds it."""
     if not isinstance(method, FUNCTIONS) or method.decorator_list:
@@ -214,7 +214,7 @@ def _class_facts(cls: ast.ClassDef) -> _ClassFacts:
     uses: dict[str, list[ast.Attribute]] = {}
     for method in cls.body:
         nodes = subtree(method) if isinstance(method, FUNCTIONS) else []
-        receiver = _receiver(method, nodes)
+        receiver = method_receiver(method, nodes)
         if receiver is None:
             continue
         for node in _on(nodes, lambda e: isinstance(e, ast.Name) and e.id == receiver):
@@ -327,7 +327,7 @@ def _callback(expr: ast.expr, tree: ast.Module, index: Index) -> tuple[Function,
         return (found, 0) if outside and found is not None else None
     cls, caller = index.enclosing_class(expr), index.enclosing_function(expr)
     if not (isinstance(expr, ast.Attribute) and isinstance(expr.value, ast.Name) and cls
-            and caller in cls.body and _receiver(caller, subtree(caller)) == expr.value.id):
+            and caller in cls.body and method_receiver(caller, subtree(caller)) == expr.value.id):
         return None
     found = _plain([s for s in cls.body if isinstance(s, FUNCTIONS) and s.name == expr.attr],
                    _kept(tree, id(cls), lambda: _class_facts(cls)).defined[expr.attr])

@@ -12,13 +12,11 @@ from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import dead_lines, depends_on_ros_distro
+from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.python._message_instances import (Instance, Known, known_messages,
                                                      message_instances)
 from pkgtool.rules.syntax_trees import Index, installed_trees
 from pkgtool.rules.registry import rule
-
-_GUARDS = frozenset({"AttributeError", "Exception", "BaseException"})
-_PROBES = frozenset({"hasattr", "getattr"})
 
 
 def _problem(message: Message, name: str) -> str:
@@ -39,29 +37,6 @@ def _silent_lines(tree: ast.Module) -> list[tuple[int, int]]:
                                  and depends_on_ros_distro(node.test))]
 
 
-def _probed(index: Index) -> frozenset[str]:
-    """Attribute names the module asks ``hasattr`` or ``getattr`` about."""
-    return frozenset(call.args[1].value for call in index.calls
-                     if isinstance(call.func, ast.Name) and call.func.id in _PROBES
-                     and len(call.args) > 1 and isinstance(call.args[1], ast.Constant)
-                     and isinstance(call.args[1].value, str))
-
-
-def _guarded(node: ast.Attribute, index: Index, probed: frozenset[str]) -> bool:
-    """True for a name the module probes for, or inside a ``try`` that catches
-    AttributeError (or anything): code that expects the attribute may be missing."""
-    if node.attr in probed:
-        return True
-    child, parent = node, index.parents.get(id(node))
-    while parent is not None:
-        if isinstance(parent, ast.Try) and child in parent.body and any(
-                h.type is None or {n.id for n in ast.walk(h.type) if isinstance(n, ast.Name)}
-                & _GUARDS for h in parent.handlers):
-            return True
-        child, parent = parent, index.parents.get(id(parent))
-    return False
-
-
 def _wrong_attributes(instance: Instance, index: Index, probed: frozenset[str]
                       ) -> Iterator[tuple[ast.Attribute, Message]]:
     """Attributes taken on the instance, or on its message-typed fields, that the message
@@ -74,7 +49,7 @@ def _wrong_attributes(instance: Instance, index: Index, probed: frozenset[str]
             if node.attr.startswith("_"):
                 break
             if not message.has(node.attr):
-                if not _guarded(node, index, probed):
+                if not guarded(node, index, probed):
                     yield node, message
                 break
             path = (*path, node.attr)
@@ -137,7 +112,7 @@ def unknown_message_field(package: Package) -> Iterator[Hit]:
     """
     for module, tree, index in installed_trees(package):
         known = known_messages(package, index)
-        probed, silent = _probed(index), _silent_lines(tree)
+        probed, silent = probed_names(index), _silent_lines(tree)
         for argument, call, message in _positional(index, known):
             if not _within(argument, silent):
                 yield Hit(Span(module.path, argument.lineno, argument.col_offset + 1),

@@ -265,3 +265,13 @@ def best_effort_publisher_reliable_subscription(root: Path) -> None:
     edit(root, TALKER, "from rclpy.node import Node\n",
          "from rclpy.node import Node\nfrom rclpy.qos import qos_profile_sensor_data\n")
     edit(root, TALKER, "(String, topic, 10)", "(String, topic, qos_profile_sensor_data)")
+
+
+@case("PYC023", LISTENER, "self.on_mesage")
+def subscription_callback_misspelled(root: Path) -> None:
+    edit(root, LISTENER, "self.on_message, 10", "self.on_mesage, 10")
+
+
+@case("PYC023", TALKER, "self.publisher_.publish(msg)")
+def publisher_attribute_renamed_in_one_place(root: Path) -> None:
+    edit(root, TALKER, "self.publisher.publish(msg)", "self.publisher_.publish(msg)")

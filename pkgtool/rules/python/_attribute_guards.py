@@ -1,0 +1,34 @@
+"""Attribute reads that code expects may fail (PYC019, PYC023): names the module probes
+with ``hasattr``/``getattr``, and reads inside a ``try`` that catches AttributeError."""
+
+from __future__ import annotations
+
+import ast
+
+from pkgtool.rules.syntax_trees import Index
+
+_GUARDS = frozenset({"AttributeError", "Exception", "BaseException"})
+_PROBES = frozenset({"hasattr", "getattr"})
+
+
+def probed_names(index: Index) -> frozenset[str]:
+    """Attribute names the module asks ``hasattr`` or ``getattr`` about."""
+    return frozenset(call.args[1].value for call in index.calls
+                     if isinstance(call.func, ast.Name) and call.func.id in _PROBES
+                     and len(call.args) > 1 and isinstance(call.args[1], ast.Constant)
+                     and isinstance(call.args[1].value, str))
+
+
+def guarded(node: ast.Attribute, index: Index, probed: frozenset[str]) -> bool:
+    """True for a name the module probes for, or inside a ``try`` that catches
+    AttributeError (or anything): code that expects the attribute may be missing."""
+    if node.attr in probed:
+        return True
+    child, parent = node, index.parents.get(id(node))
+    while parent is not None:
+        if isinstance(parent, ast.Try) and child in parent.body and any(
+                h.type is None or {n.id for n in ast.walk(h.type) if isinstance(n, ast.Name)}
+                & _GUARDS for h in parent.handlers):
+            return True
+        child, parent = parent, index.parents.get(id(parent))
+    return False

@@ -1,0 +1,124 @@
+"""PYC023: a Node subclass reads ``self.x`` that nothing ever defines."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+from difflib import get_close_matches
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
+from pkgtool.model.ast_nodes import nodes_of_class, subtree
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.python._attribute_guards import guarded, probed_names
+from pkgtool.rules.python._message_instances import method_receiver
+from pkgtool.rules.registry import rule
+from pkgtool.rules.scopes import bound_names
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees, qualified
+
+_DYNAMIC = frozenset({"setattr", "delattr", "vars", "__dict__", "__getattr__",
+                      "__getattribute__", "__setattr__", "__slots__"})
+"""Names whose use in a module means any attribute may exist."""
+
+
+def _dynamic(tree: ast.Module) -> bool:
+    """True when the module may create attributes in ways not written as ``x.name = ...``."""
+    return any(isinstance(n, ast.Name) and n.id in _DYNAMIC or
+               isinstance(n, ast.Attribute) and n.attr in _DYNAMIC or
+               isinstance(n, FUNCTIONS) and n.name in _DYNAMIC
+               for n in nodes_of_class(tree, ast.Name, ast.Attribute, ast.FunctionDef))
+
+
+def _package_facts(package: Package) -> tuple[set[str], set[str]]:
+    """The attribute names any installed module stores or deletes, and the names any class
+    of the package derives from."""
+    stored: set[str] = set()
+    bases: set[str] = set()
+    for _, tree, index in installed_trees(package):
+        stored.update(n.attr for n in nodes_of_class(tree, ast.Attribute)
+                      if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load))
+        bases.update(b.id if isinstance(b, ast.Name) else b.attr for c in index.classes
+                     for b in c.bases if isinstance(b, (ast.Name, ast.Attribute)))
+    return stored, bases
+
+
+def _node_classes(index: Index, bases: set[str]) -> Iterator[ast.ClassDef]:
+    """Plain classes deriving from rclpy's Node alone that no class of the package extends."""
+    for cls in index.classes:
+        if len(cls.bases) == 1 and not cls.keywords and not cls.decorator_list and \
+                qualified(cls.bases[0], index.aliases) == "rclpy.node.Node" and \
+                cls.name not in bases:
+            yield cls
+
+
+@rule("PYC023", "undefined-node-attribute", Severity.ERROR,
+      fix="Use the attribute the class assigns (check the spelling), or assign it in "
+          "`__init__`")
+def undefined_node_attribute(package: Package) -> Iterator[Hit]:
+    """A `Node` subclass reads an attribute of `self` that nothing ever defines.
+
+    ## What it does
+    In installed modules, looks at the classes deriving from `rclpy.node.Node` alone (no
+    other base, no decorator, no metaclass, extended by no class of the package) and reports
+    `self.x` read in their plain methods when `x` is not a method or class attribute of the
+    class, not an attribute of rclpy's `Node` (any of Humble to Rolling), and no installed
+    module of the package ever assigns or deletes an attribute named `x` on anything. Modules
+    using `setattr`, `delattr`, `vars`, `__dict__`, `__getattr__`, `__setattr__` or
+    `__slots__`, names they pass to `hasattr`/`getattr`, and reads inside a `try` that
+    catches `AttributeError` are left alone. Typical causes: a misspelt callback
+    (`self.timer_calback`), a publisher stored as `self.publisher_` and used as
+    `self.publisher`, a method renamed but not its uses.
+
+    ## Why is this bad?
+    The read raises `AttributeError` when it runs: at start-up for a callback passed to
+    `create_timer` or `create_subscription`, or inside a callback, where the node dies on
+    its first message or tick.
+
+    ## Example
+    ```python
+    self.publisher_ = self.create_publisher(String, 'chatter', 10)
+    self.timer = self.create_timer(0.5, self.timer_calback)
+
+    def timer_callback(self):
+        self.publisher.publish(String(data='hi'))
+    ```
+
+    ## Use instead
+    ```python
+    self.publisher_ = self.create_publisher(String, 'chatter', 10)
+    self.timer = self.create_timer(0.5, self.timer_callback)
+
+    def timer_callback(self):
+        self.publisher_.publish(String(data='hi'))
+    ```
+    """
+    facts: tuple[set[str], set[str]] | None = None
+    for module, tree, index in installed_trees(package):
+        if not any(i.top_level == "rclpy" for i in module.imports) or _dynamic(tree):
+            continue
+        facts = facts or _package_facts(package)
+        stored, bases = facts
+        probed = probed_names(index)
+        for cls in _node_classes(index, bases):
+            known = set(bound_names(cls.body)) | stored | NODE_ATTRIBUTES
+            reads: dict[str, list[ast.Attribute]] = {}
+            for method in cls.body:
+                nodes = subtree(method)
+                receiver = method_receiver(method, nodes)
+                for node in nodes if receiver else ():
+                    if isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Load) and \
+                            isinstance(node.value, ast.Name) and node.value.id == receiver and \
+                            not node.attr.startswith("__") and node.attr not in known and \
+                            not guarded(node, index, probed):
+                        reads.setdefault(node.attr, []).append(node)
+            for attr, nodes in reads.items():
+                spans = [Span(module.path, n.end_lineno or n.lineno,
+                              (n.end_col_offset or 0) - len(attr) + 1) for n in nodes]
+                close = get_close_matches(attr, sorted(known - NODE_ATTRIBUTES
+                                                       | {a for a in NODE_ATTRIBUTES
+                                                          if not a.startswith("_")}), n=1)
+                hint = f" (did you mean `{close[0]}`?)" if close else ""
+                yield Hit(spans[0], f"`{cls.name}` has no attribute `{attr}`{hint}: nothing "
+                          f"assigns `self.{attr}` and rclpy's Node has none, so reading it "
+                          "raises AttributeError", related=tuple(spans[1:]))
