@@ -93,6 +93,7 @@ RULES = {
     "PYC021": ("topic-type-mismatch", "error", True, "python.topic_type_mismatch"),
     "PYC022": ("incompatible-qos", "error", True, "python.incompatible_qos"),
     "PYC023": ("undefined-node-attribute", "error", True, "python.undefined_node_attribute"),
+    "PYC024": ("callback-signature-mismatch", "error", True, "python.callback_signature"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

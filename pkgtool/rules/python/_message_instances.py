@@ -317,7 +317,8 @@ def _plain(definitions: list[Function], bindings: int) -> Function | None:
     return None
 
 
-def _callback(expr: ast.expr, tree: ast.Module, index: Index) -> tuple[Function, int] | None:
+def callback_function(expr: ast.expr, tree: ast.Module, index: Index
+                      ) -> tuple[Function, int] | None:
     """The function a callback expression certainly names, and how many leading parameters
     are not the callback's arguments (1 for a method's receiver)."""
     if isinstance(expr, ast.Name):
@@ -340,7 +341,7 @@ def callback_instances(tree: ast.Module, index: Index, known: Known
     received: dict[_Parameter, dict[str | None, Message | None]] = {}
     functions: dict[int, tuple[Function, list[str]]] = {}
     for expr, parts in _registrations(index, known):
-        found = _callback(expr, tree, index)
+        found = callback_function(expr, tree, index)
         if found is None:
             continue
         function, skip = found

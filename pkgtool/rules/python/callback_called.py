@@ -8,31 +8,10 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_api import (ACTION_SERVER_CALLBACKS, ACTION_SERVERS, CALLBACKS,
-                                    argument, node_api_calls)
+from pkgtool.rules.python._callbacks import callback_arguments
 from pkgtool.rules.scopes import bound_names, returns_none
-from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees, qualified
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index
 from pkgtool.rules.registry import rule
-
-
-def _callback_arguments(package: Package
-                        ) -> Iterator[tuple[str, ast.expr, str, Index, ast.Module]]:
-    """Callback arguments of rclpy calls: path, argument, the API called, the module's index and
-    tree."""
-    trees = {module.path: tree for module, tree, _ in installed_trees(package)}
-    for module, call, method, index in node_api_calls(package, CALLBACKS):
-        parameters, callbacks = CALLBACKS[method]
-        for name in callbacks:
-            value = argument(call, parameters, name)
-            if value is not None:
-                yield module.path, value, f"{method}()", index, trees[module.path]
-    for module, tree, index in installed_trees(package):
-        for call in index.calls:
-            if qualified(call.func, index.aliases) in ACTION_SERVERS:
-                for name in ACTION_SERVER_CALLBACKS[1]:
-                    value = argument(call, ACTION_SERVER_CALLBACKS[0], name)
-                    if value is not None:
-                        yield module.path, value, "ActionServer()", index, tree
 
 
 def _functions_around(node: ast.AST, index: Index) -> list[ast.FunctionDef | ast.AsyncFunctionDef]:
@@ -113,7 +92,7 @@ def callback_called(package: Package) -> Iterator[Hit]:
     self.timer = self.create_timer(0.5, self.publish)
     ```
     """
-    for path, value, api, index, tree in _callback_arguments(package):
+    for path, value, api, _, index, tree in callback_arguments(package):
         if not isinstance(value, ast.Call):
             continue
         target = _method(value, index) or _function(value, index, tree)

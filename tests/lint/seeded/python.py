@@ -275,3 +275,17 @@ def subscription_callback_misspelled(root: Path) -> None:
 @case("PYC023", TALKER, "self.publisher_.publish(msg)")
 def publisher_attribute_renamed_in_one_place(root: Path) -> None:
     edit(root, TALKER, "self.publisher.publish(msg)", "self.publisher_.publish(msg)")
+
+
+@case("PYC024", LISTENER, "String, topic, self.on_message, 10)")
+def subscription_callback_without_message_parameter(root: Path) -> None:
+    edit(root, LISTENER, "def on_message(self, msg):", "def on_message(self):")
+    edit(root, LISTENER, "self.last_message = msg\n", "self.last_message = None\n")
+    edit(root, LISTENER, "Received message {self.count}: {msg}", "Received message {self.count}")
+
+
+@case("PYC024", SRV, "self.create_service(Trigger, name, self.on_request)")
+def service_callback_without_response_parameter(root: Path) -> None:
+    edit(root, SRV, "def on_request(self, request, response):", "def on_request(self, request):")
+    edit(root, SRV, "        self.calls += 1\n",
+         "        response = Trigger.Response()\n        self.calls += 1\n")

@@ -1,0 +1,31 @@
+"""The callbacks given to rclpy's API (PYC013, PYC024)."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.model.package import Package
+from pkgtool.rules.node_api import (ACTION_SERVER_CALLBACKS, ACTION_SERVERS, CALLBACKS,
+                                    argument, node_api_calls)
+from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
+
+
+def callback_arguments(package: Package
+                       ) -> Iterator[tuple[str, ast.expr, str, str, Index, ast.Module]]:
+    """Callback arguments of rclpy calls: path, argument, the API called, the parameter it is
+    given for, the module's index and tree."""
+    trees = {module.path: tree for module, tree, _ in installed_trees(package)}
+    for module, call, method, index in node_api_calls(package, CALLBACKS):
+        parameters, callbacks = CALLBACKS[method]
+        for name in callbacks:
+            value = argument(call, parameters, name)
+            if value is not None:
+                yield module.path, value, f"{method}()", name, index, trees[module.path]
+    for module, tree, index in installed_trees(package):
+        for call in index.calls:
+            if qualified(call.func, index.aliases) in ACTION_SERVERS:
+                for name in ACTION_SERVER_CALLBACKS[1]:
+                    value = argument(call, ACTION_SERVER_CALLBACKS[0], name)
+                    if value is not None:
+                        yield module.path, value, "ActionServer()", name, index, tree
