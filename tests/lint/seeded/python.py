@@ -289,3 +289,19 @@ def service_callback_without_response_parameter(root: Path) -> None:
     edit(root, SRV, "def on_request(self, request, response):", "def on_request(self, request):")
     edit(root, SRV, "        self.calls += 1\n",
          "        response = Trigger.Response()\n        self.calls += 1\n")
+
+
+@case("PYC025", TALKER, "msg.data = 42")
+def number_for_a_string_field(root: Path) -> None:
+    edit(root, TALKER, "msg.data = f'Hello {self.count}'", "msg.data = 42")
+
+
+@case("PYC025", TALKER, "cmd.linear.x = 1")
+def int_for_a_float_field(root: Path) -> None:
+    edit(root, TALKER, "from std_msgs.msg import String\n",
+         "from geometry_msgs.msg import Twist\nfrom std_msgs.msg import String\n")
+    edit(root, TALKER, "        self.publisher.publish(msg)\n",
+         "        self.publisher.publish(msg)\n        cmd = Twist()\n"
+         "        cmd.linear.x = 1\n        self.get_logger().info(str(cmd))\n")
+    edit(root, "package.xml", "  <depend>rclpy</depend>\n",
+         "  <depend>geometry_msgs</depend>\n  <depend>rclpy</depend>\n")

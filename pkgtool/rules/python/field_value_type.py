@@ -1,0 +1,101 @@
+"""PYC025: a literal of the wrong type given to a message field (``twist.linear.x = 1``)."""
+
+from __future__ import annotations
+
+import ast
+import re
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.message_fields import Message, nested_message
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.node_api import literal_type
+from pkgtool.rules.python._message_instances import Instance, known_messages, message_instances
+from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import Index, installed_trees
+
+_ACCEPTED = (
+    (re.compile(r"float|double"), frozenset({"float"}), "a float (`1.0`, not `1`)"),
+    (re.compile(r"u?int(8|16|32|64)"), frozenset({"int", "bool"}), "an int"),
+    (re.compile(r"boolean"), frozenset({"bool"}), "a bool (`True`/`False`)"),
+    (re.compile(r"w?string(<=?\d+>)?"), frozenset({"str"}), "a str"),
+)
+"""rosidl basic field types, the literal types rclpy's message classes accept for them, and
+how to say it."""
+
+
+def _wanted(kind: str) -> tuple[frozenset[str], str] | None:
+    """The literal types a field of rosidl type ``kind`` accepts, and how to say it."""
+    return next(((accepted, said) for pattern, accepted, said in _ACCEPTED
+                 if pattern.fullmatch(kind)), None)
+
+
+def _stores(instance: Instance[Message], index: Index
+            ) -> Iterator[tuple[str, str, ast.expr]]:
+    """(target, field type, value) of ``instance.a.b = value`` assignments to a field."""
+    for use in instance.uses:
+        node: ast.AST | None = use
+        message: Message | None = instance.message
+        path: tuple[str, ...] = ()
+        while isinstance(node, ast.Attribute) and message is not None:
+            kind = message.fields.get(node.attr)
+            parent = index.parents.get(id(node))
+            if kind is None:
+                break
+            if isinstance(parent, ast.Assign) and parent.targets == [node]:
+                yield ast.unparse(node), kind, parent.value
+                break
+            path = (*path, node.attr)
+            message = None if path in instance.stored else nested_message(message, node.attr)
+            node = parent if isinstance(parent, ast.Attribute) and parent.value is node else None
+
+
+@rule("PYC025", "field-value-type", Severity.ERROR,
+      fix="Write the value with the field's type: `1.0` for a float64, `True` for a bool")
+def field_value_type(package: Package) -> Iterator[Hit]:
+    """A message field is given a literal of another type than the field's.
+
+    ## What it does
+    For the message instances PYC019 is certain of (and the keyword arguments of known
+    message constructors), reports a literal assigned to a basic field whose type does not
+    accept it: an int, bool, string or `None` for a `float32`/`float64` field
+    (`twist.linear.x = 1`), a float, string or `None` for an integer field, anything but
+    `True`/`False` for a `bool` field, anything but a string for a `string` field. Only
+    literals are judged (`1`, `-2`, `'a'`, `None`), never names or expressions.
+
+    ## Why is this bad?
+    With field checks on (always on Humble, `ROS_PYTHON_CHECK_FIELDS=1` since Iron) the
+    assignment raises `AssertionError: The 'x' field must be of type 'float'`. Without them
+    (Jazzy's default) the value reaches the C conversion unchecked: an int in a float field
+    is published as garbage, `1` in a bool field as `False`, a number in a string field
+    makes `publish()` raise.
+
+    ## Example
+    ```python
+    cmd = Twist()
+    cmd.linear.x = 1
+    ```
+
+    ## Use instead
+    ```python
+    cmd = Twist()
+    cmd.linear.x = 1.0
+    ```
+    """
+    for module, tree, index in installed_trees(package):
+        known = known_messages(package, index)
+        found: list[tuple[str, str, ast.expr]] = []
+        for instance in message_instances(tree, index, known):
+            found.extend(_stores(instance, index))
+        for call in index.calls:
+            message = known(call.func)
+            found.extend((f"{ast.unparse(call.func)}({k.arg}=...)", message.fields[k.arg],
+                          k.value) for k in call.keywords
+                         if message is not None and k.arg in message.fields)
+        for target, kind, value in found:
+            wanted, given = _wanted(kind), literal_type(value)
+            if wanted is not None and given is not None and given not in wanted[0]:
+                yield Hit(Span(module.path, value.lineno, value.col_offset + 1),
+                          f"`{target}` is a `{kind}` field but is given `{ast.unparse(value)}`"
+                          f" ({given}): rclpy wants {wanted[1]}")
