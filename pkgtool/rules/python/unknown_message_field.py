@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import ast
 from collections.abc import Iterator
+from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.message_fields import (CONSTRUCTOR_OPTIONS, Message, close_field,
@@ -15,7 +16,7 @@ from pkgtool.model.static_branches import dead_lines, depends_on_ros_distro
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.python._message_instances import (Instance, Known, known_messages,
                                                      message_instances)
-from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
 from pkgtool.rules.registry import rule
 
 
@@ -68,7 +69,10 @@ def unknown_message_field(package: Package) -> Iterator[Hit]:
     (`String(date='hi')`), positional arguments of a message constructor (`String('hi')`),
     and attributes read or set on a message instance that its class does not have
     (`msg.dat = 'hi'`, `twist.linear.xx = 1.0`, `msg.header.stamp.secs`), with the field
-    meant when one is spelled alike. Checked are the messages, service requests and
+    meant when one is spelled alike; also attributes read on an interface class that it does
+    not have: a service's or action's class has only `Request`/`Response`/`Event` or
+    `Goal`/`Result`/`Feedback`/`Impl` (`Trigger.request()`), a message class its fields
+    and constants (`GoalStatus.STATUS_SUCCEDED`). Checked are the messages, service requests and
     responses and action goals, results and feedbacks of pkgtool's table of the Jazzy
     interface packages installable as wheels (`std_msgs`, `geometry_msgs`, `sensor_msgs`,
     `nav_msgs`, `std_srvs`, ...), for a jazzy target, imported by name (an import is the
@@ -125,6 +129,12 @@ def unknown_message_field(package: Package) -> Iterator[Hit]:
                           f"{_problem(message, str(keyword.arg))}: `{ast.unparse(call.func)}` "
                           "ignores the argument (raises AssertionError where "
                           "ROS_PYTHON_CHECK_FIELDS=1)", _fix(message, str(keyword.arg)))
+        for node, owner, meant in _wrong_class_attributes(index, known, probed):
+            if not _within(node, silent):
+                yield Hit(Span(module.path, node.end_lineno or node.lineno,
+                               (node.end_col_offset or 0) - len(node.attr) + 1),
+                          f"{owner} has no attribute `{node.attr}`{meant}: reading "
+                          f"`{ast.unparse(node)}` raises AttributeError")
         for instance in message_instances(tree, index, known):
             for node, message in _wrong_attributes(instance, index, probed):
                 if not _within(node, silent):
@@ -133,6 +143,37 @@ def unknown_message_field(package: Package) -> Iterator[Hit]:
                                    (node.end_col_offset or 0) - len(node.attr) + 1),
                               f"{_problem(message, node.attr)}: {doing} `{ast.unparse(node)}` "
                               "raises AttributeError", _fix(message, node.attr))
+
+
+_COMPANIONS = {"srv": ("Request", "Response", "Event"),
+               "action": ("Goal", "Result", "Feedback", "Impl")}
+"""The public attributes of a service and of an action class."""
+
+
+def _wrong_class_attributes(index: Index, known: Known, probed: frozenset[str]
+                            ) -> Iterator[tuple[ast.Attribute, str, str]]:
+    """Attributes read on a known interface class that it does not have (a service's
+    ``Trigger.request``, a message constant misspelt), with the class and a near miss."""
+    for node in index.attributes:
+        if node.attr.startswith("_") or guarded(node, index, probed):
+            continue
+        kind = (qualified(node.value, index.aliases) or "").split(".")
+        companions = _COMPANIONS.get(kind[1], ()) if len(kind) == 3 else ()
+        if companions and known(ast.Attribute(value=node.value, attr=companions[0],
+                                              ctx=ast.Load())):
+            if node.attr not in companions:
+                close = get_close_matches(node.attr, companions, n=1) or [
+                    c for c in companions if c.lower() == node.attr.lower()]
+                yield node, f"`{'/'.join(kind)}`", _meant(close)
+            continue
+        message = known(node.value) if not companions else None
+        if message is not None and not message.has(node.attr):
+            names = sorted([*message.constants, *message.fields])
+            yield node, f"`{message.name}`", _meant(get_close_matches(node.attr, names, n=1))
+
+
+def _meant(close: list[str]) -> str:
+    return f" (did you mean `{close[0]}`?)" if close else ""
 
 
 def _wrong_keywords(index: Index, known: Known

@@ -305,3 +305,10 @@ def int_for_a_float_field(root: Path) -> None:
          "        cmd.linear.x = 1\n        self.get_logger().info(str(cmd))\n")
     edit(root, "package.xml", "  <depend>rclpy</depend>\n",
          "  <depend>geometry_msgs</depend>\n  <depend>rclpy</depend>\n")
+
+
+@case("PYC019", SRV, "Trigger.response()")
+def service_companion_class_lowercase(root: Path) -> None:
+    edit(root, SRV, "    def on_request(self, request, response):",
+         "    def make_response(self):\n        \"\"\"Return an empty response.\"\"\"\n"
+         "        return Trigger.response()\n\n    def on_request(self, request, response):")
