@@ -95,6 +95,8 @@ RULES = {
     "PYC023": ("undefined-node-attribute", "error", True, "python.undefined_node_attribute"),
     "PYC024": ("callback-signature-mismatch", "error", True, "python.callback_signature"),
     "PYC025": ("field-value-type", "error", True, "python.field_value_type"),
+    "PYC026": ("service-callback-returns-nothing", "error", True,
+               "python.service_callback_returns_nothing"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

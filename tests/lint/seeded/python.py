@@ -312,3 +312,8 @@ def service_companion_class_lowercase(root: Path) -> None:
     edit(root, SRV, "    def on_request(self, request, response):",
          "    def make_response(self):\n        \"\"\"Return an empty response.\"\"\"\n"
          "        return Trigger.response()\n\n    def on_request(self, request, response):")
+
+
+@case("PYC026", SRV, "def on_request(self, request, response):")
+def service_response_not_returned(root: Path) -> None:
+    edit(root, SRV, "        return response\n", "")
