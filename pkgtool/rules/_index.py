@@ -47,6 +47,7 @@ RULES = {
     "LCH005": ("invalid-launch-node-argument", "error", True, "launch.invalid_node_argument"),
     "LCH006": ("launch-function-returns-nothing", "error", True,
                "launch.launch_function_returns_nothing"),
+    "LCH007": ("launch-node-never-started", "warning", True, "launch.node_never_started"),
     "MAN001": ("invalid-package-name", "error", True, "manifest.invalid_package_name"),
     "MAN002": ("invalid-version", "error", True, "manifest.invalid_version"),
     "MAN003": ("missing-required-element", "error", True, "manifest.missing_required_element"),

@@ -223,3 +223,13 @@ def remapping_pair_not_in_list(root: Path) -> None:
 def remapping_without_its_pair(root: Path) -> None:
     edit(root, PY, "            name='listener',\n",
          "            name='listener',\n            remappings=[('chatter')],\n")
+
+
+@case("LCH007", PY, "talker = Node(")
+def node_left_out_of_the_description(root: Path) -> None:
+    edit(root, PY, "    return LaunchDescription([\n        Node(\n"
+         "            package='base_pkg',\n            executable='talker',\n"
+         "            name='talker',\n            parameters=[params],\n        ),\n",
+         "    talker = Node(\n        package='base_pkg',\n        executable='talker',\n"
+         "        name='talker',\n        parameters=[params],\n    )\n"
+         "    return LaunchDescription([\n")
