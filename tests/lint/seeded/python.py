@@ -317,3 +317,10 @@ def service_companion_class_lowercase(root: Path) -> None:
 @case("PYC026", SRV, "def on_request(self, request, response):")
 def service_response_not_returned(root: Path) -> None:
     edit(root, SRV, "        return response\n", "")
+
+
+@case("PYC027", TALKER, "self.declare_parameter('topic', 'chat')")
+def parameter_declaration_copied(root: Path) -> None:
+    edit(root, TALKER, "        self.declare_parameter('period', 0.5)\n",
+         "        self.declare_parameter('period', 0.5)\n"
+         "        self.declare_parameter('topic', 'chat')\n")
