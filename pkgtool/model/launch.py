@@ -49,7 +49,8 @@ class NodeRef:
     still runs when the file does. ``remappings_not_pairs`` is where a Python ``remappings=``
     certainly is no list of pairs (:mod:`pkgtool.model.launch_remaps`), None otherwise.
     ``inline_parameters`` are the names a Python ``parameters=[{...}]`` dict display sets
-    with literal keys (nested dicts give dotted names), each where its key is written.
+    with literal keys (nested dicts give dotted names), each where its key is written, with
+    the source of its value when that is a literal (``1.0``, ``'fast'``), else None.
     """
 
     package: str | None
@@ -69,7 +70,7 @@ class NodeRef:
     parameters_not_list: Span | None = None
     unused: bool = False
     remappings_not_pairs: Span | None = None
-    inline_parameters: tuple[tuple[str, Span], ...] = ()
+    inline_parameters: tuple[tuple[str, Span, str | None], ...] = ()
 
 
 @record

@@ -284,9 +284,10 @@ class _Reader(ast.NodeVisitor):
         return tuple(found), other
 
     def _inline_parameters(self, node: ast.expr | None, prefix: str = ""
-                           ) -> Iterator[tuple[str, Span]]:
+                           ) -> Iterator[tuple[str, Span, str | None]]:
         """The literal names the dict displays among ``parameters=[...]`` (or ``node``, a
-        dict, when ``prefix`` is given) set, with where each is written."""
+        dict, when ``prefix`` is given) set, with where each is written and the value's
+        source when it is a literal."""
         items = [node] if prefix else node.elts if isinstance(node, (ast.List, ast.Tuple)) \
             else []
         for item in items:
@@ -297,7 +298,7 @@ class _Reader(ast.NodeVisitor):
                     if isinstance(value, ast.Dict):
                         yield from self._inline_parameters(value, f"{prefix}{key.value}.")
                     else:
-                        yield f"{prefix}{key.value}", self._span(key)
+                        yield f"{prefix}{key.value}", self._span(key), _literal(value)
 
     def _not_a_list(self, node: ast.expr | None) -> bool:
         """True when ``node`` is certainly no list: a tuple, dict or set display, a string or
@@ -364,6 +365,15 @@ class _Reader(ast.NodeVisitor):
         found = self.value(node)
         if isinstance(found, Share) and found.share and found.parts:
             self.files.append(FileRef(found.package, found.parts, self._span(_last_part(node))))
+
+
+def _literal(node: ast.expr) -> str | None:
+    """The source of a literal value (``1.0``, ``'a'``, ``[1, 2]``), None for anything else."""
+    try:
+        ast.literal_eval(node)
+    except (ValueError, TypeError, SyntaxError, MemoryError, RecursionError):
+        return None
+    return ast.unparse(node)
 
 
 def _last_part(node: ast.expr) -> ast.expr:

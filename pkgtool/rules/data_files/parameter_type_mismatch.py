@@ -2,19 +2,21 @@
 
 from __future__ import annotations
 
+import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.node_parameters import (
-    analysed_classes, file_entries, flat_parameters, mixed_list, span_of, yaml_type)
+    analysed_classes, file_entries, flat_parameters, mixed_list, python_type, span_of,
+    yaml_type)
 from pkgtool.rules.registry import rule
 
 
 @rule("DAT011", "parameter-type-mismatch", Severity.ERROR,
       fix="Write the value with the declared type (`1.0`, not `1`, for a double)")
 def parameter_type_mismatch(package: Package) -> Iterator[Hit]:
-    """A parameter file gives a value of another type than the node declares.
+    """A parameter file or launch file gives a value of another type than the node declares.
 
     ## What it does
     For the parameters DAT010 checks, compares the type rcl's YAML parser gives the value
@@ -23,7 +25,10 @@ def parameter_type_mismatch(package: Package) -> Iterator[Hit]:
     literal default of `declare_parameter`. Declarations whose default is not a literal, that
     pass a `ParameterDescriptor` with `dynamic_typing=True` (or a descriptor not written
     in the call) or `ignore_override=True` are not checked. A list mixing types is reported
-    in any block of those files: rcl rejects the whole file.
+    in any block of those files: rcl rejects the whole file. The literal values a Python
+    launch file gives a node of this package in a parameter dict (as DAT010 checks their
+    names) are compared the same way, typed as Python types them (launch_ros keeps a string
+    a string: `'0.5'` is a string).
 
     ## Why is this bad?
     The node dies at start-up: `declare_parameter` raises `InvalidParameterTypeException`.
@@ -59,3 +64,14 @@ def parameter_type_mismatch(package: Package) -> Iterator[Hit]:
                 yield Hit(span_of(entry.path, value), f"`{name}` is declared "
                           f"{' or '.join(sorted(wanted))} but the file gives {found}: the node "
                           "raises InvalidParameterTypeException")
+    for launch in package.launch_files:
+        for node in launch.nodes:
+            classes = analysed_classes(package, (node,)) if node.inline_parameters else None
+            for name, span, text in node.inline_parameters if classes else ():
+                found = python_type(ast.literal_eval(text)) if text is not None else None
+                wanted = {d.type for c in classes or () for d in c.declared
+                          if d.name == name} - {None}
+                if found is not None and wanted and found not in wanted:
+                    yield Hit(span, f"`{name}` is declared {' or '.join(sorted(wanted))} but "
+                              f"the launch file gives {found}: the node raises "
+                              "InvalidParameterTypeException")

@@ -60,7 +60,7 @@ def unknown_parameter_in_file(package: Package) -> Iterator[Hit]:
         for node in launch.nodes:
             classes = analysed_classes(package, (node,)) if node.inline_parameters else None
             declared = [d.name for c in classes or () for d in c.declared]
-            for name, span in node.inline_parameters if classes else ():
+            for name, span, _ in node.inline_parameters if classes else ():
                 if _unknown(name, declared):
                     yield Hit(span, f"The node `{node.executable}` declares no parameter "
                               f"`{name}`{near(name, declared)}: the value is ignored")

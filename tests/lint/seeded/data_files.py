@@ -134,3 +134,9 @@ def integer_for_a_double_parameter(root: Path) -> None:
 def misspelled_parameter_in_launch_dict(root: Path) -> None:
     edit(root, "launch/base_pkg.launch.py", "name='talker',\n            parameters=[params]",
          "name='talker',\n            parameters=[params, {'perod': 1.0}]")
+
+
+@case("DAT011", "launch/base_pkg.launch.py", "'period': 1}")
+def integer_for_a_double_in_launch_dict(root: Path) -> None:
+    edit(root, "launch/base_pkg.launch.py", "name='talker',\n            parameters=[params]",
+         "name='talker',\n            parameters=[params, {'period': 1}]")
