@@ -324,3 +324,9 @@ def parameter_declaration_copied(root: Path) -> None:
     edit(root, TALKER, "        self.declare_parameter('period', 0.5)\n",
          "        self.declare_parameter('period', 0.5)\n"
          "        self.declare_parameter('topic', 'chat')\n")
+
+
+@case("PYC028", TALKER, "get_parameter_value().integer_value")
+def parameter_read_through_another_type(root: Path) -> None:
+    edit(root, TALKER, "period = self.get_parameter('period').value",
+         "period = self.get_parameter('period').get_parameter_value().integer_value")
