@@ -2,12 +2,29 @@
 
 from __future__ import annotations
 
+import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.console_scripts import scripts_and_modules
+from pkgtool.rules.node_api import node_subclasses
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import installed_trees, qualified
+
+
+def _uninitialised_nodes(package: Package, path: str) -> set[str]:
+    """Node subclasses of the installed module ``path`` when neither they nor the module's
+    top-level code call ``rclpy.init``."""
+    for module, tree, index in installed_trees(package):
+        if module.path != path:
+            continue
+        top = [s for s in tree.body if not isinstance(s, (ast.FunctionDef, ast.AsyncFunctionDef,
+                                                          ast.ClassDef))]
+        return {c.name for c in node_subclasses(index) if not any(
+            isinstance(n, ast.Call) and qualified(n.func, index.aliases) == "rclpy.init"
+            for part in (c, *top) for n in ast.walk(part))}
+    return set()
 
 
 @rule("ENT003", "undefined-entry-point-function", Severity.ERROR,
@@ -19,6 +36,9 @@ def undefined_entry_point_function(package: Package) -> Iterator[Hit]:
     For console scripts whose module is installed and parses, checks that the first part of
     `:function` is defined at the module's top level (a `def`, a class, an assignment or an
     import). Modules with `from x import *` or a module-level `__getattr__` are skipped.
+    Also reports an entry naming a `Node` subclass of the module instead of a function
+    (`talker = my_pkg.talker:Talker`) when neither the class nor the module's top-level code
+    calls `rclpy.init()`.
 
     ## Why is this bad?
     The build succeeds, but running the command fails with `AttributeError` (or `ImportError`
@@ -50,3 +70,7 @@ def undefined_entry_point_function(package: Package) -> Iterator[Hit]:
         if function not in module.top_level_names:
             yield Hit(entry.span, f"`{entry.module}` does not define `{function}` at its top "
                                   f"level (`{modules[entry.module]}`)")
+        elif entry.attr == function and function in _uninitialised_nodes(package, module.path):
+            yield Hit(entry.span, f"`{function}` is a Node class, not a function: the script "
+                      "constructs it before anything calls rclpy.init(), which raises, and "
+                      "nothing would spin it", "Point the entry at the module's `main`")

@@ -103,3 +103,8 @@ def package_name_misspelled_in_entry(root: Path) -> None:
 @case("ENT002", SETUP, "my_robot.listener:main")
 def entry_copied_from_another_package(root: Path) -> None:
     edit(root, SETUP, "base_pkg.listener:main", "my_robot.listener:main")
+
+
+@case("ENT003", SETUP, "base_pkg.talker:Talker")
+def entry_point_names_the_node_class(root: Path) -> None:
+    edit(root, SETUP, "base_pkg.talker:main", "base_pkg.talker:Talker")
