@@ -123,6 +123,8 @@ def load_package(root: Path, context: Context | None = None) -> Package:
                 found = yaml_problem(relpath, text)
                 if isinstance(found, ParseProblem):
                     problems.append(found)
+        elif relpath.rpartition("/")[2] == ".gitignore":  # modules generated at build time
+            text_of(relpath)
         elif relpath.endswith(".py") and relpath != "setup.py":
             text = text_of(relpath)
             if text is not None:

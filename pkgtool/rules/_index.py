@@ -32,6 +32,7 @@ RULES = {
     "DEP007": ("sibling-module-import", "error", True, "dependencies.sibling_import"),
     "DEP008": ("unknown-interface-import", "error", True, "dependencies.unknown_interface_import"),
     "DEP009": ("unknown-interface-type", "error", True, "dependencies.unknown_interface_type"),
+    "DEP010": ("missing-own-module", "error", True, "dependencies.missing_own_module"),
     "ENT001": ("malformed-console-script", "error", True, "entry_points.malformed_console_script"),
     "ENT002": ("uninstalled-entry-point-module", "error", True,
                "entry_points.uninstalled_entry_point_module"),

@@ -148,3 +148,23 @@ def message_module_plural(root: Path) -> None:
 @case("DEP008", "base_pkg/srv.py", "from std_srvs.srvs import Trigger")
 def service_module_plural(root: Path) -> None:
     edit(root, "base_pkg/srv.py", "from std_srvs.srv import", "from std_srvs.srvs import")
+
+
+def _helpers(root: Path, line: str, use: str) -> None:
+    """Add a helpers module to the package and ``line`` importing from it to the talker."""
+    write(root, "base_pkg/helpers.py", """
+        def clamp(value, low, high):
+            return max(low, min(high, value))
+        """, licensed=True)
+    edit(root, TALKER, "import rclpy\n", f"import rclpy\n\n{line}\n")
+    edit(root, TALKER, "        self.count = 0\n", f"        self.count = {use}\n")
+
+
+@case("DEP010", TALKER, "from base_pkg.helper import clamp")
+def own_module_name_misspelled(root: Path) -> None:
+    _helpers(root, "from base_pkg.helper import clamp", "clamp(0, 0, 1)")
+
+
+@case("DEP010", TALKER, "from base_pkg.helpers import clip")
+def own_function_name_misspelled(root: Path) -> None:
+    _helpers(root, "from base_pkg.helpers import clip", "clip(0, 0, 1)")

@@ -1,0 +1,116 @@
+"""DEP010: an installed module imports a module or name of its own package that is missing."""
+
+from __future__ import annotations
+
+import posixpath
+import re
+from collections.abc import Iterator
+from difflib import get_close_matches
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.installed import installed_modules
+from pkgtool.model.modules import Import
+from pkgtool.model.package import Package
+from pkgtool.rules.imports import installed_code
+from pkgtool.rules.registry import rule
+
+
+def _base(imported: Import, dotted: str, is_package: bool) -> str | None:
+    """The absolute module an import names (its ``from`` part), resolving dots from the
+    importing module ``dotted``; None when the dots go above the top."""
+    if imported.level == 0:
+        return imported.module
+    parts = dotted.split(".") if is_package else dotted.split(".")[:-1]
+    if imported.level - 1 >= len(parts):
+        return None
+    parts = parts[:len(parts) - (imported.level - 1)]
+    return ".".join([*parts, imported.module] if imported.module else parts)
+
+
+def _in_tree(package: Package, module: str) -> bool:
+    """True when the package has a file or folder for the dotted ``module`` (it may be
+    uninstalled for another reason, which other rules report), or may generate it: its
+    name is in setup.py or a ``.gitignore`` (a module written at build time)."""
+    path = module.replace(".", "/")
+    generated = [package.texts.get(f, "") for f in package.files
+                 if f == "setup.py" or f.endswith(".gitignore")]
+    stem = module.rpartition(".")[2]
+    return package.has_file(f"{path}.py") or any(
+        f.startswith(f"{path}/") for f in package.files) or any(
+        re.search(rf"\b{re.escape(stem)}\b", text) for text in generated)
+
+
+def _shadowed(package: Package, path: str, root: str) -> bool:
+    """True when ``root`` is also a module next to the file ``path``: run as a script, the
+    file imports that one."""
+    folder = posixpath.dirname(path)
+    return any(package.has_file(posixpath.join(folder, name))
+               for name in (f"{root}.py", f"{root}/__init__.py"))
+
+
+@rule("DEP010", "missing-own-module", Severity.ERROR,
+      fix="Import the module or name under the name it has (check the spelling), or write it")
+def missing_own_module(package: Package) -> Iterator[Hit]:
+    """An installed module imports a module or name of this package that does not exist.
+
+    ## What it does
+    For the unguarded imports of installed modules that name a module below one of the
+    package's own installed top-level packages (`import my_pkg.utils`,
+    `from my_pkg.utils import clamp`, `from .utils import clamp`), reports a module that
+    setup.py does not install and that has no file in the package, and a name that
+    `from my_pkg.utils import name` takes from an installed module which neither defines it
+    at its top level nor has it as a submodule. Modules with `from x import *`, a
+    module-level `__getattr__`, or calls of `globals()`, `exec()` or `setattr()` are not
+    judged on their names; a module named in setup.py or
+    a `.gitignore` (generated at build time) is taken to exist, and an absolute import is
+    left alone when a module of its first name sits next to the importing file (run as a
+    script, the file imports that one).
+
+    ## Why is this bad?
+    The node dies at start-up with `ModuleNotFoundError` or `ImportError: cannot import
+    name`: usually a helper module or function renamed (or never written) while the import
+    kept the old name.
+
+    ## Example
+    ```python
+    from my_pkg.utils import clamp   # the file is my_pkg/util.py
+    ```
+
+    ## Use instead
+    ```python
+    from my_pkg.util import clamp
+    ```
+    """
+    installed = installed_modules(package)
+    if not installed:
+        return
+    names = {file: name for name, file in installed.items()}
+    roots = {name.split(".")[0] for name in installed}
+    for module in installed_code(package):
+        dotted = names.get(module.path)
+        for imported in module.imports if dotted else ():
+            base = _base(imported, dotted or "", module.path.endswith("__init__.py"))
+            if imported.guarded or base is None or base.split(".")[0] not in roots or (
+                    imported.level == 0 and _shadowed(package, module.path, imported.top_level)):
+                continue
+            if base not in installed:
+                if not _in_tree(package, base):
+                    close = get_close_matches(base, list(installed), n=1)
+                    hint = f" (did you mean `{close[0]}`?)" if close else ""
+                    yield Hit(imported.span, f"`{base}` is not a module of this package"
+                                             f"{hint}: the import raises ModuleNotFoundError")
+                continue
+            source = package.module(installed[base])
+            if source is None or source.syntax_error or \
+                    "__getattr__" in source.top_level_names or \
+                    any("*" in i.names for i in source.imports) or \
+                    re.search(r"\b(globals|exec|setattr)\(", package.texts.get(source.path, "")):
+                continue
+            for name in imported.names:
+                submodule = f"{base}.{name}"
+                if name != "*" and name not in source.top_level_names and \
+                        submodule not in installed and not _in_tree(package, submodule):
+                    close = get_close_matches(name, sorted(source.top_level_names), n=1)
+                    hint = f" (did you mean `{close[0]}`?)" if close else ""
+                    yield Hit(imported.span, f"`{base}` defines no `{name}`{hint}: the import "
+                                             "raises ImportError")
