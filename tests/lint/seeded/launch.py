@@ -233,3 +233,17 @@ def node_left_out_of_the_description(root: Path) -> None:
          "    talker = Node(\n        package='base_pkg',\n        executable='talker',\n"
          "        name='talker',\n        parameters=[params],\n    )\n"
          "    return LaunchDescription([\n")
+
+
+@case("LCH008", PY, "LaunchConfiguration('use_sim_tim')")
+def launch_argument_read_misspelled(root: Path) -> None:
+    edit(root, PY, "from launch import LaunchDescription\n", "from launch import "
+         "LaunchDescription\nfrom launch.actions import DeclareLaunchArgument\n")
+    edit(root, PY, "from launch.substitutions import PathJoinSubstitution",
+         "from launch.substitutions import LaunchConfiguration, PathJoinSubstitution")
+    edit(root, PY, "    return LaunchDescription([\n",
+         "    return LaunchDescription([\n"
+         "        DeclareLaunchArgument('use_sim_time', default_value='false'),\n")
+    edit(root, PY, "name='talker',\n            parameters=[params]",
+         "name='talker',\n"
+         "            parameters=[params, {'use_sim_time': LaunchConfiguration('use_sim_tim')}]")

@@ -1,0 +1,88 @@
+"""LCH008: a launch configuration read under a misspelling of a declared argument."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+from difflib import get_close_matches
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.model.python_visitor import parse_tree
+from pkgtool.model.span import Span
+from pkgtool.rules.launch._python_launch import python_launch_files
+from pkgtool.rules.registry import rule
+
+_DECLARE = "DeclareLaunchArgument"
+_READ = "LaunchConfiguration"
+
+
+def _name(func: ast.expr) -> str:
+    return func.id if isinstance(func, ast.Name) else (
+        func.attr if isinstance(func, ast.Attribute) else "")
+
+
+def _literal(call: ast.Call, keyword: str) -> str | None:
+    """The first argument (or ``keyword``) of a call, when it is a string literal."""
+    value = call.args[0] if call.args else next(
+        (k.value for k in call.keywords if k.arg == keyword), None)
+    return value.value if isinstance(value, ast.Constant) and isinstance(value.value, str) \
+        else None
+
+
+@rule("LCH008", "misspelled-launch-argument", Severity.ERROR,
+      fix="Read the argument under the name it is declared with")
+def misspelled_launch_argument(package: Package) -> Iterator[Hit]:
+    """A launch file reads a launch configuration that nothing declares, under a name spelled
+    almost like a declared argument.
+
+    ## What it does
+    In the package's Python launch files, collects the names declared with
+    `DeclareLaunchArgument('name', ...)` (in any of them) and reports
+    `LaunchConfiguration('other')` without a `default` when `other` is declared nowhere,
+    nothing else in the files sets it (`SetLaunchConfiguration`, `launch_arguments`) and
+    a declared name of the same file is spelled almost the same (`use_sim_tim` for
+    `use_sim_time`).
+
+    ## Why is this bad?
+    `ros2 launch` fails when it evaluates the substitution: `launch configuration
+    'use_sim_tim' does not exist`, unless the user happens to pass that misspelt name on the
+    command line. The declared argument is never used.
+
+    ## Example
+    ```python
+    DeclareLaunchArgument('use_sim_time', default_value='false'),
+    Node(..., parameters=[{'use_sim_time': LaunchConfiguration('use_sim_tim')}]),
+    ```
+
+    ## Use instead
+    ```python
+    DeclareLaunchArgument('use_sim_time', default_value='false'),
+    Node(..., parameters=[{'use_sim_time': LaunchConfiguration('use_sim_time')}]),
+    ```
+    """
+    files = [(path, parse_tree(path, text), text) for path, _, text in
+             python_launch_files(package)]
+    declared_anywhere: set[str] = set()
+    calls: dict[str, list[ast.Call]] = {}
+    for path, tree, _ in files:
+        found = [n for n in ast.walk(tree) if isinstance(n, ast.Call)] \
+            if isinstance(tree, ast.Module) else []
+        calls[path] = found
+        declared_anywhere.update(name for c in found if _name(c.func) == _DECLARE
+                                 and (name := _literal(c, "name")) is not None)
+    for path, _, text in files:
+        declared = {name for c in calls[path] if _name(c.func) == _DECLARE
+                    and (name := _literal(c, "name")) is not None}
+        for call in calls[path]:
+            name = _literal(call, "variable_name") if _name(call.func) == _READ else None
+            if name is None or name in declared_anywhere or len(call.args) > 1 or any(
+                    k.arg == "default" for k in call.keywords) or \
+                    text.count(f"'{name}'") + text.count(f'"{name}"') > 1:
+                continue
+            close = get_close_matches(name, sorted(declared), n=1, cutoff=0.8)
+            if close:
+                yield Hit(Span(path, call.lineno, call.col_offset + 1),
+                          f"`{name}` is declared by no launch argument (did you mean "
+                          f"`{close[0]}`?): the launch fails with launch configuration "
+                          f"'{name}' does not exist")
