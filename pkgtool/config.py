@@ -11,7 +11,6 @@ to that file's folder.
 
 from __future__ import annotations
 
-import difflib
 import fnmatch
 import os
 from collections.abc import Callable, Iterable, Mapping
@@ -122,7 +121,7 @@ def parse_table(table: Mapping[str, object], *, source: str, base: Path) -> Laye
     """Validate a ``[tool.pkgtool]`` table; unknown keys, codes or values raise ConfigError."""
     for key in table:
         if key not in KEYS:
-            close = difflib.get_close_matches(key.replace("_", "-"), KEYS, n=1)
+            close = _close(key.replace("_", "-"), KEYS, n=1)
             hint = f" Did you mean `{close[0]}`?" if close else f" Known keys: {', '.join(KEYS)}."
             raise ConfigError(f"Unknown key `{key}` in [tool.pkgtool] of {source}.{hint}")
 
@@ -147,7 +146,7 @@ def check_rosdistro(value: object, where: str) -> str:
     """``value`` when it names a distribution pkgtool knows, else ConfigError."""
     if isinstance(value, str) and value in DISTROS:
         return value
-    close = difflib.get_close_matches(str(value), DISTROS, n=1)
+    close = _close(str(value), DISTROS, n=1)
     hint = f" Did you mean `{close[0]}`?" if close else ""
     raise ConfigError(f"{where} must be one of {', '.join(DISTROS)}, not `{value}`.{hint}")
 
@@ -249,3 +248,10 @@ class ConfigFinder:
             parent = folder.parent
             self._nearest[folder] = here if here or parent == folder else self._above(parent)
         return self._nearest[folder]
+
+
+def _close(word: str, choices: Iterable[str], n: int) -> list[str]:
+    """The ``n`` choices closest to a mistyped ``word`` (difflib, imported only for a mistake)."""
+    import difflib
+
+    return difflib.get_close_matches(word, choices, n=n)

@@ -122,7 +122,9 @@ class Listings(Mapping[str, "tuple[os.stat_result, list[RecordedEntry]]"]):
         self.layout = layout
         """The record's layout (its folders and their entries, its other files, its absent
         paths), which a run that lists nothing else records again as it is."""
-        self._statuses = statuses
+        self.statuses = statuses
+        """Every folder's status then its files', in the layout's order, then the other
+        files'."""
         self._at: dict[str, tuple[int, list[str], list[str]]] = {}
         self._made: dict[str, tuple[os.stat_result, list[RecordedEntry]]] = {}
         position = 0
@@ -136,8 +138,8 @@ class Listings(Mapping[str, "tuple[os.stat_result, list[RecordedEntry]]"]):
         if made is None:
             position, files, subfolders = self._at[folder]
             base = folder if folder.endswith("/") else f"{folder}/"
-            found = self._statuses[position + 1:position + 1 + len(files)]
-            made = self._made[folder] = (self._statuses[position], [
+            found = self.statuses[position + 1:position + 1 + len(files)]
+            made = self._made[folder] = (self.statuses[position], [
                 *(RecordedEntry(name, base + name, status) for name, status in zip(files, found)),
                 *(RecordedEntry(name, base + name, None) for name in subfolders)])
         return made
@@ -145,17 +147,8 @@ class Listings(Mapping[str, "tuple[os.stat_result, list[RecordedEntry]]"]):
     def folder(self, folder: str) -> _Folder:
         """What :class:`Witness` keeps of the known ``folder`` (without looking at entries)."""
         position, files, subfolders = self._at[folder]
-        return _Folder(self._statuses[position], files,
-                       self._statuses[position + 1:position + 1 + len(files)], subfolders, False)
-
-    def statuses(self) -> dict[str, os.stat_result]:
-        """Every file of the folders by path."""
-        found: dict[str, os.stat_result] = {}
-        for folder, (position, files, _) in self._at.items():
-            base = folder if folder.endswith("/") else f"{folder}/"
-            found.update(zip((base + name for name in files),
-                             self._statuses[position + 1:position + 1 + len(files)]))
-        return found
+        return _Folder(self.statuses[position], files,
+                       self.statuses[position + 1:position + 1 + len(files)], subfolders, False)
 
     def __contains__(self, folder: object) -> bool:
         return folder in self._at
@@ -202,10 +195,12 @@ class Witness:
             walked = _read(self.folder / _walk_name(self.known.layout["id"]))
             roots = {root: Path(root) for root in walked["packages"]}
             found = Discovery(tuple(roots.values()), (), tuple(walked["empty"]))
-            status = self.known.statuses()
-            scans = {roots[root]: [(path, _size_time(status[f"{root}/{path}"])) for path in paths]
-                     for root, paths in walked["scans"]}
-        except (OSError, ValueError, RecursionError, KeyError, TypeError, AttributeError):
+            statuses = self.known.statuses
+            scans = {roots[root]: [(path, list(_SIZE_TIME(statuses[at])))
+                                   for path, at in zip(paths, places, strict=True)]
+                     for root, paths, places in walked["scans"]}
+        except (OSError, ValueError, RecursionError, KeyError, TypeError, AttributeError,
+                IndexError):
             self.relayout = True
             return None
         self.folders = {path: self.known.folder(path) for path in self.known}
@@ -277,16 +272,32 @@ class Witness:
                                                  for path in order))}
             layout["id"] = _write(self.folder, _layout_name, layout)
             if self.walked is not None:
-                found, scans = self.walked
-                _write(self.folder, lambda _: _walk_name(layout["id"]), {
-                    "packages": [str(root) for root in found.packages],
-                    "empty": list(found.empty),
-                    "scans": [[str(root), [path for path, _ in scanned]]
-                              for root, scanned in scans.items()]})
+                self._write_walk(layout["id"], order, *self.walked)
         record = {"schema": SCHEMA, "stamp": self.stamp, "layout": layout["id"],
                   "times": hash(tuple(map(_TIMES, statuses))), "shown": list(shown)}
         _write(self.folder, lambda _: _name(self.stamp), record)
         _prune(self.folder)
+
+    def _write_walk(self, layout_id: str, order: list[str], found: Discovery,
+                    scans: Mapping[Path, Scan]) -> None:
+        """Record what discovery found and each package's files, by their places in the
+        statuses a check of the layout takes (nothing when some file is not in the layout)."""
+        places: dict[str, int] = {}
+        at = 0
+        for path in order:
+            base = path if path.endswith("/") else f"{path}/"
+            places.update((base + name, at + 1 + number)
+                          for number, name in enumerate(self.folders[path].files))
+            at += 1 + len(self.folders[path].files)
+        try:
+            packages = [[str(root), [path for path, _ in scanned],
+                         [places[f"{root}/{path}"] for path, _ in scanned]]
+                        for root, scanned in scans.items()]
+        except KeyError:
+            return
+        _write(self.folder, lambda _: _walk_name(layout_id), {
+            "packages": [str(root) for root in found.packages], "empty": list(found.empty),
+            "scans": packages})
 
     def _known_layout(self) -> dict[str, Any] | None:
         """The layout of the record this run started from when this run read exactly the
@@ -353,11 +364,6 @@ def _now(folders: list[list[Any]], files: list[str]
         statuses += [stat(base + name) for name in names]
     statuses += map(stat, files)
     return statuses, changed
-
-
-def _size_time(status: os.stat_result) -> list[int]:
-    """A file's ``[size, mtime_ns]`` as :func:`pkgtool.model.files.scan` gives it."""
-    return list(_SIZE_TIME(status))
 
 
 def _settled(changes: list[int], taken_ns: int) -> bool:

@@ -7,7 +7,6 @@ from __future__ import annotations
 
 import gc
 import os
-import threading
 from collections.abc import Iterator, Mapping, Sequence
 from functools import partial
 from pathlib import Path
@@ -210,7 +209,7 @@ def _check_all(jobs: list[Job], workspace: Workspace, cache: LintCache | None = 
     """Each job's outcome in order; a process per core once there are enough packages."""
     check = partial(_check, workspace=workspace, cache=cache)
     workers = _workers(len(jobs))
-    if workers < 2 or threading.active_count() > 1:
+    if workers < 2 or _threaded():
         yield from map(check, jobs)
         return
     import multiprocessing  # only here: importing it costs a small lint run ~10 ms
@@ -228,6 +227,13 @@ def _check_all(jobs: list[Job], workspace: Workspace, cache: LintCache | None = 
             yield from pool.map(check, jobs[1:], chunksize=max(1, len(jobs) // (workers * 8)))
     finally:
         gc.unfreeze()
+
+
+def _threaded() -> bool:
+    """True when this process runs other threads (forking it then is unsafe)."""
+    import threading  # only a run worth a pool pays for it
+
+    return threading.active_count() > 1
 
 
 def _open_cache(options: LintOptions, cwd: Path) -> LintCache | None:
