@@ -24,6 +24,10 @@ modules need the user (a `<build_type>`, a ROS 2 replacement, or nothing). DAT00
 string of sources and creates the (empty) ament index marker: other missing files have content
 only their author knows."""
 
+REVEALED = {("PYC013", "called_callbacks"): {"PYC026"}}
+"""Findings a fix may bring to light: once `callback=self.handle()` is `self.handle`, rclpy
+calls a service callback that returns no response (PYC026), which the call hid."""
+
 
 def _keys(path: Path, code: str, **fix: bool) -> list[tuple[str, str]]:
     options = LintOptions(extend_select=(code,), isolated=True, **fix)
@@ -40,5 +44,7 @@ def test_fix_clears_the_rule_and_adds_nothing(tmp_path: Path, code: str, case: P
     if (code, case.name) not in MANUAL:
         assert len(mine) < len([key for key in before if key[0] == code])
         assert not mine or (code, case.name) in PARTLY, mine
-    assert set(after) <= set(before), set(after) - set(before)
+    added = {key for key in set(after) - set(before)
+             if key[0] not in REVEALED.get((code, case.name), set())}
+    assert not added, added
     assert _keys(package, code, fix=True, unsafe_fixes=True) == after, "not idempotent"
