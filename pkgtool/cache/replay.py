@@ -239,8 +239,11 @@ class Witness:
         self.folders[folder] = _Folder(status, files, statuses, folders, linked)
 
     def paths(self, paths: Iterable[Path]) -> None:
-        """Files (or their absence) the run looked at outside the folders it listed."""
+        """Files (or their absence) the run looked at; those in a folder it listed are known
+        by that folder (its change time tells when one appears or goes)."""
         for path in paths:
+            if os.path.dirname(path) in self.folders:
+                continue
             try:
                 self.files[os.fspath(path)] = os.stat(path)
             except OSError:

@@ -109,6 +109,8 @@ class LintCache:
         self._workspace: Mapping[Path, WorkspacePackage] = {}
         self._settings_keys: dict[int, tuple[Settings, str]] = {}
         self._probed: dict[Path, tuple[Scan, Files]] = {}
+        self._looked: set[str] = set()
+        """Packages looked up by this run: they exist (no need to ask before saving)."""
         """Packages :meth:`indexed` found as recorded: their scan and files."""
 
     def indexed(self, scans: Mapping[Path, Scan]) -> dict[Path, WorkspacePackage]:
@@ -144,6 +146,7 @@ class LintCache:
         ``scanned``: the package's :func:`scan`, when the caller made it already.
         """
         assert self._run_key, "bind() the cache to the workspace first"
+        self._looked.add(str(root))
         entry = self._entry_of(root)
         old = entry.get("files") if isinstance(entry.get("files"), dict) else {}
         probed = self._probed.get(root)
@@ -208,7 +211,7 @@ class LintCache:
         with contextlib.suppress(OSError):
             os.unlink(self.folder / "packages.json")  # where pkgtool 0.1 kept every entry
         gone = {name for name, pack in self._packs.items()
-                if not all(map(os.path.isdir, pack))}
+                if any(root not in self._looked and not os.path.isdir(root) for root in pack)}
         for name in sorted(gone | {pack_of(root) for root in self._fresh}):
             path = self.folder / name
             others = self._packs[name] if _identity(path) == self._loaded[name] else _load(path)
