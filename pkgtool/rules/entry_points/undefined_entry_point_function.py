@@ -13,18 +13,20 @@ from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import installed_trees, qualified
 
 
-def _uninitialised_nodes(package: Package, path: str) -> set[str]:
-    """Node subclasses of the installed module ``path`` when neither they nor the module's
-    top-level code call ``rclpy.init``."""
+def _uninitialised_node(package: Package, path: str, name: str) -> bool:
+    """True when ``name`` is a Node subclass of the installed module ``path`` and neither it
+    nor the module's top-level code calls ``rclpy.init``."""
     for module, tree, index in installed_trees(package):
         if module.path != path:
             continue
+        node = next((c for c in node_subclasses(index) if c.name == name), None)
+        if node is None:
+            return False
         top = [s for s in tree.body if not isinstance(s, (ast.FunctionDef, ast.AsyncFunctionDef,
                                                           ast.ClassDef))]
-        return {c.name for c in node_subclasses(index) if not any(
-            isinstance(n, ast.Call) and qualified(n.func, index.aliases) == "rclpy.init"
-            for part in (c, *top) for n in ast.walk(part))}
-    return set()
+        return not any(isinstance(n, ast.Call) and qualified(n.func, index.aliases) == "rclpy.init"
+                       for part in (node, *top) for n in ast.walk(part))
+    return False
 
 
 @rule("ENT003", "undefined-entry-point-function", Severity.ERROR,
@@ -70,7 +72,7 @@ def undefined_entry_point_function(package: Package) -> Iterator[Hit]:
         if function not in module.top_level_names:
             yield Hit(entry.span, f"`{entry.module}` does not define `{function}` at its top "
                                   f"level (`{modules[entry.module]}`)")
-        elif entry.attr == function and function in _uninitialised_nodes(package, module.path):
+        elif entry.attr == function and _uninitialised_node(package, module.path, function):
             yield Hit(entry.span, f"`{function}` is a Node class, not a function: the script "
                       "constructs it before anything calls rclpy.init(), which raises, and "
                       "nothing would spin it", "Point the entry at the module's `main`")
