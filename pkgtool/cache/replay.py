@@ -36,6 +36,7 @@ import re
 import sys
 import time
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
+from itertools import accumulate
 from operator import attrgetter
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, NamedTuple
@@ -62,12 +63,13 @@ _LAYOUT_PREFIX = "layout-"
 _WALK_PREFIX = "walk-"
 _CHECK = re.compile("[0-9a-f]{8}")
 _TIMES = attrgetter("st_size", "st_mtime_ns", "st_ctime_ns")
+"""What a record compares of each folder and file."""
 _FOLDER_TIMES = attrgetter("st_mtime_ns", "st_ctime_ns")
 """What tells a folder's entries changed: the change time, and the modification time on
 Windows (where ``st_ctime`` is when the folder was created)."""
 _CHANGED = attrgetter("st_mtime_ns" if os.name == "nt" else "st_ctime_ns")
 _SIZE_TIME = attrgetter("st_size", "st_mtime_ns")
-"""What a record compares of each folder and file."""
+"""A file's ``[size, mtime_ns]`` as :func:`pkgtool.model.files.scan` gives it."""
 
 
 class Shown(NamedTuple):
@@ -127,17 +129,17 @@ class Listings(Mapping[str, "tuple[os.stat_result, list[RecordedEntry]]"]):
         files'."""
         self._at: dict[str, tuple[int, list[str], list[str]]] = {}
         self._made: dict[str, tuple[os.stat_result, list[RecordedEntry]]] = {}
-        position = 0
-        for folder, files, subfolders, linked in layout["folders"]:
+        folders = layout["folders"]
+        for (folder, files, subfolders, linked), position in zip(
+                folders, _starts(len(files) for _, files, _, _ in folders)):
             if not linked:
                 self._at[folder] = (position, files, subfolders)
-            position += 1 + len(files)
 
     def __getitem__(self, folder: str) -> tuple[os.stat_result, list[RecordedEntry]]:
         made = self._made.get(folder)
         if made is None:
             position, files, subfolders = self._at[folder]
-            base = folder if folder.endswith("/") else f"{folder}/"
+            base = _inside(folder)
             found = self.statuses[position + 1:position + 1 + len(files)]
             made = self._made[folder] = (self.statuses[position], [
                 *(RecordedEntry(name, base + name, status) for name, status in zip(files, found)),
@@ -286,12 +288,9 @@ class Witness:
         """Record what discovery found and each package's files, by their places in the
         statuses a check of the layout takes (nothing when some file is not in the layout)."""
         places: dict[str, int] = {}
-        at = 0
-        for path in order:
-            base = path if path.endswith("/") else f"{path}/"
-            places.update((base + name, at + 1 + number)
+        for path, at in zip(order, _starts(len(self.folders[path].files) for path in order)):
+            places.update((_inside(path) + name, at + 1 + number)
                           for number, name in enumerate(self.folders[path].files))
-            at += 1 + len(self.folders[path].files)
         try:
             packages = [[str(root), [path for path, _ in scanned],
                          [places[f"{root}/{path}"] for path, _ in scanned]]
@@ -363,10 +362,21 @@ def _now(folders: list[list[Any]], files: list[str]
         status = stat(folder)
         statuses.append(status)
         changed.append(_FOLDER_TIMES(status))
-        base = folder if folder.endswith("/") else f"{folder}/"
+        base = _inside(folder)
         statuses += [stat(base + name) for name in names]
     statuses += map(stat, files)
     return statuses, changed
+
+
+def _starts(counts: Iterable[int]) -> Iterator[int]:
+    """Where each folder's status stands in the statuses :func:`_now` takes, from the number
+    of files of each folder in order (each folder's status comes before its files')."""
+    return accumulate((1 + count for count in counts), initial=0)
+
+
+def _inside(folder: str) -> str:
+    """``folder`` as the prefix of the paths of its entries."""
+    return folder if folder.endswith("/") else f"{folder}/"
 
 
 def _settled(changes: list[int], taken_ns: int) -> bool:
