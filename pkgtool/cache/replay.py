@@ -42,8 +42,13 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, NamedTuple
 
 if TYPE_CHECKING:
+    from pkgtool.findings import Finding
+    from pkgtool.model.context import WorkspacePackage
     from pkgtool.model.files import Scan
     from pkgtool.workspace import Discovery
+
+    Outcome = tuple[str, list[Finding]]
+    """A package's name and findings."""
 
 SCHEMA = "pkgtool-lint-replay-1"
 SETTLED_NS = 2_000_000_000
@@ -61,6 +66,9 @@ KEPT = 16
 _PREFIX = "run-"
 _LAYOUT_PREFIX = "layout-"
 _WALK_PREFIX = "walk-"
+_OUTCOMES_PREFIX = "outcomes-"
+_SETTINGS_FILE = "pyproject.toml"
+"""Where settings come from (:mod:`pkgtool.config`): one in a package may set its neighbours'."""
 _CHECK = re.compile("[0-9a-f]{8}")
 _TIMES = attrgetter("st_size", "st_mtime_ns", "st_ctime_ns")
 """What a record compares of each folder and file."""
@@ -78,6 +86,24 @@ class Shown(NamedTuple):
     code: int
     report: str
     messages: list[str]
+
+
+Positions = dict[str, tuple[list[str], list[int]]]
+"""Each package's files (by folder) and their places in the statuses :func:`_now` takes."""
+
+
+class Hint(NamedTuple):
+    """What the record a run started from tells of this run (:meth:`Witness.hint`)."""
+
+    found: Discovery
+    """What discovery finds."""
+    scans: dict[Path, Scan]
+    """Each package's files with their sizes and times."""
+    reused: dict[Path, Outcome]
+    """The outcomes of the packages whose files are as they were, while nothing outside the
+    packages changed: valid as long as the others still show the workspace the same."""
+    index: dict[Path, WorkspacePackage]
+    """Every package's workspace-index entry as it was (empty when nothing is reused)."""
 
 
 class RecordedEntry:
@@ -120,13 +146,16 @@ class Listings(Mapping[str, "tuple[os.stat_result, list[RecordedEntry]]"]):
     """The folders of a record that hold no link: path -> (status, entries), with the
     statuses :func:`replayed` just examined; entries are made when a folder is asked for."""
 
-    def __init__(self, layout: dict[str, Any], statuses: list[os.stat_result]) -> None:
+    def __init__(self, layout: dict[str, Any], statuses: list[os.stat_result],
+                 outcomes: str | None = None) -> None:
         self.layout = layout
         """The record's layout (its folders and their entries, its other files, its absent
         paths), which a run that lists nothing else records again as it is."""
         self.statuses = statuses
         """Every folder's status then its files', in the layout's order, then the other
         files'."""
+        self.outcomes = outcomes
+        """The check of the record's outcomes file, if it has one."""
         self._at: dict[str, tuple[int, list[str], list[str]]] = {}
         self._made: dict[str, tuple[os.stat_result, list[RecordedEntry]]] = {}
         folders = layout["folders"]
@@ -184,11 +213,21 @@ class Witness:
         """Write the layout again: some folder was listed, not known, or its walk is missing."""
         self.walked: tuple[Discovery, Mapping[Path, Scan]] | None = None
         """What the run found and the files of each package (:meth:`found`)."""
+        self.positions: Positions | None = None
+        """Where each package's files stand in the statuses of the known layout."""
+        self.outcomes: dict[str, Outcome] | None = None
+        """Each package's outcome and workspace-index entry (:meth:`checked`)."""
+        self.index: Mapping[Path, WorkspacePackage] = {}
+        self.recorded: dict[str, tuple[Outcome, list[Any]]] = {}
+        """The outcomes :meth:`hint` gave for reuse, by package, with their rows in the
+        record's outcomes file (written again as they are when the run used them)."""
+        self.times: tuple[int, dict[str, int]] | None = None
+        """:func:`_package_times` of the known layout's statuses, once worked out."""
 
-    def hint(self) -> tuple[Discovery, dict[Path, Scan]] | None:
-        """What discovery finds and each package's files with their sizes and times, from the
-        record this run started from: its folders are as recorded, so walking them would find
-        the same (None when the record cannot tell)."""
+    def hint(self) -> Hint | None:
+        """What the record this run started from tells: its folders are as recorded, so
+        walking them would find the same packages and files, and the packages whose files
+        are as they were need no check (None when the record cannot tell)."""
         if self.known is None or len(self.known) != len(self.known.layout["folders"]):
             return None  # a folder holds a link
         from pkgtool.workspace import Discovery
@@ -197,16 +236,57 @@ class Witness:
             walked = _read(self.folder / _walk_name(self.known.layout["id"]))
             roots = {root: Path(root) for root in walked["packages"]}
             found = Discovery(tuple(roots.values()), (), tuple(walked["empty"]))
+            self.positions = {root: (paths, places) for root, paths, places in walked["scans"]}
+            reused, index = self._recorded(roots)
             statuses = self.known.statuses
             scans = {roots[root]: [(path, list(_SIZE_TIME(statuses[at])))
                                    for path, at in zip(paths, places, strict=True)]
-                     for root, paths, places in walked["scans"]}
+                     for root, (paths, places) in self.positions.items()
+                     if roots[root] not in reused}  # the others are not looked at
         except (OSError, ValueError, RecursionError, KeyError, TypeError, AttributeError,
                 IndexError):
             self.relayout = True
             return None
         self.folders = {path: self.known.folder(path) for path in self.known}
-        return found, scans
+        return Hint(found, scans, reused, index)
+
+    def _recorded(self, roots: Mapping[str, Path]
+                  ) -> tuple[dict[Path, Outcome], dict[Path, WorkspacePackage]]:
+        """The outcomes the record holds of the packages whose files did not change, and every
+        package's index entry; none when something outside the packages changed (ValueError
+        when the outcomes file is not intact)."""
+        assert self.known is not None and self.positions is not None
+        if self.known.outcomes is None:
+            return {}, {}
+        from pkgtool.cache.serial import decode, index_entry
+        from pkgtool.findings import Finding
+
+        recorded = _read(self.folder / _outcomes_name(self.known.outcomes), self.known.outcomes)
+        self.times = others, times = _package_times(self.positions, self.known.statuses)
+        if recorded["others"] != others:
+            return {}, {}
+        reused: dict[Path, Outcome] = {}
+        index: dict[Path, WorkspacePackage] = {}
+        for row in recorded["packages"]:
+            root, package_times, name, findings, entry = row
+            package = index_entry(entry)
+            if package is None or not isinstance(name, str):
+                raise ValueError("not an outcome")
+            index[roots[root]] = package
+            if times[root] == package_times:
+                found = decode(findings)
+                if not all(isinstance(finding, Finding) for finding in found):
+                    raise ValueError("not findings")
+                reused[roots[root]] = outcome = (name, found)
+                self.recorded[root] = outcome, row
+        return reused, index
+
+    def checked(self, outcomes: dict[str, Outcome] | None,
+                index: Mapping[Path, WorkspacePackage]) -> None:
+        """Each package's outcome (None when some package could not be checked) and the
+        workspace index the run checked them with, for the next run to reuse."""
+        self.outcomes = outcomes
+        self.index = index
 
     def found(self, discovery: Discovery, scans: Mapping[Path, Scan]) -> None:
         """The run's discovery and the files of its packages (recorded for :meth:`hint`)."""
@@ -269,6 +349,8 @@ class Witness:
         if not _settled(list(map(_CHANGED, statuses)), self.taken_ns):
             return
         if layout is None:
+            self.positions = self.times = None  # of the known layout's statuses, not these
+            self.recorded = {}
             layout = {"schema": SCHEMA,
                       "folders": [[path, folder.files, folder.folders, folder.linked]
                                   for path, folder in self.folders.items()],
@@ -276,30 +358,48 @@ class Witness:
                       "folder_times": hash(tuple(_FOLDER_TIMES(self.folders[path].status)
                                                  for path in order))}
             layout["id"] = _write(self.folder, _layout_name, layout)
-            if self.walked is not None:
-                self._write_walk(layout["id"], order, *self.walked)
+            self.positions = self._positions(order)
+            if self.walked is not None and self.positions is not None:
+                _write(self.folder, lambda _: _walk_name(layout["id"]), {
+                    "packages": [str(root) for root in self.walked[0].packages],
+                    "empty": list(self.walked[0].empty),
+                    "scans": [[root, *files] for root, files in self.positions.items()]})
         record = {"schema": SCHEMA, "stamp": self.stamp, "layout": layout["id"],
-                  "times": hash(tuple(map(_TIMES, statuses))), "shown": list(shown)}
+                  "times": hash(tuple(map(_TIMES, statuses))), "shown": list(shown),
+                  "outcomes": self._write_outcomes(statuses)}
         _write(self.folder, lambda _: _name(self.stamp), record)
         _prune(self.folder)
 
-    def _write_walk(self, layout_id: str, order: list[str], found: Discovery,
-                    scans: Mapping[Path, Scan]) -> None:
-        """Record what discovery found and each package's files, by their places in the
-        statuses a check of the layout takes (nothing when some file is not in the layout)."""
+    def _positions(self, order: list[str]) -> Positions | None:
+        """Each package's files and their places in the statuses a check of the layout takes
+        (None when the run found no package files, or some file is not in the layout)."""
+        if self.walked is None or len(self.walked[0].packages) != len(self.walked[1]):
+            return None  # some package's files were not looked at
         places: dict[str, int] = {}
         for path, at in zip(order, _starts(len(self.folders[path].files) for path in order)):
             places.update((_inside(path) + name, at + 1 + number)
                           for number, name in enumerate(self.folders[path].files))
         try:
-            packages = [[str(root), [path for path, _ in scanned],
-                         [places[f"{root}/{path}"] for path, _ in scanned]]
-                        for root, scanned in scans.items()]
+            return {str(root): ([path for path, _ in scanned],
+                                [places[f"{root}/{path}"] for path, _ in scanned])
+                    for root, scanned in self.walked[1].items()}
         except KeyError:
-            return
-        _write(self.folder, lambda _: _walk_name(layout_id), {
-            "packages": [str(root) for root in found.packages], "empty": list(found.empty),
-            "scans": packages})
+            return None
+
+    def _write_outcomes(self, statuses: list[os.stat_result]) -> str | None:
+        """Write each package's outcome with what tells whether its files changed; the file's
+        check (None when some package has no outcome or its files are not all known)."""
+        if self.outcomes is None or self.positions is None or \
+                set(self.outcomes) != set(self.positions):
+            return None
+        from pkgtool.cache.serial import encode, index_record
+
+        others, times = self.times or _package_times(self.positions, statuses)
+        packages = [self.recorded[root][1] if self.recorded.get(root, (None,))[0] is outcome
+                    else [root, times[root], outcome[0], encode(outcome[1]),
+                          index_record(self.index[Path(root)])]
+                    for root, outcome in self.outcomes.items()]
+        return _write(self.folder, _outcomes_name, {"others": others, "packages": packages})
 
     def _known_layout(self) -> dict[str, Any] | None:
         """The layout of the record this run started from when this run read exactly the
@@ -341,7 +441,9 @@ def replayed(folder: Path, stamp: list[Any]) -> Shown | Listings | None:
         if hash(tuple(changed)) != layout["folder_times"]:
             return None
         if hash(tuple(map(_TIMES, statuses))) != record["times"]:
-            return Listings(layout, statuses)
+            outcomes = record.get("outcomes")
+            return Listings(layout, statuses, outcomes if isinstance(outcomes, str) and
+                            _CHECK.fullmatch(outcomes) else None)
         code, report, messages = record["shown"]
         if isinstance(code, int) and isinstance(report, str) and isinstance(messages, list) \
                 and all(isinstance(m, str) for m in messages):
@@ -366,6 +468,23 @@ def _now(folders: list[list[Any]], files: list[str]
         statuses += [stat(base + name) for name in names]
     statuses += map(stat, files)
     return statuses, changed
+
+
+def _package_times(positions: Positions, statuses: Sequence[os.stat_result]
+                   ) -> tuple[int, dict[str, int]]:
+    """What tells whether anything besides the packages' files changed (the statuses of
+    everything else, and of the packages' pyproject.toml files), and each package's files."""
+    times = list(map(_TIMES, statuses))
+    inside: set[int] = set()
+    settings: list[tuple[int, int, int]] = []
+    each: dict[str, int] = {}
+    for root, (paths, places) in positions.items():
+        inside.update(places)
+        each[root] = hash(tuple(map(times.__getitem__, places)))
+        settings += [times[at] for path, at in zip(paths, places)
+                     if path == _SETTINGS_FILE or path.endswith(f"/{_SETTINGS_FILE}")]
+    others = [status for at, status in enumerate(times) if at not in inside]
+    return hash((*others, *settings)), each
 
 
 def _starts(counts: Iterable[int]) -> Iterator[int]:
@@ -429,10 +548,14 @@ def _walk_name(layout_id: str) -> str:
     return f"{_WALK_PREFIX}{layout_id}.json"
 
 
+def _outcomes_name(check: str) -> str:
+    return f"{_OUTCOMES_PREFIX}{check}.json"
+
+
 def _prune(folder: Path) -> None:
-    """Keep the newest :data:`KEPT` records, layouts and walks."""
+    """Keep the newest :data:`KEPT` records, layouts, walks and outcomes."""
     try:
-        for prefix in (_PREFIX, _LAYOUT_PREFIX, _WALK_PREFIX):
+        for prefix in (_PREFIX, _LAYOUT_PREFIX, _WALK_PREFIX, _OUTCOMES_PREFIX):
             kept = sorted((entry.stat().st_mtime_ns, entry.path) for entry in os.scandir(folder)
                           if entry.name.startswith(prefix))
             for _, path in kept[:-KEPT]:

@@ -1,4 +1,5 @@
-"""Findings to JSON and back, generically: every record field, whatever it holds.
+"""Findings to JSON and back, generically: every record field, whatever it holds (and the
+workspace index's entries, :func:`index_record`).
 
 A record (:mod:`pkgtool.records`) becomes ``{"@": "module:Class", field: value, ...}``, an
 enum member ``{"@": "module:Class", "value": ...}``, a tuple ``{"@": "tuple", "items": [...]}``.
@@ -15,6 +16,7 @@ import sys
 from enum import Enum
 from typing import Any
 
+from pkgtool.model.context import WorkspacePackage
 from pkgtool.records import fields, is_record
 
 _MODULE = re.compile(r"pkgtool\.(?:findings|model(?:\.\w+)+|edit(?:\.\w+)+)")
@@ -95,3 +97,24 @@ def _class(tag: Any) -> type:
     if not isinstance(cls, type) or not (is_record(cls) or issubclass(cls, Enum)):
         raise BadEntry(f"unknown class {tag!r}")
     return cls
+
+
+def index_record(package: WorkspacePackage) -> list[Any]:
+    """A workspace-index entry as JSON."""
+    return [package.name, {kind: sorted(names) for kind, names in package.interfaces.items()},
+            sorted(package.modules)]
+
+
+def index_entry(stored: Any) -> WorkspacePackage | None:
+    """The :class:`WorkspacePackage` :func:`index_record` stored; None when it is not one."""
+    try:
+        name, interfaces, modules = stored
+        if isinstance(name, str) and isinstance(interfaces, dict) and \
+                isinstance(modules, list) and all(isinstance(m, str) for m in modules) and \
+                all(isinstance(k, str) and isinstance(v, list) and
+                    all(isinstance(n, str) for n in v) for k, v in interfaces.items()):
+            return WorkspacePackage(name, {k: frozenset(v) for k, v in interfaces.items()},
+                                    frozenset(modules))
+    except (TypeError, ValueError):
+        pass
+    return None

@@ -36,7 +36,7 @@ from typing import Any
 
 from pkgtool.cache import prepare, write_atomically
 from pkgtool.cache.replay import site_folders
-from pkgtool.cache.serial import BadEntry, decode, encode
+from pkgtool.cache.serial import BadEntry, decode, encode, index_entry, index_record
 from pkgtool.config import Settings
 from pkgtool.findings import Finding
 from pkgtool.model.context import WorkspacePackage
@@ -47,7 +47,6 @@ SCHEMA = "pkgtool-lint-cache-4"
 PACKS = 16
 """The files in ``lint/`` the entries are spread over (by package folder): a run that checked
 a few packages writes a few small files."""
-_PACKS = [f"packages-{number:02d}.json" for number in range(PACKS)]
 _SETTLED_NS = 2_000_000_000
 """A file modified this long before it was hashed is trusted by size and time afterwards."""
 
@@ -99,10 +98,9 @@ class LintCache:
     def __init__(self, folder: Path) -> None:
         self.folder = folder / "lint"
         self.base = folder
-        self._loaded = {name: _identity(self.folder / name) for name in _PACKS}
-        self._packs = {name: _load(self.folder / name) for name in _PACKS}
-        self._entries = {root: entry for pack in self._packs.values()
-                         for root, entry in pack.items()}
+        self._packs: dict[str, tuple[tuple[int, int, int] | None, dict[str, Any]]] = {}
+        """The files of ``lint/`` read so far (each when an entry in it is first asked for):
+        what tells whether the file was replaced since, and its entries."""
         self._fresh: dict[str, Entry] = {}
         self._code_key = _digest([SCHEMA, _code_fingerprint()])
         self._run_key = ""
@@ -127,7 +125,7 @@ class LintCache:
             files = _hash_files(root, old, entry.get("taken_ns"), False, scanned)
             if files is not None:  # every file as recorded: the lookup need not look again
                 self._probed[root] = scanned, files
-                package = _index_entry(entry.get("index"))
+                package = index_entry(entry.get("index"))
                 if package is not None:
                     known[root] = package
         return known
@@ -174,7 +172,7 @@ class LintCache:
     def _entry_of(self, root: Path) -> Entry:
         """The stored entry of the package at ``root``; empty when there is none or it is not
         one (not a dict, or recorded for another folder)."""
-        entry = self._entries.get(str(root))
+        entry = self._pack(pack_of(str(root)))[1].get(str(root))
         return entry if isinstance(entry, dict) and entry.get("root") == str(root) else {}
 
     def _settings_key(self, settings: Settings) -> str:
@@ -195,7 +193,7 @@ class LintCache:
         package = self._workspace.get(root)
         return {"root": str(root), "key": lookup.key, "name": name, "code": self._code_key,
                 "digest": lookup.digest,
-                "index": _index_record(package) if package is not None else None,
+                "index": index_record(package) if package is not None else None,
                 "taken_ns": lookup.files.taken_ns, "files": lookup.files.stats,
                 "findings": encode(findings)}
 
@@ -204,23 +202,32 @@ class LintCache:
         self._fresh[entry["root"]] = entry
 
     def save(self) -> None:
-        """Write the files holding kept entries, or entries of packages that no longer exist,
-        atomically, each merged with the file as it is now."""
+        """Write the files holding kept entries, or (among the files this run read) entries of
+        packages that no longer exist, atomically, each merged with the file as it is now."""
         if not self._fresh or not prepare(self.base):
             return
         with contextlib.suppress(OSError):
             os.unlink(self.folder / "packages.json")  # where pkgtool 0.1 kept every entry
-        gone = {name for name, pack in self._packs.items()
+        gone = {name for name, (_, pack) in self._packs.items()
                 if any(root not in self._looked and not os.path.isdir(root) for root in pack)}
         for name in sorted(gone | {pack_of(root) for root in self._fresh}):
             path = self.folder / name
-            others = self._packs[name] if _identity(path) == self._loaded[name] else _load(path)
+            identity, read = self._pack(name)
+            others = read if _identity(path) == identity else _load(path)
             entries = {root: entry for root, entry in others.items()
                        if root not in self._fresh and os.path.isdir(root)}
             entries.update((root, entry) for root, entry in self._fresh.items()
                            if pack_of(root) == name)
             write_atomically(self.folder, name, json.dumps(
                 {"schema": SCHEMA, "entries": entries}, separators=(",", ":")))
+
+    def _pack(self, name: str) -> tuple[tuple[int, int, int] | None, dict[str, Any]]:
+        """The file ``name`` of ``lint/`` as this run first read it."""
+        read = self._packs.get(name)
+        if read is None:
+            path = self.folder / name
+            read = self._packs[name] = (_identity(path), _load(path))
+        return read
 
 
 def pack_of(root: str) -> str:
@@ -280,26 +287,6 @@ def _hash_files(root: Path, old: dict[str, Any], old_taken: Any, read: bool,
 
 def _digest(parts: list[Any]) -> str:
     return hashlib.sha256(json.dumps(parts, separators=(",", ":")).encode()).hexdigest()
-
-
-def _index_record(package: WorkspacePackage) -> list[Any]:
-    return [package.name, {kind: sorted(names) for kind, names in package.interfaces.items()},
-            sorted(package.modules)]
-
-
-def _index_entry(stored: Any) -> WorkspacePackage | None:
-    """The :class:`WorkspacePackage` :func:`_index_record` stored; None when it is not one."""
-    try:
-        name, interfaces, modules = stored
-        if isinstance(name, str) and isinstance(interfaces, dict) and \
-                isinstance(modules, list) and all(isinstance(m, str) for m in modules) and \
-                all(isinstance(k, str) and isinstance(v, list) and
-                    all(isinstance(n, str) for n in v) for k, v in interfaces.items()):
-            return WorkspacePackage(name, {k: frozenset(v) for k, v in interfaces.items()},
-                                    frozenset(modules))
-    except (TypeError, ValueError):
-        pass
-    return None
 
 
 def _settings_parts(settings: Settings) -> list[Any]:

@@ -87,7 +87,7 @@ def _run(paths: Sequence[str], options: LintOptions, cwd: Path | None,
          witness: Witness | None = None) -> LintResult:
     here = Path(os.path.abspath(cwd or Path.cwd()))
     hint = witness.hint() if witness is not None else None
-    found = hint[0] if hint is not None else discover(paths, cwd=here)
+    found = hint.found if hint is not None else discover(paths, cwd=here)
     if found.missing:
         return LintResult(ExitCode.USAGE, errors=tuple(
             f"Path `{p}` does not exist. Check the spelling, or run from another folder."
@@ -114,13 +114,18 @@ def _run(paths: Sequence[str], options: LintOptions, cwd: Path | None,
                                  for root in found.packages)  # else a package above is read
     cache = _open_cache(options, here)
     scans = {} if cache is None or options.fix else \
-        hint[1] if hint is not None else _scans(found.packages)
+        hint.scans if hint is not None else _scans(found.packages)
+    reused = hint.reused if hint is not None and cache is not None else {}
     if witness is not None:
         witness.found(found, scans)
     workspace = workspace_index(
         found.packages, [here / p for p in paths or ["."] if (here / p).is_dir()],
         {root: [path for path, _ in listed] for root, listed in scans.items()},
-        cache.indexed(scans) if cache is not None else None)
+        {**cache.indexed({root: scans[root] for root in scans if root not in reused}),
+         **{root: hint.index[root] for root in reused}} if cache is not None else None)
+    if hint is not None and any(workspace[root] != hint.index.get(root)
+                                for root in found.packages if root not in reused):
+        reused = {}  # what the others see of a changed package changed: look each one up
     if cache is not None:
         cache.bind(workspace)
     jobs = [(root, _label(root, here), setting) for root, setting in zip(found.packages, settings)]
@@ -132,7 +137,8 @@ def _run(paths: Sequence[str], options: LintOptions, cwd: Path | None,
     notes += refused
     failing = False
     outcomes = _check_all(jobs, workspace) if cache is None else \
-        _cached(jobs, workspace, cache, scans)
+        _cached(jobs, workspace, cache, scans, reused)
+    checked: dict[str, tuple[str, list[Finding]]] = {}
     for (root, label, setting), (outcome, entry) in zip(jobs, outcomes):
         if entry is not None and cache is not None:
             cache.keep(entry)
@@ -140,6 +146,7 @@ def _run(paths: Sequence[str], options: LintOptions, cwd: Path | None,
             errors.append(outcome)
             labels.append(PackageLabel(root.name, label))
             continue
+        checked[str(root)] = outcome
         name, mine = outcome
         labels.append(PackageLabel(name, label))
         if options.hide_info:
@@ -148,6 +155,8 @@ def _run(paths: Sequence[str], options: LintOptions, cwd: Path | None,
         findings.extend(mine)
     if cache is not None:
         cache.save()
+    if witness is not None:
+        witness.checked(None if errors else checked, workspace)
     internal = bool(errors) or any(f.internal for f in findings)
     code = (ExitCode.INTERNAL if internal else
             ExitCode.FINDINGS if failing and not options.exit_zero else ExitCode.OK)
@@ -255,17 +264,23 @@ def _scans(roots: Sequence[Path]) -> dict[Path, Scan]:
 
 
 def _cached(jobs: list[Job], workspace: Workspace, cache: LintCache,
-            scans: Mapping[Path, Scan]) -> Iterator[Checked]:
-    """Each job's outcome in order: entries whose files kept their sizes and times (in
-    ``scans`` when given) come from the cache here; the others are looked up (reading files)
-    and checked by :func:`_check`, in the worker processes when there are enough of them."""
-    probes = [cache.lookup(root, setting, read=False, scanned=scans.get(root))
+            scans: Mapping[Path, Scan], reused: Mapping[Path, Outcome]) -> Iterator[Checked]:
+    """Each job's outcome in order: ``reused`` ones (the last run's, see
+    :class:`pkgtool.cache.replay.Hint`) as they are; entries whose files kept their sizes and
+    times (in ``scans`` when given) from the cache here; the others are looked up (reading
+    files) and checked by :func:`_check`, in the worker processes when there are enough of
+    them."""
+    probes = [None if root in reused else
+              cache.lookup(root, setting, read=False, scanned=scans.get(root))
               for root, _, setting in jobs]
-    fresh = _check_all([job for job, probe in zip(jobs, probes) if probe is None or
-                        probe.hit is None], workspace, cache)
-    for (_, label, _), probe in zip(jobs, probes):
-        yield (_relabelled(probe, label), None) if probe is not None and probe.hit \
-            else next(fresh)
+    fresh = _check_all([job for job, probe in zip(jobs, probes) if job[0] not in reused and
+                        (probe is None or probe.hit is None)], workspace, cache)
+    for (root, label, _), probe in zip(jobs, probes):
+        if root in reused:
+            yield reused[root], None
+        else:
+            yield (_relabelled(probe, label), None) if probe is not None and probe.hit \
+                else next(fresh)
 
 
 def _relabelled(found: Lookup, label: str) -> Outcome:

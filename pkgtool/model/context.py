@@ -53,11 +53,22 @@ class Context:
         """The workspace package whose Python package ``module`` is, if any: one installing a
         Python package of that name, else an interface package of that name (rosidl generates
         the Python package ``<name>`` holding its ``msg``, ``srv`` and ``action`` modules)."""
-        installing = next((p.name for p in self.workspace.values() if module in p.modules), None)
+        installing = _installers(self.workspace).get(module)
         if installing is not None:
             return installing
         named = self.workspace.get(module)
         return module if named is not None and named.interfaces else None
+
+
+@per_object(4)
+def _installers(workspace: Mapping[str, WorkspacePackage]) -> dict[str, str]:
+    """Each Python package the ``workspace`` installs, by the first package installing it:
+    worked out once per workspace, not once per import looked up (a scan of every package)."""
+    found: dict[str, str] = {}
+    for package in workspace.values():
+        for module in package.modules:
+            found.setdefault(module, package.name)
+    return found
 
 
 def interface_file(path: str) -> tuple[str, str] | None:
@@ -158,7 +169,8 @@ def workspace_index(roots: Iterable[Path], searched: Iterable[Path] = (),
 
     everything = set(roots)
     walked = tuple(searched)
-    for source in {colcon_src(root) for root in everything} - {None}:
+    above = {root.parent: root for root in everything}  # siblings share their colcon src
+    for source in {colcon_src(root) for root in above.values()} - {None}:
         assert source is not None
         if not any(source == top or top in source.parents for top in walked):
             everything.update(discover([str(source)], cwd=source).packages)

@@ -45,8 +45,14 @@ class Rule:
     severity: Severity
     fix: str
     check: Check
-    doc: str
     default_enabled: bool = True
+
+    @property
+    def doc(self) -> str:
+        """The check's docstring, dedented (worked out when asked: a lint run never asks)."""
+        import inspect
+
+        return inspect.cleandoc(self.check.__doc__ or "")
 
     @property
     def family(self) -> str:
@@ -100,16 +106,10 @@ def rule(
         for other in _RULES.values():
             if (other.code == code or other.name == name) and other.check is not check:
                 raise ValueError(f"rule {code} {name} clashes with {other.code} {other.name}")
-        _RULES[code] = Rule(code, name, severity, fix, check, _dedent(doc), default_enabled)
+        _RULES[code] = Rule(code, name, severity, fix, check, default_enabled)
         return check
 
     return register
-
-
-def _dedent(doc: str) -> str:
-    import inspect
-
-    return inspect.cleandoc(doc)
 
 
 def load_all() -> dict[str, Rule]:

@@ -170,17 +170,32 @@ def test_corrupt_or_foreign_entries_are_ignored_and_rewritten(tmp_path: Path) ->
 
 
 def test_entries_of_other_runs_are_kept_and_of_removed_packages_dropped(tmp_path: Path) -> None:
-    files = {f"src/{name}/{path}": text for name in ("one", "two")
+    ws = tmp_path / "ws"
+    # A removed package's entry goes when the cache file holding it is written again.
+    one, two = _sharing_a_cache_file(ws / "src")
+    files = {f"src/{name}/{path}": text for name in (one, two)
              for path, text in correct_package_files(name).items()}
-    ws = write_tree(tmp_path / "ws", files)
-    _lint(ws, "src/one")
-    _lint(ws, "src/two")
-    roots = {str(ws / "src" / "one"), str(ws / "src" / "two")}
+    write_tree(ws, files)
+    _lint(ws, f"src/{one}")
+    _lint(ws, f"src/{two}")
+    roots = {str(ws / "src" / one), str(ws / "src" / two)}
     assert set(_entries(ws / ".pkgtool_cache")) == roots
-    shutil.rmtree(ws / "src" / "one")
-    (ws / "src" / "two" / "two" / "new.py").write_text('"""New."""\n')
-    _lint(ws, "src/two")
-    assert set(_entries(ws / ".pkgtool_cache")) == {str(ws / "src" / "two")}
+    shutil.rmtree(ws / "src" / one)
+    (ws / "src" / two / two / "new.py").write_text('"""New."""\n')
+    _lint(ws, f"src/{two}")
+    assert set(_entries(ws / ".pkgtool_cache")) == {str(ws / "src" / two)}
+
+
+def _sharing_a_cache_file(source: Path) -> tuple[str, str]:
+    """Two package names whose folders in ``source`` have their entries in one cache file."""
+    seen: dict[str, str] = {}
+    for number in range(100):
+        name = f"pkg_{number}"
+        pack = pack_of(str(source / name))
+        if pack in seen:
+            return seen[pack], name
+        seen[pack] = name
+    raise AssertionError("16 cache files hold 100 names")
 
 
 def test_the_cache_folder_is_chosen_by_option_environment_or_project(tmp_path: Path) -> None:

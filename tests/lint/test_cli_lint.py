@@ -118,12 +118,13 @@ def test_list_rules_shows_every_rule(tmp_path: Path) -> None:
 @pytest.fixture()
 def crashing_rule() -> Iterator[str]:
     def explode(package: object) -> Iterator[object]:
+        """Explodes."""
         raise RuntimeError("boom")
         yield  # pragma: no cover
 
     load_all()
     _RULES["SYN999"] = Rule("SYN999", "test-explosion", Severity.WARNING, "Do nothing",
-                            explode, "Explodes.")
+                            explode)
     registry.index()["SYN999"] = RuleInfo("SYN999", "test-explosion", Severity.WARNING, True,
                                           "none")
     yield "SYN999"

@@ -223,3 +223,49 @@ def test_after_an_edit_the_packages_and_their_files_come_from_the_record(
     walks.clear()
     (workspace / "src" / "talker" / "talker" / "new.py").write_text("")
     assert lint()[:2] == lint(no_cache=True)[:2] and walks  # a folder changed: walked again
+
+
+def test_after_an_edit_only_the_changed_packages_are_checked(
+        workspace: Path, lint: Lint, monkeypatch: pytest.MonkeyPatch) -> None:
+    from pkgtool.cache.store import LintCache
+
+    looked: list[str] = []
+    real = LintCache.lookup
+    monkeypatch.setattr(LintCache, "lookup", lambda self, root, *a, **k:
+                        looked.append(root.name) or real(self, root, *a, **k))
+    lint()
+    talker = workspace / "src" / "talker"
+    steps: list[tuple[Callable[[], object], list[str]]] = [
+        (lambda: (workspace / "src" / "listener" / "listener" / "use.py").write_text(
+            "import talker\nx = z\n"), ["listener"]),
+        (lambda: (talker / "talker" / "__init__.py").write_text('"""Talker."""\n'), ["talker"]),
+        # What the listener sees of the talker changes: every package is looked up again.
+        (lambda: (talker / "package.xml").write_text(
+            (talker / "package.xml").read_text().replace("<name>talker<", "<name>speaker<")),
+         ["listener", "talker"])]
+    for change, expected in steps:
+        _pause()
+        change()
+        looked.clear()
+        code, report, replayed = lint()
+        assert not replayed and sorted(set(looked)) == expected
+        assert (code, report) == lint(no_cache=True)[:2]
+        assert lint() == (code, report, True)
+
+
+def test_a_changed_pyproject_toml_in_a_package_checks_every_package_again(
+        workspace: Path, lint: Lint, monkeypatch: pytest.MonkeyPatch) -> None:
+    from pkgtool.cache.store import LintCache
+
+    settings = workspace / "src" / "talker" / "pyproject.toml"
+    settings.write_text("[tool.pkgtool]\n")
+    _pause()
+    lint()
+    looked: list[str] = []
+    real = LintCache.lookup
+    monkeypatch.setattr(LintCache, "lookup", lambda self, root, *a, **k:
+                        looked.append(root.name) or real(self, root, *a, **k))
+    settings.write_text('[tool.pkgtool]\nignore = ["PYC001"]\n')
+    code, report, replayed = lint()
+    assert not replayed and sorted(set(looked)) == ["listener", "talker"]
+    assert (code, report) == lint(no_cache=True)[:2]
