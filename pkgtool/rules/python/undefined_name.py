@@ -28,8 +28,10 @@ def undefined_name(package: Package) -> Iterator[Hit]:
     name) and reports its "undefined name" messages, with pyflakes' own handling of builtins,
     `__all__`, star imports, conditional definitions and `except NameError` guards. Code that
     never runs on Python 3 is skipped: branches of `if sys.version_info < (3,):`, `if
-    six.PY2:` or of a module constant set once to False, and annotations of assignments in a
-    function body, which Python never evaluates.
+    six.PY2:` or of a module constant set once to False, and annotations Python never
+    evaluates: those of assignments in a function body, a string in an annotation (a forward
+    reference, `Optional['Pose']`), and every annotation under `from __future__ import
+    annotations`.
 
     ## Why is this bad?
     The line raises `NameError` when it runs, which for a node usually means inside a
@@ -83,15 +85,32 @@ def _pyflakes_undefined(path: str, tree: ast.Module) -> list[tuple[int, int, str
 
 
 def _unevaluated_annotations(tree: ast.Module) -> list[tuple[tuple[int, int], tuple[int, int]]]:
-    """Where annotations of assignments inside functions stand (PEP 526: never evaluated)."""
+    """Where annotations Python never evaluates stand: every annotation under ``from
+    __future__ import annotations`` (PEP 563), that of an assignment inside a function
+    (PEP 526), and a string in any annotation (a forward reference, ``Optional['Pose']``)."""
     ranges: list[tuple[tuple[int, int], tuple[int, int]]] = []
-    if not any(isinstance(node, ast.AnnAssign) for node in nodes_of(tree)):
-        return ranges
-    for function in nodes_of(tree):
-        if isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
-            for node in ast.walk(function):
-                if isinstance(node, ast.AnnAssign):
-                    note = node.annotation
-                    ranges.append(((note.lineno, note.col_offset),
-                                   (note.end_lineno or note.lineno, note.end_col_offset or 0)))
+    postponed = any(isinstance(node, ast.ImportFrom) and node.module == "__future__"
+                    and any(alias.name == "annotations" for alias in node.names)
+                    for node in tree.body)
+    in_functions = {id(node) for function in nodes_of(tree)
+                    if isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef))
+                    for node in ast.walk(function) if isinstance(node, ast.AnnAssign)}
+    for node in nodes_of(tree):
+        if isinstance(node, ast.AnnAssign):
+            note: ast.expr | None = node.annotation
+            whole = postponed or id(node) in in_functions
+        elif isinstance(node, ast.arg):
+            note, whole = node.annotation, postponed
+        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            note, whole = node.returns, postponed
+        else:
+            continue
+        if note is None:
+            continue
+        parts = [note] if whole else [inner for inner in ast.walk(note)
+                                      if isinstance(inner, ast.Constant)
+                                      and isinstance(inner.value, str)]
+        ranges.extend(((part.lineno, part.col_offset),
+                       (part.end_lineno or part.lineno, part.end_col_offset or 0))
+                      for part in parts)
     return ranges
