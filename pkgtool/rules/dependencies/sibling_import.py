@@ -8,6 +8,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import keys_for_import, stdlib_modules
 from pkgtool.model.installed import installed_modules
+from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import ANY, declared, installed_code
 from pkgtool.rules.registry import rule
@@ -25,7 +26,9 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     folder and is not itself installed as a top-level module. Names of the standard library,
     of known third-party modules and of package.xml's dependencies are left alone, and so is
     a module importing its own name (`import rclpy` in `rclpy.py`): Python 3 imports are
-    absolute, so those mean the real package. Fallbacks (`except ImportError:`, `if '.' in
+    absolute, so those mean the real package, and so does the same import in the module's
+    neighbours (`from record_impl import Base` next to a `record_impl.py` that wraps a compiled
+    `record_impl` extension and imports it). Fallbacks (`except ImportError:`, `if '.' in
     __name__:`) are guarded and never reported.
 
     ## Why is this bad?
@@ -50,6 +53,7 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     if installed is None:
         return
     names = {file: name for name, file in installed.items()}
+    modules = {module.path: module for module in package.modules}
     top_level = {name.split(".")[0] for name in installed}
     skip = top_level | stdlib_modules(package.context.distro) | declared(package, ANY).keys()
     for module in installed_code(package):
@@ -61,11 +65,19 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
         own_name = posixpath.basename(module.path)[:-3]
         for imported in module.imports:
             top = imported.top_level
-            if (not top or imported.guarded or top in skip or top == own_name
-                    or keys_for_import(top, package.context.distro)) or not (
-                    package.has_file(f"{folder}/{top}.py") or
-                    package.has_file(f"{folder}/{top}/__init__.py")):
+            sibling = next((f for f in (f"{folder}/{top}.py", f"{folder}/{top}/__init__.py")
+                            if package.has_file(f)), None) if top else None
+            if (sibling is None or imported.guarded or top in skip or top == own_name
+                    or keys_for_import(top, package.context.distro)
+                    or _imports_itself(modules.get(f"{folder}/{top}.py"), top)):
                 continue
             yield Hit(imported.span, f"`{top}` is a module next to `{module.path}`, not a "
                                      f"top-level module: the import fails once installed",
                       f"Import `{parent}.{top}` (or `.{top}`) instead")
+
+
+def _imports_itself(module: PythonModule | None, name: str) -> bool:
+    """True when ``module`` (the file ``name.py``; a package folder importing its own name is
+    DEP007's mistake again) imports the top-level ``name``: another module of that name exists
+    (a compiled extension the file wraps), which its neighbours mean too."""
+    return module is not None and any(i.top_level == name for i in module.imports)
