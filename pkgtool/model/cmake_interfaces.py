@@ -7,6 +7,10 @@ its kind), and some list files a variable from another package holds
 (``${test_interface_files_MSG_FILES}`` after ``find_package(test_interface_files)``): then
 the package defines interfaces no file of its tree shows, and its set of interfaces is open.
 
+A file may take part of its list from a CMake file of the package it ``include()``s (the
+variables are shared; ``${CMAKE_CURRENT_LIST_DIR}`` there is that file's folder), and from
+``file(GLOB ...)`` patterns, which match the package's files.
+
 The same reading gives the Python packages ``ament_python_install_package`` installs.
 """
 
@@ -14,6 +18,8 @@ from __future__ import annotations
 
 import posixpath
 import re
+from collections.abc import Callable, Iterable
+from fnmatch import fnmatchcase
 
 from pkgtool.records import record
 
@@ -30,6 +36,9 @@ _KEYWORDS = frozenset({"DEPENDENCIES", "LIBRARY_NAME", "SKIP_INSTALL", "ADD_LINT
 _KINDS = ("msg", "srv", "action")
 _SUFFIXES = (".msg", ".srv", ".action", ".idl")
 _DEPTH = 8
+_GLOB_OPTIONS = {"RELATIVE": 1, "LIST_DIRECTORIES": 1, "CONFIGURE_DEPENDS": 0,
+                 "FOLLOW_SYMLINKS": 0}
+"""``file(GLOB ...)`` options, with how many values each takes: the rest are patterns."""
 _FOUND = "<find_package>"
 """Where :func:`_variables` keeps the names of the packages the file finds."""
 
@@ -48,10 +57,11 @@ class ListedInterfaces:
     open: bool = False
 
 
-def listed_interfaces(text: str) -> ListedInterfaces:
-    """The interface files the ``rosidl_generate_interfaces`` calls of ``text`` list."""
+def listed_interfaces(text: str, files: Iterable[str] = ()) -> ListedInterfaces:
+    """The interface files the ``rosidl_generate_interfaces`` calls of ``text`` list, its
+    globs matched against ``files`` (the package's)."""
     calls = _calls(text)
-    variables = _variables(calls)
+    variables = _variables(calls, frozenset(files))
     files: set[str] = set()
     is_open = False
     for name, args in calls:
@@ -73,11 +83,39 @@ def installed_python_packages(text: str) -> frozenset[str]:
     its source (``ament_python_install_package(tb_tools PACKAGE_DIR python/tb_tools)``).
     """
     calls = _calls(text)
-    variables = _variables(calls)
+    variables = _variables(calls, frozenset())
     return frozenset(value for name, args in calls
                      if name == "ament_python_install_package" and args
                      for value in _expand(args[0], variables, _DEPTH)
                      if value and value.isidentifier())
+
+
+def with_included(text: str, read: Callable[[str], str | None]) -> str:
+    """``text`` (a CMakeLists.txt) followed by the package's CMake files it ``include()``s,
+    literally or through its variables (theirs too), as ``read`` (a package-relative path ->
+    the text, or None) gives them; ``${CMAKE_CURRENT_LIST_DIR}`` in each stands for its folder.
+    """
+    seen: set[str] = set()
+    parts = [text]
+    for part in parts:
+        for path in included_files(part):
+            included = read(path) if path not in seen else None
+            seen.add(path)
+            if included is not None and len(seen) <= _DEPTH:
+                folder = posixpath.dirname(path)
+                parts.append(included.replace("${CMAKE_CURRENT_LIST_DIR}", folder or "."))
+    return "\n".join(parts)
+
+
+def included_files(text: str) -> list[str]:
+    """The package-relative paths of the ``.cmake`` files ``text`` includes (modules such as
+    ``include(GNUInstallDirs)`` are CMake's own)."""
+    calls = _calls(text)
+    variables = _variables(calls, frozenset())
+    return [posixpath.normpath(value.lstrip("/")) for name, args in calls
+            if name == "include" and args for value in _expand(args[0], variables, _DEPTH)
+            if value and value.endswith(".cmake") and "${" not in value
+            and not posixpath.normpath(value.lstrip("/")).startswith("..")]
 
 
 def _calls(text: str) -> list[tuple[str, list[str]]]:
@@ -110,8 +148,10 @@ def _interface_args(args: list[str]) -> list[str]:
     return listed
 
 
-def _variables(calls: list[tuple[str, list[str]]]) -> dict[str, list[str] | None]:
-    """Variables the file sets: their values, or None for values only a build knows (globs)."""
+def _variables(calls: list[tuple[str, list[str]]], files: frozenset[str]
+               ) -> dict[str, list[str] | None]:
+    """Variables the file sets: their values (a glob's: the ``files`` it matches), or None
+    for values only a build knows (a ``foreach(... RANGE ...)``)."""
     found: dict[str, list[str] | None] = {}
     for name, args in calls:
         if name == "set" and args:
@@ -119,14 +159,56 @@ def _variables(calls: list[tuple[str, list[str]]]) -> dict[str, list[str] | None
         elif name == "list" and len(args) > 1 and args[0] == "APPEND":
             found.setdefault(args[1], []).extend(args[2:])
         elif name == "file" and len(args) > 1 and args[0] in ("GLOB", "GLOB_RECURSE"):
-            found[args[1]] = None
+            found[args[1]] = _globbed(args[2:], files, args[0] == "GLOB_RECURSE")
         elif name == "foreach" and args:
-            found[args[0]] = None
+            found[args[0]] = _loop_values(args[1:])
         elif name == "project" and args:
             found["PROJECT_NAME"] = [args[0]]
         elif name == "find_package" and args:
             found.setdefault(_FOUND, []).append(args[0])
     return found
+
+
+def _globbed(args: list[str], files: frozenset[str], recurse: bool) -> list[str]:
+    """The package files the patterns of a ``file(GLOB ...)`` match, package-relative (a
+    pattern with a variable other than the package's folder matches nothing known)."""
+    patterns: list[str] = []
+    skip = 0
+    for arg in args:
+        if skip:
+            skip -= 1
+        elif arg in _GLOB_OPTIONS:
+            skip = _GLOB_OPTIONS[arg]
+        else:
+            for name in _SOURCE_DIRS:
+                arg = arg.replace(f"${{{name}}}", "")
+            if "${" not in arg:
+                patterns.append(posixpath.normpath(arg.lstrip("/")))
+    return [path for path in sorted(files)
+            if any(_matches(path, pattern, recurse) for pattern in patterns)]
+
+
+def _matches(path: str, pattern: str, recurse: bool) -> bool:
+    """True when ``pattern`` matches ``path``; with ``recurse`` (``GLOB_RECURSE``) its folder
+    part matches the file's folder or one above it."""
+    folder, name = posixpath.split(path)
+    where, what = posixpath.split(pattern)
+    if not fnmatchcase(name, what):
+        return False
+    while not fnmatchcase(folder, where):
+        if not recurse or not folder:
+            return False
+        folder = posixpath.dirname(folder)
+    return True
+
+
+def _loop_values(args: list[str]) -> list[str] | None:
+    """The values a ``foreach`` variable takes (``IN LISTS`` names lists); None for a range."""
+    if args[:1] == ["RANGE"]:
+        return None
+    if args[:2] == ["IN", "LISTS"]:
+        return [f"${{{name}}}" for name in args[2:] if name != "ITEMS"]
+    return [arg for arg in args if arg not in ("IN", "ITEMS")]
 
 
 def _found_by_package(name: str, variables: dict[str, list[str] | None]) -> bool:
@@ -138,8 +220,7 @@ def _expand(arg: str, variables: dict[str, list[str] | None], depth: int
             ) -> list[str | None]:
     """The values ``arg`` stands for; None for one that comes from outside the file.
 
-    Variables the file sets by globbing stand for no listed file: a glob lists files of the
-    package's own folders, which the caller sees anyway. A variable nobody sets is empty,
+    A variable nobody sets is empty,
     unless its name is that of a package the file finds (``find_package(Pkg)`` sets
     ``Pkg_...``).
     """
@@ -160,15 +241,16 @@ def _expand(arg: str, variables: dict[str, list[str] | None], depth: int
     return result
 
 
-def with_listed(found: dict[str, frozenset[str]], cmake: str | None
+def with_listed(found: dict[str, frozenset[str]], cmake: str | None, files: Iterable[str] = ()
                 ) -> dict[str, frozenset[str]] | None:
-    """``found`` (kind -> names of the interface folders) and what ``cmake`` lists besides.
+    """``found`` (kind -> names of the interface folders) and what ``cmake`` lists besides
+    (its globs matched against ``files``, the package's).
 
     None when the list is open: the package defines interfaces no file of its tree shows.
     """
     if cmake is None or "rosidl_generate_interfaces" not in cmake:
         return found
-    listed = listed_interfaces(cmake)
+    listed = listed_interfaces(cmake, files)
     if listed.open:
         return None
     merged = dict(found)

@@ -20,7 +20,8 @@ from collections.abc import Iterable, Mapping
 from pathlib import Path
 
 from pkgtool.knowledge.tables import DEFAULT_DISTRO
-from pkgtool.model.cmake_interfaces import installed_python_packages, with_listed
+from pkgtool.model.cmake_interfaces import (installed_python_packages, with_included,
+                                            with_listed)
 from pkgtool.model.files import list_files
 from pkgtool.model.memo import per_object
 from pkgtool.records import field, record
@@ -112,7 +113,8 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
     kinds: dict[str, set[str]] = {}
     modules: set[str] = set()
     cmake = None
-    for path in list_files(root, _index_depth) if files is None else files:
+    listed = tuple(list_files(root, _index_depth) if files is None else files)
+    for path in listed:
         parts = path.split("/")
         if parts[-1] == "__init__.py" and _is_module(parts[:-1]):
             modules.add(parts[-2])
@@ -124,8 +126,9 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
             cmake = _read(os.path.join(base, path))
     folders = {kind: frozenset(names) for kind, names in kinds.items()}
     if cmake is not None:
+        cmake = with_included(cmake, lambda path: _read(os.path.join(base, path)))
         modules |= installed_python_packages(cmake)
-    return WorkspacePackage(name, with_listed(folders, cmake) or {}, frozenset(modules))
+    return WorkspacePackage(name, with_listed(folders, cmake, listed) or {}, frozenset(modules))
 
 
 def _is_module(folders: list[str]) -> bool:

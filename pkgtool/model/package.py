@@ -6,6 +6,7 @@ import re
 from collections.abc import Callable
 from pathlib import Path
 
+from pkgtool.model.cmake_interfaces import with_included
 from pkgtool.model.context import Context
 from pkgtool.model.files import TextFile, list_files, read_text
 from pkgtool.model.launch import LaunchFile, is_launch_file, parse_launch, python_folders
@@ -137,6 +138,9 @@ def load_package(root: Path, context: Context | None = None) -> Package:
                   "CMakeLists.txt"):  # the interfaces it generates
         if other in files:
             text_of(other)
+    if "CMakeLists.txt" in texts:  # the CMake files it includes, read as it reads them
+        with_included(texts["CMakeLists.txt"], lambda path: text_of(path) if path in files
+                      else None)
     suppressions: dict[tuple[str, int], frozenset[str]] = {}
     for relpath, text in texts.items():
         suppressions.update(_suppressions(relpath, text))

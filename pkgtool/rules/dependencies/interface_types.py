@@ -1,7 +1,8 @@
 """What DEP008 and DEP009 share: the interfaces a package name stands for, where known.
 
 Known are the package's own ``msg/``, ``srv/`` and ``action/`` folders with the other files
-its CMakeLists.txt passes to ``rosidl_generate_interfaces`` (nothing is known of a package
+its CMakeLists.txt (or a CMake file of the package it includes) passes to
+``rosidl_generate_interfaces`` (nothing is known of a package
 that passes files a found package lists), those of the other packages of the workspace, and
 (for a jazzy target) the shipped table of the Jazzy interface wheels
 (:mod:`pkgtool.knowledge.interfaces`), in that order. Anything else is unknown: no finding. A
@@ -15,7 +16,7 @@ import ast
 
 from pkgtool.knowledge.interfaces import KINDS, Interfaces, interfaces_of
 from pkgtool.model.ast_nodes import nodes_of_class
-from pkgtool.model.cmake_interfaces import with_listed
+from pkgtool.model.cmake_interfaces import with_included, with_listed
 from pkgtool.model.context import interface_file
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
@@ -33,8 +34,10 @@ def own_interfaces(package: Package) -> Interfaces | None:
     found: dict[str, set[str]] = {}
     for kind, name in filter(None, map(interface_file, package.files)):
         found.setdefault(kind, set()).add(name)
+    cmake = package.texts.get("CMakeLists.txt")
     return with_listed({kind: frozenset(names) for kind, names in found.items()},
-                       package.texts.get("CMakeLists.txt"))
+                       None if cmake is None else with_included(cmake, package.texts.get),
+                       package.files)
 
 
 def ros1_layout(interfaces: Interfaces) -> Interfaces:
