@@ -9,7 +9,9 @@ with the same command line, folder, interpreter, pkgtool and colour looks at eac
 recorded report and exits with the recorded code: nothing is read, indexed or checked. When
 only the contents of files changed (every folder is as recorded), the run goes on, but the
 folders are not listed again: their entries come from the record, with the files' statuses
-just examined (:data:`Listings`; the lint cache then rechecks the packages whose files changed).
+just examined (:data:`Listings`), and so do the outcomes of the packages whose files all kept
+their times (:class:`Hint`): only the packages holding a changed file are looked up in the lint
+cache, and checked when it has no entry for them.
 
 Folders are compared by change and modification time (``st_ctime_ns``: adding, removing or
 renaming an entry, or a permission change, sets it, and nothing can set it back; Windows gives
@@ -19,12 +21,14 @@ change time. A record is not kept when one of those times is too close to the st
 granularity would be invisible; the next run records again. A folder holding a symbolic link is
 always listed (what the link points to may change without the folder changing).
 
-Three kinds of JSON files in ``lint/``, each written atomically and starting with a CRC-32 of
+Four kinds of JSON files in ``lint/``, each written atomically and starting with a CRC-32 of
 its content (a damaged or foreign one is ignored and replaced), the newest :data:`KEPT` of each
 kept: ``run-<hash of the stamp>.json`` (the times and what was shown),
 ``layout-<check>.json`` (the folders, their entries, the other files and absent paths: written
-once, shared by the records of later runs that read the same) and ``walk-<check>.json`` (the
-packages discovery found and each one's files, for :meth:`Witness.hint`).
+once, shared by the records of later runs that read the same), ``walk-<check>.json`` (the
+packages discovery found and each one's files, for :meth:`Witness.hint`) and
+``outcomes-<check>.json`` (each package's name, findings, workspace-index entry and a hash of
+its files' times, with one of everything else the run read).
 """
 
 from __future__ import annotations
@@ -147,13 +151,15 @@ class Listings(Mapping[str, "tuple[os.stat_result, list[RecordedEntry]]"]):
     statuses :func:`replayed` just examined; entries are made when a folder is asked for."""
 
     def __init__(self, layout: dict[str, Any], statuses: list[os.stat_result],
-                 outcomes: str | None = None) -> None:
+                 times: list[tuple[int, int, int]], outcomes: str | None = None) -> None:
         self.layout = layout
         """The record's layout (its folders and their entries, its other files, its absent
         paths), which a run that lists nothing else records again as it is."""
         self.statuses = statuses
         """Every folder's status then its files', in the layout's order, then the other
         files'."""
+        self.times = times
+        """What a record compares of each of those statuses (:data:`_TIMES`)."""
         self.outcomes = outcomes
         """The check of the record's outcomes file, if it has one."""
         self._at: dict[str, tuple[int, list[str], list[str]]] = {}
@@ -211,6 +217,9 @@ class Witness:
         """Folders whose entries an earlier record gives (:func:`replayed`)."""
         self.relayout = False
         """Write the layout again: some folder was listed, not known, or its walk is missing."""
+        self.hinted = False
+        """The run took what it would find from the record (:meth:`hint`): every known
+        folder counts as listed."""
         self.walked: tuple[Discovery, Mapping[Path, Scan]] | None = None
         """What the run found and the files of each package (:meth:`found`)."""
         self.positions: Positions | None = None
@@ -221,7 +230,7 @@ class Witness:
         self.recorded: dict[str, tuple[Outcome, list[Any]]] = {}
         """The outcomes :meth:`hint` gave for reuse, by package, with their rows in the
         record's outcomes file (written again as they are when the run used them)."""
-        self.times: tuple[int, dict[str, int]] | None = None
+        self.package_times: tuple[int, dict[str, int]] | None = None
         """:func:`_package_times` of the known layout's statuses, once worked out."""
 
     def hint(self) -> Hint | None:
@@ -247,7 +256,7 @@ class Witness:
                 IndexError):
             self.relayout = True
             return None
-        self.folders = {path: self.known.folder(path) for path in self.known}
+        self.hinted = True
         return Hint(found, scans, reused, index)
 
     def _recorded(self, roots: Mapping[str, Path]
@@ -262,18 +271,19 @@ class Witness:
         from pkgtool.findings import Finding
 
         recorded = _read(self.folder / _outcomes_name(self.known.outcomes), self.known.outcomes)
-        self.times = others, times = _package_times(self.positions, self.known.statuses)
+        others, times = _package_times(self.positions, self.known.times)
+        self.package_times = others, times
         if recorded["others"] != others:
             return {}, {}
         reused: dict[Path, Outcome] = {}
         index: dict[Path, WorkspacePackage] = {}
         for row in recorded["packages"]:
-            root, package_times, name, findings, entry = row
+            root, recorded_times, name, findings, entry = row
             package = index_entry(entry)
             if package is None or not isinstance(name, str):
                 raise ValueError("not an outcome")
             index[roots[root]] = package
-            if times[root] == package_times:
+            if times[root] == recorded_times:
                 found = decode(findings)
                 if not all(isinstance(finding, Finding) for finding in found):
                     raise ValueError("not findings")
@@ -324,7 +334,8 @@ class Witness:
         """Files (or their absence) the run looked at; those in a folder it listed are known
         by that folder (its change time tells when one appears or goes)."""
         for path in paths:
-            if os.path.dirname(path) in self.folders:
+            folder = os.path.dirname(path)
+            if folder in self.folders or self.hinted and folder in (self.known or ()):
                 continue
             try:
                 self.files[os.fspath(path)] = os.stat(path)
@@ -342,14 +353,23 @@ class Witness:
         except OSError:
             return
         layout = self._known_layout()
+        if layout is None and self.hinted:
+            assert self.known is not None
+            self.folders = {**{path: self.known.folder(path) for path in self.known},
+                            **self.folders}
         order = [path for path, *_ in layout["folders"]] if layout else list(self.folders)
-        statuses = [s for path in order for s in (self.folders[path].status,
-                                                  *self.folders[path].statuses)]
+        if layout and self.hinted:
+            statuses, times = self._known_statuses(layout)
+        else:
+            statuses = [s for path in order for s in (self.folders[path].status,
+                                                      *self.folders[path].statuses)]
+            times = list(map(_TIMES, statuses))
         statuses += self.files.values()
+        times += map(_TIMES, self.files.values())
         if not _settled(list(map(_CHANGED, statuses)), self.taken_ns):
             return
         if layout is None:
-            self.positions = self.times = None  # of the known layout's statuses, not these
+            self.positions = self.package_times = None  # the known layout's, not these
             self.recorded = {}
             layout = {"schema": SCHEMA,
                       "folders": [[path, folder.files, folder.folders, folder.linked]
@@ -365,10 +385,18 @@ class Witness:
                     "empty": list(self.walked[0].empty),
                     "scans": [[root, *files] for root, files in self.positions.items()]})
         record = {"schema": SCHEMA, "stamp": self.stamp, "layout": layout["id"],
-                  "times": hash(tuple(map(_TIMES, statuses))), "shown": list(shown),
-                  "outcomes": self._write_outcomes(statuses)}
+                  "times": hash(tuple(times)), "shown": list(shown),
+                  "outcomes": self._write_outcomes(times)}
         _write(self.folder, lambda _: _name(self.stamp), record)
         _prune(self.folder)
+
+    def _known_statuses(self, layout: dict[str, Any]
+                        ) -> tuple[list[os.stat_result], list[tuple[int, int, int]]]:
+        """The statuses of the known ``layout``'s folders and their files, as they were
+        before the run (its other files are looked at by the run), and their times."""
+        assert self.known is not None
+        end = len(self.known.statuses) - len(layout["files"])
+        return self.known.statuses[:end], self.known.times[:end]
 
     def _positions(self, order: list[str]) -> Positions | None:
         """Each package's files and their places in the statuses a check of the layout takes
@@ -386,7 +414,7 @@ class Witness:
         except KeyError:
             return None
 
-    def _write_outcomes(self, statuses: list[os.stat_result]) -> str | None:
+    def _write_outcomes(self, times: list[tuple[int, int, int]]) -> str | None:
         """Write each package's outcome with what tells whether its files changed; the file's
         check (None when some package has no outcome or its files are not all known)."""
         if self.outcomes is None or self.positions is None or \
@@ -394,9 +422,9 @@ class Witness:
             return None
         from pkgtool.cache.serial import encode, index_record
 
-        others, times = self.times or _package_times(self.positions, statuses)
+        others, each = self.package_times or _package_times(self.positions, times)
         packages = [self.recorded[root][1] if self.recorded.get(root, (None,))[0] is outcome
-                    else [root, times[root], outcome[0], encode(outcome[1]),
+                    else [root, each[root], outcome[0], encode(outcome[1]),
                           index_record(self.index[Path(root)])]
                     for root, outcome in self.outcomes.items()]
         return _write(self.folder, _outcomes_name, {"others": others, "packages": packages})
@@ -407,9 +435,13 @@ class Witness:
         if self.known is None or self.relayout:
             return None
         layout = self.known.layout
-        if len(layout["folders"]) != len(self.folders) or \
-                any(path not in self.folders for path, *_ in layout["folders"]) or \
-                layout["files"] != list(self.files) or layout["absent"] != sorted(self.absent):
+        if self.hinted:  # every known folder counts as listed: were the others known?
+            listed = all(path in self.known for path in self.folders)
+        else:
+            listed = len(layout["folders"]) == len(self.folders) and \
+                all(path in self.folders for path, *_ in layout["folders"])
+        if not listed or layout["files"] != list(self.files) or \
+                layout["absent"] != sorted(self.absent):
             return None
         return layout
 
@@ -440,9 +472,10 @@ def replayed(folder: Path, stamp: list[Any]) -> Shown | Listings | None:
         statuses, changed = _now(layout["folders"], layout["files"])
         if hash(tuple(changed)) != layout["folder_times"]:
             return None
-        if hash(tuple(map(_TIMES, statuses))) != record["times"]:
+        times = list(map(_TIMES, statuses))
+        if hash(tuple(times)) != record["times"]:
             outcomes = record.get("outcomes")
-            return Listings(layout, statuses, outcomes if isinstance(outcomes, str) and
+            return Listings(layout, statuses, times, outcomes if isinstance(outcomes, str) and
                             _CHECK.fullmatch(outcomes) else None)
         code, report, messages = record["shown"]
         if isinstance(code, int) and isinstance(report, str) and isinstance(messages, list) \
@@ -470,19 +503,19 @@ def _now(folders: list[list[Any]], files: list[str]
     return statuses, changed
 
 
-def _package_times(positions: Positions, statuses: Sequence[os.stat_result]
+def _package_times(positions: Positions, times: list[tuple[int, int, int]]
                    ) -> tuple[int, dict[str, int]]:
-    """What tells whether anything besides the packages' files changed (the statuses of
+    """What tells whether anything besides the packages' files changed (the :data:`_TIMES` of
     everything else, and of the packages' pyproject.toml files), and each package's files."""
-    times = list(map(_TIMES, statuses))
     inside: set[int] = set()
     settings: list[tuple[int, int, int]] = []
     each: dict[str, int] = {}
     for root, (paths, places) in positions.items():
         inside.update(places)
         each[root] = hash(tuple(map(times.__getitem__, places)))
-        settings += [times[at] for path, at in zip(paths, places)
-                     if path == _SETTINGS_FILE or path.endswith(f"/{_SETTINGS_FILE}")]
+        if _SETTINGS_FILE in "\n".join(paths):  # rare: look closer
+            settings += [times[at] for path, at in zip(paths, places)
+                         if path == _SETTINGS_FILE or path.endswith(f"/{_SETTINGS_FILE}")]
     others = [status for at, status in enumerate(times) if at not in inside]
     return hash((*others, *settings)), each
 

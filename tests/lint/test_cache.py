@@ -88,6 +88,11 @@ def test_findings_are_identical_with_and_without_cache_and_workers(corpus: Path)
     assert warm == serial
     assert list((corpus / ".pkgtool_cache" / "lint").glob("run-*.json")), "a replay record"
     assert _lint(corpus, jobs=1).stdout == serial  # replayed (tests/lint/test_replay.py)
+    for module in ("gen_001/gen_001/node_1.py", "gen_002/setup.py"):
+        with open(corpus / "src" / module, "a", encoding="utf-8") as stream:
+            stream.write("\nundefined_name\n")
+    edited = _lint(corpus, jobs=1).stdout  # only the edited packages are checked again
+    assert edited == _lint(corpus, "--no-cache", jobs=1).stdout != serial
 
 
 def test_an_edit_a_sibling_or_other_settings_invalidate(tmp_path: Path) -> None:
