@@ -183,13 +183,15 @@ def workspace_index(roots: Iterable[Path], searched: Iterable[Path] = (),
 
 
 def workspace_near(root: Path, index: Mapping[Path, WorkspacePackage]
-                   ) -> dict[str, WorkspacePackage]:
+                   ) -> Mapping[str, WorkspacePackage]:
     """The workspace the package at ``root`` sees, by name: a name several packages of the
     ``index`` share (two colcon workspaces linted in one run) is the package nearest ``root``
     (the deepest folder they share): its own workspace's, not another's. When several are
     equally near and differ (the name is in other workspaces only), only the name is known.
     """
     unique, shared = _names(index)
+    if not shared:  # the usual case: every package sees the same (shared: do not change it)
+        return unique
     near = dict(unique)
     for name, places in shared.items():
         depths = [(len(Path(os.path.commonpath((root, folder))).parts), package)
