@@ -15,6 +15,9 @@ from pkgtool.records import record
 
 _TREES = 64
 """How many trees' node lists stay: more than any package has modules being checked at once."""
+_SUBTREES = 1024
+"""How many parts' node lists stay: more than the functions and class statements of a package,
+which several rules walk one after another."""
 
 
 @record
@@ -71,12 +74,13 @@ def child_nodes(node: ast.AST) -> list[ast.AST]:
     return found
 
 
-def subtree(node: ast.AST) -> list[ast.AST]:
-    """``list(ast.walk(node))`` (breadth first), for a part of a tree walked once."""
+@per_object(_SUBTREES)
+def subtree(node: ast.AST) -> tuple[ast.AST, ...]:
+    """``tuple(ast.walk(node))`` (breadth first), computed once per node object."""
     found = [node]
     for current in found:  # the list grows while it is read: breadth first
         found.extend(child_nodes(current))
-    return found
+    return tuple(found)
 
 
 def nodes_of(tree: ast.AST) -> tuple[ast.AST, ...]:

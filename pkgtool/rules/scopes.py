@@ -7,6 +7,7 @@ from collections import Counter
 from collections.abc import Iterator
 
 from pkgtool.model.ast_nodes import child_nodes
+from pkgtool.model.memo import per_object
 
 _NESTED = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda, ast.ListComp,
            ast.SetComp, ast.DictComp, ast.GeneratorExp)
@@ -14,6 +15,7 @@ _BROAD = frozenset({"Exception", "BaseException"})
 _NAME_ERRORS = _BROAD | {"NameError", "UnboundLocalError"}
 ALWAYS = 1 << 30
 """Binding count of names declared ``global``/``nonlocal``: never equal to a real count."""
+Scope = ast.Module | ast.ClassDef | ast.FunctionDef | ast.AsyncFunctionDef
 
 
 def _caught(handler: ast.ExceptHandler) -> set[str]:
@@ -75,6 +77,14 @@ def bound_names(where: ast.stmt | list[ast.stmt] | ast.FunctionDef | ast.AsyncFu
             for name in node.names:
                 found[name] = ALWAYS
     return found
+
+
+@per_object(1024)
+def scope_bindings(scope: Scope) -> Counter[str]:
+    """:func:`bound_names` of a function (its parameters included) or of the body of a module
+    or class, computed once per scope (several rules ask about the same); treat as read-only."""
+    return bound_names(scope if isinstance(scope, (ast.FunctionDef, ast.AsyncFunctionDef))
+                       else scope.body)
 
 
 _PLAIN_DECORATORS = frozenset({"staticmethod", "classmethod"})

@@ -27,7 +27,7 @@ from pkgtool.model.memo import per_object
 from pkgtool.model.package import Package
 from pkgtool.records import record
 from pkgtool.rules.node_api import ACTION_SERVER_CALLBACKS, ACTION_SERVERS, PARAMETERS, argument
-from pkgtool.rules.scopes import bound_names
+from pkgtool.rules.scopes import scope_bindings
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, qualified
 
 Known = Callable[[ast.expr], Message | None]
@@ -72,6 +72,13 @@ def _all_bindings(nodes: Iterable[ast.AST]) -> Counter[str]:
         elif isinstance(node, (ast.Global, ast.Nonlocal)):
             found.update(node.names * 2)
     return found
+
+
+@per_object(1024)
+def _every_binding(node: ast.AST) -> Counter[str]:
+    """:func:`_all_bindings` of ``node`` and every node inside it (a function's own name
+    included), computed once per node: several rules ask about the same functions."""
+    return _all_bindings(nodes_of(node) if isinstance(node, ast.Module) else subtree(node))
 
 
 def _path(node: ast.Attribute) -> tuple[str, ...]:
@@ -145,7 +152,7 @@ class _ScopeFacts:
 
 def _scope_facts(scope: Scope) -> _ScopeFacts:
     nodes = nodes_of(scope) if isinstance(scope, ast.Module) else subtree(scope)
-    counts = _all_bindings(nodes)
+    counts = _every_binding(scope)
     uses: dict[str, list[ast.Attribute]] = {}
     refs: dict[str, list[ast.expr]] = {}
     for node in nodes:
@@ -153,7 +160,7 @@ def _scope_facts(scope: Scope) -> _ScopeFacts:
             uses.setdefault(node.value.id, []).append(node)
         elif isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
             refs.setdefault(node.id, []).append(node)
-    own = counts if isinstance(scope, ast.Module) else bound_names(scope)
+    own = counts if isinstance(scope, ast.Module) else scope_bindings(scope)
     return _ScopeFacts(counts, own, uses, refs)
 
 
@@ -185,13 +192,13 @@ def _scope(statement: ast.AST, tree: ast.Module, index: Index) -> Scope | None:
     return parent if isinstance(parent, FUNCTIONS) else tree
 
 
-def method_receiver(method: ast.AST, nodes: list[ast.AST]) -> str | None:
-    """The first parameter of a plain method (no decorator), when the method (its ``nodes``)
-    never rebinds it."""
+def method_receiver(method: ast.AST) -> str | None:
+    """The first parameter of a plain method (no decorator), when the method never rebinds
+    it."""
     if not isinstance(method, FUNCTIONS) or method.decorator_list:
         return None
     positional = [*method.args.posonlyargs, *method.args.args]
-    if not positional or _all_bindings(nodes)[positional[0].arg] != 1:
+    if not positional or _every_binding(method)[positional[0].arg] != 1:
         return None
     return positional[0].arg
 
@@ -213,10 +220,10 @@ def _class_facts(cls: ast.ClassDef) -> _ClassFacts:
     refs: dict[str, list[ast.expr]] = {}
     uses: dict[str, list[ast.Attribute]] = {}
     for method in cls.body:
-        nodes = subtree(method) if isinstance(method, FUNCTIONS) else []
-        receiver = method_receiver(method, nodes)
+        receiver = method_receiver(method)
         if receiver is None:
             continue
+        nodes = subtree(method)
         for node in _on(nodes, lambda e: isinstance(e, ast.Name) and e.id == receiver):
             if not isinstance(node.ctx, ast.Load):
                 stores.setdefault(node.attr, []).append(node)
@@ -225,7 +232,7 @@ def _class_facts(cls: ast.ClassDef) -> _ClassFacts:
         for node in _on(nodes, lambda e: isinstance(e, ast.Attribute)
                         and isinstance(e.value, ast.Name) and e.value.id == receiver):
             uses.setdefault(node.value.attr, []).append(node)  # type: ignore[attr-defined]
-    return _ClassFacts(stores, refs, uses, bound_names(cls.body))
+    return _ClassFacts(stores, refs, uses, scope_bindings(cls))
 
 
 def _dynamic(tree: ast.Module) -> bool:
@@ -322,13 +329,13 @@ def callback_function(expr: ast.expr, tree: ast.Module, index: Index
     """The function a callback expression certainly names, and how many leading parameters
     are not the callback's arguments (1 for a method's receiver)."""
     if isinstance(expr, ast.Name):
-        bindings = _kept(tree, "bindings", lambda: _all_bindings(nodes_of(tree)))[expr.id]
-        found = _plain([f for f in index.functions if f.name == expr.id], bindings)
+        found = _plain([f for f in index.functions if f.name == expr.id],
+                       _every_binding(tree)[expr.id])
         outside = found is not None and not isinstance(index.parents.get(id(found)), ast.ClassDef)
         return (found, 0) if outside and found is not None else None
     cls, caller = index.enclosing_class(expr), index.enclosing_function(expr)
     if not (isinstance(expr, ast.Attribute) and isinstance(expr.value, ast.Name) and cls
-            and caller in cls.body and method_receiver(caller, subtree(caller)) == expr.value.id):
+            and caller in cls.body and method_receiver(caller) == expr.value.id):
         return None
     found = _plain([s for s in cls.body if isinstance(s, FUNCTIONS) and s.name == expr.attr],
                    _kept(tree, id(cls), lambda: _class_facts(cls)).defined[expr.attr])

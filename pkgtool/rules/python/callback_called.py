@@ -9,7 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._callbacks import callback_arguments
-from pkgtool.rules.scopes import bound_names, returns_none
+from pkgtool.rules.scopes import bound_names, returns_none, scope_bindings
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index
 from pkgtool.rules.registry import rule
 
@@ -52,10 +52,10 @@ def _function(call: ast.Call, index: Index, tree: ast.Module) -> ast.FunctionDef
     """The module-level function ``name()`` calls, when no scope around the call rebinds it."""
     func = call.func
     if not isinstance(func, ast.Name) or any(
-            bound_names(f)[func.id] for f in _functions_around(call, index)):
+            scope_bindings(f)[func.id] for f in _functions_around(call, index)):
         return None
     cls = index.enclosing_class(call)
-    if cls is not None and bound_names(cls.body)[func.id]:
+    if cls is not None and scope_bindings(cls)[func.id]:
         return None
     return _defined_once(tree.body, func.id)
 

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import ast
-from collections import Counter
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -12,7 +11,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import node_subclasses, unpacks
 from pkgtool.rules.registry import rule
-from pkgtool.rules.scopes import bound_names, scope_walk
+from pkgtool.rules.scopes import scope_bindings, scope_walk
 from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
 
 SPINS = {"rclpy.spin": ("node",), "rclpy.spin_once": ("node",),
@@ -22,13 +21,6 @@ ADD_NODE = "add_node"
 """The executor method taking the node (``Executor.add_node(node)``)."""
 
 Scope = ast.Module | ast.FunctionDef | ast.AsyncFunctionDef
-
-
-@per_object(16)
-def _bound(scope: Scope) -> Counter[str]:
-    """How many times ``scope`` binds each name (a function's parameters included); computed
-    once per scope, the module's included, however many calls read it."""
-    return bound_names(scope.body if isinstance(scope, ast.Module) else scope)
 
 
 def _scopes(node: ast.AST, tree: ast.Module, index: Index) -> list[Scope]:
@@ -45,11 +37,11 @@ def _values(name: str, scopes: list[Scope]) -> list[ast.expr]:
     """What ``name`` may hold where it is read: the values of the plain assignments (``name =
     value``) of the innermost scope binding it; nothing when it is bound any other way too
     there (a parameter, a loop, a tuple target, ``global``)."""
-    scope = next((s for s in scopes if _bound(s)[name]), None)
+    scope = next((s for s in scopes if scope_bindings(s)[name]), None)
     if scope is None:
         return []
     values = _assigned(scope).get(name, [])
-    return values if len(values) == _bound(scope)[name] else []
+    return values if len(values) == scope_bindings(scope)[name] else []
 
 
 @per_object(16)
@@ -67,8 +59,9 @@ def _assigned(scope: Scope) -> dict[str, list[ast.expr]]:
 def _class_named(value: ast.expr, classes: set[str], scopes: list[Scope]) -> str | None:
     """The name of the module's Node subclass that ``value`` names, if it is one: bound
     once, by its ``class`` statement, and in no function around the read."""
-    if isinstance(value, ast.Name) and value.id in classes and _bound(scopes[-1])[value.id] == 1 \
-            and not any(_bound(s)[value.id] for s in scopes[:-1]):
+    if isinstance(value, ast.Name) and value.id in classes \
+            and scope_bindings(scopes[-1])[value.id] == 1 \
+            and not any(scope_bindings(s)[value.id] for s in scopes[:-1]):
         return value.id
     return None
 

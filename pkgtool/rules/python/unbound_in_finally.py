@@ -10,7 +10,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.memo import per_object
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.scopes import bound_names, catches_everything, scope_walk
+from pkgtool.rules.scopes import bound_names, catches_everything, scope_bindings, scope_walk
 from pkgtool.rules.syntax_trees import Index, installed_trees
 from pkgtool.rules.registry import rule
 
@@ -76,7 +76,7 @@ def _function_bindings(function: ast.FunctionDef | ast.AsyncFunctionDef) -> Coun
         if (isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
                 and node.func.id in ("locals", "vars", "globals")):
             return None
-    return bound_names(function)
+    return scope_bindings(function)
 
 
 @rule("PYC003", "unbound-in-finally", Severity.ERROR,

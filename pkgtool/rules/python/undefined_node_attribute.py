@@ -14,7 +14,7 @@ from pkgtool.model.span import Span
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.python._message_instances import method_receiver
 from pkgtool.rules.registry import rule
-from pkgtool.rules.scopes import bound_names
+from pkgtool.rules.scopes import scope_bindings
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees, qualified
 
 _DYNAMIC = frozenset({"setattr", "delattr", "vars", "__dict__", "__getattr__",
@@ -101,12 +101,11 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
         stored, bases = facts
         probed = probed_names(index)
         for cls in _node_classes(index, bases):
-            known = set(bound_names(cls.body)) | stored | NODE_ATTRIBUTES
+            known = set(scope_bindings(cls)) | stored | NODE_ATTRIBUTES
             reads: dict[str, list[ast.Attribute]] = {}
             for method in cls.body:
-                nodes = subtree(method)
-                receiver = method_receiver(method, nodes)
-                for node in nodes if receiver else ():
+                receiver = method_receiver(method)
+                for node in subtree(method) if receiver else ():
                     if isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Load) and \
                             isinstance(node.value, ast.Name) and node.value.id == receiver and \
                             not node.attr.startswith("__") and node.attr not in known and \
