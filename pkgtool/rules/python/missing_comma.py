@@ -8,7 +8,7 @@ import warnings
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import nodes_of
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
@@ -25,7 +25,7 @@ def _may_warn(tree: ast.Module) -> bool:
     """True when some call or subscript applies to a literal: only then is compiling needed."""
     return any(isinstance(node, ast.Call) and isinstance(node.func, _LITERALS)
                or isinstance(node, ast.Subscript) and isinstance(node.value, _LITERALS)
-               for node in nodes_of(tree))
+               for node in nodes_of_class(tree, ast.Call, ast.Subscript))
 
 
 def comma_warnings(path: str, tree: ast.Module) -> Iterator[tuple[int, str]]:
