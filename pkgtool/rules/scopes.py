@@ -16,6 +16,11 @@ _NAME_ERRORS = _BROAD | {"NameError", "UnboundLocalError"}
 ALWAYS = 1 << 30
 """Binding count of names declared ``global``/``nonlocal``: never equal to a real count."""
 Scope = ast.Module | ast.ClassDef | ast.FunctionDef | ast.AsyncFunctionDef
+BINDERS = frozenset({ast.Name, ast.arg, ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef,
+                     ast.Import, ast.ImportFrom, ast.ExceptHandler, ast.MatchAs, ast.MatchStar,
+                     ast.MatchMapping, ast.Global, ast.Nonlocal})
+"""The classes of the nodes that may bind a name (a parsed tree holds no subclass of them):
+``type(node) in BINDERS`` lets the other nodes, most of them, skip every binding test."""
 
 
 def _caught(handler: ast.ExceptHandler) -> set[str]:
@@ -63,6 +68,8 @@ def bound_names(where: ast.stmt | list[ast.stmt] | ast.FunctionDef | ast.AsyncFu
     else:
         body = where if isinstance(where, list) else [where]
     for node in scope_walk(body):
+        if type(node) not in BINDERS:
+            continue
         if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
             found[node.id] += 1
         elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):

@@ -27,7 +27,7 @@ from pkgtool.model.memo import per_object
 from pkgtool.model.package import Package
 from pkgtool.records import record
 from pkgtool.rules.node_api import ACTION_SERVER_CALLBACKS, ACTION_SERVERS, PARAMETERS, argument
-from pkgtool.rules.scopes import scope_bindings
+from pkgtool.rules.scopes import BINDERS, scope_bindings
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, qualified
 
 Known = Callable[[ast.expr], Message | None]
@@ -57,6 +57,8 @@ def _all_bindings(nodes: Iterable[ast.AST]) -> Counter[str]:
     imports, definitions, ``global``/``nonlocal`` names)."""
     found: Counter[str] = Counter()
     for node in nodes:
+        if type(node) not in BINDERS:
+            continue
         if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
             found[node.id] += 1
         elif isinstance(node, ast.arg):
