@@ -9,8 +9,10 @@ from collections.abc import Iterator
 from pkgtool.model.ast_nodes import child_nodes
 from pkgtool.model.memo import per_object
 
-_NESTED = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda, ast.ListComp,
-           ast.SetComp, ast.DictComp, ast.GeneratorExp)
+_NESTED = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda,
+                     ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp})
+"""The classes of the nodes opening a scope of their own (tested with ``type(node) in``: a
+parsed tree holds no subclass of them)."""
 _BROAD = frozenset({"Exception", "BaseException"})
 _NAME_ERRORS = _BROAD | {"NameError", "UnboundLocalError"}
 ALWAYS = 1 << 30
@@ -44,14 +46,15 @@ def scope_walk(body: list[ast.stmt], *, skip_protected: bool = False) -> Iterato
     while stack:
         node = stack.pop()
         yield node
-        if isinstance(node, _NESTED):
+        if type(node) in _NESTED:
             continue
         if skip_protected and isinstance(node, ast.Try) and any(
                 _caught(h) & _NAME_ERRORS for h in node.handlers):
             children: list[ast.AST] = [*node.handlers, *node.orelse, *node.finalbody]
         else:
             children = child_nodes(node)
-        stack.extend(reversed(children))
+        children.reverse()
+        stack += children
 
 
 def bound_names(where: ast.stmt | list[ast.stmt] | ast.FunctionDef | ast.AsyncFunctionDef

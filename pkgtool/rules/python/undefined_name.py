@@ -6,7 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import nodes_of
+from pkgtool.model.ast_nodes import nodes_of, nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
@@ -14,6 +14,12 @@ from pkgtool.model.static_branches import dead_lines
 from pkgtool.rules.python._names_proof import every_name_defined
 from pkgtool.rules.syntax_trees import installed_modules
 from pkgtool.rules.registry import rule
+
+
+def _names_exec(tree: ast.Module) -> bool:
+    """True when ``tree`` names ``exec``, which may define any name."""
+    return any(isinstance(n, ast.Name) and n.id == "exec"
+               for n in nodes_of_class(tree, ast.Name))
 
 
 @rule("PYC001", "undefined-name", Severity.ERROR,
@@ -54,8 +60,7 @@ def undefined_name(package: Package) -> Iterator[Hit]:
     trees = [(module.path, tree) for module, tree in installed_modules(package)]
     for path in ("setup.py", *(f.path for f in package.launch_files if f.kind == "python")):
         tree = parse_tree(path, package.texts[path]) if path in package.texts else None
-        if isinstance(tree, ast.Module) and not any(  # exec() may define any name
-                isinstance(n, ast.Name) and n.id == "exec" for n in nodes_of(tree)):
+        if isinstance(tree, ast.Module) and not _names_exec(tree):
             trees.append((path, tree))
     for path, tree in trees:
         if every_name_defined(tree):  # pyflakes would find nothing: spare it (most files)
