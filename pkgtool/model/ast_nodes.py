@@ -15,9 +15,10 @@ from pkgtool.records import record
 
 _TREES = 64
 """How many trees' node lists stay: more than any package has modules being checked at once."""
-_SUBTREES = 1024
-"""How many parts' node lists stay: more than the functions and class statements of a package,
-which several rules walk one after another."""
+PARTS = 256
+"""How many parts of trees (functions, classes) a cache of facts per part keeps: more than most
+packages have (several rules look at the same parts one after another), few enough that the
+trees of the packages done do not stay for long."""
 
 
 @record
@@ -74,7 +75,7 @@ def child_nodes(node: ast.AST) -> list[ast.AST]:
     return found
 
 
-@per_object(_SUBTREES)
+@per_object(PARTS)
 def subtree(node: ast.AST) -> tuple[ast.AST, ...]:
     """``tuple(ast.walk(node))`` (breadth first), computed once per node object."""
     found = [node]

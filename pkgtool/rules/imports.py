@@ -361,8 +361,14 @@ def also_imported(others: tuple[Need, ...], *, naming: bool = False) -> str:
     return f"; also imported in {places}{more}"
 
 
-def unmet_runtime_needs(package: Package) -> Iterator[Need]:
-    """Needs of run-time code that no run-time key provides (none without a package.xml)."""
+@per_package
+def unmet_runtime_needs(package: Package) -> tuple[Need, ...]:
+    """Needs of run-time code that no run-time key provides (none without a package.xml),
+    worked out once per package (DEP001, DEP002 and the fixes read the same)."""
+    return tuple(_unmet_runtime_needs(package))
+
+
+def _unmet_runtime_needs(package: Package) -> Iterator[Need]:
     if package.manifest is None:
         return
     runtime = declared(package, RUNTIME)

@@ -6,7 +6,7 @@ import ast
 from collections import Counter
 from collections.abc import Iterator
 
-from pkgtool.model.ast_nodes import child_nodes
+from pkgtool.model.ast_nodes import PARTS, child_nodes
 from pkgtool.model.memo import per_object
 
 _NESTED = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda,
@@ -89,7 +89,7 @@ def bound_names(where: ast.stmt | list[ast.stmt] | ast.FunctionDef | ast.AsyncFu
     return found
 
 
-@per_object(1024)
+@per_object(PARTS)
 def scope_bindings(scope: Scope) -> Counter[str]:
     """:func:`bound_names` of a function (its parameters included) or of the body of a module
     or class, computed once per scope (several rules ask about the same); treat as read-only."""

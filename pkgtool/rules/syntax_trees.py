@@ -151,8 +151,14 @@ def qualified(node: ast.expr, aliases: dict[str, str]) -> str | None:
     return ".".join([aliases[node.id], *reversed(attrs)])
 
 
-def resolved_attributes(index: Index) -> Iterator[tuple[ast.Attribute, str, str]]:
-    """Attribute reads whose base resolves: the node, the owner's dotted name, the attribute."""
+@per_object(64)
+def resolved_attributes(index: Index) -> tuple[tuple[ast.Attribute, str, str], ...]:
+    """Attribute reads whose base resolves: the node, the owner's dotted name, the attribute
+    (worked out once per index: PYC002 and PYC004 read the same)."""
+    return tuple(_resolved(index))
+
+
+def _resolved(index: Index) -> Iterator[tuple[ast.Attribute, str, str]]:
     for node in index.attributes:
         name = qualified(node, index.aliases)
         if name is not None:

@@ -5,16 +5,26 @@ from __future__ import annotations
 import ast
 from collections.abc import Iterator
 
+from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.rules.node_api import (ACTION_SERVER_CALLBACKS, ACTION_SERVERS, CALLBACKS,
                                     argument, node_api_calls)
 from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
 
 
-def callback_arguments(package: Package
-                       ) -> Iterator[tuple[str, ast.expr, str, str, Index, ast.Module]]:
-    """Callback arguments of rclpy calls: path, argument, the API called, the parameter it is
-    given for, the module's index and tree."""
+Argument = tuple[str, ast.expr, str, str, Index, ast.Module]
+"""A callback argument: path, argument, the API called, the parameter it is given for, the
+module's index and tree."""
+
+
+@per_package
+def callback_arguments(package: Package) -> tuple[Argument, ...]:
+    """Callback arguments of rclpy calls (worked out once per package: PYC013, PYC024 and
+    PYC026 read the same)."""
+    return tuple(_arguments(package))
+
+
+def _arguments(package: Package) -> Iterator[Argument]:
     trees = {module.path: tree for module, tree, _ in installed_trees(package)}
     for module, call, method, index in node_api_calls(package, CALLBACKS):
         parameters, callbacks = CALLBACKS[method]

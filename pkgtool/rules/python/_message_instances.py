@@ -22,7 +22,7 @@ from collections.abc import Callable, Iterable, Iterator
 from typing import Any, Generic, TypeVar
 
 from pkgtool.knowledge.message_fields import Message, message_of
-from pkgtool.model.ast_nodes import nodes_of, nodes_of_class, subtree
+from pkgtool.model.ast_nodes import PARTS, nodes_of, nodes_of_class, subtree
 from pkgtool.model.memo import per_object
 from pkgtool.model.package import Package
 from pkgtool.records import record
@@ -76,7 +76,7 @@ def _all_bindings(nodes: Iterable[ast.AST]) -> Counter[str]:
     return found
 
 
-@per_object(1024)
+@per_object(PARTS)
 def _every_binding(node: ast.AST) -> Counter[str]:
     """:func:`_all_bindings` of ``node`` and every node inside it (a function's own name
     included), computed once per node: several rules ask about the same functions."""
