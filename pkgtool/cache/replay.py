@@ -225,8 +225,9 @@ class Witness:
         self.positions: Positions | None = None
         """Where each package's files stand in the statuses of the known layout."""
         self.outcomes: dict[str, Outcome] | None = None
-        """Each package's outcome and workspace-index entry (:meth:`checked`)."""
+        """Each package's outcome (:meth:`checked`)."""
         self.index: Mapping[Path, WorkspacePackage] = {}
+        """The workspace index the run checked them with (:meth:`checked`)."""
         self.recorded: dict[str, tuple[Outcome, list[Any]]] = {}
         """The outcomes :meth:`hint` gave for reuse, by package, with their rows in the
         record's outcomes file (written again as they are when the run used them)."""
@@ -400,7 +401,7 @@ class Witness:
 
     def _positions(self, order: list[str]) -> Positions | None:
         """Each package's files and their places in the statuses a check of the layout takes
-        (None when the run found no package files, or some file is not in the layout)."""
+        (None when the run did not scan every package, or some file is not in the layout)."""
         if self.walked is None or len(self.walked[0].packages) != len(self.walked[1]):
             return None  # some package's files were not looked at
         places: dict[str, int] = {}

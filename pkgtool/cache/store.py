@@ -47,6 +47,9 @@ SCHEMA = "pkgtool-lint-cache-4"
 PACKS = 16
 """The files in ``lint/`` the entries are spread over (by package folder): a run that checked
 a few packages writes a few small files."""
+Pack = tuple[tuple[int, int, int] | None, dict[str, Any]]
+"""A file of ``lint/`` as a run read it: what tells whether it was replaced since (its inode,
+modification time and size; None when it was missing), and its entries by package folder."""
 _SETTLED_NS = 2_000_000_000
 """A file modified this long before it was hashed is trusted by size and time afterwards."""
 
@@ -98,9 +101,8 @@ class LintCache:
     def __init__(self, folder: Path) -> None:
         self.folder = folder / "lint"
         self.base = folder
-        self._packs: dict[str, tuple[tuple[int, int, int] | None, dict[str, Any]]] = {}
-        """The files of ``lint/`` read so far (each when an entry in it is first asked for):
-        what tells whether the file was replaced since, and its entries."""
+        self._packs: dict[str, Pack] = {}
+        """The files of ``lint/`` read so far, each when an entry in it is first asked for."""
         self._fresh: dict[str, Entry] = {}
         self._code_key = _digest([SCHEMA, _code_fingerprint()])
         self._run_key = ""
@@ -221,7 +223,7 @@ class LintCache:
             write_atomically(self.folder, name, json.dumps(
                 {"schema": SCHEMA, "entries": entries}, separators=(",", ":")))
 
-    def _pack(self, name: str) -> tuple[tuple[int, int, int] | None, dict[str, Any]]:
+    def _pack(self, name: str) -> Pack:
         """The file ``name`` of ``lint/`` as this run first read it."""
         read = self._packs.get(name)
         if read is None:

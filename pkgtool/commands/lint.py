@@ -123,8 +123,8 @@ def _run(paths: Sequence[str], options: LintOptions, cwd: Path | None,
         {root: [path for path, _ in listed] for root, listed in scans.items()},
         {**cache.indexed({root: scans[root] for root in scans if root not in reused}),
          **{root: hint.index[root] for root in reused}} if cache is not None else None)
-    if hint is not None and any(workspace[root] != hint.index.get(root)
-                                for root in found.packages if root not in reused):
+    if hint is not None and reused and any(workspace[root] != hint.index.get(root)
+                                           for root in found.packages if root not in reused):
         reused = {}  # what the others see of a changed package changed: look each one up
     if cache is not None:
         cache.bind(workspace)
