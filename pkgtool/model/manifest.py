@@ -55,20 +55,14 @@ class Manifest:
     dependencies: tuple[Dependency, ...]
     build_type: Text | None
     has_schema_line: bool = False
+    is_ros1: bool = False
+    """A ROS 1 (catkin) package: built by catkin, or with catkin as build tool. Tags whose
+    ``condition`` is false under ROS 2 (``$ROS_VERSION == 1``) do not count: such a package is
+    built by ament under ROS 2."""
 
     def depends(self, tags: frozenset[str] | set[str]) -> frozenset[str]:
         """Names declared with any of ``tags`` (``depend`` counts for every kind)."""
         return frozenset(d.name for d in self.dependencies if d.tag in tags or d.tag == "depend")
-
-    @property
-    def is_ros1(self) -> bool:
-        """True for a ROS 1 (catkin) package: built by catkin, or with catkin as build tool.
-        Tags whose ``condition`` is false under ROS 2 (``$ROS_VERSION == 1``) do not count:
-        such a package is built by ament under ROS 2."""
-        build_type = self.build_type.value if self.build_type else ""
-        return build_type == "catkin" or any(
-            d.tag == "buildtool_depend" and d.name == "catkin" and under_ros2(d.condition)
-            is not False for d in self.dependencies)
 
 
 def parse_manifest(path: str, text: str) -> Manifest | ParseProblem:
@@ -111,6 +105,8 @@ def _format(root: XmlElement) -> int | None:
 def _manifest(path: str, root: XmlElement, has_schema_line: bool) -> Manifest:
     export = _first(root, "export")
     build_type = _build_type(export) if export is not None else None
+    dependencies = tuple(Dependency(c.tag, c.text, c.span, c.attributes) for c in root.children
+                         if c.tag.endswith("depend") or c.tag in ("conflict", "replace"))
     return Manifest(
         path=path,
         root=root,
@@ -120,11 +116,10 @@ def _manifest(path: str, root: XmlElement, has_schema_line: bool) -> Manifest:
         description=_text(_first(root, "description")),
         maintainers=_people(root, "maintainer"),
         licenses=tuple(Text(c.text, c.span) for c in root.children if c.tag == "license"),
-        dependencies=tuple(
-            Dependency(c.tag, c.text, c.span, c.attributes)
-            for c in root.children
-            if c.tag.endswith("depend") or c.tag in ("conflict", "replace")
-        ),
+        dependencies=dependencies,
         build_type=_text(build_type),
         has_schema_line=has_schema_line,
+        is_ros1=build_type is not None and build_type.text == "catkin" or any(
+            d.tag == "buildtool_depend" and d.name == "catkin" and under_ros2(d.condition)
+            is not False for d in dependencies),
     )

@@ -57,19 +57,26 @@ def checked_dependencies(package: Package) -> list[Dependency]:
     return found
 
 
+def is_local(package: Package, name: str) -> bool:
+    """True when ``name`` is the package itself or a package of its workspace (looked up, not
+    copied: a copy of the workspace's names per package grows a run with the square of its
+    size)."""
+    return name == package.name or name in package.context.workspace
+
+
 @per_package
 def unknown_dependencies(package: Package) -> list[Unknown]:
     """Dependencies of ``package`` that nothing provides for its target distribution."""
     distro = package.context.distro
-    local = frozenset(package.context.workspace) | {package.name}
     stdlib = rosdistro.stdlib_modules(distro)
     found = []
     for dependency in checked_dependencies(package):
         name = dependency.name
-        if name in local or rosdistro.is_known_dependency(name, distro) or name in stdlib:
+        if is_local(package, name) or rosdistro.is_known_dependency(name, distro) \
+                or name in stdlib:
             continue
         elsewhere = tuple(d for d in DISTROS if rosdistro.is_released_package(name, d))
-        others = local - {package.name}  # depending on itself is MAN014's, never a near miss
-        close = [] if elsewhere else rosdistro.close_names(name, distro, extra=others)
+        close = [] if elsewhere else rosdistro.close_names(  # itself is MAN014's, not a miss
+            name, distro, extra=frozenset(package.context.workspace) - {package.name})
         found.append(Unknown(dependency, close[0] if close else None, elsewhere))
     return found

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge import rosdistro
 from pkgtool.model.package import Package
-from pkgtool.rules.manifest.dependency_names import checked_dependencies
+from pkgtool.rules.manifest.dependency_names import checked_dependencies, is_local
 from pkgtool.rules.registry import rule
 
 
@@ -38,10 +38,9 @@ def unresolvable_rosdep_key(package: Package) -> Iterator[Hit]:
     ```
     """
     distro = package.context.distro
-    local = set(package.context.workspace) | {package.name}
     for dependency in checked_dependencies(package):
         key = dependency.name
-        if (key in local or rosdistro.is_released_package(key, distro)
+        if (is_local(package, key) or rosdistro.is_released_package(key, distro)
                 or not rosdistro.is_rosdep_key(key) or rosdistro.key_resolves(key, distro)):
             continue
         other = rosdistro.alternative_key(key, distro)
