@@ -17,9 +17,9 @@ from functools import cache
 from pkgtool.knowledge.tables import DEFAULT_DISTRO, FLAGS, read
 from pkgtool.records import record
 
-__all__ = ["COMPANIONS", "KINDS", "close_interfaces", "companion_of", "interface_kind",
-           "generated_module", "interfaces_of", "is_known_package", "kind_in", "meant_kind",
-           "mismatch", "parse_type", "type_problem"]
+__all__ = ["COMPANIONS", "KINDS", "NO_COMPANIONS", "close_interfaces", "companion_of",
+           "interface_kind", "generated_module", "interfaces_of", "is_known_package", "kind_in",
+           "meant_kind", "mismatch", "parse_type", "type_problem"]
 
 KINDS = ("msg", "srv", "action")
 Interfaces = Mapping[str, frozenset[str]]
@@ -34,7 +34,7 @@ COMPANIONS: dict[str, dict[str, str | None]] = {
 companion types ``X_<suffix>`` (rosidl_generator_py since Iron). Humble exports ``X`` alone;
 its companions are reached as ``X.<attribute>``, and those without one (service events) do
 not exist there."""
-_NO_COMPANIONS = frozenset({"humble"})
+NO_COMPANIONS = frozenset({"humble"})
 """The distributions whose ``<pkg>.<kind>`` modules export no companion types."""
 
 
@@ -79,7 +79,7 @@ def companion_of(interfaces: Interfaces, name: str, kind: str | None = None) -> 
 
 def _with_companions(interfaces: Interfaces, distro: str) -> Interfaces:
     """``interfaces`` and, where ``distro`` exports them, their companion types."""
-    if distro in _NO_COMPANIONS:
+    if distro in NO_COMPANIONS:
         return interfaces
     return {kind: names | {f"{name}_{suffix}" for name in names
                            for suffix in COMPANIONS.get(kind, ())}
@@ -170,7 +170,7 @@ def mismatch(package: str, kind: str | None, name: str, interfaces: Interfaces |
     actual = kind_in(known, name)
     if actual is not None and kind in (None, actual):
         return None
-    companion = None if actual or distro not in _NO_COMPANIONS else (
+    companion = None if actual or distro not in NO_COMPANIONS else (
         companion_of(interfaces, name, kind))
     if companion is not None:
         return Mismatch(package, kind, name, None, None, companion, distro)

@@ -1,12 +1,16 @@
-"""The shipped message field table against the installed ROS 2 Jazzy wheels' Python classes."""
+"""The shipped message field table against the installed ROS 2 Jazzy wheels' Python classes, and
+the table of messages defined alike on other distributions against the wheels' definitions."""
 
 from __future__ import annotations
 
 import importlib
+from pathlib import Path
 
 import pytest
 
 from pkgtool.knowledge import message_fields
+from pkgtool.knowledge.generate_message_distros import (definitions, digest,
+                                                        installed_definitions, sections)
 from pkgtool.knowledge.generate_message_fields import table
 from pkgtool.knowledge.tables import DATA, read
 
@@ -76,4 +80,48 @@ def test_unknown_names_and_other_distributions() -> None:
     assert message_fields.message_of("nav2_msgs.action.NavigateToPose.Goal") is None
     assert message_fields.message_of("std_msgs.msg.NoSuch") is None
     assert message_fields.message_of("std_msgs.String") is None
-    assert message_fields.message_of("std_msgs.msg.String", "humble") is None
+    assert message_fields.message_of("std_msgs.msg.String", "kilted") is None
+    assert message_fields.message_of("std_msgs.msg.String", "rolling") is None  # may change
+    assert message_fields.message_of("sensor_msgs.msg.Range", "humble") is None  # + variance
+    assert message_fields.message_of("std_srvs.srv.Trigger_Event", "humble") is None
+    assert message_fields.message_of("std_srvs.srv.Trigger_Request", "humble") is None
+
+
+def test_messages_defined_alike_are_known_on_their_distributions() -> None:
+    string = message_fields.message_of("std_msgs.msg.String", "humble")
+    assert string is not None and list(string.fields) == ["data"]
+    trigger = message_fields.message_of("std_srvs.srv.Trigger.Response", "humble")
+    assert trigger is not None and trigger.has("success")
+    imu = message_fields.message_of("sensor_msgs.msg.Imu", "humble")
+    assert imu is not None
+    header = message_fields.nested_message(imu, "header")
+    assert header is not None and header.distro == "humble"
+    assert message_fields.constructor_options("humble") == frozenset()
+    assert "check_fields" in message_fields.constructor_options("jazzy")
+
+
+def test_alike_table_matches_the_installed_definitions() -> None:
+    """Each listed message is in the field table and its Jazzy definition is still the one it
+    was compared with (else: regenerate with the sources the table's ``source`` lines name)."""
+    alike = read("message_distros")
+    installed = installed_definitions()
+    assert alike.flags and set(alike.flags) <= set(read("message_fields").flags)
+    stale = [name for name, value in alike.values.items()
+             if name not in installed or digest(installed[name]) != value]
+    assert not stale, f"message_distros.txt is stale for {stale[:5]}"
+    assert all("j" not in flags for flags in alike.flags.values())
+
+
+def test_definitions_of_interface_files(tmp_path: Path) -> None:
+    assert sections("# doc\nint32 a  # the a\n\n---\nbool ok\nstring  NAME=\"x\"\n") == [
+        ("int32 a",), ("bool ok", 'string NAME="x"')]
+    files = {"pkg/msg/A.msg": "int32 a\n", "pkg/srv/S.srv": "int32 a\n---\n",
+             "pkg/action/F.action": "int32 g\n---\n---\nint32 f\n",
+             "pkg/srv/Bad.srv": "int32 a\n", "pkg/msg/A.idl": "module pkg {};\n"}
+    for name, text in files.items():
+        (tmp_path / name).parent.mkdir(parents=True, exist_ok=True)
+        (tmp_path / name).write_text(text)
+    assert definitions(tmp_path.glob("*/*/*.*")) == {
+        "pkg/msg/A": ("int32 a",), "pkg/srv/S_Request": ("int32 a",), "pkg/srv/S_Response": (),
+        "pkg/action/F_Goal": ("int32 g",), "pkg/action/F_Result": (),
+        "pkg/action/F_Feedback": ("int32 f",)}

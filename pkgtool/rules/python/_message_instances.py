@@ -385,15 +385,17 @@ def _parameter_instance(tree: ast.Module, function: Function, name: str, message
     yield _instance(message, deeper, refs, index, skip=1)
 
 
-def known_messages(package: Package, index: Index) -> Known:
-    """What a callee stands for: a message class of a package the table speaks for here
-    (not a ROS 1 package, not one of the workspace's own packages)."""
+def known_messages(package: Package, index: Index, distro: str | None = None) -> Known:
+    """What a callee stands for: a message class of a package the table speaks for on
+    ``distro`` (the target's when None; not a ROS 1 package, not one of the workspace's own
+    packages)."""
     manifest = package.manifest
     ros1 = manifest is not None and manifest.is_ros1
+    distro = distro or package.context.distro
 
     def known(func: ast.expr) -> Message | None:
         dotted = qualified(func, index.aliases)
         if ros1 or dotted is None or package.context.workspace.get(dotted.split(".")[0]):
             return None
-        return message_of(dotted, package.context.distro)
+        return message_of(dotted, distro)
     return known

@@ -7,8 +7,9 @@ from collections.abc import Iterator
 from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.message_fields import (CONSTRUCTOR_OPTIONS, Message, close_field,
+from pkgtool.knowledge.message_fields import (Message, close_field, constructor_options,
                                               nested_message)
+from pkgtool.knowledge.tables import DEFAULT_DISTRO
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
@@ -75,25 +76,31 @@ def unknown_message_field(package: Package) -> Iterator[Hit]:
     and constants (`GoalStatus.STATUS_SUCCEDED`). Checked are the messages, service requests and
     responses and action goals, results and feedbacks of pkgtool's table of the Jazzy
     interface packages installable as wheels (`std_msgs`, `geometry_msgs`, `sensor_msgs`,
-    `nav_msgs`, `std_srvs`, ...), for a jazzy target, imported by name (an import is the
-    only binding of the name in the module). An instance is certain only as a local
-    variable bound once in its function (or module) by `msg = Type()`, never otherwise
-    (no parameter, no second assignment, no `global`), or as `self.x` in a class whose
-    methods all assign `self.x = Type()` when nothing else in the module stores an
-    attribute `x` and no `setattr` could, or as a parameter of a callback the module
-    registers with known types that agree: the message of `create_subscription` (not
-    `raw=True`), the request and response of `create_service`, the goal of an `ActionServer`
-    (`goal_handle.request`), when the callback is a plain method of the registering class
-    (`self.on_message`) or a plain function bound once in the module and never rebinds the
-    parameter; fields of fields are followed while their message
-    class is certain (not after `msg.pose = ...`). Names starting with `_`, constants
-    (`GoalStatus.STATUS_SUCCEEDED`), code inside `try` blocks that catch `AttributeError`,
-    and names the module passes to `hasattr` are never reported.
+    `nav_msgs`, `std_srvs`, ...), imported by name (an import is the only binding of the name
+    in the module): all of them for a jazzy target; for a humble target those whose definition
+    is the same on humble's branch of the ROS repositories (most of them: not
+    `sensor_msgs/Range`, which gained `variance` in Jazzy, nor the messages rosidl derives,
+    such as service events); for kilted (not compared) and rolling (whose definitions change)
+    none. Positional arguments are reported for any message class of the table on every target
+    (every generated message class takes keyword arguments only), with the fields to name when
+    the target's definition is known. On humble, `check_fields=` is reported too (constructors
+    take it since Iron). An instance is certain only as a local variable bound once in its
+    function (or module) by `msg = Type()`, never otherwise (no parameter, no second
+    assignment, no `global`), or as `self.x` in a class whose methods all assign
+    `self.x = Type()` when nothing else in the module stores an attribute `x` and no `setattr`
+    could, or as a parameter of a callback the module registers with known types that agree:
+    the message of `create_subscription` (not `raw=True`), the request and response of
+    `create_service`, the goal of an `ActionServer` (`goal_handle.request`), when the callback
+    is a plain method of the registering class (`self.on_message`) or a plain function bound
+    once in the module and never rebinds the parameter; fields of fields are followed while
+    their message class is certain (not after `msg.pose = ...`). Names starting with `_`,
+    constants (`GoalStatus.STATUS_SUCCEEDED`), code inside `try` blocks that catch
+    `AttributeError`, and names the module passes to `hasattr` are never reported.
 
     ## Why is this bad?
     Message classes have `__slots__`: setting or reading a field that does not exist raises
     `AttributeError`, often inside a callback where it only shows up as a log line. A
-    keyword argument that is not a field is ignored on Jazzy (the value is silently lost;
+    keyword argument that is not a field is ignored since Iron (the value is silently lost;
     with `ROS_PYTHON_CHECK_FIELDS=1`, and always on Humble, the constructor raises
     `AssertionError: Invalid arguments passed to constructor`). Message constructors take
     keyword arguments only: `String('hi')` raises `TypeError`.
@@ -114,21 +121,24 @@ def unknown_message_field(package: Package) -> Iterator[Hit]:
     hello = String(data='hi')
     ```
     """
+    distro = package.context.distro
+    ignored = ("raises AssertionError" if distro == "humble" else
+               "ignores the argument (raises AssertionError where ROS_PYTHON_CHECK_FIELDS=1)")
     for module, tree, index in installed_trees(package):
         known = known_messages(package, index)
         probed, silent = probed_names(index), _silent_lines(tree)
-        for argument, call, message in _positional(index, known):
+        for argument, call, name in _positional(index, known_messages(package, index,
+                                                                      DEFAULT_DISTRO)):
             if not _within(argument, silent):
                 yield Hit(Span(module.path, argument.lineno, argument.col_offset + 1),
                           f"`{ast.unparse(call.func)}` is given the positional argument "
-                          f"`{ast.unparse(argument)}`: `{message.name}` takes fields as keywords "
-                          "only, the constructor raises TypeError", _keyword_fix(message, call))
-        for keyword, call, message in _wrong_keywords(index, known):
+                          f"`{ast.unparse(argument)}`: `{name}` takes fields as keywords "
+                          "only, the constructor raises TypeError", _keyword_fix(known, call))
+        for keyword, call, message in _wrong_keywords(index, known, constructor_options(distro)):
             if not _within(keyword, silent):
                 yield Hit(Span(module.path, keyword.lineno, keyword.col_offset + 1),
                           f"{_problem(message, str(keyword.arg))}: `{ast.unparse(call.func)}` "
-                          "ignores the argument (raises AssertionError where "
-                          "ROS_PYTHON_CHECK_FIELDS=1)", _fix(message, str(keyword.arg)))
+                          f"{ignored}", _fix(message, str(keyword.arg)))
         for node, owner, meant in _wrong_class_attributes(index, known, probed):
             if not _within(node, silent):
                 yield Hit(Span(module.path, node.end_lineno or node.lineno,
@@ -176,29 +186,32 @@ def _meant(close: list[str]) -> str:
     return f" (did you mean `{close[0]}`?)" if close else ""
 
 
-def _wrong_keywords(index: Index, known: Known
+def _wrong_keywords(index: Index, known: Known, options: frozenset[str]
                     ) -> Iterator[tuple[ast.keyword, ast.Call, Message]]:
-    """Keyword arguments of known message constructors that name no field."""
+    """Keyword arguments of known message constructors that name no field nor one of the
+    constructor's ``options``."""
     for call in index.calls:
         message = known(call.func)
         for keyword in call.keywords if message is not None else ():
-            if keyword.arg and keyword.arg not in message.fields \
-                    and keyword.arg not in CONSTRUCTOR_OPTIONS:
+            if keyword.arg and keyword.arg not in message.fields and keyword.arg not in options:
                 yield keyword, call, message
 
 
-def _positional(index: Index, known: Known) -> Iterator[tuple[ast.expr, ast.Call, Message]]:
-    """The first positional argument of each known message constructor given some (messages
-    take keyword arguments only); calls unpacking ``*args`` are left alone."""
+def _positional(index: Index, known: Known) -> Iterator[tuple[ast.expr, ast.Call, str]]:
+    """The first positional argument of each constructor of a message class ``known`` knows
+    given some (generated message classes take keyword arguments only, on every
+    distribution), with the class's name; calls unpacking ``*args`` are left alone."""
     for call in index.calls:
         if call.args and not any(isinstance(a, ast.Starred) for a in call.args) and (
                 message := known(call.func)) is not None:
-            yield call.args[0], call, message
+            yield call.args[0], call, message.name
 
 
-def _keyword_fix(message: Message, call: ast.Call) -> str | None:
-    """Name the fields the positional arguments would fill in order (``String(data=...)``)."""
-    names = list(message.fields)[:len(call.args)]
+def _keyword_fix(known: Known, call: ast.Call) -> str | None:
+    """Name the fields the positional arguments would fill in order (``String(data=...)``),
+    when the target's definition of the message is known."""
+    message = known(call.func)
+    names = list(message.fields)[:len(call.args)] if message is not None else []
     named = ", ".join(f"{name}=..." for name in names)
     return f"Name the fields: `{ast.unparse(call.func)}({named})`" if names else None
 
