@@ -1,8 +1,9 @@
 """What the DEP, LCH and PYC rules share: which imports need a package.xml key, which are declared.
 
 An absolute import needs a key unless it is standard library (of the target distribution's
-Python), one of the package's own modules, a module next to the importing file, or (in test
-code) a module pytest puts on ``sys.path``.
+Python), one of the package's own modules, a module next to the importing file, a module of
+the importing file's own package named through the package's bare name (DEP007's mistake), or
+(in test code) a module pytest puts on ``sys.path``.
 Third-party names map to rosdep keys through rosdep's data
 (:func:`pkgtool.knowledge.rosdistro.keys_for_import`); ROS names (released for the target, or
 ROS-looking) to ROS packages; Python packages of workspace packages to those packages; a name
@@ -182,6 +183,44 @@ def _siblings(package: Package, path: str) -> frozenset[str]:
     return _layout(package.files).children.get(posixpath.dirname(path), frozenset())
 
 
+@per_package
+def installed_names(package: Package) -> dict[str, str]:
+    """Package-relative file -> the dotted name setup.py installs it as (empty when unknown)."""
+    return {file: name for name, file in (installed_modules(package) or {}).items()}
+
+
+def python_package_of(package: Package, module: PythonModule) -> str:
+    """The dotted name of the installed Python package ``module`` belongs to (``my_pkg.sub``
+    for ``my_pkg/sub/__init__.py`` and ``my_pkg/sub/x.py``); empty when not installed."""
+    dotted = installed_names(package).get(module.path, "")
+    return dotted if module.path.endswith("/__init__.py") else dotted.rpartition(".")[0]
+
+
+def enclosing_package_import(package: Package, owner: str, imported: Import
+                             ) -> tuple[str, str] | None:
+    """The package and the module of it that ``imported`` names through the package's bare name
+    from inside it (``my_pkg.filters`` and ``my_pkg.filters.low_pass`` for ``from
+    filters.low_pass import smooth`` or ``from filters import low_pass`` in ``my_pkg/filters/``,
+    ``owner`` being the module's package), for a package below the top level; None otherwise.
+    Running
+    a script next to ``filters/`` puts it on ``sys.path`` as a top-level package; installed,
+    only ``my_pkg`` is there. Importing the bare package (``import filters``, ``from filters
+    import smooth``) names no module of it and may mean another top-level module, and so may a
+    name of the standard library or of a third-party module rosdep knows."""
+    top, parts = imported.top_level, owner.split(".")
+    if not top or top not in parts[1:] or top in _stdlib(package.context.distro) or (
+            keys_for_import(top, package.context.distro)):
+        return None
+    installed = installed_modules(package) or {}
+    rest = imported.module.split(".")[1:]
+    for end in range(len(parts), 1, -1):
+        if parts[end - 1] == top:
+            base = ".".join(parts[:end])
+            named = [".".join([base, *rest])] if rest else [f"{base}.{n}" for n in imported.names]
+            return next(((base, name) for name in named if name in installed), None)
+    return None
+
+
 _COLLECTED = re.compile(r"(?:test_.*|.*_test|conftest)\.py")
 
 
@@ -311,11 +350,13 @@ def needs(package: Package, module: PythonModule, *, guarded: bool | None = Fals
     optional = module.path in optional_modules(package)
     ros1 = package.manifest is not None and package.manifest.is_ros1
     seen: set[str] = set()
+    owner = python_package_of(package, module)
     for imported in module.imports:
         top = imported.top_level
         is_guarded = imported.guarded or optional
         if (not top or top in seen or (guarded is not None and is_guarded != guarded)
-                or top in skip or (top in stdlib and not keys_for_import(top))):
+                or top in skip or (top in stdlib and not keys_for_import(top))
+                or enclosing_package_import(package, owner, imported)):
             continue
         seen.add(top)
         kind, keys = classify(top, names, package.context)

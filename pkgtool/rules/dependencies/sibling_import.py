@@ -10,7 +10,8 @@ from pkgtool.knowledge.rosdistro import keys_for_import, stdlib_modules
 from pkgtool.model.installed import installed_modules
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import ANY, declared, installed_code
+from pkgtool.rules.imports import (ANY, declared, enclosing_package_import, installed_code,
+                                   python_package_of)
 from pkgtool.rules.registry import rule
 
 
@@ -28,14 +29,19 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     a module importing its own name (`import rclpy` in `rclpy.py`): Python 3 imports are
     absolute, so those mean the real package, and so does the same import in the module's
     neighbours (`from record_impl import Base` next to a `record_impl.py` that wraps a compiled
-    `record_impl` extension and imports it). Fallbacks (`except ImportError:`, `if '.' in
-    __name__:`) are guarded and never reported.
+    `record_impl` extension and imports it). Also reports, in the modules of a package folder
+    below the top level (`my_pkg/filters/`), imports of its modules through the folder's bare
+    name (`from filters.low_pass import smooth`, `from filters import low_pass`); importing
+    the bare name alone (`import filters`, `from filters import smooth`) names no module of
+    the folder and is left alone. Fallbacks (`except ImportError:`, `if '.' in __name__:`)
+    are guarded and never reported.
 
     ## Why is this bad?
     `python3 my_pkg/node.py` puts the file's folder on `sys.path`, so the import works while
     developing. The console script that `ros2 run` starts imports `my_pkg.node`; nothing puts
     `my_pkg/` on the path and the node dies with `ModuleNotFoundError: No module named
-    'helpers'`.
+    'helpers'`. Inside `my_pkg/filters/`, `filters.low_pass` works only while the folder above
+    it is on the path (a script run next to it); installed it is `my_pkg.filters.low_pass`.
 
     ## Example
     ```python
@@ -52,22 +58,28 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     installed = installed_modules(package)
     if installed is None:
         return
-    names = {file: name for name, file in installed.items()}
     modules = {module.path: module for module in package.modules}
     top_level = {name.split(".")[0] for name in installed}
     skip = top_level | stdlib_modules(package.context.distro) | declared(package, ANY).keys()
     for module in installed_code(package):
         folder = posixpath.dirname(module.path)
-        dotted = names.get(module.path, "")
-        parent = dotted if module.path.endswith("/__init__.py") else dotted.rpartition(".")[0]
+        parent = python_package_of(package, module)
         if not folder or not parent:
             continue
         own_name = posixpath.basename(module.path)[:-3]
         for imported in module.imports:
             top = imported.top_level
+            if imported.guarded or not top or top in skip:
+                continue
+            inside = enclosing_package_import(package, parent, imported)
+            if inside:
+                yield Hit(imported.span, f"`{top}` is the package `{inside[0]}` this module is "
+                                         "in, not a top-level module: the import fails once "
+                                         "installed", f"Import `{inside[1]}` instead")
+                continue
             sibling = next((f for f in (f"{folder}/{top}.py", f"{folder}/{top}/__init__.py")
-                            if package.has_file(f)), None) if top else None
-            if (sibling is None or imported.guarded or top in skip or top == own_name
+                            if package.has_file(f)), None)
+            if (sibling is None or top == own_name
                     or keys_for_import(top, package.context.distro)
                     or _imports_itself(modules.get(f"{folder}/{top}.py"), top)):
                 continue
