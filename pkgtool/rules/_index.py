@@ -73,6 +73,7 @@ RULES = {
     "MAN021": ("misspelled-dependency", "error", True, "manifest.misspelled_dependency"),
     "MAN022": ("unknown-dependency", "warning", True, "manifest.unknown_dependency"),
     "MAN023": ("unresolvable-rosdep-key", "warning", True, "manifest.unresolvable_rosdep_key"),
+    "MAN024": ("dependency-in-export", "error", True, "manifest.dependency_in_export"),
     "PYC001": ("undefined-name", "error", True, "python.undefined_name"),
     "PYC002": ("numpy-removed-alias", "error", True, "python.numpy_removed_alias"),
     "PYC003": ("unbound-in-finally", "error", True, "python.unbound_in_finally"),
