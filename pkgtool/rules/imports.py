@@ -2,8 +2,10 @@
 
 An absolute import needs a key unless it is standard library (of the target distribution's
 Python), one of the package's own modules, a module next to the importing file, a module of
-the importing file's own package named through the package's bare name (DEP007's mistake), or
-(in test code) a module pytest puts on ``sys.path``.
+the importing file's own package named through the package's bare name (DEP007's mistake), a
+module of a folder of the package the importing file (or, for test code, a ``conftest.py``
+above it) puts on ``sys.path`` before the import (:mod:`pkgtool.rules.sys_path`), or (in test
+code) a module pytest puts on ``sys.path``.
 Third-party names map to rosdep keys through rosdep's data
 (:func:`pkgtool.knowledge.rosdistro.keys_for_import`); ROS names (released for the target, or
 ROS-looking) to ROS packages; Python packages of workspace packages to those packages; a name
@@ -34,6 +36,7 @@ from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.records import record
 from pkgtool.rules.optional_imports import optional_modules
+from pkgtool.rules.sys_path import sys_path_edits
 from pkgtool.rules.test_modules import is_test_code, test_files
 
 RUNTIME = frozenset({"depend", "exec_depend", "run_depend"})
@@ -181,6 +184,34 @@ def shadowing_folders(package: Package) -> frozenset[str]:
 
 def _siblings(package: Package, path: str) -> frozenset[str]:
     return _layout(package.files).children.get(posixpath.dirname(path), frozenset())
+
+
+def path_modules(package: Package, module: PythonModule) -> list[tuple[int, frozenset[str]]]:
+    """What the folders of the package that ``module`` puts on ``sys.path`` hold (their
+    ``.py`` modules and the folders with Python files below them), each with the line of
+    the edit; for test code also those of the ``conftest.py`` files of its folder and the
+    folders above it (pytest runs them first: line 0)."""
+    edits = sys_path_edits(package)
+    found = [(line, folder) for line, folder in edits.get(module.path, ())]
+    if edits and is_test_code(package, module):
+        folder = posixpath.dirname(module.path)
+        while True:
+            conftest = posixpath.join(folder, "conftest.py")
+            if conftest != module.path:
+                found.extend((0, edited) for _, edited in edits.get(conftest, ()))
+            if not folder:
+                break
+            folder = posixpath.dirname(folder)
+    return [(line, _folder_modules(package, folder)) for line, folder in found]
+
+
+def _folder_modules(package: Package, folder: str) -> frozenset[str]:
+    """The names importable from ``folder`` on ``sys.path``: its ``.py`` files and the
+    folders holding Python files below it."""
+    prefix = f"{folder}/" if folder else ""
+    return frozenset(rest[:-3] if "/" not in rest else rest.split("/")[0]
+                     for path in package.files if path.startswith(prefix) and path.endswith(".py")
+                     for rest in (path[len(prefix):],))
 
 
 @per_package
@@ -351,12 +382,14 @@ def needs(package: Package, module: PythonModule, *, guarded: bool | None = Fals
     ros1 = package.manifest is not None and package.manifest.is_ros1
     seen: set[str] = set()
     owner = python_package_of(package, module)
+    on_path = path_modules(package, module)
     for imported in module.imports:
         top = imported.top_level
         is_guarded = imported.guarded or optional
         if (not top or top in seen or (guarded is not None and is_guarded != guarded)
                 or top in skip or (top in stdlib and not keys_for_import(top))
-                or enclosing_package_import(package, owner, imported)):
+                or enclosing_package_import(package, owner, imported)
+                or any(line < imported.span.line and top in names for line, names in on_path)):
             continue
         seen.add(top)
         kind, keys = classify(top, names, package.context)

@@ -21,11 +21,15 @@ def unknown_import(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports unguarded absolute imports (in any module or Python launch file) of names that
     are not standard library (of the target distribution's Python), not the package's own
-    (for test code, also a helper module in a folder pytest puts on `sys.path`),
-    not ROS (released for the target distribution, or ROS by name), and not a module that
-    rosdep's data maps to a key (the pip and Debian names in rosdistro's `python.yaml`),
-    unless a key that looks like it
-    (`python3-<name>`, `python3-<name>-pip` or the bare name) is declared. The suggested key
+    (for test code, also a helper module in a folder pytest puts on `sys.path`; for any
+    file, a module of a folder of the package that the file, or a `conftest.py` above a
+    test, puts on `sys.path` before the import with a path built from `__file__`:
+    `sys.path.insert(0, str(Path(__file__).resolve().parents[1] / 'scripts'))`,
+    `sys.path.append(os.path.join(os.path.dirname(__file__), '..', 'scripts'))`), not ROS
+    (released for the target distribution, or ROS by name), and not a module that rosdep's
+    data maps to a key (the pip and Debian names in rosdistro's `python.yaml`), unless a key
+    that looks like it (`python3-<name>`, `python3-<name>-pip` or the bare name) is
+    declared. The suggested key
     is a guess from the module name. ROS 1 modules (`rospy`, `tf`) are reported as such.
 
     ## Why is this bad?

@@ -1,0 +1,180 @@
+"""Folders of the package that a module puts on ``sys.path``, read statically from its source.
+
+``sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "scripts"))`` and
+``sys.path.append(os.path.join(os.path.dirname(__file__), "..", "scripts"))`` make the modules
+of ``scripts/`` importable by their bare names in the rest of the process. Only paths built
+from ``__file__`` and string literals are understood: ``os.path`` (``dirname``, ``join``,
+``abspath``, ``realpath``, ``normpath``), ``pathlib.Path`` (``parent``, ``parents[n]``, ``/``,
+``joinpath``, ``resolve()``, ``absolute()``), ``str()``/``os.fspath()``, and names assigned
+once at module level to such a path. Nothing is executed; a path leaving the package is
+ignored.
+"""
+
+from __future__ import annotations
+
+import ast
+import posixpath
+from collections.abc import Iterator
+
+from pkgtool.model.memo import per_package
+from pkgtool.model.package import Package
+from pkgtool.model.python_visitor import parse_tree
+
+_ROOT = "/package"
+"""Where the package's root stands in the absolute paths worked out here."""
+_SAME = frozenset({"os.path.abspath", "os.path.realpath", "os.path.normpath", "os.fspath", "str",
+                   "pathlib.Path", "pathlib.PurePath", "pathlib.PosixPath"})
+"""Calls whose one argument's path is their result."""
+_JOINING = frozenset({"os.path.join", "pathlib.Path", "pathlib.PurePath", "pathlib.PosixPath"})
+"""Calls joining their first argument's path with the string literals that follow."""
+_FUNCTIONS = _SAME | _JOINING | {"os.path.dirname"}
+_EDITS = frozenset({"insert", "append"})
+
+
+@per_package
+def sys_path_edits(package: Package) -> dict[str, tuple[tuple[int, str], ...]]:
+    """Module path -> (line, package-relative folder) of each ``sys.path.insert``/``append``
+    of a folder of the package the module makes, for the modules that make any."""
+    found: dict[str, tuple[tuple[int, str], ...]] = {}
+    for module in package.modules:
+        text = package.texts.get(module.path)
+        tree = parse_tree(module.path, text) if text and "sys.path" in text else None
+        if isinstance(tree, ast.Module):
+            edits = tuple(_edits(tree, module.path, package))
+            if edits:
+                found[module.path] = edits
+    return found
+
+
+def _edits(tree: ast.Module, path: str, package: Package) -> Iterator[tuple[int, str]]:
+    aliases = _aliases(tree)
+    once = _assigned_once(tree)
+    for node in ast.walk(tree):
+        if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
+                and node.func.attr in _EDITS and node.args
+                and _dotted(node.func.value, aliases) == "sys.path"):
+            continue
+        folder = _path(node.args[-1], path, aliases, once, 0)
+        relative = _relative(folder) if folder is not None else None
+        if relative is not None and (relative == "" or any(
+                f.startswith(relative + "/") for f in package.files)):
+            yield node.lineno, relative
+
+
+def _aliases(tree: ast.Module) -> dict[str, str]:
+    """Name -> the dotted module or attribute its imports bind it to (``osp`` -> ``os.path``)."""
+    found: dict[str, str] = {}
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            for alias in node.names:
+                if alias.asname:
+                    found[alias.asname] = alias.name
+                else:
+                    top = alias.name.split(".")[0]
+                    found[top] = top
+        elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
+            for alias in node.names:
+                found[alias.asname or alias.name] = f"{node.module}.{alias.name}"
+    return found
+
+
+def _assigned_once(tree: ast.Module) -> dict[str, ast.expr]:
+    """Names bound exactly once in the module, by a module-level ``name = value``."""
+    counts: dict[str, int] = {}
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Name) and isinstance(node.ctx, (ast.Store, ast.Del)):
+            counts[node.id] = counts.get(node.id, 0) + 1
+        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            counts[node.name] = counts.get(node.name, 0) + 1
+        elif isinstance(node, ast.arg):
+            counts[node.arg] = counts.get(node.arg, 0) + 1
+        elif isinstance(node, (ast.Global, ast.Nonlocal)):
+            for name in node.names:
+                counts[name] = counts.get(name, 0) + 2
+    return {target.id: node.value for node in tree.body if isinstance(node, ast.Assign)
+            and len(node.targets) == 1 and isinstance(target := node.targets[0], ast.Name)
+            and counts.get(target.id) == 1}
+
+
+def _dotted(node: ast.expr, aliases: dict[str, str]) -> str | None:
+    """``os.path.join`` for ``osp.join`` when ``import os.path as osp``; None if not a name."""
+    parts: list[str] = []
+    while isinstance(node, ast.Attribute):
+        parts.append(node.attr)
+        node = node.value
+    if not isinstance(node, ast.Name):
+        return None
+    return ".".join([aliases.get(node.id, node.id), *reversed(parts)])
+
+
+def _literal(node: ast.expr) -> str | None:
+    """A relative path component written as a string literal (``"scripts"``, ``"../lib"``)."""
+    if isinstance(node, ast.Constant) and isinstance(node.value, str) and node.value \
+            and not node.value.startswith("/"):
+        return node.value
+    return None
+
+
+def _path(node: ast.expr, file: str, aliases: dict[str, str], once: dict[str, ast.expr],
+          depth: int) -> str | None:
+    """The absolute path (under :data:`_ROOT`) ``node`` evaluates to, or None if unknown."""
+    if depth > 20:
+        return None
+    here = (file, aliases, once, depth + 1)
+    if isinstance(node, ast.Name):
+        if node.id == "__file__":
+            return f"{_ROOT}/{file}"
+        value = once.get(node.id)
+        return _path(value, *here) if value is not None else None
+    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Div):
+        base, tail = _path(node.left, *here), _literal(node.right)
+        return posixpath.join(base, tail) if base is not None and tail else None
+    if isinstance(node, ast.Attribute) and node.attr == "parent":
+        base = _path(node.value, *here)
+        return posixpath.dirname(posixpath.normpath(base)) if base is not None else None
+    if isinstance(node, ast.Subscript) and isinstance(node.value, ast.Attribute) \
+            and node.value.attr == "parents" and isinstance(node.slice, ast.Constant) \
+            and type(node.slice.value) is int and node.slice.value >= 0:
+        base = _path(node.value.value, *here)
+        for _ in range((node.slice.value + 1) if base is not None else 0):
+            base = posixpath.dirname(posixpath.normpath(base))
+        return base
+    if isinstance(node, ast.Call) and not node.keywords:
+        return _called(node, here)
+    return None
+
+
+def _called(node: ast.Call, here: tuple[str, dict[str, str], dict[str, ast.expr], int]
+            ) -> str | None:
+    """The path a call returns: ``os.path`` functions, ``Path(...)``, ``str(...)`` and the
+    path methods ``resolve``, ``absolute`` and ``joinpath``."""
+    func, args = node.func, node.args
+    name = _dotted(func, here[1])
+    if name in _FUNCTIONS:
+        first = _path(args[0], *here) if args else None
+        if name == "os.path.dirname":
+            return posixpath.dirname(posixpath.normpath(first)) if first and len(args) == 1 \
+                else None
+        if name not in _SAME or len(args) > 1:
+            return _joined(first, args[1:]) if name in _JOINING else None
+        return first
+    if isinstance(func, ast.Attribute) and func.attr in ("resolve", "absolute", "joinpath"):
+        base = _path(func.value, *here)
+        return _joined(base, args) if func.attr == "joinpath" else None if args else base
+    return None
+
+
+def _joined(base: str | None, parts: list[ast.expr]) -> str | None:
+    tails = [_literal(part) for part in parts]
+    if base is None or any(tail is None for tail in tails):
+        return None
+    return posixpath.join(base, *(t for t in tails if t))
+
+
+def _relative(path: str) -> str | None:
+    """The package-relative form of an absolute path under :data:`_ROOT` (``""`` for the
+    root), None when it leaves the package."""
+    normal = posixpath.normpath(path)
+    if normal == _ROOT:
+        return ""
+    return normal[len(_ROOT) + 1:] if normal.startswith(_ROOT + "/") else None
