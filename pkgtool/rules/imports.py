@@ -365,6 +365,13 @@ def _stdlib(distro: str) -> frozenset[str]:
     return stdlib_modules(distro) | any_stdlib_module()
 
 
+def local_modules(package: Package, module: PythonModule) -> frozenset[str]:
+    """Top-level names an import in ``module`` finds in the package itself: its own modules,
+    the modules next to ``module``, and for test code those pytest puts on ``sys.path``."""
+    local = own_modules(package) | _siblings(package, module.path)
+    return local | pytest_path_modules(package) if is_test_code(package, module) else local
+
+
 def needs(package: Package, module: PythonModule, *, guarded: bool | None = False
           ) -> Iterator[Need]:
     """Absolute imports of ``module`` that need a key, the first import of each name only.
@@ -373,9 +380,7 @@ def needs(package: Package, module: PythonModule, *, guarded: bool | None = Fals
     import of an own module that the package itself imports only guarded counts as guarded.
     ROS modules of a ROS 1 package are provided by their own name (:func:`_ros1_keys`).
     """
-    skip = own_modules(package) | _siblings(package, module.path)
-    if is_test_code(package, module):
-        skip |= pytest_path_modules(package)
+    skip = local_modules(package, module)
     stdlib = _stdlib(package.context.distro)
     names = declared(package, ANY)
     optional = module.path in optional_modules(package)

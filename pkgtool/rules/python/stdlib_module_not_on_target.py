@@ -8,7 +8,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import (PYTHON_VERSIONS, STDLIB_VERSIONS, any_stdlib_module,
                                          keys_for_import, stdlib_modules, stdlib_versions)
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import all_python
+from pkgtool.rules.imports import all_python, local_modules
 from pkgtool.rules.registry import rule
 
 _VERSIONS = STDLIB_VERSIONS
@@ -42,7 +42,9 @@ def stdlib_module_not_on_target(package: Package) -> Iterator[Hit]:
     running pkgtool: a module that some Python 3 has in its standard library but the target's
     has not, either removed (`imp`, `distutils`, `asyncore` in 3.12) or newer (`tomllib` on
     humble). Module lists come from a table generated from the stdlib-list package. Imports
-    inside `try/except ImportError` are alternatives and stay silent.
+    inside `try/except ImportError` are alternatives and stay silent, and so are imports of the
+    package's own modules named like one (a `test/` package the tests import as `test.support`,
+    which pytest's import mode puts on `sys.path`).
 
     ## Why is this bad?
     The node fails with `ModuleNotFoundError` on the robot's Python although it ran on the
@@ -63,7 +65,7 @@ def stdlib_module_not_on_target(package: Package) -> Iterator[Hit]:
     here = stdlib_modules(distro)
     known = any_stdlib_module()
     for module in all_python(package):
-        seen: set[str] = set()
+        seen: set[str] = set(local_modules(package, module))
         for imported in module.imports:
             top = imported.top_level
             if (not top or top in seen or imported.guarded or top in here or top not in known
