@@ -72,6 +72,16 @@ class NodeRef:
     remappings_not_pairs: Span | None = None
     inline_parameters: tuple[tuple[str, Span, str | None], ...] = ()
 
+    @property
+    def composable(self) -> bool:
+        """A component a container loads (``ComposableNode``, ``<composable_node>``): launch_ros
+        reads its parameter files itself instead of passing them to rcl."""
+        return self.action in COMPOSABLE_ACTIONS
+
+
+COMPOSABLE_ACTIONS = frozenset({"ComposableNode", "composable_node"})
+"""The actions (Python classes, XML and YAML tags) of components loaded into a container."""
+
 
 @record
 class PackageRef:

@@ -18,11 +18,13 @@ PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprec
 outside `ros__parameters` belong to a node only the user knows: no fix guesses, the user
 chooses; the other findings of the case are fixed."""
 MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages"),
-          ("MAN018", "standard_library_modules"), ("DAT001", "typo_in_path")}
+          ("MAN018", "standard_library_modules"), ("DAT001", "typo_in_path"),
+          ("DAT008", "flat_file_for_a_component_and_a_node")}
 """MAN018 fixes pip and import names only; build types, ROS 1 packages and standard library
 modules need the user (a `<build_type>`, a ROS 2 replacement, or nothing). DAT001 fixes a
 string of sources and creates the (empty) ament index marker: other missing files have content
-only their author knows."""
+only their author knows. DAT008's values at the top level belong to a node only the user knows
+(here a component and a node share the file)."""
 
 REVEALED = {("PYC013", "called_callbacks"): {"PYC026"}}
 """Findings a fix may bring to light: once `callback=self.handle()` is `self.handle`, rclpy

@@ -173,6 +173,9 @@ def malformed_parameter_file(package: Package) -> Iterator[Hit]:
     only when every mapping above it, the top level included, holds only mappings, as node
     names and namespaces do: beside a scalar or a list (`serial_number: a200`, `urdf: null`)
     it is a key of some other YAML, such as a robot description read by code.
+    A file passed only to components (`ComposableNode`, `<composable_node>`) is checked as one
+    no launch file passes: launch_ros reads it itself and takes a file without
+    `ros__parameters` as the component's parameters (`image_transport: raw` at the top level).
     YAML that does not parse is SYN001.
 
     ## Why is this bad?
@@ -193,7 +196,8 @@ def malformed_parameter_file(package: Package) -> Iterator[Hit]:
         rate: 10.0
     ```
     """
-    passed = set(parameter_file_nodes(package))
+    passed = {path for path, nodes in parameter_file_nodes(package).items()
+              if not all(node.composable for node in nodes)}
     for path in _candidates(package):
         documents = yaml_problem(path, package.texts[path])
         if not isinstance(documents, list):
