@@ -11,7 +11,8 @@ A file may take part of its list from a CMake file of the package it ``include()
 variables are shared; ``${CMAKE_CURRENT_LIST_DIR}`` there is that file's folder), and from
 ``file(GLOB ...)`` patterns, which match the package's files.
 
-The same reading gives the Python packages ``ament_python_install_package`` installs.
+The same reading gives the Python packages ``ament_python_install_package`` installs, and
+the sources of everything the file installs (:func:`installed_sources`).
 """
 
 from __future__ import annotations
@@ -88,6 +89,66 @@ def installed_python_packages(text: str) -> frozenset[str]:
                      if name == "ament_python_install_package" and args
                      for value in _expand(args[0], variables, _DEPTH)
                      if value and value.isidentifier())
+
+
+_INSTALL_SOURCES = frozenset({"DIRECTORY", "PROGRAMS", "FILES"})
+_INSTALL_OPTIONS = frozenset({"DESTINATION", "TYPE", "PERMISSIONS", "CONFIGURATIONS",
+                              "COMPONENT", "OPTIONAL", "USE_SOURCE_PERMISSIONS",
+                              "FILES_MATCHING", "PATTERN", "REGEX", "EXCLUDE", "RENAME",
+                              "MESSAGE_NEVER", "FILE_PERMISSIONS", "DIRECTORY_PERMISSIONS",
+                              "EXCLUDE_FROM_ALL"})
+"""``install()`` keywords: the sources of ``install(DIRECTORY|PROGRAMS|FILES ...)`` end at one."""
+_OPAQUE = frozenset({"add_subdirectory", "function", "macro",
+                     "catkin_python_setup", "catkin_install_python"})
+"""Commands after which what the file installs is no longer known from its own text."""
+
+
+def installed_sources(text: str, files: Iterable[str] = ()) -> frozenset[str] | None:
+    """The package-relative files and folders ``text`` (a CMakeLists.txt with the files it
+    includes) installs: the sources of ``install(DIRECTORY|PROGRAMS|FILES ...)``, the
+    folders ``ament_python_install_package`` reads and the file of
+    ``ament_python_install_module``, and what ``ament_auto_package(INSTALL_TO_SHARE ...)``
+    copies; globs match ``files``.
+
+    None when that is not known statically: a source built from a variable the file does not
+    set, a generator expression, or a subdirectory, function or macro that may install more.
+    """
+    calls = _calls(text)
+    if any(name in _OPAQUE for name, _ in calls):
+        return None
+    variables = _variables(calls, frozenset(files))
+    found: set[str] = set()
+    for name, args in calls:
+        for arg in _install_args(name, args):
+            values = _expand(arg, variables, _DEPTH)
+            if "$<" in arg or not values or None in values:
+                return None
+            found.update(posixpath.normpath(v.lstrip("/")) for v in values if v)
+    return frozenset(found)
+
+
+def _install_args(name: str, args: list[str]) -> list[str]:
+    """The source arguments of one installing command (none for other commands)."""
+    if name == "install" and args[:1] and args[0] in _INSTALL_SOURCES:
+        sources: list[str] = []
+        for arg in args[1:]:
+            if arg in _INSTALL_OPTIONS:
+                break
+            sources.append(arg)
+        return sources
+    if name == "ament_python_install_package" and args:
+        folder = args.index("PACKAGE_DIR") + 1 if "PACKAGE_DIR" in args[:-1] else 0
+        return [args[folder]]
+    if name == "ament_python_install_module" and args:
+        return [args[0]]
+    if name == "ament_auto_package" and "INSTALL_TO_SHARE" in args:
+        folders: list[str] = []
+        for arg in args[args.index("INSTALL_TO_SHARE") + 1:]:
+            if arg.isupper():  # the next keyword
+                break
+            folders.append(arg)
+        return folders
+    return []
 
 
 def with_included(text: str, read: Callable[[str], str | None]) -> str:

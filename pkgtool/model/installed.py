@@ -11,6 +11,7 @@ from __future__ import annotations
 import posixpath
 from fnmatch import fnmatchcase
 
+from pkgtool.model.cmake_interfaces import installed_sources, with_included
 from pkgtool.model.launch import python_folders
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
@@ -133,8 +134,10 @@ def installed_modules(package: Package) -> dict[str, str] | None:
 def installed_files(package: Package) -> frozenset[str]:
     """Python files colcon installs as modules, tests included: those setup.py installs when
     that is known, else files inside Python package folders other than data folders (CMake
-    installs ``launch/``, ``config/``, ... to ``share/``, whatever ``__init__.py`` they hold).
-    A setup.py and the files of a :func:`separate_projects` project never are."""
+    installs ``launch/``, ``config/``, ... to ``share/``, whatever ``__init__.py`` they hold),
+    and of a CMake package only those its CMakeLists.txt installs when that is known
+    (:func:`cmake_installed`). A setup.py and the files of a :func:`separate_projects`
+    project never are."""
     installed = installed_modules(package)
     if installed is not None:
         files = frozenset(installed.values())
@@ -144,8 +147,24 @@ def installed_files(package: Package) -> frozenset[str]:
         files = frozenset(m.path for m in package.modules if posixpath.dirname(m.path) in packages
                           and posixpath.dirname(m.path)
                           and m.path.split("/", 1)[0] not in data)
+        sources = cmake_installed(package)
+        if sources is not None:
+            files = frozenset(f for f in files if any(
+                s == "." or f == s or f.startswith(s + "/") for s in sources))
     return frozenset(f for f in files if posixpath.basename(f) != "setup.py"
                      and not in_separate_project(package, f))
+
+
+@per_package
+def cmake_installed(package: Package) -> frozenset[str] | None:
+    """The files and folders the CMakeLists.txt of a package colcon builds with CMake installs
+    (:func:`~pkgtool.model.cmake_interfaces.installed_sources`), None when not known: a Python
+    folder it never installs (a build-time generator, a test helper the tests put on
+    ``PYTHONPATH``) is no installed code."""
+    cmake = package.texts.get("CMakeLists.txt")
+    if cmake is None or is_ament_python(package):
+        return None
+    return installed_sources(with_included(cmake, package.texts.get), package.files)
 
 
 @per_package

@@ -6,6 +6,7 @@ from pathlib import Path
 
 import pytest
 
+from pkgtool.model.cmake_interfaces import installed_sources
 from pkgtool.model.context import Context, WorkspacePackage
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import classify, installed_code, needs, own_modules
@@ -104,6 +105,33 @@ def test_cmake_installed_python_packages_are_own_modules(tmp_path: Path) -> None
         "package.xml": _manifest(), "CMakeLists.txt": cmake, "python/steps/__init__.py": ""})
     assert {"demo", "steps"} <= own_modules(package)
     assert "commented_out" not in own_modules(package)
+
+
+@pytest.mark.parametrize(("cmake", "expected"), [
+    ("project(demo)\ninstall(DIRECTORY launch ${CMAKE_CURRENT_SOURCE_DIR}/scripts/\n"
+     "  DESTINATION share/${PROJECT_NAME} PATTERN *.pyc EXCLUDE)\n"
+     "install(PROGRAMS tools/run.py DESTINATION lib/${PROJECT_NAME})\n"
+     "ament_python_install_package(steps PACKAGE_DIR python/steps)\n"
+     "ament_python_install_package(${PROJECT_NAME})\n"
+     "ament_auto_package(INSTALL_TO_SHARE config rviz USE_SCOPED_HEADER_INSTALL_DIR)\n",
+     {"launch", "scripts", "tools/run.py", "python/steps", "demo", "config", "rviz"}),
+    ("project(demo)\ninstall(DIRECTORY ${EXTRA_DIR} DESTINATION share/demo)\n", None),
+    ("project(demo)\nadd_subdirectory(python)\n", None),
+    ("project(demo)\nfunction(install_tools)\nendfunction()\n", None),
+])
+def test_installed_sources_of_cmake(cmake: str, expected: set[str] | None) -> None:
+    found = installed_sources(cmake)
+    assert found == (None if expected is None else frozenset(expected))
+
+
+def test_python_folder_cmake_never_installs_is_not_installed_code(tmp_path: Path) -> None:
+    cmake = ("project(demo)\nament_python_install_package(${PROJECT_NAME})\n"
+             "ament_add_pytest_test(t test APPEND_ENV PYTHONPATH=${CMAKE_SOURCE_DIR}/scripts)\n")
+    package = make_package(tmp_path / "demo", {
+        "package.xml": _manifest().replace(">ament_python<", ">ament_cmake<"),
+        "CMakeLists.txt": cmake, "demo/__init__.py": "", "scripts/bag_tools/__init__.py": "",
+        "generator/__init__.py": ""})
+    assert [m.path for m in installed_code(package)] == ["demo/__init__.py"]
 
 
 def test_installed_code_follows_setup_py(tmp_path: Path) -> None:

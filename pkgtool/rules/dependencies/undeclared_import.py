@@ -31,7 +31,10 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     the first import, their other imports listed. Modules that only a
     `pytest11` entry point names are pytest plugins, checked as test code (DEP003). Without a
     setup.py at the root (ament_cmake) the modules inside Python package folders count as
-    installed. A folder below the root with its own setup.py or pyproject.toml is a separate
+    installed, only those under what CMakeLists.txt installs when its `install()`,
+    `ament_python_install_package` and `ament_auto_package` calls are read statically (a
+    generator run at build time or a helper the tests put on `PYTHONPATH` is not installed
+    code). A folder below the root with its own setup.py or pyproject.toml is a separate
     Python project (a pip-installable client library): its files are never the package's
     installed code, and its top-level modules count as the package's own.
 
