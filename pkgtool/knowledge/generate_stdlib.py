@@ -15,6 +15,10 @@ from pkgtool.knowledge.tables import generator_main, render
 VERSIONS = tuple(f"3.{minor}" for minor in range(6, 15))
 FLAG = {version: format(int(version.split(".")[1]), "x") for version in VERSIONS}
 """The one-character flag of each Python version in the table."""
+TEST_SUITE = ("test",)
+"""CPython's regression test package, which every version ships (``Lib/test``, ``test.support``)
+but stdlib-list leaves out from 3.10 on: it reads ``sys.stdlib_module_names``, which excludes
+test modules."""
 
 
 def table() -> str:
@@ -23,7 +27,7 @@ def table() -> str:
 
     by_module: dict[str, list[str]] = {}
     for version in VERSIONS:
-        for module in stdlib_list(version):
+        for module in {*stdlib_list(version), *TEST_SUITE}:
             if "." not in module:
                 by_module.setdefault(module, []).append(FLAG[version])
     groups: dict[str, list[str]] = {}

@@ -173,13 +173,14 @@ def test_near_misses() -> None:
 def test_stdlib_table_is_what_stdlib_list_says() -> None:
     from stdlib_list import stdlib_list
 
-    from pkgtool.knowledge.generate_stdlib import table
+    from pkgtool.knowledge.generate_stdlib import TEST_SUITE, table
 
     assert (DATA / "stdlib.txt").read_text(encoding="utf-8") == table(), (
         "stdlib.txt is stale: run python -m pkgtool.knowledge.generate_stdlib")
     for distro, version in rosdistro.PYTHON_VERSIONS.items():
-        expected = {m for m in stdlib_list(version) if "." not in m}
+        expected = {m for m in stdlib_list(version) if "." not in m} | set(TEST_SUITE)
         assert rosdistro.stdlib_modules(distro) == expected
+    assert rosdistro.stdlib_versions("test") == rosdistro.STDLIB_VERSIONS
     assert "imp" in rosdistro.stdlib_modules("humble")
     assert "imp" not in rosdistro.stdlib_modules("jazzy")
     assert "tomllib" not in rosdistro.stdlib_modules("humble")
