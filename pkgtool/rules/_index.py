@@ -50,6 +50,7 @@ RULES = {
                "launch.launch_function_returns_nothing"),
     "LCH007": ("launch-node-never-started", "warning", True, "launch.node_never_started"),
     "LCH008": ("misspelled-launch-argument", "error", True, "launch.misspelled_launch_argument"),
+    "LCH009": ("unknown-launch-import", "error", True, "launch.unknown_launch_import"),
     "MAN001": ("invalid-package-name", "error", True, "manifest.invalid_package_name"),
     "MAN002": ("invalid-version", "error", True, "manifest.invalid_version"),
     "MAN003": ("missing-required-element", "error", True, "manifest.missing_required_element"),

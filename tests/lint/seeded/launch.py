@@ -247,3 +247,17 @@ def launch_argument_read_misspelled(root: Path) -> None:
     edit(root, PY, "name='talker',\n            parameters=[params]",
          "name='talker',\n"
          "            parameters=[params, {'use_sim_time': LaunchConfiguration('use_sim_tim')}]")
+
+
+@case("LCH009", PY, "from launch.actions import Node")
+def node_imported_from_launch_actions(root: Path) -> None:
+    edit(root, PY, "from launch_ros.actions import Node\n", "")
+    edit(root, PY, "from launch import LaunchDescription\n",
+         "from launch import LaunchDescription\nfrom launch.actions import Node\n")
+
+
+@case("LCH009", PY, "from launch.substitutions import FindPackageShare")
+def find_package_share_imported_from_launch(root: Path) -> None:
+    edit(root, PY, "from launch_ros.substitutions import FindPackageShare\n", "")
+    edit(root, PY, "from launch.substitutions import PathJoinSubstitution",
+         "from launch.substitutions import FindPackageShare, PathJoinSubstitution")
