@@ -51,6 +51,8 @@ RULES = {
     "LCH007": ("launch-node-never-started", "warning", True, "launch.node_never_started"),
     "LCH008": ("misspelled-launch-argument", "error", True, "launch.misspelled_launch_argument"),
     "LCH009": ("unknown-launch-import", "error", True, "launch.unknown_launch_import"),
+    "LCH010": ("invalid-launch-action-argument", "error", True,
+               "launch.invalid_launch_action_argument"),
     "MAN001": ("invalid-package-name", "error", True, "manifest.invalid_package_name"),
     "MAN002": ("invalid-version", "error", True, "manifest.invalid_version"),
     "MAN003": ("missing-required-element", "error", True, "manifest.missing_required_element"),

@@ -261,3 +261,32 @@ def find_package_share_imported_from_launch(root: Path) -> None:
     edit(root, PY, "from launch_ros.substitutions import FindPackageShare\n", "")
     edit(root, PY, "from launch.substitutions import PathJoinSubstitution",
          "from launch.substitutions import FindPackageShare, PathJoinSubstitution")
+
+
+@case("LCH010", PY, "launch_arguments={'use_sim_time': 'true'}")
+def include_arguments_as_dict(root: Path) -> None:
+    write(root, "launch/robot.launch.py", (root / PY).read_text())
+    edit(root, PY, "    return LaunchDescription([\n", """\
+    robot = PathJoinSubstitution([FindPackageShare('base_pkg'), 'launch', 'robot.launch.py'])
+    return LaunchDescription([
+        IncludeLaunchDescription(PythonLaunchDescriptionSource(robot),
+                                 launch_arguments={'use_sim_time': 'true'}),
+""")
+    edit(root, PY, "from launch import LaunchDescription\n",
+         "from launch import LaunchDescription\nfrom launch.actions import "
+         "IncludeLaunchDescription\nfrom launch.launch_description_sources import "
+         "PythonLaunchDescriptionSource\n")
+
+
+@case("LCH010", PY, "default_value=False")
+def launch_argument_default_not_text(root: Path) -> None:
+    edit(root, PY, "from launch import LaunchDescription\n", "from launch import "
+         "LaunchDescription\nfrom launch.actions import DeclareLaunchArgument\n")
+    edit(root, PY, "from launch.substitutions import PathJoinSubstitution",
+         "from launch.substitutions import LaunchConfiguration, PathJoinSubstitution")
+    edit(root, PY, "    return LaunchDescription([\n",
+         "    return LaunchDescription([\n"
+         "        DeclareLaunchArgument('use_sim_time', default_value=False),\n")
+    edit(root, PY, "name='talker',\n            parameters=[params]",
+         "name='talker',\n"
+         "            parameters=[params, {'use_sim_time': LaunchConfiguration('use_sim_time')}]")

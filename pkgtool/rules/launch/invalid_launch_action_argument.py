@@ -1,0 +1,129 @@
+"""LCH010: a launch action or description called with arguments launch rejects."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.model.python_visitor import parse_tree
+from pkgtool.model.span import Span
+from pkgtool.rules.launch._python_launch import python_launch_files
+from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import index_of, qualified
+
+DECLARE_KEYWORDS = ("name", "default_value", "description", "choices", "condition")
+"""The keywords ``DeclareLaunchArgument`` takes (``condition`` is every action's)."""
+ACTION_MODULES = ("launch.actions", "launch_ros.actions")
+"""The modules whose classes are all actions."""
+
+
+def _within(module: str, homes: tuple[str, ...]) -> bool:
+    """True when ``module`` is one of ``homes`` or a submodule of one."""
+    return any(module == home or module.startswith(home + ".") for home in homes)
+
+
+def _launch_class(call: ast.Call, aliases: dict[str, str]) -> tuple[str, str]:
+    """The module and class a call makes when bound by an import (``launch.actions``,
+    ``DeclareLaunchArgument``); ``("", "")`` for any other call."""
+    module, _, name = (qualified(call.func, aliases) or "").rpartition(".")
+    return (module, name) if module.split(".")[0] in ("launch", "launch_ros") else ("", "")
+
+
+def _not_text(value: ast.expr) -> ast.Constant | None:
+    """The number or bool a ``default_value`` is, or holds in its list, else None."""
+    items = value.elts if isinstance(value, (ast.List, ast.Tuple)) else [value]
+    return next((item for item in items if isinstance(item, ast.Constant)
+                 and item.value is not None and not isinstance(item.value, str)), None)
+
+
+def _declare(call: ast.Call, _: dict[str, str]) -> Iterator[tuple[ast.AST, str, str]]:
+    if len(call.args) > 1 and not any(isinstance(a, ast.Starred) for a in call.args):
+        yield (call.args[1], "`DeclareLaunchArgument()` takes its default by keyword only: "
+               "a second positional argument raises TypeError", "Write `default_value=...`")
+    for keyword in call.keywords:
+        meant = next((k for k in DECLARE_KEYWORDS if k.startswith(keyword.arg or "_")), None)
+        if keyword.arg not in DECLARE_KEYWORDS and meant:
+            yield (keyword, f"`DeclareLaunchArgument()` has no `{keyword.arg}` argument: it "
+                   "raises TypeError", f"Write `{meant}=`")
+        number = _not_text(keyword.value) if keyword.arg == "default_value" else None
+        if number is not None:
+            text = str(number.value).lower() if isinstance(number.value, bool) \
+                else str(number.value)
+            yield (number, f"`default_value` holds `{number.value!r}`, not a string: "
+                   "DeclareLaunchArgument raises TypeError (launch arguments are text)",
+                   f"Write `'{text}'`")
+
+
+def _include(call: ast.Call, _: dict[str, str]) -> Iterator[tuple[ast.AST, str, str]]:
+    value = next((k.value for k in call.keywords if k.arg == "launch_arguments"), None)
+    pairs = isinstance(value, ast.Dict) and all(
+        isinstance(key, ast.Constant) and isinstance(key.value, str) and len(key.value) == 2
+        for key in value.keys)
+    if isinstance(value, (ast.Dict, ast.DictComp)) and not pairs:
+        yield (value, "`launch_arguments=` is a dict: IncludeLaunchDescription iterates its "
+               "keys as (name, value) pairs and fails", "Pass `{...}.items()`")
+
+
+def _description(call: ast.Call, aliases: dict[str, str]) -> Iterator[tuple[ast.AST, str, str]]:
+    entity = call.args[0] if call.args else None
+    module, made = _launch_class(entity, aliases) if isinstance(entity, ast.Call) else ("", "")
+    if _within(module, ACTION_MODULES) and made[:1].isupper():
+        yield (entity, f"`LaunchDescription()` is given one `{made}`, not a list: it raises "
+               f"TypeError ('{made}' object is not iterable)",
+               f"Write `LaunchDescription([{made}(...)])`")
+
+
+CHECKS = {"DeclareLaunchArgument": ("launch.actions", _declare),
+          "IncludeLaunchDescription": ("launch.actions", _include),
+          "LaunchDescription": ("launch", _description)}
+"""Class -> (the module it is in, or a package holding it; its check)."""
+
+
+@rule("LCH010", "invalid-launch-action-argument", Severity.ERROR,
+      fix="Pass the arguments the launch class takes (see the message)")
+def invalid_launch_action_argument(package: Package) -> Iterator[Hit]:
+    """A Python launch file gives a launch action or description arguments it rejects.
+
+    ## What it does
+    Checks calls of `launch` classes in Python launch files (names bound by imports from
+    `launch` only): `DeclareLaunchArgument` with a default that is not text
+    (`default_value=False`, `default_value=0.5`, or a list holding a number), with its
+    default as a second positional argument (it is keyword-only), or with a shortened
+    keyword (`default=`, `desc=`); `IncludeLaunchDescription` with `launch_arguments=`
+    written as a dict (display or comprehension) instead of its `.items()`; and
+    `LaunchDescription` given one action (`LaunchDescription(Node(...))`) instead of a list.
+    Only literals and displays are judged: a dict held in a variable is not.
+
+    ## Why is this bad?
+    `ros2 launch` fails: `DeclareLaunchArgument` raises `TypeError` when the file is loaded
+    (launch arguments are strings or substitutions; its default is keyword-only; it has no
+    `default` argument); `IncludeLaunchDescription` iterates a dict's keys and fails to
+    unpack each as a (name, value) pair when it runs ("too many values to unpack"); and a
+    `LaunchDescription` cannot iterate an action.
+
+    ## Example
+    ```python
+    DeclareLaunchArgument('use_sim_time', default_value=False),
+    IncludeLaunchDescription(source, launch_arguments={'use_sim_time': 'true'}),
+    ```
+
+    ## Use instead
+    ```python
+    DeclareLaunchArgument('use_sim_time', default_value='false'),
+    IncludeLaunchDescription(source, launch_arguments={'use_sim_time': 'true'}.items()),
+    ```
+    """
+    for path, _, text in python_launch_files(package):
+        tree = parse_tree(path, text)
+        if not isinstance(tree, ast.Module):
+            continue
+        index = index_of(tree)
+        for call in index.calls:
+            module, name = _launch_class(call, index.aliases)
+            home, check = CHECKS.get(name, ("-", None))
+            found = check(call, index.aliases) if check and _within(module, (home,)) else ()
+            for node, message, fix in found:
+                yield Hit(Span(path, node.lineno, node.col_offset + 1),  # type: ignore
+                          message, fix)
