@@ -330,3 +330,23 @@ def parameter_declaration_copied(root: Path) -> None:
 def parameter_read_through_another_type(root: Path) -> None:
     edit(root, TALKER, "period = self.get_parameter('period').value",
          "period = self.get_parameter('period').get_parameter_value().integer_value")
+
+
+@case("PYC029", TALKER, "default_value=0.5")
+def parameter_default_by_wrong_keyword(root: Path) -> None:
+    edit(root, TALKER, "self.declare_parameter('period', 0.5)",
+         "self.declare_parameter('period', default_value=0.5)")
+
+
+@case("PYC029", TALKER, "super().__init__(name='talker'")
+def node_name_by_wrong_keyword(root: Path) -> None:
+    edit(root, TALKER, "super().__init__('talker'", "super().__init__(name='talker'")
+
+
+@case("PYC029", SRV, "wait_for_service(timeout=2.0)")
+def wait_for_service_timeout_keyword(root: Path) -> None:
+    edit(root, SRV, "        self.service = self.create_service(Trigger, name, self.on_request)\n",
+         "        self.service = self.create_service(Trigger, name, self.on_request)\n"
+         "        self.client = self.create_client(Trigger, name)\n"
+         "        if not self.client.wait_for_service(timeout=2.0):\n"
+         "            self.get_logger().warning('The service is not up yet')\n")

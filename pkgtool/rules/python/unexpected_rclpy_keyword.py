@@ -1,0 +1,85 @@
+"""PYC029: an rclpy call given a keyword its function does not take (``timeout=``)."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.node_api import node_api_calls, node_constructions
+from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import installed_trees
+
+WRONG_KEYWORDS: dict[str, dict[str, str]] = {
+    "wait_for_service": {"timeout": "timeout_sec"},
+    "wait_for_server": {"timeout": "timeout_sec"},
+    "spin_once": {"timeout": "timeout_sec"},
+    "spin_until_future_complete": {"timeout": "timeout_sec"},
+    "create_timer": {"period": "timer_period_sec", "timer_period": "timer_period_sec",
+                     "period_sec": "timer_period_sec"},
+    "declare_parameter": {"default": "value", "default_value": "value"},
+    "get_parameter_or": {"default": "alternative_value", "default_value": "alternative_value"},
+}
+"""rclpy methods and functions (Foxy to Rolling), the keywords people give them that they do
+not take, and the keyword meant."""
+NODE_KEYWORDS = {"name": "node_name"}
+"""The same for ``Node.__init__`` and ``rclpy.create_node``."""
+
+
+def _wrong(call: ast.Call, table: dict[str, str]) -> Iterator[tuple[ast.keyword, str]]:
+    for keyword in call.keywords:
+        if keyword.arg in table:
+            yield keyword, table[keyword.arg]
+
+
+@rule("PYC029", "unexpected-rclpy-keyword", Severity.ERROR,
+      fix="Use the keyword rclpy's function takes (see the message)")
+def unexpected_rclpy_keyword(package: Package) -> Iterator[Hit]:
+    """An rclpy function is called with a keyword it does not take.
+
+    ## What it does
+    Reports keywords that rclpy's functions do not have, where people reach for a near
+    name: `timeout=` for `timeout_sec=` (`wait_for_service`, `wait_for_server`, `spin_once`,
+    `spin_until_future_complete`), `period=` for `timer_period_sec=` (`create_timer`),
+    `default=` or `default_value=` for `value=` (`declare_parameter`) and for
+    `alternative_value=` (`get_parameter_or`), and `name=` for `node_name=` (Node
+    constructors: `super().__init__(...)` in a Node subclass, `Node(...)`,
+    `rclpy.create_node(...)`). As for the other rclpy checks, only modules importing rclpy
+    are looked at, and not when the package defines a function of the same name (a wrapper
+    of its own).
+
+    ## Why is this bad?
+    Python raises `TypeError: ... got an unexpected keyword argument 'timeout'` when the line
+    runs: at start-up for a node's constructor, and in the middle of a run (in a callback,
+    where the executor logs it and the node stops doing its job) for the others.
+
+    ## Example
+    ```python
+    while not self.client.wait_for_service(timeout=1.0):
+        self.get_logger().info('waiting for the service')
+    ```
+
+    ## Use instead
+    ```python
+    while not self.client.wait_for_service(timeout_sec=1.0):
+        self.get_logger().info('waiting for the service')
+    ```
+    """
+    defined = {function.name for _, _, index in installed_trees(package)
+               for function in index.functions}
+    for module, call, method, _ in node_api_calls(package, WRONG_KEYWORDS):
+        for keyword, meant in _wrong(call, WRONG_KEYWORDS[method]) if method not in defined \
+                else ():
+            yield Hit(Span(module.path, keyword.lineno, keyword.col_offset + 1),
+                      f"`{method}()` has no `{keyword.arg}` argument: it raises TypeError",
+                      f"Write `{meant}=`")
+    for module, _, index in installed_trees(package):
+        if not any(i.top_level == "rclpy" for i in module.imports):
+            continue
+        for call in node_constructions(index):
+            for keyword, meant in _wrong(call, NODE_KEYWORDS):
+                yield Hit(Span(module.path, keyword.lineno, keyword.col_offset + 1),
+                          f"A node's constructor has no `{keyword.arg}` argument: it raises "
+                          "TypeError", f"Write `{meant}=`")
