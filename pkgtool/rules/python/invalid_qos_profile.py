@@ -12,11 +12,14 @@ from pkgtool.model.span import Span
 from pkgtool.rules.node_api import (PARAMETERS, argument, literal_type, node_api_calls,
                                     qos_calls, unpacks)
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import installed_trees, qualified
 
 _SERVICES = ("create_service", "create_client")
 _VALUES = frozenset({"NoneType", "ellipsis"})
 """Literals never reported: ``None`` (the default of some wrappers) and ``...``."""
 _DEPTHS = frozenset({"int", "bool"})
+PROFILES = frozenset({"rclpy.qos.QoSProfile"})
+"""What ``QoSProfile`` is imported as."""
 """Literal types that are a history depth for publishers and subscriptions."""
 
 
@@ -41,6 +44,24 @@ def _service_literals(package: Package) -> Iterator[Hit]:
                   "'get_c_qos_profile'`", "Pass a `QoSProfile` (`QoSProfile(depth=10)`)")
 
 
+def _without_depth(package: Package) -> Iterator[Hit]:
+    """``QoSProfile(...)`` calls with no ``depth`` and a history that is not given or is
+    ``KEEP_LAST``: rclpy raises InvalidQoSProfileException (Foxy to Rolling)."""
+    for module, _, index in installed_trees(package):
+        for call in index.calls:
+            if qualified(call.func, index.aliases) not in PROFILES or call.args or \
+                    unpacks(call) or any(k.arg == "depth" for k in call.keywords):
+                continue
+            history = next((k.value for k in call.keywords if k.arg == "history"), None)
+            if history is None or isinstance(history, ast.Attribute) and \
+                    history.attr.endswith("KEEP_LAST"):
+                said = "History and/or depth settings are required" if history is None \
+                    else "History set to KEEP_LAST without a depth setting"
+                yield Hit(Span(module.path, call.lineno, call.col_offset + 1),
+                          f"`QoSProfile()` has no `depth`: rclpy raises "
+                          f"InvalidQoSProfileException ('{said}.')", "Add `depth=10`")
+
+
 def _negative(value: ast.expr) -> bool:
     """True for a negative ``int`` literal (``-1``)."""
     return isinstance(value, ast.UnaryOp) and isinstance(value.op, ast.USub) and \
@@ -62,13 +83,17 @@ def invalid_qos_profile(package: Package) -> Iterator[Hit]:
     which take only a `QoSProfile`. Names, attributes, calls (`QoSProfile(depth=10)`,
     `qos_profile_sensor_data`, a depth read from a parameter) and `None` are never reported,
     nor calls with `*args` or `**kwargs`, nor modules defining a method of the same name.
+    Also reports `QoSProfile(...)` built with keywords only and no `depth`, its history
+    not given or `KEEP_LAST` (`QoSProfile(reliability=ReliabilityPolicy.BEST_EFFORT)`).
 
     ## Why is this bad?
     rclpy accepts only a `QoSProfile` or an `int` history depth: anything else raises
     `TypeError: Expected QoSProfile or int, but received <class 'str'>`, a negative depth
     `ValueError`, and the node dies at start-up. Services and clients have no depth shortcut:
     `create_client(Type, 'name', qos_profile=10)` raises `AttributeError`. A depth written as
-    a string often means the topic and the depth were swapped.
+    a string often means the topic and the depth were swapped. A `QoSProfile` keeping the
+    last messages must say how many: without `depth` its constructor raises
+    `InvalidQoSProfileException`.
 
     ## Example
     ```python
@@ -83,6 +108,7 @@ def invalid_qos_profile(package: Package) -> Iterator[Hit]:
     ```
     """
     yield from _service_literals(package)
+    yield from _without_depth(package)
     for module, call, method in qos_calls(package):
         parameters = PARAMETERS[method]
         value = argument(call, parameters, "qos_profile")

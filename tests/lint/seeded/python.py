@@ -350,3 +350,12 @@ def wait_for_service_timeout_keyword(root: Path) -> None:
          "        self.client = self.create_client(Trigger, name)\n"
          "        if not self.client.wait_for_service(timeout=2.0):\n"
          "            self.get_logger().warning('The service is not up yet')\n")
+
+
+@case("PYC018", LISTENER, "QoSProfile(reliability=ReliabilityPolicy.BEST_EFFORT)")
+def qos_profile_without_depth(root: Path) -> None:
+    edit(root, LISTENER, "from rclpy.node import Node\n",
+         "from rclpy.node import Node\nfrom rclpy.qos import QoSProfile, ReliabilityPolicy\n")
+    edit(root, LISTENER, "String, topic, self.on_message, 10)",
+         "String, topic, self.on_message,\n"
+         "            QoSProfile(reliability=ReliabilityPolicy.BEST_EFFORT))")
