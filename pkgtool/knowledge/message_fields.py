@@ -28,7 +28,7 @@ COMPANIONS = frozenset({"Request", "Response", "Event", "Goal", "Result", "Feedb
 CONSTRUCTOR_OPTIONS = frozenset({"check_fields"})
 """Keyword arguments every message constructor takes besides the fields (since Iron; see
 :func:`constructor_options`)."""
-_NESTED = re.compile(r"[A-Za-z]\w*/[A-Za-z]\w*")
+MESSAGE_TYPE = re.compile(r"[A-Za-z]\w*/[A-Za-z]\w*")
 """A field type that is one message (not a sequence or array of them): ``pkg/Name``."""
 
 
@@ -109,7 +109,7 @@ def nested_message(message: Message, field: str) -> Message | None:
     sequence, array or basic value) of a class known on the distribution ``message`` is
     defined for; else None."""
     kind = message.fields.get(field, "")
-    name = _nested_names(message.distro).get(kind) if _NESTED.fullmatch(kind) else None
+    name = _nested_names(message.distro).get(kind) if MESSAGE_TYPE.fullmatch(kind) else None
     return _message(name, message.distro) if name else None
 
 

@@ -7,13 +7,13 @@ import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.message_fields import Message, nested_message
+from pkgtool.knowledge.message_fields import MESSAGE_TYPE, Message, nested_message
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import literal_type
 from pkgtool.rules.python._message_instances import Instance, known_messages, message_instances
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
 
 _ACCEPTED = (
     (re.compile(r"float|double"), frozenset({"float"}), "a float (`1.0`, not `1`)"),
@@ -29,6 +29,31 @@ def _wanted(kind: str) -> tuple[frozenset[str], str] | None:
     """The literal types a field of rosidl type ``kind`` accepts, and how to say it."""
     return next(((accepted, said) for pattern, accepted, said in _ACCEPTED
                  if pattern.fullmatch(kind)), None)
+
+
+_ROS_TIMES = {"builtin_interfaces/Time": "rclpy.time.Time",
+              "builtin_interfaces/Duration": "rclpy.duration.Duration"}
+"""Message fields of time types, and the rclpy class people give them instead."""
+_FIXES = {"rclpy.time.Time": "Convert it with `.to_msg()`",
+          "rclpy.duration.Duration": "Convert it with `.to_msg()`"}
+
+
+def _not_a_message(kind: str, value: ast.expr, index: Index) -> str | None:
+    """What ``value`` is (``float``, ``rclpy.time.Time``) when it is certainly not a message
+    for a field of message type ``kind``; None when it may be one."""
+    if not MESSAGE_TYPE.fullmatch(kind):
+        return None
+    given = literal_type(value)
+    if given in ("int", "float", "bool", "str"):
+        return given
+    call = value if isinstance(value, ast.Call) else None
+    clock = call is not None and isinstance(call.func, ast.Attribute) and \
+        call.func.attr == "now" and isinstance(call.func.value, ast.Call) and \
+        isinstance(call.func.value.func, ast.Attribute) and \
+        call.func.value.func.attr == "get_clock"
+    made = "rclpy.time.Time" if clock else \
+        qualified(call.func, index.aliases) if call is not None else None
+    return made if made is not None and _ROS_TIMES.get(kind) == made else None
 
 
 def _stores(instance: Instance[Message], index: Index
@@ -62,14 +87,19 @@ def field_value_type(package: Package) -> Iterator[Hit]:
     accept it: an int, bool, string or `None` for a `float32`/`float64` field
     (`twist.linear.x = 1`), a float, string or `None` for an integer field, anything but
     `True`/`False` for a `bool` field, anything but a string for a `string` field. Only
-    literals are judged (`1`, `-2`, `'a'`, `None`), never names or expressions.
+    literals are judged (`1`, `-2`, `'a'`, `None`), never names or expressions. A field that
+    holds a message is reported when given a number, bool or string literal
+    (`cmd.linear = 0.5`), and a `builtin_interfaces/Time` or `Duration` field when given
+    rclpy's own `Time` or `Duration` (`header.stamp = self.get_clock().now()`, without
+    `.to_msg()`).
 
     ## Why is this bad?
     With field checks on (always on Humble, `ROS_PYTHON_CHECK_FIELDS=1` since Iron) the
     assignment raises `AssertionError: The 'x' field must be of type 'float'`. Without them
     (Jazzy's default) the value reaches the C conversion unchecked: an int in a float field
     is published as garbage, `1` in a bool field as `False`, a number in a string field
-    makes `publish()` raise.
+    makes `publish()` raise. A message field given anything but a message of its type fails
+    the same checks, or `publish()` when rclpy converts the message.
 
     ## Example
     ```python
@@ -99,3 +129,7 @@ def field_value_type(package: Package) -> Iterator[Hit]:
                 yield Hit(Span(module.path, value.lineno, value.col_offset + 1),
                           f"`{target}` is a `{kind}` field but is given `{ast.unparse(value)}`"
                           f" ({given}): rclpy wants {wanted[1]}")
+            elif (problem := _not_a_message(kind, value, index)) is not None:
+                yield Hit(Span(module.path, value.lineno, value.col_offset + 1),
+                          f"`{target}` holds a `{kind}` message but is given "
+                          f"`{ast.unparse(value)}` ({problem})", _FIXES.get(problem))

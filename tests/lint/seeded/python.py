@@ -359,3 +359,13 @@ def qos_profile_without_depth(root: Path) -> None:
     edit(root, LISTENER, "String, topic, self.on_message, 10)",
          "String, topic, self.on_message,\n"
          "            QoSProfile(reliability=ReliabilityPolicy.BEST_EFFORT))")
+
+
+@case("PYC025", TALKER, "header.stamp = self.get_clock().now()")
+def stamp_without_to_msg(root: Path) -> None:
+    edit(root, TALKER, "from std_msgs.msg import String",
+         "from std_msgs.msg import Header, String")
+    edit(root, TALKER, "        self.publisher.publish(msg)\n",
+         "        self.publisher.publish(msg)\n        header = Header()\n"
+         "        header.stamp = self.get_clock().now()\n"
+         "        self.get_logger().debug(f'Stamped {header.stamp}')\n")
