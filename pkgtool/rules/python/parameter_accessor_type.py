@@ -1,4 +1,5 @@
-"""PYC028: a parameter read through the typed field of another type than it is declared."""
+"""PYC028: a parameter read through the typed field of another type than it is declared, or
+through an accessor that does not exist."""
 
 from __future__ import annotations
 
@@ -10,7 +11,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_parameters import module_nodes
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import installed_trees
+from pkgtool.rules.syntax_trees import Index, installed_trees
 
 _FIELDS = {"bool_value": "BOOL", "integer_value": "INTEGER", "double_value": "DOUBLE",
            "string_value": "STRING", "byte_array_value": "BYTE_ARRAY",
@@ -19,19 +20,43 @@ _FIELDS = {"bool_value": "BOOL", "integer_value": "INTEGER", "double_value": "DO
 """The fields of rcl_interfaces' ParameterValue and the parameter type each holds."""
 
 
+_MESSAGE = frozenset({"type", "SLOT_TYPES", "get_fields_and_field_types"})
+"""The other public attributes of a ParameterValue message."""
+
+
+def _self_read(call: ast.expr) -> str | None:
+    """``x`` of ``self.get_parameter('x')``."""
+    if isinstance(call, ast.Call) and isinstance(call.func, ast.Attribute) and \
+            call.func.attr == "get_parameter" and isinstance(call.func.value, ast.Name) and \
+            call.func.value.id == "self" and len(call.args) == 1 and \
+            isinstance(call.args[0], ast.Constant) and isinstance(call.args[0].value, str):
+        return call.args[0].value
+    return None
+
+
+def _missing_accessor(node: ast.Attribute, index: Index) -> str | None:
+    """What is wrong with ``self.get_parameter('x').value()`` and with
+    ``...get_parameter_value().<attribute ParameterValue has not>``; else None."""
+    parent = index.parents.get(id(node))
+    if node.attr == "value" and isinstance(parent, ast.Call) and parent.func is node and \
+            (name := _self_read(node.value)) is not None:
+        return (f"`{name}` is read with `.value()`: `value` is a property, calling the "
+                "parameter's value raises TypeError")
+    if node.attr in _FIELDS or node.attr in _MESSAGE or node.attr.startswith("_"):
+        return None
+    name = _typed_read(node)
+    return (f"`{name}` is read through `{node.attr}`, which `ParameterValue` has not: it "
+            "raises AttributeError (its fields are `bool_value`, `integer_value`, "
+            "`double_value`, `string_value`, ...)") if name is not None else None
+
+
 def _typed_read(node: ast.Attribute) -> str | None:
     """``x`` of ``self.get_parameter('x').get_parameter_value().<field>``."""
     call = node.value
     if not (isinstance(call, ast.Call) and isinstance(call.func, ast.Attribute)
             and call.func.attr == "get_parameter_value" and not call.args):
         return None
-    read = call.func.value
-    if isinstance(read, ast.Call) and isinstance(read.func, ast.Attribute) and \
-            read.func.attr == "get_parameter" and isinstance(read.func.value, ast.Name) and \
-            read.func.value.id == "self" and len(read.args) == 1 and \
-            isinstance(read.args[0], ast.Constant) and isinstance(read.args[0].value, str):
-        return read.args[0].value
-    return None
+    return _self_read(call.func.value)
 
 
 @rule("PYC028", "parameter-accessor-type", Severity.ERROR,
@@ -44,12 +69,16 @@ def parameter_accessor_type(package: Package) -> Iterator[Hit]:
     when `x` is declared by the module with a literal default of another type
     (`declare_parameter('speed', 1)` is an integer, read with `.double_value`); parameters
     declared with dynamic typing, with no literal default, or with defaults of several types
-    are not judged.
+    are not judged. Also reports reads through an accessor that does not exist: a field
+    `ParameterValue` has not (`.get_parameter_value().str_value`, `.int_value`) and
+    `self.get_parameter('x').value()`, which calls the value.
 
     ## Why is this bad?
     `ParameterValue` has one field per type and only the declared type's is set: the others
     hold their zero value. The node silently works with `0.0`, `0`, `''` or `False` instead
-    of the configured value (a timer period of 0, a speed of 0).
+    of the configured value (a timer period of 0, a speed of 0). A field that does not exist
+    raises `AttributeError`, and `.value()` raises `TypeError` (`'str' object is not
+    callable`): the node dies where it reads the parameter.
 
     ## Example
     ```python
@@ -67,6 +96,14 @@ def parameter_accessor_type(package: Package) -> Iterator[Hit]:
     for module, _, index in installed_trees(package):
         classes = {c.name: c for c in nodes[module.path].classes} if module.path in nodes else {}
         for node in index.attributes:
+            around = index.enclosing_class(node)
+            missing = _missing_accessor(node, index) if around is not None and \
+                around.name in classes else None
+            if missing is not None:
+                yield Hit(Span(module.path, node.end_lineno or node.lineno,
+                               (node.end_col_offset or 0) - len(node.attr) + 1), missing,
+                          "Read `.value`, or the `ParameterValue` field of the declared type")
+                continue
             wanted = _FIELDS.get(node.attr)
             name = _typed_read(node) if wanted else None
             cls = index.enclosing_class(node) if name else None

@@ -369,3 +369,15 @@ def stamp_without_to_msg(root: Path) -> None:
          "        self.publisher.publish(msg)\n        header = Header()\n"
          "        header.stamp = self.get_clock().now()\n"
          "        self.get_logger().debug(f'Stamped {header.stamp}')\n")
+
+
+@case("PYC028", TALKER, "get_parameter('topic').value()")
+def parameter_value_called(root: Path) -> None:
+    edit(root, TALKER, "topic = self.get_parameter('topic').value",
+         "topic = self.get_parameter('topic').value()")
+
+
+@case("PYC028", TALKER, "get_parameter_value().str_value")
+def parameter_value_field_misspelled(root: Path) -> None:
+    edit(root, TALKER, "topic = self.get_parameter('topic').value",
+         "topic = self.get_parameter('topic').get_parameter_value().str_value")
