@@ -381,3 +381,15 @@ def parameter_value_called(root: Path) -> None:
 def parameter_value_field_misspelled(root: Path) -> None:
     edit(root, TALKER, "topic = self.get_parameter('topic').value",
          "topic = self.get_parameter('topic').get_parameter_value().str_value")
+
+
+@case("PYC030", LISTENER, "'chatter', String, self.on_message, 10)")
+def subscription_in_ros1_order(root: Path) -> None:
+    edit(root, LISTENER, "String, topic, self.on_message, 10)",
+         "'chatter', String, self.on_message, 10)")
+
+
+@case("PYC030", TALKER, "self.create_timer(self.publish, period)")
+def timer_arguments_swapped(root: Path) -> None:
+    edit(root, TALKER, "self.create_timer(period, self.publish)",
+         "self.create_timer(self.publish, period)")
