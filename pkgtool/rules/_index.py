@@ -53,6 +53,7 @@ RULES = {
     "LCH009": ("unknown-launch-import", "error", True, "launch.unknown_launch_import"),
     "LCH010": ("invalid-launch-action-argument", "error", True,
                "launch.invalid_launch_action_argument"),
+    "LCH011": ("substitution-added-to-text", "error", True, "launch.substitution_added_to_text"),
     "MAN001": ("invalid-package-name", "error", True, "manifest.invalid_package_name"),
     "MAN002": ("invalid-version", "error", True, "manifest.invalid_version"),
     "MAN003": ("missing-required-element", "error", True, "manifest.missing_required_element"),

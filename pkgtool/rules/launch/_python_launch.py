@@ -1,11 +1,14 @@
-"""What the rules on Python launch files share: which files they read, the function's name."""
+"""What the rules on Python launch files share: which files they read, the function's name,
+the launch classes calls make."""
 
 from __future__ import annotations
 
+import ast
 from collections.abc import Iterator
 
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
+from pkgtool.rules.syntax_trees import qualified
 
 FUNCTION = "generate_launch_description"
 """The function ``ros2 launch`` calls in a Python launch file."""
@@ -19,3 +22,15 @@ def python_launch_files(package: Package) -> Iterator[tuple[str, PythonModule, s
         if module is not None and not module.syntax_error and text is not None and \
                 not module.is_test:
             yield launch.path, module, text
+
+
+def within(module: str, homes: tuple[str, ...]) -> bool:
+    """True when ``module`` is one of ``homes`` or a submodule of one."""
+    return any(module == home or module.startswith(home + ".") for home in homes)
+
+
+def launch_class(call: ast.Call, aliases: dict[str, str]) -> tuple[str, str]:
+    """The module and class a call makes when bound by an import (``launch.actions``,
+    ``DeclareLaunchArgument``); ``("", "")`` for any other call."""
+    module, _, name = (qualified(call.func, aliases) or "").rpartition(".")
+    return (module, name) if module.split(".")[0] in ("launch", "launch_ros") else ("", "")

@@ -9,26 +9,14 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
-from pkgtool.rules.launch._python_launch import python_launch_files
+from pkgtool.rules.launch._python_launch import launch_class, python_launch_files, within
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import index_of, qualified
+from pkgtool.rules.syntax_trees import index_of
 
 DECLARE_KEYWORDS = ("name", "default_value", "description", "choices", "condition")
 """The keywords ``DeclareLaunchArgument`` takes (``condition`` is every action's)."""
 ACTION_MODULES = ("launch.actions", "launch_ros.actions")
 """The modules whose classes are all actions."""
-
-
-def _within(module: str, homes: tuple[str, ...]) -> bool:
-    """True when ``module`` is one of ``homes`` or a submodule of one."""
-    return any(module == home or module.startswith(home + ".") for home in homes)
-
-
-def _launch_class(call: ast.Call, aliases: dict[str, str]) -> tuple[str, str]:
-    """The module and class a call makes when bound by an import (``launch.actions``,
-    ``DeclareLaunchArgument``); ``("", "")`` for any other call."""
-    module, _, name = (qualified(call.func, aliases) or "").rpartition(".")
-    return (module, name) if module.split(".")[0] in ("launch", "launch_ros") else ("", "")
 
 
 def _not_text(value: ast.expr) -> ast.Constant | None:
@@ -68,8 +56,8 @@ def _include(call: ast.Call, _: dict[str, str]) -> Iterator[tuple[ast.AST, str, 
 
 def _description(call: ast.Call, aliases: dict[str, str]) -> Iterator[tuple[ast.AST, str, str]]:
     entity = call.args[0] if call.args else None
-    module, made = _launch_class(entity, aliases) if isinstance(entity, ast.Call) else ("", "")
-    if _within(module, ACTION_MODULES) and made[:1].isupper():
+    module, made = launch_class(entity, aliases) if isinstance(entity, ast.Call) else ("", "")
+    if within(module, ACTION_MODULES) and made[:1].isupper():
         yield (entity, f"`LaunchDescription()` is given one `{made}`, not a list: it raises "
                f"TypeError ('{made}' object is not iterable)",
                f"Write `LaunchDescription([{made}(...)])`")
@@ -121,9 +109,9 @@ def invalid_launch_action_argument(package: Package) -> Iterator[Hit]:
             continue
         index = index_of(tree)
         for call in index.calls:
-            module, name = _launch_class(call, index.aliases)
+            module, name = launch_class(call, index.aliases)
             home, check = CHECKS.get(name, ("-", None))
-            found = check(call, index.aliases) if check and _within(module, (home,)) else ()
+            found = check(call, index.aliases) if check and within(module, (home,)) else ()
             for node, message, fix in found:
                 yield Hit(Span(path, node.lineno, node.col_offset + 1),  # type: ignore
                           message, fix)

@@ -290,3 +290,17 @@ def launch_argument_default_not_text(root: Path) -> None:
     edit(root, PY, "name='talker',\n            parameters=[params]",
          "name='talker',\n"
          "            parameters=[params, {'use_sim_time': LaunchConfiguration('use_sim_time')}]")
+
+
+@case("LCH011", PY, "namespace=namespace + '/sensors'")
+def launch_configuration_joined_with_plus(root: Path) -> None:
+    edit(root, PY, "from launch import LaunchDescription\n", "from launch import "
+         "LaunchDescription\nfrom launch.actions import DeclareLaunchArgument\n")
+    edit(root, PY, "from launch.substitutions import PathJoinSubstitution",
+         "from launch.substitutions import LaunchConfiguration, PathJoinSubstitution")
+    edit(root, PY, "    return LaunchDescription([\n",
+         "    namespace = LaunchConfiguration('namespace')\n"
+         "    return LaunchDescription([\n"
+         "        DeclareLaunchArgument('namespace', default_value='robot'),\n")
+    edit(root, PY, "name='talker',\n", "name='talker',\n"
+         "            namespace=namespace + '/sensors',\n")

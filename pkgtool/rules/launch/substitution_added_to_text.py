@@ -1,0 +1,97 @@
+"""LCH011: a launch substitution joined to text with ``+`` (``namespace + "/camera"``)."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.model.python_visitor import parse_tree
+from pkgtool.model.span import Span
+from pkgtool.rules.launch._python_launch import launch_class, python_launch_files, within
+from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import Index, index_of
+
+SUBSTITUTIONS = ("launch.substitutions", "launch_ros.substitutions")
+"""The modules whose classes are all substitutions."""
+
+
+def _substitution(value: ast.expr, index: Index, single: dict[str, ast.expr]) -> str | None:
+    """The substitution class ``value`` makes (directly, or through a name the function binds
+    once, to it), else None."""
+    if isinstance(value, ast.Name) and value.id in single:
+        value = single[value.id]
+    if not isinstance(value, ast.Call):
+        return None
+    module, name = launch_class(value, index.aliases)
+    return name if within(module, SUBSTITUTIONS) and name[:1].isupper() else None
+
+
+def _single_bindings(function: ast.AST) -> dict[str, ast.expr]:
+    """Names bound exactly once in ``function`` (and its nested scopes), by ``name = value``,
+    with their value."""
+    counts: dict[str, int] = {}
+    values: dict[str, ast.expr] = {}
+    for node in ast.walk(function):
+        if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
+            counts[node.id] = counts.get(node.id, 0) + 1
+        elif isinstance(node, ast.arg):
+            counts[node.arg] = counts.get(node.arg, 0) + 2
+        if isinstance(node, ast.Assign) and len(node.targets) == 1 and \
+                isinstance(node.targets[0], ast.Name):
+            values[node.targets[0].id] = node.value
+    return {name: value for name, value in values.items() if counts.get(name) == 1}
+
+
+def _text(value: ast.expr) -> bool:
+    return isinstance(value, ast.JoinedStr) or \
+        isinstance(value, ast.Constant) and isinstance(value.value, str)
+
+
+@rule("LCH011", "substitution-added-to-text", Severity.ERROR,
+      fix="Put the parts in a list: `[LaunchConfiguration('ns'), '/camera']`")
+def substitution_added_to_text(package: Package) -> Iterator[Hit]:
+    """A launch substitution is joined to a string with `+`.
+
+    ## What it does
+    In the functions of Python launch files, reports `+` between a string literal (or an
+    f-string) and a substitution of `launch.substitutions` or `launch_ros.substitutions`:
+    a call such as `LaunchConfiguration('ns')`, or a name the function binds once, to one.
+
+    ## Why is this bad?
+    A substitution is not a string: it is only evaluated when the launch runs, and it
+    defines no `+`. `ros2 launch` fails while it builds the description, with `TypeError:
+    unsupported operand type(s) for +`. Launch takes a list of parts instead (text and
+    substitutions), concatenated when the launch runs.
+
+    ## Example
+    ```python
+    namespace = LaunchConfiguration('namespace')
+    Node(..., namespace=namespace + '/camera')
+    ```
+
+    ## Use instead
+    ```python
+    namespace = LaunchConfiguration('namespace')
+    Node(..., namespace=[namespace, '/camera'])
+    ```
+    """
+    for path, _, text in python_launch_files(package):
+        tree = parse_tree(path, text)
+        if not isinstance(tree, ast.Module):
+            continue
+        index = index_of(tree)
+        for function in index.functions:
+            single = _single_bindings(function)
+            for node in ast.walk(function):
+                if not (isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add)) or \
+                        index.enclosing_function(node) is not function:
+                    continue
+                pair = (node.left, node.right)
+                made = next((m for m in (_substitution(v, index, single) for v in pair) if m),
+                            None)
+                if made and any(_text(v) for v in pair):
+                    yield Hit(Span(path, node.lineno, node.col_offset + 1),
+                              f"A `{made}` is joined to a string with `+`: it raises "
+                              "TypeError (a substitution is no string)")
