@@ -4,6 +4,11 @@
 same tree again. :func:`nodes_of` walks it once (breadth first, the order of ``ast.walk``)
 and keeps the list for the trees in use (``parse_tree`` returns one tree per file and text);
 :func:`nodes_of_class` gives the nodes of a few classes without looking at the others.
+
+These walks leave out the context and operator nodes (``ast.Load``, ``ast.Add``, ``ast.Eq``
+...): a third of a tree's nodes, shared singletons without fields that tell nothing but the
+class of their parent's ``ctx``, ``op`` or ``ops`` (read them there). They look only at
+:data:`CHILD_FIELDS`.
 """
 
 from __future__ import annotations
@@ -19,6 +24,27 @@ PARTS = 256
 """How many parts of trees (functions, classes) a cache of facts per part keeps: more than most
 packages have (several rules look at the same parts one after another), few enough that the
 trees of the packages done do not stay for long."""
+
+
+_LEAF_FIELDS = frozenset({"ctx", "op", "ops",  # the singletons the walks leave out
+                          "id", "attr", "arg", "asname", "module", "level", "kind", "conversion",
+                          "is_async", "simple", "rest", "tag", "kwd_attrs", "type_comment"})
+"""Fields that never hold a node the walks take, in any node class (names, numbers, flags)."""
+
+
+class _ChildFields(dict[type, tuple[str, ...]]):
+    """The fields of each node class that may hold child nodes, in field order."""
+
+    def __missing__(self, kind: type) -> tuple[str, ...]:
+        found = tuple(name for name in kind._fields if name not in _LEAF_FIELDS
+                      and not (kind is ast.Constant and name == "value"))
+        self[kind] = found
+        return found
+
+
+CHILD_FIELDS = _ChildFields()
+"""The fields of a node class the walks look at: ``CHILD_FIELDS[type(node)]``."""
+_NODE = ast.AST
 
 
 @record
@@ -48,36 +74,38 @@ def walk_once(tree: ast.AST) -> Walk:
             by_class[kind].append(node)
         else:
             by_class[kind] = [node]
-        for name in node._fields:
+        for name in CHILD_FIELDS[kind]:
             value = getattr(node, name, None)
             if type(value) is list:
                 for item in value:
-                    if isinstance(item, ast.AST):
+                    if isinstance(item, _NODE):
                         parents[id(item)] = node
                         append(item)
-            elif isinstance(value, ast.AST):
+            elif isinstance(value, _NODE):
                 parents[id(value)] = node
                 append(value)
     return Walk(tuple(found), parents, by_class)
 
 
 def child_nodes(node: ast.AST) -> list[ast.AST]:
-    """``list(ast.iter_child_nodes(node))``, without its two generators."""
+    """``list(ast.iter_child_nodes(node))`` without its two generators, and without context
+    and operator nodes."""
     found: list[ast.AST] = []
-    for name in node._fields:
+    for name in CHILD_FIELDS[type(node)]:
         value = getattr(node, name, None)
         if type(value) is list:
             for item in value:
-                if isinstance(item, ast.AST):
+                if isinstance(item, _NODE):
                     found.append(item)
-        elif isinstance(value, ast.AST):
+        elif isinstance(value, _NODE):
             found.append(value)
     return found
 
 
 @per_object(PARTS)
 def subtree(node: ast.AST) -> tuple[ast.AST, ...]:
-    """``tuple(ast.walk(node))`` (breadth first), computed once per node object."""
+    """``tuple(ast.walk(node))`` (breadth first) without context and operator nodes, computed
+    once per node object."""
     found = [node]
     for current in found:  # the list grows while it is read: breadth first
         found.extend(child_nodes(current))
@@ -85,7 +113,8 @@ def subtree(node: ast.AST) -> tuple[ast.AST, ...]:
 
 
 def nodes_of(tree: ast.AST) -> tuple[ast.AST, ...]:
-    """``tuple(ast.walk(tree))``, computed once per tree object."""
+    """``tuple(ast.walk(tree))`` without context and operator nodes, computed once per tree
+    object."""
     return walk_once(tree).nodes
 
 

@@ -21,7 +21,7 @@ from collections.abc import Callable
 from functools import cache
 from typing import Any
 
-from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.ast_nodes import CHILD_FIELDS, nodes_of_class
 
 _KNOWN = frozenset(dir(builtins)) | {"__file__", "__builtins__", "__annotations__",
                                      "WindowsError"}
@@ -37,8 +37,8 @@ class Undecided(Exception):
 
 @cache
 def _field_order(kind: type[ast.AST]) -> tuple[str, ...]:
-    """The order pyflakes visits the fields of ``kind`` in."""
-    fields = kind._fields
+    """The order pyflakes visits the fields of ``kind`` that may hold nodes in."""
+    fields = CHILD_FIELDS[kind]
     first = "iter" if "iter" in fields else "generators" if "generators" in fields else "value"
     return tuple(sorted(fields, key=first.find, reverse=True))
 
