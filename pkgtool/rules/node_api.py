@@ -12,7 +12,7 @@ from collections.abc import Collection, Iterator
 
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
-from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
+from pkgtool.rules.syntax_trees import Index, installed_trees
 
 PARAMETERS = {
     "create_publisher": ("msg_type", "topic", "qos_profile"),
@@ -113,7 +113,7 @@ def node_subclasses(index: Index) -> list[ast.ClassDef]:
     while grew:
         names = {c.name for c in found}
         more = [c for c in index.classes if c not in found and any(
-            qualified(b, index.aliases) in NODE_CLASSES or
+            index.qualified(b) in NODE_CLASSES or
             isinstance(b, ast.Name) and b.id in names for b in c.bases)]
         found.extend(more)
         grew = bool(more)
@@ -123,11 +123,11 @@ def node_subclasses(index: Index) -> list[ast.ClassDef]:
 def node_constructions(index: Index) -> Iterator[ast.Call]:
     """``super().__init__(...)`` calls in Node subclasses, and Node/create_node calls."""
     node_classes = {id(c) for c in index.classes
-                    if any(qualified(b, index.aliases) in NODE_CLASSES for b in c.bases)}
+                    if any(index.qualified(b) in NODE_CLASSES for b in c.bases)}
     for call in index.calls:
         if isinstance(call.func, ast.Attribute) and call.func.attr == "__init__" and \
                 isinstance(call.func.value, ast.Call) and \
                 getattr(call.func.value.func, "id", "") == "super" and \
                 id(index.enclosing_class(call)) in node_classes:
             yield call
-    yield from (c for c in index.calls if qualified(c.func, index.aliases) in NODE_CLASSES)
+    yield from (c for c in index.calls if index.qualified(c.func) in NODE_CLASSES)

@@ -23,7 +23,7 @@ from pkgtool.model.span import Span
 from pkgtool.records import record
 from pkgtool.rules.console_scripts import scripts_and_modules
 from pkgtool.rules.node_api import NODE_CLASSES, name_argument, node_constructions
-from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
+from pkgtool.rules.syntax_trees import Index, installed_trees
 
 PERMISSIVE = frozenset({"allow_undeclared_parameters",
                         "automatically_declare_parameters_from_overrides"})
@@ -224,9 +224,9 @@ def module_nodes(package: Package) -> dict[str, ModuleNodes]:
     for module, tree, index in installed_trees(package):
         skip = _module_skip(tree)
         direct = [c for c in index.classes
-                  if any(qualified(b, index.aliases) in NODE_CLASSES for b in c.bases)]
+                  if any(index.qualified(b) in NODE_CLASSES for b in c.bases)]
         calls = tuple(_literal_string(name_argument(c)) for c in index.calls
-                      if qualified(c.func, index.aliases) in NODE_CLASSES)
+                      if index.qualified(c.func) in NODE_CLASSES)
         found[module.path] = ModuleNodes(
             tuple(_node_class(module.path, c, index, skip) for c in direct),
             len(index.classes) > len(direct), calls)

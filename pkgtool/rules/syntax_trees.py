@@ -26,7 +26,8 @@ class Index:
     """The nodes of one module the PYC rules look at, collected in a single walk.
 
     ``aliases`` maps names bound only by imports to the dotted name they stand for;
-    ``parents`` maps ``id(node)`` to the node's parent.
+    ``parents`` maps ``id(node)`` to the node's parent; ``dotted`` keeps what
+    :meth:`qualified` found, by ``id(node)`` (with the node: its id is not reused meanwhile).
     """
 
     attributes: list[ast.Attribute] = field(default_factory=list)
@@ -37,6 +38,18 @@ class Index:
     classes: list[ast.ClassDef] = field(default_factory=list)
     parents: dict[int, ast.AST] = field(default_factory=dict)
     aliases: dict[str, str] = field(default_factory=dict)
+    dotted: dict[int, tuple[ast.expr, str | None]] = field(default_factory=dict, compare=False,
+                                                           repr=False)
+
+    def qualified(self, node: ast.expr) -> str | None:
+        """The dotted name an expression like ``np.int0`` stands for, or None; worked out once
+        per node (rules ask about the same callees)."""
+        known = self.dotted.get(id(node))
+        if known is not None and known[0] is node:
+            return known[1]
+        found = _qualified(node, self.aliases)
+        self.dotted[id(node)] = (node, found)
+        return found
 
     def enclosing_class(self, node: ast.AST) -> ast.ClassDef | None:
         """The innermost class around ``node``, or None."""
@@ -140,7 +153,7 @@ def installed_trees(package: Package) -> Iterator[tuple[PythonModule, ast.Module
         yield module, tree, index_of(tree)
 
 
-def qualified(node: ast.expr, aliases: dict[str, str]) -> str | None:
+def _qualified(node: ast.expr, aliases: dict[str, str]) -> str | None:
     """The dotted name an expression like ``np.int0`` stands for, or None."""
     attrs: list[str] = []
     while isinstance(node, ast.Attribute):
@@ -160,7 +173,7 @@ def resolved_attributes(index: Index) -> tuple[tuple[ast.Attribute, str, str], .
 
 def _resolved(index: Index) -> Iterator[tuple[ast.Attribute, str, str]]:
     for node in index.attributes:
-        name = qualified(node, index.aliases)
+        name = index.qualified(node)
         if name is not None:
             owner, _, attr = name.rpartition(".")
             yield node, owner, attr

@@ -10,7 +10,7 @@ from pkgtool.model.package import Package
 from pkgtool.rules.console_scripts import scripts_and_modules
 from pkgtool.rules.node_api import node_subclasses
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import installed_trees, qualified
+from pkgtool.rules.syntax_trees import installed_trees
 
 
 def _uninitialised_node(package: Package, path: str, name: str) -> bool:
@@ -24,7 +24,7 @@ def _uninitialised_node(package: Package, path: str, name: str) -> bool:
             return False
         top = [s for s in tree.body if not isinstance(s, (ast.FunctionDef, ast.AsyncFunctionDef,
                                                           ast.ClassDef))]
-        return not any(isinstance(n, ast.Call) and qualified(n.func, index.aliases) == "rclpy.init"
+        return not any(isinstance(n, ast.Call) and index.qualified(n.func) == "rclpy.init"
                        for part in (node, *top) for n in ast.walk(part))
     return False
 

@@ -9,7 +9,7 @@ from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.rules.node_api import (ACTION_SERVER_CALLBACKS, ACTION_SERVERS, CALLBACKS,
                                     argument, node_api_calls)
-from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
+from pkgtool.rules.syntax_trees import Index, installed_trees
 
 
 Argument = tuple[str, ast.expr, str, str, Index, ast.Module]
@@ -34,7 +34,7 @@ def _arguments(package: Package) -> Iterator[Argument]:
                 yield module.path, value, f"{method}()", name, index, trees[module.path]
     for module, tree, index in installed_trees(package):
         for call in index.calls:
-            if qualified(call.func, index.aliases) in ACTION_SERVERS:
+            if index.qualified(call.func) in ACTION_SERVERS:
                 for name in ACTION_SERVER_CALLBACKS[1]:
                     value = argument(call, ACTION_SERVER_CALLBACKS[0], name)
                     if value is not None:

@@ -22,7 +22,7 @@ from pkgtool.records import record
 from pkgtool.rules.node_api import PARAMETERS, argument, node_api_calls, unpacks
 from pkgtool.rules.node_parameters import analysed_classes, file_entries, flat_parameters
 from pkgtool.rules.scopes import bound_names
-from pkgtool.rules.syntax_trees import FUNCTIONS, Index, qualified
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index
 
 _QOS = "rclpy.qos"
 _PRESETS = {"qos_profile_sensor_data": ("BEST_EFFORT", "VOLATILE"),
@@ -74,7 +74,7 @@ def endpoints(package: Package) -> tuple[Endpoint, ...]:
 
 def _message(kind: ast.expr, index: Index) -> str | None:
     """``pkg/Name`` of a message class imported by name, or None."""
-    dotted = qualified(kind, index.aliases)
+    dotted = index.qualified(kind)
     parts = dotted.split(".") if dotted else []
     return f"{parts[0]}/{parts[-1]}" if len(parts) >= 3 and parts[1] == "msg" else None
 
@@ -187,7 +187,7 @@ def _profile(expr: ast.expr, index: Index) -> tuple[str, str] | None:
                   and isinstance(n.value, ast.Name) and n.value.id == expr.id
                   and not isinstance(n.ctx, ast.Load)] if function is not None else [expr]
         return None if stores or isinstance(value, ast.Name) else _profile(value, index)
-    dotted = qualified(expr.func if isinstance(expr, ast.Call) else expr, index.aliases) or ""
+    dotted = index.qualified(expr.func if isinstance(expr, ast.Call) else expr) or ""
     module, _, name = dotted.partition(".qos.")
     if module != "rclpy" or not name:
         return None
@@ -198,7 +198,7 @@ def _profile(expr: ast.expr, index: Index) -> tuple[str, str] | None:
     policies = {"reliability": "RELIABLE", "durability": "VOLATILE"}
     for keyword in expr.keywords:
         if keyword.arg in _POLICIES:
-            value = qualified(keyword.value, index.aliases) or ""
+            value = index.qualified(keyword.value) or ""
             owner, _, policy = value.rpartition(".")
             if not owner.startswith(f"{_QOS}.") or owner.rsplit(".", 1)[1] not in \
                     _POLICIES[keyword.arg] or policy not in _VALUES:

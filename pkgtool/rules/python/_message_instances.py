@@ -28,7 +28,7 @@ from pkgtool.model.package import Package
 from pkgtool.records import record
 from pkgtool.rules.node_api import ACTION_SERVER_CALLBACKS, ACTION_SERVERS, PARAMETERS, argument
 from pkgtool.rules.scopes import BINDERS, scope_bindings
-from pkgtool.rules.syntax_trees import FUNCTIONS, Index, qualified
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index
 
 Known = Callable[[ast.expr], Message | None]
 """The known message class a constructor's callee stands for, or None."""
@@ -303,7 +303,7 @@ def _registrations(index: Index, known: Known
             kind = argument(call, PARAMETERS[method], "srv_type")
             callback = argument(call, PARAMETERS[method], "callback")
             parts = [(_companion(kind, "Request"), None), (_companion(kind, "Response"), None)]
-        elif qualified(call.func, index.aliases) in ACTION_SERVERS:
+        elif index.qualified(call.func) in ACTION_SERVERS:
             kind = argument(call, ACTION_SERVER_CALLBACKS[0], "action_type")
             callback = argument(call, ACTION_SERVER_CALLBACKS[0], "execute_callback")
             parts = [(_companion(kind, "Goal"), "request")]
@@ -394,7 +394,7 @@ def known_messages(package: Package, index: Index, distro: str | None = None) ->
     distro = distro or package.context.distro
 
     def known(func: ast.expr) -> Message | None:
-        dotted = qualified(func, index.aliases)
+        dotted = index.qualified(func)
         if ros1 or dotted is None or package.context.workspace.get(dotted.split(".")[0]):
             return None
         return message_of(dotted, distro)

@@ -10,7 +10,7 @@ from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
+from pkgtool.rules.syntax_trees import Index, installed_trees
 
 LEVELS = frozenset({"debug", "info", "warning", "warn", "error", "fatal"})
 """The methods of rclpy's logger taking ``(message, **options)``."""
@@ -26,7 +26,7 @@ def _is_logger_call(node: ast.AST, index: Index) -> bool:
     """True for ``<x>.get_logger()`` or ``rclpy.logging.get_logger(...)``."""
     return isinstance(node, ast.Call) and (
         isinstance(node.func, ast.Attribute) and node.func.attr == "get_logger"
-        or qualified(node.func, index.aliases) in GETTERS)
+        or index.qualified(node.func) in GETTERS)
 
 
 def _loggers(tree: ast.Module, index: Index) -> set[str]:

@@ -13,7 +13,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.imports import entry_points_installed
 from pkgtool.rules.node_api import NODE_CLASSES, node_subclasses
-from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees, qualified
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 from pkgtool.rules.registry import rule
 
 _INITS = frozenset({"rclpy.init", "rclpy.utilities.init"})
@@ -62,7 +62,7 @@ class _Reach:
                 self._call(node, local)
 
     def _call(self, call: ast.Call, local: set[str]) -> None:
-        name = qualified(call.func, self.index.aliases)
+        name = self.index.qualified(call.func)
         root = _root(call.func)
         attr = call.func.attr if isinstance(call.func, ast.Attribute) else ""
         if name in NODE_CLASSES or name and name.startswith("rclpy.") and attr in _SPINS or \

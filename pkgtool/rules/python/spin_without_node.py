@@ -12,7 +12,7 @@ from pkgtool.model.span import Span
 from pkgtool.rules.node_api import node_subclasses, unpacks
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings, scope_walk
-from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
+from pkgtool.rules.syntax_trees import Index, installed_trees
 
 SPINS = {"rclpy.spin": ("node",), "rclpy.spin_once": ("node",),
          "rclpy.spin_until_future_complete": ("node", "future")}
@@ -82,7 +82,7 @@ def _node_class(value: ast.expr, classes: set[str], scopes: list[Scope]) -> str 
 def _is_executor(value: ast.expr, index: Index, scopes: list[Scope]) -> bool:
     """True for a variable only ever assigned an rclpy executor (``SingleThreadedExecutor()``)."""
     values = _values(value.id, scopes) if isinstance(value, ast.Name) else []
-    names = [qualified(v.func, index.aliases) if isinstance(v, ast.Call) else None
+    names = [index.qualified(v.func) if isinstance(v, ast.Call) else None
              for v in values]
     return bool(names) and all(n and n.startswith("rclpy.") and n.endswith("Executor")
                                for n in names)
@@ -145,7 +145,7 @@ def spin_without_node(package: Package) -> Iterator[Hit]:
             continue
         classes = {c.name for c in node_subclasses(index) if c in tree.body}
         for call in index.calls:
-            target = qualified(call.func, index.aliases)
+            target = index.qualified(call.func)
             required = SPINS.get(target or "")
             if required is None and isinstance(call.func, ast.Attribute) and \
                     call.func.attr == ADD_NODE and target is None:

@@ -8,7 +8,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.syntax_trees import installed_trees, qualified
+from pkgtool.rules.syntax_trees import Index, installed_trees
 from pkgtool.rules.registry import rule
 
 _NAME = "spin_until_future_complete"
@@ -37,16 +37,16 @@ def _request_futures(scope: ast.AST) -> set[str]:
             for name in [_dotted(target)] if name}
 
 
-def _waited_future(call: ast.Call, aliases: dict[str, str]) -> ast.expr | None:
+def _waited_future(call: ast.Call, index: Index) -> ast.expr | None:
     """The future a spin call waits for without a timeout, or None (timeout, not a spin)."""
     if any(isinstance(a, ast.Starred) for a in call.args) or any(
             k.arg in (None, "timeout_sec") for k in call.keywords):
         return None
     keyword = next((k.value for k in call.keywords if k.arg == "future"), None)
-    if qualified(call.func, aliases) == f"rclpy.{_NAME}" and len(call.args) < 4:
+    if index.qualified(call.func) == f"rclpy.{_NAME}" and len(call.args) < 4:
         return keyword or (call.args[1] if len(call.args) > 1 else None)
     if (isinstance(call.func, ast.Attribute) and call.func.attr == _NAME
-            and qualified(call.func, aliases) is None and len(call.args) < 2):
+            and index.qualified(call.func) is None and len(call.args) < 2):
         return keyword or (call.args[0] if call.args else None)
     return None
 
@@ -84,7 +84,7 @@ def spin_without_timeout(package: Package) -> Iterator[Hit]:
     for module, tree, index in installed_trees(package):
         attributes: set[str] | None = None
         for node in index.calls:
-            future = _waited_future(node, index.aliases)
+            future = _waited_future(node, index)
             if future is None:
                 continue
             if not _is_request(future):

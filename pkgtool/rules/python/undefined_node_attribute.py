@@ -15,7 +15,7 @@ from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.python._message_instances import method_receiver
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings
-from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees, qualified
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
 _DYNAMIC = frozenset({"setattr", "delattr", "vars", "__dict__", "__getattr__",
                       "__getattribute__", "__setattr__", "__slots__"})
@@ -47,7 +47,7 @@ def _node_classes(index: Index, bases: set[str]) -> Iterator[ast.ClassDef]:
     """Plain classes deriving from rclpy's Node alone that no class of the package extends."""
     for cls in index.classes:
         if len(cls.bases) == 1 and not cls.keywords and not cls.decorator_list and \
-                qualified(cls.bases[0], index.aliases) == "rclpy.node.Node" and \
+                index.qualified(cls.bases[0]) == "rclpy.node.Node" and \
                 cls.name not in bases:
             yield cls
 

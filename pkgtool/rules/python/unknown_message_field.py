@@ -17,7 +17,7 @@ from pkgtool.model.static_branches import dead_lines, depends_on_ros_distro
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.python._message_instances import (Instance, Known, known_messages,
                                                      message_instances)
-from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
+from pkgtool.rules.syntax_trees import Index, installed_trees
 from pkgtool.rules.registry import rule
 
 
@@ -167,7 +167,7 @@ def _wrong_class_attributes(index: Index, known: Known, probed: frozenset[str]
     for node in index.attributes:
         if node.attr.startswith("_") or guarded(node, index, probed):
             continue
-        kind = (qualified(node.value, index.aliases) or "").split(".")
+        kind = (index.qualified(node.value) or "").split(".")
         companions = _COMPANIONS.get(kind[1], ()) if len(kind) == 3 else ()
         if companions and known(ast.Attribute(value=node.value, attr=companions[0],
                                               ctx=ast.Load())):
