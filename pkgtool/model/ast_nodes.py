@@ -102,14 +102,20 @@ def child_nodes(node: ast.AST) -> list[ast.AST]:
     return found
 
 
-@per_object(PARTS)
-def subtree(node: ast.AST) -> tuple[ast.AST, ...]:
-    """``tuple(ast.walk(node))`` (breadth first) without context and operator nodes, computed
-    once per node object."""
+def descendants(node: ast.AST) -> list[ast.AST]:
+    """``list(ast.walk(node))`` (breadth first) without its generators, and without context
+    and operator nodes: for the small parts of trees (a test, an expression) looked at once."""
     found = [node]
     for current in found:  # the list grows while it is read: breadth first
         found.extend(child_nodes(current))
-    return tuple(found)
+    return found
+
+
+@per_object(PARTS)
+def subtree(node: ast.AST) -> tuple[ast.AST, ...]:
+    """:func:`descendants` of ``node`` computed once per node object (functions and classes
+    several rules look at)."""
+    return tuple(descendants(node))
 
 
 def nodes_of(tree: ast.AST) -> tuple[ast.AST, ...]:

@@ -11,6 +11,7 @@ from __future__ import annotations
 import ast
 from collections.abc import Iterator
 
+from pkgtool.model.ast_nodes import child_nodes, descendants
 from pkgtool.model.launch import FileRef, NodeRef, PackageRef
 from pkgtool.model.launch_remaps import not_pairs
 from pkgtool.model.launch_scopes import bindings, import_origins, unread_calls
@@ -86,6 +87,12 @@ class _Reader(ast.NodeVisitor):
     def _span(self, node: ast.AST) -> Span:
         return Span(self.path, getattr(node, "lineno", 1), getattr(node, "col_offset", 0) + 1)
 
+    def generic_visit(self, node: ast.AST) -> None:
+        """Visit the children as ``ast.NodeVisitor`` does, less the context and operator nodes
+        (nothing here visits them): a third fewer visits."""
+        for child in child_nodes(node):
+            self.visit(child)
+
     # scopes -----------------------------------------------------------------------------
     def visit_FunctionDef(self, node: ast.FunctionDef | ast.AsyncFunctionDef) -> None:
         for default in (*node.args.defaults, *node.args.kw_defaults, *node.decorator_list):
@@ -105,7 +112,7 @@ class _Reader(ast.NodeVisitor):
     def visit_If(self, node: ast.If) -> None:
         self.visit(node.test)
         checked = any(isinstance(n, ast.Call) and _name(n.func) in PRESENCE_CHECKS
-                      for n in ast.walk(node.test))
+                      for n in descendants(node.test))
         distro = depends_on_ros_distro(node.test, self._assigned)
         self.distro_branches += distro
         self._visit_block(node.body, checked)
@@ -128,7 +135,8 @@ class _Reader(ast.NodeVisitor):
     def visit_Try(self, node: ast.Try) -> None:
         checked = any(isinstance(n, (ast.Name, ast.Attribute)) and
                       _name(n) == "PackageNotFoundError"
-                      for handler in node.handlers if handler.type for n in ast.walk(handler.type))
+                      for handler in node.handlers if handler.type
+                      for n in descendants(handler.type))
         self._visit_block(node.body, checked)
         for part in (*node.handlers, *node.orelse, *node.finalbody):
             self.visit(part)

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import ast
 
-from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.ast_nodes import child_nodes, descendants, nodes_of_class, subtree
 
 
 def bindings(body: list[ast.stmt], params: ast.arguments | None) -> dict[str, ast.expr | None]:
@@ -47,7 +47,9 @@ def scope_nodes(body: list[ast.stmt]) -> list[ast.AST]:
         result.append(node)
         if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda)):
             continue
-        stack.extend(reversed(list(ast.iter_child_nodes(node))))
+        children = child_nodes(node)
+        children.reverse()
+        stack += children
     return result
 
 
@@ -61,7 +63,7 @@ def unread_calls(function: ast.FunctionDef | ast.AsyncFunctionDef) -> set[ast.Ca
     ``global`` or ``nonlocal`` declaration, no ``locals()``, ``vars()``, ``eval`` or ``exec``
     in it, and no ``:=`` inside the call (the value it names may be read)."""
     read: set[str] = set()
-    for node in ast.walk(function):
+    for node in subtree(function):
         if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Store):
             read.add(node.id)
         elif isinstance(node, (ast.Global, ast.Nonlocal)):
@@ -72,7 +74,7 @@ def unread_calls(function: ast.FunctionDef | ast.AsyncFunctionDef) -> set[ast.Ca
     return {node.value for node in scope_nodes(function.body)
             if simple_assignment(node) and isinstance(node.value, ast.Call)
             and node.targets[0].id not in read  # type: ignore[attr-defined]
-            and not any(isinstance(n, ast.NamedExpr) for n in ast.walk(node.value))}
+            and not any(isinstance(n, ast.NamedExpr) for n in descendants(node.value))}
 
 
 def import_origins(tree: ast.Module) -> dict[str, set[str]]:

@@ -5,6 +5,7 @@ from __future__ import annotations
 import ast
 import functools
 
+from pkgtool.model.ast_nodes import descendants
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.model.static_branches import mentions_module_name, module_constants, truth
@@ -28,7 +29,7 @@ def _is_type_checking(test: ast.expr) -> bool:
 def _mentions_find_spec(test: ast.expr) -> bool:
     return any(isinstance(n, (ast.Attribute, ast.Name)) and
                (n.attr if isinstance(n, ast.Attribute) else n.id) in ("find_spec", "find_loader")
-               for n in ast.walk(test))
+               for n in descendants(test))
 
 
 def _is_find_spec_exit(node: ast.AST) -> bool:

@@ -24,7 +24,7 @@ import operator
 from collections import Counter
 from collections.abc import Callable
 
-from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.ast_nodes import descendants, nodes_of_class
 from pkgtool.model.memo import per_object
 
 _COMPARE = {ast.Lt: operator.lt, ast.LtE: operator.le, ast.Gt: operator.gt,
@@ -169,7 +169,7 @@ def _ros_version_side(node: ast.expr) -> str | None:
 
 def mentions_module_name(test: ast.expr) -> bool:
     """The test looks at ``__name__``/``__package__``/``__spec__``: run as script or package."""
-    return any(isinstance(n, ast.Name) and n.id in MODULE_DUNDERS for n in ast.walk(test))
+    return any(isinstance(n, ast.Name) and n.id in MODULE_DUNDERS for n in descendants(test))
 
 
 def dead_lines(tree: ast.Module) -> list[tuple[int, int]]:
@@ -212,12 +212,12 @@ def depends_on_ros_distro(test: ast.expr,
     """The test reads the ROS distribution: directly, or through a name whose one assignment
     (``assigned`` looks it up in the enclosing scopes) reads it. Code in either branch is
     written for some distributions only."""
-    for node in ast.walk(test):
+    for node in descendants(test):
         if _reads_ros_distro(node):
             return True
         if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
             value = assigned(node.id)
-            if value is not None and any(_reads_ros_distro(n) for n in ast.walk(value)):
+            if value is not None and any(_reads_ros_distro(n) for n in descendants(value)):
                 return True
     return False
 

@@ -6,6 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import descendants
 from pkgtool.model.package import Package
 from pkgtool.rules.console_scripts import scripts_and_modules
 from pkgtool.rules.node_api import node_subclasses
@@ -25,7 +26,7 @@ def _uninitialised_node(package: Package, path: str, name: str) -> bool:
         top = [s for s in tree.body if not isinstance(s, (ast.FunctionDef, ast.AsyncFunctionDef,
                                                           ast.ClassDef))]
         return not any(isinstance(n, ast.Call) and index.qualified(n.func) == "rclpy.init"
-                       for part in (node, *top) for n in ast.walk(part))
+                       for part in (node, *top) for n in descendants(part))
     return False
 
 

@@ -7,6 +7,7 @@ from collections.abc import Iterator
 from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
@@ -66,8 +67,7 @@ def misspelled_launch_argument(package: Package) -> Iterator[Hit]:
     declared_anywhere: set[str] = set()
     calls: dict[str, list[ast.Call]] = {}
     for path, tree, _ in files:
-        found = [n for n in ast.walk(tree) if isinstance(n, ast.Call)] \
-            if isinstance(tree, ast.Module) else []
+        found = nodes_of_class(tree, ast.Call) if isinstance(tree, ast.Module) else []
         calls[path] = found
         declared_anywhere.update(name for c in found if _name(c.func) == _DECLARE
                                  and (name := _literal(c, "name")) is not None)

@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import ast
 
+from pkgtool.model.ast_nodes import descendants
 from pkgtool.rules.syntax_trees import Index
 
 _GUARDS = frozenset({"AttributeError", "Exception", "BaseException"})
@@ -27,7 +28,7 @@ def guarded(node: ast.Attribute, index: Index, probed: frozenset[str]) -> bool:
     child, parent = node, index.parents.get(id(node))
     while parent is not None:
         if isinstance(parent, ast.Try) and child in parent.body and any(
-                h.type is None or {n.id for n in ast.walk(h.type) if isinstance(n, ast.Name)}
+                h.type is None or {n.id for n in descendants(h.type) if isinstance(n, ast.Name)}
                 & _GUARDS for h in parent.handlers):
             return True
         child, parent = parent, index.parents.get(id(parent))

@@ -15,6 +15,7 @@ import ast
 import re
 from collections.abc import Iterator
 
+from pkgtool.model.ast_nodes import subtree
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
@@ -183,7 +184,7 @@ def _profile(expr: ast.expr, index: Index) -> tuple[str, str] | None:
         return ("RELIABLE", "VOLATILE")
     if isinstance(expr, ast.Name) and (value := _scope_value(expr.id, expr, index)) is not None:
         function = index.enclosing_function(expr)
-        stores = [n for n in ast.walk(function) if isinstance(n, ast.Attribute)
+        stores = [n for n in subtree(function) if isinstance(n, ast.Attribute)
                   and isinstance(n.value, ast.Name) and n.value.id == expr.id
                   and not isinstance(n.ctx, ast.Load)] if function is not None else [expr]
         return None if stores or isinstance(value, ast.Name) else _profile(value, index)

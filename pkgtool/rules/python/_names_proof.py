@@ -21,7 +21,7 @@ from collections.abc import Callable
 from functools import cache
 from typing import Any
 
-from pkgtool.model.ast_nodes import CHILD_FIELDS, nodes_of_class
+from pkgtool.model.ast_nodes import CHILD_FIELDS, descendants, nodes_of_class
 
 _KNOWN = frozenset(dir(builtins)) | {"__file__", "__builtins__", "__annotations__",
                                      "WindowsError"}
@@ -218,7 +218,7 @@ def _strings_read_as_annotations(tree: ast.Module) -> bool:
             places.append(node)
     return any(isinstance(inner, ast.Constant) and isinstance(inner.value, str)
                for place in places if _typing_member(place, names, modules)
-               for inner in ast.walk(place))
+               for inner in descendants(place))
 
 
 def _typing_member(place: ast.AST, names: set[str], modules: set[str]) -> bool:

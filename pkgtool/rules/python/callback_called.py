@@ -6,6 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import subtree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._callbacks import callback_arguments
@@ -44,7 +45,7 @@ def _method(call: ast.Call, index: Index) -> ast.FunctionDef | None:
     if not positional or positional[0].arg != func.value.id:
         return None
     assigned = any(isinstance(n, ast.Attribute) and n.attr == func.attr and
-                   not isinstance(n.ctx, ast.Load) for n in ast.walk(cls))
+                   not isinstance(n.ctx, ast.Load) for n in subtree(cls))
     return None if assigned else _defined_once(cls.body, func.attr)
 
 

@@ -8,7 +8,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import any_stdlib_module
-from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.ast_nodes import descendants, nodes_of_class, subtree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.imports import entry_points_installed
@@ -52,10 +52,11 @@ class _Reach:
     def visit(self, function: ast.FunctionDef | ast.AsyncFunctionDef) -> None:
         """Look at every call in ``function`` (nested code included)."""
         self.seen.add(function.name)
-        local = {n.id for n in ast.walk(function) if isinstance(n, ast.Name) and
+        nodes = subtree(function)
+        local = {n.id for n in nodes if isinstance(n, ast.Name) and
                  not isinstance(n.ctx, ast.Load)}
-        local |= {a.arg for a in ast.walk(function.args) if isinstance(a, ast.arg)}
-        for node in ast.walk(function):
+        local |= {a.arg for a in descendants(function.args) if isinstance(a, ast.arg)}
+        for node in nodes:
             if isinstance(node, (ast.Import, ast.ImportFrom)):
                 self.unknown = True  # a local import: what it brings is not followed
             elif isinstance(node, ast.Call):

@@ -6,6 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import descendants
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.syntax_trees import Index, installed_trees
@@ -32,7 +33,7 @@ def _dotted(node: ast.expr) -> str | None:
 
 def _request_futures(scope: ast.AST) -> set[str]:
     """Names and attributes assigned a request's future in ``scope``."""
-    return {name for node in ast.walk(scope) if isinstance(node, ast.Assign)
+    return {name for node in descendants(scope) if isinstance(node, ast.Assign)
             and _is_request(node.value) for target in node.targets
             for name in [_dotted(target)] if name}
 
