@@ -8,6 +8,7 @@ from __future__ import annotations
 import gc
 import os
 from collections.abc import Iterator, Mapping, Sequence
+from contextlib import contextmanager
 from functools import partial
 from pathlib import Path
 from typing import TYPE_CHECKING, Optional, Union
@@ -30,6 +31,11 @@ __all__ = ["LintOptions", "LintResult", "TextResult", "explain", "list_rules", "
 
 PACKAGES_PER_WORKER = 16
 """Below this many packages per extra process, a process pool costs more than it saves."""
+YOUNG_OBJECTS = 50_000
+"""While packages are checked, the youngest generation is collected after this many more
+objects (Python's default: 700). A package's syntax trees and indexes are tens of thousands of
+objects that reference counting frees when it is done: collections during it only walked
+them (a tenth of a cold run). Reference cycles wait at most this many allocations."""
 
 
 @record
@@ -216,6 +222,24 @@ Checked = tuple[Outcome, Optional["Entry"]]
 def _check_all(jobs: list[Job], workspace: Workspace, cache: LintCache | None = None
                ) -> Iterator[Checked]:
     """Each job's outcome in order; a process per core once there are enough packages."""
+    with _few_collections():
+        yield from _check_each(jobs, workspace, cache)
+
+
+@contextmanager
+def _few_collections() -> Iterator[None]:
+    """Collect the youngest generation after :data:`YOUNG_OBJECTS` allocations meanwhile (the
+    worker processes forked inherit it)."""
+    threshold = gc.get_threshold()
+    gc.set_threshold(YOUNG_OBJECTS, *threshold[1:])
+    try:
+        yield
+    finally:
+        gc.set_threshold(*threshold)
+
+
+def _check_each(jobs: list[Job], workspace: Workspace, cache: LintCache | None
+                ) -> Iterator[Checked]:
     check = partial(_check, workspace=workspace, cache=cache)
     workers = _workers(len(jobs))
     if workers < 2 or _threaded():
