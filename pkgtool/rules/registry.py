@@ -139,10 +139,17 @@ def load(codes: Iterable[str]) -> dict[str, Rule]:
     """The rules of ``codes``, importing only their modules."""
     wanted = sorted(set(codes))
     if not _loaded:
-        catalogue = index()
-        for module in sorted({catalogue[code].module for code in wanted if code in catalogue}):
-            importlib.import_module(f"pkgtool.rules.{module}")
+        _import(tuple(wanted))
     return {code: _RULES[code] for code in wanted}
+
+
+@cache
+def _import(codes: tuple[str, ...]) -> None:
+    """Import the modules of the rules ``codes``, once per selection (a lint run asks for the
+    rules of each package)."""
+    catalogue = index()
+    for module in sorted({catalogue[code].module for code in codes if code in catalogue}):
+        importlib.import_module(f"pkgtool.rules.{module}")
 
 
 def matching(selector: str) -> list[str]:
