@@ -8,7 +8,7 @@ from collections.abc import Iterator
 
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
-from pkgtool.rules.syntax_trees import qualified
+from pkgtool.rules.syntax_trees import Index
 
 FUNCTION = "generate_launch_description"
 """The function ``ros2 launch`` calls in a Python launch file."""
@@ -29,8 +29,8 @@ def within(module: str, homes: tuple[str, ...]) -> bool:
     return any(module == home or module.startswith(home + ".") for home in homes)
 
 
-def launch_class(call: ast.Call, aliases: dict[str, str]) -> tuple[str, str]:
-    """The module and class a call makes when bound by an import (``launch.actions``,
-    ``DeclareLaunchArgument``); ``("", "")`` for any other call."""
-    module, _, name = (qualified(call.func, aliases) or "").rpartition(".")
+def launch_class(call: ast.Call, index: Index) -> tuple[str, str]:
+    """The module and class a call of the module ``index`` describes makes when bound by an
+    import (``launch.actions``, ``DeclareLaunchArgument``); ``("", "")`` for any other call."""
+    module, _, name = (index.qualified(call.func) or "").rpartition(".")
     return (module, name) if module.split(".")[0] in ("launch", "launch_ros") else ("", "")

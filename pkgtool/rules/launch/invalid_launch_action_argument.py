@@ -11,7 +11,7 @@ from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.launch._python_launch import launch_class, python_launch_files, within
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import index_of
+from pkgtool.rules.syntax_trees import Index, index_of
 
 DECLARE_KEYWORDS = ("name", "default_value", "description", "choices", "condition")
 """The keywords ``DeclareLaunchArgument`` takes (``condition`` is every action's)."""
@@ -26,7 +26,7 @@ def _not_text(value: ast.expr) -> ast.Constant | None:
                  and item.value is not None and not isinstance(item.value, str)), None)
 
 
-def _declare(call: ast.Call, _: dict[str, str]) -> Iterator[tuple[ast.AST, str, str]]:
+def _declare(call: ast.Call, _: Index) -> Iterator[tuple[ast.AST, str, str]]:
     if len(call.args) > 1 and not any(isinstance(a, ast.Starred) for a in call.args):
         yield (call.args[1], "`DeclareLaunchArgument()` takes its default by keyword only: "
                "a second positional argument raises TypeError", "Write `default_value=...`")
@@ -44,7 +44,7 @@ def _declare(call: ast.Call, _: dict[str, str]) -> Iterator[tuple[ast.AST, str, 
                    f"Write `'{text}'`")
 
 
-def _include(call: ast.Call, _: dict[str, str]) -> Iterator[tuple[ast.AST, str, str]]:
+def _include(call: ast.Call, _: Index) -> Iterator[tuple[ast.AST, str, str]]:
     value = next((k.value for k in call.keywords if k.arg == "launch_arguments"), None)
     pairs = isinstance(value, ast.Dict) and all(
         isinstance(key, ast.Constant) and isinstance(key.value, str) and len(key.value) == 2
@@ -54,9 +54,9 @@ def _include(call: ast.Call, _: dict[str, str]) -> Iterator[tuple[ast.AST, str, 
                "keys as (name, value) pairs and fails", "Pass `{...}.items()`")
 
 
-def _description(call: ast.Call, aliases: dict[str, str]) -> Iterator[tuple[ast.AST, str, str]]:
+def _description(call: ast.Call, index: Index) -> Iterator[tuple[ast.AST, str, str]]:
     entity = call.args[0] if call.args else None
-    module, made = launch_class(entity, aliases) if isinstance(entity, ast.Call) else ("", "")
+    module, made = launch_class(entity, index) if isinstance(entity, ast.Call) else ("", "")
     if within(module, ACTION_MODULES) and made[:1].isupper():
         yield (entity, f"`LaunchDescription()` is given one `{made}`, not a list: it raises "
                f"TypeError ('{made}' object is not iterable)",
@@ -109,9 +109,9 @@ def invalid_launch_action_argument(package: Package) -> Iterator[Hit]:
             continue
         index = index_of(tree)
         for call in index.calls:
-            module, name = launch_class(call, index.aliases)
+            module, name = launch_class(call, index)
             home, check = CHECKS.get(name, ("-", None))
-            found = check(call, index.aliases) if check and within(module, (home,)) else ()
+            found = check(call, index) if check and within(module, (home,)) else ()
             for node, message, fix in found:
                 yield Hit(Span(path, node.lineno, node.col_offset + 1),  # type: ignore
                           message, fix)

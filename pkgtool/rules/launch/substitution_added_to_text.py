@@ -24,7 +24,7 @@ def _substitution(value: ast.expr, index: Index, single: dict[str, ast.expr]) ->
         value = single[value.id]
     if not isinstance(value, ast.Call):
         return None
-    module, name = launch_class(value, index.aliases)
+    module, name = launch_class(value, index)
     return name if within(module, SUBSTITUTIONS) and name[:1].isupper() else None
 
 

@@ -13,7 +13,7 @@ from pkgtool.model.span import Span
 from pkgtool.rules.node_api import literal_type
 from pkgtool.rules.python._message_instances import Instance, known_messages, message_instances
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
+from pkgtool.rules.syntax_trees import Index, installed_trees
 
 _ACCEPTED = (
     (re.compile(r"float|double"), frozenset({"float"}), "a float (`1.0`, not `1`)"),
@@ -52,7 +52,7 @@ def _not_a_message(kind: str, value: ast.expr, index: Index) -> str | None:
         isinstance(call.func.value.func, ast.Attribute) and \
         call.func.value.func.attr == "get_clock"
     made = "rclpy.time.Time" if clock else \
-        qualified(call.func, index.aliases) if call is not None else None
+        index.qualified(call.func) if call is not None else None
     return made if made is not None and _ROS_TIMES.get(kind) == made else None
 
 

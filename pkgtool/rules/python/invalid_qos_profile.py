@@ -12,7 +12,7 @@ from pkgtool.model.span import Span
 from pkgtool.rules.node_api import (PARAMETERS, argument, literal_type, node_api_calls,
                                     qos_calls, unpacks)
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import installed_trees, qualified
+from pkgtool.rules.syntax_trees import installed_trees
 
 _SERVICES = ("create_service", "create_client")
 _VALUES = frozenset({"NoneType", "ellipsis"})
@@ -49,7 +49,7 @@ def _without_depth(package: Package) -> Iterator[Hit]:
     ``KEEP_LAST``: rclpy raises InvalidQoSProfileException (Foxy to Rolling)."""
     for module, _, index in installed_trees(package):
         for call in index.calls:
-            if qualified(call.func, index.aliases) not in PROFILES or call.args or \
+            if index.qualified(call.func) not in PROFILES or call.args or \
                     unpacks(call) or any(k.arg == "depth" for k in call.keywords):
                 continue
             history = next((k.value for k in call.keywords if k.arg == "history"), None)

@@ -39,9 +39,10 @@ def _request_futures(scope: ast.AST) -> set[str]:
 
 
 def _waited_future(call: ast.Call, index: Index) -> ast.expr | None:
-    """The future a spin call waits for without a timeout, or None (timeout, not a spin)."""
+    """The future a spin call waits for without a timeout, or None (timeout, not a spin; a
+    misspelt ``timeout=`` is PYC029's TypeError)."""
     if any(isinstance(a, ast.Starred) for a in call.args) or any(
-            k.arg in (None, "timeout_sec") for k in call.keywords):
+            k.arg in (None, "timeout_sec", "timeout") for k in call.keywords):
         return None
     keyword = next((k.value for k in call.keywords if k.arg == "future"), None)
     if index.qualified(call.func) == f"rclpy.{_NAME}" and len(call.args) < 4:

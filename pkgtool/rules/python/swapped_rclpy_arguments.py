@@ -11,7 +11,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import PARAMETERS, literal_type, node_api_calls, unpacks
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, installed_trees, qualified
+from pkgtool.rules.syntax_trees import Index, installed_trees
 
 INTERFACE = re.compile(r"\w+\.(msg|srv|action)\.\w+")
 """The dotted name of a message, service or action class (``std_msgs.msg.String``)."""
@@ -40,7 +40,7 @@ def _swapped(call: ast.Call, method: str, index: Index) -> tuple[ast.expr, str] 
     if first is not None and literal_type(first) == "str":
         return first, (f"a string is given where the {kind} type goes (the type comes "
                        "first, then the name: ROS 1 had them the other way round)")
-    if second is not None and INTERFACE.fullmatch(qualified(second, index.aliases) or ""):
+    if second is not None and INTERFACE.fullmatch(index.qualified(second) or ""):
         return second, (f"the {kind} type is given where the name goes (the type comes "
                         "first: ROS 1 had them the other way round)")
     return None
