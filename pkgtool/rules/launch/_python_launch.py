@@ -8,7 +8,8 @@ from collections.abc import Iterator
 
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
-from pkgtool.rules.syntax_trees import Index
+from pkgtool.model.python_visitor import parse_tree
+from pkgtool.rules.syntax_trees import Index, index_of
 
 FUNCTION = "generate_launch_description"
 """The function ``ros2 launch`` calls in a Python launch file."""
@@ -22,6 +23,14 @@ def python_launch_files(package: Package) -> Iterator[tuple[str, PythonModule, s
         if module is not None and not module.syntax_error and text is not None and \
                 not module.is_test:
             yield launch.path, module, text
+
+
+def launch_indexes(package: Package) -> Iterator[tuple[str, Index]]:
+    """(path, index of its syntax tree) of each file :func:`python_launch_files` gives."""
+    for path, _, text in python_launch_files(package):
+        tree = parse_tree(path, text)
+        if isinstance(tree, ast.Module):
+            yield path, index_of(tree)
 
 
 def within(module: str, homes: tuple[str, ...]) -> bool:

@@ -7,11 +7,10 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
-from pkgtool.rules.launch._python_launch import launch_class, python_launch_files, within
+from pkgtool.rules.launch._python_launch import launch_class, launch_indexes, within
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, index_of
+from pkgtool.rules.syntax_trees import Index
 
 DECLARE_KEYWORDS = ("name", "default_value", "description", "choices", "condition")
 """The keywords ``DeclareLaunchArgument`` takes (``condition`` is every action's)."""
@@ -103,11 +102,7 @@ def invalid_launch_action_argument(package: Package) -> Iterator[Hit]:
     IncludeLaunchDescription(source, launch_arguments={'use_sim_time': 'true'}.items()),
     ```
     """
-    for path, _, text in python_launch_files(package):
-        tree = parse_tree(path, text)
-        if not isinstance(tree, ast.Module):
-            continue
-        index = index_of(tree)
+    for path, index in launch_indexes(package):
         for call in index.calls:
             module, name = launch_class(call, index)
             home, check = CHECKS.get(name, ("-", None))

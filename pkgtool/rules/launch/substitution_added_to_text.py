@@ -7,11 +7,10 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
-from pkgtool.rules.launch._python_launch import launch_class, python_launch_files, within
+from pkgtool.rules.launch._python_launch import launch_class, launch_indexes, within
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, index_of
+from pkgtool.rules.syntax_trees import Index
 
 SUBSTITUTIONS = ("launch.substitutions", "launch_ros.substitutions")
 """The modules whose classes are all substitutions."""
@@ -77,11 +76,7 @@ def substitution_added_to_text(package: Package) -> Iterator[Hit]:
     Node(..., namespace=[namespace, '/camera'])
     ```
     """
-    for path, _, text in python_launch_files(package):
-        tree = parse_tree(path, text)
-        if not isinstance(tree, ast.Module):
-            continue
-        index = index_of(tree)
+    for path, index in launch_indexes(package):
         for function in index.functions:
             single = _single_bindings(function)
             for node in ast.walk(function):
