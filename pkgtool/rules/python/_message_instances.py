@@ -18,7 +18,7 @@ from __future__ import annotations
 
 import ast
 from collections import Counter
-from collections.abc import Callable, Iterable, Iterator
+from collections.abc import Callable, Iterator
 from typing import Any, Generic, TypeVar
 
 from pkgtool.knowledge.message_fields import Message, message_of
@@ -52,35 +52,56 @@ class Instance(Generic[T]):
     refs: list[ast.expr]
 
 
-def _all_bindings(nodes: Iterable[ast.AST]) -> Counter[str]:
-    """How often each name is bound among ``nodes`` (every scope: parameters, targets,
-    imports, definitions, ``global``/``nonlocal`` names)."""
-    found: Counter[str] = Counter()
-    for node in nodes:
-        if type(node) not in BINDERS:
-            continue
-        if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
-            found[node.id] += 1
-        elif isinstance(node, ast.arg):
-            found[node.arg] += 1
-        elif isinstance(node, (*FUNCTIONS, ast.ClassDef)):
-            found[node.name] += 1
-        elif isinstance(node, (ast.Import, ast.ImportFrom)):
-            found.update((a.asname or a.name).split(".")[0] for a in node.names)
-        elif isinstance(node, (ast.ExceptHandler, ast.MatchAs, ast.MatchStar)) and node.name:
-            found[node.name] += 1
-        elif isinstance(node, ast.MatchMapping) and node.rest:
-            found[node.rest] += 1
-        elif isinstance(node, (ast.Global, ast.Nonlocal)):
-            found.update(node.names * 2)
-    return found
+@record
+class _Names:
+    """What a scope and every scope inside it do with names: how often each name is bound
+    (``counts``: parameters, targets, imports, definitions, ``global``/``nonlocal`` names),
+    by name the attributes taken on it (``uses``) and its reads (``refs``), and by (name,
+    attribute) the attributes taken on ``name.attribute`` (``deeper``), each in walk order."""
+
+    counts: Counter[str]
+    uses: dict[str, list[ast.Attribute]]
+    refs: dict[str, list[ast.expr]]
+    deeper: dict[tuple[str, str], list[ast.Attribute]]
+
+
+def _bind(node: ast.AST, found: Counter[str]) -> None:
+    """Count the names a binding node (other than a name, an argument) binds."""
+    if isinstance(node, (*FUNCTIONS, ast.ClassDef)):
+        found[node.name] += 1
+    elif isinstance(node, (ast.Import, ast.ImportFrom)):
+        found.update((a.asname or a.name).split(".")[0] for a in node.names)
+    elif isinstance(node, (ast.ExceptHandler, ast.MatchAs, ast.MatchStar)) and node.name:
+        found[node.name] += 1
+    elif isinstance(node, ast.MatchMapping) and node.rest:
+        found[node.rest] += 1
+    elif isinstance(node, (ast.Global, ast.Nonlocal)):
+        found.update(node.names * 2)
 
 
 @per_object(PARTS)
-def _every_binding(node: ast.AST) -> Counter[str]:
-    """:func:`_all_bindings` of ``node`` and every node inside it (a function's own name
-    included), computed once per node: several rules ask about the same functions."""
-    return _all_bindings(nodes_of(node) if isinstance(node, ast.Module) else subtree(node))
+def _names(node: ast.AST) -> _Names:
+    """The :class:`_Names` of ``node`` and every node inside it (a function's own name
+    included), in one walk, once per node: several rules ask about the same functions."""
+    found = _Names(Counter(), {}, {}, {})
+    counts, uses, refs, deeper = found.counts, found.uses, found.refs, found.deeper
+    for current in nodes_of(node) if isinstance(node, ast.Module) else subtree(node):
+        if isinstance(current, ast.Attribute):
+            value = current.value
+            if isinstance(value, ast.Name):
+                uses.setdefault(value.id, []).append(current)
+            elif isinstance(value, ast.Attribute) and isinstance(value.value, ast.Name):
+                deeper.setdefault((value.value.id, value.attr), []).append(current)
+        elif isinstance(current, ast.Name):
+            if isinstance(current.ctx, ast.Load):
+                refs.setdefault(current.id, []).append(current)
+            else:
+                counts[current.id] += 1
+        elif isinstance(current, ast.arg):
+            counts[current.arg] += 1
+        elif type(current) in BINDERS:
+            _bind(current, counts)
+    return found
 
 
 def _path(node: ast.Attribute) -> tuple[str, ...]:
@@ -92,11 +113,6 @@ def _path(node: ast.Attribute) -> tuple[str, ...]:
         names.append(current.attr)
         current = current.value
     return tuple(reversed(names))
-
-
-def _on(nodes: Iterable[ast.AST], is_root: Callable[[ast.expr], bool]) -> Iterator[ast.Attribute]:
-    """The attributes among ``nodes`` taken directly on a root expression."""
-    return (n for n in nodes if isinstance(n, ast.Attribute) and is_root(n.value))
 
 
 def _instance(message: T, uses: list[ast.Attribute], refs: list[ast.expr], index: Index,
@@ -126,8 +142,8 @@ Scope = ast.Module | ast.FunctionDef | ast.AsyncFunctionDef
 
 @per_object(16)
 def _facts(tree: ast.Module) -> dict[object, Any]:
-    """What the rules derive from ``tree`` whatever they look for, by the id of the scope or
-    class it concerns: worked out once per tree (PYC019 and PYC020 read the same)."""
+    """What the rules derive from ``tree`` by key (its message instances): worked out once
+    per tree (PYC019 and PYC020 read the same)."""
     return {}
 
 
@@ -140,32 +156,6 @@ def _kept(tree: ast.Module, key: object, work_out: Callable[[], R]) -> R:
     return kept
 
 
-@record
-class _ScopeFacts:
-    """How often each name is bound in a scope and inside it (``counts``) and in it alone
-    (``own``), and by name the attributes taken on the name (``uses``) and its reads
-    (``refs``)."""
-
-    counts: Counter[str]
-    own: Counter[str]
-    uses: dict[str, list[ast.Attribute]]
-    refs: dict[str, list[ast.expr]]
-
-
-def _scope_facts(scope: Scope) -> _ScopeFacts:
-    nodes = nodes_of(scope) if isinstance(scope, ast.Module) else subtree(scope)
-    counts = _every_binding(scope)
-    uses: dict[str, list[ast.Attribute]] = {}
-    refs: dict[str, list[ast.expr]] = {}
-    for node in nodes:
-        if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name):
-            uses.setdefault(node.value.id, []).append(node)
-        elif isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
-            refs.setdefault(node.id, []).append(node)
-    own = counts if isinstance(scope, ast.Module) else scope_bindings(scope)
-    return _ScopeFacts(counts, own, uses, refs)
-
-
 def local_instances(tree: ast.Module, index: Index, make: Maker[T]) -> Iterator[Instance[T]]:
     """Local variables (of functions and of the module) that hold what ``make`` makes."""
     made: dict[int, tuple[Scope, list[tuple[str, T]]]] = {}
@@ -176,10 +166,11 @@ def local_instances(tree: ast.Module, index: Index, make: Maker[T]) -> Iterator[
         if fresh is not None and message is not None and scope is not None:
             made.setdefault(id(scope), (scope, []))[1].append((fresh[0], message))
     for scope, found in made.values():
-        facts = _kept(tree, id(scope), lambda: _scope_facts(scope))
+        names = _names(scope)
+        own = names.counts if isinstance(scope, ast.Module) else scope_bindings(scope)
         for name, message in found:
-            if facts.counts[name] == facts.own[name] == 1:
-                yield _instance(message, facts.uses.get(name, []), facts.refs.get(name, []),
+            if names.counts[name] == own[name] == 1:
+                yield _instance(message, names.uses.get(name, []), names.refs.get(name, []),
                                 index)
 
 
@@ -200,7 +191,7 @@ def method_receiver(method: ast.AST) -> str | None:
     if not isinstance(method, FUNCTIONS) or method.decorator_list:
         return None
     positional = [*method.args.posonlyargs, *method.args.args]
-    if not positional or _every_binding(method)[positional[0].arg] != 1:
+    if not positional or _names(method).counts[positional[0].arg] != 1:
         return None
     return positional[0].arg
 
@@ -217,7 +208,10 @@ class _ClassFacts:
     defined: Counter[str]
 
 
+@per_object(PARTS)
 def _class_facts(cls: ast.ClassDef) -> _ClassFacts:
+    """The :class:`_ClassFacts` of ``cls``, from its methods' :func:`_names`, once per class
+    (PYC019, PYC020 and the callback lookup read the same)."""
     stores: dict[str, list[ast.Attribute]] = {}
     refs: dict[str, list[ast.expr]] = {}
     uses: dict[str, list[ast.Attribute]] = {}
@@ -225,15 +219,15 @@ def _class_facts(cls: ast.ClassDef) -> _ClassFacts:
         receiver = method_receiver(method)
         if receiver is None:
             continue
-        nodes = subtree(method)
-        for node in _on(nodes, lambda e: isinstance(e, ast.Name) and e.id == receiver):
-            if not isinstance(node.ctx, ast.Load):
-                stores.setdefault(node.attr, []).append(node)
-            else:
+        names = _names(method)
+        for node in names.uses.get(receiver, []):
+            if isinstance(node.ctx, ast.Load):
                 refs.setdefault(node.attr, []).append(node)
-        for node in _on(nodes, lambda e: isinstance(e, ast.Attribute)
-                        and isinstance(e.value, ast.Name) and e.value.id == receiver):
-            uses.setdefault(node.value.attr, []).append(node)  # type: ignore[attr-defined]
+            else:
+                stores.setdefault(node.attr, []).append(node)
+        for (root, attr), deeper in names.deeper.items():
+            if root == receiver:
+                uses.setdefault(attr, []).extend(deeper)
     return _ClassFacts(stores, refs, uses, scope_bindings(cls))
 
 
@@ -254,7 +248,7 @@ def attribute_instances(tree: ast.Module, index: Index, make: Maker[T]
     stores = Counter(n.attr for n in nodes_of_class(tree, ast.Attribute)
                      if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load))
     for cls in index.classes:
-        facts = _kept(tree, id(cls), lambda: _class_facts(cls))
+        facts = _class_facts(cls)
         for attr, targets in facts.stores.items():
             made = [_assigned(target, index, make) for target in targets]
             if (made[0] is not None and made.count(made[0]) == len(made) == stores[attr]
@@ -332,7 +326,7 @@ def callback_function(expr: ast.expr, tree: ast.Module, index: Index
     are not the callback's arguments (1 for a method's receiver)."""
     if isinstance(expr, ast.Name):
         found = _plain([f for f in index.functions if f.name == expr.id],
-                       _every_binding(tree)[expr.id])
+                       _names(tree).counts[expr.id])
         outside = found is not None and not isinstance(index.parents.get(id(found)), ast.ClassDef)
         return (found, 0) if outside and found is not None else None
     cls, caller = index.enclosing_class(expr), index.enclosing_function(expr)
@@ -340,7 +334,7 @@ def callback_function(expr: ast.expr, tree: ast.Module, index: Index
             and caller in cls.body and method_receiver(caller) == expr.value.id):
         return None
     found = _plain([s for s in cls.body if isinstance(s, FUNCTIONS) and s.name == expr.attr],
-                   _kept(tree, id(cls), lambda: _class_facts(cls)).defined[expr.attr])
+                   _class_facts(cls).defined[expr.attr])
     return (found, 1) if found is not None else None
 
 
@@ -372,7 +366,7 @@ def callback_instances(tree: ast.Module, index: Index, known: Known
 def _parameter_instance(tree: ast.Module, function: Function, name: str, message: Message,
                         via: str | None, index: Index) -> Iterator[Instance[Message]]:
     """The instance a parameter holds (or holds at ``name.<via>``) when never rebound."""
-    facts = _kept(tree, id(function), lambda: _scope_facts(function))
+    facts = _names(function)
     if facts.counts[name] != 1:
         return
     uses = facts.uses.get(name, [])
