@@ -157,7 +157,9 @@ def _kept(tree: ast.Module, key: object, work_out: Callable[[], R]) -> R:
 
 
 def local_instances(tree: ast.Module, index: Index, make: Maker[T]) -> Iterator[Instance[T]]:
-    """Local variables (of functions and of the module) that hold what ``make`` makes."""
+    """Local variables (of functions and of the module) that hold what ``make`` makes: the
+    scope's assignment is then the only binding of the name in the scope and inside it (the
+    scope's own bindings are among those counted: no need to count them apart)."""
     made: dict[int, tuple[Scope, list[tuple[str, T]]]] = {}
     for node in nodes_of_class(tree, ast.Assign):
         fresh = _fresh(node)
@@ -167,9 +169,8 @@ def local_instances(tree: ast.Module, index: Index, make: Maker[T]) -> Iterator[
             made.setdefault(id(scope), (scope, []))[1].append((fresh[0], message))
     for scope, found in made.values():
         names = _names(scope)
-        own = names.counts if isinstance(scope, ast.Module) else scope_bindings(scope)
         for name, message in found:
-            if names.counts[name] == own[name] == 1:
+            if names.counts[name] == 1:
                 yield _instance(message, names.uses.get(name, []), names.refs.get(name, []),
                                 index)
 
@@ -334,7 +335,7 @@ def callback_function(expr: ast.expr, tree: ast.Module, index: Index
             and caller in cls.body and method_receiver(caller) == expr.value.id):
         return None
     found = _plain([s for s in cls.body if isinstance(s, FUNCTIONS) and s.name == expr.attr],
-                   _class_facts(cls).defined[expr.attr])
+                   scope_bindings(cls)[expr.attr])
     return (found, 1) if found is not None else None
 
 
