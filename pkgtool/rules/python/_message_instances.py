@@ -232,22 +232,26 @@ def _class_facts(cls: ast.ClassDef) -> _ClassFacts:
     return _ClassFacts(stores, refs, uses, scope_bindings(cls))
 
 
-def _dynamic(tree: ast.Module) -> bool:
-    """True when the module calls ``setattr`` or ``delattr`` (any attribute may change)."""
-    return any(isinstance(n, ast.Call) and isinstance(n.func, ast.Name)
-               and n.func.id in ("setattr", "delattr") for n in nodes_of_class(tree, ast.Call))
+@per_object(16)
+def _stored_attributes(tree: ast.Module) -> Counter[str] | None:
+    """How often the module stores each attribute name, once per tree (PYC019 and PYC020 ask);
+    None when it calls ``setattr`` or ``delattr`` (any attribute may change)."""
+    if any(isinstance(n, ast.Call) and isinstance(n.func, ast.Name)
+           and n.func.id in ("setattr", "delattr") for n in nodes_of_class(tree, ast.Call)):
+        return None
+    return Counter(n.attr for n in nodes_of_class(tree, ast.Attribute)
+                   if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load))
 
 
 def attribute_instances(tree: ast.Module, index: Index, make: Maker[T]
                         ) -> Iterator[Instance[T]]:
     """``self.x`` attributes of classes that always assign them what ``make`` makes."""
-    if _dynamic(tree) or not any(
+    stores = _stored_attributes(tree)
+    if stores is None or not any(
             len(node.targets) == 1 and isinstance(node.targets[0], ast.Attribute)
             and isinstance(node.value, ast.Call) and make(node.value) is not None
             for node in nodes_of_class(tree, ast.Assign)):  # type: ignore[attr-defined]
         return
-    stores = Counter(n.attr for n in nodes_of_class(tree, ast.Attribute)
-                     if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load))
     for cls in index.classes:
         facts = _class_facts(cls)
         for attr, targets in facts.stores.items():

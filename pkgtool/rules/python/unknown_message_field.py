@@ -165,19 +165,20 @@ def _wrong_class_attributes(index: Index, known: Known, probed: frozenset[str]
     """Attributes read on a known interface class that it does not have (a service's
     ``Trigger.request``, a message constant misspelt), with the class and a near miss."""
     for node in index.attributes:
-        if node.attr.startswith("_") or guarded(node, index, probed):
+        if node.attr.startswith("_"):
             continue
         kind = (index.qualified(node.value) or "").split(".")
         companions = _COMPANIONS.get(kind[1], ()) if len(kind) == 3 else ()
         if companions and known(ast.Attribute(value=node.value, attr=companions[0],
                                               ctx=ast.Load())):
-            if node.attr not in companions:
+            if node.attr not in companions and not guarded(node, index, probed):
                 close = get_close_matches(node.attr, companions, n=1) or [
                     c for c in companions if c.lower() == node.attr.lower()]
                 yield node, f"`{'/'.join(kind)}`", _meant(close)
             continue
         message = known(node.value) if not companions else None
-        if message is not None and not message.has(node.attr):
+        if message is not None and not message.has(node.attr) \
+                and not guarded(node, index, probed):
             names = sorted([*message.constants, *message.fields])
             yield node, f"`{message.name}`", _meant(get_close_matches(node.attr, names, n=1))
 
