@@ -237,16 +237,21 @@ def node_left_out_of_the_description(root: Path) -> None:
 
 @case("LCH008", PY, "LaunchConfiguration('use_sim_tim')")
 def launch_argument_read_misspelled(root: Path) -> None:
+    _use_sim_time_argument(root, default="'false'", read="use_sim_tim")
+
+
+def _use_sim_time_argument(root: Path, *, default: str, read: str) -> None:
+    """Declare ``use_sim_time`` with the ``default`` source text; the talker reads ``read``."""
     edit(root, PY, "from launch import LaunchDescription\n", "from launch import "
          "LaunchDescription\nfrom launch.actions import DeclareLaunchArgument\n")
     edit(root, PY, "from launch.substitutions import PathJoinSubstitution",
          "from launch.substitutions import LaunchConfiguration, PathJoinSubstitution")
     edit(root, PY, "    return LaunchDescription([\n",
          "    return LaunchDescription([\n"
-         "        DeclareLaunchArgument('use_sim_time', default_value='false'),\n")
+         f"        DeclareLaunchArgument('use_sim_time', default_value={default}),\n")
     edit(root, PY, "name='talker',\n            parameters=[params]",
          "name='talker',\n"
-         "            parameters=[params, {'use_sim_time': LaunchConfiguration('use_sim_tim')}]")
+         f"            parameters=[params, {{'use_sim_time': LaunchConfiguration('{read}')}}]")
 
 
 @case("LCH009", PY, "from launch.actions import Node")
@@ -280,16 +285,7 @@ def include_arguments_as_dict(root: Path) -> None:
 
 @case("LCH010", PY, "default_value=False")
 def launch_argument_default_not_text(root: Path) -> None:
-    edit(root, PY, "from launch import LaunchDescription\n", "from launch import "
-         "LaunchDescription\nfrom launch.actions import DeclareLaunchArgument\n")
-    edit(root, PY, "from launch.substitutions import PathJoinSubstitution",
-         "from launch.substitutions import LaunchConfiguration, PathJoinSubstitution")
-    edit(root, PY, "    return LaunchDescription([\n",
-         "    return LaunchDescription([\n"
-         "        DeclareLaunchArgument('use_sim_time', default_value=False),\n")
-    edit(root, PY, "name='talker',\n            parameters=[params]",
-         "name='talker',\n"
-         "            parameters=[params, {'use_sim_time': LaunchConfiguration('use_sim_time')}]")
+    _use_sim_time_argument(root, default="False", read="use_sim_time")
 
 
 @case("LCH011", PY, "namespace=namespace + '/sensors'")
