@@ -15,6 +15,7 @@ from pkgtool.knowledge.rosdep import suggested_key
 from pkgtool.knowledge.rosdistro import close_names
 from pkgtool.model.package import Package
 from pkgtool.records import replace
+from pkgtool.rules.manifest.dependency_names import neighbours
 from pkgtool.rules.manifest.non_spdx_license import spdx_spelling
 
 
@@ -96,7 +97,7 @@ def misspelled(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     doc = manifest_doc(package)
     if doc is None:
         return
-    others = frozenset(package.context.workspace) - {package.name}
+    others = neighbours(package)
     for finding in findings:
         element = child_at(doc, finding.span.line)
         if element is None:

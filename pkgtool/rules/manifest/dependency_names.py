@@ -64,6 +64,12 @@ def is_local(package: Package, name: str) -> bool:
     return name == package.name or name in package.context.workspace
 
 
+def neighbours(package: Package) -> frozenset[str]:
+    """The other packages of its workspace: the names a misspelt key may have meant (the
+    package itself is MAN014's, never a near miss)."""
+    return frozenset(package.context.workspace) - {package.name}
+
+
 @per_package
 def unknown_dependencies(package: Package) -> list[Unknown]:
     """Dependencies of ``package`` that nothing provides for its target distribution."""
@@ -76,7 +82,6 @@ def unknown_dependencies(package: Package) -> list[Unknown]:
                 or name in stdlib:
             continue
         elsewhere = tuple(d for d in DISTROS if rosdistro.is_released_package(name, d))
-        close = [] if elsewhere else rosdistro.close_names(  # itself is MAN014's, not a miss
-            name, distro, extra=frozenset(package.context.workspace) - {package.name})
+        close = [] if elsewhere else rosdistro.close_names(name, distro, extra=neighbours(package))
         found.append(Unknown(dependency, close[0] if close else None, elsewhere))
     return found
