@@ -30,14 +30,23 @@ def _dynamic(tree: ast.Module) -> bool:
                for n in nodes_of_class(tree, ast.Name, ast.Attribute, ast.FunctionDef))
 
 
+def _augmented(tree: ast.Module) -> set[int]:
+    """The ids of the targets of the module's augmented assignments (``x.n += 1``), which
+    read the attribute before they store it, so they do not create it."""
+    return {id(n.target) for n in nodes_of_class(tree, ast.AugAssign)
+            if isinstance(n, ast.AugAssign)}
+
+
 def _package_facts(package: Package) -> tuple[set[str], set[str]]:
     """The attribute names any installed module stores or deletes, and the names any class
     of the package derives from."""
     stored: set[str] = set()
     bases: set[str] = set()
     for _, tree, index in installed_trees(package):
+        augmented = _augmented(tree)
         stored.update(n.attr for n in nodes_of_class(tree, ast.Attribute)
-                      if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load))
+                      if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load)
+                      and id(n) not in augmented)
         bases.update(b.id if isinstance(b, ast.Name) else b.attr for c in index.classes
                      for b in c.bases if isinstance(b, (ast.Name, ast.Attribute)))
     return stored, bases
@@ -63,7 +72,8 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
     other base, no decorator, no metaclass, extended by no class of the package) and reports
     `self.x` read in their plain methods when `x` is not a method or class attribute of the
     class, not an attribute of rclpy's `Node` (any of Humble to Rolling), and no installed
-    module of the package ever assigns or deletes an attribute named `x` on anything. Modules
+    module of the package ever assigns or deletes an attribute named `x` on anything (an
+    augmented assignment, `self.x += 1`, reads `x` first, so it counts as a read). Modules
     using `setattr`, `delattr`, `vars`, `__dict__`, `__getattr__`, `__setattr__` or
     `__slots__`, names they pass to `hasattr`/`getattr`, and reads inside a `try` that
     catches `AttributeError` are left alone. Typical causes: a misspelt callback
@@ -100,13 +110,15 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
         facts = facts or _package_facts(package)
         stored, bases = facts
         probed = probed_names(index)
+        augmented = _augmented(tree)
         for cls in _node_classes(index, bases):
             known = set(scope_bindings(cls)) | stored | NODE_ATTRIBUTES
             reads: dict[str, list[ast.Attribute]] = {}
             for method in cls.body:
                 receiver = method_receiver(method)
                 for node in subtree(method) if receiver else ():
-                    if isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Load) and \
+                    if isinstance(node, ast.Attribute) and \
+                            (isinstance(node.ctx, ast.Load) or id(node) in augmented) and \
                             isinstance(node.value, ast.Name) and node.value.id == receiver and \
                             not node.attr.startswith("__") and node.attr not in known and \
                             not guarded(node, index, probed):
