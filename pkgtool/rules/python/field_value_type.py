@@ -1,4 +1,4 @@
-"""PYC025: a literal of the wrong type given to a message field (``twist.linear.x = 1``)."""
+"""PYC025: a value of the wrong type given to a message field (``twist.linear.x = 1``)."""
 
 from __future__ import annotations
 
@@ -10,8 +10,8 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.message_fields import MESSAGE_TYPE, Message, nested_message
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_api import literal_type
 from pkgtool.rules.python._message_instances import Instance, known_messages, message_instances
+from pkgtool.rules.python._value_types import certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
@@ -38,12 +38,12 @@ _FIXES = {"rclpy.time.Time": "Convert it with `.to_msg()`",
           "rclpy.duration.Duration": "Convert it with `.to_msg()`"}
 
 
-def _not_a_message(kind: str, value: ast.expr, index: Index) -> str | None:
-    """What ``value`` is (``float``, ``rclpy.time.Time``) when it is certainly not a message
-    for a field of message type ``kind``; None when it may be one."""
+def _not_a_message(kind: str, value: ast.expr, given: str | None, index: Index) -> str | None:
+    """What ``value`` (certainly of type ``given``, if not None) is (``float``,
+    ``rclpy.time.Time``) when it is certainly not a message for a field of message type
+    ``kind``; None when it may be one."""
     if not MESSAGE_TYPE.fullmatch(kind):
         return None
-    given = literal_type(value)
     if given in ("int", "float", "bool", "str"):
         return given
     call = value if isinstance(value, ast.Call) else None
@@ -76,20 +76,30 @@ def _stores(instance: Instance[Message], index: Index
             node = parent if isinstance(parent, ast.Attribute) and parent.value is node else None
 
 
+def _how(value: ast.expr) -> str:
+    """How a value that is no literal is known to have its type."""
+    if isinstance(value, ast.Name):
+        return ": every assignment to it in its function gives one"
+    return ": every assignment to it gives one" if isinstance(value, ast.Attribute) else ""
+
+
 @rule("PYC025", "field-value-type", Severity.ERROR,
       fix="Write the value with the field's type: `1.0` for a float64, `True` for a bool")
 def field_value_type(package: Package) -> Iterator[Hit]:
-    """A message field is given a literal of another type than the field's.
+    """A message field is given a value of another type than the field's.
 
     ## What it does
     For the message instances PYC019 is certain of (and the keyword arguments of known
     message constructors), reports a literal assigned to a basic field whose type does not
     accept it: an int, bool, string or `None` for a `float32`/`float64` field
     (`twist.linear.x = 1`), a float, string or `None` for an integer field, anything but
-    `True`/`False` for a `bool` field, anything but a string for a `string` field. Only
-    literals are judged (`1`, `-2`, `'a'`, `None`), never names or expressions. A field that
-    holds a message is reported when given a number, bool or string literal
-    (`cmd.linear = 0.5`), and a `builtin_interfaces/Time` or `Duration` field when given
+    `True`/`False` for a `bool` field, anything but a string for a `string` field. Values
+    judged are literals (`1`, `-2`, `'a'`, `None`), local names every assignment of which
+    in their function gives a literal of one type (`n = 0`, `n += 1`), and attributes
+    `self.x` of a class deriving from rclpy's `Node` alone when every assignment to an
+    attribute `x` in the package's installed modules does (`self.count = 0`); other
+    expressions never. A field that holds a message is reported when given a number, bool
+    or string (`cmd.linear = 0.5`), and a `builtin_interfaces/Time` or `Duration` field when given
     rclpy's own `Time` or `Duration` (`header.stamp = self.get_clock().now()`, without
     `.to_msg()`).
 
@@ -124,12 +134,12 @@ def field_value_type(package: Package) -> Iterator[Hit]:
                           k.value) for k in call.keywords
                          if message is not None and k.arg in message.fields)
         for target, kind, value in found:
-            wanted, given = _wanted(kind), literal_type(value)
+            wanted, given = _wanted(kind), certain_type(value, package, index)
             if wanted is not None and given is not None and given not in wanted[0]:
                 yield Hit(Span(module.path, value.lineno, value.col_offset + 1),
                           f"`{target}` is a `{kind}` field but is given `{ast.unparse(value)}`"
-                          f" ({given}): rclpy wants {wanted[1]}")
-            elif (problem := _not_a_message(kind, value, index)) is not None:
+                          f" ({given}{_how(value)}): rclpy wants {wanted[1]}")
+            elif (problem := _not_a_message(kind, value, given, index)) is not None:
                 yield Hit(Span(module.path, value.lineno, value.col_offset + 1),
                           f"`{target}` holds a `{kind}` message but is given "
                           f"`{ast.unparse(value)}` ({problem})", _FIXES.get(problem))

@@ -1,0 +1,110 @@
+"""The type a local name or a node's ``self.x`` certainly holds where it is read.
+
+A name (or attribute) has a certain type when every binding of it gives a literal of one
+type (``count = 0``), or keeps that type (``count += 1``: ``+``, ``-``, ``*`` of two ints,
+floats or strings). Any other binding (a parameter, a loop target, a call's result, an
+import, ``global``, ``setattr``) leaves it unknown.
+"""
+
+from __future__ import annotations
+
+import ast
+
+from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
+from pkgtool.model.ast_nodes import nodes_of_class, subtree
+from pkgtool.model.memo import per_package
+from pkgtool.model.package import Package
+from pkgtool.rules.node_api import literal_type
+from pkgtool.rules.python._message_instances import method_receiver
+from pkgtool.rules.scopes import scope_bindings, scope_walk
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
+
+_UNKNOWN = "?"
+_KEEPING = (ast.Add, ast.Sub, ast.Mult)
+"""Augmented operators that give an int for two ints, a float for two floats (``/`` does
+not) and a str for two strs."""
+_DYNAMIC = frozenset({"setattr", "vars", "__dict__", "__setattr__", "__slots__"})
+"""Names whose use in a module means attributes may be stored unseen."""
+
+
+def _bound_type(target: ast.expr, index: Index) -> str:
+    """The type the binding ``target`` (a name or attribute being stored) gives."""
+    parent = index.parents.get(id(target))
+    if isinstance(parent, ast.Assign) and any(t is target for t in parent.targets) or \
+            isinstance(parent, ast.AnnAssign) and parent.target is target:
+        return (literal_type(parent.value) if parent.value is not None else None) or _UNKNOWN
+    if isinstance(parent, ast.AugAssign) and parent.target is target and \
+            isinstance(parent.op, _KEEPING) and literal_type(parent.value) in \
+            ("int", "float", "str"):
+        return literal_type(parent.value) or _UNKNOWN
+    return _UNKNOWN
+
+
+def _one(types: set[str]) -> str | None:
+    return next(iter(types)) if len(types) == 1 and _UNKNOWN not in types else None
+
+
+def _enclosing_function(node: ast.AST, index: Index) -> ast.AST | None:
+    parent = index.parents.get(id(node))
+    while parent is not None and not isinstance(parent, (*FUNCTIONS, ast.ClassDef,
+                                                         ast.Lambda)):
+        parent = index.parents.get(id(parent))
+    return parent if isinstance(parent, FUNCTIONS) else None
+
+
+def _local_type(name: ast.Name, index: Index) -> str | None:
+    """The type of a function's local ``name`` when all its bindings agree on one."""
+    function = _enclosing_function(name, index)
+    if function is None or any(isinstance(n, ast.Nonlocal) and name.id in n.names
+                               for n in subtree(function)):
+        return None
+    stores = [n for n in scope_walk(function.body) if isinstance(n, ast.Name) and
+              n.id == name.id and not isinstance(n.ctx, ast.Load)]
+    if not stores or len(stores) != scope_bindings(function)[name.id]:
+        return None  # a parameter, an import, a nested def, global: not a plain assignment
+    return _one({_bound_type(n, index) for n in stores})
+
+
+@per_package
+def _attribute_types(package: Package) -> dict[str, str | None]:
+    """For each attribute name the installed modules store, its one literal type, or None;
+    empty when a module may store attributes unseen."""
+    found: dict[str, set[str]] = {}
+    for _, tree, index in installed_trees(package):
+        for node in nodes_of_class(tree, ast.Name, ast.Attribute, *FUNCTIONS):
+            named = node.id if isinstance(node, ast.Name) else \
+                node.attr if isinstance(node, ast.Attribute) else node.name
+            if named in _DYNAMIC:
+                return {}
+            if isinstance(node, ast.Attribute) and not isinstance(node.ctx, ast.Load):
+                found.setdefault(node.attr, set()).add(_bound_type(node, index))
+        for cls in index.classes:  # a class attribute of the same name: a type not followed
+            for name in scope_bindings(cls):
+                found.setdefault(name, set()).add(_UNKNOWN)
+    return {name: _one(types) for name, types in found.items()}
+
+
+def _node_attribute_type(value: ast.Attribute, package: Package, index: Index) -> str | None:
+    """The type of ``self.x`` read in a method of a class deriving from rclpy's Node alone."""
+    if not isinstance(value.value, ast.Name) or value.attr in NODE_ATTRIBUTES:
+        return None
+    method = _enclosing_function(value, index)
+    cls = index.parents.get(id(method)) if method is not None else None
+    if not isinstance(cls, ast.ClassDef) or method_receiver(method) != value.value.id or \
+            len(cls.bases) != 1 or cls.keywords or \
+            index.qualified(cls.bases[0]) != "rclpy.node.Node":
+        return None
+    return _attribute_types(package).get(value.attr)
+
+
+def certain_type(value: ast.expr, package: Package, index: Index) -> str | None:
+    """The type ``value`` certainly has: a literal's, a local name's or a node attribute's
+    all of whose bindings give literals of that one type; None when not certain."""
+    found = literal_type(value)
+    if found is not None:
+        return found
+    if isinstance(value, ast.Name):
+        return _local_type(value, index)
+    if isinstance(value, ast.Attribute) and isinstance(value.ctx, ast.Load):
+        return _node_attribute_type(value, package, index)
+    return None
