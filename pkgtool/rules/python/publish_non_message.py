@@ -15,6 +15,7 @@ from pkgtool.rules.node_api import PARAMETERS, argument, literal_type, unpacks
 from pkgtool.rules.python._message_instances import (Instance, Known, attribute_instances,
                                                      known_messages, local_instances,
                                                      message_instances)
+from pkgtool.rules.python._value_types import certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
@@ -53,11 +54,12 @@ def _published(ref: ast.expr, index: Index) -> ast.expr | None:
 
 
 def _not_a_message(value: ast.expr, publisher: Publisher,
-                   messages: list[Instance[Message]]) -> str | None:
-    """Why ``value`` is certainly no message of the ``publisher``'s type, if it is."""
-    wrong = literal_type(value)
+                   messages: list[Instance[Message]], wrong: str | None) -> str | None:
+    """Why ``value`` (certainly of type ``wrong``, if not None) is certainly no message of
+    the ``publisher``'s type, if it is."""
     if wrong is not None and wrong not in _ACCEPTED:
-        return f"a literal of type `{wrong}`"
+        return f"a literal of type `{wrong}`" if literal_type(value) else \
+            f"a value of type `{wrong}` (every assignment to it gives one)"
     for instance in messages:
         if any(use is value for use in instance.uses) and isinstance(value, ast.Attribute):
             kind = instance.message.fields.get(value.attr, "")
@@ -83,9 +85,12 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
     defining their own `create_publisher`), in installed modules. Reports a string, number,
     boolean, f-string or list, tuple, dict or set literal (`pub.publish('hello')`); a plain
     field (`string`, `float`, `int32`, ...) of a message instance PYC019 is certain of
-    (`pub.publish(msg.data)`); and such an instance of another known message class than the
-    publisher's (`create_publisher(String, ...)` then `publish(Float32())`'s instance).
-    `bytes` (published as serialized data), names, calls and unknown types are never reported.
+    (`pub.publish(msg.data)`); a local name or a node's `self.x` every assignment of which
+    gives a literal of one such type (`text = 'hi'`; PYC025 says which); and such an
+    instance of another known message class than the publisher's
+    (`create_publisher(String, ...)` then `publish(Float32())`'s instance).
+    `bytes` (published as serialized data), other names, calls and unknown types are never
+    reported.
 
     ## Why is this bad?
     `Publisher.publish` raises `TypeError: Expected <class 'std_msgs.msg._string.String'>,
@@ -116,7 +121,8 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
         for publisher in publishers:
             for ref in publisher.refs:
                 value = _published(ref, index)
-                why = _not_a_message(value, publisher.message, messages) if value else None
+                why = _not_a_message(value, publisher.message, messages,
+                                     certain_type(value, package, index)) if value else None
                 if value is not None and why:
                     yield Hit(Span(module.path, value.lineno, value.col_offset + 1),
                               f"`{ast.unparse(ref)}.publish()` is given `{ast.unparse(value)}`,"
