@@ -2,8 +2,9 @@
 
 A name (or attribute) has a certain type when every binding of it gives a literal of one
 type (``count = 0``), or keeps that type (``count += 1``: ``+``, ``-``, ``*`` of two ints,
-floats or strings). Any other binding (a parameter, a loop target, a call's result, an
-import, ``global``, ``setattr``) leaves it unknown.
+floats or strings), or every binding is a node's ``self.get_parameter(...)`` (rclpy's
+``Parameter`` object, not its value). Any other binding (a parameter, a loop target, another
+call's result, an import, ``global``, ``setattr``) leaves it unknown.
 """
 
 from __future__ import annotations
@@ -14,11 +15,13 @@ from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
 from pkgtool.model.ast_nodes import nodes_of_class, subtree
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
-from pkgtool.rules.node_api import literal_type
+from pkgtool.rules.node_api import NODE_CLASSES, literal_type
 from pkgtool.rules.python._message_instances import method_receiver
 from pkgtool.rules.scopes import scope_bindings, scope_walk
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
+PARAMETER = "Parameter"
+"""The type of what a node's ``get_parameter()`` returns (``rclpy.parameter.Parameter``)."""
 _UNKNOWN = "?"
 _KEEPING = (ast.Add, ast.Sub, ast.Mult)
 """Augmented operators that give an int for two ints, a float for two floats (``/`` does
@@ -27,12 +30,31 @@ _DYNAMIC = frozenset({"setattr", "vars", "__dict__", "__setattr__", "__slots__"}
 """Names whose use in a module means attributes may be stored unseen."""
 
 
+def _made_type(value: ast.expr, index: Index) -> str | None:
+    """The type of a literal, or :data:`PARAMETER` for ``self.get_parameter(...)`` in a
+    method of a node class (in a module not defining a ``get_parameter`` of its own)."""
+    found = literal_type(value)
+    if found is not None or not (isinstance(value, ast.Call) and
+                                 isinstance(value.func, ast.Attribute) and
+                                 value.func.attr == "get_parameter" and
+                                 isinstance(value.func.value, ast.Name)):
+        return found
+    method = _enclosing_function(value, index)
+    cls = index.parents.get(id(method)) if method is not None else None
+    if isinstance(cls, ast.ClassDef) and method_receiver(method) == value.func.value.id and \
+            any(index.qualified(b) in NODE_CLASSES for b in cls.bases) and \
+            not any(f.name == "get_parameter" for f in index.functions):
+        return PARAMETER
+    return None
+
+
 def _bound_type(target: ast.expr, index: Index) -> str:
     """The type the binding ``target`` (a name or attribute being stored) gives."""
     parent = index.parents.get(id(target))
     if isinstance(parent, ast.Assign) and any(t is target for t in parent.targets) or \
             isinstance(parent, ast.AnnAssign) and parent.target is target:
-        return (literal_type(parent.value) if parent.value is not None else None) or _UNKNOWN
+        return (_made_type(parent.value, index) if parent.value is not None else None) or \
+            _UNKNOWN
     if isinstance(parent, ast.AugAssign) and parent.target is target and \
             isinstance(parent.op, _KEEPING) and literal_type(parent.value) in \
             ("int", "float", "str"):
@@ -98,9 +120,10 @@ def _node_attribute_type(value: ast.Attribute, package: Package, index: Index) -
 
 
 def certain_type(value: ast.expr, package: Package, index: Index) -> str | None:
-    """The type ``value`` certainly has: a literal's, a local name's or a node attribute's
-    all of whose bindings give literals of that one type; None when not certain."""
-    found = literal_type(value)
+    """The type ``value`` certainly has: a literal's, :data:`PARAMETER` for a node's
+    ``self.get_parameter(...)``, a local name's or a node attribute's all of whose bindings
+    give that one type; None when not certain."""
+    found = _made_type(value, index)
     if found is not None:
         return found
     if isinstance(value, ast.Name):

@@ -393,3 +393,14 @@ def subscription_in_ros1_order(root: Path) -> None:
 def timer_arguments_swapped(root: Path) -> None:
     edit(root, TALKER, "self.create_timer(period, self.publish)",
          "self.create_timer(self.publish, period)")
+
+
+@case("PYC031", TALKER, "self.create_timer(period, self.publish)")
+def parameter_object_as_timer_period(root: Path) -> None:
+    edit(root, TALKER, "period = self.get_parameter('period').value",
+         "period = self.get_parameter('period')")
+
+
+@case("PYC025", TALKER, "msg.data = self.count")
+def counter_published_in_a_string_field(root: Path) -> None:
+    edit(root, TALKER, "msg.data = f'Hello {self.count}'", "msg.data = self.count")
