@@ -104,6 +104,13 @@ def _names(node: ast.AST) -> _Names:
     return found
 
 
+def binding_counts(node: ast.AST) -> Counter[str]:
+    """How many times each name is bound anywhere in ``node`` (nested scopes, parameters and
+    the function's own name included; ``global``/``nonlocal`` count twice): computed once
+    per node with the rest of its :class:`_Names`. Treat as read-only."""
+    return _names(node).counts
+
+
 def _path(node: ast.Attribute) -> tuple[str, ...]:
     """The attribute names of ``node`` after its root: ``("header", "stamp")`` for
     ``msg.header.stamp``."""

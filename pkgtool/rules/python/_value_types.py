@@ -10,14 +10,14 @@ call's result, an import, ``global``, ``setattr``) leaves it unknown.
 from __future__ import annotations
 
 import ast
+from collections.abc import Iterator
 
 from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
-from pkgtool.model.ast_nodes import nodes_of_class, subtree
-from pkgtool.model.memo import per_package
+from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.memo import per_object, per_package
 from pkgtool.model.package import Package
 from pkgtool.rules.node_api import NODE_CLASSES, literal_type
-from pkgtool.rules.python._message_instances import method_receiver
-from pkgtool.rules.scopes import scope_bindings, scope_walk
+from pkgtool.rules.python._message_instances import binding_counts, method_receiver
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
 PARAMETER = "Parameter"
@@ -74,36 +74,78 @@ def _enclosing_function(node: ast.AST, index: Index) -> ast.AST | None:
     return parent if isinstance(parent, FUNCTIONS) else None
 
 
-def _local_type(name: ast.Name, index: Index) -> str | None:
+@per_object(16)
+def _assigned_names(tree: ast.Module) -> dict[str, list[ast.Name]]:
+    """The names assignment statements of ``tree`` bind directly (``n = ...``, ``n: int =
+    ...``, ``n += ...``; not unpacked), by name."""
+    found: dict[str, list[ast.Name]] = {}
+    for statement in nodes_of_class(tree, ast.Assign, ast.AnnAssign, ast.AugAssign):
+        targets = statement.targets if isinstance(statement, ast.Assign) else \
+            [statement.target] if isinstance(statement, (ast.AnnAssign, ast.AugAssign)) else []
+        for target in targets:
+            if isinstance(target, ast.Name):
+                found.setdefault(target.id, []).append(target)
+    return found
+
+
+def _local_type(name: ast.Name, tree: ast.Module, index: Index) -> str | None:
     """The type of a function's local ``name`` when all its bindings agree on one."""
     function = _enclosing_function(name, index)
-    if function is None or any(isinstance(n, ast.Nonlocal) and name.id in n.names
-                               for n in subtree(function)):
+    if function is None:
         return None
-    stores = [n for n in scope_walk(function.body) if isinstance(n, ast.Name) and
-              n.id == name.id and not isinstance(n.ctx, ast.Load)]
-    if not stores or len(stores) != scope_bindings(function)[name.id]:
-        return None  # a parameter, an import, a nested def, global: not a plain assignment
-    return _one({_bound_type(n, index) for n in stores})
+    start, end = function.lineno, function.end_lineno or function.lineno
+    assigned = [n for n in _assigned_names(tree).get(name.id, ())
+                if start <= n.lineno <= end and _enclosing_function(n, index) is function]
+    if not assigned or len(assigned) != binding_counts(function)[name.id] or \
+            any(isinstance(n, ast.Nonlocal) and name.id in n.names
+                for n in nodes_of_class(tree, ast.Nonlocal)):
+        return None  # also a parameter, an import, a loop target, `global`, a nested scope
+    return _one({_bound_type(n, index) for n in assigned})
+
+
+def _dynamic(tree: ast.Module, index: Index) -> bool:
+    """True when the module calls ``setattr``/``vars``, defines ``__setattr__`` or assigns
+    ``__slots__`` (``__dict__`` is looked for with the stores)."""
+    return any(isinstance(c.func, ast.Name) and c.func.id in _DYNAMIC for c in index.calls) \
+        or any(f.name in _DYNAMIC for f in index.functions) or "__slots__" in \
+        _assigned_names(tree)
+
+
+def _class_attributes(cls: ast.ClassDef) -> Iterator[str]:
+    """The names a class body assigns or defines at its top level."""
+    for statement in cls.body:
+        if isinstance(statement, (*FUNCTIONS, ast.ClassDef)):
+            yield statement.name
+        targets = statement.targets if isinstance(statement, ast.Assign) else \
+            [statement.target] if isinstance(statement, (ast.AnnAssign, ast.AugAssign)) else []
+        yield from (t.id for t in targets if isinstance(t, ast.Name))
 
 
 @per_package
-def _attribute_types(package: Package) -> dict[str, str | None]:
-    """For each attribute name the installed modules store, its one literal type, or None;
-    empty when a module may store attributes unseen."""
-    found: dict[str, set[str]] = {}
+def _attribute_stores(package: Package) -> dict[str, list[tuple[ast.expr, Index]]] | None:
+    """The attributes the installed modules store, by name, with the index of the module of
+    each; a class body's attribute counts as a store of no known type. None when a module
+    may store attributes unseen."""
+    found: dict[str, list[tuple[ast.expr, Index]]] = {}
     for _, tree, index in installed_trees(package):
-        for node in nodes_of_class(tree, ast.Name, ast.Attribute, *FUNCTIONS):
-            named = node.id if isinstance(node, ast.Name) else \
-                node.attr if isinstance(node, ast.Attribute) else node.name
-            if named in _DYNAMIC:
-                return {}
+        if _dynamic(tree, index):
+            return None
+        for node in nodes_of_class(tree, ast.Attribute):
             if isinstance(node, ast.Attribute) and not isinstance(node.ctx, ast.Load):
-                found.setdefault(node.attr, set()).add(_bound_type(node, index))
-        for cls in index.classes:  # a class attribute of the same name: a type not followed
-            for name in scope_bindings(cls):
-                found.setdefault(name, set()).add(_UNKNOWN)
-    return {name: _one(types) for name, types in found.items()}
+                found.setdefault(node.attr, []).append((node, index))
+            elif isinstance(node, ast.Attribute) and node.attr in _DYNAMIC:
+                return None
+        for cls in index.classes:
+            for name in _class_attributes(cls):
+                found.setdefault(name, []).append((cls, index))
+    return found
+
+
+def _attribute_type(package: Package, name: str) -> str | None:
+    """The one type every store of an attribute ``name`` in the package gives, if any."""
+    stores = _attribute_stores(package)
+    return _one({_bound_type(node, index) for node, index in stores.get(name, ())}) \
+        if stores else None
 
 
 def _node_attribute_type(value: ast.Attribute, package: Package, index: Index) -> str | None:
@@ -116,10 +158,11 @@ def _node_attribute_type(value: ast.Attribute, package: Package, index: Index) -
             len(cls.bases) != 1 or cls.keywords or \
             index.qualified(cls.bases[0]) != "rclpy.node.Node":
         return None
-    return _attribute_types(package).get(value.attr)
+    return _attribute_type(package, value.attr)
 
 
-def certain_type(value: ast.expr, package: Package, index: Index) -> str | None:
+def certain_type(value: ast.expr, package: Package, tree: ast.Module, index: Index
+                 ) -> str | None:
     """The type ``value`` certainly has: a literal's, :data:`PARAMETER` for a node's
     ``self.get_parameter(...)``, a local name's or a node attribute's all of whose bindings
     give that one type; None when not certain."""
@@ -127,7 +170,7 @@ def certain_type(value: ast.expr, package: Package, index: Index) -> str | None:
     if found is not None:
         return found
     if isinstance(value, ast.Name):
-        return _local_type(value, index)
+        return _local_type(value, tree, index)
     if isinstance(value, ast.Attribute) and isinstance(value.ctx, ast.Load):
         return _node_attribute_type(value, package, index)
     return None

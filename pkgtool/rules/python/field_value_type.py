@@ -134,7 +134,7 @@ def field_value_type(package: Package) -> Iterator[Hit]:
                           k.value) for k in call.keywords
                          if message is not None and k.arg in message.fields)
         for target, kind, value in found:
-            wanted, given = _wanted(kind), certain_type(value, package, index)
+            wanted, given = _wanted(kind), certain_type(value, package, tree, index)
             if wanted is not None and given is not None and given not in wanted[0]:
                 yield Hit(Span(module.path, value.lineno, value.col_offset + 1),
                           f"`{target}` is a `{kind}` field but is given `{ast.unparse(value)}`"

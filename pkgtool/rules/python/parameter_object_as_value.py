@@ -55,6 +55,30 @@ def _uses(tree: ast.Module, index: Index) -> Iterator[tuple[ast.expr, str]]:
                                 "TypeError")
 
 
+def _read(value: ast.expr | None) -> bool:
+    """True for a call ``<x>.get_parameter(...)``."""
+    return isinstance(value, ast.Call) and isinstance(value.func, ast.Attribute) and \
+        value.func.attr == "get_parameter"
+
+
+def _holders(tree: ast.Module) -> set[str]:
+    """The names and attribute names an assignment of the module gives a ``get_parameter()``
+    call (only they, and the calls themselves, can be a ``Parameter``)."""
+    found: set[str] = set()
+    for statement in nodes_of_class(tree, ast.Assign, ast.AnnAssign):
+        if isinstance(statement, (ast.Assign, ast.AnnAssign)) and _read(statement.value):
+            targets = statement.targets if isinstance(statement, ast.Assign) else \
+                [statement.target]
+            found.update(t.id if isinstance(t, ast.Name) else t.attr for t in targets
+                         if isinstance(t, (ast.Name, ast.Attribute)))
+    return found
+
+
+def _candidate(value: ast.expr, holders: set[str]) -> bool:
+    return _read(value) or isinstance(value, ast.Name) and value.id in holders or \
+        isinstance(value, ast.Attribute) and value.attr in holders
+
+
 @rule("PYC031", "parameter-object-as-value", Severity.ERROR,
       fix="Take the parameter's value: `self.get_parameter('period').value`")
 def parameter_object_as_value(package: Package) -> Iterator[Hit]:
@@ -90,10 +114,13 @@ def parameter_object_as_value(package: Package) -> Iterator[Hit]:
     ```
     """
     for module, tree, index in installed_trees(package):
-        if not any(i.top_level == "rclpy" for i in module.imports):
+        if not any(i.top_level == "rclpy" for i in module.imports) or \
+                not any(_read(call) for call in index.calls):
             continue
+        holders = _holders(tree)
         for value, how in _uses(tree, index):
-            if certain_type(value, package, index) == PARAMETER:
+            if _candidate(value, holders) and \
+                    certain_type(value, package, tree, index) == PARAMETER:
                 yield Hit(Span(module.path, value.lineno, value.col_offset + 1),
                           f"`{ast.unparse(value)}` is the `Parameter` object "
                           f"`get_parameter()` returns, not its value, and {how}")

@@ -122,7 +122,7 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
             for ref in publisher.refs:
                 value = _published(ref, index)
                 why = _not_a_message(value, publisher.message, messages,
-                                     certain_type(value, package, index)) if value else None
+                                     certain_type(value, package, tree, index)) if value else None
                 if value is not None and why:
                     yield Hit(Span(module.path, value.lineno, value.col_offset + 1),
                               f"`{ast.unparse(ref)}.publish()` is given `{ast.unparse(value)}`,"
