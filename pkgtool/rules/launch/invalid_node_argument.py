@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Iterator
+from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.launch import NodeRef
@@ -23,6 +24,20 @@ WRONG_ATTRIBUTES = {"type": "`exec` (`type` is ROS 1)", "executable": "`exec`",
                     "node_namespace": "`namespace`", "machine": "nothing (ROS 1 only)",
                     "required": "`on_exit=\"shutdown\"`", "clear_params": "nothing (ROS 1 only)"}
 """XML/YAML attributes of ``<node>`` that ROS 2's launch rejects, and what to write instead."""
+_PROCESS_KEYWORDS = frozenset("""
+    prefix cwd env additional_env shell sigterm_timeout sigkill_timeout emulate_tty output
+    output_format cached_output log_cmd on_exit respawn respawn_delay respawn_max_retries
+    condition""".split())
+"""What a node action passes on to ``ExecuteProcess``, ``ExecuteLocal`` and ``Action``
+(launch, Foxy to Rolling: the union); any other keyword raises TypeError."""
+KEYWORDS = {
+    "Node": frozenset("""executable package name namespace exec_name parameters remappings
+                      ros_arguments arguments""".split()) | _PROCESS_KEYWORDS,
+}
+KEYWORDS["LifecycleNode"] = KEYWORDS["Node"]
+KEYWORDS["ComposableNodeContainer"] = KEYWORDS["Node"] | {"composable_node_descriptions"}
+"""The keywords each Python node action of launch_ros takes (Foxy to Rolling: the union,
+read from the ros2/launch_ros and ros2/launch sources), besides :data:`REMOVED_KEYWORDS`."""
 
 
 def _problems(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
@@ -38,6 +53,10 @@ def _problems(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
             where = node.executable_span if name == "node_executable" else None
             yield (f"`{node.action}()` has no `{name}` argument since ROS 2 Foxy",
                    f"Write `{REMOVED_KEYWORDS[name]}=`", where or node.span)
+        for name in sorted(given - KEYWORDS[node.action] - REMOVED_KEYWORDS.keys() - {"*", "**"}):
+            close = get_close_matches(name, sorted(KEYWORDS[node.action]), n=1)
+            yield (f"`{node.action}()` has no `{name}` argument: launch raises TypeError",
+                   f"Write `{close[0]}=`" if close else "Remove it", node.span)
         if not given & {"executable", "node_executable", "**"}:
             yield (f"`{node.action}()` has no `executable`",
                    "Add `executable='<console script>'`", node.span)
@@ -61,8 +80,9 @@ def invalid_launch_node_argument(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Checks the node actions of launch files: Python `Node`, `LifecycleNode` and
-    `ComposableNodeContainer` calls need `executable=` and must not use `node_executable`,
-    `node_name` or `node_namespace` (removed after ROS 2 Eloquent), and their `parameters=`
+    `ComposableNodeContainer` calls need `executable=`, must not use `node_executable`,
+    `node_name` or `node_namespace` (removed after ROS 2 Eloquent) nor a keyword none of
+    Foxy to Rolling takes (`nam=`, `parameter=`, `args=`), and their `parameters=`
     must be a list (not a path, a string, a tuple or a dict); their `remappings=` (and
     those of a `ComposableNode`) must be a list of tuples of two (not a single pair
     `('/a', '/b')`, a string, a dict, nor a list holding a string `[('/a')]`, a list or a

@@ -153,6 +153,11 @@ def foxy_node_arguments(root: Path) -> None:
          "node_executable='talker',\n            node_name='talker'")
 
 
+@case("LCH005", PY)
+def node_keyword_misspelt(root: Path) -> None:
+    edit(root, PY, "name='talker'", "nam='talker'")
+
+
 @case("LCH005", XML_LAUNCH, "type=\"talker\"")
 def xml_launch_ros1_node_type(root: Path) -> None:
     _other_launch(root, XML_LAUNCH, """
