@@ -14,7 +14,7 @@ import re
 from difflib import get_close_matches
 from collections.abc import Iterator
 
-from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.ast_nodes import nodes_of_class, walk_once
 from pkgtool.model.installed import installed_data
 from pkgtool.model.launch import NodeRef
 from pkgtool.model.memo import per_package
@@ -30,6 +30,8 @@ PERMISSIVE = frozenset({"allow_undeclared_parameters",
 """Node options that accept parameters nobody declares."""
 READS = frozenset({"get_parameter", "get_parameters"})
 """Node methods that raise ParameterNotDeclaredException for an undeclared name."""
+DECLARES = frozenset({"declare_parameter", "declare_parameters"})
+"""Node methods that declare parameters."""
 BUILT_IN = frozenset({"use_sim_time", "start_type_description_service"})
 """Parameters rclpy's Node declares itself (Jazzy)."""
 _BOOLS = frozenset({"Y", "y", "yes", "Yes", "YES", "true", "True", "TRUE", "on", "On", "ON",
@@ -124,10 +126,10 @@ def _static_typing(descriptor: ast.expr | None) -> bool:
         "ParameterDescriptor" and _flag(descriptor, "dynamic_typing") is False
 
 
-def _declarations(call: ast.Call, path: str) -> list[Declared] | None:
-    """The parameters a ``declare_parameter(s)`` call declares; None when not all literal."""
+def _declarations(call: ast.Call, method: str, path: str) -> list[Declared] | None:
+    """The parameters a call of ``method`` (``declare_parameter(s)``) declares; None when not
+    all literal."""
     span = Span(path, call.lineno, call.col_offset + 1)
-    method = call.func.attr if isinstance(call.func, ast.Attribute) else ""
     if method == "declare_parameter":
         name = _literal_string(_argument(call, 0, "name"))
         if name is None:
@@ -150,18 +152,62 @@ def _declarations(call: ast.Call, path: str) -> list[Declared] | None:
     return found
 
 
-def _method_calls(index: Index, names: frozenset[str]) -> Iterator[ast.Call]:
+Scope = tuple[int, str]
+"""A name in the function binding it: (``id`` of the function, or 0 at module level, name)."""
+
+
+def _scope(index: Index, node: ast.AST, name: str) -> Scope:
+    function = index.enclosing_function(node)
+    return (id(function) if function is not None else 0), name
+
+
+def _aliases(tree: ast.Module, index: Index) -> dict[Scope, str]:
+    """Names bound only to ``x.declare_parameter(s)`` in their function: the method."""
+    nodes = walk_once(tree).by_class
+    bindings: dict[Scope, list[ast.AST]] = {}
+    for node in nodes.get(ast.Name, ()):
+        if not isinstance(node.ctx, ast.Load):  # type: ignore[attr-defined]
+            bindings.setdefault(_scope(index, node, node.id), []).append(  # type: ignore
+                index.parents.get(id(node), node))
+    for node in nodes.get(ast.arg, ()):
+        bindings.setdefault(_scope(index, node, node.arg), []).append(node)  # type: ignore
+    aliases: dict[Scope, str] = {}
+    for scope, binders in bindings.items():
+        methods = {b.value.attr if isinstance(b, ast.Assign) and len(b.targets) == 1 and
+                   isinstance(b.value, ast.Attribute) and b.value.attr in DECLARES else None
+                   for b in binders}
+        if len(methods) == 1 and None not in methods:
+            aliases[scope] = methods.pop()  # type: ignore[assignment]
+    return aliases
+
+
+def _declaring_calls(tree: ast.Module, index: Index) -> list[tuple[ast.Call, str] | None]:
+    """Each call declaring parameters with its method: ``x.declare_parameter(...)``, or
+    ``p(...)`` where every binding of ``p`` in its function is ``p = x.declare_parameter``.
+    None for a reference to the methods used otherwise (passed on, or bound to a name that
+    stands for other things too): what it declares is not known."""
+    aliases = _aliases(tree, index)
+    found: list[tuple[ast.Call, str] | None] = []
+    for node in index.attributes:
+        parent = index.parents.get(id(node))
+        if node.attr in DECLARES and not (isinstance(parent, ast.Call) and parent.func is node) \
+                and not (isinstance(parent, ast.Assign) and isinstance(parent.targets[0], ast.Name)
+                         and _scope(index, parent, parent.targets[0].id) in aliases):
+            found.append(None)
     for call in index.calls:
-        if isinstance(call.func, ast.Attribute) and call.func.attr in names:
-            yield call
+        if isinstance(call.func, ast.Attribute) and call.func.attr in DECLARES:
+            found.append((call, call.func.attr))
+        elif isinstance(call.func, ast.Name) and _scope(index, call, call.func.id) in aliases:
+            found.append((call, aliases[_scope(index, call, call.func.id)]))
+    return found
 
 
 def _is_self(node: ast.expr) -> bool:
     return isinstance(node, ast.Name) and node.id == "self"
 
 
-def _node_class(path: str, cls: ast.ClassDef, index: Index, module_skip: str | None
-                ) -> NodeClass:
+def _node_class(path: str, cls: ast.ClassDef, index: Index, module_skip: str | None,
+                declaring: list[tuple[ast.Call, str] | None]) -> NodeClass:
     """The analysis of one direct Node subclass."""
     inside = [c for c in index.calls if _within(index, c, cls)]
     name = next((_literal_string(name_argument(c)) for c in node_constructions(index)
@@ -170,10 +216,10 @@ def _node_class(path: str, cls: ast.ClassDef, index: Index, module_skip: str | N
     skip = module_skip
     if len(cls.bases) != 1 or cls.keywords:
         skip = skip or "it derives from another class besides Node"
-    for call in _method_calls(index, frozenset({"declare_parameter", "declare_parameters"})):
-        found = _declarations(call, path)
+    for call in declaring:
+        found = None if call is None else _declarations(*call, path)
         if found is None:
-            skip = skip or "it declares a parameter whose name is not a literal"
+            skip = skip or "it declares a parameter whose name is not known statically"
         else:
             declared.extend(found)
     if any(_is_self(a) for c in inside for a in (*c.args, *(k.value for k in c.keywords))):
@@ -227,8 +273,9 @@ def module_nodes(package: Package) -> dict[str, ModuleNodes]:
                   if any(index.qualified(b) in NODE_CLASSES for b in c.bases)]
         calls = tuple(_literal_string(name_argument(c)) for c in index.calls
                       if index.qualified(c.func) in NODE_CLASSES)
+        declaring = _declaring_calls(tree, index) if direct else []
         found[module.path] = ModuleNodes(
-            tuple(_node_class(module.path, c, index, skip) for c in direct),
+            tuple(_node_class(module.path, c, index, skip, declaring) for c in direct),
             len(index.classes) > len(direct), calls)
     return found
 

@@ -19,9 +19,11 @@ def undeclared_parameter_read(package: Package) -> Iterator[Hit]:
     In classes derived directly from rclpy's `Node`, checks the literal names given to
     `self.get_parameter('name')` and `self.get_parameters([...])` against the names the
     module declares with `declare_parameter` and `declare_parameters` (with their namespace
-    prefix: `ns.name`). `get_parameter_or` and `has_parameter` are not checked. Skipped when
-    the module uses `allow_undeclared_parameters` or
-    `automatically_declare_parameters_from_overrides`, declares a name that is not a literal,
+    prefix: `ns.name`), called directly or through a name bound only to the method in its
+    function (`p = self.declare_parameter`, then `p('rate', 1.0)`). `get_parameter_or` and
+    `has_parameter` are not checked. Skipped when the module uses
+    `allow_undeclared_parameters` or `automatically_declare_parameters_from_overrides`,
+    declares a name that is not a literal, uses the method otherwise (passed to `map`, say),
     or the class derives from another class besides `Node`, or hands `self` to other code.
 
     ## Why is this bad?
