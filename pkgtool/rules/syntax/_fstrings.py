@@ -8,15 +8,18 @@ _OPENING = re.compile(r"(?<![\w'\"])((?:[rR]?[fF]|[fF][rR]))('''|\"\"\"|'|\")")
 _PREFIX = re.compile(r"(?<!\w)[rRbBuUfF]{1,2}$")
 
 
-def _string_end(text: str, i: int, quote: str, fmt: bool) -> tuple[int, bool] | None:
+def _string_end(text: str, i: int, quote: str, fmt: bool, nested: bool = False
+                ) -> tuple[int, bool] | None:
     """(index after the closing quote, whether only 3.12 parses it) for the string whose body
-    starts at ``i``; None when it never ends."""
+    starts at ``i``; None when it never ends. A ``nested`` string (inside a replacement field)
+    holding a backslash is 3.12's: older Pythons reject any backslash in a field."""
     newer = False
     while i < len(text):
         if text.startswith(quote, i):
             return i + len(quote), newer
         char = text[i]
         if char == "\\":
+            newer = newer or nested
             i += 2
         elif char == "\n" and len(quote) == 1:
             return None
@@ -55,7 +58,7 @@ def _field_end(text: str, i: int, quote: str) -> tuple[int, bool] | None:
             prefix = _PREFIX.search(text, 0, i)
             inner = text[i:i + 3] if text[i:i + 3] in ("'''", '"""') else char
             end = _string_end(text, i + len(inner), inner,
-                              prefix is not None and "f" in prefix.group().lower())
+                              prefix is not None and "f" in prefix.group().lower(), True)
             if end is None:
                 return None
             newer = newer or end[1] or quote.startswith(inner) or inner.startswith(quote)
