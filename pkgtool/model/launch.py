@@ -113,19 +113,27 @@ class LaunchFile:
 
 NOT_LAUNCH_FOLDERS = frozenset({"test", "tests", "example", "examples", "doc", "docs"})
 """Top-level folders of test and documentation material: a launch-like name there is not enough."""
+TEMPLATE_FOLDERS = frozenset({"template", "templates"})
+"""Top-level folders of templates a script copies into a package it generates (a new robot's
+configuration): their launch files are that package's, never this one's."""
+
+
+def is_template(path: str) -> bool:
+    """True for a package file under a top-level ``templates/`` (or ``template/``) folder."""
+    return path.split("/", 1)[0] in TEMPLATE_FOLDERS and "/" in path
 
 
 def is_launch_file(path: str, python_folders: frozenset[str] = frozenset()) -> bool:
     """True for a file with a launch file name that the package keeps as a launch file.
 
-    Anything named like a launch file in a ``launch`` folder is one. Elsewhere the name is not
-    enough: a module inside a Python package folder (``python_folders``: folders holding an
-    ``__init__.py``; it is installed as code), a test (``test_*``) and files under
-    ``test/``, ``examples/`` or ``doc/`` (run by pytest, or by ``main()`` with a
-    ``LaunchService``) are not launch files.
+    Files under ``templates/`` never are (:func:`is_template`). Anything named like a launch
+    file in a ``launch`` folder is one. Elsewhere the name is not enough: a module inside a
+    Python package folder (``python_folders``: folders holding an ``__init__.py``; it is
+    installed as code), a test (``test_*``) and files under ``test/``, ``examples/`` or
+    ``doc/`` (run by pytest, or by ``main()`` with a ``LaunchService``) are not launch files.
     """
     folder, _, name = path.rpartition("/")
-    if not name.endswith(LAUNCH_SUFFIXES):
+    if not name.endswith(LAUNCH_SUFFIXES) or is_template(path):
         return False
     parts = folder.split("/") if folder else []
     if "launch" in parts:

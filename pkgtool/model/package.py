@@ -9,7 +9,8 @@ from pathlib import Path
 from pkgtool.model.cmake_interfaces import with_included
 from pkgtool.model.context import Context
 from pkgtool.model.files import TextFile, list_files, read_text
-from pkgtool.model.launch import LaunchFile, is_launch_file, parse_launch, python_folders
+from pkgtool.model.launch import LaunchFile, is_launch_file, is_template, parse_launch, \
+    python_folders
 from pkgtool.model.launch_reader import yaml_problem
 from pkgtool.model.manifest import Manifest, parse_manifest
 from pkgtool.model.modules import PythonModule, parse_module
@@ -165,12 +166,14 @@ def _test_data(relpath: str) -> bool:
 
 
 def _launch_by_content(relpath: str, text_of: Callable[[str], str | None]) -> bool:
-    """An XML or YAML file in a ``launch`` folder whose root is ``launch``, whatever its name.
+    """An XML or YAML file in a ``launch`` folder (not a template) whose root is ``launch``,
+    whatever its name.
 
     ``ros2 launch`` accepts any file name; only files in a folder named ``launch`` are read
     for this, so URDF, RViz and parameter files elsewhere cost nothing.
     """
-    if "launch" not in relpath.split("/")[:-1] or not relpath.endswith((".xml", ".yaml", ".yml")):
+    if "launch" not in relpath.split("/")[:-1] or not relpath.endswith((".xml", ".yaml", ".yml")) \
+            or is_template(relpath):
         return False
     text = text_of(relpath)
     if text is None:
