@@ -33,9 +33,12 @@ def _near_miss(path: str, text: str) -> Span:
 
 def _loaded_by_others(package: Package) -> dict[str, set[str]]:
     """File name or module name -> the Python files of the package that import it, or run or
-    load a file of that name (``runpy.run_path(...'helpers_launch.py')``)."""
+    load a file of that name (``runpy.run_path(...'helpers_launch.py')``); tests are left out
+    (a test loading a launch file checks it as one)."""
     found: dict[str, set[str]] = {}
     for module in all_python(package):
+        if module.is_test:
+            continue
         for imported in module.imports:
             found.setdefault(imported.top_level, set()).add(module.path)
         text = package.texts.get(module.path)
@@ -70,8 +73,8 @@ def missing_launch_function(package: Package) -> Iterator[Hit]:
     Reports Python launch files (`*.launch.py`, `*_launch.py`) that neither define nor import
     a top-level `generate_launch_description`, at a function whose name is close to it when
     there is one. Test files (`launch_testing` files define `generate_test_description`),
-    files with a star import and helpers that another Python file of the package imports or
-    runs (`import shared_launch`, `runpy.run_path(... 'nodes_launch.py')`,
+    files with a star import and helpers that another Python file of the package (not a test)
+    imports or runs (`import shared_launch`, `runpy.run_path(... 'nodes_launch.py')`,
     `importlib.util.spec_from_file_location`) are not checked.
 
     ## Why is this bad?
