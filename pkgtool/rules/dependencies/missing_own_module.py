@@ -1,4 +1,5 @@
-"""DEP010: an installed module imports a module or name of its own package that is missing."""
+"""DEP010: an installed or test module imports a module or name of its own package that is
+missing."""
 
 from __future__ import annotations
 
@@ -11,7 +12,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import installed_modules
 from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import installed_code
+from pkgtool.rules.imports import installed_code, test_code
 from pkgtool.rules.registry import rule
 
 
@@ -51,11 +52,13 @@ def _shadowed(package: Package, path: str, root: str) -> bool:
 @rule("DEP010", "missing-own-module", Severity.ERROR,
       fix="Import the module or name under the name it has (check the spelling), or write it")
 def missing_own_module(package: Package) -> Iterator[Hit]:
-    """An installed module imports a module or name of this package that does not exist.
+    """An installed or test module imports a module or name of this package that does not
+    exist.
 
     ## What it does
-    For the unguarded imports of installed modules that name a module below one of the
-    package's own installed top-level packages (`import my_pkg.utils`,
+    For the unguarded imports of installed modules (and the absolute ones of test modules,
+    `from my_pkg.talker import Talker` in `test/test_talker.py`) that name a module below
+    one of the package's own installed top-level packages (`import my_pkg.utils`,
     `from my_pkg.utils import clamp`, `from .utils import clamp`), reports a module that
     setup.py does not install and that has no file in the package, and a name that
     `from my_pkg.utils import name` takes from an installed module which neither defines it
@@ -68,8 +71,8 @@ def missing_own_module(package: Package) -> Iterator[Hit]:
 
     ## Why is this bad?
     The node dies at start-up with `ModuleNotFoundError` or `ImportError: cannot import
-    name`: usually a helper module or function renamed (or never written) while the import
-    kept the old name.
+    name` (a test module fails to load, so `colcon test` reports an error): usually a helper
+    module, class or function renamed (or never written) while the import kept the old name.
 
     ## Example
     ```python
@@ -86,9 +89,12 @@ def missing_own_module(package: Package) -> Iterator[Hit]:
         return
     names = {file: name for name, file in installed.items()}
     roots = {name.split(".")[0] for name in installed}
-    for module in installed_code(package):
+    tests = test_code(package)
+    for module in [*installed_code(package), *tests]:
         dotted = names.get(module.path)
-        for imported in module.imports if dotted else ():
+        for imported in module.imports if dotted or module in tests else ():
+            if dotted is None and imported.level:
+                continue  # a test's relative import: its own folder, not the package
             base = _base(imported, dotted or "", module.path.endswith("__init__.py"))
             if imported.guarded or base is None or base.split(".")[0] not in roots or (
                     imported.level == 0 and _shadowed(package, module.path, imported.top_level)):

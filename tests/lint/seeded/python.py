@@ -404,3 +404,9 @@ def parameter_object_as_timer_period(root: Path) -> None:
 @case("PYC025", TALKER, "msg.data = self.count")
 def counter_published_in_a_string_field(root: Path) -> None:
     edit(root, TALKER, "msg.data = f'Hello {self.count}'", "msg.data = self.count")
+
+
+@case("DEP010", "test/test_talker.py", "from base_pkg.talker import TalkerNode")
+def test_imports_a_renamed_class(root: Path) -> None:
+    edit(root, "test/test_talker.py", "from base_pkg.talker import Talker",
+         "from base_pkg.talker import TalkerNode")
