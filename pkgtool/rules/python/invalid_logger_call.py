@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import ast
 from collections.abc import Iterator
-from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import nodes_of_class
@@ -21,22 +20,13 @@ OPTIONS = frozenset({"name", "throttle_duration_sec", "throttle_time_source_type
 MESSAGE = "message"
 """The name of the methods' one parameter, which a call may also pass by keyword."""
 GETTERS = frozenset({"rclpy.logging.get_logger"})
-METHODS = LEVELS | {"log", "get_child", "set_level", "get_effective_level", "is_enabled_for"}
-"""The methods of rclpy's ``RcutilsLogger`` (Humble to Rolling)."""
-_LOGGING = {"critical": "fatal", "exception": "error", "warnings": "warning",
-            "information": "info", "setLevel": "set_level", "getChild": "get_child"}
-"""Methods of Python's ``logging`` (or near them) and rclpy's method for the same."""
 
 
 def _is_logger_call(node: ast.AST, index: Index) -> bool:
-    """True for ``<x>.get_logger()`` (not a module's other than rclpy's, e.g.
-    ``launch.logging.get_logger()``, which gives a Python ``logging`` logger) or
-    ``rclpy.logging.get_logger(...)``."""
-    if not isinstance(node, ast.Call):
-        return False
-    qualified = index.qualified(node.func)
-    return qualified in GETTERS or qualified is None and \
+    """True for ``<x>.get_logger()`` or ``rclpy.logging.get_logger(...)``."""
+    return isinstance(node, ast.Call) and (
         isinstance(node.func, ast.Attribute) and node.func.attr == "get_logger"
+        or index.qualified(node.func) in GETTERS)
 
 
 def _loggers(tree: ast.Module, index: Index) -> set[str]:
@@ -89,16 +79,10 @@ def _problem(call: ast.Call) -> str | None:
     return None
 
 
-def _meant(name: str) -> str | None:
-    """The method of rclpy's logger a call of ``name``, which it has not, likely meant."""
-    return _LOGGING.get(name) or next(iter(get_close_matches(name, sorted(METHODS), n=1)), None)
-
-
 @rule("PYC016", "invalid-logger-call", Severity.ERROR,
       fix="Pass one string: `self.get_logger().info(f'Count: {count}')`")
 def invalid_logger_call(package: Package) -> Iterator[Hit]:
-    """An rclpy logger is called with several arguments, an unknown option, no string, or a
-    method it has not.
+    """An rclpy logger is called with several arguments, an unknown option or no string.
 
     ## What it does
     Checks calls of `debug`, `info`, `warning`, `warn`, `error` and `fatal` on rclpy loggers:
@@ -106,17 +90,14 @@ def invalid_logger_call(package: Package) -> Iterator[Hit]:
     (`self.logger`) that the module only ever assigns one of those. Each call must pass one
     message (by position, or by keyword as `message=`) and only rclpy's options
     (`throttle_duration_sec`, `throttle_time_source_type`, `skip_first`, `once`, `name`).
-    Calls that unpack `*args` or `**kwargs` are not checked. Calls of a method rclpy's logger
-    has not (`critical`, `exception`, `warnings`: Python `logging`'s or misspelt) are
-    reported too.
+    Calls that unpack `*args` or `**kwargs` are not checked.
 
     ## Why is this bad?
     rclpy's logger is neither `print` nor Python's `logging`: `info('count', n)` raises
     `TypeError: RcutilsLogger.info() takes 2 positional arguments but 3 were given`,
     `info('x %s', n)` too, `info(5)` raises "incompatible function arguments", and an option
     such as `end=` raises `TypeError: parameter "end" is not one of the recognized logging
-    options`; `critical(...)` raises `AttributeError`. The node dies in the callback that
-    logs.
+    options`. The node dies in the callback that logs.
 
     ## Example
     ```python
@@ -134,19 +115,14 @@ def invalid_logger_call(package: Package) -> Iterator[Hit]:
         loggers: set[str] | None = None
         for call in index.calls:
             func = call.func
-            if not isinstance(func, ast.Attribute) or func.attr.startswith("_") or \
-                    func.attr in METHODS - LEVELS:
+            if not isinstance(func, ast.Attribute) or func.attr not in LEVELS:
                 continue
             if not _is_logger_call(func.value, index):
                 if loggers is None:
                     loggers = _loggers(tree, index)
                 if _key(func.value) not in loggers:
                     continue
-            where = Span(module.path, call.lineno, call.col_offset + 1)
-            if func.attr not in LEVELS:
-                meant = _meant(func.attr)
-                yield Hit(where, f"`{ast.unparse(func)}()` is no method of rclpy's logger: it "
-                          "raises `AttributeError`", f"Call `{meant}`" if meant else
-                          "Call one of `debug`, `info`, `warning`, `error`, `fatal`")
-            elif problem := _problem(call):
-                yield Hit(where, f"`{ast.unparse(func)}()` {problem}")
+            problem = _problem(call)
+            if problem:
+                yield Hit(Span(module.path, call.lineno, call.col_offset + 1),
+                          f"`{ast.unparse(func)}()` {problem}")
