@@ -40,6 +40,7 @@ _MISSING: dict[str, dict[str, str]] = {
         "get_time": "`node.get_clock().now()`",
         "get_rostime": "`node.get_clock().now()`",
         "get_param": "`node.get_parameter(name).value`",
+        "get_logger": "`rclpy.logging.get_logger(name)` or `node.get_logger()`",
         "loginfo": "`node.get_logger().info(...)`",
         "logwarn": "`node.get_logger().warning(...)`",
         "logerr": "`node.get_logger().error(...)`",

@@ -110,6 +110,7 @@ RULES = {
     "PYC029": ("unexpected-rclpy-keyword", "error", True, "python.unexpected_rclpy_keyword"),
     "PYC030": ("swapped-rclpy-arguments", "error", True, "python.swapped_rclpy_arguments"),
     "PYC031": ("parameter-object-as-value", "error", True, "python.parameter_object_as_value"),
+    "PYC032": ("path-without-separator", "error", True, "python.path_without_separator"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

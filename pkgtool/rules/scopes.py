@@ -97,6 +97,22 @@ def scope_bindings(scope: Scope) -> Counter[str]:
                        else scope.body)
 
 
+def single_assignments(where: ast.AST) -> dict[str, ast.expr]:
+    """Names bound exactly once in ``where`` (a function with its nested scopes, or a whole
+    module), by ``name = value``, with their value."""
+    counts: dict[str, int] = {}
+    values: dict[str, ast.expr] = {}
+    for node in ast.walk(where):
+        if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
+            counts[node.id] = counts.get(node.id, 0) + 1
+        elif isinstance(node, ast.arg):
+            counts[node.arg] = counts.get(node.arg, 0) + 2
+        if isinstance(node, ast.Assign) and len(node.targets) == 1 and \
+                isinstance(node.targets[0], ast.Name):
+            values[node.targets[0].id] = node.value
+    return {name: value for name, value in values.items() if counts.get(name) == 1}
+
+
 _PLAIN_DECORATORS = frozenset({"staticmethod", "classmethod"})
 
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import importlib
 import pkgutil
+import sys
 import warnings
 
 import pytest
@@ -11,6 +12,7 @@ import pytest
 from pkgtool.knowledge import rosdistro
 from pkgtool.knowledge.numpy_removed import REMOVED
 from pkgtool.knowledge.rclpy_missing import entries, missing_attribute, owners
+from pkgtool.knowledge.rclpy_names import close_name, defines
 from pkgtool.knowledge.ros_names import looks_like_ros
 from pkgtool.knowledge.rosdep import (NOT_ROSDEP_KEYS, accepted_keys,
                                       key_for_python_module, package_for_ros_module,
@@ -101,3 +103,17 @@ def test_rclpy_class_aliases_are_the_same_classes() -> None:
         assert all(_resolve(alias) is _resolve(canonical) for alias in aliases)
     assert missing_attribute("rclpy.action.client.ActionClient", "GoalStatus")
     assert missing_attribute("rclpy.action.ActionClient", "send_goal_async") is None
+
+
+@pytest.mark.ros
+def test_rclpy_names_table_knows_every_name_of_the_installed_rclpy() -> None:
+    """No false error: whatever the installed (Jazzy) rclpy defines, PYC004 accepts."""
+    _import_all_of_rclpy()
+    rclpy = importlib.import_module("rclpy")
+    modules = ["rclpy", *(info.name for info in pkgutil.walk_packages(rclpy.__path__, "rclpy."))]
+    unknown = [f"{name}.{attr}" for name in modules if name in sys.modules
+               for attr in dir(sys.modules[name]) if not defines(name, attr)]
+    assert unknown == []
+    assert not defines("rclpy", "excutors") and not defines("rclpy.qos", "QoSProfil")
+    assert defines("rclpy.qos_event", "SubscriptionEventCallbacks")  # Humble's and Jazzy's
+    assert close_name("rclpy.executors", "SingleThreadExecutor") == "SingleThreadedExecutor"

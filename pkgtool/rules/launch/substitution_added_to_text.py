@@ -10,6 +10,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.launch._python_launch import launch_class, launch_indexes, within
 from pkgtool.rules.registry import rule
+from pkgtool.rules.scopes import single_assignments
 from pkgtool.rules.syntax_trees import Index
 
 SUBSTITUTIONS = ("launch.substitutions", "launch_ros.substitutions")
@@ -25,22 +26,6 @@ def _substitution(value: ast.expr, index: Index, single: dict[str, ast.expr]) ->
         return None
     module, name = launch_class(value, index)
     return name if within(module, SUBSTITUTIONS) and name[:1].isupper() else None
-
-
-def _single_bindings(function: ast.AST) -> dict[str, ast.expr]:
-    """Names bound exactly once in ``function`` (and its nested scopes), by ``name = value``,
-    with their value."""
-    counts: dict[str, int] = {}
-    values: dict[str, ast.expr] = {}
-    for node in ast.walk(function):
-        if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
-            counts[node.id] = counts.get(node.id, 0) + 1
-        elif isinstance(node, ast.arg):
-            counts[node.arg] = counts.get(node.arg, 0) + 2
-        if isinstance(node, ast.Assign) and len(node.targets) == 1 and \
-                isinstance(node.targets[0], ast.Name):
-            values[node.targets[0].id] = node.value
-    return {name: value for name, value in values.items() if counts.get(name) == 1}
 
 
 def _text(value: ast.expr) -> bool:
@@ -78,7 +63,7 @@ def substitution_added_to_text(package: Package) -> Iterator[Hit]:
     """
     for path, index in launch_indexes(package):
         for function in index.functions:
-            single = _single_bindings(function)
+            single = single_assignments(function)
             for node in ast.walk(function):
                 if not (isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add)) or \
                         index.enclosing_function(node) is not function:

@@ -6,10 +6,12 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rclpy_missing import missing_attribute
+from pkgtool.knowledge.rclpy_names import close_name, defines
+from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.syntax_trees import installed_trees, resolved_attributes
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import installed_trees, resolved_attributes
 
 
 @rule("PYC004", "rclpy-missing-attribute", Severity.ERROR,
@@ -18,46 +20,84 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
     """Installed code uses an rclpy attribute that does not exist.
 
     ## What it does
-    Reports reads of attributes that rclpy does not have, from a curated table checked
-    against rclpy itself: `ActionClient.GoalStatus` (GoalStatus is a message in
-    `action_msgs.msg`), rospy habits such as `rclpy.is_shutdown()`, `rclpy.loginfo()`,
-    `rclpy.Node` (also as a module: `from rclpy.Node import Node`) or `Time.now()`. Only names
-    bound solely to rclpy imports are checked, and not in annotations Python never evaluates
-    (`self.node: rclpy.Node = node` in a method, any under `from __future__ import
-    annotations`): a type checker's business.
+    Reports reads and imports of rclpy modules and names that do not exist: misspelt modules
+    (`from rclpy.nodes import Node`, `import rclpy.excutors`), misspelt names (`from
+    rclpy.qos import QoSProfil`, `rclpy.executors.SingleThreadExecutor`), checked against the
+    modules of rclpy and the names each defines in Humble, Jazzy and Rolling (a name any of
+    them has is accepted; imports under `try/except ImportError` or `if TYPE_CHECKING:` are
+    not checked). Also, from a curated table checked against rclpy itself:
+    `ActionClient.GoalStatus` (GoalStatus is a message in `action_msgs.msg`), rospy habits
+    such as `rclpy.is_shutdown()`, `rclpy.loginfo()`, `rclpy.Node` (also as a module: `from
+    rclpy.Node import Node`) or `Time.now()`. Only names bound solely to rclpy imports are
+    checked, and not in annotations Python never evaluates (`self.node: rclpy.Node = node` in a
+    method, any under `from __future__ import annotations`): a type checker's business.
 
     ## Why is this bad?
-    The line raises `AttributeError` when it runs, often inside a callback, where the
-    error shows up as a log line and the node silently stops doing its job.
+    The line raises `AttributeError` or `ImportError` when it runs: at start-up for an
+    import, often inside a callback for an attribute, where the error shows up as a log line
+    and the node silently stops doing its job.
 
     ## Example
     ```python
+    from rclpy.executors import SingleThreadExecutor
     if status == ActionClient.GoalStatus.STATUS_SUCCEEDED:
     ```
 
     ## Use instead
     ```python
+    from rclpy.executors import SingleThreadedExecutor
     from action_msgs.msg import GoalStatus
     if status == GoalStatus.STATUS_SUCCEEDED:
     ```
     """
     for module, _, index in installed_trees(package):
         for node, owner, attr in resolved_attributes(index):
-            use = missing_attribute(owner, attr) if owner.split(".")[0] == "rclpy" else None
-            if use and not index.in_unevaluated_annotation(node):
+            if owner.split(".")[0] != "rclpy" or index.in_unevaluated_annotation(node):
+                continue
+            span = Span(module.path, node.lineno, node.col_offset + 1)
+            use = missing_attribute(owner, attr)
+            if use:
                 shown = f"{owner.rsplit('.', 1)[-1]}.{attr}"
                 where = "" if owner == "rclpy" else " in rclpy"
-                yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
-                          f"`{shown}` does not exist{where}", f"Use {use}")
+                yield Hit(span, f"`{shown}` does not exist{where}", f"Use {use}")
+            elif not defines(owner, attr):
+                yield _missing(span, owner, attr, module=False)
+        curated = set()
         for node in index.import_froms:
             owner, _, leaf = (node.module or "").rpartition(".")
             use = missing_attribute(owner, leaf) if node.level == 0 and owner == "rclpy" else None
             if use:  # `from rclpy.Node import Node`: no such module
+                curated.add(node.lineno)
                 yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
                           f"`{node.module}` does not exist in rclpy", f"Use {use}")
             elif node.level == 0 and node.module:
                 for alias in node.names:
                     use = missing_attribute(node.module, alias.name)
                     if use and node.module.split(".")[0] == "rclpy":
+                        curated.add(node.lineno)
                         yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
                                   f"`{node.module}` has no `{alias.name}`", f"Use {use}")
+        for imported in module.imports:
+            if imported.top_level == "rclpy" and not imported.guarded and \
+                    imported.span.line not in curated:
+                yield from _missing_import(imported)
+
+
+def _missing_import(imported: Import) -> Iterator[Hit]:
+    """A hit when the rclpy module ``imported`` loads, or a name it takes, does not exist."""
+    for dotted in (imported.module, *(f"{imported.module}.{n}" for n in imported.names)):
+        parts = dotted.split(".")
+        for depth in range(1, len(parts)):
+            owner, name = ".".join(parts[:depth]), parts[depth]
+            if name != "*" and not defines(owner, name):
+                yield _missing(imported.span, owner, name, module=dotted == imported.module)
+                return
+
+
+def _missing(span: Span, owner: str, name: str, *, module: bool) -> Hit:
+    """The hit for ``owner.name``, which rclpy does not define (``module``: as a module)."""
+    close = close_name(owner, name)
+    fix = f"Use `{owner}.{close}`" if close else None
+    if module:
+        return Hit(span, f"`{owner}.{name}` does not exist: rclpy has no such module", fix)
+    return Hit(span, f"`{owner}` has no `{name}`", fix)

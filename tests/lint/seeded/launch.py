@@ -305,3 +305,18 @@ def launch_configuration_joined_with_plus(root: Path) -> None:
          "        DeclareLaunchArgument('namespace', default_value='robot'),\n")
     edit(root, PY, "name='talker',\n", "name='talker',\n"
          "            namespace=namespace + '/sensors',\n")
+
+
+@case("PYC032", PY, "share + 'config/params.yaml'")
+def share_folder_joined_without_slash(root: Path) -> None:
+    edit(root, XML, "  <exec_depend>launch</exec_depend>\n",
+         "  <exec_depend>ament_index_python</exec_depend>\n  <exec_depend>launch</exec_depend>\n")
+    edit(root, PY, "from launch import LaunchDescription\n",
+         "from ament_index_python.packages import get_package_share_directory\n"
+         "from launch import LaunchDescription\n")
+    edit(root, PY, "from launch.substitutions import PathJoinSubstitution\n", "")
+    edit(root, PY, "from launch_ros.substitutions import FindPackageShare\n", "")
+    edit(root, PY, "    params = PathJoinSubstitution(\n"
+         "        [FindPackageShare('base_pkg'), 'config', 'params.yaml'])\n",
+         "    share = get_package_share_directory('base_pkg')\n"
+         "    params = share + 'config/params.yaml'\n")

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from tests.lint.seeded import case, edit, write
+from tests.lint.seeded import add_import, case, edit, write
 
 TALKER = "base_pkg/talker.py"
 LISTENER = "base_pkg/listener.py"
@@ -96,6 +96,30 @@ def method_without_self(root: Path) -> None:
 @case("PYC004", TALKER, "from rclpy.Node import Node")
 def rclpy_node_module_capitalised(root: Path) -> None:
     edit(root, TALKER, "from rclpy.node import Node", "from rclpy.Node import Node")
+
+
+@case("PYC004", TALKER, "from rclpy.nodes import Node")
+def rclpy_node_module_plural(root: Path) -> None:
+    edit(root, TALKER, "from rclpy.node import Node", "from rclpy.nodes import Node")
+
+
+@case("PYC004", LISTENER, "SingleThreadExecutor")
+def executor_class_misspelt(root: Path) -> None:
+    edit(root, LISTENER, "ExternalShutdownException, SingleThreadedExecutor\n",
+         "ExternalShutdownException, SingleThreadExecutor\n")
+    edit(root, LISTENER, "executor = SingleThreadedExecutor()",
+         "executor = SingleThreadExecutor()")
+
+
+@case("PYC032", TALKER, "+ 'config/params.yaml'")
+def node_reads_share_file_joined_without_slash(root: Path) -> None:
+    edit(root, "package.xml", "  <exec_depend>launch</exec_depend>\n",
+         "  <exec_depend>ament_index_python</exec_depend>\n  <exec_depend>launch</exec_depend>\n")
+    add_import(root, TALKER,
+               "from ament_index_python.packages import get_package_share_directory")
+    edit(root, TALKER, "        self.count = 0\n",
+         "        self.count = 0\n        self.config = "
+         "get_package_share_directory('base_pkg') + 'config/params.yaml'\n")
 
 
 @case("PYC006", SRV, "self.history")
