@@ -3,12 +3,15 @@
 from __future__ import annotations
 
 import ast
+import difflib
+import logging
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.rules.node_api import node_subclasses
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
@@ -20,6 +23,12 @@ OPTIONS = frozenset({"name", "throttle_duration_sec", "throttle_time_source_type
 MESSAGE = "message"
 """The name of the methods' one parameter, which a call may also pass by keyword."""
 GETTERS = frozenset({"rclpy.logging.get_logger"})
+ATTRIBUTES = LEVELS | {"log", "get_child", "set_level", "get_effective_level", "is_enabled_for",
+                       "name", "contexts", "logger_sublogger_namepair"}
+"""The attributes of rclpy's logger (``RcutilsLogger``) in Humble, Jazzy and Rolling."""
+PYTHON_LOGGER = frozenset(dir(logging.Logger)) | {"level", "parent", "propagate", "handlers",
+                                                  "disabled", "filters", "manager", "root"}
+"""The attributes of Python's ``logging.Logger``, which another ``get_logger()`` may give."""
 
 
 def _is_logger_call(node: ast.AST, index: Index) -> bool:
@@ -82,22 +91,28 @@ def _problem(call: ast.Call) -> str | None:
 @rule("PYC016", "invalid-logger-call", Severity.ERROR,
       fix="Pass one string: `self.get_logger().info(f'Count: {count}')`")
 def invalid_logger_call(package: Package) -> Iterator[Hit]:
-    """An rclpy logger is called with several arguments, an unknown option or no string.
+    """An rclpy logger is called with several arguments, an unknown option, no string, or a
+    method it does not have.
 
     ## What it does
-    Checks calls of `debug`, `info`, `warning`, `warn`, `error` and `fatal` on rclpy loggers:
-    `<node>.get_logger()`, `rclpy.logging.get_logger(...)`, and names or attributes
-    (`self.logger`) that the module only ever assigns one of those. Each call must pass one
-    message (by position, or by keyword as `message=`) and only rclpy's options
-    (`throttle_duration_sec`, `throttle_time_source_type`, `skip_first`, `once`, `name`).
-    Calls that unpack `*args` or `**kwargs` are not checked.
+    Checks calls of methods of rclpy loggers: `<node>.get_logger()`,
+    `rclpy.logging.get_logger(...)`, and names or attributes (`self.logger`) that the module
+    only ever assigns one of those. Calls of `debug`, `info`, `warning`, `warn`, `error` and
+    `fatal` must pass one message (by position, or by keyword as `message=`) and only rclpy's
+    options (`throttle_duration_sec`, `throttle_time_source_type`, `skip_first`, `once`,
+    `name`); calls that unpack `*args` or `**kwargs` are not checked. A method rclpy's logger
+    does not have (`err`, `infor`, and `exception` or `critical` of Python's `logging`) is
+    reported too; Python's logger methods only on `self.get_logger()` in a `Node` subclass
+    and `rclpy.logging.get_logger()`, as another class's `get_logger()` may give a Python
+    logger.
 
     ## Why is this bad?
     rclpy's logger is neither `print` nor Python's `logging`: `info('count', n)` raises
     `TypeError: RcutilsLogger.info() takes 2 positional arguments but 3 were given`,
     `info('x %s', n)` too, `info(5)` raises "incompatible function arguments", and an option
     such as `end=` raises `TypeError: parameter "end" is not one of the recognized logging
-    options`. The node dies in the callback that logs.
+    options`; `err('x')` or `exception('x')` raise `AttributeError`. The node dies in the
+    callback that logs.
 
     ## Example
     ```python
@@ -115,14 +130,33 @@ def invalid_logger_call(package: Package) -> Iterator[Hit]:
         loggers: set[str] | None = None
         for call in index.calls:
             func = call.func
-            if not isinstance(func, ast.Attribute) or func.attr not in LEVELS:
+            if not isinstance(func, ast.Attribute) or func.attr.startswith("__"):
                 continue
             if not _is_logger_call(func.value, index):
                 if loggers is None:
                     loggers = _loggers(tree, index)
                 if _key(func.value) not in loggers:
                     continue
-            problem = _problem(call)
+            problem = _problem(call) if func.attr in LEVELS else \
+                _unknown_method(func, index) if func.attr not in ATTRIBUTES else None
             if problem:
                 yield Hit(Span(module.path, call.lineno, call.col_offset + 1),
                           f"`{ast.unparse(func)}()` {problem}")
+
+
+def _unknown_method(func: ast.Attribute, index: Index) -> str | None:
+    """Why calling ``func``, no method of rclpy's logger, fails; None when the logger may be
+    Python's (a ``get_logger()`` of some other class) and has that method."""
+    getter = func.value
+    certain = isinstance(getter, ast.Call) and (
+        index.qualified(getter.func) in GETTERS or
+        isinstance(getter.func, ast.Attribute) and isinstance(getter.func.value, ast.Name) and
+        getter.func.value.id == "self" and index.enclosing_class(getter) in
+        node_subclasses(index))
+    if func.attr in PYTHON_LOGGER and not certain:
+        return None
+    close = difflib.get_close_matches(func.attr, sorted(LEVELS), n=1, cutoff=0.6)
+    also = f" (did you mean `{close[0]}`?)" if close else \
+        f" (it logs with {', '.join(f'`{level}`' for level in sorted(LEVELS))})"
+    return f"does not exist: rclpy's logger has no `{func.attr}` and raises " \
+        f"`AttributeError`{also}"

@@ -122,6 +122,12 @@ def node_reads_share_file_joined_without_slash(root: Path) -> None:
          "get_package_share_directory('base_pkg') + 'config/params.yaml'\n")
 
 
+@case("PYC016", LISTENER, "self.get_logger().exception(")
+def python_logging_method_on_rclpy_logger(root: Path) -> None:
+    edit(root, LISTENER, "self.get_logger().info(f'Received message {self.count}: {msg}')",
+         "self.get_logger().exception(f'Received message {self.count}: {msg}')")
+
+
 @case("PYC006", SRV, "self.history")
 def missing_comma_in_list(root: Path) -> None:
     edit(root, SRV, "        self.calls = 0\n",
