@@ -41,7 +41,8 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
     rcl_interfaces.msg.Log`, as ROS 1 compatibility shims do) exists.
 
     Also reports a misspelled module of an interface package (`std_msgs.msgs`,
-    `geometry_msgs.message`, `example_interfaces.srvs`, `from std_msgs import Msg`): the
+    `geometry_msgs.message`, `example_interfaces.srvs`, `from std_msgs import Msg`) and an
+    interface imported from the package itself (`from std_msgs import String`): the
     Python module of a ROS 2 interface package holds only `msg`, `srv` and `action`. An
     interface package is one whose interfaces are known as above, or one named like an
     interface package (`*_msgs`, `*_srvs`, `*_interfaces`); a workspace package that has a
@@ -73,6 +74,7 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
             if imported.level or imported.guarded:
                 continue
             yield from _misspelled_module(package, imported)
+            yield from _interface_without_module(package, imported)
             if len(parts) != 2 or parts[1] not in KINDS:
                 continue
             known = interfaces_for(package, parts[0])
@@ -112,6 +114,22 @@ def _misspelled_module(package: Package, imported: Import) -> Iterator[Hit]:
             fix = f"Write `import {right}{imported.module[len(written):]}`"
         yield Hit(imported.span, f"`{written}` does not exist: the {WORDS[kind]}s of `{name}` "
                   f"are in `{right}`", fix)
+
+
+def _interface_without_module(package: Package, imported: Import) -> Iterator[Hit]:
+    """``from pkg import Name`` where ``Name`` is an interface of the interface package
+    ``pkg`` (it lives in ``pkg.msg``, ``pkg.srv`` or ``pkg.action``), as a hit."""
+    if "." in imported.module:
+        return
+    known = interfaces_for(package, imported.module) or {}
+    for name in imported.names:
+        kind = kind_in(known, name)
+        if kind is not None and _interface_package(package, imported.module, name):
+            right = f"{imported.module}.{kind}"
+            yield Hit(imported.span, f"`{imported.module}` has no `{name}`: the "
+                      f"{WORDS[kind]} `{name}` is in `{right}`",
+                      f"Write `from {right} import {name}`")
+            return
 
 
 def _interface_package(package: Package, name: str, word: str) -> bool:

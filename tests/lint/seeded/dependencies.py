@@ -145,6 +145,11 @@ def message_module_plural(root: Path) -> None:
     edit(root, TALKER, "from std_msgs.msg import String", "from std_msgs.msgs import String")
 
 
+@case("DEP008", TALKER, "from std_msgs import String")
+def message_imported_from_the_package(root: Path) -> None:
+    edit(root, TALKER, "from std_msgs.msg import String", "from std_msgs import String")
+
+
 @case("DEP008", "base_pkg/srv.py", "from std_srvs.srvs import Trigger")
 def service_module_plural(root: Path) -> None:
     edit(root, "base_pkg/srv.py", "from std_srvs.srv import", "from std_srvs.srvs import")
