@@ -2,12 +2,18 @@
 
 from __future__ import annotations
 
+import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
+from pkgtool.model.span import Span
 from pkgtool.rules.node_parameters import BUILT_IN, near, node_classes
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import Index, installed_trees
+
+_REPEATED_OR_GUARDED = (ast.For, ast.AsyncFor, ast.While, ast.Try, ast.Lambda,
+                        ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
 
 
 @rule("PYC014", "undeclared-parameter-read", Severity.ERROR,
@@ -25,10 +31,16 @@ def undeclared_parameter_read(package: Package) -> Iterator[Hit]:
     `allow_undeclared_parameters` or `automatically_declare_parameters_from_overrides`,
     declares a name that is not a literal, uses the method otherwise (passed to `map`, say),
     or the class derives from another class besides `Node`, or hands `self` to other code.
+    prefix: `ns.name`). Also reports a read that comes before every declaration of its name
+    in the same method, where each runs once (none in a loop, a `try` or a nested function).
+    `get_parameter_or` and `has_parameter` are not checked. Skipped when the module uses
+    `allow_undeclared_parameters` or `automatically_declare_parameters_from_overrides`,
+    declares a name that is not a literal, or the class derives from another class besides
+    `Node`, or hands `self` to other code.
 
     ## Why is this bad?
-    `get_parameter` raises `ParameterNotDeclaredException` for a name never declared: the node
-    dies where it reads it, often a misspelling of a declared name.
+    `get_parameter` raises `ParameterNotDeclaredException` for a name never declared (or not
+    declared yet): the node dies where it reads it, often a misspelling of a declared name.
 
     ## Example
     ```python
@@ -42,6 +54,7 @@ def undeclared_parameter_read(package: Package) -> Iterator[Hit]:
     period = self.get_parameter('period').value
     ```
     """
+    indexes = {module.path: index for module, _, index in installed_trees(package)}
     for cls in node_classes(package):
         if cls.skip:
             continue
@@ -50,3 +63,29 @@ def undeclared_parameter_read(package: Package) -> Iterator[Hit]:
             if name not in declared and name not in BUILT_IN:
                 yield Hit(span, f"`{cls.name}` reads parameter `{name}` but never declares "
                           f"it{near(name, declared)}: ParameterNotDeclaredException")
+            elif cls.path in indexes and (later := _declared_later(
+                    indexes[cls.path], span, [d.span for d in cls.declared if d.name == name])):
+                yield Hit(span, f"`{cls.name}` reads parameter `{name}` before it declares it "
+                          f"(line {later.line}): ParameterNotDeclaredException", None,
+                          (later,))
+
+
+def _declared_later(index: Index, read: Span, declarations: list[Span]) -> Span | None:
+    """The first declaration when the read and every declaration are calls run once, in this
+    order, by the same method (not in a loop, a ``try`` or a nested function); else None."""
+    calls = {(c.lineno, c.col_offset + 1): c for c in index.calls}
+    nodes = [calls.get((s.line, s.col)) for s in (read, *declarations)]
+    if not declarations or any(n is None for n in nodes):
+        return None
+    methods = {id(index.enclosing_function(n)) for n in nodes}
+    first = min(declarations, key=lambda s: (s.line, s.col))
+    if len(methods) != 1 or (read.line, read.col) >= (first.line, first.col):
+        return None
+    for node in nodes:
+        parent = index.parents.get(id(node))
+        while parent is not None and not isinstance(parent, (ast.FunctionDef,
+                                                             ast.AsyncFunctionDef)):
+            if isinstance(parent, _REPEATED_OR_GUARDED):
+                return None
+            parent = index.parents.get(id(parent))
+    return first

@@ -128,6 +128,14 @@ def python_logging_method_on_rclpy_logger(root: Path) -> None:
          "self.get_logger().exception(f'Received message {self.count}: {msg}')")
 
 
+@case("PYC014", TALKER, "topic = self.get_parameter('topic').value")
+def parameter_read_before_declared(root: Path) -> None:
+    edit(root, TALKER, "        self.declare_parameter('topic', 'chatter')\n", "")
+    edit(root, TALKER, "        topic = self.get_parameter('topic').value\n",
+         "        topic = self.get_parameter('topic').value\n"
+         "        self.declare_parameter('topic', 'chatter')\n")
+
+
 @case("PYC006", SRV, "self.history")
 def missing_comma_in_list(root: Path) -> None:
     edit(root, SRV, "        self.calls = 0\n",
