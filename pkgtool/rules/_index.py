@@ -54,6 +54,7 @@ RULES = {
     "LCH010": ("invalid-launch-action-argument", "error", True,
                "launch.invalid_launch_action_argument"),
     "LCH011": ("substitution-added-to-text", "error", True, "launch.substitution_added_to_text"),
+    "LCH012": ("relative-package-path", "error", True, "launch.relative_package_path"),
     "MAN001": ("invalid-package-name", "error", True, "manifest.invalid_package_name"),
     "MAN002": ("invalid-version", "error", True, "manifest.invalid_version"),
     "MAN003": ("missing-required-element", "error", True, "manifest.missing_required_element"),

@@ -320,3 +320,8 @@ def share_folder_joined_without_slash(root: Path) -> None:
          "        [FindPackageShare('base_pkg'), 'config', 'params.yaml'])\n",
          "    share = get_package_share_directory('base_pkg')\n"
          "    params = share + 'config/params.yaml'\n")
+
+
+@case("LCH012", PY, "parameters=['config/params.yaml']")
+def parameter_file_relative_to_the_source_folder(root: Path) -> None:
+    edit(root, PY, "parameters=[params],", "parameters=['config/params.yaml'],")

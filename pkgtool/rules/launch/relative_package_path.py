@@ -1,0 +1,72 @@
+"""LCH012: a file of the package named by a path relative to the package's source folder."""
+
+from __future__ import annotations
+
+import ast
+import posixpath
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.launch._python_launch import launch_class, launch_indexes, within
+from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import Index
+
+_SOURCES = ("launch.launch_description_sources", "launch_ros.actions", "launch_ros.descriptions")
+"""The modules of the launch classes whose file arguments are read here."""
+
+
+def _paths(call: ast.Call, index: Index) -> list[ast.expr]:
+    """The file arguments of a launch call: each item of ``parameters=[...]`` of a launch_ros
+    node, and the first argument of a launch description source."""
+    module, name = launch_class(call, index)
+    if not within(module, _SOURCES):
+        return []
+    if name.endswith("LaunchDescriptionSource"):
+        return call.args[:1] + [k.value for k in call.keywords if k.arg == "launch_file_path"]
+    parameters = next((k.value for k in call.keywords if k.arg == "parameters"), None)
+    return list(parameters.elts) if isinstance(parameters, (ast.List, ast.Tuple)) else []
+
+
+@rule("LCH012", "relative-package-path", Severity.ERROR,
+      fix="Build the path from the share folder: "
+          "`PathJoinSubstitution([FindPackageShare('my_pkg'), 'config', 'params.yaml'])`")
+def relative_package_path(package: Package) -> Iterator[Hit]:
+    """A Python launch file names a file of its package by a path relative to the package.
+
+    ## What it does
+    Reports a string literal given as a parameter file of a launch_ros node
+    (`parameters=['config/params.yaml']`) or as the file of a launch description source
+    (`PythonLaunchDescriptionSource('launch/robot.launch.py')`) that is a relative path to
+    a file of this package's source folder.
+
+    ## Why is this bad?
+    A relative path is resolved against the folder `ros2 launch` runs in, not against the
+    package: it finds the file only when launched from the package's source folder. Launched
+    from anywhere else, as an installed package is, the node gets a parameter file that does
+    not exist and fails to start (or the include fails), while it worked on the author's
+    machine.
+
+    ## Example
+    ```python
+    Node(package='my_pkg', executable='talker', parameters=['config/params.yaml'])
+    ```
+
+    ## Use instead
+    ```python
+    params = PathJoinSubstitution([FindPackageShare('my_pkg'), 'config', 'params.yaml'])
+    Node(package='my_pkg', executable='talker', parameters=[params])
+    ```
+    """
+    files = frozenset(package.files)
+    for path, index in launch_indexes(package):
+        for call in index.calls:
+            for value in _paths(call, index):
+                text = value.value if isinstance(value, ast.Constant) else None
+                if isinstance(text, str) and not posixpath.isabs(text) and \
+                        posixpath.normpath(text) in files:
+                    yield Hit(Span(path, value.lineno, value.col_offset + 1),
+                              f"`{text}` is relative to the folder `ros2 launch` runs in, not "
+                              "to the package: the file is found only when launching from "
+                              "the package's source folder")
