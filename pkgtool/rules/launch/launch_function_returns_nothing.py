@@ -11,7 +11,10 @@ from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.launch._python_launch import FUNCTION, python_launch_files
 from pkgtool.rules.registry import rule
-from pkgtool.rules.scopes import returns_none
+from pkgtool.rules.scopes import returns_none, scope_walk
+
+_COLLECTIONS = {ast.List: "list", ast.Tuple: "tuple", ast.ListComp: "list"}
+"""What a launch function returns instead of a description, by syntax."""
 
 
 def _launch_function(tree: ast.AST) -> ast.FunctionDef | None:
@@ -33,13 +36,16 @@ def launch_function_returns_nothing(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports a Python launch file whose top-level `generate_launch_description` has no
     `return <value>` and no `yield` anywhere in its own body (nested functions do not count),
-    so that calling it gives None. Functions that are decorated, that are placeholders (only
-    `pass`, `...`, a docstring or `raise`), or that the module defines or assigns more than
-    once are left alone.
+    so that calling it gives None, or that returns a list or a tuple (`return [talker,
+    listener]`) instead of a `LaunchDescription` of them. Functions that are decorated, that
+    are placeholders (only `pass`, `...`, a docstring or `raise`), or that the module defines
+    or assigns more than once are left alone.
 
     ## Why is this bad?
     `ros2 launch` calls the function and uses what it returns as the launch description;
-    with None nothing starts and the launch stops with an error instead of the nodes.
+    with None or a list nothing starts and the launch stops with an error instead of the
+    nodes (`'list' object has no attribute
+    'get_launch_arguments_with_include_launch_description_actions'`).
 
     ## Example
     ```python
@@ -61,3 +67,9 @@ def launch_function_returns_nothing(package: Package) -> Iterator[Hit]:
             yield Hit(Span(path, function.lineno, function.col_offset + 1),
                       f"`{FUNCTION}()` returns nothing: `ros2 launch` gets None and starts "
                       "nothing")
+        for node in scope_walk(function.body) if function is not None else ():
+            if isinstance(node, ast.Return) and type(node.value) in _COLLECTIONS:
+                yield Hit(Span(path, node.lineno, node.col_offset + 1),
+                          f"`{FUNCTION}()` returns a {_COLLECTIONS[type(node.value)]}, not a "
+                          "`LaunchDescription`: `ros2 launch` fails with AttributeError",
+                          "Wrap it: `return LaunchDescription([...])`")

@@ -325,3 +325,10 @@ def share_folder_joined_without_slash(root: Path) -> None:
 @case("LCH012", PY, "parameters=['config/params.yaml']")
 def parameter_file_relative_to_the_source_folder(root: Path) -> None:
     edit(root, PY, "parameters=[params],", "parameters=['config/params.yaml'],")
+
+
+@case("LCH006", PY, "return [")
+def launch_function_returns_the_list(root: Path) -> None:
+    edit(root, PY, "    return LaunchDescription([\n", "    return [\n")
+    edit(root, PY, "    ])\n", "    ]\n")
+    edit(root, PY, "from launch import LaunchDescription\n", "")
