@@ -12,7 +12,7 @@ import pytest
 from pkgtool.knowledge import rosdistro
 from pkgtool.knowledge.numpy_removed import REMOVED
 from pkgtool.knowledge.rclpy_missing import entries, missing_attribute, owners
-from pkgtool.knowledge.rclpy_names import close_name, defines
+from pkgtool.knowledge.rclpy_names import close_name, defined_on, defines
 from pkgtool.knowledge.ros_names import looks_like_ros
 from pkgtool.knowledge.rosdep import (NOT_ROSDEP_KEYS, accepted_keys,
                                       key_for_python_module, package_for_ros_module,
@@ -112,8 +112,11 @@ def test_rclpy_names_table_knows_every_name_of_the_installed_rclpy() -> None:
     rclpy = importlib.import_module("rclpy")
     modules = ["rclpy", *(info.name for info in pkgutil.walk_packages(rclpy.__path__, "rclpy."))]
     unknown = [f"{name}.{attr}" for name in modules if name in sys.modules
-               for attr in dir(sys.modules[name]) if not defines(name, attr)]
+               for attr in dir(sys.modules[name]) if not defines(name, attr, "jazzy")]
     assert unknown == []
     assert not defines("rclpy", "excutors") and not defines("rclpy.qos", "QoSProfil")
     assert defines("rclpy.qos_event", "SubscriptionEventCallbacks")  # Humble's and Jazzy's
     assert close_name("rclpy.executors", "SingleThreadExecutor") == "SingleThreadedExecutor"
+    assert not defines("rclpy", "event_handler", "humble") and defines("rclpy", "event_handler")
+    assert defined_on("rclpy.time", "CONVERSION_CONSTANT") == ["humble"]
+    assert defines("rclpy.time", "CONVERSION_CONSTANT", "kilted")  # no table: any distro

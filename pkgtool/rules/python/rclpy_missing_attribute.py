@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rclpy_missing import missing_attribute
-from pkgtool.knowledge.rclpy_names import close_name, defines
+from pkgtool.knowledge.rclpy_names import close_name, defined_on, defines
 from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
@@ -23,9 +23,10 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
     Reports reads and imports of rclpy modules and names that do not exist: misspelt modules
     (`from rclpy.nodes import Node`, `import rclpy.excutors`), misspelt names (`from
     rclpy.qos import QoSProfil`, `rclpy.executors.SingleThreadExecutor`), checked against the
-    modules of rclpy and the names each defines in Humble, Jazzy and Rolling (a name any of
-    them has is accepted; imports under `try/except ImportError` or `if TYPE_CHECKING:` are
-    not checked). Also, from a curated table checked against rclpy itself:
+    modules of rclpy and the names each defines in the target distribution (Humble or Jazzy:
+    `from rclpy.event_handler import ...` fails on Humble; for another target, a name Humble,
+    Jazzy or Rolling has is accepted); imports under `try/except ImportError` or `if
+    TYPE_CHECKING:` are not checked. Also, from a curated table checked against rclpy itself:
     `ActionClient.GoalStatus` (GoalStatus is a message in `action_msgs.msg`), rospy habits
     such as `rclpy.is_shutdown()`, `rclpy.loginfo()`, `rclpy.Node` (also as a module: `from
     rclpy.Node import Node`) or `Time.now()`. Only names bound solely to rclpy imports are
@@ -50,6 +51,7 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
     if status == GoalStatus.STATUS_SUCCEEDED:
     ```
     """
+    distro = package.context.distro
     for module, _, index in installed_trees(package):
         for node, owner, attr in resolved_attributes(index):
             if owner.split(".")[0] != "rclpy" or index.in_unevaluated_annotation(node):
@@ -60,8 +62,8 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
                 shown = f"{owner.rsplit('.', 1)[-1]}.{attr}"
                 where = "" if owner == "rclpy" else " in rclpy"
                 yield Hit(span, f"`{shown}` does not exist{where}", f"Use {use}")
-            elif not defines(owner, attr):
-                yield _missing(span, owner, attr, module=False)
+            elif not defines(owner, attr, distro):
+                yield _missing(span, owner, attr, distro, module=False)
         curated = set()
         for node in index.import_froms:
             owner, _, leaf = (node.module or "").rpartition(".")
@@ -80,23 +82,30 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
         for imported in module.imports:
             if imported.top_level == "rclpy" and not imported.guarded and \
                     imported.span.line not in curated:
-                yield from _missing_import(imported)
+                yield from _missing_import(imported, distro)
 
 
-def _missing_import(imported: Import) -> Iterator[Hit]:
+def _missing_import(imported: Import, distro: str) -> Iterator[Hit]:
     """A hit when the rclpy module ``imported`` loads, or a name it takes, does not exist."""
     for dotted in (imported.module, *(f"{imported.module}.{n}" for n in imported.names)):
         parts = dotted.split(".")
         for depth in range(1, len(parts)):
             owner, name = ".".join(parts[:depth]), parts[depth]
-            if name != "*" and not defines(owner, name):
-                yield _missing(imported.span, owner, name, module=dotted == imported.module)
+            if name != "*" and not defines(owner, name, distro):
+                yield _missing(imported.span, owner, name, distro,
+                               module=dotted == imported.module)
                 return
 
 
-def _missing(span: Span, owner: str, name: str, *, module: bool) -> Hit:
-    """The hit for ``owner.name``, which rclpy does not define (``module``: as a module)."""
-    close = close_name(owner, name)
+def _missing(span: Span, owner: str, name: str, distro: str, *, module: bool) -> Hit:
+    """The hit for ``owner.name``, which ``distro``'s rclpy does not define (``module``: as a
+    module)."""
+    if defines(owner, name):  # another distribution's rclpy has it
+        elsewhere = ", ".join(defined_on(owner, name)) or "later distributions"
+        return Hit(span, f"`{owner}.{name}` does not exist in {distro}'s rclpy (only in "
+                   f"{elsewhere})", "Use what the target distribution has, or guard the "
+                   "import with `try/except ImportError`")
+    close = close_name(owner, name, distro)
     fix = f"Use `{owner}.{close}`" if close else None
     if module:
         return Hit(span, f"`{owner}.{name}` does not exist: rclpy has no such module", fix)
