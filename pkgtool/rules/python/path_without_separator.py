@@ -45,7 +45,7 @@ def _relative(value: ast.expr) -> str | None:
 
 def _joins(tree: ast.Module, index: Index) -> Iterator[tuple[ast.expr, str, str]]:
     """(node, function, text) of each ``folder + 'text'`` and ``f'{folder}text'``."""
-    module_scope = single_assignments(tree)
+    scopes: dict[int, tuple[dict[str, ast.expr], ...]] = {}  # by function, for candidates only
     for node in ast.walk(tree):
         if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
             pairs = [(node.left, node.right)]
@@ -54,11 +54,17 @@ def _joins(tree: ast.Module, index: Index) -> Iterator[tuple[ast.expr, str, str]
                      if isinstance(a, ast.FormattedValue) and a.format_spec is None]
         else:
             continue
-        function = index.enclosing_function(node)
-        scopes = (single_assignments(function), module_scope) if function else (module_scope,)
         for left, right in pairs:
-            called, text = _folder(left, index, scopes), _relative(right)
-            if called and text:
+            text = _relative(right) if isinstance(left, (ast.Name, ast.Call)) else None
+            if text is None:
+                continue
+            function = index.enclosing_function(node)
+            if id(tree) not in scopes:
+                scopes[id(tree)] = (single_assignments(tree),)
+            if function is not None and id(function) not in scopes:
+                scopes[id(function)] = (single_assignments(function), *scopes[id(tree)])
+            called = _folder(left, index, scopes[id(function or tree)])
+            if called:
                 yield node, called, text
 
 
