@@ -8,6 +8,7 @@ looked at, so a project's own ``create_publisher`` wrapper is never judged by rc
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Collection, Iterator
 
 from pkgtool.model.modules import PythonModule
@@ -22,6 +23,8 @@ PARAMETERS = {
     "create_client": ("srv_type", "srv_name"),
 }
 """Required parameters of rclpy ``Node`` methods (Jazzy), in order."""
+INTERFACE = re.compile(r"\w+\.(msg|srv|action)\.\w+")
+"""The dotted name of a message, service or action class (``std_msgs.msg.String``)."""
 _DISPLAYS = {ast.List: "list", ast.Tuple: "tuple", ast.Dict: "dict", ast.Set: "set",
              ast.JoinedStr: "str"}
 """Literal displays and the type they build."""

@@ -16,7 +16,7 @@ from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.memo import per_object, per_package
 from pkgtool.model.package import Package
-from pkgtool.rules.node_api import NODE_CLASSES, literal_type
+from pkgtool.rules.node_api import INTERFACE, NODE_CLASSES, literal_type
 from pkgtool.rules.python._message_instances import binding_counts, method_receiver
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
@@ -31,9 +31,13 @@ _DYNAMIC = frozenset({"setattr", "vars", "__dict__", "__setattr__", "__slots__"}
 
 
 def _made_type(value: ast.expr, index: Index) -> str | None:
-    """The type of a literal, or :data:`PARAMETER` for ``self.get_parameter(...)`` in a
-    method of a node class (in a module not defining a ``get_parameter`` of its own)."""
+    """The type of a literal, ``type`` for an imported message, service or action class,
+    or :data:`PARAMETER` for ``self.get_parameter(...)`` in a method of a node class (in a
+    module not defining a ``get_parameter`` of its own)."""
     found = literal_type(value)
+    if found is None and isinstance(value, (ast.Name, ast.Attribute)) and \
+            INTERFACE.fullmatch(index.qualified(value) or ""):
+        return "type"  # an imported message class itself (`String`, not `String()`)
     if found is not None or not (isinstance(value, ast.Call) and
                                  isinstance(value.func, ast.Attribute) and
                                  value.func.attr == "get_parameter" and

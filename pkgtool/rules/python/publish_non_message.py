@@ -57,6 +57,8 @@ def _not_a_message(value: ast.expr, publisher: Publisher,
                    messages: list[Instance[Message]], wrong: str | None) -> str | None:
     """Why ``value`` (certainly of type ``wrong``, if not None) is certainly no message of
     the ``publisher``'s type, if it is."""
+    if wrong == "type":
+        return "the message class itself, not a message (`()` is missing where it is made)"
     if wrong is not None and wrong not in _ACCEPTED:
         return f"a literal of type `{wrong}`" if literal_type(value) else \
             f"a value of type `{wrong}` (every assignment to it gives one)"
@@ -86,7 +88,8 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
     boolean, f-string or list, tuple, dict or set literal (`pub.publish('hello')`); a plain
     field (`string`, `float`, `int32`, ...) of a message instance PYC019 is certain of
     (`pub.publish(msg.data)`); a local name or a node's `self.x` every assignment of which
-    gives a literal of one such type (`text = 'hi'`; PYC025 says which); and such an
+    gives a literal of one such type (`text = 'hi'`; PYC025 says which); a message class
+    itself (`pub.publish(String)`, or `msg = String` without `()`); and such an
     instance of another known message class than the publisher's
     (`create_publisher(String, ...)` then `publish(Float32())`'s instance).
     `bytes` (published as serialized data), other names, calls and unknown types are never

@@ -3,18 +3,16 @@
 from __future__ import annotations
 
 import ast
-import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_api import PARAMETERS, literal_type, node_api_calls, unpacks
+from pkgtool.rules.node_api import (INTERFACE, PARAMETERS, literal_type, node_api_calls,
+                                    unpacks)
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
-INTERFACE = re.compile(r"\w+\.(msg|srv|action)\.\w+")
-"""The dotted name of a message, service or action class (``std_msgs.msg.String``)."""
 KINDS = {"msg_type": "message", "srv_type": "service"}
 
 
