@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import ast
 import functools
+from collections.abc import Callable
 
-from pkgtool.model.ast_nodes import descendants
+from pkgtool.model.ast_nodes import descendants, walk_once
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.model.static_branches import mentions_module_name, module_constants, truth
@@ -48,54 +49,67 @@ def _block(statements: list[ast.AST], guarded: bool) -> list[tuple[ast.AST, bool
     return parts
 
 
-def _guarded_parts(node: ast.AST, guarded: bool, constants: dict[str, bool]
-                   ) -> list[tuple[ast.AST, bool]]:
-    """The statements directly inside ``node``, each with whether its imports are guarded."""
+def _guarded_parts(node: ast.AST, constants: dict[str, bool]) -> list[tuple[ast.AST, bool]]:
+    """The statements directly inside ``node``, each with whether ``node`` guards its imports
+    (they are guarded too when a block around ``node`` guards it)."""
     if isinstance(node, (ast.Try, ast.TryStar)):
-        inner = guarded or any(_catches_import_error(h) for h in node.handlers)
-        return (_block(node.body, inner)
-                + [(h, guarded or _catches_import_error(h)) for h in node.handlers]
-                + _block(node.orelse, guarded) + _block(node.finalbody, guarded))
+        return (_block(node.body, any(_catches_import_error(h) for h in node.handlers))
+                + [(h, _catches_import_error(h)) for h in node.handlers]
+                + _block(node.orelse, False) + _block(node.finalbody, False))
     if isinstance(node, ast.If):
         value = truth(node.test, constants)
-        either = guarded or _mentions_find_spec(node.test) or mentions_module_name(node.test)
+        either = _mentions_find_spec(node.test) or mentions_module_name(node.test)
         inner = either or _is_type_checking(node.test) or value is False
         return _block(node.body, inner) + _block(node.orelse, either or value is True)
-    return [part for field in _BLOCK_FIELDS for part in _block(getattr(node, field, []), guarded)]
+    return [part for field in _BLOCK_FIELDS for part in _block(getattr(node, field, []), False)]
 
 
 _BLOCK_FIELDS = ("body", "orelse", "finalbody", "handlers", "cases")
 """The fields of compound statements that hold statements (where imports can stand)."""
 
 
-_BLOCK_NODES = (ast.stmt, ast.excepthandler, ast.match_case)
-
-
-@functools.cache
-def _may_hold_imports(kind: type[ast.AST]) -> bool:
-    """True for imports and the node classes with a block of statements (``if``, ``def``...):
-    the other statements need no visit."""
-    return kind in (ast.Import, ast.ImportFrom) or any(f in kind._fields for f in _BLOCK_FIELDS)
-
-
 def _imports(path: str, tree: ast.Module) -> list[Import]:
-    """Every import of the module in source order (an explicit stack: no recursion limit)."""
+    """Every import of the module in source order."""
+    walk = walk_once(tree)
+    statements = [*walk.by_class.get(ast.Import, ()), *walk.by_class.get(ast.ImportFrom, ())]
+    if not statements:
+        return []
+    guarded = _guard_finder(tree, walk.parents)
     found: list[Import] = []
-    constants = module_constants(tree)
-    stack: list[tuple[ast.AST, bool]] = [(tree, False)]
-    while stack:
-        node, guarded = stack.pop()
-        if isinstance(node, (ast.Import, ast.ImportFrom)):
-            span = Span(path, node.lineno, node.col_offset + 1)
-            if isinstance(node, ast.Import):
-                found.extend(Import(a.name, 0, (), span, guarded) for a in node.names)
-            else:
-                names = tuple(alias.name for alias in node.names)
-                found.append(Import(node.module or "", node.level, names, span, guarded))
-        else:  # imports are statements: expressions need no visit (5x faster on real code)
-            stack.extend(part for part in _guarded_parts(node, guarded, constants)
-                         if isinstance(part[0], _BLOCK_NODES) and _may_hold_imports(type(part[0])))
+    for node in statements:
+        span = Span(path, node.lineno, node.col_offset + 1)  # type: ignore[attr-defined]
+        flag = guarded(node)
+        if isinstance(node, ast.Import):
+            found.extend(Import(a.name, 0, (), span, flag) for a in node.names)
+        elif isinstance(node, ast.ImportFrom):
+            names = tuple(alias.name for alias in node.names)
+            found.append(Import(node.module or "", node.level, names, span, flag))
     return sorted(found, key=lambda i: (i.span.line, i.span.col))
+
+
+def _guard_finder(tree: ast.Module, parents: dict[int, ast.AST]) -> Callable[[ast.AST], bool]:
+    """A function telling whether a statement of ``tree`` is guarded: whether some block
+    holding it (the statement's own, or one around it) guards what it holds.
+
+    Each statement holding an import is looked at once (:func:`_guarded_parts`), the others
+    not at all.
+    """
+    constants = module_constants(tree)
+    blocks: dict[int, dict[int, bool]] = {}
+
+    def guarded(node: ast.AST) -> bool:
+        while node is not tree:
+            parent = parents[id(node)]
+            flags = blocks.get(id(parent))
+            if flags is None:
+                flags = blocks[id(parent)] = {
+                    id(part): flag for part, flag in _guarded_parts(parent, constants)}
+            if flags[id(node)]:
+                return True
+            node = parent
+        return False
+
+    return guarded
 
 
 def _top_level_names(tree: ast.Module) -> frozenset[str]:

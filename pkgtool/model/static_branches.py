@@ -38,19 +38,21 @@ MODULE_DUNDERS = frozenset({"__name__", "__package__", "__spec__"})
 def module_constants(tree: ast.Module) -> dict[str, bool]:
     """Names assigned exactly once in the whole file, at module level, to a constant.
 
-    Computed once per tree; callers must not change the returned dict.
+    Computed once per tree; callers must not change the returned dict. Only the names of the
+    module-level constant assignments (most modules have none) are counted in the rest.
     """
-    stores = Counter(n.id for n in nodes_of_class(tree, ast.Name)
-                     if not isinstance(n.ctx, ast.Load))  # type: ignore[attr-defined]
+    candidates = [(node.targets[0].id, node.value.value) for node in tree.body
+                  if isinstance(node, ast.Assign) and len(node.targets) == 1
+                  and isinstance(node.targets[0], ast.Name)
+                  and isinstance(node.value, ast.Constant)]
+    if not candidates:
+        return {}
+    names = {name for name, _ in candidates}
+    stores = Counter(n.id for n in nodes_of_class(tree, ast.Name)  # type: ignore[attr-defined]
+                     if n.id in names and not isinstance(n.ctx, ast.Load))  # type: ignore
     stores.update(name for n in nodes_of_class(tree, ast.Global, ast.Nonlocal)
-                  for name in n.names)  # type: ignore[attr-defined]
-    found: dict[str, bool] = {}
-    for node in tree.body:
-        if (isinstance(node, ast.Assign) and len(node.targets) == 1
-                and isinstance(node.targets[0], ast.Name)
-                and isinstance(node.value, ast.Constant) and stores[node.targets[0].id] == 1):
-            found[node.targets[0].id] = bool(node.value.value)
-    return found
+                  for name in n.names if name in names)  # type: ignore[attr-defined]
+    return {name: bool(value) for name, value in candidates if stores[name] == 1}
 
 
 def truth(test: ast.expr, constants: dict[str, bool]) -> bool | None:
