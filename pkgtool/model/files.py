@@ -43,15 +43,13 @@ class TextFile:
 def read_text(root: Path, relpath: str, *, allow_empty: bool = True) -> TextFile | ParseProblem:
     """Read ``root/relpath`` as UTF-8 text, or describe why it cannot be read."""
     span = Span(relpath, 1, 1)
-    file = root / relpath
     try:
-        size = file.stat().st_size
-        if size > MAX_FILE_BYTES:
-            return ParseProblem("too-large", span,
-                                f"{size} bytes, more than the {MAX_FILE_BYTES} read")
-        data = file.read_bytes()
+        data = read_bytes(os.path.join(root, relpath))
     except OSError as error:
         return ParseProblem("unreadable", Span(relpath), error.strerror or str(error))
+    if isinstance(data, int):
+        return ParseProblem("too-large", span,
+                            f"{data} bytes, more than the {MAX_FILE_BYTES} read")
     if b"\0" in data:
         return ParseProblem("binary", span, "the file contains NUL bytes")
     try:
@@ -62,6 +60,27 @@ def read_text(root: Path, relpath: str, *, allow_empty: bool = True) -> TextFile
     if not allow_empty and not text.strip():
         return ParseProblem("empty", span, "the file is empty")
     return TextFile(relpath, text.removeprefix("\ufeff"))
+
+
+_READ_FLAGS = os.O_RDONLY | getattr(os, "O_BINARY", 0)  # O_BINARY: Windows translates no newline
+
+
+def read_bytes(path: str) -> bytes | int:
+    """The file's bytes, or its size when that is over :data:`MAX_FILE_BYTES`.
+
+    Read through a file descriptor: a Python file object costs more than reading a small file.
+    """
+    descriptor = os.open(path, _READ_FLAGS)
+    try:
+        size = os.fstat(descriptor).st_size
+        if size > MAX_FILE_BYTES:
+            return size
+        data = os.read(descriptor, size + 1)  # one read when the size is right
+        if len(data) > size:  # the file grew meanwhile, or tells no size: read on to its end
+            data += b"".join(iter(lambda: os.read(descriptor, 1 << 16), b""))
+        return data
+    finally:
+        os.close(descriptor)
 
 
 def list_files(root: Path, depth: Callable[[str], int | None] | None = None

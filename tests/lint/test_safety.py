@@ -15,6 +15,7 @@ from pathlib import Path
 import pytest
 
 from pkgtool.commands import ExitCode
+from pkgtool.model import files
 from pkgtool.model.files import MAX_FILE_BYTES
 from tests.helpers import correct_package_files, run_cli, write_tree
 
@@ -153,14 +154,14 @@ def test_unreadable_file_becomes_a_finding(tmp_path: Path,
         _assert_clean_exit(done)
         findings = json.loads(done.stdout)["findings"]
     else:
-        real = Path.read_bytes
+        real = files.read_bytes
 
-        def refuse(path: Path) -> bytes:
-            if path == secret:
-                raise PermissionError(13, "Permission denied", str(path))
+        def refuse(path: str) -> bytes | int:
+            if Path(path) == secret:
+                raise PermissionError(13, "Permission denied", path)
             return real(path)
 
-        monkeypatch.setattr(Path, "read_bytes", refuse)
+        monkeypatch.setattr(files, "read_bytes", refuse)
         result = run_cli("lint", "--select", "ALL", "--format", "json", cwd=root)
         assert result.exit_code in (ExitCode.OK, ExitCode.FINDINGS), result.output
         findings = json.loads(result.stdout)["findings"]
