@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from typing import Any
+
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.records import record
 from pkgtool.safe_xml import parser
@@ -42,23 +44,22 @@ def parse_xml(path: str, text: str) -> XmlElement | ParseProblem:
     return _copy(path, root)
 
 
-def _copy(path: str, element: object) -> XmlElement:
-    from lxml import etree
-
-    assert isinstance(element, etree._Element)
-    children = tuple(_copy(path, c) for c in element if isinstance(c.tag, str))
-    text = "".join(element.itertext()) if not children else (element.text or "")
-    tag = etree.QName(element).localname
-    return XmlElement(tag, tuple((str(k), str(v)) for k, v in element.attrib.items()),
-                      " ".join(text.split()), Span(path, element.sourceline or 1, 1), children,
+def _copy(path: str, element: Any) -> XmlElement:
+    """An immutable copy of the lxml ``element`` and of its child elements."""
+    if len(element) == 0:  # no child node: its text is all its text (itertext costs more)
+        children: tuple[XmlElement, ...] = ()
+        text = element.text or ""
+    else:  # comments and processing instructions are nodes too, whose tag is no string
+        children = tuple(_copy(path, c) for c in element if isinstance(c.tag, str))
+        text = "".join(element.itertext()) if not children else (element.text or "")
+    return XmlElement(element.tag.rpartition("}")[2],  # the local name, without a {namespace}
+                      tuple(element.items()), " ".join(text.split()),
+                      Span(path, element.sourceline or 1, 1), children,
                       _loose_text(element) if children else ())
 
 
-def _loose_text(element: object) -> tuple[tuple[int, str], ...]:
+def _loose_text(element: Any) -> tuple[tuple[int, str], ...]:
     """The element's own text and every child node's tail (elements, comments, PIs)."""
-    from lxml import etree
-
-    assert isinstance(element, etree._Element)
     pieces = [(element.sourceline or 1, element.text)]
     pieces += [(node.sourceline or 1, node.tail) for node in element]
     return tuple((line + text[: len(text) - len(text.lstrip())].count("\n"),
