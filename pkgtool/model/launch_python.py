@@ -9,12 +9,13 @@ unknown, and unknown values are never reported.
 from __future__ import annotations
 
 import ast
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
+from typing import Any
 
 from pkgtool.model.ast_nodes import child_nodes, descendants
 from pkgtool.model.launch import FileRef, NodeRef, PackageRef
 from pkgtool.model.launch_remaps import not_pairs
-from pkgtool.model.launch_scopes import bindings, import_origins, unread_calls
+from pkgtool.model.launch_scopes import bindings, import_origins, scope_nodes, unread_calls
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import depends_on_ros_distro
 from pkgtool.records import record
@@ -69,10 +70,14 @@ def _split(text: str) -> tuple[str, ...] | None:
     return None if ".." in parts else parts
 
 
+_METHODS: dict[type, Callable[[_Reader, Any], None]] = {}
+"""The method of ``_Reader`` visiting each node class (``visit_<class>`` or ``generic_visit``)."""
+
+
 class _Reader(ast.NodeVisitor):
     def __init__(self, path: str, tree: ast.Module) -> None:
         self.path = path
-        self.scopes = [bindings(tree.body, None)]
+        self.scopes = [bindings(scope_nodes(tree.body), None)]
         self.cache: list[dict[str, Value]] = [{}]
         self.nodes: list[NodeRef] = []
         self.packages: list[PackageRef] = []
@@ -87,20 +92,34 @@ class _Reader(ast.NodeVisitor):
     def _span(self, node: ast.AST) -> Span:
         return Span(self.path, getattr(node, "lineno", 1), getattr(node, "col_offset", 0) + 1)
 
+    def visit(self, node: ast.AST) -> None:
+        """``ast.NodeVisitor.visit`` with the method of each node class looked up once."""
+        kind = type(node)
+        method = _METHODS.get(kind)
+        if method is None:
+            method = getattr(_Reader, f"visit_{kind.__name__}", _Reader.generic_visit)
+            _METHODS[kind] = method
+        method(self, node)
+
     def generic_visit(self, node: ast.AST) -> None:
         """Visit the children as ``ast.NodeVisitor`` does, less the context and operator nodes
         (nothing here visits them): a third fewer visits."""
         for child in child_nodes(node):
             self.visit(child)
 
+    def visit_Constant(self, node: ast.Constant) -> None:
+        """Nothing: a constant holds no node (``ast.NodeVisitor``'s method would first look
+        for methods of the constant classes deprecated since Python 3.8, an exception each)."""
+
     # scopes -----------------------------------------------------------------------------
     def visit_FunctionDef(self, node: ast.FunctionDef | ast.AsyncFunctionDef) -> None:
         for default in (*node.args.defaults, *node.args.kw_defaults, *node.decorator_list):
             if default is not None:
                 self.visit(default)
-        self.scopes.append(bindings(node.body, node.args))
+        nodes = scope_nodes(node.body)
+        self.scopes.append(bindings(nodes, node.args))
         self.cache.append({})
-        self.unread.update(unread_calls(node))
+        self.unread.update(unread_calls(node, nodes))
         for statement in node.body:
             self.visit(statement)
         self.scopes.pop()

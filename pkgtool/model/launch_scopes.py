@@ -7,23 +7,25 @@ import ast
 from pkgtool.model.ast_nodes import child_nodes, descendants, nodes_of_class, subtree
 
 
-def bindings(body: list[ast.stmt], params: ast.arguments | None) -> dict[str, ast.expr | None]:
-    """Names bound in one scope: the single assigned expression, or None when ambiguous."""
+def bindings(nodes: list[ast.AST], params: ast.arguments | None
+             ) -> dict[str, ast.expr | None]:
+    """Names bound in one scope (``nodes``, its :func:`scope_nodes`): the single assigned
+    expression, or None when ambiguous."""
     found: dict[str, ast.expr | None] = {}
     if params is not None:
         for arg in (*params.posonlyargs, *params.args, *params.kwonlyargs,
                     params.vararg, params.kwarg):
             if arg is not None:
                 found[arg.arg] = None
-    nodes = scope_nodes(body)
-    simple = {id(n.targets[0]) for n in nodes if simple_assignment(n)}
+    simple: set[int] = set()  # the targets of simple assignments (each comes after its own)
     for node in nodes:
-        if simple_assignment(node):
-            name = node.targets[0].id  # type: ignore[attr-defined]
-            found[name] = None if name in found else node.value  # type: ignore[attr-defined]
-        elif isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
-            if id(node) not in simple:
+        if isinstance(node, ast.Name):
+            if not isinstance(node.ctx, ast.Load) and id(node) not in simple:
                 found[node.id] = None
+        elif simple_assignment(node):
+            target = node.targets[0]  # type: ignore[attr-defined]
+            simple.add(id(target))
+            found[target.id] = None if target.id in found else node.value  # type: ignore
         elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
             found[node.name] = None
         elif isinstance(node, (ast.Import, ast.ImportFrom)):
@@ -57,11 +59,13 @@ SCOPE_READERS = frozenset({"locals", "vars", "eval", "exec"})
 """Calls that may read any local name of the function making them."""
 
 
-def unread_calls(function: ast.FunctionDef | ast.AsyncFunctionDef) -> set[ast.Call]:
+def unread_calls(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[ast.AST]
+                 ) -> set[ast.Call]:
     """Calls that are the whole value of an assignment to a local name ``function`` never
     reads: no load of the name anywhere in it (nested functions included), no ``del``, no
     ``global`` or ``nonlocal`` declaration, no ``locals()``, ``vars()``, ``eval`` or ``exec``
-    in it, and no ``:=`` inside the call (the value it names may be read)."""
+    in it, and no ``:=`` inside the call (the value it names may be read). ``nodes`` are the
+    :func:`scope_nodes` of its body."""
     read: set[str] = set()
     for node in subtree(function):
         if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Store):
@@ -71,7 +75,7 @@ def unread_calls(function: ast.FunctionDef | ast.AsyncFunctionDef) -> set[ast.Ca
         elif isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and \
                 node.func.id in SCOPE_READERS:
             return set()
-    return {node.value for node in scope_nodes(function.body)
+    return {node.value for node in nodes
             if simple_assignment(node) and isinstance(node.value, ast.Call)
             and node.targets[0].id not in read  # type: ignore[attr-defined]
             and not any(isinstance(n, ast.NamedExpr) for n in descendants(node.value))}
