@@ -65,8 +65,10 @@ class Package:
 
 
 def _suppressions(path: str, text: str) -> dict[tuple[str, int], frozenset[str]]:
-    pattern = _XML_SUPPRESSION if path.endswith(".xml") else _PY_SUPPRESSION
     found: dict[tuple[str, int], frozenset[str]] = {}
+    if "pkgtool" not in text:  # what both patterns need (most files): no line to search
+        return found
+    pattern = _XML_SUPPRESSION if path.endswith(".xml") else _PY_SUPPRESSION
     for number, line in enumerate(text.splitlines(), 1):
         match = pattern.search(line)
         if not match:
