@@ -22,7 +22,7 @@ from pathlib import Path
 from pkgtool.knowledge.tables import DEFAULT_DISTRO
 from pkgtool.model.cmake_interfaces import (installed_python_packages, with_included,
                                             with_listed)
-from pkgtool.model.files import list_files
+from pkgtool.model.files import list_files, read_bytes
 from pkgtool.model.memo import per_object
 from pkgtool.records import field, record
 
@@ -140,12 +140,13 @@ def _is_module(folders: list[str]) -> bool:
 
 
 def _read(path: str) -> str | None:
-    """The text of the file at ``path``, or None when it cannot be read."""
+    """The text of the file at ``path``, or None when it cannot be read (not a regular file,
+    over the size limit: :func:`~pkgtool.model.files.read_bytes`)."""
     try:
-        with open(path, encoding="utf-8", errors="replace") as f:
-            return f.read()
+        data = read_bytes(path)
     except OSError:
         return None
+    return None if isinstance(data, int) else data.decode("utf-8", errors="replace")
 
 
 def colcon_src(root: Path) -> Path | None:

@@ -2,7 +2,9 @@
 
 from __future__ import annotations
 
+import errno
 import os
+import stat
 from pathlib import Path
 from typing import Callable
 
@@ -62,22 +64,33 @@ def read_text(root: Path, relpath: str, *, allow_empty: bool = True) -> TextFile
     return TextFile(relpath, text.removeprefix("\ufeff"))
 
 
-_READ_FLAGS = os.O_RDONLY | getattr(os, "O_BINARY", 0)  # O_BINARY: Windows translates no newline
+_READ_FLAGS = os.O_RDONLY | getattr(os, "O_BINARY", 0) | getattr(os, "O_NONBLOCK", 0)
+"""O_BINARY: Windows translates no newline; O_NONBLOCK: opening a FIFO does not wait for a
+writer (regular files ignore it)."""
 
 
 def read_bytes(path: str) -> bytes | int:
     """The file's bytes, or its size when that is over :data:`MAX_FILE_BYTES`.
 
     Read through a file descriptor: a Python file object costs more than reading a small file.
+    Only regular files are read (a FIFO, a device such as ``/dev/zero`` behind a link, raise
+    OSError), and never more than the limit.
     """
     descriptor = os.open(path, _READ_FLAGS)
     try:
-        size = os.fstat(descriptor).st_size
-        if size > MAX_FILE_BYTES:
-            return size
-        data = os.read(descriptor, size + 1)  # one read when the size is right
-        if len(data) > size:  # the file grew meanwhile, or tells no size: read on to its end
-            data += b"".join(iter(lambda: os.read(descriptor, 1 << 16), b""))
+        status = os.fstat(descriptor)
+        if not stat.S_ISREG(status.st_mode):
+            raise OSError(errno.EINVAL, "not a regular file", path)
+        if status.st_size > MAX_FILE_BYTES:
+            return status.st_size
+        data = os.read(descriptor, status.st_size + 1)  # one read when the size is right
+        while len(data) > status.st_size:  # the file grew meanwhile: read on to its end
+            more = os.read(descriptor, 1 << 16)
+            if not more:
+                break
+            data += more
+            if len(data) > MAX_FILE_BYTES:
+                return len(data)
         return data
     finally:
         os.close(descriptor)

@@ -130,6 +130,23 @@ def test_bad_files_become_findings_not_tracebacks(tmp_path: Path) -> None:
     _assert_only_cache_added(root, before)
 
 
+@pytest.mark.parametrize("special", ["package.xml", "setup.cfg", "launch/fifo.launch.py"])
+@pytest.mark.parametrize("kind", ["fifo", "endless"])
+def test_special_files_are_not_read(tmp_path: Path, special: str, kind: str) -> None:
+    """A FIFO (which blocks a reader until someone writes) or a link to an endless device
+    under a package file's name: lint finishes, reading neither."""
+    root = write_tree(tmp_path / "odd", correct_package_files("odd"))
+    target = root / special
+    target.parent.mkdir(parents=True, exist_ok=True)
+    target.unlink(missing_ok=True)
+    if kind == "fifo":
+        os.mkfifo(target)
+    else:
+        target.symlink_to("/dev/zero")
+    done = _lint_subprocess(root, "--format", "json", "--no-cache")
+    _assert_clean_exit(done)
+
+
 @pytest.mark.parametrize("empty", ["package.xml", "setup.py", "launch/empty.launch.xml"])
 def test_empty_files_become_findings(tmp_path: Path, empty: str) -> None:
     files: dict[str, str | bytes] = dict(correct_package_files("hollow"))
