@@ -11,7 +11,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.model.ast_nodes import walk_once
-from pkgtool.model.memo import per_object
+from pkgtool.model.memo import per_object, per_package
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
@@ -50,6 +50,13 @@ class Index:
         found = _qualified(node, self.aliases)
         self.dotted[id(node)] = (node, found)
         return found
+
+    def inside(self, node: ast.AST, parts: set[int]) -> bool:
+        """True when ``node`` or a node around it is one of ``parts`` (ids of nodes)."""
+        current: ast.AST | None = node
+        while current is not None and id(current) not in parts:
+            current = self.parents.get(id(current))
+        return current is not None
 
     def enclosing_class(self, node: ast.AST) -> ast.ClassDef | None:
         """The innermost class around ``node``, or None."""
@@ -137,8 +144,14 @@ index_of = per_object(64)(_index)
 """The :class:`Index` of a tree, built on first use (only rules that need one pay for it)."""
 
 
-def installed_modules(package: Package) -> Iterator[tuple[PythonModule, ast.Module]]:
-    """Installed, parseable modules with their syntax trees (the model's parse, shared)."""
+@per_package
+def installed_modules(package: Package) -> tuple[tuple[PythonModule, ast.Module], ...]:
+    """Installed, parseable modules with their syntax trees (the model's parse, shared), listed
+    once per package (most PYC rules ask)."""
+    return tuple(_installed_modules(package))
+
+
+def _installed_modules(package: Package) -> Iterator[tuple[PythonModule, ast.Module]]:
     for module in installed_code(package):
         text = package.texts.get(module.path)
         tree = parse_tree(module.path, text) if text is not None and not module.syntax_error \
@@ -147,10 +160,10 @@ def installed_modules(package: Package) -> Iterator[tuple[PythonModule, ast.Modu
             yield module, tree
 
 
-def installed_trees(package: Package) -> Iterator[tuple[PythonModule, ast.Module, Index]]:
-    """Installed, parseable modules with their syntax trees and indexes."""
-    for module, tree in installed_modules(package):
-        yield module, tree, index_of(tree)
+@per_package
+def installed_trees(package: Package) -> tuple[tuple[PythonModule, ast.Module, Index], ...]:
+    """Installed, parseable modules with their syntax trees and indexes, once per package."""
+    return tuple((module, tree, index_of(tree)) for module, tree in installed_modules(package))
 
 
 def _qualified(node: ast.expr, aliases: dict[str, str]) -> str | None:

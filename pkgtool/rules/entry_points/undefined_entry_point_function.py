@@ -6,7 +6,6 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import descendants
 from pkgtool.model.package import Package
 from pkgtool.rules.console_scripts import scripts_and_modules
 from pkgtool.rules.node_api import node_subclasses
@@ -25,8 +24,9 @@ def _uninitialised_node(package: Package, path: str, name: str) -> bool:
             return False
         top = [s for s in tree.body if not isinstance(s, (ast.FunctionDef, ast.AsyncFunctionDef,
                                                           ast.ClassDef))]
-        return not any(isinstance(n, ast.Call) and index.qualified(n.func) == "rclpy.init"
-                       for part in (node, *top) for n in descendants(part))
+        parts = {id(part) for part in (node, *top)}
+        return not any(index.qualified(call.func) == "rclpy.init" and index.inside(call, parts)
+                       for call in index.calls)
     return False
 
 
