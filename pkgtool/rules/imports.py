@@ -372,14 +372,30 @@ def local_modules(package: Package, module: PythonModule) -> frozenset[str]:
     return local | pytest_path_modules(package) if is_test_code(package, module) else local
 
 
+@per_package
+def _kept_needs(package: Package) -> dict[tuple[str, bool | None], tuple[Need, ...]]:
+    """:func:`needs` by (module path, ``guarded``), filled as asked (DEP001-DEP006, LCH003 and
+    the fixes ask about the same modules)."""
+    return {}
+
+
 def needs(package: Package, module: PythonModule, *, guarded: bool | None = False
-          ) -> Iterator[Need]:
+          ) -> tuple[Need, ...]:
     """Absolute imports of ``module`` that need a key, the first import of each name only.
 
     ``guarded`` selects unguarded imports (False), guarded ones (True) or both (None). Every
     import of an own module that the package itself imports only guarded counts as guarded.
     ROS modules of a ROS 1 package are provided by their own name (:func:`_ros1_keys`).
+    Worked out once per module of the package and ``guarded``.
     """
+    kept = _kept_needs(package)
+    key = (module.path, guarded)
+    if key not in kept:
+        kept[key] = tuple(_needs(package, module, guarded))
+    return kept[key]
+
+
+def _needs(package: Package, module: PythonModule, guarded: bool | None) -> Iterator[Need]:
     skip = local_modules(package, module)
     stdlib = _stdlib(package.context.distro)
     names = declared(package, ANY)
