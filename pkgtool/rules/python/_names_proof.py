@@ -64,13 +64,7 @@ class _Walk:
             self._run_function(function)
 
     def visit(self, node: ast.AST) -> None:
-        handler = _handler(type(node))
-        if handler is not None:
-            handler(self, node)
-        elif isinstance(node, _UNDECIDED):
-            raise Undecided(type(node).__name__)
-        else:
-            self.children(node)
+        _HANDLERS[type(node)](self, node)
 
     def children(self, node: ast.AST) -> None:
         for name in _field_order(type(node)):
@@ -184,10 +178,28 @@ class _Walk:
     visit_ListComp = visit_SetComp = visit_DictComp = visit_GeneratorExp = _comprehension
 
 
-@cache
-def _handler(kind: type[ast.AST]) -> Callable[[_Walk, Any], None] | None:
-    """The method of :class:`_Walk` for nodes of ``kind``, if it has one."""
-    return getattr(_Walk, "visit_" + kind.__name__, None)
+def _undecided(walk: _Walk, node: ast.AST) -> None:
+    raise Undecided(type(node).__name__)
+
+
+def _leaf(walk: _Walk, node: ast.AST) -> None:
+    """Nothing to do: a node without child nodes (a constant)."""
+
+
+class _Handlers(dict[type, Callable[[_Walk, Any], None]]):
+    """What :meth:`_Walk.visit` does with a node of each class: the method of :class:`_Walk`
+    for it if it has one, else raise :class:`Undecided` or visit the children."""
+
+    def __missing__(self, kind: type) -> Callable[[_Walk, Any], None]:
+        handler = getattr(_Walk, "visit_" + kind.__name__, None)
+        if handler is None:
+            handler = (_undecided if issubclass(kind, _UNDECIDED) else
+                       _Walk.children if _field_order(kind) else _leaf)
+        self[kind] = handler
+        return handler
+
+
+_HANDLERS = _Handlers()
 
 
 def _arguments(arguments: ast.arguments) -> list[ast.arg]:
@@ -203,7 +215,7 @@ def _strings_read_as_annotations(tree: ast.Module) -> bool:
     modules: set[str] = set()
     places: list[ast.AST] = []
     for node in nodes_of_class(tree, ast.Import, ast.ImportFrom, ast.arg, ast.FunctionDef,
-                               ast.AsyncFunctionDef, ast.AnnAssign, ast.Subscript, ast.Call):
+                               ast.AsyncFunctionDef, ast.AnnAssign):
         if isinstance(node, ast.Import):
             modules.update(a.asname or a.name for a in node.names if a.name in _TYPING)
         elif isinstance(node, ast.ImportFrom) and node.module in _TYPING:
@@ -214,8 +226,8 @@ def _strings_read_as_annotations(tree: ast.Module) -> bool:
             places.append(node.returns)
         elif isinstance(node, ast.AnnAssign):
             places.append(node.annotation)
-        elif isinstance(node, (ast.Subscript, ast.Call)):
-            places.append(node)
+    if names or modules:  # else no subscript or call is of a name from typing
+        places.extend(nodes_of_class(tree, ast.Subscript, ast.Call))
     return any(isinstance(inner, ast.Constant) and isinstance(inner.value, str)
                for place in places if _typing_member(place, names, modules)
                for inner in descendants(place))
