@@ -204,6 +204,12 @@ def method_receiver(method: ast.AST) -> str | None:
     return positional[0].arg
 
 
+def attributes_taken(scope: ast.AST, name: str) -> list[ast.Attribute]:
+    """The attributes taken on ``name`` (``name.x``, read or stored) in ``scope`` and every
+    scope inside it, in walk order (from the scope's one walk for its names)."""
+    return _names(scope).uses.get(name, [])
+
+
 @record
 class _ClassFacts:
     """The ``self.x`` attributes of a class's methods: by name the stores (in order), the

@@ -95,11 +95,10 @@ def parameter_accessor_type(package: Package) -> Iterator[Hit]:
     nodes = module_nodes(package)
     for module, _, index in installed_trees(package):
         classes = {c.name: c for c in nodes[module.path].classes} if module.path in nodes else {}
-        for node in index.attributes:
-            around = index.enclosing_class(node)
-            missing = _missing_accessor(node, index) if around is not None and \
-                around.name in classes else None
-            if missing is not None:
+        for node in index.attributes if classes else ():
+            missing = _missing_accessor(node, index)
+            around = index.enclosing_class(node) if missing is not None else None
+            if missing is not None and around is not None and around.name in classes:
                 yield Hit(Span(module.path, node.end_lineno or node.lineno,
                                (node.end_col_offset or 0) - len(node.attr) + 1), missing,
                           "Read `.value`, or the `ParameterValue` field of the declared type")

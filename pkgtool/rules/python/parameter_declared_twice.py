@@ -11,10 +11,24 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import node_subclasses
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import FUNCTIONS, installed_trees
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
 _SIMPLE = (ast.Expr, ast.Assign, ast.AnnAssign, ast.AugAssign)
 """Statements that run whole whenever the function body reaches them."""
+_DECLARING = frozenset({"declare_parameter", "declare_parameters"})
+
+
+def _around_declarations(index: Index) -> set[int]:
+    """Ids of the ``x.declare_parameter(s)`` calls of the module and of every node around
+    them: the statements worth a look (most hold none)."""
+    found: set[int] = set()
+    for call in index.calls:
+        if isinstance(call.func, ast.Attribute) and call.func.attr in _DECLARING:
+            node: ast.AST | None = call
+            while node is not None and id(node) not in found:
+                found.add(id(node))
+                node = index.parents.get(id(node))
+    return found
 
 
 def _declared(statement: ast.stmt, receiver: str) -> Iterator[tuple[str, ast.Call]]:
@@ -73,6 +87,7 @@ def parameter_declared_twice(package: Package) -> Iterator[Hit]:
     ```
     """
     for module, _, index in installed_trees(package):
+        declaring = _around_declarations(index)
         for cls in node_subclasses(index):
             for method in (s for s in cls.body if isinstance(s, FUNCTIONS)):
                 positional = [*method.args.posonlyargs, *method.args.args]
@@ -80,6 +95,8 @@ def parameter_declared_twice(package: Package) -> Iterator[Hit]:
                     continue
                 seen: dict[str, ast.Call] = {}
                 for statement in method.body:
+                    if id(statement) not in declaring:
+                        continue
                     for name, call in _declared(statement, positional[0].arg):
                         if name in seen and seen[name] is not call:
                             yield Hit(Span(module.path, call.lineno, call.col_offset + 1),

@@ -8,14 +8,14 @@ from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
-from pkgtool.model.ast_nodes import nodes_of_class, subtree
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
-from pkgtool.rules.python._message_instances import method_receiver
+from pkgtool.rules.python._message_instances import attributes_taken, method_receiver
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings
-from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
+from pkgtool.rules.syntax_trees import Index, installed_trees
 
 _DYNAMIC = frozenset({"setattr", "delattr", "vars", "__dict__", "__getattr__",
                       "__getattribute__", "__setattr__", "__slots__"})
@@ -24,10 +24,12 @@ _DYNAMIC = frozenset({"setattr", "delattr", "vars", "__dict__", "__getattr__",
 
 def _dynamic(tree: ast.Module) -> bool:
     """True when the module may create attributes in ways not written as ``x.name = ...``."""
-    return any(isinstance(n, ast.Name) and n.id in _DYNAMIC or
-               isinstance(n, ast.Attribute) and n.attr in _DYNAMIC or
-               isinstance(n, FUNCTIONS) and n.name in _DYNAMIC
-               for n in nodes_of_class(tree, ast.Name, ast.Attribute, ast.FunctionDef))
+    return (any(isinstance(n, ast.Name) and n.id in _DYNAMIC
+                for n in nodes_of_class(tree, ast.Name))
+            or any(isinstance(n, ast.Attribute) and n.attr in _DYNAMIC
+                   for n in nodes_of_class(tree, ast.Attribute))
+            or any(isinstance(n, ast.FunctionDef) and n.name in _DYNAMIC
+                   for n in nodes_of_class(tree, ast.FunctionDef)))
 
 
 def _augmented(tree: ast.Module) -> set[int]:
@@ -116,10 +118,8 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
             reads: dict[str, list[ast.Attribute]] = {}
             for method in cls.body:
                 receiver = method_receiver(method)
-                for node in subtree(method) if receiver else ():
-                    if isinstance(node, ast.Attribute) and \
-                            (isinstance(node.ctx, ast.Load) or id(node) in augmented) and \
-                            isinstance(node.value, ast.Name) and node.value.id == receiver and \
+                for node in attributes_taken(method, receiver) if receiver else ():
+                    if (isinstance(node.ctx, ast.Load) or id(node) in augmented) and \
                             not node.attr.startswith("__") and node.attr not in known and \
                             not guarded(node, index, probed):
                         reads.setdefault(node.attr, []).append(node)

@@ -165,9 +165,10 @@ def _wrong_class_attributes(index: Index, known: Known, probed: frozenset[str]
     """Attributes read on a known interface class that it does not have (a service's
     ``Trigger.request``, a message constant misspelt), with the class and a near miss."""
     for node in index.attributes:
-        if node.attr.startswith("_"):
+        dotted = index.qualified(node.value)
+        if dotted is None or node.attr.startswith("_"):  # not a known class: no import names it
             continue
-        kind = (index.qualified(node.value) or "").split(".")
+        kind = dotted.split(".")
         companions = _COMPANIONS.get(kind[1], ()) if len(kind) == 3 else ()
         if companions and known(ast.Attribute(value=node.value, attr=companions[0],
                                               ctx=ast.Load())):
