@@ -86,8 +86,21 @@ def declared(package: Package, tags: frozenset[str], *, bringing: bool = True
     With ``bringing``, packages a declared one brings in
     (:func:`~pkgtool.knowledge.rosdep.brought_in`: ``ament_lint_common``'s linters, a
     metapackage's members) count as declared by its entry; without, only what package.xml
-    names does.
+    names does. Worked out once per package and question (the DEP rules ask ~30 times a
+    package): treat as read-only.
     """
+    kept = _kept_declared(package)
+    if (tags, bringing) not in kept:
+        kept[tags, bringing] = _declared(package, tags, bringing)
+    return kept[tags, bringing]
+
+
+@per_package
+def _kept_declared(package: Package) -> dict[tuple[frozenset[str], bool], dict[str, Dependency]]:
+    return {}
+
+
+def _declared(package: Package, tags: frozenset[str], bringing: bool) -> dict[str, Dependency]:
     found: dict[str, Dependency] = {}
     if package.manifest is None:
         return found

@@ -57,6 +57,16 @@ def scope_walk(body: list[ast.stmt], *, skip_protected: bool = False) -> Iterato
         stack += children
 
 
+def own_scope(node: ast.AST, parents: dict[int, ast.AST]) -> tuple[ast.AST | None, ast.AST]:
+    """The innermost function, class, lambda or comprehension around ``node`` (None at module
+    level), with the node below it on the way up (``node``'s statement in its body...):
+    ``node`` is among what :func:`scope_walk` yields for that scope when it is there."""
+    child, parent = node, parents.get(id(node))
+    while parent is not None and type(parent) not in _NESTED:
+        child, parent = parent, parents.get(id(parent))
+    return parent, child
+
+
 def bound_names(where: ast.stmt | list[ast.stmt] | ast.FunctionDef | ast.AsyncFunctionDef
                 ) -> Counter[str]:
     """How many times each name is bound in ``where`` (parameters included for a function)."""

@@ -3,14 +3,14 @@
 from __future__ import annotations
 
 import ast
-from collections import Counter
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.memo import per_object
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.scopes import bound_names, catches_everything, scope_bindings, scope_walk
+from pkgtool.rules.scopes import (bound_names, catches_everything, own_scope, scope_bindings,
+                                  scope_walk)
 from pkgtool.rules.syntax_trees import Index, installed_trees
 from pkgtool.rules.registry import rule
 
@@ -49,9 +49,9 @@ def _unbound_uses(index: Index, node: ast.Try) -> Iterator[tuple[ast.Name, str, 
     function = index.enclosing_function(node)
     if function is None or not any(places) or _in_loop(index, node, function):
         return
-    everywhere = _function_bindings(function)
-    if everywhere is None:
+    if id(function) in _inspecting(index):
         return
+    everywhere = scope_bindings(function)
     for name, count in bound_names(node.body).items():
         if count != everywhere.get(name) or not _fails_before(node.body, name):
             continue
@@ -70,13 +70,17 @@ def _in_loop(index: Index, node: ast.AST, function: ast.AST) -> bool:
 
 
 @per_object(64)
-def _function_bindings(function: ast.FunctionDef | ast.AsyncFunctionDef) -> Counter[str] | None:
-    """Binding counts of a function, or None when it inspects its own namespace."""
-    for node in scope_walk(function.body):
-        if (isinstance(node, ast.Call) and isinstance(node.func, ast.Name)
-                and node.func.id in ("locals", "vars", "globals")):
-            return None
-    return scope_bindings(function)
+def _inspecting(index: Index) -> set[int]:
+    """Ids of the functions whose body (not a scope inside it) calls ``locals()``, ``vars()``
+    or ``globals()``: they may inspect their own namespace."""
+    found: set[int] = set()
+    for call in index.calls:
+        if isinstance(call.func, ast.Name) and call.func.id in ("locals", "vars", "globals"):
+            scope, way = own_scope(call, index.parents)
+            if isinstance(scope, (ast.FunctionDef, ast.AsyncFunctionDef)) and \
+                    any(way is statement for statement in scope.body):
+                found.add(id(scope))
+    return found
 
 
 @rule("PYC003", "unbound-in-finally", Severity.ERROR,
