@@ -67,14 +67,15 @@ class _Walk:
         _HANDLERS[type(node)](self, node)
 
     def children(self, node: ast.AST) -> None:
+        handlers = _HANDLERS  # :meth:`visit` inline: the walk's most frequent call
         for name in _field_order(type(node)):
             value = getattr(node, name, None)
             if isinstance(value, ast.AST):
-                self.visit(value)
+                handlers[type(value)](self, value)
             elif isinstance(value, list):
                 for item in value:
                     if isinstance(item, ast.AST):
-                        self.visit(item)
+                        handlers[type(item)](self, item)
 
     def visit_Name(self, node: ast.Name) -> None:
         if isinstance(node.ctx, ast.Load):
