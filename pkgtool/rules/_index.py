@@ -112,6 +112,7 @@ RULES = {
     "PYC030": ("swapped-rclpy-arguments", "error", True, "python.swapped_rclpy_arguments"),
     "PYC031": ("parameter-object-as-value", "error", True, "python.parameter_object_as_value"),
     "PYC032": ("path-without-separator", "error", True, "python.path_without_separator"),
+    "PYC033": ("too-many-rclpy-arguments", "error", True, "python.too_many_rclpy_arguments"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

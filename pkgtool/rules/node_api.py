@@ -54,15 +54,25 @@ ACTION_SERVER_CALLBACKS = (("node", "action_type", "action_name", "execute_callb
 
 def node_api_calls(package: Package, methods: Collection[str] = PARAMETERS
                    ) -> Iterator[tuple[PythonModule, ast.Call, str, Index]]:
-    """``x.<method>(...)`` calls of ``methods`` (:data:`PARAMETERS`), with the method name."""
+    """``x.<method>(...)`` calls of ``methods`` (:data:`PARAMETERS`), with the method name;
+    not where ``x`` is certainly no node (:func:`_not_a_node`)."""
     for module, _, index in installed_trees(package):
         if not any(i.top_level == "rclpy" for i in module.imports):
             continue
         defined = {function.name for function in index.functions}
         for call in index.calls:
             method = call.func.attr if isinstance(call.func, ast.Attribute) else ""
-            if method in methods and method not in defined:
+            if method in methods and method not in defined and \
+                    not _not_a_node(call.func.value, index):  # type: ignore[attr-defined]
                 yield module, call, method, index
+
+
+def _not_a_node(receiver: ast.expr, index: Index) -> bool:
+    """True when ``receiver`` is certainly no rclpy node: an imported name, or what calling one
+    makes, from a module other than rclpy (``boto3.session.Session().create_client(...)``)."""
+    made = receiver.func if isinstance(receiver, ast.Call) else receiver
+    qualified = index.qualified(made) if isinstance(made, (ast.Name, ast.Attribute)) else None
+    return qualified is not None and qualified.split(".")[0] != "rclpy"
 
 
 def qos_calls(package: Package) -> Iterator[tuple[PythonModule, ast.Call, str]]:

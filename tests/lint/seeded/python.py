@@ -448,3 +448,9 @@ def counter_published_in_a_string_field(root: Path) -> None:
 def test_imports_a_renamed_class(root: Path) -> None:
     edit(root, "test/test_talker.py", "from base_pkg.talker import Talker",
          "from base_pkg.talker import TalkerNode")
+
+
+@case("PYC033", LISTENER, "String, topic, self.on_message, 10, None)")
+def subscription_callback_group_by_position(root: Path) -> None:
+    edit(root, LISTENER, "String, topic, self.on_message, 10)",
+         "String, topic, self.on_message, 10, None)")

@@ -1,0 +1,84 @@
+"""PYC033: a node's create_* method given more positional arguments than it takes."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.node_api import node_api_calls, node_subclasses
+from pkgtool.rules.python._message_instances import method_receiver
+from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import Index
+
+POSITIONAL = {
+    "create_publisher": (("msg_type", "topic", "qos_profile"),
+                         ("callback_group", "event_callbacks", "qos_overriding_options",
+                          "publisher_class")),
+    "create_subscription": (("msg_type", "topic", "callback", "qos_profile"),
+                            ("callback_group", "event_callbacks", "qos_overriding_options",
+                             "raw")),
+    "create_service": (("srv_type", "srv_name", "callback"), ("qos_profile", "callback_group")),
+    "create_client": (("srv_type", "srv_name"), ("qos_profile", "callback_group")),
+}
+"""rclpy ``Node`` methods (Humble to Rolling) whose later parameters are keyword-only: the
+positional ones, then the keyword-only ones."""
+
+
+def _on_self_of_a_node(call: ast.Call, index: Index, nodes: list[ast.ClassDef]) -> bool:
+    """True for ``self.<method>(...)`` in a plain method of a Node subclass of the module."""
+    receiver = call.func.value if isinstance(call.func, ast.Attribute) else None
+    method = index.parents.get(id(call))
+    while method is not None and not isinstance(method, (ast.FunctionDef, ast.Lambda,
+                                                         ast.AsyncFunctionDef, ast.ClassDef)):
+        method = index.parents.get(id(method))
+    return isinstance(receiver, ast.Name) and method is not None and \
+        any(method in cls.body for cls in nodes) and method_receiver(method) == receiver.id
+
+
+@rule("PYC033", "too-many-rclpy-arguments", Severity.ERROR,
+      fix="Pass the later arguments by keyword: `qos_profile=...`, `callback_group=...`")
+def too_many_rclpy_arguments(package: Package) -> Iterator[Hit]:
+    """A node's `create_*` method is given more positional arguments than it takes.
+
+    ## What it does
+    Reports `self.create_publisher(...)`, `create_subscription`, `create_service` and
+    `create_client` calls in the methods of a `Node` subclass that pass more positional
+    arguments than the method's positional parameters: `create_client` takes two (`srv_type`,
+    `srv_name`), `create_service` three, `create_publisher` three, `create_subscription`
+    four; everything after them (`qos_profile` of a client or service, `callback_group`, ...)
+    is keyword-only (Humble to Rolling). Calls passing `*args` are not judged, nor packages
+    defining a function of the same name.
+
+    ## Why is this bad?
+    Python raises `TypeError: create_client() takes 3 positional arguments but 4 were given`
+    when the line runs, usually in the node's constructor: the node never starts.
+
+    ## Example
+    ```python
+    self.client = self.create_client(AddTwoInts, 'add', self.group)
+    ```
+
+    ## Use instead
+    ```python
+    self.client = self.create_client(AddTwoInts, 'add', callback_group=self.group)
+    ```
+    """
+    nodes_of: dict[int, list[ast.ClassDef]] = {}
+    for module, call, method, index in node_api_calls(package, POSITIONAL):
+        positional, keywords = POSITIONAL[method]
+        if any(isinstance(a, ast.Starred) for a in call.args) or \
+                len(call.args) <= len(positional):
+            continue
+        nodes = nodes_of.setdefault(id(index), node_subclasses(index))
+        if not _on_self_of_a_node(call, index, nodes):
+            continue
+        extra = call.args[len(positional)]
+        given = ", ".join(f"`{p}`" for p in positional)
+        rest = ", ".join(f"`{k}=`" for k in keywords)
+        yield Hit(Span(module.path, extra.lineno, extra.col_offset + 1),
+                  f"`{method}()` takes {len(positional)} positional arguments ({given}) but is "
+                  f"given {len(call.args)}: rclpy raises TypeError (the others are keyword-only:"
+                  f" {rest})")
