@@ -81,10 +81,15 @@ class Index:
             child, parent = parent, self.parents.get(id(parent))
         return False
 
-    def enclosing_function(self, node: ast.AST) -> ast.FunctionDef | ast.AsyncFunctionDef | None:
-        """The innermost function around ``node`` (None at module or class level)."""
+    def enclosing_function(self, node: ast.AST, *, through_lambdas: bool = True
+                           ) -> ast.FunctionDef | ast.AsyncFunctionDef | None:
+        """The innermost function around ``node`` (None at module or class level; also None
+        inside a lambda, whose parameters may shadow the function's names, unless
+        ``through_lambdas``)."""
+        stops = (*FUNCTIONS, ast.ClassDef) if through_lambdas else \
+            (*FUNCTIONS, ast.ClassDef, ast.Lambda)
         parent = self.parents.get(id(node))
-        while parent is not None and not isinstance(parent, (*FUNCTIONS, ast.ClassDef)):
+        while parent is not None and not isinstance(parent, stops):
             parent = self.parents.get(id(parent))
         return parent if isinstance(parent, FUNCTIONS) else None
 

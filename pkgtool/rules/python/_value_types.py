@@ -30,6 +30,21 @@ _DYNAMIC = frozenset({"setattr", "vars", "__dict__", "__setattr__", "__slots__"}
 """Names whose use in a module means attributes may be stored unseen."""
 
 
+def parameter_read(value: ast.expr | None) -> bool:
+    """True for a call ``<x>.get_parameter(...)``."""
+    return isinstance(value, ast.Call) and isinstance(value.func, ast.Attribute) and \
+        value.func.attr == "get_parameter"
+
+
+def receiver_class(name: ast.expr, index: Index) -> ast.ClassDef | None:
+    """The class whose plain method ``name`` (a name) is the receiver of, ``self`` in
+    ``self.x``, when that method is the function right around it (no lambda nearer)."""
+    method = index.enclosing_function(name, through_lambdas=False)
+    cls = index.parents.get(id(method)) if method is not None else None
+    return cls if isinstance(cls, ast.ClassDef) and isinstance(name, ast.Name) and \
+        method_receiver(method) == name.id else None
+
+
 def _made_type(value: ast.expr, index: Index) -> str | None:
     """The type of a literal, ``type`` for an imported message, service or action class,
     or :data:`PARAMETER` for ``self.get_parameter(...)`` in a method of a node class (in a
@@ -38,15 +53,10 @@ def _made_type(value: ast.expr, index: Index) -> str | None:
     if found is None and isinstance(value, (ast.Name, ast.Attribute)) and \
             INTERFACE.fullmatch(index.qualified(value) or ""):
         return "type"  # an imported message class itself (`String`, not `String()`)
-    if found is not None or not (isinstance(value, ast.Call) and
-                                 isinstance(value.func, ast.Attribute) and
-                                 value.func.attr == "get_parameter" and
-                                 isinstance(value.func.value, ast.Name)):
+    if found is not None or not parameter_read(value):
         return found
-    method = _enclosing_function(value, index)
-    cls = index.parents.get(id(method)) if method is not None else None
-    if isinstance(cls, ast.ClassDef) and method_receiver(method) == value.func.value.id and \
-            any(index.qualified(b) in NODE_CLASSES for b in cls.bases) and \
+    cls = receiver_class(value.func.value, index)  # type: ignore[attr-defined]
+    if cls is not None and any(index.qualified(b) in NODE_CLASSES for b in cls.bases) and \
             not any(f.name == "get_parameter" for f in index.functions):
         return PARAMETER
     return None
@@ -70,12 +80,10 @@ def _one(types: set[str]) -> str | None:
     return next(iter(types)) if len(types) == 1 and _UNKNOWN not in types else None
 
 
-def _enclosing_function(node: ast.AST, index: Index) -> ast.AST | None:
-    parent = index.parents.get(id(node))
-    while parent is not None and not isinstance(parent, (*FUNCTIONS, ast.ClassDef,
-                                                         ast.Lambda)):
-        parent = index.parents.get(id(parent))
-    return parent if isinstance(parent, FUNCTIONS) else None
+def _targets(statement: ast.AST) -> list[ast.expr]:
+    """What an assignment statement (``=``, annotated, augmented) assigns; [] for others."""
+    return statement.targets if isinstance(statement, ast.Assign) else \
+        [statement.target] if isinstance(statement, (ast.AnnAssign, ast.AugAssign)) else []
 
 
 @per_object(16)
@@ -84,9 +92,7 @@ def _assigned_names(tree: ast.Module) -> dict[str, list[ast.Name]]:
     ...``, ``n += ...``; not unpacked), by name."""
     found: dict[str, list[ast.Name]] = {}
     for statement in nodes_of_class(tree, ast.Assign, ast.AnnAssign, ast.AugAssign):
-        targets = statement.targets if isinstance(statement, ast.Assign) else \
-            [statement.target] if isinstance(statement, (ast.AnnAssign, ast.AugAssign)) else []
-        for target in targets:
+        for target in _targets(statement):
             if isinstance(target, ast.Name):
                 found.setdefault(target.id, []).append(target)
     return found
@@ -94,12 +100,13 @@ def _assigned_names(tree: ast.Module) -> dict[str, list[ast.Name]]:
 
 def _local_type(name: ast.Name, tree: ast.Module, index: Index) -> str | None:
     """The type of a function's local ``name`` when all its bindings agree on one."""
-    function = _enclosing_function(name, index)
+    function = index.enclosing_function(name, through_lambdas=False)
     if function is None:
         return None
     start, end = function.lineno, function.end_lineno or function.lineno
     assigned = [n for n in _assigned_names(tree).get(name.id, ())
-                if start <= n.lineno <= end and _enclosing_function(n, index) is function]
+                if start <= n.lineno <= end and
+                index.enclosing_function(n, through_lambdas=False) is function]
     if not assigned or len(assigned) != binding_counts(function)[name.id] or \
             any(isinstance(n, ast.Nonlocal) and name.id in n.names
                 for n in nodes_of_class(tree, ast.Nonlocal)):
@@ -120,9 +127,7 @@ def _class_attributes(cls: ast.ClassDef) -> Iterator[str]:
     for statement in cls.body:
         if isinstance(statement, (*FUNCTIONS, ast.ClassDef)):
             yield statement.name
-        targets = statement.targets if isinstance(statement, ast.Assign) else \
-            [statement.target] if isinstance(statement, (ast.AnnAssign, ast.AugAssign)) else []
-        yield from (t.id for t in targets if isinstance(t, ast.Name))
+        yield from (t.id for t in _targets(statement) if isinstance(t, ast.Name))
 
 
 @per_package
@@ -154,12 +159,10 @@ def _attribute_type(package: Package, name: str) -> str | None:
 
 def _node_attribute_type(value: ast.Attribute, package: Package, index: Index) -> str | None:
     """The type of ``self.x`` read in a method of a class deriving from rclpy's Node alone."""
-    if not isinstance(value.value, ast.Name) or value.attr in NODE_ATTRIBUTES:
+    if value.attr in NODE_ATTRIBUTES:
         return None
-    method = _enclosing_function(value, index)
-    cls = index.parents.get(id(method)) if method is not None else None
-    if not isinstance(cls, ast.ClassDef) or method_receiver(method) != value.value.id or \
-            len(cls.bases) != 1 or cls.keywords or \
+    cls = receiver_class(value.value, index)
+    if cls is None or len(cls.bases) != 1 or cls.keywords or \
             index.qualified(cls.bases[0]) != "rclpy.node.Node":
         return None
     return _attribute_type(package, value.attr)

@@ -10,7 +10,7 @@ from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import argument
-from pkgtool.rules.python._value_types import PARAMETER, certain_type
+from pkgtool.rules.python._value_types import PARAMETER, certain_type, parameter_read
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
@@ -55,18 +55,12 @@ def _uses(tree: ast.Module, index: Index) -> Iterator[tuple[ast.expr, str]]:
                                 "TypeError")
 
 
-def _read(value: ast.expr | None) -> bool:
-    """True for a call ``<x>.get_parameter(...)``."""
-    return isinstance(value, ast.Call) and isinstance(value.func, ast.Attribute) and \
-        value.func.attr == "get_parameter"
-
-
 def _holders(tree: ast.Module) -> set[str]:
     """The names and attribute names an assignment of the module gives a ``get_parameter()``
     call (only they, and the calls themselves, can be a ``Parameter``)."""
     found: set[str] = set()
     for statement in nodes_of_class(tree, ast.Assign, ast.AnnAssign):
-        if isinstance(statement, (ast.Assign, ast.AnnAssign)) and _read(statement.value):
+        if isinstance(statement, (ast.Assign, ast.AnnAssign)) and parameter_read(statement.value):
             targets = statement.targets if isinstance(statement, ast.Assign) else \
                 [statement.target]
             found.update(t.id if isinstance(t, ast.Name) else t.attr for t in targets
@@ -75,7 +69,7 @@ def _holders(tree: ast.Module) -> set[str]:
 
 
 def _candidate(value: ast.expr, holders: set[str]) -> bool:
-    return _read(value) or isinstance(value, ast.Name) and value.id in holders or \
+    return parameter_read(value) or isinstance(value, ast.Name) and value.id in holders or \
         isinstance(value, ast.Attribute) and value.attr in holders
 
 
@@ -115,7 +109,7 @@ def parameter_object_as_value(package: Package) -> Iterator[Hit]:
     """
     for module, tree, index in installed_trees(package):
         if not any(i.top_level == "rclpy" for i in module.imports) or \
-                not any(_read(call) for call in index.calls):
+                not any(parameter_read(call) for call in index.calls):
             continue
         holders = _holders(tree)
         for value, how in _uses(tree, index):

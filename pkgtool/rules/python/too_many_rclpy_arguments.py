@@ -9,9 +9,8 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import node_api_calls, node_subclasses
-from pkgtool.rules.python._message_instances import method_receiver
+from pkgtool.rules.python._value_types import receiver_class
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index
 
 POSITIONAL = {
     "create_publisher": (("msg_type", "topic", "qos_profile"),
@@ -25,17 +24,6 @@ POSITIONAL = {
 }
 """rclpy ``Node`` methods (Humble to Rolling) whose later parameters are keyword-only: the
 positional ones, then the keyword-only ones."""
-
-
-def _on_self_of_a_node(call: ast.Call, index: Index, nodes: list[ast.ClassDef]) -> bool:
-    """True for ``self.<method>(...)`` in a plain method of a Node subclass of the module."""
-    receiver = call.func.value if isinstance(call.func, ast.Attribute) else None
-    method = index.parents.get(id(call))
-    while method is not None and not isinstance(method, (ast.FunctionDef, ast.Lambda,
-                                                         ast.AsyncFunctionDef, ast.ClassDef)):
-        method = index.parents.get(id(method))
-    return isinstance(receiver, ast.Name) and method is not None and \
-        any(method in cls.body for cls in nodes) and method_receiver(method) == receiver.id
 
 
 @rule("PYC033", "too-many-rclpy-arguments", Severity.ERROR,
@@ -73,8 +61,8 @@ def too_many_rclpy_arguments(package: Package) -> Iterator[Hit]:
                 len(call.args) <= len(positional):
             continue
         nodes = nodes_of.setdefault(id(index), node_subclasses(index))
-        if not _on_self_of_a_node(call, index, nodes):
-            continue
+        if receiver_class(call.func.value, index) not in nodes:  # type: ignore[attr-defined]
+            continue  # not `self.<method>(...)` in a method of a Node subclass
         extra = call.args[len(positional)]
         given = ", ".join(f"`{p}`" for p in positional)
         rest = ", ".join(f"`{k}=`" for k in keywords)
