@@ -42,16 +42,17 @@ MISSPELLED = Path(__file__).parents[1] / "fixtures" / "MAN021" / "bad" / \
     "misspelling_and_its_consequences"
 
 
-def test_a_misspelt_run_dependency_holds_the_imports_and_launches_it_leaves_undeclared() -> None:
+def test_a_misspelt_run_dependency_holds_what_it_leaves_undeclared() -> None:
     found = {(f.code, f.span.line): f for f in _lint(MISSPELLED)}
     assert sorted(found) == [("DEP001", 4), ("MAN021", 9), ("MAN021", 10), ("MAN021", 13)]
     assert [(s.path, s.line) for s in found["MAN021", 10].related] == [
         ("launch/robot.launch.py", 10)]
-    assert "`demo/talker.py:2` (DEP001)" in found["MAN021", 13].message
+    assert "`demo/talker.py:2` (DEP001), `test/test_window.py:2` (DEP003)" in \
+        found["MAN021", 13].message
     assert not found["MAN021", 9].related  # a build_depend: the import still lacks a run key
 
 
 def test_without_the_misspelling_rule_the_undeclared_names_stand_alone() -> None:
     found = _lint(MISSPELLED, ignore=("MAN021",))
     assert sorted((f.code, f.span.line) for f in found) == [
-        ("DEP001", 2), ("DEP001", 4), ("LCH002", 10)]
+        ("DEP001", 2), ("DEP001", 4), ("DEP003", 2), ("LCH002", 10)]

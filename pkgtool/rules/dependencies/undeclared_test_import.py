@@ -6,7 +6,8 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import ANY, also_imported, declared, grouped, needs, test_code
+from pkgtool.rules.imports import (ANY, also_imported, declared, dependency_cause, grouped, needs,
+                                   test_code)
 from pkgtool.rules.registry import rule
 
 
@@ -23,7 +24,9 @@ def undeclared_test_import(package: Package) -> Iterator[Hit]:
     (a base class for other packages' tests) is installed code, checked by DEP001, unless
     pytest collects it and it defines a test (a test shipped by mistake).
     `ament_lint_common` brings the ament linters along (`ament_flake8`, `ament_pep257`,
-    `ament_copyright`, ...), so a test importing them is covered by it.
+    `ament_copyright`, ...), so a test importing them is covered by it. When the key is
+    missing because package.xml misspells it as a run dependency, MAN021's finding lists the
+    import instead (one mistake, one finding).
 
     ## Why is this bad?
     `rosdep install` (and the buildfarm's test jobs) install only declared dependencies, so
@@ -48,4 +51,5 @@ def undeclared_test_import(package: Package) -> Iterator[Hit]:
         yield Hit(need.imported.span,
                   f"`{need.top}` is imported by a test but {need.missing}" + also_imported(others),
                   f"Add `<test_depend>{need.key}</test_depend>` to package.xml",
-                  related=tuple(other.imported.span for other in others))
+                  related=tuple(other.imported.span for other in others),
+                  cause=dependency_cause(need.key), consequence=True)
