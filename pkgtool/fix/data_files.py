@@ -180,8 +180,8 @@ def _launch_glob(path: str) -> tuple[str, str]:
 
 @fixer("DAT006", "Install the file the launch file reads")
 def launch_resources(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
-    """Install the files of that kind in its folder (``config/*.yaml``), or a folder's files.
-    A path that is not in the package is probably misspelt: refused. Safe: only installs."""
+    """Install the files of that kind in its folder (``config/*.yaml``), or a folder's files
+    (DAT006 reports only paths the package has; DAT012 the others). Safe: only installs."""
     at = {(f.span.path, f.span.line, f.span.col) for f in findings}
     paths = dict.fromkeys(
         posixpath.normpath(posixpath.join(*ref.parts)) for launch in package.launch_files
@@ -194,11 +194,8 @@ def launch_resources(package: Package, findings: list[Finding]) -> Iterator[Fix 
             yield from _offer(package, f"Install `{pattern}`",
                               lambda doc, f=folder, p=pattern: doc.add_data_files(
                                   f, p, package.name))
-        elif is_folder(package, path):
-            yield from _folder_files(package, path)
         else:
-            yield Refusal(f"`{path}` is not a file of the package: fix the path in the launch "
-                          "file or add the file.")
+            yield from _folder_files(package, path)
 
 
 def _folder_files(package: Package, folder: str) -> Iterator[Fix | Refusal]:

@@ -5,8 +5,11 @@ from __future__ import annotations
 import posixpath
 from collections.abc import Iterator
 
+from pkgtool.model.installed import installed_data
+from pkgtool.model.launch import FileRef, LaunchFile
 from pkgtool.model.package import Package
 from pkgtool.model.setup_py import DataFile, DataSource
+from pkgtool.rules.setup_values import checked_setup
 
 MARKER_FOLDER = "share/ament_index/resource_index/packages"
 """Where an ament_python package installs its ament index marker."""
@@ -29,3 +32,39 @@ def is_folder(package: Package, path: str) -> bool:
     """True when ``path`` is a folder of the package (it holds files)."""
     prefix = path.rstrip("/") + "/"
     return any(f.startswith(prefix) for f in package.files)
+
+
+def uninstalled_launch_resources(package: Package
+                                 ) -> Iterator[tuple[LaunchFile, FileRef, str, dict[str, str]]]:
+    """Each file an installed launch file reads from this package's share folder that
+    data_files installs neither itself nor a folder of: the launch file, the reference, the
+    path relative to the share folder (``config/params.yaml``), and what data_files installs.
+    Nothing when data_files is not known statically; nothing for a path only parameter files
+    of nodes never started use (``mux = Node(..., parameters=[path])`` left out of the
+    LaunchDescription: the launch never reads it)."""
+    installed = installed_data(package) if checked_setup(package) else None
+    if installed is None:
+        return
+    share = f"share/{package.name}"
+    shared = {source for target, source in installed.items() if target.startswith(share + "/")}
+    for launch in package.launch_files:
+        if launch.path not in shared:
+            continue
+        unread = _only_unused_nodes_read(launch)
+        for ref in launch.files:
+            if ref.package != package.name or not ref.parts or \
+                    (ref.package, ref.parts) in unread:
+                continue
+            target = posixpath.normpath(posixpath.join(share, *ref.parts))
+            if target in installed or any(t.startswith(target + "/") for t in installed):
+                continue
+            yield launch, ref, posixpath.relpath(target, share), installed
+
+
+def _only_unused_nodes_read(launch: LaunchFile) -> set[tuple[str | None, tuple[str, ...]]]:
+    """The share files of ``launch`` given as parameters only to nodes it never starts."""
+    def files(unused: bool) -> set[tuple[str | None, tuple[str, ...]]]:
+        return {(ref.package, ref.parts) for node in launch.nodes if node.unused is unused
+                for ref in node.parameter_files}
+
+    return files(True) - files(False)

@@ -2,14 +2,12 @@
 
 from __future__ import annotations
 
-import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.installed import installed_data
 from pkgtool.model.package import Package
+from pkgtool.rules.data_files.common import is_folder, uninstalled_launch_resources
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup_values import checked_setup
 
 
 @rule("DAT006", "uninstalled-launch-resource", Severity.WARNING,
@@ -22,7 +20,8 @@ def uninstalled_launch_resource(package: Package) -> Iterator[Hit]:
     For each launch file data_files installs, looks at the paths it builds from this
     package's share folder (`get_package_share_directory('<pkg>')`, `FindPackageShare`,
     `$(find-pkg-share <pkg>)` joined with static parts, e.g. `config/params.yaml`) and
-    reports those that data_files does not install (neither the file nor a folder holding it).
+    reports those that data_files does not install (neither the file nor a folder holding it)
+    while the package has them. A file the package does not have at all is DAT012's.
 
     ## Why is this bad?
     The launch file starts, then fails on the missing parameter file, URDF or RViz config,
@@ -39,20 +38,8 @@ def uninstalled_launch_resource(package: Package) -> Iterator[Hit]:
     (os.path.join('share', package_name, 'config'), glob('config/*.yaml')),
     ```
     """
-    installed = installed_data(package) if checked_setup(package) else None
-    if installed is None:
-        return
     share = f"share/{package.name}"
-    shared = {source for target, source in installed.items() if target.startswith(share + "/")}
-    for launch in package.launch_files:
-        if launch.path not in shared:
-            continue
-        for ref in launch.files:
-            if ref.package != package.name or not ref.parts:
-                continue
-            target = posixpath.normpath(posixpath.join(share, *ref.parts))
-            if target in installed or any(t.startswith(target + "/") for t in installed):
-                continue
-            relative = posixpath.relpath(target, share)
+    for launch, ref, relative, _ in uninstalled_launch_resources(package):
+        if package.has_file(relative) or is_folder(package, relative):
             yield Hit(ref.span, f"`{relative}` is not installed to `{share}`, but "
                                 f"`{launch.path}` uses it")

@@ -85,7 +85,7 @@ def config_glob_wrong_extension(root: Path) -> None:
     edit(root, SETUP, "glob('config/*.yaml')", "glob('config/*.yml')")
 
 
-@case("DAT006", "launch/base_pkg.launch.py", "'config', 'param.yaml'")
+@case("DAT012", "launch/base_pkg.launch.py", "'config', 'param.yaml'")
 def launch_reads_misspelled_config(root: Path) -> None:
     edit(root, "launch/base_pkg.launch.py", "'params.yaml'", "'param.yaml'")
 

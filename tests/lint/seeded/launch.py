@@ -86,7 +86,7 @@ def xml_launch_not_well_formed(root: Path) -> None:
         """)
 
 
-@case("DAT006", XML_LAUNCH, "config/parameters.yaml")
+@case("DAT012", XML_LAUNCH, "config/parameters.yaml")
 def xml_launch_reads_missing_config(root: Path) -> None:
     _other_launch(root, XML_LAUNCH, """
         <launch>
@@ -193,7 +193,7 @@ def node_without_executable(root: Path) -> None:
     edit(root, PY, "            executable='talker',\n", "")
 
 
-@case("DAT006", PY, "'robot.launch.py'")
+@case("DAT012", PY, "'robot.launch.py'")
 def include_of_own_launch_file_that_does_not_exist(root: Path) -> None:
     edit(root, PY, "    return LaunchDescription([\n", """\
     robot = PathJoinSubstitution([FindPackageShare('base_pkg'), 'launch', 'robot.launch.py'])
