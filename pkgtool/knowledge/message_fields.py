@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import difflib
 import re
+from collections.abc import Mapping
 from functools import cache
 
 from pkgtool.knowledge.interfaces import NO_COMPANIONS
@@ -72,8 +73,12 @@ def _nested_names(distro: str) -> dict[str, str]:
 @cache
 def _message(name: str, distro: str) -> Message | None:
     text = _entries(distro).get(name)
-    if text is None:
-        return None
+    return None if text is None else _parsed(name, text, distro)
+
+
+@cache
+def _parsed(name: str, text: str, distro: str) -> Message:
+    """The message ``name`` whose table entry is ``text``."""
     fields: dict[str, str] = {}
     constants = []
     for word in text.split():
@@ -85,9 +90,12 @@ def _message(name: str, distro: str) -> Message | None:
     return Message(name, fields, frozenset(constants), distro)
 
 
-def message_of(dotted: str, distro: str = DEFAULT_DISTRO) -> Message | None:
+def message_of(dotted: str, distro: str = DEFAULT_DISTRO,
+               defined: Mapping[str, str] | None = None) -> Message | None:
     """The message class a dotted name stands for (``std_msgs.msg.String``,
-    ``std_srvs.srv.Trigger.Request``, ``pkg.action.A.Goal``); None when not known."""
+    ``std_srvs.srv.Trigger.Request``, ``pkg.action.A.Goal``); None when not known. With
+    ``defined`` (``pkg/kind/Class`` -> entry: the messages a workspace package's own interface
+    files define), the class is looked up there instead of in the table."""
     parts = dotted.split(".")
     if len(parts) == 3 and parts[1] != "msg" and distro in NO_COMPANIONS:
         return None  # ``Trigger_Request``: not exported there
@@ -95,7 +103,11 @@ def message_of(dotted: str, distro: str = DEFAULT_DISTRO) -> Message | None:
         parts = [*parts[:2], f"{parts[2]}_{parts[3]}"]
     if len(parts) != 3 or parts[1] not in ("msg", "srv", "action"):
         return None
-    return _message("/".join(parts), distro)
+    name = "/".join(parts)
+    if defined is None:
+        return _message(name, distro)
+    text = defined.get(name)
+    return None if text is None else _parsed(name, text, distro)
 
 
 def constructor_options(distro: str = DEFAULT_DISTRO) -> frozenset[str]:

@@ -22,6 +22,7 @@ from pathlib import Path
 from pkgtool.knowledge.tables import DEFAULT_DISTRO
 from pkgtool.model.cmake_interfaces import (installed_python_packages, with_included,
                                             with_listed)
+from pkgtool.model.interface_definitions import definitions
 from pkgtool.model.files import list_files, read_bytes
 from pkgtool.model.memo import per_object
 from pkgtool.records import field, record
@@ -36,11 +37,14 @@ _NOT_MODULES = frozenset({"test", "tests", "launch", "resource", "build", "insta
 
 @record
 class WorkspacePackage:
-    """Another package of the workspace: its interfaces (kind -> names) and Python packages."""
+    """Another package of the workspace: its interfaces (kind -> names), Python packages, and
+    the fields and constants of the message classes its ``.msg``, ``.srv`` and ``.action``
+    files define (``pkg/kind/Class`` -> entry: :mod:`pkgtool.model.interface_definitions`)."""
 
     name: str
     interfaces: Mapping[str, frozenset[str]] = field(default_factory=dict)
     modules: frozenset[str] = frozenset()
+    messages: Mapping[str, str] = field(default_factory=dict)
 
 
 @record
@@ -112,6 +116,7 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
     name = found.group(1) if found else root.name
     kinds: dict[str, set[str]] = {}
     modules: set[str] = set()
+    defined: dict[tuple[str, str], str | None] = {}
     cmake = None
     listed = tuple(list_files(root, _index_depth) if files is None else files)
     for path in listed:
@@ -122,13 +127,30 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
             kind_and_stem = interface_file(path)
             if kind_and_stem is not None:
                 kinds.setdefault(kind_and_stem[0], set()).add(kind_and_stem[1])
+                # two files of one interface (msg/a/X.msg, msg/b/X.msg): neither is known
+                defined[kind_and_stem] = None if kind_and_stem in defined or \
+                    path.endswith(".idl") else path
         elif path == "CMakeLists.txt":
             cmake = _read(os.path.join(base, path))
     folders = {kind: frozenset(names) for kind, names in kinds.items()}
     if cmake is not None:
         cmake = with_included(cmake, lambda path: _read(os.path.join(base, path)))
         modules |= installed_python_packages(cmake)
-    return WorkspacePackage(name, with_listed(folders, cmake, listed) or {}, frozenset(modules))
+    interfaces = with_listed(folders, cmake, listed) or {}
+    return WorkspacePackage(name, interfaces, frozenset(modules),
+                            _messages(base, name, interfaces, defined))
+
+
+def _messages(base: str, name: str, interfaces: Mapping[str, frozenset[str]],
+              defined: Mapping[tuple[str, str], str | None]) -> dict[str, str]:
+    """The message classes of the package's interfaces that one file of its own defines."""
+    found: dict[str, str] = {}
+    for (kind, stem), path in sorted(defined.items(), key=lambda item: item[0]):
+        listed = path is not None and stem in interfaces.get(kind, ())
+        text = _read(os.path.join(base, path)) if listed and path is not None else None
+        if text is not None:
+            found.update(definitions(name, kind, stem, text))
+    return found
 
 
 def _is_module(folders: list[str]) -> bool:

@@ -132,7 +132,7 @@ def test_the_workspace_index_is_kept_with_settled_packages_and_read_again_on_cha
     first = _lint(ws).stdout
     assert "DEP001" in first
     alpha_root = str(ws / "src" / "alpha")
-    assert _entries(ws / ".pkgtool_cache")[alpha_root]["index"] == ["alpha", {}, ["alpha"]]
+    assert _entries(ws / ".pkgtool_cache")[alpha_root]["index"] == ["alpha", {}, ["alpha"], {}]
     assert _lint(ws).stdout == first  # the index of both packages comes from the cache
     pack = ws / ".pkgtool_cache" / "lint" / pack_of(alpha_root)
     whole = json.loads(pack.read_text())

@@ -399,15 +399,17 @@ def _parameter_instance(tree: ast.Module, function: Function, name: str, message
 
 def known_messages(package: Package, index: Index, distro: str | None = None) -> Known:
     """What a callee stands for: a message class of a package the table speaks for on
-    ``distro`` (the target's when None; not a ROS 1 package, not one of the workspace's own
-    packages)."""
+    ``distro`` (the target's when None), or one a package of the workspace defines in its own
+    interface files (a workspace package of a name the table knows is never the table's);
+    nothing in a ROS 1 package."""
     manifest = package.manifest
     ros1 = manifest is not None and manifest.is_ros1
     distro = distro or package.context.distro
 
     def known(func: ast.expr) -> Message | None:
         dotted = index.qualified(func)
-        if ros1 or dotted is None or package.context.workspace.get(dotted.split(".")[0]):
+        if ros1 or dotted is None:
             return None
-        return message_of(dotted, distro)
+        sibling = package.context.workspace.get(dotted.split(".")[0])
+        return message_of(dotted, distro, None if sibling is None else sibling.messages)
     return known

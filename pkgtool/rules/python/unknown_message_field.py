@@ -95,7 +95,13 @@ def unknown_message_field(package: Package) -> Iterator[Hit]:
     once in the module and never rebinds the parameter; fields of fields are followed while
     their message class is certain (not after `msg.pose = ...`). Names starting with `_`,
     constants (`GoalStatus.STATUS_SUCCEEDED`), code inside `try` blocks that catch
-    `AttributeError`, and names the module passes to `hasattr` are never reported.
+    `AttributeError`, names the module passes to `hasattr` and annotations Python never
+    evaluates (`request: Fibonacci.Request = goal_handle.request` in a function) are never
+    reported.
+    The messages, services and actions a package of the workspace defines in its own `.msg`,
+    `.srv` and `.action` files (`tutorial_interfaces/msg/Num.msg` beside the linted package)
+    are checked the same way, on every target, with the fields those files declare; `.idl`
+    files, and interfaces two files define, are not read.
 
     ## Why is this bad?
     Message classes have `__slots__`: setting or reading a field that does not exist raises
@@ -163,7 +169,8 @@ _COMPANIONS = {"srv": ("Request", "Response", "Event"),
 def _wrong_class_attributes(index: Index, known: Known, probed: frozenset[str]
                             ) -> Iterator[tuple[ast.Attribute, str, str]]:
     """Attributes read on a known interface class that it does not have (a service's
-    ``Trigger.request``, a message constant misspelt), with the class and a near miss."""
+    ``Trigger.request``, a message constant misspelt), with the class and a near miss; not in
+    annotations Python never evaluates (``request: Fibonacci.Request = ...`` in a function)."""
     for node in index.attributes:
         dotted = index.qualified(node.value)
         if dotted is None or node.attr.startswith("_"):  # not a known class: no import names it
@@ -172,14 +179,15 @@ def _wrong_class_attributes(index: Index, known: Known, probed: frozenset[str]
         companions = _COMPANIONS.get(kind[1], ()) if len(kind) == 3 else ()
         if companions and known(ast.Attribute(value=node.value, attr=companions[0],
                                               ctx=ast.Load())):
-            if node.attr not in companions and not guarded(node, index, probed):
+            if node.attr not in companions and not guarded(node, index, probed) and \
+                    not index.in_unevaluated_annotation(node):
                 close = get_close_matches(node.attr, companions, n=1) or [
                     c for c in companions if c.lower() == node.attr.lower()]
                 yield node, f"`{'/'.join(kind)}`", _meant(close)
             continue
         message = known(node.value) if not companions else None
         if message is not None and not message.has(node.attr) \
-                and not guarded(node, index, probed):
+                and not guarded(node, index, probed) and not index.in_unevaluated_annotation(node):
             names = sorted([*message.constants, *message.fields])
             yield node, f"`{message.name}`", _meant(get_close_matches(node.attr, names, n=1))
 
