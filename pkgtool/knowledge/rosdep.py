@@ -30,8 +30,10 @@ ROS_MODULE_PACKAGES: dict[str, str] = {
     "tf2_ros": "tf2_ros_py",
     "urdf_parser_py": "urdfdom_py",
     "moveit": "moveit_py",
+    "hri": "pyhri",  # ament_python_install_package(hri); the released `hri` is libhri's C++
 }
-"""ROS import names whose package has another name (every other ROS import is its package)."""
+"""ROS import names whose package has another name (every other ROS import is its package).
+Most of them are Python bindings whose module takes the name of the C++ package they wrap."""
 
 NOT_ROSDEP_KEYS: dict[str, str] = {
     # pip distribution names and import names: rosdep has no such keys
