@@ -7,10 +7,11 @@ mirror such as ``/work/.mirror/<owner>+<name>/repo``) or, with ``--network``, fr
 ``https://github.com/<owner>/<name>``.
 
 ``sweep`` lints every ament_python package of the corpus in one ``pkgtool lint --format json``
-run, writes the findings to ``<corpus>/sweep.json`` and prints a count per rule and severity,
-split by the kind of repository (maintained, course, student). With ``verdicts.tsv`` (the
-triage: one line per error on a maintained package) it prints the false-error rate and every
-error that has no verdict yet.
+run (with the other packages of its repository it may use, whose findings are not counted:
+see :func:`context_packages`), writes the findings to ``<corpus>/sweep.json`` and prints a
+count per rule and severity, split by the kind of repository (maintained, course, student).
+With ``verdicts.tsv`` (the triage: one line per error on a maintained package) it prints the
+false-error rate and every error that has no verdict yet.
 
     python bench/realworld/corpus.py build [--dest DIR] [--mirror DIR] [--network]
     python bench/realworld/corpus.py sweep [--dest DIR] [--untriaged FILE]
@@ -28,6 +29,7 @@ import subprocess
 import sys
 import tempfile
 from collections import Counter
+from collections.abc import Iterator
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -37,6 +39,8 @@ VERDICTS = HERE / "verdicts.tsv"
 DEFAULT_DEST = Path(os.environ.get("PKGTOOL_CORPUS", Path.home() / ".cache" / "pkgtool-corpus"))
 DEFAULT_MIRROR = Path("/work/.mirror")
 AMENT_PYTHON = re.compile(rb"<build_type>\s*ament_python\s*</build_type>")
+DEPENDENCY = re.compile(rb"<(?:\w+_)?depend\b[^>]*>\s*([^<\s]+)\s*</")
+NAME = re.compile(rb"<name>\s*([^<\s]+)\s*</name>")
 SKIP_DIRS = {".git", "build", "install", "log", "__pycache__", "node_modules"}
 
 
@@ -149,16 +153,36 @@ def build(dest: Path, mirror: Path, network: bool) -> int:
     return failures
 
 
-def ament_python_packages(root: Path) -> list[Path]:
-    """Folders below ``root`` whose package.xml declares the ament_python build type."""
-    found = []
+def _packages(root: Path) -> Iterator[Path]:
+    """Folders below ``root`` holding a package.xml (packages do not nest)."""
     for folder, dirs, files in os.walk(root):
         dirs[:] = sorted(d for d in dirs if d not in SKIP_DIRS and not d.startswith("."))
         if "package.xml" in files:
-            if AMENT_PYTHON.search((Path(folder) / "package.xml").read_bytes()):
-                found.append(Path(folder))
-            dirs[:] = []  # packages do not nest
-    return found
+            yield Path(folder)
+            dirs[:] = []
+
+
+def ament_python_packages(root: Path) -> list[Path]:
+    """Folders below ``root`` whose package.xml declares the ament_python build type."""
+    return [folder for folder in _packages(root)
+            if AMENT_PYTHON.search((folder / "package.xml").read_bytes())]
+
+
+def context_packages(root: Path, python: list[Path]) -> list[Path]:
+    """The other packages of the repository at ``root`` that its ament_python packages may use:
+    those they declare, and interface packages (whose generated modules they may import).
+
+    Users lint a repository, whose other packages are then part of the workspace pkgtool
+    sees; the sweep lints these in the same run for that context only, and counts no finding
+    of theirs. Without them, a package of one repository would see another repository's
+    package of the same name (the sweep is one run).
+    """
+    wanted = {name for folder in python
+              for name in DEPENDENCY.findall((folder / "package.xml").read_bytes())}
+    return [folder for folder in _packages(root) if folder not in python and (
+        any((folder / kind).is_dir() for kind in ("msg", "srv", "action"))
+        or ((found := NAME.search((folder / "package.xml").read_bytes()))
+            and found.group(1) in wanted))]
 
 
 def _lint(packages: list[Path]) -> list[dict]:
@@ -192,7 +216,11 @@ def sweep(dest: Path, untriaged: Path | None) -> None:
     repos = {repo.folder: repo for repo in corpus}
     packages = {repo.folder: ament_python_packages(dest / repo.folder) for repo in corpus}
     everything = [package for found in packages.values() for package in found]
-    findings = _lint(everything)
+    context = [other for folder, found in packages.items()
+               for other in context_packages(dest / folder, found)]
+    counted = tuple(f"{package}{os.sep}" for package in everything)
+    findings = [finding for finding in _lint(everything + context)
+                if f"{finding['path']}{os.sep}".startswith(counted)]
     (dest / "sweep.json").write_text(json.dumps(findings, indent=1))
     kinds = Counter(repos[folder].kind for folder, found in packages.items() for _ in found)
     print(f"corpus: {len(corpus)} repositories, {len(everything)} ament_python packages "
