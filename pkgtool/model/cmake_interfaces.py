@@ -77,16 +77,24 @@ def listed_interfaces(text: str, files: Iterable[str] = ()) -> ListedInterfaces:
     return ListedInterfaces(frozenset(files), is_open)
 
 
+_PYTHON_MODULE_COMMANDS = frozenset({"ament_python_install_package", "pybind11_add_module",
+                                     "nanobind_add_module"})
+"""Commands whose first argument is a name Python imports: the package
+``ament_python_install_package`` installs, the extension module pybind11 or nanobind builds
+(the target's name is the module's: ``PYBIND11_MODULE(name, m)`` must repeat it)."""
+
+
 def installed_python_packages(text: str) -> frozenset[str]:
-    """The Python packages the ``ament_python_install_package`` calls of ``text`` install.
+    """The Python packages and extension modules ``text`` builds (:data:`_PYTHON_MODULE_COMMANDS`).
 
     The first argument names the package as Python imports it, wherever ``PACKAGE_DIR`` puts
-    its source (``ament_python_install_package(tb_tools PACKAGE_DIR python/tb_tools)``).
+    its source (``ament_python_install_package(tb_tools PACKAGE_DIR python/tb_tools)``), or
+    the extension module (``pybind11_add_module(planner_bindings src/bindings.cpp)``).
     """
     calls = _calls(text)
     variables = _variables(calls, frozenset())
     return frozenset(value for name, args in calls
-                     if name == "ament_python_install_package" and args
+                     if name in _PYTHON_MODULE_COMMANDS and args
                      for value in _expand(args[0], variables, _DEPTH)
                      if value and value.isidentifier())
 

@@ -100,10 +100,11 @@ def test_a_launch_folder_does_not_hide_the_launch_package(tmp_path: Path) -> Non
 def test_cmake_installed_python_packages_are_own_modules(tmp_path: Path) -> None:
     cmake = ("project(demo)\n# ament_python_install_package(commented_out)\n"
              "ament_python_install_package(${PROJECT_NAME})\n"
-             "ament_python_install_package(\n  steps PACKAGE_DIR python/steps)\n")
+             "ament_python_install_package(\n  steps PACKAGE_DIR python/steps)\n"
+             "pybind11_add_module(_planner src/bindings.cpp)\n")
     package = make_package(tmp_path / "demo", {
         "package.xml": _manifest(), "CMakeLists.txt": cmake, "python/steps/__init__.py": ""})
-    assert {"demo", "steps"} <= own_modules(package)
+    assert {"demo", "steps", "_planner"} <= own_modules(package)
     assert "commented_out" not in own_modules(package)
 
 
