@@ -41,11 +41,17 @@ def uninstalled_launch_resources(package: Package
     path relative to the share folder (``config/params.yaml``), and what data_files installs.
     Nothing when data_files is not known statically; nothing for a path only parameter files
     of nodes never started use (``mux = Node(..., parameters=[path])`` left out of the
-    LaunchDescription: the launch never reads it)."""
-    installed = installed_data(package) if checked_setup(package) else None
-    if installed is None:
+    LaunchDescription: the launch never reads it), nor for one data_files lists from a source
+    that does not exist (DAT001's)."""
+    setup = checked_setup(package)
+    installed = installed_data(package) if setup else None
+    if installed is None or setup is None:
         return
     share = f"share/{package.name}"
+    listed = {posixpath.normpath(posixpath.join(entry.destination,
+                                                posixpath.basename(source.pattern)))
+              for entry in setup.data_files or () if not entry.sources_is_text
+              for source in entry.sources if not source.is_glob}
     shared = {source for target, source in installed.items() if target.startswith(share + "/")}
     for launch in package.launch_files:
         if launch.path not in shared:
@@ -56,7 +62,8 @@ def uninstalled_launch_resources(package: Package
                     (ref.package, ref.parts) in unread:
                 continue
             target = posixpath.normpath(posixpath.join(share, *ref.parts))
-            if target in installed or any(t.startswith(target + "/") for t in installed):
+            if target in installed or target in listed or \
+                    any(t.startswith(target + "/") for t in installed):
                 continue
             yield launch, ref, posixpath.relpath(target, share), installed
 
