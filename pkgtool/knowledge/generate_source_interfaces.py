@@ -4,7 +4,7 @@ interface files of ROS packages that have no PyPI wheel, read from their reposit
 Courses use interface packages no wheel installs (turtlesim, example_interfaces, nav2_msgs,
 tf2_msgs, irobot_create_msgs): their ``.msg``, ``.srv`` and ``.action`` files are read at the
 commits :data:`PINS` names for each distribution, with the reading of
-:mod:`pkgtool.model.interface_definitions` (checked against the generated classes of every
+:mod:`pkgtool.knowledge.interface_definitions` (checked against the generated classes of every
 wheel's interface). A package is left out of a distribution when one of its interface files
 is not understood (an ``.idl`` file, a line the reading does not know): its names and fields
 must be complete or absent. Names and fields the distributions share take both flags; where
@@ -24,7 +24,7 @@ import tempfile
 from pathlib import Path, PurePosixPath
 
 from pkgtool.knowledge.tables import DATA, flags_of, render, write
-from pkgtool.model.interface_definitions import definitions
+from pkgtool.knowledge.interface_definitions import definitions
 
 KINDS = ("msg", "srv", "action")
 PACKAGES = {"turtlesim": "ros/ros_tutorials", "example_interfaces": "ros2/example_interfaces",

@@ -19,10 +19,10 @@ from collections import Counter
 from collections.abc import Iterable, Mapping
 from pathlib import Path
 
+from pkgtool.knowledge.interface_definitions import definitions
 from pkgtool.knowledge.tables import DEFAULT_DISTRO
 from pkgtool.model.cmake_interfaces import (installed_python_packages, with_included,
                                             with_listed)
-from pkgtool.model.interface_definitions import definitions
 from pkgtool.model.files import list_files, read_bytes
 from pkgtool.model.memo import per_object
 from pkgtool.records import field, record
@@ -39,7 +39,7 @@ _NOT_MODULES = frozenset({"test", "tests", "launch", "resource", "build", "insta
 class WorkspacePackage:
     """Another package of the workspace: its interfaces (kind -> names), Python packages, and
     the fields and constants of the message classes its ``.msg``, ``.srv`` and ``.action``
-    files define (``pkg/kind/Class`` -> entry: :mod:`pkgtool.model.interface_definitions`)."""
+    files define (``pkg/kind/Class`` -> entry: :mod:`pkgtool.knowledge.interface_definitions`)."""
 
     name: str
     interfaces: Mapping[str, frozenset[str]] = field(default_factory=dict)

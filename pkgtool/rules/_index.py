@@ -114,6 +114,8 @@ RULES = {
     "PYC031": ("parameter-object-as-value", "error", True, "python.parameter_object_as_value"),
     "PYC032": ("path-without-separator", "error", True, "python.path_without_separator"),
     "PYC033": ("too-many-rclpy-arguments", "error", True, "python.too_many_rclpy_arguments"),
+    "PYC035": ("blocking-call-in-callback", "error", True, "python.blocking_call_in_callback"),
+    "PYC036": ("future-result-too-early", "error", True, "python.future_result_too_early"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

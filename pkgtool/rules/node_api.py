@@ -13,6 +13,7 @@ from collections.abc import Collection, Iterator
 
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
+from pkgtool.model.span import Span
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
 PARAMETERS = {
@@ -144,3 +145,9 @@ def node_constructions(index: Index) -> Iterator[ast.Call]:
                 id(index.enclosing_class(call)) in node_classes:
             yield call
     yield from (c for c in index.calls if index.qualified(c.func) in NODE_CLASSES)
+
+
+def spin_cause(where: Span) -> str:
+    """The root cause "the node is spun inside its own callback here": PYC035 states it; a
+    missing timeout there (PYC005) is its consequence (a timeout would not mend the call)."""
+    return f"spins-inside-callback:{where.path}:{where.line}:{where.col}"

@@ -10,7 +10,7 @@ import pytest
 from pkgtool.cache.serial import index_entry, index_record
 from pkgtool.knowledge.tables import read
 from pkgtool.model.context import read_workspace_package
-from pkgtool.model.interface_definitions import definitions
+from pkgtool.knowledge.interface_definitions import definitions
 
 
 def _installed_interface_files() -> list[Path]:

@@ -10,6 +10,7 @@ from pkgtool.model.ast_nodes import descendants
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.rules.node_api import spin_cause
 from pkgtool.rules.registry import rule
 
 _NAME = "spin_until_future_complete"
@@ -96,6 +97,6 @@ def spin_without_timeout(package: Package) -> Iterator[Hit]:
                 local = _request_futures(function) if function is not None else set()
                 if _dotted(future) not in attributes | local:
                     continue
-            yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
-                      f"`{_NAME}` has no `timeout_sec`: it waits forever if the server never "
-                      f"answers")
+            where = Span(module.path, node.lineno, node.col_offset + 1)
+            yield Hit(where, f"`{_NAME}` has no `timeout_sec`: it waits forever if the server "
+                             "never answers", cause=spin_cause(where), consequence=True)

@@ -454,3 +454,23 @@ def test_imports_a_renamed_class(root: Path) -> None:
 def subscription_callback_group_by_position(root: Path) -> None:
     edit(root, LISTENER, "String, topic, self.on_message, 10)",
          "String, topic, self.on_message, 10, None)")
+
+
+@case("PYC035", SRV, "self.client.call(Trigger.Request())")
+def synchronous_call_in_service_callback(root: Path) -> None:
+    edit(root, SRV, "        self.service = self.create_service(Trigger, name, self.on_request)\n",
+         "        self.service = self.create_service(Trigger, name, self.on_request)\n"
+         "        self.client = self.create_client(Trigger, 'upstream')\n")
+    edit(root, SRV, "        self.calls += 1\n",
+         "        self.calls += 1\n"
+         "        upstream = self.client.call(Trigger.Request())\n"
+         "        self.get_logger().info(upstream.message)\n")
+
+
+@case("PYC036", SRV, "future.result()")
+def response_read_before_it_arrives(root: Path) -> None:
+    edit(root, SRV, "        self.service = self.create_service(Trigger, name, self.on_request)\n",
+         "        self.service = self.create_service(Trigger, name, self.on_request)\n"
+         "        self.client = self.create_client(Trigger, 'upstream')\n"
+         "        future = self.client.call_async(Trigger.Request())\n"
+         "        self.get_logger().info(future.result().message)\n")
