@@ -1,4 +1,4 @@
-"""The callbacks given to rclpy's API (PYC013, PYC024)."""
+"""The callbacks given to rclpy's API (PYC013, PYC024, PYC026, PYC035, PYC037, PYC038)."""
 
 from __future__ import annotations
 
@@ -9,6 +9,7 @@ from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.rules.node_api import (ACTION_SERVER_CALLBACKS, ACTION_SERVERS, CALLBACKS,
                                     argument, node_api_calls)
+from pkgtool.rules.python._message_instances import Function, callback_function
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
 
@@ -39,3 +40,18 @@ def _arguments(package: Package) -> Iterator[Argument]:
                     value = argument(call, ACTION_SERVER_CALLBACKS[0], name)
                     if value is not None:
                         yield module.path, value, "ActionServer()", name, index, tree
+
+
+def execute_callbacks(package: Package
+                      ) -> Iterator[tuple[str, ast.expr, Function, str, Index]]:
+    """The functions certainly given to ``ActionServer`` as execute callbacks (PYC037,
+    PYC038): path, the argument, the function, its goal handle parameter and the index."""
+    for path, value, api, name, index, tree in callback_arguments(package):
+        found = callback_function(value, tree, index) \
+            if api == "ActionServer()" and name == "execute_callback" else None
+        if found is None:
+            continue
+        function, skipped = found
+        parameters = [*function.args.posonlyargs, *function.args.args]
+        if len(parameters) > skipped:
+            yield path, value, function, parameters[skipped].arg, index
