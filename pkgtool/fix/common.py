@@ -2,14 +2,17 @@
 
 from __future__ import annotations
 
+import ast
 from collections.abc import Callable, Iterator, Sequence
 
 from pkgtool.edit.changes import read_source
 from pkgtool.edit.core import Edit, EditError, Fix
 from pkgtool.edit.manifest import ManifestDoc
+from pkgtool.edit.pysource import PyDoc
 from pkgtool.edit.setup_py import SetupDoc
 from pkgtool.edit.source import Source
 from pkgtool.edit.xml_scan import Element
+from pkgtool.findings import Finding
 from pkgtool.fix.registry import Refusal
 from pkgtool.model.package import Package
 
@@ -51,6 +54,28 @@ def cfg_source(package: Package) -> Source | None:
         return read_source(package.root, "setup.cfg")
     except EditError:
         return None
+
+
+def python_nodes(package: Package, findings: list[Finding]
+                 ) -> Iterator[tuple[PyDoc, Finding, list[ast.AST]]]:
+    """Each finding in a Python file with the file and the ``ast`` nodes that start where it
+    points (outermost first); files that cannot be read or parsed are skipped."""
+    for path in sorted({f.span.path for f in findings if f.span.path.endswith(".py")}):
+        try:
+            source = read_source(package.root, path)
+            doc = PyDoc(source) if source is not None else None
+        except EditError:
+            continue
+        if doc is None:
+            continue
+        starts: dict[tuple[int, int], list[ast.AST]] = {}
+        for node in ast.walk(doc.tree):
+            if hasattr(node, "col_offset"):
+                where = (node.lineno, node.col_offset + 1)  # type: ignore[attr-defined]
+                starts.setdefault(where, []).append(node)
+        for finding in findings:
+            if finding.span.path == path:
+                yield doc, finding, starts.get((finding.span.line, finding.span.col), [])
 
 
 def child_at(doc: ManifestDoc, line: int) -> Element | None:

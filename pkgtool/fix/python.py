@@ -1,15 +1,30 @@
-"""Fixer of Python code: a callback called where it should be passed loses its ``()``."""
+"""Fixers of Python code: a called callback, a misspelt logger method, an int for a float
+field, rclpy's Time for a message, a ``Parameter`` for its value, a path missing its ``/``."""
 
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Iterator
 
-from pkgtool.edit.changes import read_source
-from pkgtool.edit.core import Edit, EditError, Fix
+from pkgtool.edit.core import Edit, Fix
+from pkgtool.edit.pysource import PyDoc
 from pkgtool.findings import Finding
+from pkgtool.fix.common import python_nodes
 from pkgtool.fix.registry import fixer
 from pkgtool.model.package import Package
+from pkgtool.rules.python.field_value_type import TO_MSG, float_fix
+from pkgtool.rules.python.invalid_logger_call import ATTRIBUTES, meant_level
+from pkgtool.rules.python.path_without_separator import joins
+from pkgtool.rules.syntax_trees import index_of
+
+_DECIMAL = re.compile(r"[0-9][0-9_]*")
+_OPENING = re.compile(r"[rRbBuUfF]*(\"\"\"|'''|\"|')")
+"""A string literal's prefix and opening quotes."""
+
+
+def _insert(doc: PyDoc, at: int, text: str) -> Edit:
+    return Edit(doc.source.path, at, at, text)
 
 
 @fixer("PYC013", "Pass the callback without calling it")
@@ -17,21 +32,90 @@ def callback_called(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Delete the empty ``()`` after the callback PYC013 reports (``self.tick()`` becomes
     ``self.tick``). Safe: the called function returns None, so rclpy got None; calls with
     arguments are left to the user."""
-    for path in sorted({f.span.path for f in findings}):
-        try:
-            source = read_source(package.root, path)
-            tree = ast.parse(source.text) if source is not None else None
-        except (EditError, SyntaxError, ValueError):
+    for doc, _, nodes in python_nodes(package, findings):
+        call = next((n for n in nodes if isinstance(n, ast.Call)), None)
+        if call is not None and isinstance(call.func, (ast.Name, ast.Attribute)) and \
+                not call.args and not call.keywords:
+            name = ast.unparse(call.func)
+            yield Fix(f"Pass `{name}` instead of `{name}()`",
+                      (Edit(doc.source.path, doc.end(call.func), doc.end(call), ""),))
+
+
+@fixer("PYC016", "Call the logging method the misspelt one is close to")
+def logger_method(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename a method rclpy's logger does not have when exactly one of its logging methods
+    is spelled like it (``err`` becomes ``error``; ``warn`` and ``warning`` count as one).
+    Safe: the call raised AttributeError. Calls with several arguments, or methods close to
+    none or to several, are left to the user."""
+    for doc, _, nodes in python_nodes(package, findings):
+        call = next((n for n in nodes if isinstance(n, ast.Call)), None)
+        func = call.func if call is not None else None
+        if not isinstance(func, ast.Attribute) or func.attr in ATTRIBUTES:
             continue
-        if source is None or tree is None:
+        meant, end = meant_level(func.attr), doc.end(func)
+        if meant and doc.text[end - len(func.attr):end] == func.attr:
+            yield Fix(f"Call `{meant}` instead of `{func.attr}`",
+                      (Edit(doc.source.path, end - len(func.attr), end, meant),))
+
+
+@fixer("PYC025", "Give a float field a float; convert rclpy's Time to a message")
+def field_value(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Append ``.0`` to a decimal int literal a float field is given (``x = 1`` becomes ``x =
+    1.0``), convert an int name or attribute with ``float()`` (``x = float(turns)``), and
+    append ``.to_msg()`` to rclpy's ``Time`` or ``Duration`` given to a message field. Safe:
+    the assignment raised, or published garbage. Other values need the user."""
+    for doc, finding, nodes in python_nodes(package, findings):
+        value = nodes[0] if nodes else None
+        if not isinstance(value, ast.expr) or finding.fix is None:
             continue
-        places = {(f.span.line, f.span.col - 1) for f in findings if f.span.path == path}
-        for node in ast.walk(tree):
-            if isinstance(node, ast.Call) and (node.lineno, node.col_offset) in places and \
-                    isinstance(node.func, (ast.Name, ast.Attribute)) and \
-                    not node.args and not node.keywords and node.end_lineno is not None and \
-                    node.func.end_lineno is not None and node.end_col_offset is not None:
-                start = source.offset_of_utf8(node.func.end_lineno, node.func.end_col_offset or 0)
-                end = source.offset_of_utf8(node.end_lineno, node.end_col_offset)
-                name = ast.unparse(node.func)
-                yield Fix(f"Pass `{name}` instead of `{name}()`", (Edit(path, start, end, ""),))
+        number = value.operand if isinstance(value, ast.UnaryOp) else value
+        start, end = doc.start(value), doc.end(value)
+        if finding.fix == float_fix(value, None) and _DECIMAL.fullmatch(doc.segment(number)):
+            yield Fix(f"Write `{ast.unparse(value)}.0`", (_insert(doc, doc.end(number), ".0"),))
+        elif finding.fix == float_fix(value, "int") and \
+                isinstance(value, (ast.Name, ast.Attribute)):
+            yield Fix(f"Write `float({ast.unparse(value)})`",
+                      (_insert(doc, start, "float("), _insert(doc, end, ")")))
+        elif finding.fix == TO_MSG and isinstance(value, (ast.Call, ast.Name, ast.Attribute)):
+            yield Fix(f"Convert `{ast.unparse(value)}` with `.to_msg()`",
+                      (_insert(doc, doc.end(value), ".to_msg()"),))
+
+
+@fixer("PYC031", "Take the parameter's value with `.value`")
+def parameter_value(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Append ``.value`` to the ``Parameter`` object used as a value
+    (``self.get_parameter('period')`` becomes ``self.get_parameter('period').value``). Safe
+    where it raised TypeError (arithmetic, ``create_timer``, ``float()``); a comparison, which
+    was always false, then compares the value: that fix is unsafe."""
+    for doc, finding, nodes in python_nodes(package, findings):
+        value = next((n for n in nodes if isinstance(n, (ast.Call, ast.Name, ast.Attribute))
+                      and finding.message.startswith(f"`{ast.unparse(n)}` ")), None)
+        if value is None:
+            continue
+        compared = any(isinstance(n, ast.Compare) and (n.left is value or value in n.comparators)
+                       for n in ast.walk(doc.tree))
+        yield Fix(f"Take `{ast.unparse(value)}.value`",
+                  (_insert(doc, doc.end(value), ".value"),), safe=not compared)
+
+
+@fixer("PYC032", "Put the missing `/` after the package's folder")
+def path_separator(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Insert ``/`` at the start of the relative path joined to the folder
+    (``share + 'config/a.yaml'`` becomes ``share + '/config/a.yaml'``, ``f'{share}config'``
+    becomes ``f'{share}/config'``). Safe: the path named no file before."""
+    for doc, _, nodes in python_nodes(package, findings):
+        ids = {id(n) for n in nodes}
+        for node, left, _, text in joins(doc.tree, index_of(doc.tree)):
+            at = _after_folder(doc, node, left) if id(node) in ids else None
+            if at is not None and doc.text.startswith(text[:1], at):
+                yield Fix(f"Write `/{text}`", (_insert(doc, at, "/"),))
+
+
+def _after_folder(doc: PyDoc, node: ast.expr, left: ast.expr) -> int | None:
+    """Where the relative path joined to ``left`` starts: after the opening quote of the
+    right operand of ``+``, or after the ``}`` closing ``left``'s field of an f-string."""
+    if isinstance(node, ast.BinOp):
+        opening = _OPENING.match(doc.text, doc.start(node.right))
+        return opening.end() if opening else None
+    closing = doc.text.find("}", doc.end(left))
+    return closing + 1 if closing >= 0 else None

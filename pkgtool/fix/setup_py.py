@@ -58,6 +58,28 @@ def license_(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusa
         yield from _from_manifest(package, "license", ", ".join(x.value for x in licenses))
 
 
+@fixer("SET006", "Write package.xml's maintainer into setup.py")
+def maintainer(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
+    """``maintainer`` gets the name and ``maintainer_email`` the email of package.xml's one
+    ``<maintainer>``. Safe: only metadata changes. With several maintainers the user chooses
+    (a Refusal); a keyword that matches already is left as it is."""
+    setup, people = package.setup_py, package.manifest.maintainers if package.manifest else ()
+    if setup is None:
+        return
+    at = {(f.span.line, f.span.col) for f in findings if f.span.path == "setup.py"}
+    for keyword in ("maintainer", "maintainer_email"):
+        given = getattr(setup, keyword)
+        if given is None or (given.span.line, given.span.col) not in at:
+            continue
+        if len(people) != 1:
+            yield Refusal(f"package.xml has {len(people)} maintainers: write the one that "
+                          f"answers for the package into `{keyword}` by hand.")
+            continue
+        wanted = people[0].name if keyword == "maintainer" else people[0].email
+        if wanted:
+            yield from _from_manifest(package, keyword, wanted)
+
+
 @fixer("ENT005", "Name the entry point group `console_scripts`")
 def script_group(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
     """Rename the misspelt group key (setup.py's dict literal or setup.cfg's option). Safe:

@@ -13,22 +13,35 @@ from pkgtool.fix.registry import fixers
 FIXTURES = Path(__file__).resolve().parents[1] / "fixtures"
 CASES = [(code, case) for code in fixers() for case in sorted((FIXTURES / code / "bad").iterdir())]
 PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprecated_ids"),
-          ("LCH002", "undeclared_packages"), ("DAT008", "wrong_shapes")}
+          ("LCH002", "undeclared_packages"), ("DAT008", "wrong_shapes"),
+          ("LCH005", "foxy_python_arguments"), ("LCH005", "ros1_frontend_attributes"),
+          ("PYC016", "missing_methods"), ("PYC025", "literals_of_another_type"),
+          ("PYC025", "messages_given_other_values"), ("PYC025", "names_of_another_type")}
 """GPLv3 can mean -only or -or-later, `my_robot_description` is no known package, values
-outside `ros__parameters` belong to a node only the user knows: no fix guesses, the user
-chooses; the other findings of the case are fixed."""
+outside `ros__parameters` belong to a node only the user knows, a node without its executable
+names none, `required="true"` and YAML launch files are left to the user, `exception()` is
+close to no rclpy logging method, an int for a bool or string field or a float for an int
+field has no one right spelling: no fix guesses, the user chooses; the other findings of the
+case are fixed."""
 MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages"),
           ("MAN018", "standard_library_modules"), ("DAT001", "typo_in_path"),
-          ("DAT008", "flat_file_for_a_component_and_a_node")}
+          ("DAT008", "flat_file_for_a_component_and_a_node"),
+          ("LCH005", "launch_node_through_alias"), ("LCH005", "remappings_not_pairs"),
+          ("PYC016", "print_style_calls")}
 """MAN018 fixes pip and import names only; build types, ROS 1 packages and standard library
 modules need the user (a `<build_type>`, a ROS 2 replacement, or nothing). DAT001 fixes a
 string of sources and creates the (empty) ament index marker: other missing files have content
 only their author knows. DAT008's values at the top level belong to a node only the user knows
-(here a component and a node share the file)."""
+(here a component and a node share the file). LCH005 does not choose an executable nor the
+pairs remappings were meant to be; PYC016 does not reword print-style logging calls."""
 
-REVEALED = {("PYC013", "called_callbacks"): {"PYC026"}}
+REVEALED = {("PYC013", "called_callbacks"): {"PYC026"},
+            ("LCH005", "parameters_not_a_list"): {"DAT006"},
+            ("PYC032", "joined_without_separator"): {"DAT006"}}
 """Findings a fix may bring to light: once `callback=self.handle()` is `self.handle`, rclpy
-calls a service callback that returns no response (PYC026), which the call hid."""
+calls a service callback that returns no response (PYC026), which the call hid; once a
+parameter file reaches the node (in a list, or at a path with its `/`), the launch file uses
+a share file the package does not install (DAT006)."""
 
 
 def _keys(path: Path, code: str, **fix: bool) -> list[tuple[str, str]]:

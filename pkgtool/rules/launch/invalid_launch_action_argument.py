@@ -16,6 +16,10 @@ DECLARE_KEYWORDS = ("name", "default_value", "description", "choices", "conditio
 """The keywords ``DeclareLaunchArgument`` takes (``condition`` is every action's)."""
 ACTION_MODULES = ("launch.actions", "launch_ros.actions")
 """The modules whose classes are all actions."""
+BY_KEYWORD = "Write `default_value=...`"
+ITEMS = "Pass `{...}.items()`"
+IN_A_LIST = "Write `LaunchDescription([{}(...)])`"
+"""Fixes the fixer of LCH010 knows how to apply (besides renamed keywords and quoted text)."""
 
 
 def _not_text(value: ast.expr) -> ast.Constant | None:
@@ -28,7 +32,7 @@ def _not_text(value: ast.expr) -> ast.Constant | None:
 def _declare(call: ast.Call, _: Index) -> Iterator[tuple[ast.AST, str, str]]:
     if len(call.args) > 1 and not any(isinstance(a, ast.Starred) for a in call.args):
         yield (call.args[1], "`DeclareLaunchArgument()` takes its default by keyword only: "
-               "a second positional argument raises TypeError", "Write `default_value=...`")
+               "a second positional argument raises TypeError", BY_KEYWORD)
     for keyword in call.keywords:
         meant = next((k for k in DECLARE_KEYWORDS if k.startswith(keyword.arg or "_")), None)
         if keyword.arg not in DECLARE_KEYWORDS and meant:
@@ -50,7 +54,7 @@ def _include(call: ast.Call, _: Index) -> Iterator[tuple[ast.AST, str, str]]:
         for key in value.keys)
     if isinstance(value, (ast.Dict, ast.DictComp)) and not pairs:
         yield (value, "`launch_arguments=` is a dict: IncludeLaunchDescription iterates its "
-               "keys as (name, value) pairs and fails", "Pass `{...}.items()`")
+               "keys as (name, value) pairs and fails", ITEMS)
 
 
 def _description(call: ast.Call, index: Index) -> Iterator[tuple[ast.AST, str, str]]:
@@ -59,7 +63,7 @@ def _description(call: ast.Call, index: Index) -> Iterator[tuple[ast.AST, str, s
     if within(module, ACTION_MODULES) and made[:1].isupper():
         yield (entity, f"`LaunchDescription()` is given one `{made}`, not a list: it raises "
                f"TypeError ('{made}' object is not iterable)",
-               f"Write `LaunchDescription([{made}(...)])`")
+               IN_A_LIST.format(made))
 
 
 CHECKS = {"DeclareLaunchArgument": ("launch.actions", _declare),

@@ -34,8 +34,8 @@ def _wanted(kind: str) -> tuple[frozenset[str], str] | None:
 _ROS_TIMES = {"builtin_interfaces/Time": "rclpy.time.Time",
               "builtin_interfaces/Duration": "rclpy.duration.Duration"}
 """Message fields of time types, and the rclpy class people give them instead."""
-_FIXES = {"rclpy.time.Time": "Convert it with `.to_msg()`",
-          "rclpy.duration.Duration": "Convert it with `.to_msg()`"}
+TO_MSG = "Convert it with `.to_msg()`"
+_FIXES = {"rclpy.time.Time": TO_MSG, "rclpy.duration.Duration": TO_MSG}
 
 
 def _not_a_message(kind: str, value: ast.expr, given: str | None, index: Index) -> str | None:
@@ -54,6 +54,18 @@ def _not_a_message(kind: str, value: ast.expr, given: str | None, index: Index) 
     made = "rclpy.time.Time" if clock else \
         index.qualified(call.func) if call is not None else None
     return made if made is not None and _ROS_TIMES.get(kind) == made else None
+
+
+def float_fix(value: ast.expr, given: str | None) -> str | None:
+    """How to give a float field the int ``value`` (of type ``given``): ``Write `1.0``` for a
+    literal (``1``, ``-2``), ``Write `float(turns)``` for a name or attribute; else None."""
+    number = value.operand if isinstance(value, ast.UnaryOp) and \
+        isinstance(value.op, (ast.USub, ast.UAdd)) else value
+    if isinstance(number, ast.Constant) and type(number.value) is int:
+        return f"Write `{ast.unparse(value)}.0`"
+    if given == "int" and isinstance(value, (ast.Name, ast.Attribute)):
+        return f"Write `float({ast.unparse(value)})`"
+    return None
 
 
 def _stores(instance: Instance[Message], index: Index
@@ -138,7 +150,8 @@ def field_value_type(package: Package) -> Iterator[Hit]:
             if wanted is not None and given is not None and given not in wanted[0]:
                 yield Hit(Span(module.path, value.lineno, value.col_offset + 1),
                           f"`{target}` is a `{kind}` field but is given `{ast.unparse(value)}`"
-                          f" ({given}{_how(value)}): rclpy wants {wanted[1]}")
+                          f" ({given}{_how(value)}): rclpy wants {wanted[1]}",
+                          float_fix(value, given) if wanted[0] == {"float"} else None)
             elif (problem := _not_a_message(kind, value, given, index)) is not None:
                 yield Hit(Span(module.path, value.lineno, value.col_offset + 1),
                           f"`{target}` holds a `{kind}` message but is given "

@@ -160,3 +160,11 @@ def _unknown_method(func: ast.Attribute, index: Index) -> str | None:
         f" (it logs with {', '.join(f'`{level}`' for level in sorted(LEVELS))})"
     return f"does not exist: rclpy's logger has no `{func.attr}` and raises " \
         f"`AttributeError`{also}"
+
+
+def meant_level(attr: str) -> str | None:
+    """The one logging method of rclpy's logger that ``attr`` is a near miss of (``warn``
+    and ``warning`` count as one: ``warning``), else None."""
+    close = {"warning" if name == "warn" else name
+             for name in difflib.get_close_matches(attr, sorted(LEVELS), n=len(LEVELS))}
+    return close.pop() if len(close) == 1 else None

@@ -43,8 +43,9 @@ def _relative(value: ast.expr) -> str | None:
     return None
 
 
-def _joins(tree: ast.Module, index: Index) -> Iterator[tuple[ast.expr, str, str]]:
-    """(node, function, text) of each ``folder + 'text'`` and ``f'{folder}text'``."""
+def joins(tree: ast.Module, index: Index) -> Iterator[tuple[ast.expr, ast.expr, str, str]]:
+    """(node, left, function, text) of each ``folder + 'text'`` and ``f'{folder}text'``:
+    ``left`` is the folder operand or the f-string's replacement field."""
     scopes: dict[int, tuple[dict[str, ast.expr], ...]] = {}  # by function, for candidates only
     for node in ast.walk(tree):
         if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
@@ -65,7 +66,7 @@ def _joins(tree: ast.Module, index: Index) -> Iterator[tuple[ast.expr, str, str]
                 scopes[id(function)] = (single_assignments(function), *scopes[id(tree)])
             called = _folder(left, index, scopes[id(function or tree)])
             if called:
-                yield node, called, text
+                yield node, left, called, text
 
 
 @rule("PYC032", "path-without-separator", Severity.ERROR,
@@ -104,7 +105,7 @@ def path_without_separator(package: Package) -> Iterator[Hit]:
         if isinstance(tree, ast.Module):
             trees.append((path, tree))
     for path, tree in trees:
-        for node, called, text in _joins(tree, index_of(tree)):
+        for node, _, called, text in joins(tree, index_of(tree)):
             yield Hit(Span(path, node.lineno, node.col_offset + 1),
                       f"`{called}()` is joined to `{text}` with no `/` between them: the path "
                       f"names `<folder>{text}`, not a file in the folder")

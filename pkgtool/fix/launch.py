@@ -1,0 +1,173 @@
+"""Fixers of launch files: node arguments ROS 2's launch rejects (renamed keywords and
+attributes, parameters not in a list), and launch actions given arguments they reject."""
+
+from __future__ import annotations
+
+import ast
+import re
+from collections.abc import Iterator
+from difflib import get_close_matches
+
+from pkgtool.edit.changes import read_source
+from pkgtool.edit.core import Edit, EditError, Fix
+from pkgtool.edit.pysource import PyDoc
+from pkgtool.edit.source import Source
+from pkgtool.edit.xml_scan import Element, scan
+from pkgtool.findings import Finding
+from pkgtool.fix.common import python_nodes
+from pkgtool.fix.registry import fixer
+from pkgtool.model.package import Package
+from pkgtool.rules.launch.invalid_launch_action_argument import BY_KEYWORD, IN_A_LIST, ITEMS
+from pkgtool.rules.launch.invalid_node_argument import (FRONTEND_TAGS, KEYWORDS, REMOVED_KEYWORDS,
+                                                        WRONG_ATTRIBUTES)
+
+_ONE_NAME = re.compile(r"`(\w+)`(?: \(.*\))?")
+"""What WRONG_ATTRIBUTES says to write when that is one attribute name."""
+
+
+def _rename(doc: PyDoc, call: ast.Call, keyword: ast.keyword, name: str) -> Fix | None:
+    """Rename ``keyword`` of ``call`` to ``name``; None when ``call`` has ``name`` already or
+    the keyword is not written where ``ast`` says."""
+    old, at = keyword.arg or "", doc.start(keyword)
+    if any(k.arg == name for k in call.keywords) or not doc.text.startswith(old, at):
+        return None
+    return Fix(f"Write `{name}=` instead of `{old}=`",
+               (Edit(doc.source.path, at, at + len(old), name),))
+
+
+def _owners(doc: PyDoc) -> dict[int, ast.Call]:
+    """The call each keyword (by id) belongs to."""
+    return {id(k): c for c in ast.walk(doc.tree) if isinstance(c, ast.Call) for k in c.keywords}
+
+
+@fixer("LCH005", "Write the node arguments ROS 2's launch takes")
+def node_arguments(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Python node actions: rename ``node_executable=``, ``node_name=`` and
+    ``node_namespace=`` (ROS 2 Dashing and Eloquent) to ``executable=``, ``name=`` and
+    ``namespace=``, and a keyword the action does not take when exactly one it takes is
+    spelled like it (``nam=`` becomes ``name=``); put a ``parameters=`` value that is no list
+    into one (``parameters=path`` becomes ``parameters=[path]``, a tuple a list). XML: rename
+    the ROS 1 and Python attributes of ``<node>`` that have one ROS 2 name (``type`` becomes
+    ``exec``, ``ns`` ``namespace``). Safe: launch raised or refused the file. A call or tag
+    that already has the new name, YAML launch files, remappings, a missing executable and
+    ROS 1 attributes with no ROS 2 equivalent need the user."""
+    for doc, finding, nodes in python_nodes(package, findings):
+        calls = [c for c in ast.walk(doc.tree) if isinstance(c, ast.Call)]
+        mine = [c for c in calls if c in nodes or any(k.value in nodes for k in c.keywords)]
+        for call in mine:
+            fix = _node_fix(doc, call, finding)
+            if fix is not None:
+                yield fix
+    yield from xml_node_attributes(package, [f for f in findings
+                                             if f.span.path.endswith(".xml")])
+
+
+def _node_fix(doc: PyDoc, call: ast.Call, finding: Finding) -> Fix | None:
+    """The fix of ``finding`` on the node action ``call``, if it has one."""
+    action = ast.unparse(call.func).rpartition(".")[2]
+    for keyword in call.keywords:
+        name = keyword.arg or ""
+        if finding.message in (f"`{action}()` has no `{name}` argument since ROS 2 Foxy",
+                               f"`{action}()` has no `{name}` argument: launch raises "
+                               "TypeError"):
+            close = get_close_matches(name, sorted(KEYWORDS.get(action, ())), n=2)
+            new = REMOVED_KEYWORDS.get(name) or (close[0] if len(close) == 1 else None)
+            return _rename(doc, call, keyword, new) if new else None
+        if name == "parameters" and finding.message == f"`parameters=` of `{action}()` is " \
+                "not a list":
+            return _in_a_list(doc, keyword.value)
+    return None
+
+
+def xml_node_attributes(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename the attributes of XML node tags that ROS 2 calls otherwise."""
+    for path in sorted({f.span.path for f in findings}):
+        try:
+            source = read_source(package.root, path)
+        except EditError:
+            continue
+        root = scan(source.text) if source is not None else None
+        if source is None or root is None:
+            continue
+        tags = [e for e in _descendants(root) if e.local in FRONTEND_TAGS]
+        written: set[tuple[int, str]] = set()  # two old names of one new one: the first
+        for finding in (f for f in findings if f.span.path == path):
+            line = source.line_starts[finding.span.line - 1]
+            for tag in (t for t in tags  # lxml gives some line of the opening tag
+                        if source.line_start(t.start) <= line <= t.inner_start):
+                fix = _attribute_fix(source, tag, finding.message)
+                if fix is not None and (tag.start, fix.edits[0].replacement) not in written:
+                    written.add((tag.start, fix.edits[0].replacement))
+                    yield fix
+
+
+def _attribute_fix(source: Source, tag: Element, message: str) -> Fix | None:
+    for old, instead in WRONG_ATTRIBUTES.items():
+        new = _ONE_NAME.fullmatch(instead)
+        if message != f"`<{tag.local}>` has no `{old}` attribute in ROS 2" or new is None or \
+                new.group(1) in tag.attributes:
+            continue
+        written = re.search(rf"\s({re.escape(old)})\s*=", source.text[tag.start:tag.inner_start])
+        if written:
+            at = tag.start + written.start(1)
+            return Fix(f"Write `{new.group(1)}` instead of `{old}`",
+                       (Edit(source.path, at, at + len(old), new.group(1)),))
+    return None
+
+
+def _descendants(element: Element) -> Iterator[Element]:
+    yield element
+    for child in element.children:
+        yield from _descendants(child)
+
+
+def _in_a_list(doc: PyDoc, value: ast.expr) -> Fix | None:
+    """``value`` as a list: a tuple display with its brackets changed, else in brackets."""
+    start, end, path = doc.start(value), doc.end(value), doc.source.path
+    if isinstance(value, ast.Tuple):
+        if doc.text[start] != "(" or doc.text[end - 1] != ")":
+            return None
+        return Fix("Write the tuple as a list", (Edit(path, start, start + 1, "["),
+                                                 Edit(path, end - 1, end, "]")))
+    return Fix("Put the parameters in a list", (Edit(path, start, start, "["),
+                                                Edit(path, end, end, "]")))
+
+
+@fixer("LCH010", "Pass launch actions the arguments they take")
+def action_arguments(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """``launch_arguments={...}`` gains ``.items()``; ``LaunchDescription(action)`` gets the
+    action in a list; ``DeclareLaunchArgument`` gets its default as ``default_value=``, a
+    shortened keyword written out (``default=`` becomes ``default_value=``) and a number or
+    bool default as text (``False`` becomes ``'false'``). Safe: each raised TypeError."""
+    for doc, finding, nodes in python_nodes(package, findings):
+        node, path = (nodes[0] if nodes else None), doc.source.path
+        if finding.fix == ITEMS and isinstance(node, (ast.Dict, ast.DictComp)):
+            yield Fix("Pass the dict's `.items()`", (Edit(path, doc.end(node), doc.end(node),
+                                                          ".items()"),))
+        elif isinstance(node, ast.Call) and finding.fix == IN_A_LIST.format(
+                ast.unparse(node.func).rpartition(".")[2]):
+            yield Fix("Put the action in a list", (Edit(path, doc.start(node),
+                                                        doc.start(node), "["),
+                                                   Edit(path, doc.end(node), doc.end(node), "]")))
+        elif isinstance(node, ast.keyword) and finding.fix and node.arg and \
+                finding.fix.startswith("Write `") and finding.fix.endswith("=`"):
+            fix = _rename(doc, _owners(doc)[id(node)], node, finding.fix[7:-2])
+            if fix is not None:
+                yield fix
+        elif isinstance(node, ast.Constant) and finding.fix and \
+                finding.fix.startswith("Write `'") and finding.fix.endswith("'`"):
+            yield Fix("Write the default as text", (Edit(
+                path, doc.start(node), doc.end(node), doc.string(finding.fix[8:-2])),))
+        elif finding.fix == BY_KEYWORD and isinstance(node, ast.expr):
+            yield from _by_keyword(doc, node)
+
+
+def _by_keyword(doc: PyDoc, default: ast.expr) -> Iterator[Fix]:
+    """``DeclareLaunchArgument(name, default)`` becomes ``(name, default_value=default)``
+    when the default is its last positional argument and no ``default_value=`` is given."""
+    for call in ast.walk(doc.tree):
+        if isinstance(call, ast.Call) and len(call.args) == 2 and call.args[1] is default and \
+                not any(k.arg == "default_value" for k in call.keywords):
+            at = doc.start(default)
+            yield Fix("Pass the default as `default_value=`",
+                      (Edit(doc.source.path, at, at, "default_value="),))
