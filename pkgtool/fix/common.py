@@ -81,11 +81,12 @@ def python_nodes(package: Package, findings: list[Finding]
 def child_at(doc: ManifestDoc, line: int) -> Element | None:
     """The child of ``<package>`` that starts on ``line`` (1-based), if exactly one does."""
     starts = doc.source.line_starts
-    found = [c for c in doc.children if _line(starts, c.start) == line]
+    found = [c for c in doc.children if line_of(starts, c.start) == line]
     return found[0] if len(found) == 1 else None
 
 
-def _line(starts: list[int], offset: int) -> int:
+def line_of(starts: list[int], offset: int) -> int:
+    """The 1-based line of ``offset`` in a text whose lines start at ``starts``."""
     from bisect import bisect_right
 
     return bisect_right(starts, offset)

@@ -1,17 +1,21 @@
-"""Fixers that declare what code imports: the rosdep key as the right ``*_depend``."""
+"""Fixers that declare what code imports (the rosdep key as the right ``*_depend``), and
+import interfaces from the module of their kind."""
 
 from __future__ import annotations
 
+import ast
+import re
 from collections.abc import Iterable, Iterator
 
-from pkgtool.edit.core import Fix
+from pkgtool.edit.core import Edit, Fix
 from pkgtool.edit.manifest import ManifestDoc
 from pkgtool.findings import Finding
-from pkgtool.fix.common import child_at, manifest_doc, offer
+from pkgtool.fix.common import child_at, manifest_doc, offer, python_nodes
 from pkgtool.fix.registry import Refusal, fixer
 from pkgtool.knowledge.rosdistro import is_known_dependency
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.rules.dependencies.unknown_interface_import import written_import
 from pkgtool.rules.imports import (BUILD_ONLY, Need, declared, needs, test_code,
                                    unmet_runtime_needs)
 
@@ -109,3 +113,24 @@ def launch_package(package: Package, findings: list[Finding]) -> Iterator[Fix | 
                   if _at(span) in wanted and name not in names and _resolves(package, name)]
     for name in names:
         yield from _add(doc, "exec_depend", name)
+
+
+@fixer("DEP008", "Import the interface from the module of its kind")
+def interface_module(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Write the module the rule names into the ``from ... import`` statement when it imports
+    the same names (``from std_msgs import String`` becomes ``from std_msgs.msg import
+    String``, ``std_srvs.msg`` ``std_srvs.srv``, ``std_msgs.msgs`` ``std_msgs.msg``). Safe:
+    the import raised. A misspelt interface name, an ``import pkg.msgs`` whose uses would
+    change too, and imports of several names that need several statements need the user."""
+    for doc, finding, nodes in python_nodes(package, findings):
+        wanted = written_import(finding.fix)
+        statement = next((n for n in nodes if isinstance(n, ast.ImportFrom)), None)
+        if wanted is None or statement is None or statement.level or \
+                tuple(a.name for a in statement.names) != wanted[1]:
+            continue
+        written = re.match(rf"from\s+({re.escape(statement.module or '')})\s+import\b",
+                           doc.text[doc.start(statement):])
+        if written and written[1] != wanted[0]:
+            at = doc.start(statement) + written.start(1)
+            yield Fix(f"Import from `{wanted[0]}`",
+                      (Edit(doc.source.path, at, at + len(written[1]), wanted[0]),))

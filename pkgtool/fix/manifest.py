@@ -1,15 +1,15 @@
 """Fixers of package.xml elements: their order, dependencies (repeated, redundant, unused, pip
-names, misspelled), SPDX."""
+names, misspelled, inside ``<export>``), SPDX, the build type."""
 
 from __future__ import annotations
 
 from collections.abc import Iterator
 
-from pkgtool.edit.core import Fix
+from pkgtool.edit.core import Edit, EditError, Fix
 from pkgtool.edit.manifest import ManifestDoc
-from pkgtool.edit.xml_scan import Element
+from pkgtool.edit.xml_scan import Element, insert_after
 from pkgtool.findings import Finding
-from pkgtool.fix.common import child_at, manifest_doc, offer
+from pkgtool.fix.common import child_at, line_of, manifest_doc, offer
 from pkgtool.fix.registry import Refusal, fixer
 from pkgtool.knowledge.rosdep import suggested_key
 from pkgtool.knowledge.rosdistro import close_names
@@ -17,6 +17,8 @@ from pkgtool.model.package import Package
 from pkgtool.records import replace
 from pkgtool.rules.manifest.dependency_names import neighbours
 from pkgtool.rules.manifest.non_spdx_license import spdx_spelling
+from pkgtool.rules.manifest.template_placeholder import is_placeholder
+from pkgtool.rules.setup_values import text_of
 
 
 def _remove_lines(package: Package, findings: list[Finding], title: str, *, safe: bool
@@ -114,3 +116,93 @@ def _rename(doc: ManifestDoc, element: Element, key: str) -> Fix:
         return Fix(f"Remove `{doc.text_of(element)}`: `{key}` is declared",
                    (doc.remove(element),))
     return Fix(f"Write `{key}`", (doc.replace_text(element, key),))
+
+
+@fixer("MAN024", "Move the dependency out of `<export>`")
+def dependency_in_export(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
+    """Delete the dependency tag from ``<export>`` and declare it among ``<package>``'s
+    dependencies (nothing to add when that tag declares it already). Safe: it is what the
+    author wrote, now where rosdep, colcon and bloom read it."""
+    doc = manifest_doc(package)
+    lines = {f.span.line for f in findings if f.span.path == "package.xml"}
+    for export in doc.find("export") if doc is not None else ():
+        for child in export.children:
+            starts = doc.source.line_starts if doc is not None else []
+            if doc is not None and any(line_of(starts, child.start) <= line <= line_of(
+                    starts, child.inner_start) for line in lines):
+                name = doc.text_of(child)
+                yield from offer(f"Move `<{child.local}>{name}</{child.local}>` out of "
+                                 "`<export>`", lambda child=child, name=name: [
+                                     _cut(doc, child), *doc.add(child.local, name,
+                                                                dict(child.attributes))])
+
+
+def _cut(doc: ManifestDoc, element: Element) -> Edit:
+    """Delete ``element``: its line, or up to the comment that follows it on its line."""
+    text, end = doc.source.text, element.end
+    rest = text[end:doc.source.line_end(end)]
+    if rest.strip().startswith("<!--") and not text[doc.source.line_start(element.start):
+                                                    element.start].strip():
+        return Edit(doc.source.path, element.start, end + len(rest) - len(rest.lstrip()), "")
+    return doc.remove(element)
+
+
+@fixer("MAN015", "Declare the `ament_python` build type")
+def build_type(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
+    """Add ``<build_type>ament_python</build_type>`` to ``<export>`` (a new one at the end of
+    ``<package>`` when there is none), for a package with a setup.py. Safe: colcon built it
+    with CMake, which failed. Without a setup.py the build type is the user's choice."""
+    doc = manifest_doc(package)
+    if doc is None or not findings:
+        return
+    if not package.has_file("setup.py"):
+        yield Refusal("the package has neither setup.py nor CMakeLists.txt: add the build "
+                      "type it is built with by hand.")
+        return
+    yield from offer("Declare `<build_type>ament_python</build_type>`", lambda: _build_type(doc))
+
+
+def _build_type(doc: ManifestDoc) -> list[Edit]:
+    source, exports = doc.source, doc.find("export")
+    children = doc.children
+    if not children:
+        raise EditError("package.xml's `<package>` has no children: write it by hand.")
+    indent = source.indent_at(children[-1].start) or "  "
+    element = "<build_type>ament_python</build_type>"
+    if not exports:
+        newline = source.newline
+        return [insert_after(source, children[-1], f"<export>{newline}{indent * 2}{element}"
+                             f"{newline}{indent}</export>")]
+    export = exports[0]
+    if export.inner_start == export.end:
+        raise EditError("package.xml has an empty `<export/>`: write the build type into it "
+                        "by hand.")
+    if export.children:
+        return [insert_after(source, export.children[-1], element)]
+    at, end = export.inner_start, source.line_end(export.inner_start)
+    rest = source.text[at:end].strip()
+    if not rest or rest.startswith("<!--") and rest.endswith("-->") and end < export.end:
+        return [Edit(source.path, end, end, source.newline + indent * 2 + element)]
+    return [Edit(source.path, at, at, source.newline + indent * 2 + element + source.newline +
+                 indent)]
+
+
+@fixer("MAN017", "Write setup.py's description or license over the placeholder")
+def placeholder(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
+    """Replace a placeholder ``<description>`` or ``<license>`` by what setup.py's
+    ``description`` or ``license`` says, when that is a real value (one license: a list
+    needs a tag each). Safe: only metadata changes, and the author wrote it. Placeholder
+    emails, and placeholders setup.py does not answer, are the author's to fill in."""
+    doc, setup = manifest_doc(package), package.setup_py
+    for finding in findings if doc is not None else ():
+        element = child_at(doc, finding.span.line) if doc is not None else None
+        if doc is None or element is None or element.local not in ("description", "license"):
+            continue
+        value = getattr(setup, element.local) if setup is not None else None
+        found = text_of(value)
+        text = " ".join(found[0].split()) if found else ""
+        if not text or is_placeholder(text) or element.local == "license" and "," in text:
+            yield Refusal(f"only the author knows the package's {element.local}: write it into "
+                          "package.xml (setup.py's is no help).")
+            continue
+        yield Fix(f"Write setup.py's {element.local} `{text}`", (doc.replace_text(element, text),))

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -168,3 +169,12 @@ def _fix(found: Mismatch) -> str | None:
         return f"Import `{found.companion.split('.', 1)[0]}` and use `{found.companion}`"
     kind, name = (found.actual, found.name) if found.actual else found.close or (None, None)
     return f"Write `from {found.package}.{kind} import {name}`" if kind else None
+
+
+_WRITE_FROM = re.compile(r"Write `from ([\w.]+) import ([\w, ]+)`")
+
+
+def written_import(fix: str | None) -> tuple[str, tuple[str, ...]] | None:
+    """(module, names) of a fix that says to write ``from module import names``."""
+    found = _WRITE_FROM.fullmatch(fix or "")
+    return (found[1], tuple(found[2].split(", "))) if found else None

@@ -51,7 +51,7 @@ def template_placeholder(package: Package) -> Iterator[Hit]:
     if found is None:
         return
     for element in found.named("description", "license"):
-        if _TODO.match(element.text):
+        if is_placeholder(element.text):
             yield Hit(element.span, f"`<{element.tag}>` is the placeholder `{element.text}`",
                       _FIXES[element.tag])
     for element in found.named("maintainer", "author"):
@@ -60,3 +60,8 @@ def template_placeholder(package: Package) -> Iterator[Hit]:
             yield Hit(element.span, f"{element.tag.capitalize()} `{element.text}` has the "
                       f"placeholder email `{email}`",
                       "Write your real name and email address")
+
+
+def is_placeholder(text: str) -> bool:
+    """True for the description and license texts the package templates write."""
+    return bool(_TODO.match(text))
