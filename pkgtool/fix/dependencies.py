@@ -15,6 +15,8 @@ from pkgtool.fix.registry import Refusal, fixer
 from pkgtool.knowledge.rosdistro import is_known_dependency
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.knowledge.interfaces import kind_in
+from pkgtool.rules.dependencies.interface_types import interfaces_for
 from pkgtool.rules.dependencies.unknown_interface_import import written_import
 from pkgtool.rules.imports import (BUILD_ONLY, Need, declared, needs, test_code,
                                    unmet_runtime_needs)
@@ -119,14 +121,15 @@ def launch_package(package: Package, findings: list[Finding]) -> Iterator[Fix | 
 def interface_module(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Write the module the rule names into the ``from ... import`` statement when it imports
     the same names (``from std_msgs import String`` becomes ``from std_msgs.msg import
-    String``, ``std_srvs.msg`` ``std_srvs.srv``, ``std_msgs.msgs`` ``std_msgs.msg``). Safe:
+    String``, ``std_srvs.msg`` ``std_srvs.srv``, ``std_msgs.msgs`` ``std_msgs.msg``), or
+    interfaces of that one kind (``from sensor_msgs import Image, CameraInfo``). Safe:
     the import raised. A misspelt interface name, an ``import pkg.msgs`` whose uses would
     change too, and imports of several names that need several statements need the user."""
     for doc, finding, nodes in python_nodes(package, findings):
         wanted = written_import(finding.fix)
         statement = next((n for n in nodes if isinstance(n, ast.ImportFrom)), None)
         if wanted is None or statement is None or statement.level or \
-                tuple(a.name for a in statement.names) != wanted[1]:
+                not _same_names(package, statement, *wanted):
             continue
         written = re.match(rf"from\s+({re.escape(statement.module or '')})\s+import\b",
                            doc.text[doc.start(statement):])
@@ -134,3 +137,15 @@ def interface_module(package: Package, findings: list[Finding]) -> Iterator[Fix]
             at = doc.start(statement) + written.start(1)
             yield Fix(f"Import from `{wanted[0]}`",
                       (Edit(doc.source.path, at, at + len(written[1]), wanted[0]),))
+
+
+def _same_names(package: Package, statement: ast.ImportFrom, module: str,
+                names: tuple[str, ...]) -> bool:
+    """True when ``statement`` imports ``names``, or (``from pkg import A, B`` for
+    ``pkg.msg``) only interfaces of that kind of ``pkg``."""
+    taken = tuple(a.name for a in statement.names)
+    if taken == names:
+        return True
+    package_name, _, kind = module.partition(".")
+    known = interfaces_for(package, package_name) if statement.module == package_name else None
+    return bool(known) and all(kind_in(known, name) == kind for name in taken)

@@ -191,8 +191,9 @@ def _build_type(doc: ManifestDoc) -> list[Edit]:
 def placeholder(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
     """Replace a placeholder ``<description>`` or ``<license>`` by what setup.py's
     ``description`` or ``license`` says, when that is a real value (one license: a list
-    needs a tag each). Safe: only metadata changes, and the author wrote it. Placeholder
-    emails, and placeholders setup.py does not answer, are the author's to fill in."""
+    needs a tag each; its SPDX identifier when it names exactly one). Safe: only metadata
+    changes, and the author wrote it. Placeholder emails, and placeholders setup.py does not
+    answer, are the author's to fill in."""
     doc, setup = manifest_doc(package), package.setup_py
     for finding in findings if doc is not None else ():
         element = child_at(doc, finding.span.line) if doc is not None else None
@@ -205,4 +206,6 @@ def placeholder(package: Package, findings: list[Finding]) -> Iterator[Fix | Ref
             yield Refusal(f"only the author knows the package's {element.local}: write it into "
                           "package.xml (setup.py's is no help).")
             continue
+        spdx = spdx_spelling(text) if element.local == "license" else None
+        text = spdx.strip("`") if spdx and spdx.count("`") == 2 else text
         yield Fix(f"Write setup.py's {element.local} `{text}`", (doc.replace_text(element, text),))

@@ -50,6 +50,15 @@ def test_build_type_of_a_package_without_setup_py_is_refused(tmp_path: Path) -> 
     assert any("not fixed: MAN015: the package has neither" in n for n in result.notes)
 
 
+def test_placeholder_license_takes_the_spdx_id_of_setup_py_s(tmp_path: Path) -> None:
+    root = _package(tmp_path, package_dot_xml=(
+        "<license>Apache-2.0</license>", "<license>TODO: License declaration</license>"),
+        setup_dot_py=("license='Apache-2.0'", "license='Apache License 2.0'"))
+    before = _read(root, "package.xml")
+    assert _fixed_once(root, "MAN017", "package.xml") == before.replace(
+        "TODO: License declaration", "Apache-2.0")
+
+
 def test_placeholders_take_setup_py_values_and_others_are_refused(tmp_path: Path) -> None:
     root = _package(tmp_path, package_dot_xml=(
         "<description>A package for tests.</description>",
@@ -70,9 +79,10 @@ def test_interface_imported_from_its_package_comes_from_the_msg_module(tmp_path:
     root = _package(tmp_path, package_dot_xml=(STD_MSGS, STD_MSGS + "  <exec_depend>std_srvs"
                                                "</exec_depend>\n"))
     body = ("from std_msgs import String as Text  # the text\n"
+            "from std_msgs import Bool, Int32\n"
             "from std_srvs.msg import (Trigger)\n"
             "from std_msgs.msg import Strin\n"
-            "\nprint(Text, Trigger, Strin)\n")
+            "\nprint(Text, Bool, Int32, Trigger, Strin)\n")
     (root / "pkg" / "node.py").write_text(body)
     after = _fixed_once(root, "DEP008", "pkg/node.py", allow_left=True)
     assert after == body.replace("from std_msgs import", "from std_msgs.msg import").replace(
