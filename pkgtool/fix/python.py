@@ -1,9 +1,11 @@
-"""Fixers of Python code: a called callback, a misspelt logger method, an int for a float
-field, rclpy's Time for a message, a ``Parameter`` for its value, a path missing its ``/``."""
+"""Fixers of Python code: a standard module never imported, a called callback, a misspelt
+logger method, an int for a float field, rclpy's Time for a message, a ``Parameter`` for its
+value, a path missing its ``/``."""
 
 from __future__ import annotations
 
 import ast
+import importlib
 import re
 from collections.abc import Iterator
 
@@ -19,12 +21,45 @@ from pkgtool.rules.python.path_without_separator import joins
 from pkgtool.rules.syntax_trees import index_of
 
 _DECIMAL = re.compile(r"[0-9][0-9_]*")
+_MODULES = frozenset("""argparse copy glob json math os random re shutil signal socket
+                     struct subprocess sys threading time""".split())
+"""Standard library modules code uses by their name (``math.pi``) and forgets to import."""
 _OPENING = re.compile(r"[rRbBuUfF]*(\"\"\"|'''|\"|')")
 """A string literal's prefix and opening quotes."""
 
 
 def _insert(doc: PyDoc, at: int, text: str) -> Edit:
     return Edit(doc.source.path, at, at, text)
+
+
+@fixer("PYC001", "Import the standard library module the code uses")
+def stdlib_import(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Add ``import math`` (in the import order the file follows) when ``math`` is undefined,
+    nothing in the module binds it, every use reads an attribute of it and the module has
+    each (``math.sqrt``). Safe: those lines raised NameError. Other undefined names (a
+    typo, a third-party module whose import name is a guess) need the user."""
+    done: set[tuple[str, str]] = set()
+    for doc, finding, _ in python_nodes(package, findings):
+        name = finding.message.removeprefix("Undefined name `").removesuffix("`")
+        if name in _MODULES and (doc.source.path, name) not in done and \
+                _used_as_module(doc.tree, name):
+            done.add((doc.source.path, name))
+            yield Fix(f"Import `{name}`", tuple(doc.add_imports([(name, None)])))
+
+
+def _used_as_module(tree: ast.Module, name: str) -> bool:
+    """True when ``name`` is bound nowhere in ``tree`` and each use reads an attribute of the
+    standard module ``name`` that it has."""
+    module = importlib.import_module(name)
+    uses = [n for n in ast.walk(tree) if isinstance(n, ast.Name) and n.id == name]
+    taken = [n.attr for n in ast.walk(tree) if isinstance(n, ast.Attribute) and
+             isinstance(n.value, ast.Name) and n.value.id == name]
+    bound = any(isinstance(n, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)) and
+                n.name == name or isinstance(n, ast.arg) and n.arg == name or
+                isinstance(n, ast.alias) and (n.asname or n.name).split(".")[0] == name
+                for n in ast.walk(tree))
+    return not bound and all(isinstance(n.ctx, ast.Load) for n in uses) and \
+        len(uses) == len(taken) and all(hasattr(module, attr) for attr in taken)
 
 
 @fixer("PYC013", "Pass the callback without calling it")

@@ -147,3 +147,25 @@ def test_setup_maintainer_with_two_candidates_is_refused(tmp_path: Path) -> None
     assert _read(root, "setup.py") == before
     assert any("SET006: package.xml has 2 maintainers" in note for note in result.notes), \
         result.notes
+
+
+def test_standard_module_used_by_name_gets_its_import(tmp_path: Path) -> None:
+    body = HEAD + ("        self.length = math.hypot(3.0, 4.0)  # metres\n"
+                   "        self.home = os.path.join('a', 'b')\n")
+    root = _with(tmp_path, NODE, body)
+    assert _fixed_once(root, "PYC001", NODE) == body.replace(
+        "import rclpy\n", "import math\nimport os\n\nimport rclpy\n")
+
+
+def test_standard_module_name_bound_or_used_otherwise_is_left(tmp_path: Path) -> None:
+    body = HEAD + ("        self.a = time.monotonic()\n"
+                   "        self.b = json\n"
+                   "        self.c = sys.no_such_function()\n"
+                   "\n"
+                   "    def wait(self, time):\n"
+                   "        return time\n")
+    root = _with(tmp_path, NODE, body)
+    result = _fix(root, "PYC001")
+    assert _read(root, NODE) == body
+    assert sorted(f.message for f in result.findings) == [
+        "Undefined name `json`", "Undefined name `sys`", "Undefined name `time`"]
