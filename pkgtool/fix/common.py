@@ -59,7 +59,8 @@ def cfg_source(package: Package) -> Source | None:
 def python_nodes(package: Package, findings: list[Finding]
                  ) -> Iterator[tuple[PyDoc, Finding, list[ast.AST]]]:
     """Each finding in a Python file with the file and the ``ast`` nodes that start where it
-    points (outermost first); files that cannot be read or parsed are skipped."""
+    points (outermost first, each where its text is); files that cannot be read or parsed are
+    skipped."""
     for path in sorted({f.span.path for f in findings if f.span.path.endswith(".py")}):
         try:
             source = read_source(package.root, path)
@@ -75,7 +76,20 @@ def python_nodes(package: Package, findings: list[Finding]
                 starts.setdefault(where, []).append(node)
         for finding in findings:
             if finding.span.path == path:
-                yield doc, finding, starts.get((finding.span.line, finding.span.col), [])
+                nodes = starts.get((finding.span.line, finding.span.col), [])
+                yield doc, finding, [n for n in nodes if _placed(doc, n)]
+
+
+def _placed(doc: PyDoc, node: ast.AST) -> bool:
+    """True unless ``node`` is an expression whose text at its ``ast`` position is not that
+    expression (positions inside f-strings before Python 3.12 may be off)."""
+    if not isinstance(node, ast.expr):
+        return True
+    try:
+        found = ast.parse(f"({doc.segment(node)}\n)", mode="eval").body
+    except (SyntaxError, ValueError, RecursionError, MemoryError):
+        return False
+    return ast.dump(found) == ast.dump(node)
 
 
 def child_at(doc: ManifestDoc, line: int) -> Element | None:

@@ -141,7 +141,8 @@ def invalid_logger_call(package: Package) -> Iterator[Hit]:
                 _unknown_method(func, index) if func.attr not in ATTRIBUTES else None
             if problem:
                 yield Hit(Span(module.path, call.lineno, call.col_offset + 1),
-                          f"`{ast.unparse(func)}()` {problem}")
+                          f"`{ast.unparse(func)}()` {problem}",
+                          None if func.attr in LEVELS else _method_fix(func.attr))
 
 
 def _unknown_method(func: ast.Attribute, index: Index) -> str | None:
@@ -160,6 +161,12 @@ def _unknown_method(func: ast.Attribute, index: Index) -> str | None:
         f" (it logs with {', '.join(f'`{level}`' for level in sorted(LEVELS))})"
     return f"does not exist: rclpy's logger has no `{func.attr}` and raises " \
         f"`AttributeError`{also}"
+
+
+def _method_fix(attr: str) -> str:
+    meant = meant_level(attr)
+    return f"Call `{meant}()`" if meant else "Call a logging method rclpy's logger has " \
+        "(see the message)"
 
 
 def meant_level(attr: str) -> str | None:
