@@ -37,6 +37,7 @@ MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages
           *(("DEP008", case) for case in (
               "catkin_action_messages", "companion_types_on_humble", "names_no_shim_adds",
               "interfaces_listed_in_an_included_cmake_file", "interfaces_listed_in_cmake",
+              "interfaces_without_wheels",
               "misspelled_companion_types", "misspelled_generated_submodules",
               "workspace_interfaces", "workspaces_sharing_a_name"))}
 """MAN018 fixes pip and import names only; build types, ROS 1 packages and standard library
@@ -50,12 +51,12 @@ fixes the module an interface is imported from, never its name: these cases miss
 imports standard modules only: these cases misspell names or use third-party modules."""
 
 REVEALED = {("PYC013", "called_callbacks"): {"PYC026"},
-            ("LCH005", "parameters_not_a_list"): {"DAT006"},
-            ("PYC032", "joined_without_separator"): {"DAT006"}}
+            ("LCH005", "parameters_not_a_list"): {"DAT012"},
+            ("PYC032", "joined_without_separator"): {"DAT012"}}
 """Findings a fix may bring to light: once `callback=self.handle()` is `self.handle`, rclpy
 calls a service callback that returns no response (PYC026), which the call hid; once a
-parameter file reaches the node (in a list, or at a path with its `/`), the launch file uses
-a share file the package does not install (DAT006)."""
+parameter file reaches the node (in a list, or at a path with its `/`), the launch file reads
+a share file the package neither has nor installs (DAT012)."""
 
 
 def _keys(path: Path, code: str, **fix: bool) -> list[tuple[str, str]]:
