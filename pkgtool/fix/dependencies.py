@@ -17,6 +17,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.knowledge.interfaces import kind_in
 from pkgtool.rules.dependencies.interface_types import interfaces_for
+from pkgtool.rules.dependencies.sibling_import import installed_name
 from pkgtool.rules.dependencies.unknown_interface_import import written_import
 from pkgtool.rules.imports import (BUILD_ONLY, Need, declared, needs, test_code,
                                    unmet_runtime_needs)
@@ -115,6 +116,37 @@ def launch_package(package: Package, findings: list[Finding]) -> Iterator[Fix | 
                   if _at(span) in wanted and name not in names and _resolves(package, name)]
     for name in names:
         yield from _add(doc, "exec_depend", name)
+
+
+@fixer("DEP007", "Import the module through its package")
+def sibling_module(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Write the installed name of a module imported by its bare name: ``from helpers import
+    x`` becomes ``from my_pkg.helpers import x``, ``import helpers`` ``from my_pkg import
+    helpers`` (the same name is bound), ``from filters.low_pass import f`` inside
+    ``my_pkg/filters/`` ``from my_pkg.filters.low_pass import f``. Safe: installed, the import
+    raised ModuleNotFoundError (running the file as a script, ``python3 node.py``, no longer
+    works, as ``ros2 run`` never does that). ``import a.b`` and imports of several modules
+    in one statement need the user."""
+    for doc, finding, nodes in python_nodes(package, findings):
+        names = installed_name(finding.message, finding.fix)
+        statement = next((n for n in nodes if isinstance(n, (ast.Import, ast.ImportFrom))),
+                         None)
+        if names is None or statement is None:
+            continue
+        top, full = names
+        start, path = doc.start(statement), doc.source.path
+        if isinstance(statement, ast.ImportFrom) and not statement.level and \
+                (statement.module or "").split(".")[0] == top:
+            written = re.match(rf"from\s+({re.escape(top)})\b", doc.text[start:])
+            if written:
+                at = start + written.start(1)
+                yield Fix(f"Import from `{full}`", (Edit(path, at, at + len(top), full),))
+        elif isinstance(statement, ast.Import) and [a.name for a in statement.names] == [top]:
+            written = re.match(rf"import(\s+){re.escape(top)}\b", doc.text[start:])
+            if written:
+                yield Fix(f"Import `{top}` from `{full.rpartition('.')[0]}`", (Edit(
+                    path, start, start + written.end(), f"from {full.rpartition('.')[0]} "
+                    f"import{written[1]}{top}"),))
 
 
 @fixer("DEP008", "Import the interface from the module of its kind")

@@ -19,14 +19,15 @@ PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprec
           ("PYC025", "messages_given_other_values"), ("PYC025", "names_of_another_type"),
           ("DEP008", "interfaces_in_subfolders"), ("DEP008", "misspelled_and_wrong_kind"),
           ("DEP008", "misspelled_modules"), ("MAN017", "ros2_pkg_create_defaults"),
-          ("PYC001", "missing_standard_module")}
+          ("PYC001", "missing_standard_module"), ("DEP007", "own_package_by_bare_name")}
 """GPLv3 can mean -only or -or-later, `my_robot_description` is no known package, values
 outside `ros__parameters` belong to a node only the user knows, a node without its executable
 names none, `required="true"` and YAML launch files are left to the user, `exception()` is
 close to no rclpy logging method, an int for a bool or string field or a float for an int
 field has no one right spelling, a misspelt interface name is renamed nowhere else in the
 module, `import pkg.msgs` is used under that name, an email address is the author's, and
-a standard module's name used as a value may be a variable never assigned: no
+a standard module's name used as a value may be a variable never assigned, and `import
+a.b` binds `a`, which the installed name would not: no
 fix guesses, the user chooses; the other findings of the case are fixed."""
 MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages"),
           ("MAN018", "standard_library_modules"), ("DAT001", "typo_in_path"),

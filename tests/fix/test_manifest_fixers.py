@@ -1,5 +1,5 @@
-"""The MAN015, MAN017, MAN024 and DEP008 fixers: exactly the fix is written (comments and
-layout stay), a second run changes nothing, a refusal writes nothing."""
+"""The MAN015, MAN017, MAN024, DEP007 and DEP008 fixers: exactly the fix is written (comments
+and layout stay), a second run changes nothing, a refusal writes nothing."""
 
 from __future__ import annotations
 
@@ -87,3 +87,16 @@ def test_interface_imported_from_its_package_comes_from_the_msg_module(tmp_path:
     after = _fixed_once(root, "DEP008", "pkg/node.py", allow_left=True)
     assert after == body.replace("from std_msgs import", "from std_msgs.msg import").replace(
         "std_srvs.msg", "std_srvs.srv")
+
+
+def test_sibling_module_is_imported_through_its_package(tmp_path: Path) -> None:
+    root = _package(tmp_path)
+    (root / "pkg" / "helpers.py").write_text("def clamp(x):\n    return x\n")
+    body = ("import helpers as h  # aliased\n"
+            "from helpers import (clamp)\n"
+            "import helpers.x, rclpy\n"
+            "\nprint(h, clamp)\n")
+    (root / "pkg" / "node.py").write_text(body)
+    after = _fixed_once(root, "DEP007", "pkg/node.py", allow_left=True)
+    assert after == body.replace("import helpers as h", "from pkg import helpers as h").replace(
+        "from helpers import", "from pkg.helpers import")

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import posixpath
+import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -93,3 +94,18 @@ def _imports_itself(module: PythonModule | None, name: str) -> bool:
     DEP007's mistake again) imports the top-level ``name``: another module of that name exists
     (a compiled extension the file wraps), which its neighbours mean too."""
     return module is not None and any(i.top_level == name for i in module.imports)
+
+
+_NEXT_TO = re.compile(r"`(?P<top>\w+)` is a module next to .*")
+_SIBLING_FIX = re.compile(r"Import `(?P<full>[\w.]+)` \(or `\.\w+`\) instead")
+_ENCLOSING = re.compile(r"`(?P<top>\w+)` is the package `(?P<full>[\w.]+)` this module is in.*")
+
+
+def installed_name(message: str, fix: str | None) -> tuple[str, str] | None:
+    """(bare name, its installed dotted name) of a DEP007 hit's message and fix:
+    (``helpers``, ``my_pkg.helpers``), (``filters``, ``my_pkg.filters``)."""
+    sibling, written = _NEXT_TO.fullmatch(message), _SIBLING_FIX.fullmatch(fix or "")
+    if sibling and written and written["full"].endswith("." + sibling["top"]):
+        return sibling["top"], written["full"]
+    enclosing = _ENCLOSING.fullmatch(message)
+    return (enclosing["top"], enclosing["full"]) if enclosing else None
