@@ -1,14 +1,17 @@
-"""Fixers of setup() keywords: metadata package.xml decides, the script group, the test extra."""
+"""Fixers of setup() keywords: metadata package.xml decides, the script group and the module
+of a console script, the test extra."""
 
 from __future__ import annotations
 
+import ast
+import re
 from collections.abc import Iterator
 
 from pkgtool.edit.core import Edit, Fix
 from pkgtool.edit.setup_cfg import rename_option
 from pkgtool.edit.setup_py import SetupDoc
 from pkgtool.findings import Finding
-from pkgtool.fix.common import cfg_source, offer, setup_doc
+from pkgtool.fix.common import cfg_source, offer, python_nodes, setup_doc
 from pkgtool.fix.registry import Refusal, fixer
 from pkgtool.model.package import Package
 from pkgtool.rules.entry_points.misspelled_script_group import misspelt
@@ -78,6 +81,29 @@ def maintainer(package: Package, findings: list[Finding]) -> Iterator[Fix | Refu
         wanted = people[0].name if keyword == "maintainer" else people[0].email
         if wanted:
             yield from _from_manifest(package, keyword, wanted)
+
+
+@fixer("ENT002", "Write the installed module the console script means")
+def script_module(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rewrite the module of a console script that names an installed module without its
+    package (``talker = talker:main`` for ``my_pkg.talker``), when the rule found exactly
+    that module (its help says `Write `my_pkg.talker:main``). Safe: the script could not
+    start. Modules that are not written, not installed or misspelt need the user, and so
+    do scripts in setup.cfg."""
+    for doc, finding, nodes in python_nodes(package, findings):
+        literal = next((n for n in nodes if isinstance(n, ast.Constant)), None)
+        meant = finding.fix[7:-1].rpartition(":")[0] if finding.fix and \
+            finding.fix.startswith("Write `") else ""
+        written = finding.message.split("`")[1]
+        if literal is None or not meant or \
+                finding.message != f"`{written}` is not installed: the module is `{meant}`":
+            continue
+        text, start = doc.segment(literal), doc.start(literal)
+        found = list(re.finditer(rf"(?<==)(\s*){re.escape(written)}(?=\s*:)", text))
+        if len(found) == 1:
+            at = start + found[0].end(1)
+            yield Fix(f"Write `{meant}`", (Edit(doc.source.path, at, at + len(written),
+                                                meant),))
 
 
 @fixer("ENT005", "Name the entry point group `console_scripts`")

@@ -1,5 +1,6 @@
-"""The PYC016, PYC025, PYC031, PYC032, LCH005, LCH010 and SET006 fixers: exactly the fix is
-written (comments and layout stay), a second run changes nothing, a refusal writes nothing."""
+"""The PYC001, PYC016, PYC025, PYC031, PYC032, LCH005, LCH010, SET006 and ENT002 fixers:
+exactly the fix is written (comments and layout stay), a second run changes nothing, a
+refusal writes nothing."""
 
 from __future__ import annotations
 
@@ -169,3 +170,11 @@ def test_standard_module_name_bound_or_used_otherwise_is_left(tmp_path: Path) ->
     assert _read(root, NODE) == body
     assert sorted(f.message for f in result.findings) == [
         "Undefined name `json`", "Undefined name `sys`", "Undefined name `time`"]
+
+
+def test_console_script_gets_its_package_prefix(tmp_path: Path) -> None:
+    script = ("'talker = pkg.talker:main',", "'talker=talker:main',  # the node")
+    root = _package(tmp_path, setup_dot_py=script)
+    before = _read(root, "setup.py")
+    assert _fixed_once(root, "ENT002", "setup.py") == before.replace(
+        "'talker=talker:main'", "'talker=pkg.talker:main'")

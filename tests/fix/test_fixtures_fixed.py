@@ -40,7 +40,11 @@ MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages
               "interfaces_listed_in_an_included_cmake_file", "interfaces_listed_in_cmake",
               "interfaces_without_wheels",
               "misspelled_companion_types", "misspelled_generated_submodules",
-              "workspace_interfaces", "workspaces_sharing_a_name"))}
+              "workspace_interfaces", "workspaces_sharing_a_name")),
+          *(("ENT002", case) for case in (
+              "excluded_by_pattern", "explicit_list_drops_subpackages", "missing_init",
+              "module_never_written", "package_named_by_its_path",
+              "package_path_with_trailing_slash", "src_layout_without_package_dir"))}
 """MAN018 fixes pip and import names only; build types, ROS 1 packages and standard library
 modules need the user (a `<build_type>`, a ROS 2 replacement, or nothing). DAT001 fixes a
 string of sources and creates the (empty) ament index marker: other missing files have content
@@ -49,7 +53,9 @@ only their author knows. DAT008's values at the top level belong to a node only 
 pairs remappings were meant to be; PYC016 does not reword print-style logging calls. DEP008
 fixes the module an interface is imported from, never its name: these cases misspell names
 (or need a companion type's attribute); MAN017 has no license in setup.py to copy. PYC001
-imports standard modules only: these cases misspell names or use third-party modules."""
+imports standard modules only: these cases misspell names or use third-party modules. ENT002
+rewrites a script's module only where the rule names the installed one; these cases need
+setup.py's packages, an `__init__.py` or the module itself, which the author chooses."""
 
 REVEALED = {("PYC013", "called_callbacks"): {"PYC026"},
             ("LCH005", "parameters_not_a_list"): {"DAT012"},
