@@ -14,6 +14,7 @@ from pkgtool.findings import Finding
 from pkgtool.fix.common import cfg_source, offer, python_nodes, setup_doc
 from pkgtool.fix.registry import Refusal, fixer
 from pkgtool.model.package import Package
+from pkgtool.rules.data_files.common import is_folder
 from pkgtool.rules.entry_points.misspelled_script_group import misspelt
 from pkgtool.rules.setup.tests_require import TEST_EXTRAS
 
@@ -38,10 +39,22 @@ def _from_manifest(package: Package, keyword: str, wanted: str | None
 def name(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
     """package.xml wins: the string literal the name comes from (usually ``package_name =
     '...'``) gets package.xml's name, so data_files paths built from it follow. Safe: ROS tools
-    know the package by package.xml's name only; a name computed by code is refused."""
+    know the package by package.xml's name only; a name computed by code is refused, and so is
+    one that is also the Python package ``packages=`` installs (``packages=[package_name]``
+    with the code in ``<old name>/``): the code would no longer be installed."""
     manifest = package.manifest
-    yield from _from_manifest(package, "name", manifest.name.value if manifest and
-                              manifest.name else None)
+    wanted = manifest.name.value if manifest and manifest.name else None
+    setup = package.setup_py
+    old = setup.name.value if setup and setup.name else None
+    installs = setup.packages.names if setup and setup.packages and \
+        setup.packages.kind == "list" else ()
+    if isinstance(old, str) and wanted and old in installs and is_folder(package, old) and \
+            not is_folder(package, wanted):
+        yield Refusal(f"`{old}` is also the Python package setup.py installs (the folder "
+                      f"`{old}/`): rename the folder to `{wanted}` first, or write the names "
+                      "by hand")
+        return
+    yield from _from_manifest(package, "name", wanted)
 
 
 @fixer("SET004", "Write package.xml's version into setup.py")

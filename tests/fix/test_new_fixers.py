@@ -143,6 +143,16 @@ def test_setup_name_follows_package_xml_through_its_variable(tmp_path: Path) -> 
     assert _fixed_once(root, "SET003", "setup.py") == before.replace("'pkg2'", "'pkg'")
 
 
+def test_setup_name_that_also_names_the_installed_code_is_refused(tmp_path: Path) -> None:
+    root = _package(tmp_path, package_dot_xml=("<name>pkg</name>", "<name>robot</name>"),
+                    setup_dot_py=("find_packages(exclude=['test'])", "[package_name]"))
+    before = _read(root, "setup.py")
+    result = _fix(root, "SET003")
+    assert _read(root, "setup.py") == before  # packages=[package_name] would lose pkg/
+    assert any("not fixed: SET003: `pkg` is also the Python package" in n
+               for n in result.notes), result.notes
+
+
 def test_computed_setup_name_is_refused_with_the_reason(tmp_path: Path) -> None:
     root = _package(tmp_path, setup_dot_py=("name=package_name,", "name=package_name.title(),"))
     before = _read(root, "setup.py")
