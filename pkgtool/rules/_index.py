@@ -117,8 +117,6 @@ RULES = {
     "PYC035": ("blocking-call-in-callback", "error", True, "python.blocking_call_in_callback"),
     "PYC036": ("future-result-too-early", "error", True, "python.future_result_too_early"),
     "PYC037": ("goal-state-not-set", "error", True, "python.goal_state_not_set"),
-    "PYC038": ("execute-callback-returns-nothing", "error", True,
-               "python.execute_callback_returns_nothing"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

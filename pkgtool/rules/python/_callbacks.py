@@ -1,4 +1,4 @@
-"""The callbacks given to rclpy's API (PYC013, PYC024, PYC026, PYC035, PYC037, PYC038)."""
+"""The callbacks given to rclpy's API (PYC013, PYC024, PYC026, PYC035, PYC037)."""
 
 from __future__ import annotations
 
@@ -44,8 +44,7 @@ def _arguments(package: Package) -> Iterator[Argument]:
 
 def execute_callbacks(package: Package
                       ) -> Iterator[tuple[str, ast.expr, Function, str, Index]]:
-    """The functions certainly given to ``ActionServer`` as execute callbacks (PYC037,
-    PYC038): path, the argument, the function, its goal handle parameter and the index."""
+    """The functions certainly given to ``ActionServer`` as execute callbacks (PYC037): path, the argument, the function, its goal handle parameter and the index."""
     for path, value, api, name, index, tree in callback_arguments(package):
         found = callback_function(value, tree, index) \
             if api == "ActionServer()" and name == "execute_callback" else None
