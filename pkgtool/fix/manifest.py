@@ -17,8 +17,7 @@ from pkgtool.model.package import Package
 from pkgtool.records import replace
 from pkgtool.rules.manifest.dependency_names import neighbours
 from pkgtool.rules.manifest.non_spdx_license import spdx_spelling
-from pkgtool.rules.manifest.template_placeholder import is_placeholder
-from pkgtool.rules.setup_values import text_of
+from pkgtool.rules.manifest.template_placeholder import setup_answer
 
 
 def _remove_lines(package: Package, findings: list[Finding], title: str, *, safe: bool
@@ -194,15 +193,13 @@ def placeholder(package: Package, findings: list[Finding]) -> Iterator[Fix | Ref
     needs a tag each; its SPDX identifier when it names exactly one). Safe: only metadata
     changes, and the author wrote it. Placeholder emails, and placeholders setup.py does not
     answer, are the author's to fill in."""
-    doc, setup = manifest_doc(package), package.setup_py
+    doc = manifest_doc(package)
     for finding in findings if doc is not None else ():
         element = child_at(doc, finding.span.line) if doc is not None else None
         if doc is None or element is None or element.local not in ("description", "license"):
             continue
-        value = getattr(setup, element.local) if setup is not None else None
-        found = text_of(value)
-        text = " ".join(found[0].split()) if found else ""
-        if not text or is_placeholder(text) or element.local == "license" and "," in text:
+        text = setup_answer(package, element.local)
+        if text is None:
             yield Refusal(f"only the author knows the package's {element.local}: write it into "
                           "package.xml (setup.py's is no help).")
             continue

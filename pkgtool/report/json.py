@@ -46,7 +46,7 @@ def finding_dict(finding: Finding, fixable: Mapping[str, bool]) -> dict[str, obj
     it, ``safe``, ``unsafe`` (only with ``--unsafe-fixes``) or null. ``related`` lists the
     other places of the same mistake.
     """
-    safe = fixable.get(finding.code)
+    safe = None if finding.manual else fixable.get(finding.code)
     return {
         "rule": finding.code,
         "severity": finding.severity.value,

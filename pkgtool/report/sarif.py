@@ -61,7 +61,7 @@ def _result(finding: Finding, index: dict[str, int], fixable: Mapping[str, bool]
             ) -> dict[str, object]:
     location = _location(finding, finding.span)
     properties = {"package": finding.package}
-    if finding.code in fixable:
+    if finding.code in fixable and not finding.manual:
         properties["fixable"] = "safe" if fixable[finding.code] else "unsafe"
     result: dict[str, object] = {
         "ruleId": finding.code,

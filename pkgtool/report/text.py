@@ -32,15 +32,17 @@ def finding_lines(finding: Finding) -> str:
 
 
 def _mark(finding: Finding, fixable: Mapping[str, bool]) -> str:
-    """`` [*]`` after a code ``--fix`` repairs, `` [-]`` for an ``--unsafe-fixes`` one."""
-    if finding.code not in fixable:
+    """`` [*]`` after a code ``--fix`` repairs, `` [-]`` for an ``--unsafe-fixes`` one;
+    nothing for a finding its fixer will refuse (``manual``)."""
+    if finding.code not in fixable or finding.manual:
         return ""
     return " [*]" if fixable[finding.code] else " [-]"
 
 
 def _fixable_note(findings: Sequence[Finding], fixable: Mapping[str, bool]) -> str:
-    safe = sum(1 for f in findings if fixable.get(f.code))
-    unsafe = sum(1 for f in findings if fixable.get(f.code) is False)
+    offered = [f for f in findings if not f.manual]
+    safe = sum(1 for f in offered if fixable.get(f.code))
+    unsafe = sum(1 for f in offered if fixable.get(f.code) is False)
     parts = [f"[*] {safe} fixable with `--fix`"] if safe else []
     if unsafe:
         parts.append(f"[-] {unsafe} more with `--fix --unsafe-fixes`")

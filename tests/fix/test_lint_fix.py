@@ -97,6 +97,19 @@ def test_reports_mark_fixable_findings(package: Path) -> None:
         {"safe"}
 
 
+def test_findings_the_fixer_will_refuse_are_not_offered(tmp_path: Path) -> None:
+    files = correct_package_files("pkg")
+    files["package.xml"] = files["package.xml"].replace(
+        "<license>Apache-2.0</license>", "<license>TODO: License declaration</license>")
+    files["setup.py"] = files["setup.py"].replace(
+        "license='Apache-2.0'", "license='TODO: License declaration'")
+    write_tree(tmp_path / "pkg", files)
+    text = run_cli("lint", "pkg", cwd=tmp_path).stdout
+    assert "MAN017 `<license>`" in text and "fixable" not in text  # setup.py is no help
+    document = json.loads(run_cli("lint", "-f", "json", "pkg", cwd=tmp_path).stdout)
+    assert [f["fixable"] for f in document["findings"] if f["rule"] == "MAN017"] == [None]
+
+
 def test_a_symlinked_manifest_out_of_the_package_is_not_written(package: Path) -> None:
     outside = package.parent / "outside.xml"
     outside.write_bytes((package / "package.xml").read_bytes())

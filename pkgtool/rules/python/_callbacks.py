@@ -44,7 +44,8 @@ def _arguments(package: Package) -> Iterator[Argument]:
 
 def execute_callbacks(package: Package
                       ) -> Iterator[tuple[str, ast.expr, Function, str, Index]]:
-    """The functions certainly given to ``ActionServer`` as execute callbacks (PYC037): path, the argument, the function, its goal handle parameter and the index."""
+    """The functions certainly given to ``ActionServer`` as execute callbacks (PYC037): path,
+    the argument, the function, its goal handle parameter and the index."""
     for path, value, api, name, index, tree in callback_arguments(package):
         found = callback_function(value, tree, index) \
             if api == "ActionServer()" and name == "execute_callback" else None
