@@ -26,7 +26,8 @@ class Index:
     """The nodes of one module the PYC rules look at, collected in a single walk.
 
     ``aliases`` maps names bound only by imports to the dotted name they stand for;
-    ``parents`` maps ``id(node)`` to the node's parent; ``dotted`` keeps what
+    ``parents`` maps ``id(node)`` to the node's parent; ``bound`` holds every name the module
+    binds anywhere (imports, assignments, parameters, definitions); ``dotted`` keeps what
     :meth:`qualified` found, by ``id(node)`` (with the node: its id is not reused meanwhile).
     """
 
@@ -38,6 +39,7 @@ class Index:
     classes: list[ast.ClassDef] = field(default_factory=list)
     parents: dict[int, ast.AST] = field(default_factory=dict)
     aliases: dict[str, str] = field(default_factory=dict)
+    bound: frozenset[str] = frozenset()
     dotted: dict[int, tuple[ast.expr, str | None]] = field(default_factory=dict, compare=False,
                                                            repr=False)
 
@@ -127,17 +129,17 @@ def _index(tree: ast.Module) -> Index:
     groups them): each list in walk order, ``functions`` the sync ones first."""
     walk = walk_once(tree)
     by_class = walk.by_class
-    index = Index(parents=walk.parents)
     bound: dict[str, set[str | None]] = {}
     for name in by_class.get(ast.Name, ()):
         if not isinstance(name.ctx, ast.Load):  # type: ignore[attr-defined]
             bound.setdefault(name.id, set()).add(None)  # type: ignore[attr-defined]
-    index.attributes.extend(node for node in by_class.get(ast.Attribute, ())  # type: ignore
-                            if isinstance(node.ctx, ast.Load))  # type: ignore[attr-defined]
     for kind in _BINDERS:
         for node in by_class.get(kind, ()):
             for name, target in _bindings(node):
                 bound.setdefault(name, set()).add(target)
+    index = Index(parents=walk.parents, bound=frozenset(bound))
+    index.attributes.extend(node for node in by_class.get(ast.Attribute, ())  # type: ignore
+                            if isinstance(node.ctx, ast.Load))  # type: ignore[attr-defined]
     for kind, field_name in _COLLECTED:
         getattr(index, field_name).extend(by_class.get(kind, ()))
     index.aliases.update({name: target for name, (target, *more) in bound.items()

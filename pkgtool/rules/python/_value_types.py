@@ -1,10 +1,12 @@
 """The type a local name or a node's ``self.x`` certainly holds where it is read.
 
 A name (or attribute) has a certain type when every binding of it gives a literal of one
-type (``count = 0``), or keeps that type (``count += 1``: ``+``, ``-``, ``*`` of two ints,
-floats or strings), or every binding is a node's ``self.get_parameter(...)`` (rclpy's
-``Parameter`` object, not its value). Any other binding (a parameter, a loop target, another
-call's result, an import, ``global``, ``setattr``) leaves it unknown.
+type (``count = 0``) or the result of a builtin conversion (``int(x)``, ``len(x)``), or keeps
+that type (``count += 1``: ``+``, ``-``, ``*`` of two ints, floats or strings), or every
+binding is a node's ``self.get_parameter(...)`` (rclpy's ``Parameter`` object, not its
+value), or the text of one (``str(self.get_parameter(...))``). Any other binding (a
+parameter, a loop target, another call's result, an import, ``global``, ``setattr``) leaves
+it unknown.
 """
 
 from __future__ import annotations
@@ -22,6 +24,11 @@ from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
 PARAMETER = "Parameter"
 """The type of what a node's ``get_parameter()`` returns (``rclpy.parameter.Parameter``)."""
+PARAMETER_TEXT = "str (a Parameter object's repr)"
+"""The type of ``str()`` of a node's ``self.get_parameter(...)``, or of an f-string formatting
+one: a str, ``<rclpy.parameter.Parameter object at 0x...>``, not the parameter's value."""
+_BUILTINS = {"int": "int", "float": "float", "str": "str", "bool": "bool", "len": "int"}
+"""Builtins whose call always gives a value of one type, and that type."""
 _UNKNOWN = "?"
 _KEEPING = (ast.Add, ast.Sub, ast.Mult)
 """Augmented operators that give an int for two ints, a float for two floats (``/`` does
@@ -45,11 +52,28 @@ def receiver_class(name: ast.expr, index: Index) -> ast.ClassDef | None:
         method_receiver(method) == name.id else None
 
 
+def _builtin_result(value: ast.expr, index: Index) -> str | None:
+    """The type a call of one of :data:`_BUILTINS` gives, when the module binds its name
+    nowhere; :data:`PARAMETER_TEXT` for ``str()`` of a node's ``get_parameter()``."""
+    if not isinstance(value, ast.Call) or not isinstance(value.func, ast.Name) or \
+            value.func.id not in _BUILTINS or value.func.id in index.bound or value.keywords \
+            or len(value.args) != 1 or isinstance(value.args[0], ast.Starred):
+        return None
+    if value.func.id == "str" and _made_type(value.args[0], index) == PARAMETER:
+        return PARAMETER_TEXT
+    return _BUILTINS[value.func.id]
+
+
 def _made_type(value: ast.expr, index: Index) -> str | None:
-    """The type of a literal, ``type`` for an imported message, service or action class,
-    or :data:`PARAMETER` for ``self.get_parameter(...)`` in a method of a node class (in a
-    module not defining a ``get_parameter`` of its own)."""
-    found = literal_type(value)
+    """The type of a literal or of a builtin conversion's result, ``type`` for an imported
+    message, service or action class, or :data:`PARAMETER` for ``self.get_parameter(...)``
+    in a method of a node class (in a module not defining a ``get_parameter`` of its own),
+    :data:`PARAMETER_TEXT` for the text of one."""
+    if isinstance(value, ast.JoinedStr) and any(
+            isinstance(part, ast.FormattedValue) and part.format_spec is None and
+            _made_type(part.value, index) == PARAMETER for part in value.values):
+        return PARAMETER_TEXT
+    found = literal_type(value) or _builtin_result(value, index)
     if found is None and isinstance(value, (ast.Name, ast.Attribute)) and \
             INTERFACE.fullmatch(index.qualified(value) or ""):
         return "type"  # an imported message class itself (`String`, not `String()`)
@@ -168,16 +192,15 @@ def _node_attribute_type(value: ast.Attribute, package: Package, index: Index) -
     return _attribute_type(package, value.attr)
 
 
-def certain_type(value: ast.expr, package: Package, tree: ast.Module, index: Index
-                 ) -> str | None:
+def certain_type(value: ast.expr, package: Package, tree: ast.Module, index: Index, *,
+                 texts: bool = False) -> str | None:
     """The type ``value`` certainly has: a literal's, :data:`PARAMETER` for a node's
     ``self.get_parameter(...)``, a local name's or a node attribute's all of whose bindings
-    give that one type; None when not certain."""
+    give that one type; None when not certain. The text of a ``Parameter`` is a ``str``, or
+    with ``texts`` :data:`PARAMETER_TEXT`."""
     found = _made_type(value, index)
-    if found is not None:
-        return found
-    if isinstance(value, ast.Name):
-        return _local_type(value, tree, index)
-    if isinstance(value, ast.Attribute) and isinstance(value.ctx, ast.Load):
-        return _node_attribute_type(value, package, index)
-    return None
+    if found is None and isinstance(value, ast.Name):
+        found = _local_type(value, tree, index)
+    elif found is None and isinstance(value, ast.Attribute) and isinstance(value.ctx, ast.Load):
+        found = _node_attribute_type(value, package, index)
+    return "str" if found == PARAMETER_TEXT and not texts else found

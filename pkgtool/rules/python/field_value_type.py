@@ -106,10 +106,12 @@ def field_value_type(package: Package) -> Iterator[Hit]:
     accept it: an int, bool, string or `None` for a `float32`/`float64` field
     (`twist.linear.x = 1`), a float, string or `None` for an integer field, anything but
     `True`/`False` for a `bool` field, anything but a string for a `string` field. Values
-    judged are literals (`1`, `-2`, `'a'`, `None`), local names every assignment of which
-    in their function gives a literal of one type (`n = 0`, `n += 1`), and attributes
-    `self.x` of a class deriving from rclpy's `Node` alone when every assignment to an
-    attribute `x` in the package's installed modules does (`self.count = 0`); other
+    judged are literals (`1`, `-2`, `'a'`, `None`), the results of the builtins `int()`,
+    `float()`, `str()`, `bool()` and `len()` in modules that bind none of these names
+    themselves (`msg.data = len(items)` in a `string` field), local names every assignment
+    of which in their function gives a value of one such type (`n = 0`, `n += 1`), and
+    attributes `self.x` of a class deriving from rclpy's `Node` alone when every assignment
+    to an attribute `x` in the package's installed modules does (`self.count = 0`); other
     expressions never. A field that holds a message is reported when given a number, bool
     or string (`cmd.linear = 0.5`), and a `builtin_interfaces/Time` or `Duration` field when given
     rclpy's own `Time` or `Duration` (`header.stamp = self.get_clock().now()`, without

@@ -474,3 +474,15 @@ def response_read_before_it_arrives(root: Path) -> None:
          "        self.client = self.create_client(Trigger, 'upstream')\n"
          "        future = self.client.call_async(Trigger.Request())\n"
          "        self.get_logger().info(future.result().message)\n")
+
+
+@case("PYC031", TALKER, "self.create_publisher(String, topic, 10)")
+def parameter_object_text_as_topic(root: Path) -> None:
+    edit(root, TALKER, "topic = self.get_parameter('topic').value",
+         "topic = str(self.get_parameter('topic'))")
+
+
+@case("PYC025", TALKER, "msg.data = len(self.publisher.topic_name)")
+def length_for_a_string_field(root: Path) -> None:
+    edit(root, TALKER, "msg.data = f'Hello {self.count}'",
+         "msg.data = len(self.publisher.topic_name)")
