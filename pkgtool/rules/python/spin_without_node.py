@@ -9,7 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.memo import per_object
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_api import node_subclasses, unpacks
+from pkgtool.rules.node_api import NODE_CLASSES, node_subclasses, unpacks
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings, scope_walk
 from pkgtool.rules.syntax_trees import Index, installed_trees
@@ -19,6 +19,13 @@ SPINS = {"rclpy.spin": ("node",), "rclpy.spin_once": ("node",),
 """rclpy's spin functions (Jazzy) and their required parameters, in order."""
 ADD_NODE = "add_node"
 """The executor method taking the node (``Executor.add_node(node)``)."""
+ACTIONS = frozenset({"rclpy.action.ActionClient", "rclpy.action.client.ActionClient",
+                     "rclpy.action.ActionServer", "rclpy.action.server.ActionServer"})
+"""rclpy's action client and server classes, whose first parameter is the node..."""
+ACTION_PARAMETERS = ("node", "action_type", "action_name")
+"""... of those they both require (Jazzy)."""
+_RCLPY_NODES = NODE_CLASSES - {"rclpy.create_node"}
+"""rclpy's node classes themselves."""
 
 Scope = ast.Module | ast.FunctionDef | ast.AsyncFunctionDef
 
@@ -56,25 +63,28 @@ def _assigned(scope: Scope) -> dict[str, list[ast.expr]]:
     return found
 
 
-def _class_named(value: ast.expr, classes: set[str], scopes: list[Scope]) -> str | None:
+def _class_named(value: ast.expr, classes: set[str], scopes: list[Scope], index: Index
+                 ) -> str | None:
     """The name of the module's Node subclass that ``value`` names, if it is one: bound
-    once, by its ``class`` statement, and in no function around the read."""
+    once, by its ``class`` statement, and in no function around the read; or of rclpy's
+    node class itself (``Node``, imported and bound no other way)."""
     if isinstance(value, ast.Name) and value.id in classes \
             and scope_bindings(scopes[-1])[value.id] == 1 \
             and not any(scope_bindings(s)[value.id] for s in scopes[:-1]):
         return value.id
+    if isinstance(value, (ast.Name, ast.Attribute)) and index.qualified(value) in _RCLPY_NODES:
+        return ast.unparse(value)
     return None
 
 
-def _node_class(value: ast.expr, classes: set[str], scopes: list[Scope]) -> str | None:
-    """The Node subclass that ``value`` certainly is (the class, not an instance): its name,
+def _node_class(value: ast.expr, classes: set[str], scopes: list[Scope], index: Index
+                ) -> str | None:
+    """The node class that ``value`` certainly is (the class, not an instance): its name,
     or a variable only ever assigned it (or None)."""
-    if not isinstance(value, ast.Name):
-        return None
-    direct = _class_named(value, classes, scopes)
-    if direct or value.id in classes:
+    direct = _class_named(value, classes, scopes, index)
+    if direct or not isinstance(value, ast.Name) or value.id in classes:
         return direct
-    found = {_class_named(v, classes, scopes) for v in _values(value.id, scopes)
+    found = {_class_named(v, classes, scopes, index) for v in _values(value.id, scopes)
              if not (isinstance(v, ast.Constant) and v.value is None)}
     return found.pop() if len(found) == 1 and None not in found else None
 
@@ -89,8 +99,9 @@ def _is_executor(value: ast.expr, index: Index, scopes: list[Scope]) -> bool:
 
 
 def _problem(call: ast.Call, required: tuple[str, ...], classes: set[str],
-             scopes: list[Scope]) -> str | None:
-    """What is wrong with the node passed to a spin or ``add_node`` call, if anything."""
+             scopes: list[Scope], index: Index) -> str | None:
+    """What is wrong with the node passed to a spin, ``add_node`` or action call, if
+    anything."""
     if unpacks(call):
         return None
     node = call.args[0] if call.args else next(
@@ -100,7 +111,11 @@ def _problem(call: ast.Call, required: tuple[str, ...], classes: set[str],
         return "is given no node: it raises `TypeError`; pass the node object"
     if given < len(required):
         return f"takes the node and the {required[-1]}: it raises `TypeError`"
-    cls = _node_class(node, classes, scopes)
+    cls = _node_class(node, classes, scopes, index)
+    if cls and required == ACTION_PARAMETERS:
+        return f"is given the class `{cls}`, not a node: it raises `AttributeError: " \
+               "'property' object has no attribute`; pass the node object (`self` in a " \
+               "method of the node)"
     if cls:
         return f"is given the class `{cls}`, not a node: spinning it raises `TypeError`; " \
                f"create the node with `{cls}()` and pass that"
@@ -114,19 +129,22 @@ def spin_without_node(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Checks the node argument of `rclpy.spin`, `rclpy.spin_once`,
-    `rclpy.spin_until_future_complete` and of `add_node` on a variable only ever assigned an
-    rclpy executor (`executor = SingleThreadedExecutor()`), in installed modules. Reports a
-    call that passes no node (or, for `spin_until_future_complete`, no future), and one that
-    passes a `Node` subclass defined in the module instead of an instance of it: the class
-    name itself, or a variable whose every assignment is the class (or `None`). Calls with
-    `*args` or `**kwargs`, names bound any other way (parameters, loops, imports) and any
+    `rclpy.spin_until_future_complete`, of `add_node` on a variable only ever assigned an
+    rclpy executor (`executor = SingleThreadedExecutor()`), and of rclpy's `ActionClient`
+    and `ActionServer`, in installed modules. Reports a call that passes no node (or, for
+    `spin_until_future_complete`, no future), and one that passes a node class instead of
+    an instance of it: a `Node` subclass defined in the module or rclpy's `Node` itself,
+    by its name or through a variable whose every assignment is the class (or `None`).
+    Calls with `*args` or `**kwargs`, names bound any other way (parameters, loops) and any
     other expression are not checked.
 
     ## Why is this bad?
     `rclpy.spin()` raises `TypeError: spin() missing 1 required positional argument: 'node'`
     at start-up; passing the class (`rclpy.spin(Talker)`, `node = Talker`) fails inside the
     executor as soon as it spins, with `TypeError: 'property' object is not iterable`, a
-    message that does not point at the missing parentheses.
+    message that does not point at the missing parentheses. `ActionClient(FibClient, ...)`
+    or `ActionServer(Node, ...)` raises `AttributeError: 'property' object has no attribute
+    'add_entity'` in the node's constructor.
 
     ## Example
     ```python
@@ -146,14 +164,14 @@ def spin_without_node(package: Package) -> Iterator[Hit]:
         classes = {c.name for c in node_subclasses(index) if c in tree.body}
         for call in index.calls:
             target = index.qualified(call.func)
-            required = SPINS.get(target or "")
+            required = ACTION_PARAMETERS if target in ACTIONS else SPINS.get(target or "")
             if required is None and isinstance(call.func, ast.Attribute) and \
                     call.func.attr == ADD_NODE and target is None:
                 scopes = _scopes(call, tree, index)
                 required = ("node",) if _is_executor(call.func.value, index, scopes) else None
             if required is None:
                 continue
-            problem = _problem(call, required, classes, _scopes(call, tree, index))
+            problem = _problem(call, required, classes, _scopes(call, tree, index), index)
             if problem:
                 shown = target or ast.unparse(call.func)
                 yield Hit(Span(module.path, call.lineno, call.col_offset + 1),

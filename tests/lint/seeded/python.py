@@ -486,3 +486,14 @@ def parameter_object_text_as_topic(root: Path) -> None:
 def length_for_a_string_field(root: Path) -> None:
     edit(root, TALKER, "msg.data = f'Hello {self.count}'",
          "msg.data = len(self.publisher.topic_name)")
+
+
+@case("PYC017", TALKER, "ActionClient(Talker, Fibonacci, 'fibonacci')")
+def node_class_given_to_an_action_client(root: Path) -> None:
+    add_import(root, TALKER, "from example_interfaces.action import Fibonacci")
+    add_import(root, TALKER, "from rclpy.action import ActionClient")
+    edit(root, TALKER, "        self.count = 0\n",
+         "        self.count = 0\n"
+         "        self.fibonacci = ActionClient(Talker, Fibonacci, 'fibonacci')\n")
+    edit(root, "package.xml", "  <depend>rclpy</depend>\n",
+         "  <depend>example_interfaces</depend>\n  <depend>rclpy</depend>\n")
