@@ -2,14 +2,56 @@
 
 from __future__ import annotations
 
+import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import name_argument, node_constructions, unpacks
-from pkgtool.rules.syntax_trees import installed_trees
+from pkgtool.rules.scopes import scope_bindings
+from pkgtool.rules.syntax_trees import Index, installed_trees
 from pkgtool.rules.registry import rule
+
+
+def _forwarded(call: ast.Call, index: Index) -> str | None:
+    """The name of the class whose ``__init__`` makes ``call``, a ``super().__init__()``
+    giving no node name, when all it gives is that ``__init__``'s own ``*args`` and
+    ``**kwargs``, used nowhere else (so the name can only come from the class's caller)."""
+    init = index.enclosing_function(call)
+    cls = index.parents.get(id(init)) if init is not None else None
+    if init is None or init.name != "__init__" or not isinstance(cls, ast.ClassDef):
+        return None
+    packed = {a.arg for a in (init.args.vararg, init.args.kwarg) if a is not None}
+    given = [a.value for a in call.args if isinstance(a, ast.Starred)] + \
+        [k.value for k in call.keywords if k.arg is None]
+    if len(given) != len(call.args) + sum(k.arg is None for k in call.keywords) or \
+            not given or any(not isinstance(g, ast.Name) or g.id not in packed for g in given):
+        return None
+    reads = [n for n in nodes_of_class(init, ast.Name) if isinstance(n, ast.Name) and
+             n.id in packed]
+    return cls.name if len(reads) == len(given) else None
+
+
+def _unnamed_constructions(tree: ast.Module, index: Index, name: str) -> Iterator[ast.Call]:
+    """Calls of the module's class ``name`` (bound once, by its ``class`` statement) that
+    give no argument but keywords other than ``node_name``."""
+    if scope_bindings(tree)[name] != 1 or name not in {c.name for c in tree.body
+                                                       if isinstance(c, ast.ClassDef)}:
+        return
+    for call in index.calls:
+        if isinstance(call.func, ast.Name) and call.func.id == name and not call.args and \
+                all(k.arg not in (None, "node_name") for k in call.keywords) and \
+                not any(scope_bindings(f)[name] for f in _functions_around(call, index)):
+            yield call
+
+
+def _functions_around(node: ast.AST, index: Index) -> Iterator[ast.FunctionDef]:
+    function = index.enclosing_function(node)
+    while function is not None:
+        yield function  # type: ignore[misc]
+        function = index.enclosing_function(function)
 
 
 @rule("PYC009", "missing-node-name", Severity.ERROR,
@@ -20,7 +62,11 @@ def missing_node_name(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports `super().__init__()` in classes derived from rclpy's `Node` (or `LifecycleNode`),
     and `Node()` or `rclpy.create_node()` calls, that pass no node name. Calls with `*args`
-    or `**kwargs` are not checked.
+    or `**kwargs` are not checked, but for one case: a node class whose `__init__` gives
+    `super().__init__()` nothing but its own `*args` and `**kwargs` (used nowhere else in
+    it, `super().__init__(**kwargs)`), constructed in the same module with no positional
+    argument and no `node_name=` (`Talker()`). Forwarding the arguments is correct code when
+    the caller names the node (`Talker(node_name='talker')`).
 
     ## Why is this bad?
     `node_name` is a required argument of `Node.__init__`: the node dies at start-up with
@@ -41,8 +87,20 @@ def missing_node_name(package: Package) -> Iterator[Hit]:
             super().__init__('talker')
     ```
     """
-    for module, _, index in installed_trees(package):
+    for module, tree, index in installed_trees(package):
         for call in node_constructions(index):
-            if name_argument(call) is None and not unpacks(call):
+            if name_argument(call) is not None:
+                continue
+            if not unpacks(call):
                 yield Hit(Span(module.path, call.lineno, call.col_offset + 1),
                           "The node is created without a name")
+            elif (name := _forwarded(call, index)) is not None:
+                for made in _unnamed_constructions(tree, index, name):
+                    yield Hit(Span(module.path, made.lineno, made.col_offset + 1),
+                              f"`{ast.unparse(made)}` gives no node name, and "
+                              f"`{name}.__init__` passes `Node.__init__` only what it is "
+                              "given: it raises `TypeError: missing 1 required positional "
+                              "argument: 'node_name'`",
+                              f"Pass the name, `{name}(node_name='my_node')`, or give "
+                              f"it in `{name}.__init__`: `super().__init__('my_node', "
+                              "**kwargs)`")

@@ -497,3 +497,8 @@ def node_class_given_to_an_action_client(root: Path) -> None:
          "        self.fibonacci = ActionClient(Talker, Fibonacci, 'fibonacci')\n")
     edit(root, "package.xml", "  <depend>rclpy</depend>\n",
          "  <depend>example_interfaces</depend>\n  <depend>rclpy</depend>\n")
+
+
+@case("PYC009", TALKER, "node = Talker()")
+def node_name_left_to_a_caller_that_gives_none(root: Path) -> None:
+    edit(root, TALKER, "super().__init__('talker', **kwargs)", "super().__init__(**kwargs)")
