@@ -100,7 +100,10 @@ class PackageRef:
 
 @record
 class LaunchFile:
-    """A launch file. ``python`` is the parsed module for Python launch files (its imports)."""
+    """A launch file. ``python`` is the parsed module for Python launch files (its imports).
+    ``paths`` are the file paths an XML or YAML launch file names with no substitution (a
+    parameter file, ``<param from=>``; an included launch file, ``<include file=>``), each
+    where it is written."""
 
     path: str
     kind: str
@@ -109,6 +112,7 @@ class LaunchFile:
     files: tuple[FileRef, ...]
     python: PythonModule | None = None
     problem: ParseProblem | None = None
+    paths: tuple[tuple[str, Span], ...] = ()
 
 
 NOT_LAUNCH_FOLDERS = frozenset({"test", "tests", "example", "examples", "doc", "docs"})

@@ -38,9 +38,10 @@ def read_launch(path: str, text: str) -> LaunchFile:
     found = reader(path, text)
     if isinstance(found, ParseProblem):
         return LaunchFile(path, kind, (), (), (), problem=found)
-    nodes, values = found
+    nodes, values, paths = found
     packages, files = _substitutions(values)
-    return LaunchFile(path, kind, tuple(nodes), packages, files)
+    return LaunchFile(path, kind, tuple(nodes), packages, files,
+                      paths=tuple((p, span) for p, span in paths if _static(p)))
 
 
 def _python(path: str, text: str) -> LaunchFile:
@@ -87,7 +88,14 @@ def _share_file(value: str, span: Span) -> FileRef | None:
 
 
 # XML -------------------------------------------------------------------------------------
-def _xml(path: str, text: str) -> tuple[list[NodeRef], list[tuple[str, Span]]] | ParseProblem:
+_XML_FILES = {"include": "file", "set_parameters_from_file": "filename"}
+"""XML launch actions naming a file, besides ``<param from=>``, and the attribute naming it."""
+Read = tuple[list[NodeRef], list[tuple[str, Span]], list[tuple[str, Span]]]
+"""What an XML or YAML launch file gives: its nodes, its attribute values, the file paths it
+names (parameter files, included launch files), each where it is written."""
+
+
+def _xml(path: str, text: str) -> Read | ParseProblem:
     from pkgtool.model.xml import parse_xml
 
     root = parse_xml(path, text)
@@ -95,7 +103,12 @@ def _xml(path: str, text: str) -> tuple[list[NodeRef], list[tuple[str, Span]]] |
         return root
     nodes: list[NodeRef] = []
     values: list[tuple[str, Span]] = []
+    paths: list[tuple[str, Span]] = []
     for element in _elements(root):
+        named = element.attribute(_XML_FILES.get(element.tag, "from")) \
+            if element.tag in _XML_FILES or element.tag == "param" else None
+        if named is not None:
+            paths.append((named, element.span))
         if element.tag in NODE_TAGS:
             executable = next((element.attribute(a) for a in NODE_TAGS[element.tag]
                                if element.attribute(a) is not None), None)
@@ -110,7 +123,7 @@ def _xml(path: str, text: str) -> tuple[list[NodeRef], list[tuple[str, Span]]] |
                 element.attribute("name"), element.attribute("namespace"), froms, remaps,
                 arguments))
         values.extend((value, element.span) for _, value in element.attributes)
-    return nodes, values
+    return nodes, values, paths
 
 
 def _named(node: NodeRef, name: str | None, namespace: str | None,
@@ -164,7 +177,7 @@ def yaml_problem(path: str, text: str, *, documents: bool = True) -> object:
         return ParseProblem("yaml-syntax", Span(path, 1, 1), detail)
 
 
-def _yaml(path: str, text: str) -> tuple[list[NodeRef], list[tuple[str, Span]]] | ParseProblem:
+def _yaml(path: str, text: str) -> Read | ParseProblem:
     import yaml
 
     root = yaml_problem(path, text, documents=False)
@@ -172,6 +185,7 @@ def _yaml(path: str, text: str) -> tuple[list[NodeRef], list[tuple[str, Span]]] 
         return root
     nodes: list[NodeRef] = []
     values: list[tuple[str, Span]] = []
+    paths: list[tuple[str, Span]] = []
     seen: set[int] = set()
     stack = [root] if root is not None else []
     while stack:
@@ -187,11 +201,31 @@ def _yaml(path: str, text: str) -> tuple[list[NodeRef], list[tuple[str, Span]]] 
                 if isinstance(key, yaml.ScalarNode) and key.value in NODE_TAGS and \
                         isinstance(value, yaml.MappingNode):
                     nodes.append(_yaml_node(key, value, path))
+                    paths.extend((str(p.value), _yaml_span(path, p))
+                                 for p in _yaml_params(value))
+                elif isinstance(key, yaml.ScalarNode) and key.value in _XML_FILES and \
+                        isinstance(value, yaml.MappingNode):
+                    paths.extend((str(v.value), _yaml_span(path, v)) for k, v in value.value
+                                 if getattr(k, "value", None) == _XML_FILES[key.value] and
+                                 isinstance(v, yaml.ScalarNode))
                 stack.extend((value, key))
         elif isinstance(node, yaml.SequenceNode):
             stack.extend(reversed(node.value))
     nodes.sort(key=lambda n: (n.span.line, n.span.col))
-    return nodes, values
+    return nodes, values, paths
+
+
+def _yaml_span(path: str, node: object) -> Span:
+    mark = getattr(node, "start_mark")
+    return Span(path, mark.line + 1, mark.column + 1)
+
+
+def _yaml_params(mapping: object) -> list[object]:
+    """The scalar ``from:`` values of the ``param:`` entries of a YAML launch node."""
+    import yaml
+
+    return [p["from"] for p in _yaml_entries(mapping, "param")
+            if isinstance(p.get("from"), yaml.ScalarNode)]
 
 
 def _yaml_node(tag: object, mapping: object, path: str) -> NodeRef:
@@ -205,13 +239,13 @@ def _yaml_node(tag: object, mapping: object, path: str) -> NodeRef:
     key = next((a for a in NODE_TAGS[tag.value] if a in fields), None)
 
     def span(node: yaml.Node) -> Span:
-        return Span(path, node.start_mark.line + 1, node.start_mark.column + 1)
+        return _yaml_span(path, node)
 
     names = tuple(str(k.value) for k, _ in mapping.value if isinstance(k, yaml.ScalarNode))
     node = NodeRef(_static(fields.get("pkg")), _static(fields[key] if key else None), span(tag),
                    str(tag.value), names, span(scalars["pkg"]) if "pkg" in scalars else None,
                    span(scalars[key]) if key else None)
-    params = [p["from"] for p in _yaml_entries(mapping, "param") if "from" in p]
+    params = _yaml_params(mapping)
     remaps = [(r.get("from"), r.get("to")) for r in _yaml_entries(mapping, "remap")]
     return _named(node, fields.get("name"), fields.get("namespace"),
                   [(str(p.value), span(p)) for p in params if isinstance(p, yaml.ScalarNode)],

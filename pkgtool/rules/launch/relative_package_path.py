@@ -29,17 +29,32 @@ def _paths(call: ast.Call, index: Index) -> list[ast.expr]:
     return list(parameters.elts) if isinstance(parameters, (ast.List, ast.Tuple)) else []
 
 
+def _written(package: Package) -> Iterator[tuple[str, Span]]:
+    """The file paths the launch files write as literals where a file is read: Python's
+    (:func:`_paths`) and the XML and YAML ones' (``<param from=>``, ``<include file=>``)."""
+    for path, index in launch_indexes(package):
+        for call in index.calls:
+            for value in _paths(call, index):
+                if isinstance(value, ast.Constant) and isinstance(value.value, str):
+                    yield value.value, Span(path, value.lineno, value.col_offset + 1)
+    for launch in package.launch_files:
+        yield from launch.paths
+
+
 @rule("LCH012", "relative-package-path", Severity.ERROR,
       fix="Build the path from the share folder: "
-          "`PathJoinSubstitution([FindPackageShare('my_pkg'), 'config', 'params.yaml'])`")
+          "`PathJoinSubstitution([FindPackageShare('my_pkg'), 'config', 'params.yaml'])`, "
+          "or `$(find-pkg-share my_pkg)/config/params.yaml` in XML and YAML")
 def relative_package_path(package: Package) -> Iterator[Hit]:
-    """A Python launch file names a file of its package by a path relative to the package.
+    """A launch file names a file of its package by a path relative to the package.
 
     ## What it does
     Reports a string literal given as a parameter file of a launch_ros node
     (`parameters=['config/params.yaml']`) or as the file of a launch description source
-    (`PythonLaunchDescriptionSource('launch/robot.launch.py')`) that is a relative path to
-    a file of this package's source folder.
+    (`PythonLaunchDescriptionSource('launch/robot.launch.py')`) in a Python launch file, or
+    as the `from` of a node's `<param>` (`param: [{from: ...}]` in YAML), the `file` of an
+    `<include>` or the `filename` of a `<set_parameters_from_file>` in an XML or YAML launch
+    file, that is a relative path to a file of this package's source folder.
 
     ## Why is this bad?
     A relative path is resolved against the folder `ros2 launch` runs in, not against the
@@ -58,15 +73,13 @@ def relative_package_path(package: Package) -> Iterator[Hit]:
     params = PathJoinSubstitution([FindPackageShare('my_pkg'), 'config', 'params.yaml'])
     Node(package='my_pkg', executable='talker', parameters=[params])
     ```
+    ```xml
+    <param from="$(find-pkg-share my_pkg)/config/params.yaml"/>
+    ```
     """
     files = frozenset(package.files)
-    for path, index in launch_indexes(package):
-        for call in index.calls:
-            for value in _paths(call, index):
-                text = value.value if isinstance(value, ast.Constant) else None
-                if isinstance(text, str) and not posixpath.isabs(text) and \
-                        posixpath.normpath(text) in files:
-                    yield Hit(Span(path, value.lineno, value.col_offset + 1),
-                              f"`{text}` is relative to the folder `ros2 launch` runs in, not "
-                              "to the package: the file is found only when launching from "
-                              "the package's source folder")
+    for text, span in _written(package):
+        if not posixpath.isabs(text) and posixpath.normpath(text) in files:
+            yield Hit(span, f"`{text}` is relative to the folder `ros2 launch` runs in, not "
+                      "to the package: the file is found only when launching from the "
+                      "package's source folder")

@@ -332,3 +332,27 @@ def launch_function_returns_the_list(root: Path) -> None:
     edit(root, PY, "    return LaunchDescription([\n", "    return [\n")
     edit(root, PY, "    ])\n", "    ]\n")
     edit(root, PY, "from launch import LaunchDescription\n", "")
+
+
+@case("LCH012", XML_LAUNCH, "<param from=\"config/params.yaml\"/>")
+def xml_parameter_file_relative_to_the_source_folder(root: Path) -> None:
+    _other_launch(root, XML_LAUNCH, """
+        <launch>
+          <node pkg="base_pkg" exec="talker" name="talker">
+            <param from="config/params.yaml"/>
+          </node>
+        </launch>
+        """)
+
+
+@case("LCH012", YAML_LAUNCH, "from: config/params.yaml")
+def yaml_parameter_file_relative_to_the_source_folder(root: Path) -> None:
+    _other_launch(root, YAML_LAUNCH, """
+        launch:
+        - node:
+            pkg: base_pkg
+            exec: talker
+            name: talker
+            param:
+            - from: config/params.yaml
+        """)
