@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import re
+
 from pkgtool.model.condition import under_ros2
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.model.xml import XmlElement, parse_xml
-from pkgtool.records import record
+from pkgtool.records import record, replace
 
 
 @record
@@ -55,6 +57,9 @@ class Manifest:
     dependencies: tuple[Dependency, ...]
     build_type: Text | None
     has_schema_line: bool = False
+    schema_format: Text | None = None
+    """The format of the schema the ``<?xml-model?>`` line names (``3`` for
+    ``package_format3.xsd``), where that number is written."""
     is_ros1: bool = False
     """A ROS 1 (catkin) package: built by catkin, or with catkin as build tool. Tags whose
     ``condition`` is false under ROS 2 (``$ROS_VERSION == 1``) do not count: such a package is
@@ -70,7 +75,16 @@ def parse_manifest(path: str, text: str) -> Manifest | ParseProblem:
     root = parse_xml(path, text)
     if isinstance(root, ParseProblem):
         return root
-    return _manifest(path, root, "package_format" in text.split("<package", 1)[0])
+    head = text.split("<package", 1)[0]
+    schema = _SCHEMA.search(head)
+    return replace(_manifest(path, root, "package_format" in head), schema_format=Text(
+        schema.group(1), Span(path, head.count("\n", 0, schema.start(1)) + 1,
+                              schema.start(1) - head.rfind("\n", 0, schema.start(1))))
+        if schema else None)
+
+
+_SCHEMA = re.compile(r"<\?xml-model\s[^>]*?href\s*=\s*[\"'][^\"']*package_format(\d+)\.xsd")
+"""The ``<?xml-model?>`` processing instruction naming a package.xml schema."""
 
 
 def _text(element: XmlElement | None) -> Text | None:

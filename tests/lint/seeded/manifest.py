@@ -230,3 +230,8 @@ def message_package_misspelled(root: Path) -> None:
 def launch_package_misspelled(root: Path) -> None:
     edit(root, XML, "<exec_depend>launch_ros</exec_depend>",
          "<exec_depend>launch_ro</exec_depend>")
+
+
+@case("MAN025", XML, "package_format3.xsd")
+def format_lowered_below_the_schema_line(root: Path) -> None:
+    edit(root, XML, '<package format="3">', '<package format="2">')
