@@ -77,10 +77,10 @@ def parse_manifest(path: str, text: str) -> Manifest | ParseProblem:
         return root
     head = text.split("<package", 1)[0]
     schema = _SCHEMA.search(head)
-    return replace(_manifest(path, root, "package_format" in head), schema_format=Text(
-        schema.group(1), Span(path, head.count("\n", 0, schema.start(1)) + 1,
-                              schema.start(1) - head.rfind("\n", 0, schema.start(1))))
-        if schema else None)
+    at = schema.start(1) if schema else 0
+    where = Span(path, head.count("\n", 0, at) + 1, at - head.rfind("\n", 0, at))
+    return replace(_manifest(path, root, "package_format" in head),
+                   schema_format=Text(schema.group(1), where) if schema else None)
 
 
 _SCHEMA = re.compile(r"<\?xml-model\s[^>]*?href\s*=\s*[\"'][^\"']*package_format(\d+)\.xsd")
