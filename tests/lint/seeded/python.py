@@ -502,3 +502,10 @@ def node_class_given_to_an_action_client(root: Path) -> None:
 @case("PYC009", TALKER, "node = Talker()")
 def node_name_left_to_a_caller_that_gives_none(root: Path) -> None:
     edit(root, TALKER, "super().__init__('talker', **kwargs)", "super().__init__(**kwargs)")
+
+
+@case("PYC034", TALKER, "rate.sleep()")
+def rate_loop_in_the_constructor(root: Path) -> None:
+    edit(root, TALKER, "        self.timer = self.create_timer(period, self.publish)\n",
+         "        rate = self.create_rate(1.0 / period)\n        while rclpy.ok():\n"
+         "            self.publish()\n            rate.sleep()\n")
