@@ -1,4 +1,5 @@
-"""PYC033: a node's create_* method given more positional arguments than it takes."""
+"""PYC033: a node's create_* or get_parameter method given more positional arguments than it
+takes."""
 
 from __future__ import annotations
 
@@ -21,24 +22,28 @@ POSITIONAL = {
                              "raw")),
     "create_service": (("srv_type", "srv_name", "callback"), ("qos_profile", "callback_group")),
     "create_client": (("srv_type", "srv_name"), ("qos_profile", "callback_group")),
+    "get_parameter": (("name",), ()),
 }
 """rclpy ``Node`` methods (Humble to Rolling) whose later parameters are keyword-only: the
-positional ones, then the keyword-only ones."""
+positional ones, then the keyword-only ones (``get_parameter`` takes the name alone)."""
+_DEFAULT = "Give the default where the parameter is declared, `self.declare_parameter('x', 0.5)`"
 
 
 @rule("PYC033", "too-many-rclpy-arguments", Severity.ERROR,
       fix="Pass the later arguments by keyword: `qos_profile=...`, `callback_group=...`")
 def too_many_rclpy_arguments(package: Package) -> Iterator[Hit]:
-    """A node's `create_*` method is given more positional arguments than it takes.
+    """A node's `create_*` or `get_parameter` method is given too many positional arguments.
 
     ## What it does
-    Reports `self.create_publisher(...)`, `create_subscription`, `create_service` and
-    `create_client` calls in the methods of a `Node` subclass that pass more positional
-    arguments than the method's positional parameters: `create_client` takes two (`srv_type`,
-    `srv_name`), `create_service` three, `create_publisher` three, `create_subscription`
-    four; everything after them (`qos_profile` of a client or service, `callback_group`, ...)
-    is keyword-only (Humble to Rolling). Calls passing `*args` are not judged, nor packages
-    defining a function of the same name.
+    Reports `self.create_publisher(...)`, `create_subscription`, `create_service`,
+    `create_client` and `get_parameter` calls in the methods of a `Node` subclass that pass
+    more positional arguments than the method's positional parameters: `create_client` takes
+    two (`srv_type`, `srv_name`), `create_service` three, `create_publisher` three,
+    `create_subscription` four; everything after them (`qos_profile` of a client or service,
+    `callback_group`, ...) is keyword-only (Humble to Rolling). `get_parameter` takes the
+    name alone: `self.get_parameter('period', 0.5)`, a default given as to `dict.get`, is
+    the usual case. Calls passing `*args` are not judged, nor packages defining a function
+    of the same name.
 
     ## Why is this bad?
     Python raises `TypeError: create_client() takes 3 positional arguments but 4 were given`
@@ -65,8 +70,10 @@ def too_many_rclpy_arguments(package: Package) -> Iterator[Hit]:
             continue  # not `self.<method>(...)` in a method of a Node subclass
         extra = call.args[len(positional)]
         given = ", ".join(f"`{p}`" for p in positional)
-        rest = ", ".join(f"`{k}=`" for k in keywords)
+        rest = f" (the others are keyword-only: {', '.join(f'`{k}=`' for k in keywords)})" \
+            if keywords else ""
         yield Hit(Span(module.path, extra.lineno, extra.col_offset + 1),
-                  f"`{method}()` takes {len(positional)} positional arguments ({given}) but is "
-                  f"given {len(call.args)}: rclpy raises TypeError (the others are keyword-only:"
-                  f" {rest})")
+                  f"`{method}()` takes {len(positional)} positional argument"
+                  f"{'s' if len(positional) > 1 else ''} ({given}) but is given "
+                  f"{len(call.args)}: rclpy raises TypeError{rest}",
+                  None if keywords else _DEFAULT)

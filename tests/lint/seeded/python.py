@@ -509,3 +509,9 @@ def rate_loop_in_the_constructor(root: Path) -> None:
     edit(root, TALKER, "        self.timer = self.create_timer(period, self.publish)\n",
          "        rate = self.create_rate(1.0 / period)\n        while rclpy.ok():\n"
          "            self.publish()\n            rate.sleep()\n")
+
+
+@case("PYC033", TALKER, "self.get_parameter('period', 0.5)")
+def parameter_default_given_to_get_parameter(root: Path) -> None:
+    edit(root, TALKER, "period = self.get_parameter('period').value",
+         "period = self.get_parameter('period', 0.5).value")
