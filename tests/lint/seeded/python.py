@@ -515,3 +515,11 @@ def rate_loop_in_the_constructor(root: Path) -> None:
 def parameter_default_given_to_get_parameter(root: Path) -> None:
     edit(root, TALKER, "period = self.get_parameter('period').value",
          "period = self.get_parameter('period', 0.5).value")
+
+
+@case("PYC026", SRV, "self.get_logger().info(f'Answered request {self.calls}')")
+def response_returned_only_on_an_early_path(root: Path) -> None:
+    edit(root, SRV, "        return response\n", "")
+    edit(root, SRV, "        response.success = True\n",
+         "        if self.calls > 100:\n            response.success = False\n"
+         "            return response\n        response.success = True\n")
