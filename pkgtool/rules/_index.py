@@ -114,7 +114,7 @@ RULES = {
     "PYC031": ("parameter-object-as-value", "error", True, "python.parameter_object_as_value"),
     "PYC032": ("path-without-separator", "error", True, "python.path_without_separator"),
     "PYC033": ("too-many-rclpy-arguments", "error", True, "python.too_many_rclpy_arguments"),
-    "PYC034": ("rate-sleep-without-spin", "error", True, "python.rate_sleep_without_spin"),
+    "PYC034": ("deadlocked-wait", "error", True, "python.deadlocked_wait"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

@@ -523,3 +523,12 @@ def response_returned_only_on_an_early_path(root: Path) -> None:
     edit(root, SRV, "        response.success = True\n",
          "        if self.calls > 100:\n            response.success = False\n"
          "            return response\n        response.success = True\n")
+
+
+@case("PYC034", TALKER, "self.client.call(Trigger.Request())")
+def service_called_synchronously_in_a_timer_callback(root: Path) -> None:
+    add_import(root, TALKER, "from std_srvs.srv import Trigger")
+    edit(root, TALKER, "        self.count = 0\n",
+         "        self.count = 0\n        self.client = self.create_client(Trigger, 'trigger')\n")
+    edit(root, TALKER, "        msg = String()\n",
+         "        self.client.call(Trigger.Request())\n        msg = String()\n")

@@ -1,0 +1,175 @@
+"""PYC034: a blocking wait that the node's executor can never end: ``rate.sleep()`` where
+nothing spins the node, ``client.call()`` in a callback of the client's own group."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.imports import entry_points_installed
+from pkgtool.rules.node_api import node_subclasses, unpacks
+from pkgtool.rules.python._callbacks import callback_arguments
+from pkgtool.rules.python._message_instances import callback_function, method_receiver
+from pkgtool.rules.registry import rule
+from pkgtool.rules.scopes import scope_walk
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
+
+_THREADS = frozenset({"threading", "_thread", "concurrent", "multiprocessing", "asyncio"})
+"""Modules through which code may spin a node in another thread (or process, or loop)."""
+Function = ast.FunctionDef | ast.AsyncFunctionDef
+_SERVED = frozenset({"create_timer()", "create_subscription()", "create_service()"})
+"""The APIs whose callbacks run in the callback group the call names (the node's default,
+mutually exclusive one when it names none)."""
+_GROUP = "callback_group"
+
+
+def _rate_made(value: ast.expr | None) -> bool:
+    """True for a call ``<x>.create_rate(...)``."""
+    return isinstance(value, ast.Call) and isinstance(value.func, ast.Attribute) and \
+        value.func.attr == "create_rate"
+
+
+def _stored(target: ast.expr) -> str | None:
+    """``r`` for a local ``r``, ``.r`` for an attribute ``self.r``; None for other targets."""
+    return target.id if isinstance(target, ast.Name) else \
+        f".{target.attr}" if isinstance(target, ast.Attribute) else None
+
+
+def _sleeps(function: Function) -> Iterator[ast.Call]:
+    """``r.sleep()`` calls of ``function`` on a Rate it makes itself (``r =
+    x.create_rate(...)``, ``self.r = ...``, or ``x.create_rate(...).sleep()``); none when it
+    spins anything (``rclpy.spin_once(self)`` before each sleep wakes the Rate)."""
+    nodes = list(scope_walk(function.body))
+    calls = [n for n in nodes if isinstance(n, ast.Call)]
+    if any((c.func.attr if isinstance(c.func, ast.Attribute) else
+            getattr(c.func, "id", "")).startswith("spin") for c in calls):
+        return
+    rates = {_stored(t) for n in nodes if isinstance(n, ast.Assign) and _rate_made(n.value)
+             for t in n.targets} - {None}
+    for call in calls:
+        func = call.func
+        if isinstance(func, ast.Attribute) and func.attr == "sleep" and not call.args and \
+                (_rate_made(func.value) or _stored(func.value) in rates):
+            yield call
+
+
+def _default_group_callbacks(package: Package) -> Iterator[tuple[str, Function, Index]]:
+    """Methods of a class registered by it (``self.create_timer(p, self.tick)``) as the
+    callback of a timer, subscription or service in the node's default callback group (no
+    ``callback_group=``), with their file and module index."""
+    for path, value, api, _, index, tree in callback_arguments(package):
+        call = index.parents.get(id(value))
+        call = index.parents.get(id(call)) if isinstance(call, ast.keyword) else call
+        if api not in _SERVED or not isinstance(call, ast.Call) or unpacks(call) or \
+                any(k.arg == _GROUP for k in call.keywords):
+            continue
+        found = callback_function(value, tree, index)
+        if found is not None and found[1] == 1:
+            yield path, found[0], index
+
+
+def _default_group_clients(tree: ast.Module, index: Index) -> set[str]:
+    """Attribute names every store of which in the module is a ``create_client(...)`` call
+    naming no callback group (a client in the node's default group)."""
+    stores: dict[str, list[ast.expr | None]] = {}
+    for node in nodes_of_class(tree, ast.Attribute):
+        if isinstance(node, ast.Attribute) and not isinstance(node.ctx, ast.Load):
+            parent = index.parents.get(id(node))
+            stores.setdefault(node.attr, []).append(
+                parent.value if isinstance(parent, ast.Assign) and parent.targets == [node]
+                else None)
+    return {name for name, values in stores.items() if name != "_default_callback_group" and
+            "_default_callback_group" not in stores and all(
+                isinstance(v, ast.Call) and isinstance(v.func, ast.Attribute) and
+                v.func.attr == "create_client" and not unpacks(v) and
+                not any(k.arg == _GROUP for k in v.keywords) for v in values)}
+
+
+def _blocking_calls(function: Function, clients: set[str]) -> Iterator[ast.Call]:
+    """``self.<client>.call(request)`` calls (no timeout) of a method on a client of
+    ``clients``."""
+    receiver = method_receiver(function)
+    for node in scope_walk(function.body):
+        if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and \
+                node.func.attr == "call" and len(node.args) == 1 and not node.keywords and \
+                isinstance(node.func.value, ast.Attribute) and \
+                node.func.value.attr in clients and \
+                isinstance(node.func.value.value, ast.Name) and \
+                node.func.value.value.id == receiver:
+            yield node
+
+
+@rule("PYC034", "deadlocked-wait", Severity.ERROR,
+      fix="Use a timer (`self.create_timer(period, self.step)`) instead of a loop; call "
+          "services with `call_async()` and a done callback")
+def deadlocked_wait(package: Package) -> Iterator[Hit]:
+    """A blocking wait that the node's executor can never end: it never returns.
+
+    ## What it does
+    Reports `sleep()` on a Rate that `create_rate()` made in the same function, when that
+    function is the `__init__` of a `Node` subclass or a console script's entry function,
+    the function spins nothing itself (no `spin`, `spin_once`, ...), and no installed module
+    of the package imports `threading`, `concurrent`, `multiprocessing`, `_thread` or
+    `asyncio` (a thread may spin the node then, as in rclpy's own Rate example).
+
+    Reports `self.client.call(request)` (no timeout) in a method that the class registers as
+    the callback of a timer, subscription or service with no `callback_group=`, when every
+    assignment of `client` in the module is a `create_client()` with no `callback_group=`
+    either (and the module does not replace the node's `_default_callback_group`).
+
+    ## Why is this bad?
+    rclpy's `Rate` sleeps until a timer of its node fires, and a timer fires only while an
+    executor spins the node. In `__init__` the node cannot be spinning yet, and in `main`
+    before `rclpy.spin()` nothing spins it: the first `rate.sleep()` blocks until ROS shuts
+    down, with no error; the node does nothing (checked on Jazzy).
+
+    `Client.call()` waits until the executor hands the client its response, but the
+    executor runs nothing else of a mutually exclusive callback group while one of its
+    callbacks runs, and both are in the node's default group: the callback waits forever,
+    whatever the executor (checked on Jazzy; rclpy's documentation calls it a deadlock).
+
+    ## Example
+    ```python
+    def __init__(self):
+        super().__init__('talker')
+        rate = self.create_rate(10)
+        while rclpy.ok():
+            self.publish()
+            rate.sleep()
+    ```
+
+    ## Use instead
+    ```python
+    def __init__(self):
+        super().__init__('talker')
+        self.timer = self.create_timer(0.1, self.publish)
+    ```
+    """
+    trees = installed_trees(package)
+    clients = {m.path: _default_group_clients(t, i) for m, t, i in trees}
+    for path, function, _ in _default_group_callbacks(package):
+        for call in _blocking_calls(function, clients.get(path, set())):
+            yield Hit(Span(path, call.lineno, call.col_offset + 1),
+                      f"`{ast.unparse(call)}` waits in a callback for a response that the "
+                      "executor hands over only after the callback ends (both are in the "
+                      "node's default callback group): it never returns")
+    if any(i.top_level in _THREADS for module, _, _ in trees for i in module.imports):
+        return
+    entries = {(path, entry.attr) for entry, path in
+               entry_points_installed(package, "console_scripts") if entry.valid}
+    for module, tree, index in trees:
+        functions = [f for cls in node_subclasses(index) for f in cls.body
+                     if isinstance(f, FUNCTIONS) and f.name == "__init__"]
+        functions += [f for f in tree.body if isinstance(f, FUNCTIONS) and
+                      (module.path, f.name) in entries]
+        for function in functions:
+            for call in _sleeps(function):
+                yield Hit(Span(module.path, call.lineno, call.col_offset + 1),
+                          f"`{ast.unparse(call)}` waits for a timer of the node, which fires "
+                          "only while the node spins, and nothing spins it here"
+                          f"{' (in `__init__`)' if function.name == '__init__' else ''}: "
+                          "it never returns")
