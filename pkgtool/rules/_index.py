@@ -115,6 +115,7 @@ RULES = {
     "PYC032": ("path-without-separator", "error", True, "python.path_without_separator"),
     "PYC033": ("too-many-rclpy-arguments", "error", True, "python.too_many_rclpy_arguments"),
     "PYC034": ("deadlocked-wait", "error", True, "python.deadlocked_wait"),
+    "PYC035": ("interface-of-another-kind", "error", True, "python.interface_of_another_kind"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

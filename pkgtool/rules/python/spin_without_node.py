@@ -9,7 +9,8 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.memo import per_object
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_api import NODE_CLASSES, node_subclasses, unpacks
+from pkgtool.rules.node_api import (ACTION_PARAMETERS, ACTIONS, NODE_CLASSES, node_subclasses,
+                                    unpacks)
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings, scope_walk
 from pkgtool.rules.syntax_trees import Index, installed_trees
@@ -19,11 +20,6 @@ SPINS = {"rclpy.spin": ("node",), "rclpy.spin_once": ("node",),
 """rclpy's spin functions (Jazzy) and their required parameters, in order."""
 ADD_NODE = "add_node"
 """The executor method taking the node (``Executor.add_node(node)``)."""
-ACTIONS = frozenset({"rclpy.action.ActionClient", "rclpy.action.client.ActionClient",
-                     "rclpy.action.ActionServer", "rclpy.action.server.ActionServer"})
-"""rclpy's action client and server classes, whose first parameter is the node..."""
-ACTION_PARAMETERS = ("node", "action_type", "action_name")
-"""... of those they both require (Jazzy)."""
 _RCLPY_NODES = NODE_CLASSES - {"rclpy.create_node"}
 """rclpy's node classes themselves."""
 

@@ -532,3 +532,8 @@ def service_called_synchronously_in_a_timer_callback(root: Path) -> None:
          "        self.count = 0\n        self.client = self.create_client(Trigger, 'trigger')\n")
     edit(root, TALKER, "        msg = String()\n",
          "        self.client.call(Trigger.Request())\n        msg = String()\n")
+
+
+@case("PYC035", SRV, "self.create_service(Trigger.Request")
+def service_created_with_its_request_type(root: Path) -> None:
+    edit(root, SRV, "self.create_service(Trigger,", "self.create_service(Trigger.Request,")
