@@ -51,7 +51,8 @@ ACTION_SERVER_CALLBACKS = (("node", "action_type", "action_name", "execute_callb
                            ("execute_callback", "goal_callback", "handle_accepted_callback",
                             "cancel_callback"))
 """``ActionServer.__init__``'s positional parameters and its callbacks (Jazzy)."""
-ACTIONS = ACTION_SERVERS | {"rclpy.action.ActionClient", "rclpy.action.client.ActionClient"}
+ACTION_CLIENTS = frozenset({"rclpy.action.ActionClient", "rclpy.action.client.ActionClient"})
+ACTIONS = ACTION_SERVERS | ACTION_CLIENTS
 """rclpy's action client and server classes, whose first parameters are..."""
 ACTION_PARAMETERS = ("node", "action_type", "action_name")
 """... these, which both require (Jazzy)."""

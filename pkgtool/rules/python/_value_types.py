@@ -12,6 +12,7 @@ it unknown.
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Iterator
 
 from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
@@ -29,6 +30,8 @@ PARAMETER_TEXT = "str (a Parameter object's repr)"
 one: a str, ``<rclpy.parameter.Parameter object at 0x...>``, not the parameter's value."""
 _BUILTINS = {"int": "int", "float": "float", "str": "str", "bool": "bool", "len": "int"}
 """Builtins whose call always gives a value of one type, and that type."""
+_INTERFACE_CLASS = re.compile(INTERFACE.pattern + r"(\.(Request|Response|Goal|Result|Feedback))?")
+"""An imported message, service or action class, or one of the messages of the latter two."""
 _UNKNOWN = "?"
 _KEEPING = (ast.Add, ast.Sub, ast.Mult)
 """Augmented operators that give an int for two ints, a float for two floats (``/`` does
@@ -75,7 +78,7 @@ def _made_type(value: ast.expr, index: Index) -> str | None:
         return PARAMETER_TEXT
     found = literal_type(value) or _builtin_result(value, index)
     if found is None and isinstance(value, (ast.Name, ast.Attribute)) and \
-            INTERFACE.fullmatch(index.qualified(value) or ""):
+            _INTERFACE_CLASS.fullmatch(index.qualified(value) or ""):
         return "type"  # an imported message class itself (`String`, not `String()`)
     if found is not None or not parameter_read(value):
         return found

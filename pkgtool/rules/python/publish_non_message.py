@@ -1,4 +1,5 @@
-"""PYC020: a publisher given something that is certainly not a message of its type."""
+"""PYC020: a publisher given something that is certainly not a message of its type, a
+service or action client something that is certainly no request or goal."""
 
 from __future__ import annotations
 
@@ -11,7 +12,8 @@ from pkgtool.knowledge.message_fields import Message
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.records import record
-from pkgtool.rules.node_api import PARAMETERS, argument, literal_type, unpacks
+from pkgtool.rules.node_api import (ACTION_CLIENTS, PARAMETERS, argument, literal_type,
+                                    unpacks)
 from pkgtool.rules.python._message_instances import (Instance, Known, attribute_instances,
                                                      known_messages, local_instances,
                                                      message_instances)
@@ -27,30 +29,54 @@ _BASIC = re.compile(r"boolean|float|double|u?int(?:8|16|32|64)|w?string(?:<\d+>)
 
 @record
 class Publisher:
-    """A publisher made by rclpy's ``create_publisher``, with its message class if known."""
+    """A publisher made by rclpy's ``create_publisher`` (with its message class if known),
+    or a service or action client: what it sends, and the methods sending it."""
 
     message: Message | None
+    sends: str = "message"
+    methods: tuple[str, ...] = ("publish",)
 
 
-def _publisher_maker(known: Known) -> Callable[[ast.Call], Publisher | None]:
-    """What a call makes when it is ``x.create_publisher(Type, ...)`` (rclpy's)."""
+_CLIENT = Publisher(None, "request", ("call", "call_async"))
+_ACTION_CLIENT = Publisher(None, "goal", ("send_goal", "send_goal_async"))
+_SENT = {"msg", "request", "goal"}
+_SENDER = {"message": "publisher", "request": "client", "goal": "action client"}
+_FIX = "Send an instance: `Trigger.Request()` to a service, `Fibonacci.Goal()` to an action"
+"""The names of the sent value's parameter in ``publish``, ``call*`` and ``send_goal*``."""
+
+
+def _publisher_maker(known: Known, index: Index) -> Callable[[ast.Call], Publisher | None]:
+    """What a call makes when it is ``x.create_publisher(Type, ...)`` (rclpy's), or
+    ``x.create_client(...)``, or rclpy's ``ActionClient(...)``."""
     def make(call: ast.Call) -> Publisher | None:
-        if not isinstance(call.func, ast.Attribute) or call.func.attr != "create_publisher" \
-                or unpacks(call) or any(k.arg == "publisher_class" for k in call.keywords):
+        if unpacks(call):
+            return None
+        if index.qualified(call.func) in ACTION_CLIENTS:
+            return _ACTION_CLIENT
+        method = call.func.attr if isinstance(call.func, ast.Attribute) else None
+        if method == "create_client":
+            return _CLIENT
+        if method != "create_publisher" or \
+                any(k.arg == "publisher_class" for k in call.keywords):
             return None
         kind = argument(call, PARAMETERS["create_publisher"], "msg_type")
         return Publisher(known(kind) if kind is not None else None)
     return make
 
 
-def _published(ref: ast.expr, index: Index) -> ast.expr | None:
-    """The argument of ``ref.publish(argument)``, when ``ref`` is so used."""
+def _published(ref: ast.expr, index: Index, methods: tuple[str, ...]
+               ) -> tuple[str, ast.expr] | None:
+    """The method and the sent argument of ``ref.<method>(argument, ...)``, when ``ref`` is
+    so used with one of ``methods``."""
     method = index.parents.get(id(ref))
     call = index.parents.get(id(method))
-    if not (isinstance(method, ast.Attribute) and method.attr == "publish"
+    if not (isinstance(method, ast.Attribute) and method.attr in methods
             and isinstance(call, ast.Call) and call.func is method) or unpacks(call):
         return None
-    return argument(call, ("msg",), "msg") if len(call.args) + len(call.keywords) == 1 else None
+    first = call.args[0] if call.args else next(
+        (k.value for k in call.keywords if k.arg in _SENT), None)
+    return (method.attr, first) if first is not None and \
+        (method.attr != "publish" or len(call.args) + len(call.keywords) == 1) else None
 
 
 def _not_a_message(value: ast.expr, publisher: Publisher,
@@ -58,7 +84,7 @@ def _not_a_message(value: ast.expr, publisher: Publisher,
     """Why ``value`` (certainly of type ``wrong``, if not None) is certainly no message of
     the ``publisher``'s type, if it is."""
     if wrong == "type":
-        return "the message class itself, not a message (`()` is missing where it is made)"
+        return "the class itself, not an instance of it (`()` is missing where it is made)"
     if wrong is not None and wrong not in _ACCEPTED:
         return f"a literal of type `{wrong}`" if literal_type(value) else \
             f"a value of type `{wrong}` (every assignment to it gives one)"
@@ -91,7 +117,10 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
     gives a literal of one such type (`text = 'hi'`; PYC025 says which); a message class
     itself (`pub.publish(String)`, or `msg = String` without `()`); and such an
     instance of another known message class than the publisher's
-    (`create_publisher(String, ...)` then `publish(Float32())`'s instance).
+    (`create_publisher(String, ...)` then `publish(Float32())`'s instance). Also checks
+    the request given to `call()` and `call_async()` of a client made by `create_client`,
+    and the goal given to `send_goal()` and `send_goal_async()` of rclpy's `ActionClient`
+    (held the same ways), for literals and classes (`call_async(Trigger.Request)`).
     `bytes` (published as serialized data), other names, calls and unknown types are never
     reported.
 
@@ -99,6 +128,8 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
     `Publisher.publish` raises `TypeError: Expected <class 'std_msgs.msg._string.String'>,
     got <class 'str'>` for anything that is not an instance of the publisher's message class
     (or `bytes`): the node dies the first time it publishes, often inside a timer callback.
+    A client's `call_async()` and an action client's `send_goal_async()` raise `TypeError`
+    the same way for anything but an instance of the request or goal class.
 
     ## Example
     ```python
@@ -117,17 +148,20 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
                 any(f.name == "create_publisher" for f in index.functions):
             continue
         known = known_messages(package, index)
-        make = _publisher_maker(known)
+        make = _publisher_maker(known, index)
         publishers = [*local_instances(tree, index, make),
                       *attribute_instances(tree, index, make)]
         messages = message_instances(tree, index, known) if publishers else []
         for publisher in publishers:
             for ref in publisher.refs:
-                value = _published(ref, index)
+                sent = _published(ref, index, publisher.message.methods)
+                value = sent[1] if sent else None
                 why = _not_a_message(value, publisher.message, messages,
                                      certain_type(value, package, tree, index)) if value else None
-                if value is not None and why:
+                if sent is not None and value is not None and why:
+                    what = publisher.message.sends
                     yield Hit(Span(module.path, value.lineno, value.col_offset + 1),
-                              f"`{ast.unparse(ref)}.publish()` is given `{ast.unparse(value)}`,"
-                              f" {why}: rclpy raises TypeError (it publishes messages of the "
-                              "publisher's type only)")
+                              f"`{ast.unparse(ref)}.{sent[0]}()` is given "
+                              f"`{ast.unparse(value)}`, {why}: rclpy raises TypeError (it "
+                              f"sends {what}s of the {_SENDER[what]}'s type only)",
+                              None if what == "message" else _FIX)

@@ -537,3 +537,12 @@ def service_called_synchronously_in_a_timer_callback(root: Path) -> None:
 @case("PYC035", SRV, "self.create_service(Trigger.Request")
 def service_created_with_its_request_type(root: Path) -> None:
     edit(root, SRV, "self.create_service(Trigger,", "self.create_service(Trigger.Request,")
+
+
+@case("PYC020", TALKER, "self.client.call_async(Trigger.Request)")
+def request_class_sent_instead_of_a_request(root: Path) -> None:
+    add_import(root, TALKER, "from std_srvs.srv import Trigger")
+    edit(root, TALKER, "        self.count = 0\n",
+         "        self.count = 0\n        self.client = self.create_client(Trigger, 'trigger')\n")
+    edit(root, TALKER, "        msg = String()\n",
+         "        self.client.call_async(Trigger.Request)\n        msg = String()\n")
