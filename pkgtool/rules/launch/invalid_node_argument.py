@@ -10,6 +10,7 @@ from pkgtool.model.launch import NodeRef
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
+from pkgtool.rules.ros_name_checks import node_name_problem, topic_name_problem
 
 PYTHON_ACTIONS = frozenset({"Node", "LifecycleNode", "ComposableNodeContainer"})
 """Python node actions; each needs ``executable=``."""
@@ -40,8 +41,22 @@ KEYWORDS["ComposableNodeContainer"] = KEYWORDS["Node"] | {"composable_node_descr
 read from the ros2/launch_ros and ros2/launch sources), besides :data:`REMOVED_KEYWORDS`."""
 
 
+def _names(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
+    """(message, fix, where) for a static node name or namespace that rcl rejects."""
+    problem = node_name_problem(node.name) if node.name else None
+    if problem:
+        yield (f"`{node.name}` is not a valid node name: {problem}",
+               "Use only letters, digits and underscores", node.span)
+    problem = topic_name_problem(node.namespace) if node.namespace not in (None, "", "/") \
+        else None  # none, or `/`: the root namespace, the one name that may end with a slash
+    if problem:
+        yield (f"`{node.namespace}` is not a valid namespace: {problem}",
+               "Use only letters, digits and underscores, and `/` between parts", node.span)
+
+
 def _problems(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
     """(message, fix, where) for each argument problem of one node action."""
+    yield from _names(node)
     given = set(node.arguments)
     if node.remappings_not_pairs:
         yield (f"`remappings=` of `{node.action}()` is not a list of (from, to) tuples",
@@ -93,13 +108,19 @@ def invalid_launch_node_argument(package: Package) -> Iterator[Hit]:
     on the ROS distribution (`if os.environ['ROS_DISTRO'] <= 'eloquent':`, also through a
     variable assigned from `os.environ.get('ROS_DISTRO')` or `os.getenv('ROS_DISTRO')`): that
     code is written for older distributions on purpose. Nodes that are never started (left
-    out of the LaunchDescription) are checked too: the call that makes them raises.
+    out of the LaunchDescription) are checked too: the call that makes them raises. In every
+    kind of launch file, a node name or namespace written literally (`name='talker node'`,
+    `namespace="my robot"`, a `__node:=` remapping) must be one rcl accepts: letters,
+    digits and underscores (and `/` between the parts of a namespace), no part starting
+    with a digit.
 
     ## Why is this bad?
     `ros2 launch` stops before starting anything: Python raises `TypeError: unexpected keyword
     argument` (or, for `parameters=`, launch_ros's "expected 'parameters' to be one of
     [list]"), and the XML and YAML front ends reject unknown attributes ("Unexpected
-    attribute(s) found in `node`") and a node without `exec`.
+    attribute(s) found in `node`") and a node without `exec`. A node name or namespace
+    rcl rejects makes the node exit at start-up (`InvalidNodeNameException`,
+    `InvalidNamespaceException`, or rcl failing to parse the `__node:=` remapping).
 
     ## Example
     ```xml

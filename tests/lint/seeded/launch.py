@@ -356,3 +356,12 @@ def yaml_parameter_file_relative_to_the_source_folder(root: Path) -> None:
             param:
             - from: config/params.yaml
         """)
+
+
+@case("LCH005", XML_LAUNCH, "namespace=\"my robot\"")
+def xml_launch_namespace_with_a_space(root: Path) -> None:
+    _other_launch(root, XML_LAUNCH, """
+        <launch>
+          <node pkg="base_pkg" exec="talker" name="talker" namespace="my robot"/>
+        </launch>
+        """)
