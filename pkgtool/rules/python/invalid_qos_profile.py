@@ -62,6 +62,32 @@ def _without_depth(package: Package) -> Iterator[Hit]:
                           f"InvalidQoSProfileException ('{said}.')", "Add `depth=10`")
 
 
+_POLICIES = {"history": "a `HistoryPolicy`", "reliability": "a `ReliabilityPolicy`",
+             "durability": "a `DurabilityPolicy`", "liveliness": "a `LivelinessPolicy`",
+             "depth": "an int"}
+"""``QoSProfile`` keywords whose setter asserts an int (or its policy enum, an int too)."""
+
+
+def _policy_literals(package: Package) -> Iterator[Hit]:
+    """``QoSProfile(reliability='reliable')``: a literal other than an int given to a
+    policy or the depth, which the profile's setter rejects with an assertion."""
+    for module, _, index in installed_trees(package):
+        for call in index.calls:
+            if index.qualified(call.func) not in PROFILES:
+                continue
+            for keyword in call.keywords:
+                wrong = _wrong_type(keyword.value, _DEPTHS) if keyword.arg in _POLICIES \
+                    else None
+                if wrong is not None:
+                    value = keyword.value
+                    yield Hit(Span(module.path, value.lineno, value.col_offset + 1),
+                              f"`QoSProfile({keyword.arg}={ast.unparse(value)})` is given a "
+                              f"`{wrong}`: its setter asserts {_POLICIES[keyword.arg]} (an "
+                              "int), rclpy raises AssertionError",
+                              "Use the policy enum, e.g. "
+                              "`reliability=ReliabilityPolicy.RELIABLE`, and `depth=10`")
+
+
 def _negative(value: ast.expr) -> bool:
     """True for a negative ``int`` literal (``-1``)."""
     return isinstance(value, ast.UnaryOp) and isinstance(value.op, ast.USub) and \
@@ -84,7 +110,9 @@ def invalid_qos_profile(package: Package) -> Iterator[Hit]:
     `qos_profile_sensor_data`, a depth read from a parameter) and `None` are never reported,
     nor calls with `*args` or `**kwargs`, nor modules defining a method of the same name.
     Also reports `QoSProfile(...)` built with keywords only and no `depth`, its history
-    not given or `KEEP_LAST` (`QoSProfile(reliability=ReliabilityPolicy.BEST_EFFORT)`).
+    not given or `KEEP_LAST` (`QoSProfile(reliability=ReliabilityPolicy.BEST_EFFORT)`),
+    and a `QoSProfile` keyword `history`, `reliability`, `durability`, `liveliness` or
+    `depth` given a literal other than an int (`reliability='reliable'`, `depth=10.0`).
 
     ## Why is this bad?
     rclpy accepts only a `QoSProfile` or an `int` history depth: anything else raises
@@ -93,7 +121,9 @@ def invalid_qos_profile(package: Package) -> Iterator[Hit]:
     `create_client(Type, 'name', qos_profile=10)` raises `AttributeError`. A depth written as
     a string often means the topic and the depth were swapped. A `QoSProfile` keeping the
     last messages must say how many: without `depth` its constructor raises
-    `InvalidQoSProfileException`.
+    `InvalidQoSProfileException`. Its policies are enums (ints) and its depth an int:
+    `QoSProfile(reliability='reliable')` fails an assertion in the setter (checked on
+    Jazzy).
 
     ## Example
     ```python
@@ -109,6 +139,7 @@ def invalid_qos_profile(package: Package) -> Iterator[Hit]:
     """
     yield from _service_literals(package)
     yield from _without_depth(package)
+    yield from _policy_literals(package)
     for module, call, method in qos_calls(package):
         parameters = PARAMETERS[method]
         value = argument(call, parameters, "qos_profile")

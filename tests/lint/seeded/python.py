@@ -546,3 +546,10 @@ def request_class_sent_instead_of_a_request(root: Path) -> None:
          "        self.count = 0\n        self.client = self.create_client(Trigger, 'trigger')\n")
     edit(root, TALKER, "        msg = String()\n",
          "        self.client.call_async(Trigger.Request)\n        msg = String()\n")
+
+
+@case("PYC018", TALKER, "reliability='reliable'")
+def qos_reliability_as_a_string(root: Path) -> None:
+    add_import(root, TALKER, "from rclpy.qos import QoSProfile")
+    edit(root, TALKER, "create_publisher(String, topic, 10)",
+         "create_publisher(String, topic, QoSProfile(depth=10, reliability='reliable'))")
