@@ -8,6 +8,7 @@ import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.interfaces import interface_kind, is_known_package
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import (ACTION_PARAMETERS, ACTIONS, PARAMETERS, argument,
@@ -15,7 +16,7 @@ from pkgtool.rules.node_api import (ACTION_PARAMETERS, ACTIONS, PARAMETERS, argu
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import installed_trees
 
-_KIND = re.compile(r"\w+\.(?P<kind>msg|srv|action)\.\w+(?P<part>\.\w+)?")
+_KIND = re.compile(r"(?P<package>\w+)\.(?P<kind>msg|srv|action)\.(?P<name>\w+)(?P<part>\.\w+)?")
 """An imported interface class: ``std_msgs.msg.String``, ``std_srvs.srv.Trigger.Request``."""
 _MESSAGE_PARTS = {"srv": (".Request", ".Response"),
                   "action": (".Goal", ".Result", ".Feedback")}
@@ -24,12 +25,16 @@ _WANTED = {"msg_type": "a message type", "srv_type": "a service type",
            "action_type": "an action type"}
 
 
-def _given(qualified: str) -> str | None:
-    """What an imported interface class is, or None when it is not one."""
+def _given(qualified: str, distro: str) -> str | None:
+    """What an imported interface class is, or None when it is not one (or not what its
+    import says: an interface of a known package that is of another kind, DEP008's)."""
     found = _KIND.fullmatch(qualified)
     if found is None:
         return None
     kind, part = found.group("kind"), found.group("part")
+    package, name = found.group("package"), found.group("name")
+    if is_known_package(package, distro) and interface_kind(package, name, distro) != kind:
+        return None
     if part is None:
         return {"msg": "a message type", "srv": "a service type",
                 "action": "an action type"}[kind]
@@ -63,7 +68,9 @@ def interface_of_another_kind(package: Package) -> Iterator[Hit]:
     a message class or a service's `Request`/`Response` (`Trigger.Request`), and of rclpy's
     `ActionClient` and `ActionServer` when it is no action class: classes imported from a
     package's `.msg`, `.srv` or `.action` module (names bound only by that import). A
-    service's `Request` or an action's `Goal` is a message, which a publisher may send.
+    service's `Request` or an action's `Goal` is a message, which a publisher may send. An
+    import naming an interface of a known package under another kind (`from std_msgs.srv
+    import String`) is left to DEP008.
 
     ## Why is this bad?
     rclpy checks the type support when the entity is created and raises `RuntimeError: The
@@ -84,7 +91,7 @@ def interface_of_another_kind(package: Package) -> Iterator[Hit]:
     for path, value, api, parameter in _checked(package):
         qualified = indexes[path].qualified(value) if isinstance(
             value, (ast.Name, ast.Attribute)) else None
-        given = _given(qualified) if qualified else None
+        given = _given(qualified, package.context.distro) if qualified else None
         if given is not None and given != _WANTED[parameter]:
             yield Hit(Span(path, value.lineno, value.col_offset + 1),
                       f"`{api}` takes {_WANTED[parameter]} but is given "
