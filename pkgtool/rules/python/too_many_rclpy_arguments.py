@@ -12,6 +12,7 @@ from pkgtool.model.span import Span
 from pkgtool.rules.node_api import node_api_calls, node_subclasses
 from pkgtool.rules.python._value_types import receiver_class
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import installed_trees
 
 POSITIONAL = {
     "create_publisher": (("msg_type", "topic", "qos_profile"),
@@ -27,6 +28,32 @@ POSITIONAL = {
 """rclpy ``Node`` methods (Humble to Rolling) whose later parameters are keyword-only: the
 positional ones, then the keyword-only ones (``get_parameter`` takes the name alone)."""
 _DEFAULT = "Give the default where the parameter is declared, `self.declare_parameter('x', 0.5)`"
+_FUNCTIONS = {"rclpy.spin_once": (("node",), ("executor", "timeout_sec"))}
+"""rclpy functions (Humble to Rolling) whose later parameters are keyword-only, the same way."""
+
+
+def _message(method: str, positional: tuple[str, ...], keywords: tuple[str, ...],
+             count: int) -> str:
+    given = ", ".join(f"`{p}`" for p in positional)
+    rest = f" (the others are keyword-only: {', '.join(f'`{k}=`' for k in keywords)})" \
+        if keywords else ""
+    return f"`{method}()` takes {len(positional)} positional argument" \
+        f"{'s' if len(positional) > 1 else ''} ({given}) but is given {count}: rclpy raises " \
+        f"TypeError{rest}"
+
+
+def _function_calls(package: Package) -> Iterator[Hit]:
+    """Calls of :data:`_FUNCTIONS` given more positional arguments than they take."""
+    for module, _, index in installed_trees(package):
+        for call in index.calls:
+            known = _FUNCTIONS.get(index.qualified(call.func) or "")
+            if known is None or any(isinstance(a, ast.Starred) for a in call.args) or \
+                    len(call.args) <= len(known[0]):
+                continue
+            extra = call.args[len(known[0])]
+            yield Hit(Span(module.path, extra.lineno, extra.col_offset + 1),
+                      _message(ast.unparse(call.func), *known, len(call.args)),
+                      f"Pass it by keyword: `{known[1][-1]}=...`")
 
 
 @rule("PYC033", "too-many-rclpy-arguments", Severity.ERROR,
@@ -42,7 +69,8 @@ def too_many_rclpy_arguments(package: Package) -> Iterator[Hit]:
     `create_subscription` four; everything after them (`qos_profile` of a client or service,
     `callback_group`, ...) is keyword-only (Humble to Rolling). `get_parameter` takes the
     name alone: `self.get_parameter('period', 0.5)`, a default given as to `dict.get`, is
-    the usual case. Calls passing `*args` are not judged, nor packages defining a function
+    the usual case. Also reports `rclpy.spin_once(node, 0.1)`: its `timeout_sec` is
+    keyword-only. Calls passing `*args` are not judged, nor packages defining a function
     of the same name.
 
     ## Why is this bad?
@@ -69,11 +97,7 @@ def too_many_rclpy_arguments(package: Package) -> Iterator[Hit]:
         if receiver_class(call.func.value, index) not in nodes:  # type: ignore[attr-defined]
             continue  # not `self.<method>(...)` in a method of a Node subclass
         extra = call.args[len(positional)]
-        given = ", ".join(f"`{p}`" for p in positional)
-        rest = f" (the others are keyword-only: {', '.join(f'`{k}=`' for k in keywords)})" \
-            if keywords else ""
         yield Hit(Span(module.path, extra.lineno, extra.col_offset + 1),
-                  f"`{method}()` takes {len(positional)} positional argument"
-                  f"{'s' if len(positional) > 1 else ''} ({given}) but is given "
-                  f"{len(call.args)}: rclpy raises TypeError{rest}",
+                  _message(method, positional, keywords, len(call.args)),
                   None if keywords else _DEFAULT)
+    yield from _function_calls(package)

@@ -553,3 +553,9 @@ def qos_reliability_as_a_string(root: Path) -> None:
     add_import(root, TALKER, "from rclpy.qos import QoSProfile")
     edit(root, TALKER, "create_publisher(String, topic, 10)",
          "create_publisher(String, topic, QoSProfile(depth=10, reliability='reliable'))")
+
+
+@case("PYC033", TALKER, "rclpy.spin_once(node, 0.1)")
+def spin_once_timeout_by_position(root: Path) -> None:
+    edit(root, TALKER, "        executor.add_node(node)\n        executor.spin()\n",
+         "        while rclpy.ok():\n            rclpy.spin_once(node, 0.1)\n")
