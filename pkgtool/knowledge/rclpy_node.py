@@ -38,3 +38,9 @@ NODE_ATTRIBUTES = frozenset("""
     resolve_topic_name services set_descriptor set_parameters set_parameters_atomically
     subscriptions timers undeclare_parameter wait_for_node waitables
 """.split())
+
+GOAL_HANDLE_ATTRIBUTES = frozenset("""
+    abort canceled destroy execute goal_id is_active is_cancel_requested publish_feedback
+    request status succeed""".split())
+"""The public attributes of ``rclpy.action.server.ServerGoalHandle`` (Jazzy; the same since
+Foxy), the goal handle an ``ActionServer`` passes its callbacks."""

@@ -2,15 +2,22 @@
 
 from __future__ import annotations
 
+import ast
 from collections.abc import Iterator
+from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rclpy_missing import missing_attribute
 from pkgtool.knowledge.rclpy_names import close_name, defined_on, defines
+from pkgtool.knowledge.rclpy_node import GOAL_HANDLE_ATTRIBUTES
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.rules.python._callbacks import callback_arguments
+from pkgtool.rules.python._message_instances import callback_function
 from pkgtool.rules.registry import rule
+from pkgtool.rules.scopes import scope_bindings
 from pkgtool.rules.syntax_trees import installed_trees, resolved_attributes
 
 
@@ -32,6 +39,10 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
     rclpy.Node import Node`) or `Time.now()`. Only names bound solely to rclpy imports are
     checked, and not in annotations Python never evaluates (`self.node: rclpy.Node = node` in a
     method, any under `from __future__ import annotations`): a type checker's business.
+    Also reports reads of attributes rclpy's `ServerGoalHandle` lacks (`goal_handle.succeeded()`,
+    `goal_handle.publish(feedback)`) on the goal handle parameter of an `ActionServer`'s
+    execute, cancel or accepted callback, when the callback never rebinds that parameter nor
+    stores an attribute on it.
 
     ## Why is this bad?
     The line raises `AttributeError` or `ImportError` when it runs: at start-up for an
@@ -52,6 +63,7 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
     ```
     """
     distro = package.context.distro
+    yield from _goal_handle_reads(package)
     for module, _, index in installed_trees(package):
         for node, owner, attr in resolved_attributes(index):
             if owner.split(".")[0] != "rclpy" or index.in_unevaluated_annotation(node):
@@ -83,6 +95,35 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
             if imported.top_level == "rclpy" and not imported.guarded and \
                     imported.span.line not in curated:
                 yield from _missing_import(imported, distro)
+
+
+_HANDLED = frozenset({"execute_callback", "cancel_callback", "handle_accepted_callback"})
+"""The ``ActionServer`` callbacks rclpy passes a ``ServerGoalHandle``."""
+
+
+def _goal_handle_reads(package: Package) -> Iterator[Hit]:
+    """Reads of an attribute ``ServerGoalHandle`` lacks, on the goal handle parameter of an
+    ``ActionServer`` callback that never rebinds it nor stores attributes on it."""
+    for path, value, api, parameter, index, tree in callback_arguments(package):
+        found = callback_function(value, tree, index) \
+            if api == "ActionServer()" and parameter in _HANDLED else None
+        positional = [*found[0].args.posonlyargs, *found[0].args.args] if found else []
+        if found is None or len(positional) <= found[1]:
+            continue
+        name = positional[found[1]].arg
+        reads = [n for n in nodes_of_class(found[0], ast.Attribute)
+                 if isinstance(n, ast.Attribute) and isinstance(n.value, ast.Name) and
+                 n.value.id == name]
+        if scope_bindings(found[0])[name] != 1 or \
+                any(not isinstance(n.ctx, ast.Load) for n in reads):
+            continue
+        for node in reads:
+            if node.attr not in GOAL_HANDLE_ATTRIBUTES and not node.attr.startswith("_"):
+                close = get_close_matches(node.attr, sorted(GOAL_HANDLE_ATTRIBUTES), n=1)
+                yield Hit(Span(path, node.lineno, node.col_offset + 1),
+                          f"`{name}` is the `ServerGoalHandle` rclpy passes `{ast.unparse(value)}`"
+                          f", which has no `{node.attr}`: AttributeError",
+                          f"Use `{name}.{close[0]}`" if close else None)
 
 
 def _missing_import(imported: Import, distro: str) -> Iterator[Hit]:

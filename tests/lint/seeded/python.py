@@ -559,3 +559,18 @@ def qos_reliability_as_a_string(root: Path) -> None:
 def spin_once_timeout_by_position(root: Path) -> None:
     edit(root, TALKER, "        executor.add_node(node)\n        executor.spin()\n",
          "        while rclpy.ok():\n            rclpy.spin_once(node, 0.1)\n")
+
+
+@case("PYC004", SRV, "goal_handle.succeeded()")
+def goal_handle_method_misspelt(root: Path) -> None:
+    add_import(root, SRV, "from example_interfaces.action import Fibonacci")
+    add_import(root, SRV, "from rclpy.action import ActionServer")
+    edit(root, SRV, "        self.calls = 0\n",
+         "        self.calls = 0\n"
+         "        self.fibonacci = ActionServer(self, Fibonacci, 'fibonacci', self.execute)\n")
+    edit(root, SRV, "    def on_request(self, request, response):\n",
+         "    def execute(self, goal_handle):\n        \"\"\"Finish the goal at once.\"\"\"\n"
+         "        goal_handle.succeeded()\n        return Fibonacci.Result()\n\n"
+         "    def on_request(self, request, response):\n")
+    edit(root, "package.xml", "  <depend>rclpy</depend>\n",
+         "  <depend>example_interfaces</depend>\n  <depend>rclpy</depend>\n")
