@@ -79,6 +79,15 @@ def _published(ref: ast.expr, index: Index, methods: tuple[str, ...]
         (method.attr != "publish" or len(call.args) + len(call.keywords) == 1) else None
 
 
+def _second(ref: ast.expr, index: Index) -> ast.expr | None:
+    """The second positional argument of ``ref.publish(a, b, ...)``, if so called."""
+    method = index.parents.get(id(ref))
+    call = index.parents.get(id(method))
+    return call.args[1] if isinstance(method, ast.Attribute) and method.attr == "publish" and \
+        isinstance(call, ast.Call) and call.func is method and not unpacks(call) and \
+        len(call.args) > 1 else None
+
+
 def _not_a_message(value: ast.expr, publisher: Publisher,
                    messages: list[Instance[Message]], wrong: str | None) -> str | None:
     """Why ``value`` (certainly of type ``wrong``, if not None) is certainly no message of
@@ -122,7 +131,8 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
     and the goal given to `send_goal()` and `send_goal_async()` of rclpy's `ActionClient`
     (held the same ways), for literals and classes (`call_async(Trigger.Request)`).
     `bytes` (published as serialized data), other names, calls and unknown types are never
-    reported.
+    reported. A `publish()` given a second positional argument (`pub.publish(String, msg)`)
+    is reported too.
 
     ## Why is this bad?
     `Publisher.publish` raises `TypeError: Expected <class 'std_msgs.msg._string.String'>,
@@ -154,6 +164,12 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
         messages = message_instances(tree, index, known) if publishers else []
         for publisher in publishers:
             for ref in publisher.refs:
+                extra = _second(ref, index) if publisher.message.sends == "message" else None
+                if extra is not None:
+                    yield Hit(Span(module.path, extra.lineno, extra.col_offset + 1),
+                              f"`{ast.unparse(ref)}.publish()` is given more than the message:"
+                              " it takes the message alone, rclpy raises TypeError",
+                              "Publish the message alone: `self.pub.publish(msg)`")
                 sent = _published(ref, index, publisher.message.methods)
                 value = sent[1] if sent else None
                 why = _not_a_message(value, publisher.message, messages,

@@ -574,3 +574,8 @@ def goal_handle_method_misspelt(root: Path) -> None:
          "    def on_request(self, request, response):\n")
     edit(root, "package.xml", "  <depend>rclpy</depend>\n",
          "  <depend>example_interfaces</depend>\n  <depend>rclpy</depend>\n")
+
+
+@case("PYC020", TALKER, "self.publisher.publish(String, msg)")
+def message_class_published_beside_the_message(root: Path) -> None:
+    edit(root, TALKER, "self.publisher.publish(msg)", "self.publisher.publish(String, msg)")
