@@ -19,20 +19,23 @@ PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprec
           ("PYC025", "messages_given_other_values"), ("PYC025", "names_of_another_type"),
           ("DEP008", "interfaces_in_subfolders"), ("DEP008", "misspelled_and_wrong_kind"),
           ("DEP008", "misspelled_modules"), ("MAN017", "ros2_pkg_create_defaults"),
-          ("PYC001", "missing_standard_module"), ("DEP007", "own_package_by_bare_name")}
+          ("PYC001", "missing_standard_module"), ("DEP007", "own_package_by_bare_name"),
+          ("PYC025", "builtin_results"), ("PYC031", "parameter_texts")}
 """GPLv3 can mean -only or -or-later, `my_robot_description` is no known package, values
 outside `ros__parameters` belong to a node only the user knows, a node without its executable
 names none, `required="true"` and YAML launch files are left to the user, `exception()` is
 close to no rclpy logging method, an int for a bool or string field or a float for an int
 field has no one right spelling, a misspelt interface name is renamed nowhere else in the
 module, `import pkg.msgs` is used under that name, an email address is the author's, and
-a standard module's name used as a value may be a variable never assigned, and `import
-a.b` binds `a`, which the installed name would not: no
+a standard module's name used as a value may be a variable never assigned, `import
+a.b` binds `a`, which the installed name would not, `len()` for a string field and a
+parameter's text in an f-string mean something only the author knows: no
 fix guesses, the user chooses; the other findings of the case are fixed."""
 MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages"),
           ("MAN018", "standard_library_modules"), ("DAT001", "typo_in_path"),
           ("DAT008", "flat_file_for_a_component_and_a_node"),
           ("LCH005", "launch_node_through_alias"), ("LCH005", "remappings_not_pairs"),
+          ("LCH005", "invalid_names"),
           ("PYC016", "print_style_calls"), ("MAN017", "catkin_create_pkg_license"),
           ("PYC001", "missing_import"), ("PYC001", "setup_and_launch_files"),
           *(("DEP008", case) for case in (
@@ -49,13 +52,14 @@ MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages
 modules need the user (a `<build_type>`, a ROS 2 replacement, or nothing). DAT001 fixes a
 string of sources and creates the (empty) ament index marker: other missing files have content
 only their author knows. DAT008's values at the top level belong to a node only the user knows
-(here a component and a node share the file). LCH005 does not choose an executable nor the
-pairs remappings were meant to be; PYC016 does not reword print-style logging calls. DEP008
-fixes the module an interface is imported from, never its name: these cases misspell names
-(or need a companion type's attribute); MAN017 has no license in setup.py to copy. PYC001
-imports standard modules only: these cases misspell names or use third-party modules. ENT002
-rewrites a script's module only where the rule names the installed one; these cases need
-setup.py's packages, an `__init__.py` or the module itself, which the author chooses."""
+(here a component and a node share the file). LCH005 does not choose an executable, the
+pairs remappings were meant to be nor a valid node name; PYC016 does not reword print-style
+logging calls. DEP008 fixes the module an interface is imported from, never its name: these
+cases misspell names (or need a companion type's attribute); MAN017 has no license in
+setup.py to copy. PYC001 imports standard modules only: these cases misspell names or use
+third-party modules. ENT002 rewrites a script's module only where the rule names the installed
+one; these cases need setup.py's packages, an `__init__.py` or the module itself, which the
+author chooses."""
 
 REVEALED = {("PYC013", "called_callbacks"): {"PYC026"},
             ("LCH005", "parameters_not_a_list"): {"DAT012"},

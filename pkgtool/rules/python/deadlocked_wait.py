@@ -1,5 +1,6 @@
 """PYC034: a blocking wait that the node's executor can never end: ``rate.sleep()`` where
-nothing spins the node, ``client.call()`` in a callback of the client's own group."""
+nothing spins the node, ``client.call()`` in a callback of the client's own group, the node
+spun from its own callback."""
 
 from __future__ import annotations
 
@@ -11,7 +12,7 @@ from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.imports import entry_points_installed
-from pkgtool.rules.node_api import node_subclasses, unpacks
+from pkgtool.rules.node_api import node_subclasses, spin_cause, unpacks
 from pkgtool.rules.python._callbacks import callback_arguments
 from pkgtool.rules.python._message_instances import callback_function, method_receiver
 from pkgtool.rules.registry import rule
@@ -25,6 +26,7 @@ _SERVED = frozenset({"create_timer()", "create_subscription()", "create_service(
 """The APIs whose callbacks run in the callback group the call names (the node's default,
 mutually exclusive one when it names none)."""
 _GROUP = "callback_group"
+_SPINS = frozenset({"rclpy.spin", "rclpy.spin_once", "rclpy.spin_until_future_complete"})
 
 
 def _rate_made(value: ast.expr | None) -> bool:
@@ -89,6 +91,18 @@ def _default_group_clients(tree: ast.Module, index: Index) -> set[str]:
                 not any(k.arg == _GROUP for k in v.keywords) for v in values)}
 
 
+def _self_spins(function: Function, index: Index) -> Iterator[ast.Call]:
+    """``rclpy.spin_until_future_complete(self, ...)`` (or ``spin_once``, ``spin``) in a
+    method: the node spun from inside one of its own callbacks."""
+    receiver = method_receiver(function)
+    for node in scope_walk(function.body):
+        if isinstance(node, ast.Call) and index.qualified(node.func) in _SPINS:
+            first = node.args[0] if node.args else next(
+                (k.value for k in node.keywords if k.arg == "node"), None)
+            if isinstance(first, ast.Name) and first.id == receiver:
+                yield node
+
+
 def _blocking_calls(function: Function, clients: set[str]) -> Iterator[ast.Call]:
     """``self.<client>.call(request)`` calls (no timeout) of a method on a client of
     ``clients``."""
@@ -119,7 +133,9 @@ def deadlocked_wait(package: Package) -> Iterator[Hit]:
     Reports `self.client.call(request)` (no timeout) in a method that the class registers as
     the callback of a timer, subscription or service with no `callback_group=`, when every
     assignment of `client` in the module is a `create_client()` with no `callback_group=`
-    either (and the module does not replace the node's `_default_callback_group`).
+    either (and the module does not replace the node's `_default_callback_group`), and
+    `rclpy.spin_until_future_complete(self, future)` (or `rclpy.spin_once(self)`,
+    `rclpy.spin(self)`) in such a callback: the node spun from inside its own callback.
 
     ## Why is this bad?
     rclpy's `Rate` sleeps until a timer of its node fires, and a timer fires only while an
@@ -131,6 +147,9 @@ def deadlocked_wait(package: Package) -> Iterator[Hit]:
     executor runs nothing else of a mutually exclusive callback group while one of its
     callbacks runs, and both are in the node's default group: the callback waits forever,
     whatever the executor (checked on Jazzy; rclpy's documentation calls it a deadlock).
+    Spinning the node again from its own callback does not deliver it either: it returns at
+    its timeout with no result, under the single- and the multi-threaded executor alike
+    (checked on Jazzy); without a timeout it never returns.
 
     ## Example
     ```python
@@ -151,12 +170,18 @@ def deadlocked_wait(package: Package) -> Iterator[Hit]:
     """
     trees = installed_trees(package)
     clients = {m.path: _default_group_clients(t, i) for m, t, i in trees}
-    for path, function, _ in _default_group_callbacks(package):
+    for path, function, index in _default_group_callbacks(package):
         for call in _blocking_calls(function, clients.get(path, set())):
             yield Hit(Span(path, call.lineno, call.col_offset + 1),
                       f"`{ast.unparse(call)}` waits in a callback for a response that the "
                       "executor hands over only after the callback ends (both are in the "
                       "node's default callback group): it never returns")
+        for call in _self_spins(function, index):
+            where = Span(path, call.lineno, call.col_offset + 1)
+            yield Hit(where, f"`{ast.unparse(call.func)}({method_receiver(function)}, ...)` "
+                             f"spins the node inside its own callback `{function.name}`: what "
+                             "it waits for is never delivered (it returns at its timeout, if "
+                             "any, with no result)", cause=spin_cause(where))
     if any(i.top_level in _THREADS for module, _, _ in trees for i in module.imports):
         return
     entries = {(path, entry.attr) for entry, path in

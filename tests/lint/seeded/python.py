@@ -456,15 +456,15 @@ def subscription_callback_group_by_position(root: Path) -> None:
          "String, topic, self.on_message, 10, None)")
 
 
-@case("PYC035", SRV, "self.client.call(Trigger.Request())")
-def synchronous_call_in_service_callback(root: Path) -> None:
+@case("PYC034", SRV, "rclpy.spin_until_future_complete(self, upstream")
+def node_spun_in_its_own_service_callback(root: Path) -> None:
     edit(root, SRV, "        self.service = self.create_service(Trigger, name, self.on_request)\n",
          "        self.service = self.create_service(Trigger, name, self.on_request)\n"
          "        self.client = self.create_client(Trigger, 'upstream')\n")
     edit(root, SRV, "        self.calls += 1\n",
          "        self.calls += 1\n"
-         "        upstream = self.client.call(Trigger.Request())\n"
-         "        self.get_logger().info(upstream.message)\n")
+         "        upstream = self.client.call_async(Trigger.Request())\n"
+         "        rclpy.spin_until_future_complete(self, upstream, timeout_sec=1.0)\n")
 
 
 @case("PYC036", SRV, "future.result()")
