@@ -91,16 +91,17 @@ def _default_group_clients(tree: ast.Module, index: Index) -> set[str]:
                 not any(k.arg == _GROUP for k in v.keywords) for v in values)}
 
 
-def _self_spins(function: Function, index: Index) -> Iterator[ast.Call]:
+def _self_spins(function: Function, spins: list[ast.Call], index: Index) -> Iterator[ast.Call]:
     """``rclpy.spin_until_future_complete(self, ...)`` (or ``spin_once``, ``spin``) in a
-    method: the node spun from inside one of its own callbacks."""
+    method: the node spun from inside one of its own callbacks (``spins``: the module's
+    calls of those functions)."""
     receiver = method_receiver(function)
-    for node in scope_walk(function.body):
-        if isinstance(node, ast.Call) and index.qualified(node.func) in _SPINS:
-            first = node.args[0] if node.args else next(
-                (k.value for k in node.keywords if k.arg == "node"), None)
-            if isinstance(first, ast.Name) and first.id == receiver:
-                yield node
+    for node in spins:
+        first = node.args[0] if node.args else next(
+            (k.value for k in node.keywords if k.arg == "node"), None)
+        if isinstance(first, ast.Name) and first.id == receiver and \
+                index.enclosing_function(node) is function:
+            yield node
 
 
 def _blocking_calls(function: Function, clients: set[str]) -> Iterator[ast.Call]:
@@ -170,13 +171,15 @@ def deadlocked_wait(package: Package) -> Iterator[Hit]:
     """
     trees = installed_trees(package)
     clients = {m.path: _default_group_clients(t, i) for m, t, i in trees}
+    spins = {m.path: [c for c in i.calls if i.qualified(c.func) in _SPINS] for m, _, i in trees}
     for path, function, index in _default_group_callbacks(package):
-        for call in _blocking_calls(function, clients.get(path, set())):
+        served = clients.get(path, set())
+        for call in _blocking_calls(function, served) if served else ():
             yield Hit(Span(path, call.lineno, call.col_offset + 1),
                       f"`{ast.unparse(call)}` waits in a callback for a response that the "
                       "executor hands over only after the callback ends (both are in the "
                       "node's default callback group): it never returns")
-        for call in _self_spins(function, index):
+        for call in _self_spins(function, spins.get(path, []), index):
             where = Span(path, call.lineno, call.col_offset + 1)
             yield Hit(where, f"`{ast.unparse(call.func)}({method_receiver(function)}, ...)` "
                              f"spins the node inside its own callback `{function.name}`: what "
@@ -187,6 +190,9 @@ def deadlocked_wait(package: Package) -> Iterator[Hit]:
     entries = {(path, entry.attr) for entry, path in
                entry_points_installed(package, "console_scripts") if entry.valid}
     for module, tree, index in trees:
+        if not any(isinstance(c.func, ast.Attribute) and c.func.attr == "create_rate"
+                   for c in index.calls):
+            continue  # no Rate made here: nothing to sleep on
         functions = [f for cls in node_subclasses(index) for f in cls.body
                      if isinstance(f, FUNCTIONS) and f.name == "__init__"]
         functions += [f for f in tree.body if isinstance(f, FUNCTIONS) and
