@@ -26,11 +26,8 @@ from collections.abc import Iterable
 from pathlib import Path
 
 from pkgtool.knowledge.generate_interfaces import KINDS
+from pkgtool.knowledge.interface_definitions import PARTS
 from pkgtool.knowledge.tables import DATA, DISTROS, flags_of, read, render, write
-
-PARTS = {"msg": ("",), "srv": ("_Request", "_Response"),
-         "action": ("_Goal", "_Result", "_Feedback")}
-"""Kind -> the suffixes of the message classes of one file's sections, in order."""
 
 
 def sections(text: str) -> list[tuple[str, ...]]:

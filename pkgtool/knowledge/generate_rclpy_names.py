@@ -112,17 +112,18 @@ def installed() -> dict[str, set[str]]:
     return _modules(sorted(files), lambda path: (root / path).read_text(encoding="utf-8"))
 
 
-def _git(git: Path, *args: str) -> str:
+def git_text(git: Path, *args: str) -> str:
+    """The output of ``git --git-dir=GIT ARGS`` (generators read pinned commits this way)."""
     return subprocess.run(["git", f"--git-dir={git}", *args], check=True, capture_output=True,
                           text=True).stdout
 
 
 def from_branch(git: Path, branch: str) -> dict[str, set[str]]:
     """The modules of rclpy on ``branch`` of a ros2/rclpy clone."""
-    listed = _git(git, "ls-tree", "-r", "--name-only", branch, "rclpy/rclpy/").split()
+    listed = git_text(git, "ls-tree", "-r", "--name-only", branch, "rclpy/rclpy/").split()
     files = [p[len("rclpy/"):] for p in listed if p.endswith(".py")]
     files.append("rclpy/_rclpy_pybind11.so")  # built from C++ on every branch
-    return _modules(sorted(files), lambda path: _git(git, "show", f"{branch}:rclpy/{path}"))
+    return _modules(sorted(files), lambda path: git_text(git, "show", f"{branch}:rclpy/{path}"))
 
 
 def table(git: Path) -> str:
@@ -140,7 +141,7 @@ def table(git: Path) -> str:
         entry = module if module not in seen else f"{module}@{flags}"
         seen.add(module)
         groups.setdefault(flags, []).append(f"{entry} {names}")
-    heads = {branch: _git(git, "rev-parse", "--short", branch).strip()
+    heads = {branch: git_text(git, "rev-parse", "--short", branch).strip()
              for branch in BRANCHES.values()}
     sources = [f"ros-jazzy-rclpy=={importlib.metadata.version('ros-jazzy-rclpy')}",
                *(f"ros2/rclpy@{branch}:{head}" for branch, head in heads.items())]

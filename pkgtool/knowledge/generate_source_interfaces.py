@@ -24,6 +24,7 @@ import tempfile
 from pathlib import Path, PurePosixPath
 
 from pkgtool.knowledge.tables import DATA, flags_of, render, write
+from pkgtool.knowledge.generate_rclpy_names import git_text
 from pkgtool.knowledge.interface_definitions import definitions
 
 KINDS = ("msg", "srv", "action")
@@ -50,19 +51,14 @@ Found = dict[str, dict[str, dict[str, str]]]
 """Distribution -> package -> ``pkg/kind/Class`` -> fields entry."""
 
 
-def _git(git_dir: Path, *arguments: str) -> str:
-    return subprocess.run(["git", f"--git-dir={git_dir}", *arguments], check=True,
-                          capture_output=True, text=True).stdout
-
-
 def _package_messages(git_dir: Path, commit: str, package: str) -> dict[str, str] | None:
     """The message classes ``package``'s interface files define at ``commit``; None when one
     is not understood or the package has none."""
-    paths = _git(git_dir, "ls-tree", "-r", "--name-only", commit).splitlines()
+    paths = git_text(git_dir, "ls-tree", "-r", "--name-only", commit).splitlines()
     folder = next((str(PurePosixPath(path).parent) for path in paths
                    if PurePosixPath(path).name == "package.xml" and
                    re.search(rf"<name>\s*{package}\s*</name>",
-                             _git(git_dir, "show", f"{commit}:{path}"))), None)
+                             git_text(git_dir, "show", f"{commit}:{path}"))), None)
     if folder is None:
         return None
     found: dict[str, str] = {}
@@ -75,7 +71,7 @@ def _package_messages(git_dir: Path, commit: str, package: str) -> dict[str, str
             return None
         if suffix != where.parent.name:
             continue
-        defined = definitions(package, suffix, stem, _git(git_dir, "show", f"{commit}:{path}"))
+        defined = definitions(package, suffix, stem, git_text(git_dir, "show", f"{commit}:{path}"))
         if not defined:
             return None
         found.update(defined)

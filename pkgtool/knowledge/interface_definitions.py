@@ -19,9 +19,9 @@ _PRIMITIVES = {"bool": "boolean", "byte": "octet", "char": "uint8", "float32": "
                "uint16": "uint16", "int32": "int32", "uint32": "uint32", "int64": "int64",
                "uint64": "uint64", "string": "string", "wstring": "wstring"}
 """The ``.msg`` names of the basic types, and the names the generated classes give them."""
-_SECTIONS = {"msg": ("",), "srv": ("_Request", "_Response"),
-             "action": ("_Goal", "_Result", "_Feedback")}
-"""The message classes an interface file of each kind defines, as suffixes of its name."""
+PARTS = {"msg": ("",), "srv": ("_Request", "_Response"),
+         "action": ("_Goal", "_Result", "_Feedback")}
+"""Kind -> the suffixes of the message classes of one file's sections, in order."""
 _TYPE = re.compile(r"(?:(?P<package>[A-Za-z]\w*)/)?(?P<base>[A-Za-z]\w*)"
                    r"(?:(?P<strbound><=\d+))?(?:\[(?P<bound><=)?(?P<size>\d*)\])?")
 _NAME = re.compile(r"[a-z][a-z0-9_]*")
@@ -33,7 +33,7 @@ def definitions(package: str, kind: str, name: str, text: str) -> dict[str, str]
     ``kind`` (``msg``, ``srv``, ``action``) called ``name`` defines with ``text``; empty when
     a line is not understood."""
     sections = re.split(r"^\s*---\s*$", text, flags=re.M)
-    suffixes = _SECTIONS.get(kind, ())
+    suffixes = PARTS.get(kind, ())
     if len(sections) != len(suffixes):
         return {}
     found: dict[str, str] = {}

@@ -146,8 +146,9 @@ def _messages(base: str, name: str, interfaces: Mapping[str, frozenset[str]],
     """The message classes of the package's interfaces that one file of its own defines."""
     found: dict[str, str] = {}
     for (kind, stem), path in sorted(defined.items(), key=lambda item: item[0]):
-        listed = path is not None and stem in interfaces.get(kind, ())
-        text = _read(os.path.join(base, path)) if listed and path is not None else None
+        if path is None or stem not in interfaces.get(kind, ()):
+            continue
+        text = _read(os.path.join(base, path))
         if text is not None:
             found.update(definitions(name, kind, stem, text))
     return found

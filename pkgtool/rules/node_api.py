@@ -46,6 +46,9 @@ CALLBACKS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
 }
 """rclpy methods (Jazzy) taking callables: their leading positional parameters, in order, and
 which of them (or of their keyword-only parameters) are callbacks."""
+SPINS = {"rclpy.spin": ("node",), "rclpy.spin_once": ("node",),
+         "rclpy.spin_until_future_complete": ("node", "future")}
+"""rclpy's spin functions (Jazzy) and their required parameters, in order."""
 ACTION_SERVERS = frozenset({"rclpy.action.ActionServer", "rclpy.action.server.ActionServer"})
 ACTION_SERVER_CALLBACKS = (("node", "action_type", "action_name", "execute_callback"),
                            ("execute_callback", "goal_callback", "handle_accepted_callback",

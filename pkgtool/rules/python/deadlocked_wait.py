@@ -12,7 +12,7 @@ from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.imports import entry_points_installed
-from pkgtool.rules.node_api import node_subclasses, spin_cause, unpacks
+from pkgtool.rules.node_api import SPINS, node_subclasses, spin_cause, unpacks
 from pkgtool.rules.python._callbacks import callback_arguments
 from pkgtool.rules.python._message_instances import callback_function, method_receiver
 from pkgtool.rules.registry import rule
@@ -26,7 +26,6 @@ _SERVED = frozenset({"create_timer()", "create_subscription()", "create_service(
 """The APIs whose callbacks run in the callback group the call names (the node's default,
 mutually exclusive one when it names none)."""
 _GROUP = "callback_group"
-_SPINS = frozenset({"rclpy.spin", "rclpy.spin_once", "rclpy.spin_until_future_complete"})
 
 
 def _rate_made(value: ast.expr | None) -> bool:
@@ -97,9 +96,9 @@ def _self_spins(function: Function, spins: list[ast.Call], index: Index) -> Iter
     calls of those functions)."""
     receiver = method_receiver(function)
     for node in spins:
-        first = node.args[0] if node.args else next(
+        spun = node.args[0] if node.args else next(
             (k.value for k in node.keywords if k.arg == "node"), None)
-        if isinstance(first, ast.Name) and first.id == receiver and \
+        if isinstance(spun, ast.Name) and spun.id == receiver and \
                 index.enclosing_function(node) is function:
             yield node
 
@@ -171,7 +170,7 @@ def deadlocked_wait(package: Package) -> Iterator[Hit]:
     """
     trees = installed_trees(package)
     clients = {m.path: _default_group_clients(t, i) for m, t, i in trees}
-    spins = {m.path: [c for c in i.calls if i.qualified(c.func) in _SPINS] for m, _, i in trees}
+    spins = {m.path: [c for c in i.calls if i.qualified(c.func) in SPINS] for m, _, i in trees}
     for path, function, index in _default_group_callbacks(package):
         served = clients.get(path, set())
         for call in _blocking_calls(function, served) if served else ():

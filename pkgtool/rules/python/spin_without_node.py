@@ -9,15 +9,12 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.memo import per_object
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_api import (ACTION_PARAMETERS, ACTIONS, NODE_CLASSES, node_subclasses,
-                                    unpacks)
+from pkgtool.rules.node_api import (ACTION_PARAMETERS, ACTIONS, NODE_CLASSES, SPINS,
+                                    node_subclasses, unpacks)
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings, scope_walk
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
-SPINS = {"rclpy.spin": ("node",), "rclpy.spin_once": ("node",),
-         "rclpy.spin_until_future_complete": ("node", "future")}
-"""rclpy's spin functions (Jazzy) and their required parameters, in order."""
 ADD_NODE = "add_node"
 """The executor method taking the node (``Executor.add_node(node)``)."""
 _RCLPY_NODES = NODE_CLASSES - {"rclpy.create_node"}
