@@ -10,6 +10,7 @@ from __future__ import annotations
 import gc
 import os
 import sys
+from collections.abc import Callable
 from enum import Enum
 from pathlib import Path
 from typing import TYPE_CHECKING, Optional
@@ -20,6 +21,7 @@ from pkgtool.commands import ExitCode
 if TYPE_CHECKING:
     from pkgtool.cache.replay import Shown, Witness
     from pkgtool.commands.lint import LintOptions, LintResult
+    from pkgtool.commands.warm_worker import WarmWorker
 
 STYLE_FAMILIES = ("STY", "CPY")
 """What ``--style`` adds to the selection."""
@@ -28,6 +30,13 @@ LINT_GC_THRESHOLDS = (50_000, 20, 100)
 (refcounting frees them): Python's default thresholds (700, 10, 10) collected all the time for
 nothing, ~15% of a cold run (measured on 50 packages: 1.45 s CPU -> 1.17 s; one package
 176 ms -> 157 ms)."""
+
+
+WARM_WORKER_ENTRIES = 1000
+"""A run whose record lists fewer folders and files than this (~40 packages, with pkgtool's own
+~400) starts no warm worker: examining the cache takes too little time to hide the worker's
+imports behind (measured on one package: ~5 ms slower when nothing changed, ~9 ms faster after
+an edit; on 500 packages, ~130 ms faster after an edit)."""
 
 
 class Format(str, Enum):
@@ -53,37 +62,59 @@ def lint_call(paths: Optional[list[str]] = None, fmt: Format = Format.TEXT,
     A bug in pkgtool is reported with its traceback and exit code 3, not a bare traceback.
     """
     gc.set_threshold(*LINT_GC_THRESHOLDS)  # before the imports: they make objects too
-    witness = None
-    if not (no_cache or fix or diff or list_rules or explain is not None) and \
-            all(os.path.isdir(path) for path in paths or ["."]):
-        from pkgtool.cache import cache_folder, replay
-
-        stamp = replay.stamp(
-            {"paths": paths, "format": fmt.value, "output": output and str(output),
-             "select": select, "ignore": ignore, "extend_select": extend_select, "style": style,
-             "strict": strict, "exit_zero": exit_zero, "quiet": quiet, "isolated": isolated,
-             "rosdistro": rosdistro}, _colour(fmt, output))
-        folder = cache_folder(cache_dir, Path.cwd())
-        found = replay.replayed(folder, stamp)
-        if isinstance(found, replay.Shown):
-            return _show(found, output)
-        witness = replay.Witness(folder, stamp, found)
-    from pkgtool.commands import lint as command
-
-    options = command.LintOptions(_selectors(select) if select else None, _selectors(ignore),
-                                  _selectors(extend_select) + (STYLE_FAMILIES if style else ()),
-                                  strict, exit_zero, quiet, isolated, rosdistro, fix, diff,
-                                  unsafe_fixes, cache=not no_cache, cache_dir=cache_dir)
+    witness = worker = None
     try:
-        if explain is not None or list_rules:
-            return _show_rules(explain, fmt, output)
-        return _lint(paths or [], options, fmt, output, witness)
-    except Exception as error:  # noqa: BLE001 - a bug in pkgtool: exit 3, not a bare traceback
-        import traceback
+        if not (no_cache or fix or diff or list_rules or explain is not None) and \
+                all(os.path.isdir(path) for path in paths or ["."]):
+            from pkgtool.cache import cache_folder, replay
 
-        say(f"Internal error: {type(error).__name__}: {error}. Please report this pkgtool bug "
-            f"with the details below.\n{traceback.format_exc()}")
-        return int(ExitCode.INTERNAL)
+            stamp = replay.stamp(
+                {"paths": paths, "format": fmt.value, "output": output and str(output),
+                 "select": select, "ignore": ignore, "extend_select": extend_select,
+                 "style": style, "strict": strict, "exit_zero": exit_zero, "quiet": quiet,
+                 "isolated": isolated, "rosdistro": rosdistro}, _colour(fmt, output))
+            folder = cache_folder(cache_dir, Path.cwd())
+            record = replay.recorded(folder, stamp)
+            if record is None or record.entries >= WARM_WORKER_ENTRIES:
+                worker = _warm_worker()
+            found = replay.replayed(folder, record)
+            if isinstance(found, replay.Shown):
+                return _show(found, output)
+            witness = replay.Witness(folder, stamp, found)
+        from pkgtool.commands import lint as command
+
+        options = command.LintOptions(
+            _selectors(select) if select else None, _selectors(ignore),
+            _selectors(extend_select) + (STYLE_FAMILIES if style else ()), strict, exit_zero,
+            quiet, isolated, rosdistro, fix, diff, unsafe_fixes, cache=not no_cache,
+            cache_dir=cache_dir)
+        try:
+            if explain is not None or list_rules:
+                return _show_rules(explain, fmt, output)
+            return _lint(paths or [], options, fmt, output, witness, worker)
+        except Exception as error:  # noqa: BLE001 - a bug in pkgtool: exit 3, no bare traceback
+            import traceback
+
+            say(f"Internal error: {type(error).__name__}: {error}. Please report this pkgtool "
+                f"bug with the details below.\n{traceback.format_exc()}")
+            return int(ExitCode.INTERNAL)
+    finally:
+        if worker is not None:
+            worker.close()
+
+
+def _warm_worker() -> Optional[WarmWorker]:
+    """A :mod:`warm worker <pkgtool.commands.warm_worker>` importing the linter while the run
+    examines the cache (stopped as soon as the cache answers for everything)."""
+    from pkgtool.commands.warm_worker import start
+
+    return start(_warm_up)
+
+
+def _warm_up() -> list[Callable[[], None]]:
+    from pkgtool.commands.lint import warm_up
+
+    return warm_up()
 
 
 def say(*messages: str) -> None:
@@ -106,11 +137,11 @@ def _colour(fmt: Format, output: Optional[Path]) -> bool:
 
 
 def _lint(paths: list[str], options: LintOptions, fmt: Format, output: Optional[Path],
-          witness: Optional[Witness]) -> int:
+          witness: Optional[Witness], worker: Optional[WarmWorker]) -> int:
     from pkgtool.cache.replay import Shown
     from pkgtool.commands.lint import run
 
-    result = run(paths, options=options, witness=witness)
+    result = run(paths, options=options, witness=witness, worker=worker)
     if result.exit_code is ExitCode.USAGE:
         say(*result.notes, *result.errors)
         return int(result.exit_code)

@@ -237,8 +237,8 @@ class ConfigFinder:
 
     def _at(self, folder: Path) -> Layer | None:
         if folder not in self._layers:
-            file = folder / PYPROJECT
-            self._layers[folder] = read_pyproject(file) if file.is_file() else None
+            file = os.path.join(folder, PYPROJECT)  # os.path: once per package, pathlib costs
+            self._layers[folder] = read_pyproject(Path(file)) if os.path.isfile(file) else None
         return self._layers[folder]
 
     def _above(self, folder: Path) -> Layer | None:

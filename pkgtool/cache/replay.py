@@ -348,6 +348,9 @@ class Witness:
         replayable, something changed too recently, or the cache cannot be written)."""
         if not self.replayable or not self.folder.is_dir():
             return
+        if self.hinted and self.known is not None and \
+                not _settled(list(map(_CHANGED, self.known.statuses)), self.taken_ns):
+            return  # the usual case after an edit, known before working out the record
         try:
             for folder in site_folders():
                 self.folders[folder] = _Folder(os.stat(folder), [], [], [], False)
@@ -386,7 +389,7 @@ class Witness:
                     "empty": list(self.walked[0].empty),
                     "scans": [[root, *files] for root, files in self.positions.items()]})
         record = {"schema": SCHEMA, "stamp": self.stamp, "layout": layout["id"],
-                  "times": hash(tuple(times)), "shown": list(shown),
+                  "times": hash(tuple(times)), "entries": len(times), "shown": list(shown),
                   "outcomes": self._write_outcomes(times)}
         _write(self.folder, lambda _: _name(self.stamp), record)
         _prune(self.folder)
@@ -457,15 +460,36 @@ def stamp(arguments: dict[str, Any], colour: bool) -> list[Any]:
             sorted(arguments.items())]
 
 
-def replayed(folder: Path, stamp: list[Any]) -> Shown | Listings | None:
-    """The run recorded in the cache ``folder`` with ``stamp`` when everything it read is as
-    it was; else, when only the contents of files changed, what its folders hold (the next
-    run need not list them); else None."""
+class Record(NamedTuple):
+    """A run's record, read and checked (:func:`recorded`), not yet compared with the files."""
+
+    record: dict[str, Any]
+    entries: int
+    """How many folders and files comparing it with them looks at (0: not recorded)."""
+
+
+def recorded(folder: Path, stamp: list[Any]) -> Record | None:
+    """The record in the cache ``folder`` of the run with ``stamp``, when intact (a small file:
+    its layout, the large part, is read by :func:`replayed`)."""
     try:
         record = _read(folder / "lint" / _name(stamp))
         if record["schema"] != SCHEMA or record["stamp"] != json.loads(json.dumps(stamp)) or \
                 not _CHECK.fullmatch(record["layout"]):
             return None
+        entries = record.get("entries")
+        return Record(record, entries if isinstance(entries, int) else 0)
+    except (OSError, ValueError, RecursionError, KeyError, TypeError, AttributeError):
+        return None
+
+
+def replayed(folder: Path, found: Record | None) -> Shown | Listings | None:
+    """The run ``found`` (the :func:`recorded` one of the cache ``folder``) records, when
+    everything it read is as it was; else, when only the contents of files changed, what its
+    folders hold (the next run need not list them); else None."""
+    if found is None:
+        return None
+    record = found.record
+    try:
         layout = _read(folder / "lint" / _layout_name(record["layout"]), record["layout"])
         if layout["schema"] != SCHEMA or any(map(os.path.exists, layout["absent"])):
             return None

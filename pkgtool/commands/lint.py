@@ -6,8 +6,9 @@ Nothing here prints: :func:`run` returns a frozen :class:`LintResult` that the C
 from __future__ import annotations
 
 import gc
+import importlib
 import os
-from collections.abc import Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterator, Mapping, Sequence
 from contextlib import contextmanager
 from functools import partial
 from pathlib import Path
@@ -24,6 +25,7 @@ from pkgtool.workspace import discover, witnessed
 if TYPE_CHECKING:
     from pkgtool.cache.replay import Witness
     from pkgtool.cache.store import Entry, LintCache, Lookup
+    from pkgtool.commands.warm_worker import WarmWorker
     from pkgtool.model.files import Scan
     from pkgtool.model.package import Package
 
@@ -78,19 +80,21 @@ class LintResult:
 
 
 def run(paths: Sequence[str], *, options: LintOptions, cwd: Path | None = None,
-        witness: Witness | None = None) -> LintResult:
+        witness: Witness | None = None, worker: WarmWorker | None = None) -> LintResult:
     """Lint the packages found at ``paths`` (relative to ``cwd``; none means ``cwd``).
 
-    ``witness`` is told what the run reads, for :mod:`pkgtool.cache.replay`.
+    ``witness`` is told what the run reads, for :mod:`pkgtool.cache.replay`; ``worker``
+    (:mod:`pkgtool.commands.warm_worker`) checks the packages the cache has no entry for, when
+    they are too few for a pool.
     """
     if witness is None:
-        return _run(paths, options, cwd)
+        return _run(paths, options, cwd, None, worker)
     with witnessed(witness, witness.known):
-        return _run(paths, options, cwd, witness)
+        return _run(paths, options, cwd, witness, worker)
 
 
 def _run(paths: Sequence[str], options: LintOptions, cwd: Path | None,
-         witness: Witness | None = None) -> LintResult:
+         witness: Witness | None, worker: WarmWorker | None) -> LintResult:
     here = Path(os.path.abspath(cwd or Path.cwd()))
     hint = witness.hint() if witness is not None else None
     found = hint.found if hint is not None else discover(paths, cwd=here)
@@ -115,8 +119,8 @@ def _run(paths: Sequence[str], options: LintOptions, cwd: Path | None,
         return LintResult(ExitCode.USAGE, errors=(str(error),), notes=notes)
     if witness is not None:
         witness.paths(finder.consulted())
-        tops = [Path(os.path.abspath(here / p)) for p in paths or ["."]]
-        witness.replayable = all(any(root == top or top in root.parents for top in tops)
+        tops = [os.path.abspath(here / p) for p in paths or ["."]]
+        witness.replayable = all(any(_within(str(root), top) for top in tops)
                                  for root in found.packages)  # else a package above is read
     cache = _open_cache(options, here)
     scans = {} if cache is None or options.fix else \
@@ -143,7 +147,7 @@ def _run(paths: Sequence[str], options: LintOptions, cwd: Path | None,
     notes += refused
     failing = False
     outcomes = _check_all(jobs, workspace) if cache is None else \
-        _cached(jobs, workspace, cache, scans, reused)
+        _cached(jobs, workspace, cache, scans, reused, worker)
     checked: dict[str, tuple[str, list[Finding]]] = {}
     for (root, label, setting), (outcome, entry) in zip(jobs, outcomes):
         if entry is not None and cache is not None:
@@ -169,6 +173,22 @@ def _run(paths: Sequence[str], options: LintOptions, cwd: Path | None,
     if options.diff:
         code = ExitCode.FINDINGS if diff and not options.exit_zero else ExitCode.OK
     return LintResult(code, tuple(findings), tuple(labels), tuple(errors), notes, fixed, diff)
+
+
+def warm_up() -> list[Callable[[], None]]:
+    """What checking any package imports, in steps: the model and the engine, the rules
+    enabled by default, lxml (a :mod:`warm worker <pkgtool.commands.warm_worker>` takes them
+    while the run reads the cache). PyYAML is not among them: a package without YAML files
+    does not need it, and a step begun when the call comes delays it."""
+    return [partial(importlib.import_module, name) for name in
+            ("pkgtool.engine", "pkgtool.model.package")] + \
+        [_default_rules, partial(importlib.import_module, "lxml.etree")]
+
+
+def _default_rules() -> None:
+    from pkgtool.rules.registry import index, load
+
+    load(code for code, rule in index().items() if rule.default_enabled)
 
 
 def _fix_all(jobs: list[Job], workspace: Workspace, options: LintOptions, errors: list[str]
@@ -219,11 +239,12 @@ Checked = tuple[Outcome, Optional["Entry"]]
 """A package's outcome, and the cache entry to record for it (when there is a new one)."""
 
 
-def _check_all(jobs: list[Job], workspace: Workspace, cache: LintCache | None = None
-               ) -> Iterator[Checked]:
-    """Each job's outcome in order; a process per core once there are enough packages."""
+def _check_all(jobs: list[Job], workspace: Workspace, cache: LintCache | None = None,
+               worker: WarmWorker | None = None) -> Iterator[Checked]:
+    """Each job's outcome in order; a process per core once there are enough packages, else
+    the warm ``worker`` when there is one."""
     with _few_collections():
-        yield from _check_each(jobs, workspace, cache)
+        yield from _check_each(jobs, workspace, cache, worker)
 
 
 @contextmanager
@@ -238,10 +259,15 @@ def _few_collections() -> Iterator[None]:
         gc.set_threshold(*threshold)
 
 
-def _check_each(jobs: list[Job], workspace: Workspace, cache: LintCache | None
-                ) -> Iterator[Checked]:
+def _check_each(jobs: list[Job], workspace: Workspace, cache: LintCache | None,
+                worker: WarmWorker | None) -> Iterator[Checked]:
     check = partial(_check, workspace=workspace, cache=cache)
     workers = _workers(len(jobs))
+    if worker is not None and cache is not None and jobs and workers < 2:
+        yield from _check_in(worker, jobs, workspace, cache)
+        return
+    if worker is not None:
+        worker.close()
     if workers < 2 or _threaded():
         yield from map(check, jobs)
         return
@@ -288,7 +314,8 @@ def _scans(roots: Sequence[Path]) -> dict[Path, Scan]:
 
 
 def _cached(jobs: list[Job], workspace: Workspace, cache: LintCache,
-            scans: Mapping[Path, Scan], reused: Mapping[Path, Outcome]) -> Iterator[Checked]:
+            scans: Mapping[Path, Scan], reused: Mapping[Path, Outcome],
+            worker: WarmWorker | None) -> Iterator[Checked]:
     """Each job's outcome in order: ``reused`` ones (the last run's, see
     :class:`pkgtool.cache.replay.Hint`) as they are; entries whose files kept their sizes and
     times (in ``scans`` when given) from the cache here; the others are looked up (reading
@@ -298,7 +325,7 @@ def _cached(jobs: list[Job], workspace: Workspace, cache: LintCache,
               cache.lookup(root, setting, read=False, scanned=scans.get(root))
               for root, _, setting in jobs]
     fresh = _check_all([job for job, probe in zip(jobs, probes) if job[0] not in reused and
-                        (probe is None or probe.hit is None)], workspace, cache)
+                        (probe is None or probe.hit is None)], workspace, cache, worker)
     for (root, label, _), probe in zip(jobs, probes):
         if root in reused:
             yield reused[root], None
@@ -331,17 +358,37 @@ def _cpus() -> int:
         return os.cpu_count() or 1
 
 
+def _check_in(worker: WarmWorker, jobs: list[Job], workspace: Workspace, cache: LintCache
+              ) -> Iterator[Checked]:
+    """Each job's outcome in order: looked up in ``cache`` here, the packages it has no entry
+    for checked by ``worker`` (here, when it could not)."""
+    found = [cache.lookup(root, settings) for root, _, settings in jobs]
+    stale = [job for job, lookup in zip(jobs, found) if lookup is None or lookup.hit is None]
+    lint = partial(_lint_one, workspace=workspace)
+    outcomes = iter((worker.map(lint, stale) or list(map(lint, stale))) if stale else ())
+    for job, lookup in zip(jobs, found):
+        fresh = lookup is None or lookup.hit is None
+        yield _settled(job, lookup, cache, next(outcomes) if fresh else None)
+
+
 def _check(job: Job, workspace: Workspace, cache: LintCache | None) -> Checked:
     """One package's outcome: from ``cache`` when valid, else checked; and the entry to record."""
     if cache is None:
         return _lint_one(job, workspace), None
-    root, label, settings = job
-    found = cache.lookup(root, settings)
-    assert found is not None
+    found = cache.lookup(job[0], job[2])
+    fresh = found is None or found.hit is None
+    return _settled(job, found, cache, _lint_one(job, workspace) if fresh else None)
+
+
+def _settled(job: Job, found: Lookup | None, cache: LintCache, outcome: Outcome | None) -> Checked:
+    """The outcome of a package looked up in ``cache``: the entry's when valid (``outcome``
+    None), else ``outcome``, its check; and the entry to record."""
+    root, label, _ = job
+    assert found is not None  # read=True: never only a probe
     if found.hit is not None:  # when some file was read again, record its times: trusted next
         return _relabelled(found, label), cache.entry(root, found, *found.hit) \
             if found.refresh else None
-    outcome = _lint_one(job, workspace)
+    assert outcome is not None
     if isinstance(outcome, str) or any(f.internal for f in outcome[1]):
         return outcome, None
     return outcome, cache.entry(root, found, outcome[0],
@@ -366,10 +413,17 @@ def _fails(finding: Finding, strict: bool) -> bool:
 
 def _label(root: Path, cwd: Path) -> str:
     """``root`` relative to ``cwd`` when inside it (``.`` for cwd itself), else absolute."""
-    try:
-        return root.relative_to(cwd).as_posix() or "."
-    except ValueError:
-        return root.as_posix()
+    path, folder = str(root), str(cwd)
+    if path == folder:
+        return "."
+    inside = path[len(folder.rstrip(os.sep)) + 1:] if _within(path, folder) else path
+    return inside.replace(os.sep, "/")
+
+
+def _within(path: str, folder: str) -> bool:
+    """True when the normalised absolute ``path`` is ``folder`` or inside it (string tests:
+    once per package, where pathlib's ``parents`` and ``relative_to`` cost milliseconds)."""
+    return path == folder or path.startswith(folder.rstrip(os.sep) + os.sep)
 
 
 @record

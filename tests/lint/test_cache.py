@@ -30,7 +30,7 @@ GENERATED = 40
 def _lint(cwd: Path, *args: str, jobs: int = 1, env: dict[str, str] | None = None
           ) -> subprocess.CompletedProcess[str]:
     inherited = {k: v for k, v in os.environ.items() if k != "PKGTOOL_CACHE_DIR"}
-    environment = {**inherited, "PKGTOOL_LINT_JOBS": str(jobs), **(env or {})}
+    environment = {**inherited, "PKGTOOL_LINT_JOBS": str(jobs), **(env or {})}  # 0: default
     done = subprocess.run([sys.executable, "-m", "pkgtool", "lint", "--format", "json", *args],
                           cwd=cwd, capture_output=True, text=True, timeout=600, env=environment)
     assert "Traceback" not in done.stderr and done.returncode in (0, 1), done.stderr
@@ -93,6 +93,10 @@ def test_findings_are_identical_with_and_without_cache_and_workers(corpus: Path)
             stream.write("\nundefined_name\n")
     edited = _lint(corpus, jobs=1).stdout  # only the edited packages are checked again
     assert edited == _lint(corpus, "--no-cache", jobs=1).stdout != serial
+    with open(corpus / "src" / "gen_003" / "gen_003" / "node_1.py", "a", encoding="utf-8") as f:
+        f.write("\nother_undefined_name\n")
+    checked_by_the_warm_worker = _lint(corpus, jobs=0).stdout  # the default: a worker forked
+    assert checked_by_the_warm_worker == _lint(corpus, "--no-cache", jobs=1).stdout != edited
 
 
 def test_an_edit_a_sibling_or_other_settings_invalidate(tmp_path: Path) -> None:

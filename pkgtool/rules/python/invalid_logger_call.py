@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import ast
 import difflib
-import logging
 from collections.abc import Iterator
+from functools import cache
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import nodes_of_class
@@ -26,9 +26,17 @@ GETTERS = frozenset({"rclpy.logging.get_logger"})
 ATTRIBUTES = LEVELS | {"log", "get_child", "set_level", "get_effective_level", "is_enabled_for",
                        "name", "contexts", "logger_sublogger_namepair"}
 """The attributes of rclpy's logger (``RcutilsLogger``) in Humble, Jazzy and Rolling."""
-PYTHON_LOGGER = frozenset(dir(logging.Logger)) | {"level", "parent", "propagate", "handlers",
-                                                  "disabled", "filters", "manager", "root"}
-"""The attributes of Python's ``logging.Logger``, which another ``get_logger()`` may give."""
+
+
+@cache
+def python_logger() -> frozenset[str]:
+    """The attributes of Python's ``logging.Logger``, which another ``get_logger()`` may give
+    (importing ``logging`` costs a lint run ~5 ms: only a logger call that rclpy's logger does
+    not have asks)."""
+    import logging
+
+    return frozenset(dir(logging.Logger)) | {"level", "parent", "propagate", "handlers",
+                                             "disabled", "filters", "manager", "root"}
 
 
 def _is_logger_call(node: ast.AST, index: Index) -> bool:
@@ -154,7 +162,7 @@ def _unknown_method(func: ast.Attribute, index: Index) -> str | None:
         isinstance(getter.func, ast.Attribute) and isinstance(getter.func.value, ast.Name) and
         getter.func.value.id == "self" and index.enclosing_class(getter) in
         node_subclasses(index))
-    if func.attr in PYTHON_LOGGER and not certain:
+    if func.attr in python_logger() and not certain:
         return None
     close = difflib.get_close_matches(func.attr, sorted(LEVELS), n=1, cutoff=0.6)
     also = f" (did you mean `{close[0]}`?)" if close else \
