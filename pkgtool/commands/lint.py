@@ -202,7 +202,8 @@ def _fix_all(jobs: list[Job], workspace: Workspace, options: LintOptions, errors
     refused: list[str] = []
     for root, label, settings in jobs:
         outcome = fix_package(root, label, partial(_model_and_findings, label=label,
-                                                   settings=settings, workspace=workspace),
+                                                   settings=settings, workspace=workspace,
+                                                   offers=False),
                               unsafe=options.unsafe_fixes, write=not options.diff)
         fixed.extend(f"{label}: {title}" for title in outcome.applied)
         refused.extend(f"{label}: not fixed: {why}" for why in outcome.refused)
@@ -212,9 +213,11 @@ def _fix_all(jobs: list[Job], workspace: Workspace, options: LintOptions, errors
     return tuple(fixed), "".join(diffs), tuple(refused)
 
 
-def _model_and_findings(root: Path, *, label: str, settings: Settings, workspace: Workspace
-                        ) -> tuple[Package, list[Finding]]:
-    """Read and check one package (exceptions propagate: ``_check`` reports them)."""
+def _model_and_findings(root: Path, *, label: str, settings: Settings, workspace: Workspace,
+                        offers: bool = True) -> tuple[Package, list[Finding]]:
+    """Read and check one package (exceptions propagate: ``_check`` reports them); with
+    ``offers``, the findings ``--fix`` cannot repair are marked so (``--fix`` itself asks the
+    fixers anyway)."""
     from pkgtool.engine import check_package
     from pkgtool.model.package import load_package
     from pkgtool.model.python_visitor import forget_trees
@@ -223,6 +226,10 @@ def _model_and_findings(root: Path, *, label: str, settings: Settings, workspace
     try:
         found = check_package(package, settings.rules, root_label=label,
                               severities=settings.severities)
+        if offers:
+            from pkgtool.fix.offers import offers_marked
+
+            found = offers_marked(package, found)
     finally:
         forget_trees()
     if settings.path_ignores:

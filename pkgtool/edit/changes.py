@@ -13,6 +13,7 @@ from pathlib import Path
 from pkgtool.edit.core import Edit, EditError, Fix, apply_edits, select_fixes
 from pkgtool.edit.source import Source
 from pkgtool.edit.write import Write, inside, write_all
+from pkgtool.model.files import read_bytes
 from pkgtool.records import record
 
 
@@ -64,10 +65,12 @@ def read_source(root: Path, relpath: str) -> Source | None:
     target = inside(root, relpath)
     if not target.exists():
         return None
-    try:
-        data = target.read_bytes()
+    try:  # as the model reads: a FIFO or a device is not read, nor more than the limit
+        data = read_bytes(str(target))
     except OSError as error:
         raise EditError(f"Cannot read `{relpath}`: {error.strerror or error}.") from None
+    if isinstance(data, int):
+        raise EditError(f"Cannot edit `{relpath}`: at {data} bytes it is too large to read.")
     return Source.from_bytes(relpath, data)
 
 

@@ -89,3 +89,19 @@ def test_fix_clears_the_rule_and_adds_nothing(tmp_path: Path, code: str, case: P
              if key[0] not in REVEALED.get((code, case.name), set())}
     assert not added, added
     assert _keys(package, code, fix=True, unsafe_fixes=True) == after, "not idempotent"
+
+
+@pytest.mark.parametrize(("code", "case"), CASES, ids=[f"{c}-{p.name}" for c, p in CASES])
+def test_a_finding_is_offered_as_fixable_exactly_when_fix_repairs_it(code: str, case: Path
+                                                                     ) -> None:
+    """Reports mark fixable (``[*]``, JSON ``fixable``) what ``--fix`` repairs: none of a case
+    ``--fix`` leaves as it is, all of a case it clears."""
+    options = LintOptions(extend_select=(code,), isolated=True)
+    mine = [f for f in run([str(case)], options=options).findings if f.code == code]
+    offered = [f for f in mine if not f.manual]
+    if (code, case.name) in MANUAL:
+        assert not offered, [f.message for f in offered]
+    elif (code, case.name) not in PARTLY:
+        assert offered == mine, [f.message for f in mine if f.manual]
+    else:
+        assert offered, "a case fixed in part offers some of its findings"

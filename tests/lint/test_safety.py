@@ -145,6 +145,10 @@ def test_special_files_are_not_read(tmp_path: Path, special: str, kind: str) -> 
         target.symlink_to("/dev/zero")
     done = _lint_subprocess(root, "--format", "json", "--no-cache")
     _assert_clean_exit(done)
+    fixed = _lint_subprocess(root, "--no-cache", "--fix", "--unsafe-fixes")  # fixers read too
+    assert "Traceback" not in fixed.stderr + fixed.stdout
+    assert fixed.returncode in (ExitCode.OK, ExitCode.FINDINGS, ExitCode.INTERNAL), fixed.stderr
+    assert target.is_fifo() if kind == "fifo" else target.is_symlink()
 
 
 @pytest.mark.parametrize("empty", ["package.xml", "setup.py", "launch/empty.launch.xml"])
