@@ -59,7 +59,7 @@ def check_package(package: Package, rules: Iterable[Rule], *, root_label: str,
         for hit in hits:
             finding = Finding(rule.code, overrides.get(rule.code, rule.severity), package.name,
                               root_label, hit.span, hit.message, hit.fix or rule.fix,
-                              related=hit.related, manual=hit.manual)
+                              related=hit.related)
             if not _suppressed(package, finding, rule):
                 found.append((finding, hit))
     return sorted(set(_fold_consequences(found)), key=lambda f: f.sort_key)

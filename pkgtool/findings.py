@@ -33,9 +33,7 @@ class Hit:
     ``cause`` names a root cause that hits of several rules can share (``package-name:x``:
     the package is called ``x`` somewhere it should not be). A ``consequence`` hit is folded by
     the engine into the hit of the same cause that is not one (the hit stating the cause),
-    when that one is reported too; otherwise it stands alone. ``manual`` marks a hit the
-    rule's fixer will refuse (only the user can mend it): reports do not offer it as
-    fixable.
+    when that one is reported too; otherwise it stands alone.
     """
 
     span: Span
@@ -44,7 +42,6 @@ class Hit:
     related: tuple[Span, ...] = ()
     cause: str = ""
     consequence: bool = False
-    manual: bool = False
 
 
 @record
@@ -54,8 +51,8 @@ class Finding:
     ``root`` is the package root as the user named it, so reporters can print
     ``root/span.path`` relative to the current directory. ``internal`` marks a rule that
     raised instead of checking (the message names it); lint then exits with 3. ``related``
-    are the hit's other places of the same mistake; ``manual`` that the rule's fixer will
-    refuse it (see :class:`Hit`).
+    are the hit's other places of the same mistake; ``manual`` that the rule's fixer makes no fix
+    for it (:mod:`pkgtool.fix.offers`): only the user can mend it.
     """
 
     code: str

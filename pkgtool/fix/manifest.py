@@ -17,7 +17,8 @@ from pkgtool.model.package import Package
 from pkgtool.records import replace
 from pkgtool.rules.manifest.dependency_names import neighbours
 from pkgtool.rules.manifest.non_spdx_license import spdx_spelling
-from pkgtool.rules.manifest.template_placeholder import setup_answer
+from pkgtool.rules.manifest.template_placeholder import is_placeholder
+from pkgtool.rules.setup_values import text_of
 
 
 def _remove_lines(package: Package, findings: list[Finding], title: str, *, safe: bool
@@ -206,3 +207,13 @@ def placeholder(package: Package, findings: list[Finding]) -> Iterator[Fix | Ref
         spdx = spdx_spelling(text) if element.local == "license" else None
         text = spdx.strip("`") if spdx and spdx.count("`") == 2 else text
         yield Fix(f"Write setup.py's {element.local} `{text}`", (doc.replace_text(element, text),))
+
+
+def setup_answer(package: Package, tag: str) -> str | None:
+    """What setup.py says for a placeholder ``<description>`` or ``<license>`` (one real
+    value: not a placeholder itself, not a list of licenses); None when it is no help."""
+    found = text_of(getattr(package.setup_py, tag, None)) if package.setup_py else None
+    text = " ".join(found[0].split()) if found else ""
+    if not text or is_placeholder(text) or tag == "license" and "," in text:
+        return None
+    return text

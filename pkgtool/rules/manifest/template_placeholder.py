@@ -9,7 +9,6 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.manifest.common import tree
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup_values import text_of
 
 _TODO = re.compile(r"TODO(?::|$)")
 """``TODO: Package description`` (ros2 pkg create) and a bare ``TODO`` (catkin_create_pkg)."""
@@ -54,23 +53,13 @@ def template_placeholder(package: Package) -> Iterator[Hit]:
     for element in found.named("description", "license"):
         if is_placeholder(element.text):
             yield Hit(element.span, f"`<{element.tag}>` is the placeholder `{element.text}`",
-                      _FIXES[element.tag], manual=setup_answer(package, element.tag) is None)
+                      _FIXES[element.tag])
     for element in found.named("maintainer", "author"):
         email = (element.attribute("email") or "").strip()
         if email.lower().endswith(_PLACEHOLDER_DOMAIN):
             yield Hit(element.span, f"{element.tag.capitalize()} `{element.text}` has the "
                       f"placeholder email `{email}`",
-                      "Write your real name and email address", manual=True)
-
-
-def setup_answer(package: Package, tag: str) -> str | None:
-    """What setup.py says for a placeholder ``<description>`` or ``<license>`` (one real
-    value: not a placeholder itself, not a list of licenses); None when it is no help."""
-    found = text_of(getattr(package.setup_py, tag, None)) if package.setup_py else None
-    text = " ".join(found[0].split()) if found else ""
-    if not text or is_placeholder(text) or tag == "license" and "," in text:
-        return None
-    return text
+                      "Write your real name and email address")
 
 
 def is_placeholder(text: str) -> bool:
