@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import ast
 from collections.abc import Iterator
+from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
@@ -22,6 +23,10 @@ _FIELDS = {"bool_value": "BOOL", "integer_value": "INTEGER", "double_value": "DO
 
 _MESSAGE = frozenset({"type", "SLOT_TYPES", "get_fields_and_field_types"})
 """The other public attributes of a ParameterValue message."""
+_PARAMETER = frozenset({"name", "value", "type_", "get_parameter_value", "to_parameter_msg",
+                        "from_parameter_msg", "Type"})
+"""The public attributes of rclpy's ``Parameter`` (Humble to Rolling), what ``get_parameter``
+gives."""
 
 
 def _self_read(call: ast.expr) -> str | None:
@@ -38,10 +43,16 @@ def _missing_accessor(node: ast.Attribute, index: Index) -> str | None:
     """What is wrong with ``self.get_parameter('x').value()`` and with
     ``...get_parameter_value().<attribute ParameterValue has not>``; else None."""
     parent = index.parents.get(id(node))
+    name = _self_read(node.value)
     if node.attr == "value" and isinstance(parent, ast.Call) and parent.func is node and \
-            (name := _self_read(node.value)) is not None:
+            name is not None:
         return (f"`{name}` is read with `.value()`: `value` is a property, calling the "
                 "parameter's value raises TypeError")
+    if name is not None and node.attr not in _PARAMETER and not node.attr.startswith("_"):
+        close = get_close_matches(node.attr, sorted(_PARAMETER), n=1)
+        meant = f" (did you mean `{close[0]}`?)" if close else ""
+        return (f"`{name}` is read through `{node.attr}`, which rclpy's `Parameter` has not: "
+                f"it raises AttributeError{meant}")
     if node.attr in _FIELDS or node.attr in _MESSAGE or node.attr.startswith("_"):
         return None
     name = _typed_read(node)
@@ -70,7 +81,8 @@ def parameter_accessor_type(package: Package) -> Iterator[Hit]:
     (`declare_parameter('speed', 1)` is an integer, read with `.double_value`); parameters
     declared with dynamic typing, with no literal default, or with defaults of several types
     are not judged. Also reports reads through an accessor that does not exist: a field
-    `ParameterValue` has not (`.get_parameter_value().str_value`, `.int_value`) and
+    `ParameterValue` has not (`.get_parameter_value().str_value`, `.int_value`), an
+    attribute rclpy's `Parameter` has not (`self.get_parameter('x').values`) and
     `self.get_parameter('x').value()`, which calls the value.
 
     ## Why is this bad?
