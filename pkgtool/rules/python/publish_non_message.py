@@ -14,6 +14,7 @@ from pkgtool.model.span import Span
 from pkgtool.records import record
 from pkgtool.rules.node_api import (ACTION_CLIENTS, PARAMETERS, argument, literal_type,
                                     unpacks)
+from pkgtool.rules.python._callbacks import execute_callbacks
 from pkgtool.rules.python._message_instances import (Instance, Known, attribute_instances,
                                                      known_messages, local_instances,
                                                      message_instances)
@@ -39,10 +40,17 @@ class Publisher:
 
 _CLIENT = Publisher(None, "request", ("call", "call_async"))
 _ACTION_CLIENT = Publisher(None, "goal", ("send_goal", "send_goal_async"))
-_SENT = {"msg", "request", "goal"}
-_SENDER = {"message": "publisher", "request": "client", "goal": "action client"}
-_FIX = "Send an instance: `Trigger.Request()` to a service, `Fibonacci.Goal()` to an action"
-"""The names of the sent value's parameter in ``publish``, ``call*`` and ``send_goal*``."""
+_GOAL_HANDLE = Publisher(None, "feedback message", ("publish_feedback",))
+_SENT = {"msg", "request", "goal", "feedback"}
+"""The names of the sent value's parameter in ``publish``, ``call*``, ``send_goal*`` and
+``publish_feedback``."""
+_SENDER = {"message": "publisher", "request": "client", "goal": "action client",
+           "feedback message": "action"}
+_FIXES = {"message": None,
+          "request": "Send an instance: `Trigger.Request()` to a service, `Fibonacci.Goal()` to "
+                     "an action",
+          "feedback message": "Publish an instance of the action's feedback "
+                              "(`Fibonacci.Feedback()`, its fields set)"}
 
 
 def _publisher_maker(known: Known, index: Index) -> Callable[[ast.Call], Publisher | None]:
@@ -132,7 +140,8 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
     (held the same ways), for literals and classes (`call_async(Trigger.Request)`).
     `bytes` (published as serialized data), other names, calls and unknown types are never
     reported. A `publish()` given a second positional argument (`pub.publish(String, msg)`)
-    is reported too.
+    is reported too, and so is what an action server's execute callback gives its goal
+    handle's `publish_feedback()` when it is such a literal or class.
 
     ## Why is this bad?
     `Publisher.publish` raises `TypeError: Expected <class 'std_msgs.msg._string.String'>,
@@ -153,6 +162,7 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
     self.pub.publish(String(data='hello'))
     ```
     """
+    yield from _feedback_hits(package)
     for module, tree, index in installed_trees(package):
         if not any(i.top_level == "rclpy" for i in module.imports) or \
                 any(f.name == "create_publisher" for f in index.functions):
@@ -175,9 +185,30 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
                 why = _not_a_message(value, publisher.message, messages,
                                      certain_type(value, package, tree, index)) if value else None
                 if sent is not None and value is not None and why:
-                    what = publisher.message.sends
-                    yield Hit(Span(module.path, value.lineno, value.col_offset + 1),
-                              f"`{ast.unparse(ref)}.{sent[0]}()` is given "
-                              f"`{ast.unparse(value)}`, {why}: rclpy raises TypeError (it "
-                              f"sends {what}s of the {_SENDER[what]}'s type only)",
-                              None if what == "message" else _FIX)
+                    yield _sent_hit(module.path, ref, sent[0], value, why, publisher.message)
+
+
+def _sent_hit(path: str, ref: ast.expr, method: str, value: ast.expr, why: str,
+              sender: Publisher) -> Hit:
+    what = sender.sends
+    return Hit(Span(path, value.lineno, value.col_offset + 1),
+               f"`{ast.unparse(ref)}.{method}()` is given `{ast.unparse(value)}`, {why}: rclpy "
+               f"raises TypeError (it sends {what}s of the {_SENDER[what]}'s type only)",
+               _FIXES.get(what, _FIXES["request"]))
+
+
+def _feedback_hits(package: Package) -> Iterator[Hit]:
+    """The feedback an action server's execute callback publishes through its goal handle
+    that is certainly no feedback message."""
+    trees = {module.path: tree for module, tree, _ in installed_trees(package)}
+    for path, _, function, handle, index in execute_callbacks(package):
+        for ref in ast.walk(function):
+            sent = _published(ref, index, _GOAL_HANDLE.methods) \
+                if isinstance(ref, ast.Name) and ref.id == handle else None
+            if sent is None:
+                continue
+            value = sent[1]
+            why = _not_a_message(value, _GOAL_HANDLE, [],
+                                 certain_type(value, package, trees[path], index))
+            if why:
+                yield _sent_hit(path, ref, sent[0], value, why, _GOAL_HANDLE)
