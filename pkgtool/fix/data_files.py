@@ -20,7 +20,8 @@ from pkgtool.fix.registry import Refusal, fixer
 from pkgtool.model.launch import LAUNCH_SUFFIXES
 from pkgtool.model.package import Package
 from pkgtool.model.setup_py import DataFile, DataSource
-from pkgtool.rules.data_files.common import MARKER_FOLDER, is_folder
+from pkgtool.rules.data_files.common import (MARKER_FOLDER, is_folder,
+                                             uninstalled_launch_resources)
 
 Build = Callable[[SetupDoc], Sequence[Edit]]
 
@@ -178,14 +179,13 @@ def _launch_glob(path: str) -> tuple[str, str]:
     return folder, posixpath.join(folder, f"*{suffix}") if suffix else path
 
 
-@fixer("DAT006", "Install the file the launch file reads")
+@fixer("DAT006", "Install the file a launch file or module reads")
 def launch_resources(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
     """Install the files of that kind in its folder (``config/*.yaml``), or a folder's files
     (DAT006 reports only paths the package has; DAT012 the others). Safe: only installs."""
     at = {(f.span.path, f.span.line, f.span.col) for f in findings}
-    paths = dict.fromkeys(
-        posixpath.normpath(posixpath.join(*ref.parts)) for launch in package.launch_files
-        for ref in launch.files if (ref.span.path, ref.span.line, ref.span.col) in at)
+    paths = dict.fromkeys(relative for _, ref, relative, _ in uninstalled_launch_resources(package)
+                          if (ref.span.path, ref.span.line, ref.span.col) in at)
     for path in paths:
         if package.has_file(path):
             folder, name = posixpath.split(path)

@@ -3,13 +3,15 @@
 from __future__ import annotations
 
 import posixpath
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 
 from pkgtool.model.installed import installed_data
 from pkgtool.model.launch import FileRef, LaunchFile
+from pkgtool.model.launch_python import read_python_launch
 from pkgtool.model.package import Package
 from pkgtool.model.setup_py import DataFile, DataSource
 from pkgtool.rules.setup_values import checked_setup
+from pkgtool.rules.syntax_trees import installed_trees
 
 MARKER_FOLDER = "share/ament_index/resource_index/packages"
 """Where an ament_python package installs its ament index marker."""
@@ -35,14 +37,14 @@ def is_folder(package: Package, path: str) -> bool:
 
 
 def uninstalled_launch_resources(package: Package
-                                 ) -> Iterator[tuple[LaunchFile, FileRef, str, dict[str, str]]]:
-    """Each file an installed launch file reads from this package's share folder that
-    data_files installs neither itself nor a folder of: the launch file, the reference, the
-    path relative to the share folder (``config/params.yaml``), and what data_files installs.
-    Nothing when data_files is not known statically; nothing for a path only parameter files
-    of nodes never started use (``mux = Node(..., parameters=[path])`` left out of the
-    LaunchDescription: the launch never reads it), nor for one data_files lists from a source
-    that does not exist (DAT001's)."""
+                                 ) -> Iterator[tuple[str, FileRef, str, dict[str, str]]]:
+    """Each file an installed launch file or module reads from this package's share folder
+    that data_files installs neither itself nor a folder of: the reader's path, the
+    reference, the path relative to the share folder (``config/params.yaml``), and what
+    data_files installs. Nothing when data_files is not known statically; nothing for a path
+    only parameter files of nodes never started use (``mux = Node(..., parameters=[path])``
+    left out of the LaunchDescription: the launch never reads it), nor for one data_files
+    lists from a source that does not exist (DAT001's)."""
     setup = checked_setup(package)
     installed = installed_data(package) if setup else None
     if installed is None or setup is None:
@@ -53,19 +55,29 @@ def uninstalled_launch_resources(package: Package
               for entry in setup.data_files or () if not entry.sources_is_text
               for source in entry.sources if not source.is_glob}
     shared = {source for target, source in installed.items() if target.startswith(share + "/")}
-    for launch in package.launch_files:
-        if launch.path not in shared:
-            continue
-        unread = _only_unused_nodes_read(launch)
-        for ref in launch.files:
-            if ref.package != package.name or not ref.parts or \
-                    (ref.package, ref.parts) in unread:
+    for path, refs in _share_reads(package, shared):
+        for ref in refs:
+            if ref.package != package.name or not ref.parts:
                 continue
             target = posixpath.normpath(posixpath.join(share, *ref.parts))
             if target in installed or target in listed or \
                     any(t.startswith(target + "/") for t in installed):
                 continue
-            yield launch, ref, posixpath.relpath(target, share), installed
+            yield path, ref, posixpath.relpath(target, share), installed
+
+
+def _share_reads(package: Package, shared: set[str]
+                 ) -> Iterator[tuple[str, Iterable[FileRef]]]:
+    """The share files each installed launch file (but those only nodes never started use)
+    and each installed module reading a package's share folder reads."""
+    for launch in package.launch_files:
+        if launch.path in shared:
+            unread = _only_unused_nodes_read(launch)
+            yield launch.path, (ref for ref in launch.files
+                                if (ref.package, ref.parts) not in unread)
+    for module, tree, index in installed_trees(package):
+        if any(v.split(".")[0] == "ament_index_python" for v in index.aliases.values()):
+            yield module.path, read_python_launch(module.path, tree)[2]
 
 
 def _only_unused_nodes_read(launch: LaunchFile) -> set[tuple[str | None, tuple[str, ...]]]:

@@ -14,16 +14,16 @@ from pkgtool.rules.registry import rule
 @rule("DAT012", "missing-launch-resource", Severity.ERROR,
       fix="Fix the path in the launch file, or add the file to the package and install it")
 def missing_launch_resource(package: Package) -> Iterator[Hit]:
-    """An installed launch file uses a file of this package's share folder that does not exist.
+    """An installed launch file or module uses a share file of the package that does not exist.
 
     ## What it does
-    For each launch file data_files installs, looks at the paths it builds from this
-    package's share folder (`get_package_share_directory('<pkg>')`, `FindPackageShare`,
-    `$(find-pkg-share <pkg>)` joined with static parts) and reports those that data_files
-    does not install and that are no file or folder of the package either: a misspelt name
-    (`param.yaml` for `params.yaml`), a wrong folder, a file never committed. It suggests the
-    closest path the package installs or has. A file the package has but does not install is
-    DAT006's.
+    For each launch file data_files installs, and each installed module that imports
+    `ament_index_python`, looks at the paths it builds from this package's share folder
+    (`get_package_share_directory('<pkg>')`, `FindPackageShare`, `$(find-pkg-share <pkg>)`
+    joined with static parts) and reports those that data_files does not install and that
+    are no file or folder of the package either: a misspelt name (`param.yaml` for
+    `params.yaml`), a wrong folder, a file never committed. It suggests the closest path the
+    package installs or has. A file the package has but does not install is DAT006's.
 
     ## Why is this bad?
     Nothing can install a file the package does not have: `ros2 launch` fails on the missing
@@ -42,13 +42,13 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     ```
     """
     share = f"share/{package.name}/"
-    for launch, ref, relative, installed in uninstalled_launch_resources(package):
+    for reader, ref, relative, installed in uninstalled_launch_resources(package):
         if package.has_file(relative) or is_folder(package, relative):
             continue
         known = {target[len(share):] for target in installed if target.startswith(share)}
         known.update(package.files)
         close = get_close_matches(relative, sorted(known), n=1)
         hint = f" (did you mean `{close[0]}`?)" if close else ""
-        yield Hit(ref.span, f"`{relative}` is no file of `{package.name}`: `{launch.path}` "
+        yield Hit(ref.span, f"`{relative}` is no file of `{package.name}`: `{reader}` "
                             f"reads it from the share folder, where nothing installs it{hint}",
                   f"Write `{close[0]}`" if close else None)

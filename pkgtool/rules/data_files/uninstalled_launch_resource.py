@@ -14,18 +14,20 @@ from pkgtool.rules.registry import rule
       fix="Install the file with data_files, e.g. `(os.path.join('share', package_name, "
           "'config'), glob('config/*.yaml'))`")
 def uninstalled_launch_resource(package: Package) -> Iterator[Hit]:
-    """An installed launch file uses a file of this package's share folder that is not installed.
+    """An installed launch file or module uses a file of the package's share it does not install.
 
     ## What it does
-    For each launch file data_files installs, looks at the paths it builds from this
-    package's share folder (`get_package_share_directory('<pkg>')`, `FindPackageShare`,
-    `$(find-pkg-share <pkg>)` joined with static parts, e.g. `config/params.yaml`) and
-    reports those that data_files does not install (neither the file nor a folder holding it)
-    while the package has them. A file the package does not have at all is DAT012's.
+    For each launch file data_files installs, and each installed module that imports
+    `ament_index_python`, looks at the paths it builds from this package's share folder
+    (`get_package_share_directory('<pkg>')`, `FindPackageShare`, `$(find-pkg-share <pkg>)`
+    joined with static parts, e.g. `config/params.yaml`) and reports those that data_files
+    does not install (neither the file nor a folder holding it) while the package has them.
+    A file the package does not have at all is DAT012's.
 
     ## Why is this bad?
     The launch file starts, then fails on the missing parameter file, URDF or RViz config,
-    or a node silently runs with default parameters.
+    or a node silently runs with default parameters; a node reading the file dies with
+    `FileNotFoundError` once installed, though it worked from the source tree.
 
     ## Example
     ```python
@@ -39,7 +41,7 @@ def uninstalled_launch_resource(package: Package) -> Iterator[Hit]:
     ```
     """
     share = f"share/{package.name}"
-    for launch, ref, relative, _ in uninstalled_launch_resources(package):
+    for reader, ref, relative, _ in uninstalled_launch_resources(package):
         if package.has_file(relative) or is_folder(package, relative):
             yield Hit(ref.span, f"`{relative}` is not installed to `{share}`, but "
-                                f"`{launch.path}` uses it")
+                                f"`{reader}` uses it")
