@@ -49,8 +49,10 @@ class NodeRef:
     still runs when the file does. ``remappings_not_pairs`` is where a Python ``remappings=``
     certainly is no list of pairs (:mod:`pkgtool.model.launch_remaps`), None otherwise.
     ``inline_parameters`` are the names a Python ``parameters=[{...}]`` dict display sets
-    with literal keys (nested dicts give dotted names), each where its key is written, with
-    the source of its value when that is a literal (``1.0``, ``'fast'``), else None.
+    with literal keys (nested dicts give dotted names), or an XML node's ``<param name=
+    value=>`` children, each where its key is written, with the source of its value when
+    that is a literal (``1.0``, ``'fast'``; for XML, the value launch makes of the text),
+    else None.
     """
 
     package: str | None

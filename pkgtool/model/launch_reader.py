@@ -6,6 +6,7 @@ Nothing is executed. Substitutions that only resolve at launch time (``$(var x)`
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Iterator
 
@@ -119,11 +120,48 @@ def _xml(path: str, text: str) -> Read | ParseProblem:
             arguments = [element.attribute(a) for a in ("args", "ros_args")]
             nodes.append(_named(NodeRef(
                 _static(element.attribute("pkg")), _static(executable), element.span,
-                element.tag, tuple(k for k, _ in element.attributes)),
+                element.tag, tuple(k for k, _ in element.attributes),
+                inline_parameters=tuple(_xml_parameters(element.children))),
                 element.attribute("name"), element.attribute("namespace"), froms, remaps,
                 arguments))
         values.extend((value, element.span) for _, value in element.attributes)
     return nodes, values, paths
+
+
+def _xml_parameters(children: tuple[XmlElement, ...], prefix: str = ""
+                    ) -> Iterator[tuple[str, Span, str | None]]:
+    """The ``<param name= value=>`` children of an XML launch node (nested ones give dotted
+    names), each with the source of the value launch gives the node (None when it is not
+    static)."""
+    for child in children:
+        name = child.attribute("name")
+        if child.tag != "param" or name is None or "$(" in name:
+            continue
+        value = child.attribute("value")
+        if value is not None:
+            yield f"{prefix}{name}", child.span, None if "$(" in value else launch_value(value)
+        else:
+            yield from _xml_parameters(child.children, f"{prefix}{name}.")
+
+
+def launch_value(text: str) -> str | None:
+    """The source of the value launch's XML and YAML front ends make of the attribute ``text``
+    when no type is asked for (launch.frontend.type_utils: YAML's reading, tried as an int,
+    a float, then kept as the text): ``'1'`` gives ``1``, ``'1.5'`` ``1.5``, ``'true'``
+    ``True``, ``'fast'`` ``'fast'``. None for a value with no literal source (``.inf``)."""
+    import yaml
+
+    try:
+        value = yaml.safe_load(text)
+    except yaml.YAMLError:
+        return repr(text)
+    if isinstance(value, int):  # bool included, as launch's isinstance(value, int) test does
+        return repr(value)
+    try:
+        number = float(value)
+    except (TypeError, ValueError):
+        return repr(text)
+    return repr(number) if math.isfinite(number) else None
 
 
 def _named(node: NodeRef, name: str | None, namespace: str | None,

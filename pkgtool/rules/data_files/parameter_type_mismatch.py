@@ -28,7 +28,9 @@ def parameter_type_mismatch(package: Package) -> Iterator[Hit]:
     in any block of those files: rcl rejects the whole file. The literal values a Python
     launch file gives a node of this package in a parameter dict (as DAT010 checks their
     names) are compared the same way, typed as Python types them (launch_ros keeps a string
-    a string: `'0.5'` is a string).
+    a string: `'0.5'` is a string), and so are the static `<param name= value=>` of an XML
+    launch file's node, typed as launch types an attribute (YAML's reading tried as an
+    integer, then a number: `value="1"` is an integer, `value="1.0"` a double).
 
     ## Why is this bad?
     The node dies at start-up: `declare_parameter` raises `InvalidParameterTypeException`.
