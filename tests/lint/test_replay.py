@@ -69,6 +69,8 @@ def test_a_second_run_replays_the_report(workspace: Path, lint: Lint) -> None:
     code, first, replayed = lint()
     assert not replayed and code == 1 and "PYC001" in first
     assert len(_records(workspace)) == 1
+    entries = replay._read(_records(workspace)[0])["entries"]  # a warm worker is worth it?
+    assert entries > 30  # the folders and files of the two packages, pkgtool's own and more
     assert lint() == (1, first, True)
     assert lint(".") == (1, first, False)  # another command line: its own record
     assert lint(".") == (1, first, True)
