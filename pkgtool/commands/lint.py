@@ -15,6 +15,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Optional, Union
 
 from pkgtool.commands import ExitCode
+from pkgtool.commands.warm_worker import WarmWorker, chosen_jobs, cores, threads_running
 from pkgtool.config import ConfigError, ConfigFinder, Layer, Settings, check_rosdistro
 from pkgtool.findings import Finding, Severity
 from pkgtool.model.context import Context, WorkspacePackage, workspace_index, workspace_near
@@ -25,7 +26,6 @@ from pkgtool.workspace import discover, witnessed
 if TYPE_CHECKING:
     from pkgtool.cache.replay import Witness
     from pkgtool.cache.store import Entry, LintCache, Lookup
-    from pkgtool.commands.warm_worker import WarmWorker
     from pkgtool.model.files import Scan
     from pkgtool.model.package import Package
 
@@ -275,7 +275,7 @@ def _check_each(jobs: list[Job], workspace: Workspace, cache: LintCache | None,
         return
     if worker is not None:
         worker.close()
-    if workers < 2 or _threaded():
+    if workers < 2 or threads_running():
         yield from map(check, jobs)
         return
     import multiprocessing  # only here: importing it costs a small lint run ~10 ms
@@ -293,13 +293,6 @@ def _check_each(jobs: list[Job], workspace: Workspace, cache: LintCache | None,
             yield from pool.map(check, jobs[1:], chunksize=max(1, len(jobs) // (workers * 8)))
     finally:
         gc.unfreeze()
-
-
-def _threaded() -> bool:
-    """True when this process runs other threads (forking it then is unsafe)."""
-    import threading  # only a run worth a pool pays for it
-
-    return threading.active_count() > 1
 
 
 def _open_cache(options: LintOptions, cwd: Path) -> LintCache | None:
@@ -349,20 +342,10 @@ def _relabelled(found: Lookup, label: str) -> Outcome:
 
 def _workers(packages: int) -> int:
     """``$PKGTOOL_LINT_JOBS`` when set (1: no pool), else one per core once worth it."""
-    try:
-        chosen = int(os.environ.get("PKGTOOL_LINT_JOBS", "0"))
-    except ValueError:
-        chosen = 0
+    chosen = chosen_jobs()
     if chosen > 0:
         return min(chosen, packages)
-    return min(_cpus(), packages // PACKAGES_PER_WORKER)
-
-
-def _cpus() -> int:
-    try:
-        return len(os.sched_getaffinity(0))
-    except AttributeError:  # not Linux
-        return os.cpu_count() or 1
+    return min(cores(), packages // PACKAGES_PER_WORKER)
 
 
 def _check_in(worker: WarmWorker, jobs: list[Job], workspace: Workspace, cache: LintCache

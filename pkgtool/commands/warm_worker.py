@@ -72,11 +72,9 @@ def start(warm_up: Callable[[], Iterable[Callable[[], None]]]) -> Optional[WarmW
     """Fork a worker that runs the steps ``warm_up()`` gives (imports, tables) until the call
     of :meth:`WarmWorker.map` comes, then serves it; None where a worker is not used (not
     Linux, one core, threads running, one job asked for)."""
-    if not sys.platform.startswith("linux") or os.environ.get("PKGTOOL_LINT_JOBS") == "1" or \
-            len(os.sched_getaffinity(0)) < 2:
+    if not sys.platform.startswith("linux") or chosen_jobs() == 1 or cores() < 2:
         return None  # on one core, the worker would only slow the run down
-    threading = sys.modules.get("threading")
-    if threading is not None and threading.active_count() > 1:
+    if threads_running():
         return None  # forking a process that runs threads is unsafe
     from_parent, to_child = os.pipe()
     from_child, to_parent = os.pipe()
@@ -90,6 +88,30 @@ def start(warm_up: Callable[[], Iterable[Callable[[], None]]]) -> Optional[WarmW
     os.close(from_parent)
     os.close(to_parent)
     return WarmWorker(pid, to_child, from_child)
+
+
+def chosen_jobs() -> int:
+    """The number of processes ``$PKGTOOL_LINT_JOBS`` asks for (1: no pool, no worker); 0
+    when it is not set or not a number."""
+    try:
+        return max(0, int(os.environ.get("PKGTOOL_LINT_JOBS", "0")))
+    except ValueError:
+        return 0
+
+
+def cores() -> int:
+    """The cores this process may run on."""
+    try:
+        return len(os.sched_getaffinity(0))
+    except AttributeError:  # not Linux
+        return os.cpu_count() or 1
+
+
+def threads_running() -> bool:
+    """True when this process runs other threads (forking it then is unsafe). A process that
+    never imported ``threading`` started none (importing it costs a small run ~1 ms)."""
+    threading = sys.modules.get("threading")
+    return threading is not None and threading.active_count() > 1
 
 
 def _serve(warm_up: Callable[[], Iterable[Callable[[], None]]], receive: int, send: int

@@ -139,12 +139,12 @@ def _xml_parameters(children: tuple[XmlElement, ...], prefix: str = ""
             continue
         value = child.attribute("value")
         if value is not None:
-            yield f"{prefix}{name}", child.span, None if "$(" in value else launch_value(value)
+            yield f"{prefix}{name}", child.span, None if "$(" in value else _launch_value(value)
         else:
             yield from _xml_parameters(child.children, f"{prefix}{name}.")
 
 
-def launch_value(text: str) -> str | None:
+def _launch_value(text: str) -> str | None:
     """The source of the value launch's XML and YAML front ends make of the attribute ``text``
     when no type is asked for (launch.frontend.type_utils: YAML's reading, tried as an int,
     a float, then kept as the text): ``'1'`` gives ``1``, ``'1.5'`` ``1.5``, ``'true'``

@@ -43,6 +43,10 @@ class Index:
     dotted: dict[int, tuple[ast.expr, str | None]] = field(default_factory=dict, compare=False,
                                                            repr=False)
 
+    def imports_from(self, package: str) -> bool:
+        """True when the module imports anything of the top-level ``package``."""
+        return any(target.split(".")[0] == package for target in self.aliases.values())
+
     def qualified(self, node: ast.expr) -> str | None:
         """The dotted name an expression like ``np.int0`` stands for, or None; worked out once
         per node (rules ask about the same callees)."""

@@ -8,6 +8,7 @@ from collections.abc import Iterable, Iterator
 from pkgtool.model.installed import installed_data
 from pkgtool.model.launch import FileRef, LaunchFile
 from pkgtool.model.launch_python import read_python_launch
+from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.setup_py import DataFile, DataSource
 from pkgtool.rules.setup_values import checked_setup
@@ -36,15 +37,21 @@ def is_folder(package: Package, path: str) -> bool:
     return any(f.startswith(prefix) for f in package.files)
 
 
+@per_package
 def uninstalled_launch_resources(package: Package
-                                 ) -> Iterator[tuple[str, FileRef, str, dict[str, str]]]:
+                                 ) -> tuple[tuple[str, FileRef, str, dict[str, str]], ...]:
     """Each file an installed launch file or module reads from this package's share folder
     that data_files installs neither itself nor a folder of: the reader's path, the
     reference, the path relative to the share folder (``config/params.yaml``), and what
     data_files installs. Nothing when data_files is not known statically; nothing for a path
     only parameter files of nodes never started use (``mux = Node(..., parameters=[path])``
     left out of the LaunchDescription: the launch never reads it), nor for one data_files
-    lists from a source that does not exist (DAT001's)."""
+    lists from a source that does not exist (DAT001's). Worked out once per package: DAT006,
+    DAT012 and DAT006's fixer (asked finding by finding) read it."""
+    return tuple(_uninstalled(package))
+
+
+def _uninstalled(package: Package) -> Iterator[tuple[str, FileRef, str, dict[str, str]]]:
     setup = checked_setup(package)
     installed = installed_data(package) if setup else None
     if installed is None or setup is None:
@@ -76,7 +83,7 @@ def _share_reads(package: Package, shared: set[str]
             yield launch.path, (ref for ref in launch.files
                                 if (ref.package, ref.parts) not in unread)
     for module, tree, index in installed_trees(package):
-        if any(v.split(".")[0] == "ament_index_python" for v in index.aliases.values()):
+        if index.imports_from("ament_index_python"):
             yield module.path, read_python_launch(module.path, tree)[2]
 
 

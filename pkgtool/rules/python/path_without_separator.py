@@ -47,7 +47,7 @@ def joins(tree: ast.Module, index: Index) -> Iterator[tuple[ast.expr, ast.expr, 
     """(node, left, function, text) of each ``folder + 'text'`` and ``f'{folder}text'``:
     ``left`` is the folder operand or the f-string's replacement field. None in a module
     that imports nothing of ``ament_index_python`` (no call can be one of :data:`_FOLDERS`)."""
-    if not any(v.split(".")[0] == "ament_index_python" for v in index.aliases.values()):
+    if not index.imports_from("ament_index_python"):
         return
     scopes: dict[int, tuple[dict[str, ast.expr], ...]] = {}  # by function, for candidates only
     for node in ast.walk(tree):

@@ -46,11 +46,11 @@ _SENT = {"msg", "request", "goal", "feedback"}
 ``publish_feedback``."""
 _SENDER = {"message": "publisher", "request": "client", "goal": "action client",
            "feedback message": "action"}
-_FIXES = {"message": None,
-          "request": "Send an instance: `Trigger.Request()` to a service, `Fibonacci.Goal()` to "
-                     "an action",
+_INSTANCE = "Send an instance: `Trigger.Request()` to a service, `Fibonacci.Goal()` to an action"
+_FIXES = {"message": None, "request": _INSTANCE, "goal": _INSTANCE,
           "feedback message": "Publish an instance of the action's feedback "
                               "(`Fibonacci.Feedback()`, its fields set)"}
+"""The fix of a finding, by what the call sends."""
 
 
 def _publisher_maker(known: Known, index: Index) -> Callable[[ast.Call], Publisher | None]:
@@ -194,7 +194,7 @@ def _sent_hit(path: str, ref: ast.expr, method: str, value: ast.expr, why: str,
     return Hit(Span(path, value.lineno, value.col_offset + 1),
                f"`{ast.unparse(ref)}.{method}()` is given `{ast.unparse(value)}`, {why}: rclpy "
                f"raises TypeError (it sends {what}s of the {_SENDER[what]}'s type only)",
-               _FIXES.get(what, _FIXES["request"]))
+               _FIXES[what])
 
 
 def _feedback_hits(package: Package) -> Iterator[Hit]:

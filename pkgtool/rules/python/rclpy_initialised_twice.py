@@ -9,10 +9,10 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import subtree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.rules.node_api import INITS
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
-INITS = frozenset({"rclpy.init", "rclpy.utilities.init"})
 SHUTDOWNS = frozenset({"rclpy.shutdown", "rclpy.try_shutdown", "rclpy.utilities.shutdown",
                        "rclpy.utilities.try_shutdown"})
 

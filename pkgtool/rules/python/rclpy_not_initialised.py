@@ -12,11 +12,10 @@ from pkgtool.model.ast_nodes import descendants, nodes_of_class, subtree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.imports import entry_points_installed
-from pkgtool.rules.node_api import NODE_CLASSES, node_subclasses
+from pkgtool.rules.node_api import INITS, NODE_CLASSES, node_subclasses
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 from pkgtool.rules.registry import rule
 
-_INITS = frozenset({"rclpy.init", "rclpy.utilities.init"})
 _SPINS = frozenset({"spin", "spin_once", "spin_until_future_complete"})
 _DYNAMIC = frozenset({"exec", "eval", "__import__", "importlib", "runpy"})
 """Calls that run code pkgtool cannot see."""
@@ -25,7 +24,7 @@ _DYNAMIC = frozenset({"exec", "eval", "__import__", "importlib", "runpy"})
 def _initialises(tree: ast.Module, index: Index) -> bool:
     """True when the module may call ``rclpy.init``: any ``.init`` read, any name for it."""
     return any(n.attr == "init" for n in nodes_of_class(tree, ast.Attribute)) or \
-        any(target in _INITS for target in index.aliases.values()) or \
+        any(target in INITS for target in index.aliases.values()) or \
         any(i.module and i.module.split(".")[0] == "rclpy" and
             any(a.name == "init" for a in i.names) for i in index.import_froms)
 
