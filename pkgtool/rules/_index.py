@@ -122,6 +122,7 @@ RULES = {
     "PYC037": ("goal-state-not-set", "error", True, "python.goal_state_not_set"),
     "PYC038": ("duration-as-seconds", "error", True, "python.duration_as_seconds"),
     "PYC039": ("rclpy-initialised-twice", "error", True, "python.rclpy_initialised_twice"),
+    "PYC040": ("text-formatted-as-number", "error", True, "python.text_formatted_as_number"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

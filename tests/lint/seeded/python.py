@@ -579,3 +579,12 @@ def goal_handle_method_misspelt(root: Path) -> None:
 @case("PYC020", TALKER, "self.publisher.publish(String, msg)")
 def message_class_published_beside_the_message(root: Path) -> None:
     edit(root, TALKER, "self.publisher.publish(msg)", "self.publisher.publish(String, msg)")
+
+
+@case("PYC040", "my_robot_pkg/joint_state_logger.py", "return f'{value:.4f}'",
+      base="my_robot_pkg")
+def placeholder_text_formatted_as_a_number(root: Path) -> None:
+    edit(root, "my_robot_pkg/joint_state_logger.py",
+         "    return f'{values[index]:.4f}' if index < len(values) else MISSING\n",
+         "    value = values[index] if index < len(values) else MISSING\n"
+         "    return f'{value:.4f}'\n")
