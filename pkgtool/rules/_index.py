@@ -123,6 +123,7 @@ RULES = {
     "PYC038": ("duration-as-seconds", "error", True, "python.duration_as_seconds"),
     "PYC039": ("rclpy-initialised-twice", "error", True, "python.rclpy_initialised_twice"),
     "PYC040": ("text-formatted-as-number", "error", True, "python.text_formatted_as_number"),
+    "PYC041": ("node-never-initialised", "error", True, "python.node_never_initialised"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

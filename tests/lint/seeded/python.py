@@ -588,3 +588,8 @@ def placeholder_text_formatted_as_a_number(root: Path) -> None:
          "    return f'{values[index]:.4f}' if index < len(values) else MISSING\n",
          "    value = values[index] if index < len(values) else MISSING\n"
          "    return f'{value:.4f}'\n")
+
+
+@case("PYC041", TALKER, "def __init__(self")
+def node_constructor_never_called(root: Path) -> None:
+    edit(root, TALKER, "        super().__init__('talker', **kwargs)\n", "")
