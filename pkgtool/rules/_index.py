@@ -124,6 +124,7 @@ RULES = {
     "PYC039": ("rclpy-initialised-twice", "error", True, "python.rclpy_initialised_twice"),
     "PYC040": ("text-formatted-as-number", "error", True, "python.text_formatted_as_number"),
     "PYC041": ("node-never-initialised", "error", True, "python.node_never_initialised"),
+    "PYC042": ("text-plus-number", "error", True, "python.text_plus_number"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

@@ -593,3 +593,9 @@ def placeholder_text_formatted_as_a_number(root: Path) -> None:
 @case("PYC041", TALKER, "def __init__(self")
 def node_constructor_never_called(root: Path) -> None:
     edit(root, TALKER, "        super().__init__('talker', **kwargs)\n", "")
+
+
+@case("PYC042", TALKER, "msg.data = 'count: ' + self.count")
+def number_added_to_text(root: Path) -> None:
+    edit(root, TALKER, "        msg = String()\n",
+         "        msg = String()\n        msg.data = 'count: ' + self.count\n")

@@ -1,0 +1,66 @@
+"""PYC042: a str and a number joined with ``+``."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.python._value_types import certain_type
+from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import installed_trees
+
+_NUMBERS = frozenset({"int", "float", "bool"})
+
+
+def _error(left: str, right: str) -> str:
+    """Python's TypeError for ``left + right``, one a str and the other a number."""
+    if left == "str":
+        return f'can only concatenate str (not "{right}") to str'
+    return f"unsupported operand type(s) for +: '{left}' and 'str'"
+
+
+@rule("PYC042", "text-plus-number", Severity.ERROR,
+      fix="Format the number into the text: `f'count: {self.count}'`")
+def text_plus_number(package: Package) -> Iterator[Hit]:
+    """A str and a number are added with `+`.
+
+    ## What it does
+    Reports `a + b` where one side is certainly a str and the other certainly an int, float
+    or bool: literals, builtin conversions (`str(x)`, `len(x)`), local names every
+    assignment of which gives that type, and a node's `self.x` every store of which in the
+    package does.
+
+    ## Why is this bad?
+    Python does not convert numbers to text on `+`: `'Count: ' + self.count` raises
+    `TypeError: can only concatenate str (not "int") to str`. In a timer or subscription
+    callback the exception ends the node on the first message it logs or publishes.
+
+    ## Example
+    ```python
+    self.count += 1
+    msg.data = 'Hello World: ' + self.count
+    ```
+
+    ## Use instead
+    ```python
+    self.count += 1
+    msg.data = f'Hello World: {self.count}'
+    ```
+    """
+    for module, tree, index in installed_trees(package):
+        for node in nodes_of_class(tree, ast.BinOp):
+            if not isinstance(node.op, ast.Add):  # type: ignore[attr-defined]
+                continue
+            left = certain_type(node.left, package, tree, index)  # type: ignore[attr-defined]
+            right = certain_type(node.right, package, tree, index)  # type: ignore
+            if left is not None and right is not None and "str" in (left, right) and \
+                    {left, right} & _NUMBERS:
+                number = right if right in _NUMBERS else left
+                article = "an" if number == "int" else "a"
+                yield Hit(Span(module.path, node.lineno, node.col_offset + 1),  # type: ignore
+                          f"`{ast.unparse(node)}` adds {article} {number} to a str: Python "
+                          f"raises TypeError: {_error(left, right)}")
