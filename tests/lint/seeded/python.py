@@ -599,3 +599,12 @@ def node_constructor_never_called(root: Path) -> None:
 def number_added_to_text(root: Path) -> None:
     edit(root, TALKER, "        msg = String()\n",
          "        msg = String()\n        msg.data = 'count: ' + self.count\n")
+
+
+@case("PYC043", "simple_avoidance_agent/scan_agent.py", "if msg.ranges < 0.1:",
+      base="simple_avoidance_agent")
+def scan_ranges_compared_with_a_distance(root: Path) -> None:
+    edit(root, "simple_avoidance_agent/scan_agent.py",
+         "        if not msg.ranges:\n            return\n",
+         "        if not msg.ranges:\n            return\n        if msg.ranges < 0.1:\n"
+         "            return\n")

@@ -1,0 +1,143 @@
+"""PYC043: a message's sequence field compared with, or computed with, a number."""
+
+from __future__ import annotations
+
+import ast
+import re
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.message_fields import Message, nested_message
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.python._message_instances import (
+    binding_counts, known_messages, message_instances)
+from pkgtool.rules.python._value_types import certain_type
+from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import Index, installed_trees
+
+_ORDER = {ast.Lt: "<", ast.Gt: ">", ast.LtE: "<=", ast.GtE: ">="}
+_ARITHMETIC = {ast.Add: "+", ast.Sub: "-", ast.Div: "/", ast.FloorDiv: "//", ast.Mod: "%",
+               ast.Pow: "**", ast.Mult: "*"}
+_NUMBERS = frozenset({"int", "float", "bool"})
+_ARRAYS = re.compile(r"sequence<(u?int(8|16|32|64)|float|double)[,>].*")
+"""Sequences rclpy gives as an ``array.array``; the others (strings, bools, octets,
+messages) are lists."""
+
+
+def _sequence_reads(tree: ast.Module, index: Index, package: Package
+                    ) -> Iterator[tuple[ast.expr, str, str]]:
+    """(expression, ``pkg/msg/Type.field``, its type) of every read of a message's sequence field
+    (``msg.ranges``, ``msg.ranges[10:20]``), and of local names bound only to one."""
+    for instance in message_instances(tree, index, known_messages(package, index)):
+        for use in instance.uses:
+            found = _field(instance.message, use, index)
+            if found is not None:
+                yield from _spread(*found, index)
+
+
+def _field(message: Message, use: ast.Attribute, index: Index
+           ) -> tuple[ast.expr, str, str] | None:
+    """The outermost attribute read of ``use``'s path (``msg.a.b``) when it is a sequence
+    field, with its name."""
+    current: ast.Attribute = use
+    holder: Message | None = message
+    while holder is not None:
+        parent = index.parents.get(id(current))
+        if isinstance(parent, ast.Attribute) and parent.value is current:
+            holder = nested_message(holder, current.attr)
+            current = parent
+            continue
+        kind = holder.fields.get(current.attr, "")
+        if isinstance(current.ctx, ast.Load) and kind.startswith("sequence<"):
+            return current, f"{holder.name}.{current.attr}", kind
+        return None
+    return None
+
+
+def _spread(read: ast.expr, field: str, kind: str, index: Index
+            ) -> Iterator[tuple[ast.expr, str, str]]:
+    """``read``, a slice of it, and the reads of a local name bound once to either."""
+    parent = index.parents.get(id(read))
+    if isinstance(parent, ast.Subscript) and parent.value is read and \
+            isinstance(parent.slice, ast.Slice):
+        read, parent = parent, index.parents.get(id(parent))
+    yield read, field, kind
+    if isinstance(parent, ast.Assign) and len(parent.targets) == 1 and \
+            isinstance(parent.targets[0], ast.Name):
+        name = parent.targets[0].id
+        function = index.enclosing_function(parent, through_lambdas=False)
+        if function is not None and binding_counts(function)[name] == 1:
+            yield from ((n, field, kind) for n in ast.walk(function)
+                        if isinstance(n, ast.Name) and n.id == name and
+                        isinstance(n.ctx, ast.Load))
+
+
+def _misuse(read: ast.expr, package: Package, tree: ast.Module, index: Index
+            ) -> tuple[ast.AST, str, str] | None:
+    """(the expression, the operator, the number's type) when ``read`` is compared with or
+    computed with a number in a way a list or ``array.array`` refuses."""
+    parent = index.parents.get(id(read))
+    if isinstance(parent, ast.Compare) and len(parent.ops) == 1:
+        other = parent.comparators[0] if parent.left is read else parent.left
+        symbol = _ORDER.get(type(parent.ops[0]))
+    elif isinstance(parent, ast.BinOp):
+        other = parent.right if parent.left is read else parent.left
+        symbol = _ARITHMETIC.get(type(parent.op))
+    else:
+        return None
+    kind = certain_type(other, package, tree, index) if symbol else None
+    if kind not in _NUMBERS or symbol == "*" and kind != "float":
+        return None  # a sequence times an int repeats it
+    assert symbol is not None and kind is not None
+    return parent, symbol, kind
+
+
+@rule("PYC043", "sequence-field-as-number", Severity.ERROR,
+      fix="Take an element (`msg.ranges[0]`) or a reduction (`min(msg.ranges)`), or convert "
+          "with `numpy.array(msg.ranges)` for element-wise work")
+def sequence_field_as_number(package: Package) -> Iterator[Hit]:
+    """A message's sequence field is compared with, or computed with, a number.
+
+    ## What it does
+    Reports a sequence field of a known message (`LaserScan.ranges`, `JointState.position`:
+    the fields declared `float32[]`, `string[]`, ...), a slice of one, or a local name bound
+    only to one, used with a number in `<`, `>`, `<=`, `>=`, `+`, `-`, `/`, `//`, `%`, `**`,
+    or `*` by a float.
+
+    ## Why is this bad?
+    rclpy gives a sequence field as an `array.array` (numbers) or a `list` (others), and
+    neither compares with or computes with a number: `msg.ranges < 0.5` raises `TypeError:
+    '<' not supported between instances of 'array.array' and 'float'`, on the first scan the
+    callback gets. (Fixed-size arrays, `float64[9]`, are NumPy arrays and are not reported.)
+
+    ## Example
+    ```python
+    def on_scan(self, msg):
+        if msg.ranges[0:30] < 0.5:
+            self.stop()
+    ```
+
+    ## Use instead
+    ```python
+    def on_scan(self, msg):
+        if min(msg.ranges[0:30]) < 0.5:
+            self.stop()
+    ```
+    """
+    for module, tree, index in installed_trees(package):
+        seen: set[int] = set()
+        for read, field, kind in _sequence_reads(tree, index, package):
+            found = _misuse(read, package, tree, index)
+            if found is None or id(found[0]) in seen:
+                continue
+            seen.add(id(found[0]))
+            node, symbol, number = found
+            holder = "an array.array" if _ARRAYS.fullmatch(kind) else "a list"
+            yield Hit(Span(module.path, node.lineno, node.col_offset + 1),  # type: ignore
+                      f"`{ast.unparse(read)}` "
+                      f"{'holds' if isinstance(read, ast.Name) else 'is'} the sequence field "
+                      f"`{field}`{' or a slice of it' if isinstance(read, ast.Name) else ''} "
+                      f"({holder} in "
+                      f"rclpy), used with {'an' if number == 'int' else 'a'} {number} in "
+                      f"`{symbol}`: Python raises TypeError")
