@@ -6,7 +6,6 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import node_subclasses
@@ -14,25 +13,30 @@ from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
 
-def _runs_a_base_init(cls: ast.ClassDef) -> bool:
-    """True when some method of ``cls`` calls ``super().__init__``, ``super(C, self)
-    .__init__`` or ``Base.__init__`` of one of its bases, or ``__init__`` through
-    ``getattr``/``type``: anything that may run the Node's constructor."""
-    bases = {ast.dump(b) for b in cls.bases}
-    for call in nodes_of_class(cls, ast.Call):
-        func = call.func  # type: ignore[attr-defined]
-        if not isinstance(func, ast.Attribute) or func.attr != "__init__":
-            if isinstance(func, ast.Name) and func.id == "getattr":
-                return True
-            continue
-        owner = func.value
-        if isinstance(owner, ast.Call) and isinstance(owner.func, ast.Name) and \
-                owner.func.id in ("super", "type"):
-            return True
-        if ast.dump(owner) in bases or isinstance(owner, ast.Attribute) and \
-                owner.attr == "__class__":
-            return True
-    return False
+def _initialising(index: Index) -> set[int]:
+    """The ids of the classes some method of which calls ``super().__init__``, ``super(C,
+    self).__init__``, ``Base.__init__`` of one of the class's bases, ``self.__class__
+    .__init__`` or ``getattr``: anything that may run the Node's constructor."""
+    found: set[int] = set()
+    for call in index.calls:
+        func = call.func
+        if isinstance(func, ast.Name) and func.id == "getattr" or \
+                isinstance(func, ast.Attribute) and func.attr == "__init__":
+            cls = index.enclosing_class(call)
+            if cls is not None and _runs_a_base_init(cls, func):
+                found.add(id(cls))
+    return found
+
+
+def _runs_a_base_init(cls: ast.ClassDef, func: ast.expr) -> bool:
+    if not isinstance(func, ast.Attribute):
+        return True  # getattr
+    owner = func.value
+    if isinstance(owner, ast.Call) and isinstance(owner.func, ast.Name) and \
+            owner.func.id in ("super", "type"):
+        return True
+    return isinstance(owner, ast.Attribute) and owner.attr == "__class__" or \
+        ast.dump(owner) in {ast.dump(b) for b in cls.bases}
 
 
 def _abstract(init: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
@@ -44,12 +48,17 @@ def _abstract(init: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
 
 def _uninitialised(index: Index) -> Iterator[tuple[ast.ClassDef, ast.AST]]:
     """Node subclasses with an ``__init__`` of their own that runs no base's."""
+    initialising: set[int] | None = None
     for cls in node_subclasses(index):
         if cls.decorator_list or cls.keywords:
             continue  # a metaclass or a decorator may build the instance another way
         init = next((s for s in cls.body if isinstance(s, FUNCTIONS) and
                      s.name == "__init__"), None)
-        if init is not None and not _abstract(init) and not _runs_a_base_init(cls):
+        if init is None or _abstract(init):
+            continue
+        if initialising is None:
+            initialising = _initialising(index)
+        if id(cls) not in initialising:
             yield cls, init
 
 
