@@ -80,13 +80,17 @@ def _fold_consequences(found: list[tuple[Finding, Hit | None]]) -> list[Finding]
     for cause, parts in joined.items():
         stated = causes[cause]
         parts.sort(key=lambda f: f.sort_key)
-        places = ", ".join(f"`{f.span.path}:{f.span.line}` ({f.code})" for f in parts)
+        elsewhere = [f for f in parts if (f.span.path, f.span.line) !=
+                     (stated.span.path, stated.span.line)]
+        places = ", ".join(f"`{f.span.path}:{f.span.line}` ({f.code})" for f in elsewhere)
         worst = max((stated, *parts), key=lambda f: f.severity.rank).severity
-        related = stated.related + tuple(span for f in parts for span in (f.span, *f.related))
+        related = stated.related + tuple(span for f in elsewhere
+                                         for span in (f.span, *f.related))
         joint = " The" if stated.message.endswith(("?", ".")) else "; the"
         kept[kept.index(stated)] = replace(
             stated, severity=worst, related=related,
-            message=f"{stated.message}{joint} same mistake shows in {places}")
+            message=f"{stated.message}{joint} same mistake shows in {places}" if places
+            else stated.message)
     return kept
 
 

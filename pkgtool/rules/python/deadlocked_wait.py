@@ -14,7 +14,8 @@ from pkgtool.model.span import Span
 from pkgtool.rules.imports import entry_points_installed
 from pkgtool.rules.node_api import SPINS, node_subclasses, spin_cause, unpacks
 from pkgtool.rules.python._callbacks import callback_arguments
-from pkgtool.rules.python._message_instances import callback_function, method_receiver
+from pkgtool.rules.python._message_instances import (
+    binding_counts, callback_function, method_receiver)
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_walk
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
@@ -75,7 +76,7 @@ def _default_group_callbacks(package: Package) -> Iterator[tuple[str, Function, 
 
 def _default_group_clients(tree: ast.Module, index: Index) -> set[str]:
     """Attribute names every store of which in the module is a ``create_client(...)`` call
-    naming no callback group (a client in the node's default group)."""
+    naming no callback group (a client in the node's default group), or ``None``."""
     stores: dict[str, list[ast.expr | None]] = {}
     for node in nodes_of_class(tree, ast.Attribute):
         if isinstance(node, ast.Attribute) and not isinstance(node.ctx, ast.Load):
@@ -84,22 +85,58 @@ def _default_group_clients(tree: ast.Module, index: Index) -> set[str]:
                 parent.value if isinstance(parent, ast.Assign) and parent.targets == [node]
                 else None)
     return {name for name, values in stores.items() if name != "_default_callback_group" and
-            "_default_callback_group" not in stores and all(
+            "_default_callback_group" not in stores and any(
+                isinstance(v, ast.Call) for v in values) and all(
+                isinstance(v, ast.Constant) and v.value is None or
                 isinstance(v, ast.Call) and isinstance(v.func, ast.Attribute) and
                 v.func.attr == "create_client" and not unpacks(v) and
                 not any(k.arg == _GROUP for k in v.keywords) for v in values)}
 
 
-def _self_spins(function: Function, spins: list[ast.Call], index: Index) -> Iterator[ast.Call]:
-    """``rclpy.spin_until_future_complete(self, ...)`` (or ``spin_once``, ``spin``) in a
-    method: the node spun from inside one of its own callbacks (``spins``: the module's
-    calls of those functions)."""
+def _other_groups(index: Index) -> bool:
+    """True when the module names a callback group anywhere (``callback_group=``), or passes
+    ``**kwargs`` to a call that may take one: some entity may be outside the default group."""
+    return any(any(k.arg in (_GROUP, None) for k in c.keywords) for c in index.calls)
+
+
+def _default_group_future(future: ast.expr | None, function: Function, clients: set[str],
+                          index: Index) -> bool:
+    """True when ``future`` is what ``self.<client>.call_async(...)`` returned, for a client
+    of ``clients`` (the node's default group): the call itself, or a local name bound once,
+    to it."""
     receiver = method_receiver(function)
+    if isinstance(future, ast.Name):
+        bound = [n for n in scope_walk(function.body) if isinstance(n, ast.Assign) and
+                 any(isinstance(t, ast.Name) and t.id == future.id for t in n.targets)]
+        future = bound[0].value if len(bound) == 1 and len(bound[0].targets) == 1 and \
+            binding_counts(function)[future.id] == 1 else None
+    return isinstance(future, ast.Call) and isinstance(future.func, ast.Attribute) and \
+        future.func.attr == "call_async" and isinstance(future.func.value, ast.Attribute) and \
+        future.func.value.attr in clients and isinstance(future.func.value.value, ast.Name) \
+        and future.func.value.value.id == receiver
+
+
+def _self_spins(function: Function, spins: list[ast.Call], clients: set[str], index: Index
+                ) -> Iterator[ast.Call]:
+    """``rclpy.spin_until_future_complete(self, future)`` for a ``future`` of a client in the
+    node's default group (``clients``), or ``spin_once(self)``, ``spin(self)`` in a module
+    that puts nothing in another group, in a method: the node spun from inside one of its
+    own callbacks for what that callback's group keeps from running (``spins``: the
+    module's calls of those functions)."""
+    receiver = method_receiver(function)
+    others = _other_groups(index)
     for node in spins:
         spun = node.args[0] if node.args else next(
             (k.value for k in node.keywords if k.arg == "node"), None)
-        if isinstance(spun, ast.Name) and spun.id == receiver and \
-                index.enclosing_function(node) is function:
+        if not isinstance(spun, ast.Name) or spun.id != receiver or \
+                index.enclosing_function(node) is not function:
+            continue
+        if index.qualified(node.func) == "rclpy.spin_until_future_complete":
+            future = node.args[1] if len(node.args) > 1 else next(
+                (k.value for k in node.keywords if k.arg == "future"), None)
+            if _default_group_future(future, function, clients, index):
+                yield node
+        elif not others:
             yield node
 
 
@@ -134,8 +171,11 @@ def deadlocked_wait(package: Package) -> Iterator[Hit]:
     the callback of a timer, subscription or service with no `callback_group=`, when every
     assignment of `client` in the module is a `create_client()` with no `callback_group=`
     either (and the module does not replace the node's `_default_callback_group`), and
-    `rclpy.spin_until_future_complete(self, future)` (or `rclpy.spin_once(self)`,
-    `rclpy.spin(self)`) in such a callback: the node spun from inside its own callback.
+    `rclpy.spin_until_future_complete(self, future)` in such a callback for the `future` of
+    `call_async()` on such a client, or `rclpy.spin_once(self)`, `rclpy.spin(self)` there in
+    a module that names no callback group: the node spun from inside its own callback for
+    what its group keeps from running. (A client, subscription or timer in another group is
+    served by the nested spin.)
 
     ## Why is this bad?
     rclpy's `Rate` sleeps until a timer of its node fires, and a timer fires only while an
@@ -178,7 +218,7 @@ def deadlocked_wait(package: Package) -> Iterator[Hit]:
                       f"`{ast.unparse(call)}` waits in a callback for a response that the "
                       "executor hands over only after the callback ends (both are in the "
                       "node's default callback group): it never returns")
-        for call in _self_spins(function, spins.get(path, []), index):
+        for call in _self_spins(function, spins.get(path, []), served, index):
             where = Span(path, call.lineno, call.col_offset + 1)
             yield Hit(where, f"`{ast.unparse(call.func)}({method_receiver(function)}, ...)` "
                              f"spins the node inside its own callback `{function.name}`: what "
