@@ -46,6 +46,7 @@ def _package(tmp_path: Path, files: dict[str, str], *deps: str) -> Package:
     ("sensor_msgs", "ros", "sensor_msgs"),
     ("my_robot_interfaces", "ros", "my_robot_interfaces"),
     ("tf2_ros", "ros", "tf2_ros_py"),
+    ("camera_info_manager", "ros", "camera_info_manager_py"),
     ("urdf_parser_py", "ros", "urdfdom_py"),
     ("rclpy", "ros", "rclpy"),
     ("tf_transformations", "ros", "tf_transformations"),
