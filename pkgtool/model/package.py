@@ -17,6 +17,7 @@ from pkgtool.model.modules import PythonModule, parse_module
 from pkgtool.model.setup_cfg import SetupCfg, parse_setup_cfg
 from pkgtool.model.setup_py import SetupPy, parse_setup_py
 from pkgtool.model.span import ParseProblem
+from pkgtool.model.submodules import unfetched_submodules
 from pkgtool.records import field, record
 
 _PY_SUPPRESSION = re.compile(r"#\s*pkgtool:\s*ignore(?:\[([A-Za-z0-9_,\s-]*)\])?")
@@ -45,6 +46,8 @@ class Package:
     texts: dict[str, str] = field(default_factory=dict, repr=False)
     file_set: frozenset[str] = field(default=frozenset(), repr=False)
     context: Context = field(default_factory=Context, repr=False)
+    unfetched: frozenset[str] = frozenset()
+    """Folders of git submodules inside the package that are not checked out."""
 
     @property
     def name(self) -> str:
@@ -148,7 +151,8 @@ def load_package(root: Path, context: Context | None = None) -> Package:
     for relpath, text in texts.items():
         suppressions.update(_suppressions(relpath, text))
     return Package(root, files, manifest, setup_py, setup_cfg, tuple(modules), tuple(launches),
-                   tuple(problems), suppressions, texts, frozenset(files), context or Context())
+                   tuple(problems), suppressions, texts, frozenset(files), context or Context(),
+                   unfetched_submodules(root, files))
 
 
 _LAUNCH_XML = re.compile(r"\s*(?:<\?xml[^>]*\?>\s*)?(?:<!--.*?-->\s*)*<launch[\s>/]", re.S)

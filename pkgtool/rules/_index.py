@@ -148,6 +148,7 @@ RULES = {
     "SYN002": ("unreadable-file", "error", True, "syntax.unreadable_file"),
     "SYN003": ("xml-entity-declaration", "error", True, "syntax.xml_entity_declaration"),
     "SYN004": ("oversized-file", "info", True, "syntax.oversized_file"),
+    "SYN005": ("submodule-not-checked-out", "info", True, "syntax.submodule_not_checked_out"),
 }
 
 FIXED = frozenset({

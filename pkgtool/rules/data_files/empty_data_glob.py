@@ -6,6 +6,8 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
+from pkgtool.model.setup_eval.tree import normalize
+from pkgtool.model.submodules import under
 from pkgtool.rules.registry import rule
 from pkgtool.rules.setup_values import checked_setup
 
@@ -39,6 +41,7 @@ def empty_data_glob(package: Package) -> Iterator[Hit]:
     setup = checked_setup(package)
     for entry in setup.data_files or () if setup else ():
         for source in entry.sources:
-            if source.is_glob and not source.matches:
+            if source.is_glob and not source.matches and \
+                    not under(normalize(source.pattern) or "", package.unfetched):
                 yield Hit(source.span, f"The glob `{source.pattern}` matches no file: nothing "
                                        f"is installed to `{entry.destination}` from it")

@@ -7,6 +7,7 @@ from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
+from pkgtool.model.submodules import under
 from pkgtool.rules.data_files.common import is_folder, uninstalled_launch_resources
 from pkgtool.rules.registry import rule
 
@@ -43,7 +44,8 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     """
     share = f"share/{package.name}/"
     for reader, ref, relative, installed in uninstalled_launch_resources(package):
-        if package.has_file(relative) or is_folder(package, relative):
+        if package.has_file(relative) or is_folder(package, relative) or \
+                under(relative, package.unfetched):
             continue
         known = {target[len(share):] for target in installed if target.startswith(share)}
         known.update(package.files)

@@ -6,6 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
+from pkgtool.model.submodules import under
 from pkgtool.rules.registry import rule
 from pkgtool.rules.setup_values import listed_packages
 
@@ -37,5 +38,6 @@ def missing_package_folder(package: Package) -> Iterator[Hit]:
     """
     folders = {f.rsplit("/", 1)[0] for f in package.files if "/" in f}
     for name, folder, span in listed_packages(package):
-        if folder and not any(f == folder or f.startswith(folder + "/") for f in folders):
+        if folder and not any(f == folder or f.startswith(folder + "/") for f in folders) \
+                and not under(folder, package.unfetched):
             yield Hit(span, f"`packages` lists `{name}`, but there is no folder `{folder}`")
