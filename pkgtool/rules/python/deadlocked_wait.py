@@ -27,6 +27,9 @@ _SERVED = frozenset({"create_timer()", "create_subscription()", "create_service(
 """The APIs whose callbacks run in the callback group the call names (the node's default,
 mutually exclusive one when it names none)."""
 _GROUP = "callback_group"
+_MULTI_THREADED_NAMES = frozenset({"MultiThreadedExecutor"})
+_MULTI_THREADED = frozenset({"rclpy.executors.MultiThreadedExecutor"})
+"""The executor that runs a Rate's timer while a callback sleeps on it."""
 
 
 def _rate_made(value: ast.expr | None) -> bool:
@@ -41,22 +44,44 @@ def _stored(target: ast.expr) -> str | None:
         f".{target.attr}" if isinstance(target, ast.Attribute) else None
 
 
-def _sleeps(function: Function) -> Iterator[ast.Call]:
+def _sleeps(function: Function, attributes: frozenset[str] = frozenset()) -> Iterator[ast.Call]:
     """``r.sleep()`` calls of ``function`` on a Rate it makes itself (``r =
-    x.create_rate(...)``, ``self.r = ...``, or ``x.create_rate(...).sleep()``); none when it
-    spins anything (``rclpy.spin_once(self)`` before each sleep wakes the Rate)."""
+    x.create_rate(...)``, ``self.r = ...``, or ``x.create_rate(...).sleep()``), or on an
+    attribute of ``attributes`` (``.r``: every ``self.r`` the module stores is a Rate); none
+    when it spins anything (``rclpy.spin_once(self)`` before each sleep wakes the Rate)."""
     nodes = list(scope_walk(function.body))
     calls = [n for n in nodes if isinstance(n, ast.Call)]
     if any((c.func.attr if isinstance(c.func, ast.Attribute) else
             getattr(c.func, "id", "")).startswith("spin") for c in calls):
         return
-    rates = {_stored(t) for n in nodes if isinstance(n, ast.Assign) and _rate_made(n.value)
-             for t in n.targets} - {None}
+    rates = attributes | {_stored(t) for n in nodes if isinstance(n, ast.Assign) and
+                          _rate_made(n.value) for t in n.targets} - {None}
     for call in calls:
         func = call.func
         if isinstance(func, ast.Attribute) and func.attr == "sleep" and not call.args and \
                 (_rate_made(func.value) or _stored(func.value) in rates):
             yield call
+
+
+def _rate_attributes(tree: ast.Module, index: Index) -> frozenset[str]:
+    """``.r`` for each attribute every store of which in the module is ``create_rate(...)``."""
+    stores: dict[str, bool] = {}
+    for node in nodes_of_class(tree, ast.Attribute):
+        if isinstance(node, ast.Attribute) and not isinstance(node.ctx, ast.Load):
+            parent = index.parents.get(id(node))
+            made = isinstance(parent, ast.Assign) and parent.targets == [node] and \
+                _rate_made(parent.value)
+            stores[node.attr] = stores.get(node.attr, True) and made
+    return frozenset(f".{name}" for name, always in stores.items() if always)
+
+
+def _served_callbacks(package: Package) -> Iterator[tuple[str, Function, ast.Module, Index]]:
+    """Functions registered (certainly) as the callback of a timer, subscription or service,
+    in any callback group, with their file, tree and index."""
+    for path, value, api, _, index, tree in callback_arguments(package):
+        found = callback_function(value, tree, index) if api in _SERVED else None
+        if found is not None:
+            yield path, found[0], tree, index
 
 
 def _default_group_callbacks(package: Package) -> Iterator[tuple[str, Function, Index]]:
@@ -177,6 +202,10 @@ def deadlocked_wait(package: Package) -> Iterator[Hit]:
     what its group keeps from running. (A client, subscription or timer in another group is
     served by the nested spin.)
 
+    Reports `rate.sleep()` in a method registered as the callback of a timer, subscription
+    or service (on a Rate the method makes, or a `self.rate` every store of which is a
+    `create_rate()`), when no installed module uses the `MultiThreadedExecutor` or threads.
+
     ## Why is this bad?
     rclpy's `Rate` sleeps until a timer of its node fires, and a timer fires only while an
     executor spins the node. In `__init__` the node cannot be spinning yet, and in `main`
@@ -190,6 +219,9 @@ def deadlocked_wait(package: Package) -> Iterator[Hit]:
     Spinning the node again from its own callback does not deliver it either: it returns at
     its timeout with no result, under the single- and the multi-threaded executor alike
     (checked on Jazzy); without a timeout it never returns.
+    A Rate wakes when its own timer runs, and the single-threaded executor (the one
+    `rclpy.spin()` uses) runs one callback at a time: a callback sleeping on a Rate keeps
+    that timer from ever running (rclpy's `Rate.sleep()` documents it).
 
     ## Example
     ```python
@@ -226,6 +258,19 @@ def deadlocked_wait(package: Package) -> Iterator[Hit]:
                              "any, with no result)", cause=spin_cause(where))
     if any(i.top_level in _THREADS for module, _, _ in trees for i in module.imports):
         return
+    if not any(i.qualified(n) in _MULTI_THREADED for _, _, i in trees for n in i.attributes) \
+            and not any(f.module == "rclpy.executors" and any(
+                a.name in _MULTI_THREADED_NAMES for a in f.names)
+                for _, _, i in trees for f in i.import_froms):
+        seen: set[int] = set()
+        for path, function, tree, index in _served_callbacks(package):
+            for call in _sleeps(function, _rate_attributes(tree, index)):
+                if id(call) not in seen:
+                    seen.add(id(call))
+                    yield Hit(Span(path, call.lineno, call.col_offset + 1),
+                              f"`{ast.unparse(call)}` in the callback `{function.name}` waits "
+                              "for the Rate's timer, which the single-threaded executor runs "
+                              "only after this callback returns: it never returns")
     entries = {(path, entry.attr) for entry, path in
                entry_points_installed(package, "console_scripts") if entry.valid}
     for module, tree, index in trees:

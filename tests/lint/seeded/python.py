@@ -608,3 +608,9 @@ def scan_ranges_compared_with_a_distance(root: Path) -> None:
          "        if not msg.ranges:\n            return\n",
          "        if not msg.ranges:\n            return\n        if msg.ranges < 0.1:\n"
          "            return\n")
+
+
+@case("PYC034", TALKER, "rate.sleep()")
+def rate_slept_in_a_timer_callback(root: Path) -> None:
+    edit(root, TALKER, "        self.count += 1\n",
+         "        self.count += 1\n        rate = self.create_rate(2)\n        rate.sleep()\n")
