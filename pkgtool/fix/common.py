@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Callable, Iterator, Sequence
 
 from pkgtool.edit.changes import read_source
@@ -14,6 +15,7 @@ from pkgtool.edit.source import Source
 from pkgtool.edit.xml_scan import Element
 from pkgtool.findings import Finding
 from pkgtool.fix.registry import Refusal
+from pkgtool.knowledge.rosdistro import typo_distance
 from pkgtool.model.package import Package
 
 
@@ -104,3 +106,31 @@ def line_of(starts: list[int], offset: int) -> int:
     from bisect import bisect_right
 
     return bisect_right(starts, offset)
+
+
+def rename_at(package: Package, finding: Finding, wrong: str, meant: str,
+              before: str = "") -> Fix | None:
+    """``wrong`` renamed ``meant`` where the finding points: the one whole-name ``before +
+    wrong`` from its column to the end of its line. None when there is not exactly one, or
+    when ``meant`` is more than a typo away (one edit under 14 characters, else two; a swap
+    of neighbours is one): a near miss that is another word is the user's to choose."""
+    budget = 1 if len(wrong) < 14 else 2
+    if typo_distance(wrong, meant, budget) > budget:
+        return None
+    span = finding.span
+    try:
+        source = read_source(package.root, span.path)
+    except EditError:
+        return None
+    if source is None or span.line < 1 or span.line > len(source.line_starts):
+        return None
+    start = source.offset_of_utf8(span.line, max(span.col - 1, 0))
+    line = source.text[start:source.line_end(start)]
+    head = before + wrong
+    guard = r"(?<![\w.])" if re.match(r"\w", head) else ""
+    found = list(re.finditer(rf"{guard}{re.escape(head)}(?!\w)", line))
+    if len(found) != 1:
+        return None
+    at = start + found[0].start() + len(before)
+    return Fix(f"Write `{meant}` instead of `{wrong}`",
+               (Edit(span.path, at, at + len(wrong), meant),))

@@ -1,5 +1,6 @@
 """Fixers of launch files: node arguments ROS 2's launch rejects (renamed keywords and
-attributes, parameters not in a list), and launch actions given arguments they reject."""
+attributes, parameters not in a list), launch actions given arguments they reject, and a
+misspelt executable."""
 
 from __future__ import annotations
 
@@ -14,7 +15,7 @@ from pkgtool.edit.pysource import PyDoc
 from pkgtool.edit.source import Source
 from pkgtool.edit.xml_scan import Element, scan
 from pkgtool.findings import Finding
-from pkgtool.fix.common import python_nodes
+from pkgtool.fix.common import python_nodes, rename_at
 from pkgtool.fix.registry import fixer
 from pkgtool.model.package import Package
 from pkgtool.rules.launch.invalid_launch_action_argument import BY_KEYWORD, IN_A_LIST, ITEMS
@@ -171,3 +172,16 @@ def _by_keyword(doc: PyDoc, default: ast.expr) -> Iterator[Fix]:
             at = doc.start(default)
             yield Fix("Pass the default as `default_value=`",
                       (Edit(doc.source.path, at, at, "default_value="),))
+
+
+@fixer("LCH001", "Start the executable the misspelt one is close to", safe=False)
+def executable(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename the executable a launch file starts to the one executable the package installs
+    that is spelled like it (``talkr`` to ``talker``). Unsafe: it guesses which executable
+    was meant; launching stopped with "executable not found" before."""
+    for finding in findings:
+        meant = re.fullmatch(r"Write `([^`]+)`", finding.fix or "")
+        wrong = re.match(r"`([^`]+)` is not an executable", finding.message)
+        fix = rename_at(package, finding, wrong[1], meant[1]) if meant and wrong else None
+        if fix is not None:
+            yield fix

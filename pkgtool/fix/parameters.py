@@ -1,4 +1,5 @@
-"""Fixer of parameter files: a misspelled ``ros__parameters`` key gets its right name."""
+"""Fixers of parameter files: a misspelled ``ros__parameters`` key gets its right name, a
+node block misspelt gets the node's."""
 
 from __future__ import annotations
 
@@ -8,6 +9,7 @@ from collections.abc import Iterator
 from pkgtool.edit.changes import read_source
 from pkgtool.edit.core import Edit, EditError, Fix
 from pkgtool.findings import Finding
+from pkgtool.fix.common import rename_at
 from pkgtool.fix.registry import fixer
 from pkgtool.model.package import Package
 from pkgtool.rules.data_files.malformed_parameter_file import PARAMS_KEY, renamed
@@ -35,3 +37,16 @@ def misspelled_key(package: Package, findings: list[Finding]) -> Iterator[Fix]:
             quote = written.group(1)
             yield Fix(f"Rename `{key}` to `{PARAMS_KEY}`",
                       (Edit(source.path, at, written.end() + at, quote + PARAMS_KEY + quote),))
+
+
+@fixer("DAT009", "Name the block after the node its misspelt name is close to", safe=False)
+def node_block(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename a parameter file's node block to the one node name the file is passed to that
+    is spelled like it (``talkr:`` to ``talker:``). Unsafe: it guesses which node was meant;
+    the block reached no node before."""
+    for finding in findings:
+        meant = re.fullmatch(r"Write `([^`]+)`", finding.fix or "")
+        wrong = re.match(r"`(?:[^`]*/)?([^`/]+)` is none of the nodes", finding.message)
+        fix = rename_at(package, finding, wrong[1], meant[1]) if meant and wrong else None
+        if fix is not None:
+            yield fix

@@ -8,6 +8,7 @@ function takes the target ``distro`` (one of :data:`DISTROS`, default :data:`DEF
 from __future__ import annotations
 
 import difflib
+from collections.abc import Iterable
 from functools import cache, lru_cache
 
 from pkgtool.knowledge.tables import DEFAULT_DISTRO, DISTROS, FLAGS, read
@@ -107,6 +108,14 @@ def close_names(name: str, distro: str = DEFAULT_DISTRO, *, extra: frozenset[str
     similar = difflib.get_close_matches(name, candidates, n=max(limit, 20), cutoff=0.7)
     budget = 1 if len(name) < 14 else 2
     return [c for c in similar if typo_distance(name, c, budget) <= budget][:limit]
+
+
+def typo_of(word: str, choices: Iterable[str]) -> str | None:
+    """The one of ``choices`` a typo away from ``word`` (one edit under 14 characters, else
+    two; a swap of neighbours is one), or None when none or several are."""
+    budget = 1 if len(word) < 14 else 2
+    found = [c for c in set(choices) if c != word and typo_distance(word, c, budget) <= budget]
+    return found[0] if len(found) == 1 else None
 
 
 def typo_distance(first: str, second: str, budget: int) -> int:

@@ -12,8 +12,9 @@ import ast
 import posixpath
 import re
 from difflib import get_close_matches
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 
+from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.model.ast_nodes import nodes_of_class, walk_once
 from pkgtool.model.installed import installed_data
 from pkgtool.model.launch import NodeRef
@@ -498,3 +499,10 @@ def near(word: str, choices: list[str] | tuple[str, ...]) -> str:
     """`` (did you mean `x`?)`` for a close match of ``word``, else ''."""
     found = get_close_matches(word, sorted(set(choices)), n=1)
     return f" (did you mean `{found[0]}`?)" if found else ""
+
+
+def write_meant(word: str, choices: Iterable[str]) -> str | None:
+    """``Write `x``` when exactly one of ``choices`` is a typo away from ``word`` (the help a
+    fixer acts on), else None."""
+    meant = typo_of(word, choices)
+    return f"Write `{meant}`" if meant else None

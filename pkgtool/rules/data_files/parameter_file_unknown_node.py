@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.node_parameters import file_entries, near
+from pkgtool.rules.node_parameters import file_entries, near, write_meant
 from pkgtool.rules.registry import rule
 
 
@@ -50,4 +50,5 @@ def parameter_file_unknown_node(package: Package) -> Iterator[Hit]:
             base = entry.key.rpartition("/")[2]
             shown = ", ".join(f"`{n}`" for n in entry.names)
             yield Hit(entry.span, f"`{entry.key}` is none of the nodes this file is passed to "
-                      f"({shown}){near(base, entry.names)}: its parameters reach no node")
+                      f"({shown}){near(base, entry.names)}: its parameters reach no node",
+                      write_meant(base, entry.names))

@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import ast
+from difflib import get_close_matches
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.model.package import Package
 from pkgtool.rules.console_scripts import scripts_and_modules
 from pkgtool.rules.node_api import node_subclasses
@@ -71,8 +73,12 @@ def undefined_entry_point_function(package: Package) -> Iterator[Hit]:
             continue
         function = (entry.attr or "").split(".")[0]
         if function not in module.top_level_names:
+            close = get_close_matches(function, sorted(module.top_level_names), n=1)
+            meant = typo_of(function, module.top_level_names)
             yield Hit(entry.span, f"`{entry.module}` does not define `{function}` at its top "
-                                  f"level (`{modules[entry.module]}`)")
+                                  f"level (`{modules[entry.module]}`"
+                                  f"{f'; did you mean `{close[0]}`?' if close else ''})",
+                      f"Write `{meant}`" if meant else None)
         elif entry.attr == function and _uninitialised_node(package, module.path, function):
             yield Hit(entry.span, f"`{function}` is a Node class, not a function: the script "
                       "constructs it before anything calls rclpy.init(), which raises, and "

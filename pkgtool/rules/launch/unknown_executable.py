@@ -3,9 +3,11 @@
 from __future__ import annotations
 
 import posixpath
+from difflib import get_close_matches
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.model.installed import is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
@@ -82,8 +84,12 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
                 continue
             if node.executable not in known:
                 choices = ", ".join(f"`{n}`" for n in sorted(known)) or "none"
+                close = get_close_matches(node.executable, sorted(known), n=1)
+                meant = typo_of(node.executable, known)
                 yield Hit(node.executable_span or node.span,
                           f"`{node.executable}` is not an executable of `{package.name}` "
-                          f"(it installs: {choices})",
+                          f"({f'did you mean `{close[0]}`? ' if close else ''}it installs: "
+                          f"{choices})",
+                          f"Write `{meant}`" if meant else
                           f"Add `{node.executable} = {package.name}.<module>:main` to "
                           f"console_scripts, or launch one of the installed executables")

@@ -8,7 +8,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_parameters import BUILT_IN, near, node_classes
+from pkgtool.rules.node_parameters import BUILT_IN, near, node_classes, write_meant
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
@@ -62,7 +62,8 @@ def undeclared_parameter_read(package: Package) -> Iterator[Hit]:
         for name, span in cls.reads:
             if name not in declared and name not in BUILT_IN:
                 yield Hit(span, f"`{cls.name}` reads parameter `{name}` but never declares "
-                          f"it{near(name, declared)}: ParameterNotDeclaredException")
+                          f"it{near(name, declared)}: ParameterNotDeclaredException",
+                          write_meant(name, declared))
             elif cls.path in indexes and (later := _declared_later(
                     indexes[cls.path], span, [d.span for d in cls.declared if d.name == name])):
                 yield Hit(span, f"`{cls.name}` reads parameter `{name}` before it declares it "
