@@ -7,11 +7,10 @@ import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.message_fields import Message, nested_message
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._message_instances import (
-    binding_counts, known_messages, message_instances)
+from pkgtool.rules.python._field_reads import field_reads
+from pkgtool.rules.python._message_instances import binding_counts
 from pkgtool.rules.python._value_types import certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
@@ -27,32 +26,11 @@ messages) are lists."""
 
 def _sequence_reads(tree: ast.Module, index: Index, package: Package
                     ) -> Iterator[tuple[ast.expr, str, str]]:
-    """(expression, ``pkg/msg/Type.field``, its type) of every read of a message's sequence field
-    (``msg.ranges``, ``msg.ranges[10:20]``), and of local names bound only to one."""
-    for instance in message_instances(tree, index, known_messages(package, index)):
-        for use in instance.uses:
-            found = _field(instance.message, use, index)
-            if found is not None:
-                yield from _spread(*found, index)
-
-
-def _field(message: Message, use: ast.Attribute, index: Index
-           ) -> tuple[ast.expr, str, str] | None:
-    """The outermost attribute read of ``use``'s path (``msg.a.b``) when it is a sequence
-    field, with its name."""
-    current: ast.Attribute = use
-    holder: Message | None = message
-    while holder is not None:
-        parent = index.parents.get(id(current))
-        if isinstance(parent, ast.Attribute) and parent.value is current:
-            holder = nested_message(holder, current.attr)
-            current = parent
-            continue
-        kind = holder.fields.get(current.attr, "")
-        if isinstance(current.ctx, ast.Load) and kind.startswith("sequence<"):
-            return current, f"{holder.name}.{current.attr}", kind
-        return None
-    return None
+    """(expression, ``pkg/msg/Type.field``, its type) of every read of a message's sequence
+    field (``msg.ranges``, ``msg.ranges[10:20]``), and of local names bound only to one."""
+    for read in field_reads(tree, index, package).values():
+        if read.kind.startswith("sequence<"):
+            yield from _spread(read.node, read.field, read.kind, index)
 
 
 def _spread(read: ast.expr, field: str, kind: str, index: Index

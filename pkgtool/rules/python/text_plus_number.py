@@ -9,9 +9,10 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.rules.python._field_reads import FieldRead, field_reads
 from pkgtool.rules.python._value_types import certain_type
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import installed_trees
+from pkgtool.rules.syntax_trees import Index, installed_trees
 
 _NUMBERS = frozenset({"int", "float", "bool"})
 
@@ -23,6 +24,13 @@ def _error(left: str, right: str) -> str:
     return f"unsupported operand type(s) for +: '{left}' and 'str'"
 
 
+def _type(value: ast.expr, fields: dict[int, FieldRead], package: Package, tree: ast.Module,
+          index: Index) -> str | None:
+    """The type ``value`` certainly has: a message field's, else :func:`certain_type`'s."""
+    read = fields.get(id(value))
+    return read.python_type if read is not None else certain_type(value, package, tree, index)
+
+
 @rule("PYC042", "text-plus-number", Severity.ERROR,
       fix="Format the number into the text: `f'count: {self.count}'`")
 def text_plus_number(package: Package) -> Iterator[Hit]:
@@ -31,8 +39,9 @@ def text_plus_number(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports `a + b` where one side is certainly a str and the other certainly an int, float
     or bool: literals, builtin conversions (`str(x)`, `len(x)`), local names every
-    assignment of which gives that type, and a node's `self.x` every store of which in the
-    package does.
+    assignment of which gives that type, a node's `self.x` every store of which in the
+    package does, and fields of known messages (`msg.linear.x` is a float, `msg.data` of a
+    `String` a str).
 
     ## Why is this bad?
     Python does not convert numbers to text on `+`: `'Count: ' + self.count` raises
@@ -52,11 +61,12 @@ def text_plus_number(package: Package) -> Iterator[Hit]:
     ```
     """
     for module, tree, index in installed_trees(package):
-        for node in nodes_of_class(tree, ast.BinOp):
-            if not isinstance(node.op, ast.Add):  # type: ignore[attr-defined]
-                continue
-            left = certain_type(node.left, package, tree, index)  # type: ignore[attr-defined]
-            right = certain_type(node.right, package, tree, index)  # type: ignore
+        adds = [n for n in nodes_of_class(tree, ast.BinOp)
+                if isinstance(n.op, ast.Add)]  # type: ignore[attr-defined]
+        fields = field_reads(tree, index, package) if adds else {}
+        for node in adds:
+            left, right = (_type(side, fields, package, tree, index)  # type: ignore
+                           for side in (node.left, node.right))  # type: ignore[attr-defined]
             if left is not None and right is not None and "str" in (left, right) and \
                     {left, right} & _NUMBERS:
                 number = right if right in _NUMBERS else left

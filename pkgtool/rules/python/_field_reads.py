@@ -1,0 +1,78 @@
+"""The fields of known messages that code reads, with their rosidl types (PYC042, PYC043).
+
+A read is the outermost attribute of a path on a message instance (``msg.linear.x``, not
+``msg.linear``, when ``linear`` holds a nested message), as :mod:`._message_instances` finds
+the instances.
+"""
+
+from __future__ import annotations
+
+import ast
+import re
+
+from pkgtool.knowledge.message_fields import Message, nested_message
+from pkgtool.model.memo import per_object
+from pkgtool.model.package import Package
+from pkgtool.records import record
+from pkgtool.rules.python._message_instances import known_messages, message_instances
+from pkgtool.rules.syntax_trees import Index
+
+_PYTHON_TYPES = ((re.compile(r"float|double"), "float"),
+                 (re.compile(r"u?int(8|16|32|64)"), "int"),
+                 (re.compile(r"boolean"), "bool"),
+                 (re.compile(r"w?string(<=?\d+>)?"), "str"))
+"""rosidl basic types and the Python type rclpy gives a field of each."""
+
+
+@record
+class FieldRead:
+    """A read of the field ``field`` (``pkg/msg/Type.name``) of rosidl type ``kind``."""
+
+    node: ast.Attribute
+    field: str
+    kind: str
+
+    @property
+    def python_type(self) -> str | None:
+        """The Python type rclpy gives the field (``float``, ``int``, ``bool``, ``str``), or
+        None for sequences, arrays, nested messages and other types."""
+        return next((name for pattern, name in _PYTHON_TYPES if pattern.fullmatch(self.kind)),
+                    None)
+
+
+@per_object(16)
+def _reads(tree: ast.Module) -> dict[str, dict[int, FieldRead]]:
+    """The reads of ``tree`` by package name, then by ``id`` of the attribute node."""
+    return {}
+
+
+def field_reads(tree: ast.Module, index: Index, package: Package) -> dict[int, FieldRead]:
+    """The field reads of ``tree`` (a module of ``package``) by ``id`` of their attribute
+    node, worked out once per tree."""
+    kept = _reads(tree)
+    if package.name not in kept:
+        found: dict[int, FieldRead] = {}
+        for instance in message_instances(tree, index, known_messages(package, index)):
+            for use in instance.uses:
+                read = _read(instance.message, use, index)
+                if read is not None:
+                    found[id(read.node)] = read
+        kept[package.name] = found
+    return kept[package.name]
+
+
+def _read(message: Message, use: ast.Attribute, index: Index) -> FieldRead | None:
+    """The read of ``use``'s path (``msg.a.b``) down to its last field, when it is a read."""
+    current, holder = use, message
+    while True:
+        parent = index.parents.get(id(current))
+        if isinstance(parent, ast.Attribute) and parent.value is current:
+            nested = nested_message(holder, current.attr)
+            if nested is None:
+                return None
+            current, holder = parent, nested
+            continue
+        kind = holder.fields.get(current.attr)
+        if kind is None or not isinstance(current.ctx, ast.Load):
+            return None
+        return FieldRead(current, f"{holder.name}.{current.attr}", kind)
