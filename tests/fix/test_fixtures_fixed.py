@@ -44,7 +44,8 @@ MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages
           ("DAT008", "flat_file_for_a_component_and_a_node"),
           ("LCH005", "launch_node_through_alias"), ("LCH005", "remappings_not_pairs"),
           ("LCH005", "invalid_names"),
-          ("PYC016", "print_style_calls"), ("MAN017", "catkin_create_pkg_license"),
+          ("PYC016", "print_style_calls"), ("PYC016", "messages_and_numbers_logged"),
+          ("MAN017", "catkin_create_pkg_license"),
           ("PYC001", "missing_import"), ("PYC001", "setup_and_launch_files"),
           *(("DEP008", case) for case in (
               "catkin_action_messages", "companion_types_on_humble", "names_no_shim_adds",
@@ -65,7 +66,7 @@ string of sources and creates the (empty) ament index marker: other missing file
 only their author knows. DAT008's values at the top level belong to a node only the user knows
 (here a component and a node share the file). LCH005 does not choose an executable, the
 pairs remappings were meant to be nor a valid node name; PYC016 does not reword print-style
-logging calls. DEP008 fixes the module an interface is imported from, never its name: these
+logging calls, nor choose how a message or a number is to be written. DEP008 fixes the module an interface is imported from, never its name: these
 cases misspell names (or need a companion type's attribute); MAN017 has no license in
 setup.py to copy. PYC001 imports standard modules only: these cases misspell names or use
 third-party modules. ENT002 rewrites a script's module only where the rule names the installed

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import ast
 import difflib
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from functools import cache
 
 from pkgtool.findings import Hit, Severity
@@ -12,6 +12,9 @@ from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import node_subclasses
+from pkgtool.rules.python._field_reads import field_reads
+from pkgtool.rules.python._message_instances import known_messages, message_instances
+from pkgtool.rules.python._value_types import certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
@@ -37,6 +40,10 @@ def python_logger() -> frozenset[str]:
 
     return frozenset(dir(logging.Logger)) | {"level", "parent", "propagate", "handlers",
                                              "disabled", "filters", "manager", "root"}
+
+
+_NUMBERS = frozenset({"int", "float", "bool"})
+"""Types a message certainly of which is no string."""
 
 
 def _is_logger_call(node: ast.AST, index: Index) -> bool:
@@ -72,8 +79,9 @@ def _key(node: ast.expr) -> str | None:
     return f".{node.attr}" if isinstance(node, ast.Attribute) else None
 
 
-def _problem(call: ast.Call) -> str | None:
-    """What is wrong with the arguments of a logger method call, if anything."""
+def _problem(call: ast.Call, typed: Callable[[ast.expr], str | None]) -> str | None:
+    """What is wrong with the arguments of a logger method call, if anything (``typed``: the
+    type an expression certainly has, if known)."""
     if any(isinstance(a, ast.Starred) for a in call.args) or \
             any(k.arg is None for k in call.keywords):
         return None
@@ -93,7 +101,39 @@ def _problem(call: ast.Call) -> str | None:
             isinstance(message, (ast.List, ast.Tuple, ast.Dict, ast.Set)):
         return "takes a string: rclpy raises `TypeError` for anything else; write " \
                "`str(...)` or an f-string"
+    given = typed(message) if message is not None else None
+    if given is not None:
+        return f"is given {given}, not a string: rclpy raises `TypeError`; write `str(...)` " \
+               "or an f-string"
     return None
+
+
+def _a(kind: str | None) -> str:
+    return f"an {kind}" if kind == "int" else f"a {kind}"
+
+
+def _typer(package: Package, tree: ast.Module, index: Index) -> Callable[[ast.expr], str | None]:
+    """What an expression of the module certainly is, when that is no string: a message
+    (``a `geometry_msgs/msg/Twist` message``), a number or a bool (a literal, a conversion, a
+    local or node attribute bound only to one, a message field)."""
+    known: dict[int, str] | None = None
+
+    def typed(value: ast.expr) -> str | None:
+        nonlocal known
+        if known is None:
+            known = {id(r): f"a `{instance.message.name}` message"
+                     for instance in message_instances(tree, index,
+                                                       known_messages(package, index))
+                     for r in instance.refs}
+            known.update({key: _a(read.python_type) for key, read in
+                          field_reads(tree, index, package).items()
+                          if read.python_type in _NUMBERS})
+        if id(value) in known:
+            return known[id(value)]
+        found = certain_type(value, package, tree, index)
+        return _a(found) if found in _NUMBERS else None
+
+    return typed
 
 
 @rule("PYC016", "invalid-logger-call", Severity.ERROR,
@@ -136,6 +176,7 @@ def invalid_logger_call(package: Package) -> Iterator[Hit]:
         if not any(i.top_level == "rclpy" for i in module.imports):
             continue
         loggers: set[str] | None = None
+        typed = _typer(package, tree, index)
         for call in index.calls:
             func = call.func
             if not isinstance(func, ast.Attribute) or func.attr.startswith("__"):
@@ -145,7 +186,7 @@ def invalid_logger_call(package: Package) -> Iterator[Hit]:
                     loggers = _loggers(tree, index)
                 if _key(func.value) not in loggers:
                     continue
-            problem = _problem(call) if func.attr in LEVELS else \
+            problem = _problem(call, typed) if func.attr in LEVELS else \
                 _unknown_method(func, index) if func.attr not in ATTRIBUTES else None
             if problem:
                 yield Hit(Span(module.path, call.lineno, call.col_offset + 1),
