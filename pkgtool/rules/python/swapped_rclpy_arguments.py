@@ -14,6 +14,8 @@ from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
 KINDS = {"msg_type": "message", "srv_type": "service"}
+_SERVED = frozenset({"create_subscription", "create_service"})
+"""The creators whose third argument is the callback."""
 
 
 def _method_of_class(value: ast.expr, call: ast.Call, index: Index) -> bool:
@@ -41,6 +43,9 @@ def _swapped(call: ast.Call, method: str, index: Index) -> tuple[ast.expr, str] 
     if second is not None and INTERFACE.fullmatch(index.qualified(second) or ""):
         return second, (f"the {kind} type is given where the name goes (the type comes "
                         "first: ROS 1 had them the other way round)")
+    if method in _SERVED and second is not None and _method_of_class(second, call, index):
+        return second, ("the callback is given where the name goes (the type comes first, "
+                        "then the name, then the callback)")
     return None
 
 
@@ -54,8 +59,9 @@ def swapped_rclpy_arguments(package: Package) -> Iterator[Hit]:
     Reports `create_publisher`, `create_subscription`, `create_service` and `create_client`
     calls whose first positional argument is a string (`'chatter'`) or whose second is a
     message or service class imported from a `.msg`/`.srv` module (the topic and the type
-    swapped, as ROS 1's `rospy.Publisher('chatter', String)` had them), and
-    `create_timer` calls whose first argument is a lambda or a method of the class (the
+    swapped, as ROS 1's `rospy.Publisher('chatter', String)` had them), `create_subscription`
+    and `create_service` calls whose second is a lambda or a method of the class (the
+    callback where the name goes), and `create_timer` calls whose first argument is one (the
     callback where the period goes). Only modules importing rclpy are looked at, not calls
     with `*args` or `**kwargs`, and not when the package defines a function of the same name.
 
