@@ -26,19 +26,19 @@ PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprec
               "misspelled_fields", "workspace_interfaces")),
           ("PYC014", "misspelled_read_after_alias"),
           ("PYC014", "misspelled_reads"), ("DAT009", "misspelled_node")}
-"""GPLv3 can mean -only or -or-later, `my_robot_description` is no known package, values
-outside `ros__parameters` belong to a node only the user knows, a node without its executable
-names none, `required="true"` and YAML launch files are left to the user, `exception()` is
-close to no rclpy logging method, an int for a bool or string field or a float for an int
-field has no one right spelling, a misspelt interface name is renamed nowhere else in the
-module, `import pkg.msgs` is used under that name, an email address is the author's, and
-a standard module's name used as a value may be a variable never assigned, `import
-a.b` binds `a`, which the installed name would not, `len()` for a string field and a
-parameter's text in an f-string mean something only the author knows, and a misspelt
-field, executable, parameter or node block is renamed only when exactly one name is spelled
-like it (positional message arguments, a class's attributes, fields of a message with none,
-an executable or parameter close to nothing, a node with a namespace are left): no
-fix guesses, the user chooses; the other findings of the case are fixed."""
+"""GPLv3 can mean -only or -or-later, `my_robot_description` is no known package, values outside
+`ros__parameters` belong to a node only the user knows, a node without its executable names
+none, `required="true"` and YAML launch files are left to the user, `exception()` is close to
+no rclpy logging method, an int for a bool or string field or a float for an int field has no
+one right spelling, a misspelt interface name is renamed nowhere else in the module, `import
+pkg.msgs` is used under that name, an email address is the author's, and a standard module's
+name used as a value may be a variable never assigned, `import a.b` binds `a`, which the
+installed name would not, `len()` for a string field and a parameter's text in an f-string mean
+something only the author knows, and a misspelt field, executable, parameter or node block is
+renamed only when exactly one name is spelled like it (positional message arguments, a class's
+attributes, fields of a message with none, an executable or parameter close to nothing, a node
+with a namespace are left): no fix guesses, the user chooses; the other findings of the case
+are fixed."""
 MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages"),
           ("MAN018", "standard_library_modules"), ("DAT001", "typo_in_path"),
           ("DAT008", "flat_file_for_a_component_and_a_node"),
@@ -58,24 +58,26 @@ MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages
               "module_never_written", "package_named_by_its_path",
               "package_path_with_trailing_slash", "src_layout_without_package_dir")),
           ("PYC019", "kilted_target"), ("ENT003", "function_named_differently"),
+          ("PYC025", "scalars_for_sequences"),
           ("ENT003", "node_class_as_entry"), ("PYC014", "read_before_declaring"),
           ("LCH001", "wrong_executable_names"), ("DAT009", "default_name_from_code")}
 """MAN018 fixes pip and import names only; build types, ROS 1 packages and standard library
 modules need the user (a `<build_type>`, a ROS 2 replacement, or nothing). DAT001 fixes a
 string of sources and creates the (empty) ament index marker: other missing files have content
 only their author knows. DAT008's values at the top level belong to a node only the user knows
-(here a component and a node share the file). LCH005 does not choose an executable, the
-pairs remappings were meant to be nor a valid node name; PYC016 does not reword print-style
-logging calls, nor choose how a message or a number is to be written. DEP008 fixes the module an interface is imported from, never its name: these
-cases misspell names (or need a companion type's attribute); MAN017 has no license in
-setup.py to copy. PYC001 imports standard modules only: these cases misspell names or use
-third-party modules. ENT002 rewrites a script's module only where the rule names the installed
-one; these cases need setup.py's packages, an `__init__.py` or the module itself, which the
-author chooses. PYC019 renames fields, not positional arguments; ENT003 renames a
-function only to a close one (`run` is not close to `main`), and a Node class needs a `main`
-the author writes; PYC014 renames reads, and moving a declaration is the author's call;
-`talker_node` for `talker` (LCH001) and a block `main_talker` for the node `talker` (DAT009) are
-more than a typo away: other names, maybe meant."""
+(here a component and a node share the file). LCH005 does not choose an executable, the pairs
+remappings were meant to be nor a valid node name; PYC016 does not reword print-style logging
+calls, nor choose how a message or a number is to be written. DEP008 fixes the module an
+interface is imported from, never its name: these cases misspell names (or need a companion
+type's attribute); MAN017 has no license in setup.py to copy. PYC001 imports standard modules
+only: these cases misspell names or use third-party modules. ENT002 rewrites a script's module
+only where the rule names the installed one; these cases need setup.py's packages, an
+`__init__.py` or the module itself, which the author chooses. PYC019 renames fields, not
+positional arguments; ENT003 renames a function only to a close one (`run` is not close to
+`main`), and a Node class needs a `main` the author writes; PYC014 renames reads, and moving a
+declaration is the author's call; PYC025 does not guess the list a number or a string given to
+a sequence stands for; `talker_node` for `talker` (LCH001) and a block `main_talker` for the
+node `talker` (DAT009) are more than a typo away: other names, maybe meant."""
 
 REVEALED = {("PYC013", "called_callbacks"): {"PYC026"},
             ("LCH005", "parameters_not_a_list"): {"DAT012"},

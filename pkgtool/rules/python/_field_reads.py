@@ -22,6 +22,9 @@ _PYTHON_TYPES = ((re.compile(r"float|double"), "float"),
                  (re.compile(r"boolean"), "bool"),
                  (re.compile(r"w?string(<=?\d+>)?"), "str"))
 """rosidl basic types and the Python type rclpy gives a field of each."""
+ARRAY_SEQUENCE = re.compile(r"sequence<(u?int(8|16|32|64)|float|double)[,>].*")
+"""Sequences rclpy stores as an ``array.array`` (converting what it is given); the others
+(strings, bools, octets, messages) are lists."""
 
 
 @record

@@ -10,6 +10,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.message_fields import MESSAGE_TYPE, Message, nested_message
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.rules.python._field_reads import ARRAY_SEQUENCE
 from pkgtool.rules.python._message_instances import Instance, known_messages, message_instances
 from pkgtool.rules.python._value_types import certain_type
 from pkgtool.rules.registry import rule
@@ -113,7 +114,9 @@ def field_value_type(package: Package) -> Iterator[Hit]:
     attributes `self.x` of a class deriving from rclpy's `Node` alone when every assignment
     to an attribute `x` in the package's installed modules does (`self.count = 0`); other
     expressions never. A field that holds a message is reported when given a number, bool
-    or string (`cmd.linear = 0.5`), and a `builtin_interfaces/Time` or `Duration` field when given
+    or string (`cmd.linear = 0.5`), a sequence of numbers (`float64[]`, stored as an
+    `array.array`) when given a number or a string, and a `builtin_interfaces/Time` or
+    `Duration` field when given
     rclpy's own `Time` or `Duration` (`header.stamp = self.get_clock().now()`, without
     `.to_msg()`).
 
@@ -123,7 +126,9 @@ def field_value_type(package: Package) -> Iterator[Hit]:
     (Jazzy's default) the value reaches the C conversion unchecked: an int in a float field
     is published as garbage, `1` in a bool field as `False`, a number in a string field
     makes `publish()` raise. A message field given anything but a message of its type fails
-    the same checks, or `publish()` when rclpy converts the message.
+    the same checks, or `publish()` when rclpy converts the message. A number or a string
+    given to a sequence of numbers fails at once, checks or not: rclpy converts it to an
+    `array.array` (`TypeError: 'float' object is not iterable`).
 
     ## Example
     ```python
@@ -154,6 +159,12 @@ def field_value_type(package: Package) -> Iterator[Hit]:
                           f"`{target}` is a `{kind}` field but is given `{ast.unparse(value)}`"
                           f" ({given}{_how(value)}): rclpy wants {wanted[1]}",
                           float_fix(value, given) if wanted[0] == {"float"} else None)
+            elif ARRAY_SEQUENCE.fullmatch(kind) and given in ("int", "float", "bool", "str"):
+                yield Hit(Span(module.path, value.lineno, value.col_offset + 1),
+                          f"`{target}` is a `{kind}` field but is given `{ast.unparse(value)}`"
+                          f" ({given}{_how(value)}): rclpy makes an array of it and raises "
+                          "TypeError", f"Give a list: `[{ast.unparse(value)}]`"
+                          if given != "str" else None)
             elif (problem := _not_a_message(kind, value, given, index)) is not None:
                 yield Hit(Span(module.path, value.lineno, value.col_offset + 1),
                           f"`{target}` holds a `{kind}` message but is given "

@@ -3,13 +3,12 @@
 from __future__ import annotations
 
 import ast
-import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._field_reads import field_reads
+from pkgtool.rules.python._field_reads import ARRAY_SEQUENCE, field_reads
 from pkgtool.rules.python._message_instances import binding_counts
 from pkgtool.rules.python._value_types import certain_type
 from pkgtool.rules.registry import rule
@@ -19,9 +18,6 @@ _ORDER = {ast.Lt: "<", ast.Gt: ">", ast.LtE: "<=", ast.GtE: ">="}
 _ARITHMETIC = {ast.Add: "+", ast.Sub: "-", ast.Div: "/", ast.FloorDiv: "//", ast.Mod: "%",
                ast.Pow: "**", ast.Mult: "*"}
 _NUMBERS = frozenset({"int", "float", "bool"})
-_ARRAYS = re.compile(r"sequence<(u?int(8|16|32|64)|float|double)[,>].*")
-"""Sequences rclpy gives as an ``array.array``; the others (strings, bools, octets,
-messages) are lists."""
 
 
 def _sequence_reads(tree: ast.Module, index: Index, package: Package
@@ -111,7 +107,7 @@ def sequence_field_as_number(package: Package) -> Iterator[Hit]:
                 continue
             seen.add(id(found[0]))
             node, symbol, number = found
-            holder = "an array.array" if _ARRAYS.fullmatch(kind) else "a list"
+            holder = "an array.array" if ARRAY_SEQUENCE.fullmatch(kind) else "a list"
             yield Hit(Span(module.path, node.lineno, node.col_offset + 1),  # type: ignore
                       f"`{ast.unparse(read)}` "
                       f"{'holds' if isinstance(read, ast.Name) else 'is'} the sequence field "
