@@ -11,8 +11,10 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._callbacks import callback_arguments
 from pkgtool.rules.python._message_instances import callback_function
+from pkgtool.rules.python._value_types import certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import returns_none, scope_walk
+from pkgtool.rules.syntax_trees import Index
 
 
 _RETURNED = {
@@ -34,6 +36,16 @@ they must return, what returning None does, how to fix it."""
 _STOPS = (ast.Return, ast.Raise, ast.While, ast.Try, ast.With, ast.AsyncWith, ast.Match)
 """Statements after which the end of a body may not be reached (or not only by falling)."""
 _PLAIN_ENDS = (ast.Expr, ast.Assign, ast.AugAssign, ast.AnnAssign)
+
+
+def _classes_returned(function: ast.FunctionDef | ast.AsyncFunctionDef, package: Package,
+                      tree: ast.Module, index: Index) -> Iterator[ast.expr]:
+    """The values of ``return`` statements of ``function`` (not of functions inside it) that
+    are an imported interface class itself (``return AddTwoInts.Response``)."""
+    for node in scope_walk(function.body):
+        if isinstance(node, ast.Return) and isinstance(node.value, (ast.Name, ast.Attribute)) \
+                and certain_type(node.value, package, tree, index) == "type":
+            yield node.value
 
 
 def _falls_off_the_end(function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
@@ -67,6 +79,8 @@ def service_callback_returns_nothing(package: Package) -> Iterator[Hit]:
     can fall off its end: no statement of its body (outside nested blocks) returns, raises,
     loops with `while` or enters `try`, `with` or `match`, and the last one is an
     expression or assignment (`self.get_logger().info('done')` after an early `return`).
+    And one that returns an imported interface class itself instead of an instance
+    (`return AddTwoInts.Response`), which rclpy refuses as it refuses `None`.
 
     ## Why is this bad?
     rclpy sends what the callback returns as the response: `None` makes
@@ -101,7 +115,15 @@ def service_callback_returns_nothing(package: Package) -> Iterator[Hit]:
             yield Hit(Span(path, function.lineno, function.col_offset + 1),
                       f"The {what} `{ast.unparse(value)}` never returns {returned}: {effect}",
                       fix, related=(Span(path, value.lineno, value.col_offset + 1),))
-        elif _falls_off_the_end(function):
+            continue
+        for returned_class in _classes_returned(function, package, tree, index):
+            name = ast.unparse(returned_class)
+            yield Hit(Span(path, returned_class.lineno, returned_class.col_offset + 1),
+                      f"The {what} `{ast.unparse(value)}` returns the class `{name}`, not "
+                      f"{returned}: {effect}", f"Return an instance: `{name}()`, or the one "
+                      "rclpy passes in",
+                      related=(Span(path, value.lineno, value.col_offset + 1),))
+        if _falls_off_the_end(function):
             end = function.body[-1]
             yield Hit(Span(path, end.lineno, end.col_offset + 1),
                       f"The {what} `{ast.unparse(value)}` returns {returned} on some paths but "
