@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Iterator
 from difflib import get_close_matches
 
@@ -16,6 +17,13 @@ from pkgtool.rules.registry import rule
 
 _DECLARE = "DeclareLaunchArgument"
 _READ = "LaunchConfiguration"
+_FRONTEND_DECLARED = (re.compile(r"<(?:arg|let)\b[^>]*?\bname\s*=\s*[\"']([^\"']+)[\"']"),
+                      re.compile(r"^\s*-?\s*(?:arg|let):\s*\n\s+name:\s*[\"']?([\w.-]+)",
+                                 re.M))
+"""An XML (``<arg name="x">``, ``<let name="x">``) or YAML (``- arg:`` / ``name: x``)
+launch file's declared or set arguments."""
+_FRONTEND_READ = re.compile(r"\$\(var\s+([\w.-]+)\s*\)")
+"""A ``$(var x)`` substitution of an XML or YAML launch file."""
 
 
 def _name(func: ast.expr) -> str:
@@ -43,7 +51,9 @@ def misspelled_launch_argument(package: Package) -> Iterator[Hit]:
     `LaunchConfiguration('other')` without a `default` when `other` is declared nowhere,
     nothing else in the files sets it (`SetLaunchConfiguration`, `launch_arguments`) and
     a declared name of the same file is spelled almost the same (`use_sim_tim` for
-    `use_sim_time`).
+    `use_sim_time`). In XML and YAML launch files, the same for `$(var other)` against the
+    names of `<arg>` and `<let>` (`arg:` and `let:`), when `other` appears nowhere else in
+    the file.
 
     ## Why is this bad?
     `ros2 launch` fails when it evaluates the substitution: `launch configuration
@@ -64,7 +74,11 @@ def misspelled_launch_argument(package: Package) -> Iterator[Hit]:
     """
     files = [(path, parse_tree(path, text), text) for path, _, text in
              python_launch_files(package)]
-    declared_anywhere: set[str] = set()
+    frontends = [(launch.path, text) for launch in package.launch_files
+                 if launch.kind in ("xml", "yaml") and launch.problem is None and
+                 (text := package.texts.get(launch.path)) is not None]
+    declared_anywhere = {name for _, text in frontends for pattern in _FRONTEND_DECLARED
+                         for name in pattern.findall(text)}
     calls: dict[str, list[ast.Call]] = {}
     for path, tree, _ in files:
         found = nodes_of_class(tree, ast.Call) if isinstance(tree, ast.Module) else []
@@ -82,7 +96,21 @@ def misspelled_launch_argument(package: Package) -> Iterator[Hit]:
                 continue
             close = get_close_matches(name, sorted(declared), n=1, cutoff=0.8)
             if close:
-                yield Hit(Span(path, call.lineno, call.col_offset + 1),
-                          f"`{name}` is declared by no launch argument (did you mean "
-                          f"`{close[0]}`?): the launch fails with launch configuration "
-                          f"'{name}' does not exist")
+                yield _hit(Span(path, call.lineno, call.col_offset + 1), name, close[0])
+    for path, text in frontends:
+        declared = {name for pattern in _FRONTEND_DECLARED for name in pattern.findall(text)}
+        for read in _FRONTEND_READ.finditer(text):
+            name = read.group(1)
+            if name in declared_anywhere or len(re.findall(
+                    rf"(?<![\w.-]){re.escape(name)}(?![\w.-])", text)) > 1:
+                continue
+            close = get_close_matches(name, sorted(declared), n=1, cutoff=0.8)
+            if close:
+                line = text.count("\n", 0, read.start()) + 1
+                column = read.start() - text.rfind("\n", 0, read.start())
+                yield _hit(Span(path, line, column), name, close[0])
+
+
+def _hit(span: Span, name: str, meant: str) -> Hit:
+    return Hit(span, f"`{name}` is declared by no launch argument (did you mean `{meant}`?): "
+                     f"the launch fails with launch configuration '{name}' does not exist")
