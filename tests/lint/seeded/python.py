@@ -614,3 +614,20 @@ def scan_ranges_compared_with_a_distance(root: Path) -> None:
 def rate_slept_in_a_timer_callback(root: Path) -> None:
     edit(root, TALKER, "        self.count += 1\n",
          "        self.count += 1\n        rate = self.create_rate(2)\n        rate.sleep()\n")
+
+
+@case("PYC016", "base_pkg/listener.py", "self.get_logger().info(msg)")
+def message_logged_as_it_is(root: Path) -> None:
+    edit(root, "base_pkg/listener.py", "        self.last_message = msg\n",
+         "        self.last_message = msg\n        self.get_logger().info(msg)\n")
+
+
+@case("PYC030", SRV, "self.create_service(Trigger, self.on_request, name)")
+def service_callback_where_the_name_goes(root: Path) -> None:
+    edit(root, SRV, "self.create_service(Trigger, name, self.on_request)",
+         "self.create_service(Trigger, self.on_request, name)")
+
+
+@case("PYC026", SRV, "return Trigger.Response")
+def service_returns_the_response_class(root: Path) -> None:
+    edit(root, SRV, "        return response\n", "        return Trigger.Response\n")
