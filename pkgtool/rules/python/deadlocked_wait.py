@@ -149,7 +149,7 @@ def _self_spins(function: Function, spins: list[ast.Call], clients: set[str], in
     own callbacks for what that callback's group keeps from running (``spins``: the
     module's calls of those functions)."""
     receiver = method_receiver(function)
-    others = _other_groups(index)
+    others: bool | None = None
     for node in spins:
         spun = node.args[0] if node.args else next(
             (k.value for k in node.keywords if k.arg == "node"), None)
@@ -161,8 +161,10 @@ def _self_spins(function: Function, spins: list[ast.Call], clients: set[str], in
                 (k.value for k in node.keywords if k.arg == "future"), None)
             if _default_group_future(future, function, clients, index):
                 yield node
-        elif not others:
-            yield node
+        else:
+            others = _other_groups(index) if others is None else others
+            if not others:
+                yield node
 
 
 def _blocking_calls(function: Function, clients: set[str]) -> Iterator[ast.Call]:
@@ -263,8 +265,11 @@ def deadlocked_wait(package: Package) -> Iterator[Hit]:
                 a.name in _MULTI_THREADED_NAMES for a in f.names)
                 for _, _, i in trees for f in i.import_froms):
         seen: set[int] = set()
-        for path, function, tree, index in _served_callbacks(package):
-            for call in _sleeps(function, _rate_attributes(tree, index)):
+        rates = {m.path: _rate_attributes(t, i) for m, t, i in trees
+                 if any(isinstance(c.func, ast.Attribute) and c.func.attr == "create_rate"
+                        for c in i.calls)}
+        for path, function, _, _ in _served_callbacks(package) if rates else ():
+            for call in _sleeps(function, rates.get(path, frozenset())):
                 if id(call) not in seen:
                     seen.add(id(call))
                     yield Hit(Span(path, call.lineno, call.col_offset + 1),
