@@ -126,6 +126,7 @@ RULES = {
     "PYC041": ("node-never-initialised", "error", True, "python.node_never_initialised"),
     "PYC042": ("text-plus-number", "error", True, "python.text_plus_number"),
     "PYC043": ("sequence-field-as-number", "error", True, "python.sequence_field_as_number"),
+    "PYC044": ("misspelled-topic", "warning", True, "python.misspelled_topic"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

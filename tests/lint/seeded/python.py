@@ -631,3 +631,11 @@ def service_callback_where_the_name_goes(root: Path) -> None:
 @case("PYC026", SRV, "return Trigger.Response")
 def service_returns_the_response_class(root: Path) -> None:
     edit(root, SRV, "        return response\n", "        return Trigger.Response\n")
+
+
+@case("PYC044", "base_pkg/listener.py", "String, topic, self.on_message, 10)")
+def subscription_topic_misspelt(root: Path) -> None:
+    edit(root, "base_pkg/listener.py", "self.declare_parameter('topic', 'chatter')",
+         "self.declare_parameter('topic', 'chater')")
+    edit(root, "config/params.yaml", "listener:\n  ros__parameters:\n    topic: chatter",
+         "listener:\n  ros__parameters:\n    topic: chater")

@@ -1,0 +1,66 @@
+"""PYC044: a subscription to a topic nothing publishes, a typo away from one the package
+publishes."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.rosdistro import typo_of
+from pkgtool.model.package import Package
+from pkgtool.rules.python._endpoints import endpoints
+from pkgtool.rules.registry import rule
+
+
+def _digits_differ(first: str, second: str) -> bool:
+    """True when the names differ in a digit (``robot1/scan``, ``robot2/scan``): numbered
+    topics are meant to differ."""
+    return sorted(c for c in first if c.isdigit()) != sorted(c for c in second if c.isdigit())
+
+
+@rule("PYC044", "misspelled-topic", Severity.WARNING,
+      fix="Use one topic name on both sides")
+def misspelled_topic(package: Package) -> Iterator[Hit]:
+    """A subscription's topic is published by nothing in the package, and is a typo away from
+    a topic the package publishes with the same message type.
+
+    ## What it does
+    Takes the publishers and subscriptions of the package's installed modules whose topic
+    name is certain (as PYC021 does: literals, names bound to one, parameter defaults no
+    parameter or launch file changes; topics a launch file quotes, which it may remap, are
+    left out). Reports a subscription whose topic no publisher of the package uses when
+    exactly one published topic of the same message type is a typo away from it (one edit,
+    or a swap of neighbours), unless the two differ in a digit (`robot1`, `robot2`).
+
+    ## Why is this bad?
+    ROS 2 matches topics by exact name: `chater` never receives what is published on
+    `chatter`, and nothing says so; the subscriber just waits. A topic another package
+    publishes under that near-miss name is possible, which is why this is a warning.
+
+    ## Example
+    ```python
+    self.create_publisher(String, 'chatter', 10)                     # talker.py
+    self.create_subscription(String, 'chater', self.on_message, 10)  # listener.py
+    ```
+
+    ## Use instead
+    ```python
+    self.create_subscription(String, 'chatter', self.on_message, 10)
+    ```
+    """
+    found = endpoints(package)
+    published: dict[str, set[str | None]] = {}
+    for endpoint in found:
+        if endpoint.kind == "publisher":
+            published.setdefault(endpoint.topic.lstrip("/"), set()).add(endpoint.type)
+    for endpoint in found:
+        topic = endpoint.topic.lstrip("/")
+        if endpoint.kind != "subscription" or endpoint.type is None or topic in published:
+            continue
+        same_type = [t for t, types in published.items() if types == {endpoint.type}]
+        meant = typo_of(topic, same_type)
+        if meant is not None and not _digits_differ(topic, meant):
+            yield Hit(endpoint.type_span,
+                      f"The subscription to `{endpoint.topic}` gets nothing this package "
+                      f"publishes: it publishes `{endpoint.type}` on `{meant}`, a typo away "
+                      f"(did you mean `{meant}`?)")
