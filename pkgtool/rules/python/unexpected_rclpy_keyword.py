@@ -8,7 +8,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_api import node_api_calls, node_constructions
+from pkgtool.rules.node_api import PARAMETERS, node_api_calls, node_constructions
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import installed_trees
 
@@ -34,6 +34,14 @@ def _wrong(call: ast.Call, table: dict[str, str]) -> Iterator[tuple[ast.keyword,
             yield keyword, table[keyword.arg]
 
 
+def _given_twice(call: ast.Call, parameters: tuple[str, ...]) -> ast.keyword | None:
+    """The first keyword of ``call`` naming a parameter its positional arguments fill."""
+    if any(isinstance(a, ast.Starred) for a in call.args):
+        return None
+    filled = set(parameters[:len(call.args)])
+    return next((k for k in call.keywords if k.arg in filled), None)
+
+
 @rule("PYC029", "unexpected-rclpy-keyword", Severity.ERROR,
       fix="Use the keyword rclpy's function takes (see the message)")
 def unexpected_rclpy_keyword(package: Package) -> Iterator[Hit]:
@@ -46,9 +54,11 @@ def unexpected_rclpy_keyword(package: Package) -> Iterator[Hit]:
     `default=` or `default_value=` for `value=` (`declare_parameter`) and for
     `alternative_value=` (`get_parameter_or`), and `name=` for `node_name=` (Node
     constructors: `super().__init__(...)` in a Node subclass, `Node(...)`,
-    `rclpy.create_node(...)`). As for the other rclpy checks, only modules importing rclpy
-    are looked at, and not when the package defines a function of the same name (a wrapper
-    of its own).
+    `rclpy.create_node(...)`). Also a keyword naming a parameter that the positional
+    arguments already fill (`create_subscription(Twist, 'cmd', self.cb, 10, callback=...)`)
+    of `create_publisher`, `create_subscription`, `create_service` and `create_client`. As
+    for the other rclpy checks, only modules importing rclpy are looked at, and not when the
+    package defines a function of the same name (a wrapper of its own).
 
     ## Why is this bad?
     Python raises `TypeError: ... got an unexpected keyword argument 'timeout'` when the line
@@ -75,6 +85,13 @@ def unexpected_rclpy_keyword(package: Package) -> Iterator[Hit]:
             yield Hit(Span(module.path, keyword.lineno, keyword.col_offset + 1),
                       f"`{method}()` has no `{keyword.arg}` argument: it raises TypeError",
                       f"Write `{meant}=`")
+    for module, call, method, _ in node_api_calls(package, PARAMETERS):
+        twice = _given_twice(call, PARAMETERS[method]) if method not in defined else None
+        if twice is not None:
+            yield Hit(Span(module.path, twice.lineno, twice.col_offset + 1),
+                      f"`{method}()` gets `{twice.arg}` twice, by position and as "
+                      f"`{twice.arg}=`: it raises TypeError (multiple values for argument)",
+                      f"Remove `{twice.arg}=` or the positional argument")
     for module, _, index in installed_trees(package):
         if not any(i.top_level == "rclpy" for i in module.imports):
             continue
