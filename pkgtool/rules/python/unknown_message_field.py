@@ -7,6 +7,7 @@ from collections.abc import Iterator
 from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.knowledge.message_fields import (Message, close_field, constructor_options,
                                               nested_message)
 from pkgtool.knowledge.tables import DEFAULT_DISTRO
@@ -233,5 +234,7 @@ def _within(node: ast.AST, ranges: list[tuple[int, int]]) -> bool:
 
 
 def _fix(message: Message, name: str) -> str | None:
+    """``Write `x``` when the near miss the message names is a typo away (what the fixer
+    renames); a field spelled only somewhat alike is named in the message alone."""
     close = close_field(message, name)
-    return f"Write `{close}`" if close else None
+    return f"Write `{close}`" if close and typo_of(name, [close]) else None
