@@ -112,8 +112,8 @@ def installed_modules(package: Package) -> dict[str, str] | None:
     package_dir = setup.package_dir or {}
     by_folder: dict[str, list[str]] = {}
     for file in package.files:
-        if file.endswith(".py"):
-            by_folder.setdefault(posixpath.dirname(file), []).append(file)
+        if file.endswith(".py") and not posixpath.basename(file).startswith("."):
+            by_folder.setdefault(posixpath.dirname(file), []).append(file)  # glob's `*.py`
     modules: dict[str, str] = {}
     for name in setup.packages.names if setup.packages else ():
         # 'src/pkg' (also 'src/pkg/') installs to src/pkg: `src.pkg`, a namespace package
@@ -152,6 +152,7 @@ def installed_files(package: Package) -> frozenset[str]:
             files = frozenset(f for f in files if any(
                 s == "." or f == s or f.startswith(s + "/") for s in sources))
     return frozenset(f for f in files if posixpath.basename(f) != "setup.py"
+                     and not posixpath.basename(f).startswith(".")  # setuptools globs `*.py`
                      and not in_separate_project(package, f))
 
 

@@ -38,6 +38,11 @@ def catches_everything(handler: ast.ExceptHandler) -> bool:
     return bool(_caught(handler) & _BROAD)
 
 
+def catches_name_error(handler: ast.ExceptHandler) -> bool:
+    """``except NameError:`` (or ``UnboundLocalError``, or anything broader)."""
+    return bool(_caught(handler) & _NAME_ERRORS)
+
+
 def scope_walk(body: list[ast.stmt], *, skip_protected: bool = False) -> Iterator[ast.AST]:
     """Nodes of ``body`` in this scope: nested functions, classes and comprehensions are
     yielded but not entered. With ``skip_protected``, the bodies of ``try`` blocks that

@@ -9,8 +9,8 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.memo import per_object
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.scopes import (bound_names, catches_everything, own_scope, scope_bindings,
-                                  scope_walk)
+from pkgtool.rules.scopes import (bound_names, catches_everything, catches_name_error,
+                                  own_scope, scope_bindings, scope_walk)
 from pkgtool.rules.syntax_trees import Index, installed_trees
 from pkgtool.rules.registry import rule
 
@@ -38,9 +38,18 @@ def _fails_before(body: list[ast.stmt], name: str) -> bool:
 
 
 def _uses(body: list[ast.stmt], name: str) -> Iterator[ast.Name]:
-    """Reads of ``name`` in ``body``, except inside ``try`` blocks that catch NameError."""
+    """Reads of ``name`` in ``body``, except inside ``try`` blocks that catch NameError, and
+    in the ``else`` of one whose body reads the bare name (``try: name / except NameError:
+    ... / else: use(name)``: the ``else`` runs only when the name is bound)."""
+    tested: set[int] = set()
     for node in scope_walk(body, skip_protected=True):
-        if isinstance(node, ast.Name) and node.id == name and isinstance(node.ctx, ast.Load):
+        if isinstance(node, ast.Try) and any(
+                catches_name_error(h) for h in node.handlers) and any(
+                isinstance(s, ast.Expr) and isinstance(s.value, ast.Name) and
+                s.value.id == name for s in node.body):
+            tested.update(id(n) for statement in node.orelse for n in ast.walk(statement))
+        elif isinstance(node, ast.Name) and node.id == name and \
+                isinstance(node.ctx, ast.Load) and id(node) not in tested:
             yield node
 
 
@@ -92,7 +101,8 @@ def unbound_in_finally(package: Package) -> Iterator[Hit]:
     In functions of installed modules, reports a read in `finally:` or in an `except:` /
     `except Exception:` block of a local name whose only assignments are in the `try` body,
     after a statement that can raise. `try` blocks inside loops, and uses guarded by
-    `locals()` or a `try/except NameError`, are not reported.
+    `locals()` or a `try/except NameError` (or in the `else:` of one whose body reads the
+    bare name), are not reported.
 
     ## Why is this bad?
     When the assignment fails (the node's constructor raises, Ctrl-C arrives first), the

@@ -2,13 +2,35 @@
 
 from __future__ import annotations
 
+import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
+from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.submodules import under
 from pkgtool.rules.registry import rule
 from pkgtool.rules.setup_values import listed_packages
+
+
+_MAKERS = frozenset({"mkdir", "makedirs", "copytree", "copy", "copyfile", "system", "run",
+                     "call", "check_call", "check_output", "Popen", "write_text"})
+"""Calls through which a setup.py may create files before ``setup()`` (folders, copies, a
+code generator it runs: ``subprocess.run``, and ``grpc_tools.protoc.main``)."""
+
+
+def _makes_files(package: Package) -> bool:
+    """True when setup.py calls something that may create the folders it lists."""
+    text = package.texts.get("setup.py")
+    tree = parse_tree("setup.py", text) if text is not None else None
+    return isinstance(tree, ast.Module) and any(
+        isinstance(node, ast.Call) and _maker(node.func) for node in ast.walk(tree))
+
+
+def _maker(func: ast.expr) -> bool:
+    if isinstance(func, ast.Attribute):
+        return func.attr in _MAKERS or func.attr == "main" and "protoc" in ast.unparse(func.value)
+    return isinstance(func, ast.Name) and func.id in _MAKERS
 
 
 @rule("SET011", "missing-package-folder", Severity.ERROR,
@@ -18,7 +40,9 @@ def missing_package_folder(package: Package) -> Iterator[Hit]:
 
     ## What it does
     For an explicit `packages` list, maps each name to its folder the way setuptools does
-    (respecting `package_dir`) and reports names whose folder holds no files.
+    (respecting `package_dir`) and reports names whose folder holds no files. Not when
+    setup.py makes files before `setup()` (`mkdir`, `makedirs`, copies, `subprocess`,
+    `grpc_tools.protoc`): the folder may be generated, as gRPC or message code often is.
 
     ## Why is this bad?
     The build stops with "error: package directory 'x' does not exist". It typically happens
@@ -37,6 +61,8 @@ def missing_package_folder(package: Package) -> Iterator[Hit]:
     ```
     """
     folders = {f.rsplit("/", 1)[0] for f in package.files if "/" in f}
+    if _makes_files(package):
+        return  # the folder may be what setup.py generates before setup() runs
     for name, folder, span in listed_packages(package):
         if folder and not any(f == folder or f.startswith(folder + "/") for f in folders) \
                 and not under(folder, package.unfetched):

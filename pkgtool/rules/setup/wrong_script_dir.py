@@ -41,7 +41,10 @@ def wrong_script_dir(package: Package) -> Iterator[Hit]:
     `$base/lib/<name>` with this package's name. A missing option is reported at a misspelt
     key (`install_script`) or section (`[instal]`) when there is one, else when the package
     has console scripts meant for `ros2 run` (see SET008 for the evidence; a command-line
-    tool whose setup.cfg holds only other sections gets SET013, info).
+    tool whose setup.cfg holds only other sections gets SET013, info). A wrong value is
+    reported when setup.py installs scripts; a folder below `lib/<name>`
+    (`$base/lib/<name>/scripts`) only when a launch file of the package starts one of them,
+    as `ros2 run` searches below `lib/<name>` and launch_ros does not.
 
     ## Why is this bad?
     `ros2 run <package> <executable>` and launch files look for executables only in
@@ -81,8 +84,30 @@ def wrong_script_dir(package: Package) -> Iterator[Hit]:
                 yield Hit(Span(cfg.path, 1, 1),
                           f"`setup.cfg` has no `[{section}] {key}`: console scripts install to "
                           f"`bin/`, not `lib/{package.name}`")
-        elif _normal(option.value) != wanted:
+        elif _normal(option.value) != wanted and _scripts(package):
+            inside = _normal(option.value).startswith(wanted + "/")
+            if inside and not _launched(package):
+                continue  # `ros2 run` walks lib/<package> down; only launch_ros does not
             yield Hit(option.span, f"`{option.key}` is `{option.value}`, not `{wanted}`: "
-                                   f"`ros2 run {package.name}` will not find the executables",
+                                   + (f"launch_ros looks for executables in `lib/{package.name}` "
+                                      "itself, not below it: the launch file's nodes will not "
+                                      "start" if inside else
+                                      f"`ros2 run {package.name}` will not find the "
+                                      "executables"),
                       cause=name_cause(_normal(option.value).rpartition("/lib/")[2]),
                       consequence=True)
+
+
+def _scripts(package: Package) -> bool:
+    """True when setup.py installs scripts (console scripts, or ``scripts=``), or may."""
+    setup = package.setup_py
+    return setup is None or bool(setup.console_scripts) or "scripts" in setup.keywords or \
+        setup.is_unresolved("entry_points") or setup.is_unresolved("**")
+
+
+def _launched(package: Package) -> bool:
+    """True when a launch file of the package starts one of its own console scripts."""
+    setup = package.setup_py
+    names = {entry.name for entry in setup.console_scripts} if setup else set()
+    return any(node.package == package.name and node.executable in names
+               for launch in package.launch_files for node in launch.nodes)
