@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import posixpath
+import re
 from collections.abc import Iterable, Iterator
 
 from pkgtool.model.installed import installed_data
@@ -14,6 +15,11 @@ from pkgtool.model.setup_py import DataFile, DataSource
 from pkgtool.rules.setup_values import checked_setup
 from pkgtool.rules.syntax_trees import installed_trees
 
+_SEARCH_PATHS = re.compile(r"\b(?:GZ_SIM|IGN_GAZEBO)_(?:RESOURCE|SYSTEM_PLUGIN)_PATH\b|"
+                           r"\bGAZEBO_(?:MODEL|RESOURCE|PLUGIN)_PATH\b|\b(?:GZ|IGN)_FILE_PATH\b|"
+                           r"\bSDF_PATH\b")
+"""Environment variables of simulators' search paths: a launch file setting one joins share
+folders to put on it, where a missing folder is skipped, not read."""
 MARKER_FOLDER = "share/ament_index/resource_index/packages"
 """Where an ament_python package installs its ament index marker."""
 
@@ -80,8 +86,10 @@ def _share_reads(package: Package, shared: set[str]
     for launch in package.launch_files:
         if launch.path in shared:
             unread = _only_unused_nodes_read(launch)
+            searched = _SEARCH_PATHS.search(package.texts.get(launch.path, "")) is not None
             yield launch.path, (ref for ref in launch.files
-                                if (ref.package, ref.parts) not in unread)
+                                if (ref.package, ref.parts) not in unread and
+                                not (searched and ref.parts and "." not in ref.parts[-1]))
     for module, tree, index in installed_trees(package):
         if index.imports_from("ament_index_python"):
             yield module.path, read_python_launch(module.path, tree)[2]

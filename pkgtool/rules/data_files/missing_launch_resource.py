@@ -24,7 +24,10 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     joined with static parts) and reports those that data_files does not install and that
     are no file or folder of the package either: a misspelt name (`param.yaml` for
     `params.yaml`), a wrong folder, a file never committed. It suggests the closest path the
-    package installs or has. A file the package has but does not install is DAT006's.
+    package installs or has. A file the package has but does not install is DAT006's. In a
+    launch file that sets a simulator's search path (`GZ_SIM_RESOURCE_PATH`,
+    `GAZEBO_MODEL_PATH`, ...), folders (a last part with no suffix) are left alone, by both
+    rules: they are entries of the path, which skips a missing one, not files read.
 
     ## Why is this bad?
     Nothing can install a file the package does not have: `ros2 launch` fails on the missing
