@@ -73,8 +73,10 @@ def callback_called(package: Package) -> Iterator[Hit]:
     `ActionServer`'s `execute_callback`, `goal_callback`, `handle_accepted_callback` and
     `cancel_callback`), positional or keyword, that call a method of the same class
     (`self.tick()`) or a function of the module (`tick()`) whose definition returns no value:
-    no `return <value>`, no `yield`, not `async`, no decorator, not a placeholder body.
-    A call of a factory that returns a callback, `functools.partial(...)` or a lambda is fine.
+    no `return <value>`, no `yield`, not `async`, no decorator, not a placeholder body;
+    whatever it returns, when the call leaves out a parameter the function requires
+    (`self.execute()` for `def execute(self, goal_handle)`). A call of a factory that returns
+    a callback, `functools.partial(...)` or a lambda is fine.
 
     ## Why is this bad?
     The function runs once while the node is set up, and rclpy gets its result, `None`, as
@@ -96,10 +98,31 @@ def callback_called(package: Package) -> Iterator[Hit]:
     for path, value, api, _, index, tree in callback_arguments(package):
         if not isinstance(value, ast.Call):
             continue
-        target = _method(value, index) or _function(value, index, tree)
-        if target is not None and returns_none(target):
-            name = ast.unparse(value.func)
+        method = _method(value, index)
+        target = method or _function(value, index, tree)
+        name = ast.unparse(value.func)
+        missing = _missing(value, target, 1 if method else 0) if target is not None else None
+        if missing:
+            yield Hit(Span(path, value.lineno, value.col_offset + 1),
+                      f"`{ast.unparse(value)}` is called without its `{missing}` where `{api}` "
+                      f"wants the callback: Python raises TypeError (missing argument) as the "
+                      f"line runs; pass `{name}` without parentheses",
+                      fix=f"Pass `{name}` without parentheses")
+        elif target is not None and returns_none(target):
             yield Hit(Span(path, value.lineno, value.col_offset + 1),
                       f"`{ast.unparse(value)}` is called and its result, None, is passed to "
                       f"`{api}` as the callback: pass `{name}` without parentheses",
                       fix=f"Pass `{name}` without parentheses")
+
+
+def _missing(call: ast.Call, function: ast.FunctionDef, skipped: int) -> str | None:
+    """The first required parameter of ``function`` that ``call`` gives no value for (after
+    the ``skipped`` receiver), when the call passes no ``*args``/``**kwargs``."""
+    if any(isinstance(a, ast.Starred) for a in call.args) or \
+            any(k.arg is None for k in call.keywords):
+        return None
+    arguments = function.args
+    positional = [*arguments.posonlyargs, *arguments.args][skipped:]
+    required = positional[:len(positional) - len(arguments.defaults)]
+    given = {k.arg for k in call.keywords}
+    return next((a.arg for a in required[len(call.args):] if a.arg not in given), None)
