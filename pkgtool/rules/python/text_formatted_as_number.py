@@ -175,20 +175,21 @@ class _Texts:
 
     def _reaching(self, stores: list[ast.stmt], use: ast.Name, chain: list[ast.AST]
                   ) -> list[ast.stmt]:
-        """The assignments before ``use`` that no later assignment on every path to it
-        replaces (one in a block around the read, before it)."""
+        """The assignments before ``use`` that no later statement on every path to it
+        replaces: an assignment in a block around the read, before it, or a statement there
+        that assigns the name on each of its ways through (``if``/``else`` both assigning)."""
         inside = {id(n) for n in chain}
         read_at = (use.lineno, use.col_offset)
         before = [s for s in stores if id(s) not in inside and
                   (s.end_lineno or s.lineno, s.end_col_offset or 0) <= read_at]
-        blocks: dict[int, int] = {}
+        mine = {id(s) for s in stores}
+        replacing: list[ast.stmt] = []
         for child, parent in zip(chain, chain[1:]):
             for field in ("body", "orelse", "finalbody", "handlers"):
                 block = getattr(parent, field, None)
                 if isinstance(block, list) and any(s is child for s in block):
                     position = next(i for i, s in enumerate(block) if s is child)
-                    blocks.update({id(s): i for i, s in enumerate(block[:position])})
-        replacing = [s for s in before if id(s) in blocks]
+                    replacing += [s for s in block[:position] if _assigns(s, mine)]
         last = max(replacing, key=lambda s: (s.lineno, s.col_offset), default=None)
         return [s for s in before if last is None or s is last or
                 (s.lineno, s.col_offset) > (last.lineno, last.col_offset)]
@@ -210,6 +211,28 @@ class _Texts:
                 return True
         return any(isinstance(n, ast.Try) and any(_catches(h) for h in n.handlers)
                    for n in self._chain(name, function))
+
+
+def _assigns(statement: ast.stmt, stores: set[int]) -> bool:
+    """True when ``statement`` assigns the name on every way through it that goes on: it is
+    one of the name's ``stores``, or an ``if`` (or ``try``) each branch of which does, or
+    leaves (``return``, ``raise``, ``continue``, ``break``)."""
+    if id(statement) in stores:
+        return True
+    if isinstance(statement, ast.If):
+        return _block_assigns(statement.body, stores) and \
+            _block_assigns(statement.orelse, stores)
+    if isinstance(statement, ast.Try):
+        return _block_assigns(statement.body + statement.orelse, stores) and all(
+            _block_assigns(h.body, stores) for h in statement.handlers)
+    if isinstance(statement, (ast.With, ast.AsyncWith)):
+        return _block_assigns(statement.body, stores)
+    return False
+
+
+def _block_assigns(block: list[ast.stmt], stores: set[int]) -> bool:
+    return any(_assigns(s, stores) or isinstance(s, (ast.Return, ast.Raise, ast.Continue,
+                                                     ast.Break)) for s in block)
 
 
 def _mentions(node: ast.AST, name: str) -> bool:
