@@ -17,6 +17,7 @@ from pkgtool.findings import Finding
 from pkgtool.fix.registry import Refusal
 from pkgtool.knowledge.rosdistro import typo_distance
 from pkgtool.model.package import Package
+from pkgtool.model.span import Span
 
 
 def offer(title: str, build: Callable[[], Sequence[Edit]], *, safe: bool = True
@@ -110,14 +111,25 @@ def line_of(starts: list[int], offset: int) -> int:
 
 def rename_at(package: Package, finding: Finding, wrong: str, meant: str,
               before: str = "") -> Fix | None:
-    """``wrong`` renamed ``meant`` where the finding points: the one whole-name ``before +
-    wrong`` from its column to the end of its line. None when there is not exactly one, or
-    when ``meant`` is more than a typo away (one edit under 14 characters, else two; a swap
-    of neighbours is one): a near miss that is another word is the user's to choose."""
+    """``wrong`` renamed ``meant`` where the finding points, and at its related places (the
+    same mistake elsewhere): at each, the one whole-name ``before + wrong`` from its column
+    to the end of its line. None when a place has not exactly one, or when ``meant`` is more
+    than a typo away (one edit under 14 characters, else two; a swap of neighbours is one):
+    a near miss that is another word is the user's to choose."""
     budget = 1 if len(wrong) < 14 else 2
     if typo_distance(wrong, meant, budget) > budget:
         return None
-    span = finding.span
+    edits = []
+    for span in (finding.span, *finding.related):
+        at = _name_at(package, span, before + wrong)
+        if at is None:
+            return None
+        edits.append(Edit(span.path, at + len(before), at + len(before) + len(wrong), meant))
+    return Fix(f"Write `{meant}` instead of `{wrong}`", tuple(edits))
+
+
+def _name_at(package: Package, span: Span, text: str) -> int | None:
+    """The offset of the one whole-name ``text`` from ``span``'s column to its line's end."""
     try:
         source = read_source(package.root, span.path)
     except EditError:
@@ -126,11 +138,6 @@ def rename_at(package: Package, finding: Finding, wrong: str, meant: str,
         return None
     start = source.offset_of_utf8(span.line, max(span.col - 1, 0))
     line = source.text[start:source.line_end(start)]
-    head = before + wrong
-    guard = r"(?<![\w.])" if re.match(r"\w", head) else ""
-    found = list(re.finditer(rf"{guard}{re.escape(head)}(?!\w)", line))
-    if len(found) != 1:
-        return None
-    at = start + found[0].start() + len(before)
-    return Fix(f"Write `{meant}` instead of `{wrong}`",
-               (Edit(span.path, at, at + len(wrong), meant),))
+    guard = r"(?<![\w.])" if re.match(r"\w", text) else ""
+    found = list(re.finditer(rf"{guard}{re.escape(text)}(?!\w)", line))
+    return start + found[0].start() if len(found) == 1 else None

@@ -152,14 +152,32 @@ def unknown_message_field(package: Package) -> Iterator[Hit]:
                                (node.end_col_offset or 0) - len(node.attr) + 1),
                           f"{owner} has no attribute `{node.attr}`{meant}: reading "
                           f"`{ast.unparse(node)}` raises AttributeError")
+        places: dict[tuple[str, str], list[tuple[ast.Attribute, Message]]] = {}
         for instance in message_instances(tree, index, known):
             for node, message in _wrong_attributes(instance, index, probed):
                 if not _within(node, silent):
-                    doing = "reading" if isinstance(node.ctx, ast.Load) else "setting"
-                    yield Hit(Span(module.path, node.end_lineno or node.lineno,
-                                   (node.end_col_offset or 0) - len(node.attr) + 1),
-                              f"{_problem(message, node.attr)}: {doing} `{ast.unparse(node)}` "
-                              "raises AttributeError", _fix(message, node.attr))
+                    places.setdefault((message.name, node.attr), []).append((node, message))
+        for found in places.values():
+            yield _field_hit(module.path, sorted(found, key=lambda f: _where(f[0])))
+
+
+def _where(node: ast.Attribute) -> tuple[int, int]:
+    """Where the attribute's name is (1-based line and column)."""
+    return node.end_lineno or node.lineno, (node.end_col_offset or 0) - len(node.attr) + 1
+
+
+def _field_hit(path: str, found: list[tuple[ast.Attribute, Message]]) -> Hit:
+    """One hit for every use of one wrong field of one message in a module (one mistake):
+    the first use, the others related."""
+    node, message = found[0]
+    doing = "reading" if isinstance(node.ctx, ast.Load) else "setting"
+    others = sorted({_where(n)[0] for n, _ in found[1:]} - {_where(node)[0]})
+    also = f" (also on line{'s' if len(others) > 1 else ''} " \
+        f"{', '.join(map(str, others))})" if others else ""
+    return Hit(Span(path, *_where(node)),
+               f"{_problem(message, node.attr)}: {doing} `{ast.unparse(node)}` raises "
+               f"AttributeError{also}", _fix(message, node.attr),
+               related=tuple(Span(path, *_where(n)) for n, _ in found[1:]))
 
 
 _COMPANIONS = {"srv": ("Request", "Response", "Event"),
