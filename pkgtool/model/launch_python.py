@@ -35,6 +35,11 @@ PRESENCE_CHECKS = frozenset({"get_packages_with_prefixes", "get_package_prefix",
 """ament_index calls a launch file makes to find out whether a package is installed."""
 NAME_REMAPS = frozenset({"__node", "__name"})
 """Remapping keys that rename a node."""
+_LOOKUPS = frozenset({"get_package_share_directory", "get_package_prefix",
+                      "get_package_share_path"})
+"""ament_index_python's lookups, which raise PackageNotFoundError for a missing package."""
+_BROADER_CATCHES = frozenset({"KeyError", "LookupError", "Exception", "BaseException"})
+"""Exception classes a handler of which also catches PackageNotFoundError (a KeyError)."""
 _MAX_DEPTH = 40
 _MAX_TEXT = 4096
 """Longest string the evaluator builds (doubling concatenations stay bounded)."""
@@ -152,10 +157,14 @@ class _Reader(ast.NodeVisitor):
         return None
 
     def visit_Try(self, node: ast.Try) -> None:
+        looked_up = any(isinstance(n, ast.Call) and _name(n.func) in _LOOKUPS
+                        for statement in node.body for n in descendants(statement))
         checked = any(isinstance(n, (ast.Name, ast.Attribute)) and
-                      _name(n) == "PackageNotFoundError"
+                      (_name(n) == "PackageNotFoundError" or
+                       looked_up and _name(n) in _BROADER_CATCHES)
                       for handler in node.handlers if handler.type
-                      for n in descendants(handler.type))
+                      for n in descendants(handler.type)) or \
+            looked_up and any(handler.type is None for handler in node.handlers)
         self._visit_block(node.body, checked)
         for part in (*node.handlers, *node.orelse, *node.finalbody):
             self.visit(part)

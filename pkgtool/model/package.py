@@ -17,7 +17,7 @@ from pkgtool.model.modules import PythonModule, parse_module
 from pkgtool.model.setup_cfg import SetupCfg, parse_setup_cfg
 from pkgtool.model.setup_py import SetupPy, parse_setup_py
 from pkgtool.model.span import ParseProblem
-from pkgtool.model.submodules import unfetched_submodules
+from pkgtool.model.submodules import ignores_above, unfetched_submodules
 from pkgtool.records import field, record
 
 _PY_SUPPRESSION = re.compile(r"#\s*pkgtool:\s*ignore(?:\[([A-Za-z0-9_,\s-]*)\])?")
@@ -48,6 +48,9 @@ class Package:
     context: Context = field(default_factory=Context, repr=False)
     unfetched: frozenset[str] = frozenset()
     """Folders of git submodules inside the package that are not checked out."""
+    ignores: tuple[str, ...] = ()
+    """The patterns of the ``.gitignore`` files of the package and of the folders above it
+    (see :mod:`pkgtool.model.submodules`)."""
 
     @property
     def name(self) -> str:
@@ -65,6 +68,14 @@ class Package:
     def has_file(self, path: str) -> bool:
         """True when ``path`` (package-relative POSIX) is a file of the package."""
         return path in self.file_set
+
+
+def _ignores(root: Path, texts: dict[str, str]) -> tuple[str, ...]:
+    """The ``.gitignore`` patterns of the package's own files and of the folders above it."""
+    own = tuple(line.strip() for path, text in texts.items()
+                if path.rpartition("/")[2] == ".gitignore" for line in text.splitlines()
+                if line.strip() and not line.lstrip().startswith(("#", "!")))
+    return own + ignores_above(root)
 
 
 def _suppressions(path: str, text: str) -> dict[tuple[str, int], frozenset[str]]:
@@ -152,7 +163,7 @@ def load_package(root: Path, context: Context | None = None) -> Package:
         suppressions.update(_suppressions(relpath, text))
     return Package(root, files, manifest, setup_py, setup_cfg, tuple(modules), tuple(launches),
                    tuple(problems), suppressions, texts, frozenset(files), context or Context(),
-                   unfetched_submodules(root, files))
+                   unfetched_submodules(root, files), _ignores(root, texts))
 
 
 _LAUNCH_XML = re.compile(r"\s*(?:<\?xml[^>]*\?>\s*)?(?:<!--.*?-->\s*)*<launch[\s>/]", re.S)

@@ -1,15 +1,20 @@
-"""Git submodules inside a package that are not checked out: folders pkgtool cannot see into.
+"""What the repository around a package says about files the package does not hold.
 
-A clone made without ``--recurse-submodules`` leaves each submodule an empty folder; files
-the package names inside one are then missing here, not in the package. The submodules are
-read from the ``.gitmodules`` of the repository holding the package (the nearest one above
-it, below the folder holding ``.git``).
+Git submodules that are not checked out: a clone made without ``--recurse-submodules``
+leaves each submodule an empty folder; files the package names inside one are then missing
+here, not in the package. They are read from the ``.gitmodules`` of the repository holding
+the package (the nearest one above it, below the folder holding ``.git``).
+
+Ignored files: the ``.gitignore`` files of the folders above the package, up to the one
+holding ``.git`` (a file the user makes, a calibration, a map, is left out of git on
+purpose); the package's own ``.gitignore`` files are among its files.
 """
 
 from __future__ import annotations
 
 import os
 import re
+from fnmatch import fnmatch
 from functools import lru_cache
 from pathlib import Path
 
@@ -58,3 +63,34 @@ def _declared(folder: str) -> tuple[str, tuple[str, ...]] | None:
 def under(path: str, folders: frozenset[str]) -> bool:
     """True when the package-relative ``path`` is one of ``folders`` or inside one."""
     return any(path == f or path.startswith(f + "/") for f in folders)
+
+
+def ignores_above(root: Path) -> tuple[str, ...]:
+    """The patterns of the ``.gitignore`` files in the folders above ``root``, up to the one
+    holding ``.git`` (all the way up when there is none)."""
+    return _ignores(os.path.dirname(os.path.abspath(root)))
+
+
+@lru_cache(maxsize=256)
+def _ignores(folder: str) -> tuple[str, ...]:
+    found: tuple[str, ...] = ()
+    listing = os.path.join(folder, ".gitignore")
+    if os.path.isfile(listing):
+        try:
+            data = read_bytes(listing)
+        except OSError:
+            data = b""
+        if isinstance(data, bytes):
+            found = tuple(line.strip() for line in data.decode("utf-8", "replace").splitlines()
+                          if line.strip() and not line.lstrip().startswith(("#", "!")))
+    parent = os.path.dirname(folder)
+    if parent == folder or os.path.exists(os.path.join(folder, ".git")):
+        return found
+    return found + _ignores(parent)
+
+
+def ignored(path: str, patterns: tuple[str, ...]) -> bool:
+    """True when a pattern without a folder part matches the file name of ``path`` (a
+    package-relative path): ``ost.yaml``, ``*.pgm``."""
+    name = path.rpartition("/")[2]
+    return any("/" not in pattern.rstrip("/") and fnmatch(name, pattern) for pattern in patterns)

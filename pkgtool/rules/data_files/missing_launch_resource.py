@@ -7,7 +7,7 @@ from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.model.submodules import under
+from pkgtool.model.submodules import ignored, under
 from pkgtool.rules.data_files.common import is_folder, uninstalled_launch_resources
 from pkgtool.rules.registry import rule
 
@@ -27,7 +27,9 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     package installs or has. A file the package has but does not install is DAT006's. In a
     launch file that sets a simulator's search path (`GZ_SIM_RESOURCE_PATH`,
     `GAZEBO_MODEL_PATH`, ...), folders (a last part with no suffix) are left alone, by both
-    rules: they are entries of the path, which skips a missing one, not files read.
+    rules: they are entries of the path, which skips a missing one, not files read. Nor is
+    a file whose name a `.gitignore` of the package or of the folders above it lists (a
+    calibration or a map the user makes, kept out of git on purpose).
 
     ## Why is this bad?
     Nothing can install a file the package does not have: `ros2 launch` fails on the missing
@@ -48,8 +50,8 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     share = f"share/{package.name}/"
     for reader, ref, relative, installed in uninstalled_launch_resources(package):
         if package.has_file(relative) or is_folder(package, relative) or \
-                under(relative, package.unfetched):
-            continue
+                under(relative, package.unfetched) or ignored(relative, package.ignores):
+            continue  # a file git ignores is the user's to make (a calibration, a map)
         known = {target[len(share):] for target in installed if target.startswith(share)}
         known.update(package.files)
         close = get_close_matches(relative, sorted(known), n=1)

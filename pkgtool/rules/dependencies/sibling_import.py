@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import ast
 import posixpath
 import re
 from collections.abc import Iterator
@@ -11,8 +12,9 @@ from pkgtool.knowledge.rosdistro import keys_for_import, stdlib_modules
 from pkgtool.model.installed import installed_modules
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import (ANY, declared, enclosing_package_import, installed_code,
-                                   python_package_of)
+from pkgtool.model.python_visitor import parse_tree
+from pkgtool.rules.imports import (ANY, console_script_files, declared, enclosing_package_import,
+                                   installed_code, python_package_of)
 from pkgtool.rules.registry import rule
 
 
@@ -35,7 +37,9 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     name (`from filters.low_pass import smooth`, `from filters import low_pass`); importing
     the bare name alone (`import filters`, `from filters import smooth`) names no module of
     the folder and is left alone. Fallbacks (`except ImportError:`, `if '.' in __name__:`)
-    are guarded and never reported.
+    are guarded and never reported, and so are scripts kept in the package folder: a module
+    that runs code at its top level (a call, an `if __name__ == '__main__':` block) that no
+    console script runs and no module imports, run as `python3 path/to/it.py`.
 
     ## Why is this bad?
     `python3 my_pkg/node.py` puts the file's folder on `sys.path`, so the import works while
@@ -62,10 +66,11 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     modules = {module.path: module for module in package.modules}
     top_level = {name.split(".")[0] for name in installed}
     skip = top_level | stdlib_modules(package.context.distro) | declared(package, ANY).keys()
+    scripts = console_script_files(package)
     for module in installed_code(package):
         folder = posixpath.dirname(module.path)
         parent = python_package_of(package, module)
-        if not folder or not parent:
+        if not folder or not parent or _run_as_a_script(package, module, scripts):
             continue
         own_name = posixpath.basename(module.path)[:-3]
         for imported in module.imports:
@@ -87,6 +92,24 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
             yield Hit(imported.span, f"`{top}` is a module next to `{module.path}`, not a "
                                      f"top-level module: the import fails once installed",
                       f"Import `{parent}.{top}` (or `.{top}`) instead")
+
+
+def _run_as_a_script(package: Package, module: PythonModule, scripts: frozenset[str]) -> bool:
+    """True for a script kept in the package folder: it runs code at its top level (a call,
+    or an ``if __name__ == '__main__':`` block), no console script runs it and no module of
+    the package imports it. Run as ``python3 path/to/it.py``, its folder is on ``sys.path``
+    and its neighbours import as top-level modules."""
+    if module.path in scripts:
+        return False
+    tree = parse_tree(module.path, package.texts.get(module.path, ""))
+    if not isinstance(tree, ast.Module) or not any(
+            isinstance(s, ast.Expr) and isinstance(s.value, ast.Call) or
+            isinstance(s, ast.If) and "__main__" in ast.unparse(s.test) for s in tree.body):
+        return False
+    name = posixpath.basename(module.path)[:-3]
+    return not any(name in (i.module.rpartition(".")[2], *i.names)
+                   for other in package.modules if other.path != module.path
+                   for i in other.imports)
 
 
 def _imports_itself(module: PythonModule | None, name: str) -> bool:

@@ -23,7 +23,8 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
     brought in by a released metapackage declared so (`ros2_control` brings `controller_manager`;
     metapackages nest, but a regular package's own dependencies never count).
     Packages used only after the launch file checked that they are installed (`if 'nav2_bringup'
-    in get_packages_with_prefixes():`, or in a `try` that catches `PackageNotFoundError`) are
+    in get_packages_with_prefixes():`, or in a `try` that catches `PackageNotFoundError`,
+    or one that looks a package up and catches `KeyError`, `Exception` or anything) are
     optional and left alone, and so is a node that is never started: one assigned to a local
     name its function never reads (`rviz = Node(package='rviz2', ...)` left out of the
     LaunchDescription), with the `FindPackageShare` substitutions inside it, which only a
