@@ -23,20 +23,23 @@ def _initialising(index: Index) -> set[int]:
         if isinstance(func, ast.Name) and func.id == "getattr" or \
                 isinstance(func, ast.Attribute) and func.attr == "__init__":
             cls = index.enclosing_class(call)
-            if cls is not None and _runs_a_base_init(cls, func):
+            if cls is not None and _runs_a_base_init(cls, func, index):
                 found.add(id(cls))
     return found
 
 
-def _runs_a_base_init(cls: ast.ClassDef, func: ast.expr) -> bool:
+def _runs_a_base_init(cls: ast.ClassDef, func: ast.expr, index: Index) -> bool:
     if not isinstance(func, ast.Attribute):
         return True  # getattr
     owner = func.value
     if isinstance(owner, ast.Call) and isinstance(owner.func, ast.Name) and \
             owner.func.id in ("super", "type"):
         return True
-    return isinstance(owner, ast.Attribute) and owner.attr == "__class__" or \
-        ast.dump(owner) in {ast.dump(b) for b in cls.bases}
+    if isinstance(owner, ast.Attribute) and owner.attr == "__class__" or \
+            ast.dump(owner) in {ast.dump(b) for b in cls.bases}:
+        return True
+    named = index.qualified(owner) if isinstance(owner, (ast.Name, ast.Attribute)) else None
+    return named is not None and named in {index.qualified(b) for b in cls.bases}
 
 
 def _abstract(init: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
