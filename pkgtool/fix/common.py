@@ -15,7 +15,7 @@ from pkgtool.edit.source import Source
 from pkgtool.edit.xml_scan import Element
 from pkgtool.findings import Finding
 from pkgtool.fix.registry import Refusal
-from pkgtool.knowledge.rosdistro import typo_distance
+from pkgtool.knowledge.rosdistro import is_typo
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 
@@ -109,15 +109,31 @@ def line_of(starts: list[int], offset: int) -> int:
     return bisect_right(starts, offset)
 
 
-def rename_at(package: Package, finding: Finding, wrong: str, meant: str,
-              before: str = "") -> Fix | None:
+WRITE_ONE = re.compile(r"Write `([^`]+)`")
+"""The help of a finding whose fix is one name: the near miss of a misspelt one."""
+
+
+def renames(package: Package, findings: list[Finding], wrong: re.Pattern[str],
+            meant: re.Pattern[str] = WRITE_ONE, before: str = "") -> Iterator[Fix]:
+    """:func:`_rename_at` for each finding whose message ``wrong`` matches (its group 1: the
+    misspelt name) and whose help ``meant`` matches in full (group 1: the name meant)."""
+    for finding in findings:
+        help_match = meant.fullmatch(finding.fix or "")
+        written = wrong.search(finding.message)
+        fix = _rename_at(package, finding, written[1], help_match[1], before) \
+            if help_match and written else None
+        if fix is not None:
+            yield fix
+
+
+def _rename_at(package: Package, finding: Finding, wrong: str, meant: str,
+               before: str = "") -> Fix | None:
     """``wrong`` renamed ``meant`` where the finding points, and at its related places (the
     same mistake elsewhere): at each, the one whole-name ``before + wrong`` from its column
     to the end of its line. None when a place has not exactly one, or when ``meant`` is more
     than a typo away (one edit under 14 characters, else two; a swap of neighbours is one):
     a near miss that is another word is the user's to choose."""
-    budget = 1 if len(wrong) < 14 else 2
-    if typo_distance(wrong, meant, budget) > budget:
+    if not is_typo(wrong, meant):
         return None
     edits = []
     for span in (finding.span, *finding.related):

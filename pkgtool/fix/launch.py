@@ -15,7 +15,7 @@ from pkgtool.edit.pysource import PyDoc
 from pkgtool.edit.source import Source
 from pkgtool.edit.xml_scan import Element, scan
 from pkgtool.findings import Finding
-from pkgtool.fix.common import python_nodes, rename_at
+from pkgtool.fix.common import python_nodes, renames
 from pkgtool.fix.registry import fixer
 from pkgtool.model.package import Package
 from pkgtool.rules.launch.invalid_launch_action_argument import BY_KEYWORD, IN_A_LIST, ITEMS
@@ -179,9 +179,4 @@ def executable(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Rename the executable a launch file starts to the one executable the package installs
     that is spelled like it (``talkr`` to ``talker``). Unsafe: it guesses which executable
     was meant; launching stopped with "executable not found" before."""
-    for finding in findings:
-        meant = re.fullmatch(r"Write `([^`]+)`", finding.fix or "")
-        wrong = re.match(r"`([^`]+)` is not an executable", finding.message)
-        fix = rename_at(package, finding, wrong[1], meant[1]) if meant and wrong else None
-        if fix is not None:
-            yield fix
+    yield from renames(package, findings, re.compile(r"^`([^`]+)` is not an executable"))

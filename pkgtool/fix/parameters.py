@@ -9,7 +9,7 @@ from collections.abc import Iterator
 from pkgtool.edit.changes import read_source
 from pkgtool.edit.core import Edit, EditError, Fix
 from pkgtool.findings import Finding
-from pkgtool.fix.common import rename_at
+from pkgtool.fix.common import renames
 from pkgtool.fix.registry import fixer
 from pkgtool.model.package import Package
 from pkgtool.rules.data_files.malformed_parameter_file import PARAMS_KEY, renamed
@@ -44,9 +44,5 @@ def node_block(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Rename a parameter file's node block to the one node name the file is passed to that
     is spelled like it (``talkr:`` to ``talker:``). Unsafe: it guesses which node was meant;
     the block reached no node before."""
-    for finding in findings:
-        meant = re.fullmatch(r"Write `([^`]+)`", finding.fix or "")
-        wrong = re.match(r"`(?:[^`]*/)?([^`/]+)` is none of the nodes", finding.message)
-        fix = rename_at(package, finding, wrong[1], meant[1]) if meant and wrong else None
-        if fix is not None:
-            yield fix
+    yield from renames(package, findings,
+                       re.compile(r"^`(?:[^`]*/)?([^`/]+)` is none of the nodes"))

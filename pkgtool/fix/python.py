@@ -12,7 +12,7 @@ from collections.abc import Iterator
 from pkgtool.edit.core import Edit, Fix
 from pkgtool.edit.pysource import PyDoc
 from pkgtool.findings import Finding
-from pkgtool.fix.common import python_nodes, rename_at
+from pkgtool.fix.common import python_nodes, renames
 from pkgtool.fix.registry import fixer
 from pkgtool.model.package import Package
 from pkgtool.rules.python.field_value_type import TO_MSG, float_fix
@@ -22,7 +22,7 @@ from pkgtool.rules.syntax_trees import index_of
 
 _DECIMAL = re.compile(r"[0-9][0-9_]*")
 _WRITE_NAME = re.compile(r"Write `([A-Za-z_]\w*)`")
-"""The help of a finding whose fix is one name: the near miss of a misspelt one."""
+"""The help of a finding whose fix is one Python name: the near miss of a misspelt one."""
 _MODULES = frozenset("""argparse copy glob json math os random re shutil signal socket
                      struct subprocess sys threading time""".split())
 """Standard library modules code uses by their name (``math.pi``) and forgets to import."""
@@ -163,12 +163,7 @@ def message_field(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Rename a field a message does not have (set, read or given as a keyword) to the one
     field spelled like it. Unsafe: it guesses which field was meant; the code raised
     AttributeError (or the constructor ignored the keyword) before."""
-    for finding in findings:
-        meant = _WRITE_NAME.fullmatch(finding.fix or "")
-        wrong = re.search(r"has no field `(\w+)`", finding.message)
-        fix = rename_at(package, finding, wrong[1], meant[1]) if meant and wrong else None
-        if fix is not None:
-            yield fix
+    yield from renames(package, findings, re.compile(r"has no field `(\w+)`"), _WRITE_NAME)
 
 
 @fixer("PYC014", "Read the declared parameter the misspelt name is close to", safe=False)
@@ -176,9 +171,5 @@ def parameter_read(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Rename a parameter read but never declared to the one declared parameter spelled like
     it (``perod`` to ``period``). Unsafe: it guesses which parameter was meant; the read
     raised ParameterNotDeclaredException before."""
-    for finding in findings:
-        meant = _WRITE_NAME.fullmatch(finding.fix or "")
-        wrong = re.search(r"reads parameter `([^`]+)` but never", finding.message)
-        fix = rename_at(package, finding, wrong[1], meant[1]) if meant and wrong else None
-        if fix is not None:
-            yield fix
+    yield from renames(package, findings, re.compile(r"reads parameter `([^`]+)` but never"),
+                       _WRITE_NAME)

@@ -11,7 +11,7 @@ from pkgtool.edit.core import Edit, Fix
 from pkgtool.edit.setup_cfg import rename_option
 from pkgtool.edit.setup_py import SetupDoc
 from pkgtool.findings import Finding
-from pkgtool.fix.common import cfg_source, offer, python_nodes, rename_at, setup_doc
+from pkgtool.fix.common import cfg_source, offer, python_nodes, renames, setup_doc
 from pkgtool.fix.registry import Refusal, fixer
 from pkgtool.model.package import Package
 from pkgtool.rules.data_files.common import is_folder
@@ -125,12 +125,8 @@ def script_function(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Rename the function of a console script (``talker:mian``) to the one top-level name
     of its module spelled like it. Unsafe: it guesses which function was meant; the script
     raised ImportError before."""
-    for finding in findings:
-        meant = re.fullmatch(r"Write `(\w+)`", finding.fix or "")
-        wrong = re.match(r"`[\w.]+` does not define `(\w+)`", finding.message)
-        fix = rename_at(package, finding, wrong[1], meant[1], ":") if meant and wrong else None
-        if fix is not None:
-            yield fix
+    yield from renames(package, findings, re.compile(r"^`[\w.]+` does not define `(\w+)`"),
+                       re.compile(r"Write `(\w+)`"), ":")
 
 
 @fixer("ENT005", "Name the entry point group `console_scripts`")

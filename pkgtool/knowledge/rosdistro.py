@@ -106,15 +106,20 @@ def close_names(name: str, distro: str = DEFAULT_DISTRO, *, extra: frozenset[str
     neighbours is one), so that a different package with a similar name is not offered."""
     candidates = _candidates(distro) | extra
     similar = difflib.get_close_matches(name, candidates, n=max(limit, 20), cutoff=0.7)
-    budget = 1 if len(name) < 14 else 2
-    return [c for c in similar if typo_distance(name, c, budget) <= budget][:limit]
+    return [c for c in similar if is_typo(name, c)][:limit]
+
+
+def is_typo(word: str, other: str) -> bool:
+    """True when ``other`` is a typo away from ``word``: one edit for words under 14
+    characters, else two (insert, delete, replace; a swap of neighbours is one)."""
+    budget = 1 if len(word) < 14 else 2
+    return typo_distance(word, other, budget) <= budget
 
 
 def typo_of(word: str, choices: Iterable[str]) -> str | None:
-    """The one of ``choices`` a typo away from ``word`` (one edit under 14 characters, else
-    two; a swap of neighbours is one), or None when none or several are."""
-    budget = 1 if len(word) < 14 else 2
-    found = [c for c in set(choices) if c != word and typo_distance(word, c, budget) <= budget]
+    """The one of ``choices`` a typo away from ``word`` (:func:`is_typo`), or None when none
+    or several are."""
+    found = [c for c in set(choices) if c != word and is_typo(word, c)]
     return found[0] if len(found) == 1 else None
 
 

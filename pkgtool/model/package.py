@@ -17,7 +17,7 @@ from pkgtool.model.modules import PythonModule, parse_module
 from pkgtool.model.setup_cfg import SetupCfg, parse_setup_cfg
 from pkgtool.model.setup_py import SetupPy, parse_setup_py
 from pkgtool.model.span import ParseProblem
-from pkgtool.model.submodules import ignores_above, unfetched_submodules
+from pkgtool.model.submodules import gitignore_patterns, ignores_above, unfetched_submodules
 from pkgtool.records import field, record
 
 _PY_SUPPRESSION = re.compile(r"#\s*pkgtool:\s*ignore(?:\[([A-Za-z0-9_,\s-]*)\])?")
@@ -72,9 +72,8 @@ class Package:
 
 def _ignores(root: Path, texts: dict[str, str]) -> tuple[str, ...]:
     """The ``.gitignore`` patterns of the package's own files and of the folders above it."""
-    own = tuple(line.strip() for path, text in texts.items()
-                if path.rpartition("/")[2] == ".gitignore" for line in text.splitlines()
-                if line.strip() and not line.lstrip().startswith(("#", "!")))
+    own = tuple(pattern for path, text in texts.items()
+                if path.rpartition("/")[2] == ".gitignore" for pattern in gitignore_patterns(text))
     return own + ignores_above(root)
 
 

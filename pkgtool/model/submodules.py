@@ -81,12 +81,17 @@ def _ignores(folder: str) -> tuple[str, ...]:
         except OSError:
             data = b""
         if isinstance(data, bytes):
-            found = tuple(line.strip() for line in data.decode("utf-8", "replace").splitlines()
-                          if line.strip() and not line.lstrip().startswith(("#", "!")))
+            found = gitignore_patterns(data.decode("utf-8", "replace"))
     parent = os.path.dirname(folder)
     if parent == folder or os.path.exists(os.path.join(folder, ".git")):
         return found
     return found + _ignores(parent)
+
+
+def gitignore_patterns(text: str) -> tuple[str, ...]:
+    """The patterns of a ``.gitignore`` file: its lines but blanks, comments and negations."""
+    return tuple(line.strip() for line in text.splitlines()
+                 if line.strip() and not line.lstrip().startswith(("#", "!")))
 
 
 def ignored(path: str, patterns: tuple[str, ...]) -> bool:

@@ -54,7 +54,7 @@ def scope_walk(body: list[ast.stmt], *, skip_protected: bool = False) -> Iterato
         if type(node) in _NESTED:
             continue
         if skip_protected and isinstance(node, ast.Try) and any(
-                _caught(h) & _NAME_ERRORS for h in node.handlers):
+                catches_name_error(h) for h in node.handlers):
             children: list[ast.AST] = [*node.handlers, *node.orelse, *node.finalbody]
         else:
             children = child_nodes(node)

@@ -11,10 +11,9 @@ import ast
 import re
 
 from pkgtool.knowledge.message_fields import Message, nested_message
-from pkgtool.model.memo import per_object
 from pkgtool.model.package import Package
 from pkgtool.records import record
-from pkgtool.rules.python._message_instances import known_messages, message_instances
+from pkgtool.rules.python._message_instances import kept, known_messages, message_instances
 from pkgtool.rules.syntax_trees import Index
 
 _PYTHON_TYPES = ((re.compile(r"float|double"), "float"),
@@ -43,25 +42,20 @@ class FieldRead:
                     None)
 
 
-@per_object(16)
-def _reads(tree: ast.Module) -> dict[str, dict[int, FieldRead]]:
-    """The reads of ``tree`` by package name, then by ``id`` of the attribute node."""
-    return {}
-
-
 def field_reads(tree: ast.Module, index: Index, package: Package) -> dict[int, FieldRead]:
     """The field reads of ``tree`` (a module of ``package``) by ``id`` of their attribute
-    node, worked out once per tree."""
-    kept = _reads(tree)
-    if package.name not in kept:
-        found: dict[int, FieldRead] = {}
-        for instance in message_instances(tree, index, known_messages(package, index)):
-            for use in instance.uses:
-                read = _read(instance.message, use, index)
-                if read is not None:
-                    found[id(read.node)] = read
-        kept[package.name] = found
-    return kept[package.name]
+    node, worked out once per tree (kept with its message instances)."""
+    return kept(tree, "field reads", lambda: _field_reads(tree, index, package))
+
+
+def _field_reads(tree: ast.Module, index: Index, package: Package) -> dict[int, FieldRead]:
+    found: dict[int, FieldRead] = {}
+    for instance in message_instances(tree, index, known_messages(package, index)):
+        for use in instance.uses:
+            read = _read(instance.message, use, index)
+            if read is not None:
+                found[id(read.node)] = read
+    return found
 
 
 def _read(message: Message, use: ast.Attribute, index: Index) -> FieldRead | None:

@@ -154,13 +154,13 @@ def _facts(tree: ast.Module) -> dict[object, Any]:
     return {}
 
 
-def _kept(tree: ast.Module, key: object, work_out: Callable[[], R]) -> R:
+def kept(tree: ast.Module, key: object, work_out: Callable[[], R]) -> R:
     """``work_out()``, kept with ``tree`` under ``key`` (see :func:`_facts`)."""
     known = _facts(tree)
     if key not in known:
         known[key] = work_out()
-    kept: R = known[key]
-    return kept
+    found: R = known[key]
+    return found
 
 
 def local_instances(tree: ast.Module, index: Index, make: Maker[T]) -> Iterator[Instance[T]]:
@@ -290,9 +290,9 @@ def message_instances(tree: ast.Module, index: Index, known: Known) -> list[Inst
     with the tree)."""
     def make(call: ast.Call) -> Message | None:
         return known(call.func)
-    return _kept(tree, "messages", lambda: [*local_instances(tree, index, make),
-                                            *attribute_instances(tree, index, make),
-                                            *callback_instances(tree, index, known)])
+    return kept(tree, "messages", lambda: [*local_instances(tree, index, make),
+                                           *attribute_instances(tree, index, make),
+                                           *callback_instances(tree, index, known)])
 
 
 Function = ast.FunctionDef | ast.AsyncFunctionDef

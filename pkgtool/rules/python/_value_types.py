@@ -32,6 +32,8 @@ _BUILTINS = {"int": "int", "float": "float", "str": "str", "bool": "bool", "len"
 """Builtins whose call always gives a value of one type, and that type."""
 _INTERFACE_CLASS = re.compile(INTERFACE.pattern + r"(\.(Request|Response|Goal|Result|Feedback))?")
 """An imported message, service or action class, or one of the messages of the latter two."""
+NUMBER_TYPES = frozenset({"int", "float", "bool"})
+"""The certain types that are numbers (a bool adds and compares as one)."""
 _UNKNOWN = "?"
 _KEEPING = (ast.Add, ast.Sub, ast.Mult)
 """Augmented operators that give an int for two ints, a float for two floats (``/`` does

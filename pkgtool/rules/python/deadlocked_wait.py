@@ -63,16 +63,23 @@ def _sleeps(function: Function, attributes: frozenset[str] = frozenset()) -> Ite
             yield call
 
 
-def _rate_attributes(tree: ast.Module, index: Index) -> frozenset[str]:
-    """``.r`` for each attribute every store of which in the module is ``create_rate(...)``."""
-    stores: dict[str, bool] = {}
+def _attribute_stores(tree: ast.Module, index: Index) -> dict[str, list[ast.expr | None]]:
+    """By attribute name, what each store of the module assigns it (``self.x = value``, one
+    target; None for any other store)."""
+    stores: dict[str, list[ast.expr | None]] = {}
     for node in nodes_of_class(tree, ast.Attribute):
         if isinstance(node, ast.Attribute) and not isinstance(node.ctx, ast.Load):
             parent = index.parents.get(id(node))
-            made = isinstance(parent, ast.Assign) and parent.targets == [node] and \
-                _rate_made(parent.value)
-            stores[node.attr] = stores.get(node.attr, True) and made
-    return frozenset(f".{name}" for name, always in stores.items() if always)
+            stores.setdefault(node.attr, []).append(
+                parent.value if isinstance(parent, ast.Assign) and parent.targets == [node]
+                else None)
+    return stores
+
+
+def _rate_attributes(tree: ast.Module, index: Index) -> frozenset[str]:
+    """``.r`` for each attribute every store of which in the module is ``create_rate(...)``."""
+    return frozenset(f".{name}" for name, values in _attribute_stores(tree, index).items()
+                     if all(_rate_made(v) for v in values))
 
 
 def _served_callbacks(package: Package) -> Iterator[tuple[str, Function, ast.Module, Index]]:
@@ -102,13 +109,7 @@ def _default_group_callbacks(package: Package) -> Iterator[tuple[str, Function, 
 def _default_group_clients(tree: ast.Module, index: Index) -> set[str]:
     """Attribute names every store of which in the module is a ``create_client(...)`` call
     naming no callback group (a client in the node's default group), or ``None``."""
-    stores: dict[str, list[ast.expr | None]] = {}
-    for node in nodes_of_class(tree, ast.Attribute):
-        if isinstance(node, ast.Attribute) and not isinstance(node.ctx, ast.Load):
-            parent = index.parents.get(id(node))
-            stores.setdefault(node.attr, []).append(
-                parent.value if isinstance(parent, ast.Assign) and parent.targets == [node]
-                else None)
+    stores = _attribute_stores(tree, index)
     return {name for name, values in stores.items() if name != "_default_callback_group" and
             "_default_callback_group" not in stores and any(
                 isinstance(v, ast.Call) for v in values) and all(

@@ -14,7 +14,7 @@ from pkgtool.model.span import Span
 from pkgtool.rules.node_api import node_subclasses
 from pkgtool.rules.python._field_reads import field_reads
 from pkgtool.rules.python._message_instances import known_messages, message_instances
-from pkgtool.rules.python._value_types import certain_type
+from pkgtool.rules.python._value_types import NUMBER_TYPES, certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
@@ -40,10 +40,6 @@ def python_logger() -> frozenset[str]:
 
     return frozenset(dir(logging.Logger)) | {"level", "parent", "propagate", "handlers",
                                              "disabled", "filters", "manager", "root"}
-
-
-_NUMBERS = frozenset({"int", "float", "bool"})
-"""Types a message certainly of which is no string."""
 
 
 def _is_logger_call(node: ast.AST, index: Index) -> bool:
@@ -127,11 +123,11 @@ def _typer(package: Package, tree: ast.Module, index: Index) -> Callable[[ast.ex
                      for r in instance.refs}
             known.update({key: _a(read.python_type) for key, read in
                           field_reads(tree, index, package).items()
-                          if read.python_type in _NUMBERS})
+                          if read.python_type in NUMBER_TYPES})
         if id(value) in known:
             return known[id(value)]
         found = certain_type(value, package, tree, index)
-        return _a(found) if found in _NUMBERS else None
+        return _a(found) if found in NUMBER_TYPES else None
 
     return typed
 

@@ -10,14 +10,13 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._field_reads import ARRAY_SEQUENCE, field_reads
 from pkgtool.rules.python._message_instances import binding_counts
-from pkgtool.rules.python._value_types import certain_type
+from pkgtool.rules.python._value_types import NUMBER_TYPES, certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
 _ORDER = {ast.Lt: "<", ast.Gt: ">", ast.LtE: "<=", ast.GtE: ">="}
 _ARITHMETIC = {ast.Add: "+", ast.Sub: "-", ast.Div: "/", ast.FloorDiv: "//", ast.Mod: "%",
                ast.Pow: "**", ast.Mult: "*"}
-_NUMBERS = frozenset({"int", "float", "bool"})
 
 
 def _sequence_reads(tree: ast.Module, index: Index, package: Package
@@ -61,7 +60,7 @@ def _misuse(read: ast.expr, package: Package, tree: ast.Module, index: Index
     else:
         return None
     kind = certain_type(other, package, tree, index) if symbol else None
-    if kind not in _NUMBERS or symbol == "*" and kind != "float":
+    if kind not in NUMBER_TYPES or symbol == "*" and kind != "float":
         return None  # a sequence times an int repeats it
     assert symbol is not None and kind is not None
     return parent, symbol, kind

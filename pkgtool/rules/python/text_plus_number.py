@@ -10,11 +10,9 @@ from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._field_reads import FieldRead, field_reads
-from pkgtool.rules.python._value_types import certain_type
+from pkgtool.rules.python._value_types import NUMBER_TYPES, certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
-
-_NUMBERS = frozenset({"int", "float", "bool"})
 
 
 def _error(left: str, right: str) -> str:
@@ -68,8 +66,8 @@ def text_plus_number(package: Package) -> Iterator[Hit]:
             left, right = (_type(side, fields, package, tree, index)  # type: ignore
                            for side in (node.left, node.right))  # type: ignore[attr-defined]
             if left is not None and right is not None and "str" in (left, right) and \
-                    {left, right} & _NUMBERS:
-                number = right if right in _NUMBERS else left
+                    {left, right} & NUMBER_TYPES:
+                number = right if right in NUMBER_TYPES else left
                 article = "an" if number == "int" else "a"
                 yield Hit(Span(module.path, node.lineno, node.col_offset + 1),  # type: ignore
                           f"`{ast.unparse(node)}` adds {article} {number} to a str: Python "
