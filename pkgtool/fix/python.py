@@ -1,6 +1,6 @@
 """Fixers of Python code: a standard module never imported, a called callback, a misspelt
 logger method, an int for a float field, rclpy's Time for a message, a ``Parameter`` for its
-value, a path missing its ``/``."""
+value, a path missing its ``/``, a method used without ``()``."""
 
 from __future__ import annotations
 
@@ -156,6 +156,22 @@ def _after_folder(doc: PyDoc, node: ast.expr, left: ast.expr) -> int | None:
         return opening.end() if opening else None
     closing = doc.text.find("}", doc.end(left))
     return closing + 1 if closing >= 0 else None
+
+
+@fixer("PYC046", "Call the method used without `()`")
+def method_call(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Append ``()`` to the method PYC046 reports (``future.result`` becomes
+    ``future.result()``). Safe where the code raised AttributeError (``future.result.sum``) or
+    did nothing; where the method was tested (always true) or kept as a value, calling it
+    changes what runs: unsafe."""
+    for doc, finding, nodes in python_nodes(package, findings):
+        method = next((n for n in nodes if isinstance(n, (ast.Attribute, ast.Name)) and
+                       finding.message.startswith(f"`{ast.unparse(n)}` ")), None)
+        if method is not None:
+            raised = "raises AttributeError" in finding.message or \
+                "does nothing" in finding.message
+            yield Fix(f"Call `{ast.unparse(method)}()`",
+                      (_insert(doc, doc.end(method), "()"),), safe=raised)
 
 
 @fixer("PYC019", "Write the field the misspelt one is close to", safe=False)

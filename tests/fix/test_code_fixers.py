@@ -1,4 +1,4 @@
-"""The PYC001, PYC016, PYC025, PYC031, PYC032, LCH005, LCH010, SET006 and ENT002 fixers:
+"""The PYC001, PYC016, PYC025, PYC031, PYC032, PYC046, LCH005, LCH010, SET006 and ENT002 fixers:
 exactly the fix is written (comments and layout stay), a second run changes nothing, a
 refusal writes nothing."""
 
@@ -178,3 +178,21 @@ def test_console_script_gets_its_package_prefix(tmp_path: Path) -> None:
     before = _read(root, "setup.py")
     assert _fixed_once(root, "ENT002", "setup.py") == before.replace(
         "'talker=talker:main'", "'talker=pkg.talker:main'")
+
+
+def test_method_used_without_a_call_is_called_and_a_test_only_when_unsafe(
+        tmp_path: Path) -> None:
+    body = HEAD + ("        self.create_timer(1.0, self.tick)\n"
+                   "\n"
+                   "    def tick(self):\n"
+                   "        stamp = self.get_clock().now.nanoseconds  # keep\n"
+                   "        while rclpy.ok:\n"
+                   "            break\n"
+                   "        self.get_logger().info(str(stamp))\n")
+    root = _with(tmp_path, NODE, body)
+    safe = body.replace("now.nanoseconds", "now().nanoseconds")
+    result = _fix(root, "PYC046")
+    assert _read(root, NODE) == safe
+    assert [f.code for f in result.findings] == ["PYC046"]
+    assert _fixed_once(root, "PYC046", NODE, unsafe=True) == safe.replace(
+        "rclpy.ok:", "rclpy.ok():")

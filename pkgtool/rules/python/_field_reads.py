@@ -24,6 +24,11 @@ _PYTHON_TYPES = ((re.compile(r"float|double"), "float"),
 ARRAY_SEQUENCE = re.compile(r"sequence<(u?int(8|16|32|64)|float|double)[,>].*")
 """Sequences rclpy stores as an ``array.array`` (converting what it is given); the others
 (strings, bools, octets, messages) are lists."""
+ORDER = {ast.Lt: "<", ast.Gt: ">", ast.LtE: "<=", ast.GtE: ">="}
+"""The ordering comparisons, by operator class."""
+ARITHMETIC = {ast.Add: "+", ast.Sub: "-", ast.Div: "/", ast.FloorDiv: "//", ast.Mod: "%",
+              ast.Pow: "**", ast.Mult: "*"}
+"""The arithmetic operators, by operator class (``@`` left out)."""
 
 
 @record

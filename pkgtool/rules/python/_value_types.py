@@ -160,7 +160,7 @@ def _class_attributes(cls: ast.ClassDef) -> Iterator[str]:
 
 
 @per_package
-def _attribute_stores(package: Package) -> dict[str, list[tuple[ast.expr, Index]]] | None:
+def attribute_stores(package: Package) -> dict[str, list[tuple[ast.expr, Index]]] | None:
     """The attributes the installed modules store, by name, with the index of the module of
     each; a class body's attribute counts as a store of no known type. None when a module
     may store attributes unseen."""
@@ -181,7 +181,7 @@ def _attribute_stores(package: Package) -> dict[str, list[tuple[ast.expr, Index]
 
 def _attribute_type(package: Package, name: str) -> str | None:
     """The one type every store of an attribute ``name`` in the package gives, if any."""
-    stores = _attribute_stores(package)
+    stores = attribute_stores(package)
     return _one({_bound_type(node, index) for node, index in stores.get(name, ())}) \
         if stores else None
 

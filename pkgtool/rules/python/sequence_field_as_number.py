@@ -8,15 +8,11 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._field_reads import ARRAY_SEQUENCE, field_reads
+from pkgtool.rules.python._field_reads import ARITHMETIC, ARRAY_SEQUENCE, ORDER, field_reads
 from pkgtool.rules.python._message_instances import binding_counts
 from pkgtool.rules.python._value_types import NUMBER_TYPES, certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
-
-_ORDER = {ast.Lt: "<", ast.Gt: ">", ast.LtE: "<=", ast.GtE: ">="}
-_ARITHMETIC = {ast.Add: "+", ast.Sub: "-", ast.Div: "/", ast.FloorDiv: "//", ast.Mod: "%",
-               ast.Pow: "**", ast.Mult: "*"}
 
 
 def _sequence_reads(tree: ast.Module, index: Index, package: Package
@@ -53,10 +49,10 @@ def _misuse(read: ast.expr, package: Package, tree: ast.Module, index: Index
     parent = index.parents.get(id(read))
     if isinstance(parent, ast.Compare) and len(parent.ops) == 1:
         other = parent.comparators[0] if parent.left is read else parent.left
-        symbol = _ORDER.get(type(parent.ops[0]))
+        symbol = ORDER.get(type(parent.ops[0]))
     elif isinstance(parent, ast.BinOp):
         other = parent.right if parent.left is read else parent.left
-        symbol = _ARITHMETIC.get(type(parent.op))
+        symbol = ARITHMETIC.get(type(parent.op))
     else:
         return None
     kind = certain_type(other, package, tree, index) if symbol else None

@@ -639,3 +639,19 @@ def subscription_topic_misspelt(root: Path) -> None:
          "self.declare_parameter('topic', 'chater')")
     edit(root, "config/params.yaml", "listener:\n  ros__parameters:\n    topic: chatter",
          "listener:\n  ros__parameters:\n    topic: chater")
+
+
+@case("PYC045", "simple_avoidance_agent/scan_agent.py", "if twist.angular > 1.0:",
+      base="simple_avoidance_agent")
+def nested_message_compared_with_a_number(root: Path) -> None:
+    edit(root, "simple_avoidance_agent/scan_agent.py",
+         "        self.publisher_.publish(twist)\n",
+         "        if twist.angular > 1.0:\n            return\n"
+         "        self.publisher_.publish(twist)\n")
+
+
+@case("PYC046", "joint_controller_agent/humanoid_joint_controller.py",
+      "response = future.result", base="joint_controller_agent")
+def future_result_taken_without_a_call(root: Path) -> None:
+    edit(root, "joint_controller_agent/humanoid_joint_controller.py",
+         "        response = future.result()\n", "        response = future.result\n")
