@@ -13,7 +13,8 @@ import re
 from pkgtool.knowledge.message_fields import Message, nested_message
 from pkgtool.model.package import Package
 from pkgtool.records import record
-from pkgtool.rules.python._message_instances import kept, known_messages, message_instances
+from pkgtool.rules.python._message_instances import kept, known_messages
+from pkgtool.rules.python._messages import message_instances
 from pkgtool.rules.syntax_trees import Index
 
 _PYTHON_TYPES = ((re.compile(r"float|double"), "float"),
@@ -55,7 +56,7 @@ def field_reads(tree: ast.Module, index: Index, package: Package) -> dict[int, F
 
 def _field_reads(tree: ast.Module, index: Index, package: Package) -> dict[int, FieldRead]:
     found: dict[int, FieldRead] = {}
-    for instance in message_instances(tree, index, known_messages(package, index)):
+    for instance in message_instances(package, tree, index, known_messages(package, index)):
         for use in instance.uses:
             read = _read(instance.message, use, index)
             if read is not None:

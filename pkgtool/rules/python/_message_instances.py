@@ -284,17 +284,6 @@ def _assigned(target: ast.Attribute, index: Index, make: Maker[T]) -> T | None:
     return None
 
 
-def message_instances(tree: ast.Module, index: Index, known: Known) -> list[Instance[Message]]:
-    """The local variables and ``self.x`` attributes that hold a fresh known message
-    (``known`` must be :func:`known_messages` of the tree's package: the result is kept
-    with the tree)."""
-    def make(call: ast.Call) -> Message | None:
-        return known(call.func)
-    return kept(tree, "messages", lambda: [*local_instances(tree, index, make),
-                                           *attribute_instances(tree, index, make),
-                                           *callback_instances(tree, index, known)])
-
-
 Function = ast.FunctionDef | ast.AsyncFunctionDef
 _Parameter = tuple[int, int, str | None]
 """A callback parameter: (id of the function, position among its parameters after any
@@ -314,18 +303,18 @@ def _registrations(index: Index, known: Known
         elif method == "create_service":
             kind = argument(call, PARAMETERS[method], "srv_type")
             callback = argument(call, PARAMETERS[method], "callback")
-            parts = [(_companion(kind, "Request"), None), (_companion(kind, "Response"), None)]
+            parts = [(companion(kind, "Request"), None), (companion(kind, "Response"), None)]
         elif index.qualified(call.func) in ACTION_SERVERS:
             kind = argument(call, ACTION_SERVER_CALLBACKS[0], "action_type")
             callback = argument(call, ACTION_SERVER_CALLBACKS[0], "execute_callback")
-            parts = [(_companion(kind, "Goal"), "request")]
+            parts = [(companion(kind, "Goal"), "request")]
         else:
             continue
         if callback is not None:
             yield callback, [(known(e) if e is not None else None, via) for e, via in parts]
 
 
-def _companion(kind: ast.expr | None, name: str) -> ast.expr | None:
+def companion(kind: ast.expr | None, name: str) -> ast.expr | None:
     """``kind.<name>`` (``Trigger.Request``), or None without a ``kind``."""
     return None if kind is None else ast.Attribute(value=kind, attr=name, ctx=ast.Load())
 

@@ -11,7 +11,8 @@ from pkgtool.knowledge.message_fields import MESSAGE_TYPE, Message, nested_messa
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._field_reads import ARRAY_SEQUENCE
-from pkgtool.rules.python._message_instances import Instance, known_messages, message_instances
+from pkgtool.rules.python._message_instances import Instance, known_messages
+from pkgtool.rules.python._messages import message_instances
 from pkgtool.rules.python._value_types import certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
@@ -145,7 +146,7 @@ def field_value_type(package: Package) -> Iterator[Hit]:
     for module, tree, index in installed_trees(package):
         known = known_messages(package, index)
         found: list[tuple[str, str, ast.expr]] = []
-        for instance in message_instances(tree, index, known):
+        for instance in message_instances(package, tree, index, known):
             found.extend(_stores(instance, index))
         for call in index.calls:
             message = known(call.func)

@@ -13,7 +13,8 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import node_subclasses
 from pkgtool.rules.python._field_reads import field_reads
-from pkgtool.rules.python._message_instances import known_messages, message_instances
+from pkgtool.rules.python._message_instances import known_messages
+from pkgtool.rules.python._messages import message_instances
 from pkgtool.rules.python._value_types import NUMBER_TYPES, certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
@@ -118,7 +119,7 @@ def _typer(package: Package, tree: ast.Module, index: Index) -> Callable[[ast.ex
         nonlocal known
         if known is None:
             known = {id(r): f"a `{instance.message.name}` message"
-                     for instance in message_instances(tree, index,
+                     for instance in message_instances(package, tree, index,
                                                        known_messages(package, index))
                      for r in instance.refs}
             known.update({key: _a(read.python_type) for key, read in

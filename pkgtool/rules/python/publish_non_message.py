@@ -16,8 +16,8 @@ from pkgtool.rules.node_api import (ACTION_CLIENTS, PARAMETERS, argument, litera
                                     unpacks)
 from pkgtool.rules.python._callbacks import execute_callbacks
 from pkgtool.rules.python._message_instances import (Instance, Known, attribute_instances,
-                                                     known_messages, local_instances,
-                                                     message_instances)
+                                                     known_messages, local_instances)
+from pkgtool.rules.python._messages import message_instances
 from pkgtool.rules.python._value_types import certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
@@ -171,7 +171,7 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
         make = _publisher_maker(known, index)
         publishers = [*local_instances(tree, index, make),
                       *attribute_instances(tree, index, make)]
-        messages = message_instances(tree, index, known) if publishers else []
+        messages = message_instances(package, tree, index, known) if publishers else []
         for publisher in publishers:
             for ref in publisher.refs:
                 extra = _second(ref, index) if publisher.message.sends == "message" else None

@@ -16,8 +16,8 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import dead_lines, depends_on_ros_distro
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
-from pkgtool.rules.python._message_instances import (Instance, Known, known_messages,
-                                                     message_instances)
+from pkgtool.rules.python._message_instances import Instance, Known, known_messages
+from pkgtool.rules.python._messages import message_instances
 from pkgtool.rules.syntax_trees import Index, installed_trees
 from pkgtool.rules.registry import rule
 
@@ -93,7 +93,10 @@ def unknown_message_field(package: Package) -> Iterator[Hit]:
     the message of `create_subscription` (not `raw=True`), the request and response of
     `create_service`, the goal of an `ActionServer` (`goal_handle.request`), when the callback
     is a plain method of the registering class (`self.on_message`) or a plain function bound
-    once in the module and never rebinds the parameter; fields of fields are followed while
+    once in the module and never rebinds the parameter, or as a service's response:
+    `future.result()` (used directly, or assigned as above) of a future that is certainly a
+    client's `call_async()` (or the future a done callback registered on one gets) of a client
+    certainly made by `create_client()` for a known service; fields of fields are followed while
     their message class is certain (not after `msg.pose = ...`). Names starting with `_`,
     constants (`GoalStatus.STATUS_SUCCEEDED`), code inside `try` blocks that catch
     `AttributeError`, names the module passes to `hasattr` and annotations Python never
@@ -153,7 +156,7 @@ def unknown_message_field(package: Package) -> Iterator[Hit]:
                           f"{owner} has no attribute `{node.attr}`{meant}: reading "
                           f"`{ast.unparse(node)}` raises AttributeError")
         places: dict[tuple[str, str], list[tuple[ast.Attribute, Message]]] = {}
-        for instance in message_instances(tree, index, known):
+        for instance in message_instances(package, tree, index, known):
             for node, message in _wrong_attributes(instance, index, probed):
                 if not _within(node, silent):
                     places.setdefault((message.name, node.attr), []).append((node, message))

@@ -655,3 +655,10 @@ def nested_message_compared_with_a_number(root: Path) -> None:
 def future_result_taken_without_a_call(root: Path) -> None:
     edit(root, "joint_controller_agent/humanoid_joint_controller.py",
          "        response = future.result()\n", "        response = future.result\n")
+
+
+@case("PYC019", "joint_controller_agent/humanoid_joint_controller.py",
+      "return response.sucess", base="joint_controller_agent")
+def misspelt_field_of_a_service_response(root: Path) -> None:
+    edit(root, "joint_controller_agent/humanoid_joint_controller.py",
+         "        return response.success\n", "        return response.sucess\n")
