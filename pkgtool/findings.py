@@ -52,7 +52,9 @@ class Finding:
     ``root/span.path`` relative to the current directory. ``internal`` marks a rule that
     raised instead of checking (the message names it); lint then exits with 3. ``related``
     are the hit's other places of the same mistake; ``manual`` that the rule's fixer makes no fix
-    for it (:mod:`pkgtool.fix.offers`): only the user can mend it.
+    for it (:mod:`pkgtool.fix.offers`): only the user can mend it; ``unsafe_fix`` that the fixes
+    it makes for it are all unsafe (only ``--unsafe-fixes`` applies them), though the fixer's
+    others may be safe.
     """
 
     code: str
@@ -65,6 +67,7 @@ class Finding:
     internal: bool = False
     related: tuple[Span, ...] = ()
     manual: bool = False
+    unsafe_fix: bool = False
 
     @property
     def sort_key(self) -> tuple[str, str, int, int, str]:

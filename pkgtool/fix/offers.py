@@ -19,13 +19,19 @@ from pkgtool.rules._index import FIXED
 
 
 def offers_marked(package: Package, findings: list[Finding]) -> list[Finding]:
-    """``findings`` in order, those their fixer makes no fix for marked ``manual``."""
+    """``findings`` in order, those their fixer makes no fix for marked ``manual``, those it
+    makes only unsafe fixes for (a fixer whose other fixes are safe) ``unsafe_fix``."""
     if not any(_candidate(f) for f in findings):
         return findings
     table = fixers()
-    return [replace(finding, manual=True) if _candidate(finding) and
-            not _offered(table[finding.code], package, finding) else finding
-            for finding in findings]
+    return [_marked(finding, _offered(table[finding.code], package, finding))
+            if _candidate(finding) else finding for finding in findings]
+
+
+def _marked(finding: Finding, offered: list[Fix]) -> Finding:
+    if not offered:
+        return replace(finding, manual=True)
+    return replace(finding, unsafe_fix=True) if not any(f.safe for f in offered) else finding
 
 
 def _candidate(finding: Finding) -> bool:
@@ -33,9 +39,9 @@ def _candidate(finding: Finding) -> bool:
     return finding.code in FIXED and not finding.manual and not finding.internal
 
 
-def _offered(fixer: Fixer, package: Package, finding: Finding) -> bool:
-    """True when ``fixer`` makes at least one fix for ``finding`` alone."""
+def _offered(fixer: Fixer, package: Package, finding: Finding) -> list[Fix]:
+    """The fixes ``fixer`` makes for ``finding`` alone."""
     try:
-        return any(isinstance(offer, Fix) for offer in fixer.make(package, [finding]))
+        return [offer for offer in fixer.make(package, [finding]) if isinstance(offer, Fix)]
     except Exception:  # noqa: BLE001 - a fixer that fails on this package offers nothing
-        return False
+        return []

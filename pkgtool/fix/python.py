@@ -1,6 +1,6 @@
 """Fixers of Python code: a standard module never imported, a called callback, a misspelt
 logger method, an int for a float field, rclpy's Time for a message, a ``Parameter`` for its
-value, a path missing its ``/``, a method used without ``()``."""
+value, a path missing its ``/``, a method used without ``()``, ``=+`` for ``+=``."""
 
 from __future__ import annotations
 
@@ -161,17 +161,29 @@ def _after_folder(doc: PyDoc, node: ast.expr, left: ast.expr) -> int | None:
 @fixer("PYC046", "Call the method used without `()`")
 def method_call(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Append ``()`` to the method PYC046 reports (``future.result`` becomes
-    ``future.result()``). Safe where the code raised AttributeError (``future.result.sum``) or
-    did nothing; where the method was tested (always true) or kept as a value, calling it
-    changes what runs: unsafe."""
+    ``future.result()``). Safe where the code raised AttributeError (``future.result.sum``);
+    where the method was tested (always true), kept as a value or named alone (the statement
+    did nothing), calling it changes what runs: unsafe."""
     for doc, finding, nodes in python_nodes(package, findings):
         method = next((n for n in nodes if isinstance(n, (ast.Attribute, ast.Name)) and
                        finding.message.startswith(f"`{ast.unparse(n)}` ")), None)
         if method is not None:
-            raised = "raises AttributeError" in finding.message or \
-                "does nothing" in finding.message
+            raised = "raises AttributeError" in finding.message
             yield Fix(f"Call `{ast.unparse(method)}()`",
                       (_insert(doc, doc.end(method), "()"),), safe=raised)
+
+
+@fixer("PYC047", "Write the augmented assignment `=+` stands for", safe=False)
+def augmented_assignment(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Swap ``=+`` to ``+=`` (``=-`` to ``-=``) in the assignment PYC047 reports. Unsafe:
+    the value was assigned before, it is added now (and a name first bound there raises)."""
+    for doc, _, nodes in python_nodes(package, findings):
+        assign = next((n for n in nodes if isinstance(n, ast.Assign)), None)
+        at = doc.start(assign.value) - 1 if assign is not None else -1
+        if assign is not None and doc.text[at:at + 2] in ("=+", "=-"):
+            sign = doc.text[at + 1]
+            yield Fix(f"Write `{sign}=`", (Edit(doc.source.path, at, at + 2, f"{sign}="),),
+                      safe=False)
 
 
 @fixer("PYC019", "Write the field the misspelt one is close to", safe=False)

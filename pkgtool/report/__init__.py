@@ -44,6 +44,14 @@ class ReportContext:
     """Rule codes ``lint --fix`` can repair, each mapped to whether the fix is safe."""
 
 
+def fix_safety(finding: Finding, fixable: Mapping[str, bool]) -> bool | None:
+    """Whether ``lint --fix`` repairs ``finding``: True (a safe fix), False (only with
+    ``--unsafe-fixes``) or None (no fixer, or it makes no fix for this finding)."""
+    if finding.manual or finding.code not in fixable:
+        return None
+    return fixable[finding.code] and not finding.unsafe_fix
+
+
 def render(fmt: str, findings: Sequence[Finding], *, context: ReportContext) -> str:
     """Render ``findings`` in format ``fmt`` (one of :data:`FORMATS`)."""
     if fmt not in FORMATS:

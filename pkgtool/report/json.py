@@ -11,7 +11,7 @@ from collections.abc import Mapping, Sequence
 
 from pkgtool import __version__
 from pkgtool.findings import Finding
-from pkgtool.report import ReportContext, counts, display_path
+from pkgtool.report import ReportContext, counts, display_path, fix_safety
 from pkgtool.report.untrusted import block
 
 SCHEMA_VERSION = 1
@@ -46,7 +46,7 @@ def finding_dict(finding: Finding, fixable: Mapping[str, bool]) -> dict[str, obj
     it, ``safe``, ``unsafe`` (only with ``--unsafe-fixes``) or null. ``related`` lists the
     other places of the same mistake.
     """
-    safe = None if finding.manual else fixable.get(finding.code)
+    safe = fix_safety(finding, fixable)
     return {
         "rule": finding.code,
         "severity": finding.severity.value,

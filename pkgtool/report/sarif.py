@@ -12,7 +12,7 @@ from urllib.parse import quote
 from pkgtool import __version__
 from pkgtool.findings import Finding, Severity
 from pkgtool.model.span import Span
-from pkgtool.report import ReportContext, display_path
+from pkgtool.report import ReportContext, display_path, fix_safety
 from pkgtool.report.json import dumps
 from pkgtool.rules.registry import FAMILIES, Rule
 
@@ -61,8 +61,9 @@ def _result(finding: Finding, index: dict[str, int], fixable: Mapping[str, bool]
             ) -> dict[str, object]:
     location = _location(finding, finding.span)
     properties = {"package": finding.package}
-    if finding.code in fixable and not finding.manual:
-        properties["fixable"] = "safe" if fixable[finding.code] else "unsafe"
+    safe = fix_safety(finding, fixable)
+    if safe is not None:
+        properties["fixable"] = "safe" if safe else "unsafe"
     result: dict[str, object] = {
         "ruleId": finding.code,
         "level": LEVELS[finding.severity],

@@ -9,7 +9,7 @@ from __future__ import annotations
 from collections.abc import Mapping, Sequence
 
 from pkgtool.findings import Finding
-from pkgtool.report import ReportContext, counts, display_path
+from pkgtool.report import ReportContext, counts, display_path, fix_safety
 from pkgtool.report.untrusted import line
 
 _STYLES = {"error": "bold red", "warning": "yellow", "info": "blue"}
@@ -34,15 +34,13 @@ def finding_lines(finding: Finding) -> str:
 def _mark(finding: Finding, fixable: Mapping[str, bool]) -> str:
     """`` [*]`` after a code ``--fix`` repairs, `` [-]`` for an ``--unsafe-fixes`` one;
     nothing for a finding its fixer will refuse (``manual``)."""
-    if finding.code not in fixable or finding.manual:
-        return ""
-    return " [*]" if fixable[finding.code] else " [-]"
+    safe = fix_safety(finding, fixable)
+    return "" if safe is None else " [*]" if safe else " [-]"
 
 
 def _fixable_note(findings: Sequence[Finding], fixable: Mapping[str, bool]) -> str:
-    offered = [f for f in findings if not f.manual]
-    safe = sum(1 for f in offered if fixable.get(f.code))
-    unsafe = sum(1 for f in offered if fixable.get(f.code) is False)
+    kinds = [fix_safety(f, fixable) for f in findings]
+    safe, unsafe = kinds.count(True), kinds.count(False)
     parts = [f"[*] {safe} fixable with `--fix`"] if safe else []
     if unsafe:
         parts.append(f"[-] {unsafe} more with `--fix --unsafe-fixes`")

@@ -129,6 +129,8 @@ RULES = {
     "PYC044": ("misspelled-topic", "warning", True, "python.misspelled_topic"),
     "PYC045": ("message-field-as-number", "error", True, "python.message_field_as_number"),
     "PYC046": ("method-not-called", "error", True, "python.method_not_called"),
+    "PYC047": ("inverted-augmented-assignment", "warning", True,
+               "python.inverted_augmented_assignment"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),
@@ -159,6 +161,6 @@ FIXED = frozenset({
     "DEP002", "DEP003", "DEP006", "DEP007", "DEP008", "ENT002", "ENT003", "ENT005", "LCH001",
     "LCH002", "LCH003", "LCH005", "LCH010", "MAN004", "MAN012", "MAN013", "MAN015", "MAN017",
     "MAN018", "MAN019", "MAN021", "MAN024", "PYC001", "PYC013", "PYC014", "PYC016", "PYC019",
-    "PYC025", "PYC031", "PYC032", "PYC046", "SET003", "SET004", "SET005", "SET006", "SET007",
-    "SET008", "SET009", "SET010",
+    "PYC025", "PYC031", "PYC032", "PYC046", "PYC047", "SET003", "SET004", "SET005", "SET006",
+    "SET007", "SET008", "SET009", "SET010",
 })

@@ -12,7 +12,7 @@ from pkgtool.model.span import Span
 from pkgtool.rules.node_api import ACTION_CLIENTS
 from pkgtool.rules.python._assignments import assigned_values, done_callback_futures
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
 METHODS = {"future": frozenset({"result", "done", "exception", "cancelled"}),
            "client": frozenset({"service_is_ready", "wait_for_service"}),
@@ -22,6 +22,14 @@ METHODS = {"future": frozenset({"result", "done", "exception", "cancelled"}),
 _FUTURE_MAKERS = frozenset({"call_async", "send_goal_async", "get_result_async",
                             "cancel_goal_async"})
 _OK = frozenset({"rclpy.ok", "rclpy.utilities.ok"})
+STATEMENT_METHODS = frozenset({
+    "cancel", "reset", "shutdown", "try_shutdown", "init", "spin", "spin_once",
+    "spin_until_future_complete", "publish", "publish_feedback", "succeed", "abort", "canceled",
+    "add_node", "remove_node", "sleep", "wait_for_service", "wait_for_server",
+    "declare_parameter", "declare_parameters", "undeclare_parameter", "set_parameters",
+    "add_done_callback"})
+"""Methods of rclpy's objects and functions of rclpy that code calls for what they do: named
+alone as a statement (``self.timer.cancel``), whatever the object, they do nothing."""
 _TESTS = (ast.If, ast.While, ast.IfExp, ast.Assert)
 
 
@@ -77,6 +85,20 @@ def _uncalled(node: ast.expr, index: Index) -> bool:
         any(k.value is node for k in parent.keywords)))
 
 
+def _named_alone(node: ast.Attribute, index: Index) -> bool:
+    """True for a statement that only names one of :data:`STATEMENT_METHODS` (or a
+    ``destroy_*`` method), outside ``try`` and ``with`` blocks (a test expecting the
+    AttributeError)."""
+    parent = index.parents.get(id(node))
+    if not isinstance(parent, ast.Expr) or not (
+            node.attr in STATEMENT_METHODS or node.attr.startswith("destroy_")):
+        return False
+    around = index.parents.get(id(parent))
+    while around is not None and not isinstance(around, (ast.Try, ast.With, *FUNCTIONS)):
+        around = index.parents.get(id(around))
+    return not isinstance(around, (ast.Try, ast.With))
+
+
 def _uncalled_methods(package: Package, tree: ast.Module, index: Index
                       ) -> Iterator[tuple[ast.expr, str]]:
     """(node, kind of object) of the methods of :data:`METHODS` taken without a call, and
@@ -85,6 +107,9 @@ def _uncalled_methods(package: Package, tree: ast.Module, index: Index
     for node in index.attributes:
         if node.attr == "ok" and index.qualified(node) in _OK and _tested(node, index):
             yield node, "rclpy"
+        if _named_alone(node, index):
+            yield node, ""
+            continue
         if node.attr not in wanted or not _uncalled(node, index):
             continue
         kind = _kind(node.value, package, tree, index)
@@ -98,6 +123,8 @@ def _uncalled_methods(package: Package, tree: ast.Module, index: Index
 
 def _message(node: ast.expr, kind: str, index: Index) -> str:
     text = ast.unparse(node)
+    if not kind:
+        return f"`{text}` names a method without calling it: the statement does nothing"
     what = "a function" if kind == "rclpy" else f"a method of rclpy's {kind}"
     if _tested(node, index):
         return (f"`{text}` is {what}, tested without calling it: a function is always true, "
@@ -122,12 +149,16 @@ def method_not_called(package: Package) -> Iterator[Hit]:
     `server_is_ready` and `wait_for_server` of an action client, and `now` of
     `get_clock()`, taken without `()` (not when passed to a call: a callable given on
     purpose), and `rclpy.ok` tested without `()`. A local name or a node's `self.x` counts
-    when every assignment of it makes such an object (or None).
+    when every assignment of it makes such an object (or None). Also reports a statement that
+    only names a method code calls for what it does (`self.timer.cancel`, `node.destroy_node`,
+    `rclpy.shutdown`, `rate.sleep`, `publisher.publish`: see the list in the source), on any
+    object, outside `try` and `with` blocks.
 
     ## Why is this bad?
     Without `()` the code has the bound method, not its result: `future.result.sum` raises
     `AttributeError: 'builtin_function_or_method' object has no attribute 'sum'`, and a method
-    is always true, so `while rclpy.ok:` never ends and `if future.done:` always passes.
+    is always true, so `while rclpy.ok:` never ends and `if future.done:` always passes; a
+    method named alone is never run (the timer is never cancelled).
 
     ## Example
     ```python

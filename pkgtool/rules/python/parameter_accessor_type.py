@@ -48,6 +48,13 @@ def _missing_accessor(node: ast.Attribute, index: Index) -> str | None:
             name is not None:
         return (f"`{name}` is read with `.value()`: `value` is a property, calling the "
                 "parameter's value raises TypeError")
+    held = node.value
+    through = _self_read(held.value) if isinstance(held, ast.Attribute) and \
+        held.attr == "value" else None
+    if through is not None and (node.attr in _FIELDS or node.attr == "get_parameter_value"):
+        return (f"`{through}` is read with `.value.{node.attr}`: `.value` is already the "
+                f"parameter's value (a float, str, ...), which has no `{node.attr}`: it raises "
+                "AttributeError")
     if name is not None and node.attr not in _PARAMETER and not node.attr.startswith("_"):
         close = get_close_matches(node.attr, sorted(_PARAMETER), n=1)
         meant = f" (did you mean `{close[0]}`?)" if close else ""
@@ -83,7 +90,8 @@ def parameter_accessor_type(package: Package) -> Iterator[Hit]:
     are not judged. Also reports reads through an accessor that does not exist: a field
     `ParameterValue` has not (`.get_parameter_value().str_value`, `.int_value`), an
     attribute rclpy's `Parameter` has not (`self.get_parameter('x').values`) and
-    `self.get_parameter('x').value()`, which calls the value.
+    `self.get_parameter('x').value()`, which calls the value, and
+    `self.get_parameter('x').value.double_value`, which takes a field of the value.
 
     ## Why is this bad?
     `ParameterValue` has one field per type and only the declared type's is set: the others

@@ -662,3 +662,14 @@ def future_result_taken_without_a_call(root: Path) -> None:
 def misspelt_field_of_a_service_response(root: Path) -> None:
     edit(root, "joint_controller_agent/humanoid_joint_controller.py",
          "        return response.success\n", "        return response.sucess\n")
+
+
+@case("PYC047", TALKER, "self.count =+ 1")
+def counter_assigned_instead_of_incremented(root: Path) -> None:
+    edit(root, TALKER, "        self.count += 1\n", "        self.count =+ 1\n")
+
+
+@case("PYC028", TALKER, "self.get_parameter('period').value.double_value")
+def field_taken_of_a_parameter_value(root: Path) -> None:
+    edit(root, TALKER, "self.get_parameter('period').value",
+         "self.get_parameter('period').value.double_value")
