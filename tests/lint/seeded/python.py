@@ -673,3 +673,9 @@ def counter_assigned_instead_of_incremented(root: Path) -> None:
 def field_taken_of_a_parameter_value(root: Path) -> None:
     edit(root, TALKER, "self.get_parameter('period').value",
          "self.get_parameter('period').value.double_value")
+
+
+@case("PYC048", TALKER, "self.publish(msg)")
+def own_method_called_with_an_argument_it_does_not_take(root: Path) -> None:
+    edit(root, TALKER, "        self.count += 1\n",
+         "        self.count += 1\n        self.publish(msg)\n")

@@ -1,0 +1,117 @@
+"""The functions of a module that a call certainly runs (PYC013, PYC048), and how a call's
+arguments bind to their parameters.
+
+``self.name(...)`` in a plain method of a class runs the class's own ``def name`` when the
+class body binds ``name`` once and no ``self.name`` is ever assigned; ``name(...)`` runs the
+module's top-level ``def name`` (or constructs its ``class name``) when no scope around the
+call binds ``name`` and the module binds it once.
+"""
+
+from __future__ import annotations
+
+import ast
+
+from pkgtool.model.ast_nodes import subtree
+from pkgtool.rules.scopes import bound_names, scope_bindings
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index
+
+Function = ast.FunctionDef | ast.AsyncFunctionDef
+
+
+def _functions_around(node: ast.AST, index: Index) -> list[Function]:
+    """The functions around ``node``, innermost first (up to its class or the module)."""
+    found = []
+    function = index.enclosing_function(node)
+    while function is not None:
+        found.append(function)
+        function = index.enclosing_function(function)
+    return found
+
+
+def defined_once(body: list[ast.stmt], name: str, kind: type = ast.FunctionDef
+                 ) -> ast.AST | None:
+    """The ``def name`` (or other definition of ``kind``) of ``body``, when nothing else
+    there binds ``name``."""
+    defs = [s for s in body if isinstance(s, (*FUNCTIONS, ast.ClassDef)) and s.name == name]
+    if len(defs) != 1 or bound_names(body)[name] != 1 or not isinstance(defs[0], kind):
+        return None
+    return defs[0]
+
+
+def own_method(call: ast.Call, index: Index) -> tuple[ast.FunctionDef, ast.ClassDef] | None:
+    """The method ``self.name()`` calls, found in the caller's class, when nothing rebinds it;
+    with that class."""
+    func = call.func
+    cls = index.enclosing_class(call)
+    outer = _functions_around(call, index)[-1:] if cls is not None else []
+    if not outer or not isinstance(func, ast.Attribute) or not isinstance(func.value, ast.Name) \
+            or index.parents.get(id(outer[0])) is not cls or outer[0].decorator_list:
+        return None
+    positional = [*outer[0].args.posonlyargs, *outer[0].args.args]
+    if not positional or positional[0].arg != func.value.id:
+        return None
+    assert cls is not None
+    assigned = any(isinstance(n, ast.Attribute) and n.attr == func.attr and
+                   not isinstance(n.ctx, ast.Load) for n in subtree(cls))
+    method = None if assigned else defined_once(cls.body, func.attr)
+    return (method, cls) if isinstance(method, ast.FunctionDef) else None
+
+
+def own_definition(call: ast.Call, index: Index, tree: ast.Module,
+                   kind: type = ast.FunctionDef) -> ast.AST | None:
+    """The module-level function (or class, by ``kind``) ``name()`` calls, when no scope
+    around the call rebinds it."""
+    func = call.func
+    if not isinstance(func, ast.Name) or any(
+            scope_bindings(f)[func.id] for f in _functions_around(call, index)):
+        return None
+    cls = index.enclosing_class(call)
+    if cls is not None and scope_bindings(cls)[func.id]:
+        return None
+    return defined_once(tree.body, func.id, kind)
+
+
+def unpacks(call: ast.Call) -> bool:
+    """True when the call passes ``*args`` or ``**kwargs``."""
+    return any(isinstance(a, ast.Starred) for a in call.args) or \
+        any(k.arg is None for k in call.keywords)
+
+
+def missing_parameter(call: ast.Call, function: Function, skipped: int) -> str | None:
+    """The first required parameter of ``function`` that ``call`` gives no value for (after
+    the ``skipped`` receiver), when the call passes no ``*args``/``**kwargs``."""
+    if unpacks(call):
+        return None
+    arguments = function.args
+    positional = [*arguments.posonlyargs, *arguments.args][skipped:]
+    required = positional[:len(positional) - len(arguments.defaults)]
+    given = {k.arg for k in call.keywords}
+    found = next((a.arg for a in required[len(call.args):] if a.arg not in given), None)
+    if found is not None:
+        return found
+    return next((a.arg for a, default in zip(arguments.kwonlyargs, arguments.kw_defaults)
+                 if default is None and a.arg not in given), None)
+
+
+def binding_error(call: ast.Call, function: Function, skipped: int) -> str | None:
+    """What Python's TypeError would say about binding ``call``'s arguments to ``function``
+    (after the ``skipped`` receiver), in words of our own; None when they bind (or the call
+    passes ``*args``/``**kwargs``)."""
+    if unpacks(call):
+        return None
+    arguments = function.args
+    positional = [*arguments.posonlyargs, *arguments.args][skipped:]
+    if len(call.args) > len(positional) and arguments.vararg is None:
+        most = len(positional)
+        return (f"it gives {len(call.args)} positional argument{'s' * (len(call.args) != 1)} "
+                f"where the function takes {most or 'none'}")
+    names = {a.arg for a in positional[max(0, len(arguments.posonlyargs) - skipped):]} | \
+        {a.arg for a in arguments.kwonlyargs}
+    taken = {a.arg for a in positional[:len(call.args)]}
+    for keyword in call.keywords:
+        if keyword.arg in taken:
+            return f"it gives `{keyword.arg}` by position and again by keyword"
+        if keyword.arg not in names and arguments.kwarg is None:
+            return f"the function has no parameter `{keyword.arg}`"
+    missing = missing_parameter(call, function, skipped)
+    return f"it leaves out `{missing}`, which the function requires" if missing else None

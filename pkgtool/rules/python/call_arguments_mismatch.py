@@ -1,0 +1,112 @@
+"""PYC048: a call of a function, method or class of the module with arguments it cannot bind."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.node_api import NODE_CLASSES
+from pkgtool.rules.python._own_callees import (binding_error, defined_once, own_definition,
+                                               own_method)
+from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import Index, installed_trees
+
+
+def _subclassed(package: Package) -> frozenset[str]:
+    """The names the installed modules' classes derive from (``Base`` of ``class A(Base)``)."""
+    return frozenset(base.id if isinstance(base, ast.Name) else base.attr
+                     for _, _, index in installed_trees(package) for cls in index.classes
+                     for base in cls.bases if isinstance(base, (ast.Name, ast.Attribute)))
+
+
+def _plain_class(cls: ast.ClassDef, index: Index) -> bool:
+    """True for a class without decorators, metaclass or ``__new__``, deriving from nothing
+    or from rclpy's node classes alone: its own ``__init__`` takes the constructor's
+    arguments."""
+    return not cls.decorator_list and not cls.keywords and \
+        all(index.qualified(b) in NODE_CLASSES for b in cls.bases) and \
+        not any(isinstance(s, ast.FunctionDef) and s.name == "__new__" for s in cls.body)
+
+
+def _callee(call: ast.Call, index: Index, tree: ast.Module, subclassed: frozenset[str]
+            ) -> tuple[ast.FunctionDef, int, str] | None:
+    """The function ``call`` certainly runs, the receiver parameters it skips, and how to name
+    it: a method of the caller's own class (when no class derives from that class), a
+    function of the module, the ``__init__`` of a class of the module."""
+    method = own_method(call, index)
+    if method is not None:
+        function, cls = method
+        if cls.name in subclassed or function.decorator_list or not _plain_class(cls, index):
+            return None
+        return function, 1, f"{cls.name}.{function.name}"
+    found = own_definition(call, index, tree, (ast.FunctionDef, ast.ClassDef))
+    if isinstance(found, ast.FunctionDef):
+        return (found, 0, found.name) if not found.decorator_list else None
+    if not isinstance(found, ast.ClassDef) or not _plain_class(found, index):
+        return None
+    init = defined_once(found.body, "__init__")
+    if not isinstance(init, ast.FunctionDef) or init.decorator_list:
+        return None
+    return init, 1, f"{found.name}.__init__"
+
+
+def _signature(function: ast.FunctionDef) -> str:
+    """``name(self, a, b=1, *, c)`` as written (defaults shown as ``=...``)."""
+    arguments = ast.unparse(function.args)
+    return f"{function.name}({arguments})"
+
+
+@rule("PYC048", "call-arguments-mismatch", Severity.ERROR,
+      fix="Pass what the function takes, or change its parameters")
+def call_arguments_mismatch(package: Package) -> Iterator[Hit]:
+    """A function, method or class of the module is called with arguments it cannot take.
+
+    ## What it does
+    Reports a call that gives more positional arguments than the function takes, leaves out
+    a parameter it requires, gives one twice (by position and by keyword) or names a keyword
+    it has no parameter for, where the function is certainly the module's own: a plain
+    function of the module (`tick(...)`), a plain method of the caller's own class
+    (`self.publish(...)`, when no class derives from that class and nothing assigns
+    `self.publish`), or the `__init__` of a class of the module deriving from nothing or
+    from rclpy's node classes alone (`Talker(...)`). Decorated functions and classes, calls
+    passing `*args` or `**kwargs`, and names any scope around the call rebinds are left
+    alone.
+
+    ## Why is this bad?
+    Python refuses the call with `TypeError` (`publish() takes 1 positional argument but 2
+    were given`) when the line runs: in a callback, the node dies on the first message or
+    timer tick; in `main()`, at start-up.
+
+    ## Example
+    ```python
+    class Talker(Node):
+        def __init__(self):
+            super().__init__('talker')
+
+    def main():
+        node = Talker('talker')
+    ```
+
+    ## Use instead
+    ```python
+    def main():
+        node = Talker()
+    ```
+    """
+    subclassed: frozenset[str] | None = None
+    for module, tree, index in installed_trees(package):
+        for call in index.calls:
+            if not isinstance(call.func, (ast.Name, ast.Attribute)):
+                continue
+            if subclassed is None:
+                subclassed = _subclassed(package)
+            callee = _callee(call, index, tree, subclassed)
+            error = binding_error(call, callee[0], callee[1]) if callee else None
+            if error is not None:
+                assert callee is not None
+                yield Hit(Span(module.path, call.lineno, call.col_offset + 1),
+                          f"`{ast.unparse(call)}` cannot call `{callee[2]}` "
+                          f"(`{_signature(callee[0])}`): {error}, Python raises TypeError")
