@@ -132,6 +132,7 @@ RULES = {
     "PYC047": ("inverted-augmented-assignment", "warning", True,
                "python.inverted_augmented_assignment"),
     "PYC048": ("call-arguments-mismatch", "error", True, "python.call_arguments_mismatch"),
+    "PYC049": ("missing-rclpy-argument", "error", True, "python.missing_rclpy_argument"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

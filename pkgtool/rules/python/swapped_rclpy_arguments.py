@@ -29,7 +29,7 @@ def _method_of_class(value: ast.expr, call: ast.Call, index: Index) -> bool:
             for f in around.body)
 
 
-def _swapped(call: ast.Call, method: str, index: Index) -> tuple[ast.expr, str] | None:
+def swapped_argument(call: ast.Call, method: str, index: Index) -> tuple[ast.expr, str] | None:
     """The misplaced argument of ``call`` and what is wrong, or None."""
     first = call.args[0] if call.args else None
     second = call.args[1] if len(call.args) > 1 else None
@@ -86,7 +86,7 @@ def swapped_rclpy_arguments(package: Package) -> Iterator[Hit]:
                for function in index.functions}
     methods = {*PARAMETERS, "create_timer"} - defined
     for module, call, method, index in node_api_calls(package, methods):
-        found = None if unpacks(call) else _swapped(call, method, index)
+        found = None if unpacks(call) else swapped_argument(call, method, index)
         if found:
             yield Hit(Span(module.path, found[0].lineno, found[0].col_offset + 1),
                       f"`{method}()` has its arguments out of order: {found[1]}; rclpy raises "

@@ -679,3 +679,8 @@ def field_taken_of_a_parameter_value(root: Path) -> None:
 def own_method_called_with_an_argument_it_does_not_take(root: Path) -> None:
     edit(root, TALKER, "        self.count += 1\n",
          "        self.count += 1\n        self.publish(msg)\n")
+
+
+@case("PYC049", TALKER, "self.create_timer(period)")
+def timer_created_without_its_callback(root: Path) -> None:
+    edit(root, TALKER, "self.create_timer(period, self.publish)", "self.create_timer(period)")
