@@ -52,7 +52,7 @@ class NodeRef:
     with literal keys (nested dicts give dotted names), or an XML node's ``<param name=
     value=>`` children, each where its key is written, with the source of its value when
     that is a literal (``1.0``, ``'fast'``; for XML, the value launch makes of the text),
-    else None.
+    else None. ``output`` is the static ``output=`` (``'screen'``), when given.
     """
 
     package: str | None
@@ -73,6 +73,7 @@ class NodeRef:
     unused: bool = False
     remappings_not_pairs: Span | None = None
     inline_parameters: tuple[tuple[str, Span, str | None], ...] = ()
+    output: str | None = None
 
     @property
     def composable(self) -> bool:

@@ -277,6 +277,7 @@ class _Reader(ast.NodeVisitor):
             files, other = self._parameter_files(parameters)
             name, unknown = self._node_name(node)
             namespace = self.value(_keyword(node, "namespace"))
+            output = self.value(_keyword(node, "output"))
             remaps = not_pairs(_keyword(node, "remappings"), self._resolved)
             self.nodes.append(NodeRef(
                 package if isinstance(package, str) else None,
@@ -291,7 +292,8 @@ class _Reader(ast.NodeVisitor):
                 parameters_not_list=self._span(parameters) if self._not_a_list(parameters)
                 else None, unused=bool(self.dead),
                 remappings_not_pairs=remaps and self._span(remaps),
-                inline_parameters=tuple(self._inline_parameters(parameters))))
+                inline_parameters=tuple(self._inline_parameters(parameters)),
+                output=output if isinstance(output, str) else None))
         elif name == "ExecuteProcess":
             self._ros2_run(node)
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:

@@ -121,7 +121,8 @@ def _xml(path: str, text: str) -> Read | ParseProblem:
             nodes.append(_named(NodeRef(
                 _static(element.attribute("pkg")), _static(executable), element.span,
                 element.tag, tuple(k for k, _ in element.attributes),
-                inline_parameters=tuple(_xml_parameters(element.children))),
+                inline_parameters=tuple(_xml_parameters(element.children)),
+                output=_static(element.attribute("output"))),
                 element.attribute("name"), element.attribute("namespace"), froms, remaps,
                 arguments))
         values.extend((value, element.span) for _, value in element.attributes)
@@ -282,7 +283,7 @@ def _yaml_node(tag: object, mapping: object, path: str) -> NodeRef:
     names = tuple(str(k.value) for k, _ in mapping.value if isinstance(k, yaml.ScalarNode))
     node = NodeRef(_static(fields.get("pkg")), _static(fields[key] if key else None), span(tag),
                    str(tag.value), names, span(scalars["pkg"]) if "pkg" in scalars else None,
-                   span(scalars[key]) if key else None)
+                   span(scalars[key]) if key else None, output=_static(fields.get("output")))
     params = _yaml_params(mapping)
     remaps = [(r.get("from"), r.get("to")) for r in _yaml_entries(mapping, "remap")]
     return _named(node, fields.get("name"), fields.get("namespace"),

@@ -39,6 +39,8 @@ KEYWORDS["LifecycleNode"] = KEYWORDS["Node"]
 KEYWORDS["ComposableNodeContainer"] = KEYWORDS["Node"] | {"composable_node_descriptions"}
 """The keywords each Python node action of launch_ros takes (Foxy to Rolling: the union,
 read from the ros2/launch_ros and ros2/launch sources), besides :data:`REMOVED_KEYWORDS`."""
+OUTPUTS = frozenset({"screen", "log", "both", "own_log", "full"})
+"""The ``output`` configurations launch knows (launch.logging, Humble to Rolling)."""
 
 
 def _names(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
@@ -54,9 +56,20 @@ def _names(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
                "Use only letters, digits and underscores, and `/` between parts", node.span)
 
 
+def _output(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
+    """(message, fix, where) for a static ``output`` launch has no configuration for."""
+    if node.output is not None and node.output not in OUTPUTS:
+        close = get_close_matches(node.output, sorted(OUTPUTS), n=1)
+        yield (f"`output` of `{node.action}` is `{node.output}`, which launch does not know "
+               f"({', '.join(f'`{o}`' for o in sorted(OUTPUTS))}): it raises ValueError when "
+               "it starts the node", f"Write `{close[0]}`" if close else "Write `screen`",
+               node.span)
+
+
 def _problems(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
     """(message, fix, where) for each argument problem of one node action."""
     yield from _names(node)
+    yield from _output(node)
     given = set(node.arguments)
     if node.remappings_not_pairs:
         yield (f"`remappings=` of `{node.action}()` is not a list of (from, to) tuples",
@@ -112,7 +125,8 @@ def invalid_launch_node_argument(package: Package) -> Iterator[Hit]:
     kind of launch file, a node name or namespace written literally (`name='talker node'`,
     `namespace="my robot"`, a `__node:=` remapping) must be one rcl accepts: letters,
     digits and underscores (and `/` between the parts of a namespace), no part starting
-    with a digit.
+    with a digit, and a literal `output` must be one launch knows (`screen`, `log`, `both`,
+    `own_log`, `full`).
 
     ## Why is this bad?
     `ros2 launch` stops before starting anything: Python raises `TypeError: unexpected keyword

@@ -14,7 +14,7 @@ from pkgtool.model.span import Span
 from pkgtool.rules.node_api import (ACTION_PARAMETERS, ACTIONS, PARAMETERS, argument,
                                     node_api_calls)
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import installed_trees
+from pkgtool.rules.syntax_trees import Index, installed_trees
 
 _KIND = re.compile(r"(?P<package>\w+)\.(?P<kind>msg|srv|action)\.(?P<name>\w+)(?P<part>\.\w+)?")
 """An imported interface class: ``std_msgs.msg.String``, ``std_srvs.srv.Trigger.Request``."""
@@ -56,6 +56,14 @@ def _checked(package: Package) -> Iterator[tuple[str, ast.expr, str, str]]:
                     yield module.path, value, f"{ast.unparse(call.func)}()", "action_type"
 
 
+def _instance_published(value: ast.expr, api: str, index: Index, distro: str) -> bool:
+    """True for a publisher given a message built from its class (``String()``), not the
+    class (checked on Jazzy: creating works, publishing raises)."""
+    return api in ("create_publisher()", "create_lifecycle_publisher()") and \
+        isinstance(value, ast.Call) and isinstance(value.func, (ast.Name, ast.Attribute)) and \
+        _given(index.qualified(value.func) or "", distro) == "a message type"
+
+
 @rule("PYC035", "interface-of-another-kind", Severity.ERROR,
       fix="Give the kind of type the call takes: a message to publishers and subscriptions, "
           "the service itself (`Trigger`, not `Trigger.Request`) to services and clients")
@@ -75,7 +83,9 @@ def interface_of_another_kind(package: Package) -> Iterator[Hit]:
     ## Why is this bad?
     rclpy checks the type support when the entity is created and raises `RuntimeError: The
     service type provided is not valid (...), this might be a message or action` (or the
-    message version): the node dies in its constructor (checked on Jazzy).
+    message version): the node dies in its constructor (checked on Jazzy). A publisher given
+    a message instead of its class (`create_publisher(String(), ...)`) is created, but every
+    `publish()` raises `TypeError` (also reported).
 
     ## Example
     ```python
@@ -89,6 +99,13 @@ def interface_of_another_kind(package: Package) -> Iterator[Hit]:
     """
     indexes = {module.path: index for module, _, index in installed_trees(package)}
     for path, value, api, parameter in _checked(package):
+        if _instance_published(value, api, indexes[path], package.context.distro):
+            yield Hit(Span(path, value.lineno, value.col_offset + 1),
+                      f"`{api}` takes a message type but is given `{ast.unparse(value)}`, a "
+                      f"message: rclpy creates the publisher, then every `publish()` raises "
+                      f"TypeError (isinstance() arg 2 must be a type)",
+                      f"Give the class: `{ast.unparse(value.func)}`")  # type: ignore
+            continue
         qualified = indexes[path].qualified(value) if isinstance(
             value, (ast.Name, ast.Attribute)) else None
         given = _given(qualified, package.context.distro) if qualified else None

@@ -22,7 +22,8 @@ def invalid_ros_name(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Checks string literals given as node names (`super().__init__('name')` in a `Node`
-    subclass, `rclpy.create_node('name')`) against `rmw_validate_node_name`, and as topic or
+    subclass, `rclpy.create_node('name')`) against `rmw_validate_node_name`, the `namespace=`
+    given with them against the rules for namespaces, and as topic or
     service names (`create_publisher`, `create_subscription`, `create_service`,
     `create_client`) against `rcl_validate_topic_name`: no dashes, spaces or dots, no part
     starting with a digit, no empty part. Names with `{substitutions}` are not checked.
@@ -44,12 +45,21 @@ def invalid_ros_name(package: Package) -> Iterator[Hit]:
     ```
     """
     for module, _, index in installed_trees(package):
-        for expr in map(name_argument, node_constructions(index)):
+        for call in node_constructions(index):
+            expr = name_argument(call)
             problem = node_name_problem(expr.value) if isinstance(expr, ast.Constant) and \
                 isinstance(expr.value, str) else None
             if problem:
+                assert expr is not None
                 yield Hit(Span(module.path, expr.lineno, expr.col_offset + 1),
                           f"`{expr.value}` is not a valid node name: {problem}")
+            space = next((k.value for k in call.keywords if k.arg == "namespace"), None)
+            problem = topic_name_problem(space.value) if isinstance(space, ast.Constant) and \
+                isinstance(space.value, str) and space.value not in ("", "/") else None
+            if problem:
+                assert space is not None
+                yield Hit(Span(module.path, space.lineno, space.col_offset + 1),
+                          f"`{space.value}` is not a valid namespace: {problem}")
     for module, call, method, _ in node_api_calls(package):
         parameters = PARAMETERS[method]
         expr = argument(call, parameters, parameters[1])
