@@ -1,6 +1,7 @@
 """Fixers of Python code: a standard module never imported, a called callback, a misspelt
 logger method, an int for a float field, rclpy's Time for a message, a ``Parameter`` for its
-value, a path missing its ``/``, a method used without ``()``, ``=+`` for ``+=``."""
+value, a path missing its ``/``, a method used without ``()``, ``=+`` for ``+=``, a lone
+comparison."""
 
 from __future__ import annotations
 
@@ -14,7 +15,7 @@ from pkgtool.edit.pysource import PyDoc
 from pkgtool.findings import Finding
 from pkgtool.fix.common import python_nodes, renames
 from pkgtool.fix.registry import fixer
-from pkgtool.model.package import Package
+from pkgtool.model.package import Package, is_test_material
 from pkgtool.rules.python.field_value_type import TO_MSG, float_fix
 from pkgtool.rules.python.invalid_logger_call import ATTRIBUTES, meant_level
 from pkgtool.rules.python.path_without_separator import joins
@@ -184,6 +185,25 @@ def augmented_assignment(package: Package, findings: list[Finding]) -> Iterator[
             sign = doc.text[at + 1]
             yield Fix(f"Write `{sign}=`", (Edit(doc.source.path, at, at + 2, f"{sign}="),),
                       safe=False)
+
+
+@fixer("PYC050", "Assign, or assert in a test, what a lone comparison compares", safe=False)
+def lone_comparison(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Write ``=`` for the ``==`` of a comparison standing alone (``msg.data == 'hi'`` becomes
+    ``msg.data = 'hi'``), or put ``assert`` before it in a test. Unsafe: the statement did
+    nothing before; now it assigns, or the test can fail."""
+    for doc, _, nodes in python_nodes(package, findings):
+        compare = next((n for n in nodes if isinstance(n, ast.Compare)), None)
+        if compare is None:
+            continue
+        if is_test_material(doc.source.path):
+            yield Fix("Assert the comparison", (_insert(doc, doc.start(compare), "assert "),),
+                      safe=False)
+            continue
+        between = doc.text[doc.end(compare.left):doc.start(compare.comparators[0])]
+        at = doc.end(compare.left) + between.find("==")
+        if between.count("==") == 1 and "#" not in between:
+            yield Fix("Assign with `=`", (Edit(doc.source.path, at, at + 2, "="),), safe=False)
 
 
 @fixer("PYC019", "Write the field the misspelt one is close to", safe=False)

@@ -133,6 +133,7 @@ RULES = {
                "python.inverted_augmented_assignment"),
     "PYC048": ("call-arguments-mismatch", "error", True, "python.call_arguments_mismatch"),
     "PYC049": ("missing-rclpy-argument", "error", True, "python.missing_rclpy_argument"),
+    "PYC050": ("comparison-as-statement", "error", True, "python.comparison_as_statement"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),
@@ -163,6 +164,6 @@ FIXED = frozenset({
     "DEP002", "DEP003", "DEP006", "DEP007", "DEP008", "ENT002", "ENT003", "ENT005", "LCH001",
     "LCH002", "LCH003", "LCH005", "LCH010", "MAN004", "MAN012", "MAN013", "MAN015", "MAN017",
     "MAN018", "MAN019", "MAN021", "MAN024", "PYC001", "PYC013", "PYC014", "PYC016", "PYC019",
-    "PYC025", "PYC031", "PYC032", "PYC046", "PYC047", "SET003", "SET004", "SET005", "SET006",
-    "SET007", "SET008", "SET009", "SET010",
+    "PYC025", "PYC031", "PYC032", "PYC046", "PYC047", "PYC050", "SET003", "SET004", "SET005",
+    "SET006", "SET007", "SET008", "SET009", "SET010",
 })

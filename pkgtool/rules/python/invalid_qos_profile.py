@@ -44,6 +44,27 @@ def _service_literals(package: Package) -> Iterator[Hit]:
                   "'get_c_qos_profile'`", "Pass a `QoSProfile` (`QoSProfile(depth=10)`)")
 
 
+PRESETS = frozenset(f"rclpy.qos.qos_profile_{name}" for name in (
+    "action_status_default", "best_available", "default", "parameter_events", "parameters",
+    "sensor_data", "services_default", "system_default", "unknown"))
+"""rclpy's predefined profiles: ``QoSProfile`` objects (Humble to Rolling), not functions."""
+
+
+def _called_presets(package: Package) -> Iterator[Hit]:
+    """Calls of a predefined profile (``qos_profile_sensor_data()``): a ``QoSProfile`` object
+    is not callable."""
+    for module, _, index in installed_trees(package):
+        for call in index.calls:
+            name = index.qualified(call.func) if isinstance(
+                call.func, (ast.Name, ast.Attribute)) else None
+            if name in PRESETS:
+                text = ast.unparse(call.func)
+                yield Hit(Span(module.path, call.lineno, call.col_offset + 1),
+                          f"`{text}` is a `QoSProfile` object, not a function: calling it "
+                          f"raises `TypeError: 'QoSProfile' object is not callable`",
+                          f"Pass it without parentheses: `{text}`")
+
+
 def _without_depth(package: Package) -> Iterator[Hit]:
     """``QoSProfile(...)`` calls with no ``depth`` and a history that is not given or is
     ``KEEP_LAST``: rclpy raises InvalidQoSProfileException (Foxy to Rolling)."""
@@ -112,7 +133,9 @@ def invalid_qos_profile(package: Package) -> Iterator[Hit]:
     Also reports `QoSProfile(...)` built with keywords only and no `depth`, its history
     not given or `KEEP_LAST` (`QoSProfile(reliability=ReliabilityPolicy.BEST_EFFORT)`),
     and a `QoSProfile` keyword `history`, `reliability`, `durability`, `liveliness` or
-    `depth` given a literal other than an int (`reliability='reliable'`, `depth=10.0`).
+    `depth` given a literal other than an int (`reliability='reliable'`, `depth=10.0`), and
+    a predefined profile called like a function (`qos_profile_sensor_data()`: it is a
+    `QoSProfile` object, anywhere in the code).
 
     ## Why is this bad?
     rclpy accepts only a `QoSProfile` or an `int` history depth: anything else raises
@@ -138,6 +161,7 @@ def invalid_qos_profile(package: Package) -> Iterator[Hit]:
     ```
     """
     yield from _service_literals(package)
+    yield from _called_presets(package)
     yield from _without_depth(package)
     yield from _policy_literals(package)
     for module, call, method in qos_calls(package):

@@ -87,13 +87,18 @@ def _published(ref: ast.expr, index: Index, methods: tuple[str, ...]
         (method.attr != "publish" or len(call.args) + len(call.keywords) == 1) else None
 
 
-def _second(ref: ast.expr, index: Index) -> ast.expr | None:
-    """The second positional argument of ``ref.publish(a, b, ...)``, if so called."""
+def _publish_call(ref: ast.expr, index: Index) -> ast.Call | None:
+    """The call ``ref.publish(...)`` when ``ref`` is so used (no ``*args``/``**kwargs``)."""
     method = index.parents.get(id(ref))
     call = index.parents.get(id(method))
-    return call.args[1] if isinstance(method, ast.Attribute) and method.attr == "publish" and \
-        isinstance(call, ast.Call) and call.func is method and not unpacks(call) and \
-        len(call.args) > 1 else None
+    return call if isinstance(method, ast.Attribute) and method.attr == "publish" and \
+        isinstance(call, ast.Call) and call.func is method and not unpacks(call) else None
+
+
+def _second(ref: ast.expr, index: Index) -> ast.expr | None:
+    """The second positional argument of ``ref.publish(a, b, ...)``, if so called."""
+    call = _publish_call(ref, index)
+    return call.args[1] if call is not None and len(call.args) > 1 else None
 
 
 def _not_a_message(value: ast.expr, publisher: Publisher,
@@ -140,8 +145,9 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
     (held the same ways), for literals and classes (`call_async(Trigger.Request)`).
     `bytes` (published as serialized data), other names, calls and unknown types are never
     reported. A `publish()` given a second positional argument (`pub.publish(String, msg)`)
-    is reported too, and so is what an action server's execute callback gives its goal
-    handle's `publish_feedback()` when it is such a literal or class.
+    or no message at all (`pub.publish()`) is reported too, and so is what an action server's
+    execute callback gives its goal handle's `publish_feedback()` when it is such a literal
+    or class.
 
     ## Why is this bad?
     `Publisher.publish` raises `TypeError: Expected <class 'std_msgs.msg._string.String'>,
@@ -175,6 +181,13 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
         for publisher in publishers:
             for ref in publisher.refs:
                 extra = _second(ref, index) if publisher.message.sends == "message" else None
+                empty = _publish_call(ref, index) if publisher.message.sends == "message" \
+                    else None
+                if empty is not None and not empty.args and not empty.keywords:
+                    yield Hit(Span(module.path, empty.lineno, empty.col_offset + 1),
+                              f"`{ast.unparse(empty)}` is given no message: rclpy raises "
+                              "TypeError (missing 1 required positional argument: 'msg')",
+                              "Publish a message: `self.pub.publish(msg)`")
                 if extra is not None:
                     yield Hit(Span(module.path, extra.lineno, extra.col_offset + 1),
                               f"`{ast.unparse(ref)}.publish()` is given more than the message:"

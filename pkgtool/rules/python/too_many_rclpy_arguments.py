@@ -28,15 +28,20 @@ POSITIONAL = {
 """rclpy ``Node`` methods (Humble to Rolling) whose later parameters are keyword-only: the
 positional ones, then the keyword-only ones (``get_parameter`` takes the name alone)."""
 _DEFAULT = "Give the default where the parameter is declared, `self.declare_parameter('x', 0.5)`"
-_FUNCTIONS = {"rclpy.spin_once": (("node",), ("executor", "timeout_sec"))}
+_INIT = ((), ("args", "context", "domain_id", "signal_handler_options"))
+_FUNCTIONS = {"rclpy.spin_once": (("node",), ("executor", "timeout_sec")),
+              "rclpy.init": _INIT, "rclpy.utilities.init": _INIT}
 """rclpy functions (Humble to Rolling) whose later parameters are keyword-only, the same way."""
 
 
 def _message(method: str, positional: tuple[str, ...], keywords: tuple[str, ...],
              count: int) -> str:
     given = ", ".join(f"`{p}`" for p in positional)
-    rest = f" (the others are keyword-only: {', '.join(f'`{k}=`' for k in keywords)})" \
-        if keywords else ""
+    named = ", ".join(f"`{k}=`" for k in keywords)
+    rest = f" (the others are keyword-only: {named})" if keywords else ""
+    if not positional:
+        return f"`{method}()` takes keyword arguments only ({named}) but is given {count} " \
+            "by position: rclpy raises TypeError"
     return f"`{method}()` takes {len(positional)} positional argument" \
         f"{'s' if len(positional) > 1 else ''} ({given}) but is given {count}: rclpy raises " \
         f"TypeError{rest}"
@@ -51,9 +56,10 @@ def _function_calls(package: Package) -> Iterator[Hit]:
                     len(call.args) <= len(known[0]):
                 continue
             extra = call.args[len(known[0])]
+            meant = known[1][0] if not known[0] else known[1][-1]
             yield Hit(Span(module.path, extra.lineno, extra.col_offset + 1),
                       _message(ast.unparse(call.func), *known, len(call.args)),
-                      f"Pass it by keyword: `{known[1][-1]}=...`")
+                      f"Pass it by keyword: `{meant}=...`")
 
 
 @rule("PYC033", "too-many-rclpy-arguments", Severity.ERROR,
@@ -70,8 +76,8 @@ def too_many_rclpy_arguments(package: Package) -> Iterator[Hit]:
     `callback_group`, ...) is keyword-only (Humble to Rolling). `get_parameter` takes the
     name alone: `self.get_parameter('period', 0.5)`, a default given as to `dict.get`, is
     the usual case. Also reports `rclpy.spin_once(node, 0.1)`: its `timeout_sec` is
-    keyword-only. Calls passing `*args` are not judged, nor packages defining a function
-    of the same name.
+    keyword-only, and `rclpy.init(args)`: `init` takes keywords only (`args=args`). Calls
+    passing `*args` are not judged, nor packages defining a function of the same name.
 
     ## Why is this bad?
     Python raises `TypeError: create_client() takes 3 positional arguments but 4 were given`

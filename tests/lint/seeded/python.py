@@ -684,3 +684,13 @@ def own_method_called_with_an_argument_it_does_not_take(root: Path) -> None:
 @case("PYC049", TALKER, "self.create_timer(period)")
 def timer_created_without_its_callback(root: Path) -> None:
     edit(root, TALKER, "self.create_timer(period, self.publish)", "self.create_timer(period)")
+
+
+@case("PYC050", TALKER, "msg.data == f'Hello {self.count}'")
+def comparison_written_for_an_assignment(root: Path) -> None:
+    edit(root, TALKER, "msg.data = f'Hello {self.count}'", "msg.data == f'Hello {self.count}'")
+
+
+@case("PYC033", TALKER, "rclpy.init(args)")
+def init_given_its_arguments_by_position(root: Path) -> None:
+    edit(root, TALKER, "rclpy.init(args=args)", "rclpy.init(args)")

@@ -1,0 +1,65 @@
+"""PYC050: a comparison written as a statement (``msg.data == 'hi'``), which does nothing."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.package import Package, is_test_material
+from pkgtool.model.python_visitor import parse_tree
+from pkgtool.model.span import Span
+from pkgtool.rules.registry import rule
+
+_TARGETS = (ast.Name, ast.Attribute, ast.Subscript)
+"""What an assignment can store to: the left side of a comparison meant as one."""
+
+
+def comparison_statements(tree: ast.Module) -> Iterator[ast.Compare]:
+    """The ``a == b`` expressions that are whole statements, ``a`` something assignable."""
+    for statement in nodes_of_class(tree, ast.Expr):
+        value = statement.value  # type: ignore[attr-defined]
+        if isinstance(value, ast.Compare) and len(value.ops) == 1 and \
+                isinstance(value.ops[0], ast.Eq) and isinstance(value.left, _TARGETS):
+            yield value
+
+
+@rule("PYC050", "comparison-as-statement", Severity.ERROR,
+      fix="Assign with `=`, or assert the comparison in a test: `assert x == y`")
+def comparison_as_statement(package: Package) -> Iterator[Hit]:
+    """A comparison `x == y` stands alone as a statement: it does nothing.
+
+    ## What it does
+    Reports a statement that is only an equality comparison whose left side is a name, an
+    attribute or an item (`msg.data == 'hello'`, `self.count == 0`, `result == 3` in a
+    test), in every Python file of the package.
+
+    ## Why is this bad?
+    Python evaluates the comparison and drops the result: the assignment meant (`=`) never
+    happens, so the message goes out empty or the counter is never reset, and a test
+    missing its `assert` passes whatever the code does. Nothing fails to point at it.
+
+    ## Example
+    ```python
+    msg = String()
+    msg.data == 'hello'
+    ```
+
+    ## Use instead
+    ```python
+    msg = String()
+    msg.data = 'hello'
+    ```
+    """
+    for path, text in sorted(package.texts.items()):
+        tree = parse_tree(path, text) if path.endswith(".py") and "==" in text else None
+        if not isinstance(tree, ast.Module):
+            continue
+        for compare in comparison_statements(tree):
+            left, right = ast.unparse(compare.left), ast.unparse(compare.comparators[0])
+            meant = f"`assert {left} == {right}`" if is_test_material(path) else \
+                f"`{left} = {right}`"
+            yield Hit(Span(path, compare.lineno, compare.col_offset + 1),
+                      f"`{left} == {right}` compares and drops the result: the statement does "
+                      f"nothing (did you mean {meant}?)", f"Write {meant}")
