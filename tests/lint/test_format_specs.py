@@ -31,3 +31,15 @@ def test_every_specification_is_read_as_python_reads_it() -> None:
 @pytest.mark.parametrize("spec", [".4f", "d", "+", "#", "=8", ",", "_", "z", "5.1%", "x"])
 def test_the_message_is_pythons(spec: str) -> None:
     assert refused_by_text(spec) == _error(spec)
+
+
+def test_number_refusals_are_what_format_raises() -> None:
+    """PYC051 asks format() itself; a huge width is never tried."""
+    from pkgtool.rules.python.number_format_refused import refused_by_number
+
+    assert refused_by_number("d", "float") == \
+        "ValueError: Unknown format code 'd' for object of type 'float'"
+    assert refused_by_number(".2", "int") is not None
+    assert refused_by_number(".2f", "int") is None
+    assert refused_by_number("99999999999", "int") is None
+    assert refused_by_number("s", "bool") is not None

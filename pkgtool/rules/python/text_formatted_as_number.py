@@ -247,23 +247,22 @@ def _catches(handler: ast.ExceptHandler) -> bool:
     return any(isinstance(n, ast.Name) and n.id in _CAUGHT for n in names)
 
 
-def _format_calls(index: Index) -> Iterator[tuple[ast.expr, str, str, bool]]:
-    """(value, specification, the error, converted) of each ``'...'.format(...)`` field and
-    each ``format(value, '...')`` whose specification a str refuses."""
+def _format_calls(index: Index) -> Iterator[tuple[ast.expr, str, bool]]:
+    """(value, specification, converted) of each ``'...'.format(...)`` field and each
+    ``format(value, '...')`` with a written-out specification."""
     for call in index.calls:
         func = call.func
         if isinstance(func, ast.Name) and func.id == "format" and "format" not in index.bound \
                 and len(call.args) == 2 and not call.keywords and \
                 isinstance(call.args[1], ast.Constant) and isinstance(call.args[1].value, str):
-            refused = refused_by_text(call.args[1].value)
-            if refused:
-                yield call.args[0], call.args[1].value, refused, False
+            if call.args[1].value:
+                yield call.args[0], call.args[1].value, False
         elif isinstance(func, ast.Attribute) and func.attr == "format" and \
                 isinstance(func.value, ast.Constant) and isinstance(func.value.value, str):
             yield from _format_fields(func.value.value, call)
 
 
-def _format_fields(template: str, call: ast.Call) -> Iterator[tuple[ast.expr, str, str, bool]]:
+def _format_fields(template: str, call: ast.Call) -> Iterator[tuple[ast.expr, str, bool]]:
     if any(isinstance(a, ast.Starred) for a in call.args) or \
             any(k.arg is None for k in call.keywords):
         return
@@ -284,9 +283,19 @@ def _format_fields(template: str, call: ast.Call) -> Iterator[tuple[ast.expr, st
             value = call.args[int(field)] if int(field) < len(call.args) else None
         elif field.isidentifier():
             value = keywords.get(field)
-        refused = refused_by_text(spec) if spec and "{" not in spec else None
-        if value is not None and refused:
-            yield value, spec, refused, bool(conversion)
+        if value is not None and spec and "{" not in spec:
+            yield value, spec, bool(conversion)
+
+
+def format_specs(tree: ast.Module, index: Index) -> Iterator[tuple[ast.expr, str, bool]]:
+    """(value, specification, converted) of every value formatted with a written-out format
+    specification: f-string fields, ``'...'.format(...)`` fields, ``format(value, '...')``;
+    ``converted``: ``!r``/``!s``/``!a`` made the value a str first."""
+    for field in nodes_of_class(tree, ast.FormattedValue):
+        spec = _literal_spec(field.format_spec)  # type: ignore[attr-defined]
+        if spec:
+            yield field.value, spec, field.conversion != -1  # type: ignore[attr-defined]
+    yield from _format_calls(index)
 
 
 def _percent_values(node: ast.BinOp) -> Iterator[tuple[ast.expr, str, str]]:
@@ -308,12 +317,10 @@ def _percent_values(node: ast.BinOp) -> Iterator[tuple[ast.expr, str, str]]:
 def _formatted(tree: ast.Module, index: Index) -> Iterator[tuple[ast.expr, str, str, bool]]:
     """(value, specification, the error, converted) of every place a value is formatted
     with a specification a str refuses; ``converted``: ``!r``/``!s``/``!a`` made it a str."""
-    for field in nodes_of_class(tree, ast.FormattedValue):
-        spec = _literal_spec(field.format_spec)  # type: ignore[attr-defined]
-        refused = refused_by_text(spec) if spec else None
+    for value, spec, converted in format_specs(tree, index):
+        refused = refused_by_text(spec)
         if refused:
-            yield field.value, spec, refused, field.conversion != -1  # type: ignore
-    yield from _format_calls(index)
+            yield value, spec, refused, converted
     for node in nodes_of_class(tree, ast.BinOp):
         if isinstance(node.op, ast.Mod) and isinstance(node.left, ast.Constant) and \
                 isinstance(node.left.value, str):  # type: ignore[attr-defined]

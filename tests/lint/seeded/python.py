@@ -694,3 +694,8 @@ def comparison_written_for_an_assignment(root: Path) -> None:
 @case("PYC033", TALKER, "rclpy.init(args)")
 def init_given_its_arguments_by_position(root: Path) -> None:
     edit(root, TALKER, "rclpy.init(args=args)", "rclpy.init(args)")
+
+
+@case("PYC051", TALKER, "{self.count:s}")
+def count_formatted_as_text(root: Path) -> None:
+    edit(root, TALKER, "msg.data = f'Hello {self.count}'", "msg.data = f'Hello {self.count:s}'")
