@@ -6,8 +6,9 @@ A local variable holds one when its scope (a function, or the module) binds it e
 parameter, no second assignment, no ``for``/``with``/``del``/``global``/``nonlocal``, no
 nested function's parameter or variable): every ``msg`` in the scope is that instance.
 ``self.x`` holds one in the methods of a class whose methods all assign ``self.x`` from
-the same message constructor (``self.x = Twist()``, one target), when nothing else in the
-module stores an attribute ``x``, no ``setattr`` could, and the class body defines no ``x``.
+the same message constructor (``self.x = Twist()``, one target; ``self.x = None`` as a
+placeholder aside), when nothing else in the module stores an attribute ``x``, no ``setattr``
+could, and the class body defines no ``x``.
 A parameter of a callback holds one when the module registers the function (``self.cb`` a
 plain method of the class registering it, or a plain function bound once in the module) only
 with known interfaces that agree: a subscription's message, a service's request and response,
@@ -18,7 +19,7 @@ from __future__ import annotations
 
 import ast
 from collections import Counter
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Mapping
 from typing import Any, Generic, TypeVar
 
 from pkgtool.knowledge.message_fields import Message, message_of
@@ -256,32 +257,47 @@ def _stored_attributes(tree: ast.Module) -> Counter[str] | None:
                    if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load))
 
 
-def attribute_instances(tree: ast.Module, index: Index, make: Maker[T]
-                        ) -> Iterator[Instance[T]]:
-    """``self.x`` attributes of classes that always assign them what ``make`` makes."""
+def attribute_instances(tree: ast.Module, index: Index, make: Maker[T],
+                        held: Mapping[int, T] | None = None) -> Iterator[Instance[T]]:
+    """``self.x`` attributes of classes that always assign them what ``make`` makes, or a name
+    that ``held`` (by id of the name node) knows to hold one (a callback's message)."""
     stores = _stored_attributes(tree)
+    held = held or {}
     if stores is None or not any(
-            len(node.targets) == 1 and isinstance(node.targets[0], ast.Attribute)
-            and isinstance(node.value, ast.Call) and make(node.value) is not None
+            len(node.targets) == 1 and isinstance(node.targets[0], ast.Attribute) and (
+                isinstance(node.value, ast.Call) and make(node.value) is not None or
+                id(node.value) in held)
             for node in nodes_of_class(tree, ast.Assign)):  # type: ignore[attr-defined]
         return
     for cls in index.classes:
         facts = _class_facts(cls)
         for attr, targets in facts.stores.items():
-            made = [_assigned(target, index, make) for target in targets]
-            if (made[0] is not None and made.count(made[0]) == len(made) == stores[attr]
-                    and not facts.defined[attr]):
+            made = [_assigned(target, index, make, held) for target in targets
+                    if not _assigned_none(target, index)]
+            if (made and made[0] is not None and made.count(made[0]) == len(made)
+                    and len(targets) == stores[attr] and not facts.defined[attr]):
                 yield _instance(made[0], facts.uses.get(attr, []), facts.refs.get(attr, []),
                                 index, skip=1)
 
 
-def _assigned(target: ast.Attribute, index: Index, make: Maker[T]) -> T | None:
-    """What ``target = call(...)`` (the only target) assigns, as ``make`` knows, or None."""
+def _assigned_none(target: ast.Attribute, index: Index) -> bool:
+    """True for ``target = None`` (the only target): a placeholder until the object is made
+    (using it before then fails anyway)."""
     parent = index.parents.get(id(target))
-    if isinstance(parent, ast.Assign) and parent.targets == [target] \
-            and isinstance(parent.value, ast.Call):
+    return isinstance(parent, ast.Assign) and parent.targets == [target] and \
+        isinstance(parent.value, ast.Constant) and parent.value.value is None
+
+
+def _assigned(target: ast.Attribute, index: Index, make: Maker[T], held: Mapping[int, T]
+              ) -> T | None:
+    """What ``target = call(...)`` (the only target) assigns, as ``make`` knows, or
+    ``target = name`` as ``held`` knows; else None."""
+    parent = index.parents.get(id(target))
+    if not (isinstance(parent, ast.Assign) and parent.targets == [target]):
+        return None
+    if isinstance(parent.value, ast.Call):
         return make(parent.value)
-    return None
+    return held.get(id(parent.value)) if isinstance(parent.value, ast.Name) else None
 
 
 Function = ast.FunctionDef | ast.AsyncFunctionDef

@@ -99,12 +99,19 @@ def _result_instances(package: Package, tree: ast.Module, index: Index, known: K
 def message_instances(package: Package, tree: ast.Module, index: Index, known: Known
                       ) -> list[Instance[Message]]:
     """The local variables and ``self.x`` attributes that hold a fresh known message or a
-    service's response, the callback parameters that get one, and the responses used where
-    ``future.result()`` gives them (``known`` must be ``known_messages`` of the tree's
-    package: the result is kept with the tree)."""
+    service's response (``self.x`` also one a callback's message is stored in), the callback
+    parameters that get one, and the responses used where ``future.result()`` gives them
+    (``known`` must be ``known_messages`` of the tree's package: the result is kept with the
+    tree)."""
+    return kept(tree, "messages", lambda: _instances(package, tree, index, known))
+
+
+def _instances(package: Package, tree: ast.Module, index: Index, known: Known
+               ) -> list[Instance[Message]]:
     def make(call: ast.Call) -> Message | None:
         return known(call.func) or _response(call, package, tree, index, known)
-    return kept(tree, "messages", lambda: [*local_instances(tree, index, make),
-                                           *attribute_instances(tree, index, make),
-                                           *callback_instances(tree, index, known),
-                                           *_result_instances(package, tree, index, known)])
+    received = list(callback_instances(tree, index, known))
+    held = {id(ref): instance.message for instance in received for ref in instance.refs
+            if isinstance(ref, ast.Name)}
+    return [*local_instances(tree, index, make), *attribute_instances(tree, index, make, held),
+            *received, *_result_instances(package, tree, index, known)]

@@ -88,9 +88,10 @@ def unknown_message_field(package: Package) -> Iterator[Hit]:
     take it since Iron). An instance is certain only as a local variable bound once in its
     function (or module) by `msg = Type()`, never otherwise (no parameter, no second
     assignment, no `global`), or as `self.x` in a class whose methods all assign
-    `self.x = Type()` when nothing else in the module stores an attribute `x` and no `setattr`
-    could, or as a parameter of a callback the module registers with known types that agree:
-    the message of `create_subscription` (not `raw=True`), the request and response of
+    `self.x = Type()` (or `None`, a placeholder, or the message a callback gets: `self.last =
+    msg`) when nothing else in the module stores an attribute `x` and no `setattr` could, or
+    as a parameter of a callback the module registers with known types that agree: the
+    message of `create_subscription` (not `raw=True`), the request and response of
     `create_service`, the goal of an `ActionServer` (`goal_handle.request`), when the callback
     is a plain method of the registering class (`self.on_message`) or a plain function bound
     once in the module and never rebinds the parameter, or as a service's response:
