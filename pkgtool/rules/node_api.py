@@ -1,5 +1,5 @@
-"""What PYC007-PYC009, PYC013, PYC015, PYC017, PYC018 and PYC020 share: calls of rclpy's API
-and their arguments, literals, Node constructions.
+"""What PYC007-PYC009, PYC013, PYC015, PYC017, PYC018, PYC020, PYC030 and PYC049 share: calls
+of rclpy's API and their arguments, literals, Node constructions.
 
 Only modules that import rclpy and do not define a method of the same name themselves are
 looked at, so a project's own ``create_publisher`` wrapper is never judged by rclpy's signature.
@@ -161,3 +161,40 @@ def spin_cause(where: Span) -> str:
     """The root cause "the node is spun inside its own callback here": PYC035 states it; a
     missing timeout there (PYC005) is its consequence (a timeout would not mend the call)."""
     return f"spins-inside-callback:{where.path}:{where.line}:{where.col}"
+
+
+_TYPE_KINDS = {"msg_type": "message", "srv_type": "service"}
+"""What the type parameter of the create_* methods takes, by its name."""
+_SERVED = frozenset({"create_subscription", "create_service"})
+"""The creators whose third argument is the callback."""
+
+
+def _method_of_class(value: ast.expr, call: ast.Call, index: Index) -> bool:
+    """True for a lambda, or ``self.<a method of the class around the call>``."""
+    if isinstance(value, ast.Lambda):
+        return True
+    around = index.enclosing_class(call)
+    return around is not None and isinstance(value, ast.Attribute) and \
+        isinstance(value.value, ast.Name) and value.value.id == "self" and any(
+            isinstance(f, (ast.FunctionDef, ast.AsyncFunctionDef)) and f.name == value.attr
+            for f in around.body)
+
+
+def swapped_argument(call: ast.Call, method: str, index: Index) -> tuple[ast.expr, str] | None:
+    """The misplaced argument of ``call`` and what is wrong, or None."""
+    first = call.args[0] if call.args else None
+    second = call.args[1] if len(call.args) > 1 else None
+    if method == "create_timer":
+        return (first, "the callback is given where the period goes (the period comes "
+                "first)") if first is not None and _method_of_class(first, call, index) else None
+    kind = _TYPE_KINDS[PARAMETERS[method][0]]
+    if first is not None and literal_type(first) == "str":
+        return first, (f"a string is given where the {kind} type goes (the type comes "
+                       "first, then the name: ROS 1 had them the other way round)")
+    if second is not None and INTERFACE.fullmatch(index.qualified(second) or ""):
+        return second, (f"the {kind} type is given where the name goes (the type comes "
+                        "first: ROS 1 had them the other way round)")
+    if method in _SERVED and second is not None and _method_of_class(second, call, index):
+        return second, ("the callback is given where the name goes (the type comes first, "
+                        "then the name, then the callback)")
+    return None

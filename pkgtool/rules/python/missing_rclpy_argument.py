@@ -8,8 +8,8 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_api import PARAMETERS, argument, node_api_calls, unpacks
-from pkgtool.rules.python.swapped_rclpy_arguments import swapped_argument
+from pkgtool.rules.node_api import (PARAMETERS, argument, node_api_calls, swapped_argument,
+                                    unpacks)
 from pkgtool.rules.registry import rule
 
 REQUIRED = {**PARAMETERS,

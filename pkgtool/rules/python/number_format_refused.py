@@ -10,8 +10,8 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._field_reads import field_reads
+from pkgtool.rules.python._format_specs import format_specs
 from pkgtool.rules.python._value_types import NUMBER_TYPES, certain_type
-from pkgtool.rules.python.text_formatted_as_number import format_specs
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import installed_trees
 

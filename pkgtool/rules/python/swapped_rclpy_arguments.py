@@ -2,51 +2,14 @@
 
 from __future__ import annotations
 
-import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_api import (INTERFACE, PARAMETERS, literal_type, node_api_calls,
-                                    unpacks)
+from pkgtool.rules.node_api import PARAMETERS, node_api_calls, swapped_argument, unpacks
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, installed_trees
-
-KINDS = {"msg_type": "message", "srv_type": "service"}
-_SERVED = frozenset({"create_subscription", "create_service"})
-"""The creators whose third argument is the callback."""
-
-
-def _method_of_class(value: ast.expr, call: ast.Call, index: Index) -> bool:
-    """True for a lambda, or ``self.<a method of the class around the call>``."""
-    if isinstance(value, ast.Lambda):
-        return True
-    around = index.enclosing_class(call)
-    return around is not None and isinstance(value, ast.Attribute) and \
-        isinstance(value.value, ast.Name) and value.value.id == "self" and any(
-            isinstance(f, (ast.FunctionDef, ast.AsyncFunctionDef)) and f.name == value.attr
-            for f in around.body)
-
-
-def swapped_argument(call: ast.Call, method: str, index: Index) -> tuple[ast.expr, str] | None:
-    """The misplaced argument of ``call`` and what is wrong, or None."""
-    first = call.args[0] if call.args else None
-    second = call.args[1] if len(call.args) > 1 else None
-    if method == "create_timer":
-        return (first, "the callback is given where the period goes (the period comes "
-                "first)") if first is not None and _method_of_class(first, call, index) else None
-    kind = KINDS[PARAMETERS[method][0]]
-    if first is not None and literal_type(first) == "str":
-        return first, (f"a string is given where the {kind} type goes (the type comes "
-                       "first, then the name: ROS 1 had them the other way round)")
-    if second is not None and INTERFACE.fullmatch(index.qualified(second) or ""):
-        return second, (f"the {kind} type is given where the name goes (the type comes "
-                        "first: ROS 1 had them the other way round)")
-    if method in _SERVED and second is not None and _method_of_class(second, call, index):
-        return second, ("the callback is given where the name goes (the type comes first, "
-                        "then the name, then the callback)")
-    return None
+from pkgtool.rules.syntax_trees import installed_trees
 
 
 @rule("PYC030", "swapped-rclpy-arguments", Severity.ERROR,
