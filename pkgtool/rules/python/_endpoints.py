@@ -41,7 +41,8 @@ _READS = frozenset({"value", "string_value"})
 class Endpoint:
     """A publisher or subscription: ``kind`` (``publisher``/``subscription``), the topic,
     its message type (``pkg/Name``, None when unknown), its (reliability, durability)
-    (None when unknown), and where its type and QoS arguments are."""
+    (None when unknown), and where its type, QoS and topic arguments are; ``literal``: the
+    topic is written there as a string (not a name or a parameter's default)."""
 
     kind: str
     topic: str
@@ -49,6 +50,8 @@ class Endpoint:
     qos: tuple[str, str] | None
     type_span: Span
     qos_span: Span
+    topic_span: Span
+    literal: bool
 
 
 @per_package
@@ -69,7 +72,9 @@ def endpoints(package: Package) -> tuple[Endpoint, ...]:
             "publisher" if method == "create_publisher" else "subscription", topic,
             _message(kind, index), _profile(qos, index) if qos is not None else None,
             Span(module.path, kind.lineno, kind.col_offset + 1),
-            Span(module.path, (qos or kind).lineno, (qos or kind).col_offset + 1)))
+            Span(module.path, (qos or kind).lineno, (qos or kind).col_offset + 1),
+            Span(module.path, topic_expr.lineno, topic_expr.col_offset + 1),
+            isinstance(topic_expr, ast.Constant)))
     return tuple(found)
 
 
