@@ -202,7 +202,8 @@ def lone_comparison(package: Package, findings: list[Finding]) -> Iterator[Fix]:
             continue
         between = doc.text[doc.end(compare.left):doc.start(compare.comparators[0])]
         at = doc.end(compare.left) + between.find("==")
-        if between.count("==") == 1 and "#" not in between:
+        if between.count("==") == 1 and "#" not in between and \
+                isinstance(compare.left, (ast.Name, ast.Attribute, ast.Subscript)):
             yield Fix("Assign with `=`", (Edit(doc.source.path, at, at + 2, "="),), safe=False)
 
 

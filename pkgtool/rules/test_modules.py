@@ -16,7 +16,7 @@ from pkgtool.model.python_visitor import parse_tree
 _GLOB = frozenset("*?[")
 
 
-def _matches(name: str, patterns: tuple[str, ...]) -> bool:
+def matches(name: str, patterns: tuple[str, ...]) -> bool:
     """pytest's name test: a glob matches whole, anything else is a prefix."""
     return any(fnmatch(name, p) if _GLOB & set(p) else name.startswith(p) for p in patterns)
 
@@ -26,15 +26,15 @@ def first_test(tree: ast.Module, config: PytestConfig) -> ast.AST | None:
     functions, classes = config.get("python_functions"), config.get("python_classes")
     for node in tree.body:
         if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and \
-                _matches(node.name, functions):
+                matches(node.name, functions):
             return node
         if isinstance(node, ast.ClassDef):
             unittest = any((b.attr if isinstance(b, ast.Attribute) else getattr(b, "id", ""))
                            == "TestCase" for b in node.bases)
             methods = ("test",) if unittest else functions
-            if (unittest or _matches(node.name, classes)) and any(
+            if (unittest or matches(node.name, classes)) and any(
                     isinstance(m, (ast.FunctionDef, ast.AsyncFunctionDef)) and
-                    _matches(m.name, methods) for m in node.body):
+                    matches(m.name, methods) for m in node.body):
                 return node
     return None
 

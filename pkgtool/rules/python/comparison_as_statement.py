@@ -13,15 +13,15 @@ from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
 
 _TARGETS = (ast.Name, ast.Attribute, ast.Subscript)
-"""What an assignment can store to: the left side of a comparison meant as one."""
+"""What an assignment can store to: the left side of a comparison that may be meant as one."""
 
 
 def comparison_statements(tree: ast.Module) -> Iterator[ast.Compare]:
-    """The ``a == b`` expressions that are whole statements, ``a`` something assignable."""
+    """The ``a == b`` expressions that are whole statements."""
     for statement in nodes_of_class(tree, ast.Expr):
         value = statement.value  # type: ignore[attr-defined]
         if isinstance(value, ast.Compare) and len(value.ops) == 1 and \
-                isinstance(value.ops[0], ast.Eq) and isinstance(value.left, _TARGETS):
+                isinstance(value.ops[0], ast.Eq):
             yield value
 
 
@@ -31,9 +31,8 @@ def comparison_as_statement(package: Package) -> Iterator[Hit]:
     """A comparison `x == y` stands alone as a statement: it does nothing.
 
     ## What it does
-    Reports a statement that is only an equality comparison whose left side is a name, an
-    attribute or an item (`msg.data == 'hello'`, `self.count == 0`, `result == 3` in a
-    test), in every Python file of the package.
+    Reports a statement that is only an equality comparison (`msg.data == 'hello'`,
+    `self.count == 0`, `add(1, 2) == 3` in a test), in every Python file of the package.
 
     ## Why is this bad?
     Python evaluates the comparison and drops the result: the assignment meant (`=`) never
@@ -59,7 +58,8 @@ def comparison_as_statement(package: Package) -> Iterator[Hit]:
         for compare in comparison_statements(tree):
             left, right = ast.unparse(compare.left), ast.unparse(compare.comparators[0])
             meant = f"`assert {left} == {right}`" if is_test_material(path) else \
-                f"`{left} = {right}`"
+                f"`{left} = {right}`" if isinstance(compare.left, _TARGETS) else None
             yield Hit(Span(path, compare.lineno, compare.col_offset + 1),
                       f"`{left} == {right}` compares and drops the result: the statement does "
-                      f"nothing (did you mean {meant}?)", f"Write {meant}")
+                      f"nothing" + (f" (did you mean {meant}?)" if meant else ""),
+                      f"Write {meant}" if meant else "Use the result, or remove the line")

@@ -14,7 +14,7 @@ from pkgtool.model.pytest_config import PytestConfig, pytest_config
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
-from pkgtool.rules.test_modules import first_test, why_not_collected
+from pkgtool.rules.test_modules import first_test, matches, why_not_collected
 
 
 def _read_by_other_tests(package: Package, path: str) -> bool:
@@ -51,7 +51,12 @@ def uncollected_test(package: Package) -> Iterator[Hit]:
     `setup.cfg` (`[tool:pytest]`); `python_functions` and `python_classes` are honoured too.
     A configuration that does not parse, or `addopts` naming paths, leaves the rule silent,
     and so does a file that another test names in a string (its name, or a folder holding
-    it): test data that the other test runs itself (pytester, launch_testing).
+    it): test data that the other test runs itself (pytester, launch_testing). In the files
+    pytest does collect, also reports a test class defining `__init__` (pytest skips it with a
+    mere warning; not a `unittest.TestCase`, which pytest runs anyway) and a top-level
+    function named like a test that pytest does not collect (`talker_test`, `Test_talker`)
+    that asserts, has no decorator, and that neither its file nor another file of the package
+    names (a helper other tests import).
 
     ## Why is this bad?
     The tests never run, and `colcon test` reports success: the checks they were written
@@ -81,3 +86,53 @@ def uncollected_test(package: Package) -> Iterator[Hit]:
         if reason and test is not None and not _read_by_other_tests(package, path):
             yield Hit(Span(path, test.lineno, test.col_offset + 1),
                       f"pytest does not collect `{path}`, so its tests never run: {reason}")
+        elif not reason and not _read_by_other_tests(package, path):
+            tree = parse_tree(path, package.texts[path])
+            if isinstance(tree, ast.Module):
+                yield from _uncollected_parts(package, path, tree, config)
+
+
+def _asserts(node: ast.AST) -> bool:
+    return any(isinstance(n, ast.Assert) for n in ast.walk(node))
+
+
+def _named_elsewhere(package: Package, path: str, name: str) -> bool:
+    """True when another Python file of the package names ``name`` (imports the helper)."""
+    word = re.compile(rf"\b{re.escape(name)}\b")
+    return any(other != path and other.endswith(".py") and word.search(text)
+               for other, text in package.texts.items())
+
+
+def _misnamed(name: str, functions: tuple[str, ...]) -> bool:
+    """True for a name written as a test's that pytest does not collect: ``talker_test``,
+    ``Test_talker`` (the default prefix is ``test``, lower case)."""
+    return not matches(name, functions) and (
+        name.endswith("_test") or name.lower().startswith("test"))
+
+
+def _uncollected_parts(package: Package, path: str, tree: ast.Module, config: PytestConfig
+                       ) -> Iterator[Hit]:
+    """In a file pytest collects: plain test classes it skips for their ``__init__``, and
+    functions written as tests (misnamed, asserting, used nowhere) under a name it skips."""
+    functions, classes = config.get("python_functions"), config.get("python_classes")
+    used = {n.id for n in ast.walk(tree) if isinstance(n, ast.Name)}
+    for node in tree.body:
+        plain = isinstance(node, ast.ClassDef) and all(
+            isinstance(b, ast.Name) and b.id == "object" for b in node.bases)
+        if plain and matches(node.name, classes) and any(  # type: ignore[attr-defined]
+                isinstance(s, ast.FunctionDef) and s.name == "__init__"
+                for s in node.body) and \
+                any(isinstance(s, ast.FunctionDef) and matches(s.name, functions)
+                    for s in node.body):  # type: ignore[attr-defined]
+            yield Hit(Span(path, node.lineno, node.col_offset + 1),
+                      f"`{node.name}` defines `__init__`: pytest does not collect a test class "
+                      "with a constructor (only a PytestCollectionWarning says so), its tests "
+                      "never run", "Set up in `setup_method(self)` or a fixture, not `__init__`")
+        elif isinstance(node, ast.FunctionDef) and _misnamed(node.name, functions) and \
+                not node.decorator_list and node.name not in used and _asserts(node) and \
+                not _named_elsewhere(package, path, node.name):
+            shown = " or ".join(f"`{p}`" for p in functions)
+            yield Hit(Span(path, node.lineno, node.col_offset + 1),
+                      f"`{node.name}` asserts like a test, but its name does not match {shown} "
+                      "(pytest's `python_functions`) and nothing calls it: it never runs",
+                      f"Name it `test_{node.name.lower().replace('test', '').strip('_')}`")

@@ -699,3 +699,10 @@ def init_given_its_arguments_by_position(root: Path) -> None:
 @case("PYC051", TALKER, "{self.count:s}")
 def count_formatted_as_text(root: Path) -> None:
     edit(root, TALKER, "msg.data = f'Hello {self.count}'", "msg.data = f'Hello {self.count:s}'")
+
+
+@case("PYC052", "test/test_talker.py", "assert (")
+def assert_on_a_tuple(root: Path) -> None:
+    edit(root, "test/test_talker.py", "from base_pkg.talker import Talker\n",
+         "from base_pkg.talker import Talker\n\n\ndef test_truth():\n"
+         "    assert (Talker is None, 'never')\n")
