@@ -147,7 +147,7 @@ def load_package(root: Path, context: Context | None = None) -> Package:
             if text is not None:
                 module = parse_module(relpath, text)
                 modules.append(module)
-                if module.syntax_error and not _test_data(relpath):
+                if module.syntax_error and not is_test_data(relpath):
                     problems.append(module.syntax_error)
     for other in ("README.md", "README.rst", "README.txt", "README",  # `ros2 run ...`
                   "pytest.ini", ".pytest.ini", "pyproject.toml", "tox.ini",  # pytest's settings
@@ -174,7 +174,7 @@ def is_test_material(relpath: str) -> bool:
     return any(part in ("test", "tests") for part in relpath.split("/")[:-1])
 
 
-def _test_data(relpath: str) -> bool:
+def is_test_data(relpath: str) -> bool:
     """A Python file under ``test/`` that pytest does not collect (a fixture, sample input)."""
     name = relpath.rsplit("/", 1)[-1]
     collected = name.startswith("test_") or name.endswith("_test.py") or name == "conftest.py"

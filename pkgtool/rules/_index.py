@@ -159,6 +159,7 @@ RULES = {
     "SYN003": ("xml-entity-declaration", "error", True, "syntax.xml_entity_declaration"),
     "SYN004": ("oversized-file", "info", True, "syntax.oversized_file"),
     "SYN005": ("submodule-not-checked-out", "info", True, "syntax.submodule_not_checked_out"),
+    "SYN006": ("compile-error", "error", True, "syntax.compile_error"),
 }
 
 FIXED = frozenset({

@@ -706,3 +706,8 @@ def assert_on_a_tuple(root: Path) -> None:
     edit(root, "test/test_talker.py", "from base_pkg.talker import Talker\n",
          "from base_pkg.talker import Talker\n\n\ndef test_truth():\n"
          "    assert (Talker is None, 'never')\n")
+
+
+@case("SYN006", TALKER, "def publish(self, self)")
+def parameter_named_twice(root: Path) -> None:
+    edit(root, TALKER, "def publish(self):", "def publish(self, self):")
