@@ -21,6 +21,20 @@ _LOADERS = frozenset({"run_path", "spec_from_file_location", "SourceFileLoader",
 """Functions that run or import a Python file named by a string (runpy, importlib, imp)."""
 
 
+def _required_parameters(path: str, text: str) -> ast.arg | None:
+    """The first parameter without a default of the file's top-level launch function."""
+    tree = parse_tree(path, text)
+    function = next((node for node in getattr(tree, "body", ())
+                     if isinstance(node, ast.FunctionDef) and node.name == FUNCTION), None)
+    if function is None:
+        return None
+    arguments = function.args
+    positional = [*arguments.posonlyargs, *arguments.args]
+    required = positional[:len(positional) - len(arguments.defaults)]
+    required += [a for a, d in zip(arguments.kwonlyargs, arguments.kw_defaults) if d is None]
+    return required[0] if required else None
+
+
 def _near_miss(path: str, text: str) -> Span:
     """Where a misspelt launch function is defined, else the top of the file."""
     tree = parse_tree(path, text)
@@ -75,7 +89,9 @@ def missing_launch_function(package: Package) -> Iterator[Hit]:
     there is one. Test files (`launch_testing` files define `generate_test_description`),
     files with a star import and helpers that another Python file of the package (not a test)
     imports or runs (`import shared_launch`, `runpy.run_path(... 'nodes_launch.py')`,
-    `importlib.util.spec_from_file_location`) are not checked.
+    `importlib.util.spec_from_file_location`) are not checked. Also reports a
+    `generate_launch_description` that requires a parameter (`def
+    generate_launch_description(context):`): `ros2 launch` calls it with none.
 
     ## Why is this bad?
     `ros2 launch` imports the file and calls that function by name; without it the launch
@@ -96,6 +112,12 @@ def missing_launch_function(package: Package) -> Iterator[Hit]:
     loaded: dict[str, set[str]] | None = None
     for path, module, text in python_launch_files(package):
         names = module.top_level_names
+        required = _required_parameters(path, text) if FUNCTION in names else None
+        if required is not None:
+            yield Hit(Span(path, required.lineno, required.col_offset + 1),
+                      f"`{FUNCTION}()` requires `{required.arg}`: `ros2 launch` calls it with no "
+                      "arguments, and Python raises TypeError",
+                      f"Give `{required.arg}` a default, or remove it")
         if FUNCTION in names or "generate_test_description" in names or \
                 any("*" in i.names for i in module.imports):
             continue

@@ -41,13 +41,16 @@ def substitution_added_to_text(package: Package) -> Iterator[Hit]:
     ## What it does
     In the functions of Python launch files, reports `+` between a string literal (or an
     f-string) and a substitution of `launch.substitutions` or `launch_ros.substitutions`:
-    a call such as `LaunchConfiguration('ns')`, or a name the function binds once, to one.
+    a call such as `LaunchConfiguration('ns')`, or a name the function binds once, to one;
+    also such a substitution given to `os.path.join` or formatted into an f-string.
 
     ## Why is this bad?
     A substitution is not a string: it is only evaluated when the launch runs, and it
     defines no `+`. `ros2 launch` fails while it builds the description, with `TypeError:
-    unsupported operand type(s) for +`. Launch takes a list of parts instead (text and
-    substitutions), concatenated when the launch runs.
+    unsupported operand type(s) for +` (`os.path.join` raises TypeError the same way, and an
+    f-string silently writes the object's repr, `<...FindPackageShare object at 0x...>`).
+    Launch takes a list of parts instead (text and substitutions), concatenated when the
+    launch runs.
 
     ## Example
     ```python
@@ -75,3 +78,27 @@ def substitution_added_to_text(package: Package) -> Iterator[Hit]:
                     yield Hit(Span(path, node.lineno, node.col_offset + 1),
                               f"A `{made}` is joined to a string with `+`: it raises "
                               "TypeError (a substitution is no string)")
+            yield from _joined_otherwise(path, function, index, single)
+
+
+def _joined_otherwise(path: str, function: ast.AST, index: Index, single: dict[str, ast.expr]
+                      ) -> Iterator[Hit]:
+    """Substitutions given to ``os.path.join`` (TypeError) or formatted into an f-string (the
+    object's repr, not its value), in ``function``'s own body."""
+    for node in ast.walk(function):
+        if index.enclosing_function(node) is not function:
+            continue
+        if isinstance(node, ast.Call) and index.qualified(node.func) == "os.path.join":
+            made = next((m for m in (_substitution(a, index, single) for a in node.args)
+                         if m), None)
+            if made:
+                yield Hit(Span(path, node.lineno, node.col_offset + 1),
+                          f"A `{made}` is given to `os.path.join`: it raises TypeError (a "
+                          "substitution is no path)",
+                          "Use `PathJoinSubstitution([...])` with the same parts")
+        elif isinstance(node, ast.FormattedValue):
+            made = _substitution(node.value, index, single)
+            if made:
+                yield Hit(Span(path, node.value.lineno, node.value.col_offset + 1),
+                          f"A `{made}` is formatted into an f-string: the text is the object's "
+                          f"repr (`<{made} object at 0x...>`), not the value launch gives it")
