@@ -139,7 +139,8 @@ def action_arguments(package: Package, findings: list[Finding]) -> Iterator[Fix]
     """``launch_arguments={...}`` gains ``.items()``; ``LaunchDescription(action)`` gets the
     action in a list; ``DeclareLaunchArgument`` gets its default as ``default_value=``, a
     shortened keyword written out (``default=`` becomes ``default_value=``) and a number or
-    bool default as text (``False`` becomes ``'false'``). Safe: each raised TypeError."""
+    bool default as text (``False`` becomes ``'false'``); ``PathJoinSubstitution``'s parts go
+    in one list. Safe: each raised TypeError."""
     for doc, finding, nodes in python_nodes(package, findings):
         node, path = (nodes[0] if nodes else None), doc.source.path
         if finding.fix == ITEMS and isinstance(node, (ast.Dict, ast.DictComp)):
@@ -161,6 +162,17 @@ def action_arguments(package: Package, findings: list[Finding]) -> Iterator[Fix]
                 path, doc.start(node), doc.end(node), doc.string(finding.fix[8:-2])),))
         elif finding.fix == BY_KEYWORD and isinstance(node, ast.expr):
             yield from _by_keyword(doc, node)
+        elif finding.fix and finding.fix.startswith("Write `[") and isinstance(node, ast.expr):
+            yield from _parts_in_a_list(doc, node)
+
+
+def _parts_in_a_list(doc: PyDoc, second: ast.expr) -> Iterator[Fix]:
+    """``PathJoinSubstitution(a, b, c)`` becomes ``PathJoinSubstitution([a, b, c])``."""
+    for call in ast.walk(doc.tree):
+        if isinstance(call, ast.Call) and len(call.args) > 1 and call.args[1] is second:
+            yield Fix("Put the parts in one list", (
+                Edit(doc.source.path, doc.start(call.args[0]), doc.start(call.args[0]), "["),
+                Edit(doc.source.path, doc.end(call.args[-1]), doc.end(call.args[-1]), "]")))
 
 
 def _by_keyword(doc: PyDoc, default: ast.expr) -> Iterator[Fix]:

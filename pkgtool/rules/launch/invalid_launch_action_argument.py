@@ -66,9 +66,17 @@ def _description(call: ast.Call, index: Index) -> Iterator[tuple[ast.AST, str, s
                IN_A_LIST.format(made))
 
 
+def _path_join(call: ast.Call, _: Index) -> Iterator[tuple[ast.AST, str, str]]:
+    if len(call.args) > 1 and not any(isinstance(a, ast.Starred) for a in call.args):
+        parts = ", ".join(ast.unparse(a) for a in call.args)
+        yield (call.args[1], f"`PathJoinSubstitution()` takes one list of parts but is given "
+               f"{len(call.args)} arguments: it raises TypeError", f"Write `[{parts}]`")
+
+
 CHECKS = {"DeclareLaunchArgument": ("launch.actions", _declare),
           "IncludeLaunchDescription": ("launch.actions", _include),
-          "LaunchDescription": ("launch", _description)}
+          "LaunchDescription": ("launch", _description),
+          "PathJoinSubstitution": ("launch.substitutions", _path_join)}
 """Class -> (the module it is in, or a package holding it; its check)."""
 
 
@@ -84,7 +92,8 @@ def invalid_launch_action_argument(package: Package) -> Iterator[Hit]:
     default as a second positional argument (it is keyword-only), or with a shortened
     keyword (`default=`, `desc=`); `IncludeLaunchDescription` with `launch_arguments=`
     written as a dict (display or comprehension) instead of its `.items()`; and
-    `LaunchDescription` given one action (`LaunchDescription(Node(...))`) instead of a list.
+    `LaunchDescription` given one action (`LaunchDescription(Node(...))`) instead of a list;
+    and `PathJoinSubstitution` given its parts as separate arguments instead of one list.
     Only literals and displays are judged: a dict held in a variable is not.
 
     ## Why is this bad?
