@@ -9,16 +9,23 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_api import ACTION_CLIENTS
+from pkgtool.rules.node_api import ACTION_CLIENTS, NODE_CLASSES
 from pkgtool.rules.python._assignments import assigned_values, done_callback_futures
+from pkgtool.rules.python._value_types import receiver_class
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
 METHODS = {"future": frozenset({"result", "done", "exception", "cancelled"}),
            "client": frozenset({"service_is_ready", "wait_for_service"}),
            "action client": frozenset({"server_is_ready", "wait_for_server"}),
-           "clock": frozenset({"now"})}
+           "clock": frozenset({"now"}),
+           "node": frozenset({"get_logger", "get_clock", "get_name", "get_namespace",
+                              "get_fully_qualified_name"})}
 """What rclpy objects of each kind have as methods that code calls for their result."""
+_ALIASED = frozenset({"node"})
+"""Kinds whose methods code may keep uncalled on purpose (``log = self.get_logger``): reported
+only where the method itself is used as what it returns (``self.get_logger.info``), tested,
+or named alone."""
 _FUTURE_MAKERS = frozenset({"call_async", "send_goal_async", "get_result_async",
                             "cancel_goal_async"})
 _OK = frozenset({"rclpy.ok", "rclpy.utilities.ok"})
@@ -64,6 +71,11 @@ def _kind(value: ast.expr, package: Package, tree: ast.Module, index: Index) -> 
         return "future"
     if isinstance(value, ast.Call):
         return _made(value, index)
+    cls = receiver_class(value, index) if isinstance(value, ast.Name) else None
+    if cls is not None and cls.bases and \
+            all(index.qualified(b) in NODE_CLASSES for b in cls.bases) and \
+            not any(f.name in METHODS["node"] for f in index.functions):
+        return "node"
     values = assigned_values(value, package, tree, index)
     return _agreed([_made(v, i) for v, i in values]) if values else None
 
@@ -113,7 +125,9 @@ def _uncalled_methods(package: Package, tree: ast.Module, index: Index
         if node.attr not in wanted or not _uncalled(node, index):
             continue
         kind = _kind(node.value, package, tree, index)
-        if kind is not None and node.attr in METHODS.get(kind, ()):
+        if kind is not None and node.attr in METHODS.get(kind, ()) and (
+                kind not in _ALIASED or _tested(node, index) or
+                isinstance(index.parents.get(id(node)), ast.Attribute)):
             yield node, kind
     for name in nodes_of_class(tree, ast.Name):
         assert isinstance(name, ast.Name)
@@ -146,10 +160,12 @@ def method_not_called(package: Package) -> Iterator[Hit]:
     Reports `result`, `done`, `exception` and `cancelled` of a future (what `call_async()`,
     `send_goal_async()`, `get_result_async()` and `cancel_goal_async()` return, and the
     parameter of a done callback), `service_is_ready` and `wait_for_service` of a client,
-    `server_is_ready` and `wait_for_server` of an action client, and `now` of
-    `get_clock()`, taken without `()` (not when passed to a call: a callable given on
-    purpose), and `rclpy.ok` tested without `()`. A local name or a node's `self.x` counts
-    when every assignment of it makes such an object (or None). Also reports a statement that
+    `server_is_ready` and `wait_for_server` of an action client, `now` of `get_clock()`, and
+    a node's own `get_logger`, `get_clock`, `get_name`, `get_namespace` (only where what it
+    returns is used: `self.get_logger.info(...)`), taken without `()` (not when passed to a
+    call: a callable given on purpose), and `rclpy.ok` tested without `()`. A local name or a
+    node's `self.x` counts when every assignment of it makes such an object (or None). Also
+    reports a statement that
     only names a method code calls for what it does (`self.timer.cancel`, `node.destroy_node`,
     `rclpy.shutdown`, `rate.sleep`, `publisher.publish`: see the list in the source), on any
     object, outside `try` and `with` blocks.
