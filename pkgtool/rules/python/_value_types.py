@@ -4,9 +4,12 @@ A name (or attribute) has a certain type when every binding of it gives a litera
 type (``count = 0``) or the result of a builtin conversion (``int(x)``, ``len(x)``), or keeps
 that type (``count += 1``: ``+``, ``-``, ``*`` of two ints, floats or strings), or every
 binding is a node's ``self.get_parameter(...)`` (rclpy's ``Parameter`` object, not its
-value), or the text of one (``str(self.get_parameter(...))``). Any other binding (a
-parameter, a loop target, another call's result, an import, ``global``, ``setattr``) leaves
-it unknown.
+value), or the text of one (``str(self.get_parameter(...))``), or a parameter's value of
+a known type: ``.get_parameter_value().double_value`` (and the other scalar fields), or
+``self.get_parameter('x').value`` where the node class declares ``x`` once with a scalar
+literal default, statically typed (rclpy then refuses a value of another type). Any other
+binding (a parameter, a loop target, another call's result, an import, ``global``,
+``setattr``) leaves it unknown.
 """
 
 from __future__ import annotations
@@ -20,6 +23,7 @@ from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.memo import per_object, per_package
 from pkgtool.model.package import Package
 from pkgtool.rules.node_api import INTERFACE, NODE_CLASSES, literal_type
+from pkgtool.rules.node_parameters import module_nodes
 from pkgtool.rules.python._message_instances import binding_counts, method_receiver
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
@@ -69,7 +73,55 @@ def _builtin_result(value: ast.expr, index: Index) -> str | None:
     return _BUILTINS[value.func.id]
 
 
-def _made_type(value: ast.expr, index: Index) -> str | None:
+_ACCESSORS = {"bool_value": "bool", "integer_value": "int", "double_value": "float",
+              "string_value": "str"}
+"""The scalar fields of a ``ParameterValue`` and the Python type each holds."""
+_DECLARED = {"BOOL": "bool", "INTEGER": "int", "DOUBLE": "float", "STRING": "str"}
+"""Scalar parameter types and the Python type a parameter's ``.value`` then has."""
+
+
+@per_package
+def _declared_types(package: Package) -> dict[tuple[int, str, str], str]:
+    """(id of a module's index, class name, parameter) -> the Python type of the parameter's
+    value, for the scalar parameters a node class declares once, statically typed (rclpy
+    refuses a value of another type, from a parameter file too)."""
+    nodes = module_nodes(package)
+    found: dict[tuple[int, str, str], str] = {}
+    for module, _, index in installed_trees(package):
+        for cls in nodes[module.path].classes if module.path in nodes else ():
+            kinds: dict[str, set[str | None]] = {}
+            for declared in cls.declared:
+                kinds.setdefault(declared.name, set()).add(declared.type)
+            found.update(((id(index), cls.name, name), _DECLARED[types.pop()])
+                         for name, types in kinds.items()
+                         if len(types) == 1 and next(iter(types)) in _DECLARED)
+    return found
+
+
+def _parameter_value_type(value: ast.expr, index: Index, package: Package | None
+                          ) -> str | None:
+    """The type of ``<x>.get_parameter(...).get_parameter_value().double_value`` (and the other
+    scalar fields), and of ``self.get_parameter('name').value`` in a node class declaring
+    ``name`` with a scalar default (``package`` given)."""
+    if not isinstance(value, ast.Attribute):
+        return None
+    typed = value.value
+    if value.attr in _ACCESSORS and isinstance(typed, ast.Call) and \
+            isinstance(typed.func, ast.Attribute) and typed.func.attr == "get_parameter_value" \
+            and parameter_read(typed.func.value):
+        return _ACCESSORS[value.attr]
+    if value.attr != "value" or package is None or not parameter_read(value.value):
+        return None
+    call = value.value
+    assert isinstance(call, ast.Call) and isinstance(call.func, ast.Attribute)
+    cls = receiver_class(call.func.value, index)
+    name = call.args[0] if len(call.args) == 1 and not call.keywords else None
+    if cls is None or not isinstance(name, ast.Constant) or not isinstance(name.value, str):
+        return None
+    return _declared_types(package).get((id(index), cls.name, name.value))
+
+
+def _made_type(value: ast.expr, index: Index, package: Package | None = None) -> str | None:
     """The type of a literal or of a builtin conversion's result, ``type`` for an imported
     message, service or action class, or :data:`PARAMETER` for ``self.get_parameter(...)``
     in a method of a node class (in a module not defining a ``get_parameter`` of its own),
@@ -78,7 +130,8 @@ def _made_type(value: ast.expr, index: Index) -> str | None:
             isinstance(part, ast.FormattedValue) and part.format_spec is None and
             _made_type(part.value, index) == PARAMETER for part in value.values):
         return PARAMETER_TEXT
-    found = literal_type(value) or _builtin_result(value, index)
+    found = literal_type(value) or _builtin_result(value, index) or \
+        _parameter_value_type(value, index, package)
     if found is None and isinstance(value, (ast.Name, ast.Attribute)) and \
             _INTERFACE_CLASS.fullmatch(index.qualified(value) or ""):
         return "type"  # an imported message class itself (`String`, not `String()`)
@@ -91,12 +144,13 @@ def _made_type(value: ast.expr, index: Index) -> str | None:
     return None
 
 
-def _bound_type(target: ast.expr, index: Index) -> str:
+def _bound_type(target: ast.expr, index: Index, package: Package | None = None) -> str:
     """The type the binding ``target`` (a name or attribute being stored) gives."""
     parent = index.parents.get(id(target))
     if isinstance(parent, ast.Assign) and any(t is target for t in parent.targets) or \
             isinstance(parent, ast.AnnAssign) and parent.target is target:
-        return (_made_type(parent.value, index) if parent.value is not None else None) or \
+        return (_made_type(parent.value, index, package) if parent.value is not None
+                else None) or \
             _UNKNOWN
     if isinstance(parent, ast.AugAssign) and parent.target is target and \
             isinstance(parent.op, _KEEPING) and literal_type(parent.value) in \
@@ -127,7 +181,8 @@ def _assigned_names(tree: ast.Module) -> dict[str, list[ast.Name]]:
     return found
 
 
-def _local_type(name: ast.Name, tree: ast.Module, index: Index) -> str | None:
+def _local_type(name: ast.Name, tree: ast.Module, index: Index, package: Package | None = None
+                ) -> str | None:
     """The type of a function's local ``name`` when all its bindings agree on one."""
     function = index.enclosing_function(name, through_lambdas=False)
     if function is None:
@@ -140,7 +195,7 @@ def _local_type(name: ast.Name, tree: ast.Module, index: Index) -> str | None:
             any(isinstance(n, ast.Nonlocal) and name.id in n.names
                 for n in nodes_of_class(tree, ast.Nonlocal)):
         return None  # also a parameter, an import, a loop target, `global`, a nested scope
-    return _one({_bound_type(n, index) for n in assigned})
+    return _one({_bound_type(n, index, package) for n in assigned})
 
 
 def _dynamic(tree: ast.Module, index: Index) -> bool:
@@ -182,7 +237,7 @@ def attribute_stores(package: Package) -> dict[str, list[tuple[ast.expr, Index]]
 def _attribute_type(package: Package, name: str) -> str | None:
     """The one type every store of an attribute ``name`` in the package gives, if any."""
     stores = attribute_stores(package)
-    return _one({_bound_type(node, index) for node, index in stores.get(name, ())}) \
+    return _one({_bound_type(node, index, package) for node, index in stores.get(name, ())}) \
         if stores else None
 
 
@@ -203,9 +258,9 @@ def certain_type(value: ast.expr, package: Package, tree: ast.Module, index: Ind
     ``self.get_parameter(...)``, a local name's or a node attribute's all of whose bindings
     give that one type; None when not certain. The text of a ``Parameter`` is a ``str``, or
     with ``texts`` :data:`PARAMETER_TEXT`."""
-    found = _made_type(value, index)
+    found = _made_type(value, index, package)
     if found is None and isinstance(value, ast.Name):
-        found = _local_type(value, tree, index)
+        found = _local_type(value, tree, index, package)
     elif found is None and isinstance(value, ast.Attribute) and isinstance(value.ctx, ast.Load):
         found = _node_attribute_type(value, package, index)
     return "str" if found == PARAMETER_TEXT and not texts else found

@@ -38,8 +38,10 @@ def text_plus_number(package: Package) -> Iterator[Hit]:
     Reports `a + b` where one side is certainly a str and the other certainly an int, float
     or bool: literals, builtin conversions (`str(x)`, `len(x)`), local names every
     assignment of which gives that type, a node's `self.x` every store of which in the
-    package does, and fields of known messages (`msg.linear.x` is a float, `msg.data` of a
-    `String` a str).
+    package does, fields of known messages (`msg.linear.x` is a float, `msg.data` of a
+    `String` a str), and parameter values of a known type (`self.get_parameter('period')
+    .value` when the node declares `period` with `0.5`, or `.get_parameter_value()
+    .double_value`).
 
     ## Why is this bad?
     Python does not convert numbers to text on `+`: `'Count: ' + self.count` raises
