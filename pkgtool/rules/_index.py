@@ -136,6 +136,7 @@ RULES = {
     "PYC050": ("comparison-as-statement", "error", True, "python.comparison_as_statement"),
     "PYC051": ("number-format-refused", "error", True, "python.number_format_refused"),
     "PYC052": ("check-never-fails", "error", True, "python.check_never_fails"),
+    "PYC053": ("field-value-misused", "error", True, "python.field_value_misused"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

@@ -1,8 +1,8 @@
 """The fields of known messages that code reads, with their rosidl types (PYC042, PYC043).
 
 A read is the outermost attribute of a path on a message instance (``msg.linear.x``, not
-``msg.linear``, when ``linear`` holds a nested message), as :mod:`._message_instances` finds
-the instances.
+``msg.linear``, when ``linear`` holds a nested message; ``msg.data`` in ``msg.data.upper()``),
+as :mod:`._message_instances` finds the instances.
 """
 
 from __future__ import annotations
@@ -71,10 +71,9 @@ def _read(message: Message, use: ast.Attribute, index: Index) -> FieldRead | Non
         parent = index.parents.get(id(current))
         if isinstance(parent, ast.Attribute) and parent.value is current:
             nested = nested_message(holder, current.attr)
-            if nested is None:
-                return None
-            current, holder = parent, nested
-            continue
+            if nested is not None:
+                current, holder = parent, nested
+                continue  # else an attribute of the field's value: the field is read
         kind = holder.fields.get(current.attr)
         if kind is None or not isinstance(current.ctx, ast.Load):
             return None

@@ -711,3 +711,11 @@ def assert_on_a_tuple(root: Path) -> None:
 @case("SYN006", TALKER, "def publish(self, self)")
 def parameter_named_twice(root: Path) -> None:
     edit(root, TALKER, "def publish(self):", "def publish(self, self):")
+
+
+@case("PYC053", "simple_avoidance_agent/scan_agent.py", "msg.ranges.size",
+      base="simple_avoidance_agent")
+def scan_ranges_sized_like_an_array(root: Path) -> None:
+    edit(root, "simple_avoidance_agent/scan_agent.py",
+         "        if not msg.ranges:\n            return\n",
+         "        if msg.ranges.size == 0:\n            return\n")
