@@ -3,11 +3,16 @@
 from __future__ import annotations
 
 import ast
+import re
 import string
 from collections.abc import Iterator
 
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.rules.syntax_trees import Index
+
+PERCENT = re.compile(r"%(?:\((?P<key>[^)]*)\))?[-#0 +]*(?P<width>\*|\d+)?"
+                     r"(?:\.(?P<precision>\*|\d+))?[hlL]?(?P<type>[diouxXeEfFgGcrsa%])")
+"""One ``%`` conversion of printf-style formatting."""
 
 
 def _literal_spec(spec: ast.expr | None) -> str | None:
@@ -67,3 +72,19 @@ def format_specs(tree: ast.Module, index: Index) -> Iterator[tuple[ast.expr, str
         if spec:
             yield field.value, spec, field.conversion != -1  # type: ignore[attr-defined]
     yield from _format_calls(index)
+
+
+def percent_values(node: ast.BinOp) -> Iterator[tuple[ast.expr, re.Match[str]]]:
+    """(value, its conversion) of each conversion of ``'...' % values`` (the template a str
+    literal), when conversions and values pair up one to one (no ``%(key)s``, no ``*``)."""
+    if not (isinstance(node.op, ast.Mod) and isinstance(node.left, ast.Constant) and
+            isinstance(node.left.value, str)):
+        return
+    conversions = [m for m in PERCENT.finditer(node.left.value) if m["type"] != "%"]
+    if not conversions or any(m["key"] is not None or m["width"] == "*" or
+                              m["precision"] == "*" for m in conversions):
+        return
+    values = node.right.elts if isinstance(node.right, ast.Tuple) else [node.right]
+    if any(isinstance(v, ast.Starred) for v in values) or len(values) != len(conversions):
+        return
+    yield from zip(values, conversions)

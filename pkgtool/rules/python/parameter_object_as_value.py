@@ -10,6 +10,7 @@ from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import argument
+from pkgtool.rules.python._format_specs import format_specs, percent_values
 from pkgtool.rules.python._value_types import (PARAMETER, PARAMETER_TEXT, certain_type,
                                                parameter_read)
 from pkgtool.rules.registry import rule
@@ -51,11 +52,19 @@ def _uses(tree: ast.Module, index: Index) -> Iterator[tuple[ast.expr, str, str |
         elif isinstance(call.func, ast.Name) and call.func.id in _CONVERSIONS and \
                 len(call.args) == 1 and index.qualified(call.func) in (None, call.func.id):
             yield call.args[0], f"is given to `{call.func.id}()`, which raises TypeError", None
+    for value, spec, converted in format_specs(tree, index):
+        if not converted:
+            yield value, f"is formatted with `{spec}`: it has no format of its own, Python " \
+                "raises TypeError", None
     for node in nodes_of_class(tree, ast.BinOp, ast.Compare, ast.Assign):
         if isinstance(node, ast.BinOp):
             yield node.left, _ARITHMETIC, None
             if not isinstance(node.op, ast.Mod):  # `'%s' % parameter` formats the object
                 yield node.right, _ARITHMETIC, None
+            for value, conversion in percent_values(node):  # type: ignore[arg-type]
+                if conversion["type"] not in "rsa":
+                    yield value, f"is formatted with `{conversion.group(0)}`, a number's " \
+                        "conversion: Python raises TypeError", None
         elif isinstance(node, ast.Compare) and all(isinstance(o, _VALUE_COMPARISONS)
                                                    for o in node.ops):
             for operand in (node.left, *node.comparators):
@@ -104,7 +113,8 @@ def parameter_object_as_value(package: Package) -> Iterator[Hit]:
     assignment of which is such a call, and reports it where a plain value is needed: the
     period of `create_timer`, the topic or QoS depth of `create_publisher` and
     `create_subscription`, the name of `create_service` and `create_client`, `float()` or
-    `int()`, arithmetic (`period * 2`) and comparisons (`speed > 1.0`). Also reports the
+    `int()`, arithmetic (`period * 2`), comparisons (`speed > 1.0`) and formatting as a number
+    (`f'{period:.2f}'`, `'%f' % period`). Also reports the
     text of such a call, `str(self.get_parameter('x'))` or an f-string formatting it
     (directly, or through a name or attribute every assignment of which is one), given as
     the topic or service name of those methods or assigned to a `frame_id` or

@@ -10,7 +10,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._format_specs import format_specs
+from pkgtool.rules.python._format_specs import format_specs, percent_values
 from pkgtool.rules.python._message_instances import binding_counts
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
@@ -20,9 +20,6 @@ _SPEC = re.compile(r"(?:.(?P<align>[<>=^])|(?P<first>[<>=^]))?(?P<sign>[-+ ])?(?
                    re.S)
 """Python's format specification mini-language (``[[fill]align][sign][z][#][0][width]
 [grouping][.precision][type]``), the parts a str refuses named."""
-_PERCENT = re.compile(r"%(?:\((?P<key>[^)]*)\))?[-#0 +]*(?P<width>\*|\d+)?"
-                      r"(?:\.(?P<precision>\*|\d+))?[hlL]?(?P<type>[diouxXeEfFgGcrsa%])")
-"""One ``%`` conversion of printf-style formatting."""
 _PERCENT_ERRORS = {**dict.fromkeys("diu", "%{} format: a real number is required, not str"),
                    **dict.fromkeys("oxX", "%{} format: an integer is required, not str"),
                    **dict.fromkeys("eEfFgG", "must be real number, not str")}
@@ -241,15 +238,7 @@ def _catches(handler: ast.ExceptHandler) -> bool:
 
 def _percent_values(node: ast.BinOp) -> Iterator[tuple[ast.expr, str, str]]:
     """(value, conversion, the error) of each number conversion of ``'...' % values``."""
-    assert isinstance(node.left, ast.Constant) and isinstance(node.left.value, str)
-    conversions = [m for m in _PERCENT.finditer(node.left.value) if m["type"] != "%"]
-    if not conversions or any(m["key"] is not None or m["width"] == "*" or
-                              m["precision"] == "*" for m in conversions):
-        return
-    values = node.right.elts if isinstance(node.right, ast.Tuple) else [node.right]
-    if any(isinstance(v, ast.Starred) for v in values) or len(values) != len(conversions):
-        return
-    for match, value in zip(conversions, values):
+    for value, match in percent_values(node):
         if match["type"] in _PERCENT_ERRORS:
             error = _PERCENT_ERRORS[match["type"]].format(match["type"])
             yield value, match.group(0), f"TypeError: {error}"
