@@ -32,6 +32,20 @@ ARITHMETIC = {ast.Add: "+", ast.Sub: "-", ast.Div: "/", ast.FloorDiv: "//", ast.
 """The arithmetic operators, by operator class (``@`` left out)."""
 
 
+def operated_with(node: ast.expr, index: Index) -> tuple[ast.expr, ast.expr, str] | None:
+    """(the operation, the other operand, the operator) when ``node`` is an operand of an
+    ordering comparison of two (``<``, ``>=``, ...) or of arithmetic; else None."""
+    parent = index.parents.get(id(node))
+    if isinstance(parent, ast.Compare) and len(parent.ops) == 1 and \
+            type(parent.ops[0]) in ORDER:
+        other = parent.comparators[0] if parent.left is node else parent.left
+        return parent, other, ORDER[type(parent.ops[0])]
+    if isinstance(parent, ast.BinOp) and type(parent.op) in ARITHMETIC:
+        other = parent.right if parent.left is node else parent.left
+        return parent, other, ARITHMETIC[type(parent.op)]
+    return None
+
+
 @record
 class FieldRead:
     """A read of the field ``field`` (``pkg/msg/Type.name``) of rosidl type ``kind``."""

@@ -9,7 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.message_fields import MESSAGE_TYPE, message_of, nested_message
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._field_reads import ARITHMETIC, ORDER, FieldRead, field_reads
+from pkgtool.rules.python._field_reads import FieldRead, field_reads, operated_with
 from pkgtool.rules.python._value_types import NUMBER_TYPES, certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
@@ -32,22 +32,17 @@ def _misuse(read: FieldRead, reads: dict[int, FieldRead], package: Package, tree
     """(the expression, the operator, the other operand's kind: None for a unary one) when
     the message ``read`` gives is an operand of an operator no message class defines, the
     other operand certainly a number or a message."""
-    node = read.node
-    parent = index.parents.get(id(node))
+    parent = index.parents.get(id(read.node))
     if isinstance(parent, ast.UnaryOp) and type(parent.op) in _SIGNS:
         return parent, _SIGNS[type(parent.op)], None
-    if isinstance(parent, ast.Compare) and len(parent.ops) == 1:
-        other, symbol = parent.comparators[0] if parent.left is node else parent.left, \
-            ORDER.get(type(parent.ops[0]))
-    elif isinstance(parent, ast.BinOp):
-        other, symbol = parent.right if parent.left is node else parent.left, \
-            ARITHMETIC.get(type(parent.op))
-    else:
+    found = operated_with(read.node, index)
+    if found is None:
         return None
-    kind = _kind(other, reads, package, tree, index) if symbol else None
-    if symbol is None or kind not in NUMBER_TYPES and kind != "message":
+    operation, other, symbol = found
+    kind = _kind(other, reads, package, tree, index)
+    if kind not in NUMBER_TYPES and kind != "message":
         return None
-    return parent, symbol, kind
+    return operation, symbol, kind
 
 
 def _fields_of(read: FieldRead, package: Package) -> str:

@@ -8,7 +8,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._field_reads import ARITHMETIC, ARRAY_SEQUENCE, ORDER, field_reads
+from pkgtool.rules.python._field_reads import ARRAY_SEQUENCE, field_reads, operated_with
 from pkgtool.rules.python._message_instances import binding_counts
 from pkgtool.rules.python._value_types import NUMBER_TYPES, certain_type
 from pkgtool.rules.registry import rule
@@ -46,19 +46,14 @@ def _misuse(read: ast.expr, package: Package, tree: ast.Module, index: Index
             ) -> tuple[ast.AST, str, str] | None:
     """(the expression, the operator, the number's type) when ``read`` is compared with or
     computed with a number in a way a list or ``array.array`` refuses."""
-    parent = index.parents.get(id(read))
-    if isinstance(parent, ast.Compare) and len(parent.ops) == 1:
-        other = parent.comparators[0] if parent.left is read else parent.left
-        symbol = ORDER.get(type(parent.ops[0]))
-    elif isinstance(parent, ast.BinOp):
-        other = parent.right if parent.left is read else parent.left
-        symbol = ARITHMETIC.get(type(parent.op))
-    else:
+    found = operated_with(read, index)
+    if found is None:
         return None
-    kind = certain_type(other, package, tree, index) if symbol else None
+    parent, other, symbol = found
+    kind = certain_type(other, package, tree, index)
     if kind not in NUMBER_TYPES or symbol == "*" and kind != "float":
         return None  # a sequence times an int repeats it
-    assert symbol is not None and kind is not None
+    assert kind is not None
     return parent, symbol, kind
 
 

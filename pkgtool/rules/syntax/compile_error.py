@@ -20,17 +20,20 @@ _OUTSIDE = {ast.Return: "'return' outside function", ast.Yield: "'yield' outside
 _JUMPS = {ast.Break: "'break' outside loop", ast.Continue: "'continue' not properly in loop"}
 
 
+def _first_repeated(names: list[str]) -> str | None:
+    return next((n for i, n in enumerate(names) if n in names[:i]), None)
+
+
 def _repeated_keywords(call: ast.Call) -> str | None:
-    names = [k.arg for k in call.keywords if k.arg is not None]
-    repeated = next((n for i, n in enumerate(names) if n in names[:i]), None)
+    repeated = _first_repeated([k.arg for k in call.keywords if k.arg is not None])
     return f"keyword argument repeated: {repeated}" if repeated else None
 
 
 def _duplicate_parameters(function: ast.AST) -> str | None:
     arguments = function.args  # type: ignore[attr-defined]
-    names = [a.arg for a in (*arguments.posonlyargs, *arguments.args, arguments.vararg,
-                             *arguments.kwonlyargs, arguments.kwarg) if a is not None]
-    repeated = next((n for i, n in enumerate(names) if n in names[:i]), None)
+    repeated = _first_repeated([a.arg for a in (
+        *arguments.posonlyargs, *arguments.args, arguments.vararg, *arguments.kwonlyargs,
+        arguments.kwarg) if a is not None])
     return f"duplicate argument '{repeated}' in function definition" if repeated else None
 
 
