@@ -8,10 +8,11 @@ from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
-from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.ast_nodes import nodes_of_class, subtree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
+from pkgtool.rules.python._assignments import assigned_values
 from pkgtool.rules.python._message_instances import attributes_taken, method_receiver
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings
@@ -63,6 +64,56 @@ def _node_classes(index: Index, bases: set[str]) -> Iterator[ast.ClassDef]:
             yield cls
 
 
+def _suggestion(attr: str, known: set[str]) -> str:
+    """`` (did you mean `x`?)`` for the known attribute spelled most like ``attr`` (the
+    node's own ``<attr>_node``, as ``destroy_node`` for ``destroy``, first)."""
+    if f"{attr}_node" in known:
+        return f" (did you mean `{attr}_node`?)"
+    close = get_close_matches(attr, sorted(known - NODE_ATTRIBUTES | {
+        a for a in NODE_ATTRIBUTES if not a.startswith("_")}), n=1)
+    return f" (did you mean `{close[0]}`?)" if close else ""
+
+
+def _instance_reads(package: Package, path: str, tree: ast.Module, index: Index,
+                    bases: set[str], stored: set[str], probed: frozenset[str]
+                    ) -> Iterator[Hit]:
+    """Attributes read on a local name that holds an instance of one of the module's node
+    classes (every assignment of it in its function is ``node = Talker()``, or None as a
+    placeholder) that neither the class nor rclpy's Node has and nothing stores."""
+    classes = {cls.name: cls for cls in _node_classes(index, bases)}
+    if not classes:
+        return
+    module_bound = scope_bindings(tree)
+    for function in index.functions:
+        for statement in subtree(function):
+            made = statement.value if isinstance(statement, ast.Assign) and \
+                len(statement.targets) == 1 and isinstance(statement.targets[0], ast.Name) \
+                else None
+            cls = classes.get(made.func.id) if isinstance(made, ast.Call) and \
+                isinstance(made.func, ast.Name) and module_bound[made.func.id] == 1 else None
+            if cls is None or index.enclosing_function(statement) is not function:
+                continue
+            target = statement.targets[0]  # type: ignore[attr-defined]
+            values = assigned_values(target, package, tree, index)
+            if not values or any(not (isinstance(v, ast.Constant) and v.value is None) and
+                                 not (isinstance(v, ast.Call) and ast.unparse(v.func) ==
+                                      cls.name) for v, _ in values):
+                continue
+            known = set(scope_bindings(cls)) | stored | NODE_ATTRIBUTES
+            reads: dict[str, list[Span]] = {}
+            for node in attributes_taken(function, target.id):
+                if isinstance(node.ctx, ast.Load) and not node.attr.startswith("__") and \
+                        node.attr not in known and not guarded(node, index, probed):
+                    reads.setdefault(node.attr, []).append(Span(
+                        path, node.end_lineno or node.lineno,
+                        (node.end_col_offset or 0) - len(node.attr) + 1))
+            for attr, spans in reads.items():
+                yield Hit(spans[0], f"`{target.id}` is a `{cls.name}`, which has no attribute "
+                          f"`{attr}`{_suggestion(attr, known)}: nothing assigns it and "
+                          "rclpy's Node has none, so reading it raises AttributeError",
+                          related=tuple(spans[1:]))
+
+
 @rule("PYC023", "undefined-node-attribute", Severity.ERROR,
       fix="Use the attribute the class assigns (check the spelling), or assign it in "
           "`__init__`")
@@ -78,7 +129,9 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
     augmented assignment, `self.x += 1`, reads `x` first, so it counts as a read). Modules
     using `setattr`, `delattr`, `vars`, `__dict__`, `__getattr__`, `__setattr__` or
     `__slots__`, names they pass to `hasattr`/`getattr`, and reads inside a `try` that
-    catches `AttributeError` are left alone. Typical causes: a misspelt callback
+    catches `AttributeError` are left alone. The same goes for `node.x` read on a local name
+    that holds an instance of such a class (`node = Talker()`, None as a placeholder aside):
+    `node.destroy()` for `node.destroy_node()`. Typical causes: a misspelt callback
     (`self.timer_calback`), a publisher stored as `self.publisher_` and used as
     `self.publisher`, a method renamed but not its uses.
 
@@ -113,6 +166,7 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
         stored, bases = facts
         probed = probed_names(index)
         augmented = _augmented(tree)
+        yield from _instance_reads(package, module.path, tree, index, bases, stored, probed)
         for cls in _node_classes(index, bases):
             known = set(scope_bindings(cls)) | stored | NODE_ATTRIBUTES
             reads: dict[str, list[ast.Attribute]] = {}
@@ -126,10 +180,7 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
             for attr, nodes in reads.items():
                 spans = [Span(module.path, n.end_lineno or n.lineno,
                               (n.end_col_offset or 0) - len(attr) + 1) for n in nodes]
-                close = get_close_matches(attr, sorted(known - NODE_ATTRIBUTES
-                                                       | {a for a in NODE_ATTRIBUTES
-                                                          if not a.startswith("_")}), n=1)
-                hint = f" (did you mean `{close[0]}`?)" if close else ""
+                hint = _suggestion(attr, known)
                 yield Hit(spans[0], f"`{cls.name}` has no attribute `{attr}`{hint}: nothing "
                           f"assigns `self.{attr}` and rclpy's Node has none, so reading it "
                           "raises AttributeError", related=tuple(spans[1:]))
