@@ -10,6 +10,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import node_api_calls, node_subclasses
+from pkgtool.rules.python._assignments import assigned_values
 from pkgtool.rules.python._value_types import receiver_class
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import installed_trees
@@ -62,6 +63,41 @@ def _function_calls(package: Package) -> Iterator[Hit]:
                       f"Pass it by keyword: `{meant}=...`")
 
 
+EXECUTORS = frozenset(f"rclpy.executors.{name}" for name in (
+    "Executor", "SingleThreadedExecutor", "MultiThreadedExecutor", "EventsExecutor"))
+"""rclpy's executor classes."""
+_EXECUTOR_METHODS = {"spin": (), "spin_once": ("timeout_sec",),
+                     "spin_until_future_complete": ("future", "timeout_sec"),
+                     "add_node": ("node",), "remove_node": ("node",),
+                     "shutdown": ("timeout_sec",)}
+"""Executor methods (Humble to Rolling) and their parameters."""
+
+
+def _executor_calls(package: Package) -> Iterator[Hit]:
+    """Calls of an executor's methods (on a local name or ``self.x`` every assignment of which
+    makes one of rclpy's executors) given more positional arguments than they take."""
+    for module, tree, index in installed_trees(package):
+        for call in index.calls:
+            func = call.func
+            taken = _EXECUTOR_METHODS.get(func.attr) if isinstance(func, ast.Attribute) \
+                else None
+            if taken is None or len(call.args) <= len(taken) or \
+                    any(isinstance(a, ast.Starred) for a in call.args):
+                continue
+            values = assigned_values(func.value, package, tree, index)  # type: ignore
+            if not values or not all(isinstance(v, ast.Call) and
+                                     i.qualified(v.func) in EXECUTORS for v, i in values):
+                continue
+            extra, spin = call.args[len(taken)], func.attr == "spin"  # type: ignore
+            hint = " (give the executor its node with `add_node(node)`)" if spin else ""
+            yield Hit(Span(module.path, extra.lineno, extra.col_offset + 1),
+                      f"`{ast.unparse(func)}()` takes {len(taken) or 'no'} argument"
+                      f"{'s' if len(taken) != 1 else ''} but is given {len(call.args)}: "
+                      f"Python raises TypeError{hint}",
+                      "Add the node with `add_node()`, then call `spin()` alone" if spin
+                      else "Pass only what the method takes")
+
+
 @rule("PYC033", "too-many-rclpy-arguments", Severity.ERROR,
       fix="Pass the later arguments by keyword: `qos_profile=...`, `callback_group=...`")
 def too_many_rclpy_arguments(package: Package) -> Iterator[Hit]:
@@ -76,8 +112,10 @@ def too_many_rclpy_arguments(package: Package) -> Iterator[Hit]:
     `callback_group`, ...) is keyword-only (Humble to Rolling). `get_parameter` takes the
     name alone: `self.get_parameter('period', 0.5)`, a default given as to `dict.get`, is
     the usual case. Also reports `rclpy.spin_once(node, 0.1)`: its `timeout_sec` is
-    keyword-only, and `rclpy.init(args)`: `init` takes keywords only (`args=args`). Calls
-    passing `*args` are not judged, nor packages defining a function of the same name.
+    keyword-only, and `rclpy.init(args)`: `init` takes keywords only (`args=args`), and an
+    executor's `spin(node)` (it takes no argument: `add_node(node)` gives it the node; also
+    `spin_once`, `add_node` and the others given too many). Calls passing `*args` are not
+    judged, nor packages defining a function of the same name.
 
     ## Why is this bad?
     Python raises `TypeError: create_client() takes 3 positional arguments but 4 were given`
@@ -107,3 +145,4 @@ def too_many_rclpy_arguments(package: Package) -> Iterator[Hit]:
                   _message(method, positional, keywords, len(call.args)),
                   None if keywords else _DEFAULT)
     yield from _function_calls(package)
+    yield from _executor_calls(package)
