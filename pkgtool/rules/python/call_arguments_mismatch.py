@@ -109,4 +109,15 @@ def call_arguments_mismatch(package: Package) -> Iterator[Hit]:
                 assert callee is not None
                 yield Hit(Span(module.path, call.lineno, call.col_offset + 1),
                           f"`{ast.unparse(call)}` cannot call `{callee[2]}` "
-                          f"(`{_signature(callee[0])}`): {error}, Python raises TypeError")
+                          f"(`{_signature(callee[0])}`): {error}{_receiver_note(callee)}, "
+                          "Python raises TypeError")
+
+
+def _receiver_note(callee: tuple[ast.FunctionDef, int, str]) -> str:
+    """`` (`target` receives the instance: is `self` missing?)`` for a method whose first
+    parameter is not named ``self``."""
+    function, skipped, _ = callee
+    first = [*function.args.posonlyargs, *function.args.args][:skipped]
+    if first and first[0].arg not in ("self", "cls"):
+        return f" (`{first[0].arg}` receives the instance: is `self` missing?)"
+    return ""
