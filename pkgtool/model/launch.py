@@ -52,7 +52,9 @@ class NodeRef:
     with literal keys (nested dicts give dotted names), or an XML node's ``<param name=
     value=>`` children, each where its key is written, with the source of its value when
     that is a literal (``1.0``, ``'fast'``; for XML, the value launch makes of the text),
-    else None. ``output`` is the static ``output=`` (``'screen'``), when given.
+    else None. ``output`` is the static ``output=`` (``'screen'``), when given; ``not_text``
+    is where a Python ``arguments=``, ``ros_arguments=`` or ``remappings=`` display holds a
+    number or bool literal (launch takes text and substitutions only), with the keyword.
     """
 
     package: str | None
@@ -74,6 +76,7 @@ class NodeRef:
     remappings_not_pairs: Span | None = None
     inline_parameters: tuple[tuple[str, Span, str | None], ...] = ()
     output: str | None = None
+    not_text: tuple[Span, str] | None = None
 
     @property
     def composable(self) -> bool:

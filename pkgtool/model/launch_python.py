@@ -278,6 +278,8 @@ class _Reader(ast.NodeVisitor):
             name, unknown = self._node_name(node)
             namespace = self.value(_keyword(node, "namespace"))
             output = self.value(_keyword(node, "output"))
+            not_text = next(((self._span(literal), keyword) for keyword in _TEXT_LISTS
+                             for literal in _non_text(_keyword(node, keyword))), None)
             remaps = not_pairs(_keyword(node, "remappings"), self._resolved)
             self.nodes.append(NodeRef(
                 package if isinstance(package, str) else None,
@@ -293,7 +295,7 @@ class _Reader(ast.NodeVisitor):
                 else None, unused=bool(self.dead),
                 remappings_not_pairs=remaps and self._span(remaps),
                 inline_parameters=tuple(self._inline_parameters(parameters)),
-                output=output if isinstance(output, str) else None))
+                output=output if isinstance(output, str) else None, not_text=not_text))
         elif name == "ExecuteProcess":
             self._ros2_run(node)
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
@@ -503,3 +505,16 @@ def read_python_launch(path: str, tree: ast.Module) -> tuple[
     unique = {(f.package, f.parts, f.span.line): f for f in reversed(files)}
     return (tuple(reader.nodes), tuple(reader.packages),
             tuple(sorted(unique.values(), key=lambda f: (f.span.line, f.span.col))))
+
+
+_TEXT_LISTS = ("arguments", "ros_arguments", "remappings")
+"""Node keywords whose list items (or pairs' items) launch takes as text or substitutions."""
+
+
+def _non_text(value: ast.expr | None) -> Iterator[ast.Constant]:
+    """Number and bool literals in a list or tuple display (or in its tuples, for pairs)."""
+    items = value.elts if isinstance(value, (ast.List, ast.Tuple)) else []
+    for item in items:
+        inner = item.elts if isinstance(item, ast.Tuple) else [item]
+        yield from (i for i in inner if isinstance(i, ast.Constant) and
+                    i.value is not None and not isinstance(i.value, str))

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import fnmatch
 import posixpath
 import re
 from collections.abc import Iterable, Iterator
@@ -57,6 +58,10 @@ def uninstalled_launch_resources(package: Package
     return tuple(_uninstalled(package))
 
 
+_GLOB = re.compile(r"[*?[]")
+"""A path that is a glob pattern (what ``glob.glob`` expands), not a file name."""
+
+
 def _uninstalled(package: Package) -> Iterator[tuple[str, FileRef, str, dict[str, str]]]:
     setup = checked_setup(package)
     installed = installed_data(package) if setup else None
@@ -74,8 +79,10 @@ def _uninstalled(package: Package) -> Iterator[tuple[str, FileRef, str, dict[str
                 continue
             target = posixpath.normpath(posixpath.join(share, *ref.parts))
             if target in installed or target in listed or \
-                    any(t.startswith(target + "/") for t in installed):
-                continue
+                    any(t.startswith(target + "/") for t in installed) or \
+                    _GLOB.search(target) and any(fnmatch.fnmatchcase(t, target)
+                                                 for t in (*installed, *listed)):
+                continue  # a pattern (`config/*.yaml`) the code expands: installed files match
             yield path, ref, posixpath.relpath(target, share), installed
 
 

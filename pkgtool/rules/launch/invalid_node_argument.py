@@ -71,6 +71,11 @@ def _problems(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
     yield from _names(node)
     yield from _output(node)
     given = set(node.arguments)
+    if node.not_text:
+        where, keyword = node.not_text
+        yield (f"`{keyword}=` of `{node.action}()` holds a number or bool, not text: launch "
+               "takes text and substitutions only and raises TypeError",
+               "Quote it: `'2'`", where)
     if node.remappings_not_pairs:
         yield (f"`remappings=` of `{node.action}()` is not a list of (from, to) tuples",
                "Put each remapping in a tuple of two, in a list: "
@@ -126,7 +131,8 @@ def invalid_launch_node_argument(package: Package) -> Iterator[Hit]:
     `namespace="my robot"`, a `__node:=` remapping) must be one rcl accepts: letters,
     digits and underscores (and `/` between the parts of a namespace), no part starting
     with a digit, and a literal `output` must be one launch knows (`screen`, `log`, `both`,
-    `own_log`, `full`).
+    `own_log`, `full`); a Python `arguments=`, `ros_arguments=` or `remappings=` display must
+    hold text (`arguments=['--rate', 2]` is refused).
 
     ## Why is this bad?
     `ros2 launch` stops before starting anything: Python raises `TypeError: unexpected keyword
