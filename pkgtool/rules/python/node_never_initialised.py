@@ -8,7 +8,9 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
 from pkgtool.rules.node_api import node_subclasses
+from pkgtool.rules.python._message_instances import attributes_taken, method_receiver
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
@@ -61,8 +63,32 @@ def _uninitialised(index: Index) -> Iterator[tuple[ast.ClassDef, ast.AST]]:
             continue
         if initialising is None:
             initialising = _initialising(index)
-        if id(cls) not in initialising:
+        if id(cls) not in initialising and _used_as_node(cls, index):
             yield cls, init
+
+
+_SPINS = frozenset({"spin", "spin_once", "spin_until_future_complete", "add_node"})
+"""What takes a node to run it (rclpy's functions, an executor's methods)."""
+
+
+def _used_as_node(cls: ast.ClassDef, index: Index) -> bool:
+    """True when the class's methods use their receiver as a node (``self.get_logger()``,
+    ``self.create_publisher``: a public attribute of rclpy's Node), or the module gives a new
+    instance of it to a spin or ``add_node``; a class that only inherits from Node and works
+    through a node it holds (``self.node``) is none."""
+    for method in cls.body:
+        receiver = method_receiver(method)
+        if receiver and any(n.attr in NODE_ATTRIBUTES and not n.attr.startswith("_")
+                            for n in attributes_taken(method, receiver)):
+            return True
+    for call in index.calls:
+        func = call.func
+        name = func.attr if isinstance(func, ast.Attribute) else \
+            func.id if isinstance(func, ast.Name) else ""
+        if name in _SPINS and any(isinstance(a, ast.Call) and isinstance(a.func, ast.Name) and
+                                  a.func.id == cls.name for a in call.args):
+            return True
+    return False
 
 
 @rule("PYC041", "node-never-initialised", Severity.ERROR,
@@ -73,7 +99,10 @@ def node_never_initialised(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports the `__init__` of a class deriving from rclpy's `Node` (or `LifecycleNode`, also
     through other classes of the module) when no method of the class calls
-    `super().__init__(...)` or `Node.__init__(self, ...)`.
+    `super().__init__(...)` or `Node.__init__(self, ...)`, and the class is used as a node:
+    its methods use their receiver's Node API (`self.create_publisher`, `self.get_logger()`)
+    or the module spins a new instance of it. A class that only inherits from Node and works
+    through a node it holds (`self.node.get_logger()`) is left alone.
 
     ## Why is this bad?
     The Node's constructor creates the node in the ROS graph and the attributes every
