@@ -2,8 +2,10 @@
 
 A test is decided only when it is certain for every Python 3: ``sys.version_info`` (or its
 ``[0]``/``.major``) compared with constants, ``six.PY2``/``PY2``/``PY3``, literal constants,
-a module-level name assigned once to a constant and never again, and ``not``/``and``/``or``
-of those. Anything else is undecided (None) and both branches count as running.
+a module-level name assigned once to a constant and never again (in a function, also a name
+its own body assigns once to a constant that nothing else in the file binds), and
+``not``/``and``/``or`` of those. Anything else is undecided (None) and both branches count as
+running.
 
 Tests on the ROS version are decided for ROS 2, the build pkgtool checks (packages built by
 catkin under ROS 1 and by ament under ROS 2 keep their ROS 1 code under ``if ROS_VERSION ==
@@ -24,7 +26,7 @@ import operator
 from collections import Counter
 from collections.abc import Callable
 
-from pkgtool.model.ast_nodes import descendants, nodes_of_class
+from pkgtool.model.ast_nodes import descendants, nodes_of_class, walk_once
 from pkgtool.model.memo import per_object
 
 _COMPARE = {ast.Lt: operator.lt, ast.LtE: operator.le, ast.Gt: operator.gt,
@@ -174,13 +176,55 @@ def mentions_module_name(test: ast.expr) -> bool:
     return any(isinstance(n, ast.Name) and n.id in MODULE_DUNDERS for n in descendants(test))
 
 
+_FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
+
+
+@per_object(64)
+def function_constants(tree: ast.Module) -> dict[int, dict[str, bool]]:
+    """By id of a function, its local flags: names a statement of the function's own body
+    assigns a constant (``debug = False``), when nothing else in the whole file binds the name
+    (no other assignment, no parameter anywhere, no ``global``/``nonlocal``)."""
+    candidates = [(function, statement.targets[0].id, statement.value.value)
+                  for function in nodes_of_class(tree, *_FUNCTIONS)
+                  for statement in function.body  # type: ignore[attr-defined]
+                  if isinstance(statement, ast.Assign) and len(statement.targets) == 1
+                  and isinstance(statement.targets[0], ast.Name)
+                  and isinstance(statement.value, ast.Constant)]
+    if not candidates:
+        return {}
+    names = {name for _, name, _ in candidates}
+    binds = Counter(n.id for n in nodes_of_class(tree, ast.Name)  # type: ignore[attr-defined]
+                    if n.id in names and not isinstance(n.ctx, ast.Load))  # type: ignore
+    binds.update(n.arg for n in nodes_of_class(tree, ast.arg)  # type: ignore[attr-defined]
+                 if n.arg in names)  # type: ignore[attr-defined]
+    binds.update(name for n in nodes_of_class(tree, ast.Global, ast.Nonlocal)
+                 for name in n.names if name in names)  # type: ignore[attr-defined]
+    found: dict[int, dict[str, bool]] = {}
+    for function, name, value in candidates:
+        if binds[name] == 1:
+            found.setdefault(id(function), {})[name] = bool(value)
+    return found
+
+
+def _enclosing_function(node: ast.AST, parents: dict[int, ast.AST]) -> ast.AST | None:
+    parent = parents.get(id(node))
+    while parent is not None and not isinstance(parent, _FUNCTIONS):
+        parent = parents.get(id(parent))
+    return parent
+
+
 def dead_lines(tree: ast.Module) -> list[tuple[int, int]]:
-    """Line ranges (first, last) of ``if`` branches that never run on Python 3."""
+    """Line ranges (first, last) of ``if`` branches that never run on Python 3 (also those a
+    function's own constant flag decides: ``debug = False`` then ``if debug:``)."""
     constants = module_constants(tree)
+    local = function_constants(tree)
+    parents = walk_once(tree).parents if local else {}
     ranges: list[tuple[int, int]] = []
     for node in nodes_of_class(tree, ast.If):
         if isinstance(node, ast.If):
-            value = truth(node.test, constants)
+            function = _enclosing_function(node, parents) if local else None
+            flags = local.get(id(function)) if function is not None else None
+            value = truth(node.test, {**constants, **flags} if flags else constants)
             branch = node.body if value is False else node.orelse if value is True else []
             if branch:
                 ranges.append((branch[0].lineno, branch[-1].end_lineno or branch[-1].lineno))

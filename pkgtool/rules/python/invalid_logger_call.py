@@ -11,6 +11,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.model.static_branches import dead_lines
 from pkgtool.rules.node_api import node_subclasses
 from pkgtool.rules.python._field_reads import field_reads
 from pkgtool.rules.python._message_instances import known_messages
@@ -174,9 +175,11 @@ def invalid_logger_call(package: Package) -> Iterator[Hit]:
             continue
         loggers: set[str] | None = None
         typed = _typer(package, tree, index)
+        dead = dead_lines(tree)
         for call in index.calls:
             func = call.func
-            if not isinstance(func, ast.Attribute) or func.attr.startswith("__"):
+            if not isinstance(func, ast.Attribute) or func.attr.startswith("__") or \
+                    any(first <= call.lineno <= last for first, last in dead):
                 continue
             if not _is_logger_call(func.value, index):
                 if loggers is None:
