@@ -73,8 +73,13 @@ def _git_dir(mirror: Path, repo: Repo) -> Path | None:
     return None
 
 
+MISSING = ".pkgtool-corpus-missing"
+"""The file of a checkout listing the files its mirror lacks (one path per line)."""
+
+
 def _archive(git_dir: Path, commit: str, into: Path) -> None:
-    """Write the tree of ``commit`` to ``into``; blobs missing from a mirror are left out.
+    """Write the tree of ``commit`` to ``into``; blobs missing from a mirror are left out and
+    listed in :data:`MISSING`.
 
     Mirrors may lack their largest blobs, so this reads objects with ``git cat-file --batch``
     (which answers ``missing`` instead of failing like ``git archive``). Symbolic links are
@@ -93,13 +98,16 @@ def _archive(git_dir: Path, commit: str, into: Path) -> None:
     output = io.BytesIO(subprocess.run([*git, "cat-file", "--batch"], input=batch, check=True,
                                        capture_output=True).stdout)
     into.mkdir(parents=True)
+    missing = []
     for mode, _, path in entries:
         header = output.readline().split()
         if header[-1] == b"missing":
+            missing.append(path)
             continue
         data = output.read(int(header[2]))
         output.read(1)
         _write(into, path, mode, data)
+    (into / MISSING).write_text("".join(f"{path}\n" for path in missing))
 
 
 def _write(root: Path, path: str, mode: bytes, data: bytes) -> None:
@@ -130,7 +138,8 @@ def build(dest: Path, mirror: Path, network: bool) -> int:
     for repo in read_corpus():
         into = dest / repo.folder
         stamp = into / ".pkgtool-corpus-commit"
-        if stamp.is_file() and stamp.read_text().strip() == repo.commit:
+        if stamp.is_file() and stamp.read_text().strip() == repo.commit and \
+                (into / MISSING).is_file():
             continue
         subprocess.run(["rm", "-rf", str(into)], check=True)
         git_dir = _git_dir(mirror, repo)
@@ -227,7 +236,11 @@ def sweep(dest: Path, untriaged: Path | None) -> None:
           f"({', '.join(f'{kind} {n}' for kind, n in sorted(kinds.items()))})")
     table: Counter[tuple[str, str, str]] = Counter()
     errors = []
-    for finding in findings:
+    absent = {folder: _missing_files(dest / folder) for folder in repos}
+    kept = [f for f in findings if not _about_missing(f, dest, absent)]
+    if len(kept) < len(findings):
+        print(f"left out: {len(findings) - len(kept)} findings about files the mirrors lack")
+    for finding in kept:
         repo, file = _locate(finding, dest, repos)
         table[(finding["rule"], finding["severity"], repo.kind)] += 1
         if finding["severity"] == "error" and repo.kind == "maintained":
@@ -235,6 +248,26 @@ def sweep(dest: Path, untriaged: Path | None) -> None:
                            finding["package"], finding["message"]))
     _print_table(table)
     _print_triage(errors, untriaged)
+
+
+def _missing_files(checkout: Path) -> tuple[str, ...]:
+    listed = checkout / MISSING
+    return tuple(filter(None, listed.read_text().splitlines())) if listed.is_file() else ()
+
+
+def _about_missing(finding: dict, dest: Path, absent: dict[str, tuple[str, ...]]) -> bool:
+    """True for a finding naming (in backticks) a file of its package the mirror lacks: the
+    real repository has it."""
+    path = Path(finding["path"])
+    folder = path.relative_to(dest).parts[0] if path.is_relative_to(dest) else ""
+    package = dest / folder
+    for missing in absent.get(folder, ()):
+        inside = (package / missing).relative_to(package)
+        parts = inside.parts
+        candidates = {"/".join(parts[i:]) for i in range(len(parts))}
+        if any(f"`{c}`" in finding["message"] for c in candidates if "/" in c or len(parts) == 1):
+            return True
+    return False
 
 
 def _print_table(table: Counter[tuple[str, str, str]]) -> None:
