@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import ast
 import fnmatch
 import posixpath
 import re
@@ -14,7 +15,7 @@ from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.setup_py import DataFile, DataSource
 from pkgtool.rules.setup_values import checked_setup
-from pkgtool.rules.syntax_trees import installed_trees
+from pkgtool.rules.syntax_trees import Index, installed_trees
 
 _SEARCH_PATHS = re.compile(r"\b(?:GZ_SIM|IGN_GAZEBO)_(?:RESOURCE|SYSTEM_PLUGIN)_PATH\b|"
                            r"\bGAZEBO_(?:MODEL|RESOURCE|PLUGIN)_PATH\b|\b(?:GZ|IGN)_FILE_PATH\b|"
@@ -98,8 +99,20 @@ def _share_reads(package: Package, shared: set[str]
                                 if (ref.package, ref.parts) not in unread and
                                 not (searched and ref.parts and "." not in ref.parts[-1]))
     for module, tree, index in installed_trees(package):
-        if index.imports_from("ament_index_python"):
+        if index.imports_from("ament_index_python") and not _checks_files(index):
             yield module.path, read_python_launch(module.path, tree)[2]
+
+
+_EXISTENCE = frozenset({"exists", "isfile", "is_file", "lexists"})
+"""``os.path.exists``, ``os.path.isfile``, ``Path.exists()``, ``Path.is_file()``..."""
+
+
+def _checks_files(index: Index) -> bool:
+    """True when the module asks whether files exist: it handles a share file that may be
+    missing (a model it downloads when absent, a file the user adds), so none of its share
+    paths is certainly read."""
+    return any(isinstance(call.func, ast.Attribute) and call.func.attr in _EXISTENCE
+               for call in index.calls)
 
 
 def _only_unused_nodes_read(launch: LaunchFile) -> set[tuple[str | None, tuple[str, ...]]]:

@@ -29,7 +29,10 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     `GAZEBO_MODEL_PATH`, ...), folders (a last part with no suffix) are left alone, by both
     rules: they are entries of the path, which skips a missing one, not files read. Nor is
     a file whose name a `.gitignore` of the package or of the folders above it lists (a
-    calibration or a map the user makes, kept out of git on purpose).
+    calibration or a map the user makes, kept out of git on purpose). Paths that are glob patterns
+    (`config/*.yaml`) count when installed files match them, and a module that asks whether
+    files exist (`os.path.exists`, `Path.exists()`: it handles a missing one, as a model it
+    downloads) is left alone.
 
     ## Why is this bad?
     Nothing can install a file the package does not have: `ros2 launch` fails on the missing
