@@ -22,9 +22,9 @@ def uninstalled_launch_resource(package: Package) -> Iterator[Hit]:
     (`get_package_share_directory('<pkg>')`, `FindPackageShare`, `$(find-pkg-share <pkg>)`
     joined with static parts, e.g. `config/params.yaml`) and reports those that data_files
     does not install (neither the file nor a folder holding it) while the package has them.
-    A file the package does not have at all is DAT012's. Paths that are glob patterns (`config/*.yaml`) count
-    when installed files match them, and a module that asks whether files exist
-    (`os.path.exists`, `Path.exists()`: it handles a missing one) is left alone.
+    A file the package does not have at all is DAT012's. Paths that are glob patterns
+    (`config/*.yaml`) count when installed files match them, and a module that asks whether
+    files exist (`os.path.exists`, `Path.exists()`: it handles a missing one) is left alone.
 
     ## Why is this bad?
     The launch file starts, then fails on the missing parameter file, URDF or RViz config,
