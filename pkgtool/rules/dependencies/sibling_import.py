@@ -39,7 +39,8 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     the folder and is left alone. Fallbacks (`except ImportError:`, `if '.' in __name__:`)
     are guarded and never reported, and so are scripts kept in the package folder: a module
     that runs code at its top level (a call, an `if __name__ == '__main__':` block) that no
-    console script runs and no module imports, run as `python3 path/to/it.py`.
+    console script runs and no module imports, run as `python3 path/to/it.py`, and the
+    helpers only such scripts of the same folder import, by their bare name.
 
     ## Why is this bad?
     `python3 my_pkg/node.py` puts the file's folder on `sys.path`, so the import works while
@@ -70,7 +71,8 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     for module in installed_code(package):
         folder = posixpath.dirname(module.path)
         parent = python_package_of(package, module)
-        if not folder or not parent or _run_as_a_script(package, module, scripts):
+        if not folder or not parent or _run_as_a_script(package, module, scripts) or \
+                _helper_of_scripts(package, module, scripts):
             continue
         own_name = posixpath.basename(module.path)[:-3]
         for imported in module.imports:
@@ -110,6 +112,26 @@ def _run_as_a_script(package: Package, module: PythonModule, scripts: frozenset[
     return not any(name in (i.module.rpartition(".")[2], *i.names)
                    for other in package.modules if other.path != module.path
                    for i in other.imports)
+
+
+def _helper_of_scripts(package: Package, module: PythonModule, scripts: frozenset[str]
+                       ) -> bool:
+    """True for a module that only scripts of its folder import, by its bare name (``import
+    detector``): it runs with them, their folder on ``sys.path`` (no console script runs it,
+    nothing imports it through the package)."""
+    if module.path in scripts:
+        return False
+    folder, name = posixpath.split(module.path[:-3])
+
+    def naming(other: PythonModule) -> list[str]:
+        return [i.module for i in other.imports
+                if name in (i.module.rpartition(".")[2], *i.names)]
+
+    importers = [other for other in package.modules
+                 if other.path != module.path and naming(other)]
+    return bool(importers) and all(
+        posixpath.dirname(other.path) == folder and set(naming(other)) == {name} and
+        _run_as_a_script(package, other, scripts) for other in importers)
 
 
 def _imports_itself(module: PythonModule | None, name: str) -> bool:
