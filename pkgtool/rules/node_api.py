@@ -185,6 +185,10 @@ def swapped_argument(call: ast.Call, method: str, index: Index) -> tuple[ast.exp
     first = call.args[0] if call.args else None
     second = call.args[1] if len(call.args) > 1 else None
     if method == "create_timer":
+        third = call.args[2] if len(call.args) > 2 else None
+        if third is not None and literal_type(third) in ("int", "float"):
+            return third, ("a number is given where the callback group goes (a timer takes no "
+                           "QoS depth: `'int' object has no attribute 'add_entity'`)")
         return (first, "the callback is given where the period goes (the period comes "
                 "first)") if first is not None and _method_of_class(first, call, index) else None
     kind = _TYPE_KINDS[PARAMETERS[method][0]]

@@ -25,8 +25,10 @@ def swapped_rclpy_arguments(package: Package) -> Iterator[Hit]:
     swapped, as ROS 1's `rospy.Publisher('chatter', String)` had them), `create_subscription`
     and `create_service` calls whose second is a lambda or a method of the class (the
     callback where the name goes), and `create_timer` calls whose first argument is one (the
-    callback where the period goes). Only modules importing rclpy are looked at, not calls
-    with `*args` or `**kwargs`, and not when the package defines a function of the same name.
+    callback where the period goes) or whose third is a number (a QoS depth where the
+    callback group goes: `'int' object has no attribute 'add_entity'`, checked on Jazzy).
+    Only modules importing rclpy are looked at, not calls with `*args` or `**kwargs`, and not
+    when the package defines a function of the same name.
 
     ## Why is this bad?
     rclpy checks the type: a string raises (`'str' object has no attribute
