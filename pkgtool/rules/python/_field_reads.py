@@ -89,6 +89,7 @@ def _read(message: Message, use: ast.Attribute, index: Index) -> FieldRead | Non
                 current, holder = parent, nested
                 continue  # else an attribute of the field's value: the field is read
         kind = holder.fields.get(current.attr)
-        if kind is None or not isinstance(current.ctx, ast.Load):
-            return None
+        augmented = isinstance(parent, ast.AugAssign) and parent.target is current
+        if kind is None or not isinstance(current.ctx, ast.Load) and not augmented:
+            return None  # a store, but `msg.data += x` reads the field first
         return FieldRead(current, f"{holder.name}.{current.attr}", kind)

@@ -35,8 +35,8 @@ def text_plus_number(package: Package) -> Iterator[Hit]:
     """A str and a number are added with `+`.
 
     ## What it does
-    Reports `a + b` where one side is certainly a str and the other certainly an int, float
-    or bool: literals, builtin conversions (`str(x)`, `len(x)`), local names every
+    Reports `a + b` (and `a += b`) where one side is certainly a str and the other certainly
+    an int, float or bool: literals, builtin conversions (`str(x)`, `len(x)`), local names every
     assignment of which gives that type, a node's `self.x` every store of which in the
     package does, fields of known messages (`msg.linear.x` is a float, `msg.data` of a
     `String` a str), and parameter values of a known type (`self.get_parameter('period')
@@ -61,12 +61,13 @@ def text_plus_number(package: Package) -> Iterator[Hit]:
     ```
     """
     for module, tree, index in installed_trees(package):
-        adds = [n for n in nodes_of_class(tree, ast.BinOp)
+        adds = [n for n in nodes_of_class(tree, ast.BinOp, ast.AugAssign)
                 if isinstance(n.op, ast.Add)]  # type: ignore[attr-defined]
         fields = field_reads(tree, index, package) if adds else {}
         for node in adds:
-            left, right = (_type(side, fields, package, tree, index)  # type: ignore
-                           for side in (node.left, node.right))  # type: ignore[attr-defined]
+            sides = (node.left, node.right) if isinstance(node, ast.BinOp) else \
+                (node.target, node.value)  # type: ignore[attr-defined]
+            left, right = (_type(side, fields, package, tree, index) for side in sides)
             if left is not None and right is not None and "str" in (left, right) and \
                     {left, right} & NUMBER_TYPES:
                 number = right if right in NUMBER_TYPES else left
