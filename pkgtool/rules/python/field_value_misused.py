@@ -10,6 +10,8 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._field_reads import ARRAY_SEQUENCE, FieldRead, field_reads
+from pkgtool.rules.python._message_instances import known_messages
+from pkgtool.rules.python._messages import message_instances
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
@@ -48,6 +50,35 @@ def _misuse(read: FieldRead, index: Index) -> str | None:
     return None
 
 
+def _container_use(ref: ast.expr, index: Index) -> str | None:
+    """What Python raises when the message ``ref`` reads is measured, indexed or iterated."""
+    parent = index.parents.get(id(ref))
+    if isinstance(parent, ast.Call) and isinstance(parent.func, ast.Name) and \
+            parent.func.id == "len" and parent.args == [ref] and "len" not in index.bound:
+        return "has no len()"
+    if isinstance(parent, ast.Subscript) and parent.value is ref:
+        return "is not subscriptable"
+    if isinstance(parent, (ast.For, ast.comprehension)) and parent.iter is ref:
+        return "is not iterable"
+    return None
+
+
+def _messages_misused(path: str, package: Package, tree: ast.Module, index: Index
+                      ) -> Iterator[Hit]:
+    """A message itself (not a field of it) measured, indexed or iterated."""
+    for instance in message_instances(package, tree, index, known_messages(package, index)):
+        for ref in instance.refs:
+            problem = _container_use(ref, index)
+            if problem:
+                name = instance.message.name.rpartition("/")[2]
+                said = f"object of type '{name}' has no len()" if problem == "has no len()" \
+                    else f"'{name}' object {problem}"
+                yield Hit(Span(path, ref.lineno, ref.col_offset + 1),
+                          f"`{ast.unparse(ref)}` is a `{instance.message.name}` message, which "
+                          f"{problem}: Python raises TypeError ({said})",
+                          "Use one of its fields (`msg.data`, `msg.ranges`)")
+
+
 @rule("PYC053", "field-value-misused", Severity.ERROR,
       fix="Use what the field's type has: `msg.data + '!'` for a str, `len(msg.ranges)`, "
           "`numpy.asarray(msg.ranges)` for array work")
@@ -59,7 +90,8 @@ def field_value_misused(package: Package) -> Iterator[Hit]:
     type does not have (`msg.data.append('!')` on a str, `msg.ranges.size` or
     `msg.ranges.shape` on the `array.array` rclpy gives a `float32[]`, `msg.linear.x.round()`),
     an index into a number (`msg.linear.x[0]`), and an item assigned into a str
-    (`msg.data[0] = 'H'`). Python's own types answer (`hasattr(str, 'append')`).
+    (`msg.data[0] = 'H'`). Python's own types answer (`hasattr(str, 'append')`). Also a
+    message itself measured, indexed or iterated (`len(msg)`, `msg[0]`, `for r in msg:`).
 
     ## Why is this bad?
     rclpy gives a field a plain Python value: a str, an int, a float, a bool, an
@@ -82,6 +114,7 @@ def field_value_misused(package: Package) -> Iterator[Hit]:
     ```
     """
     for module, tree, index in installed_trees(package):
+        yield from _messages_misused(module.path, package, tree, index)
         for read in field_reads(tree, index, package).values():
             problem = _misuse(read, index)
             if problem:
