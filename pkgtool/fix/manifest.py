@@ -15,7 +15,7 @@ from pkgtool.knowledge.rosdep import suggested_key
 from pkgtool.knowledge.rosdistro import close_names
 from pkgtool.model.package import Package
 from pkgtool.records import replace
-from pkgtool.rules.manifest.dependency_names import neighbours
+from pkgtool.rules.dependency_names import neighbours
 from pkgtool.rules.manifest.non_spdx_license import spdx_spelling
 from pkgtool.rules.manifest.template_placeholder import is_placeholder
 from pkgtool.rules.setup_values import text_of

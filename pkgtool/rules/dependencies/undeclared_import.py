@@ -7,6 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.package import Package
+from pkgtool.rules.dependency_names import names_module, unknown_dependencies
 from pkgtool.rules.imports import (BUILD_ONLY, TEST, Need, also_imported, declared,
                                    dependency_cause, grouped, misnamed, unmet_runtime_needs)
 from pkgtool.rules.registry import rule
@@ -28,7 +29,9 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     `python3-opencv`, `rosdistro` by `python3-rosdistro-modules`, `pyflakes` by `pyflakes3`,
     ...). One finding stands for each missing declaration: modules whose suggested key is the
     same (`matplotlib` and `mpl_toolkits`, both `python3-matplotlib`) are reported together at
-    the first import, their other imports listed. Modules that only a
+    the first import, their other imports listed. A module the package declares under a key
+    rosdep does not know but written for it (`python3-torch-pip-shim` for `torch`, a key of a
+    private rosdep source) is MAN022's: one mistake, one finding. Modules that only a
     `pytest11` entry point names are pytest plugins, checked as test code (DEP003). Without a
     setup.py at the root (ament_cmake) the modules inside Python package folders count as
     installed, only those under what CMakeLists.txt installs when its `install()`,
@@ -55,8 +58,10 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     """
     build_only = declared(package, BUILD_ONLY)
     tests = declared(package, TEST)
+    unknown = [u.dependency.name for u in unknown_dependencies(package) if not u.close]
     unmet = (need for need in unmet_runtime_needs(package)  # not DEP004's, DEP002's cases
-             if need.kind != "unknown" and not any(k in build_only for k in need.keys))
+             if need.kind != "unknown" and not any(k in build_only for k in need.keys) and
+             not any(names_module(key, need.imported.top_level) for key in unknown))
     for need, others in grouped(unmet, by_key=True):
         tops = _first_per_module((need, *others))
         yield Hit(need.imported.span,

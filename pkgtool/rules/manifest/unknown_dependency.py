@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.manifest.dependency_names import unknown_dependencies
+from pkgtool.rules.dependency_names import unknown_dependencies
 from pkgtool.rules.registry import rule
 
 

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge import rosdistro
 from pkgtool.model.package import Package
-from pkgtool.rules.manifest.dependency_names import checked_dependencies, is_local
+from pkgtool.rules.dependency_names import checked_dependencies, is_local
 from pkgtool.rules.registry import rule
 
 

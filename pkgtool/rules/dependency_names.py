@@ -1,4 +1,4 @@
-"""What MAN021-MAN023 share: dependency keys that rosdep cannot resolve for the target distro.
+"""What MAN021-MAN023 and DEP001 share: dependency keys that rosdep cannot resolve for the target.
 
 A ``*_depend`` key resolves when it is a ROS package released for the target distribution, a
 rosdep key, or a package of the same workspace. Keys that MAN018 already explains (pip and
@@ -68,6 +68,16 @@ def neighbours(package: Package) -> frozenset[str]:
     """The other packages of its workspace: the names a misspelt key may have meant (the
     package itself is MAN014's, never a near miss)."""
     return frozenset(package.context.workspace) - {package.name}
+
+
+_AFFIXES = re.compile(r"^(python3?-)|(-pip-shim|-pip|-python3?)$")
+
+
+def names_module(key: str, module: str) -> bool:
+    """True when ``key`` is written for the Python module ``module``: ``python3-torch``,
+    ``python3-torch-pip-shim`` and ``torch`` for ``torch`` (``-`` and ``_`` alike)."""
+    bare = _AFFIXES.sub("", _AFFIXES.sub("", key.lower()))
+    return bare.replace("-", "_") == module.lower()
 
 
 @per_package
