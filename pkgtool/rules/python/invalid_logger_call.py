@@ -84,8 +84,8 @@ def _problem(call: ast.Call, typed: Callable[[ast.expr], str | None]) -> str | N
             any(k.arg is None for k in call.keywords):
         return None
     if len(call.args) > 1:
-        return "takes one message: the other arguments raise `TypeError`; format them into " \
-               "the message with an f-string"
+        return "takes one message: rclpy raises `TypeError` for the other arguments; format " \
+               "them into the message with an f-string"
     by_keyword = [k.value for k in call.keywords if k.arg == MESSAGE]
     if by_keyword and call.args:
         return "passes the message twice, by position and as `message=`: rclpy raises " \
