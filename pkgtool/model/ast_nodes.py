@@ -87,6 +87,16 @@ def walk_once(tree: ast.AST) -> Walk:
     return Walk(tuple(found), parents, by_class)
 
 
+def enclosing(node: ast.AST, parents: dict[int, ast.AST], kinds: tuple[type, ...]
+              ) -> ast.AST | None:
+    """The nearest node around ``node`` (by ``parents``: a :class:`Walk`'s) of one of
+    ``kinds``, or None."""
+    parent = parents.get(id(node))
+    while parent is not None and not isinstance(parent, kinds):
+        parent = parents.get(id(parent))
+    return parent
+
+
 def child_nodes(node: ast.AST) -> list[ast.AST]:
     """``list(ast.iter_child_nodes(node))`` without its two generators, and without context
     and operator nodes."""

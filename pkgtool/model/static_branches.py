@@ -26,7 +26,7 @@ import operator
 from collections import Counter
 from collections.abc import Callable
 
-from pkgtool.model.ast_nodes import descendants, nodes_of_class, walk_once
+from pkgtool.model.ast_nodes import descendants, enclosing, nodes_of_class, walk_once
 from pkgtool.model.memo import per_object
 
 _COMPARE = {ast.Lt: operator.lt, ast.LtE: operator.le, ast.Gt: operator.gt,
@@ -206,23 +206,18 @@ def function_constants(tree: ast.Module) -> dict[int, dict[str, bool]]:
     return found
 
 
-def _enclosing_function(node: ast.AST, parents: dict[int, ast.AST]) -> ast.AST | None:
-    parent = parents.get(id(node))
-    while parent is not None and not isinstance(parent, _FUNCTIONS):
-        parent = parents.get(id(parent))
-    return parent
-
-
+@per_object(64)
 def dead_lines(tree: ast.Module) -> list[tuple[int, int]]:
     """Line ranges (first, last) of ``if`` branches that never run on Python 3 (also those a
-    function's own constant flag decides: ``debug = False`` then ``if debug:``)."""
+    function's own constant flag decides: ``debug = False`` then ``if debug:``), worked out
+    once per tree (PYC001, PYC016 and PYC019 ask); treat as read-only."""
     constants = module_constants(tree)
     local = function_constants(tree)
     parents = walk_once(tree).parents if local else {}
     ranges: list[tuple[int, int]] = []
     for node in nodes_of_class(tree, ast.If):
         if isinstance(node, ast.If):
-            function = _enclosing_function(node, parents) if local else None
+            function = enclosing(node, parents, _FUNCTIONS) if local else None
             flags = local.get(id(function)) if function is not None else None
             value = truth(node.test, {**constants, **flags} if flags else constants)
             branch = node.body if value is False else node.orelse if value is True else []

@@ -130,6 +130,11 @@ def name_argument(call: ast.Call) -> ast.expr | None:
     return keyword or first
 
 
+def bases_are_nodes(cls: ast.ClassDef, index: Index) -> bool:
+    """True when every base of ``cls`` is one of rclpy's node classes (also for no base)."""
+    return all(index.qualified(b) in NODE_CLASSES for b in cls.bases)
+
+
 def node_subclasses(index: Index) -> list[ast.ClassDef]:
     """Classes of the module derived from rclpy's node classes (directly or through others)."""
     found: list[ast.ClassDef] = []

@@ -177,6 +177,27 @@ def installed_trees(package: Package) -> tuple[tuple[PythonModule, ast.Module, I
     return tuple((module, tree, index_of(tree)) for module, tree in installed_modules(package))
 
 
+@per_package
+def base_names(package: Package) -> frozenset[str]:
+    """The names the classes of the installed modules derive from (``Base`` of ``class
+    A(Base)``, ``Node`` of ``class A(rclpy.node.Node)``)."""
+    return frozenset(base.id if isinstance(base, ast.Name) else base.attr
+                     for _, _, index in installed_trees(package) for cls in index.classes
+                     for base in cls.bases if isinstance(base, (ast.Name, ast.Attribute)))
+
+
+def python_files(package: Package, containing: tuple[str, ...] = ()
+                 ) -> Iterator[tuple[str, str, ast.Module]]:
+    """(path, text, tree) of every Python file of the package that parses (setup.py, modules,
+    launch files, tests), in path order; with ``containing``, only the files whose text holds
+    one of those strings (the others cannot match: spared the walk)."""
+    for path, text in sorted(package.texts.items()):
+        if path.endswith(".py") and (not containing or any(s in text for s in containing)):
+            tree = parse_tree(path, text)
+            if isinstance(tree, ast.Module):
+                yield path, text, tree
+
+
 def _qualified(node: ast.expr, aliases: dict[str, str]) -> str | None:
     """The dotted name an expression like ``np.int0`` stands for, or None."""
     attrs: list[str] = []

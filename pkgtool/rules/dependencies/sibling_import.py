@@ -71,25 +71,31 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     for module in installed_code(package):
         folder = posixpath.dirname(module.path)
         parent = python_package_of(package, module)
-        if not folder or not parent or _run_as_a_script(package, module, scripts) or \
-                _helper_of_scripts(package, module, scripts):
+        if not folder or not parent:
             continue
         own_name = posixpath.basename(module.path)[:-3]
+        exempt: bool | None = None  # worked out at the first import that would be reported
         for imported in module.imports:
             top = imported.top_level
             if imported.guarded or not top or top in skip:
                 continue
             inside = enclosing_package_import(package, parent, imported)
+            sibling = None if inside else next(
+                (f for f in (f"{folder}/{top}.py", f"{folder}/{top}/__init__.py")
+                 if package.has_file(f)), None)
+            if not inside and (sibling is None or top == own_name
+                               or keys_for_import(top, package.context.distro)
+                               or _imports_itself(modules.get(f"{folder}/{top}.py"), top)):
+                continue
+            if exempt is None:
+                exempt = _run_as_a_script(package, module, scripts) or \
+                    _helper_of_scripts(package, module, scripts)
+            if exempt:
+                break
             if inside:
                 yield Hit(imported.span, f"`{top}` is the package `{inside[0]}` this module is "
                                          "in, not a top-level module: the import fails once "
                                          "installed", f"Import `{inside[1]}` instead")
-                continue
-            sibling = next((f for f in (f"{folder}/{top}.py", f"{folder}/{top}/__init__.py")
-                            if package.has_file(f)), None)
-            if (sibling is None or top == own_name
-                    or keys_for_import(top, package.context.distro)
-                    or _imports_itself(modules.get(f"{folder}/{top}.py"), top)):
                 continue
             yield Hit(imported.span, f"`{top}` is a module next to `{module.path}`, not a "
                                      f"top-level module: the import fails once installed",

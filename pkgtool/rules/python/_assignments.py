@@ -14,7 +14,7 @@ import ast
 
 from pkgtool.model.ast_nodes import nodes_of_class, subtree
 from pkgtool.model.package import Package
-from pkgtool.rules.node_api import NODE_CLASSES
+from pkgtool.rules.node_api import bases_are_nodes
 from pkgtool.rules.python._message_instances import (binding_counts, callback_function, kept,
                                                      method_receiver)
 from pkgtool.rules.python._value_types import attribute_stores, receiver_class
@@ -22,6 +22,11 @@ from pkgtool.rules.syntax_trees import Index
 
 Assigned = list[tuple[ast.expr, Index]]
 """The values assigned, each with the index of its module."""
+
+
+def is_none(value: ast.expr) -> bool:
+    """True for the constant None (a placeholder assigned before the object is made)."""
+    return isinstance(value, ast.Constant) and value.value is None
 
 
 def _local_values(tree: ast.Module, index: Index) -> dict[tuple[int, str], list[ast.expr]]:
@@ -65,7 +70,7 @@ def _attribute(value: ast.Attribute, package: Package, index: Index) -> Assigned
     if not everywhere or value.attr not in everywhere:
         return None  # not a method's receiver, attributes stored unseen, or never stored
     assert cls is not None
-    own = bool(cls.bases) and all(index.qualified(b) in NODE_CLASSES for b in cls.bases)
+    own = bool(cls.bases) and bases_are_nodes(cls, index)
     stores = [(n, index) for n in _class_stores(cls, value.attr, index)] if own else \
         everywhere[value.attr]
     found: Assigned = []

@@ -15,6 +15,7 @@ from pkgtool.model.package import Package
 from pkgtool.records import record
 from pkgtool.rules.python._message_instances import kept, known_messages
 from pkgtool.rules.python._messages import message_instances
+from pkgtool.rules.python._value_types import certain_type
 from pkgtool.rules.syntax_trees import Index
 
 _PYTHON_TYPES = ((re.compile(r"float|double"), "float"),
@@ -60,6 +61,14 @@ class FieldRead:
         None for sequences, arrays, nested messages and other types."""
         return next((name for pattern, name in _PYTHON_TYPES if pattern.fullmatch(self.kind)),
                     None)
+
+
+def value_type(value: ast.expr, reads: dict[int, FieldRead], package: Package,
+               tree: ast.Module, index: Index) -> str | None:
+    """The type ``value`` certainly has: a message field's (``reads``: the tree's
+    :func:`field_reads`), else :func:`~._value_types.certain_type`'s."""
+    read = reads.get(id(value))
+    return read.python_type if read is not None else certain_type(value, package, tree, index)
 
 
 def field_reads(tree: ast.Module, index: Index, package: Package) -> dict[int, FieldRead]:

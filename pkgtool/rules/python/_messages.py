@@ -14,7 +14,8 @@ import ast
 from pkgtool.knowledge.message_fields import Message
 from pkgtool.model.package import Package
 from pkgtool.rules.node_api import PARAMETERS, argument
-from pkgtool.rules.python._assignments import assigned_values, done_callback_futures
+from pkgtool.rules.python._assignments import (assigned_values, done_callback_futures,
+                                               is_none)
 from pkgtool.rules.python._message_instances import (Instance, Known, attribute_instances,
                                                      callback_instances, companion, kept,
                                                      local_instances)
@@ -22,10 +23,6 @@ from pkgtool.rules.syntax_trees import Index
 
 _DEPTH = 3
 """How many done callbacks deep a future is followed (a callback registering another)."""
-
-
-def _is_none(value: ast.expr) -> bool:
-    return isinstance(value, ast.Constant) and value.value is None
 
 
 def _made_by(value: ast.expr, method: str) -> bool:
@@ -41,10 +38,10 @@ def _calls(value: ast.expr, method: str, package: Package, tree: ast.Module, ind
     if _made_by(value, method):
         return [value]  # type: ignore[list-item]
     values = assigned_values(value, package, tree, index)
-    if not values or any(i is not index or not (_is_none(v) or _made_by(v, method))
+    if not values or any(i is not index or not (is_none(v) or _made_by(v, method))
                          for v, i in values):
         return None
-    return [v for v, _ in values if not _is_none(v)] or None  # type: ignore[misc]
+    return [v for v, _ in values if not is_none(v)] or None  # type: ignore[misc]
 
 
 def _service_calls(future: ast.expr, package: Package, tree: ast.Module, index: Index,

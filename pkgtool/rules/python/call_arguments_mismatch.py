@@ -8,26 +8,18 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_api import NODE_CLASSES
+from pkgtool.rules.node_api import bases_are_nodes
 from pkgtool.rules.python._own_callees import (binding_error, defined_once, own_definition,
                                                own_method)
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, installed_trees
-
-
-def _subclassed(package: Package) -> frozenset[str]:
-    """The names the installed modules' classes derive from (``Base`` of ``class A(Base)``)."""
-    return frozenset(base.id if isinstance(base, ast.Name) else base.attr
-                     for _, _, index in installed_trees(package) for cls in index.classes
-                     for base in cls.bases if isinstance(base, (ast.Name, ast.Attribute)))
+from pkgtool.rules.syntax_trees import Index, base_names, installed_trees
 
 
 def _plain_class(cls: ast.ClassDef, index: Index) -> bool:
     """True for a class without decorators, metaclass or ``__new__``, deriving from nothing
     or from rclpy's node classes alone: its own ``__init__`` takes the constructor's
     arguments."""
-    return not cls.decorator_list and not cls.keywords and \
-        all(index.qualified(b) in NODE_CLASSES for b in cls.bases) and \
+    return not cls.decorator_list and not cls.keywords and bases_are_nodes(cls, index) and \
         not any(isinstance(s, ast.FunctionDef) and s.name == "__new__" for s in cls.body)
 
 
@@ -96,14 +88,11 @@ def call_arguments_mismatch(package: Package) -> Iterator[Hit]:
         node = Talker()
     ```
     """
-    subclassed: frozenset[str] | None = None
     for module, tree, index in installed_trees(package):
         for call in index.calls:
             if not isinstance(call.func, (ast.Name, ast.Attribute)):
                 continue
-            if subclassed is None:
-                subclassed = _subclassed(package)
-            callee = _callee(call, index, tree, subclassed)
+            callee = _callee(call, index, tree, base_names(package))
             error = binding_error(call, callee[0], callee[1]) if callee else None
             if error is not None:
                 assert callee is not None

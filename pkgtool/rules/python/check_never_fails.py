@@ -9,9 +9,9 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package, is_test_material
 from pkgtool.model.pytest_config import PytestConfig, pytest_config
-from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import python_files
 from pkgtool.rules.scopes import scope_walk
 from pkgtool.rules.test_modules import matches
 
@@ -76,11 +76,7 @@ def check_never_fails(package: Package) -> Iterator[Hit]:
     ```
     """
     config = pytest_config(package)
-    for path, text in sorted(package.texts.items()):
-        tree = parse_tree(path, text) if path.endswith(".py") and (
-            "assert" in text or "return" in text) else None
-        if not isinstance(tree, ast.Module):
-            continue
+    for path, _, tree in python_files(package, ("assert", "return")):
         yield from _tuple_asserts(path, tree)
         if config is not None and is_test_material(path):
             yield from _returned_checks(path, tree, config)

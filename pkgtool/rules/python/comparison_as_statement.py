@@ -8,9 +8,9 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package, is_test_material
-from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import python_files
 
 _TARGETS = (ast.Name, ast.Attribute, ast.Subscript)
 """What an assignment can store to: the left side of a comparison that may be meant as one."""
@@ -51,10 +51,7 @@ def comparison_as_statement(package: Package) -> Iterator[Hit]:
     msg.data = 'hello'
     ```
     """
-    for path, text in sorted(package.texts.items()):
-        tree = parse_tree(path, text) if path.endswith(".py") and "==" in text else None
-        if not isinstance(tree, ast.Module):
-            continue
+    for path, _, tree in python_files(package, ("==",)):
         for compare in comparison_statements(tree):
             left, right = ast.unparse(compare.left), ast.unparse(compare.comparators[0])
             meant = f"`assert {left} == {right}`" if is_test_material(path) else \

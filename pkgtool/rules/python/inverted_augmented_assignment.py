@@ -8,9 +8,9 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
-from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import python_files
 
 _SIGNS = {ast.UAdd: "+", ast.USub: "-"}
 
@@ -58,11 +58,7 @@ def inverted_augmented_assignment(package: Package) -> Iterator[Hit]:
         self.count += 1
     ```
     """
-    for path, text in sorted(package.texts.items()):
-        signed = "=+ " in text or "=- " in text
-        tree = parse_tree(path, text) if path.endswith(".py") and signed else None
-        if not isinstance(tree, ast.Module):
-            continue
+    for path, text, tree in python_files(package, ("=+ ", "=- ")):
         for node, sign in inverted_assignments(text, tree):
             target = ast.unparse(node.targets[0])
             operand = ast.unparse(node.value.operand)  # type: ignore[attr-defined]

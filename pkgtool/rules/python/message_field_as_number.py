@@ -9,8 +9,8 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.message_fields import MESSAGE_TYPE, message_of, nested_message
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._field_reads import FieldRead, field_reads, operated_with
-from pkgtool.rules.python._value_types import NUMBER_TYPES, certain_type
+from pkgtool.rules.python._field_reads import FieldRead, field_reads, operated_with, value_type
+from pkgtool.rules.python._value_types import NUMBER_TYPES
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
@@ -22,9 +22,9 @@ def _kind(value: ast.expr, reads: dict[int, FieldRead], package: Package, tree: 
     """What ``value`` certainly is, for this rule: ``message`` (a field holding one), a number
     type (a number field's, or :func:`certain_type`'s), else None."""
     read = reads.get(id(value))
-    if read is not None:
-        return "message" if MESSAGE_TYPE.fullmatch(read.kind) else read.python_type
-    return certain_type(value, package, tree, index)
+    if read is not None and MESSAGE_TYPE.fullmatch(read.kind):
+        return "message"
+    return value_type(value, reads, package, tree, index)
 
 
 def _misuse(read: FieldRead, reads: dict[int, FieldRead], package: Package, tree: ast.Module,

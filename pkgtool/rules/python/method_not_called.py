@@ -6,11 +6,12 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.ast_nodes import enclosing, nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_api import ACTION_CLIENTS, NODE_CLASSES
-from pkgtool.rules.python._assignments import assigned_values, done_callback_futures
+from pkgtool.rules.node_api import ACTION_CLIENTS, bases_are_nodes
+from pkgtool.rules.python._assignments import (assigned_values, done_callback_futures,
+                                               is_none)
 from pkgtool.rules.python._value_types import receiver_class
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
@@ -43,7 +44,7 @@ _TESTS = (ast.If, ast.While, ast.IfExp, ast.Assert)
 def _made(value: ast.expr | None, index: Index) -> str | None:
     """The kind of rclpy object ``value`` makes (a key of :data:`METHODS`), if it is a call
     that makes one; ``none`` for the constant None."""
-    if isinstance(value, ast.Constant) and value.value is None:
+    if value is not None and is_none(value):
         return "none"
     if not isinstance(value, ast.Call):
         return None
@@ -72,8 +73,7 @@ def _kind(value: ast.expr, package: Package, tree: ast.Module, index: Index) -> 
     if isinstance(value, ast.Call):
         return _made(value, index)
     cls = receiver_class(value, index) if isinstance(value, ast.Name) else None
-    if cls is not None and cls.bases and \
-            all(index.qualified(b) in NODE_CLASSES for b in cls.bases) and \
+    if cls is not None and cls.bases and bases_are_nodes(cls, index) and \
             not any(f.name in METHODS["node"] for f in index.functions):
         return "node"
     values = assigned_values(value, package, tree, index)
@@ -105,9 +105,7 @@ def _named_alone(node: ast.Attribute, index: Index) -> bool:
     if not isinstance(parent, ast.Expr) or not (
             node.attr in STATEMENT_METHODS or node.attr.startswith("destroy_")):
         return False
-    around = index.parents.get(id(parent))
-    while around is not None and not isinstance(around, (ast.Try, ast.With, *FUNCTIONS)):
-        around = index.parents.get(id(around))
+    around = enclosing(parent, index.parents, (ast.Try, ast.With, *FUNCTIONS))
     return not isinstance(around, (ast.Try, ast.With))
 
 

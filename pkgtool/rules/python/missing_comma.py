@@ -10,9 +10,9 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
-from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import python_files
 
 _HINT = "; perhaps you missed a comma?"
 _QUOTED = re.compile(r"'(\w+)'")
@@ -78,8 +78,7 @@ def missing_comma(package: Package) -> Iterator[Hit]:
     ]
     ```
     """
-    for path, text in sorted(package.texts.items()):
-        tree = parse_tree(path, text) if path.endswith(".py") else None
-        if isinstance(tree, ast.Module) and _may_warn(tree):
+    for path, _, tree in python_files(package):
+        if _may_warn(tree):
             for line, problem in comma_warnings(path, tree):
                 yield Hit(Span(path, line, 1), f"Missing comma: {problem}")

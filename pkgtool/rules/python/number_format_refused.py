@@ -9,9 +9,9 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._field_reads import field_reads
+from pkgtool.rules.python._field_reads import field_reads, value_type
 from pkgtool.rules.python._format_specs import format_specs
-from pkgtool.rules.python._value_types import NUMBER_TYPES, certain_type
+from pkgtool.rules.python._value_types import NUMBER_TYPES
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import installed_trees
 
@@ -70,9 +70,7 @@ def number_format_refused(package: Package) -> Iterator[Hit]:
                 continue
             if fields is None:
                 fields = field_reads(tree, index, package)
-            read = fields.get(id(value))
-            kind = read.python_type if read is not None else \
-                certain_type(value, package, tree, index)
+            read, kind = fields.get(id(value)), value_type(value, fields, package, tree, index)
             refused = refused_by_number(spec, kind) if kind in NUMBER_TYPES else None
             if refused:
                 what = f" (the field `{read.field}`)" if read is not None else ""

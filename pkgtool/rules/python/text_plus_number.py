@@ -9,10 +9,10 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._field_reads import FieldRead, field_reads
-from pkgtool.rules.python._value_types import NUMBER_TYPES, certain_type
+from pkgtool.rules.python._field_reads import field_reads, value_type
+from pkgtool.rules.python._value_types import NUMBER_TYPES
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.rules.syntax_trees import installed_trees
 
 
 def _error(left: str, right: str) -> str:
@@ -20,13 +20,6 @@ def _error(left: str, right: str) -> str:
     if left == "str":
         return f'can only concatenate str (not "{right}") to str'
     return f"unsupported operand type(s) for +: '{left}' and 'str'"
-
-
-def _type(value: ast.expr, fields: dict[int, FieldRead], package: Package, tree: ast.Module,
-          index: Index) -> str | None:
-    """The type ``value`` certainly has: a message field's, else :func:`certain_type`'s."""
-    read = fields.get(id(value))
-    return read.python_type if read is not None else certain_type(value, package, tree, index)
 
 
 @rule("PYC042", "text-plus-number", Severity.ERROR,
@@ -67,7 +60,7 @@ def text_plus_number(package: Package) -> Iterator[Hit]:
         for node in adds:
             sides = (node.left, node.right) if isinstance(node, ast.BinOp) else \
                 (node.target, node.value)  # type: ignore[attr-defined]
-            left, right = (_type(side, fields, package, tree, index) for side in sides)
+            left, right = (value_type(side, fields, package, tree, index) for side in sides)
             if left is not None and right is not None and "str" in (left, right) and \
                     {left, right} & NUMBER_TYPES:
                 number = right if right in NUMBER_TYPES else left

@@ -8,15 +8,15 @@ from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
-from pkgtool.model.ast_nodes import nodes_of_class, subtree
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
-from pkgtool.rules.python._assignments import assigned_values
+from pkgtool.rules.python._assignments import assigned_values, is_none
 from pkgtool.rules.python._message_instances import attributes_taken, method_receiver
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings
-from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.rules.syntax_trees import Index, base_names, installed_trees
 
 _DYNAMIC = frozenset({"setattr", "delattr", "vars", "__dict__", "__getattr__",
                       "__getattribute__", "__setattr__", "__slots__"})
@@ -40,22 +40,19 @@ def _augmented(tree: ast.Module) -> set[int]:
             if isinstance(n, ast.AugAssign)}
 
 
-def _package_facts(package: Package) -> tuple[set[str], set[str]]:
+def _package_facts(package: Package) -> tuple[set[str], frozenset[str]]:
     """The attribute names any installed module stores or deletes, and the names any class
     of the package derives from."""
     stored: set[str] = set()
-    bases: set[str] = set()
-    for _, tree, index in installed_trees(package):
+    for _, tree, _ in installed_trees(package):
         augmented = _augmented(tree)
         stored.update(n.attr for n in nodes_of_class(tree, ast.Attribute)
                       if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load)
                       and id(n) not in augmented)
-        bases.update(b.id if isinstance(b, ast.Name) else b.attr for c in index.classes
-                     for b in c.bases if isinstance(b, (ast.Name, ast.Attribute)))
-    return stored, bases
+    return stored, base_names(package)
 
 
-def _node_classes(index: Index, bases: set[str]) -> Iterator[ast.ClassDef]:
+def _node_classes(index: Index, bases: frozenset[str]) -> Iterator[ast.ClassDef]:
     """Plain classes deriving from rclpy's Node alone that no class of the package extends."""
     for cls in index.classes:
         if len(cls.bases) == 1 and not cls.keywords and not cls.decorator_list and \
@@ -75,7 +72,7 @@ def _suggestion(attr: str, known: set[str]) -> str:
 
 
 def _instance_reads(package: Package, path: str, tree: ast.Module, index: Index,
-                    bases: set[str], stored: set[str], probed: frozenset[str]
+                    bases: frozenset[str], stored: set[str], probed: frozenset[str]
                     ) -> Iterator[Hit]:
     """Attributes read on a local name that holds an instance of one of the module's node
     classes (every assignment of it in its function is ``node = Talker()``, or None as a
@@ -84,34 +81,34 @@ def _instance_reads(package: Package, path: str, tree: ast.Module, index: Index,
     if not classes:
         return
     module_bound = scope_bindings(tree)
-    for function in index.functions:
-        for statement in subtree(function):
-            made = statement.value if isinstance(statement, ast.Assign) and \
-                len(statement.targets) == 1 and isinstance(statement.targets[0], ast.Name) \
-                else None
-            cls = classes.get(made.func.id) if isinstance(made, ast.Call) and \
-                isinstance(made.func, ast.Name) and module_bound[made.func.id] == 1 else None
-            if cls is None or index.enclosing_function(statement) is not function:
-                continue
-            target = statement.targets[0]  # type: ignore[attr-defined]
-            values = assigned_values(target, package, tree, index)
-            if not values or any(not (isinstance(v, ast.Constant) and v.value is None) and
-                                 not (isinstance(v, ast.Call) and ast.unparse(v.func) ==
-                                      cls.name) for v, _ in values):
-                continue
-            known = set(scope_bindings(cls)) | stored | NODE_ATTRIBUTES
-            reads: dict[str, list[Span]] = {}
-            for node in attributes_taken(function, target.id):
-                if isinstance(node.ctx, ast.Load) and not node.attr.startswith("__") and \
-                        node.attr not in known and not guarded(node, index, probed):
-                    reads.setdefault(node.attr, []).append(Span(
-                        path, node.end_lineno or node.lineno,
-                        (node.end_col_offset or 0) - len(node.attr) + 1))
-            for attr, spans in reads.items():
-                yield Hit(spans[0], f"`{target.id}` is a `{cls.name}`, which has no attribute "
-                          f"`{attr}`{_suggestion(attr, known)}: nothing assigns it and "
-                          "rclpy's Node has none, so reading it raises AttributeError",
-                          related=tuple(spans[1:]))
+    for statement in nodes_of_class(tree, ast.Assign):
+        assert isinstance(statement, ast.Assign)
+        made, target = statement.value, statement.targets[0]
+        cls = classes.get(made.func.id) if isinstance(made, ast.Call) and \
+            isinstance(made.func, ast.Name) and module_bound[made.func.id] == 1 and \
+            len(statement.targets) == 1 and isinstance(target, ast.Name) else None
+        function = index.enclosing_function(statement) if cls is not None else None
+        if function is None:
+            continue
+        assert cls is not None and isinstance(target, ast.Name)
+        values = assigned_values(target, package, tree, index)
+        if not values or any(not is_none(v) and not (isinstance(v, ast.Call) and
+                                                     ast.unparse(v.func) == cls.name)
+                             for v, _ in values):
+            continue
+        known = set(scope_bindings(cls)) | stored | NODE_ATTRIBUTES
+        reads: dict[str, list[Span]] = {}
+        for node in attributes_taken(function, target.id):
+            if isinstance(node.ctx, ast.Load) and not node.attr.startswith("__") and \
+                    node.attr not in known and not guarded(node, index, probed):
+                reads.setdefault(node.attr, []).append(Span(
+                    path, node.end_lineno or node.lineno,
+                    (node.end_col_offset or 0) - len(node.attr) + 1))
+        for attr, spans in reads.items():
+            yield Hit(spans[0], f"`{target.id}` is a `{cls.name}`, which has no attribute "
+                      f"`{attr}`{_suggestion(attr, known)}: nothing assigns it and "
+                      "rclpy's Node has none, so reading it raises AttributeError",
+                      related=tuple(spans[1:]))
 
 
 @rule("PYC023", "undefined-node-attribute", Severity.ERROR,
@@ -158,7 +155,7 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
         self.publisher_.publish(String(data='hi'))
     ```
     """
-    facts: tuple[set[str], set[str]] | None = None
+    facts: tuple[set[str], frozenset[str]] | None = None
     for module, tree, index in installed_trees(package):
         if not any(i.top_level == "rclpy" for i in module.imports) or _dynamic(tree):
             continue

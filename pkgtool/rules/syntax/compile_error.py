@@ -6,11 +6,11 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import walk_once
+from pkgtool.model.ast_nodes import enclosing, walk_once
 from pkgtool.model.package import Package, is_test_data
-from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import python_files
 
 _FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)
 _LOOPS = (ast.For, ast.AsyncFor, ast.While)
@@ -37,14 +37,6 @@ def _duplicate_parameters(function: ast.AST) -> str | None:
     return f"duplicate argument '{repeated}' in function definition" if repeated else None
 
 
-def _enclosing(node: ast.AST, parents: dict[int, ast.AST], stops: tuple[type, ...]
-               ) -> ast.AST | None:
-    parent = parents.get(id(node))
-    while parent is not None and not isinstance(parent, stops):
-        parent = parents.get(id(parent))
-    return parent
-
-
 def compile_errors(tree: ast.Module) -> Iterator[tuple[ast.AST, str]]:
     """(node, Python's message) for the errors CPython's compiler raises on a parsed tree:
     repeated keywords, duplicate parameters, ``return``/``yield``/``await`` outside a
@@ -61,11 +53,11 @@ def compile_errors(tree: ast.Module) -> Iterator[tuple[ast.AST, str]]:
                 yield function, problem
     for kind, problem in _OUTSIDE.items():
         for node in walk.by_class.get(kind, ()):
-            if not isinstance(_enclosing(node, walk.parents, _SCOPES), _FUNCTIONS):
+            if not isinstance(enclosing(node, walk.parents, _SCOPES), _FUNCTIONS):
                 yield node, problem
     for kind, problem in _JUMPS.items():
         for node in walk.by_class.get(kind, ()):
-            if not isinstance(_enclosing(node, walk.parents, (*_LOOPS, *_SCOPES)), _LOOPS):
+            if not isinstance(enclosing(node, walk.parents, (*_LOOPS, *_SCOPES)), _LOOPS):
                 yield node, problem
 
 
@@ -96,10 +88,8 @@ def compile_error(package: Package) -> Iterator[Hit]:
     Node(package='demo', executable='talker', output='screen')
     ```
     """
-    for path, text in sorted(package.texts.items()):
-        tree = parse_tree(path, text) if path.endswith(".py") and not is_test_data(path) \
-            else None
-        if not isinstance(tree, ast.Module):
+    for path, _, tree in python_files(package):
+        if is_test_data(path):
             continue
         for node, problem in compile_errors(tree):
             yield Hit(Span(path, node.lineno, node.col_offset + 1),  # type: ignore[attr-defined]
