@@ -8,6 +8,7 @@ import string
 from collections.abc import Iterator
 
 from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.rules.node_api import unpacks
 from pkgtool.rules.syntax_trees import Index
 
 PERCENT = re.compile(r"%(?:\((?P<key>[^)]*)\))?[-#0 +]*(?P<width>\*|\d+)?"
@@ -39,8 +40,7 @@ def _format_calls(index: Index) -> Iterator[tuple[ast.expr, str, bool]]:
 
 
 def _format_fields(template: str, call: ast.Call) -> Iterator[tuple[ast.expr, str, bool]]:
-    if any(isinstance(a, ast.Starred) for a in call.args) or \
-            any(k.arg is None for k in call.keywords):
+    if unpacks(call):
         return
     keywords = {k.arg: k.value for k in call.keywords}
     try:

@@ -12,6 +12,7 @@ from __future__ import annotations
 import ast
 
 from pkgtool.model.ast_nodes import subtree
+from pkgtool.rules.node_api import unpacks
 from pkgtool.rules.scopes import bound_names, scope_bindings
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index
 
@@ -69,12 +70,6 @@ def own_definition(call: ast.Call, index: Index, tree: ast.Module,
     if cls is not None and scope_bindings(cls)[func.id]:
         return None
     return defined_once(tree.body, func.id, kind)
-
-
-def unpacks(call: ast.Call) -> bool:
-    """True when the call passes ``*args`` or ``**kwargs``."""
-    return any(isinstance(a, ast.Starred) for a in call.args) or \
-        any(k.arg is None for k in call.keywords)
 
 
 def missing_parameter(call: ast.Call, function: Function, skipped: int) -> str | None:

@@ -12,7 +12,7 @@ from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import dead_lines
-from pkgtool.rules.node_api import node_subclasses
+from pkgtool.rules.node_api import node_subclasses, unpacks
 from pkgtool.rules.python._field_reads import field_reads
 from pkgtool.rules.python._message_instances import known_messages
 from pkgtool.rules.python._messages import message_instances
@@ -80,8 +80,7 @@ def _key(node: ast.expr) -> str | None:
 def _problem(call: ast.Call, typed: Callable[[ast.expr], str | None]) -> str | None:
     """What is wrong with the arguments of a logger method call, if anything (``typed``: the
     type an expression certainly has, if known)."""
-    if any(isinstance(a, ast.Starred) for a in call.args) or \
-            any(k.arg is None for k in call.keywords):
+    if unpacks(call):
         return None
     if len(call.args) > 1:
         return "takes one message: rclpy raises `TypeError` for the other arguments; format " \
