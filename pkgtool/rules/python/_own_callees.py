@@ -11,9 +11,10 @@ from __future__ import annotations
 
 import ast
 
-from pkgtool.model.ast_nodes import subtree
+from pkgtool.model.ast_nodes import PARTS, subtree
+from pkgtool.model.memo import per_object
 from pkgtool.rules.node_api import unpacks
-from pkgtool.rules.scopes import bound_names, scope_bindings
+from pkgtool.rules.scopes import scope_bindings
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index
 
 Function = ast.FunctionDef | ast.AsyncFunctionDef
@@ -29,12 +30,29 @@ def _functions_around(node: ast.AST, index: Index) -> list[Function]:
     return found
 
 
-def defined_once(body: list[ast.stmt], name: str, kind: type = ast.FunctionDef
+@per_object(PARTS)
+def _definitions(scope: ast.Module | ast.ClassDef) -> dict[str, list[ast.stmt]]:
+    """The functions and classes the body of ``scope`` defines, by name."""
+    found: dict[str, list[ast.stmt]] = {}
+    for statement in scope.body:
+        if isinstance(statement, (*FUNCTIONS, ast.ClassDef)):
+            found.setdefault(statement.name, []).append(statement)
+    return found
+
+
+@per_object(PARTS)
+def _stored_attributes(cls: ast.ClassDef) -> frozenset[str]:
+    """The attribute names assigned or deleted anywhere in ``cls`` (``x.name = ...``)."""
+    return frozenset(n.attr for n in subtree(cls)
+                     if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load))
+
+
+def defined_once(scope: ast.Module | ast.ClassDef, name: str, kind: type = ast.FunctionDef
                  ) -> ast.AST | None:
-    """The ``def name`` (or other definition of ``kind``) of ``body``, when nothing else
-    there binds ``name``."""
-    defs = [s for s in body if isinstance(s, (*FUNCTIONS, ast.ClassDef)) and s.name == name]
-    if len(defs) != 1 or bound_names(body)[name] != 1 or not isinstance(defs[0], kind):
+    """The ``def name`` (or other definition of ``kind``) of the body of ``scope``, when
+    nothing else there binds ``name``."""
+    defs = _definitions(scope).get(name, ())
+    if len(defs) != 1 or scope_bindings(scope)[name] != 1 or not isinstance(defs[0], kind):
         return None
     return defs[0]
 
@@ -52,9 +70,7 @@ def own_method(call: ast.Call, index: Index) -> tuple[ast.FunctionDef, ast.Class
     if not positional or positional[0].arg != func.value.id:
         return None
     assert cls is not None
-    assigned = any(isinstance(n, ast.Attribute) and n.attr == func.attr and
-                   not isinstance(n.ctx, ast.Load) for n in subtree(cls))
-    method = None if assigned else defined_once(cls.body, func.attr)
+    method = None if func.attr in _stored_attributes(cls) else defined_once(cls, func.attr)
     return (method, cls) if isinstance(method, ast.FunctionDef) else None
 
 
@@ -69,7 +85,7 @@ def own_definition(call: ast.Call, index: Index, tree: ast.Module,
     cls = index.enclosing_class(call)
     if cls is not None and scope_bindings(cls)[func.id]:
         return None
-    return defined_once(tree.body, func.id, kind)
+    return defined_once(tree, func.id, kind)
 
 
 def missing_parameter(call: ast.Call, function: Function, skipped: int) -> str | None:

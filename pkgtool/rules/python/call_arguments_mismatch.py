@@ -39,7 +39,7 @@ def _callee(call: ast.Call, index: Index, tree: ast.Module, subclassed: frozense
         return (found, 0, found.name) if not found.decorator_list else None
     if not isinstance(found, ast.ClassDef) or not _plain_class(found, index):
         return None
-    init = defined_once(found.body, "__init__")
+    init = defined_once(found, "__init__")
     if not isinstance(init, ast.FunctionDef) or init.decorator_list:
         return None
     return init, 1, f"{found.name}.__init__"
