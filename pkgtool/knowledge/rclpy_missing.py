@@ -11,6 +11,11 @@ _CLASSES = {
     "rclpy.action.ActionServer": ("rclpy.action.server.ActionServer",),
     "rclpy.time.Time": (),
     "rclpy.duration.Duration": (),
+    "rclpy.publisher.Publisher": (),
+    "rclpy.subscription.Subscription": (),
+    "rclpy.timer.Timer": (),
+    "rclpy.service.Service": (),
+    "rclpy.task.Future": (),
 }
 """Canonical class path -> other import paths of the same class."""
 
@@ -22,10 +27,44 @@ _MISSING: dict[str, dict[str, str]] = {
     "rclpy.time.Time": {
         "now": "`node.get_clock().now()`",
         "to_sec": "`time.nanoseconds / 1e9`",
-        "from_sec": "`Time(seconds=...)`"},
+        "from_sec": "`Time(seconds=...)`",
+        "to_nsec": "`time.nanoseconds`",
+        "seconds": "`time.nanoseconds / 1e9`",
+        "sec": "`time.seconds_nanoseconds()[0]`, or `time.to_msg().sec` for the message field",
+        "nanosec": "`time.seconds_nanoseconds()[1]`, or `time.to_msg().nanosec`",
+        "secs": "`time.seconds_nanoseconds()[0]`",
+        "nsecs": "`time.seconds_nanoseconds()[1]`"},
     "rclpy.duration.Duration": {
         "from_sec": "`Duration(seconds=...)`",
-        "to_sec": "`duration.nanoseconds / 1e9`"},
+        "to_sec": "`duration.nanoseconds / 1e9`",
+        "to_nsec": "`duration.nanoseconds`",
+        "seconds": "`duration.nanoseconds / 1e9`",
+        "sec": "`duration.nanoseconds // 10**9`, or `duration.to_msg().sec`",
+        "secs": "`duration.nanoseconds // 10**9`"},
+    "rclpy.publisher.Publisher": {
+        "get_num_connections": "`publisher.get_subscription_count()`",
+        "unregister": "`node.destroy_publisher(publisher)`",
+        "name": "`publisher.topic_name`",
+        "resolved_name": "`publisher.topic_name`"},
+    "rclpy.subscription.Subscription": {
+        "get_num_connections": "`subscription.get_publisher_count()`",
+        "unregister": "`node.destroy_subscription(subscription)`",
+        "name": "`subscription.topic_name`",
+        "resolved_name": "`subscription.topic_name`"},
+    "rclpy.timer.Timer": {
+        "start": "`timer.reset()` (a timer runs from its creation; `reset()` restarts a "
+                 "cancelled one)",
+        "stop": "`timer.cancel()`",
+        "shutdown": "`timer.cancel()`, or `node.destroy_timer(timer)`"},
+    "rclpy.service.Service": {
+        "call": "a client: `node.create_client(...)`, then `client.call_async(request)`",
+        "call_async": "a client: `node.create_client(...)`, then `client.call_async(request)`",
+        "wait_for_service": "a client's `wait_for_service()`: a service does not wait for "
+                            "itself"},
+    "rclpy.task.Future": {
+        "get_result": "`future.result()`",
+        "get": "`future.result()`",
+        "is_done": "`future.done()`"},
     "rclpy": {
         "Node": "`from rclpy.node import Node`",
         "Time": "`from rclpy.time import Time`",

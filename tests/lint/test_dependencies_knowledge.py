@@ -11,6 +11,7 @@ import pytest
 
 from pkgtool.knowledge import rosdistro
 from pkgtool.knowledge.numpy_removed import REMOVED
+from pkgtool.knowledge.rclpy_classes import attributes_of, classes
 from pkgtool.knowledge.rclpy_missing import entries, missing_attribute, owners
 from pkgtool.knowledge.rclpy_names import close_name, defined_on, defines
 from pkgtool.knowledge.ros_names import looks_like_ros
@@ -120,3 +121,44 @@ def test_rclpy_names_table_knows_every_name_of_the_installed_rclpy() -> None:
     assert not defines("rclpy", "event_handler", "humble") and defines("rclpy", "event_handler")
     assert defined_on("rclpy.time", "CONVERSION_CONSTANT") == ["humble"]
     assert defines("rclpy.time", "CONVERSION_CONSTANT", "kilted")  # no table: any distro
+
+
+@pytest.mark.ros
+def test_rclpy_classes_table_knows_every_attribute_of_real_objects() -> None:
+    """No false error: every public attribute of the objects a real (Jazzy) node makes, its
+    clock, times, durations and futures, and of the QoS policy enums, is in PYC004's table
+    (PYC004 never reports a name starting with ``_``)."""
+    import rclpy
+    from rclpy.duration import Duration
+    from rclpy.node import Node
+    from rclpy.qos import DurabilityPolicy, HistoryPolicy, LivelinessPolicy, ReliabilityPolicy
+    from std_msgs.msg import String
+    from std_srvs.srv import Trigger
+
+    context = rclpy.Context()
+    rclpy.init(context=context)
+    try:
+        node = Node("probe", context=context)
+        now = node.get_clock().now()
+        made = {"rclpy.publisher.Publisher": node.create_publisher(String, "probe", 1),
+                "rclpy.subscription.Subscription": node.create_subscription(
+                    String, "probe", print, 1),
+                "rclpy.timer.Timer": node.create_timer(10.0, print),
+                "rclpy.timer.Rate": node.create_rate(1.0),
+                "rclpy.client.Client": node.create_client(Trigger, "probe"),
+                "rclpy.service.Service": node.create_service(Trigger, "probe", print),
+                "rclpy.clock.ROSClock": node.get_clock(), "rclpy.time.Time": now,
+                "rclpy.duration.Duration": now - now,
+                "rclpy.task.Future": node.create_client(Trigger, "other").call_async(
+                    Trigger.Request())}
+        made.update({f"rclpy.qos.{enum.__name__}": enum for enum in
+                     (ReliabilityPolicy, HistoryPolicy, DurabilityPolicy, LivelinessPolicy)})
+        assert isinstance(made["rclpy.duration.Duration"], Duration)
+        unknown = {cls: sorted(a for a in dir(obj) if not a.startswith("_") and
+                               a not in (attributes_of(cls) or ()))
+                   for cls, obj in made.items()}
+        node.destroy_node()
+    finally:
+        rclpy.shutdown(context=context)
+    assert {cls: names for cls, names in unknown.items() if names} == {}
+    assert sorted(made) == sorted(classes())

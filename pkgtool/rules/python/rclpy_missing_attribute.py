@@ -3,10 +3,12 @@
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Iterator
 from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.rclpy_classes import POLICY_ENUMS, attributes_of
 from pkgtool.knowledge.rclpy_missing import missing_attribute
 from pkgtool.knowledge.rclpy_names import close_name, defined_on, defines
 from pkgtool.knowledge.rclpy_node import GOAL_HANDLE_ATTRIBUTES
@@ -14,8 +16,10 @@ from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.python._callbacks import callback_arguments
 from pkgtool.rules.python._message_instances import callback_function
+from pkgtool.rules.python._rclpy_objects import object_class
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings
 from pkgtool.rules.syntax_trees import installed_trees, resolved_attributes
@@ -42,7 +46,18 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
     Also reports reads of attributes rclpy's `ServerGoalHandle` lacks (`goal_handle.succeeded()`,
     `goal_handle.publish(feedback)`) on the goal handle parameter of an `ActionServer`'s
     execute, cancel or accepted callback, when the callback never rebinds that parameter nor
-    stores an attribute on it.
+    stores an attribute on it. And reads of attributes missing on the objects a node makes,
+    often rospy habits: `self.timer.start()`, `self.pub.get_num_connections()`,
+    `self.get_clock().now().to_sec()`, `stamp.sec` on an rclpy `Time`, `(now -
+    start).to_sec()` on a `Duration`, `future.get_result()`, and enum members that do not
+    exist (`QoSReliabilityPolicy.RELIABLE_RELIABLE`). The object's class must be certain: what
+    `self.create_publisher/subscription/timer/rate/client/service()` or `self.get_clock()`
+    return in a class deriving from rclpy's `Node` alone (one that does not define the method
+    itself), a clock's `now()`, `Time(...)`, `Duration(...)`, a client's `call_async()`, the
+    future a done callback gets, and local names or `self.x` every assignment of which gives
+    one class (`None` placeholders aside). Attributes are checked against the union of
+    Humble's, Jazzy's and Rolling's rclpy; names starting with `_`, names the module probes
+    with `hasattr`/`getattr` and reads under `try/except AttributeError` are left alone.
 
     ## Why is this bad?
     The line raises `AttributeError` or `ImportError` when it runs: at start-up for an
@@ -53,6 +68,7 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
     ```python
     from rclpy.executors import SingleThreadExecutor
     if status == ActionClient.GoalStatus.STATUS_SUCCEEDED:
+    elapsed = self.get_clock().now().to_sec()
     ```
 
     ## Use instead
@@ -60,10 +76,12 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
     from rclpy.executors import SingleThreadedExecutor
     from action_msgs.msg import GoalStatus
     if status == GoalStatus.STATUS_SUCCEEDED:
+    elapsed = self.get_clock().now().nanoseconds / 1e9
     ```
     """
     distro = package.context.distro
     yield from _goal_handle_reads(package)
+    yield from _object_reads(package)
     for module, _, index in installed_trees(package):
         for node, owner, attr in resolved_attributes(index):
             if owner.split(".")[0] != "rclpy" or index.in_unevaluated_annotation(node):
@@ -124,6 +142,40 @@ def _goal_handle_reads(package: Package) -> Iterator[Hit]:
                           f"`{name}` is the `ServerGoalHandle` rclpy passes `{ast.unparse(value)}`"
                           f", which has no `{node.attr}`: AttributeError",
                           f"Use `{name}.{close[0]}`" if close else None)
+
+
+_MEMBER = re.compile(r"[A-Z][A-Z0-9_]*")
+"""How the members of rclpy's QoS policy enums are named."""
+
+
+def _object_reads(package: Package) -> Iterator[Hit]:
+    """Reads of an attribute that an rclpy object's class lacks (a timer's `start`), or of a
+    member a QoS policy enum lacks."""
+    for module, tree, index in installed_trees(package):
+        probed = probed_names(index)
+        for node in index.attributes:
+            if node.attr.startswith("_"):
+                continue
+            enum = POLICY_ENUMS.get(index.qualified(node.value) or "") \
+                if isinstance(node.value, (ast.Name, ast.Attribute)) else None
+            if enum is not None and not _MEMBER.fullmatch(node.attr):
+                continue
+            cls = enum or object_class(node.value, package, tree, index)
+            known = attributes_of(cls) if cls is not None else None
+            if known is None or node.attr in known or guarded(node, index, probed) or \
+                    index.in_unevaluated_annotation(node):
+                continue
+            shown = ast.unparse(node.value)
+            shown = shown if len(shown) <= 40 else shown[:37] + "..."
+            use = missing_attribute(cls, node.attr) if cls else None
+            close = get_close_matches(node.attr, sorted(a for a in known if a[0] != "_"), n=1)
+            kind = "the enum" if enum else "an rclpy"
+            owner = shown if isinstance(node.value, (ast.Name, ast.Attribute, ast.Call)) \
+                else f"({shown})"
+            fix = f"Use {use}" if use else f"Use `{owner}.{close[0]}`" if close else None
+            yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
+                      f"`{shown}` is {kind} `{cls.rsplit('.', 1)[-1]}`, which has no "
+                      f"`{node.attr}`: AttributeError", fix)
 
 
 def _missing_import(imported: Import, distro: str) -> Iterator[Hit]:

@@ -1,0 +1,158 @@
+"""Generate ``data/rclpy_classes.txt``: the attributes of the rclpy objects a node makes.
+
+Run ``python -m pkgtool.knowledge.generate_rclpy_classes --rclpy-git DIR`` in pkgtool's locked
+environment, ``DIR`` a clone of ros2/rclpy (a bare one will do): the classes are read from its
+``humble``, ``jazzy``, ``kilted`` (when the clone has it) and ``rolling`` branches with ``git
+show``, and from the installed Jazzy wheel's files (a later release than the branch may be),
+nothing checked out or imported. A class's attributes are what its body defines
+(methods, properties, class-level assignments), what its methods assign on ``self`` and, for
+the QoS policy enums, the deprecated aliases their decorator adds and what ``int`` and ``Enum``
+give their members; with those of its bases
+found in rclpy. A class with a base outside rclpy other than ``object``, a ``Protocol``, a
+``Generic`` or an ``IntEnum`` would be open (anything may come from it): none of the chosen
+ones has one, and the generator refuses such a class rather than write it.
+
+Each entry is ``<class> <attribute>...``, the union over the branches (an attribute any of them
+has is known). The Jazzy wheel's classes are checked against the table by the tests.
+"""
+
+from __future__ import annotations
+
+import argparse
+import ast
+import importlib.util
+import subprocess
+from collections.abc import Iterator
+from pathlib import Path
+
+from pkgtool.knowledge.tables import DATA, render, write
+
+CLASSES = ("rclpy.publisher.Publisher", "rclpy.subscription.Subscription",
+           "rclpy.timer.Timer", "rclpy.timer.Rate", "rclpy.client.Client",
+           "rclpy.service.Service", "rclpy.clock.ROSClock",
+           "rclpy.time.Time", "rclpy.duration.Duration", "rclpy.task.Future",
+           "rclpy.qos.ReliabilityPolicy", "rclpy.qos.HistoryPolicy",
+           "rclpy.qos.DurabilityPolicy", "rclpy.qos.LivelinessPolicy")
+"""The classes whose attributes the table holds."""
+INSTALLED = "installed"
+"""The rclpy wheel installed here (Jazzy's latest release: newer than the clone's branch)."""
+BRANCHES = ("humble", "jazzy", "kilted", "rolling", INSTALLED)
+_CLOSED_BASES = frozenset({"object", "Protocol", "Generic", "IntEnum"})
+"""Bases from outside rclpy that add no attribute a user reads on these objects (``IntEnum``'s
+own, ``name`` and ``value``, are added to the enums by hand below)."""
+_ENUM_ATTRIBUTES = ("name", "value", *(n for n in dir(int) if not n.startswith("_")))
+
+
+def _source(git: Path, branch: str, module: str) -> str | None:
+    """The text of ``module`` (``rclpy.timer``) on ``branch`` (:data:`INSTALLED`: in the
+    installed wheel); None when it has none."""
+    if branch == INSTALLED:
+        spec = importlib.util.find_spec("rclpy")
+        folder = Path(spec.origin).parent.parent if spec and spec.origin else None
+        file = folder / f"{module.replace('.', '/')}.py" if folder else None
+        return file.read_text(encoding="utf-8") if file and file.is_file() else None
+    path = f"{branch}:rclpy/{module.replace('.', '/')}.py"
+    done = subprocess.run(["git", "--git-dir", str(git), "show", path], capture_output=True,
+                          text=True)
+    return done.stdout if done.returncode == 0 else None
+
+
+def _self_stores(function: ast.FunctionDef | ast.AsyncFunctionDef) -> Iterator[str]:
+    receiver = function.args.args[0].arg if function.args.args else None
+    for node in ast.walk(function):
+        if isinstance(node, ast.Attribute) and not isinstance(node.ctx, ast.Load) and \
+                isinstance(node.value, ast.Name) and node.value.id == receiver:
+            yield node.attr
+
+
+def _own_attributes(cls: ast.ClassDef) -> Iterator[str]:
+    for statement in cls.body:
+        if isinstance(statement, ast.ClassDef):
+            yield statement.name
+        elif isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            yield statement.name
+            yield from _self_stores(statement)
+        elif isinstance(statement, ast.Assign):
+            yield from (t.id for t in statement.targets if isinstance(t, ast.Name))
+        elif isinstance(statement, ast.AnnAssign) and isinstance(statement.target, ast.Name):
+            yield statement.target.id
+    for decorator in cls.decorator_list:  # the QoS enums' deprecated aliases
+        yield from (c.value for c in ast.walk(decorator)
+                    if isinstance(c, ast.Constant) and isinstance(c.value, str) and
+                    c.value.isupper())
+
+
+def _attributes(git: Path, branch: str, dotted: str, seen: frozenset[str] = frozenset()
+                ) -> set[str] | None:
+    """Every attribute of class ``dotted`` on ``branch`` (None when the branch lacks it)."""
+    module, name = dotted.rsplit(".", 1)
+    text = _source(git, branch, module)
+    tree = ast.parse(text) if text is not None else None
+    found = next((c for c in tree.body if isinstance(c, ast.ClassDef) and c.name == name),
+                 None) if tree is not None else None
+    if found is None or tree is None:
+        return None
+    attributes = set(_own_attributes(found))
+    imported = {alias.asname or alias.name: f"{node.module}.{alias.name}"
+                for node in tree.body if isinstance(node, ast.ImportFrom) and node.module
+                for alias in node.names}
+    for base in found.bases:
+        base_name = base.value.id if isinstance(base, ast.Subscript) and \
+            isinstance(base.value, ast.Name) else base.id if isinstance(base, ast.Name) else None
+        if base_name in _CLOSED_BASES:
+            attributes.update(_ENUM_ATTRIBUTES if base_name == "IntEnum" else ())
+            continue
+        where = f"{module}.{base_name}" if any(
+            isinstance(c, ast.ClassDef) and c.name == base_name for c in tree.body) else \
+            imported.get(base_name or "", "")
+        inherited = _attributes(git, branch, where, seen | {dotted}) \
+            if where.startswith("rclpy.") and where not in seen else None
+        if inherited is None:
+            raise SystemExit(f"{dotted} on {branch}: base {ast.unparse(base)} is not read")
+        attributes |= inherited
+    return attributes
+
+
+def table(git: Path) -> dict[str, set[str]]:
+    """Class -> the union of its attributes over :data:`BRANCHES` (dunders left out)."""
+    found: dict[str, set[str]] = {}
+    for dotted in CLASSES:
+        union: set[str] = set()
+        for branch in BRANCHES:
+            union |= _attributes(git, branch, dotted) or set()
+        found[dotted] = {name for name in union if not name.startswith("__")}
+    return found
+
+
+def main() -> None:
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--rclpy-git", type=Path, required=True,
+                        help="a clone of ros2/rclpy (its git folder)")
+    parser.add_argument("--output", type=Path, default=DATA, help="where to write the table")
+    options = parser.parse_args()
+    git = options.rclpy_git
+    commits = [f"ros2/rclpy {branch} {_commit(git, branch)}" for branch in BRANCHES
+               if _commit(git, branch)] + [f"the installed rclpy {_installed_version()}"]
+    lines = [f"{name} {' '.join(sorted(attributes))}" for name, attributes in table(git).items()]
+    write({"rclpy_classes": render("The attributes of the rclpy objects a node makes "
+                                   "(generate_rclpy_classes.py)",
+                                   commits, [("-", lines)])},
+          options.output)
+
+
+def _installed_version() -> str:
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("ros-jazzy-rclpy")
+    except PackageNotFoundError:
+        return "(none)"
+
+
+def _commit(git: Path, branch: str) -> str:
+    return subprocess.run(["git", "--git-dir", str(git), "rev-parse", "--verify", "-q", branch],
+                          capture_output=True, text=True).stdout.strip()
+
+
+if __name__ == "__main__":
+    main()

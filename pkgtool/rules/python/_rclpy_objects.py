@@ -1,0 +1,114 @@
+"""The rclpy class an expression's value certainly is (PYC004): what a node's ``create_*``
+methods make, its clock and that clock's times, futures of service calls, times and durations.
+
+A node is ``self`` in a plain method of a class deriving from ``rclpy.node.Node`` alone, or
+what ``Node(...)``/``rclpy.create_node(...)`` makes; a future, also the parameter of a done
+callback. A local name or ``self.x`` has a class when every value assigned to it
+(:func:`~pkgtool.rules.python._assignments.assigned_values`) is of that class, ``None``
+placeholders aside (a read of a missing attribute fails on ``None`` too). Anything else is
+unknown.
+"""
+
+from __future__ import annotations
+
+import ast
+
+from pkgtool.model.memo import per_package
+from pkgtool.model.package import Package
+from pkgtool.rules.python._assignments import assigned_values, done_callback_futures, is_none
+from pkgtool.rules.python._value_types import receiver_class
+from pkgtool.rules.syntax_trees import Index, installed_trees
+
+NODE = "rclpy.node.Node"
+TIME, DURATION = "rclpy.time.Time", "rclpy.duration.Duration"
+FUTURE = "rclpy.task.Future"
+CLOCK = "rclpy.clock.ROSClock"
+"""A node's clock (a ``Clock`` made for ROS time is one too: the class with most)."""
+_MADE_BY = {
+    (NODE, "create_publisher"): "rclpy.publisher.Publisher",
+    (NODE, "create_subscription"): "rclpy.subscription.Subscription",
+    (NODE, "create_timer"): "rclpy.timer.Timer", (NODE, "create_rate"): "rclpy.timer.Rate",
+    (NODE, "create_client"): "rclpy.client.Client",
+    (NODE, "create_service"): "rclpy.service.Service", (NODE, "get_clock"): CLOCK,
+    (CLOCK, "now"): TIME, ("rclpy.client.Client", "call_async"): FUTURE,
+}
+"""(class, method) -> the class of what the method returns (Humble to Rolling)."""
+_CONSTRUCTED = {NODE: NODE, "rclpy.create_node": NODE, TIME: TIME, DURATION: DURATION,
+                "rclpy.clock.Clock": CLOCK, CLOCK: CLOCK, FUTURE: FUTURE,
+                f"{TIME}.from_msg": TIME, f"{DURATION}.from_msg": DURATION}
+"""What calling an rclpy class or factory makes."""
+_ARITHMETIC = {(TIME, ast.Sub, TIME): DURATION, (TIME, ast.Sub, DURATION): TIME,
+               (TIME, ast.Add, DURATION): TIME}
+_DEPTH = 8
+"""How many bindings deep a value is followed (``t = clock.now()`` with ``clock = ...``)."""
+
+
+def object_class(value: ast.expr, package: Package, tree: ast.Module, index: Index,
+                 depth: int = 0) -> str | None:
+    """The rclpy class ``value`` (in ``tree``) certainly is an instance of, or None."""
+    if depth > _DEPTH:
+        return None
+    if isinstance(value, ast.Call):
+        func = value.func
+        if isinstance(func, ast.Attribute):
+            receiver = object_class(func.value, package, tree, index, depth + 1)
+            made = _MADE_BY.get((receiver or "", func.attr))
+            if made is not None and not (receiver == NODE and any(
+                    f.name == func.attr for f in index.functions)):  # the class's own method
+                return made
+        return _CONSTRUCTED.get(index.qualified(func) or "") \
+            if isinstance(func, (ast.Name, ast.Attribute)) else None
+    if isinstance(value, ast.BinOp):
+        left = object_class(value.left, package, tree, index, depth + 1)
+        right = object_class(value.right, package, tree, index, depth + 1) if left else None
+        return _ARITHMETIC.get((left or "", type(value.op), right or ""))
+    if isinstance(value, ast.Name):
+        registered = done_callback_futures(tree, index).get(id(value))
+        if registered:  # a done callback's parameter: the future, when it is rclpy's
+            return _one({object_class(v, package, tree, index, depth + 1) for v in registered})
+        if depth and _node_self(value, index):  # a receiver (reads on a node are not ours)
+            return NODE
+        return _assigned_class(value, package, tree, index, depth)
+    if isinstance(value, ast.Attribute) and isinstance(value.value, ast.Name):
+        cls = receiver_class(value.value, index)
+        if cls is None:
+            return None
+        known = _attribute_classes(package)
+        key = (id(cls), value.attr)
+        if key not in known:
+            known[key] = _assigned_class(value, package, tree, index, depth)
+        return known[key]
+    return None
+
+
+def _assigned_class(value: ast.Name | ast.Attribute, package: Package, tree: ast.Module,
+                    index: Index, depth: int) -> str | None:
+    """The one class of every value assigned to ``value`` (``None`` placeholders aside)."""
+    assigned = assigned_values(value, package, tree, index)
+    trees = _trees(package) if assigned else {}
+    return _one({object_class(v, package, trees[id(i)], i, depth + 1)
+                 for v, i in assigned or () if not is_none(v)})
+
+
+@per_package
+def _attribute_classes(package: Package) -> dict[tuple[int, str], str | None]:
+    """The class of ``self.x`` by (id of the class whose method reads it, ``x``), filled as
+    rules ask (every read of ``self.x`` in one class has the same)."""
+    return {}
+
+
+def _node_self(name: ast.Name, index: Index) -> bool:
+    """True for ``self`` in a plain method of a class deriving from rclpy's Node alone."""
+    cls = receiver_class(name, index)
+    return cls is not None and len(cls.bases) == 1 and not cls.keywords and \
+        index.qualified(cls.bases[0]) == NODE
+
+
+@per_package
+def _trees(package: Package) -> dict[int, ast.Module]:
+    """The tree of each installed module by the id of its index."""
+    return {id(index): tree for _, tree, index in installed_trees(package)}
+
+
+def _one(classes: set[str | None]) -> str | None:
+    return next(iter(classes)) if len(classes) == 1 else None
