@@ -11,6 +11,7 @@ import ast
 import re
 from collections.abc import Collection, Iterator
 
+from pkgtool.model.memo import per_package
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
@@ -67,15 +68,23 @@ def node_api_calls(package: Package, methods: Collection[str] = PARAMETERS
                    ) -> Iterator[tuple[PythonModule, ast.Call, str, Index]]:
     """``x.<method>(...)`` calls of ``methods`` (:data:`PARAMETERS`), with the method name;
     not where ``x`` is certainly no node (:func:`_not_a_node`)."""
+    for module, call, method, index in _method_calls(package):
+        if method in methods and not _not_a_node(call.func.value, index):  # type: ignore
+            yield module, call, method, index
+
+
+@per_package
+def _method_calls(package: Package) -> tuple[tuple[PythonModule, ast.Call, str, Index], ...]:
+    """``x.<method>(...)`` calls in the installed modules importing rclpy, of methods the
+    module defines no function of its own for, with the method name (a dozen rules ask)."""
+    found = []
     for module, _, index in installed_trees(package):
         if not any(i.top_level == "rclpy" for i in module.imports):
             continue
         defined = {function.name for function in index.functions}
-        for call in index.calls:
-            method = call.func.attr if isinstance(call.func, ast.Attribute) else ""
-            if method in methods and method not in defined and \
-                    not _not_a_node(call.func.value, index):  # type: ignore[attr-defined]
-                yield module, call, method, index
+        found.extend((module, call, call.func.attr, index) for call in index.calls
+                     if isinstance(call.func, ast.Attribute) and call.func.attr not in defined)
+    return tuple(found)
 
 
 def _not_a_node(receiver: ast.expr, index: Index) -> bool:
