@@ -2,15 +2,14 @@
 
 Run ``python -m pkgtool.knowledge.generate_rclpy_classes --rclpy-git DIR`` in pkgtool's locked
 environment, ``DIR`` a clone of ros2/rclpy (a bare one will do): the classes are read from its
-``humble``, ``jazzy``, ``kilted`` (when the clone has it) and ``rolling`` branches with ``git
-show``, and from the installed Jazzy wheel's files (a later release than the branch may be),
-nothing checked out or imported. A class's attributes are what its body defines
-(methods, properties, class-level assignments), what its methods assign on ``self`` and, for
-the QoS policy enums, the deprecated aliases their decorator adds and what ``int`` and ``Enum``
-give their members; with those of its bases
-found in rclpy. A class with a base outside rclpy other than ``object``, a ``Protocol``, a
-``Generic`` or an ``IntEnum`` would be open (anything may come from it): none of the chosen
-ones has one, and the generator refuses such a class rather than write it.
+``humble``, ``jazzy`` and ``rolling`` branches with ``git show``, and from the installed Jazzy
+wheel's files (a later release than the branch may be), nothing checked out or imported. A
+class's attributes are what its body defines (methods, properties, nested classes, class-level
+assignments), what its methods assign on ``self`` and, for the QoS policy enums, the deprecated
+aliases their decorator adds and what ``int`` and ``Enum`` give their members; with those of
+its bases found in rclpy. A class with a base outside rclpy other than ``object``, a
+``Protocol``, a ``Generic`` or an ``IntEnum`` would be open (anything may come from it): none
+of the chosen ones has one, and the generator refuses such a class rather than write it.
 
 Each entry is ``<class> <attribute>...``, the union over the branches (an attribute any of them
 has is known). The Jazzy wheel's classes are checked against the table by the tests.
@@ -20,11 +19,12 @@ from __future__ import annotations
 
 import argparse
 import ast
+import importlib.metadata
 import importlib.util
-import subprocess
 from collections.abc import Iterator
 from pathlib import Path
 
+from pkgtool.knowledge.generate_rclpy_names import git_text
 from pkgtool.knowledge.tables import DATA, render, write
 
 CLASSES = ("rclpy.publisher.Publisher", "rclpy.subscription.Subscription",
@@ -36,25 +36,24 @@ CLASSES = ("rclpy.publisher.Publisher", "rclpy.subscription.Subscription",
 """The classes whose attributes the table holds."""
 INSTALLED = "installed"
 """The rclpy wheel installed here (Jazzy's latest release: newer than the clone's branch)."""
-BRANCHES = ("humble", "jazzy", "kilted", "rolling", INSTALLED)
+BRANCHES = ("humble", "jazzy", "rolling")
+"""The branches of ros2/rclpy read (each has every module of :data:`CLASSES`)."""
 _CLOSED_BASES = frozenset({"object", "Protocol", "Generic", "IntEnum"})
-"""Bases from outside rclpy that add no attribute a user reads on these objects (``IntEnum``'s
-own, ``name`` and ``value``, are added to the enums by hand below)."""
+"""Bases from outside rclpy that add no attribute a user reads on these objects but, for
+``IntEnum``, :data:`_ENUM_ATTRIBUTES`."""
 _ENUM_ATTRIBUTES = ("name", "value", *(n for n in dir(int) if not n.startswith("_")))
+"""What an ``IntEnum`` member has besides its class's own attributes."""
 
 
-def _source(git: Path, branch: str, module: str) -> str | None:
+def _source(git: Path, branch: str, module: str) -> str:
     """The text of ``module`` (``rclpy.timer``) on ``branch`` (:data:`INSTALLED`: in the
-    installed wheel); None when it has none."""
-    if branch == INSTALLED:
-        spec = importlib.util.find_spec("rclpy")
-        folder = Path(spec.origin).parent.parent if spec and spec.origin else None
-        file = folder / f"{module.replace('.', '/')}.py" if folder else None
-        return file.read_text(encoding="utf-8") if file and file.is_file() else None
-    path = f"{branch}:rclpy/{module.replace('.', '/')}.py"
-    done = subprocess.run(["git", "--git-dir", str(git), "show", path], capture_output=True,
-                          text=True)
-    return done.stdout if done.returncode == 0 else None
+    installed wheel)."""
+    path = f"{module.replace('.', '/')}.py"
+    if branch != INSTALLED:
+        return git_text(git, "show", f"{branch}:rclpy/{path}")
+    spec = importlib.util.find_spec("rclpy")
+    assert spec and spec.submodule_search_locations, "rclpy is not installed"
+    return (Path(spec.submodule_search_locations[0]).parent / path).read_text(encoding="utf-8")
 
 
 def _self_stores(function: ast.FunctionDef | ast.AsyncFunctionDef) -> Iterator[str]:
@@ -84,13 +83,11 @@ def _own_attributes(cls: ast.ClassDef) -> Iterator[str]:
 
 def _attributes(git: Path, branch: str, dotted: str, seen: frozenset[str] = frozenset()
                 ) -> set[str] | None:
-    """Every attribute of class ``dotted`` on ``branch`` (None when the branch lacks it)."""
+    """Every attribute of class ``dotted`` on ``branch`` (None when its module lacks it)."""
     module, name = dotted.rsplit(".", 1)
-    text = _source(git, branch, module)
-    tree = ast.parse(text) if text is not None else None
-    found = next((c for c in tree.body if isinstance(c, ast.ClassDef) and c.name == name),
-                 None) if tree is not None else None
-    if found is None or tree is None:
+    tree = ast.parse(_source(git, branch, module))
+    found = next((c for c in tree.body if isinstance(c, ast.ClassDef) and c.name == name), None)
+    if found is None:
         return None
     attributes = set(_own_attributes(found))
     imported = {alias.asname or alias.name: f"{node.module}.{alias.name}"
@@ -114,11 +111,12 @@ def _attributes(git: Path, branch: str, dotted: str, seen: frozenset[str] = froz
 
 
 def table(git: Path) -> dict[str, set[str]]:
-    """Class -> the union of its attributes over :data:`BRANCHES` (dunders left out)."""
+    """Class -> the union of its attributes over :data:`BRANCHES` and the installed wheel
+    (dunders left out)."""
     found: dict[str, set[str]] = {}
     for dotted in CLASSES:
         union: set[str] = set()
-        for branch in BRANCHES:
+        for branch in (*BRANCHES, INSTALLED):
             union |= _attributes(git, branch, dotted) or set()
         found[dotted] = {name for name in union if not name.startswith("__")}
     return found
@@ -131,27 +129,15 @@ def main() -> None:
     parser.add_argument("--output", type=Path, default=DATA, help="where to write the table")
     options = parser.parse_args()
     git = options.rclpy_git
-    commits = [f"ros2/rclpy {branch} {_commit(git, branch)}" for branch in BRANCHES
-               if _commit(git, branch)] + [f"the installed rclpy {_installed_version()}"]
+    sources = [f"ros-jazzy-rclpy=={importlib.metadata.version('ros-jazzy-rclpy')}",
+               *(f"ros2/rclpy@{branch}:{git_text(git, 'rev-parse', '--short', branch).strip()}"
+                 for branch in BRANCHES)]
     lines = [f"{name} {' '.join(sorted(attributes))}" for name, attributes in table(git).items()]
-    write({"rclpy_classes": render("The attributes of the rclpy objects a node makes "
-                                   "(generate_rclpy_classes.py)",
-                                   commits, [("-", lines)])},
+    write({"rclpy_classes": render("The attributes of the rclpy objects a node makes.\n"
+                                   "Generated by `python -m pkgtool.knowledge."
+                                   "generate_rclpy_classes`; do not edit.",
+                                   sources, [("-", lines)])},
           options.output)
-
-
-def _installed_version() -> str:
-    from importlib.metadata import PackageNotFoundError, version
-
-    try:
-        return version("ros-jazzy-rclpy")
-    except PackageNotFoundError:
-        return "(none)"
-
-
-def _commit(git: Path, branch: str) -> str:
-    return subprocess.run(["git", "--git-dir", str(git), "rev-parse", "--verify", "-q", branch],
-                          capture_output=True, text=True).stdout.strip()
 
 
 if __name__ == "__main__":

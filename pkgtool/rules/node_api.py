@@ -144,6 +144,12 @@ def bases_are_nodes(cls: ast.ClassDef, index: Index) -> bool:
     return all(index.qualified(b) in NODE_CLASSES for b in cls.bases)
 
 
+def derives_from_node_alone(cls: ast.ClassDef, index: Index) -> bool:
+    """True for ``class X(Node)`` (``rclpy.node.Node``, its one base, no metaclass)."""
+    return len(cls.bases) == 1 and not cls.keywords and \
+        index.qualified(cls.bases[0]) == "rclpy.node.Node"
+
+
 def node_subclasses(index: Index) -> list[ast.ClassDef]:
     """Classes of the module derived from rclpy's node classes (directly or through others)."""
     found: list[ast.ClassDef] = []

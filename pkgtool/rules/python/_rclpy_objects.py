@@ -15,6 +15,7 @@ import ast
 
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
+from pkgtool.rules.node_api import derives_from_node_alone
 from pkgtool.rules.python._assignments import assigned_values, done_callback_futures, is_none
 from pkgtool.rules.python._value_types import receiver_class
 from pkgtool.rules.syntax_trees import Index, installed_trees
@@ -100,8 +101,7 @@ def _attribute_classes(package: Package) -> dict[tuple[int, str], str | None]:
 def _node_self(name: ast.Name, index: Index) -> bool:
     """True for ``self`` in a plain method of a class deriving from rclpy's Node alone."""
     cls = receiver_class(name, index)
-    return cls is not None and len(cls.bases) == 1 and not cls.keywords and \
-        index.qualified(cls.bases[0]) == NODE
+    return cls is not None and derives_from_node_alone(cls, index)
 
 
 @per_package

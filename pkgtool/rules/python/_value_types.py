@@ -22,7 +22,8 @@ from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.memo import per_object, per_package
 from pkgtool.model.package import Package
-from pkgtool.rules.node_api import INTERFACE, NODE_CLASSES, literal_type
+from pkgtool.rules.node_api import (INTERFACE, NODE_CLASSES, derives_from_node_alone,
+                                    literal_type)
 from pkgtool.rules.node_parameters import module_nodes
 from pkgtool.rules.python._message_instances import binding_counts, method_receiver
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
@@ -246,8 +247,7 @@ def _node_attribute_type(value: ast.Attribute, package: Package, index: Index) -
     if value.attr in NODE_ATTRIBUTES:
         return None
     cls = receiver_class(value.value, index)
-    if cls is None or len(cls.bases) != 1 or cls.keywords or \
-            index.qualified(cls.bases[0]) != "rclpy.node.Node":
+    if cls is None or not derives_from_node_alone(cls, index):
         return None
     return _attribute_type(package, value.attr)
 

@@ -7,11 +7,10 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.python._own_callees import own_definition
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, index_of
+from pkgtool.rules.syntax_trees import Index, index_of, python_files
 from pkgtool.rules.test_modules import test_files
 
 _FIXTURE = frozenset({"pytest.fixture"})
@@ -56,10 +55,9 @@ def fixture_called(package: Package) -> Iterator[Hit]:
         assert node.topic == 'chatter'
     ```
     """
-    for path in sorted(test_files(package)):
-        text = package.texts.get(path)
-        tree = parse_tree(path, text) if text is not None else None
-        if not isinstance(tree, ast.Module) or "fixture" not in text:
+    tests = test_files(package)
+    for path, _, tree in python_files(package, ("fixture",)):
+        if path not in tests:
             continue
         index = index_of(tree)
         for call in index.calls:

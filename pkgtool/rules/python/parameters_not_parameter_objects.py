@@ -8,12 +8,14 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_api import literal_type, node_api_calls
+from pkgtool.rules.node_api import argument, literal_type, node_api_calls
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index
 
 _SETTERS = frozenset({"set_parameters", "set_parameters_atomically"})
 _PARAMETER = frozenset({"rclpy.parameter.Parameter"})
+_LIST = ("parameter_list",)
+"""The setters' one parameter (Humble to Rolling)."""
 
 
 def _refused(value: ast.expr, index: Index) -> str | None:
@@ -60,8 +62,7 @@ def set_parameters_without_parameter(package: Package) -> Iterator[Hit]:
     ```
     """
     for module, call, method, index in node_api_calls(package, _SETTERS):
-        value = call.args[0] if len(call.args) == 1 and not call.keywords else next(
-            (k.value for k in call.keywords if k.arg == "parameter_list"), None)
+        value = argument(call, _LIST, _LIST[0])
         why = _refused(value, index) if value is not None else None
         if why is not None:
             yield Hit(Span(module.path, call.lineno, call.col_offset + 1),

@@ -11,6 +11,7 @@ from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.rules.node_api import derives_from_node_alone
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.python._assignments import assigned_values, is_none
 from pkgtool.rules.python._message_instances import attributes_taken, method_receiver
@@ -55,8 +56,7 @@ def _package_facts(package: Package) -> tuple[set[str], frozenset[str]]:
 def _node_classes(index: Index, bases: frozenset[str]) -> Iterator[ast.ClassDef]:
     """Plain classes deriving from rclpy's Node alone that no class of the package extends."""
     for cls in index.classes:
-        if len(cls.bases) == 1 and not cls.keywords and not cls.decorator_list and \
-                index.qualified(cls.bases[0]) == "rclpy.node.Node" and \
+        if not cls.decorator_list and derives_from_node_alone(cls, index) and \
                 cls.name not in bases:
             yield cls
 
