@@ -140,6 +140,7 @@ RULES = {
     "PYC054": ("set-parameters-without-parameter", "error", True,
                "python.parameters_not_parameter_objects"),
     "PYC055": ("fixture-called", "error", True, "python.fixture_called"),
+    "PYC056": ("time-used-as-number", "error", True, "python.time_used_as_number"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

@@ -35,11 +35,12 @@ _MADE_BY = {
 }
 """(class, method) -> the class of what the method returns (Humble to Rolling)."""
 _CONSTRUCTED = {NODE: NODE, "rclpy.create_node": NODE, TIME: TIME, DURATION: DURATION,
-                "rclpy.clock.Clock": CLOCK, CLOCK: CLOCK, FUTURE: FUTURE,
+                "rclpy.time.Duration": DURATION, "rclpy.clock.Clock": CLOCK, CLOCK: CLOCK,
+                FUTURE: FUTURE,
                 f"{TIME}.from_msg": TIME, f"{DURATION}.from_msg": DURATION}
 """What calling an rclpy class or factory makes."""
 _ARITHMETIC = {(TIME, ast.Sub, TIME): DURATION, (TIME, ast.Sub, DURATION): TIME,
-               (TIME, ast.Add, DURATION): TIME}
+               (TIME, ast.Add, DURATION): TIME, (DURATION, ast.Add, TIME): TIME}
 _DEPTH = 8
 """How many bindings deep a value is followed (``t = clock.now()`` with ``clock = ...``)."""
 
