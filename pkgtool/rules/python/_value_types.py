@@ -9,7 +9,9 @@ a known type: ``.get_parameter_value().double_value`` (and the other scalar fiel
 ``self.get_parameter('x').value`` where the node class declares ``x`` once with a scalar
 literal default, statically typed (rclpy then refuses a value of another type). Any other
 binding (a parameter, a loop target, another call's result, an import, ``global``,
-``setattr``) leaves it unknown.
+``setattr``) leaves it unknown. When a local name's assignments disagree, the one a read
+certainly sees in straight-line code decides (``msg = String()``, then ``msg = 'hi'``, then
+a read of ``msg``: a str; :mod:`._reaching`).
 """
 
 from __future__ import annotations
@@ -26,6 +28,7 @@ from pkgtool.rules.node_api import (INTERFACE, NODE_CLASSES, derives_from_node_a
                                     literal_type)
 from pkgtool.rules.node_parameters import module_nodes
 from pkgtool.rules.python._message_instances import binding_counts, method_receiver
+from pkgtool.rules.python._reaching import reaching_store
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
 PARAMETER = "Parameter"
@@ -184,7 +187,8 @@ def _assigned_names(tree: ast.Module) -> dict[str, list[ast.Name]]:
 
 def _local_type(name: ast.Name, tree: ast.Module, index: Index, package: Package | None = None
                 ) -> str | None:
-    """The type of a function's local ``name`` when all its bindings agree on one."""
+    """The type of a function's local ``name`` when all its bindings agree on one, or when
+    they disagree, the type of the one the read certainly sees (:mod:`._reaching`)."""
     function = index.enclosing_function(name, through_lambdas=False)
     if function is None:
         return None
@@ -196,7 +200,11 @@ def _local_type(name: ast.Name, tree: ast.Module, index: Index, package: Package
             any(isinstance(n, ast.Nonlocal) and name.id in n.names
                 for n in nodes_of_class(tree, ast.Nonlocal)):
         return None  # also a parameter, an import, a loop target, `global`, a nested scope
-    return _one({_bound_type(n, index, package) for n in assigned})
+    found = _one({_bound_type(n, index, package) for n in assigned})
+    if found is None and len(assigned) > 1:  # the bindings disagree: the one the read sees
+        reaching = reaching_store(name, assigned, index)
+        found = _one({_bound_type(reaching, index, package)}) if reaching is not None else None
+    return found
 
 
 def _dynamic(tree: ast.Module, index: Index) -> bool:

@@ -93,7 +93,7 @@ def _stores(instance: Instance[Message], index: Index
 def _how(value: ast.expr) -> str:
     """How a value that is no literal is known to have its type."""
     if isinstance(value, ast.Name):
-        return ": every assignment to it in its function gives one"
+        return ": what it is assigned in its function gives one"
     return ": every assignment to it gives one" if isinstance(value, ast.Attribute) else ""
 
 

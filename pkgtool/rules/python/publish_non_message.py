@@ -109,7 +109,7 @@ def _not_a_message(value: ast.expr, publisher: Publisher,
         return "the class itself, not an instance of it (`()` is missing where it is made)"
     if wrong is not None and wrong not in _ACCEPTED:
         return f"a literal of type `{wrong}`" if literal_type(value) else \
-            f"a value of type `{wrong}` (every assignment to it gives one)"
+            f"a value of type `{wrong}` (what it is assigned gives one)"
     for instance in messages:
         if any(use is value for use in instance.uses) and isinstance(value, ast.Attribute):
             kind = instance.message.fields.get(value.attr, "")

@@ -1,0 +1,73 @@
+"""The one assignment whose value a read of a local name certainly sees, in straight-line code.
+
+``msg = String()`` then ``msg = 'hi'`` then ``pub.publish(msg)``: the bindings of ``msg``
+disagree, yet the read sees the second. From the statement holding the read, the statements
+before it in the same block are searched backwards for the nearest that stores the name; when
+none does, the search goes on before the block's own statement (an ``if``, ``with``), but
+never out of a loop (a later statement of its body reaches the read on the next turn, and a
+``while`` test's read too), a ``try`` (whether its body ran is unknown) or a ``match``. The
+nearest store counts when it is a plain ``name = value`` (or annotated) statement; a store
+nested in another statement or an augmented one leaves the value unknown.
+"""
+
+from __future__ import annotations
+
+import ast
+
+from pkgtool.rules.syntax_trees import Index
+
+_BLOCKS = ("body", "orelse")
+"""The statement lists of an ``if`` or ``with`` (a ``with`` has ``body`` alone)."""
+_THROUGH = (ast.If, ast.With, ast.AsyncWith)
+"""Statements whose blocks run after what comes before them, once."""
+
+
+def _position(node: ast.AST) -> tuple[int, int]:
+    return node.lineno, node.col_offset  # type: ignore[attr-defined]
+
+
+def _inside(store: ast.Name, statement: ast.stmt) -> bool:
+    """True when ``store`` lies within ``statement``'s source span."""
+    end = (statement.end_lineno or statement.lineno, statement.end_col_offset or 0)
+    return _position(statement) <= _position(store) < end
+
+
+def _block_of(statement: ast.stmt, parent: ast.AST) -> list[ast.stmt] | None:
+    """The statement list of ``parent`` holding ``statement``, if one of its blocks does."""
+    for field in _BLOCKS:
+        block = getattr(parent, field, None)
+        if isinstance(block, list) and any(s is statement for s in block):
+            return block
+    return None
+
+
+def reaching_store(read: ast.Name, stores: list[ast.Name], index: Index) -> ast.Name | None:
+    """The store among ``stores`` (every binding of the name in the read's function) whose
+    value ``read`` certainly sees, or None when that is not certain."""
+    node: ast.AST | None = read
+    while node is not None and not isinstance(node, ast.stmt):
+        node = index.parents.get(id(node))
+    if node is None or isinstance(node, ast.While):  # its test also sees what its body stores
+        return None
+    parent = index.parents.get(id(node))
+    while parent is not None:
+        block = _block_of(node, parent)  # type: ignore[arg-type]
+        if block is None:
+            return None
+        before = block[:next(i for i, s in enumerate(block) if s is node)]
+        for statement in reversed(before):
+            inside = [s for s in stores if _inside(s, statement)]
+            if inside:
+                return _plain_target(statement, inside)
+        if not isinstance(parent, _THROUGH):
+            return None
+        node, parent = parent, index.parents.get(id(parent))
+    return None
+
+
+def _plain_target(statement: ast.stmt, inside: list[ast.Name]) -> ast.Name | None:
+    """The name ``statement`` stores when it is a plain assignment of it, else None."""
+    targets = statement.targets if isinstance(statement, ast.Assign) else \
+        [statement.target] if isinstance(statement, ast.AnnAssign) and statement.value else []
+    direct = [t for t in targets if any(t is s for s in inside)]
+    return direct[0] if direct and len(inside) == len(direct) else None
