@@ -15,16 +15,8 @@ from __future__ import annotations
 
 import ast
 
-from pkgtool.model.memo import per_object
+from pkgtool.model.memo import per_tree
 from pkgtool.records import record
-
-_TREES = 64
-"""How many trees' node lists stay: more than any package has modules being checked at once."""
-PARTS = 256
-"""How many parts of trees (functions, classes) a cache of facts per part keeps: more than most
-packages have (several rules look at the same parts one after another), few enough that the
-trees of the packages done do not stay for long."""
-
 
 _LEAF_FIELDS = frozenset({"ctx", "op", "ops",  # the singletons the walks leave out
                           "id", "attr", "arg", "asname", "module", "level", "kind", "conversion",
@@ -57,7 +49,7 @@ class Walk:
     by_class: dict[type, list[ast.AST]]
 
 
-@per_object(_TREES)
+@per_tree
 def walk_once(tree: ast.AST) -> Walk:
     """The :class:`Walk` of ``tree``, computed once per tree object; treat both as read-only.
 
@@ -121,7 +113,7 @@ def descendants(node: ast.AST) -> list[ast.AST]:
     return found
 
 
-@per_object(PARTS)
+@per_tree
 def subtree(node: ast.AST) -> tuple[ast.AST, ...]:
     """:func:`descendants` of ``node`` computed once per node object (functions and classes
     several rules look at)."""

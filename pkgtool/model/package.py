@@ -14,6 +14,7 @@ from pkgtool.model.launch import LaunchFile, is_launch_file, is_template, parse_
 from pkgtool.model.launch_reader import yaml_problem
 from pkgtool.model.manifest import Manifest, parse_manifest
 from pkgtool.model.modules import PythonModule, parse_module
+from pkgtool.model.python_visitor import forget_trees
 from pkgtool.model.setup_cfg import SetupCfg, parse_setup_cfg
 from pkgtool.model.setup_py import SetupPy, parse_setup_py
 from pkgtool.model.span import ParseProblem
@@ -97,7 +98,9 @@ def load_package(root: Path, context: Context | None = None) -> Package:
     """Read the package at ``root``; never raises for bad content, only records problems.
 
     ``context`` defaults to the default distribution and a workspace of this package alone.
+    The syntax trees (and their facts) kept for the package loaded before are let go.
     """
+    forget_trees()
     files = list_files(root)
     problems: list[ParseProblem] = []
     texts: dict[str, str] = {}

@@ -7,6 +7,7 @@ import functools
 from collections.abc import Callable
 
 from pkgtool.model.ast_nodes import descendants, walk_once
+from pkgtool.model.memo import forget_tree_facts
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.model.static_branches import mentions_module_name, module_constants, truth
@@ -142,7 +143,7 @@ def _flatten(body: list[ast.stmt]) -> list[ast.stmt]:
     return result
 
 
-@functools.lru_cache(maxsize=512)
+@functools.lru_cache(maxsize=8192)
 def parse_tree(path: str, text: str) -> ast.Module | ParseProblem:
     """``ast.parse`` that turns every parser failure into a ``python-syntax`` problem.
 
@@ -163,8 +164,10 @@ def parse_tree(path: str, text: str) -> ast.Module | ParseProblem:
 
 def forget_trees() -> None:
     """Drop the trees :func:`parse_tree` keeps: call it when done with a package, so the
-    next packages' work does not carry (and the garbage collector does not walk) them."""
+    next packages' work does not carry (and the garbage collector does not walk) them, nor
+    what the rules worked out from them (:func:`~pkgtool.model.memo.per_tree`)."""
     parse_tree.cache_clear()
+    forget_tree_facts()
 
 
 def module_from_tree(path: str, tree: ast.Module) -> PythonModule:

@@ -27,7 +27,7 @@ from collections import Counter
 from collections.abc import Callable
 
 from pkgtool.model.ast_nodes import descendants, enclosing, nodes_of_class, walk_once
-from pkgtool.model.memo import per_object
+from pkgtool.model.memo import per_tree
 
 _COMPARE = {ast.Lt: operator.lt, ast.LtE: operator.le, ast.Gt: operator.gt,
             ast.GtE: operator.ge, ast.Eq: operator.eq, ast.NotEq: operator.ne}
@@ -36,7 +36,7 @@ _PYTHON3 = ((3, 0, 0, "alpha", 0), (3, 99, 99, "final", 0))
 MODULE_DUNDERS = frozenset({"__name__", "__package__", "__spec__"})
 
 
-@per_object(64)
+@per_tree
 def module_constants(tree: ast.Module) -> dict[str, bool]:
     """Names assigned exactly once in the whole file, at module level, to a constant.
 
@@ -179,7 +179,7 @@ def mentions_module_name(test: ast.expr) -> bool:
 _FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
 
 
-@per_object(64)
+@per_tree
 def function_constants(tree: ast.Module) -> dict[int, dict[str, bool]]:
     """By id of a function, its local flags: names a statement of the function's own body
     assigns a constant (``debug = False``), when nothing else in the whole file binds the name
@@ -206,7 +206,7 @@ def function_constants(tree: ast.Module) -> dict[int, dict[str, bool]]:
     return found
 
 
-@per_object(64)
+@per_tree
 def dead_lines(tree: ast.Module) -> list[tuple[int, int]]:
     """Line ranges (first, last) of ``if`` branches that never run on Python 3 (also those a
     function's own constant flag decides: ``debug = False`` then ``if debug:``), worked out

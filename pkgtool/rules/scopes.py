@@ -6,8 +6,8 @@ import ast
 from collections import Counter
 from collections.abc import Iterator
 
-from pkgtool.model.ast_nodes import PARTS, child_nodes
-from pkgtool.model.memo import per_object
+from pkgtool.model.ast_nodes import child_nodes
+from pkgtool.model.memo import per_tree
 
 _NESTED = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda,
                      ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp})
@@ -104,7 +104,7 @@ def bound_names(where: ast.stmt | list[ast.stmt] | ast.FunctionDef | ast.AsyncFu
     return found
 
 
-@per_object(PARTS)
+@per_tree
 def scope_bindings(scope: Scope) -> Counter[str]:
     """:func:`bound_names` of a function (its parameters included) or of the body of a module
     or class, computed once per scope (several rules ask about the same); treat as read-only."""

@@ -11,7 +11,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.model.ast_nodes import walk_once
-from pkgtool.model.memo import per_object, per_package
+from pkgtool.model.memo import per_package, per_tree
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
@@ -151,7 +151,7 @@ def _index(tree: ast.Module) -> Index:
     return index
 
 
-index_of = per_object(64)(_index)
+index_of = per_tree(_index)
 """The :class:`Index` of a tree, built on first use (only rules that need one pay for it)."""
 
 
@@ -209,7 +209,7 @@ def _qualified(node: ast.expr, aliases: dict[str, str]) -> str | None:
     return ".".join([aliases[node.id], *reversed(attrs)])
 
 
-@per_object(64)
+@per_tree
 def resolved_attributes(index: Index) -> tuple[tuple[ast.Attribute, str, str], ...]:
     """Attribute reads whose base resolves: the node, the owner's dotted name, the attribute
     (worked out once per index: PYC002 and PYC004 read the same)."""

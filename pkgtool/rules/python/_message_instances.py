@@ -23,8 +23,8 @@ from collections.abc import Callable, Iterator, Mapping
 from typing import Any, Generic, TypeVar
 
 from pkgtool.knowledge.message_fields import Message, message_of
-from pkgtool.model.ast_nodes import PARTS, nodes_of, nodes_of_class, subtree
-from pkgtool.model.memo import per_object
+from pkgtool.model.ast_nodes import nodes_of, nodes_of_class, subtree
+from pkgtool.model.memo import per_tree
 from pkgtool.model.package import Package
 from pkgtool.records import record
 from pkgtool.rules.node_api import ACTION_SERVER_CALLBACKS, ACTION_SERVERS, PARAMETERS, argument
@@ -80,7 +80,7 @@ def _bind(node: ast.AST, found: Counter[str]) -> None:
         found.update(node.names * 2)
 
 
-@per_object(PARTS)
+@per_tree
 def _names(node: ast.AST) -> _Names:
     """The :class:`_Names` of ``node`` and every node inside it (a function's own name
     included), in one walk, once per node: several rules ask about the same functions."""
@@ -148,7 +148,7 @@ def _fresh(node: ast.AST) -> tuple[str, ast.Call] | None:
 Scope = ast.Module | ast.FunctionDef | ast.AsyncFunctionDef
 
 
-@per_object(16)
+@per_tree
 def _facts(tree: ast.Module) -> dict[object, Any]:
     """What the rules derive from ``tree`` by key (its message instances): worked out once
     per tree (PYC019, PYC020 and PYC023-PYC026 read the same)."""
@@ -223,7 +223,7 @@ class _ClassFacts:
     defined: Counter[str]
 
 
-@per_object(PARTS)
+@per_tree
 def _class_facts(cls: ast.ClassDef) -> _ClassFacts:
     """The :class:`_ClassFacts` of ``cls``, from its methods' :func:`_names`, once per class
     (PYC019, PYC020 and the callback lookup read the same)."""
@@ -246,7 +246,7 @@ def _class_facts(cls: ast.ClassDef) -> _ClassFacts:
     return _ClassFacts(stores, refs, uses, scope_bindings(cls))
 
 
-@per_object(16)
+@per_tree
 def _stored_attributes(tree: ast.Module) -> Counter[str] | None:
     """How often the module stores each attribute name, once per tree (PYC019 and PYC020 ask);
     None when it calls ``setattr`` or ``delattr`` (any attribute may change)."""

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 import ast
 
-from pkgtool.model.ast_nodes import PARTS, subtree
-from pkgtool.model.memo import per_object
+from pkgtool.model.ast_nodes import subtree
+from pkgtool.model.memo import per_tree
 from pkgtool.rules.node_api import unpacks
 from pkgtool.rules.scopes import scope_bindings
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index
@@ -30,7 +30,7 @@ def _functions_around(node: ast.AST, index: Index) -> list[Function]:
     return found
 
 
-@per_object(PARTS)
+@per_tree
 def _definitions(scope: ast.Module | ast.ClassDef) -> dict[str, list[ast.stmt]]:
     """The functions and classes the body of ``scope`` defines, by name."""
     found: dict[str, list[ast.stmt]] = {}
@@ -40,7 +40,7 @@ def _definitions(scope: ast.Module | ast.ClassDef) -> dict[str, list[ast.stmt]]:
     return found
 
 
-@per_object(PARTS)
+@per_tree
 def _stored_attributes(cls: ast.ClassDef) -> frozenset[str]:
     """The attribute names assigned or deleted anywhere in ``cls`` (``x.name = ...``)."""
     return frozenset(n.attr for n in subtree(cls)

@@ -22,7 +22,7 @@ from collections.abc import Iterator
 
 from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
 from pkgtool.model.ast_nodes import nodes_of_class
-from pkgtool.model.memo import per_object, per_package
+from pkgtool.model.memo import per_package, per_tree
 from pkgtool.model.package import Package
 from pkgtool.rules.node_api import (INTERFACE, NODE_CLASSES, derives_from_node_alone,
                                     literal_type)
@@ -173,7 +173,7 @@ def _targets(statement: ast.AST) -> list[ast.expr]:
         [statement.target] if isinstance(statement, (ast.AnnAssign, ast.AugAssign)) else []
 
 
-@per_object(16)
+@per_tree
 def _assigned_names(tree: ast.Module) -> dict[str, list[ast.Name]]:
     """The names assignment statements of ``tree`` bind directly (``n = ...``, ``n: int =
     ...``, ``n += ...``; not unpacked), by name."""
@@ -243,11 +243,21 @@ def attribute_stores(package: Package) -> dict[str, list[tuple[ast.expr, Index]]
     return found
 
 
+@per_package
+def _attribute_types(package: Package) -> dict[str, str | None]:
+    """The type of each attribute name, filled as rules ask (every read of ``self.x`` would
+    otherwise look at every store of ``x`` in the package again)."""
+    return {}
+
+
 def _attribute_type(package: Package, name: str) -> str | None:
     """The one type every store of an attribute ``name`` in the package gives, if any."""
-    stores = attribute_stores(package)
-    return _one({_bound_type(node, index, package) for node, index in stores.get(name, ())}) \
-        if stores else None
+    known = _attribute_types(package)
+    if name not in known:
+        stores = attribute_stores(package)
+        known[name] = _one({_bound_type(node, index, package)
+                            for node, index in stores.get(name, ())}) if stores else None
+    return known[name]
 
 
 def _node_attribute_type(value: ast.Attribute, package: Package, index: Index) -> str | None:

@@ -6,7 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.memo import per_object
+from pkgtool.model.memo import per_tree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import (ACTION_PARAMETERS, ACTIONS, NODE_CLASSES, SPINS,
@@ -44,7 +44,7 @@ def _values(name: str, scopes: list[Scope]) -> list[ast.expr]:
     return values if len(values) == scope_bindings(scope)[name] else []
 
 
-@per_object(16)
+@per_tree
 def _assigned(scope: Scope) -> dict[str, list[ast.expr]]:
     """The values of the plain assignments (``name = value``) of ``scope``, by name."""
     found: dict[str, list[ast.expr]] = {}

@@ -6,7 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.memo import per_object
+from pkgtool.model.memo import per_tree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.scopes import (bound_names, catches_everything, catches_name_error,
@@ -78,7 +78,7 @@ def _in_loop(index: Index, node: ast.AST, function: ast.AST) -> bool:
     return False
 
 
-@per_object(64)
+@per_tree
 def _inspecting(index: Index) -> set[int]:
     """Ids of the functions whose body (not a scope inside it) calls ``locals()``, ``vars()``
     or ``globals()``: they may inspect their own namespace."""
