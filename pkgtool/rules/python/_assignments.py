@@ -54,13 +54,18 @@ def _local(name: ast.Name, tree: ast.Module, index: Index) -> Assigned | None:
 
 def _class_stores(cls: ast.ClassDef, name: str, index: Index) -> list[ast.Attribute]:
     """The stores of ``<receiver>.name`` in the plain methods of ``cls``."""
-    found = []
+    return kept(cls, "stores by attribute", lambda: _stores_by_attribute(cls, index)).get(name, [])
+
+
+def _stores_by_attribute(cls: ast.ClassDef, index: Index) -> dict[str, list[ast.Attribute]]:
+    """The stores of ``<receiver>.x`` in the plain methods of ``cls``, by ``x``."""
+    found: dict[str, list[ast.Attribute]] = {}
     for node in subtree(cls):
-        if isinstance(node, ast.Attribute) and node.attr == name and \
-                not isinstance(node.ctx, ast.Load) and isinstance(node.value, ast.Name):
+        if isinstance(node, ast.Attribute) and not isinstance(node.ctx, ast.Load) and \
+                isinstance(node.value, ast.Name):
             method = index.enclosing_function(node, through_lambdas=False)
             if index.parents.get(id(method)) is cls and method_receiver(method) == node.value.id:
-                found.append(node)
+                found.setdefault(node.attr, []).append(node)
     return found
 
 

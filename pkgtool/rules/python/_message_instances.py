@@ -149,14 +149,15 @@ Scope = ast.Module | ast.FunctionDef | ast.AsyncFunctionDef
 
 
 @per_tree
-def _facts(tree: ast.Module) -> dict[object, Any]:
+def _facts(tree: ast.AST) -> dict[object, Any]:
     """What the rules derive from ``tree`` by key (its message instances): worked out once
     per tree (PYC019, PYC020 and PYC023-PYC026 read the same)."""
     return {}
 
 
-def kept(tree: ast.Module, key: object, work_out: Callable[[], R]) -> R:
-    """``work_out()``, kept with ``tree`` under ``key`` (see :func:`_facts`)."""
+def kept(tree: ast.AST, key: object, work_out: Callable[[], R]) -> R:
+    """``work_out()``, kept with ``tree`` (or a part of one) under ``key`` (see
+    :func:`_facts`)."""
     known = _facts(tree)
     if key not in known:
         known[key] = work_out()

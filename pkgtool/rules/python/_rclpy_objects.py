@@ -70,7 +70,14 @@ def object_class(value: ast.expr, package: Package, tree: ast.Module, index: Ind
             return _one({object_class(v, package, tree, index, depth + 1) for v in registered})
         if depth and _node_self(value, index):  # a receiver (reads on a node are not ours)
             return NODE
-        return _assigned_class(value, package, tree, index, depth)
+        function = index.enclosing_function(value, through_lambdas=False)
+        if function is None:
+            return None
+        known = _attribute_classes(package)  # every read of a local name has the same
+        key = (id(function), value.id)
+        if key not in known:
+            known[key] = _assigned_class(value, package, tree, index, depth)
+        return known[key]
     if isinstance(value, ast.Attribute) and isinstance(value.value, ast.Name):
         cls = receiver_class(value.value, index)
         if cls is None:
@@ -94,8 +101,9 @@ def _assigned_class(value: ast.Name | ast.Attribute, package: Package, tree: ast
 
 @per_package
 def _attribute_classes(package: Package) -> dict[tuple[int, str], str | None]:
-    """The class of ``self.x`` by (id of the class whose method reads it, ``x``), filled as
-    rules ask (every read of ``self.x`` in one class has the same)."""
+    """The class of ``self.x`` by (id of the class whose method reads it, ``x``), and of a
+    local name by (id of its function, name), filled as rules ask (every read of ``self.x``
+    in one class, of a name in one function, has the same)."""
     return {}
 
 
