@@ -141,6 +141,7 @@ RULES = {
                "python.parameters_not_parameter_objects"),
     "PYC055": ("fixture-called", "error", True, "python.fixture_called"),
     "PYC056": ("time-used-as-number", "error", True, "python.time_used_as_number"),
+    "PYC057": ("rclpy-shut-down-twice", "error", True, "python.rclpy_shut_down_twice"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

@@ -1,4 +1,5 @@
-"""The one assignment whose value a read of a local name certainly sees, in straight-line code.
+"""What ran just before a statement, in straight-line code, and the one assignment whose value
+a read of a local name there certainly sees.
 
 ``msg = String()`` then ``msg = 'hi'`` then ``pub.publish(msg)``: the bindings of ``msg``
 disagree, yet the read sees the second. From the statement holding the read, the statements
@@ -13,6 +14,7 @@ nested in another statement or an augmented one leaves the value unknown.
 from __future__ import annotations
 
 import ast
+from collections.abc import Iterator
 
 from pkgtool.rules.syntax_trees import Index
 
@@ -41,27 +43,40 @@ def _block_of(statement: ast.stmt, parent: ast.AST) -> list[ast.stmt] | None:
     return None
 
 
-def reaching_store(read: ast.Name, stores: list[ast.Name], index: Index) -> ast.Name | None:
-    """The store among ``stores`` (every binding of the name in the read's function) whose
-    value ``read`` certainly sees, or None when that is not certain."""
-    node: ast.AST | None = read
-    while node is not None and not isinstance(node, ast.stmt):
-        node = index.parents.get(id(node))
-    if node is None or isinstance(node, ast.While):  # its test also sees what its body stores
-        return None
+def preceding_statements(statement: ast.stmt, index: Index) -> Iterator[ast.stmt]:
+    """The statements that ran just before ``statement`` whenever it runs, nearest first: those
+    before it in its block, then (out of an ``if`` or ``with`` block) those before that
+    statement; none from beyond a loop, ``try``, ``match`` or function."""
+    node: ast.AST = statement
     parent = index.parents.get(id(node))
     while parent is not None:
         block = _block_of(node, parent)  # type: ignore[arg-type]
         if block is None:
-            return None
-        before = block[:next(i for i, s in enumerate(block) if s is node)]
-        for statement in reversed(before):
-            inside = [s for s in stores if _inside(s, statement)]
-            if inside:
-                return _plain_target(statement, inside)
+            return
+        yield from reversed(block[:next(i for i, s in enumerate(block) if s is node)])
         if not isinstance(parent, _THROUGH):
-            return None
+            return
         node, parent = parent, index.parents.get(id(parent))
+
+
+def holding_statement(node: ast.AST, index: Index) -> ast.stmt | None:
+    """The innermost statement ``node`` is part of (``node`` itself when a statement)."""
+    current: ast.AST | None = node
+    while current is not None and not isinstance(current, ast.stmt):
+        current = index.parents.get(id(current))
+    return current
+
+
+def reaching_store(read: ast.Name, stores: list[ast.Name], index: Index) -> ast.Name | None:
+    """The store among ``stores`` (every binding of the name in the read's function) whose
+    value ``read`` certainly sees, or None when that is not certain."""
+    statement = holding_statement(read, index)
+    if statement is None or isinstance(statement, ast.While):  # its test sees its body's stores
+        return None
+    for before in preceding_statements(statement, index):
+        inside = [s for s in stores if _inside(s, before)]
+        if inside:
+            return _plain_target(before, inside)
     return None
 
 
