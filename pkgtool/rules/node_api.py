@@ -81,9 +81,9 @@ def _method_calls(package: Package) -> tuple[tuple[PythonModule, ast.Call, str, 
     for module, _, index in installed_trees(package):
         if not any(i.top_level == "rclpy" for i in module.imports):
             continue
-        defined = {function.name for function in index.functions}
         found.extend((module, call, call.func.attr, index) for call in index.calls
-                     if isinstance(call.func, ast.Attribute) and call.func.attr not in defined)
+                     if isinstance(call.func, ast.Attribute) and
+                     not index.defines_function(call.func.attr))
     return tuple(found)
 
 

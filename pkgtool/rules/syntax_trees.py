@@ -43,6 +43,10 @@ class Index:
     dotted: dict[int, tuple[ast.expr, str | None]] = field(default_factory=dict, compare=False,
                                                            repr=False)
 
+    def defines_function(self, name: str) -> bool:
+        """True when the module defines a function or method called ``name`` anywhere."""
+        return name in _function_names(self)
+
     def imports_from(self, package: str) -> bool:
         """True when the module imports anything of the top-level ``package``."""
         return any(target.split(".")[0] == package for target in self.aliases.values())
@@ -98,6 +102,11 @@ class Index:
         while parent is not None and not isinstance(parent, stops):
             parent = self.parents.get(id(parent))
         return parent if isinstance(parent, FUNCTIONS) else None
+
+
+@per_tree
+def _function_names(index: Index) -> frozenset[str]:
+    return frozenset(function.name for function in index.functions)
 
 
 def _bindings(node: ast.AST) -> Iterator[tuple[str, str | None]]:

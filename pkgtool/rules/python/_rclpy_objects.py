@@ -55,8 +55,8 @@ def object_class(value: ast.expr, package: Package, tree: ast.Module, index: Ind
         if isinstance(func, ast.Attribute):
             receiver = object_class(func.value, package, tree, index, depth + 1)
             made = _MADE_BY.get((receiver or "", func.attr))
-            if made is not None and not (receiver == NODE and any(
-                    f.name == func.attr for f in index.functions)):  # the class's own method
+            own = receiver == NODE and index.defines_function(func.attr)  # the class's method
+            if made is not None and not own:
                 return made
         return _CONSTRUCTED.get(index.qualified(func) or "") \
             if isinstance(func, (ast.Name, ast.Attribute)) else None

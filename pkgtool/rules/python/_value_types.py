@@ -143,7 +143,7 @@ def _made_type(value: ast.expr, index: Index, package: Package | None = None) ->
         return found
     cls = receiver_class(value.func.value, index)  # type: ignore[attr-defined]
     if cls is not None and any(index.qualified(b) in NODE_CLASSES for b in cls.bases) and \
-            not any(f.name == "get_parameter" for f in index.functions):
+            not index.defines_function("get_parameter"):
         return PARAMETER
     return None
 

@@ -171,7 +171,7 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
     yield from _feedback_hits(package)
     for module, tree, index in installed_trees(package):
         if not any(i.top_level == "rclpy" for i in module.imports) or \
-                any(f.name == "create_publisher" for f in index.functions):
+                index.defines_function("create_publisher"):
             continue
         known = known_messages(package, index)
         make = _publisher_maker(known, index)
