@@ -18,8 +18,9 @@ from collections.abc import Iterator
 
 from pkgtool.rules.syntax_trees import Index
 
-_BLOCKS = ("body", "orelse")
-"""The statement lists of an ``if`` or ``with`` (a ``with`` has ``body`` alone)."""
+_BLOCKS = ("body", "orelse", "finalbody")
+"""The statement lists of a compound statement (a ``with`` has ``body`` alone); within any of
+them statements run in order."""
 _THROUGH = (ast.If, ast.With, ast.AsyncWith)
 """Statements whose blocks run after what comes before them, once."""
 
