@@ -8,6 +8,9 @@ Measures, each as wall time of a fresh process (cold start included):
 
 - one package: ``pkgtool lint --no-cache PKG`` versus ``flake8 PKG`` (median of ``--repeat``
   runs, the two tools taking turns), and ``pkgtool lint PKG`` with a warm cache;
+- one package of many modules (``--large``, default 50 and 200 sub-packages of bench nodes,
+  ~300 and ~1,200 modules) without a cache, its time per module (flat when linear in the
+  package's size) and its parse floor;
 - generated workspaces (default 100, 500 and 1,000 packages): with the cache emptied before
   each run (cold), packages per second and the time per package at each size (linear in N
   means a flat time per package), versus ``flake8 WS`` (up to ``--flake8-up-to`` packages);
@@ -250,9 +253,10 @@ def hook_environment(work: Path) -> Path:
 
 
 def measure(repeat: int, sizes: list[int], flake8_up_to: int, work: Path,
-            hook_venv: Path | None = None) -> dict[str, Any]:
+            hook_venv: Path | None = None, large: list[int] | None = None) -> dict[str, Any]:
     """Every measurement as a JSON-ready dict (``hook_venv``: also the one-package case with
-    that environment's pkgtool and flake8)."""
+    that environment's pkgtool and flake8; ``large``: one package of that many sub-packages
+    per size)."""
     lint, flake8 = [str(BIN / "pkgtool"), "lint"], [str(BIN / "flake8")]
     single = work / "single"
     write_package(single, "bench_single")
@@ -265,12 +269,12 @@ def measure(repeat: int, sizes: list[int], flake8_up_to: int, work: Path,
     if hook_venv is not None:
         result["single_hook_venv"] = _single(hook_venv, single, repeat)
     workspaces: list[dict[str, Any]] = []
+    runs = max(1, repeat // 2)
     for size in sizes:
         workspace = work / f"ws{size}"
         for index in range(size):
             write_package(workspace / "src" / f"pkg_{index:04d}", f"pkg_{index:04d}")
         cache = workspace / ".pkgtool_cache"
-        runs = max(1, repeat // 2)
         lint_ws, lint_cpu, code = _time(lint + ["."], workspace, runs, _emptied(cache))
         time.sleep(2.1)  # files older than 2 s are trusted by size and time, as in real use
         warm_ws, _, _ = _time(lint + ["."], workspace, repeat)
@@ -291,7 +295,22 @@ def measure(repeat: int, sizes: list[int], flake8_up_to: int, work: Path,
             "ratio_cold_over_parse_floor": lint_ws / parse_ws,
             "pkgtool_exit_code": code, **hooked})
     result["workspaces"] = workspaces
+    result["large_packages"] = [_large_package(work, size, runs) for size in large or []]
     return result
+
+
+def _large_package(work: Path, size: int, runs: int) -> dict[str, Any]:
+    """One package holding ``size`` Python sub-packages of bench nodes, linted without a cache:
+    the time per module stays flat as the package grows when no work is repeated per module."""
+    package = work / f"large{size}"
+    for index in range(size):
+        write_package(package, f"pkg_{index:04d}")  # one manifest; the node folders add up
+    modules = sum(1 for _ in package.rglob("*.py"))
+    lint_s, lint_cpu, _ = _time([str(BIN / "pkgtool"), "lint", "--no-cache", "."], package, runs)
+    parse_s, _, _ = _time([sys.executable, "-S", "-c", PARSE_FLOOR, "."], package, runs)
+    return {"sub_packages": size, "modules": modules, "pkgtool_s": lint_s,
+            "pkgtool_cpu_s": lint_cpu, "ms_per_module": 1000 * lint_s / modules,
+            "parse_floor_s": parse_s, "ratio_over_parse_floor": lint_s / parse_s}
 
 
 WALK_FLOOR = """
@@ -369,6 +388,11 @@ def table(result: dict[str, Any]) -> str:
         rows.append((f"{ws['packages']} packages, parse floor", f"{ws['parse_floor_s']:.3f}",
                      "", "", f"cold/floor {ws['ratio_cold_over_parse_floor']:.1f}",
                      f"{ws['packages'] / ws['parse_floor_s']:.0f}", "", "", "", ""))
+    for big in result.get("large_packages", []):
+        rows.append((f"1 package of {big['modules']} modules", f"{big['pkgtool_s']:.3f}",
+                     f"{big['pkgtool_cpu_s']:.3f}", "", f"cold/floor "
+                     f"{big['ratio_over_parse_floor']:.1f}", "",
+                     f"{big['ms_per_module']:.2f}/module", "", "", ""))
     widths = [max(len(row[i]) for row in rows) for i in range(len(rows[0]))]
     lines = ["  ".join(c.rjust(w) for c, w in zip(row, widths)) for row in rows]
     calibration = result["calibration"]
@@ -382,6 +406,9 @@ def main() -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--repeat", type=int, default=5)
     parser.add_argument("--sizes", type=int, nargs="+", default=[100, 500, 1000])
+    parser.add_argument("--large", type=int, nargs="*", default=[50, 200],
+                        help="also lint one package holding this many sub-packages of bench "
+                             "nodes (time per module: flat when linear)")
     parser.add_argument("--flake8-up-to", type=int, default=500,
                         help="time flake8 on workspaces up to this many packages")
     parser.add_argument("--hook-venv", action="store_true",
@@ -394,7 +421,8 @@ def main() -> int:
     compileall.compile_dir(str(Path(__file__).resolve().parents[1] / "pkgtool"), quiet=1)
     with tempfile.TemporaryDirectory(prefix="pkgtool-bench-") as work:
         hook = hook_environment(Path(work)) if args.hook_venv else None
-        result = measure(args.repeat, args.sizes, args.flake8_up_to, Path(work), hook)
+        result = measure(args.repeat, args.sizes, args.flake8_up_to, Path(work), hook,
+                         args.large)
     result["machine"] = {"cpus": os.cpu_count(), "python": platform.python_version(),
                          "platform": platform.platform(),
                          "load_average": os.getloadavg()}
