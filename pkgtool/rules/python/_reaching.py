@@ -16,6 +16,7 @@ from __future__ import annotations
 import ast
 from collections.abc import Iterator
 
+from pkgtool.model.ast_nodes import enclosing
 from pkgtool.rules.syntax_trees import Index
 
 _BLOCKS = ("body", "orelse", "finalbody")
@@ -35,12 +36,15 @@ def _inside(store: ast.Name, statement: ast.stmt) -> bool:
     return _position(statement) <= _position(store) < end
 
 
-def _block_of(statement: ast.stmt, parent: ast.AST) -> list[ast.stmt] | None:
-    """The statement list of ``parent`` holding ``statement``, if one of its blocks does."""
+def _before_in_block(statement: ast.stmt, parent: ast.AST) -> list[ast.stmt] | None:
+    """The statements before ``statement`` in the block of ``parent`` holding it, or None when
+    no block of ``parent`` holds it."""
     for field in _BLOCKS:
         block = getattr(parent, field, None)
-        if isinstance(block, list) and any(s is statement for s in block):
-            return block
+        if isinstance(block, list):
+            for position, held in enumerate(block):
+                if held is statement:
+                    return block[:position]
     return None
 
 
@@ -51,29 +55,21 @@ def preceding_statements(statement: ast.stmt, index: Index) -> Iterator[ast.stmt
     node: ast.AST = statement
     parent = index.parents.get(id(node))
     while parent is not None:
-        block = _block_of(node, parent)  # type: ignore[arg-type]
-        if block is None:
+        before = _before_in_block(node, parent)  # type: ignore[arg-type]
+        if before is None:
             return
-        yield from reversed(block[:next(i for i, s in enumerate(block) if s is node)])
+        yield from reversed(before)
         if not isinstance(parent, _THROUGH):
             return
         node, parent = parent, index.parents.get(id(parent))
 
 
-def holding_statement(node: ast.AST, index: Index) -> ast.stmt | None:
-    """The innermost statement ``node`` is part of (``node`` itself when a statement)."""
-    current: ast.AST | None = node
-    while current is not None and not isinstance(current, ast.stmt):
-        current = index.parents.get(id(current))
-    return current
-
-
 def reaching_store(read: ast.Name, stores: list[ast.Name], index: Index) -> ast.Name | None:
     """The store among ``stores`` (every binding of the name in the read's function) whose
     value ``read`` certainly sees, or None when that is not certain."""
-    statement = holding_statement(read, index)
-    if statement is None or isinstance(statement, ast.While):  # its test sees its body's stores
-        return None
+    statement = enclosing(read, index.parents, (ast.stmt,))
+    if not isinstance(statement, ast.stmt) or isinstance(statement, ast.While):
+        return None  # (a while test also sees what its body stores)
     for before in preceding_statements(statement, index):
         inside = [s for s in stores if _inside(s, before)]
         if inside:

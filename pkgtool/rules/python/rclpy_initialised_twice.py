@@ -9,12 +9,11 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import subtree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_api import INITS
+from pkgtool.rules.node_api import INITS, SHUTDOWNS, TRY_SHUTDOWNS
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
-SHUTDOWNS = frozenset({"rclpy.shutdown", "rclpy.try_shutdown", "rclpy.utilities.shutdown",
-                       "rclpy.utilities.try_shutdown"})
+_ENDS = SHUTDOWNS | TRY_SHUTDOWNS
 
 
 def _calls(function: ast.AST, index: Index) -> list[ast.Call]:
@@ -63,7 +62,7 @@ def _again(function: ast.AST, index: Index, initialising: dict[str, ast.Call]
     """(the first init, the call that initialises again, the init it makes) in ``function``."""
     first: ast.Call | None = None
     for call in _calls(function, index):
-        if _named(call, index, SHUTDOWNS):
+        if _named(call, index, _ENDS):
             first = None
         elif first is None:
             first = call if _certain_init(call, function, index) else None

@@ -6,15 +6,15 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.ast_nodes import enclosing, nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._reaching import holding_statement, preceding_statements
+from pkgtool.rules.node_api import INITS, SHUTDOWNS, TRY_SHUTDOWNS
+from pkgtool.rules.python._reaching import preceding_statements
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
-_SHUTDOWNS = frozenset({"rclpy.shutdown", "rclpy.try_shutdown"})
-_INIT = "rclpy.init"
+_ENDS = SHUTDOWNS | TRY_SHUTDOWNS
 
 
 def _called(statement: ast.stmt, names: frozenset[str], index: Index) -> ast.Call | None:
@@ -32,14 +32,13 @@ def _shut_down_by(statement: ast.stmt, index: Index) -> ast.Call | None:
     """The call by which ``statement`` certainly shuts ROS down: a bare shutdown call, or
     one at the top level of a ``finally`` block."""
     if isinstance(statement, (ast.Try, getattr(ast, "TryStar", ast.Try))):
-        return next((c for s in statement.finalbody if (c := _called(s, _SHUTDOWNS, index))),
-                    None)
-    return _called(statement, _SHUTDOWNS, index)
+        return next((c for s in statement.finalbody if (c := _called(s, _ENDS, index))), None)
+    return _called(statement, _ENDS, index)
 
 
 def _initialises(statement: ast.stmt, index: Index) -> bool:
     """True when ``statement`` calls ``rclpy.init`` anywhere within it."""
-    return any(isinstance(c.func, (ast.Name, ast.Attribute)) and index.qualified(c.func) == _INIT
+    return any(isinstance(c.func, (ast.Name, ast.Attribute)) and index.qualified(c.func) in INITS
                for c in nodes_of_class(statement, ast.Call))
 
 
@@ -86,9 +85,9 @@ def rclpy_shut_down_twice(package: Package) -> Iterator[Hit]:
         if not index.imports_from("rclpy"):
             continue
         for call in index.calls:
-            statement = holding_statement(call, index)
-            if statement is None or _called(statement, frozenset({"rclpy.shutdown"}),
-                                            index) is not call:
+            statement = enclosing(call, index.parents, (ast.stmt,))
+            if not isinstance(statement, ast.stmt) or \
+                    _called(statement, SHUTDOWNS, index) is not call:
                 continue
             for before in preceding_statements(statement, index):
                 if _initialises(before, index):

@@ -24,7 +24,7 @@ _SECONDS = frozenset({"time.time", "time.monotonic", "time.perf_counter"})
 _OPERATORS = {ast.Add: "+", ast.Sub: "-", ast.Mult: "*", ast.Div: "/", ast.FloorDiv: "//",
               ast.Mod: "%", ast.Pow: "**"}
 _ORDERING = (ast.Lt, ast.LtE, ast.Gt, ast.GtE)
-_SYMBOLS = {ast.Lt: "<", ast.LtE: "<=", ast.Gt: ">", ast.GtE: ">=", ast.Eq: "==", ast.NotEq: "!="}
+_COMPARISONS = (*_ORDERING, ast.Eq, ast.NotEq)
 _TEXT_CONVERSIONS = frozenset("sra")
 """``%`` conversions that take any object (its text)."""
 
@@ -48,10 +48,6 @@ class _Kinds:
             return True
         return certain_type(value, self.package, self.tree, self.index) in NUMBER_TYPES
 
-    def kind(self, value: ast.expr) -> str | None:
-        """``Time``, ``Duration``, ``number`` or None."""
-        return self.time_class(value) or ("number" if self.number(value) else None)
-
 
 def _arithmetic(node: ast.BinOp, kinds: _Kinds) -> str | None:
     """Why ``node`` fails on every distribution, or None: a time class with a number
@@ -74,7 +70,7 @@ def _arithmetic(node: ast.BinOp, kinds: _Kinds) -> str | None:
 
 def _comparison(left: ast.expr, op: ast.cmpop, right: ast.expr, kinds: _Kinds) -> str | None:
     """Why comparing ``left`` with ``right`` is wrong, or None."""
-    if type(op) not in _SYMBOLS:
+    if not isinstance(op, _COMPARISONS):
         return None
     sides = kinds.time_class(left), kinds.time_class(right)
     if None not in sides:
@@ -106,28 +102,33 @@ def _misuses(tree: ast.Module, index: Index, kinds: _Kinds) -> Iterator[tuple[as
             why = _arithmetic(node, kinds)
             if why:
                 yield node, f"{why}: rclpy raises TypeError"
+            yield from _percent_formats(node, kinds)
         elif isinstance(node, ast.Compare):
             for left, op, right in zip([node.left, *node.comparators], node.ops,
                                        node.comparators):
                 why = _comparison(left, op, right, kinds)
                 if why:
                     yield node, why
-        elif isinstance(node.op, (ast.USub, ast.UAdd)) and kinds.time_class(node.operand):
-            yield node, f"negates an rclpy `{kinds.time_class(node.operand)}`: TypeError"
+        elif isinstance(node.op, (ast.USub, ast.UAdd)) and \
+                (cls := kinds.time_class(node.operand)):
+            yield node, f"negates an rclpy `{cls}`: TypeError"
     for call in index.calls:
         name = _conversion(call.func, index)
-        if name and call.args and kinds.time_class(call.args[0]):
-            yield call, (f"gives an rclpy `{kinds.time_class(call.args[0])}` to `{name}()`, "
-                         "which takes a real number: TypeError")
+        if name and call.args and (cls := kinds.time_class(call.args[0])):
+            yield call, (f"gives an rclpy `{cls}` to `{name}()`, which takes a real number: "
+                         "TypeError")
     for value, spec, converted in format_specs(tree, index):
-        if not converted and kinds.time_class(value):
-            yield value, (f"is an rclpy `{kinds.time_class(value)}` formatted with `{spec}`, "
-                          "which it refuses: TypeError")
-    for node in nodes_of_class(tree, ast.BinOp):
-        for value, conversion in percent_values(node):  # type: ignore[arg-type]
-            if conversion["type"] not in _TEXT_CONVERSIONS and kinds.time_class(value):
-                yield value, (f"is an rclpy `{kinds.time_class(value)}` formatted with "
-                              f"`{conversion.group(0)}`, which needs a number: TypeError")
+        if not converted and (cls := kinds.time_class(value)):
+            yield value, (f"is an rclpy `{cls}` formatted with `{spec}`, which it refuses: "
+                          "TypeError")
+
+
+def _percent_formats(node: ast.BinOp, kinds: _Kinds) -> Iterator[tuple[ast.expr, str]]:
+    """The time classes ``'...' % values`` formats with a number conversion (``%f``)."""
+    for value, conversion in percent_values(node):
+        if conversion["type"] not in _TEXT_CONVERSIONS and (cls := kinds.time_class(value)):
+            yield value, (f"is an rclpy `{cls}` formatted with `{conversion.group(0)}`, which "
+                          "needs a number: TypeError")
 
 
 @rule("PYC056", "time-used-as-number", Severity.ERROR,
