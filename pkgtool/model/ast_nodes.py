@@ -37,6 +37,9 @@ class _ChildFields(dict[type, tuple[str, ...]]):
 CHILD_FIELDS = _ChildFields()
 """The fields of a node class the walks look at: ``CHILD_FIELDS[type(node)]``."""
 _NODE = ast.AST
+TRIES: tuple[type, ...] = tuple(getattr(ast, name) for name in ("Try", "TryStar")
+                                if hasattr(ast, name))
+"""The classes of ``try`` statements of the running Python (``try/except*`` from 3.11)."""
 
 
 @record

@@ -6,7 +6,7 @@ import ast
 import functools
 from collections.abc import Callable
 
-from pkgtool.model.ast_nodes import descendants, walk_once
+from pkgtool.model.ast_nodes import TRIES, descendants, walk_once
 from pkgtool.model.memo import forget_tree_facts
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.span import ParseProblem, Span
@@ -53,7 +53,7 @@ def _block(statements: list[ast.AST], guarded: bool) -> list[tuple[ast.AST, bool
 def _guarded_parts(node: ast.AST, constants: dict[str, bool]) -> list[tuple[ast.AST, bool]]:
     """The statements directly inside ``node``, each with whether ``node`` guards its imports
     (they are guarded too when a block around ``node`` guards it)."""
-    if isinstance(node, (ast.Try, ast.TryStar)):
+    if isinstance(node, TRIES):
         return (_block(node.body, any(_catches_import_error(h) for h in node.handlers))
                 + [(h, _catches_import_error(h)) for h in node.handlers]
                 + _block(node.orelse, False) + _block(node.finalbody, False))

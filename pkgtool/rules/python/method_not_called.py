@@ -6,7 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import enclosing, nodes_of_class
+from pkgtool.model.ast_nodes import TRIES, nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import ACTION_CLIENTS, bases_are_nodes
@@ -99,14 +99,18 @@ def _uncalled(node: ast.expr, index: Index) -> bool:
 
 def _named_alone(node: ast.Attribute, index: Index) -> bool:
     """True for a statement that only names one of :data:`STATEMENT_METHODS` (or a
-    ``destroy_*`` method), outside ``try`` and ``with`` blocks (a test expecting the
-    AttributeError)."""
+    ``destroy_*`` method), outside the body and handlers of a ``try`` and a ``with`` block (a
+    test expecting the AttributeError); in a ``finally`` or ``else`` block it counts."""
     parent = index.parents.get(id(node))
     if not isinstance(parent, ast.Expr) or not (
             node.attr in STATEMENT_METHODS or node.attr.startswith("destroy_")):
         return False
-    around = enclosing(parent, index.parents, (ast.Try, ast.With, *FUNCTIONS))
-    return not isinstance(around, (ast.Try, ast.With))
+    child, around = parent, index.parents.get(id(parent))
+    while around is not None and not isinstance(around, (*TRIES, ast.With, *FUNCTIONS)):
+        child, around = around, index.parents.get(id(around))
+    if isinstance(around, TRIES):
+        return not any(part is child for part in (*around.body, *around.handlers))
+    return not isinstance(around, ast.With)
 
 
 def _uncalled_methods(package: Package, tree: ast.Module, index: Index
@@ -166,7 +170,8 @@ def method_not_called(package: Package) -> Iterator[Hit]:
     reports a statement that
     only names a method code calls for what it does (`self.timer.cancel`, `node.destroy_node`,
     `rclpy.shutdown`, `rate.sleep`, `publisher.publish`: see the list in the source), on any
-    object, outside `try` and `with` blocks.
+    object, outside `with` blocks and the body and handlers of a `try` (in its `finally`
+    block too).
 
     ## Why is this bad?
     Without `()` the code has the bound method, not its result: `future.result.sum` raises
