@@ -1,6 +1,6 @@
 """Fixers of launch files: node arguments ROS 2's launch rejects (renamed keywords and
-attributes, parameters not in a list), launch actions given arguments they reject, and a
-misspelt executable."""
+attributes, parameters not in a list), launch actions given arguments they reject, a
+misspelt executable, and a node started without its package."""
 
 from __future__ import annotations
 
@@ -82,14 +82,7 @@ def _node_fix(doc: PyDoc, call: ast.Call, finding: Finding) -> Fix | None:
 
 def xml_node_attributes(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Rename the attributes of XML node tags that ROS 2 calls otherwise."""
-    for path in sorted({f.span.path for f in findings}):
-        try:
-            source = read_source(package.root, path)
-        except EditError:
-            continue
-        root = scan(source.text) if source is not None else None
-        if source is None or root is None:
-            continue
+    for path, source, root in _xml_files(package, findings):
         tags = [e for e in _descendants(root) if e.local in FRONTEND_TAGS]
         written: set[tuple[int, str]] = set()  # two old names of one new one: the first
         for finding in (f for f in findings if f.span.path == path):
@@ -100,6 +93,19 @@ def xml_node_attributes(package: Package, findings: list[Finding]) -> Iterator[F
                 if fix is not None and (tag.start, fix.edits[0].replacement) not in written:
                     written.add((tag.start, fix.edits[0].replacement))
                     yield fix
+
+
+def _xml_files(package: Package, findings: list[Finding]
+               ) -> Iterator[tuple[str, Source, Element]]:
+    """Each file of ``findings`` that reads and scans as markup, with its root element."""
+    for path in sorted({f.span.path for f in findings}):
+        try:
+            source = read_source(package.root, path)
+        except EditError:
+            continue
+        root = scan(source.text) if source is not None else None
+        if source is not None and root is not None:
+            yield path, source, root
 
 
 def _attribute_fix(source: Source, tag: Element, message: str) -> Fix | None:
@@ -192,3 +198,33 @@ def executable(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     that is spelled like it (``talkr`` to ``talker``). Unsafe: it guesses which executable
     was meant; launching stopped with "executable not found" before."""
     yield from renames(package, findings, re.compile(r"^`([^`]+)` is not an executable"))
+
+
+@fixer("LCH013", "Name the package of the executable a node starts")
+def node_package(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Python node actions: insert ``package='<this package>'`` before the ``executable=``
+    that LCH013 reports (``Node(executable='talker')`` becomes ``Node(package='demo',
+    executable='talker')``); in XML, add ``pkg="<this package>"`` to the ``<node>`` tag.
+    Safe: launch could not find the executable before. YAML launch files need the user."""
+    yield from _xml_node_packages(package, [f for f in findings if f.span.path.endswith(".xml")])
+    for doc, _, nodes in python_nodes(package, findings):
+        owners = _owners(doc)
+        keyword = next((k for c in owners.values() for k in c.keywords
+                        if k.arg == "executable" and k.value in nodes), None)
+        if keyword is not None and doc.text.startswith("executable", doc.start(keyword)):
+            text = f"package={doc.string(package.name)}, "
+            yield Fix(f"Add `{text[:-2]}`", (Edit(doc.source.path, doc.start(keyword),
+                                                  doc.start(keyword), text),))
+
+
+def _xml_node_packages(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Add ``pkg=`` to each ``<node>`` tag without one that starts on a finding's line."""
+    for path, source, root in _xml_files(package, findings):
+        lines = {source.line_starts[f.span.line - 1] for f in findings if f.span.path == path}
+        for tag in _descendants(root):
+            name_end = tag.start + 1 + len(tag.tag)
+            if tag.local == "node" and "pkg" not in tag.attributes and \
+                    source.line_start(tag.start) in lines and \
+                    source.text[tag.start + 1:name_end] == tag.tag:
+                yield Fix(f'Add `pkg="{package.name}"`',
+                          (Edit(source.path, name_end, name_end, f' pkg="{package.name}"'),))

@@ -1,13 +1,15 @@
 """Fixers of Python code: a standard module never imported, a called callback, a misspelt
 logger method, an int for a float field, rclpy's Time for a message, a ``Parameter`` for its
 value, a path missing its ``/``, a method used without ``()``, ``=+`` for ``+=``, a lone
-comparison."""
+comparison, a string without its ``f`` prefix."""
 
 from __future__ import annotations
 
 import ast
 import importlib
+import io
 import re
+import tokenize
 from collections.abc import Iterator
 
 from pkgtool.edit.core import Edit, Fix
@@ -222,3 +224,31 @@ def parameter_read(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     raised ParameterNotDeclaredException before."""
     yield from renames(package, findings, re.compile(r"reads parameter `([^`]+)` but never"),
                        _WRITE_NAME)
+
+
+@fixer("PYC058", "Add the `f` prefix the string's fields need", safe=False)
+def f_prefix(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Put ``f`` before the string PYC058 reports (``'Count: {count}'`` becomes
+    ``f'Count: {count}'``; ``r'...'`` becomes ``fr'...'``), when it is one literal, not
+    several joined. Unsafe: the fields are evaluated now, and one may raise where the line
+    logged its text before."""
+    for doc, _, nodes in python_nodes(package, findings):
+        literal = next((n for n in nodes if isinstance(n, ast.Constant) and
+                        isinstance(n.value, str)), None)
+        text = doc.segment(literal) if literal is not None else ""
+        opening = _OPENING.match(text)
+        if literal is None or opening is None or opening.group(0)[:-len(opening.group(1))] \
+                not in ("", "r", "R") or not _one_literal(text):
+            continue
+        shown = f"Write `f{text}`" if len(text) <= 40 else "Add the `f` prefix"
+        yield Fix(shown, (_insert(doc, doc.start(literal), "f"),), safe=False)
+
+
+def _one_literal(text: str) -> bool:
+    """True when ``text`` is a single string literal token (not ``'a' 'b'`` joined)."""
+    try:
+        tokens = [t for t in tokenize.generate_tokens(io.StringIO(text).readline)
+                  if t.type not in (tokenize.NEWLINE, tokenize.NL, tokenize.ENDMARKER)]
+    except (tokenize.TokenError, SyntaxError):
+        return False
+    return len(tokens) == 1 and tokens[0].type == tokenize.STRING

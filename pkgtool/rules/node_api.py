@@ -48,10 +48,11 @@ CALLBACKS: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {
 """rclpy methods (Jazzy) taking callables: their leading positional parameters, in order, and
 which of them (or of their keyword-only parameters) are callbacks."""
 INITS = frozenset({"rclpy.init", "rclpy.utilities.init"})
+"""rclpy's init function, by the names it is imported through."""
 SHUTDOWNS = frozenset({"rclpy.shutdown", "rclpy.utilities.shutdown"})
 """``rclpy.shutdown`` by the names a module imports it through (it raises once shut down)."""
 TRY_SHUTDOWNS = frozenset({"rclpy.try_shutdown", "rclpy.utilities.try_shutdown"})
-"""rclpy's init function, by the names it is imported through."""
+"""``rclpy.try_shutdown``, by the names it is imported through."""
 SPINS = {"rclpy.spin": ("node",), "rclpy.spin_once": ("node",),
          "rclpy.spin_until_future_complete": ("node", "future")}
 """rclpy's spin functions (Jazzy) and their required parameters, in order."""

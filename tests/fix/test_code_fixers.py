@@ -1,6 +1,6 @@
-"""The PYC001, PYC016, PYC025, PYC031, PYC032, PYC046, LCH005, LCH010, SET006 and ENT002 fixers:
-exactly the fix is written (comments and layout stay), a second run changes nothing, a
-refusal writes nothing."""
+"""The PYC001, PYC016, PYC025, PYC031, PYC032, PYC046, PYC058, LCH005, LCH010, SET006 and
+ENT002 fixers: exactly the fix is written (comments and layout stay), a second run changes
+nothing, a refusal writes nothing."""
 
 from __future__ import annotations
 
@@ -196,3 +196,17 @@ def test_method_used_without_a_call_is_called_and_a_test_only_when_unsafe(
     assert [f.code for f in result.findings] == ["PYC046"]
     assert _fixed_once(root, "PYC046", NODE, unsafe=True) == safe.replace(
         "rclpy.ok:", "rclpy.ok():")
+
+
+def test_string_with_fields_gets_its_f_prefix_unless_joined(tmp_path: Path) -> None:
+    body = HEAD + ("        self.create_timer(1.0, self.tick)\n"
+                   "\n"
+                   "    def tick(self):\n"
+                   "        count = 3\n"
+                   "        self.get_logger().info('Count {count}')  # keep\n"
+                   "        self.get_logger().info(r'Path {count}\\n')\n"
+                   "        self.get_logger().info('Count ' '{count}')\n")
+    root = _with(tmp_path, NODE, body)
+    assert _read(root, NODE) == body and _fix(root, "PYC058").findings  # unsafe: not by default
+    fixed = _fixed_once(root, "PYC058", NODE, unsafe=True, allow_left=True)
+    assert fixed == body.replace("('Count {", "(f'Count {").replace("(r'Path", "(fr'Path")

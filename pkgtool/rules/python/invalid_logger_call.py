@@ -8,26 +8,22 @@ from collections.abc import Callable, Iterator
 from functools import cache
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import dead_lines
 from pkgtool.rules.node_api import node_subclasses, unpacks
 from pkgtool.rules.python._field_reads import field_reads
+from pkgtool.rules.python._loggers import (GETTERS, LEVELS, MESSAGE, logged_message,
+                                           logger_method_calls)
 from pkgtool.rules.python._message_instances import known_messages
 from pkgtool.rules.python._messages import message_instances
 from pkgtool.rules.python._value_types import NUMBER_TYPES, certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
-LEVELS = frozenset({"debug", "info", "warning", "warn", "error", "fatal"})
-"""The methods of rclpy's logger taking ``(message, **options)``."""
 OPTIONS = frozenset({"name", "throttle_duration_sec", "throttle_time_source_type",
                      "skip_first", "once"})
 """The keyword arguments rclpy's logger accepts (Jazzy)."""
-MESSAGE = "message"
-"""The name of the methods' one parameter, which a call may also pass by keyword."""
-GETTERS = frozenset({"rclpy.logging.get_logger"})
 ATTRIBUTES = LEVELS | {"log", "get_child", "set_level", "get_effective_level", "is_enabled_for",
                        "name", "contexts", "logger_sublogger_namepair"}
 """The attributes of rclpy's logger (``RcutilsLogger``) in Humble, Jazzy and Rolling."""
@@ -42,39 +38,6 @@ def python_logger() -> frozenset[str]:
 
     return frozenset(dir(logging.Logger)) | {"level", "parent", "propagate", "handlers",
                                              "disabled", "filters", "manager", "root"}
-
-
-def _is_logger_call(node: ast.AST, index: Index) -> bool:
-    """True for ``<x>.get_logger()`` or ``rclpy.logging.get_logger(...)``."""
-    return isinstance(node, ast.Call) and (
-        isinstance(node.func, ast.Attribute) and node.func.attr == "get_logger"
-        or index.qualified(node.func) in GETTERS)
-
-
-def _loggers(tree: ast.Module, index: Index) -> set[str]:
-    """Names and ``self.x`` attributes that every binding in the module (assignments, imports,
-    parameters) binds to a logger."""
-    assigned: dict[str, list[ast.AST]] = {name: [tree] for name in index.aliases}
-    for node in nodes_of_class(tree, ast.arg, ast.Assign, ast.AnnAssign, ast.AugAssign, ast.For):
-        if isinstance(node, ast.arg):  # a parameter may be any logger
-            assigned.setdefault(node.arg, []).append(node)
-        targets = node.targets if isinstance(node, ast.Assign) else \
-            [node.target] if isinstance(node, (ast.AnnAssign, ast.AugAssign, ast.For)) else []
-        value = getattr(node, "value", None) if isinstance(node, (ast.Assign, ast.AnnAssign)) \
-            else None
-        for target in targets:
-            key = _key(target)
-            if key is not None:
-                assigned.setdefault(key, []).append(value if value is not None else target)
-    return {key for key, values in assigned.items()
-            if all(_is_logger_call(value, index) for value in values)}
-
-
-def _key(node: ast.expr) -> str | None:
-    """``x`` for a name, ``.x`` for an attribute of any object (``self.logger``)."""
-    if isinstance(node, ast.Name):
-        return node.id
-    return f".{node.attr}" if isinstance(node, ast.Attribute) else None
 
 
 def _problem(call: ast.Call, typed: Callable[[ast.expr], str | None]) -> str | None:
@@ -93,7 +56,7 @@ def _problem(call: ast.Call, typed: Callable[[ast.expr], str | None]) -> str | N
     if unknown:
         return f"has no option `{unknown[0]}`: rclpy raises `TypeError` (its options are " \
                "`throttle_duration_sec`, `skip_first`, `once`)"
-    message = call.args[0] if call.args else by_keyword[0] if by_keyword else None
+    message = logged_message(call)
     if isinstance(message, ast.Constant) and not isinstance(message.value, str) or \
             isinstance(message, (ast.List, ast.Tuple, ast.Dict, ast.Set)):
         return "takes a string: rclpy raises `TypeError` for anything else; write " \
@@ -172,19 +135,11 @@ def invalid_logger_call(package: Package) -> Iterator[Hit]:
     for module, tree, index in installed_trees(package):
         if not any(i.top_level == "rclpy" for i in module.imports):
             continue
-        loggers: set[str] | None = None
         typed = _typer(package, tree, index)
         dead = dead_lines(tree)
-        for call in index.calls:
-            func = call.func
-            if not isinstance(func, ast.Attribute) or func.attr.startswith("__") or \
-                    any(first <= call.lineno <= last for first, last in dead):
+        for call, func in logger_method_calls(tree, index):
+            if any(first <= call.lineno <= last for first, last in dead):
                 continue
-            if not _is_logger_call(func.value, index):
-                if loggers is None:
-                    loggers = _loggers(tree, index)
-                if _key(func.value) not in loggers:
-                    continue
             problem = _problem(call, typed) if func.attr in LEVELS else \
                 _unknown_method(func, index) if func.attr not in ATTRIBUTES else None
             if problem:

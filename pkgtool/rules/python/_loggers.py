@@ -1,0 +1,73 @@
+"""rclpy loggers in a module: ``self.get_logger()``, ``rclpy.logging.get_logger(...)`` and the
+names and attributes only ever bound to one, and the calls of their methods."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.rules.syntax_trees import Index
+
+LEVELS = frozenset({"debug", "info", "warning", "warn", "error", "fatal"})
+"""The methods of rclpy's logger taking ``(message, **options)``."""
+MESSAGE = "message"
+"""The name of those methods' one parameter, which a call may also pass by keyword."""
+GETTERS = frozenset({"rclpy.logging.get_logger"})
+
+
+def is_logger_call(node: ast.AST, index: Index) -> bool:
+    """True for ``<x>.get_logger()`` or ``rclpy.logging.get_logger(...)``."""
+    return isinstance(node, ast.Call) and (
+        isinstance(node.func, ast.Attribute) and node.func.attr == "get_logger"
+        or index.qualified(node.func) in GETTERS)
+
+
+def _logger_names(tree: ast.Module, index: Index) -> set[str]:
+    """Names and ``self.x`` attributes that every binding in the module (assignments, imports,
+    parameters) binds to a logger."""
+    assigned: dict[str, list[ast.AST]] = {name: [tree] for name in index.aliases}
+    for node in nodes_of_class(tree, ast.arg, ast.Assign, ast.AnnAssign, ast.AugAssign, ast.For):
+        if isinstance(node, ast.arg):  # a parameter may be any logger
+            assigned.setdefault(node.arg, []).append(node)
+        targets = node.targets if isinstance(node, ast.Assign) else \
+            [node.target] if isinstance(node, (ast.AnnAssign, ast.AugAssign, ast.For)) else []
+        value = getattr(node, "value", None) if isinstance(node, (ast.Assign, ast.AnnAssign)) \
+            else None
+        for target in targets:
+            key = _key(target)
+            if key is not None:
+                assigned.setdefault(key, []).append(value if value is not None else target)
+    return {key for key, values in assigned.items()
+            if all(is_logger_call(value, index) for value in values)}
+
+
+def _key(node: ast.expr) -> str | None:
+    """``x`` for a name, ``.x`` for an attribute of any object (``self.logger``)."""
+    if isinstance(node, ast.Name):
+        return node.id
+    return f".{node.attr}" if isinstance(node, ast.Attribute) else None
+
+
+def logger_method_calls(tree: ast.Module, index: Index
+                        ) -> Iterator[tuple[ast.Call, ast.Attribute]]:
+    """Each call of a method of an rclpy logger in ``tree`` (``self.get_logger().info(...)``,
+    ``self.logger.err(...)``) with its ``func``; dunder methods left out."""
+    loggers: set[str] | None = None
+    for call in index.calls:
+        func = call.func
+        if not isinstance(func, ast.Attribute) or func.attr.startswith("__"):
+            continue
+        if not is_logger_call(func.value, index):
+            if loggers is None:
+                loggers = _logger_names(tree, index)
+            if _key(func.value) not in loggers:
+                continue
+        yield call, func
+
+
+def logged_message(call: ast.Call) -> ast.expr | None:
+    """The message a logging method call passes, by position or as ``message=``."""
+    if call.args:
+        return call.args[0]
+    return next((k.value for k in call.keywords if k.arg == MESSAGE), None)
