@@ -38,6 +38,10 @@ def _declare(package: Package, findings: list[Finding], found: Iterable[Need], t
         yield from _add(doc, tag, key)
 
 
+_NAMED = re.compile(r"`([^`]+)` is used by a launch file")
+"""The package an LCH002 finding names."""
+
+
 def _resolves(package: Package, name: str) -> bool:
     """True for a released package or rosdep key of the target distribution, or a workspace
     package: an unknown name may be misspelled or live elsewhere, and declaring it would only
@@ -102,18 +106,20 @@ def launch_import(package: Package, findings: list[Finding]) -> Iterator[Fix | R
 def launch_package(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
     """Declare each ROS package a launch file starts or includes (the name is its key).
 
-    Only names that resolve, as for every key these fixers add (see :func:`_resolves`).
+    Only the package each finding names (an XML tag may use several, its own among them), and
+    only names that resolve, as for every key these fixers add (see :func:`_resolves`).
     """
     doc = manifest_doc(package)
     if doc is None:
         return
-    wanted = {_at(f.span) for f in findings}
+    wanted = {(_at(f.span), named.group(1)) for f in findings
+              if (named := _NAMED.match(f.message)) is not None}
     names = []
     for launch in package.launch_files:
         used = [(n.package, n.package_span or n.span) for n in launch.nodes if n.package] + [
             (p.package, p.span) for p in launch.packages]
-        names += [name for name, span in used
-                  if _at(span) in wanted and name not in names and _resolves(package, name)]
+        names += [name for name, span in used if (_at(span), name) in wanted and
+                  name not in names and name != package.name and _resolves(package, name)]
     for name in names:
         yield from _add(doc, "exec_depend", name)
 

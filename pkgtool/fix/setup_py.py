@@ -16,6 +16,7 @@ from pkgtool.fix.registry import Refusal, fixer
 from pkgtool.model.package import Package
 from pkgtool.rules.data_files.common import is_folder
 from pkgtool.rules.entry_points.misspelled_script_group import misspelt
+from pkgtool.rules.manifest.template_placeholder import PLACEHOLDER_DOMAIN, is_placeholder
 from pkgtool.rules.setup.tests_require import TEST_EXTRAS
 
 ENTRY_POINTS = "options.entry_points"
@@ -23,9 +24,15 @@ ENTRY_POINTS = "options.entry_points"
 
 def _from_manifest(package: Package, keyword: str, wanted: str | None
                    ) -> Iterator[Fix | Refusal]:
-    """Write package.xml's ``wanted`` over the string literal setup() takes ``keyword`` from."""
+    """Write package.xml's ``wanted`` over the string literal setup() takes ``keyword`` from;
+    refused when ``wanted`` is a template's placeholder (``TODO: License declaration``): then
+    setup.py holds the real value, and MAN017's fixer writes it into package.xml."""
     doc = setup_doc(package)
     if doc is None or wanted is None:
+        return
+    if is_placeholder(wanted) or wanted.lower().endswith(PLACEHOLDER_DOMAIN):
+        yield Refusal(f"package.xml's {keyword} `{wanted}` is a placeholder (MAN017): write "
+                      f"the real one into package.xml, not the placeholder into setup.py")
         return
 
     def build() -> list[Edit]:

@@ -80,9 +80,20 @@ def names_module(key: str, module: str) -> bool:
     return bare.replace("-", "_") == module.lower()
 
 
+def _same_module(package: Package, key: str, close: str) -> bool:
+    """False when ``key`` is written for a module the package's code imports and ``close`` is
+    not (``python3-pcl`` for ``import pcl`` is no misspelt ``python3-pil``: a key of its own
+    that rosdep lacks); ``cv-bridge`` and ``cv_bridge`` both name ``cv_bridge``."""
+    return not any(names_module(key, imported.top_level) and
+                   not names_module(close, imported.top_level)
+                   for module in package.modules for imported in module.imports)
+
+
 @per_package
 def unknown_dependencies(package: Package) -> list[Unknown]:
-    """Dependencies of ``package`` that nothing provides for its target distribution."""
+    """Dependencies of ``package`` that nothing provides for its target distribution, each
+    with the known name it is spelled like (none when the key is written for an imported
+    module that name does not provide)."""
     distro = package.context.distro
     stdlib = rosdistro.stdlib_modules(distro)
     found = []
@@ -93,5 +104,6 @@ def unknown_dependencies(package: Package) -> list[Unknown]:
             continue
         elsewhere = tuple(d for d in DISTROS if rosdistro.is_released_package(name, d))
         close = [] if elsewhere else rosdistro.close_names(name, distro, extra=neighbours(package))
-        found.append(Unknown(dependency, close[0] if close else None, elsewhere))
+        meant = close[0] if close and _same_module(package, name, close[0]) else None
+        found.append(Unknown(dependency, meant, elsewhere))
     return found

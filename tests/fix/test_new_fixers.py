@@ -216,3 +216,27 @@ def test_uninstalled_launch_folder_gets_a_glob(tmp_path: Path) -> None:
     original = _read(_package(tmp_path / "original"), "setup.py")
     root = _package(tmp_path, setup_dot_py=(launch, ""))
     assert _fixed_once(root, "DAT005", "setup.py") == original
+
+
+def test_a_placeholder_license_is_never_written_into_setup_py(tmp_path: Path) -> None:
+    root = _package(tmp_path, package_dot_xml=("<license>Apache-2.0</license>",
+                                               "<license>TODO: License declaration</license>"))
+    before = _read(root, "setup.py")
+    result = _fix(root, "SET005")
+    assert _read(root, "setup.py") == before
+    assert any("is a placeholder (MAN017)" in note for note in result.notes), result.notes
+    options = LintOptions(isolated=True, fix=True, select=("SET005", "MAN017"))
+    run([str(root)], options=options)  # package.xml takes setup.py's license instead
+    assert "<license>Apache-2.0</license>" in _read(root, "package.xml")
+    assert _read(root, "setup.py") == before
+
+
+def test_launch_package_fix_adds_the_package_named_never_the_package_itself(
+        tmp_path: Path) -> None:
+    root = _package(tmp_path)
+    (root / "launch" / "tf.launch.xml").write_text(
+        '<launch>\n  <node pkg="tf2_ros" exec="static_transform_publisher"\n'
+        '        args="$(find-pkg-share pkg)/x 0 0 0 0 0 0 map odom"/>\n</launch>\n')
+    fixed = _fixed_once(root, "LCH002", "package.xml")
+    assert "<exec_depend>tf2_ros</exec_depend>" in fixed
+    assert "<exec_depend>pkg</exec_depend>" not in fixed

@@ -12,7 +12,7 @@ from pkgtool.rules.registry import rule
 
 _TODO = re.compile(r"TODO(?::|$)")
 """``TODO: Package description`` (ros2 pkg create) and a bare ``TODO`` (catkin_create_pkg)."""
-_PLACEHOLDER_DOMAIN = "@todo.todo"
+PLACEHOLDER_DOMAIN = "@todo.todo"
 """``ros2 pkg create`` writes ``<user>@todo.todo`` when git has no ``user.email``."""
 _FIXES = {"description": "Describe in one sentence what the package does",
           "license": "Name the license with its SPDX identifier, e.g. `Apache-2.0`"}
@@ -56,7 +56,7 @@ def template_placeholder(package: Package) -> Iterator[Hit]:
                       _FIXES[element.tag])
     for element in found.named("maintainer", "author"):
         email = (element.attribute("email") or "").strip()
-        if email.lower().endswith(_PLACEHOLDER_DOMAIN):
+        if email.lower().endswith(PLACEHOLDER_DOMAIN):
             yield Hit(element.span, f"{element.tag.capitalize()} `{element.text}` has the "
                       f"placeholder email `{email}`",
                       "Write your real name and email address")
