@@ -12,8 +12,10 @@ from pkgtool.fix.registry import Refusal, fixers
 from pkgtool.model.package import Package
 from pkgtool.records import record
 
-ROUNDS = 8
-"""Fixes deferred for overlapping an earlier one get this many more passes."""
+ROUNDS = 50
+"""Fixes deferred for overlapping an earlier one get this many more passes (ruff allows 100):
+additions to one list of package.xml overlap, so a package missing a dozen dependencies takes
+a round for each; the loop stops as soon as a round changes nothing."""
 
 Check = Callable[[Path], tuple[Package, list[Finding]]]
 
