@@ -49,12 +49,15 @@ class NodeRef:
     still runs when the file does. ``remappings_not_pairs`` is where a Python ``remappings=``
     certainly is no list of pairs (:mod:`pkgtool.model.launch_remaps`), None otherwise.
     ``inline_parameters`` are the names a Python ``parameters=[{...}]`` dict display sets
-    with literal keys (nested dicts give dotted names), or an XML node's ``<param name=
-    value=>`` children, each where its key is written, with the source of its value when
-    that is a literal (``1.0``, ``'fast'``; for XML, the value launch makes of the text),
-    else None. ``output`` is the static ``output=`` (``'screen'``), when given; ``not_text``
-    is where a Python ``arguments=``, ``ros_arguments=`` or ``remappings=`` display holds a
-    number or bool literal (launch takes text and substitutions only), with the keyword.
+    with literal keys (nested dicts give dotted names) and its literal ``-p name:=value``
+    arguments, or an XML node's ``<param name= value=>`` children, each where its key is
+    written, with the source of its value when that is a literal (``1.0``, ``'fast'``; for
+    XML, the value launch makes of the text; for ``-p``, the value rcl reads), else None.
+    ``output`` is the static ``output=`` (``'screen'``), when given; ``not_text`` is where a
+    Python ``arguments=``, ``ros_arguments=`` or ``remappings=`` display holds a number or
+    bool literal (launch takes text and substitutions only), with the keyword. ``remapped``
+    are the names a Python ``remappings=[(from, to), ...]`` display remaps, when written as
+    literals, each where it is written.
     """
 
     package: str | None
@@ -77,6 +80,7 @@ class NodeRef:
     inline_parameters: tuple[tuple[str, Span, str | None], ...] = ()
     output: str | None = None
     not_text: tuple[Span, str] | None = None
+    remapped: tuple[tuple[str, Span], ...] = ()
 
     @property
     def composable(self) -> bool:

@@ -9,6 +9,7 @@ unknown, and unknown values are never reported.
 from __future__ import annotations
 
 import ast
+import math
 from collections.abc import Callable, Iterator
 from typing import Any
 
@@ -294,8 +295,10 @@ class _Reader(ast.NodeVisitor):
                 parameters_not_list=self._span(parameters) if self._not_a_list(parameters)
                 else None, unused=bool(self.dead),
                 remappings_not_pairs=remaps and self._span(remaps),
-                inline_parameters=tuple(self._inline_parameters(parameters)),
-                output=output if isinstance(output, str) else None, not_text=not_text))
+                inline_parameters=(*self._inline_parameters(parameters),
+                                   *self._argument_parameters(node)),
+                output=output if isinstance(output, str) else None, not_text=not_text,
+                remapped=tuple(self._remapped(_keyword(node, "remappings")))))
         elif name == "ExecuteProcess":
             self._ros2_run(node)
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
@@ -339,6 +342,34 @@ class _Reader(ast.NodeVisitor):
                         yield from self._inline_parameters(value, f"{prefix}{key.value}.")
                     else:
                         yield f"{prefix}{key.value}", self._span(key), _literal(value)
+
+    def _remapped(self, node: ast.expr | None) -> Iterator[tuple[str, Span]]:
+        """The literal names a ``remappings=[(from, to), ...]`` display remaps, where each is
+        written."""
+        given = self._resolved(node)
+        for pair in given.elts if isinstance(given, (ast.List, ast.Tuple)) else ():
+            pair = self._resolved(pair)
+            if isinstance(pair, (ast.Tuple, ast.List)) and len(pair.elts) == 2 and \
+                    isinstance(pair.elts[0], ast.Constant) and isinstance(pair.elts[0].value, str):
+                yield pair.elts[0].value, self._span(pair.elts[0])
+
+    def _argument_parameters(self, node: ast.Call) -> Iterator[tuple[str, Span, str | None]]:
+        """The ``-p name:=value`` (``--param``) pairs written as literals in ``ros_arguments=``
+        and, after ``--ros-args`` (until ``--``), in ``arguments=``: each name, where its pair
+        is written, and the source of the value rcl reads from it. Pairs for one node of
+        several (``talker:period:=1.0``) are left out."""
+        for keyword in ("ros_arguments", "arguments"):
+            given = self._resolved(_keyword(node, keyword))
+            ros, flag = keyword == "ros_arguments", False
+            for item in given.elts if isinstance(given, (ast.List, ast.Tuple)) else ():
+                text = item.value if isinstance(item, ast.Constant) and \
+                    isinstance(item.value, str) else None
+                name, sep, value = (text or "").partition(":=")
+                if ros and flag and sep and name and ":" not in name:
+                    yield name, self._span(item), ros_argument_value(value)
+                if keyword == "arguments" and text in ("--ros-args", "--"):
+                    ros = text == "--ros-args"
+                flag = ros and text in ("-p", "--param")
 
     def _not_a_list(self, node: ast.expr | None) -> bool:
         """True when ``node`` is certainly no list: a tuple, dict or set display, a string or
@@ -405,6 +436,23 @@ class _Reader(ast.NodeVisitor):
         found = self.value(node)
         if isinstance(found, Share) and found.share and found.parts:
             self.files.append(FileRef(found.package, found.parts, self._span(_last_part(node))))
+
+
+def ros_argument_value(text: str) -> str | None:
+    """The source of the value rcl makes of the ``value`` of a ``-p name:=value`` argument,
+    which it reads as YAML (``1`` an int, ``1.0`` a float, ``true`` a bool, ``[1, 2]`` a
+    list, ``fast`` a string); None when that is no scalar or list of scalars."""
+    import yaml
+
+    try:
+        value = yaml.safe_load(text)
+    except yaml.YAMLError:
+        return None
+    scalars = (bool, int, float, str)
+    if isinstance(value, scalars) or isinstance(value, list) and value and \
+            all(isinstance(v, scalars) for v in value):
+        return None if isinstance(value, float) and not math.isfinite(value) else repr(value)
+    return None
 
 
 def _literal(node: ast.expr) -> str | None:

@@ -58,6 +58,7 @@ RULES = {
     "LCH011": ("substitution-added-to-text", "error", True, "launch.substitution_added_to_text"),
     "LCH012": ("relative-package-path", "error", True, "launch.relative_package_path"),
     "LCH013": ("launch-node-without-package", "error", True, "launch.node_without_package"),
+    "LCH014": ("remapped-unused-name", "warning", True, "launch.remapped_unused_name"),
     "MAN001": ("invalid-package-name", "error", True, "manifest.invalid_package_name"),
     "MAN002": ("invalid-version", "error", True, "manifest.invalid_version"),
     "MAN003": ("missing-required-element", "error", True, "manifest.missing_required_element"),

@@ -27,7 +27,9 @@ def unknown_parameter_in_file(package: Package) -> Iterator[Hit]:
     when the class derives from another class besides `Node`, or hands `self` to other code.
     `use_sim_time` and `qos_overrides.*` are never reported. The parameters a Python launch
     file gives a node of this package as a dict (`parameters=[{'period': 1.0}]`, literal
-    keys) are checked the same way against the class its executable runs.
+    keys) or as `-p name:=value` arguments (`ros_arguments=['-p', 'period:=1.0']`, or in
+    `arguments=` after `--ros-args`) are checked the same way against the class its
+    executable runs.
 
     ## Why is this bad?
     rclpy ignores values of undeclared parameters: a misspelled name leaves the node on its

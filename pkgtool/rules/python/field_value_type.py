@@ -46,7 +46,7 @@ def _not_a_message(kind: str, value: ast.expr, given: str | None, index: Index) 
     ``kind``; None when it may be one."""
     if not MESSAGE_TYPE.fullmatch(kind):
         return None
-    if given in ("int", "float", "bool", "str"):
+    if given in ("int", "float", "bool", "str", "list", "tuple", "dict", "set"):
         return given
     call = value if isinstance(value, ast.Call) else None
     clock = call is not None and isinstance(call.func, ast.Attribute) and \

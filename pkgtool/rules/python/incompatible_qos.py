@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.python._endpoints import Endpoint, by_topic
+from pkgtool.rules.endpoints import Endpoint, by_topic
 from pkgtool.rules.registry import rule
 
 _ASKS_MORE = {("BEST_EFFORT", "RELIABLE"): "reliability",

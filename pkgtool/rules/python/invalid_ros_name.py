@@ -8,9 +8,9 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.rules.endpoints import endpoints
 from pkgtool.rules.node_api import (PARAMETERS, argument, name_argument,
                                     node_api_calls, node_constructions)
-from pkgtool.rules.python._endpoints import endpoints
 from pkgtool.rules.registry import rule
 from pkgtool.rules.ros_name_checks import node_name_problem, topic_name_problem
 from pkgtool.rules.syntax_trees import installed_trees

@@ -8,7 +8,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.model.package import Package
-from pkgtool.rules.python._endpoints import endpoints
+from pkgtool.rules.endpoints import endpoints
 from pkgtool.rules.registry import rule
 
 

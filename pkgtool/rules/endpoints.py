@@ -1,4 +1,4 @@
-"""What PYC021 and PYC022 share: the publishers and subscriptions of a package's installed
+"""What PYC021, PYC022 and LCH014 share: the publishers and subscriptions of a package's installed
 modules whose topic name is certain, with their message type and QoS when known.
 
 A topic name is certain when it is a string literal, a name bound once in its function (or
