@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import os
+import shutil
 import textwrap
 import time
 from pathlib import Path
@@ -33,6 +34,25 @@ MINIMAL_MANIFEST = """<?xml version="1.0"?>
   </export>
 </package>
 """
+
+
+PROJECT = Path(__file__).resolve().parents[1]
+PROJECT_SOURCES = ("pyproject.toml", "setup.py", "MANIFEST.in", "README.md", "pkgtool",
+                   "templates", "reference_packages")
+"""What building pkgtool's distribution reads from the checkout."""
+
+
+def copy_project_sources(into: Path) -> Path:
+    """Copy what building pkgtool reads into ``into`` (no caches, no egg-info): a build from
+    there never writes into the checkout."""
+    into.mkdir(parents=True, exist_ok=True)
+    for name in PROJECT_SOURCES:
+        if (PROJECT / name).is_dir():
+            shutil.copytree(PROJECT / name, into / name,
+                            ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
+        else:
+            shutil.copy2(PROJECT / name, into / name)
+    return into
 
 
 def write_tree(root: Path, files: dict[str, str | bytes]) -> Path:

@@ -9,7 +9,6 @@ packaged templates can be found.
 
 from __future__ import annotations
 
-import shutil
 import subprocess
 import sys
 import sysconfig
@@ -19,13 +18,11 @@ from pathlib import Path
 import pytest
 
 from tests.create.conftest import ALL_KINDS
+from tests.helpers import copy_project_sources
 
 pytestmark = pytest.mark.slow
-ROOT = Path(__file__).resolve().parents[2]
 UV = str(Path(sys.executable).parent / "uv")  # the project's installer (scripts/bootstrap.sh)
 DIST = "pkgtool_ros"  # the distribution `pkgtool-ros`, normalised as in file names
-SOURCES = ("pyproject.toml", "setup.py", "MANIFEST.in", "README.md", "pkgtool", "templates",
-           "reference_packages")
 
 
 def _run(*args: str, cwd: Path) -> str:
@@ -36,14 +33,7 @@ def _run(*args: str, cwd: Path) -> str:
 
 
 def test_the_built_wheel_carries_the_templates_and_create_uses_them(tmp_path: Path) -> None:
-    source = tmp_path / "src"
-    source.mkdir()
-    for name in SOURCES:
-        if (ROOT / name).is_dir():
-            shutil.copytree(ROOT / name, source / name,
-                            ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
-        else:
-            shutil.copy2(ROOT / name, source / name)
+    source = copy_project_sources(tmp_path / "src")
     _run(sys.executable, "-m", "build", "--installer", "uv", "-o", str(tmp_path / "dist"),
          str(source), cwd=tmp_path)
     assert len(list((tmp_path / "dist").glob(f"{DIST}-*.tar.gz"))) == 1

@@ -16,11 +16,11 @@ from pathlib import Path
 
 import pytest
 
+from tests.helpers import copy_project_sources
+
 pytestmark = pytest.mark.slow
 ROOT = Path(__file__).resolve().parents[2]
 UV = str(Path(sys.executable).parent / "uv")  # the project's installer (scripts/bootstrap.sh)
-SOURCES = ("pyproject.toml", "setup.py", "MANIFEST.in", "README.md", "pkgtool", "templates",
-           "reference_packages")
 OLDEST = "3.10"
 
 
@@ -47,14 +47,7 @@ def test_lint_on_python_3_10_reports_what_it_reports_here(tmp_path: Path) -> Non
     python = _oldest_python()
     if python is None:
         pytest.skip(f"no Python {OLDEST} on this machine")
-    source = tmp_path / "src"
-    source.mkdir()
-    for name in SOURCES:
-        if (ROOT / name).is_dir():
-            shutil.copytree(ROOT / name, source / name,
-                            ignore=shutil.ignore_patterns("__pycache__", "*.egg-info"))
-        else:
-            shutil.copy2(ROOT / name, source / name)
+    source = copy_project_sources(tmp_path / "src")
     venv = tmp_path / "venv"
     _run(UV, "venv", "-q", "--python", python, str(venv), cwd=tmp_path)
     _run(UV, "pip", "install", "-q", "--python", str(venv / "bin" / "python"), str(source),
