@@ -9,18 +9,10 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._own_callees import own_definition
+from pkgtool.rules.pytest_fixtures import is_fixture
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, index_of, python_files
+from pkgtool.rules.syntax_trees import index_of, python_files
 from pkgtool.rules.test_modules import test_files
-
-_FIXTURE = frozenset({"pytest.fixture"})
-
-
-def _is_fixture(function: ast.AST, index: Index) -> bool:
-    """True for a function decorated with ``pytest.fixture`` (with or without arguments)."""
-    return isinstance(function, ast.FunctionDef) and any(
-        index.qualified(d.func if isinstance(d, ast.Call) else d) in _FIXTURE
-        for d in function.decorator_list if isinstance(d, (ast.Name, ast.Attribute, ast.Call)))
 
 
 @rule("PYC055", "fixture-called", Severity.ERROR,
@@ -63,7 +55,7 @@ def fixture_called(package: Package) -> Iterator[Hit]:
         for call in index.calls:
             function = own_definition(call, index, tree) if isinstance(call.func, ast.Name) \
                 else None
-            if function is not None and _is_fixture(function, index):
+            if function is not None and is_fixture(function, index):
                 name = call.func.id  # type: ignore[attr-defined]
                 yield Hit(Span(path, call.lineno, call.col_offset + 1),
                           f"`{name}()` calls the pytest fixture `{name}` directly: pytest "

@@ -13,6 +13,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.pytest_config import PytestConfig, pytest_config
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
+from pkgtool.rules.pytest_fixtures import package_fixtures
 from pkgtool.rules.registry import rule
 from pkgtool.rules.test_modules import first_test, matches, why_not_collected
 
@@ -54,9 +55,11 @@ def uncollected_test(package: Package) -> Iterator[Hit]:
     it): test data that the other test runs itself (pytester, launch_testing). In the files
     pytest does collect, also reports a test class defining `__init__` (pytest skips it with a
     mere warning; not a `unittest.TestCase`, which pytest runs anyway) and a top-level
-    function named like a test that pytest does not collect (`talker_test`, `Test_talker`)
-    that asserts, has no decorator, and that neither its file nor another file of the package
-    names (a helper other tests import).
+    function that pytest does not collect although it is written as a test, named like one
+    (`talker_test`, `Test_talker`) or taking only fixtures (`def talker_publishes(ros):`, with
+    `ros` a fixture of a conftest.py, or pytest's own `tmp_path`), that asserts, has no
+    decorator, and that neither its file nor another file of the package names (a helper
+    other tests import).
 
     ## Why is this bad?
     The tests never run, and `colcon test` reports success: the checks they were written
@@ -110,6 +113,20 @@ def _misnamed(name: str, functions: tuple[str, ...]) -> bool:
         name.endswith("_test") or name.lower().startswith("test"))
 
 
+def _without_test(name: str, functions: tuple[str, ...]) -> str:
+    """``name`` without the misplaced ``test`` of a misnamed test (``talker_test``)."""
+    return name.lower().replace("test", "").strip("_") if _misnamed(name, functions) else name
+
+
+def _takes_fixtures(package: Package, function: ast.FunctionDef) -> bool:
+    """True for a function whose parameters (one at least) are all fixtures the package's
+    tests may take: written to be run by pytest (``talker_publishes(ros)``)."""
+    arguments = function.args
+    names = [a.arg for a in (*arguments.posonlyargs, *arguments.args, *arguments.kwonlyargs)]
+    return bool(names) and arguments.vararg is None and arguments.kwarg is None and \
+        set(names) <= package_fixtures(package)
+
+
 def _uncollected_parts(package: Package, path: str, tree: ast.Module, config: PytestConfig
                        ) -> Iterator[Hit]:
     """In a file pytest collects: plain test classes it skips for their ``__init__``, and
@@ -128,11 +145,13 @@ def _uncollected_parts(package: Package, path: str, tree: ast.Module, config: Py
                       f"`{node.name}` defines `__init__`: pytest does not collect a test class "
                       "with a constructor (only a PytestCollectionWarning says so), its tests "
                       "never run", "Set up in `setup_method(self)` or a fixture, not `__init__`")
-        elif isinstance(node, ast.FunctionDef) and _misnamed(node.name, functions) and \
+        elif isinstance(node, ast.FunctionDef) and (
+                _misnamed(node.name, functions) or _takes_fixtures(package, node)) and \
+                not matches(node.name, functions) and \
                 not node.decorator_list and node.name not in used and _asserts(node) and \
                 not _named_elsewhere(package, path, node.name):
             shown = " or ".join(f"`{p}`" for p in functions)
             yield Hit(Span(path, node.lineno, node.col_offset + 1),
                       f"`{node.name}` asserts like a test, but its name does not match {shown} "
                       "(pytest's `python_functions`) and nothing calls it: it never runs",
-                      f"Name it `test_{node.name.lower().replace('test', '').strip('_')}`")
+                      f"Name it `test_{_without_test(node.name, functions)}`")
