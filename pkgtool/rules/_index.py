@@ -147,6 +147,7 @@ RULES = {
     "PYC058": ("missing-f-prefix", "warning", True, "python.missing_f_prefix"),
     "PYC059": ("node-never-spun", "error", True, "python.node_never_spun"),
     "PYC060": ("parameter-without-default", "warning", True, "python.parameter_without_default"),
+    "PYC061": ("main-called-at-import", "error", True, "python.main_called_at_import"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

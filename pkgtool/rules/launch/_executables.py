@@ -12,10 +12,11 @@ def executables(package: Package) -> frozenset[str] | None:
     """Names the package installs into ``lib/<package>``, or None when that cannot be known.
 
     Console scripts of setup.py and setup.cfg count, and so do files that data_files copies
-    into ``lib/<package>``. Anything dynamic (unevaluated keywords, ``scripts=``, a setup.cfg or
-    pyproject.toml that did not parse or may declare scripts) makes the answer unknown, and so
-    does a package colcon builds with CMake (another build type, or a CMakeLists.txt and none):
-    CMake installs the executables then.
+    into ``lib/<package>``. A malformed console script (ENT001's), anything dynamic
+    (unevaluated keywords, ``scripts=``, a setup.cfg or pyproject.toml that did not parse or
+    may declare scripts) makes the answer unknown, and so does a package colcon builds with
+    CMake (another build type, or a CMakeLists.txt and none): CMake installs the executables
+    then.
     """
     setup = package.setup_py
     if setup is None or "scripts" in setup.keywords or package.has_file("pyproject.toml"):
@@ -26,6 +27,8 @@ def executables(package: Package) -> frozenset[str] | None:
         return None
     if package.has_file("setup.cfg") and package.setup_cfg is None:
         return None
+    if not all(entry.valid for entry in setup.console_scripts):
+        return None  # setuptools refuses the whole list (ENT001): nothing is installed
     names = {entry.name for entry in setup.console_scripts}
     option = package.setup_cfg.get("options.entry_points", "console_scripts") \
         if package.setup_cfg else None
