@@ -16,7 +16,7 @@ from pkgtool.fix.registry import Refusal, fixer
 from pkgtool.model.package import Package
 from pkgtool.rules.data_files.common import is_folder
 from pkgtool.rules.entry_points.misspelled_script_group import misspelt
-from pkgtool.rules.manifest.template_placeholder import PLACEHOLDER_DOMAIN, is_placeholder
+from pkgtool.rules.manifest.template_placeholder import is_placeholder, is_placeholder_email
 from pkgtool.rules.setup.tests_require import TEST_EXTRAS
 
 ENTRY_POINTS = "options.entry_points"
@@ -30,7 +30,7 @@ def _from_manifest(package: Package, keyword: str, wanted: str | None
     doc = setup_doc(package)
     if doc is None or wanted is None:
         return
-    if is_placeholder(wanted) or wanted.lower().endswith(PLACEHOLDER_DOMAIN):
+    if is_placeholder(wanted) or is_placeholder_email(wanted):
         yield Refusal(f"package.xml's {keyword} `{wanted}` is a placeholder (MAN017): write "
                       f"the real one into package.xml, not the placeholder into setup.py")
         return

@@ -366,7 +366,7 @@ class _Reader(ast.NodeVisitor):
                     isinstance(item.value, str) else None
                 name, sep, value = (text or "").partition(":=")
                 if ros and flag and sep and name and ":" not in name:
-                    yield name, self._span(item), ros_argument_value(value)
+                    yield name, self._span(item), _ros_argument_value(value)
                 if keyword == "arguments" and text in ("--ros-args", "--"):
                     ros = text == "--ros-args"
                 flag = ros and text in ("-p", "--param")
@@ -438,7 +438,7 @@ class _Reader(ast.NodeVisitor):
             self.files.append(FileRef(found.package, found.parts, self._span(_last_part(node))))
 
 
-def ros_argument_value(text: str) -> str | None:
+def _ros_argument_value(text: str) -> str | None:
     """The source of the value rcl makes of the ``value`` of a ``-p name:=value`` argument,
     which it reads as YAML (``1`` an int, ``1.0`` a float, ``true`` a bool, ``[1, 2]`` a
     list, ``fast`` a string); None when that is no scalar or list of scalars."""

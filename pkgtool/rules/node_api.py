@@ -53,6 +53,8 @@ SHUTDOWNS = frozenset({"rclpy.shutdown", "rclpy.utilities.shutdown"})
 """``rclpy.shutdown`` by the names a module imports it through (it raises once shut down)."""
 TRY_SHUTDOWNS = frozenset({"rclpy.try_shutdown", "rclpy.utilities.try_shutdown"})
 """``rclpy.try_shutdown``, by the names it is imported through."""
+ADD_NODE = "add_node"
+"""The executor method taking the node (``Executor.add_node(node)``)."""
 SPINS = {"rclpy.spin": ("node",), "rclpy.spin_once": ("node",),
          "rclpy.spin_until_future_complete": ("node", "future")}
 """rclpy's spin functions (Jazzy) and their required parameters, in order."""

@@ -31,6 +31,12 @@ def text_of(value: Value | None) -> tuple[str, Span] | None:
     return value.value, value.span
 
 
+def script_folder(value: str) -> str:
+    """A setup.cfg script folder (``script_dir``, ``install_scripts``) as compared:
+    ``${base}`` written ``$base``, no trailing ``/``."""
+    return value.strip().replace("${base}", "$base").rstrip("/")
+
+
 def same_text(left: str, right: str) -> bool:
     """Equal ignoring case and runs of whitespace."""
     return " ".join(left.split()).casefold() == " ".join(right.split()).casefold()

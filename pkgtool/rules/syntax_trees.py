@@ -103,6 +103,15 @@ class Index:
             parent = self.parents.get(id(parent))
         return parent if isinstance(parent, FUNCTIONS) else None
 
+    def functions_around(self, node: ast.AST) -> list[ast.FunctionDef | ast.AsyncFunctionDef]:
+        """The functions around ``node``, innermost first, up to its class or the module."""
+        found = []
+        function = self.enclosing_function(node)
+        while function is not None:
+            found.append(function)
+            function = self.enclosing_function(function)
+        return found
+
 
 @per_tree
 def _function_names(index: Index) -> frozenset[str]:

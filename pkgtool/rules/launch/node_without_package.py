@@ -8,6 +8,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.launch._executables import executables
 from pkgtool.rules.registry import rule
+from pkgtool.rules.setup_values import script_folder
 
 PACKAGE_KEYS = {"Node": "package", "LifecycleNode": "package", "node": "pkg"}
 """The launch actions that start a ROS executable, each with the argument naming its package
@@ -20,8 +21,7 @@ _GIVEN = frozenset({"package", "pkg", "*", "**"})
 def _scripts_in_library(package: Package) -> bool:
     """True when setup.cfg installs console scripts into ``lib/<package>`` (off ``PATH``)."""
     option = package.setup_cfg.get("install", "install_scripts") if package.setup_cfg else None
-    value = option.value.strip().replace("${base}", "$base").rstrip("/") if option else ""
-    return value == f"$base/lib/{package.name}"
+    return option is not None and script_folder(option.value) == f"$base/lib/{package.name}"
 
 
 @rule("LCH013", "launch-node-without-package", Severity.ERROR,

@@ -7,6 +7,7 @@ from collections.abc import Iterator
 from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.memo import per_tree
 from pkgtool.model.package import Package
 from pkgtool.rules.endpoints import endpoints
@@ -15,15 +16,16 @@ from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import installed_trees
 
 
+def _bare(name: str) -> str:
+    """A topic name without its leading ``/`` or ``~/``."""
+    return name.lstrip("/").removeprefix("~/")
+
+
 @per_tree
 def _texts(tree: ast.Module) -> frozenset[str]:
-    """Every string literal of a module, with its leading ``/`` and ``~/`` left off."""
-    return frozenset(n.value.lstrip("/").removeprefix("~/") for n in ast.walk(tree)
+    """Every string literal of a module, :func:`_bare`."""
+    return frozenset(_bare(n.value) for n in nodes_of_class(tree, ast.Constant)
                      if isinstance(n, ast.Constant) and isinstance(n.value, str))
-
-
-def _bare(name: str) -> str:
-    return name.lstrip("/").removeprefix("~/")
 
 
 @rule("LCH014", "remapped-unused-name", Severity.WARNING,

@@ -12,7 +12,7 @@ from pkgtool.rules.registry import rule
 
 _TODO = re.compile(r"TODO(?::|$)")
 """``TODO: Package description`` (ros2 pkg create) and a bare ``TODO`` (catkin_create_pkg)."""
-PLACEHOLDER_DOMAIN = "@todo.todo"
+_PLACEHOLDER_DOMAIN = "@todo.todo"
 """``ros2 pkg create`` writes ``<user>@todo.todo`` when git has no ``user.email``."""
 _FIXES = {"description": "Describe in one sentence what the package does",
           "license": "Name the license with its SPDX identifier, e.g. `Apache-2.0`"}
@@ -56,10 +56,15 @@ def template_placeholder(package: Package) -> Iterator[Hit]:
                       _FIXES[element.tag])
     for element in found.named("maintainer", "author"):
         email = (element.attribute("email") or "").strip()
-        if email.lower().endswith(PLACEHOLDER_DOMAIN):
+        if is_placeholder_email(email):
             yield Hit(element.span, f"{element.tag.capitalize()} `{element.text}` has the "
                       f"placeholder email `{email}`",
                       "Write your real name and email address")
+
+
+def is_placeholder_email(email: str) -> bool:
+    """True for the email address ``ros2 pkg create`` writes when git has none."""
+    return email.lower().endswith(_PLACEHOLDER_DOMAIN)
 
 
 def is_placeholder(text: str) -> bool:

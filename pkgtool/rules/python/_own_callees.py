@@ -20,16 +20,6 @@ from pkgtool.rules.syntax_trees import FUNCTIONS, Index
 Function = ast.FunctionDef | ast.AsyncFunctionDef
 
 
-def _functions_around(node: ast.AST, index: Index) -> list[Function]:
-    """The functions around ``node``, innermost first (up to its class or the module)."""
-    found = []
-    function = index.enclosing_function(node)
-    while function is not None:
-        found.append(function)
-        function = index.enclosing_function(function)
-    return found
-
-
 @per_tree
 def _definitions(scope: ast.Module | ast.ClassDef) -> dict[str, list[ast.stmt]]:
     """The functions and classes the body of ``scope`` defines, by name."""
@@ -62,7 +52,7 @@ def own_method(call: ast.Call, index: Index) -> tuple[ast.FunctionDef, ast.Class
     with that class."""
     func = call.func
     cls = index.enclosing_class(call)
-    outer = _functions_around(call, index)[-1:] if cls is not None else []
+    outer = index.functions_around(call)[-1:] if cls is not None else []
     if not outer or not isinstance(func, ast.Attribute) or not isinstance(func.value, ast.Name) \
             or index.parents.get(id(outer[0])) is not cls or outer[0].decorator_list:
         return None
@@ -80,7 +70,7 @@ def own_definition(call: ast.Call, index: Index, tree: ast.Module,
     around the call rebinds it."""
     func = call.func
     if not isinstance(func, ast.Name) or any(
-            scope_bindings(f)[func.id] for f in _functions_around(call, index)):
+            scope_bindings(f)[func.id] for f in index.functions_around(call)):
         return None
     cls = index.enclosing_class(call)
     if cls is not None and scope_bindings(cls)[func.id]:

@@ -12,8 +12,9 @@ from pkgtool.rules.imports import entry_points_installed
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
-EXITS = frozenset({"sys.exit", "exit", "quit"})
-"""What a module may wrap its entry function's call in (``sys.exit(main())``)."""
+EXITS = frozenset({"sys.exit"})
+"""What a module may wrap its entry function's call in (``sys.exit(main())``), besides the
+builtins ``exit`` and ``quit``."""
 
 
 def _called(statement: ast.stmt, index: Index) -> ast.Call | None:

@@ -36,12 +36,8 @@ def _names(expression: ast.expr) -> list[str]:
 
 def _bound_around(node: ast.AST, tree: ast.Module, index: Index) -> set[str]:
     """The names bound where ``node`` is: in each function around it and in the module."""
-    found = set(scope_bindings(tree))
-    function = index.enclosing_function(node)
-    while function is not None:
-        found |= set(scope_bindings(function))
-        function = index.enclosing_function(function)
-    return found
+    around = [scope_bindings(function) for function in index.functions_around(node)]
+    return set(scope_bindings(tree)).union(*around)
 
 
 def _messages(tree: ast.Module, index: Index) -> Iterator[ast.Constant]:

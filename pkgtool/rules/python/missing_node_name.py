@@ -43,15 +43,8 @@ def _unnamed_constructions(tree: ast.Module, index: Index, name: str) -> Iterato
     for call in index.calls:
         if isinstance(call.func, ast.Name) and call.func.id == name and not call.args and \
                 all(k.arg not in (None, "node_name") for k in call.keywords) and \
-                not any(scope_bindings(f)[name] for f in _functions_around(call, index)):
+                not any(scope_bindings(f)[name] for f in index.functions_around(call)):
             yield call
-
-
-def _functions_around(node: ast.AST, index: Index) -> Iterator[ast.FunctionDef]:
-    function = index.enclosing_function(node)
-    while function is not None:
-        yield function  # type: ignore[misc]
-        function = index.enclosing_function(function)
 
 
 @rule("PYC009", "missing-node-name", Severity.ERROR,

@@ -9,7 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import nodes_of_class, subtree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_api import ACTION_SERVERS, INITS, node_subclasses
+from pkgtool.rules.node_api import ACTION_SERVERS, ADD_NODE, INITS, node_subclasses
 from pkgtool.rules.python._assignments import is_none
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
@@ -20,7 +20,6 @@ REGISTERS = {"create_timer": "a timer", "create_subscription": "a subscription",
 QUIET_METHODS = frozenset({"destroy_node", "get_logger", "get_name", "get_namespace",
                            "get_clock"})
 """Node methods a function may call on its node without running any of its callbacks."""
-ADD_NODE = "add_node"
 EXECUTOR_METHODS = frozenset({ADD_NODE, "remove_node", "shutdown", "get_nodes"})
 """Executor methods that run no callback."""
 

@@ -9,14 +9,12 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.memo import per_tree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_api import (ACTION_PARAMETERS, ACTIONS, NODE_CLASSES, SPINS,
+from pkgtool.rules.node_api import (ACTION_PARAMETERS, ACTIONS, ADD_NODE, NODE_CLASSES, SPINS,
                                     node_subclasses, unpacks)
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings, scope_walk
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
-ADD_NODE = "add_node"
-"""The executor method taking the node (``Executor.add_node(node)``)."""
 _RCLPY_NODES = NODE_CLASSES - {"rclpy.create_node"}
 """rclpy's node classes themselves."""
 
@@ -25,12 +23,7 @@ Scope = ast.Module | ast.FunctionDef | ast.AsyncFunctionDef
 
 def _scopes(node: ast.AST, tree: ast.Module, index: Index) -> list[Scope]:
     """The functions around ``node``, innermost first, then the module."""
-    found: list[Scope] = []
-    function = index.enclosing_function(node)
-    while function is not None:
-        found.append(function)
-        function = index.enclosing_function(function)
-    return [*found, tree]
+    return [*index.functions_around(node), tree]
 
 
 def _values(name: str, scopes: list[Scope]) -> list[ast.expr]:

@@ -11,13 +11,9 @@ from pkgtool.model.setup_cfg import CfgOption
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
 from pkgtool.rules.setup._ros2_run import meant_for_ros2_run
-from pkgtool.rules.setup_values import checked_setup, name_cause
+from pkgtool.rules.setup_values import checked_setup, name_cause, script_folder
 
 SCRIPT_OPTIONS = (("develop", "script_dir"), ("install", "install_scripts"))
-
-
-def _normal(value: str) -> str:
-    return value.strip().replace("${base}", "$base").rstrip("/")
 
 
 def near_miss(options: tuple[CfgOption, ...], section: str, key: str) -> CfgOption | None:
@@ -84,8 +80,8 @@ def wrong_script_dir(package: Package) -> Iterator[Hit]:
                 yield Hit(Span(cfg.path, 1, 1),
                           f"`setup.cfg` has no `[{section}] {key}`: console scripts install to "
                           f"`bin/`, not `lib/{package.name}`")
-        elif _normal(option.value) != wanted and _scripts(package):
-            inside = _normal(option.value).startswith(wanted + "/")
+        elif script_folder(option.value) != wanted and _scripts(package):
+            inside = script_folder(option.value).startswith(wanted + "/")
             if inside and not _launched(package):
                 continue  # `ros2 run` walks lib/<package> down; only launch_ros does not
             yield Hit(option.span, f"`{option.key}` is `{option.value}`, not `{wanted}`: "
@@ -94,7 +90,7 @@ def wrong_script_dir(package: Package) -> Iterator[Hit]:
                                       "start" if inside else
                                       f"`ros2 run {package.name}` will not find the "
                                       "executables"),
-                      cause=name_cause(_normal(option.value).rpartition("/lib/")[2]),
+                      cause=name_cause(script_folder(option.value).rpartition("/lib/")[2]),
                       consequence=True)
 
 
