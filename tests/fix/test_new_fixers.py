@@ -233,10 +233,30 @@ def test_a_placeholder_license_is_never_written_into_setup_py(tmp_path: Path) ->
 
 def test_launch_package_fix_adds_the_package_named_never_the_package_itself(
         tmp_path: Path) -> None:
-    root = _package(tmp_path)
-    (root / "launch" / "tf.launch.xml").write_text(
-        '<launch>\n  <node pkg="tf2_ros" exec="static_transform_publisher"\n'
-        '        args="$(find-pkg-share pkg)/x 0 0 0 0 0 0 map odom"/>\n</launch>\n')
-    fixed = _fixed_once(root, "LCH002", "package.xml")
+    src = tmp_path / "ws" / "src"
+    root = _package(src)
+    write_tree(src / "other", correct_package_files("other"))  # linted together: `pkg`
+    (root / "launch" / "tf.launch.xml").write_text(  # is a workspace package, which resolves
+        '<launch>\n  <node pkg="tf2_ros" exec="static_transform_publisher"/>\n'
+        '  <node pkg="stage_sim" exec="stage"\n'  # no released package: stays reported
+        '        args="$(find-pkg-share pkg)/worlds/lab.world"/>\n</launch>\n')
+    options = LintOptions(isolated=True, fix=True, select=("LCH002",))
+    run([str(src)], options=options)
+    fixed = _read(root, "package.xml")
     assert "<exec_depend>tf2_ros</exec_depend>" in fixed
     assert "<exec_depend>pkg</exec_depend>" not in fixed
+    left = [f.message for f in run([str(src)], options=options).findings if f.code == "LCH002"]
+    assert left == ["`stage_sim` is used by a launch file but not declared in package.xml"]
+
+
+def test_a_dozen_missing_dependencies_are_all_declared_in_one_run(tmp_path: Path) -> None:
+    """Additions to package.xml's list overlap, one per round: --fix keeps going until none
+    is left (it stopped after 8 rounds)."""
+    modules = ("action_msgs", "builtin_interfaces", "diagnostic_msgs", "geometry_msgs",
+               "nav_msgs", "sensor_msgs", "shape_msgs", "std_srvs", "stereo_msgs",
+               "trajectory_msgs", "visualization_msgs", "unique_identifier_msgs")
+    root = _package(tmp_path)
+    imports = "".join(f"import {m}.msg  # noqa: F401\n" for m in modules)
+    (root / "pkg" / "imports.py").write_text(imports)
+    fixed = _fixed_once(root, "DEP001", "package.xml")
+    assert all(f"<exec_depend>{m}</exec_depend>" in fixed for m in modules)
