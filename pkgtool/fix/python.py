@@ -217,6 +217,14 @@ def message_field(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     yield from renames(package, findings, re.compile(r"has no field `(\w+)`"), _WRITE_NAME)
 
 
+@fixer("PYC063", "Write the standard library name the misspelt one is close to", safe=False)
+def stdlib_name(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename a name a standard library module lacks to the one name it has spelled like it
+    (``signal.SIGNT`` to ``signal.SIGINT``). Unsafe: it guesses which name was meant; the
+    line raised AttributeError or ImportError before."""
+    yield from renames(package, findings, re.compile(r"has no `(\w+)` on Python"), _WRITE_NAME)
+
+
 @fixer("PYC014", "Read the declared parameter the misspelt name is close to", safe=False)
 def parameter_read(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Rename a parameter read but never declared to the one declared parameter spelled like
@@ -252,3 +260,19 @@ def _one_literal(text: str) -> bool:
     except (tokenize.TokenError, SyntaxError):
         return False
     return len(tokens) == 1 and tokens[0].type == tokenize.STRING
+
+
+@fixer("PYC062", "Name the misspelt constructor `__init__`", safe=False)
+def constructor_name(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename the method to ``__init__``. Unsafe: the method now runs whenever the object is
+    made, which is what its ``super().__init__()`` call or its name says was meant, and the
+    base class's constructor no longer runs in its place."""
+    for doc, _, nodes in python_nodes(package, findings):
+        method = next((n for n in nodes if isinstance(n, ast.FunctionDef)), None)
+        if method is None:
+            continue  # an async method would make an async __init__: the user's to rewrite
+        start = doc.source.offset_of_utf8(method.lineno, method.col_offset)
+        found = re.compile(rf"def\s+({re.escape(method.name)})\b").search(doc.source.text, start)
+        if found:
+            yield Fix(f"Rename `{method.name}` to `__init__`",
+                      (Edit(doc.source.path, found.start(1), found.end(1), "__init__"),), False)

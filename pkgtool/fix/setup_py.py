@@ -194,3 +194,11 @@ def _test_extra(doc: SetupDoc) -> list[Edit]:
     if isinstance(extras, dict) and any(key in extras for key in TEST_EXTRAS):
         return []
     return doc.add_to_dict(extras, item, "extras_require") + [doc.remove_keyword("tests_require")]
+
+
+@fixer("SET016", "Write the setup() or find_packages() keyword meant")
+def setup_keyword(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
+    """Rename the misspelt keyword to the one a typo away. Safe: setuptools dropped the
+    misspelt one, so the package now gets what its author wrote (the keyword meant is
+    never given as well)."""
+    yield from renames(package, findings, re.compile(r"^`\w+\(\)` has no keyword `(\w+)`"))

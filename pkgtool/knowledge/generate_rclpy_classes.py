@@ -32,15 +32,17 @@ CLASSES = ("rclpy.publisher.Publisher", "rclpy.subscription.Subscription",
            "rclpy.service.Service", "rclpy.clock.ROSClock",
            "rclpy.time.Time", "rclpy.duration.Duration", "rclpy.task.Future",
            "rclpy.qos.ReliabilityPolicy", "rclpy.qos.HistoryPolicy",
-           "rclpy.qos.DurabilityPolicy", "rclpy.qos.LivelinessPolicy")
+           "rclpy.qos.DurabilityPolicy", "rclpy.qos.LivelinessPolicy",
+           "rclpy.executors.SingleThreadedExecutor", "rclpy.executors.MultiThreadedExecutor")
 """The classes whose attributes the table holds."""
 INSTALLED = "installed"
 """The rclpy wheel installed here (Jazzy's latest release: newer than the clone's branch)."""
 BRANCHES = ("humble", "jazzy", "rolling")
 """The branches of ros2/rclpy read (each has every module of :data:`CLASSES`)."""
-_CLOSED_BASES = frozenset({"object", "Protocol", "Generic", "IntEnum"})
+_CLOSED_BASES = frozenset({"object", "Protocol", "Generic", "IntEnum", "ContextManager"})
 """Bases from outside rclpy that add no attribute a user reads on these objects but, for
-``IntEnum``, :data:`_ENUM_ATTRIBUTES`."""
+``IntEnum``, :data:`_ENUM_ATTRIBUTES` (``ContextManager``, the executors' base from Jazzy on,
+adds ``__enter__`` and ``__exit__``)."""
 _ENUM_ATTRIBUTES = ("name", "value", *(n for n in dir(int) if not n.startswith("_")))
 """What an ``IntEnum`` member has besides its class's own attributes."""
 

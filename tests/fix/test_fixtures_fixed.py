@@ -24,7 +24,8 @@ PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprec
           *(("PYC019", case) for case in (
               "callback_parameters", "humble_target", "interfaces_without_wheels",
               "misspelled_fields", "workspace_interfaces")),
-          ("PYC014", "misspelled_read_after_alias"),
+          ("PYC014", "misspelled_read_after_alias"), ("SET016", "misspelled_keywords"),
+          ("PYC063", "misspelled_standard_names"),
           ("PYC014", "misspelled_reads"), ("DAT009", "misspelled_node")}
 """GPLv3 can mean -only or -or-later, `my_robot_description` is no known package, values outside
 `ros__parameters` belong to a node only the user knows, a node without its executable names
@@ -37,8 +38,9 @@ installed name would not, `len()` for a string field and a parameter's text in a
 something only the author knows, and a misspelt field, executable, parameter or node block is
 renamed only when exactly one name is spelled like it (positional message arguments, a class's
 attributes, fields of a message with none, an executable or parameter close to nothing, a node
-with a namespace are left): no fix guesses, the user chooses; the other findings of the case
-are fixed."""
+with a namespace are left; `test_requires` wants a test extra more than `tests_require`, and
+`collections.Mapping` an import of `collections.abc`): no
+fix guesses, the user chooses; the other findings of the case are fixed."""
 MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages"),
           ("MAN018", "standard_library_modules"), ("DAT001", "typo_in_path"),
           ("DAT008", "flat_file_for_a_component_and_a_node"),
@@ -47,6 +49,7 @@ MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages
           ("PYC016", "print_style_calls"), ("PYC016", "messages_and_numbers_logged"),
           ("MAN017", "catkin_create_pkg_license"),
           ("PYC001", "missing_import"), ("PYC001", "setup_and_launch_files"),
+          ("PYC001", "undefined_names_in_tests"),
           *(("DEP008", case) for case in (
               "catkin_action_messages", "companion_types_on_humble", "names_no_shim_adds",
               "interfaces_listed_in_an_included_cmake_file", "interfaces_listed_in_cmake",

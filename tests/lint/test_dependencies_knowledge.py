@@ -126,10 +126,11 @@ def test_rclpy_names_table_knows_every_name_of_the_installed_rclpy() -> None:
 @pytest.mark.ros
 def test_rclpy_classes_table_knows_every_attribute_of_real_objects() -> None:
     """No false error: every public attribute of the objects a real (Jazzy) node makes, its
-    clock, times, durations and futures, and of the QoS policy enums, is in PYC004's table
-    (PYC004 never reports a name starting with ``_``)."""
+    clock, times, durations and futures, of the executors and of the QoS policy enums, is in
+    PYC004's table (PYC004 never reports a name starting with ``_``)."""
     import rclpy
     from rclpy.duration import Duration
+    from rclpy.executors import MultiThreadedExecutor, SingleThreadedExecutor
     from rclpy.node import Node
     from rclpy.qos import DurabilityPolicy, HistoryPolicy, LivelinessPolicy, ReliabilityPolicy
     from std_msgs.msg import String
@@ -150,7 +151,9 @@ def test_rclpy_classes_table_knows_every_attribute_of_real_objects() -> None:
                 "rclpy.clock.ROSClock": node.get_clock(), "rclpy.time.Time": now,
                 "rclpy.duration.Duration": now - now,
                 "rclpy.task.Future": node.create_client(Trigger, "other").call_async(
-                    Trigger.Request())}
+                    Trigger.Request()),
+                "rclpy.executors.SingleThreadedExecutor": SingleThreadedExecutor(context=context),
+                "rclpy.executors.MultiThreadedExecutor": MultiThreadedExecutor(context=context)}
         made.update({f"rclpy.qos.{enum.__name__}": enum for enum in
                      (ReliabilityPolicy, HistoryPolicy, DurabilityPolicy, LivelinessPolicy)})
         assert isinstance(made["rclpy.duration.Duration"], Duration)
@@ -158,6 +161,9 @@ def test_rclpy_classes_table_knows_every_attribute_of_real_objects() -> None:
                                a not in (attributes_of(cls) or ()))
                    for cls, obj in made.items()}
         node.destroy_node()
+        for executor in (made[f"rclpy.executors.{kind}Executor"] for kind in
+                         ("SingleThreaded", "MultiThreaded")):
+            executor.shutdown()
     finally:
         rclpy.shutdown(context=context)
     assert {cls: names for cls, names in unknown.items() if names} == {}

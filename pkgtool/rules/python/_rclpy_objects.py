@@ -1,5 +1,6 @@
 """The rclpy class an expression's value certainly is (PYC004): what a node's ``create_*``
-methods make, its clock and that clock's times, futures of service calls, times and durations.
+methods make, its clock and that clock's times, futures of service calls, times, durations and
+the executors rclpy provides.
 
 A node is ``self`` in a plain method of a class deriving from ``rclpy.node.Node`` alone, or
 what ``Node(...)``/``rclpy.create_node(...)`` makes; a future, also the parameter of a done
@@ -23,6 +24,7 @@ from pkgtool.rules.syntax_trees import Index, installed_trees
 NODE = "rclpy.node.Node"
 TIME, DURATION = "rclpy.time.Time", "rclpy.duration.Duration"
 FUTURE = "rclpy.task.Future"
+EXECUTORS = ("rclpy.executors.SingleThreadedExecutor", "rclpy.executors.MultiThreadedExecutor")
 CLOCK = "rclpy.clock.ROSClock"
 """A node's clock (a ``Clock`` made for ROS time is one too: the class with most)."""
 _MADE_BY = {
@@ -37,7 +39,8 @@ _MADE_BY = {
 _CONSTRUCTED = {NODE: NODE, "rclpy.create_node": NODE, TIME: TIME, DURATION: DURATION,
                 "rclpy.time.Duration": DURATION, "rclpy.clock.Clock": CLOCK, CLOCK: CLOCK,
                 FUTURE: FUTURE,
-                f"{TIME}.from_msg": TIME, f"{DURATION}.from_msg": DURATION}
+                f"{TIME}.from_msg": TIME, f"{DURATION}.from_msg": DURATION,
+                **{executor: executor for executor in EXECUTORS}}
 """What calling an rclpy class or factory makes."""
 _ARITHMETIC = {(TIME, ast.Sub, TIME): DURATION, (TIME, ast.Sub, DURATION): TIME,
                (TIME, ast.Add, DURATION): TIME, (DURATION, ast.Add, TIME): TIME}

@@ -12,8 +12,9 @@ from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import dead_lines
 from pkgtool.rules.python._names_proof import every_name_defined
-from pkgtool.rules.syntax_trees import installed_modules
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import installed_modules
+from pkgtool.rules.test_modules import test_files
 
 
 def _names_exec(tree: ast.Module) -> bool:
@@ -25,16 +26,16 @@ def _names_exec(tree: ast.Module) -> bool:
 @rule("PYC001", "undefined-name", Severity.ERROR,
       fix="Import or define the name before using it")
 def undefined_name(package: Package) -> Iterator[Hit]:
-    """Installed code, setup.py or a launch file uses a name that is not defined.
+    """Installed code, a test, setup.py or a launch file uses a name that is not defined.
 
     ## What it does
     Runs pyflakes' checker (as a library, on the parsed tree; a quick proof first spares it
-    the files where it would surely find nothing) over every installed module,
-    setup.py and every Python launch file (not those calling `exec()`, which may define any
-    name) and reports its "undefined name" messages, with pyflakes' own handling of builtins,
-    `__all__`, star imports, conditional definitions and `except NameError` guards. Code that
-    never runs on Python 3 is skipped: branches of `if sys.version_info < (3,):`, `if
-    six.PY2:` or of a module constant set once to False, and annotations Python never
+    the files where it would surely find nothing) over every installed module, every test
+    module, setup.py and every Python launch file (not those calling `exec()`, which may
+    define any name) and reports its "undefined name" messages, with pyflakes' own handling
+    of builtins, `__all__`, star imports, conditional definitions and `except NameError`
+    guards. Code that never runs on Python 3 is skipped: branches of `if sys.version_info <
+    (3,):`, `if six.PY2:` or of a module constant set once to False, and annotations Python never
     evaluates: those of assignments in a function body, a string in an annotation (a forward
     reference, `Optional['Pose']`), and every annotation under `from __future__ import
     annotations`.
@@ -42,7 +43,7 @@ def undefined_name(package: Package) -> Iterator[Hit]:
     ## Why is this bad?
     The line raises `NameError` when it runs, which for a node usually means inside a
     callback, long after start-up checks passed; in setup.py it fails the build, in a launch
-    file the launch.
+    file the launch, in a test the test (for a reason that is not what it checks).
 
     ## Example
     ```python
@@ -58,7 +59,11 @@ def undefined_name(package: Package) -> Iterator[Hit]:
     ```
     """
     trees = [(module.path, tree) for module, tree in installed_modules(package)]
-    for path in ("setup.py", *(f.path for f in package.launch_files if f.kind == "python")):
+    launch = (f.path for f in package.launch_files if f.kind == "python")
+    checked = {path for path, _ in trees}
+    for path in dict.fromkeys(("setup.py", *launch, *sorted(test_files(package)))):
+        if path in checked:
+            continue
         tree = parse_tree(path, package.texts[path]) if path in package.texts else None
         if isinstance(tree, ast.Module) and not _names_exec(tree):
             trees.append((path, tree))

@@ -71,15 +71,12 @@ def _suggestion(attr: str, known: set[str]) -> str:
     return f" (did you mean `{close[0]}`?)" if close else ""
 
 
-def _instance_reads(package: Package, path: str, tree: ast.Module, index: Index,
-                    bases: frozenset[str], stored: set[str], probed: frozenset[str]
-                    ) -> Iterator[Hit]:
-    """Attributes read on a local name that holds an instance of one of the module's node
-    classes (every assignment of it in its function is ``node = Talker()``, or None as a
-    placeholder) that neither the class nor rclpy's Node has and nothing stores."""
-    classes = {cls.name: cls for cls in _node_classes(index, bases)}
-    if not classes:
-        return
+def _instances(package: Package, tree: ast.Module, index: Index,
+               classes: dict[str, ast.ClassDef]
+               ) -> Iterator[tuple[ast.FunctionDef | ast.AsyncFunctionDef, str, ast.ClassDef]]:
+    """(function, name, class) for each local name that holds an instance of one of
+    ``classes``: every assignment of it in its function is ``node = Talker()`` (or None as a
+    placeholder), or it is a parameter annotated with the class and never rebound."""
     module_bound = scope_bindings(tree)
     for statement in nodes_of_class(tree, ast.Assign):
         assert isinstance(statement, ast.Assign)
@@ -92,20 +89,41 @@ def _instance_reads(package: Package, path: str, tree: ast.Module, index: Index,
             continue
         assert cls is not None and isinstance(target, ast.Name)
         values = assigned_values(target, package, tree, index)
-        if not values or any(not is_none(v) and not (isinstance(v, ast.Call) and
-                                                     ast.unparse(v.func) == cls.name)
-                             for v, _ in values):
-            continue
+        if values and all(is_none(v) or isinstance(v, ast.Call) and
+                          ast.unparse(v.func) == cls.name for v, _ in values):
+            yield function, target.id, cls
+    for function in index.functions:
+        arguments = function.args
+        for parameter in (*arguments.posonlyargs, *arguments.args, *arguments.kwonlyargs):
+            note = parameter.annotation
+            named = note.id if isinstance(note, ast.Name) else note.value if isinstance(
+                note, ast.Constant) and isinstance(note.value, str) else None
+            cls = classes.get(named or "")
+            if cls is not None and module_bound[cls.name] == 1 and \
+                    scope_bindings(function)[parameter.arg] == 1:
+                yield function, parameter.arg, cls
+
+
+def _instance_reads(package: Package, path: str, tree: ast.Module, index: Index,
+                    bases: frozenset[str], stored: set[str], probed: frozenset[str]
+                    ) -> Iterator[Hit]:
+    """Attributes read on a local name that holds an instance of one of the module's node
+    classes (:func:`_instances`) that neither the class nor rclpy's Node has and nothing
+    stores."""
+    classes = {cls.name: cls for cls in _node_classes(index, bases)}
+    if not classes:
+        return
+    for function, name, cls in _instances(package, tree, index, classes):
         known = set(scope_bindings(cls)) | stored | NODE_ATTRIBUTES
         reads: dict[str, list[Span]] = {}
-        for node in attributes_taken(function, target.id):
+        for node in attributes_taken(function, name):
             if isinstance(node.ctx, ast.Load) and not node.attr.startswith("__") and \
                     node.attr not in known and not guarded(node, index, probed):
                 reads.setdefault(node.attr, []).append(Span(
                     path, node.end_lineno or node.lineno,
                     (node.end_col_offset or 0) - len(node.attr) + 1))
         for attr, spans in reads.items():
-            yield Hit(spans[0], f"`{target.id}` is a `{cls.name}`, which has no attribute "
+            yield Hit(spans[0], f"`{name}` is a `{cls.name}`, which has no attribute "
                       f"`{attr}`{_suggestion(attr, known)}: nothing assigns it and "
                       "rclpy's Node has none, so reading it raises AttributeError",
                       related=tuple(spans[1:]))
@@ -127,8 +145,9 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
     using `setattr`, `delattr`, `vars`, `__dict__`, `__getattr__`, `__setattr__` or
     `__slots__`, names they pass to `hasattr`/`getattr`, and reads inside a `try` that
     catches `AttributeError` are left alone. The same goes for `node.x` read on a local name
-    that holds an instance of such a class (`node = Talker()`, None as a placeholder aside):
-    `node.destroy()` for `node.destroy_node()`. Typical causes: a misspelt callback
+    that holds an instance of such a class (`node = Talker()`, None as a placeholder aside,
+    or a parameter annotated `node: Talker` and never rebound): `node.destroy()` for
+    `node.destroy_node()`. Typical causes: a misspelt callback
     (`self.timer_calback`), a publisher stored as `self.publisher_` and used as
     `self.publisher`, a method renamed but not its uses.
 

@@ -1,0 +1,80 @@
+"""PYC062: a class's constructor misspelt (``__int__``, ``_init_``), so Python never runs it."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.rosdistro import is_typo
+from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import FUNCTIONS, installed_trees
+
+_REAL = frozenset({"__int__"})
+"""The special method Python does have a typo away from ``__init__`` (conversion to int)."""
+
+
+def _init_like(name: str) -> bool:
+    """True for ``__init__`` misspelt: its letters a typo from ``init`` (``__int__``,
+    ``__inti__``, ``_init_``, ``__init``), and not ``__init__`` itself."""
+    return name != "__init__" and is_typo(name.strip("_"), "init")
+
+
+def _runs_base_init(method: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
+    """True when the method calls ``super().__init__(...)`` (or ``super(C, self).__init__``)."""
+    return any(isinstance(call.func, ast.Attribute) and call.func.attr == "__init__" and
+               isinstance(call.func.value, ast.Call) and
+               isinstance(call.func.value.func, ast.Name) and call.func.value.func.id == "super"
+               for call in nodes_of_class(method, ast.Call) if isinstance(call, ast.Call))
+
+
+@rule("PYC062", "misspelled-init", Severity.ERROR, fix="Name the method `__init__`")
+def misspelled_init(package: Package) -> Iterator[Hit]:
+    """A class's constructor is misspelt, so Python never runs it.
+
+    ## What it does
+    In installed modules, reports a method of a class that defines no `__init__` when its name
+    is `__init__` misspelt (its letters a typo from `init`: `__int__`, `__inti__`, `_init_`,
+    `__init`, `init__`) and either it calls `super().__init__(...)`, as only a constructor
+    does, or it is written like a special method (`_init_`, `__inti__`) that Python does not
+    have. Real special methods (`__int__` converting to a number, `__iter__`, `__new__`) that
+    do not call `super().__init__` and methods the module calls by name are left alone.
+
+    ## Why is this bad?
+    Python calls `__init__` when it makes an object; a method of another name only runs when
+    called. The class uses its base's constructor instead: a node subclass then fails at once
+    (`Node.__init__() missing 1 required positional argument: 'node_name'`), or makes a node
+    without its publishers, timers and attributes, so the first callback fails.
+
+    ## Example
+    ```python
+    class Talker(Node):
+        def __int__(self):
+            super().__init__('talker')
+    ```
+
+    ## Use instead
+    ```python
+    class Talker(Node):
+        def __init__(self):
+            super().__init__('talker')
+    ```
+    """
+    for module, tree, index in installed_trees(package):
+        called = {node.attr for node in index.attributes}
+        for cls in index.classes:
+            methods = [s for s in cls.body if isinstance(s, FUNCTIONS)]
+            if any(m.name == "__init__" for m in methods):
+                continue
+            for method in methods:
+                if not _init_like(method.name) or method.name in called:
+                    continue
+                special = method.name.startswith("_") and method.name.endswith("_")
+                if _runs_base_init(method) or special and method.name not in _REAL:
+                    yield Hit(Span(module.path, method.lineno, method.col_offset + 1),
+                              f"`{cls.name}` defines `{method.name}`, not `__init__`: Python "
+                              f"never calls it when a `{cls.name}` is made, and the base "
+                              "class's constructor runs instead", "Write `__init__`")
