@@ -225,6 +225,15 @@ def stdlib_name(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     yield from renames(package, findings, re.compile(r"has no `(\w+)` on Python"), _WRITE_NAME)
 
 
+@fixer("PYC064", "Read the attribute of the package's class the misspelt one is close to",
+       safe=False)
+def instance_attribute(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename an attribute an instance of a package class lacks to the one name its class
+    defines spelled like it (``detect_edge`` to ``detect_edges``). Unsafe: it guesses which
+    attribute was meant; the read raised AttributeError before."""
+    yield from renames(package, findings, re.compile(r"has no attribute `(\w+)`"), _WRITE_NAME)
+
+
 @fixer("PYC014", "Read the declared parameter the misspelt name is close to", safe=False)
 def parameter_read(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Rename a parameter read but never declared to the one declared parameter spelled like

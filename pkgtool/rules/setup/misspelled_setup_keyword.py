@@ -7,6 +7,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import typo_of
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
@@ -41,9 +42,9 @@ FINDERS = {"find_packages": ("where", "exclude", "include"),
 
 def _setup_keywords(tree: ast.Module) -> Iterator[ast.keyword]:
     """The named keywords of every ``setup(...)`` / ``<module>.setup(...)`` call."""
-    for node in ast.walk(tree):
-        if isinstance(node, ast.Call) and (getattr(node.func, "id", None) == "setup" or
-                                           getattr(node.func, "attr", None) == "setup"):
+    for node in nodes_of_class(tree, ast.Call):
+        assert isinstance(node, ast.Call)
+        if "setup" in (getattr(node.func, "id", None), getattr(node.func, "attr", None)):
             yield from (k for k in node.keywords if k.arg is not None)
 
 
@@ -53,9 +54,8 @@ def _finder_calls(tree: ast.Module) -> Iterator[tuple[str, ast.Call]]:
     imported = {alias.asname or alias.name: alias.name for node in tree.body
                 if isinstance(node, ast.ImportFrom) and node.module == "setuptools"
                 for alias in node.names if alias.name in FINDERS}
-    for node in ast.walk(tree):
-        if not isinstance(node, ast.Call):
-            continue
+    for node in nodes_of_class(tree, ast.Call):
+        assert isinstance(node, ast.Call)
         func = node.func
         if isinstance(func, ast.Name) and func.id in imported:
             yield imported[func.id], node

@@ -1,0 +1,201 @@
+"""PYC064: an attribute read on an instance of one of the package's own classes that has none
+of that name (``self.processor.proces(image)``)."""
+
+from __future__ import annotations
+
+import ast
+from collections import Counter
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.rosdistro import typo_of
+from pkgtool.model.ast_nodes import TRIES
+from pkgtool.model.memo import per_package
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.imports import installed_names, python_package_of
+from pkgtool.rules.python._assignments import assigned_values, is_none
+from pkgtool.rules.python._attribute_guards import guarded, probed_names
+from pkgtool.rules.python._value_types import attribute_stores
+from pkgtool.rules.registry import rule
+from pkgtool.rules.scopes import scope_bindings
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
+
+_OPENING = frozenset({"__getattr__", "__getattribute__"})
+"""Methods through which a class may have any attribute."""
+_DECORATORS = frozenset({"dataclass", "dataclasses.dataclass"})
+"""Class decorators that add no attribute a user reads (a dataclass's fields are its own)."""
+_BLOCKS = (ast.If, ast.For, ast.AsyncFor, ast.While, ast.With, ast.AsyncWith, *TRIES)
+"""Statements whose blocks run at module level."""
+_DEPTH = 8
+"""How many bases deep a class is followed."""
+
+
+@per_package
+def _modules(package: Package) -> dict[int, tuple[str, str]]:
+    """The dotted name of each installed module and of the Python package it is in, by the
+    id of its index."""
+    names = installed_names(package)
+    return {id(index): (names[module.path], python_package_of(package, module))
+            for module, _, index in installed_trees(package) if names.get(module.path)}
+
+
+@per_package
+def _classes(package: Package) -> dict[str, tuple[ast.ClassDef, Index]]:
+    """The top-level classes of the installed modules, bound once in their module, by dotted
+    name (``my_pkg.vision.Processor``), each with its module's index."""
+    modules = _modules(package)
+    found: dict[str, tuple[ast.ClassDef, Index]] = {}
+    for _, tree, index in installed_trees(package):
+        if id(index) not in modules:
+            continue
+        bound = Counter(_top_level_names(tree.body))
+        for node in tree.body:
+            if isinstance(node, ast.ClassDef) and bound[node.name] == 1:
+                found[f"{modules[id(index)][0]}.{node.name}"] = (node, index)
+    return found
+
+
+def _top_level_names(statements: list[ast.stmt]) -> Iterator[str]:
+    """The names module-level statements bind, those in ``if``/``try``/``with``/loop blocks
+    included (a class bound again there is left out)."""
+    for node in statements:
+        if isinstance(node, (*FUNCTIONS, ast.ClassDef)):
+            yield node.name
+        elif isinstance(node, (ast.Import, ast.ImportFrom)):
+            yield from ((a.asname or a.name).split(".")[0] for a in node.names)
+        elif isinstance(node, (ast.Assign, ast.AnnAssign, ast.AugAssign)):
+            targets = node.targets if isinstance(node, ast.Assign) else [node.target]
+            yield from (n.id for t in targets for n in ast.walk(t) if isinstance(n, ast.Name))
+        elif isinstance(node, _BLOCKS):
+            for block in ("body", "orelse", "finalbody"):
+                yield from _top_level_names(getattr(node, block, None) or [])
+            for handler in getattr(node, "handlers", ()):
+                yield from _top_level_names(handler.body)
+
+
+def _resolved(name: str, index: Index, package: Package) -> str | None:
+    """The dotted name of the package class the name ``name`` of the module of ``index``
+    stands for: a class it defines, or one it imports (absolutely or relatively) once."""
+    classes, where = _classes(package), _modules(package).get(id(index))
+    if where is None:
+        return None
+    if f"{where[0]}.{name}" in classes:
+        return f"{where[0]}.{name}"
+    found = [f"{_absolute(node, where[1])}.{alias.name}" for node in index.import_froms
+             for alias in node.names if (alias.asname or alias.name) == name]
+    return found[0] if len(found) == 1 and found[0] in classes else None
+
+
+def _absolute(node: ast.ImportFrom, package: str) -> str:
+    """The module a ``from`` import names, relative to the Python package ``package`` it is
+    in when it starts with dots."""
+    if not node.level:
+        return node.module or ""
+    parts = package.split(".")[:len(package.split(".")) - node.level + 1]
+    return ".".join([*parts, *([node.module] if node.module else [])])
+
+
+def _closed(dotted: str, package: Package, depth: int = 0) -> bool:
+    """True when every attribute of the class's instances comes from its body, its bases (all
+    closed classes of the package, or ``object``) or stores the package makes."""
+    cls, index = _classes(package)[dotted]
+    decorators = {ast.unparse(d.func if isinstance(d, ast.Call) else d)
+                  for d in cls.decorator_list}
+    if depth > _DEPTH or cls.keywords or decorators - _DECORATORS or \
+            any(isinstance(s, FUNCTIONS) and s.name in _OPENING for s in cls.body):
+        return False
+    for base in cls.bases:
+        if isinstance(base, ast.Name) and base.id == "object":
+            continue
+        found = _resolved(base.id, index, package) if isinstance(base, ast.Name) else None
+        if found is None or not _closed(found, package, depth + 1):
+            return False
+    return True
+
+
+def _attributes(dotted: str, package: Package) -> set[str]:
+    """The names the class body and its bases' bodies bind."""
+    cls, index = _classes(package)[dotted]
+    found = set(scope_bindings(cls))
+    for base in cls.bases:
+        named = _resolved(base.id, index, package) if isinstance(base, ast.Name) else None
+        found |= _attributes(named, package) if named else set()
+    return found
+
+
+def _instance_of(value: ast.expr, package: Package, tree: ast.Module, index: Index
+                 ) -> str | None:
+    """The closed package class every value assigned to ``value`` (a local name or
+    ``self.x``) is made by, ``None`` placeholders aside."""
+    made: set[str | None] = set()
+    for assigned, assigned_index in assigned_values(value, package, tree, index) or ():
+        if is_none(assigned):
+            continue
+        func = assigned.func if isinstance(assigned, ast.Call) else None
+        made.add(_resolved(func.id, assigned_index, package) if isinstance(func, ast.Name)
+                 else None)
+    found = next(iter(made)) if len(made) == 1 else None
+    return found if found and _closed(found, package) else None
+
+
+@rule("PYC064", "undefined-instance-attribute", Severity.ERROR,
+      fix="Use the attribute the class defines (check the spelling)")
+def undefined_instance_attribute(package: Package) -> Iterator[Hit]:
+    """Code reads an attribute that an instance of one of the package's own classes lacks.
+
+    ## What it does
+    In installed modules, reports `x.name` read where `x` is a local name or `self.x` that
+    always holds an instance of a class of the package (every assignment of it is
+    `x = Processor(...)`, `None` placeholders aside; the class defined in the module or
+    imported from another module of the package), when nothing in the package defines or
+    stores an attribute `name` anywhere. Only classes whose instances get attributes from
+    their own body, their bases and stores alone are checked: bases from outside the package
+    (`Node`, `Exception`), a metaclass, class decorators other than `@dataclass`,
+    `__getattr__`, and modules storing attributes in ways not written as `x.name = ...`
+    (`setattr`, `__dict__`, `__slots__`) leave a class alone; so do names the module probes
+    with `hasattr`/`getattr` and reads inside a `try` that catches `AttributeError`. Node
+    classes are PYC023's.
+
+    ## Why is this bad?
+    The read raises `AttributeError` when it runs, which in a node usually means in a
+    callback: the node logs a traceback on its first message or tick and stops doing its job.
+
+    ## Example
+    ```python
+    self.processor = ImageProcessor()
+    edges = self.processor.detect_edge(image)  # the method is detect_edges
+    ```
+
+    ## Use instead
+    ```python
+    self.processor = ImageProcessor()
+    edges = self.processor.detect_edges(image)
+    ```
+    """
+    if not any(_closed(dotted, package) for dotted in _classes(package)):
+        return  # no class whose instances' attributes are all known (node classes only)
+    everywhere = attribute_stores(package)
+    if everywhere is None:
+        return
+    for module, tree, index in installed_trees(package):
+        probed: frozenset[str] | None = None
+        for node in index.attributes:
+            target = node.value
+            if node.attr in everywhere or node.attr.startswith("__") or not (
+                    isinstance(target, ast.Name) and target.id not in index.aliases or
+                    isinstance(target, ast.Attribute) and isinstance(target.value, ast.Name)):
+                continue
+            dotted = _instance_of(target, package, tree, index)
+            probed = probed_names(index) if probed is None else probed
+            if dotted is None or guarded(node, index, probed):
+                continue
+            name = dotted.rpartition(".")[2]
+            meant = typo_of(node.attr, _attributes(dotted, package))
+            hint = f" (did you mean `{meant}`?)" if meant else ""
+            yield Hit(Span(module.path, node.end_lineno or node.lineno,
+                           (node.end_col_offset or 0) - len(node.attr) + 1),
+                      f"`{ast.unparse(target)}` is an instance of the package's class `{name}` "
+                      f"(`{dotted}`), which has no attribute `{node.attr}`{hint}: nothing "
+                      "defines or stores it, so reading it raises AttributeError",
+                      f"Write `{meant}`" if meant else None)
