@@ -69,13 +69,18 @@ def own_definition(call: ast.Call, index: Index, tree: ast.Module,
     """The module-level function (or class, by ``kind``) ``name()`` calls, when no scope
     around the call rebinds it."""
     func = call.func
-    if not isinstance(func, ast.Name) or any(
-            scope_bindings(f)[func.id] for f in index.functions_around(call)):
-        return None
-    cls = index.enclosing_class(call)
-    if cls is not None and scope_bindings(cls)[func.id]:
+    if not isinstance(func, ast.Name) or rebound_around(call, func.id, index):
         return None
     return defined_once(tree, func.id, kind)
+
+
+def rebound_around(node: ast.AST, name: str, index: Index) -> bool:
+    """True when a function or the class around ``node`` binds ``name`` (a module-level name
+    read there may stand for something else)."""
+    if any(scope_bindings(f)[name] for f in index.functions_around(node)):
+        return True
+    cls = index.enclosing_class(node)
+    return cls is not None and bool(scope_bindings(cls)[name])
 
 
 def missing_parameter(call: ast.Call, function: Function, skipped: int) -> str | None:

@@ -1,4 +1,4 @@
-"""PYC048: a call of a function, method or class of the module with arguments it cannot bind."""
+"""PYC048: a call of a function, method or class of the package with arguments it cannot bind."""
 
 from __future__ import annotations
 
@@ -10,7 +10,8 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import bases_are_nodes
 from pkgtool.rules.python._own_callees import (binding_error, defined_once, own_definition,
-                                               own_method)
+                                               own_method, rebound_around)
+from pkgtool.rules.python._package_modules import imported_from_package, modules_by_name
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, base_names, installed_trees
 
@@ -23,18 +24,26 @@ def _plain_class(cls: ast.ClassDef, index: Index) -> bool:
         not any(isinstance(s, ast.FunctionDef) and s.name == "__new__" for s in cls.body)
 
 
-def _callee(call: ast.Call, index: Index, tree: ast.Module, subclassed: frozenset[str]
+def _callee(call: ast.Call, index: Index, tree: ast.Module, package: Package
             ) -> tuple[ast.FunctionDef, int, str] | None:
     """The function ``call`` certainly runs, the receiver parameters it skips, and how to name
     it: a method of the caller's own class (when no class derives from that class), a
-    function of the module, the ``__init__`` of a class of the module."""
+    function of the module or one imported from another module of the package, the
+    ``__init__`` of such a class."""
     method = own_method(call, index)
     if method is not None:
         function, cls = method
-        if cls.name in subclassed or function.decorator_list or not _plain_class(cls, index):
+        if cls.name in base_names(package) or function.decorator_list or \
+                not _plain_class(cls, index):
             return None
         return function, 1, f"{cls.name}.{function.name}"
     found = own_definition(call, index, tree, (ast.FunctionDef, ast.ClassDef))
+    if found is None and isinstance(call.func, ast.Name) and \
+            not rebound_around(call, call.func.id, index):
+        imported = imported_from_package(call.func.id, tree, index, package)
+        if imported is not None:
+            tree, index = modules_by_name(package)[imported[0]]
+            found = defined_once(tree, imported[1], (ast.FunctionDef, ast.ClassDef))
     if isinstance(found, ast.FunctionDef):
         return (found, 0, found.name) if not found.decorator_list else None
     if not isinstance(found, ast.ClassDef) or not _plain_class(found, index):
@@ -54,16 +63,17 @@ def _signature(function: ast.FunctionDef) -> str:
 @rule("PYC048", "call-arguments-mismatch", Severity.ERROR,
       fix="Pass what the function takes, or change its parameters")
 def call_arguments_mismatch(package: Package) -> Iterator[Hit]:
-    """A function, method or class of the module is called with arguments it cannot take.
+    """A function, method or class of the package is called with arguments it cannot take.
 
     ## What it does
     Reports a call that gives more positional arguments than the function takes, leaves out
     a parameter it requires, gives one twice (by position and by keyword) or names a keyword
-    it has no parameter for, where the function is certainly the module's own: a plain
-    function of the module (`tick(...)`), a plain method of the caller's own class
+    it has no parameter for, where the function is certainly the package's own: a plain
+    function of the module or one imported from another installed module of the package
+    (`from .trajectory import single_point`, `tick(...)`), a plain method of the caller's own class
     (`self.publish(...)`, when no class derives from that class and nothing assigns
-    `self.publish`), or the `__init__` of a class of the module deriving from nothing or
-    from rclpy's node classes alone (`Talker(...)`). Decorated functions and classes, calls
+    `self.publish`), or the `__init__` of such a class deriving from nothing or from rclpy's
+    node classes alone (`Talker(...)`). Decorated functions and classes, calls
     passing `*args` or `**kwargs`, and names any scope around the call rebinds are left
     alone.
 
@@ -92,7 +102,7 @@ def call_arguments_mismatch(package: Package) -> Iterator[Hit]:
         for call in index.calls:
             if not isinstance(call.func, (ast.Name, ast.Attribute)):
                 continue
-            callee = _callee(call, index, tree, base_names(package))
+            callee = _callee(call, index, tree, package)
             error = binding_error(call, callee[0], callee[1]) if callee else None
             if error is not None:
                 assert callee is not None

@@ -13,9 +13,10 @@ from pkgtool.model.ast_nodes import TRIES
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.imports import installed_names, python_package_of
 from pkgtool.rules.python._assignments import assigned_values, is_none
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
+from pkgtool.rules.python._package_modules import (imported_from_package, module_names,
+                                                   modules_by_name)
 from pkgtool.rules.python._value_types import attribute_stores
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings
@@ -32,27 +33,15 @@ _DEPTH = 8
 
 
 @per_package
-def _modules(package: Package) -> dict[int, tuple[str, str]]:
-    """The dotted name of each installed module and of the Python package it is in, by the
-    id of its index."""
-    names = installed_names(package)
-    return {id(index): (names[module.path], python_package_of(package, module))
-            for module, _, index in installed_trees(package) if names.get(module.path)}
-
-
-@per_package
 def _classes(package: Package) -> dict[str, tuple[ast.ClassDef, Index]]:
     """The top-level classes of the installed modules, bound once in their module, by dotted
     name (``my_pkg.vision.Processor``), each with its module's index."""
-    modules = _modules(package)
     found: dict[str, tuple[ast.ClassDef, Index]] = {}
-    for _, tree, index in installed_trees(package):
-        if id(index) not in modules:
-            continue
+    for module, (tree, index) in modules_by_name(package).items():
         bound = Counter(_top_level_names(tree.body))
         for node in tree.body:
             if isinstance(node, ast.ClassDef) and bound[node.name] == 1:
-                found[f"{modules[id(index)][0]}.{node.name}"] = (node, index)
+                found[f"{module}.{node.name}"] = (node, index)
     return found
 
 
@@ -77,23 +66,14 @@ def _top_level_names(statements: list[ast.stmt]) -> Iterator[str]:
 def _resolved(name: str, index: Index, package: Package) -> str | None:
     """The dotted name of the package class the name ``name`` of the module of ``index``
     stands for: a class it defines, or one it imports (absolutely or relatively) once."""
-    classes, where = _classes(package), _modules(package).get(id(index))
+    classes, where = _classes(package), module_names(package).get(id(index))
     if where is None:
         return None
     if f"{where[0]}.{name}" in classes:
         return f"{where[0]}.{name}"
-    found = [f"{_absolute(node, where[1])}.{alias.name}" for node in index.import_froms
-             for alias in node.names if (alias.asname or alias.name) == name]
-    return found[0] if len(found) == 1 and found[0] in classes else None
-
-
-def _absolute(node: ast.ImportFrom, package: str) -> str:
-    """The module a ``from`` import names, relative to the Python package ``package`` it is
-    in when it starts with dots."""
-    if not node.level:
-        return node.module or ""
-    parts = package.split(".")[:len(package.split(".")) - node.level + 1]
-    return ".".join([*parts, *([node.module] if node.module else [])])
+    tree = modules_by_name(package)[where[0]][0]
+    found = imported_from_package(name, tree, index, package)
+    return ".".join(found) if found and ".".join(found) in classes else None
 
 
 def _closed(dotted: str, package: Package, depth: int = 0) -> bool:
