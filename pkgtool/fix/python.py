@@ -285,3 +285,12 @@ def constructor_name(package: Package, findings: list[Finding]) -> Iterator[Fix]
         if found:
             yield Fix(f"Rename `{method.name}` to `__init__`",
                       (Edit(doc.source.path, found.start(1), found.end(1), "__init__"),), False)
+
+
+@fixer("PYC065", "Write the pytest name the misspelt one is close to", safe=False)
+def pytest_name(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename a pytest name or mark pytest lacks to the one it has spelled like it
+    (``fixure`` to ``fixture``, ``paramtrize`` to ``parametrize``). Unsafe: it guesses which
+    name was meant; the test module or the test did not run as written before."""
+    yield from renames(package, findings,
+                       re.compile(r"(?:^`pytest\.mark\.|^`pytest` has no `)(\w+)`"), _WRITE_NAME)

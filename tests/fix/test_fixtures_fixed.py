@@ -26,6 +26,7 @@ PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprec
               "misspelled_fields", "workspace_interfaces")),
           ("PYC014", "misspelled_read_after_alias"), ("SET016", "misspelled_keywords"),
           ("PYC063", "misspelled_standard_names"), ("PYC064", "misspelt_methods"),
+          ("PYC065", "misspelt_names_and_marks"),
           ("PYC014", "misspelled_reads"), ("DAT009", "misspelled_node")}
 """GPLv3 can mean -only or -or-later, `my_robot_description` is no known package, values outside
 `ros__parameters` belong to a node only the user knows, a node without its executable names

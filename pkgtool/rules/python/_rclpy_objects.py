@@ -19,6 +19,7 @@ from pkgtool.model.package import Package
 from pkgtool.rules.node_api import derives_from_node_alone
 from pkgtool.rules.python._assignments import assigned_values, done_callback_futures, is_none
 from pkgtool.rules.python._value_types import receiver_class
+from pkgtool.rules.scopes import scope_bindings
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
 NODE = "rclpy.node.Node"
@@ -79,7 +80,8 @@ def object_class(value: ast.expr, package: Package, tree: ast.Module, index: Ind
         known = _attribute_classes(package)  # every read of a local name has the same
         key = (id(function), value.id)
         if key not in known:
-            known[key] = _assigned_class(value, package, tree, index, depth)
+            known[key] = _annotated_class(value.id, function, index) or \
+                _assigned_class(value, package, tree, index, depth)
         return known[key]
     if isinstance(value, ast.Attribute) and isinstance(value.value, ast.Name):
         cls = receiver_class(value.value, index)
@@ -91,6 +93,19 @@ def object_class(value: ast.expr, package: Package, tree: ast.Module, index: Ind
             known[key] = _assigned_class(value, package, tree, index, depth)
         return known[key]
     return None
+
+
+def _annotated_class(name: str, function: ast.FunctionDef | ast.AsyncFunctionDef,
+                     index: Index) -> str | None:
+    """The rclpy class a parameter ``name`` of ``function`` is annotated with (``future:
+    Future``), when nothing in the function rebinds it."""
+    arguments = function.args
+    parameters = (*arguments.posonlyargs, *arguments.args, *arguments.kwonlyargs)
+    note = next((a.annotation for a in parameters if a.arg == name), None)
+    if not isinstance(note, (ast.Name, ast.Attribute)) or scope_bindings(function)[name] != 1:
+        return None
+    made = _CONSTRUCTED.get(index.qualified(note) or "")
+    return made if made in (TIME, DURATION, FUTURE, CLOCK, *EXECUTORS) else None
 
 
 def _assigned_class(value: ast.Name | ast.Attribute, package: Package, tree: ast.Module,

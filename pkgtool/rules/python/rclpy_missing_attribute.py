@@ -48,13 +48,16 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
     execute, cancel or accepted callback, when the callback never rebinds that parameter nor
     stores an attribute on it. And reads of attributes missing on the objects a node makes,
     often rospy habits: `self.timer.start()`, `self.pub.get_num_connections()`,
-    `self.get_clock().now().to_sec()`, `stamp.sec` on an rclpy `Time`, `(now -
-    start).to_sec()` on a `Duration`, `future.get_result()`, and enum members that do not
-    exist (`QoSReliabilityPolicy.RELIABLE_RELIABLE`). The object's class must be certain: what
+    `self.get_clock().now().to_sec()`, `executor.spin_some()`, `stamp.sec` on an rclpy
+    `Time`, `(now - start).to_sec()` on a `Duration`, `future.get_result()`, and enum
+    members that do not exist (`QoSReliabilityPolicy.RELIABLE_RELIABLE`). The object's class
+    must be certain: what
     `self.create_publisher/subscription/timer/rate/client/service()` or `self.get_clock()`
     return in a class deriving from rclpy's `Node` alone (one that does not define the method
-    itself), a clock's `now()`, `Time(...)`, `Duration(...)`, a client's `call_async()`, the
-    future a done callback gets, and local names or `self.x` every assignment of which gives
+    itself), a clock's `now()`, `Time(...)`, `Duration(...)`, an executor
+    (`SingleThreadedExecutor()`, `MultiThreadedExecutor()`), a client's `call_async()`, the
+    future a done callback gets, a parameter annotated with one of these classes (`future:
+    Future`) and never rebound, and local names or `self.x` every assignment of which gives
     one class (`None` placeholders aside). Attributes are checked against the union of
     Humble's, Jazzy's and Rolling's rclpy; names starting with `_`, names the module probes
     with `hasattr`/`getattr` and reads under `try/except AttributeError` are left alone.
