@@ -8,8 +8,9 @@ class's attributes are what its body defines (methods, properties, nested classe
 assignments), what its methods assign on ``self`` and, for the QoS policy enums, the deprecated
 aliases their decorator adds and what ``int`` and ``Enum`` give their members; with those of
 its bases found in rclpy. A class with a base outside rclpy other than ``object``, a
-``Protocol``, a ``Generic`` or an ``IntEnum`` would be open (anything may come from it): none
-of the chosen ones has one, and the generator refuses such a class rather than write it.
+``Protocol``, a ``Generic``, a ``ContextManager``, an ``Enum`` or an ``IntEnum`` would be
+open (anything may come from it): none of the chosen ones has one, and the generator refuses
+such a class rather than write it.
 
 Each entry is ``<class> <attribute>...``, the union over the branches (an attribute any of them
 has is known). The Jazzy wheel's classes are checked against the table by the tests.
@@ -33,13 +34,16 @@ CLASSES = ("rclpy.publisher.Publisher", "rclpy.subscription.Subscription",
            "rclpy.time.Time", "rclpy.duration.Duration", "rclpy.task.Future",
            "rclpy.qos.ReliabilityPolicy", "rclpy.qos.HistoryPolicy",
            "rclpy.qos.DurabilityPolicy", "rclpy.qos.LivelinessPolicy",
-           "rclpy.executors.SingleThreadedExecutor", "rclpy.executors.MultiThreadedExecutor")
+           "rclpy.executors.SingleThreadedExecutor", "rclpy.executors.MultiThreadedExecutor",
+           "rclpy.action.client.ActionClient", "rclpy.action.server.ActionServer",
+           "rclpy.action.server.GoalResponse", "rclpy.action.server.CancelResponse")
 """The classes whose attributes the table holds."""
 INSTALLED = "installed"
 """The rclpy wheel installed here (Jazzy's latest release: newer than the clone's branch)."""
 BRANCHES = ("humble", "jazzy", "rolling")
 """The branches of ros2/rclpy read (each has every module of :data:`CLASSES`)."""
-_CLOSED_BASES = frozenset({"object", "Protocol", "Generic", "IntEnum", "ContextManager"})
+_CLOSED_BASES = frozenset({"object", "Protocol", "Generic", "IntEnum", "Enum",
+                           "ContextManager"})
 """Bases from outside rclpy that add no attribute a user reads on these objects but, for
 ``IntEnum``, :data:`_ENUM_ATTRIBUTES` (``ContextManager``, the executors' base from Jazzy on,
 adds ``__enter__`` and ``__exit__``)."""
@@ -99,7 +103,8 @@ def _attributes(git: Path, branch: str, dotted: str, seen: frozenset[str] = froz
         base_name = base.value.id if isinstance(base, ast.Subscript) and \
             isinstance(base.value, ast.Name) else base.id if isinstance(base, ast.Name) else None
         if base_name in _CLOSED_BASES:
-            attributes.update(_ENUM_ATTRIBUTES if base_name == "IntEnum" else ())
+            attributes.update(_ENUM_ATTRIBUTES if base_name == "IntEnum" else
+                              ("name", "value") if base_name == "Enum" else ())
             continue
         where = f"{module}.{base_name}" if any(
             isinstance(c, ast.ClassDef) and c.name == base_name for c in tree.body) else \

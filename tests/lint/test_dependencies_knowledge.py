@@ -126,15 +126,17 @@ def test_rclpy_names_table_knows_every_name_of_the_installed_rclpy() -> None:
 @pytest.mark.ros
 def test_rclpy_classes_table_knows_every_attribute_of_real_objects() -> None:
     """No false error: every public attribute of the objects a real (Jazzy) node makes, its
-    clock, times, durations and futures, of the executors and of the QoS policy enums, is in
-    PYC004's table (PYC004 never reports a name starting with ``_``)."""
+    clock, times, durations and futures, of the executors, action clients and servers, and of
+    rclpy's enums, is in PYC004's table (PYC004 never reports a name starting with ``_``)."""
     import rclpy
     from rclpy.duration import Duration
+    from rclpy.action import ActionClient, ActionServer, CancelResponse, GoalResponse
     from rclpy.executors import MultiThreadedExecutor, SingleThreadedExecutor
     from rclpy.node import Node
     from rclpy.qos import DurabilityPolicy, HistoryPolicy, LivelinessPolicy, ReliabilityPolicy
     from std_msgs.msg import String
     from std_srvs.srv import Trigger
+    from test_msgs.action import Fibonacci
 
     context = rclpy.Context()
     rclpy.init(context=context)
@@ -153,13 +155,21 @@ def test_rclpy_classes_table_knows_every_attribute_of_real_objects() -> None:
                 "rclpy.task.Future": node.create_client(Trigger, "other").call_async(
                     Trigger.Request()),
                 "rclpy.executors.SingleThreadedExecutor": SingleThreadedExecutor(context=context),
-                "rclpy.executors.MultiThreadedExecutor": MultiThreadedExecutor(context=context)}
+                "rclpy.executors.MultiThreadedExecutor": MultiThreadedExecutor(context=context),
+                "rclpy.action.client.ActionClient": ActionClient(node, Fibonacci, "probe"),
+                "rclpy.action.server.ActionServer": ActionServer(node, Fibonacci, "probe",
+                                                                 execute_callback=print)}
         made.update({f"rclpy.qos.{enum.__name__}": enum for enum in
                      (ReliabilityPolicy, HistoryPolicy, DurabilityPolicy, LivelinessPolicy)})
+        made.update({f"rclpy.action.server.{enum.__name__}": enum for enum in
+                     (GoalResponse, CancelResponse)})
         assert isinstance(made["rclpy.duration.Duration"], Duration)
         unknown = {cls: sorted(a for a in dir(obj) if not a.startswith("_") and
                                a not in (attributes_of(cls) or ()))
                    for cls, obj in made.items()}
+        for action in (made[f"rclpy.action.{kind.lower()}.Action{kind}"] for kind in
+                       ("Client", "Server")):
+            action.destroy()
         node.destroy_node()
         for executor in (made[f"rclpy.executors.{kind}Executor"] for kind in
                          ("SingleThreaded", "MultiThreaded")):

@@ -26,6 +26,9 @@ NODE = "rclpy.node.Node"
 TIME, DURATION = "rclpy.time.Time", "rclpy.duration.Duration"
 FUTURE = "rclpy.task.Future"
 EXECUTORS = ("rclpy.executors.SingleThreadedExecutor", "rclpy.executors.MultiThreadedExecutor")
+ACTIONS = {f"rclpy.action{where}.Action{kind}": f"rclpy.action.{kind.lower()}.Action{kind}"
+           for kind in ("Client", "Server") for where in ("", f".{kind.lower()}")}
+"""rclpy's action client and server classes by every name they are imported by."""
 CLOCK = "rclpy.clock.ROSClock"
 """A node's clock (a ``Clock`` made for ROS time is one too: the class with most)."""
 _MADE_BY = {
@@ -41,7 +44,7 @@ _CONSTRUCTED = {NODE: NODE, "rclpy.create_node": NODE, TIME: TIME, DURATION: DUR
                 "rclpy.time.Duration": DURATION, "rclpy.clock.Clock": CLOCK, CLOCK: CLOCK,
                 FUTURE: FUTURE,
                 f"{TIME}.from_msg": TIME, f"{DURATION}.from_msg": DURATION,
-                **{executor: executor for executor in EXECUTORS}}
+                **{executor: executor for executor in EXECUTORS}, **ACTIONS}
 """What calling an rclpy class or factory makes."""
 _ARITHMETIC = {(TIME, ast.Sub, TIME): DURATION, (TIME, ast.Sub, DURATION): TIME,
                (TIME, ast.Add, DURATION): TIME, (DURATION, ast.Add, TIME): TIME}
@@ -105,7 +108,8 @@ def _annotated_class(name: str, function: ast.FunctionDef | ast.AsyncFunctionDef
     if not isinstance(note, (ast.Name, ast.Attribute)) or scope_bindings(function)[name] != 1:
         return None
     made = _CONSTRUCTED.get(index.qualified(note) or "")
-    return made if made in (TIME, DURATION, FUTURE, CLOCK, *EXECUTORS) else None
+    return made if made in (TIME, DURATION, FUTURE, CLOCK, *EXECUTORS, *ACTIONS.values()) \
+        else None
 
 
 def _assigned_class(value: ast.Name | ast.Attribute, package: Package, tree: ast.Module,

@@ -8,7 +8,7 @@ from collections.abc import Iterator
 from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.rclpy_classes import POLICY_ENUMS, attributes_of
+from pkgtool.knowledge.rclpy_classes import ENUMS, attributes_of
 from pkgtool.knowledge.rclpy_missing import missing_attribute
 from pkgtool.knowledge.rclpy_names import close_name, defined_on, defines
 from pkgtool.knowledge.rclpy_node import GOAL_HANDLE_ATTRIBUTES
@@ -159,7 +159,7 @@ def _object_reads(package: Package) -> Iterator[Hit]:
         for node in index.attributes:
             if node.attr.startswith("_"):
                 continue
-            enum = POLICY_ENUMS.get(index.qualified(node.value) or "") \
+            enum = ENUMS.get(index.qualified(node.value) or "") \
                 if isinstance(node.value, (ast.Name, ast.Attribute)) else None
             if enum is not None and not _MEMBER.fullmatch(node.attr):
                 continue

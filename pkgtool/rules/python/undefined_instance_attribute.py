@@ -15,6 +15,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._assignments import assigned_values, is_none
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
+from pkgtool.rules.python._own_callees import rebound_around
 from pkgtool.rules.python._package_modules import (imported_from_package, module_names,
                                                    modules_by_name)
 from pkgtool.rules.python._value_types import attribute_stores
@@ -24,8 +25,13 @@ from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
 _OPENING = frozenset({"__getattr__", "__getattribute__"})
 """Methods through which a class may have any attribute."""
-_DECORATORS = frozenset({"dataclass", "dataclasses.dataclass"})
+_DECORATORS = frozenset({"dataclass", "dataclasses.dataclass", "unique", "enum.unique"})
 """Class decorators that add no attribute a user reads (a dataclass's fields are its own)."""
+ENUMS = frozenset({"enum.Enum", "enum.Flag"})
+"""Bases whose classes get their members from their own body (``IntEnum`` and ``StrEnum``
+members have every method of ``int`` and ``str`` too: left alone)."""
+ENUM_ATTRIBUTES = frozenset({"name", "value"})
+"""What an enum member has besides its class's body (names starting with ``_`` aside)."""
 _BLOCKS = (ast.If, ast.For, ast.AsyncFor, ast.While, ast.With, ast.AsyncWith, *TRIES)
 """Statements whose blocks run at module level."""
 _DEPTH = 8
@@ -86,7 +92,8 @@ def _closed(dotted: str, package: Package, depth: int = 0) -> bool:
             any(isinstance(s, FUNCTIONS) and s.name in _OPENING for s in cls.body):
         return False
     for base in cls.bases:
-        if isinstance(base, ast.Name) and base.id == "object":
+        if isinstance(base, ast.Name) and base.id == "object" or \
+                isinstance(base, (ast.Name, ast.Attribute)) and index.qualified(base) in ENUMS:
             continue
         found = _resolved(base.id, index, package) if isinstance(base, ast.Name) else None
         if found is None or not _closed(found, package, depth + 1):
@@ -95,9 +102,10 @@ def _closed(dotted: str, package: Package, depth: int = 0) -> bool:
 
 
 def _attributes(dotted: str, package: Package) -> set[str]:
-    """The names the class body and its bases' bodies bind."""
+    """The names the class body and its bases' bodies bind (and an enum's ``name`` and
+    ``value``)."""
     cls, index = _classes(package)[dotted]
-    found = set(scope_bindings(cls))
+    found = set(scope_bindings(cls)) | ENUM_ATTRIBUTES
     for base in cls.bases:
         named = _resolved(base.id, index, package) if isinstance(base, ast.Name) else None
         found |= _attributes(named, package) if named else set()
@@ -107,35 +115,77 @@ def _attributes(dotted: str, package: Package) -> set[str]:
 def _instance_of(value: ast.expr, package: Package, tree: ast.Module, index: Index
                  ) -> str | None:
     """The closed package class every value assigned to ``value`` (a local name or
-    ``self.x``) is made by, ``None`` placeholders aside."""
+    ``self.x``) is made by, ``None`` placeholders aside; or that a parameter is annotated
+    with, when nothing rebinds it."""
+    assigned_all = assigned_values(value, package, tree, index)
+    if assigned_all is None and isinstance(value, ast.Name):
+        found = _annotated(value, index, package)
+        return found if found and _closed(found, package) and \
+            "__new__" not in _attributes(found, package) else None
     made: set[str | None] = set()
-    for assigned, assigned_index in assigned_values(value, package, tree, index) or ():
+    for assigned, assigned_index in assigned_all or ():
         if is_none(assigned):
             continue
         func = assigned.func if isinstance(assigned, ast.Call) else None
         made.add(_resolved(func.id, assigned_index, package) if isinstance(func, ast.Name)
                  else None)
     found = next(iter(made)) if len(made) == 1 else None
+    return found if found and _closed(found, package) and \
+        "__new__" not in _attributes(found, package) else None  # __new__ may make another
+
+
+def _annotated(name: ast.Name, index: Index, package: Package) -> str | None:
+    """The package class a parameter is annotated with (``grid: Grid``), when the function
+    around ``name`` never rebinds it."""
+    function = index.enclosing_function(name, through_lambdas=False)
+    if function is None or scope_bindings(function)[name.id] != 1:
+        return None
+    arguments = function.args
+    parameters = (*arguments.posonlyargs, *arguments.args, *arguments.kwonlyargs)
+    note = next((a.annotation for a in parameters if a.arg == name.id), None)
+    named = note.id if isinstance(note, ast.Name) else note.value if isinstance(
+        note, ast.Constant) and isinstance(note.value, str) else None
+    return _resolved(named, index, package) if named else None
+
+
+def _class_read(target: ast.expr, node: ast.Attribute, index: Index, package: Package
+                ) -> str | None:
+    """The closed package class ``target`` names (``Outcome`` in ``Outcome.DONE``), when no
+    scope around the read rebinds the name."""
+    if not isinstance(target, ast.Name) or rebound_around(node, target.id, index):
+        return None
+    found = _resolved(target.id, index, package)
     return found if found and _closed(found, package) else None
+
+
+def _candidate(target: ast.expr, node: ast.Attribute, index: Index, package: Package) -> bool:
+    """True for a read on a name (not ``self``, not an imported module) or on ``<name>.x``."""
+    if isinstance(target, ast.Attribute):
+        return isinstance(target.value, ast.Name)
+    return isinstance(target, ast.Name) and target.id not in ("self", "cls") and (
+        target.id not in index.aliases or _class_read(target, node, index, package) is not None)
 
 
 @rule("PYC064", "undefined-instance-attribute", Severity.ERROR,
       fix="Use the attribute the class defines (check the spelling)")
 def undefined_instance_attribute(package: Package) -> Iterator[Hit]:
-    """Code reads an attribute that an instance of one of the package's own classes lacks.
+    """Code reads an attribute that one of the package's own classes, or its instance, lacks.
 
     ## What it does
-    In installed modules, reports `x.name` read where `x` is a local name or `self.x` that
-    always holds an instance of a class of the package (every assignment of it is
-    `x = Processor(...)`, `None` placeholders aside; the class defined in the module or
-    imported from another module of the package), when nothing in the package defines or
-    stores an attribute `name` anywhere. Only classes whose instances get attributes from
-    their own body, their bases and stores alone are checked: bases from outside the package
-    (`Node`, `Exception`), a metaclass, class decorators other than `@dataclass`,
-    `__getattr__`, and modules storing attributes in ways not written as `x.name = ...`
-    (`setattr`, `__dict__`, `__slots__`) leave a class alone; so do names the module probes
-    with `hasattr`/`getattr` and reads inside a `try` that catches `AttributeError`. Node
-    classes are PYC023's.
+    In installed modules, reports `x.name` read where `x` is a class of the package
+    (`Outcome.DONE`; defined in the module or imported from another module of the package,
+    the name rebound nowhere around the read), or a local name, a parameter or `self.x`
+    that always holds an instance of one (every assignment of it is `x = Processor(...)`,
+    `None` placeholders aside, or the parameter is annotated `x: Processor` and never
+    rebound), when the class and its bases bind no `name` and nothing in the package defines
+    or stores an attribute `name` anywhere. Only classes whose attributes come from their own
+    body, their bases and stores alone are checked: bases from outside the package (`Node`,
+    `Exception`, `IntEnum`; `Enum` and `Flag` are fine), a metaclass, class decorators other
+    than `@dataclass` and `@unique`, `__getattr__`, and modules storing attributes in ways
+    not written as `x.name = ...` (`setattr`, `__dict__`, `__slots__`) leave a class alone;
+    so do instances of a class with `__new__` (it may make another), names starting with `_`
+    read on a class, names the module probes with `hasattr`/`getattr` and reads inside a
+    `try` that catches `AttributeError`. Node classes are PYC023's.
 
     ## Why is this bad?
     The read raises `AttributeError` when it runs, which in a node usually means in a
@@ -162,20 +212,23 @@ def undefined_instance_attribute(package: Package) -> Iterator[Hit]:
         probed: frozenset[str] | None = None
         for node in index.attributes:
             target = node.value
-            if node.attr in everywhere or node.attr.startswith("__") or not (
-                    isinstance(target, ast.Name) and target.id not in index.aliases or
-                    isinstance(target, ast.Attribute) and isinstance(target.value, ast.Name)):
+            if node.attr in everywhere or node.attr.startswith("__") or not _candidate(
+                    target, node, index, package):
                 continue
-            dotted = _instance_of(target, package, tree, index)
+            cls = _class_read(target, node, index, package)
+            dotted = cls or _instance_of(target, package, tree, index)
             probed = probed_names(index) if probed is None else probed
-            if dotted is None or guarded(node, index, probed):
+            if dotted is None or guarded(node, index, probed) or \
+                    cls is not None and node.attr.startswith("_") or \
+                    node.attr in _attributes(dotted, package):
                 continue
             name = dotted.rpartition(".")[2]
             meant = typo_of(node.attr, _attributes(dotted, package))
             hint = f" (did you mean `{meant}`?)" if meant else ""
+            what = f"the package's class `{name}`" if cls else \
+                f"an instance of the package's class `{name}`"
             yield Hit(Span(module.path, node.end_lineno or node.lineno,
                            (node.end_col_offset or 0) - len(node.attr) + 1),
-                      f"`{ast.unparse(target)}` is an instance of the package's class `{name}` "
-                      f"(`{dotted}`), which has no attribute `{node.attr}`{hint}: nothing "
-                      "defines or stores it, so reading it raises AttributeError",
-                      f"Write `{meant}`" if meant else None)
+                      f"`{ast.unparse(target)}` is {what} (`{dotted}`), which has no attribute "
+                      f"`{node.attr}`{hint}: nothing defines or stores it, so reading it "
+                      "raises AttributeError", f"Write `{meant}`" if meant else None)
