@@ -234,6 +234,17 @@ def instance_attribute(package: Package, findings: list[Finding]) -> Iterator[Fi
     yield from renames(package, findings, re.compile(r"has no attribute `(\w+)`"), _WRITE_NAME)
 
 
+@fixer("PYC029", "Write the keyword rclpy's function takes that the misspelt one is close to",
+       safe=False)
+def rclpy_keyword(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename a keyword no rclpy distribution takes to the parameter a typo away
+    (``callback_grup=`` to ``callback_group=``); a near name that is no typo (``timeout=``
+    for ``timeout_sec=``) is left to the user. Unsafe: it guesses which parameter was meant;
+    the call raised TypeError before."""
+    yield from renames(package, findings, re.compile(r"has no `(\w+)` argument"),
+                       re.compile(r"Write `(\w+)=`"))
+
+
 @fixer("PYC014", "Read the declared parameter the misspelt name is close to", safe=False)
 def parameter_read(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Rename a parameter read but never declared to the one declared parameter spelled like

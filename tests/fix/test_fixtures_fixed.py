@@ -26,7 +26,7 @@ PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprec
               "misspelled_fields", "workspace_interfaces")),
           ("PYC014", "misspelled_read_after_alias"), ("SET016", "misspelled_keywords"),
           ("PYC063", "misspelled_standard_names"), ("PYC064", "misspelt_methods"),
-          ("PYC065", "misspelt_names_and_marks"),
+          ("PYC065", "misspelt_names_and_marks"), ("PYC029", "keywords_no_distribution_takes"),
           ("PYC014", "misspelled_reads"), ("DAT009", "misspelled_node")}
 """GPLv3 can mean -only or -or-later, `my_robot_description` is no known package, values outside
 `ros__parameters` belong to a node only the user knows, a node without its executable names
@@ -39,10 +39,11 @@ installed name would not, `len()` for a string field and a parameter's text in a
 something only the author knows, and a misspelt field, executable, parameter or node block is
 renamed only when exactly one name is spelled like it (positional message arguments, a class's
 attributes, fields of a message with none, an executable or parameter close to nothing, a node
-with a namespace are left; `test_requires` wants a test extra more than `tests_require`, and
-`collections.Mapping` an import of `collections.abc`): no
-fix guesses, the user chooses; the other findings of the case are fixed."""
+with a namespace are left; `test_requires` wants a test extra more than `tests_require`,
+`collections.Mapping` an import of `collections.abc`, and `threads=` is a typo of no parameter
+of an executor): no fix guesses, the user chooses; the other findings of the case are fixed."""
 MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages"),
+          ("PYC029", "near_keywords"),
           ("MAN018", "standard_library_modules"), ("DAT001", "typo_in_path"),
           ("DAT008", "flat_file_for_a_component_and_a_node"),
           ("LCH005", "launch_node_through_alias"), ("LCH005", "remappings_not_pairs"),
@@ -81,7 +82,8 @@ positional arguments; ENT003 renames a function only to a close one (`run` is no
 `main`), and a Node class needs a `main` the author writes; PYC014 renames reads, and moving a
 declaration is the author's call; PYC025 does not guess the list a number or a string given to
 a sequence stands for; `talker_node` for `talker` (LCH001) and a block `main_talker` for the
-node `talker` (DAT009) are more than a typo away: other names, maybe meant."""
+node `talker` (DAT009) are more than a typo away: other names, maybe meant, and so is
+`timeout=` for `timeout_sec=` (PYC029)."""
 
 REVEALED = {("PYC013", "called_callbacks"): {"PYC026"},
             ("LCH005", "parameters_not_a_list"): {"DAT012"},

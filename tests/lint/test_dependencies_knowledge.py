@@ -178,3 +178,32 @@ def test_rclpy_classes_table_knows_every_attribute_of_real_objects() -> None:
         rclpy.shutdown(context=context)
     assert {cls: names for cls, names in unknown.items() if names} == {}
     assert sorted(made) == sorted(classes())
+
+
+@pytest.mark.ros
+def test_rclpy_signatures_table_knows_every_parameter_of_the_installed_rclpy() -> None:
+    """No false error: every parameter the installed (Jazzy) rclpy's functions, methods and
+    constructors take is in PYC029's table, and a function taking ``**kwargs`` says so."""
+    import importlib
+    import inspect
+
+    from pkgtool.knowledge.generate_rclpy_signatures import FUNCTIONS, METHODS
+    from pkgtool.knowledge.rclpy_signatures import parameters_of
+
+    wanted = {name: f"{cls}.{name}" for cls, names in METHODS.items() for name in names}
+    wanted.update(FUNCTIONS)
+    missing = {}
+    for call, where in wanted.items():
+        module_name, *attributes = where.split(".")
+        found: object = importlib.import_module(module_name)
+        for attribute in attributes:
+            try:
+                found = getattr(found, attribute)
+            except AttributeError:
+                found = importlib.import_module(f"{found.__name__}.{attribute}")  # type: ignore
+        parameters = inspect.signature(found).parameters.values()  # type: ignore[arg-type]
+        names = {p.name if p.kind is not p.VAR_KEYWORD else "**" for p in parameters
+                 if p.kind is not p.VAR_POSITIONAL} - {"self"}
+        if names - (parameters_of(call) or set()):
+            missing[call] = sorted(names - (parameters_of(call) or set()))
+    assert missing == {}

@@ -6,11 +6,13 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.rclpy_signatures import methods, parameters_of
+from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import PARAMETERS, node_api_calls, node_constructions
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import installed_trees
+from pkgtool.rules.syntax_trees import Index, installed_trees
 
 WRONG_KEYWORDS: dict[str, dict[str, str]] = {
     "wait_for_service": {"timeout": "timeout_sec"},
@@ -19,6 +21,8 @@ WRONG_KEYWORDS: dict[str, dict[str, str]] = {
     "spin_until_future_complete": {"timeout": "timeout_sec"},
     "create_timer": {"period": "timer_period_sec", "timer_period": "timer_period_sec",
                      "period_sec": "timer_period_sec"},
+    "create_publisher": {"queue_size": "qos_profile"},
+    "create_subscription": {"queue_size": "qos_profile"},
     "declare_parameter": {"default": "value", "default_value": "value"},
     "get_parameter_or": {"default": "alternative_value", "default_value": "alternative_value"},
 }
@@ -51,14 +55,21 @@ def unexpected_rclpy_keyword(package: Package) -> Iterator[Hit]:
     Reports keywords that rclpy's functions do not have, where people reach for a near
     name: `timeout=` for `timeout_sec=` (`wait_for_service`, `wait_for_server`, `spin_once`,
     `spin_until_future_complete`), `period=` for `timer_period_sec=` (`create_timer`),
+    `queue_size=` (rospy's) for `qos_profile=` (`create_publisher`, `create_subscription`),
     `default=` or `default_value=` for `value=` (`declare_parameter`) and for
     `alternative_value=` (`get_parameter_or`), and `name=` for `node_name=` (Node
     constructors: `super().__init__(...)` in a Node subclass, `Node(...)`,
     `rclpy.create_node(...)`). Also a keyword naming a parameter that the positional
     arguments already fill (`create_subscription(Twist, 'cmd', self.cb, 10, callback=...)`)
-    of `create_publisher`, `create_subscription`, `create_service` and `create_client`. As
-    for the other rclpy checks, only modules importing rclpy are looked at, and not when the
-    package defines a function of the same name (a wrapper of its own).
+    of `create_publisher`, `create_subscription`, `create_service` and `create_client`. And
+    any keyword that none of Humble's, Jazzy's and Rolling's rclpy takes, with the parameter
+    a typo away when there is one (`callback_grup=`, `timeot_sec=`), in the calls of a
+    generated table: a node's `create_*`, `declare_parameter(s)` and `get_parameter_or`, a
+    client's `call_async` and `wait_for_service`, an action client's `send_goal_async` and
+    `wait_for_server`, `rclpy.init`, `spin`, `spin_once`, `spin_until_future_complete`,
+    node constructors, `ActionServer`, `ActionClient` and the executors. As for the other
+    rclpy checks, only modules importing rclpy are looked at, and not when the package
+    defines a function of the same name (a wrapper of its own).
 
     ## Why is this bad?
     Python raises `TypeError: ... got an unexpected keyword argument 'timeout'` when the line
@@ -100,3 +111,48 @@ def unexpected_rclpy_keyword(package: Package) -> Iterator[Hit]:
                 yield Hit(Span(module.path, keyword.lineno, keyword.col_offset + 1),
                           f"A node's constructor has no `{keyword.arg}` argument: it raises "
                           "TypeError", f"Write `{meant}=`")
+            if _plain_node(call, index):
+                yield from _unknown(module.path, call, "rclpy.node.Node",
+                                    "A node's constructor", NODE_KEYWORDS)
+        for call in index.calls:
+            named = index.qualified(call.func) if isinstance(call.func, (ast.Name,
+                                                                         ast.Attribute)) else None
+            if named and named.startswith("rclpy.") and named not in _NODES:
+                yield from _unknown(module.path, call, named, f"`{named.rpartition('.')[2]}()`",
+                                    WRONG_KEYWORDS.get(named.rpartition(".")[2], {}))
+    for module, call, method, _ in node_api_calls(package, methods()):
+        if method not in defined:
+            yield from _unknown(module.path, call, method, f"`{method}()`",
+                                WRONG_KEYWORDS.get(method, {}))
+
+
+_NODES = ("rclpy.node.Node", "rclpy.create_node")
+"""What makes a plain rclpy node (``Node.__init__``'s keywords)."""
+
+
+def _plain_node(call: ast.Call, index: Index) -> bool:
+    """True for ``Node(...)``, ``rclpy.create_node(...)`` and ``super().__init__(...)`` in a
+    class deriving from ``rclpy.node.Node`` alone (a lifecycle node takes more keywords)."""
+    if isinstance(call.func, (ast.Name, ast.Attribute)) and index.qualified(call.func) in _NODES:
+        return True
+    cls = index.enclosing_class(call)
+    return cls is not None and bool(cls.bases) and \
+        all(index.qualified(b) == "rclpy.node.Node" for b in cls.bases)
+
+
+def _unknown(path: str, call: ast.Call, name: str, shown: str, curated: dict[str, str]
+             ) -> Iterator[Hit]:
+    """A hit for each keyword of ``call`` that rclpy's ``name`` takes on no distribution,
+    except those ``curated`` reports with its own words."""
+    parameters = parameters_of(name)
+    if parameters is None or "**" in parameters:
+        return
+    for keyword in call.keywords:
+        if keyword.arg is None or keyword.arg in parameters or keyword.arg in curated:
+            continue
+        meant = typo_of(keyword.arg, parameters)
+        hint = f" (did you mean `{meant}`?)" if meant else ""
+        yield Hit(Span(path, keyword.lineno, keyword.col_offset + 1),
+                  f"{shown} has no `{keyword.arg}` argument{hint}: it raises TypeError",
+                  f"Write `{meant}=`" if meant else
+                  f"Use one of its parameters: {', '.join(sorted(parameters))}")
