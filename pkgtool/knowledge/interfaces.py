@@ -17,6 +17,7 @@ import re
 from collections.abc import Mapping
 from functools import cache
 
+from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.knowledge.tables import DEFAULT_DISTRO, FLAGS, read
 from pkgtool.records import record
 
@@ -132,10 +133,13 @@ _MEANT = {"msg": "msg", "message": "msg", "srv": "srv", "service": "srv", "actio
 
 def meant_kind(word: str) -> str | None:
     """The kind a misspelled interface module name means (``msgs``, ``Msg``, ``messages``,
-    ``srvs``, ``services``, ``actions``: ``msg``, ``srv``, ``action``); None for a kind
-    itself and for any other word."""
+    ``srvs``, ``services``, ``actions``, a typo of four letters or more such as ``acton``:
+    ``msg``, ``srv``, ``action``); None for a kind itself and for any other word (``ms``,
+    ``src`` and ``mgs`` are too short to tell)."""
     lower = word.lower()
     kind = _MEANT.get(lower[:-1] if lower.endswith("s") else lower)
+    near = typo_of(lower, _MEANT) if kind is None and len(lower) > 3 else None
+    kind = kind or (_MEANT[near] if near else None)
     return kind if word not in KINDS else None
 
 

@@ -86,7 +86,7 @@ def test_the_table_speaks_for_jazzy_only() -> None:
 @pytest.mark.parametrize(("word", "kind"), [
     ("msgs", "msg"), ("Msg", "msg"), ("messages", "msg"), ("srvs", "srv"), ("Service", "srv"),
     ("actions", "action"), ("msg", None), ("srv", None), ("action", None), ("utils", None),
-    ("ms", None),
+    ("ms", None), ("acton", "action"), ("mesage", "msg"), ("src", None),
 ])
 def test_meant_kind(word: str, kind: str | None) -> None:
     assert interfaces.meant_kind(word) == kind

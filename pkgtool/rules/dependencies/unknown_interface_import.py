@@ -11,9 +11,11 @@ from pkgtool.knowledge.interfaces import (KINDS, WORDS, Mismatch, generated_modu
 from pkgtool.knowledge.ros_names import ROS_SUFFIXES
 from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
+from pkgtool.model.span import Span
 from pkgtool.rules.imports import all_python
 from pkgtool.rules.dependencies.interface_types import interfaces_for, patched_interfaces
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import index_of, python_files, resolved_attributes
 
 
 @rule("DEP008", "unknown-interface-import", Severity.ERROR,
@@ -41,7 +43,8 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
     package's installed code assigns onto the module (`rosgraph_msgs.msg.Log =
     rcl_interfaces.msg.Log`, as ROS 1 compatibility shims do) exists.
 
-    Also reports a misspelled module of an interface package (`std_msgs.msgs`,
+    The same goes for a name read on the module (`std_msgs.msg.Strng()` after `import
+    std_msgs.msg`). Also reports a misspelled module of an interface package (`std_msgs.msgs`,
     `geometry_msgs.message`, `example_interfaces.srvs`, `from std_msgs import Msg`) and an
     interface imported from the package itself (`from std_msgs import String`): the
     Python module of a ROS 2 interface package holds only `msg`, `srv` and `action`. An
@@ -91,6 +94,27 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
                     parts[0], parts[1], name, known, package.context.distro)
                 if found:
                     yield Hit(imported.span, _message(found), _fix(found))
+    yield from _attribute_reads(package)
+
+
+def _attribute_reads(package: Package) -> Iterator[Hit]:
+    """``std_msgs.msg.Strng`` read through ``import std_msgs.msg``: a name the interface
+    module lacks."""
+    patched = patched_interfaces(package)
+    for path, _, tree in python_files(package, (".msg.", ".srv.", ".action.")):
+        index = index_of(tree)
+        for node, owner, name in resolved_attributes(index):
+            parts = owner.split(".")
+            known = interfaces_for(package, parts[0]) \
+                if len(parts) == 2 and parts[1] in KINDS and not name.startswith("_") else None
+            found = mismatch(parts[0], parts[1], name, known, package.context.distro) \
+                if known is not None and (parts[0], parts[1], name) not in patched else None
+            if found:
+                kind, meant = (found.actual, found.name) if found.actual else \
+                    found.close or (None, None)
+                yield Hit(Span(path, node.end_lineno or node.lineno,
+                               (node.end_col_offset or 0) - len(name) + 1), _message(found),
+                          f"Write `{found.package}.{kind}.{meant}`" if kind else None)
 
 
 def _misspelled_module(package: Package, imported: Import) -> Iterator[Hit]:
