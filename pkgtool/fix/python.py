@@ -305,3 +305,13 @@ def pytest_name(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     name was meant; the test module or the test did not run as written before."""
     yield from renames(package, findings,
                        re.compile(r"(?:^`pytest\.mark\.|^`pytest` has no `)(\w+)`"), _WRITE_NAME)
+
+
+@fixer("PYC066", "Name the test function's parameter the misspelt one is close to",
+       safe=False)
+def parametrize_name(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename a name of ``parametrize`` to the parameter of the test function spelled like
+    it (``sped`` to ``speed``). Unsafe: it guesses which parameter was meant; pytest refused
+    the test before."""
+    yield from renames(package, findings, re.compile(r"^`parametrize` names `(\w+)`"),
+                       _WRITE_NAME)

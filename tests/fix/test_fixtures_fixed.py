@@ -27,7 +27,7 @@ PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprec
           ("PYC014", "misspelled_read_after_alias"), ("SET016", "misspelled_keywords"),
           ("PYC063", "misspelled_standard_names"), ("PYC064", "misspelt_methods"),
           ("PYC065", "misspelt_names_and_marks"), ("PYC029", "keywords_no_distribution_takes"),
-          ("DEP008", "typos_and_module_reads"),
+          ("DEP008", "typos_and_module_reads"), ("PYC066", "misspelt_names"),
           ("PYC014", "misspelled_reads"), ("DAT009", "misspelled_node")}
 """GPLv3 can mean -only or -or-later, `my_robot_description` is no known package, values outside
 `ros__parameters` belong to a node only the user knows, a node without its executable names
