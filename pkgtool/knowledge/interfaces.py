@@ -131,6 +131,7 @@ WORDS = {"msg": "message", "srv": "service", "action": "action"}
 _MEANT = {"msg": "msg", "message": "msg", "srv": "srv", "service": "srv", "action": "action"}
 
 
+@cache
 def meant_kind(word: str) -> str | None:
     """The kind a misspelled interface module name means (``msgs``, ``Msg``, ``messages``,
     ``srvs``, ``services``, ``actions``, a typo of four letters or more such as ``acton``:

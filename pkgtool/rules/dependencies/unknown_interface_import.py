@@ -100,7 +100,6 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
 def _attribute_reads(package: Package) -> Iterator[Hit]:
     """``std_msgs.msg.Strng`` read through ``import std_msgs.msg``: a name the interface
     module lacks."""
-    patched = patched_interfaces(package)
     for path, _, tree in python_files(package, (".msg.", ".srv.", ".action.")):
         index = index_of(tree)
         for node, owner, name in resolved_attributes(index):
@@ -108,7 +107,8 @@ def _attribute_reads(package: Package) -> Iterator[Hit]:
             known = interfaces_for(package, parts[0]) \
                 if len(parts) == 2 and parts[1] in KINDS and not name.startswith("_") else None
             found = mismatch(parts[0], parts[1], name, known, package.context.distro) \
-                if known is not None and (parts[0], parts[1], name) not in patched else None
+                if known is not None and (parts[0], parts[1], name) not in \
+                patched_interfaces(package) else None
             if found:
                 kind, meant = (found.actual, found.name) if found.actual else \
                     found.close or (None, None)

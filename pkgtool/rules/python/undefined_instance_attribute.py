@@ -203,7 +203,9 @@ def undefined_instance_attribute(package: Package) -> Iterator[Hit]:
     edges = self.processor.detect_edges(image)
     ```
     """
-    if not any(_closed(dotted, package) for dotted in _classes(package)):
+    if not any(not any((index.qualified(b) or "").startswith("rclpy.") for b in cls.bases)
+               for _, _, index in installed_trees(package) for cls in index.classes) or \
+            not any(_closed(dotted, package) for dotted in _classes(package)):
         return  # no class whose instances' attributes are all known (node classes only)
     everywhere = attribute_stores(package)
     if everywhere is None:
