@@ -204,9 +204,15 @@ def yaml_problem(path: str, text: str, *, documents: bool = True) -> object:
 
     loader = getattr(yaml, "CSafeLoader", yaml.SafeLoader)  # libyaml when available: ~10x faster
     try:
-        if documents:
-            return list(yaml.compose_all(text, Loader=loader))
-        return yaml.compose(text, Loader=loader)
+        composed = list(yaml.compose_all(text, Loader=loader)) if documents else \
+            yaml.compose(text, Loader=loader)
+        looped = _holding_itself(composed if documents else [composed])
+        if looped is not None:
+            mark = looped.start_mark
+            return ParseProblem("yaml-syntax", Span(path, mark.line + 1, mark.column + 1),
+                                "an alias stands for a mapping or list that holds it: the "
+                                "value never ends")
+        return composed
     except yaml.MarkedYAMLError as error:
         mark = error.problem_mark or error.context_mark
         line, col = (mark.line + 1, mark.column + 1) if mark else (1, 1)
@@ -214,6 +220,30 @@ def yaml_problem(path: str, text: str, *, documents: bool = True) -> object:
     except (yaml.YAMLError, RecursionError) as error:
         detail = str(error) or "the YAML is nested too deeply"
         return ParseProblem("yaml-syntax", Span(path, 1, 1), detail)
+
+
+def _holding_itself(roots: list) -> object | None:
+    """A collection node that holds itself through aliases (``a: &x {b: *x}``), or None."""
+    done: set[int] = set()
+    for root in roots:
+        stack: list[tuple[object, bool]] = [(root, False)]
+        open_now: set[int] = set()
+        while stack:
+            node, leaving = stack.pop()
+            if leaving:
+                open_now.discard(id(node))
+                done.add(id(node))
+                continue
+            if id(node) in open_now:
+                return node
+            if id(node) in done or getattr(node, "id", "") not in ("mapping", "sequence"):
+                continue
+            open_now.add(id(node))
+            stack.append((node, True))
+            items = getattr(node, "value")
+            children = [v for pair in items for v in pair] if node.id == "mapping" else items
+            stack.extend((child, False) for child in children)
+    return None
 
 
 def _yaml(path: str, text: str) -> Read | ParseProblem:

@@ -330,3 +330,16 @@ def test_doubling_names_stay_bounded() -> None:
     lines = ["a0 = 'x'"] + [f"a{i} = a{i - 1} + a{i - 1}" for i in range(1, 64)]
     launch = _py("\n".join(lines) + "\nNode(package=a63, executable=a3)\n")
     assert _nodes(launch) == [(None, "x" * 8, 65)]
+
+
+def test_a_yaml_alias_holding_itself_is_a_syntax_problem() -> None:
+    """A mapping that holds itself through an alias never ends: rules walking it would
+    recurse forever, so the file is a syntax problem (SYN001) where that mapping starts; an
+    alias used twice side by side is no loop."""
+    from pkgtool.model.launch_reader import yaml_problem
+    from pkgtool.model.span import ParseProblem
+
+    found = yaml_problem("p.yaml", "a: &x\n  b: 1\n  c: *x\n")
+    assert isinstance(found, ParseProblem) and found.span.line == 1
+    shared = yaml_problem("p.yaml", "d: &x {r: 1}\nn:\n  p: *x\n  q: *x\n")
+    assert isinstance(shared, list)
