@@ -13,8 +13,9 @@ from pkgtool.knowledge.rclpy_missing import missing_attribute
 from pkgtool.knowledge.rclpy_names import close_name, defined_on, defines
 from pkgtool.knowledge.rclpy_node import GOAL_HANDLE_ATTRIBUTES
 from pkgtool.model.ast_nodes import nodes_of_class
-from pkgtool.model.modules import Import
+from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.package import Package
+from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.python._callbacks import callback_arguments
@@ -22,18 +23,20 @@ from pkgtool.rules.python._message_instances import callback_function
 from pkgtool.rules.python._rclpy_objects import object_class
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings
-from pkgtool.rules.syntax_trees import installed_trees, resolved_attributes
+from pkgtool.rules.syntax_trees import Index, index_of, installed_trees, resolved_attributes
+from pkgtool.rules.test_modules import test_files
 
 
 @rule("PYC004", "rclpy-missing-attribute", Severity.ERROR,
       fix="Use the rclpy API that exists (see the message)")
 def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
-    """Installed code uses an rclpy attribute that does not exist.
+    """Installed code or a test uses an rclpy attribute that does not exist.
 
     ## What it does
-    Reports reads and imports of rclpy modules and names that do not exist: misspelt modules
-    (`from rclpy.nodes import Node`, `import rclpy.excutors`), misspelt names (`from
-    rclpy.qos import QoSProfil`, `rclpy.executors.SingleThreadExecutor`), checked against the
+    Reports reads and imports of rclpy modules and names that do not exist, in installed
+    modules and tests: misspelt modules (`from rclpy.nodes import Node`, `import
+    rclpy.excutors`), misspelt names (`from rclpy.qos import QoSProfil`,
+    `rclpy.executors.SingleThreadExecutor`), checked against the
     modules of rclpy and the names each defines in the target distribution (Humble or Jazzy:
     `from rclpy.event_handler import ...` fails on Humble; for another target, a name Humble,
     Jazzy or Rolling has is accepted); imports under `try/except ImportError` or `if
@@ -85,7 +88,7 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
     distro = package.context.distro
     yield from _goal_handle_reads(package)
     yield from _object_reads(package)
-    for module, _, index in installed_trees(package):
+    for module, index in _checked_modules(package):
         for node, owner, attr in resolved_attributes(index):
             if owner.split(".")[0] != "rclpy" or index.in_unevaluated_annotation(node):
                 continue
@@ -116,6 +119,19 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
             if imported.top_level == "rclpy" and not imported.guarded and \
                     imported.span.line not in curated:
                 yield from _missing_import(imported, distro)
+
+
+def _checked_modules(package: Package) -> Iterator[tuple[PythonModule, Index]]:
+    """The installed modules and the test modules (whose rclpy imports and names fail the
+    same way), each with its index."""
+    installed = installed_trees(package)
+    yield from ((module, index) for module, _, index in installed)
+    tests = test_files(package) - {module.path for module, _, _ in installed}
+    for module in package.modules:
+        tree = parse_tree(module.path, package.texts[module.path]) \
+            if module.path in tests and module.path in package.texts else None
+        if isinstance(tree, ast.Module):
+            yield module, index_of(tree)
 
 
 _HANDLED = frozenset({"execute_callback", "cancel_callback", "handle_accepted_callback"})
