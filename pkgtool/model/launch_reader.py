@@ -6,6 +6,7 @@ Nothing is executed. Substitutions that only resolve at launch time (``$(var x)`
 
 from __future__ import annotations
 
+import functools
 import math
 import re
 from collections.abc import Iterator
@@ -195,10 +196,13 @@ def _elements(root: XmlElement) -> Iterator[XmlElement]:
 
 
 # YAML ------------------------------------------------------------------------------------
+@functools.lru_cache(maxsize=32)
 def yaml_problem(path: str, text: str, *, documents: bool = True) -> object:
     """The composed YAML node (or, with ``documents``, the list of them), or a ParseProblem.
 
     Composing builds no Python object and runs no tag constructor: it only checks syntax.
+    Cached for the last few files (the model checks every YAML file's syntax, and three
+    rules read parameter files again): callers must treat the nodes as read-only.
     """
     import yaml
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import ast
 import posixpath
+from collections.abc import Iterator
 from fnmatch import fnmatch
 
 from pkgtool.model.installed import installed_files
@@ -98,6 +99,14 @@ def _shipped_code(package: Package, module: PythonModule, config: PytestConfig) 
         return True
     tree = parse_tree(path, package.texts[path]) if path in package.texts else None
     return not isinstance(tree, ast.Module) or first_test(tree, config) is None
+
+
+def test_trees(package: Package) -> Iterator[tuple[str, ast.Module]]:
+    """(path, tree) of each of the package's :func:`test_files` that parses, in path order."""
+    for path in sorted(test_files(package)):
+        tree = parse_tree(path, package.texts[path]) if path in package.texts else None
+        if isinstance(tree, ast.Module):
+            yield path, tree
 
 
 def is_test_code(package: Package, module: PythonModule) -> bool:

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.launch_reader import yaml_problem
 from pkgtool.model.package import Package, is_test_material
-from pkgtool.model.span import Span
+from pkgtool.rules.node_parameters import span_of
 from pkgtool.rules.registry import rule
 
 PARAMS_KEY = "ros__parameters"
@@ -19,11 +19,6 @@ def _mapping(node: object) -> bool:
 
 def _key(node: object) -> str | None:
     return str(getattr(node, "value")) if getattr(node, "id", None) == "scalar" else None
-
-
-def _span(path: str, node: object) -> Span:
-    mark = getattr(node, "start_mark")
-    return Span(path, mark.line + 1, mark.column + 1)
 
 
 def _parameter_blocks(node: object, seen: set[int]) -> Iterator[object]:
@@ -49,8 +44,8 @@ def _repeated(path: str, block: object, prefix: str, first: dict[str, object]
         if _mapping(value):  # a group: rcl merges a group written twice
             yield from _repeated(path, value, f"{prefix}{name}.", first)
         elif f"{prefix}{name}" in first:
-            earlier = _span(path, first[f"{prefix}{name}"])
-            yield Hit(_span(path, key), f"`{prefix}{name}` is given twice in these parameters "
+            earlier = span_of(path, first[f"{prefix}{name}"])
+            yield Hit(span_of(path, key), f"`{prefix}{name}` is given twice in these parameters "
                       f"(first on line {earlier.line}): ROS keeps only the last value",
                       related=(earlier,))
         else:

@@ -18,10 +18,29 @@ from pkgtool.rules.node_api import bases_are_nodes
 from pkgtool.rules.python._message_instances import (binding_counts, callback_function, kept,
                                                      method_receiver)
 from pkgtool.rules.python._value_types import attribute_stores, receiver_class
+from pkgtool.rules.scopes import scope_bindings
 from pkgtool.rules.syntax_trees import Index
 
 Assigned = list[tuple[ast.expr, Index]]
 """The values assigned, each with the index of its module."""
+
+
+def parameter_annotation(function: ast.FunctionDef | ast.AsyncFunctionDef, name: str
+                         ) -> ast.expr | None:
+    """The annotation of the parameter ``name`` of ``function`` (``future: Future``), when
+    nothing in the function rebinds it."""
+    arguments = function.args
+    parameters = (*arguments.posonlyargs, *arguments.args, *arguments.kwonlyargs)
+    note = next((a.annotation for a in parameters if a.arg == name), None)
+    return note if note is not None and scope_bindings(function)[name] == 1 else None
+
+
+def annotated_name(note: ast.expr | None) -> str | None:
+    """The class name an annotation writes: ``Grid`` or the forward reference ``'Grid'``."""
+    if isinstance(note, ast.Name):
+        return note.id
+    return note.value if isinstance(note, ast.Constant) and isinstance(note.value, str) \
+        else None
 
 
 def is_none(value: ast.expr) -> bool:

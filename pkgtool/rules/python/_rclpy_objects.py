@@ -17,9 +17,9 @@ import ast
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.rules.node_api import derives_from_node_alone
-from pkgtool.rules.python._assignments import assigned_values, done_callback_futures, is_none
+from pkgtool.rules.python._assignments import (assigned_values, done_callback_futures, is_none,
+                                               parameter_annotation)
 from pkgtool.rules.python._value_types import receiver_class
-from pkgtool.rules.scopes import scope_bindings
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
 NODE = "rclpy.node.Node"
@@ -102,10 +102,8 @@ def _annotated_class(name: str, function: ast.FunctionDef | ast.AsyncFunctionDef
                      index: Index) -> str | None:
     """The rclpy class a parameter ``name`` of ``function`` is annotated with (``future:
     Future``), when nothing in the function rebinds it."""
-    arguments = function.args
-    parameters = (*arguments.posonlyargs, *arguments.args, *arguments.kwonlyargs)
-    note = next((a.annotation for a in parameters if a.arg == name), None)
-    if not isinstance(note, (ast.Name, ast.Attribute)) or scope_bindings(function)[name] != 1:
+    note = parameter_annotation(function, name)
+    if not isinstance(note, (ast.Name, ast.Attribute)):
         return None
     made = _CONSTRUCTED.get(index.qualified(note) or "")
     return made if made in (TIME, DURATION, FUTURE, CLOCK, *EXECUTORS, *ACTIONS.values()) \

@@ -12,11 +12,10 @@ from pkgtool.knowledge.rosdistro import is_typo
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.pytest_config import CONFIG_FILES
-from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, index_of
-from pkgtool.rules.test_modules import test_files
+from pkgtool.rules.test_modules import test_trees
 
 PYTEST_NAMES = frozenset("""
 Approx Cache CallInfo CaptureFixture Class CollectReport Collector Config Dir Directory
@@ -104,10 +103,7 @@ def misspelled_pytest_name(package: Package) -> Iterator[Hit]:
     """
     registered = "\n".join(text for path, text in package.texts.items()
                            if path in CONFIG_FILES or posixpath.basename(path) == "conftest.py")
-    for path in sorted(test_files(package)):
-        tree = parse_tree(path, package.texts[path]) if path in package.texts else None
-        if not isinstance(tree, ast.Module):
-            continue
+    for path, tree in test_trees(package):
         index = index_of(tree)
         for node in index.attributes:
             dotted = index.qualified(node)
@@ -130,11 +126,11 @@ def misspelled_pytest_name(package: Package) -> Iterator[Hit]:
             if imported.module == "pytest" and not imported.level:
                 for alias in imported.names:
                     near = [] if alias.name in PYTEST_NAMES else _near(alias.name, PYTEST_NAMES)
-                    uses = () if alias.asname else tuple(
-                        Span(path, n.lineno, n.col_offset + 1)
-                        for n in nodes_of_class(tree, ast.Name)
-                        if isinstance(n, ast.Name) and n.id == alias.name)
                     if near:
+                        uses = () if alias.asname else tuple(
+                            Span(path, n.lineno, n.col_offset + 1)
+                            for n in nodes_of_class(tree, ast.Name)
+                            if isinstance(n, ast.Name) and n.id == alias.name)
                         yield _hit(Span(path, imported.lineno, imported.col_offset + 1),
                                    alias.name, near, "importing the module fails, and none of "
                                    "its tests runs", uses)

@@ -8,11 +8,10 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.model.package import Package
-from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import index_of
-from pkgtool.rules.test_modules import test_files
+from pkgtool.rules.test_modules import test_trees
 
 
 def _names(argnames: ast.expr) -> list[str] | None:
@@ -57,10 +56,7 @@ def parametrize_unknown_argument(package: Package) -> Iterator[Hit]:
         ...
     ```
     """
-    for path in sorted(test_files(package)):
-        tree = parse_tree(path, package.texts[path]) if path in package.texts else None
-        if not isinstance(tree, ast.Module):
-            continue
+    for path, tree in test_trees(package):
         index = index_of(tree)
         for function in index.functions:
             arguments = function.args

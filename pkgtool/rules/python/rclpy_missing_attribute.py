@@ -15,7 +15,6 @@ from pkgtool.knowledge.rclpy_node import GOAL_HANDLE_ATTRIBUTES
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.package import Package
-from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.python._callbacks import callback_arguments
@@ -24,7 +23,7 @@ from pkgtool.rules.python._rclpy_objects import object_class
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings
 from pkgtool.rules.syntax_trees import Index, index_of, installed_trees, resolved_attributes
-from pkgtool.rules.test_modules import test_files
+from pkgtool.rules.test_modules import test_trees
 
 
 @rule("PYC004", "rclpy-missing-attribute", Severity.ERROR,
@@ -126,12 +125,11 @@ def _checked_modules(package: Package) -> Iterator[tuple[PythonModule, Index]]:
     same way), each with its index."""
     installed = installed_trees(package)
     yield from ((module, index) for module, _, index in installed)
-    tests = test_files(package) - {module.path for module, _, _ in installed}
-    for module in package.modules:
-        tree = parse_tree(module.path, package.texts[module.path]) \
-            if module.path in tests and module.path in package.texts else None
-        if isinstance(tree, ast.Module):
-            yield module, index_of(tree)
+    done = {module.path for module, _, _ in installed}
+    modules = {module.path: module for module in package.modules if module.path not in done}
+    for path, tree in test_trees(package):
+        if path in modules:
+            yield modules[path], index_of(tree)
 
 
 _HANDLED = frozenset({"execute_callback", "cancel_callback", "handle_accepted_callback"})

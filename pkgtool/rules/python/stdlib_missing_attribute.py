@@ -11,7 +11,7 @@ from pkgtool.knowledge.stdlib_names import stdlib_names
 from pkgtool.model.ast_nodes import TRIES, descendants, nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._attribute_guards import probed_names
+from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, index_of, python_files, resolved_attributes
 
@@ -32,11 +32,11 @@ _TESTS = frozenset({"version_info", "hexversion", "platform", "name", "hasattr",
 
 
 def _conditional(node: ast.AST, index: Index, *, any_try: bool) -> bool:
-    """True under an ``if`` testing the Python version or the platform, or inside a ``try``
-    (``any_try``; else one catching AttributeError or anything)."""
+    """True under an ``if`` testing the Python version or the platform, or (``any_try``)
+    inside any ``try``."""
     child, parent = node, index.parents.get(id(node))
     while parent is not None:
-        if isinstance(parent, TRIES) and (any_try or child in parent.body and _catches(parent)):
+        if any_try and isinstance(parent, TRIES):
             return True
         if isinstance(parent, (ast.If, ast.IfExp)) and child is not parent.test and any(
                 getattr(n, "id", getattr(n, "attr", None)) in _TESTS
@@ -44,15 +44,6 @@ def _conditional(node: ast.AST, index: Index, *, any_try: bool) -> bool:
             return True
         child, parent = parent, index.parents.get(id(parent))
     return False
-
-
-def _catches(node: ast.AST) -> bool:
-    return any(h.type is None or any(getattr(n, "id", None) in _CAUGHT
-                                     for n in descendants(h.type))
-               for h in getattr(node, "handlers", ()))
-
-
-_CAUGHT = frozenset({"AttributeError", "Exception", "BaseException"})
 
 
 @rule("PYC063", "stdlib-missing-attribute", Severity.ERROR,
@@ -103,7 +94,7 @@ def stdlib_missing_attribute(package: Package) -> Iterator[Hit]:
             stored = {index.qualified(n) for n in nodes_of_class(tree, ast.Attribute)
                       if not isinstance(n.ctx, ast.Load)} if stored is None else stored
             probed = probed_names(index) if probed is None else probed
-            if f"{owner}.{attr}" in stored or attr in probed or \
+            if f"{owner}.{attr}" in stored or guarded(node, index, probed) or \
                     _conditional(node, index, any_try=False):
                 continue
             yield _hit(Span(path, node.end_lineno or node.lineno,

@@ -4,16 +4,15 @@ of that name (``self.processor.proces(image)``)."""
 from __future__ import annotations
 
 import ast
-from collections import Counter
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import typo_of
-from pkgtool.model.ast_nodes import TRIES
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._assignments import assigned_values, is_none
+from pkgtool.rules.python._assignments import (annotated_name, assigned_values, is_none,
+                                               parameter_annotation)
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.python._own_callees import rebound_around
 from pkgtool.rules.python._package_modules import (imported_from_package, module_names,
@@ -32,8 +31,6 @@ ENUMS = frozenset({"enum.Enum", "enum.Flag"})
 members have every method of ``int`` and ``str`` too: left alone)."""
 ENUM_ATTRIBUTES = frozenset({"name", "value"})
 """What an enum member has besides its class's body (names starting with ``_`` aside)."""
-_BLOCKS = (ast.If, ast.For, ast.AsyncFor, ast.While, ast.With, ast.AsyncWith, *TRIES)
-"""Statements whose blocks run at module level."""
 _DEPTH = 8
 """How many bases deep a class is followed."""
 
@@ -44,29 +41,11 @@ def _classes(package: Package) -> dict[str, tuple[ast.ClassDef, Index]]:
     name (``my_pkg.vision.Processor``), each with its module's index."""
     found: dict[str, tuple[ast.ClassDef, Index]] = {}
     for module, (tree, index) in modules_by_name(package).items():
-        bound = Counter(_top_level_names(tree.body))
+        bound = scope_bindings(tree)
         for node in tree.body:
             if isinstance(node, ast.ClassDef) and bound[node.name] == 1:
                 found[f"{module}.{node.name}"] = (node, index)
     return found
-
-
-def _top_level_names(statements: list[ast.stmt]) -> Iterator[str]:
-    """The names module-level statements bind, those in ``if``/``try``/``with``/loop blocks
-    included (a class bound again there is left out)."""
-    for node in statements:
-        if isinstance(node, (*FUNCTIONS, ast.ClassDef)):
-            yield node.name
-        elif isinstance(node, (ast.Import, ast.ImportFrom)):
-            yield from ((a.asname or a.name).split(".")[0] for a in node.names)
-        elif isinstance(node, (ast.Assign, ast.AnnAssign, ast.AugAssign)):
-            targets = node.targets if isinstance(node, ast.Assign) else [node.target]
-            yield from (n.id for t in targets for n in ast.walk(t) if isinstance(n, ast.Name))
-        elif isinstance(node, _BLOCKS):
-            for block in ("body", "orelse", "finalbody"):
-                yield from _top_level_names(getattr(node, block, None) or [])
-            for handler in getattr(node, "handlers", ()):
-                yield from _top_level_names(handler.body)
 
 
 def _resolved(name: str, index: Index, package: Package) -> str | None:
@@ -120,16 +99,11 @@ def _instance_of(value: ast.expr, package: Package, tree: ast.Module, index: Ind
     assigned_all = assigned_values(value, package, tree, index)
     if assigned_all is None and isinstance(value, ast.Name):
         found = _annotated(value, index, package)
-        return found if found and _closed(found, package) and \
-            "__new__" not in _attributes(found, package) else None
-    made: set[str | None] = set()
-    for assigned, assigned_index in assigned_all or ():
-        if is_none(assigned):
-            continue
-        func = assigned.func if isinstance(assigned, ast.Call) else None
-        made.add(_resolved(func.id, assigned_index, package) if isinstance(func, ast.Name)
-                 else None)
-    found = next(iter(made)) if len(made) == 1 else None
+    else:
+        made = {_resolved(v.func.id, i, package)
+                if isinstance(v, ast.Call) and isinstance(v.func, ast.Name) else None
+                for v, i in assigned_all or () if not is_none(v)}
+        found = next(iter(made)) if len(made) == 1 else None
     return found if found and _closed(found, package) and \
         "__new__" not in _attributes(found, package) else None  # __new__ may make another
 
@@ -138,13 +112,7 @@ def _annotated(name: ast.Name, index: Index, package: Package) -> str | None:
     """The package class a parameter is annotated with (``grid: Grid``), when the function
     around ``name`` never rebinds it."""
     function = index.enclosing_function(name, through_lambdas=False)
-    if function is None or scope_bindings(function)[name.id] != 1:
-        return None
-    arguments = function.args
-    parameters = (*arguments.posonlyargs, *arguments.args, *arguments.kwonlyargs)
-    note = next((a.annotation for a in parameters if a.arg == name.id), None)
-    named = note.id if isinstance(note, ast.Name) else note.value if isinstance(
-        note, ast.Constant) and isinstance(note.value, str) else None
+    named = annotated_name(parameter_annotation(function, name.id)) if function else None
     return _resolved(named, index, package) if named else None
 
 
@@ -158,12 +126,13 @@ def _class_read(target: ast.expr, node: ast.Attribute, index: Index, package: Pa
     return found if found and _closed(found, package) else None
 
 
-def _candidate(target: ast.expr, node: ast.Attribute, index: Index, package: Package) -> bool:
-    """True for a read on a name (not ``self``, not an imported module) or on ``<name>.x``."""
+def _instance_target(target: ast.expr, index: Index) -> bool:
+    """True for a read on ``<name>.x`` or on a name (not ``self``, not an import) that may hold
+    an instance."""
     if isinstance(target, ast.Attribute):
         return isinstance(target.value, ast.Name)
-    return isinstance(target, ast.Name) and target.id not in ("self", "cls") and (
-        target.id not in index.aliases or _class_read(target, node, index, package) is not None)
+    return isinstance(target, ast.Name) and target.id not in ("self", "cls") and \
+        target.id not in index.aliases
 
 
 @rule("PYC064", "undefined-instance-attribute", Severity.ERROR,
@@ -214,10 +183,11 @@ def undefined_instance_attribute(package: Package) -> Iterator[Hit]:
         probed: frozenset[str] | None = None
         for node in index.attributes:
             target = node.value
-            if node.attr in everywhere or node.attr.startswith("__") or not _candidate(
-                    target, node, index, package):
+            if node.attr in everywhere or node.attr.startswith("__"):
                 continue
             cls = _class_read(target, node, index, package)
+            if cls is None and not _instance_target(target, index):
+                continue
             dotted = cls or _instance_of(target, package, tree, index)
             probed = probed_names(index) if probed is None else probed
             if dotted is None or guarded(node, index, probed) or \

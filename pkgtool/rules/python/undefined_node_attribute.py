@@ -13,7 +13,8 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import derives_from_node_alone
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
-from pkgtool.rules.python._assignments import assigned_values, is_none
+from pkgtool.rules.python._assignments import (annotated_name, assigned_values, is_none,
+                                               parameter_annotation)
 from pkgtool.rules.python._message_instances import attributes_taken, method_receiver
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings
@@ -95,12 +96,9 @@ def _instances(package: Package, tree: ast.Module, index: Index,
     for function in index.functions:
         arguments = function.args
         for parameter in (*arguments.posonlyargs, *arguments.args, *arguments.kwonlyargs):
-            note = parameter.annotation
-            named = note.id if isinstance(note, ast.Name) else note.value if isinstance(
-                note, ast.Constant) and isinstance(note.value, str) else None
-            cls = classes.get(named or "")
+            cls = classes.get(annotated_name(parameter.annotation) or "")
             if cls is not None and module_bound[cls.name] == 1 and \
-                    scope_bindings(function)[parameter.arg] == 1:
+                    parameter_annotation(function, parameter.arg) is not None:
                 yield function, parameter.arg, cls
 
 

@@ -10,7 +10,8 @@ from pkgtool.knowledge.rclpy_signatures import methods, parameters_of
 from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_api import PARAMETERS, node_api_calls, node_constructions
+from pkgtool.rules.node_api import (PARAMETERS, derives_from_node_alone, node_api_calls,
+                                    node_constructions)
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
@@ -136,8 +137,7 @@ def _plain_node(call: ast.Call, index: Index) -> bool:
     if isinstance(call.func, (ast.Name, ast.Attribute)) and index.qualified(call.func) in _NODES:
         return True
     cls = index.enclosing_class(call)
-    return cls is not None and bool(cls.bases) and \
-        all(index.qualified(b) == "rclpy.node.Node" for b in cls.bases)
+    return cls is not None and derives_from_node_alone(cls, index)
 
 
 def _unknown(path: str, call: ast.Call, name: str, shown: str, curated: dict[str, str]

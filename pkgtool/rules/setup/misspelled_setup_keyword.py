@@ -13,6 +13,7 @@ from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
 from pkgtool.rules.setup_values import checked_setup
+from pkgtool.rules.syntax_trees import index_of
 
 SETUP_KEYWORDS = frozenset({
     # distutils
@@ -49,19 +50,15 @@ def _setup_keywords(tree: ast.Module) -> Iterator[ast.keyword]:
 
 
 def _finder_calls(tree: ast.Module) -> Iterator[tuple[str, ast.Call]]:
-    """Calls of setuptools' package finders, by a name imported from setuptools or as an
-    attribute of ``setuptools``."""
-    imported = {alias.asname or alias.name: alias.name for node in tree.body
-                if isinstance(node, ast.ImportFrom) and node.module == "setuptools"
-                for alias in node.names if alias.name in FINDERS}
-    for node in nodes_of_class(tree, ast.Call):
-        assert isinstance(node, ast.Call)
-        func = node.func
-        if isinstance(func, ast.Name) and func.id in imported:
-            yield imported[func.id], node
-        elif isinstance(func, ast.Attribute) and func.attr in FINDERS and \
-                isinstance(func.value, ast.Name) and func.value.id == "setuptools":
-            yield func.attr, node
+    """Calls of setuptools' package finders (``find_packages(...)`` imported from setuptools,
+    ``setuptools.find_packages(...)``)."""
+    index = index_of(tree)
+    for call in index.calls:
+        named = index.qualified(call.func) if isinstance(call.func, (ast.Name, ast.Attribute)) \
+            else None
+        finder = named.removeprefix("setuptools.") if named else ""
+        if finder in FINDERS and named == f"setuptools.{finder}":
+            yield finder, call
 
 
 @rule("SET016", "misspelled-setup-keyword", Severity.ERROR,
