@@ -4,48 +4,131 @@ result."""
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Iterator
+from typing import NamedTuple
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.rules.python._assignments import assigned_values, is_none
 from pkgtool.rules.python._callbacks import callback_arguments
-from pkgtool.rules.python._message_instances import callback_function
-from pkgtool.rules.python._value_types import certain_type
+from pkgtool.rules.python._field_reads import field_reads
+from pkgtool.rules.python._message_instances import Function, binding_counts, callback_function
+from pkgtool.rules.python._value_types import PARAMETER, PARAMETER_TEXT, certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import returns_none, scope_walk
 from pkgtool.rules.syntax_trees import Index
 
 
+class _Callback(NamedTuple):
+    """A callback whose value rclpy uses, and what to say of it."""
+
+    what: str
+    returned: str
+    never: str
+    """What rclpy does when the callback never returns its result."""
+    here: str
+    """What rclpy does when the callback returns something else (or falls off its end)."""
+    fix: str
+    instead: str
+    """How to fix a return of something else."""
+
+
 _RETURNED = {
-    ("create_service()", "callback"): (
+    ("create_service()", "callback"): _Callback(
         "service callback", "the response",
         "rclpy's send_response() raises TypeError on the first request",
-        "End the callback with `return response`"),
-    ("ActionServer()", "execute_callback"): (
-        "action execute callback", "the result",
-        "the client never gets the goal's result", "End the callback with `return result`, "
-        "the action's `Result()`"),
-    ("add_on_set_parameters_callback()", "callback"): (
+        "rclpy's send_response() raises TypeError", "End the callback with `return response`",
+        "Return the response rclpy passes in, its fields set: `return response`"),
+    ("ActionServer()", "execute_callback"): _Callback(
+        "action execute callback", "the result", "the client never gets the goal's result",
+        "the client never gets the goal's result",
+        "End the callback with `return result`, the action's `Result()`",
+        "Return the action's `Result()`, its fields set"),
+    ("add_on_set_parameters_callback()", "callback"): _Callback(
         "set-parameters callback", "a `SetParametersResult`",
         "rclpy rejects every parameter change ('Callback returned an invalid type')",
-        "End the callback with `return SetParametersResult(successful=True)`"),
+        "rclpy rejects the parameter change ('Callback returned an invalid type')",
+        "End the callback with `return SetParametersResult(successful=True)`",
+        "Return `SetParametersResult(successful=...)`"),
 }
-"""The callbacks whose value rclpy uses, by API and parameter: what they are called, what
-they must return, what returning None does, how to fix it."""
+"""The callbacks whose value rclpy uses, by API and parameter."""
+_RESULT_ARGUMENT = {"create_service()": 1}
+"""The position of the argument a callback may return as its result (a service's response),
+by API; the callback's other arguments never are."""
 _STOPS = (ast.Return, ast.Raise, ast.While, ast.Try, ast.With, ast.AsyncWith, ast.Match)
 """Statements after which the end of a body may not be reached (or not only by falling)."""
 _PLAIN_ENDS = (ast.Expr, ast.Assign, ast.AugAssign, ast.AnnAssign)
 
 
-def _classes_returned(function: ast.FunctionDef | ast.AsyncFunctionDef, package: Package,
-                      tree: ast.Module, index: Index) -> Iterator[ast.expr]:
-    """The values of ``return`` statements of ``function`` (not of functions inside it) that
-    are an imported interface class itself (``return AddTwoInts.Response``)."""
+_RESULT_KINDS = re.compile(r"_(Response|Result)$")
+"""Field types a callback's result could be (a message holding a service response or action
+result: the field may be returned)."""
+_MESSAGE_CLASS = re.compile(r"\w+\.msg\.\w+")
+"""The qualified name of a message class (not a service's or action's message)."""
+_NOT_RESULTS = frozenset({"int", "float", "complex", "str", "bytes", "bool", "NoneType",
+                          "list", "tuple", "dict", "set", PARAMETER, PARAMETER_TEXT})
+"""Certain types (:func:`~._value_types.certain_type`) a callback's result never has."""
+
+
+def _wrong_returns(function: Function, arguments: list[str], result: str | None,
+                   messages: bool, package: Package, tree: ast.Module, index: Index
+                   ) -> Iterator[tuple[ast.AST, str]]:
+    """The ``return`` statements of ``function`` (not of functions inside it) whose value is
+    certainly not the callback's result, each with what it returns instead: an imported
+    interface class itself, ``None`` (beside returns of a value), a value of a builtin type
+    (``return True``), one of the callback's ``arguments`` (never rebound) other than
+    ``result`` (the request, the goal handle, the parameter list), a field of one of them or
+    of another message (``response.sum``), or with ``messages`` an instance of a message
+    (``nav_msgs.msg.Path``: never a service's response or an action's result)."""
+    if any(isinstance(n, (ast.Yield, ast.YieldFrom)) for n in scope_walk(function.body)):
+        return
+    bound, reads = binding_counts(function), field_reads(tree, index, package)
+    given = {name for name in arguments if bound[name] == 1}
     for node in scope_walk(function.body):
-        if isinstance(node, ast.Return) and isinstance(node.value, (ast.Name, ast.Attribute)) \
-                and certain_type(node.value, package, tree, index) == "type":
-            yield node.value
+        if not isinstance(node, ast.Return):
+            continue
+        value, root = node.value, node.value
+        while isinstance(root, ast.Attribute):
+            root = root.value
+        read = reads.get(id(value))
+        if value is None or isinstance(value, ast.Constant) and value.value is None:
+            yield node, "nothing (`None`)"
+        elif isinstance(value, (ast.Name, ast.Attribute)) and \
+                certain_type(value, package, tree, index) == "type":
+            yield value, f"the class `{ast.unparse(value)}`"
+        elif isinstance(value, ast.Name) and value.id in given and value.id != result:
+            yield value, f"its argument `{value.id}`"
+        elif isinstance(value, ast.Attribute) and (
+                read is not None and not _RESULT_KINDS.search(read.kind) or
+                read is None and isinstance(root, ast.Name) and root.id in given):
+            owner = "an attribute of its argument" if read is None else "a field of"
+            yield value, f"`{_short(value)}`, {owner} `{_short(root)}`"
+        elif messages and (made := _message_made(value, package, tree, index)):
+            yield value, f"`{_short(value)}`, a `{made}` message"
+        elif (found := certain_type(value, package, tree, index, texts=True)) in _NOT_RESULTS:
+            kind = found.split(" ")[0]
+            yield value, f"`{_short(value)}`, {'an' if kind[0] in 'aeiou' else 'a'} {kind}"
+
+
+def _message_made(value: ast.expr, package: Package, tree: ast.Module, index: Index
+                  ) -> str | None:
+    """The message class (``pkg.msg.Name``) ``value`` certainly is an instance of: a call of
+    it, or a local name or ``self.x`` every assignment of which is one (None aside)."""
+    if isinstance(value, ast.Call):
+        made = index.qualified(value.func) if isinstance(value.func, (ast.Name, ast.Attribute)) \
+            else None
+        return made if made and _MESSAGE_CLASS.fullmatch(made) else None
+    assigned = assigned_values(value, package, tree, index)
+    classes = {_message_made(v, package, tree, index) for v, _ in assigned or () if not is_none(v)}
+    return classes.pop() if len(classes) == 1 and None not in classes else None
+
+
+def _short(value: ast.expr) -> str:
+    """``value``'s source, cut to 40 characters."""
+    shown = ast.unparse(value)
+    return shown if len(shown) <= 40 else shown[:37] + "..."
 
 
 def _falls_off_the_end(function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
@@ -79,8 +162,14 @@ def service_callback_returns_nothing(package: Package) -> Iterator[Hit]:
     can fall off its end: no statement of its body (outside nested blocks) returns, raises,
     loops with `while` or enters `try`, `with` or `match`, and the last one is an
     expression or assignment (`self.get_logger().info('done')` after an early `return`).
-    And one that returns an imported interface class itself instead of an instance
-    (`return AddTwoInts.Response`), which rclpy refuses as it refuses `None`.
+    And each `return` of such a callback whose value is certainly not its result: an imported
+    interface class itself (`return AddTwoInts.Response`), `None` or a bare `return` (beside
+    returns of a value), a number, string, bool, tuple or other builtin value (`return True`
+    from a set-parameters callback), one of the callback's arguments (never rebound) other
+    than a service's response (`return request`, `return goal_handle`), a field of one of them
+    or of another message (`return response.sum`, `return result.sequence`), or, from a
+    service or action callback, an instance of a message (`plan = Path()`, `return plan`:
+    never a service response or action result). Generators are left alone.
 
     ## Why is this bad?
     rclpy sends what the callback returns as the response: `None` makes
@@ -88,8 +177,12 @@ def service_callback_returns_nothing(package: Package) -> Iterator[Hit]:
     node dies and the client waits forever. Filling in the `response` argument is not
     enough: it must be returned. An action server whose execute callback returns `None`
     never answers the client's result request (checked on Jazzy), and a set-parameters
-    callback must return a `SetParametersResult`: with `None`, rclpy rejects every change
-    (`ros2 param set` fails).
+    callback must return a `SetParametersResult`: with `None` or any other value (`True`),
+    rclpy rejects every change (`ros2 param set` fails). Returning the field a client reads
+    (`response.sum`) instead of the response is the same mistake: `send_response` raises
+    `TypeError` for anything but the service's response; an execute callback returning the
+    result's sequence instead of the result raises `AttributeError` in the executor (both
+    checked on Jazzy).
 
     ## Example
     ```python
@@ -109,23 +202,28 @@ def service_callback_returns_nothing(package: Package) -> Iterator[Hit]:
         found = callback_function(value, tree, index) if kind else None
         if kind is None or found is None:
             continue
-        what, returned, effect, fix = kind
+        what, returned = kind.what, kind.returned
         function = found[0]
         if returns_none(function):
             yield Hit(Span(path, function.lineno, function.col_offset + 1),
-                      f"The {what} `{ast.unparse(value)}` never returns {returned}: {effect}",
-                      fix, related=(Span(path, value.lineno, value.col_offset + 1),))
+                      f"The {what} `{ast.unparse(value)}` never returns {returned}: {kind.never}",
+                      kind.fix, related=(Span(path, value.lineno, value.col_offset + 1),))
             continue
-        for returned_class in _classes_returned(function, package, tree, index):
-            name = ast.unparse(returned_class)
-            yield Hit(Span(path, returned_class.lineno, returned_class.col_offset + 1),
-                      f"The {what} `{ast.unparse(value)}` returns the class `{name}`, not "
-                      f"{returned}: {effect}", f"Return an instance: `{name}()`, or the one "
-                      "rclpy passes in",
+        parameters = function.args.posonlyargs + function.args.args
+        arguments = [a.arg for a in parameters[found[1]:]]
+        position = _RESULT_ARGUMENT.get(api)
+        result = arguments[position] if position is not None and position < len(arguments) \
+            else None
+        messages = api != "add_on_set_parameters_callback()"  # SetParametersResult is one
+        for returned_value, instead in _wrong_returns(function, arguments, result, messages,
+                                                      package, tree, index):
+            yield Hit(Span(path, returned_value.lineno, returned_value.col_offset + 1),
+                      f"The {what} `{ast.unparse(value)}` returns {instead}, not {returned}: "
+                      f"{kind.here}", kind.instead,
                       related=(Span(path, value.lineno, value.col_offset + 1),))
         if _falls_off_the_end(function):
             end = function.body[-1]
             yield Hit(Span(path, end.lineno, end.col_offset + 1),
                       f"The {what} `{ast.unparse(value)}` returns {returned} on some paths but "
-                      f"ends here without a `return`: when it gets here, {effect}",
-                      fix, related=(Span(path, value.lineno, value.col_offset + 1),))
+                      f"ends here without a `return`: when it gets here, {kind.here}",
+                      kind.fix, related=(Span(path, value.lineno, value.col_offset + 1),))

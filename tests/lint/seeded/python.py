@@ -357,6 +357,11 @@ def service_response_not_returned(root: Path) -> None:
     edit(root, SRV, "        return response\n", "")
 
 
+@case("PYC026", SRV, "return response.message")
+def service_field_returned(root: Path) -> None:
+    edit(root, SRV, "        return response\n", "        return response.message\n")
+
+
 @case("PYC027", TALKER, "self.declare_parameter('topic', 'chat')")
 def parameter_declaration_copied(root: Path) -> None:
     edit(root, TALKER, "        self.declare_parameter('period', 0.5)\n",
