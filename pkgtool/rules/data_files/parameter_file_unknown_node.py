@@ -21,15 +21,22 @@ def parameter_file_unknown_node(package: Package) -> Iterator[Hit]:
     (the last part of `/ns/node`, `ns: {node: ...}`; wildcards `/**`, `*` match any name)
     is the name of a node the file is passed to. A node's name is its static `name=` (or a
     `__node:=` remapping), else the name its executable's code gives: console script ->
-    module -> the one `Node` subclass's `super().__init__('name')` literal. Namespaces are
-    not compared (a launch file may be included under any namespace). Files are skipped when
+    module -> the one `Node` subclass's `super().__init__('name')` literal. A block is also
+    reported when every node of its name runs in a namespace its key cannot match: the
+    launch node's static `namespace=` is not empty and the key's namespace (`talker`: none,
+    `/robot1/talker`: `/robot1`) neither equals it (an absolute namespace) nor ends with it (a
+    relative one, to which a launch file including this one may prepend more). Keys with
+    wildcards match any namespace; other namespaces (pushed by `PushRosNamespace`, or by a
+    launch file including this one) are not compared. Files are skipped when
     a node's name is not known that way, when a launch file gives some node parameters not
     read statically (a launch argument may name the file), or when the package's Python code
     mentions the file's name.
 
     ## Why is this bad?
     ROS 2 ignores parameters of nodes that do not exist: nothing warns, and the node runs with
-    its defaults.
+    its defaults. A key is matched against the node's fully qualified name, and a key without
+    a leading `/` is taken from the root: `talker` is `/talker`, never `/robot1/talker`
+    (checked on Jazzy's rclpy), the classic reason parameters vanish once a namespace is added.
 
     ## Example
     ```yaml
@@ -52,3 +59,32 @@ def parameter_file_unknown_node(package: Package) -> Iterator[Hit]:
             yield Hit(entry.span, f"`{entry.key}` is none of the nodes this file is passed to "
                       f"({shown}){near(base, entry.names)}: its parameters reach no node",
                       write_meant(base, entry.names))
+        elif "*" not in entry.key and not any(_may_match(entry.key, n.namespace)
+                                              for n in entry.matched):
+            spaces = sorted({n.namespace or "" for n in entry.matched})
+            base = entry.key.rpartition("/")[2]
+            full = _absolute(entry.key)
+            named = f"`{entry.key}`" if full == entry.key else f"`{entry.key}` (`{full}`)"
+            yield Hit(entry.span, f"{named} cannot name the node `{base}` the file is passed "
+                      f"to: the launch file runs it in the namespace "
+                      f"{' and '.join(f'`{s}`' for s in spaces)}, and a key is matched against "
+                      f"the node's full name, so its parameters reach no node",
+                      f"Write `{spaces[0].rstrip('/')}/{base}`" if len(spaces) == 1 and
+                      spaces[0].startswith("/") else f"Write `/**/{base}` (any namespace)")
+
+
+def _absolute(namespace: str) -> str:
+    """``namespace`` with one leading ``/`` and no trailing one (``/`` for the root)."""
+    return "/" + namespace.strip("/")
+
+
+def _may_match(key: str, namespace: str | None) -> bool:
+    """False when a block ``key`` (no wildcard) certainly misses a node launched with the
+    static ``namespace`` (None: unknown), whatever namespace an including launch file pushes:
+    the key's namespace must be the node's when absolute, end with it when relative."""
+    if namespace is None or not namespace.strip("/"):
+        return True
+    wanted, written = _absolute(namespace), _absolute(key.rpartition("/")[0])
+    if namespace.startswith("/"):
+        return written == wanted
+    return written == wanted or written.endswith(wanted)

@@ -365,3 +365,8 @@ def xml_launch_namespace_with_a_space(root: Path) -> None:
           <node pkg="base_pkg" exec="talker" name="talker" namespace="my robot"/>
         </launch>
         """)
+
+
+@case("DAT009", "config/params.yaml", "talker:")
+def namespace_added_to_node_only(root: Path) -> None:
+    edit(root, PY, "name='talker',", "name='talker',\n            namespace='robot1',")
