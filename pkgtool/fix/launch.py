@@ -21,6 +21,7 @@ from pkgtool.model.package import Package
 from pkgtool.rules.launch.invalid_launch_action_argument import BY_KEYWORD, IN_A_LIST, ITEMS
 from pkgtool.rules.launch.invalid_node_argument import (FRONTEND_TAGS, KEYWORDS, REMOVED_KEYWORDS,
                                                         WRONG_ATTRIBUTES)
+from pkgtool.rules.launch.unknown_substitution import SUBSTITUTION, ros2_substitution
 
 _ONE_NAME = re.compile(r"`(\w+)`(?: \(.*\))?")
 """What WRONG_ATTRIBUTES says to write when that is one attribute name."""
@@ -228,3 +229,32 @@ def _xml_node_packages(package: Package, findings: list[Finding]) -> Iterator[Fi
                     source.text[tag.start + 1:name_end] == tag.tag:
                 yield Fix(f'Add `pkg="{package.name}"`',
                           (Edit(source.path, name_end, name_end, f' pkg="{package.name}"'),))
+
+
+@fixer("LCH015", "Write the substitution ROS 2's launch has", safe=False)
+def substitution_name(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename a substitution ROS 2's launch does not have: ROS 1's ``$(find pkg)``, ``$(arg
+    x)`` and ``$(optenv X d)`` become ``$(find-pkg-share pkg)``, ``$(var x)`` and ``$(env X
+    d)`` (in XML, ``$(optenv X)`` becomes ``$(env X '')``: ``env`` fails on an unset variable
+    without a default); a misspelt one the substitution it is close to. Unsafe: a misspelling
+    is a guess, and ``find-pkg-share`` is the installed share folder, where ROS 1's ``find``
+    was the source folder; the file did not launch at all before."""
+    for finding in findings:
+        try:
+            source = read_source(package.root, finding.span.path)
+        except EditError:
+            continue
+        if source is None or finding.span.line > len(source.line_starts):
+            continue
+        written = SUBSTITUTION.match(
+            source.text, source.line_starts[finding.span.line - 1] + finding.span.col - 1)
+        meant = ros2_substitution(written.group(1)) if written else None
+        if written is None or meant is None:
+            continue
+        edits = [Edit(source.path, written.start(1), written.end(1), meant)]
+        close = source.text.find(")", written.end())
+        if written.group(1) == "optenv" and len(source.text[written.end():close].split()) < 2:
+            if not source.path.endswith(".xml") or close < 0:
+                continue  # a YAML scalar may be quoted with '
+            edits.append(Edit(source.path, close, close, " ''"))
+        yield Fix(f"Write `$({meant}` for `$({written.group(1)}`", tuple(edits))

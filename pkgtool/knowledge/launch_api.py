@@ -1,4 +1,5 @@
-"""The names the package-level modules of ``launch`` and ``launch_ros`` define.
+"""The names the package-level modules of ``launch`` and ``launch_ros`` define, and the
+substitutions their XML and YAML front ends know.
 
 Each module's top-level bindings and submodules (what ``from <module> import <name>`` can
 import), public names only, read from the ros2/launch and ros2/launch_ros sources of Foxy,
@@ -93,6 +94,19 @@ MODULE_NAMES: dict[str, frozenset[str]] = {
     executable_in_package find_package parameter
     """.split()),
 }
+
+
+FRONTEND_SUBSTITUTIONS = frozenset("""
+    all and anon any command dirname env equals eval exec-in-pkg file-content filename
+    find-exec find-pkg-prefix find-pkg-share if launch_log_dir log_dir not not-equals or param
+    var
+    """.split())
+"""The substitutions XML and YAML launch files can write as ``$(name ...)``: those ros2/launch
+(3.7.1, December 2024) and ros2/launch_ros (Rolling, November 2024) expose with ``@expose_substitution``,
+the names of Humble and Jazzy included (``test`` left out: the test suites' own)."""
+ROS1_SUBSTITUTIONS = {"find": "find-pkg-share", "arg": "var", "optenv": "env"}
+"""ROS 1 roslaunch substitutions that ROS 2 launch does not have, and the ROS 2 one to write
+instead (``$(find pkg)``: ``$(find-pkg-share pkg)``; ``$(optenv X)``: ``$(env X '')``)."""
 
 
 def homes(name: str) -> tuple[str, ...]:

@@ -370,3 +370,14 @@ def xml_launch_namespace_with_a_space(root: Path) -> None:
 @case("DAT009", "config/params.yaml", "talker:")
 def namespace_added_to_node_only(root: Path) -> None:
     edit(root, PY, "name='talker',", "name='talker',\n            namespace='robot1',")
+
+
+@case("LCH015", XML_LAUNCH, "$(find base_pkg)")
+def ros1_find_substitution(root: Path) -> None:
+    _other_launch(root, XML_LAUNCH, """
+<launch>
+  <node pkg="base_pkg" exec="talker" name="talker">
+    <param from="$(find base_pkg)/config/params.yaml"/>
+  </node>
+</launch>
+""")
