@@ -101,8 +101,9 @@ FRONTEND_SUBSTITUTIONS = frozenset("""
     find-exec find-pkg-prefix find-pkg-share if launch_log_dir log_dir not not-equals or param
     var
     """.split())
-"""The substitutions XML and YAML launch files can write as ``$(name ...)``: those ros2/launch
-(3.7.1, December 2024) and ros2/launch_ros (Rolling, November 2024) expose with ``@expose_substitution``,
+"""The substitutions XML and YAML launch files can write as ``$(name ...)``: those
+ros2/launch (3.7.1, December 2024) and ros2/launch_ros (Rolling, November 2024) expose with
+``@expose_substitution``,
 the names of Humble and Jazzy included (``test`` left out: the test suites' own)."""
 ROS1_SUBSTITUTIONS = {"find": "find-pkg-share", "arg": "var", "optenv": "env"}
 """ROS 1 roslaunch substitutions that ROS 2 launch does not have, and the ROS 2 one to write
