@@ -103,8 +103,8 @@ FRONTEND_SUBSTITUTIONS = frozenset("""
     """.split())
 """The substitutions XML and YAML launch files can write as ``$(name ...)``: those
 ros2/launch (3.7.1, December 2024) and ros2/launch_ros (Rolling, November 2024) expose with
-``@expose_substitution``,
-the names of Humble and Jazzy included (``test`` left out: the test suites' own)."""
+``@expose_substitution``, the names of Humble and Jazzy included (``test`` left out: the test
+suites' own)."""
 ROS1_SUBSTITUTIONS = {"find": "find-pkg-share", "arg": "var", "optenv": "env"}
 """ROS 1 roslaunch substitutions that ROS 2 launch does not have, and the ROS 2 one to write
 instead (``$(find pkg)``: ``$(find-pkg-share pkg)``; ``$(optenv X)``: ``$(env X '')``)."""
