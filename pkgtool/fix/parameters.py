@@ -15,6 +15,11 @@ from pkgtool.model.package import Package
 from pkgtool.rules.data_files.malformed_parameter_file import PARAMS_KEY, renamed
 
 
+_NAMESPACE_MISSED = re.compile(r"^`([^`]+)`(?: \(`[^`]+`\))? cannot name the node")
+"""A DAT009 message on a key that misses its node's namespace, and the key."""
+_WRITE_KEY = re.compile(r"^Write `([^`]+)`")
+
+
 @fixer("DAT008", "Rename the misspelled key to `ros__parameters`")
 def misspelled_key(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Write ``ros__parameters`` over the misspelled key (``ros_parameters``, ``ros_params``,
@@ -23,26 +28,41 @@ def misspelled_key(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     findings (values outside ``ros__parameters``, a missing node name) need the user."""
     for finding in findings:
         key = renamed(finding.fix)
-        if key is None:
-            continue
-        try:
-            source = read_source(package.root, finding.span.path)
-        except EditError:
-            continue
-        if source is None or finding.span.line > len(source.line_starts):
-            continue
-        at = source.line_starts[finding.span.line - 1] + finding.span.col - 1
-        written = re.match(rf"""(["']?){re.escape(key)}\1(?=\s*:)""", source.text[at:])
-        if written:
-            quote = written.group(1)
-            yield Fix(f"Rename `{key}` to `{PARAMS_KEY}`",
-                      (Edit(source.path, at, written.end() + at, quote + PARAMS_KEY + quote),))
+        edit = _rewrite_key(package, finding, key, PARAMS_KEY) if key else None
+        if edit is not None:
+            yield Fix(f"Rename `{key}` to `{PARAMS_KEY}`", (edit,))
+
+
+def _rewrite_key(package: Package, finding: Finding, key: str, new: str) -> Edit | None:
+    """The edit writing ``new`` over the mapping key ``key`` where ``finding`` points, in the
+    key's quotes; None when the key is not written there."""
+    try:
+        source = read_source(package.root, finding.span.path)
+    except EditError:
+        return None
+    if source is None or finding.span.line > len(source.line_starts):
+        return None
+    at = source.line_starts[finding.span.line - 1] + finding.span.col - 1
+    written = re.match(rf"""(["']?){re.escape(key)}\1(?=\s*:)""", source.text[at:])
+    if written is None:
+        return None
+    quote = written.group(1)
+    return Edit(source.path, at, written.end() + at, quote + new + quote)
 
 
 @fixer("DAT009", "Name the block after the node its misspelt name is close to", safe=False)
 def node_block(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Rename a parameter file's node block to the one node name the file is passed to that
-    is spelled like it (``talkr:`` to ``talker:``). Unsafe: it guesses which node was meant;
-    the block reached no node before."""
+    is spelled like it (``talkr:`` to ``talker:``), and a block whose key misses the
+    namespace the launch file gives its node to ``/**/talker`` (``/ns/talker`` for an
+    absolute namespace), when the key is written whole at the top of the file (not nested
+    under a namespace mapping). Unsafe: it guesses which node was meant; the block reached no
+    node before."""
     yield from renames(package, findings,
                        re.compile(r"^`(?:[^`]*/)?([^`/]+)` is none of the nodes"))
+    for finding in findings:
+        key = _NAMESPACE_MISSED.match(finding.message)
+        meant = _WRITE_KEY.match(finding.fix or "")
+        edit = _rewrite_key(package, finding, key[1], meant[1]) if key and meant else None
+        if edit is not None:
+            yield Fix(f"Rename `{key[1]}` to `{meant[1]}`", (edit,))

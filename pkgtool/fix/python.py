@@ -315,3 +315,38 @@ def parametrize_name(package: Package, findings: list[Finding]) -> Iterator[Fix]
     the test before."""
     yield from renames(package, findings, re.compile(r"^`parametrize` names `(\w+)`"),
                        _WRITE_NAME)
+
+
+@fixer("PYC026", "Return the response a service callback fills in", safe=False)
+def service_response(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """In a service callback (``def on_request(self, request, response)``): append ``return
+    response`` to a callback that never returns it or falls off its end (safe: rclpy raised
+    TypeError there, and the callback filled that response in), and write ``return
+    response`` for a ``return`` of something else (``return response.sum``, a bare
+    ``return``): unsafe, that path may not have filled the response in. Action and
+    set-parameters callbacks need the user (a ``Result()`` or ``SetParametersResult``)."""
+    for doc, finding, nodes in python_nodes(package, findings):
+        if not finding.message.startswith("The service callback "):
+            continue
+        index = index_of(doc.tree)
+        node = nodes[0] if nodes else None
+        function = node if isinstance(node, ast.FunctionDef) else \
+            index.enclosing_function(node, through_lambdas=False) if node is not None else None
+        skip = 1 if isinstance(index.parents.get(id(function)), ast.ClassDef) else 0
+        parameters = [*function.args.posonlyargs, *function.args.args] if function else []
+        if function is None or len(parameters) < skip + 2:
+            continue
+        response = parameters[skip + 1].arg
+        if isinstance(node, ast.Return) or node is not None and \
+                isinstance(index.parents.get(id(node)), ast.Return):
+            statement = node if isinstance(node, ast.Return) else index.parents[id(node)]
+            yield Fix(f"Return `{response}`", (Edit(doc.source.path, doc.start(statement),
+                                                    doc.end(statement),
+                                                    f"return {response}"),), safe=False)
+        elif node is function or node is function.body[-1]:
+            last = function.body[-1]
+            line_end = doc.text.find("\n", doc.end(last))
+            at = len(doc.text) if line_end < 0 else line_end
+            indent = " " * function.body[0].col_offset
+            yield Fix(f"End the callback with `return {response}`",
+                      (_insert(doc, at, f"\n{indent}return {response}"),), safe=True)
