@@ -18,7 +18,8 @@ from pkgtool.model.python_visitor import forget_trees
 from pkgtool.model.setup_cfg import SetupCfg, parse_setup_cfg
 from pkgtool.model.setup_py import SetupPy, parse_setup_py
 from pkgtool.model.span import ParseProblem
-from pkgtool.model.submodules import gitignore_patterns, ignores_above, unfetched_submodules
+from pkgtool.model.submodules import (GitIgnore, gitignore_patterns, ignores_above,
+                                      unfetched_submodules)
 from pkgtool.records import field, record
 
 _PY_SUPPRESSION = re.compile(r"#\s*pkgtool:\s*ignore(?:\[([A-Za-z0-9_,\s-]*)\])?")
@@ -49,7 +50,7 @@ class Package:
     context: Context = field(default_factory=Context, repr=False)
     unfetched: frozenset[str] = frozenset()
     """Folders of git submodules inside the package that are not checked out."""
-    ignores: tuple[str, ...] = ()
+    ignores: tuple[GitIgnore, ...] = ()
     """The patterns of the ``.gitignore`` files of the package and of the folders above it
     (see :mod:`pkgtool.model.submodules`)."""
 
@@ -71,9 +72,9 @@ class Package:
         return path in self.file_set
 
 
-def _ignores(root: Path, texts: dict[str, str]) -> tuple[str, ...]:
+def _ignores(root: Path, texts: dict[str, str]) -> tuple[GitIgnore, ...]:
     """The ``.gitignore`` patterns of the package's own files and of the folders above it."""
-    own = tuple(pattern for path, text in texts.items()
+    own = tuple(GitIgnore(path.rpartition("/")[0], "", pattern) for path, text in texts.items()
                 if path.rpartition("/")[2] == ".gitignore" for pattern in gitignore_patterns(text))
     return own + ignores_above(root)
 

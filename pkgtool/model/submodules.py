@@ -5,20 +5,23 @@ leaves each submodule an empty folder; files the package names inside one are th
 here, not in the package. They are read from the ``.gitmodules`` of the repository holding
 the package (the nearest one above it, below the folder holding ``.git``).
 
-Ignored files: the ``.gitignore`` files of the folders above the package, up to the one
-holding ``.git`` (a file the user makes, a calibration, a map, is left out of git on
-purpose); the package's own ``.gitignore`` files are among its files.
+Ignored files: the ``.gitignore`` files of the package and of the folders above it, up to
+the one holding ``.git`` (a file the user makes, a calibration, a map, a downloaded model, is
+left out of git on purpose), each pattern matched the way git does against the path below the
+file's folder: a pattern without a ``/`` (but a trailing one) against every part of it, one
+with a ``/`` against its leading parts, a trailing ``/`` matching folders only.
 """
 
 from __future__ import annotations
 
 import os
 import re
-from fnmatch import fnmatch
+from fnmatch import fnmatchcase
 from functools import lru_cache
 from pathlib import Path
 
 from pkgtool.model.files import read_bytes
+from pkgtool.records import record
 
 _PATH = re.compile(rb"^\s*path\s*=\s*(.+?)\s*$", re.M)
 
@@ -65,15 +68,27 @@ def under(path: str, folders: frozenset[str]) -> bool:
     return any(path == f or path.startswith(f + "/") for f in folders)
 
 
-def ignores_above(root: Path) -> tuple[str, ...]:
+@record
+class GitIgnore:
+    """A pattern of a ``.gitignore`` file: ``folder`` is where a file of the package holds
+    it (package-relative, ``""`` for the package's root or a folder above), ``prefix`` the
+    package's path below the folder above that holds it (``""`` for the package's own)."""
+
+    folder: str
+    prefix: str
+    pattern: str
+
+
+def ignores_above(root: Path) -> tuple[GitIgnore, ...]:
     """The patterns of the ``.gitignore`` files in the folders above ``root``, up to the one
     holding ``.git`` (all the way up when there is none)."""
-    return _ignores(os.path.dirname(os.path.abspath(root)))
+    folder = os.path.abspath(root)
+    return _ignores(os.path.dirname(folder), os.path.basename(folder) + "/")
 
 
 @lru_cache(maxsize=256)
-def _ignores(folder: str) -> tuple[str, ...]:
-    found: tuple[str, ...] = ()
+def _ignores(folder: str, prefix: str) -> tuple[GitIgnore, ...]:
+    found: tuple[GitIgnore, ...] = ()
     listing = os.path.join(folder, ".gitignore")
     if os.path.isfile(listing):
         try:
@@ -81,11 +96,12 @@ def _ignores(folder: str) -> tuple[str, ...]:
         except OSError:
             data = b""
         if isinstance(data, bytes):
-            found = gitignore_patterns(data.decode("utf-8", "replace"))
+            found = tuple(GitIgnore("", prefix, pattern)
+                          for pattern in gitignore_patterns(data.decode("utf-8", "replace")))
     parent = os.path.dirname(folder)
     if parent == folder or os.path.exists(os.path.join(folder, ".git")):
         return found
-    return found + _ignores(parent)
+    return found + _ignores(parent, os.path.basename(folder) + "/" + prefix)
 
 
 def gitignore_patterns(text: str) -> tuple[str, ...]:
@@ -94,8 +110,31 @@ def gitignore_patterns(text: str) -> tuple[str, ...]:
                  if line.strip() and not line.lstrip().startswith(("#", "!")))
 
 
-def ignored(path: str, patterns: tuple[str, ...]) -> bool:
-    """True when a pattern without a folder part matches the file name of ``path`` (a
-    package-relative path): ``ost.yaml``, ``*.pgm``."""
-    name = path.rpartition("/")[2]
-    return any("/" not in pattern.rstrip("/") and fnmatch(name, pattern) for pattern in patterns)
+def ignored(path: str, ignores: tuple[GitIgnore, ...]) -> bool:
+    """True when git ignores the file at ``path`` (package-relative) by one of ``ignores``:
+    ``ost.yaml``, ``*.pgm``, ``maps/``, ``*/`` in ``models/.gitignore`` for
+    ``models/yolo/best.onnx``."""
+    for ignore in ignores:
+        if ignore.folder and not path.startswith(ignore.folder + "/"):
+            continue
+        below = ignore.prefix + (path[len(ignore.folder) + 1:] if ignore.folder else path)
+        if _matches(below, ignore.pattern):
+            return True
+    return False
+
+
+def _matches(path: str, pattern: str) -> bool:
+    """True when the ``.gitignore`` ``pattern`` matches ``path`` (below the file's folder) or
+    one of the folders it lies in."""
+    folders_only = pattern.endswith("/")
+    pattern = pattern.rstrip("/")
+    if pattern.startswith("**/"):
+        pattern = pattern[3:]
+    parts = path.split("/")
+    if "/" in pattern:  # anchored at the file's folder: match the leading parts
+        leading = ("/".join(parts[:count]) for count in range(1, len(parts) + 1))
+        return any(fnmatchcase(part, pattern.lstrip("/")) and (count < len(parts) or
+                                                               not folders_only)
+                   for count, part in enumerate(leading, 1))
+    return any(fnmatchcase(part, pattern) and (count < len(parts) or not folders_only)
+               for count, part in enumerate(parts, 1))

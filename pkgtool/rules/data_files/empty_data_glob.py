@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.setup_eval.tree import normalize
-from pkgtool.model.submodules import under
+from pkgtool.model.submodules import ignored, under
 from pkgtool.rules.registry import rule
 from pkgtool.rules.setup_values import checked_setup
 
@@ -19,7 +19,9 @@ def empty_data_glob(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Evaluates `glob(...)`, `glob.glob(...)` and `Path(...).glob/rglob(...)` used in data_files
-    against the package's files and reports patterns that match nothing.
+    against the package's files and reports patterns that match nothing, unless git ignores
+    what they would match (a `.gitignore` of the package or above it lists those files or
+    their folder: models or maps a script downloads are left out of git on purpose).
 
     ## Why is this bad?
     The build succeeds and installs nothing for that entry: a launch or config folder that
@@ -41,7 +43,9 @@ def empty_data_glob(package: Package) -> Iterator[Hit]:
     setup = checked_setup(package)
     for entry in setup.data_files or () if setup else ():
         for source in entry.sources:
+            written = normalize(source.pattern) or ""
             if source.is_glob and not source.matches and \
-                    not under(normalize(source.pattern) or "", package.unfetched):
+                    not under(written, package.unfetched) and \
+                    not ignored(written, package.ignores):  # files git leaves out on purpose
                 yield Hit(source.span, f"The glob `{source.pattern}` matches no file: nothing "
                                        f"is installed to `{entry.destination}` from it")
