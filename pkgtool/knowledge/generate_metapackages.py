@@ -132,8 +132,13 @@ def _git(mirror: Path, *args: str) -> bytes:
 
 
 def mirror_of(repository: str, mirrors: Path) -> Path:
-    """The local git mirror of GitHub ``owner/name``."""
-    return mirrors / repository.replace("/", "+", 1) / "repo"
+    """The local git mirror of GitHub ``owner/name``, its name matched without case (GitHub's
+    names are not case-sensitive: rosdistro writes ``flexbe/...`` for ``FlexBE/...``)."""
+    folder = repository.replace("/", "+", 1)
+    if not (mirrors / folder).exists() and mirrors.is_dir():
+        folder = next((f.name for f in mirrors.iterdir() if f.name.lower() == folder.lower()),
+                      folder)
+    return mirrors / folder / "repo"
 
 
 def repository_metapackages(repository: str, commit: str, mirrors: Path

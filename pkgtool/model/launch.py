@@ -125,7 +125,8 @@ class LaunchFile:
     paths: tuple[tuple[str, Span], ...] = ()
 
 
-NOT_LAUNCH_FOLDERS = frozenset({"test", "tests", "example", "examples", "doc", "docs"})
+NOT_LAUNCH_FOLDERS = frozenset({"test", "tests", "example", "examples", "sample", "samples",
+                                "doc", "docs"})
 """Top-level folders of test and documentation material: a launch-like name there is not enough."""
 TEMPLATE_FOLDERS = frozenset({"template", "templates"})
 """Top-level folders of templates a script copies into a package it generates (a new robot's
@@ -143,8 +144,9 @@ def is_launch_file(path: str, python_folders: frozenset[str] = frozenset()) -> b
     Files under ``templates/`` never are (:func:`is_template`). Anything named like a launch
     file in a ``launch`` folder is one. Elsewhere the name is not enough: a module inside a
     Python package folder (``python_folders``: folders holding an ``__init__.py``; it is
-    installed as code), a test (``test_*``) and files under ``test/``, ``examples/`` or
-    ``doc/`` (run by pytest, or by ``main()`` with a ``LaunchService``) are not launch files.
+    installed as code), a test (``test_*``) and files under ``test/``, ``examples/``,
+    ``samples/`` or ``doc/`` (run by pytest, by ``main()`` with a ``LaunchService``, or by
+    path from that folder, next to its data) are not launch files.
     """
     folder, _, name = path.rpartition("/")
     if not name.endswith(LAUNCH_SUFFIXES) or is_template(path):

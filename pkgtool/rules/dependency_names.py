@@ -104,6 +104,25 @@ def unknown_dependencies(package: Package) -> list[Unknown]:
             continue
         elsewhere = tuple(d for d in DISTROS if rosdistro.is_released_package(name, d))
         close = [] if elsewhere else rosdistro.close_names(name, distro, extra=neighbours(package))
-        meant = close[0] if close and _same_module(package, name, close[0]) else None
+        meant = close[0] if close and _same_module(package, name, close[0]) and \
+            not _of_a_family(package, name, close[0]) else None
         found.append(Unknown(dependency, meant, elsewhere))
     return found
+
+
+_PARTS = re.compile(r"[-_.]")
+
+
+def _of_a_family(package: Package, key: str, close: str) -> bool:
+    """True when a part of ``key`` that differs from ``close`` (four characters or more)
+    starts a part of another dependency that nothing provides either: ``libqnn-dev`` beside
+    ``libqnn1`` is a vendor's family of keys rosdep lacks, not a misspelt ``libann-dev``."""
+    changed = {part for part in _PARTS.split(key) if len(part) >= 4} - set(_PARTS.split(close))
+    if not changed or package.manifest is None:
+        return False
+    distro = package.context.distro
+    return any(other.name != key and any(part.startswith(tuple(changed))
+                                         for part in _PARTS.split(other.name)) and
+               not rosdistro.is_known_dependency(other.name, distro) and
+               not is_local(package, other.name)
+               for other in package.manifest.dependencies if other.name)

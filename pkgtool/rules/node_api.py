@@ -73,9 +73,9 @@ ACTION_PARAMETERS = ("node", "action_type", "action_name")
 def node_api_calls(package: Package, methods: Collection[str] = PARAMETERS
                    ) -> Iterator[tuple[PythonModule, ast.Call, str, Index]]:
     """``x.<method>(...)`` calls of ``methods`` (:data:`PARAMETERS`), with the method name;
-    not where ``x`` is certainly no node (:func:`_not_a_node`)."""
+    not where ``x`` is certainly no node (:func:`not_from_rclpy`)."""
     for module, call, method, index in _method_calls(package):
-        if method in methods and not _not_a_node(call.func.value, index):  # type: ignore
+        if method in methods and not not_from_rclpy(call.func.value, index):  # type: ignore
             yield module, call, method, index
 
 
@@ -93,7 +93,7 @@ def _method_calls(package: Package) -> tuple[tuple[PythonModule, ast.Call, str, 
     return tuple(found)
 
 
-def _not_a_node(receiver: ast.expr, index: Index) -> bool:
+def not_from_rclpy(receiver: ast.expr, index: Index) -> bool:
     """True when ``receiver`` is certainly no rclpy node: an imported name, or what calling one
     makes, from a module other than rclpy (``boto3.session.Session().create_client(...)``)."""
     made = receiver.func if isinstance(receiver, ast.Call) else receiver
@@ -195,15 +195,22 @@ _SERVED = frozenset({"create_subscription", "create_service"})
 """The creators whose third argument is the callback."""
 
 
+_PLAIN_DECORATORS = frozenset({"staticmethod", "classmethod"})
+
+
 def _method_of_class(value: ast.expr, call: ast.Call, index: Index) -> bool:
-    """True for a lambda, or ``self.<a method of the class around the call>``."""
+    """True for a lambda, or ``self.<a method of the class around the call>`` (plain: no
+    decorator but ``staticmethod`` or ``classmethod``; a ``@property`` reads as its value)."""
     if isinstance(value, ast.Lambda):
         return True
     around = index.enclosing_class(call)
-    return around is not None and isinstance(value, ast.Attribute) and \
-        isinstance(value.value, ast.Name) and value.value.id == "self" and any(
-            isinstance(f, (ast.FunctionDef, ast.AsyncFunctionDef)) and f.name == value.attr
-            for f in around.body)
+    if around is None or not (isinstance(value, ast.Attribute) and
+                              isinstance(value.value, ast.Name) and value.value.id == "self"):
+        return False
+    named = [f for f in around.body
+             if isinstance(f, (ast.FunctionDef, ast.AsyncFunctionDef)) and f.name == value.attr]
+    return bool(named) and all(isinstance(d, ast.Name) and d.id in _PLAIN_DECORATORS
+                               for f in named for d in f.decorator_list)
 
 
 def swapped_argument(call: ast.Call, method: str, index: Index) -> tuple[ast.expr, str] | None:

@@ -27,7 +27,7 @@ def uninstalled_launch_file(package: Package) -> Iterator[Hit]:
     does not install anywhere under `share/<name>`; installing them flat into `share/<name>`
     or into `share/<name>/launch` are both fine. Launch files under `test/` and `doc/` are
     ignored, and so are files that only look like launch files: outside a `launch` folder, a
-    module inside the Python package, a `test_*` file or a file under `examples/`.
+    module inside the Python package, a `test_*` file or a file under `examples/` or `samples/`.
 
     ## Why is this bad?
     `ros2 launch <package> <file>` searches the installed share folder only: the launch file

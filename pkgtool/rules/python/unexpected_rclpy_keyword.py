@@ -11,7 +11,8 @@ from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import (PARAMETERS, derives_from_node_alone, node_api_calls,
-                                    node_constructions)
+                                    node_constructions, not_from_rclpy)
+from pkgtool.rules.python._assignments import assigned_values
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
@@ -70,7 +71,9 @@ def unexpected_rclpy_keyword(package: Package) -> Iterator[Hit]:
     `wait_for_server`, `rclpy.init`, `spin`, `spin_once`, `spin_until_future_complete`,
     node constructors, `ActionServer`, `ActionClient` and the executors. As for the other
     rclpy checks, only modules importing rclpy are looked at, and not when the package
-    defines a function of the same name (a wrapper of its own).
+    defines a function of the same name (a wrapper of its own), nor for methods called on a
+    name or `self.x` only ever assigned what another library makes (flexbe's
+    `ProxyServiceCaller(...)`, whose `call_async` takes `wait_duration=`).
 
     ## Why is this bad?
     Python raises `TypeError: ... got an unexpected keyword argument 'timeout'` when the line
@@ -91,9 +94,10 @@ def unexpected_rclpy_keyword(package: Package) -> Iterator[Hit]:
     """
     defined = {function.name for _, _, index in installed_trees(package)
                for function in index.functions}
-    for module, call, method, _ in node_api_calls(package, WRONG_KEYWORDS):
+    trees = {id(index): tree for _, tree, index in installed_trees(package)}
+    for module, call, method, index in node_api_calls(package, WRONG_KEYWORDS):
         for keyword, meant in _wrong(call, WRONG_KEYWORDS[method]) if method not in defined \
-                else ():
+                and not _wrapper(call, package, trees[id(index)], index) else ():
             yield Hit(Span(module.path, keyword.lineno, keyword.col_offset + 1),
                       f"`{method}()` has no `{keyword.arg}` argument: it raises TypeError",
                       f"Write `{meant}=`")
@@ -121,10 +125,19 @@ def unexpected_rclpy_keyword(package: Package) -> Iterator[Hit]:
             if named and named.startswith("rclpy.") and named not in _NODES:
                 yield from _unknown(module.path, call, named, f"`{named.rpartition('.')[2]}()`",
                                     WRONG_KEYWORDS.get(named.rpartition(".")[2], {}))
-    for module, call, method, _ in node_api_calls(package, methods()):
-        if method not in defined:
+    for module, call, method, index in node_api_calls(package, methods()):
+        if method not in defined and not _wrapper(call, package, trees[id(index)], index):
             yield from _unknown(module.path, call, method, f"`{method}()`",
                                 WRONG_KEYWORDS.get(method, {}))
+
+
+def _wrapper(call: ast.Call, package: Package, tree: ast.Module, index: Index) -> bool:
+    """True when the receiver of the method ``call`` (a local name or ``self.x``) only ever
+    holds what code from outside rclpy makes: another library's object with a method of the
+    same name (flexbe's ``ProxyServiceCaller().call_async(topic, request, wait_duration=)``)."""
+    receiver = call.func.value if isinstance(call.func, ast.Attribute) else None
+    assigned = assigned_values(receiver, package, tree, index) if receiver is not None else None
+    return bool(assigned) and all(not_from_rclpy(value, where) for value, where in assigned)
 
 
 _NODES = ("rclpy.node.Node", "rclpy.create_node")
