@@ -10,7 +10,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import keys_for_import, stdlib_modules
 from pkgtool.model.installed import installed_modules
-from pkgtool.model.modules import PythonModule
+from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.rules.imports import (ANY, console_script_files, declared, enclosing_package_import,
@@ -28,7 +28,9 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     Reports unguarded absolute imports (`import helpers`, `from helpers import x`) in modules
     that setup.py installs, when `helpers.py` (or a `helpers/` package) sits in the same
     folder and is not itself installed as a top-level module. Names of the standard library,
-    of known third-party modules and of package.xml's dependencies are left alone, and so is
+    of package.xml's dependencies and of third-party modules whose rosdep key package.xml
+    declares are left alone (a `visualization.py` beside the module, with no
+    `autolab-visualization-pip` declared, is the module meant), and so is
     a module importing its own name (`import rclpy` in `rclpy.py`): Python 3 imports are
     absolute, so those mean the real package, and so does the same import in the module's
     neighbours (`from record_impl import Base` next to a `record_impl.py` that wraps a compiled
@@ -84,7 +86,7 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
                 (f for f in (f"{folder}/{top}.py", f"{folder}/{top}/__init__.py")
                  if package.has_file(f)), None)
             if not inside and (sibling is None or top == own_name
-                               or keys_for_import(top, package.context.distro)
+                               or _third_party_meant(package, folder, imported, skip)
                                or _imports_itself(modules.get(f"{folder}/{top}.py"), top)):
                 continue
             if exempt is None:
@@ -100,6 +102,20 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
             yield Hit(imported.span, f"`{top}` is a module next to `{module.path}`, not a "
                                      f"top-level module: the import fails once installed",
                       f"Import `{parent}.{top}` (or `.{top}`) instead")
+
+
+def _third_party_meant(package: Package, folder: str, imported: Import,
+                       skip: set[str] | frozenset[str]) -> bool:
+    """True when ``imported`` (whose top-level name is a module of ``folder`` too) names a
+    known third-party module and means it: package.xml declares one of its keys (in
+    ``skip``), or the import names a submodule the sibling lacks (``from bokeh.plotting
+    import figure`` beside a ``bokeh/`` holding no ``plotting``)."""
+    keys = keys_for_import(imported.top_level, package.context.distro)
+    if not keys:
+        return False
+    path = f"{folder}/{imported.module.replace('.', '/')}"
+    return any(key in skip for key in keys) or not (
+        package.has_file(f"{path}.py") or package.has_file(f"{path}/__init__.py"))
 
 
 def _run_as_a_script(package: Package, module: PythonModule, scripts: frozenset[str]) -> bool:
