@@ -157,6 +157,7 @@ RULES = {
     "PYC065": ("misspelled-pytest-name", "error", True, "python.misspelled_pytest_name"),
     "PYC066": ("parametrize-unknown-argument", "error", True,
                "python.parametrize_unknown_argument"),
+    "PYC067": ("service-type-mismatch", "error", True, "python.service_type_mismatch"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

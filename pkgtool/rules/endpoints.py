@@ -1,5 +1,6 @@
-"""What PYC021, PYC022 and LCH014 share: the publishers and subscriptions of a package's installed
-modules whose topic name is certain, with their message type and QoS when known.
+"""What PYC021, PYC022, PYC067 and LCH014 share: the publishers and subscriptions (services and
+clients) of a package's installed modules whose topic (service) name is certain, with their
+interface type and QoS when known.
 
 A topic name is certain when it is a string literal, a name bound once in its function (or
 module) to one, or a parameter read (``self.get_parameter('topic').value``) the class
@@ -39,10 +40,11 @@ _READS = frozenset({"value", "string_value"})
 
 @record
 class Endpoint:
-    """A publisher or subscription: ``kind`` (``publisher``/``subscription``), the topic,
-    its message type (``pkg/Name``, None when unknown), its (reliability, durability)
-    (None when unknown), and where its type, QoS and topic arguments are; ``literal``: the
-    topic is written there as a string (not a name or a parameter's default)."""
+    """A publisher or subscription: ``kind`` (``publisher``/``subscription``; for services
+    ``service``/``client``), the topic (service name), its message (service) type
+    (``pkg/Name``, None when unknown), its (reliability, durability) (None when unknown or a
+    service), and where its type, QoS and topic arguments are; ``literal``: the topic is
+    written there as a string (not a name or a parameter's default)."""
 
     kind: str
     topic: str
@@ -57,32 +59,48 @@ class Endpoint:
 @per_package
 def endpoints(package: Package) -> tuple[Endpoint, ...]:
     """The package's publishers and subscriptions with a certain topic name."""
+    return tuple(_endpoints(package, {"create_publisher": "publisher",
+                                      "create_subscription": "subscription"},
+                            ("topic", "msg_type"), "msg"))
+
+
+@per_package
+def service_endpoints(package: Package) -> tuple[Endpoint, ...]:
+    """The package's services and clients with a certain service name (``kind``:
+    ``service``/``client``, ``type``: ``pkg/Name`` of a ``pkg.srv.Name`` class)."""
+    return tuple(_endpoints(package, {"create_service": "service", "create_client": "client"},
+                            ("srv_name", "srv_type"), "srv"))
+
+
+def _endpoints(package: Package, kinds: dict[str, str], names: tuple[str, str], module: str
+               ) -> Iterator[Endpoint]:
+    """The endpoints the node methods ``kinds`` make (method -> kind), whose name argument
+    (``names``: the name's and the type's parameters) is certain, with the type of their
+    interface class (imported from ``<pkg>.<module>``) and, for topics, their QoS."""
     changed = _overrides(package)
-    found = []
-    for module, call, method, index in node_api_calls(
-            package, ("create_publisher", "create_subscription")):
+    for code, call, method, index in node_api_calls(package, kinds):
         parameters = PARAMETERS[method]
-        topic_expr, kind, qos = (argument(call, parameters, name)
-                                 for name in ("topic", "msg_type", "qos_profile"))
-        topic = _text(topic_expr, index, changed, module.path) if topic_expr else None
-        if topic is None or topic.startswith("~") or "{" in topic or kind is None or \
-                unpacks(call) or topic.lstrip("/") in changed.anywhere:
+        name_expr, kind = (argument(call, parameters, name) for name in names)
+        qos = argument(call, parameters, "qos_profile") if module == "msg" else None
+        name = _text(name_expr, index, changed, code.path) if name_expr else None
+        if name is None or name.startswith("~") or "{" in name or kind is None or \
+                unpacks(call) or name.lstrip("/") in changed.anywhere:
             continue
-        found.append(Endpoint(
-            "publisher" if method == "create_publisher" else "subscription", topic,
-            _message(kind, index), _profile(qos, index) if qos is not None else None,
-            Span(module.path, kind.lineno, kind.col_offset + 1),
-            Span(module.path, (qos or kind).lineno, (qos or kind).col_offset + 1),
-            Span(module.path, topic_expr.lineno, topic_expr.col_offset + 1),
-            isinstance(topic_expr, ast.Constant)))
-    return tuple(found)
+        assert name_expr is not None
+        yield Endpoint(
+            kinds[method], name, _interface(kind, index, module),
+            _profile(qos, index) if qos is not None else None,
+            Span(code.path, kind.lineno, kind.col_offset + 1),
+            Span(code.path, (qos or kind).lineno, (qos or kind).col_offset + 1),
+            Span(code.path, name_expr.lineno, name_expr.col_offset + 1),
+            isinstance(name_expr, ast.Constant))
 
 
-def _message(kind: ast.expr, index: Index) -> str | None:
-    """``pkg/Name`` of a message class imported by name, or None."""
+def _interface(kind: ast.expr, index: Index, module: str) -> str | None:
+    """``pkg/Name`` of an interface class imported by name from ``pkg.<module>``, or None."""
     dotted = index.qualified(kind)
     parts = dotted.split(".") if dotted else []
-    return f"{parts[0]}/{parts[-1]}" if len(parts) >= 3 and parts[1] == "msg" else None
+    return f"{parts[0]}/{parts[-1]}" if len(parts) >= 3 and parts[1] == module else None
 
 
 @record
@@ -213,10 +231,12 @@ def _profile(expr: ast.expr, index: Index) -> tuple[str, str] | None:
     return policies["reliability"], policies["durability"]
 
 
-def by_topic(package: Package) -> Iterator[tuple[list[Endpoint], list[Endpoint]]]:
-    """(publishers, subscriptions) of each topic that has both."""
+def by_topic(package: Package, services: bool = False
+             ) -> Iterator[tuple[list[Endpoint], list[Endpoint]]]:
+    """(publishers, subscriptions) of each topic that has both; with ``services``, (services,
+    clients) of each service name."""
     topics: dict[str, tuple[list[Endpoint], list[Endpoint]]] = {}
-    for endpoint in endpoints(package):
+    for endpoint in service_endpoints(package) if services else endpoints(package):
         pair = topics.setdefault(endpoint.topic, ([], []))
-        pair[endpoint.kind == "subscription"].append(endpoint)
+        pair[endpoint.kind in ("subscription", "client")].append(endpoint)
     yield from (pair for pair in topics.values() if all(pair))

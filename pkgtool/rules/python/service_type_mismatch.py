@@ -1,0 +1,56 @@
+"""PYC067: a client of a service type no server of the package serves under its name."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.rules.endpoints import by_topic
+from pkgtool.rules.registry import rule
+
+
+@rule("PYC067", "service-type-mismatch", Severity.ERROR,
+      fix="Use the same service type on both sides, or another service name")
+def service_type_mismatch(package: Package) -> Iterator[Hit]:
+    """A client calls a service name with another service type than the package's server
+    of that name serves.
+
+    ## What it does
+    Pairs the `create_service` and `create_client` calls of the package's installed modules
+    by service name, when the name is certain (as for PYC021: a string literal, a name
+    bound once to one, or a parameter read whose literal default no parameter or launch file
+    of the package may change). Reports a client whose service class (imported by name,
+    `pkg.srv.Name`) is none of the classes the package's services of that name use, when all
+    of those are known. Private names (`~/x`) are left out.
+
+    ## Why is this bad?
+    ROS 2 matches a client to a server only when their types agree: `wait_for_service()`
+    never returns True (or times out every time) and every call waits forever. It follows a
+    change of the service type on one side only, or an interface imported under the wrong
+    name.
+
+    ## Example
+    ```python
+    self.create_service(AddTwoInts, 'add_two_ints', self.add)   # server.py
+    self.client = self.create_client(Trigger, 'add_two_ints')  # client.py
+    ```
+
+    ## Use instead
+    ```python
+    self.create_service(AddTwoInts, 'add_two_ints', self.add)
+    self.client = self.create_client(AddTwoInts, 'add_two_ints')
+    ```
+    """
+    for services, clients in by_topic(package, services=True):
+        served = {s.type for s in services}
+        if None in served:
+            continue
+        for client in clients:
+            if client.type is not None and client.type not in served:
+                types = ", ".join(f"`{t}`" for t in sorted(t for t in served if t))
+                yield Hit(client.type_span,
+                          f"The client of `{client.topic}` calls `{client.type}`, but this "
+                          f"package serves {types} under that name: the types differ, so the "
+                          "client never finds the server and every call waits forever",
+                          related=tuple(s.type_span for s in services))
