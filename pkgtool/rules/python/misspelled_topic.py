@@ -1,5 +1,5 @@
-"""PYC044: a subscription to a topic nothing publishes, a typo away from one the package
-publishes."""
+"""PYC044: a subscription to a topic nothing publishes (a client of a service nothing serves),
+a typo away from one the package publishes (serves)."""
 
 from __future__ import annotations
 
@@ -8,7 +8,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.model.package import Package
-from pkgtool.rules.endpoints import endpoints
+from pkgtool.rules.endpoints import Endpoint, endpoints, service_endpoints
 from pkgtool.rules.registry import rule
 
 
@@ -22,7 +22,8 @@ def _digits_differ(first: str, second: str) -> bool:
       fix="Use one topic name on both sides")
 def misspelled_topic(package: Package) -> Iterator[Hit]:
     """A subscription's topic is published by nothing in the package, and is a typo away from
-    a topic the package publishes with the same message type.
+    a topic the package publishes with the same message type (the same for a client's
+    service name and the package's services).
 
     ## What it does
     Takes the publishers and subscriptions of the package's installed modules whose topic
@@ -30,12 +31,16 @@ def misspelled_topic(package: Package) -> Iterator[Hit]:
     parameter or launch file changes; topics a launch file quotes, which it may remap, are
     left out). Reports a subscription whose topic no publisher of the package uses when
     exactly one published topic of the same message type is a typo away from it (one edit,
-    or a swap of neighbours), unless the two differ in a digit (`robot1`, `robot2`).
+    or a swap of neighbours), unless the two differ in a digit (`robot1`, `robot2`). The
+    same for a client whose service name no service of the package has, a typo away from the
+    one name served with the same service type.
 
     ## Why is this bad?
     ROS 2 matches topics by exact name: `chater` never receives what is published on
-    `chatter`, and nothing says so; the subscriber just waits. A topic another package
-    publishes under that near-miss name is possible, which is why this is a warning.
+    `chatter`, and nothing says so; the subscriber just waits, and a client's
+    `wait_for_service()` never sees `add_two_int` served. A topic another package publishes
+    (a service another package serves) under that near-miss name is possible, which is why
+    this is a warning.
 
     ## Example
     ```python
@@ -48,19 +53,31 @@ def misspelled_topic(package: Package) -> Iterator[Hit]:
     self.create_subscription(String, 'chatter', self.on_message, 10)
     ```
     """
-    found = endpoints(package)
-    published: dict[str, set[str | None]] = {}
+    for endpoint, meant in _near_misses(endpoints(package), "publisher", "subscription"):
+        yield Hit(endpoint.type_span,
+                  f"The subscription to `{endpoint.topic}` gets nothing this package "
+                  f"publishes: it publishes `{endpoint.type}` on `{meant}`, a typo away "
+                  f"(did you mean `{meant}`?)")
+    for endpoint, meant in _near_misses(service_endpoints(package), "service", "client"):
+        yield Hit(endpoint.type_span,
+                  f"The client of `{endpoint.topic}` calls a name nothing in this package "
+                  f"serves: it serves `{endpoint.type}` as `{meant}`, a typo away (did you "
+                  f"mean `{meant}`?)")
+
+
+def _near_misses(found: tuple[Endpoint, ...], offering: str, using: str
+                 ) -> Iterator[tuple[Endpoint, str]]:
+    """Each endpoint of kind ``using`` whose name no endpoint of kind ``offering`` has, with
+    the one offered name of the same type a typo away from it."""
+    offered: dict[str, set[str | None]] = {}
     for endpoint in found:
-        if endpoint.kind == "publisher":
-            published.setdefault(endpoint.topic.lstrip("/"), set()).add(endpoint.type)
+        if endpoint.kind == offering:
+            offered.setdefault(endpoint.topic.lstrip("/"), set()).add(endpoint.type)
     for endpoint in found:
-        topic = endpoint.topic.lstrip("/")
-        if endpoint.kind != "subscription" or endpoint.type is None or topic in published:
+        name = endpoint.topic.lstrip("/")
+        if endpoint.kind != using or endpoint.type is None or name in offered:
             continue
-        same_type = [t for t, types in published.items() if types == {endpoint.type}]
-        meant = typo_of(topic, same_type)
-        if meant is not None and not _digits_differ(topic, meant):
-            yield Hit(endpoint.type_span,
-                      f"The subscription to `{endpoint.topic}` gets nothing this package "
-                      f"publishes: it publishes `{endpoint.type}` on `{meant}`, a typo away "
-                      f"(did you mean `{meant}`?)")
+        same_type = [t for t, types in offered.items() if types == {endpoint.type}]
+        meant = typo_of(name, same_type)
+        if meant is not None and not _digits_differ(name, meant):
+            yield endpoint, meant
