@@ -18,13 +18,15 @@ from collections.abc import Iterator
 
 from pkgtool.model.ast_nodes import subtree
 from pkgtool.model.memo import per_package
+from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.records import record
-from pkgtool.rules.node_api import PARAMETERS, argument, node_api_calls, unpacks
+from pkgtool.rules.node_api import (ACTION_PARAMETERS, ACTIONS, PARAMETERS, argument,
+                                    node_api_calls, unpacks)
 from pkgtool.rules.node_parameters import analysed_classes, file_entries, flat_parameters
 from pkgtool.rules.scopes import bound_names
-from pkgtool.rules.syntax_trees import FUNCTIONS, Index
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
 _QOS = "rclpy.qos"
 _PRESETS = {"qos_profile_sensor_data": ("BEST_EFFORT", "VOLATILE"),
@@ -41,7 +43,8 @@ _READS = frozenset({"value", "string_value"})
 @record
 class Endpoint:
     """A publisher or subscription: ``kind`` (``publisher``/``subscription``; for services
-    ``service``/``client``), the topic (service name), its message (service) type
+    ``server``/``client``, for actions ``action server``/``action client``), the topic
+    (service or action name), its message (service, action) type
     (``pkg/Name``, None when unknown), its (reliability, durability) (None when unknown or a
     service), and where its type, QoS and topic arguments are; ``literal``: the topic is
     written there as a string (not a name or a parameter's default)."""
@@ -66,20 +69,39 @@ def endpoints(package: Package) -> tuple[Endpoint, ...]:
 
 @per_package
 def service_endpoints(package: Package) -> tuple[Endpoint, ...]:
-    """The package's services and clients with a certain service name (``kind``:
-    ``service``/``client``, ``type``: ``pkg/Name`` of a ``pkg.srv.Name`` class)."""
-    return tuple(_endpoints(package, {"create_service": "service", "create_client": "client"},
-                            ("srv_name", "srv_type"), "srv"))
+    """The package's services and clients (``kind``: ``server``/``client``, ``type``:
+    ``pkg/Name`` of a ``pkg.srv.Name`` class), and its action servers and clients (``action
+    server``/``action client``, of a ``pkg.action.Name`` class), with a certain name."""
+    return tuple(_endpoints(package, {"create_service": "server", "create_client": "client"},
+                            ("srv_name", "srv_type"), "srv")) + \
+        tuple(_endpoints(package, {"ActionServer": "action server",
+                                   "ActionClient": "action client"},
+                         ("action_name", "action_type"), "action"))
+
+
+def _calls(package: Package, kinds: dict[str, str]
+           ) -> Iterator[tuple[PythonModule, ast.Call, str, tuple[str, ...], Index]]:
+    """The calls of the node methods, or rclpy action classes, ``kinds`` names, each with the
+    name of what is called and its positional parameters."""
+    if kinds.keys() <= PARAMETERS.keys():
+        for code, call, method, index in node_api_calls(package, kinds):
+            yield code, call, method, PARAMETERS[method], index
+        return
+    for code, _, index in installed_trees(package):
+        for call in index.calls:
+            called = index.qualified(call.func) \
+                if isinstance(call.func, (ast.Name, ast.Attribute)) else None
+            if called in ACTIONS:
+                yield code, call, called.rpartition(".")[2], ACTION_PARAMETERS, index
 
 
 def _endpoints(package: Package, kinds: dict[str, str], names: tuple[str, str], module: str
                ) -> Iterator[Endpoint]:
-    """The endpoints the node methods ``kinds`` make (method -> kind), whose name argument
-    (``names``: the name's and the type's parameters) is certain, with the type of their
-    interface class (imported from ``<pkg>.<module>``) and, for topics, their QoS."""
+    """The endpoints the node methods (or action classes) ``kinds`` make (-> kind), whose name
+    argument (``names``: the name's and the type's parameters) is certain, with the type of
+    their interface class (imported from ``<pkg>.<module>``) and, for topics, their QoS."""
     changed = _overrides(package)
-    for code, call, method, index in node_api_calls(package, kinds):
-        parameters = PARAMETERS[method]
+    for code, call, method, parameters, index in _calls(package, kinds):
         name_expr, kind = (argument(call, parameters, name) for name in names)
         qos = argument(call, parameters, "qos_profile") if module == "msg" else None
         name = _text(name_expr, index, changed, code.path) if name_expr else None
@@ -234,9 +256,9 @@ def _profile(expr: ast.expr, index: Index) -> tuple[str, str] | None:
 def by_topic(package: Package, services: bool = False
              ) -> Iterator[tuple[list[Endpoint], list[Endpoint]]]:
     """(publishers, subscriptions) of each topic that has both; with ``services``, (services,
-    clients) of each service name."""
-    topics: dict[str, tuple[list[Endpoint], list[Endpoint]]] = {}
+    clients) of each service name, (action servers, action clients) of each action name."""
+    topics: dict[tuple[bool, str], tuple[list[Endpoint], list[Endpoint]]] = {}
     for endpoint in service_endpoints(package) if services else endpoints(package):
-        pair = topics.setdefault(endpoint.topic, ([], []))
-        pair[endpoint.kind in ("subscription", "client")].append(endpoint)
+        pair = topics.setdefault((endpoint.kind.startswith("action"), endpoint.topic), ([], []))
+        pair[endpoint.kind.endswith(("subscription", "client"))].append(endpoint)
     yield from (pair for pair in topics.values() if all(pair))

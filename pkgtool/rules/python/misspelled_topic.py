@@ -33,7 +33,7 @@ def misspelled_topic(package: Package) -> Iterator[Hit]:
     exactly one published topic of the same message type is a typo away from it (one edit,
     or a swap of neighbours), unless the two differ in a digit (`robot1`, `robot2`). The
     same for a client whose service name no service of the package has, a typo away from the
-    one name served with the same service type.
+    one name served with the same service type, and for rclpy's action clients and servers.
 
     ## Why is this bad?
     ROS 2 matches topics by exact name: `chater` never receives what is published on
@@ -58,11 +58,13 @@ def misspelled_topic(package: Package) -> Iterator[Hit]:
                   f"The subscription to `{endpoint.topic}` gets nothing this package "
                   f"publishes: it publishes `{endpoint.type}` on `{meant}`, a typo away "
                   f"(did you mean `{meant}`?)")
-    for endpoint, meant in _near_misses(service_endpoints(package), "service", "client"):
-        yield Hit(endpoint.type_span,
-                  f"The client of `{endpoint.topic}` calls a name nothing in this package "
-                  f"serves: it serves `{endpoint.type}` as `{meant}`, a typo away (did you "
-                  f"mean `{meant}`?)")
+    for action in ("", "action "):
+        for endpoint, meant in _near_misses(service_endpoints(package), f"{action}server",
+                                            f"{action}client"):
+            yield Hit(endpoint.type_span,
+                      f"The {action}client of `{endpoint.topic}` calls a name nothing in this "
+                      f"package serves: it serves `{endpoint.type}` as `{meant}`, a typo away "
+                      f"(did you mean `{meant}`?)")
 
 
 def _near_misses(found: tuple[Endpoint, ...], offering: str, using: str

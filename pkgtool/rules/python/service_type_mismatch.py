@@ -1,4 +1,5 @@
-"""PYC067: a client of a service type no server of the package serves under its name."""
+"""PYC067: a client of a service (action) type no server of the package serves under its
+name."""
 
 from __future__ import annotations
 
@@ -14,7 +15,7 @@ from pkgtool.rules.registry import rule
       fix="Use the same service type on both sides, or another service name")
 def service_type_mismatch(package: Package) -> Iterator[Hit]:
     """A client calls a service name with another service type than the package's server
-    of that name serves.
+    of that name serves (or an action client, an action server's).
 
     ## What it does
     Pairs the `create_service` and `create_client` calls of the package's installed modules
@@ -22,7 +23,8 @@ def service_type_mismatch(package: Package) -> Iterator[Hit]:
     bound once to one, or a parameter read whose literal default no parameter or launch file
     of the package may change). Reports a client whose service class (imported by name,
     `pkg.srv.Name`) is none of the classes the package's services of that name use, when all
-    of those are known. Private names (`~/x`) are left out.
+    of those are known. Private names (`~/x`) are left out. The same for rclpy's
+    `ActionClient` and `ActionServer` (`pkg.action.Name` classes, by action name).
 
     ## Why is this bad?
     ROS 2 matches a client to a server only when their types agree: `wait_for_service()`
@@ -49,8 +51,10 @@ def service_type_mismatch(package: Package) -> Iterator[Hit]:
         for client in clients:
             if client.type is not None and client.type not in served:
                 types = ", ".join(f"`{t}`" for t in sorted(t for t in served if t))
+                action = "action " if client.kind.startswith("action") else ""
                 yield Hit(client.type_span,
-                          f"The client of `{client.topic}` calls `{client.type}`, but this "
-                          f"package serves {types} under that name: the types differ, so the "
-                          "client never finds the server and every call waits forever",
+                          f"The {action}client of `{client.topic}` uses `{client.type}`, but "
+                          f"this package serves {types} under that name: the types differ, "
+                          f"so the client never finds the {action}server and every "
+                          f"{'goal' if action else 'call'} waits forever",
                           related=tuple(s.type_span for s in services))
