@@ -8,6 +8,7 @@ function takes the target ``distro`` (one of :data:`DISTROS`, default :data:`DEF
 from __future__ import annotations
 
 import difflib
+import re
 from collections.abc import Iterable
 from functools import cache, lru_cache
 
@@ -143,6 +144,28 @@ def typo_distance(first: str, second: str, budget: int) -> int:
 @cache
 def _candidates(distro: str) -> frozenset[str]:
     return released_packages(distro) | rosdep_keys()
+
+
+_NUMBERS = re.compile(r"[0-9]+")
+
+
+def numbered_variants(name: str, distro: str = DEFAULT_DISTRO) -> list[str]:
+    """Released packages and rosdep keys that differ from ``name`` in its numbers only
+    (``gz-transport12`` and ``gz-transport13`` for ``gz-transport7``), sorted."""
+    if not _NUMBERS.search(name):
+        return []
+    shape = _NUMBERS.sub("#", name)
+    return sorted(c for c in _by_shape(distro).get(shape, ()) if c != name)
+
+
+@cache
+def _by_shape(distro: str) -> dict[str, tuple[str, ...]]:
+    """The candidates holding numbers, by their name with each number written ``#``."""
+    found: dict[str, list[str]] = {}
+    for candidate in _candidates(distro):
+        if _NUMBERS.search(candidate):
+            found.setdefault(_NUMBERS.sub("#", candidate), []).append(candidate)
+    return {shape: tuple(names) for shape, names in found.items()}
 
 
 def source_commit() -> str:

@@ -105,7 +105,8 @@ def unknown_dependencies(package: Package) -> list[Unknown]:
         elsewhere = tuple(d for d in DISTROS if rosdistro.is_released_package(name, d))
         close = [] if elsewhere else rosdistro.close_names(name, distro, extra=neighbours(package))
         meant = close[0] if close and _same_module(package, name, close[0]) and \
-            not _of_a_family(package, name, close[0]) else None
+            not _of_a_family(package, name, close[0]) and \
+            len(rosdistro.numbered_variants(name, distro)) < 2 else None
         found.append(Unknown(dependency, meant, elsewhere))
     return found
 

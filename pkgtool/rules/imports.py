@@ -380,8 +380,15 @@ def _stdlib(distro: str) -> frozenset[str]:
 
 def local_modules(package: Package, module: PythonModule) -> frozenset[str]:
     """Top-level names an import in ``module`` finds in the package itself: its own modules,
-    the modules next to ``module``, and for test code those pytest puts on ``sys.path``."""
-    local = own_modules(package) | _siblings(package, module.path)
+    the modules next to ``module`` (not ``module`` itself when another provider has its name:
+    ``from launch import ...`` in ``my_pkg/launch.py`` is ROS's ``launch``, Python 3's imports
+    being absolute), and for test code those pytest puts on ``sys.path``."""
+    own = posixpath.basename(module.path).removesuffix(".py")
+    siblings = _siblings(package, module.path)
+    if own in siblings and own not in own_modules(package) and \
+            provided_elsewhere(own, package.context):
+        siblings = siblings - {own}
+    local = own_modules(package) | siblings
     return local | pytest_path_modules(package) if is_test_code(package, module) else local
 
 

@@ -32,13 +32,14 @@ def undefined_name(package: Package) -> Iterator[Hit]:
     Runs pyflakes' checker (as a library, on the parsed tree; a quick proof first spares it
     the files where it would surely find nothing) over every installed module, every test
     module, setup.py and every Python launch file (not those calling `exec()`, which may
-    define any name) and reports its "undefined name" messages, with pyflakes' own handling
-    of builtins, `__all__`, star imports, conditional definitions and `except NameError`
-    guards. Code that never runs on Python 3 is skipped: branches of `if sys.version_info <
-    (3,):`, `if six.PY2:` or of a module constant set once to False, and annotations Python never
-    evaluates: those of assignments in a function body, a string in an annotation (a forward
-    reference, `Optional['Pose']`), and every annotation under `from __future__ import
-    annotations`.
+    define any name) and reports its "undefined name" messages (not for names the module
+    stores through `globals()`, as generated API clients' lazy imports do), with pyflakes'
+    own handling of builtins, `__all__`, star imports, conditional definitions and `except
+    NameError` guards. Code that never runs on Python 3 is skipped: branches of `if
+    sys.version_info < (3,):`, `if six.PY2:` or of a module constant set once to False, and
+    annotations Python never evaluates: those of assignments in a function body, a string in
+    an annotation (a forward reference, `Optional['Pose']`), and every annotation under `from
+    __future__ import annotations`.
 
     ## Why is this bad?
     The line raises `NameError` when it runs, which for a node usually means inside a
@@ -72,13 +73,43 @@ def undefined_name(package: Package) -> Iterator[Hit]:
             continue
         seen: set[tuple[int, str]] = set()
         dead, notes = dead_lines(tree), _unevaluated_annotations(tree)
+        stored = _stored_in_globals(tree)
         for line, column, name in _pyflakes_undefined(path, tree):
-            if any(first <= line <= last for first, last in dead) or \
+            if stored is None or name in stored or \
+                    any(first <= line <= last for first, last in dead) or \
                     any(start <= (line, column) <= end for start, end in notes):
                 continue
             if (line, name) not in seen:
                 seen.add((line, name))
                 yield Hit(Span(path, line, column + 1), f"Undefined name `{name}`")
+
+
+def _stored_in_globals(tree: ast.Module) -> frozenset[str] | None:
+    """Names the module stores through ``globals()``: ``globals()['X'] = X`` (the lazy
+    imports of generated OpenAPI clients), ``globals().update(X=...)``,
+    ``globals().setdefault('X', ...)``; None (any name) when a key is not a literal."""
+    found: set[str] = set()
+    for node in nodes_of_class(tree, ast.Subscript, ast.Call):
+        target = node.value if isinstance(node, ast.Subscript) else \
+            node.func.value if isinstance(node.func, ast.Attribute) else None
+        if not (isinstance(target, ast.Call) and isinstance(target.func, ast.Name) and
+                target.func.id == "globals" and not target.args):
+            continue
+        if isinstance(node, ast.Subscript):
+            if isinstance(node.ctx, ast.Store):
+                found.add(_key(node.slice))
+        elif isinstance(node.func, ast.Attribute) and node.func.attr == "setdefault":
+            found.add(_key(node.args[0]) if node.args else "*")
+        elif isinstance(node.func, ast.Attribute) and node.func.attr == "update":
+            found.update(k.arg or "*" for k in node.keywords)
+            found.update("*" for _ in node.args)
+    return frozenset(found) if "*" not in found else None
+
+
+def _key(node: ast.expr) -> str:
+    """A literal string key, or ``*`` for any other."""
+    return node.value if isinstance(node, ast.Constant) and isinstance(node.value, str) \
+        else "*"
 
 
 def _pyflakes_undefined(path: str, tree: ast.Module) -> list[tuple[int, int, str]]:
