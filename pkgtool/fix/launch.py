@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import ast
 import re
+import shlex
 from collections.abc import Iterator
 from difflib import get_close_matches
 
@@ -48,7 +49,9 @@ def node_arguments(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     ``node_namespace=`` (ROS 2 Dashing and Eloquent) to ``executable=``, ``name=`` and
     ``namespace=``, and a keyword the action does not take when exactly one it takes is
     spelled like it (``nam=`` becomes ``name=``); put a ``parameters=`` value that is no list
-    into one (``parameters=path`` becomes ``parameters=[path]``, a tuple a list). XML: rename
+    into one (``parameters=path`` becomes ``parameters=[path]``, a tuple a list); split a
+    string literal given to ``arguments=`` or ``ros_arguments=`` the way a shell does
+    (``'--log-level debug'`` becomes ``['--log-level', 'debug']``). XML: rename
     the ROS 1 and Python attributes of ``<node>`` that have one ROS 2 name (``type`` becomes
     ``exec``, ``ns`` ``namespace``). Safe: launch raised or refused the file. A call or tag
     that already has the new name, YAML launch files, remappings, a missing executable and
@@ -78,6 +81,15 @@ def _node_fix(doc: PyDoc, call: ast.Call, finding: Finding) -> Fix | None:
         if name == "parameters" and finding.message == f"`parameters=` of `{action}()` is " \
                 "not a list":
             return _in_a_list(doc, keyword.value)
+        if finding.message.startswith(f"`{name}=` of `{action}()` is one string") and \
+                isinstance(keyword.value, ast.Constant) and isinstance(keyword.value.value, str):
+            try:
+                words = shlex.split(keyword.value.value)
+            except ValueError:  # an unclosed quote: the user's to split
+                return None
+            return Fix(f"Split `{name}=` into a list", (Edit(
+                doc.source.path, doc.start(keyword.value), doc.end(keyword.value),
+                "[" + ", ".join(doc.string(word) for word in words) + "]"),))
     return None
 
 

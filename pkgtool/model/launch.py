@@ -55,7 +55,10 @@ class NodeRef:
     XML, the value launch makes of the text; for ``-p``, the value rcl reads), else None.
     ``output`` is the static ``output=`` (``'screen'``), when given; ``not_text`` is where a
     Python ``arguments=``, ``ros_arguments=`` or ``remappings=`` display holds a number or
-    bool literal (launch takes text and substitutions only), with the keyword. ``remapped``
+    bool literal (launch takes text and substitutions only), with the keyword;
+    ``text_not_list`` is where a Python ``arguments=`` or ``ros_arguments=`` is certainly one
+    string instead of a list (launch iterates it: one argument per character, or a
+    TypeError), with the keyword. ``remapped``
     are the names a Python ``remappings=[(from, to), ...]`` display remaps, when written as
     literals, each where it is written.
     """
@@ -78,6 +81,7 @@ class NodeRef:
     unused: bool = False
     remappings_not_pairs: Span | None = None
     inline_parameters: tuple[tuple[str, Span, str | None], ...] = ()
+    text_not_list: tuple[Span, str] | None = None
     output: str | None = None
     not_text: tuple[Span, str] | None = None
     remapped: tuple[tuple[str, Span], ...] = ()

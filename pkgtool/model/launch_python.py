@@ -282,6 +282,9 @@ class _Reader(ast.NodeVisitor):
             not_text = next(((self._span(literal), keyword) for keyword in _TEXT_LISTS
                              for literal in _non_text(_keyword(node, keyword))), None)
             remaps = not_pairs(_keyword(node, "remappings"), self._resolved)
+            text_not_list = next(((self._span(given), keyword) for keyword in _ARGUMENT_LISTS
+                                  if (given := _keyword(node, keyword)) is not None and
+                                  self._is_text(given)), None)
             self.nodes.append(NodeRef(
                 package if isinstance(package, str) else None,
                 executable if isinstance(executable, str) else None, self._span(node), action,
@@ -298,6 +301,7 @@ class _Reader(ast.NodeVisitor):
                 inline_parameters=(*self._inline_parameters(parameters),
                                    *self._argument_parameters(node)),
                 output=output if isinstance(output, str) else None, not_text=not_text,
+                text_not_list=text_not_list,
                 remapped=tuple(self._remapped(_keyword(node, "remappings")))))
         elif name == "ExecuteProcess":
             self._ros2_run(node)
@@ -370,6 +374,13 @@ class _Reader(ast.NodeVisitor):
                 if keyword == "arguments" and text in ("--ros-args", "--"):
                     ros = text == "--ros-args"
                 flag = ros and text in ("-p", "--param")
+
+    def _is_text(self, node: ast.expr) -> bool:
+        """True when ``node`` is certainly one string: a literal or f-string, also through a
+        name assigned one."""
+        node = self._resolved(node)
+        return isinstance(node, ast.JoinedStr) or \
+            isinstance(node, ast.Constant) and isinstance(node.value, str)
 
     def _not_a_list(self, node: ast.expr | None) -> bool:
         """True when ``node`` is certainly no list: a tuple, dict or set display, a string or
@@ -555,7 +566,9 @@ def read_python_launch(path: str, tree: ast.Module) -> tuple[
             tuple(sorted(unique.values(), key=lambda f: (f.span.line, f.span.col))))
 
 
-_TEXT_LISTS = ("arguments", "ros_arguments", "remappings")
+_ARGUMENT_LISTS = ("arguments", "ros_arguments")
+"""Node keywords taking a list of command-line arguments."""
+_TEXT_LISTS = (*_ARGUMENT_LISTS, "remappings")
 """Node keywords whose list items (or pairs' items) launch takes as text or substitutions."""
 
 

@@ -76,6 +76,12 @@ def _problems(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
         yield (f"`{keyword}=` of `{node.action}()` holds a number or bool, not text: launch "
                "takes text and substitutions only and raises TypeError",
                "Quote it: `'2'`", where)
+    if node.text_not_list:
+        where, keyword = node.text_not_list
+        effect = "launch passes each character as an argument" if keyword == "arguments" \
+            else "launch raises TypeError (a list plus a str)"
+        yield (f"`{keyword}=` of `{node.action}()` is one string, not a list: {effect}",
+               f"Split it into a list: `{keyword}=['--log-level', 'debug']`", where)
     if node.remappings_not_pairs:
         yield (f"`remappings=` of `{node.action}()` is not a list of (from, to) tuples",
                "Put each remapping in a tuple of two, in a list: "
@@ -132,7 +138,9 @@ def invalid_launch_node_argument(package: Package) -> Iterator[Hit]:
     digits and underscores (and `/` between the parts of a namespace), no part starting
     with a digit, and a literal `output` must be one launch knows (`screen`, `log`, `both`,
     `own_log`, `full`); a Python `arguments=`, `ros_arguments=` or `remappings=` display must
-    hold text (`arguments=['--rate', 2]` is refused).
+    hold text (`arguments=['--rate', 2]` is refused), and `arguments=` or `ros_arguments=` must
+    be a list, not one string (`arguments='--ros-args --log-level debug'` passes each
+    character as an argument; `ros_arguments='...'` raises TypeError).
 
     ## Why is this bad?
     `ros2 launch` stops before starting anything: Python raises `TypeError: unexpected keyword
