@@ -270,3 +270,13 @@ def substitution_name(package: Package, findings: list[Finding]) -> Iterator[Fix
                 continue  # a YAML scalar may be quoted with '
             edits.append(Edit(source.path, close, close, " ''"))
         yield Fix(f"Write `$({meant}` for `$({written.group(1)}`", tuple(edits))
+
+
+@fixer("LCH016", "Call the LaunchDescription method the misspelt one is close to", safe=False)
+def description_method(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename an attribute ``LaunchDescription`` lacks to the one it has spelled like it
+    (``add_actoin`` to ``add_action``). Unsafe: it guesses which method was meant; the launch
+    failed before."""
+    yield from renames(package, findings,
+                       re.compile(r"^`\w+` is a `LaunchDescription`, which has no `(\w+)`"),
+                       before=".")

@@ -110,6 +110,15 @@ ROS1_SUBSTITUTIONS = {"find": "find-pkg-share", "arg": "var", "optenv": "env"}
 instead (``$(find pkg)``: ``$(find-pkg-share pkg)``; ``$(optenv X)``: ``$(env X '')``)."""
 
 
+LAUNCH_DESCRIPTION_ATTRIBUTES = frozenset("""
+    add_action add_entity deprecated deprecated_reason describe describe_conditional_sub_entities
+    describe_sub_entities entities get_asyncio_future get_launch_arguments
+    get_launch_arguments_with_include_launch_description_actions visit
+    """.split())
+"""The public attributes of ``launch.LaunchDescription`` (ros2/launch 3.7.1, its base
+``LaunchDescriptionEntity`` included; Humble's have no other)."""
+
+
 def homes(name: str) -> tuple[str, ...]:
     """The modules of the table that define ``name``, sorted."""
     return tuple(sorted(module for module, names in MODULE_NAMES.items() if name in names))

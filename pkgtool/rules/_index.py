@@ -61,6 +61,8 @@ RULES = {
     "LCH013": ("launch-node-without-package", "error", True, "launch.node_without_package"),
     "LCH014": ("remapped-unused-name", "warning", True, "launch.remapped_unused_name"),
     "LCH015": ("unknown-substitution", "error", True, "launch.unknown_substitution"),
+    "LCH016": ("unknown-launch-description-method", "error", True,
+               "launch.unknown_description_method"),
     "MAN001": ("invalid-package-name", "error", True, "manifest.invalid_package_name"),
     "MAN002": ("invalid-version", "error", True, "manifest.invalid_version"),
     "MAN003": ("missing-required-element", "error", True, "manifest.missing_required_element"),
@@ -188,9 +190,9 @@ RULES = {
 FIXED = frozenset({
     "DAT001", "DAT003", "DAT004", "DAT005", "DAT006", "DAT007", "DAT008", "DAT009", "DEP001",
     "DEP002", "DEP003", "DEP006", "DEP007", "DEP008", "ENT002", "ENT003", "ENT005", "LCH001",
-    "LCH002", "LCH003", "LCH005", "LCH010", "LCH013", "LCH015", "MAN004", "MAN012", "MAN013",
-    "MAN015", "MAN017", "MAN018", "MAN019", "MAN021", "MAN024", "PYC001", "PYC013", "PYC014",
-    "PYC016", "PYC019", "PYC025", "PYC026", "PYC029", "PYC031", "PYC032", "PYC046", "PYC047",
-    "PYC050", "PYC058", "PYC062", "PYC063", "PYC064", "PYC065", "PYC066", "SET003", "SET004",
-    "SET005", "SET006", "SET007", "SET008", "SET009", "SET010", "SET016",
+    "LCH002", "LCH003", "LCH005", "LCH010", "LCH013", "LCH015", "LCH016", "MAN004", "MAN012",
+    "MAN013", "MAN015", "MAN017", "MAN018", "MAN019", "MAN021", "MAN024", "PYC001", "PYC013",
+    "PYC014", "PYC016", "PYC019", "PYC025", "PYC026", "PYC029", "PYC031", "PYC032", "PYC046",
+    "PYC047", "PYC050", "PYC058", "PYC062", "PYC063", "PYC064", "PYC065", "PYC066", "SET003",
+    "SET004", "SET005", "SET006", "SET007", "SET008", "SET009", "SET010", "SET016",
 })

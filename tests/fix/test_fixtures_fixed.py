@@ -30,7 +30,7 @@ PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprec
           ("DEP008", "typos_and_module_reads"), ("PYC066", "misspelt_names"),
           ("PYC014", "misspelled_reads"), ("DAT009", "misspelled_node"),
           ("PYC026", "action_and_parameter_callbacks"), ("PYC026", "wrong_value_returned"),
-          ("LCH005", "remappings_not_pairs")}
+          ("LCH005", "remappings_not_pairs"), ("LCH016", "misspelt_methods")}
 """GPLv3 can mean -only or -or-later, `my_robot_description` is no known package, values outside
 `ros__parameters` belong to a node only the user knows, a node without its executable names
 none, `required="true"` and YAML launch files are left to the user, `exception()` is close to
