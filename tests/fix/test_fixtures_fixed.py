@@ -30,7 +30,8 @@ PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprec
           ("DEP008", "typos_and_module_reads"), ("PYC066", "misspelt_names"),
           ("PYC014", "misspelled_reads"), ("DAT009", "misspelled_node"),
           ("PYC026", "action_and_parameter_callbacks"), ("PYC026", "wrong_value_returned"),
-          ("LCH005", "remappings_not_pairs"), ("LCH016", "misspelt_methods")}
+          ("LCH005", "remappings_not_pairs"), ("LCH016", "misspelt_methods"),
+          ("LCH010", "arguments_launch_rejects")}
 """GPLv3 can mean -only or -or-later, `my_robot_description` is no known package, values outside
 `ros__parameters` belong to a node only the user knows, a node without its executable names
 none, `required="true"` and YAML launch files are left to the user, `exception()` is close to
@@ -47,8 +48,9 @@ with a namespace are left; `test_requires` wants a test extra more than `tests_r
 of an executor, and an interface misspelt in a read of its module is the user's to rename;
 an action's result and a `SetParametersResult` are the author's to build, where a service
 callback's response is the one rclpy passes in; the pairs remappings were meant to be and the
-words of an f-string of arguments are the author's to write): no fix guesses, the user
-chooses; the other findings of the case are fixed."""
+words of an f-string of arguments are the author's to write, and so is the condition a
+`condition='true'` was meant to be): no fix guesses, the user chooses; the other findings
+of the case are fixed."""
 MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages"),
           ("PYC029", "near_keywords"),
           ("MAN018", "standard_library_modules"), ("DAT001", "typo_in_path"),

@@ -73,6 +73,20 @@ def _path_join(call: ast.Call, _: Index) -> Iterator[tuple[ast.AST, str, str]]:
                f"{len(call.args)} arguments: it raises TypeError", f"Write `[{parts}]`")
 
 
+def _condition(call: ast.Call, action: str) -> Iterator[tuple[ast.AST, str, str]]:
+    """A ``condition=`` that is a literal (``'true'``, ``True``) or an f-string, not one of
+    launch's conditions."""
+    value = next((k.value for k in call.keywords if k.arg == "condition"), None)
+    if isinstance(value, ast.JoinedStr) or isinstance(value, ast.Constant) and \
+            value.value is not None:
+        shown = ast.unparse(value)
+        kind = type(value.value).__name__ if isinstance(value, ast.Constant) else "str"
+        text = repr(str(value.value).lower()) if kind == "bool" else shown
+        yield (value, f"`condition=` of `{action}()` is `{shown}`, not a condition: launch "
+               f"raises AttributeError when it evaluates it ('{kind}' object has no "
+               "attribute 'evaluate')", f"Write `condition=IfCondition({text})`")
+
+
 CHECKS = {"DeclareLaunchArgument": ("launch.actions", _declare),
           "IncludeLaunchDescription": ("launch.actions", _include),
           "LaunchDescription": ("launch", _description),
@@ -93,15 +107,18 @@ def invalid_launch_action_argument(package: Package) -> Iterator[Hit]:
     keyword (`default=`, `desc=`); `IncludeLaunchDescription` with `launch_arguments=`
     written as a dict (display or comprehension) instead of its `.items()`; and
     `LaunchDescription` given one action (`LaunchDescription(Node(...))`) instead of a list;
-    and `PathJoinSubstitution` given its parts as separate arguments instead of one list.
-    Only literals and displays are judged: a dict held in a variable is not.
+    and `PathJoinSubstitution` given its parts as separate arguments instead of one list;
+    and any action of `launch.actions` or `launch_ros.actions` given a literal or f-string as
+    `condition=` (`condition='true'`) instead of a condition (`IfCondition(...)`). Only
+    literals and displays are judged: a dict held in a variable is not.
 
     ## Why is this bad?
     `ros2 launch` fails: `DeclareLaunchArgument` raises `TypeError` when the file is loaded
     (launch arguments are strings or substitutions; its default is keyword-only; it has no
     `default` argument); `IncludeLaunchDescription` iterates a dict's keys and fails to
-    unpack each as a (name, value) pair when it runs ("too many values to unpack"); and a
-    `LaunchDescription` cannot iterate an action.
+    unpack each as a (name, value) pair when it runs ("too many values to unpack"); a
+    `LaunchDescription` cannot iterate an action; and an action calls its condition's
+    `evaluate()`, which a string does not have.
 
     ## Example
     ```python
@@ -120,6 +137,8 @@ def invalid_launch_action_argument(package: Package) -> Iterator[Hit]:
             module, name = launch_class(call, index)
             home, check = CHECKS.get(name, ("-", None))
             found = check(call, index) if check and within(module, (home,)) else ()
+            if within(module, ACTION_MODULES) and name[:1].isupper():
+                found = (*found, *_condition(call, name))
             for node, message, fix in found:
                 yield Hit(Span(path, node.lineno, node.col_offset + 1),  # type: ignore
                           message, fix)
