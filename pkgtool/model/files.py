@@ -28,9 +28,12 @@ def _skipped_name(name: str) -> bool:
 
 
 def _not_the_packages(name: str, files: set[str], at_root: bool) -> bool:
-    """True for a folder ``name`` holding ``files`` whose files are not the package's."""
-    if "pyvenv.cfg" in files or "package.xml" in files:
-        return True  # a virtual environment, or a nested package of its own
+    """True for a folder ``name`` holding ``files`` whose files are not the package's: a
+    virtual environment, or a package of its own nested in this one, unless it is a Python
+    package of this one too (an ``__init__.py``: colcon never looks for packages inside a
+    package, and setuptools installs the folder with this package's code)."""
+    if "pyvenv.cfg" in files or "package.xml" in files and "__init__.py" not in files:
+        return True
     return at_root and name in BUILD_OUTPUT_DIRS and "__init__.py" not in files
 
 

@@ -430,7 +430,9 @@ def flat_parameters(mapping: object, prefix: str = "") -> Iterator[tuple[str, ob
 class FileEntry:
     """A ``<node>: ros__parameters:`` block of a parameter file whose users are all known:
     the node key (namespaces joined with ``/``), where it is written, the launched nodes it
-    applies to, every node the file is passed to with their names, and the parameters."""
+    applies to, every node the file is passed to with their names, the parameters, and
+    whether the file is passed to a node of another package (whose process may hold nodes of
+    its own: Nav2's servers make ``local_costmap/local_costmap``)."""
 
     path: str
     key: str
@@ -438,6 +440,7 @@ class FileEntry:
     matched: tuple[NodeRef, ...]
     names: tuple[str, ...]
     parameters: object
+    foreign: bool = False
 
 
 def _matches(key: str, name: str) -> bool:
@@ -457,10 +460,12 @@ def file_entries(package: Package) -> Iterator[FileEntry]:
         if None in names or not isinstance(documents, list):
             continue
         known = tuple(n for n in names if n is not None)
+        foreign = any(n.package != package.name for n in nodes)
         for document in documents:
             for key, span, parameters in _blocks(path, document, ""):
                 matched = tuple(n for n, name in zip(nodes, known) if _matches(key, name))
-                yield FileEntry(path, key, span, matched, tuple(sorted(set(known))), parameters)
+                yield FileEntry(path, key, span, matched, tuple(sorted(set(known))), parameters,
+                                foreign)
 
 
 def _blocks(path: str, mapping: object, prefix: str, depth: int = 0

@@ -71,28 +71,30 @@ MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages
               "excluded_by_pattern", "explicit_list_drops_subpackages", "missing_init",
               "module_never_written", "package_named_by_its_path",
               "package_path_with_trailing_slash", "src_layout_without_package_dir")),
-          ("PYC019", "kilted_target"), ("ENT003", "function_named_differently"),
+          ("PYC019", "kilted_target"), ("PYC019", "reads_in_properties"),
+          ("ENT003", "function_named_differently"),
           ("PYC025", "scalars_for_sequences"),
           ("ENT003", "node_class_as_entry"), ("PYC014", "read_before_declaring"),
           ("LCH001", "wrong_executable_names"), ("DAT009", "default_name_from_code")}
-"""MAN018 fixes pip and import names only; build types, ROS 1 packages and standard library
-modules need the user (a `<build_type>`, a ROS 2 replacement, or nothing). DAT001 fixes a
-string of sources and creates the (empty) ament index marker: other missing files have content
-only their author knows. DAT008's values at the top level belong to a node only the user knows
-(here a component and a node share the file). LCH005 does not choose an executable, the pairs
-remappings were meant to be nor a valid node name; PYC016 does not reword print-style logging
-calls, nor choose how a message or a number is to be written. DEP008 fixes the module an
-interface is imported from, never its name: these cases misspell names (or need a companion
-type's attribute); MAN017 has no license in setup.py to copy. PYC001 imports standard modules
-only: these cases misspell names or use third-party modules. ENT002 rewrites a script's module
-only where the rule names the installed one; these cases need setup.py's packages, an
-`__init__.py` or the module itself, which the author chooses. PYC019 renames fields, not
-positional arguments; ENT003 renames a function only to a close one (`run` is not close to
-`main`), and a Node class needs a `main` the author writes; PYC014 renames reads, and moving a
-declaration is the author's call; PYC025 does not guess the list a number or a string given to
-a sequence stands for; `talker_node` for `talker` (LCH001) and a block `main_talker` for the
-node `talker` (DAT009) are more than a typo away: other names, maybe meant, and so is
-`timeout=` for `timeout_sec=` (PYC029)."""
+"""MAN018 fixes pip and import names only; build types, ROS 1 packages and standard library modules
+need the user (a `<build_type>`, a ROS 2 replacement, or nothing). DAT001 fixes a string of
+sources and creates the (empty) ament index marker: other missing files have content only their
+author knows. DAT008's values at the top level belong to a node only the user knows (here a
+component and a node share the file). LCH005 does not choose an executable, the pairs remappings
+were meant to be nor a valid node name; PYC016 does not reword print-style logging calls, nor
+choose how a message or a number is to be written. DEP008 fixes the module an interface is
+imported from, never its name: these cases misspell names (or need a companion type's
+attribute); MAN017 has no license in setup.py to copy. PYC001 imports standard modules only:
+these cases misspell names or use third-party modules. ENT002 rewrites a script's module only
+where the rule names the installed one; these cases need setup.py's packages, an `__init__.py`
+or the module itself, which the author chooses. PYC019 renames fields, not positional arguments,
+nor a field no field is a typo away from (`linear_acceleration_error`, `frame` for `frame_id`);
+ENT003 renames a function only to a close one (`run` is not close to `main`), and a Node class
+needs a `main` the author writes; PYC014 renames reads, and moving a declaration is the author's
+call; PYC025 does not guess the list a number or a string given to a sequence stands for;
+`talker_node` for `talker` (LCH001) and a block `main_talker` for the node `talker` (DAT009) are
+more than a typo away: other names, maybe meant, and so is `timeout=` for `timeout_sec=`
+(PYC029)."""
 
 REVEALED = {("PYC013", "called_callbacks"): {"PYC026"},
             ("LCH005", "parameters_not_a_list"): {"DAT012"},

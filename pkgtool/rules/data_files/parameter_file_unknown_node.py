@@ -27,7 +27,9 @@ def parameter_file_unknown_node(package: Package) -> Iterator[Hit]:
     `/robot1/talker`: `/robot1`) neither equals it (an absolute namespace) nor ends with it (a
     relative one, to which a launch file including this one may prepend more). Keys with
     wildcards match any namespace; other namespaces (pushed by `PushRosNamespace`, or by a
-    launch file including this one) are not compared. Files are skipped when
+    launch file including this one) are not compared. A namespaced block matching no node is
+    left when the file is passed to a node of another package: its process may make nodes
+    of its own there (Nav2's servers make `local_costmap/local_costmap`). Files are skipped when
     a node's name is not known that way, when a launch file gives some node parameters not
     read statically (a launch argument may name the file), or when the package's Python code
     mentions the file's name.
@@ -53,6 +55,8 @@ def parameter_file_unknown_node(package: Package) -> Iterator[Hit]:
     ```
     """
     for entry in file_entries(package):
+        if not entry.matched and entry.foreign and "/" in entry.key.strip("/"):
+            continue  # a node another package's process makes (Nav2's local_costmap/...)
         if not entry.matched:
             base = entry.key.rpartition("/")[2]
             shown = ", ".join(f"`{n}`" for n in entry.names)

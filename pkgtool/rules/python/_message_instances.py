@@ -195,10 +195,18 @@ def _scope(statement: ast.AST, tree: ast.Module, index: Index) -> Scope | None:
     return parent if isinstance(parent, FUNCTIONS) else tree
 
 
+_INSTANCE_DECORATORS = frozenset({"property", "cached_property", "setter", "getter",
+                                  "deleter"})
+"""Decorators of methods still called with the instance first (``@property``,
+``@x.setter``, ``@functools.cached_property``)."""
+
+
 def method_receiver(method: ast.AST) -> str | None:
-    """The first parameter of a plain method (no decorator), when the method never rebinds
-    it."""
-    if not isinstance(method, FUNCTIONS) or method.decorator_list:
+    """The first parameter of a plain method (no decorator but a property's), when the
+    method never rebinds it."""
+    if not isinstance(method, FUNCTIONS) or any(
+            (d.id if isinstance(d, ast.Name) else d.attr if isinstance(d, ast.Attribute)
+             else "") not in _INSTANCE_DECORATORS for d in method.decorator_list):
         return None
     positional = [*method.args.posonlyargs, *method.args.args]
     if not positional or _names(method).counts[positional[0].arg] != 1:
