@@ -19,6 +19,12 @@ def _own_roots(package: Package, modules: dict[str, str]) -> set[str]:
     return roots | {package.name}
 
 
+def _package_folders(package: Package) -> set[str]:
+    """The names of the package's Python package folders, at any depth (an entry naming one
+    first names this package's code, whatever its path)."""
+    return {f.split("/")[-2] for f in package.files if f.endswith("/__init__.py")}
+
+
 def _meant(package: Package, module: str, modules: dict[str, str]) -> str | None:
     """The installed module an entry outside this package's names stands for: ``talker``
     for ``my_pkg.talker``, or ``my_pkgs.talker`` (a misspelt or copied package name that
@@ -47,7 +53,9 @@ def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
     it. Modules outside this package's own top-level names are not judged, unless the name
     is an installed module without its package prefix (`talker` for `my_pkg.talker`), or
     with another package prefix that package.xml does not declare (`my_pkgs.talker`, or a
-    prefix copied from another package, for the one installed `my_pkg.talker`).
+    prefix copied from another package, for the one installed `my_pkg.talker`), or starts
+    with the name of one of the package's Python package folders below the top
+    (`nodes.talker` for a `my_pkg/nodes/` that holds no `talker`).
 
     ## Why is this bad?
     The build succeeds, but running the command fails with `ModuleNotFoundError`. With
@@ -76,7 +84,8 @@ def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
             if meant is not None:  # `talker:main` for the installed `my_pkg.talker`
                 yield Hit(entry.span, f"`{entry.module}` is not installed: the module is "
                                       f"`{meant}`", f"Write `{meant}:{entry.attr or 'main'}`")
-            continue
+            if meant is not None or entry.module.split(".")[0] not in _package_folders(package):
+                continue
         reason, exists = why_not_installed(package, entry.module)
         fix = None if exists else "Write the module, or point the entry at an existing one"
         yield Hit(entry.span, f"`{entry.module}` is not installed: {reason}", fix)
