@@ -69,7 +69,8 @@ MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages
               "workspace_interfaces", "workspaces_sharing_a_name")),
           *(("ENT002", case) for case in (
               "excluded_by_pattern", "explicit_list_drops_subpackages", "missing_init",
-              "module_never_written", "package_named_by_its_path",
+              "module_never_written", "module_of_a_subpackage_never_written",
+              "package_named_by_its_path",
               "package_path_with_trailing_slash", "src_layout_without_package_dir")),
           ("PYC019", "kilted_target"), ("PYC019", "reads_in_properties"),
           ("ENT003", "function_named_differently"),
