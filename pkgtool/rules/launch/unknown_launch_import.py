@@ -6,6 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.launch_api import MODULE_NAMES, homes
+from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import all_python
 from pkgtool.rules.registry import rule
@@ -20,13 +21,17 @@ def _missing(module: str, name: str) -> tuple[str, str] | None:
 
 
 def _missing_module(dotted: str) -> tuple[str, str] | None:
-    """(message, fix) when ``dotted`` is a package-level module of launch or launch_ros in
-    the singular or plural that does not exist (``launch_ros.substitution``), else None."""
+    """(message, fix) when ``dotted`` is a module of launch or launch_ros that does not
+    exist, in the singular or plural of one that does (``launch_ros.substitution``) or a
+    typo away from one (``launch_ros.actons``), else None."""
     parent, _, leaf = dotted.rpartition(".")
     if parent not in MODULE_NAMES or leaf in MODULE_NAMES[parent]:
         return None
+    modules = {name for name in MODULE_NAMES[parent] if name.islower()}
     meant = next((f"{parent}.{other}" for other in (leaf + "s", leaf[:-1])
                   if f"{parent}.{other}" in MODULE_NAMES), None)
+    typo = typo_of(leaf, modules) if meant is None else None
+    meant = meant or (f"{parent}.{typo}" if typo else None)
     return (f"`{parent}` has no module `{leaf}` (did you mean `{meant}`?)",
             f"Import from `{meant}`") if meant else None
 
@@ -44,7 +49,8 @@ def unknown_launch_import(package: Package) -> Iterator[Hit]:
     another of those modules does (`Node` is in `launch_ros.actions`, not `launch.actions`;
     `FindPackageShare` in `launch_ros.substitutions`, `PathJoinSubstitution` in
     `launch.substitutions`). A module that does not exist is reported when it is the singular
-    or plural of one that does (`launch_ros.substitution`, `launch_ros.action`). The names
+    or plural of one that does (`launch_ros.substitution`, `launch_ros.action`) or a typo
+    away from one (`launch_ros.actons`, `launch.substiutions`). The names
     are those of Foxy to Rolling; a name no module of the table has is left alone (it may be
     newer than the table).
 

@@ -9,6 +9,7 @@ from pkgtool.model.ast_nodes import descendants
 from pkgtool.rules.syntax_trees import Index
 
 _GUARDS = frozenset({"AttributeError", "Exception", "BaseException"})
+_BROAD = frozenset({"Exception", "BaseException"})
 _PROBES = frozenset({"hasattr", "getattr"})
 
 
@@ -22,14 +23,27 @@ def probed_names(index: Index) -> frozenset[str]:
 
 def guarded(node: ast.Attribute, index: Index, probed: frozenset[str]) -> bool:
     """True for a name the module probes for, or inside a ``try`` that catches
-    AttributeError (or anything): code that expects the attribute may be missing."""
+    AttributeError, or anything (``except Exception:``) without raising it again (a handler
+    with a bare ``raise`` lets the error out): code that expects the attribute may be
+    missing."""
     if node.attr in probed:
         return True
     child, parent = node, index.parents.get(id(node))
     while parent is not None:
-        if isinstance(parent, ast.Try) and child in parent.body and any(
-                h.type is None or {n.id for n in descendants(h.type) if isinstance(n, ast.Name)}
-                & _GUARDS for h in parent.handlers):
+        if isinstance(parent, ast.Try) and child in parent.body and \
+                any(_catches(handler) for handler in parent.handlers):
             return True
         child, parent = parent, index.parents.get(id(parent))
     return False
+
+
+def _catches(handler: ast.ExceptHandler) -> bool:
+    """True when ``handler`` takes an AttributeError for good: it names AttributeError, or
+    catches everything and has no bare ``raise``."""
+    names = {n.id for n in descendants(handler.type) if isinstance(n, ast.Name)} \
+        if handler.type is not None else _BROAD
+    if "AttributeError" in names:
+        return True
+    return bool(names & _BROAD) and not any(
+        isinstance(n, ast.Raise) and n.exc is None
+        for statement in handler.body for n in descendants(statement))
