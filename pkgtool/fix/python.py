@@ -350,3 +350,15 @@ def service_response(package: Package, findings: list[Finding]) -> Iterator[Fix]
             indent = " " * function.body[0].col_offset
             yield Fix(f"End the callback with `return {response}`",
                       (_insert(doc, at, f"\n{indent}return {response}"),), safe=True)
+
+
+@fixer("PYC068", "Compare `__name__` with `'__main__'`", safe=False)
+def main_guard(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Write ``'__main__'`` over the misspelt string (``'__man__'``). Unsafe: the block now
+    runs when the file is run as a script, which it never did."""
+    for doc, _, nodes in python_nodes(package, findings):
+        text = next((n for n in nodes if isinstance(n, ast.Constant)), None)
+        if text is not None and isinstance(text.value, str):
+            yield Fix("Write `'__main__'`", (Edit(doc.source.path, doc.start(text),
+                                                  doc.end(text), doc.string("__main__")),),
+                      safe=False)

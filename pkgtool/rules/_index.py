@@ -160,6 +160,7 @@ RULES = {
     "PYC066": ("parametrize-unknown-argument", "error", True,
                "python.parametrize_unknown_argument"),
     "PYC067": ("service-type-mismatch", "error", True, "python.service_type_mismatch"),
+    "PYC068": ("misspelled-main-guard", "warning", True, "python.misspelled_main_guard"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),
@@ -193,6 +194,6 @@ FIXED = frozenset({
     "LCH002", "LCH003", "LCH005", "LCH010", "LCH013", "LCH015", "LCH016", "MAN004", "MAN012",
     "MAN013", "MAN015", "MAN017", "MAN018", "MAN019", "MAN021", "MAN024", "PYC001", "PYC013",
     "PYC014", "PYC016", "PYC019", "PYC025", "PYC026", "PYC029", "PYC031", "PYC032", "PYC046",
-    "PYC047", "PYC050", "PYC058", "PYC062", "PYC063", "PYC064", "PYC065", "PYC066", "SET003",
-    "SET004", "SET005", "SET006", "SET007", "SET008", "SET009", "SET010", "SET016",
+    "PYC047", "PYC050", "PYC058", "PYC062", "PYC063", "PYC064", "PYC065", "PYC066", "PYC068",
+    "SET003", "SET004", "SET005", "SET006", "SET007", "SET008", "SET009", "SET010", "SET016",
 })
