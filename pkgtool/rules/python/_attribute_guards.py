@@ -6,6 +6,7 @@ from __future__ import annotations
 import ast
 
 from pkgtool.model.ast_nodes import descendants
+from pkgtool.model.memo import per_tree
 from pkgtool.rules.syntax_trees import Index
 
 _GUARDS = frozenset({"AttributeError", "Exception", "BaseException"})
@@ -37,6 +38,7 @@ def guarded(node: ast.Attribute, index: Index, probed: frozenset[str]) -> bool:
     return False
 
 
+@per_tree
 def _catches(handler: ast.ExceptHandler) -> bool:
     """True when ``handler`` takes an AttributeError for good: it names AttributeError, or
     catches everything and has no bare ``raise``."""
