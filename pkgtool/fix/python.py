@@ -362,3 +362,16 @@ def main_guard(package: Package, findings: list[Finding]) -> Iterator[Fix]:
             yield Fix("Write `'__main__'`", (Edit(doc.source.path, doc.start(text),
                                                   doc.end(text), doc.string("__main__")),),
                       safe=False)
+
+
+@fixer("PYC041", "Call `super()` before its `__init__`")
+def super_call(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Write ``super()`` for the ``super`` of ``super.__init__(...)``. Safe: the line raised
+    TypeError; a constructor that never calls ``super().__init__`` needs the user (the node
+    name is theirs)."""
+    for doc, _, nodes in python_nodes(package, findings):
+        call = next((n for n in nodes if isinstance(n, ast.Call)), None)
+        func = call.func if call is not None else None
+        if isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name) and \
+                func.value.id == "super":
+            yield Fix("Write `super()`", (_insert(doc, doc.end(func.value), "()"),))

@@ -6,6 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import subtree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
@@ -128,6 +129,16 @@ def node_never_initialised(package: Package) -> Iterator[Hit]:
     """
     for module, _, index in installed_trees(package):
         for cls, init in _uninitialised(index):
+            bare = next((n for n in subtree(init) if isinstance(n, ast.Call) and
+                         isinstance(n.func, ast.Attribute) and n.func.attr == "__init__" and
+                         isinstance(n.func.value, ast.Name) and n.func.value.id == "super"),
+                        None)
+            if bare is not None:  # `super.__init__(...)`: the class `super`, not a call of it
+                yield Hit(Span(module.path, bare.lineno, bare.col_offset + 1),
+                          f"`{cls.name}.__init__` calls `super.__init__(...)`, not "
+                          "`super().__init__(...)`: the line raises TypeError (descriptor "
+                          "'__init__' requires a 'super' object)", "Write `super().__init__(`")
+                continue
             yield Hit(Span(module.path, init.lineno, init.col_offset + 1),  # type: ignore
                       f"`{cls.name}.__init__` never calls `super().__init__(...)`: the Node is "
                       "not set up, and its first rclpy call raises AttributeError")
