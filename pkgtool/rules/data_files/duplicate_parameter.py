@@ -21,19 +21,21 @@ def _key(node: object) -> str | None:
     return str(getattr(node, "value")) if getattr(node, "id", None) == "scalar" else None
 
 
-def _parameter_blocks(node: object, seen: set[int]) -> Iterator[object]:
-    """The mappings held by a ``ros__parameters`` key anywhere under ``node`` (each once)."""
+def _parameter_blocks(node: object, seen: set[int], above: str = ""
+                      ) -> Iterator[tuple[str, object]]:
+    """The mappings held by a ``ros__parameters`` key anywhere under ``node`` (each once),
+    each with the node key above it (namespaces joined with ``/``)."""
     if not _mapping(node) or id(node) in seen:
         return
     seen.add(id(node))
     for key, value in getattr(node, "value"):
         if _key(key) == PARAMS_KEY and _mapping(value):
-            yield value
+            yield above, value
         else:
-            yield from _parameter_blocks(value, seen)
+            yield from _parameter_blocks(value, seen, f"{above}/{_key(key)}")
 
 
-def _repeated(path: str, block: object, prefix: str, first: dict[str, object]
+def _repeated(path: str, node: str, block: object, prefix: str, first: dict[str, object]
               ) -> Iterator[Hit]:
     """A hit for each parameter of ``block`` (a mapping; groups flattened to ``group.name``
     as rcl names them) that ``first`` or ``block`` already gave a value."""
@@ -42,11 +44,11 @@ def _repeated(path: str, block: object, prefix: str, first: dict[str, object]
         if name is None or name == "<<":
             continue
         if _mapping(value):  # a group: rcl merges a group written twice
-            yield from _repeated(path, value, f"{prefix}{name}.", first)
+            yield from _repeated(path, node, value, f"{prefix}{name}.", first)
         elif f"{prefix}{name}" in first:
             earlier = span_of(path, first[f"{prefix}{name}"])
-            yield Hit(span_of(path, key), f"`{prefix}{name}` is given twice in these parameters "
-                      f"(first on line {earlier.line}): ROS keeps only the last value",
+            yield Hit(span_of(path, key), f"`{prefix}{name}` is given twice for the node "
+                      f"`{node}` (first on line {earlier.line}): ROS keeps only the last value",
                       related=(earlier,))
         else:
             first[f"{prefix}{name}"] = key
@@ -62,8 +64,8 @@ def duplicate_parameter(package: Package) -> Iterator[Hit]:
     under one `ros__parameters`, at the second occurrence, with groups named as rcl names
     them (`pid.p` in `pid: {p: ..., p: ...}`). A group written twice (`axis_linear: {x: 1}`
     then `axis_linear: {y: 0}`) is one group to rcl's parser, which merges it: only a
-    parameter repeated inside counts. Merge keys (`<<:`) are left alone, and so are repeated
-    node names above `ros__parameters`, which rcl merges too.
+    parameter repeated inside counts. A node block written twice in one file is merged by rcl
+    too: a parameter both give counts. Merge keys (`<<:`) are left alone.
 
     ## Why is this bad?
     YAML gives a key one value: ROS and every YAML loader keep the last one and drop the
@@ -94,6 +96,8 @@ def duplicate_parameter(package: Package) -> Iterator[Hit]:
         if not isinstance(documents, list):
             continue  # SYN001
         seen: set[int] = set()
+        given: dict[str, dict[str, object]] = {}  # by node key: rcl merges a node written twice
         for root in documents:
-            for block in _parameter_blocks(root, seen):
-                yield from _repeated(path, block, "", {})
+            for node, block in _parameter_blocks(root, seen):
+                yield from _repeated(path, node.strip("/") or "/", block, "",
+                                     given.setdefault(node, {}))
