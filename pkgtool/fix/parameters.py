@@ -50,17 +50,28 @@ def _rewrite_key(package: Package, finding: Finding, key: str, new: str) -> Edit
     return Edit(source.path, at, written.end() + at, quote + new + quote)
 
 
+def _key_taken(package: Package, finding: Finding) -> bool:
+    """True when the file of ``finding`` already holds a top-level key named as its help says
+    to write (``Write `talker```): renaming another block to it would merge the two."""
+    meant = _WRITE_KEY.match(finding.fix or "")
+    text = package.texts.get(finding.span.path)
+    return meant is not None and text is not None and re.search(
+        rf"""^(["']?){re.escape(meant[1])}\1\s*:""", text, re.MULTILINE) is not None
+
+
 @fixer("DAT009", "Name the block after the node its misspelt name is close to", safe=False)
 def node_block(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Rename a parameter file's node block to the one node name the file is passed to that
     is spelled like it (``talkr:`` to ``talker:``), and a block whose key misses the
     namespace the launch file gives its node to ``/**/talker`` (``/ns/talker`` for an
     absolute namespace), when the key is written whole at the top of the file (not nested
-    under a namespace mapping). Unsafe: it guesses which node was meant; the block reached no
-    node before."""
-    yield from renames(package, findings,
+    under a namespace mapping). Not when the file already has a block of that name: its
+    values would then override one another. Unsafe: it guesses which node was meant; the
+    block reached no node before."""
+    free = [f for f in findings if not _key_taken(package, f)]
+    yield from renames(package, free,
                        re.compile(r"^`(?:[^`]*/)?([^`/]+)` is none of the nodes"))
-    for finding in findings:
+    for finding in free:
         key = _NAMESPACE_MISSED.match(finding.message)
         meant = _WRITE_KEY.match(finding.fix or "")
         edit = _rewrite_key(package, finding, key[1], meant[1]) if key and meant else None
