@@ -67,6 +67,8 @@ _RESULT_KINDS = re.compile(r"_(Response|Result)$")
 result: the field may be returned)."""
 _MESSAGE_CLASS = re.compile(r"\w+\.msg\.\w+")
 """The qualified name of a message class (not a service's or action's message)."""
+_DEPTH = 8
+"""How many names deep a returned value is followed (``b = Path()``, ``a = b``)."""
 _NOT_RESULTS = frozenset({"int", "float", "complex", "str", "bytes", "bool", "NoneType",
                           "list", "tuple", "dict", "set", PARAMETER, PARAMETER_TEXT})
 """Certain types (:func:`~._value_types.certain_type`) a callback's result never has."""
@@ -112,16 +114,18 @@ def _wrong_returns(function: Function, arguments: list[str], result: str | None,
             yield value, f"`{_short(value)}`, {'an' if kind[0] in 'aeiou' else 'a'} {kind}"
 
 
-def _message_made(value: ast.expr, package: Package, tree: ast.Module, index: Index
-                  ) -> str | None:
+def _message_made(value: ast.expr, package: Package, tree: ast.Module, index: Index,
+                  depth: int = 0) -> str | None:
     """The message class (``pkg.msg.Name``) ``value`` certainly is an instance of: a call of
-    it, or a local name or ``self.x`` every assignment of which is one (None aside)."""
+    it, or a local name or ``self.x`` every assignment of which is one (None aside), followed
+    through at most :data:`_DEPTH` names (``a = b`` and ``b = a`` loop)."""
     if isinstance(value, ast.Call):
         made = index.qualified(value.func) if isinstance(value.func, (ast.Name, ast.Attribute)) \
             else None
         return made if made and _MESSAGE_CLASS.fullmatch(made) else None
-    assigned = assigned_values(value, package, tree, index)
-    classes = {_message_made(v, package, tree, index) for v, _ in assigned or () if not is_none(v)}
+    assigned = assigned_values(value, package, tree, index) if depth < _DEPTH else None
+    classes = {_message_made(v, package, tree, index, depth + 1)
+               for v, _ in assigned or () if not is_none(v)}
     return classes.pop() if len(classes) == 1 and None not in classes else None
 
 
