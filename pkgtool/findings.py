@@ -73,3 +73,8 @@ class Finding:
     def sort_key(self) -> tuple[str, str, int, int, str]:
         """Deterministic order: package root, path, line, column, code."""
         return (self.root, self.span.path, self.span.line, self.span.col, self.code)
+
+
+def shortened(text: str, limit: int = 40) -> str:
+    """``text`` as a message quotes it: cut to ``limit`` characters, ending in ``...``."""
+    return text if len(text) <= limit else text[:limit - 3] + "..."

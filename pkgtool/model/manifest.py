@@ -78,7 +78,7 @@ def parse_manifest(path: str, text: str) -> Manifest | ParseProblem:
     head = text.split("<package", 1)[0]
     schema = _SCHEMA.search(head)
     at = schema.start(1) if schema else 0
-    where = Span(path, head.count("\n", 0, at) + 1, at - head.rfind("\n", 0, at))
+    where = Span.of_offset(path, head, at)
     return replace(_manifest(path, root, "package_format" in head),
                    schema_format=Text(schema.group(1), where) if schema else None)
 

@@ -17,6 +17,11 @@ class Span:
         """Return a span in the same file at another position."""
         return Span(self.path, line, col)
 
+    @classmethod
+    def of_offset(cls, path: str, text: str, offset: int) -> Span:
+        """The span of character ``offset`` of ``text``, the content of ``path``."""
+        return cls(path, text.count("\n", 0, offset) + 1, offset - text.rfind("\n", 0, offset))
+
 
 @record
 class ParseProblem:

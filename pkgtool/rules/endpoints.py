@@ -262,3 +262,17 @@ def by_topic(package: Package, services: bool = False
         pair = topics.setdefault((endpoint.kind.startswith("action"), endpoint.topic), ([], []))
         pair[endpoint.kind.endswith(("subscription", "client"))].append(endpoint)
     yield from (pair for pair in topics.values() if all(pair))
+
+
+def type_mismatches(package: Package, services: bool = False
+                    ) -> Iterator[tuple[Endpoint, list[Endpoint], str]]:
+    """Each subscription (with ``services``, client) whose type is none of the types of the
+    publishers (servers) of its name, all of which are known, with those endpoints and their
+    types as a message lists them (```a/B`, `c/D```)."""
+    for offering, using in by_topic(package, services):
+        offered = {endpoint.type for endpoint in offering}
+        if None in offered:
+            continue
+        for endpoint in using:
+            if endpoint.type is not None and endpoint.type not in offered:
+                yield endpoint, offering, ", ".join(f"`{t}`" for t in sorted(offered))

@@ -196,6 +196,13 @@ def installed_trees(package: Package) -> tuple[tuple[PythonModule, ast.Module, I
 
 
 @per_package
+def installed_tree_of(package: Package) -> dict[int, ast.Module]:
+    """The syntax tree of each installed module by ``id`` of its index (a rule holding an
+    index from :func:`installed_trees` or :func:`~pkgtool.rules.node_api.node_api_calls`)."""
+    return {id(index): tree for _, tree, index in installed_trees(package)}
+
+
+@per_package
 def base_names(package: Package) -> frozenset[str]:
     """The names the classes of the installed modules derive from (``Base`` of ``class
     A(Base)``, ``Node`` of ``class A(rclpy.node.Node)``)."""

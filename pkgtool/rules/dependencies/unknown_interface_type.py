@@ -62,6 +62,4 @@ def unknown_interface_type(package: Package) -> Iterator[Hit]:
             problem = None if known is None else type_problem(
                 name, kind, leaf, known, package.context.distro)
             if problem:
-                line = text.count("\n", 0, match.start()) + 1
-                column = match.start() - (text.rfind("\n", 0, match.start()) + 1) + 1
-                yield Hit(Span(path, line, column), problem)
+                yield Hit(Span.of_offset(path, text, match.start()), problem)

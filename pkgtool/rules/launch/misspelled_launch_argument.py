@@ -106,9 +106,7 @@ def misspelled_launch_argument(package: Package) -> Iterator[Hit]:
                 continue
             close = get_close_matches(name, sorted(declared), n=1, cutoff=0.8)
             if close:
-                line = text.count("\n", 0, read.start()) + 1
-                column = read.start() - text.rfind("\n", 0, read.start())
-                yield _hit(Span(path, line, column), name, close[0])
+                yield _hit(Span.of_offset(path, text, read.start()), name, close[0])
 
 
 def _hit(span: Span, name: str, meant: str) -> Hit:

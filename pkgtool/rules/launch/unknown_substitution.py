@@ -78,10 +78,8 @@ def unknown_substitution(package: Package) -> Iterator[Hit]:
             if meant is None:
                 continue
             alone = len(text[found.end():text.find(")", found.end())].split()) < 2
-            line = text.count("\n", 0, found.start()) + 1
-            column = found.start() - text.rfind("\n", 0, found.start())
             roslaunch = " (a ROS 1 roslaunch substitution)" if name in ROS1_SUBSTITUTIONS else ""
-            yield Hit(Span(launch.path, line, column),
+            yield Hit(Span.of_offset(launch.path, text, found.start()),
                       f"`$({name} ...)` is no substitution of ROS 2's launch{roslaunch}: "
                       f"`ros2 launch` refuses the file (Unknown substitution: {name})",
                       "Write `$(env NAME '')` (`env` fails on an unset variable without a "

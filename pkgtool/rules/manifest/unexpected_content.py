@@ -5,7 +5,7 @@ from __future__ import annotations
 import difflib
 from collections.abc import Iterator
 
-from pkgtool.findings import Hit, Severity
+from pkgtool.findings import Hit, Severity, shortened
 from pkgtool.model.package import Package
 from pkgtool.rules.manifest.common import tree
 from pkgtool.rules.manifest.schema import ALL_TAGS, TEXT_ONLY, tags_of
@@ -65,7 +65,6 @@ def unexpected_content(package: Package) -> Iterator[Hit]:
                           f"`<{child.tag}>` may contain only text, not `<{nested.tag}>`",
                           f"Remove the `<{nested.tag}>` tags and keep their text")
     for line, text in found.root.loose_text:
-        shown = text if len(text) <= 40 else text[:37] + "..."
         yield Hit(found.root.span.at(line, 1),
-                  f"Text `{shown}` is not allowed between the elements of `<package>`",
+                  f"Text `{shortened(text)}` is not allowed between the elements of `<package>`",
                   "Remove the stray text, or put it in a comment")

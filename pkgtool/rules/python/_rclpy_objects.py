@@ -20,7 +20,7 @@ from pkgtool.rules.node_api import derives_from_node_alone
 from pkgtool.rules.python._assignments import (assigned_values, done_callback_futures, is_none,
                                                parameter_annotation)
 from pkgtool.rules.python._value_types import receiver_class
-from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.rules.syntax_trees import Index, installed_tree_of
 
 NODE = "rclpy.node.Node"
 TIME, DURATION = "rclpy.time.Time", "rclpy.duration.Duration"
@@ -114,7 +114,7 @@ def _assigned_class(value: ast.Name | ast.Attribute, package: Package, tree: ast
                     index: Index, depth: int) -> str | None:
     """The one class of every value assigned to ``value`` (``None`` placeholders aside)."""
     assigned = assigned_values(value, package, tree, index)
-    trees = _trees(package) if assigned else {}
+    trees = installed_tree_of(package) if assigned else {}
     return _one({object_class(v, package, trees[id(i)], i, depth + 1)
                  for v, i in assigned or () if not is_none(v)})
 
@@ -131,12 +131,6 @@ def _node_self(name: ast.Name, index: Index) -> bool:
     """True for ``self`` in a plain method of a class deriving from rclpy's Node alone."""
     cls = receiver_class(name, index)
     return cls is not None and derives_from_node_alone(cls, index)
-
-
-@per_package
-def _trees(package: Package) -> dict[int, ast.Module]:
-    """The tree of each installed module by the id of its index."""
-    return {id(index): tree for _, tree, index in installed_trees(package)}
 
 
 def _one(classes: set[str | None]) -> str | None:

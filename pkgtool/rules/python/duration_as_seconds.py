@@ -11,7 +11,7 @@ from pkgtool.model.span import Span
 from pkgtool.rules.node_api import argument, node_api_calls
 from pkgtool.rules.python._rclpy_objects import DURATION, object_class
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.rules.syntax_trees import Index, installed_tree_of, installed_trees
 
 _NUMBERS = {"create_timer": ("timer_period_sec", "seconds"),
             "create_rate": ("frequency", "hertz")}
@@ -28,7 +28,7 @@ def _a_duration(value: ast.expr | None, package: Package, tree: ast.Module,
 def _numbers(package: Package) -> Iterator[tuple[str, ast.expr, str, str]]:
     """(module path, argument, what it is given to, the unit wanted) of every call that wants
     a number of seconds or hertz."""
-    trees = {id(index): tree for _, tree, index in installed_trees(package)}
+    trees = installed_tree_of(package)
     for module, call, method, index in node_api_calls(package, _NUMBERS):
         name, unit = _NUMBERS[method]
         given = argument(call, (name,), name)

@@ -7,7 +7,7 @@ import re
 from collections.abc import Iterator
 from difflib import get_close_matches
 
-from pkgtool.findings import Hit, Severity
+from pkgtool.findings import Hit, Severity, shortened
 from pkgtool.knowledge.rclpy_classes import ENUMS, attributes_of
 from pkgtool.knowledge.rclpy_missing import missing_attribute
 from pkgtool.knowledge.rclpy_names import close_name, defined_on, defines
@@ -182,8 +182,7 @@ def _object_reads(package: Package) -> Iterator[Hit]:
             if known is None or node.attr in known or guarded(node, index, probed) or \
                     index.in_unevaluated_annotation(node):
                 continue
-            shown = ast.unparse(node.value)
-            shown = shown if len(shown) <= 40 else shown[:37] + "..."
+            shown = shortened(ast.unparse(node.value))
             use = missing_attribute(cls, node.attr) if cls else None
             close = get_close_matches(node.attr, sorted(a for a in known if a[0] != "_"), n=1)
             kind = "the enum" if enum else "an rclpy"

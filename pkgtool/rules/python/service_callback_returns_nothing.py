@@ -8,7 +8,7 @@ import re
 from collections.abc import Iterator
 from typing import NamedTuple
 
-from pkgtool.findings import Hit, Severity
+from pkgtool.findings import Hit, Severity, shortened
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._assignments import assigned_values, is_none
@@ -106,12 +106,16 @@ def _wrong_returns(function: Function, arguments: list[str], result: str | None,
                 read is not None and not _RESULT_KINDS.search(read.kind) or
                 read is None and isinstance(root, ast.Name) and root.id in given):
             owner = "an attribute of its argument" if read is None else "a field of"
-            yield value, f"`{_short(value)}`, {owner} `{_short(root)}`"
+            yield value, f"`{_shown(value)}`, {owner} `{_shown(root)}`"
         elif messages and (made := _message_made(value, package, tree, index)):
-            yield value, f"`{_short(value)}`, a `{made}` message"
+            yield value, f"`{_shown(value)}`, a `{made}` message"
         elif (found := certain_type(value, package, tree, index, texts=True)) in _NOT_RESULTS:
             kind = found.split(" ")[0]
-            yield value, f"`{_short(value)}`, {'an' if kind[0] in 'aeiou' else 'a'} {kind}"
+            yield value, f"`{_shown(value)}`, {'an' if kind[0] in 'aeiou' else 'a'} {kind}"
+
+
+def _shown(value: ast.expr) -> str:
+    return shortened(ast.unparse(value))
 
 
 def _message_made(value: ast.expr, package: Package, tree: ast.Module, index: Index,
@@ -127,12 +131,6 @@ def _message_made(value: ast.expr, package: Package, tree: ast.Module, index: In
     classes = {_message_made(v, package, tree, index, depth + 1)
                for v, _ in assigned or () if not is_none(v)}
     return classes.pop() if len(classes) == 1 and None not in classes else None
-
-
-def _short(value: ast.expr) -> str:
-    """``value``'s source, cut to 40 characters."""
-    shown = ast.unparse(value)
-    return shown if len(shown) <= 40 else shown[:37] + "..."
 
 
 def _falls_off_the_end(function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:

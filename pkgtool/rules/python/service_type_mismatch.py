@@ -7,7 +7,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.endpoints import by_topic
+from pkgtool.rules.endpoints import type_mismatches
 from pkgtool.rules.registry import rule
 
 
@@ -44,17 +44,10 @@ def service_type_mismatch(package: Package) -> Iterator[Hit]:
     self.client = self.create_client(AddTwoInts, 'add_two_ints')
     ```
     """
-    for services, clients in by_topic(package, services=True):
-        served = {s.type for s in services}
-        if None in served:
-            continue
-        for client in clients:
-            if client.type is not None and client.type not in served:
-                types = ", ".join(f"`{t}`" for t in sorted(t for t in served if t))
-                action = "action " if client.kind.startswith("action") else ""
-                yield Hit(client.type_span,
-                          f"The {action}client of `{client.topic}` uses `{client.type}`, but "
-                          f"this package serves {types} under that name: the types differ, "
-                          f"so the client never finds the {action}server and every "
-                          f"{'goal' if action else 'call'} waits forever",
-                          related=tuple(s.type_span for s in services))
+    for client, services, types in type_mismatches(package, services=True):
+        action = "action " if client.kind.startswith("action") else ""
+        yield Hit(client.type_span,
+                  f"The {action}client of `{client.topic}` uses `{client.type}`, but this "
+                  f"package serves {types} under that name: the types differ, so the client "
+                  f"never finds the {action}server and every {'goal' if action else 'call'} "
+                  "waits forever", related=tuple(s.type_span for s in services))

@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.endpoints import by_topic
+from pkgtool.rules.endpoints import type_mismatches
 from pkgtool.rules.registry import rule
 
 
@@ -42,15 +42,8 @@ def topic_type_mismatch(package: Package) -> Iterator[Hit]:
     self.create_subscription(String, 'chatter', self.on_message, 10)
     ```
     """
-    for publishers, subscriptions in by_topic(package):
-        sent = {p.type for p in publishers}
-        if None in sent:
-            continue
-        for subscription in subscriptions:
-            if subscription.type is not None and subscription.type not in sent:
-                types = ", ".join(f"`{t}`" for t in sorted(t for t in sent if t))
-                yield Hit(subscription.type_span,
-                          f"The subscription to `{subscription.topic}` takes "
-                          f"`{subscription.type}`, but this package publishes {types} on it: "
-                          "the types differ, so it never receives a message",
-                          related=tuple(p.type_span for p in publishers))
+    for subscription, publishers, types in type_mismatches(package):
+        yield Hit(subscription.type_span,
+                  f"The subscription to `{subscription.topic}` takes `{subscription.type}`, but "
+                  f"this package publishes {types} on it: the types differ, so it never "
+                  "receives a message", related=tuple(p.type_span for p in publishers))

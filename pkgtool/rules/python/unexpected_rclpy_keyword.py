@@ -14,7 +14,7 @@ from pkgtool.rules.node_api import (PARAMETERS, derives_from_node_alone, node_ap
                                     node_constructions, not_from_rclpy)
 from pkgtool.rules.python._assignments import assigned_values
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.rules.syntax_trees import Index, installed_tree_of, installed_trees
 
 WRONG_KEYWORDS: dict[str, dict[str, str]] = {
     "wait_for_service": {"timeout": "timeout_sec"},
@@ -94,7 +94,7 @@ def unexpected_rclpy_keyword(package: Package) -> Iterator[Hit]:
     """
     defined = {function.name for _, _, index in installed_trees(package)
                for function in index.functions}
-    trees = {id(index): tree for _, tree, index in installed_trees(package)}
+    trees = installed_tree_of(package)
     for module, call, method, index in node_api_calls(package, WRONG_KEYWORDS):
         for keyword, meant in _wrong(call, WRONG_KEYWORDS[method]) if method not in defined \
                 and not _wrapper(call, package, trees[id(index)], index) else ():
