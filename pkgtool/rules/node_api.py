@@ -15,6 +15,7 @@ from pkgtool.model.memo import per_package
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.rules.scopes import plainly_decorated
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
 PARAMETERS = {
@@ -195,9 +196,6 @@ _SERVED = frozenset({"create_subscription", "create_service"})
 """The creators whose third argument is the callback."""
 
 
-_PLAIN_DECORATORS = frozenset({"staticmethod", "classmethod"})
-
-
 def _method_of_class(value: ast.expr, call: ast.Call, index: Index) -> bool:
     """True for a lambda, or ``self.<a method of the class around the call>`` (plain: no
     decorator but ``staticmethod`` or ``classmethod``; a ``@property`` reads as its value)."""
@@ -209,8 +207,7 @@ def _method_of_class(value: ast.expr, call: ast.Call, index: Index) -> bool:
         return False
     named = [f for f in around.body
              if isinstance(f, (ast.FunctionDef, ast.AsyncFunctionDef)) and f.name == value.attr]
-    return bool(named) and all(isinstance(d, ast.Name) and d.id in _PLAIN_DECORATORS
-                               for f in named for d in f.decorator_list)
+    return bool(named) and all(plainly_decorated(f) for f in named)
 
 
 def swapped_argument(call: ast.Call, method: str, index: Index) -> tuple[ast.expr, str] | None:

@@ -131,6 +131,13 @@ def single_assignments(where: ast.AST) -> dict[str, ast.expr]:
 _PLAIN_DECORATORS = frozenset({"staticmethod", "classmethod"})
 
 
+def plainly_decorated(function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
+    """True when ``function`` has no decorator but ``staticmethod`` or ``classmethod`` (none
+    that may change what calling it gives)."""
+    return all(isinstance(d, ast.Name) and d.id in _PLAIN_DECORATORS
+               for d in function.decorator_list)
+
+
 def _stub(function: ast.FunctionDef) -> bool:
     """A body of only a docstring, ``pass``, ``...`` and ``raise``: a placeholder to override."""
     return all(isinstance(s, (ast.Pass, ast.Raise)) or isinstance(s, ast.Expr) and
@@ -140,9 +147,8 @@ def _stub(function: ast.FunctionDef) -> bool:
 def returns_none(function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
     """True when calling ``function`` certainly gives None: a plain ``def`` (no decorator but
     ``staticmethod``/``classmethod``, no stub) with no ``return <value>`` and no ``yield``."""
-    if not isinstance(function, ast.FunctionDef) or _stub(function) or any(
-            not (isinstance(d, ast.Name) and d.id in _PLAIN_DECORATORS)
-            for d in function.decorator_list):
+    if not isinstance(function, ast.FunctionDef) or _stub(function) or \
+            not plainly_decorated(function):
         return False
     for node in scope_walk(function.body):
         if isinstance(node, (ast.Yield, ast.YieldFrom)):

@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import why_not_installed
+from pkgtool.model.launch import python_folders
 from pkgtool.model.package import Package
 from pkgtool.rules.console_scripts import scripts_and_modules
 from pkgtool.rules.registry import rule
@@ -17,12 +19,6 @@ def _own_roots(package: Package, modules: dict[str, str]) -> set[str]:
     roots |= {f.split("/")[0] for f in package.files if "/" in f}
     roots |= {f[:-3] for f in package.files if "/" not in f and f.endswith(".py")}
     return roots | {package.name}
-
-
-def _package_folders(package: Package) -> set[str]:
-    """The names of the package's Python package folders, at any depth (an entry naming one
-    first names this package's code, whatever its path)."""
-    return {f.split("/")[-2] for f in package.files if f.endswith("/__init__.py")}
 
 
 def _meant(package: Package, module: str, modules: dict[str, str]) -> str | None:
@@ -76,6 +72,8 @@ def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
     """
     entries, modules = scripts_and_modules(package)
     roots = _own_roots(package, modules) if entries else set()
+    # the package's Python package folders at any depth: an entry naming one names its code
+    folders = {posixpath.basename(f) for f in python_folders(package.files)} if entries else set()
     for entry in entries:
         if entry.module in modules:
             continue
@@ -84,7 +82,7 @@ def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
             if meant is not None:  # `talker:main` for the installed `my_pkg.talker`
                 yield Hit(entry.span, f"`{entry.module}` is not installed: the module is "
                                       f"`{meant}`", f"Write `{meant}:{entry.attr or 'main'}`")
-            if meant is not None or entry.module.split(".")[0] not in _package_folders(package):
+            if meant is not None or entry.module.split(".")[0] not in folders:
                 continue
         reason, exists = why_not_installed(package, entry.module)
         fix = None if exists else "Write the module, or point the entry at an existing one"

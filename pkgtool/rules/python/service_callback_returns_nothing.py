@@ -17,7 +17,7 @@ from pkgtool.rules.python._field_reads import field_reads
 from pkgtool.rules.python._message_instances import Function, binding_counts, callback_function
 from pkgtool.rules.python._value_types import PARAMETER, PARAMETER_TEXT, certain_type
 from pkgtool.rules.registry import rule
-from pkgtool.rules.scopes import returns_none, scope_walk
+from pkgtool.rules.scopes import plainly_decorated, returns_none, scope_walk
 from pkgtool.rules.syntax_trees import Index
 
 
@@ -139,9 +139,7 @@ def _falls_off_the_end(function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool
     it returns, raises, loops with ``while`` or enters ``try``/``with``/``match``, and the
     last one is an expression or assignment (not a call of an ``exit``)."""
     last = function.body[-1]
-    if not isinstance(function, ast.FunctionDef) or any(
-            not (isinstance(d, ast.Name) and d.id in ("staticmethod", "classmethod"))
-            for d in function.decorator_list) or \
+    if not isinstance(function, ast.FunctionDef) or not plainly_decorated(function) or \
             any(isinstance(s, _STOPS) for s in function.body) or \
             not isinstance(last, _PLAIN_ENDS) or isinstance(last, ast.Expr) and (
                 isinstance(last.value, ast.Constant) or "exit" in ast.unparse(last.value)):
