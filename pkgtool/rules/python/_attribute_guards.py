@@ -9,7 +9,6 @@ from pkgtool.model.ast_nodes import descendants
 from pkgtool.model.memo import per_tree
 from pkgtool.rules.syntax_trees import Index
 
-_GUARDS = frozenset({"AttributeError", "Exception", "BaseException"})
 _BROAD = frozenset({"Exception", "BaseException"})
 _PROBES = frozenset({"hasattr", "getattr"})
 
