@@ -11,11 +11,14 @@ from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.records import record
 from pkgtool.rules.node_api import derives_from_node_alone
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.python._assignments import (annotated_name, assigned_values, is_none,
                                                parameter_annotation)
-from pkgtool.rules.python._message_instances import attributes_taken, method_receiver
+from pkgtool.rules.python._message_instances import (attributes_taken, known_messages,
+                                                     method_receiver)
+from pkgtool.rules.python._messages import message_instances
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings
 from pkgtool.rules.syntax_trees import Index, base_names, installed_trees
@@ -42,16 +45,61 @@ def _augmented(tree: ast.Module) -> set[int]:
             if isinstance(n, ast.AugAssign)}
 
 
-def _package_facts(package: Package) -> tuple[set[str], frozenset[str]]:
-    """The attribute names any installed module stores or deletes, and the names any class
-    of the package derives from."""
-    stored: set[str] = set()
-    for _, tree, _ in installed_trees(package):
+@record
+class _Stores:
+    """The attribute names the installed modules store or delete: on the receiver of a plain
+    method of a class (``self.x = ...`` in ``def m(self)``), by id of that class, else on
+    anything (``node.x = ...``, which may set any class's)."""
+
+    anywhere: set[str]
+    by_class: dict[int, set[str]]
+
+    def of(self, cls: ast.ClassDef) -> set[str]:
+        """The names that may be stored on an instance of ``cls`` (a class no class of the
+        package extends: another class's ``self`` is never one)."""
+        return self.anywhere | self.by_class.get(id(cls), set())
+
+
+def _message_fields(package: Package, tree: ast.Module, index: Index) -> set[int]:
+    """The ids of the attributes taken on known messages in ``tree`` (``goal.pose``)."""
+    return {id(use) for instance in message_instances(package, tree, index,
+                                                      known_messages(package, index))
+            for use in instance.uses}
+
+
+def _on_message(node: ast.Attribute, fields: set[int]) -> bool:
+    """True when ``node`` (``goal.pose.header.frame_id``) stores a field of a known message,
+    never an attribute of a node."""
+    current: ast.expr = node
+    while isinstance(current, ast.Attribute):
+        if id(current) in fields:
+            return True
+        current = current.value
+    return False
+
+
+def _package_facts(package: Package) -> tuple[_Stores, frozenset[str]]:
+    """What the installed modules store, and the names any class of the package derives
+    from."""
+    stores = _Stores(set(), {})
+    for _, tree, index in installed_trees(package):
         augmented = _augmented(tree)
-        stored.update(n.attr for n in nodes_of_class(tree, ast.Attribute)
-                      if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load)
-                      and id(n) not in augmented)
-    return stored, base_names(package)
+        fields: set[int] | None = None
+        for node in nodes_of_class(tree, ast.Attribute):
+            assert isinstance(node, ast.Attribute)
+            if isinstance(node.ctx, ast.Load) or id(node) in augmented:
+                continue
+            fields = _message_fields(package, tree, index) if fields is None else fields
+            if _on_message(node, fields):
+                continue
+            method = index.enclosing_function(node, through_lambdas=False)
+            cls = index.parents.get(id(method))
+            if isinstance(cls, ast.ClassDef) and isinstance(node.value, ast.Name) and \
+                    method_receiver(method) == node.value.id:
+                stores.by_class.setdefault(id(cls), set()).add(node.attr)
+            else:
+                stores.anywhere.add(node.attr)
+    return stores, base_names(package)
 
 
 def _node_classes(index: Index, bases: frozenset[str]) -> Iterator[ast.ClassDef]:
@@ -103,7 +151,7 @@ def _instances(package: Package, tree: ast.Module, index: Index,
 
 
 def _instance_reads(package: Package, path: str, tree: ast.Module, index: Index,
-                    bases: frozenset[str], stored: set[str], probed: frozenset[str]
+                    bases: frozenset[str], stored: _Stores, probed: frozenset[str]
                     ) -> Iterator[Hit]:
     """Attributes read on a local name that holds an instance of one of the module's node
     classes (:func:`_instances`) that neither the class nor rclpy's Node has and nothing
@@ -112,7 +160,7 @@ def _instance_reads(package: Package, path: str, tree: ast.Module, index: Index,
     if not classes:
         return
     for function, name, cls in _instances(package, tree, index, classes):
-        known = set(scope_bindings(cls)) | stored | NODE_ATTRIBUTES
+        known = set(scope_bindings(cls)) | stored.of(cls) | NODE_ATTRIBUTES
         reads: dict[str, list[Span]] = {}
         for node in attributes_taken(function, name):
             if isinstance(node.ctx, ast.Load) and not node.attr.startswith("__") and \
@@ -137,9 +185,12 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
     In installed modules, looks at the classes deriving from `rclpy.node.Node` alone (no
     other base, no decorator, no metaclass, extended by no class of the package) and reports
     `self.x` read in their plain methods when `x` is not a method or class attribute of the
-    class, not an attribute of rclpy's `Node` (any of Humble to Rolling), and no installed
-    module of the package ever assigns or deletes an attribute named `x` on anything (an
-    augmented assignment, `self.x += 1`, reads `x` first, so it counts as a read). Modules
+    class, not an attribute of rclpy's `Node` (any of Humble to Rolling), and nothing may
+    assign or delete it on an instance of the class: neither the class's own methods through
+    `self`, nor any installed module of the package through anything but a method's `self`
+    (`self.x = ...` in another class's method stores on that class's instances only, and
+    `goal.pose.header.frame_id = ...` on a message a field). An
+    augmented assignment, `self.x += 1`, reads `x` first, so it counts as a read. Modules
     using `setattr`, `delattr`, `vars`, `__dict__`, `__getattr__`, `__setattr__` or
     `__slots__`, names they pass to `hasattr`/`getattr`, and reads inside a `try` that
     catches `AttributeError` are left alone. The same goes for `node.x` read on a local name
@@ -172,7 +223,7 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
         self.publisher_.publish(String(data='hi'))
     ```
     """
-    facts: tuple[set[str], frozenset[str]] | None = None
+    facts: tuple[_Stores, frozenset[str]] | None = None
     for module, tree, index in installed_trees(package):
         if not any(i.top_level == "rclpy" for i in module.imports) or _dynamic(tree):
             continue
@@ -182,7 +233,7 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
         augmented = _augmented(tree)
         yield from _instance_reads(package, module.path, tree, index, bases, stored, probed)
         for cls in _node_classes(index, bases):
-            known = set(scope_bindings(cls)) | stored | NODE_ATTRIBUTES
+            known = set(scope_bindings(cls)) | stored.of(cls) | NODE_ATTRIBUTES
             reads: dict[str, list[ast.Attribute]] = {}
             for method in cls.body:
                 receiver = method_receiver(method)
@@ -194,6 +245,13 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
             for attr, nodes in reads.items():
                 spans = [Span(module.path, n.end_lineno or n.lineno,
                               (n.end_col_offset or 0) - len(attr) + 1) for n in nodes]
+                if any(attr in names for names in stored.by_class.values()):
+                    yield Hit(spans[0], f"`{cls.name}` never assigns `self.{attr}` (another "
+                              "class of the package does, for its own instances) and rclpy's "
+                              "Node has none, so reading it raises AttributeError",
+                              f"Assign `self.{attr}` in `{cls.name}.__init__`",
+                              related=tuple(spans[1:]))
+                    continue
                 hint = _suggestion(attr, known)
                 yield Hit(spans[0], f"`{cls.name}` has no attribute `{attr}`{hint}: nothing "
                           f"assigns `self.{attr}` and rclpy's Node has none, so reading it "
