@@ -99,26 +99,32 @@ def _version_test(test: ast.Compare) -> bool | None:
         return None
     compare = _COMPARE[type(test.ops[0])]
     try:
-        results = {compare(version if left == "tuple" else version[0], right)
-                   for version in _PYTHON3}
+        results = {compare(left(version), right) for version in _PYTHON3}
     except TypeError:
         return None
     return results.pop() if len(results) == 1 else None
 
 
-def _version_side(node: ast.expr) -> str | None:
-    """``tuple`` for sys.version_info, ``major`` for its first item, else None."""
+def _version_side(node: ast.expr) -> Callable[[tuple], object] | None:
+    """What a test reads of the version tuple: all of ``sys.version_info``, its first item
+    (``[0]``, ``.major``) or a prefix (``[:2]``); None for anything else."""
     def is_version_info(n: ast.expr) -> bool:
         return isinstance(n, ast.Attribute) and n.attr == "version_info" and \
             isinstance(n.value, ast.Name) and n.value.id == "sys"
 
     if is_version_info(node):
-        return "tuple"
-    if isinstance(node, ast.Subscript) and is_version_info(node.value) and \
-            isinstance(node.slice, ast.Constant) and node.slice.value == 0:
-        return "int"
+        return lambda version: version
+    if isinstance(node, ast.Subscript) and is_version_info(node.value):
+        part = node.slice
+        if isinstance(part, ast.Constant) and part.value == 0:
+            return lambda version: version[0]
+        if isinstance(part, ast.Slice) and part.step is None and \
+                (part.lower is None or _constant(part.lower) == 0) and \
+                isinstance(end := _constant(part.upper) if part.upper else None, int):
+            return lambda version: version[:end]
+        return None
     if isinstance(node, ast.Attribute) and node.attr == "major" and is_version_info(node.value):
-        return "int"
+        return lambda version: version[0]
     return None
 
 
@@ -208,13 +214,15 @@ def function_constants(tree: ast.Module) -> dict[int, dict[str, bool]]:
 
 @per_tree
 def dead_lines(tree: ast.Module) -> list[tuple[int, int]]:
-    """Line ranges (first, last) of ``if`` branches that never run on Python 3 (also those a
-    function's own constant flag decides: ``debug = False`` then ``if debug:``), worked out
-    once per tree (PYC001, PYC016 and PYC019 ask); treat as read-only."""
+    """Line ranges (first, last) of code that never runs: ``if`` branches that never run on
+    Python 3 (also those a function's own constant flag decides: ``debug = False`` then ``if
+    debug:``) and statements after a ``return``, ``raise``, ``continue`` or ``break`` of the
+    same block, worked out once per tree (PYC001, PYC016 and PYC019 ask); treat as
+    read-only."""
     constants = module_constants(tree)
     local = function_constants(tree)
     parents = walk_once(tree).parents if local else {}
-    ranges: list[tuple[int, int]] = []
+    ranges = _after_jumps(tree)
     for node in nodes_of_class(tree, ast.If):
         if isinstance(node, ast.If):
             function = enclosing(node, parents, _FUNCTIONS) if local else None
@@ -223,6 +231,29 @@ def dead_lines(tree: ast.Module) -> list[tuple[int, int]]:
             branch = node.body if value is False else node.orelse if value is True else []
             if branch:
                 ranges.append((branch[0].lineno, branch[-1].end_lineno or branch[-1].lineno))
+    return ranges
+
+
+_JUMPS = (ast.Return, ast.Raise, ast.Continue, ast.Break)
+_BLOCKS = ("body", "orelse", "finalbody")
+_HOLDERS = tuple(getattr(ast, name) for name in (
+    "Module", "FunctionDef", "AsyncFunctionDef", "ClassDef", "If", "For", "AsyncFor", "While",
+    "With", "AsyncWith", "Try", "TryStar", "ExceptHandler", "match_case") if hasattr(ast, name))
+"""The node classes holding blocks of statements."""
+
+
+def _after_jumps(tree: ast.Module) -> list[tuple[int, int]]:
+    """Line ranges of the statements that follow a jump in the same block."""
+    ranges: list[tuple[int, int]] = []
+    for node in nodes_of_class(tree, *_HOLDERS):
+        for name in _BLOCKS:
+            block = getattr(node, name, None)
+            if type(block) is not list or len(block) < 2:
+                continue
+            jump = next((i for i, s in enumerate(block[:-1]) if isinstance(s, _JUMPS)), None)
+            if jump is not None:
+                last = block[-1]
+                ranges.append((block[jump + 1].lineno, last.end_lineno or last.lineno))
     return ranges
 
 

@@ -36,8 +36,9 @@ def undefined_name(package: Package) -> Iterator[Hit]:
     stores through `globals()`, as generated API clients' lazy imports do), with pyflakes'
     own handling of builtins, `__all__`, star imports, conditional definitions and `except
     NameError` guards. Code that never runs on Python 3 is skipped: branches of `if
-    sys.version_info < (3,):`, `if six.PY2:` or of a module constant set once to False, and
-    annotations Python never evaluates: those of assignments in a function body, a string in
+    sys.version_info < (3,):`, `if six.PY2:` or of a module constant set once to False, lines
+    after a `return`, `raise`, `continue` or `break` of the same block, and annotations Python
+    never evaluates: those of assignments in a function body, a string in
     an annotation (a forward reference, `Optional['Pose']`), and every annotation under `from
     __future__ import annotations`.
 
