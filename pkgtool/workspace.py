@@ -8,7 +8,9 @@ A package is a folder holding ``package.xml`` or ``setup.py``. Discovery follows
   ``COLCON_IGNORE`` into its ``build``/``install``/``log`` folders, which is why those are
   skipped: a folder merely named ``build`` is searched, as colcon does;
 - hidden folders are skipped (colcon too); so are, beyond colcon, virtual environments (a
-  ``pyvenv.cfg``), ``__pycache__``, ``node_modules``, ``site-packages`` and ``*.egg-info``;
+  ``pyvenv.cfg``), CMake build trees (a ``CMakeCache.txt``: generated, as a vendored
+  library's build holding a copy of its Python bindings), ``__pycache__``, ``node_modules``,
+  ``site-packages`` and ``*.egg-info``;
 - packages do not nest: once a folder is a package, its sub-folders are not searched.
 
 A folder named on the command line is linted (or searched) even when it holds an ignore
@@ -31,6 +33,9 @@ PACKAGE_MARKERS = ("package.xml", "setup.py")
 IGNORE_MARKERS = frozenset({"COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE",
                             "_setup_util.py", "_order_isolated_packages.py"})
 SKIPPED_NAMES = frozenset({"__pycache__", "node_modules", "site-packages"})
+GENERATED_MARKERS = frozenset({"pyvenv.cfg", "CMakeCache.txt"})
+"""Files marking a folder whose contents are generated (a virtual environment, a CMake build
+tree): skipped with everything below it, beyond colcon."""
 
 
 @record
@@ -97,7 +102,8 @@ def _skipped_below(root: Path, cwd: Path) -> bool:
     folder = cwd
     for part in relative.parts:
         folder = folder / part
-        if _skipped_name(part) or _ignored_here(folder) or (folder / "pyvenv.cfg").is_file():
+        if _skipped_name(part) or _ignored_here(folder) or \
+                any((folder / marker).is_file() for marker in GENERATED_MARKERS):
             return True
     return False
 
@@ -131,7 +137,7 @@ def _walk(top: Path) -> Iterable[tuple[Path, str]]:
         seen.add(real)
         listed = listing(sub)
         names = {e.name for e in listed}
-        if not names.isdisjoint(IGNORE_MARKERS) or "pyvenv.cfg" in names:
+        if not names.isdisjoint(IGNORE_MARKERS) or not names.isdisjoint(GENERATED_MARKERS):
             continue
         if any(e.name in PACKAGE_MARKERS and _is_file(e) for e in listed):
             yield sub, real

@@ -46,6 +46,8 @@ def workspace(tmp_path: Path) -> Path:
         "old_install/_setup_util.py": "",  # a catkin install space
         "old_install/share/eta/package.xml": MANIFEST,
         "src/node_modules/epsilon/package.xml": MANIFEST,
+        "third_party/opencv_build/CMakeCache.txt": "",  # a CMake build tree: generated
+        "third_party/opencv_build/python_loader/setup.py": "from setuptools import setup\n",
         "README.md": "workspace\n",
     })
     return tmp_path
