@@ -47,8 +47,9 @@ ANY = RUNTIME | BUILD_ONLY | TEST
 
 
 def dependency_cause(key: str) -> str:
-    """The root cause "package.xml misspells ``key``": MAN021 states it for a run dependency;
-    DEP001 and LCH002 hits on ``key`` declared nowhere are its consequences."""
+    """The root cause "``key`` is misspelt": MAN021 states it for a run dependency that
+    package.xml misspells, DEP008 for an import that miscases an interface package; DEP001
+    and LCH002 hits on ``key`` declared nowhere are its consequences."""
     return f"misspelled-dependency:{key}"
 
 

@@ -18,7 +18,8 @@ PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprec
           ("PYC016", "missing_methods"), ("PYC025", "literals_of_another_type"),
           ("PYC025", "messages_given_other_values"), ("PYC025", "names_of_another_type"),
           ("DEP008", "interfaces_in_subfolders"), ("DEP008", "misspelled_and_wrong_kind"),
-          ("DEP008", "misspelled_modules"), ("MAN017", "ros2_pkg_create_defaults"),
+          ("DEP008", "misspelled_modules"), ("DEP008", "workspace_interfaces"),
+          ("MAN017", "ros2_pkg_create_defaults"),
           ("PYC001", "missing_standard_module"), ("DEP007", "own_package_by_bare_name"),
           ("PYC025", "builtin_results"), ("PYC031", "parameter_texts"),
           *(("PYC019", case) for case in (
@@ -67,7 +68,7 @@ MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages
               "interfaces_listed_in_an_included_cmake_file", "interfaces_listed_in_cmake",
               "interfaces_without_wheels",
               "misspelled_companion_types", "misspelled_generated_submodules",
-              "workspace_interfaces", "workspaces_sharing_a_name")),
+              "workspaces_sharing_a_name")),
           *(("ENT002", case) for case in (
               "excluded_by_pattern", "explicit_list_drops_subpackages", "missing_init",
               "module_never_written", "module_of_a_subpackage_never_written",

@@ -41,11 +41,16 @@ def own_interfaces(package: Package) -> Interfaces | None:
 
 
 def ros1_layout(interfaces: Interfaces) -> Interfaces:
-    """``interfaces`` as ROS 1 Python modules hold them: actions as messages, no ``action``."""
+    """``interfaces`` as ROS 1 Python modules hold them: actions as messages, no ``action``,
+    and each service ``X`` with its ``XRequest`` and ``XResponse`` classes."""
     actions = interfaces.get("action", frozenset())
     messages = interfaces.get("msg", frozenset()) | {
         action + suffix for action in actions for suffix in ROS1_ACTION_MESSAGES}
+    services = interfaces.get("srv", frozenset())
     layout = {kind: names for kind, names in interfaces.items() if kind != "action"}
+    if services:
+        layout["srv"] = services | {f"{service}{part}" for service in services
+                                    for part in ("Request", "Response")}
     return {**layout, "msg": messages} if messages else layout
 
 

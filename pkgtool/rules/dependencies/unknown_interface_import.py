@@ -12,7 +12,7 @@ from pkgtool.knowledge.ros_names import ROS_SUFFIXES
 from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.imports import all_python
+from pkgtool.rules.imports import all_python, dependency_cause
 from pkgtool.rules.dependencies.interface_types import interfaces_for, patched_interfaces
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import index_of, python_files, resolved_attributes
@@ -39,14 +39,17 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
     since Iron; on humble they are reported with the attribute to use (`X.Request`). The
     submodule rosidl writes each interface to (`from pkg.action import _fibonacci`) is no
     mistake. A ROS 1 (catkin) package is checked against its own interfaces only, where an
-    action `A` is the messages `AAction`, `AGoal`, `AResult`, ... of `pkg.msg`. A name the
+    action `A` is the messages `AAction`, `AGoal`, `AResult`, ... of `pkg.msg` and a service
+    `X` also gives `XRequest` and `XResponse` in `pkg.srv`. A name the
     package's installed code assigns onto the module (`rosgraph_msgs.msg.Log =
     rcl_interfaces.msg.Log`, as ROS 1 compatibility shims do) exists.
 
     The same goes for a name read on the module (`std_msgs.msg.Strng()` after `import
     std_msgs.msg`). Also reports a misspelled module of an interface package (`std_msgs.msgs`,
-    `geometry_msgs.message`, `example_interfaces.srvs`, `from std_msgs import Msg`) and an
-    interface imported from the package itself (`from std_msgs import String`): the
+    `geometry_msgs.message`, `example_interfaces.srvs`, `from std_msgs import Msg`), an
+    interface package written in other letter cases (`from Robot_interfaces.srv import
+    Home` for the workspace's `robot_interfaces`), and an interface imported from the package
+    itself (`from std_msgs import String`): the
     Python module of a ROS 2 interface package holds only `msg`, `srv` and `action`. An
     interface package is one whose interfaces are known as above, or one named like an
     interface package (`*_msgs`, `*_srvs`, `*_interfaces`); a workspace package that has a
@@ -83,6 +86,7 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
                 continue
             known = interfaces_for(package, parts[0])
             if known is None:
+                yield from _miscased_package(package, imported, parts[0], parts[1])
                 continue
             patched = patched_interfaces(package)
             modules = {generated_module(name) for name in known.get(parts[1], ())} \
@@ -155,6 +159,25 @@ def _interface_without_module(package: Package, imported: Import) -> Iterator[Hi
                       f"{WORDS[kind]} `{name}` is in `{right}`",
                       f"Write `from {right} import {name}`")
             return
+
+
+def _miscased_package(package: Package, imported: Import, name: str, kind: str
+                      ) -> Iterator[Hit]:
+    """``from Robot_interface.srv import X`` where no package is ``Robot_interface`` but one
+    interface package (of the workspace, or of pkgtool's table) is ``robot_interface``: Python
+    imports are case-sensitive, so this one fails, as a hit."""
+    if name in package.context.workspace or name == package.name:
+        return
+    lowered = name.lower()
+    meant = {other for other in (*package.context.workspace, package.name, lowered)
+             if other.lower() == lowered and other != name and interfaces_for(package, other)}
+    if len(meant) == 1:
+        right = meant.pop()
+        names = ", ".join(imported.names)
+        yield Hit(imported.span, f"There is no package `{name}`: the interface package is "
+                  f"`{right}`, and Python imports are case-sensitive",
+                  f"Write `from {right}.{kind} import {names}`" if names else None,
+                  cause=dependency_cause(name))
 
 
 def _interface_package(package: Package, name: str, word: str) -> bool:
