@@ -142,7 +142,8 @@ def is_template(path: str) -> bool:
     return path.split("/", 1)[0] in TEMPLATE_FOLDERS and "/" in path
 
 
-def is_launch_file(path: str, python_folders: frozenset[str] = frozenset()) -> bool:
+def is_launch_file(path: str, python_folders: frozenset[str] = frozenset(),
+                   nested: frozenset[str] = frozenset()) -> bool:
     """True for a file with a launch file name that the package keeps as a launch file.
 
     Files under ``templates/`` never are (:func:`is_template`). Anything named like a launch
@@ -150,16 +151,32 @@ def is_launch_file(path: str, python_folders: frozenset[str] = frozenset()) -> b
     Python package folder (``python_folders``: folders holding an ``__init__.py``; it is
     installed as code), a test (``test_*``) and files under ``test/``, ``examples/``,
     ``samples/`` or ``doc/`` (run by pytest, by ``main()`` with a ``LaunchService``, or by
-    path from that folder, next to its data) are not launch files.
+    path from that folder, next to its data) are not launch files. Nor are those below a
+    ``nested`` folder (:func:`nested_packages`): they are that package's.
     """
     folder, _, name = path.rpartition("/")
-    if not name.endswith(LAUNCH_SUFFIXES) or is_template(path):
+    if not name.endswith(LAUNCH_SUFFIXES) or is_template(path) or \
+            nested and any(path.startswith(f"{other}/") for other in nested):
         return False
     parts = folder.split("/") if folder else []
     if "launch" in parts:
         return True
     return not (name.startswith("test_") or (parts and parts[0] in NOT_LAUNCH_FOLDERS)
                 or folder in python_folders)
+
+
+def is_launch_test(path: str, text: str | None) -> bool:
+    """True for a Python file named like a launch file that is a ``launch_testing`` test: it
+    defines ``generate_test_description`` and no ``generate_launch_description`` (``ros2
+    launch`` cannot run it; ``launch_test`` or pytest does)."""
+    return path.endswith(".py") and text is not None and \
+        "def generate_test_description" in text and "def generate_launch_description" not in text
+
+
+def nested_packages(files: tuple[str, ...] | list[str]) -> frozenset[str]:
+    """Sub-folders holding a package.xml of their own (kept in the package's files when they
+    are Python packages of it too): their launch files are not this package's."""
+    return frozenset(p[:-len("/package.xml")] for p in files if p.endswith("/package.xml"))
 
 
 def python_folders(files: tuple[str, ...] | list[str]) -> frozenset[str]:

@@ -9,8 +9,8 @@ from pathlib import Path
 from pkgtool.model.cmake_interfaces import with_included
 from pkgtool.model.context import Context
 from pkgtool.model.files import TextFile, list_files, read_text
-from pkgtool.model.launch import LaunchFile, is_launch_file, is_template, parse_launch, \
-    python_folders
+from pkgtool.model.launch import (LaunchFile, is_launch_file, is_launch_test, is_template,
+                                  nested_packages, parse_launch, python_folders)
 from pkgtool.model.launch_reader import yaml_problem
 from pkgtool.model.manifest import Manifest, parse_manifest
 from pkgtool.model.modules import PythonModule, parse_module
@@ -127,9 +127,11 @@ def load_package(root: Path, context: Context | None = None) -> Package:
     setup_cfg = _parsed(problems, "setup.cfg", text_of, parse_setup_cfg, files)
     modules: list[PythonModule] = []
     launches: list[LaunchFile] = []
-    folders = python_folders(files)
+    folders, nested = python_folders(files), nested_packages(files)
     for relpath in files:
-        if is_launch_file(relpath, folders) or _launch_by_content(relpath, text_of):
+        if is_launch_file(relpath, folders, nested) and \
+                not is_launch_test(relpath, text_of(relpath)) or \
+                _launch_by_content(relpath, text_of, nested):
             text = text_of(relpath)
             if text is not None:
                 launch = parse_launch(relpath, text)
@@ -137,7 +139,7 @@ def load_package(root: Path, context: Context | None = None) -> Package:
                 if launch.problem:
                     problems.append(launch.problem)
         elif relpath.endswith((".yaml", ".yml")):  # parameter files: only their syntax
-            if is_test_material(relpath):
+            if is_test_yaml(relpath):
                 continue  # test data, deliberately broken at times: not package files
             text = text_of(relpath)
             if text is not None and "{%" not in text:  # a Jinja template is not YAML yet
@@ -178,6 +180,17 @@ def is_test_material(relpath: str) -> bool:
     return any(part in ("test", "tests") for part in relpath.split("/")[:-1])
 
 
+TEST_DATA_FOLDERS = frozenset({"test", "tests", "testdata", "test_data", "test_files",
+                               "test_resources", "test_fixtures"})
+
+
+def is_test_yaml(relpath: str) -> bool:
+    """A YAML file of test material or test data (``test_data/broken.yaml``), which tests of
+    error handling keep broken on purpose: never a parameter file the package runs with."""
+    return relpath.endswith((".yaml", ".yml")) and \
+        any(part in TEST_DATA_FOLDERS for part in relpath.split("/")[:-1])
+
+
 def is_test_data(relpath: str) -> bool:
     """A Python file under ``test/`` that pytest does not collect (a fixture, sample input)."""
     name = relpath.rsplit("/", 1)[-1]
@@ -185,7 +198,8 @@ def is_test_data(relpath: str) -> bool:
     return is_test_material(relpath) and not collected
 
 
-def _launch_by_content(relpath: str, text_of: Callable[[str], str | None]) -> bool:
+def _launch_by_content(relpath: str, text_of: Callable[[str], str | None],
+                       nested: frozenset[str]) -> bool:
     """An XML or YAML file in a ``launch`` folder (not a template) whose root is ``launch``,
     whatever its name.
 
@@ -193,7 +207,7 @@ def _launch_by_content(relpath: str, text_of: Callable[[str], str | None]) -> bo
     for this, so URDF, RViz and parameter files elsewhere cost nothing.
     """
     if "launch" not in relpath.split("/")[:-1] or not relpath.endswith((".xml", ".yaml", ".yml")) \
-            or is_template(relpath):
+            or is_template(relpath) or any(relpath.startswith(f"{n}/") for n in nested):
         return False
     text = text_of(relpath)
     if text is None:

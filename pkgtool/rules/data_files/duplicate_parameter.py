@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.launch_reader import yaml_problem
-from pkgtool.model.package import Package, is_test_material
+from pkgtool.model.package import Package, is_test_yaml
 from pkgtool.rules.node_parameters import span_of
 from pkgtool.rules.registry import rule
 
@@ -89,7 +89,7 @@ def duplicate_parameter(package: Package) -> Iterator[Hit]:
     ```
     """
     for path, text in sorted(package.texts.items()):
-        if not path.endswith((".yaml", ".yml")) or is_test_material(path) or \
+        if not path.endswith((".yaml", ".yml")) or is_test_yaml(path) or \
                 PARAMS_KEY not in text:
             continue
         documents = yaml_problem(path, text)

@@ -9,7 +9,7 @@ from typing import TYPE_CHECKING
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.launch_reader import yaml_problem
-from pkgtool.model.package import Package, is_test_material
+from pkgtool.model.package import Package, is_test_yaml
 from pkgtool.model.span import Span
 from pkgtool.rules.node_parameters import parameter_file_nodes
 from pkgtool.rules.registry import rule
@@ -146,7 +146,7 @@ def _candidates(package: Package) -> Iterator[str]:
     launch = {f.path for f in package.launch_files}
     for path, text in package.texts.items():
         if path.endswith((".yaml", ".yml")) and path not in launch and \
-                not is_test_material(path) and "{%" not in text:
+                not is_test_yaml(path) and "{%" not in text:
             yield path
 
 

@@ -6,7 +6,8 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import installed_data
-from pkgtool.model.launch import is_launch_file, python_folders
+from pkgtool.model.launch import (is_launch_file, is_launch_test, nested_packages,
+                                  python_folders)
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
@@ -27,7 +28,10 @@ def uninstalled_launch_file(package: Package) -> Iterator[Hit]:
     does not install anywhere under `share/<name>`; installing them flat into `share/<name>`
     or into `share/<name>/launch` are both fine. Launch files under `test/` and `doc/` are
     ignored, and so are files that only look like launch files: outside a `launch` folder, a
-    module inside the Python package, a `test_*` file or a file under `examples/` or `samples/`.
+    module inside the Python package, a `test_*` file or a file under `examples/` or `samples/`,
+    files under a sub-folder with a package.xml of its own (that package's), and a
+    `launch_testing` test kept in a `launch` folder (it defines `generate_test_description`
+    and no `generate_launch_description`: `ros2 launch` cannot run it).
 
     ## Why is this bad?
     `ros2 launch <package> <file>` searches the installed share folder only: the launch file
@@ -51,8 +55,9 @@ def uninstalled_launch_file(package: Package) -> Iterator[Hit]:
         return
     share = f"share/{package.name}/"
     shared = {source for target, source in installed.items() if target.startswith(share)}
-    folders = python_folders(package.files)
-    for path in sorted({*(f for f in package.files if is_launch_file(f, folders)),
+    folders, nested = python_folders(package.files), nested_packages(package.files)
+    for path in sorted({*(f for f in package.files if is_launch_file(f, folders, nested) and
+                          not is_launch_test(f, package.texts.get(f))),
                         *(launch.path for launch in package.launch_files)}):
         if path.split("/")[0] not in NOT_INSTALLED_FOLDERS and path not in shared:
             name = path.rsplit("/", 1)[-1]
