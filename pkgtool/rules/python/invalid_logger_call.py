@@ -9,6 +9,7 @@ from functools import cache
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
+from pkgtool.model.ast_nodes import descendants
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import dead_lines
 from pkgtool.rules.node_api import node_subclasses, unpacks
@@ -19,7 +20,7 @@ from pkgtool.rules.python._message_instances import known_messages
 from pkgtool.rules.python._messages import message_instances
 from pkgtool.rules.python._value_types import NUMBER_TYPES, certain_type
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
 OPTIONS = frozenset({"name", "throttle_duration_sec", "throttle_time_source_type",
                      "skip_first", "once"})
@@ -90,10 +91,27 @@ def _typer(package: Package, tree: ast.Module, index: Index) -> Callable[[ast.ex
                           if read.python_type in NUMBER_TYPES})
         if id(value) in known:
             return known[id(value)]
+        if _caught_exception(value, index):
+            return f"the exception `{ast.unparse(value)}` it caught"
         found = certain_type(value, package, tree, index)
         return _a(found) if found in NUMBER_TYPES else None
 
     return typed
+
+
+def _caught_exception(value: ast.expr, index: Index) -> bool:
+    """True for ``e`` read in the body of the ``except ... as e:`` binding it, when nothing
+    there rebinds ``e``."""
+    if not isinstance(value, ast.Name):
+        return False
+    child, parent = value, index.parents.get(id(value))
+    while parent is not None and not isinstance(parent, (*FUNCTIONS, ast.Lambda, ast.ClassDef)):
+        if isinstance(parent, ast.ExceptHandler) and parent.name == value.id:
+            return any(child is statement for statement in parent.body) and not any(
+                isinstance(n, ast.Name) and n.id == value.id and not isinstance(n.ctx, ast.Load)
+                for statement in parent.body for n in descendants(statement))
+        child, parent = parent, index.parents.get(id(parent))
+    return False
 
 
 @rule("PYC016", "invalid-logger-call", Severity.ERROR,
@@ -108,11 +126,16 @@ def invalid_logger_call(package: Package) -> Iterator[Hit]:
     only ever assigns one of those. Calls of `debug`, `info`, `warning`, `warn`, `error` and
     `fatal` must pass one message (by position, or by keyword as `message=`) and only rclpy's
     options (`throttle_duration_sec`, `throttle_time_source_type`, `skip_first`, `once`,
-    `name`); calls that unpack `*args` or `**kwargs` are not checked. A method rclpy's logger
+    `name`); calls that unpack `*args` or `**kwargs` are not checked. The message must be a
+    string: a literal number or container, a message, a number or bool a name certainly holds,
+    or the exception an `except ... as e:` caught (`error(e)`, in its handler) is reported.
+    A method rclpy's logger
     does not have (`err`, `infor`, and `exception` or `critical` of Python's `logging`) is
     reported too; Python's logger methods only on `self.get_logger()` in a `Node` subclass
     and `rclpy.logging.get_logger()`, as another class's `get_logger()` may give a Python
-    logger.
+    logger. `self.get_logger()` in a class of the package with a `get_logger` method of its
+    own, or deriving from one by name (a behaviour tree's nodes), is not rclpy's and is left
+    alone.
 
     ## Why is this bad?
     rclpy's logger is neither `print` nor Python's `logging`: `info('count', n)` raises
@@ -137,7 +160,7 @@ def invalid_logger_call(package: Package) -> Iterator[Hit]:
             continue
         typed = _typer(package, tree, index)
         dead = dead_lines(tree)
-        for call, func in logger_method_calls(tree, index):
+        for call, func in logger_method_calls(tree, index, package):
             if any(first <= call.lineno <= last for first, last in dead):
                 continue
             problem = _problem(call, typed) if func.attr in LEVELS else \

@@ -40,10 +40,10 @@ def _bound_around(node: ast.AST, tree: ast.Module, index: Index) -> set[str]:
     return set(scope_bindings(tree)).union(*around)
 
 
-def _messages(tree: ast.Module, index: Index) -> Iterator[ast.Constant]:
+def _messages(tree: ast.Module, index: Index, package: Package) -> Iterator[ast.Constant]:
     """The string literals given as the message of an rclpy logger's logging method, or as
     an argument of ``print()``."""
-    for call, func in logger_method_calls(tree, index):
+    for call, func in logger_method_calls(tree, index, package):
         message = logged_message(call) if func.attr in LEVELS else None
         if isinstance(message, ast.Constant):
             yield message
@@ -84,7 +84,7 @@ def missing_f_prefix(package: Package) -> Iterator[Hit]:
     ```
     """
     for module, tree, index in installed_trees(package):
-        for message in _messages(tree, index):
+        for message in _messages(tree, index, package):
             if not isinstance(message.value, str) or "{" not in message.value:
                 continue
             fields = _fields(message.value)
