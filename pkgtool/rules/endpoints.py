@@ -151,7 +151,7 @@ def _overrides(package: Package) -> _Overrides:
             for key, value in re.findall(r"^\s*([\w.]+)\s*:\s*(.*?)\s*$", text, re.M):
                 anywhere.setdefault(key, set()).add(value.strip("'\""))
         elif "launch" in path.rsplit("/", 1)[-1]:
-            for word in re.findall(r"""['"]/?([\w.]+)['"]""", text):
+            for word in re.findall(r"""['"]/?(\w[\w.]*(?:/\w[\w.]*)*)['"]""", text):
                 anywhere.setdefault(word, set()).add("*")
     return _Overrides(by_class, anywhere)
 
