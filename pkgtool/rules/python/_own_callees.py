@@ -37,6 +37,24 @@ def _stored_attributes(cls: ast.ClassDef) -> frozenset[str]:
                      if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load))
 
 
+@per_tree
+def _from_imported(index: Index) -> frozenset[str]:
+    """The names the module's ``from`` imports bind."""
+    return frozenset(alias.asname or alias.name for node in index.import_froms
+                     for alias in node.names)
+
+
+def may_run_own(call: ast.Call, index: Index, tree: ast.Module) -> bool:
+    """False when ``call`` certainly runs nothing the package defines: its callee is named
+    like no function of the module (``self.get_logger()``), or like no definition or ``from``
+    import there (``print()``). A cheap test before the others (most calls fail it)."""
+    func = call.func
+    if isinstance(func, ast.Attribute):
+        return index.defines_function(func.attr)
+    return isinstance(func, ast.Name) and \
+        (func.id in _definitions(tree) or func.id in _from_imported(index))
+
+
 def defined_once(scope: ast.Module | ast.ClassDef, name: str, kind: type = ast.FunctionDef
                  ) -> ast.AST | None:
     """The ``def name`` (or other definition of ``kind``) of the body of ``scope``, when
@@ -69,9 +87,10 @@ def own_definition(call: ast.Call, index: Index, tree: ast.Module,
     """The module-level function (or class, by ``kind``) ``name()`` calls, when no scope
     around the call rebinds it."""
     func = call.func
-    if not isinstance(func, ast.Name) or rebound_around(call, func.id, index):
+    if not isinstance(func, ast.Name):
         return None
-    return defined_once(tree, func.id, kind)
+    found = defined_once(tree, func.id, kind)
+    return found if found is not None and not rebound_around(call, func.id, index) else None
 
 
 def rebound_around(node: ast.AST, name: str, index: Index) -> bool:

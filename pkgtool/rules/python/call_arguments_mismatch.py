@@ -9,8 +9,8 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import bases_are_nodes
-from pkgtool.rules.python._own_callees import (binding_error, defined_once, own_definition,
-                                               own_method, rebound_around)
+from pkgtool.rules.python._own_callees import (binding_error, defined_once, may_run_own,
+                                               own_definition, own_method, rebound_around)
 from pkgtool.rules.python._package_modules import imported_from_package, modules_by_name
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, base_names, installed_trees
@@ -38,10 +38,9 @@ def _callee(call: ast.Call, index: Index, tree: ast.Module, package: Package
             return None
         return function, 1, f"{cls.name}.{function.name}"
     found = own_definition(call, index, tree, (ast.FunctionDef, ast.ClassDef))
-    if found is None and isinstance(call.func, ast.Name) and \
-            not rebound_around(call, call.func.id, index):
+    if found is None and isinstance(call.func, ast.Name):
         imported = imported_from_package(call.func.id, tree, index, package)
-        if imported is not None:
+        if imported is not None and not rebound_around(call, call.func.id, index):
             tree, index = modules_by_name(package)[imported[0]]
             found = defined_once(tree, imported[1], (ast.FunctionDef, ast.ClassDef))
     if isinstance(found, ast.FunctionDef):
@@ -100,7 +99,7 @@ def call_arguments_mismatch(package: Package) -> Iterator[Hit]:
     """
     for module, tree, index in installed_trees(package):
         for call in index.calls:
-            if not isinstance(call.func, (ast.Name, ast.Attribute)):
+            if not may_run_own(call, index, tree):
                 continue
             callee = _callee(call, index, tree, package)
             error = binding_error(call, callee[0], callee[1]) if callee else None
