@@ -19,6 +19,7 @@ and log texts left out); writes every mutation with the findings it added to ``-
 from __future__ import annotations
 
 import argparse
+import ast
 import io
 import json
 import re
@@ -77,8 +78,49 @@ def _linter(root: Path, roots: list[Path]):
     return lint
 
 
-def fuzz(src: Path, name: str) -> Iterator[dict[str, object]]:
-    """Every typo of the package ``name`` under ``src`` and the findings it adds."""
+def _typos(path: Path, text: str) -> Iterator[tuple[int, str, str, str]]:
+    """(offset, word, typo, new text) for each typo of ``text``."""
+    places: dict[str, list[tuple[int, int]]] = {}
+    for begin, end in _spans(path, text):
+        places.setdefault(text[begin:end], []).append((begin, end))
+    for word, spans in places.items():
+        if word in KEYWORDS:
+            continue
+        for begin, end in dict.fromkeys((spans[0], spans[-1])):
+            middle = begin + (end - begin) // 2
+            yield (begin, word, word[:middle - begin] + word[middle - begin + 1:],
+                   text[:middle] + text[middle + 1:])
+
+
+def _deletions(path: Path, text: str) -> Iterator[tuple[int, str, str, str]]:
+    """(offset, line, "deleted", new text) for each one-line statement of a Python file
+    (replaced by ``pass``), and each one-line element or key of an XML, YAML or cfg file."""
+    lines = text.splitlines(keepends=True)
+    starts = [0]
+    for line in lines:
+        starts.append(starts[-1] + len(line))
+    if path.suffix == ".py":
+        try:
+            tree = ast.parse(text)
+        except (SyntaxError, ValueError):
+            return
+        numbers = [node.lineno for node in ast.walk(tree) if isinstance(node, ast.stmt)
+                   and node.end_lineno == node.lineno and not isinstance(node, ast.Pass)
+                   and not (isinstance(node, ast.Expr) and isinstance(node.value, ast.Constant))]
+    else:
+        numbers = [i + 1 for i, line in enumerate(lines) if line.strip() and
+                   not line.lstrip().startswith(("#", "<!--", "<?xml")) and
+                   (path.suffix != ".xml" or re.search(r"<(\w+)[^>]*>.*</\1>|/>", line))]
+    for number in dict.fromkeys(numbers):
+        line = lines[number - 1]
+        indent = line[:len(line) - len(line.lstrip())]
+        replacement = f"{indent}pass\n" if path.suffix == ".py" else ""
+        yield (starts[number - 1], line.strip(), "deleted",
+               text[:starts[number - 1]] + replacement + text[starts[number]:])
+
+
+def fuzz(src: Path, name: str, mutations=_typos) -> Iterator[dict[str, object]]:
+    """Every mutation of the package ``name`` under ``src`` and the findings it adds."""
     work = Path(tempfile.mkdtemp()) / "src"
     shutil.copytree(src / name, work / name, ignore=shutil.ignore_patterns(
         ".pkgtool_cache", "__pycache__"))
@@ -90,21 +132,14 @@ def fuzz(src: Path, name: str) -> Iterator[dict[str, object]]:
     before = lint()
     for path in sorted(p for p in root.rglob("*") if p.is_file() and p.suffix in SUFFIXES):
         text = path.read_text(encoding="utf-8", errors="replace")
-        places: dict[str, list[tuple[int, int]]] = {}
-        for begin, end in _spans(path, text):
-            places.setdefault(text[begin:end], []).append((begin, end))
-        for word, spans in places.items():
-            if word in KEYWORDS:
-                continue
-            for begin, end in dict.fromkeys((spans[0], spans[-1])):
-                middle = begin + (end - begin) // 2
-                path.write_text(text[:middle] + text[middle + 1:], encoding="utf-8")
-                added = sorted(lint() - before)
-                path.write_text(text, encoding="utf-8")
-                line = text.count("\n", 0, begin) + 1
-                yield {"file": str(path.relative_to(root)), "line": line, "word": word,
-                       "typo": word[:middle - begin] + word[middle - begin + 1:],
-                       "code": text.splitlines()[line - 1].strip()[:100], "added": added}
+        for begin, word, typo, mutated in mutations(path, text):
+            path.write_text(mutated, encoding="utf-8")
+            added = sorted(lint() - before)
+            path.write_text(text, encoding="utf-8")
+            line = text.count("\n", 0, begin) + 1
+            yield {"file": str(path.relative_to(root)), "line": line, "word": word,
+                   "typo": typo, "code": text.splitlines()[line - 1].strip()[:100],
+                   "added": added}
     shutil.rmtree(work.parent, ignore_errors=True)
 
 
@@ -113,19 +148,22 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("src", type=Path)
     parser.add_argument("package")
     parser.add_argument("--out", type=Path, help="write every mutation here (JSON lines)")
+    parser.add_argument("--delete", action="store_true",
+                        help="delete one statement, element or key at a time instead")
     options = parser.parse_args(argv)
     out = options.out.open("w", encoding="utf-8") if options.out else None
     total = silent = 0
-    for row in fuzz(options.src, options.package):
+    for row in fuzz(options.src, options.package, _deletions if options.delete else _typos):
         total += 1
         if out:
             out.write(json.dumps(row) + "\n")
         if not row["added"]:
             silent += 1
-            if not _PROSE.search(str(row["code"])) and any(c in str(row["code"]) for c in "=(.[:"):
+            code = str(row["code"])
+            if not _PROSE.search(code) and (options.delete or any(c in code for c in "=(.[:")):
                 print(f"{row['file']}:{row['line']}: {row['word']} -> {row['typo']}  |  "
-                      f"{row['code']}")
-    print(f"{total} typos, {silent} silent (code lines listed above)", file=sys.stderr)
+                      f"{code}")
+    print(f"{total} mutations, {silent} silent (code lines listed above)", file=sys.stderr)
     return 0
 
 
