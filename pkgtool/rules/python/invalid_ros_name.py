@@ -8,7 +8,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.endpoints import endpoints
+from pkgtool.rules.endpoints import endpoints, service_endpoints
 from pkgtool.rules.node_api import (PARAMETERS, argument, name_argument,
                                     node_api_calls, node_constructions)
 from pkgtool.rules.registry import rule
@@ -27,9 +27,10 @@ def invalid_ros_name(package: Package) -> Iterator[Hit]:
     given with them against the rules for namespaces, and as topic or
     service names (`create_publisher`, `create_subscription`, `create_service`,
     `create_client`) against `rcl_validate_topic_name`: no dashes, spaces or dots, no part
-    starting with a digit, no empty part; also a publisher's or subscription's topic given
-    through a name bound once to a string or through a parameter whose literal default no
-    parameter or launch file of the package changes. Names with `{substitutions}` are not checked.
+    starting with a digit, no empty part; also the topic of a publisher or subscription, and
+    the name of a service, client or action server or client, given through a name bound once
+    to a string or through a parameter whose literal default no parameter or launch file of
+    the package changes. Names with `{substitutions}` are not checked.
 
     ## Why is this bad?
     ROS 1 and other middleware accept names such as `cmd-vel` or `my node`; rclpy raises
@@ -63,12 +64,15 @@ def invalid_ros_name(package: Package) -> Iterator[Hit]:
                 assert space is not None
                 yield Hit(Span(module.path, space.lineno, space.col_offset + 1),
                           f"`{space.value}` is not a valid namespace: {problem}")
-    for endpoint in endpoints(package):
+    for endpoint in (*endpoints(package), *service_endpoints(package)):
         problem = None if endpoint.literal else topic_name_problem(endpoint.topic)
         if problem:
+            what = "topic" if endpoint.kind in ("publisher", "subscription") else \
+                "action name" if endpoint.kind.startswith("action") else "service name"
             yield Hit(endpoint.topic_span,
-                      f"`{endpoint.topic}`, the topic this {endpoint.kind} is given (through a "
-                      f"name or a parameter's default), is not a valid topic name: {problem}")
+                      f"`{endpoint.topic}`, the {what} this {endpoint.kind} is given (through a "
+                      f"name or a parameter's default), is not a valid {what.split()[0]} name: "
+                      f"{problem}")
     for module, call, method, _ in node_api_calls(package):
         parameters = PARAMETERS[method]
         expr = argument(call, parameters, parameters[1])
