@@ -81,15 +81,17 @@ def _response(call: ast.Call, package: Package, tree: ast.Module, index: Index,
 
 def _result_instances(package: Package, tree: ast.Module, index: Index, known: Known
                       ) -> list[Instance[Message]]:
-    """A response used right where ``future.result()`` gives it (``future.result().sum``)."""
+    """A response used right where ``future.result()`` gives it (``future.result().sum``, or
+    ``future.result()`` passed on)."""
     found: list[Instance[Message]] = []
     for call in index.calls:
-        parent = index.parents.get(id(call))
-        if isinstance(parent, ast.Attribute) and parent.value is call and \
-                _made_by(call, "result"):
-            message = _response(call, package, tree, index, known)
-            if message is not None:
-                found.append(Instance(message, [parent], frozenset(), []))
+        if not _made_by(call, "result"):
+            continue
+        message = _response(call, package, tree, index, known)
+        if message is not None:
+            parent = index.parents.get(id(call))
+            used = isinstance(parent, ast.Attribute) and parent.value is call
+            found.append(Instance(message, [parent] if used else [], frozenset(), [call]))
     return found
 
 
