@@ -428,16 +428,44 @@ def _needs(package: Package, module: PythonModule, guarded: bool | None) -> Iter
     for imported in module.imports:
         top = imported.top_level
         is_guarded = imported.guarded or optional
-        if (not top or top in seen or (guarded is not None and is_guarded != guarded)
+        if (not top or (guarded is not None and is_guarded != guarded)
                 or top in skip or (top in stdlib and not keys_for_import(top))
                 or enclosing_package_import(package, owner, imported)
                 or any(line < imported.span.line and top in names for line, names in on_path)):
             continue
-        seen.add(top)
-        kind, keys = classify(top, names, package.context)
+        member = _namespace_member(imported)
+        shown = f"{top}.{member}" if member else top
+        if shown in seen:
+            continue
+        seen.add(shown)
+        kind, keys = classify(shown.replace(".", "_"), names, package.context)
         if ros1 and kind == "ros":
             keys = _ros1_keys(top, keys)
-        yield Need(module, imported, top, kind, keys)
+        yield Need(module, imported, shown, kind, keys)
+
+
+NAMESPACE_PACKAGES = {"google": "protobuf", "azure": "", "zope": "", "backports": "",
+                      "jaraco": "", "sphinxcontrib": ""}
+"""Top-level names that several distributions share as a namespace (``google.auth``,
+``google.cloud.storage``, ``google.protobuf``), each with the one member its plain name stands
+for in rosdep's data (``google``: protobuf's)."""
+
+
+def _namespace_member(imported: Import) -> str | None:
+    """The member of a namespace package an import takes (``auth`` of ``import google.auth``
+    or ``from google import auth``, ``cloud.storage`` of ``from google.cloud import storage``
+    when rosdep's data knows that one), when it is not the one the plain name stands for."""
+    top = imported.top_level
+    if top not in NAMESPACE_PACKAGES:
+        return None
+    parts = imported.module.split(".")[1:]
+    if len(imported.names) == 1 and imported.names[0] != "*":
+        parts.append(imported.names[0])
+    if not parts or parts[0] == NAMESPACE_PACKAGES[top]:
+        return None
+    longest = next((parts[:n] for n in range(len(parts), 1, -1)
+                    if keys_for_import("_".join([top, *parts[:n]]))), parts[:1])
+    return ".".join(longest)
 
 
 def _ros1_keys(top: str, keys: tuple[str, ...]) -> tuple[str, ...]:

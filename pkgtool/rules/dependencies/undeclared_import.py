@@ -27,8 +27,11 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     workspace package by that package (also where rosdep has a `python3-x-pip` key for it), and
     a third-party module by one of the rosdep keys that rosdep's data says install it (`cv2` by
     `python3-opencv`, `rosdistro` by `python3-rosdistro-modules`, `pyflakes` by `pyflakes3`,
-    ...). One finding stands for each missing declaration: modules whose suggested key is the
-    same (`matplotlib` and `mpl_toolkits`, both `python3-matplotlib`) are reported together at
+    ...). A namespace several distributions share is matched by its member: `google.auth` by
+    `python3-google-auth`, `google.cloud.storage` by its own key, `google.protobuf` by
+    `python3-protobuf`. One finding stands for each missing declaration: modules whose
+    suggested key is the same (`matplotlib` and `mpl_toolkits`, both `python3-matplotlib`) are
+    reported together at
     the first import, their other imports listed. A module the package declares under a key
     rosdep does not know but written for it (`python3-torch-pip-shim` for `torch`, a key of a
     private rosdep source) is MAN022's: one mistake, one finding. Modules that only a
