@@ -12,7 +12,27 @@ from pkgtool.model.package import Package
 from pkgtool.rules.console_scripts import scripts_and_modules
 from pkgtool.rules.node_api import node_subclasses
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import installed_trees
+from pkgtool.rules.syntax_trees import FUNCTIONS, installed_trees
+
+
+def _plain_function(package: Package, path: str, name: str) -> bool:
+    """True when the installed module ``path`` binds ``name`` once at its top level, with a
+    ``def`` (a function has no attributes an entry point could name: ``main.py``)."""
+    for module, tree, _ in installed_trees(package):
+        if module.path == path:
+            bindings = [s for s in tree.body if name in _bound_at_top(s)]
+            return len(bindings) == 1 and isinstance(bindings[0], FUNCTIONS)
+    return False
+
+
+def _bound_at_top(statement: ast.stmt) -> set[str]:
+    """The names a top-level statement binds (definitions, imports, assignment targets)."""
+    if isinstance(statement, (*FUNCTIONS, ast.ClassDef)):
+        return {statement.name}
+    if isinstance(statement, (ast.Import, ast.ImportFrom)):
+        return {(a.asname or a.name).split(".")[0] for a in statement.names}
+    return {n.id for n in ast.walk(statement) if isinstance(n, ast.Name)
+            and not isinstance(n.ctx, ast.Load)}
 
 
 def _uninitialised_node(package: Package, path: str, name: str) -> bool:
@@ -43,7 +63,8 @@ def undefined_entry_point_function(package: Package) -> Iterator[Hit]:
     import). Modules with `from x import *` or a module-level `__getattr__` are skipped.
     Also reports an entry naming a `Node` subclass of the module instead of a function
     (`talker = my_pkg.talker:Talker`) when neither the class nor the module's top-level code
-    calls `rclpy.init()`.
+    calls `rclpy.init()`, and an entry reading an attribute off a plain function
+    (`talker = my_pkg.talker:main.py`: `getattr(main, 'py')` fails).
 
     ## Why is this bad?
     The build succeeds, but running the command fails with `AttributeError` (or `ImportError`
@@ -79,6 +100,12 @@ def undefined_entry_point_function(package: Package) -> Iterator[Hit]:
                                   f"level (`{modules[entry.module]}`"
                                   f"{f'; did you mean `{close[0]}`?' if close else ''})",
                       f"Write `{meant}`" if meant else None)
+        elif entry.attr != function and _plain_function(package, module.path, function):
+            assert entry.attr is not None
+            rest = entry.attr.split(".", 1)[1]
+            yield Hit(entry.span, f"`{entry.attr}` reads `{rest}` off the function "
+                      f"`{function}`, which has no such attribute: running the script raises "
+                      "AttributeError", f"Write `{entry.module}:{function}`")
         elif entry.attr == function and _uninitialised_node(package, module.path, function):
             yield Hit(entry.span, f"`{function}` is a Node class, not a function: the script "
                       "constructs it before anything calls rclpy.init(), which raises, and "
