@@ -32,7 +32,7 @@ from pathlib import Path
 
 from pkgtool.config import settings_for
 from pkgtool.engine import check_package
-from pkgtool.model.context import Context, workspace_index, workspace_near
+from pkgtool.model.context import context_for, workspace_index
 from pkgtool.model.package import load_package
 from pkgtool.model.python_visitor import forget_trees
 
@@ -67,8 +67,8 @@ def _linter(root: Path, roots: list[Path]):
     settings = settings_for([])
 
     def lint() -> set[tuple[str, str]]:
-        package = load_package(root, Context(settings.rosdistro,
-                                             workspace_near(root, workspace_index(roots))))
+        package = load_package(root, context_for(root, workspace_index(roots),
+                                                 settings.rosdistro))
         try:
             found = check_package(package, settings.rules, root_label=".",
                                   severities=settings.severities)

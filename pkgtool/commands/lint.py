@@ -18,7 +18,7 @@ from pkgtool.commands import ExitCode
 from pkgtool.commands.warm_worker import WarmWorker, chosen_jobs, cores, threads_running
 from pkgtool.config import ConfigError, ConfigFinder, Layer, Settings, check_rosdistro
 from pkgtool.findings import Finding, Severity
-from pkgtool.model.context import Context, WorkspacePackage, workspace_index, workspace_near
+from pkgtool.model.context import WorkspacePackage, context_for, workspace_index
 from pkgtool.records import record, replace
 from pkgtool.report import PackageLabel
 from pkgtool.workspace import discover, witnessed
@@ -222,7 +222,7 @@ def _model_and_findings(root: Path, *, label: str, settings: Settings, workspace
     from pkgtool.model.package import load_package
     from pkgtool.model.python_visitor import forget_trees
 
-    package = load_package(root, Context(settings.rosdistro, workspace_near(root, workspace)))
+    package = load_package(root, context_for(root, workspace, settings.rosdistro))
     try:
         found = check_package(package, settings.rules, root_label=label,
                               severities=settings.severities)

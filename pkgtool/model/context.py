@@ -49,10 +49,14 @@ class WorkspacePackage:
 
 @record
 class Context:
-    """The target ``distro`` and the workspace's packages by name (the linted one included)."""
+    """The target ``distro``, the workspace's packages by name (the linted one included) and
+    the other folders of the workspace holding a package of the linted one's name."""
 
     distro: str = DEFAULT_DISTRO
     workspace: Mapping[str, WorkspacePackage] = field(default_factory=dict)
+    twins: tuple[str, ...] = ()
+    """Other folders of the package's colcon workspace holding a package of its name
+    (:func:`same_named`)."""
 
     def provider(self, module: str) -> str | None:
         """The workspace package whose Python package ``module`` is, if any: one installing a
@@ -224,6 +228,26 @@ def workspace_near(root: Path, index: Mapping[Path, WorkspacePackage]
         found = [package for depth, package in depths if depth == deepest]
         near[name] = found[0] if all(p == found[0] for p in found) else WorkspacePackage(name)
     return near
+
+
+def context_for(root: Path, index: Mapping[Path, WorkspacePackage], distro: str) -> Context:
+    """The context of the package at ``root`` in a run whose workspace ``index`` it is in."""
+    return Context(distro, workspace_near(root, index), same_named(root, index))
+
+
+def same_named(root: Path, index: Mapping[Path, WorkspacePackage]) -> tuple[str, ...]:
+    """The other folders of the ``index`` that hold a package named as the one at ``root``
+    under the same colcon ``src`` folder, relative to the workspace (the folder above
+    ``src``): colcon refuses to build a workspace with two. Packages in no ``src`` folder
+    have none: folders of one repository (a book's chapters) are often built one at a time."""
+    own = index.get(root)
+    places = _names(index)[1].get(own.name, []) if own is not None else []
+    source = colcon_src(root) if places else None
+    if source is None:
+        return ()
+    return tuple(sorted(Path(os.path.relpath(folder, source.parent)).as_posix()
+                        for folder, _ in places
+                        if folder != root and colcon_src(folder) == source))
 
 
 @per_object(2)

@@ -88,6 +88,7 @@ RULES = {
     "MAN023": ("unresolvable-rosdep-key", "warning", True, "manifest.unresolvable_rosdep_key"),
     "MAN024": ("dependency-in-export", "error", True, "manifest.dependency_in_export"),
     "MAN025": ("schema-of-another-format", "warning", True, "manifest.schema_of_another_format"),
+    "MAN026": ("duplicate-package-name", "error", True, "manifest.duplicate_package_name"),
     "PYC001": ("undefined-name", "error", True, "python.undefined_name"),
     "PYC002": ("numpy-removed-alias", "error", True, "python.numpy_removed_alias"),
     "PYC003": ("unbound-in-finally", "error", True, "python.unbound_in_finally"),

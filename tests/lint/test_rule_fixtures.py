@@ -21,7 +21,7 @@ from pathlib import Path
 import pytest
 
 from pkgtool.findings import Finding
-from pkgtool.model.context import Context, workspace_index, workspace_near
+from pkgtool.model.context import Context, context_for, workspace_index
 from pkgtool.model.files import MAX_FILE_BYTES
 from pkgtool.model.package import load_package
 from pkgtool.workspace import discover, is_package
@@ -85,7 +85,7 @@ def _findings(case: Path, code: str) -> list[tuple[str, Finding]]:
     index = workspace_index(roots) if is_workspace else {}
     return [("" if root == case else root.relative_to(case).as_posix() + "/", finding)
             for root in roots for finding in
-            findings(load_package(root, Context(distro, workspace_near(root, index))), code)]
+            findings(load_package(root, context_for(root, index, distro)), code)]
 
 
 @pytest.mark.parametrize(("code", "case"), _cases("bad"), ids=lambda v: getattr(v, "name", v))

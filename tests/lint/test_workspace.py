@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from pkgtool.model.context import read_workspace_package
+from pkgtool.model.context import read_workspace_package, same_named, workspace_index
 from pkgtool.model.files import list_files
 from pkgtool.workspace import discover, owning_package
 from tests.helpers import write_tree
@@ -163,3 +163,19 @@ def test_a_depth_limited_listing_is_the_full_one_less_what_lies_deeper(tmp_path:
     depth = {"a": 2, "z": 0}.get
     assert list_files(tmp_path, depth) == ("a/two.txt", "top.txt")
     assert list_files(tmp_path) == ("a/b/c/one.txt", "a/two.txt", "top.txt", "z/x/y.txt")
+
+
+def test_packages_of_one_name_are_twins_only_under_one_colcon_src(tmp_path: Path) -> None:
+    named = "<package format='3'><name>lab</name></package>\n"
+    write_tree(tmp_path, {
+        "ws/src/lab/package.xml": named, "ws/src/old/lab_v1/package.xml": named,
+        "ws/src/ignored/COLCON_IGNORE": "", "ws/src/ignored/lab_v2/package.xml": named,
+        "other_ws/src/lab/package.xml": named,  # another workspace linted in the same run
+        "book/ch4/lab/package.xml": named, "book/ch5/lab/package.xml": named,  # no src
+    })
+    roots = [tmp_path / p for p in ("ws/src/lab", "other_ws/src/lab", "book/ch4/lab",
+                                    "book/ch5/lab")]
+    index = workspace_index(roots)
+    assert same_named(tmp_path / "ws/src/lab", index) == ("src/old/lab_v1",)
+    assert same_named(tmp_path / "other_ws/src/lab", index) == ()
+    assert same_named(tmp_path / "book/ch4/lab", index) == ()
