@@ -97,9 +97,15 @@ COMPOSABLE_ACTIONS = frozenset({"ComposableNode", "composable_node"})
 """The actions (Python classes, XML and YAML tags) of components loaded into a container."""
 
 
+COMMAND_PACKAGES = {"xacro": "xacro"}
+"""Executables a launch file runs through a command substitution (``Command(['xacro ',
+...])``, ``$(command 'xacro ...')``), by the package that installs each."""
+
+
 @record
 class PackageRef:
-    """A package named by get_package_share_directory, FindPackageShare or $(find-pkg-share).
+    """A package named by get_package_share_directory, FindPackageShare or $(find-pkg-share),
+    or whose executable a command substitution runs (:data:`COMMAND_PACKAGES`).
 
     ``optional`` as for :class:`NodeRef`; ``unused`` marks a substitution
     (``FindPackageShare``) inside an action that is never started (:class:`NodeRef`): it is

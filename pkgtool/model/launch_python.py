@@ -14,7 +14,7 @@ from collections.abc import Callable, Iterator
 from typing import Any
 
 from pkgtool.model.ast_nodes import child_nodes, descendants
-from pkgtool.model.launch import FileRef, NodeRef, PackageRef
+from pkgtool.model.launch import COMMAND_PACKAGES, FileRef, NodeRef, PackageRef
 from pkgtool.model.launch_remaps import not_pairs
 from pkgtool.model.launch_scopes import bindings, import_origins, scope_nodes, unread_calls
 from pkgtool.model.span import Span
@@ -305,6 +305,10 @@ class _Reader(ast.NodeVisitor):
                 remapped=tuple(self._remapped(_keyword(node, "remappings")))))
         elif name == "ExecuteProcess":
             self._ros2_run(node)
+        if name == "Command" and self._command_executable(node) in COMMAND_PACKAGES:
+            self.packages.append(PackageRef(
+                COMMAND_PACKAGES[str(self._command_executable(node))], self._span(node),
+                bool(self.optional), bool(self.dead)))
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
             found = self.value(node)
             if isinstance(found, Share):
@@ -312,6 +316,23 @@ class _Reader(ast.NodeVisitor):
                                                 bool(self.optional),
                                                 bool(self.dead) and name in SUBSTITUTIONS))
         self._record_path(node)
+
+    def _command_executable(self, node: ast.Call) -> str | None:
+        """The executable a ``Command`` substitution runs, when written out: the first word of
+        ``Command(['xacro ', path])``, ``Command('xacro ' + path)``, ``Command(f'xacro
+        {path}')`` or ``Command([FindExecutable(name='xacro'), ' ', path])``."""
+        first = node.args[0] if node.args else _keyword(node, "command")
+        if isinstance(first, (ast.List, ast.Tuple)):
+            first = first.elts[0] if first.elts else None
+        while isinstance(first, ast.BinOp):
+            first = first.left
+        if isinstance(first, ast.JoinedStr):
+            first = first.values[0] if first.values else None
+        if isinstance(first, ast.Call) and _name(first.func) == "FindExecutable":
+            first = _keyword(first, "name") or (first.args[0] if first.args else None)
+        found = self.value(first) if isinstance(first, ast.expr) else None
+        words = found.split() if isinstance(found, str) else []
+        return words[0] if words else None
 
     def _parameter_files(self, node: ast.expr | None) -> tuple[tuple[FileRef, ...], bool]:
         """The share files among a node's ``parameters=[...]``, and whether anything else

@@ -11,13 +11,14 @@ import math
 import re
 from collections.abc import Iterator
 
-from pkgtool.model.launch import FileRef, LaunchFile, NodeRef, PackageRef
+from pkgtool.model.launch import COMMAND_PACKAGES, FileRef, LaunchFile, NodeRef, PackageRef
 from pkgtool.model.launch_python import NAME_REMAPS, remapped_name
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.model.xml import XmlElement
 from pkgtool.records import replace
 
 _LOOKUP = re.compile(r"\$\(\s*find-pkg-(share|prefix)\s+([A-Za-z0-9_]+)\s*\)")
+_COMMAND = re.compile(r"""\$\(\s*command\s+['"]?\s*([\w.-]+)""")
 _SHARE_PATH = re.compile(r"^\$\(\s*find-pkg-share\s+([A-Za-z0-9_]+)\s*\)(/[^$]*)$")
 NODE_TAGS = {"node": ("exec", "executable"), "lifecycle_node": ("exec", "executable"),
              "node_container": ("exec", "executable"), "composable_node": ()}
@@ -74,6 +75,8 @@ def _substitutions(values: list[tuple[str, Span]]) -> tuple[tuple[PackageRef, ..
     files: list[FileRef] = []
     for value, span in values:
         packages.extend(PackageRef(m.group(2), span) for m in _LOOKUP.finditer(value))
+        packages.extend(PackageRef(COMMAND_PACKAGES[m.group(1)], span)
+                        for m in _COMMAND.finditer(value) if m.group(1) in COMMAND_PACKAGES)
         found = _share_file(value, span)
         if found:
             files.append(found)

@@ -18,9 +18,11 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
     ## What it does
     Collects the packages a launch file names statically: `Node(package=...)`,
     `get_package_share_directory(...)`, `FindPackageShare(...)`, `$(find-pkg-share ...)` in
-    XML and YAML launch files. Each one other than this package must be an
-    `<exec_depend>` or `<depend>` (a `<test_depend>` for launch files under `test/`), or be
-    brought in by a released metapackage declared so (`ros2_control` brings `controller_manager`;
+    XML and YAML launch files, and `xacro`'s package for a command substitution running it
+    (`Command(['xacro ', path])`, `$(command 'xacro ...')`). Each one other than this
+    package must be an `<exec_depend>` or `<depend>` (a `<test_depend>` for launch files
+    under `test/`), or be brought in by a released metapackage declared so (`ros2_control`
+    brings `controller_manager`;
     metapackages nest, but a regular package's own dependencies never count).
     Packages used only after the launch file checked that they are installed (`if 'nav2_bringup'
     in get_packages_with_prefixes():`, or in a `try` that catches `PackageNotFoundError`,
