@@ -16,7 +16,8 @@ from typing import Any
 from pkgtool.model.ast_nodes import child_nodes, descendants
 from pkgtool.model.launch import COMMAND_PACKAGES, FileRef, NodeRef, PackageRef
 from pkgtool.model.launch_remaps import not_pairs
-from pkgtool.model.launch_scopes import bindings, import_origins, scope_nodes, unread_calls
+from pkgtool.model.launch_scopes import (bindings, import_origins, read_only_by, scope_nodes,
+                                         unread_calls)
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import depends_on_ros_distro
 from pkgtool.records import record
@@ -125,7 +126,10 @@ class _Reader(ast.NodeVisitor):
         nodes = scope_nodes(node.body)
         self.scopes.append(bindings(nodes, node.args))
         self.cache.append({})
-        self.unread.update(unread_calls(node, nodes))
+        unread = unread_calls(node, nodes)
+        dead = {call for call in unread if self._action(call.func) in NODE_ACTIONS |
+                PLUGIN_ACTIONS or _name(call.func) == "ExecuteProcess"}
+        self.unread.update(unread, read_only_by(node, nodes, dead) if dead else ())
         for statement in node.body:
             self.visit(statement)
         self.scopes.pop()
@@ -465,6 +469,10 @@ class _Reader(ast.NodeVisitor):
             self.extended.add((found.package, found.parts))
 
     def _record_path(self, node: ast.expr) -> None:
+        """Record the share file ``node`` names, unless nothing ever uses the path: it is the
+        value of a local name never read, or inside a node action never started."""
+        if node in self.unread or self.dead:
+            return
         found = self.value(node)
         if isinstance(found, Share) and found.share and found.parts:
             self.files.append(FileRef(found.package, found.parts, self._span(_last_part(node))))

@@ -94,3 +94,25 @@ def import_origins(tree: ast.Module) -> dict[str, set[str]]:
                 origins.setdefault(alias.asname or alias.name, set()).add(
                     f"{node.module}.{alias.name}")
     return origins
+
+
+def read_only_by(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[ast.AST],
+                 dead: set[ast.Call]) -> set[ast.Call]:
+    """Calls that are the whole value of an assignment to a local name whose every read is
+    inside one of the ``dead`` calls (node actions never started), and so on for the names
+    those feed: the values never used. ``nodes`` are the :func:`scope_nodes` of its body."""
+    found: set[ast.Call] = set()
+    inside = {id(n) for call in dead for n in descendants(call)}
+    while True:
+        reads: dict[str, bool] = {}  # name -> every read is inside a dead call
+        for node in subtree(function):
+            if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Store):
+                reads[node.id] = reads.get(node.id, True) and id(node) in inside
+        more = {node.value for node in nodes
+                if simple_assignment(node) and isinstance(node.value, ast.Call)
+                and reads.get(node.targets[0].id)  # type: ignore[attr-defined]
+                and node.value not in found}
+        if not more:
+            return found
+        found |= more
+        inside |= {id(n) for call in more for n in descendants(call)}

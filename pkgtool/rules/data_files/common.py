@@ -103,14 +103,16 @@ def _share_reads(package: Package, shared: set[str]
             yield module.path, read_python_launch(module.path, tree)[2]
 
 
-_EXISTENCE = frozenset({"exists", "isfile", "is_file", "lexists"})
-"""``os.path.exists``, ``os.path.isfile``, ``Path.exists()``, ``Path.is_file()``..."""
+_EXISTENCE = frozenset({"exists", "isfile", "is_file", "isdir", "is_dir", "lexists",
+                        "makedirs", "mkdir"})
+"""``os.path.exists``, ``os.path.isfile``, ``Path.is_dir()``..., and ``os.makedirs``,
+``Path.mkdir()``: a module making folders may make the share path it names too."""
 
 
 def _checks_files(index: Index) -> bool:
-    """True when the module asks whether files exist: it handles a share file that may be
-    missing (a model it downloads when absent, a file the user adds), so none of its share
-    paths is certainly read."""
+    """True when the module asks whether files or folders exist, or makes folders: it handles
+    a share file that may be missing (a model it downloads when absent, a file the user adds,
+    a folder it creates), so none of its share paths is certainly read."""
     return any(isinstance(call.func, ast.Attribute) and call.func.attr in _EXISTENCE
                for call in index.calls)
 

@@ -31,8 +31,10 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     a file whose name a `.gitignore` of the package or of the folders above it lists (a
     calibration or a map the user makes, kept out of git on purpose). Paths that are glob patterns
     (`config/*.yaml`) count when installed files match them, and a module that asks whether
-    files exist (`os.path.exists`, `Path.exists()`: it handles a missing one, as a model it
-    downloads) is left alone.
+    files or folders exist (`os.path.exists`, `os.path.isdir`, `Path.exists()`: it handles a
+    missing one, as a model it downloads) or makes folders (`os.makedirs`) is left alone. A
+    path a launch file builds but never uses (the value of a local name never read, or read
+    only by nodes it never starts) is not read either.
 
     ## Why is this bad?
     Nothing can install a file the package does not have: `ros2 launch` fails on the missing
