@@ -27,9 +27,11 @@ def parameter_file_unknown_node(package: Package) -> Iterator[Hit]:
     `/robot1/talker`: `/robot1`) neither equals it (an absolute namespace) nor ends with it (a
     relative one, to which a launch file including this one may prepend more). Keys with
     wildcards match any namespace; other namespaces (pushed by `PushRosNamespace`, or by a
-    launch file including this one) are not compared. A namespaced block matching no node is
-    left when the file is passed to a node of another package: its process may make nodes
-    of its own there (Nav2's servers make `local_costmap/local_costmap`). Files are skipped when
+    launch file including this one) are not compared. A block matching no node is left when
+    the file is passed to a node of another package and the block is namespaced or named
+    after that node: its process may make nodes of its own (Nav2's servers make
+    `local_costmap/local_costmap`, its `bt_navigator` makes
+    `bt_navigator_navigate_to_pose_rclcpp_node`). Files are skipped when
     a node's name is not known that way, when a launch file gives some node parameters not
     read statically (a launch argument may name the file), or when the package's Python code
     mentions the file's name.
@@ -55,7 +57,7 @@ def parameter_file_unknown_node(package: Package) -> Iterator[Hit]:
     ```
     """
     for entry in file_entries(package):
-        if not entry.matched and entry.foreign and "/" in entry.key.strip("/"):
+        if not entry.matched and entry.foreign and _made_by_the_process(entry.key, entry.names):
             continue  # a node another package's process makes (Nav2's local_costmap/...)
         if not entry.matched:
             base = entry.key.rpartition("/")[2]
@@ -75,6 +77,14 @@ def parameter_file_unknown_node(package: Package) -> Iterator[Hit]:
                       f"the node's full name, so its parameters reach no node",
                       f"Write `{spaces[0].rstrip('/')}/{base}`" if len(spaces) == 1 and
                       spaces[0].startswith("/") else f"Write `/**/{base}` (any namespace)")
+
+
+def _made_by_the_process(key: str, names: tuple[str, ...] | list[str]) -> bool:
+    """True for a block naming a node the process of another package's node may make itself:
+    a namespaced one (Nav2's `local_costmap/local_costmap`), or one named after a node the
+    file is passed to (`bt_navigator_navigate_to_pose_rclcpp_node` for `bt_navigator`)."""
+    base = key.strip("/").rpartition("/")[2]
+    return "/" in key.strip("/") or any(base.startswith(f"{name}_") for name in names)
 
 
 def _absolute(namespace: str) -> str:
