@@ -117,6 +117,12 @@ def is_typo(word: str, other: str) -> bool:
     return typo_distance(word, other, budget) <= budget
 
 
+def digits_differ(first: str, second: str) -> bool:
+    """True when the names differ in a digit (``turtlebot3``, ``turtlebot4``; ``robot1/scan``,
+    ``robot2/scan``): numbered names are meant to differ, never a typo of each other."""
+    return sorted(c for c in first if c.isdigit()) != sorted(c for c in second if c.isdigit())
+
+
 def typo_of(word: str, choices: Iterable[str]) -> str | None:
     """The one of ``choices`` a typo away from ``word`` (:func:`is_typo`), or None when none
     or several are."""

@@ -5,6 +5,8 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.rosdistro import (close_names, digits_differ, is_released_package,
+                                         key_resolves)
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import ANY, declaration, declared, dependency_cause, launch_keys
 from pkgtool.rules.registry import rule
@@ -19,7 +21,9 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
     Collects the packages a launch file names statically: `Node(package=...)`,
     `get_package_share_directory(...)`, `FindPackageShare(...)`, `$(find-pkg-share ...)` in
     XML and YAML launch files, and `xacro`'s package for a command substitution running it
-    (`Command(['xacro ', path])`, `$(command 'xacro ...')`). Each one other than this
+    (`Command(['xacro ', path])`, `$(command 'xacro ...')`). A name that is no package of
+    the workspace or of the target's release is said so, with the package (of the workspace,
+    this one or the release) it is a typo of, if any. Each one other than this
     package must be an `<exec_depend>` or `<depend>` (a `<test_depend>` for launch files
     under `test/`), or be brought in by a released metapackage declared so (`ros2_control`
     brings `controller_manager`;
@@ -62,6 +66,24 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
             other = declared(package, ANY).get(name)
             missing = (f"declared only as {declaration(name, other)}" if other else
                        "not declared in package.xml")
-            yield Hit(span, f"`{name}` is used by a launch file but {missing}",
-                      f"Add `<exec_depend>{name}</exec_depend>` to package.xml",
+            fix = f"Add `<exec_depend>{name}</exec_depend>` to package.xml"
+            if not other and not _known(package, name):
+                meant = [close for close in close_names(
+                    name, package.context.distro, limit=3,
+                    extra=frozenset((*package.context.workspace, package.name)))
+                    if not digits_differ(name, close)]
+                missing += (f", and no package of the workspace or of "
+                            f"{package.context.distro}'s release has that name")
+                missing += f" (did you mean `{meant[0]}`?)" if meant else ""
+                fix = f"Write `{meant[0]}`" if meant else "Check the name; declare the " \
+                    "package if a workspace it is built in provides it"
+            yield Hit(span, f"`{name}` is used by a launch file but {missing}", fix,
                       cause="" if other else dependency_cause(name), consequence=True)
+
+
+def _known(package: Package, name: str) -> bool:
+    """True when ``name`` is a package of the workspace or a released one (or a rosdep key)
+    on the target distribution."""
+    distro = package.context.distro
+    return name in package.context.workspace or is_released_package(name, distro) or \
+        key_resolves(name, distro)

@@ -6,16 +6,10 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.rosdistro import typo_of
+from pkgtool.knowledge.rosdistro import digits_differ, typo_of
 from pkgtool.model.package import Package
 from pkgtool.rules.endpoints import Endpoint, endpoints, service_endpoints
 from pkgtool.rules.registry import rule
-
-
-def _digits_differ(first: str, second: str) -> bool:
-    """True when the names differ in a digit (``robot1/scan``, ``robot2/scan``): numbered
-    topics are meant to differ."""
-    return sorted(c for c in first if c.isdigit()) != sorted(c for c in second if c.isdigit())
 
 
 @rule("PYC044", "misspelled-topic", Severity.WARNING,
@@ -81,5 +75,5 @@ def _near_misses(found: tuple[Endpoint, ...], offering: str, using: str
             continue
         same_type = [t for t, types in offered.items() if types == {endpoint.type}]
         meant = typo_of(name, same_type)
-        if meant is not None and not _digits_differ(name, meant):
+        if meant is not None and not digits_differ(name, meant):
             yield endpoint, meant
