@@ -20,11 +20,16 @@ def import_declared_only_as_build_depend(package: Package) -> Iterator[Hit]:
     `<build_depend>`, `<build_export_depend>` or `<buildtool_depend>`, never in `<depend>` or
     `<exec_depend>`. A module that only a `pytest11` entry point names is a pytest plugin,
     test code that runs where pytest runs; its imports are checked as test imports (DEP003).
+    A key declared as `<buildtool_export_depend>` is right for code that runs while the
+    packages depending on this one build (a rosidl generator, a CMake extension's Python
+    helpers), and bloom installs it with the binary package: not reported.
 
     ## Why is this bad?
     Build dependencies are not installed with the binary package: an ament_python package
     imports its dependencies when it runs, not when it is built, so the import fails on
-    every machine that installed the package instead of building it.
+    every machine that installed the package instead of building it. A
+    `<build_export_depend>` is installed with it, but not by `rosdep install -t exec`, which
+    run-time images use: the import fails there.
 
     ## Example
     ```xml
@@ -36,7 +41,7 @@ def import_declared_only_as_build_depend(package: Package) -> Iterator[Hit]:
     <depend>python3-numpy</depend>
     ```
     """
-    build_only = declared(package, BUILD_ONLY)
+    build_only = declared(package, BUILD_ONLY - {"buildtool_export_depend"})
     for need in unmet_runtime_needs(package):
         key = next((k for k in need.keys if k in build_only), None)
         if key is None:
