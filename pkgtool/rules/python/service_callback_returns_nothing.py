@@ -1,5 +1,5 @@
-"""PYC026: a service, action execute or set-parameters callback that never returns its
-result."""
+"""PYC026: a service, action (execute, goal, cancel) or set-parameters callback that never
+returns its result."""
 
 from __future__ import annotations
 
@@ -33,6 +33,9 @@ class _Callback(NamedTuple):
     fix: str
     instead: str
     """How to fix a return of something else."""
+    rejects: bool = False
+    """rclpy takes anything but the accepting value as a rejection: a ``return False`` or
+    ``return None`` beside others rejects, as its author meant."""
 
 
 _RETURNED = {
@@ -46,6 +49,16 @@ _RETURNED = {
         "the client never gets the goal's result",
         "End the callback with `return result`, the action's `Result()`",
         "Return the action's `Result()`, its fields set"),
+    ("ActionServer()", "goal_callback"): _Callback(
+        "action goal callback", "a `GoalResponse`", "rclpy rejects every goal",
+        "rclpy rejects the goal (it accepts only `GoalResponse.ACCEPT`)",
+        "End the callback with `return GoalResponse.ACCEPT` (or `REJECT`)",
+        "Return `GoalResponse.ACCEPT` or `GoalResponse.REJECT`", rejects=True),
+    ("ActionServer()", "cancel_callback"): _Callback(
+        "action cancel callback", "a `CancelResponse`", "rclpy rejects every cancel request",
+        "rclpy rejects the cancel request (it accepts only `CancelResponse.ACCEPT`)",
+        "End the callback with `return CancelResponse.ACCEPT` (or `REJECT`)",
+        "Return `CancelResponse.ACCEPT` or `CancelResponse.REJECT`", rejects=True),
     ("add_on_set_parameters_callback()", "callback"): _Callback(
         "set-parameters callback", "a `SetParametersResult`",
         "rclpy rejects every parameter change ('Callback returned an invalid type')",
@@ -114,6 +127,12 @@ def _wrong_returns(function: Function, arguments: list[str], result: str | None,
             yield value, f"`{_shown(value)}`, {'an' if kind[0] in 'aeiou' else 'a'} {kind}"
 
 
+def _rejection(returned: ast.AST) -> bool:
+    """True for a bare ``return``, ``return None`` or ``return False``."""
+    value = returned.value if isinstance(returned, ast.Return) else returned
+    return value is None or isinstance(value, ast.Constant) and value.value in (None, False)
+
+
 def _shown(value: ast.expr) -> str:
     return shortened(ast.unparse(value))
 
@@ -150,11 +169,12 @@ def _falls_off_the_end(function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool
 @rule("PYC026", "service-callback-returns-nothing", Severity.ERROR,
       fix="End the callback with `return response`")
 def service_callback_returns_nothing(package: Package) -> Iterator[Hit]:
-    """A service, action execute or set-parameters callback never returns its result.
+    """A service, action or set-parameters callback never returns its result.
 
     ## What it does
-    Reports the callback given to `create_service`, the `execute_callback` of an rclpy
-    `ActionServer` and the callback given to `add_on_set_parameters_callback`, when it is a
+    Reports the callback given to `create_service`, the `execute_callback`, `goal_callback`
+    and `cancel_callback` of an rclpy `ActionServer` and the callback given to
+    `add_on_set_parameters_callback`, when it is a
     plain method of the registering class (`self.on_request`) or a plain function bound once
     in the module, and certainly returns `None`: no `return <value>` anywhere, no `yield`,
     not `async`, no decorator, not a placeholder body (only `pass`, `...`, a docstring or
@@ -169,7 +189,9 @@ def service_callback_returns_nothing(package: Package) -> Iterator[Hit]:
     than a service's response (`return request`, `return goal_handle`), a field of one of them
     or of another message (`return response.sum`, `return result.sequence`), or, from a
     service or action callback, an instance of a message (`plan = Path()`, `return plan`:
-    never a service response or action result). Generators are left alone.
+    never a service response or action result). Generators are left alone, and so are a bare
+    `return`, `return None` and `return False` in a goal or cancel callback: they reject, as
+    meant.
 
     ## Why is this bad?
     rclpy sends what the callback returns as the response: `None` makes
@@ -178,7 +200,10 @@ def service_callback_returns_nothing(package: Package) -> Iterator[Hit]:
     enough: it must be returned. An action server whose execute callback returns `None`
     never answers the client's result request (checked on Jazzy), and a set-parameters
     callback must return a `SetParametersResult`: with `None` or any other value (`True`),
-    rclpy rejects every change (`ros2 param set` fails). Returning the field a client reads
+    rclpy rejects every change (`ros2 param set` fails). A goal or cancel callback must
+    return `GoalResponse.ACCEPT` or `CancelResponse.ACCEPT` to accept: rclpy compares what it
+    returns with those members of a plain `Enum`, so `True` rejects every goal or cancel
+    request (checked on Jazzy). Returning the field a client reads
     (`response.sum`) instead of the response is the same mistake: `send_response` raises
     `TypeError` for anything but the service's response; an execute callback returning the
     result's sequence instead of the result raises `AttributeError` in the executor (both
@@ -217,6 +242,8 @@ def service_callback_returns_nothing(package: Package) -> Iterator[Hit]:
         messages = api != "add_on_set_parameters_callback()"  # SetParametersResult is one
         for returned_value, instead in _wrong_returns(function, arguments, result, messages,
                                                       package, tree, index):
+            if kind.rejects and _rejection(returned_value):
+                continue
             yield Hit(Span(path, returned_value.lineno, returned_value.col_offset + 1),
                       f"The {what} `{ast.unparse(value)}` returns {instead}, not {returned}: "
                       f"{kind.here}", kind.instead,
