@@ -61,7 +61,7 @@ MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages
           ("LCH005", "launch_node_through_alias"),
           ("LCH005", "invalid_names"),
           ("PYC016", "print_style_calls"), ("PYC016", "messages_and_numbers_logged"),
-          ("PYC016", "service_response_logged"),
+          ("PYC016", "service_response_logged"), ("PYC026", "lifecycle_callbacks"),
           ("MAN017", "catkin_create_pkg_license"),
           ("PYC001", "missing_import"), ("PYC001", "setup_and_launch_files"),
           ("PYC001", "undefined_names_in_tests"),

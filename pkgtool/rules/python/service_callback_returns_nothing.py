@@ -18,7 +18,7 @@ from pkgtool.rules.python._message_instances import Function, binding_counts, ca
 from pkgtool.rules.python._value_types import PARAMETER, PARAMETER_TEXT, certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import plainly_decorated, returns_none, scope_walk
-from pkgtool.rules.syntax_trees import Index
+from pkgtool.rules.syntax_trees import Index, installed_trees
 
 
 class _Callback(NamedTuple):
@@ -173,8 +173,9 @@ def service_callback_returns_nothing(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Reports the callback given to `create_service`, the `execute_callback`, `goal_callback`
-    and `cancel_callback` of an rclpy `ActionServer` and the callback given to
-    `add_on_set_parameters_callback`, when it is a
+    and `cancel_callback` of an rclpy `ActionServer`, the callback given to
+    `add_on_set_parameters_callback`, and the transition callbacks (`on_configure`,
+    `on_activate`, ...) of a class deriving from rclpy's `LifecycleNode`, when it is a
     plain method of the registering class (`self.on_request`) or a plain function bound once
     in the module, and certainly returns `None`: no `return <value>` anywhere, no `yield`,
     not `async`, no decorator, not a placeholder body (only `pass`, `...`, a docstring or
@@ -203,7 +204,10 @@ def service_callback_returns_nothing(package: Package) -> Iterator[Hit]:
     rclpy rejects every change (`ros2 param set` fails). A goal or cancel callback must
     return `GoalResponse.ACCEPT` or `CancelResponse.ACCEPT` to accept: rclpy compares what it
     returns with those members of a plain `Enum`, so `True` rejects every goal or cancel
-    request (checked on Jazzy). Returning the field a client reads
+    request (checked on Jazzy). A lifecycle node's transition callback must return a
+    `TransitionCallbackReturn`: rclpy calls `.to_label()` on what it returns, so `None` or
+    `True` raises `AttributeError` and the transition never completes. Returning the field a
+    client reads
     (`response.sum`) instead of the response is the same mistake: `send_response` raises
     `TypeError` for anything but the service's response; an execute callback returning the
     result's sequence instead of the result raises `AttributeError` in the executor (both
@@ -227,30 +231,74 @@ def service_callback_returns_nothing(package: Package) -> Iterator[Hit]:
         found = callback_function(value, tree, index) if kind else None
         if kind is None or found is None:
             continue
-        what, returned = kind.what, kind.returned
         function = found[0]
-        if returns_none(function):
-            yield Hit(Span(path, function.lineno, function.col_offset + 1),
-                      f"The {what} `{ast.unparse(value)}` never returns {returned}: {kind.never}",
-                      kind.fix, related=(Span(path, value.lineno, value.col_offset + 1),))
-            continue
         parameters = function.args.posonlyargs + function.args.args
         arguments = [a.arg for a in parameters[found[1]:]]
         position = _RESULT_ARGUMENT.get(api)
         result = arguments[position] if position is not None and position < len(arguments) \
             else None
         messages = api != "add_on_set_parameters_callback()"  # SetParametersResult is one
-        for returned_value, instead in _wrong_returns(function, arguments, result, messages,
-                                                      package, tree, index):
-            if kind.rejects and _rejection(returned_value):
+        yield from _callback_hits(path, function, f"`{ast.unparse(value)}`", kind,
+                                  (arguments, result, messages),
+                                  (Span(path, value.lineno, value.col_offset + 1),),
+                                  (package, tree, index))
+    for path, function, cls, tree, index in _lifecycle_callbacks(package):
+        arguments = [a.arg for a in (function.args.posonlyargs + function.args.args)[1:]]
+        yield from _callback_hits(path, function, f"`{cls.name}.{function.name}`", _LIFECYCLE,
+                                  (arguments, None, False), (), (package, tree, index))
+
+
+def _callback_hits(path: str, function: Function, shown: str, kind: _Callback,
+                   given: tuple[list[str], str | None, bool], related: tuple[Span, ...],
+                   where: tuple[Package, ast.Module, Index]) -> Iterator[Hit]:
+    """The hits of one callback ``function`` (``shown`` as written where it is registered):
+    it never returns its result, returns something else, or falls off its end. ``given``:
+    its arguments, the one that is its result (a service's response) and whether a message
+    instance is never its result."""
+    what, returned = kind.what, kind.returned
+    if returns_none(function):
+        yield Hit(Span(path, function.lineno, function.col_offset + 1),
+                  f"The {what} {shown} never returns {returned}: {kind.never}", kind.fix,
+                  related=related)
+        return
+    arguments, result, messages = given
+    for returned_value, instead in _wrong_returns(function, arguments, result, messages,
+                                                  *where):
+        if kind.rejects and _rejection(returned_value):
+            continue
+        yield Hit(Span(path, returned_value.lineno, returned_value.col_offset + 1),
+                  f"The {what} {shown} returns {instead}, not {returned}: {kind.here}",
+                  kind.instead, related=related)
+    if _falls_off_the_end(function):
+        end = function.body[-1]
+        yield Hit(Span(path, end.lineno, end.col_offset + 1),
+                  f"The {what} {shown} returns {returned} on some paths but ends here without "
+                  f"a `return`: when it gets here, {kind.here}", kind.fix, related=related)
+
+
+_LIFECYCLE = _Callback(
+    "lifecycle callback", "a `TransitionCallbackReturn`",
+    "rclpy's state change calls `.to_label()` on what it returns and raises AttributeError: "
+    "the transition never completes",
+    "rclpy's state change calls `.to_label()` on it and raises AttributeError",
+    "End the callback with `return TransitionCallbackReturn.SUCCESS`",
+    "Return `TransitionCallbackReturn.SUCCESS`, `FAILURE` or `ERROR`")
+_TRANSITIONS = frozenset({"on_configure", "on_cleanup", "on_shutdown", "on_activate",
+                          "on_deactivate", "on_error"})
+"""The transition callbacks a lifecycle node's class overrides."""
+_LIFECYCLE_NODES = frozenset({"rclpy.lifecycle.Node", "rclpy.lifecycle.LifecycleNode",
+                              "rclpy.lifecycle.node.LifecycleNode"})
+
+
+def _lifecycle_callbacks(package: Package
+                         ) -> Iterator[tuple[str, Function, ast.ClassDef, ast.Module, Index]]:
+    """The plain transition callbacks (``on_configure``...) of classes deriving from rclpy's
+    lifecycle node directly: path, method, class, tree and index."""
+    for module, tree, index in installed_trees(package):
+        for cls in index.classes:
+            if not any(index.qualified(base) in _LIFECYCLE_NODES for base in cls.bases):
                 continue
-            yield Hit(Span(path, returned_value.lineno, returned_value.col_offset + 1),
-                      f"The {what} `{ast.unparse(value)}` returns {instead}, not {returned}: "
-                      f"{kind.here}", kind.instead,
-                      related=(Span(path, value.lineno, value.col_offset + 1),))
-        if _falls_off_the_end(function):
-            end = function.body[-1]
-            yield Hit(Span(path, end.lineno, end.col_offset + 1),
-                      f"The {what} `{ast.unparse(value)}` returns {returned} on some paths but "
-                      f"ends here without a `return`: when it gets here, {kind.here}",
-                      kind.fix, related=(Span(path, value.lineno, value.col_offset + 1),))
+            for method in cls.body:
+                if isinstance(method, ast.FunctionDef) and method.name in _TRANSITIONS and \
+                        not method.decorator_list:
+                    yield module.path, method, cls, tree, index
