@@ -38,3 +38,9 @@ def attributes_of(cls: str) -> frozenset[str] | None:
 def classes() -> list[str]:
     """The classes the table holds, for tests."""
     return list(_table())
+
+
+PROPERTIES = {"rclpy.time.Time": frozenset({"nanoseconds", "clock_type"}),
+              "rclpy.duration.Duration": frozenset({"nanoseconds"})}
+"""Attributes of rclpy classes that are properties holding a value, never methods
+(``Duration.nanoseconds`` is an int): calling one raises TypeError."""

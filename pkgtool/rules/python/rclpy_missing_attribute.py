@@ -8,7 +8,7 @@ from collections.abc import Iterator
 from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity, shortened
-from pkgtool.knowledge.rclpy_classes import ENUMS, attributes_of
+from pkgtool.knowledge.rclpy_classes import ENUMS, PROPERTIES, attributes_of
 from pkgtool.knowledge.rclpy_missing import missing_attribute
 from pkgtool.knowledge.rclpy_names import close_name, defined_on, defines
 from pkgtool.knowledge.rclpy_node import GOAL_HANDLE_ATTRIBUTES
@@ -52,7 +52,8 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
     often rospy habits: `self.timer.start()`, `self.pub.get_num_connections()`,
     `self.get_clock().now().to_sec()`, `executor.spin_some()`, `stamp.sec` on an rclpy
     `Time`, `(now - start).to_sec()` on a `Duration`, `future.get_result()`, and enum
-    members that do not exist (`QoSReliabilityPolicy.RELIABLE_RELIABLE`). The object's class
+    members that do not exist (`QoSReliabilityPolicy.RELIABLE_RELIABLE`); and calls of a
+    property that holds a value (`(now - start).nanoseconds()`: an int). The object's class
     must be certain: what
     `self.create_publisher/subscription/timer/rate/client/service()` or `self.get_clock()`
     return in a class deriving from rclpy's `Node` alone (one that does not define the method
@@ -179,6 +180,14 @@ def _object_reads(package: Package) -> Iterator[Hit]:
                 continue
             cls = enum or object_class(node.value, package, tree, index)
             known = attributes_of(cls) if cls is not None else None
+            if cls is not None and node.attr in PROPERTIES.get(cls, ()) and \
+                    _called(node, index):
+                owner = _owner(node.value)
+                yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
+                          f"`{owner}.{node.attr}` is a property of rclpy's "
+                          f"`{cls.rsplit('.', 1)[-1]}` that holds a value, not a method: "
+                          "calling it raises TypeError", f"Write `{owner}.{node.attr}`")
+                continue
             if known is None or node.attr in known or guarded(node, index, probed) or \
                     index.in_unevaluated_annotation(node):
                 continue
@@ -186,12 +195,23 @@ def _object_reads(package: Package) -> Iterator[Hit]:
             use = missing_attribute(cls, node.attr) if cls else None
             close = get_close_matches(node.attr, sorted(a for a in known if a[0] != "_"), n=1)
             kind = "the enum" if enum else "an rclpy"
-            owner = shown if isinstance(node.value, (ast.Name, ast.Attribute, ast.Call)) \
-                else f"({shown})"
+            owner = _owner(node.value)
             fix = f"Use {use}" if use else f"Use `{owner}.{close[0]}`" if close else None
             yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
                       f"`{shown}` is {kind} `{cls.rsplit('.', 1)[-1]}`, which has no "
                       f"`{node.attr}`: AttributeError", fix)
+
+
+def _owner(value: ast.expr) -> str:
+    """``value`` as written before ``.attribute``: in parentheses when it needs them."""
+    shown = shortened(ast.unparse(value))
+    return shown if isinstance(value, (ast.Name, ast.Attribute, ast.Call)) else f"({shown})"
+
+
+def _called(node: ast.Attribute, index: Index) -> bool:
+    """True when ``node`` is the function a call calls (``d.nanoseconds()``)."""
+    parent = index.parents.get(id(node))
+    return isinstance(parent, ast.Call) and parent.func is node
 
 
 def _missing_import(imported: Import, distro: str) -> Iterator[Hit]:
