@@ -162,6 +162,7 @@ RULES = {
                "python.parametrize_unknown_argument"),
     "PYC067": ("service-type-mismatch", "error", True, "python.service_type_mismatch"),
     "PYC068": ("misspelled-main-guard", "warning", True, "python.misspelled_main_guard"),
+    "PYC069": ("tf2-argument-misuse", "error", True, "python.tf2_argument_misuse"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),
