@@ -3,6 +3,7 @@ names, misspelled, inside ``<export>``), SPDX, the build type."""
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 
 from pkgtool.edit.core import Edit, EditError, Fix
@@ -11,7 +12,6 @@ from pkgtool.edit.xml_scan import Element, insert_after
 from pkgtool.findings import Finding
 from pkgtool.fix.common import child_at, line_of, manifest_doc, offer
 from pkgtool.fix.registry import Refusal, fixer
-from pkgtool.knowledge.rosdep import suggested_key
 from pkgtool.knowledge.rosdistro import close_names
 from pkgtool.model.package import Package
 from pkgtool.records import replace
@@ -75,18 +75,24 @@ def spdx(package: Package, findings: list[Finding]) -> Iterator[Fix]:
             yield Fix(f"Write `{identifier}`", (doc.replace_text(element, identifier),))
 
 
+_WRITE_KEY = re.compile(r"Write `<\w+>([\w.+-]+)</\w+>`")
+"""The fix MAN018 states when it knows the one key to write."""
+
+
 @fixer("MAN018", "Write the rosdep key instead of the pip or import name")
 def rosdep_key(package: Package, findings: list[Finding]) -> Iterator[Fix]:
-    """Rename the key rosdep data names (``numpy`` -> ``python3-numpy``); when that tag already
-    declares the right key, drop the wrong one. Build types and ROS 1 packages stay manual."""
+    """Rename the key to the one the finding names (``numpy`` -> ``python3-numpy``,
+    ``opencv`` -> ``libopencv-dev`` in a CMake package); when that tag already declares the
+    right key, drop the wrong one. Build types, ROS 1 packages and keys the finding leaves to
+    the user (a Python key's name in a CMake package) stay manual."""
     doc = manifest_doc(package)
     if doc is None:
         return
     for finding in findings:
         element = child_at(doc, finding.span.line)
-        key = suggested_key(doc.text_of(element)) if element is not None else None
-        if element is not None and key is not None:
-            yield _rename(doc, element, key)
+        written = _WRITE_KEY.fullmatch(finding.fix or "")
+        if element is not None and written is not None:
+            yield _rename(doc, element, written.group(1))
 
 
 @fixer("MAN021", "Write the one known name the misspelled dependency is close to",

@@ -25,7 +25,11 @@ _STDLIB = frozenset({
 """Pure-Python standard library modules students declare; none is a rosdep key or ROS package."""
 
 
-def _hit(element: XmlElement, ros2: bool) -> Hit | None:
+_CPP_KEYS = {"opencv": "libopencv-dev", "opencv2": "libopencv-dev", "OpenCV": "libopencv-dev"}
+"""The C++ library key for a name whose Python key MAN018 suggests elsewhere."""
+
+
+def _hit(element: XmlElement, ros2: bool, compiled: bool) -> Hit | None:
     key, tag = token(element.text), element.tag
     if key in NOT_PACKAGES:
         return Hit(element.span, f"`{key}` is a build type, not a package",
@@ -40,6 +44,12 @@ def _hit(element: XmlElement, ros2: bool) -> Hit | None:
     replacement = suggested_key(key)
     if replacement is None:
         return None
+    if compiled and replacement.startswith("python3-"):  # C++ code may want the library
+        replacement = _CPP_KEYS.get(key, "")
+        if not replacement:
+            return Hit(element.span, f"`{key}` is not a rosdep key",
+                       f"Write the rosdep key of what the package uses: `{suggested_key(key)}` "
+                       "for Python code, the library's `lib...-dev` key for C++")
     if key.startswith("python-"):
         what = "a ROS 1 (Python 2) key that rosdep cannot resolve on ROS 2's Ubuntu releases"
     else:
@@ -58,7 +68,9 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
     pip distribution names (``opencv-python``, ``pyyaml``, ``numpy``), import names (``cv2``),
     ROS 1 Python 2 keys (``python-opencv``), ROS 1 packages (``rospy``, ``catkin``) in a package
     whose build type is ``ament_*``, ``ament_python``, which is a build type, and
-    standard library modules (``math``, ``threading``), which need no dependency.
+    standard library modules (``math``, ``threading``), which need no dependency. In a CMake
+    package (``ament_cmake``, ``catkin``, ``cmake``), whose C++ code wants libraries, the key
+    offered for ``opencv`` is ``libopencv-dev``, and none where only a Python key is known.
     A tag whose REP 149 ``condition`` is false for the target ROS 2 distribution (or not
     understood) is not used there and not checked, as packages for both ROS versions have:
     ``<exec_depend condition="$ROS_PYTHON_VERSION == 2">python-numpy</exec_depend>``.
@@ -83,9 +95,11 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
     found = tree(package)
     if found is None:
         return
-    ros2 = any(b.text.startswith("ament_") for b in build_types(found))
+    types = [b.text for b in build_types(found)]
+    ros2 = any(t.startswith("ament_") for t in types)
+    compiled = bool(types) and "ament_python" not in types  # CMake: C++ code, libraries
     for element in found.elements():
-        hit = _hit(element, ros2) if element.tag in _CHECKED and \
+        hit = _hit(element, ros2, compiled) if element.tag in _CHECKED and \
             applies(element.attribute("condition"), package.context.distro) else None
         if hit:
             yield hit
