@@ -19,6 +19,7 @@ from pkgtool.fix.common import python_nodes, renames
 from pkgtool.fix.registry import fixer
 from pkgtool.model.package import Package, is_test_material
 from pkgtool.rules.python.field_value_type import TO_MSG, float_fix
+from pkgtool.rules.python._loggers import logged_message
 from pkgtool.rules.python.invalid_logger_call import ATTRIBUTES, meant_level
 from pkgtool.rules.python.path_without_separator import joins
 from pkgtool.rules.syntax_trees import index_of
@@ -81,21 +82,38 @@ def callback_called(package: Package, findings: list[Finding]) -> Iterator[Fix]:
                       (Edit(doc.source.path, doc.end(call.func), doc.end(call), ""),))
 
 
-@fixer("PYC016", "Call the logging method the misspelt one is close to")
+@fixer("PYC016", "Call the logging method the misspelt one is close to; log a value that is "
+                 "no string as `str(value)`")
 def logger_method(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Rename a method rclpy's logger does not have when exactly one of its logging methods
-    is spelled like it (``err`` becomes ``error``; ``warn`` and ``warning`` count as one).
-    Safe: the call raised AttributeError. Calls with several arguments, or methods close to
-    none or to several, are left to the user."""
-    for doc, _, nodes in python_nodes(package, findings):
+    is spelled like it (``err`` becomes ``error``; ``warn`` and ``warning`` count as one), and
+    wrap a message that is certainly no string (a number, a message, a caught exception) in
+    ``str()``. Safe: the call raised AttributeError or TypeError; ``str()`` logs the value's
+    text. Calls with several arguments, or methods close to none or to several, are left to
+    the user."""
+    for doc, finding, nodes in python_nodes(package, findings):
         call = next((n for n in nodes if isinstance(n, ast.Call)), None)
         func = call.func if call is not None else None
-        if not isinstance(func, ast.Attribute) or func.attr in ATTRIBUTES:
+        if not isinstance(func, ast.Attribute):
+            continue
+        if _NOT_TEXT.search(finding.message):
+            assert call is not None
+            message = logged_message(call)
+            if message is not None and not isinstance(message, ast.Starred):
+                yield Fix(f"Log `str({ast.unparse(message)})`",
+                          (_insert(doc, doc.start(message), "str("),
+                           _insert(doc, doc.end(message), ")")))
+            continue
+        if func.attr in ATTRIBUTES:
             continue
         meant, end = meant_level(func.attr), doc.end(func)
         if meant and doc.text[end - len(func.attr):end] == func.attr:
             yield Fix(f"Call `{meant}` instead of `{func.attr}`",
                       (Edit(doc.source.path, end - len(func.attr), end, meant),))
+
+
+_NOT_TEXT = re.compile(r"(is given .*, not a string|takes a string): rclpy raises `TypeError`")
+"""PYC016's message for a logging call given a value that is certainly no string."""
 
 
 @fixer("PYC025", "Give a float field a float; convert rclpy's Time to a message")
