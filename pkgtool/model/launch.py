@@ -161,8 +161,7 @@ def is_launch_file(path: str, python_folders: frozenset[str] = frozenset(),
     ``nested`` folder (:func:`nested_packages`): they are that package's.
     """
     folder, _, name = path.rpartition("/")
-    if not name.endswith(LAUNCH_SUFFIXES) or is_template(path) or \
-            nested and any(path.startswith(f"{other}/") for other in nested):
+    if not name.endswith(LAUNCH_SUFFIXES) or is_template(path) or below(path, nested):
         return False
     parts = folder.split("/") if folder else []
     if "launch" in parts:
@@ -177,6 +176,11 @@ def is_launch_test(path: str, text: str | None) -> bool:
     launch`` cannot run it; ``launch_test`` or pytest does)."""
     return path.endswith(".py") and text is not None and \
         "def generate_test_description" in text and "def generate_launch_description" not in text
+
+
+def below(path: str, folders: frozenset[str]) -> bool:
+    """True when ``path`` is inside one of ``folders`` (:func:`nested_packages`)."""
+    return any(path.startswith(f"{folder}/") for folder in folders)
 
 
 def nested_packages(files: tuple[str, ...] | list[str]) -> frozenset[str]:

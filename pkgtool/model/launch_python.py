@@ -309,10 +309,10 @@ class _Reader(ast.NodeVisitor):
                 remapped=tuple(self._remapped(_keyword(node, "remappings")))))
         elif name == "ExecuteProcess":
             self._ros2_run(node)
-        if name == "Command" and self._command_executable(node) in COMMAND_PACKAGES:
-            self.packages.append(PackageRef(
-                COMMAND_PACKAGES[str(self._command_executable(node))], self._span(node),
-                bool(self.optional), bool(self.dead)))
+        runs = self._command_executable(node) if name == "Command" else None
+        if runs in COMMAND_PACKAGES:
+            self.packages.append(PackageRef(COMMAND_PACKAGES[runs], self._span(node),
+                                            bool(self.optional), bool(self.dead)))
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
             found = self.value(node)
             if isinstance(found, Share):

@@ -9,8 +9,8 @@ from pathlib import Path
 from pkgtool.model.cmake_interfaces import with_included
 from pkgtool.model.context import Context
 from pkgtool.model.files import TextFile, list_files, read_text
-from pkgtool.model.launch import (LaunchFile, is_launch_file, is_launch_test, is_template,
-                                  nested_packages, parse_launch, python_folders)
+from pkgtool.model.launch import (LaunchFile, below, is_launch_file, is_launch_test,
+                                  is_template, nested_packages, parse_launch, python_folders)
 from pkgtool.model.launch_reader import yaml_problem
 from pkgtool.model.manifest import Manifest, parse_manifest
 from pkgtool.model.modules import PythonModule, parse_module
@@ -207,7 +207,7 @@ def _launch_by_content(relpath: str, text_of: Callable[[str], str | None],
     for this, so URDF, RViz and parameter files elsewhere cost nothing.
     """
     if "launch" not in relpath.split("/")[:-1] or not relpath.endswith((".xml", ".yaml", ".yml")) \
-            or is_template(relpath) or any(relpath.startswith(f"{n}/") for n in nested):
+            or is_template(relpath) or below(relpath, nested):
         return False
     text = text_of(relpath)
     if text is None:
