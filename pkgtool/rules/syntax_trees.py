@@ -206,9 +206,15 @@ def installed_tree_of(package: Package) -> dict[int, ast.Module]:
 def base_names(package: Package) -> frozenset[str]:
     """The names the classes of the installed modules derive from (``Base`` of ``class
     A(Base)``, ``Node`` of ``class A(rclpy.node.Node)``)."""
-    return frozenset(base.id if isinstance(base, ast.Name) else base.attr
-                     for _, _, index in installed_trees(package) for cls in index.classes
-                     for base in cls.bases if isinstance(base, (ast.Name, ast.Attribute)))
+    return frozenset(name for _, _, index in installed_trees(package) for cls in index.classes
+                     for base in cls.bases if (name := base_name(base)) is not None)
+
+
+def base_name(base: ast.expr) -> str | None:
+    """The name a base class is written with (``Base``, ``Node`` of ``rclpy.node.Node``), or
+    None for any other expression."""
+    return base.id if isinstance(base, ast.Name) else \
+        base.attr if isinstance(base, ast.Attribute) else None
 
 
 def python_files(package: Package, containing: tuple[str, ...] = ()

@@ -81,11 +81,20 @@ def _stores_by_attribute(cls: ast.ClassDef, index: Index) -> dict[str, list[ast.
     found: dict[str, list[ast.Attribute]] = {}
     for node in subtree(cls):
         if isinstance(node, ast.Attribute) and not isinstance(node.ctx, ast.Load) and \
-                isinstance(node.value, ast.Name):
-            method = index.enclosing_function(node, through_lambdas=False)
-            if index.parents.get(id(method)) is cls and method_receiver(method) == node.value.id:
-                found.setdefault(node.attr, []).append(node)
+                receiver_store(node, index) is cls:
+            found.setdefault(node.attr, []).append(node)
     return found
+
+
+def receiver_store(node: ast.Attribute, index: Index) -> ast.ClassDef | None:
+    """The class whose plain method ``node`` (``self.x``) is taken on the receiver of, or
+    None (a store on anything else: ``node.x``, ``self.x`` in a nested function)."""
+    if not isinstance(node.value, ast.Name):
+        return None
+    method = index.enclosing_function(node, through_lambdas=False)
+    cls = index.parents.get(id(method))
+    return cls if isinstance(cls, ast.ClassDef) and \
+        method_receiver(method) == node.value.id else None
 
 
 def _attribute(value: ast.Attribute, package: Package, index: Index) -> Assigned | None:

@@ -10,7 +10,7 @@ from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.rules.python._message_instances import method_receiver
-from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, base_name, installed_trees
 
 LEVELS = frozenset({"debug", "info", "warning", "warn", "error", "fatal"})
 """The methods of rclpy's logger taking ``(message, **options)``."""
@@ -50,8 +50,7 @@ def own_logger_classes(package: Package) -> frozenset[str]:
     grew = bool(own)
     while grew:
         more = {cls.name for cls in classes if cls.name not in own and any(
-            (b.id if isinstance(b, ast.Name) else b.attr if isinstance(b, ast.Attribute)
-             else None) in own for b in cls.bases)}
+            base_name(b) in own for b in cls.bases)}
         own |= more
         grew = bool(more)
     return frozenset(own)

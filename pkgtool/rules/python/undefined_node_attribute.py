@@ -15,7 +15,7 @@ from pkgtool.records import record
 from pkgtool.rules.node_api import derives_from_node_alone
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.python._assignments import (annotated_name, assigned_values, is_none,
-                                               parameter_annotation)
+                                               parameter_annotation, receiver_store)
 from pkgtool.rules.python._message_instances import (attributes_taken, known_messages,
                                                      method_receiver)
 from pkgtool.rules.python._messages import message_instances
@@ -92,10 +92,8 @@ def _package_facts(package: Package) -> tuple[_Stores, frozenset[str]]:
             fields = _message_fields(package, tree, index) if fields is None else fields
             if _on_message(node, fields):
                 continue
-            method = index.enclosing_function(node, through_lambdas=False)
-            cls = index.parents.get(id(method))
-            if isinstance(cls, ast.ClassDef) and isinstance(node.value, ast.Name) and \
-                    method_receiver(method) == node.value.id:
+            cls = receiver_store(node, index)
+            if cls is not None:
                 stores.by_class.setdefault(id(cls), set()).add(node.attr)
             else:
                 stores.anywhere.add(node.attr)
