@@ -31,10 +31,10 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     `python3-google-auth`, `google.cloud.storage` by its own key, `google.protobuf` by
     `python3-protobuf`. One finding stands for each missing declaration: modules whose
     suggested key is the same (`matplotlib` and `mpl_toolkits`, both `python3-matplotlib`) are
-    reported together at
-    the first import, their other imports listed. A module the package declares under a key
-    rosdep does not know but written for it (`python3-torch-pip-shim` for `torch`, a key of a
-    private rosdep source) is MAN022's: one mistake, one finding. Modules that only a
+    reported together at the first import, their other imports listed. A module the package
+    declares under a key rosdep does not know but written for it (`python3-torch-pip-shim`
+    for `torch`, a key of a private rosdep source) is MAN022's: one mistake, one finding.
+    Modules that only a
     `pytest11` entry point names are pytest plugins, checked as test code (DEP003). Without a
     setup.py at the root (ament_cmake) the modules inside Python package folders count as
     installed, only those under what CMakeLists.txt installs when its `install()`,

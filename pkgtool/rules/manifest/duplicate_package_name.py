@@ -42,7 +42,7 @@ def duplicate_package_name(package: Package) -> Iterator[Hit]:
     """
     twins = package.context.twins
     found = tree(package) if twins else None
-    element = next(iter(found.named("name")), None) if found is not None else None
+    element = next(found.named("name"), None) if found is not None else None
     if element is None:
         return
     others = ", ".join(f"`{twin}`" for twin in twins)

@@ -41,15 +41,15 @@ def _hit(element: XmlElement, ros2: bool, compiled: bool) -> Hit | None:
     if key in ROS1_PACKAGES and ros2:
         return Hit(element.span, f"`{key}` is a ROS 1 package that ROS 2 does not have",
                    f"Replace it with {ROS1_PACKAGES[key]}")
-    replacement = suggested_key(key)
-    if replacement is None:
+    python = suggested_key(key)
+    if python is None:
         return None
-    if compiled and replacement.startswith("python3-"):  # C++ code may want the library
-        replacement = _CPP_KEYS.get(key, "")
-        if not replacement:
-            return Hit(element.span, f"`{key}` is not a rosdep key",
-                       f"Write the rosdep key of what the package uses: `{suggested_key(key)}` "
-                       "for Python code, the library's `lib...-dev` key for C++")
+    replacement = _CPP_KEYS.get(key, "") if compiled and python.startswith("python3-") \
+        else python  # C++ code may want the library
+    if not replacement:
+        return Hit(element.span, f"`{key}` is not a rosdep key",
+                   f"Write the rosdep key of what the package uses: `{python}` for Python "
+                   "code, the library's `lib...-dev` key for C++")
     if key.startswith("python-"):
         what = "a ROS 1 (Python 2) key that rosdep cannot resolve on ROS 2's Ubuntu releases"
     else:
@@ -68,9 +68,10 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
     pip distribution names (``opencv-python``, ``pyyaml``, ``numpy``), import names (``cv2``),
     ROS 1 Python 2 keys (``python-opencv``), ROS 1 packages (``rospy``, ``catkin``) in a package
     whose build type is ``ament_*``, ``ament_python``, which is a build type, and
-    standard library modules (``math``, ``threading``), which need no dependency. In a CMake
-    package (``ament_cmake``, ``catkin``, ``cmake``), whose C++ code wants libraries, the key
-    offered for ``opencv`` is ``libopencv-dev``, and none where only a Python key is known.
+    standard library modules (``math``, ``threading``), which need no dependency. In a package
+    whose ``<build_type>`` is another than ``ament_python`` (``ament_cmake``, ``cmake``), whose
+    C++ code wants libraries, the key offered for ``opencv`` is ``libopencv-dev``, and none
+    where only a Python key is known.
     A tag whose REP 149 ``condition`` is false for the target ROS 2 distribution (or not
     understood) is not used there and not checked, as packages for both ROS versions have:
     ``<exec_depend condition="$ROS_PYTHON_VERSION == 2">python-numpy</exec_depend>``.

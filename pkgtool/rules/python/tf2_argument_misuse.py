@@ -28,11 +28,8 @@ _LISTENERS = frozenset({"tf2_ros.TransformListener",
 
 def _number(value: ast.expr | None, package: Package, tree: ast.Module, index: Index) -> bool:
     """True for a value that certainly is a plain number (``1.0``, a name bound only to one)."""
-    if value is None:
-        return False
-    if isinstance(value, ast.Constant):
-        return isinstance(value.value, (int, float)) and not isinstance(value.value, bool)
-    return certain_type(value, package, tree, index) in NUMBER_TYPES - {"bool"}
+    return value is not None and \
+        certain_type(value, package, tree, index) in NUMBER_TYPES - {"bool"}
 
 
 def _node_first(call: ast.Call, index: Index) -> bool:
