@@ -64,9 +64,57 @@ def _unbound_uses(index: Index, node: ast.Try) -> Iterator[tuple[ast.Name, str, 
     for name, count in bound_names(node.body).items():
         if count != everywhere.get(name) or not _fails_before(node.body, name):
             continue
-        use = next((u for body in places for u in _uses(body, name)), None)
+        use = next((u for body in places for u in _uses(body, name)
+                    if not _guarded_by_earlier(u, name, node, index, everywhere)), None)
         if use is not None:
             yield use, name, next(s.lineno for s in node.body if name in bound_names(s))
+
+
+def _guarded_by_earlier(use: ast.Name, name: str, node: ast.Try, index: Index,
+                        everywhere: dict[str, int]) -> bool:
+    """True when ``use`` runs only under ``if guard:`` (or ``if guard is not None:``) for a
+    name ``guard`` that is ``None`` before the ``try`` and bound once in its body, with only
+    statements that cannot raise from there to the binding of ``name`` (``executor = X()``,
+    then ``pending = None``): when the guard holds, ``name`` is bound."""
+    bound_at = next(i for i, s in enumerate(node.body) if name in bound_names(s))
+    child, parent = use, index.parents.get(id(use))
+    while parent is not None and parent is not node:
+        if isinstance(parent, ast.If) and any(child is s for s in parent.body):
+            for guard in _tested_names(parent.test):
+                at = [i for i, s in enumerate(node.body) if guard in bound_names(s)]
+                if len(at) == 1 and at[0] < bound_at and everywhere.get(guard) == 2 and \
+                        bound_names(node.body)[guard] == 1 and \
+                        _none_before(guard, node, index) and \
+                        all(_harmless(s) for s in node.body[at[0] + 1:bound_at + 1]):
+                    return True
+        child, parent = parent, index.parents.get(id(parent))
+    return False
+
+
+def _tested_names(test: ast.expr) -> Iterator[str]:
+    """The names a test requires to be truthy or not None (``a``, ``a is not None``, and the
+    parts of an ``and``)."""
+    if isinstance(test, ast.BoolOp) and isinstance(test.op, ast.And):
+        for value in test.values:
+            yield from _tested_names(value)
+    elif isinstance(test, ast.Name):
+        yield test.id
+    elif isinstance(test, ast.Compare) and isinstance(test.left, ast.Name) and \
+            len(test.ops) == 1 and isinstance(test.ops[0], ast.IsNot) and \
+            isinstance(test.comparators[0], ast.Constant) and test.comparators[0].value is None:
+        yield test.left.id
+
+
+def _none_before(guard: str, node: ast.Try, index: Index) -> bool:
+    """True when a statement before ``node`` in its block is ``guard = None``."""
+    parent = index.parents.get(id(node))
+    for block in (getattr(parent, field, None) for field in ("body", "orelse", "finalbody")):
+        if isinstance(block, list) and any(s is node for s in block):
+            return any(isinstance(s, ast.Assign) and len(s.targets) == 1 and
+                       isinstance(s.targets[0], ast.Name) and s.targets[0].id == guard and
+                       isinstance(s.value, ast.Constant) and s.value.value is None
+                       for s in block[:[id(b) for b in block].index(id(node))])
+    return False
 
 
 def _in_loop(index: Index, node: ast.AST, function: ast.AST) -> bool:
@@ -102,7 +150,9 @@ def unbound_in_finally(package: Package) -> Iterator[Hit]:
     `except Exception:` block of a local name whose only assignments are in the `try` body,
     after a statement that can raise. `try` blocks inside loops, and uses guarded by
     `locals()` or a `try/except NameError` (or in the `else:` of one whose body reads the
-    bare name), are not reported.
+    bare name), are not reported; nor a use under `if guard:` where `guard = None`
+    before the `try` and the `try` binds `guard` earlier, with nothing that can raise from
+    there to the name's binding (`executor = Pool()` then `pending = None`).
 
     ## Why is this bad?
     When the assignment fails (the node's constructor raises, Ctrl-C arrives first), the
