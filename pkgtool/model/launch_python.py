@@ -16,7 +16,8 @@ from typing import Any
 from pkgtool.model.ast_nodes import child_nodes, descendants
 from pkgtool.model.launch import COMMAND_PACKAGES, FileRef, NodeRef, PackageRef
 from pkgtool.model.launch_remaps import not_pairs
-from pkgtool.model.launch_scopes import (bindings, import_origins, read_only_by, scope_nodes,
+from pkgtool.model.launch_scopes import (bindings, import_origins, overwritten_calls,
+                                         read_only_by, scope_nodes, unread_attribute_calls,
                                          unread_calls)
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import depends_on_ros_distro
@@ -93,7 +94,7 @@ class _Reader(ast.NodeVisitor):
         self.origins = import_origins(tree)
         self.optional = 0  # > 0 inside a block that runs only if some package is installed
         self.distro_branches = 0  # > 0 inside a branch of a test on the ROS distribution
-        self.unread: set[ast.Call] = set()  # calls assigned to local names never read
+        self.unread = unread_attribute_calls(tree)  # calls whose value is never read
         self.dead = 0  # > 0 inside a node action that is never started
 
     def _span(self, node: ast.AST) -> Span:
@@ -126,7 +127,7 @@ class _Reader(ast.NodeVisitor):
         nodes = scope_nodes(node.body)
         self.scopes.append(bindings(nodes, node.args))
         self.cache.append({})
-        unread = unread_calls(node, nodes)
+        unread = unread_calls(node, nodes) | overwritten_calls(node, nodes)
         dead = {call for call in unread if self._action(call.func) in NODE_ACTIONS |
                 PLUGIN_ACTIONS or _name(call.func) == "ExecuteProcess"}
         self.unread.update(unread, read_only_by(node, nodes, dead) if dead else ())

@@ -81,6 +81,86 @@ def unread_calls(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[a
             and not any(isinstance(n, ast.NamedExpr) for n in descendants(node.value))}
 
 
+def overwritten_calls(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[ast.AST]
+                      ) -> set[ast.Call]:
+    """Calls that are the whole value of an assignment to a local name which the next
+    statement of the same block naming it binds again without reading it (``path =
+    join(...)`` then ``path = '/opt/x'``): values never used. Names a nested function reads,
+    and functions that may read their own scope (``locals()``...), are left out. ``nodes``
+    are the :func:`scope_nodes` of its body."""
+    held: set[str] = set()  # read by a nested scope, or declared global or nonlocal
+    for node in nodes:
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef)):
+            held.update(n.id for n in subtree(node) if isinstance(n, ast.Name))
+        elif isinstance(node, (ast.Global, ast.Nonlocal)):
+            held.update(node.names)
+        elif isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and \
+                node.func.id in SCOPE_READERS:
+            return set()
+    named: dict[int, set[str]] = {}
+
+    def names(statement: ast.AST) -> set[str]:
+        if id(statement) not in named:
+            named[id(statement)] = {n.id for n in descendants(statement)
+                                    if isinstance(n, ast.Name)}
+        return named[id(statement)]
+
+    found: set[ast.Call] = set()
+    for block in _blocks(function, nodes):
+        for at, statement in enumerate(block):
+            if not simple_assignment(statement) or not isinstance(statement.value, ast.Call) \
+                    or statement.targets[0].id in held:  # type: ignore[attr-defined]
+                continue
+            name = statement.targets[0].id  # type: ignore[attr-defined]
+            later = next((s for s in block[at + 1:] if name in names(s)), None)
+            if simple_assignment(later) and name not in names(later.value) and \
+                    not any(isinstance(n, ast.NamedExpr) for n in descendants(statement.value)):
+                found.add(statement.value)
+    return found
+
+
+def _blocks(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[ast.AST]
+            ) -> list[list[ast.stmt]]:
+    """The statement lists of one function scope: its body and the blocks inside it."""
+    blocks = [function.body]
+    for node in nodes:
+        if not isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            blocks += [block for block in (getattr(node, field, None)
+                                           for field in ("body", "orelse", "finalbody"))
+                       if isinstance(block, list) and block and isinstance(block[0], ast.stmt)]
+    return blocks
+
+
+def unread_attribute_calls(tree: ast.Module) -> set[ast.Call]:
+    """Calls that are the whole value of ``self.x = ...`` where the module never reads an
+    attribute ``x`` (nor names a function ``x``, nor reads ``getattr(..., 'x')`` or
+    ``__dict__``): values stored and never used."""
+    read: set[str] = set()
+    stores: list[ast.Assign] = []
+    for node in nodes_of_class(tree, ast.Attribute, ast.Assign, ast.Call, ast.FunctionDef,
+                               ast.AsyncFunctionDef):
+        if isinstance(node, ast.Attribute) and not isinstance(node.ctx, ast.Store):
+            read.add(node.attr)
+        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            read.add(node.name)
+        elif isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and \
+                node.func.id in ("getattr", "hasattr"):
+            read.update(a.value for a in node.args[1:2]
+                        if isinstance(a, ast.Constant) and isinstance(a.value, str))
+        elif isinstance(node, ast.Assign) and len(node.targets) == 1 and \
+                isinstance(node.value, ast.Call) and _on_self(node.targets[0]):
+            stores.append(node)
+    if "__dict__" in read:
+        return set()
+    return {node.value for node in stores
+            if node.targets[0].attr not in read}  # type: ignore[attr-defined]
+
+
+def _on_self(target: ast.expr) -> bool:
+    return isinstance(target, ast.Attribute) and isinstance(target.value, ast.Name) and \
+        target.value.id == "self"
+
+
 def import_origins(tree: ast.Module) -> dict[str, set[str]]:
     """Each name any import of the file binds, with the dotted names it was imported as."""
     origins: dict[str, set[str]] = {}
