@@ -1,7 +1,7 @@
 """Fixers of Python code: a standard module never imported, a called callback, a misspelt
 logger method, an int for a float field, rclpy's Time for a message, a ``Parameter`` for its
 value, a path missing its ``/``, a method used without ``()``, ``=+`` for ``+=``, a lone
-comparison, a string without its ``f`` prefix."""
+comparison, a string without its ``f`` prefix, a ``Parameter`` whose type and value disagree."""
 
 from __future__ import annotations
 
@@ -393,3 +393,40 @@ def super_call(package: Package, findings: list[Finding]) -> Iterator[Fix]:
         if isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name) and \
                 func.value.id == "super":
             yield Fix("Write `super()`", (_insert(doc, doc.end(func.value), "()"),))
+
+
+@fixer("PYC070", "Give an rclpy Parameter a float for a double, a Parameter.Type for a message "
+                 "constant, a value given as its type by name")
+def parameter_type(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Append ``.0`` to a decimal int given with ``Parameter.Type.DOUBLE`` (``2`` becomes
+    ``2.0``), write ``Parameter.Type.STRING`` for ``ParameterType.PARAMETER_STRING``, and
+    ``value=10.0`` for a value given in the place of the type. Safe: the call raised. Other
+    values (a list, a string for a bool, no value at all) need the user."""
+    for doc, finding, nodes in python_nodes(package, findings):
+        value = nodes[0] if nodes else None
+        match = _WRITE.fullmatch(finding.fix or "")
+        if not isinstance(value, ast.expr) or match is None:
+            continue
+        number = value.operand if isinstance(value, ast.UnaryOp) else value
+        if match.group(1) == f"{ast.unparse(value)}.0" and \
+                _DECIMAL.fullmatch(doc.segment(number)):
+            yield Fix(f"Write `{match.group(1)}`", (_insert(doc, doc.end(number), ".0"),))
+        elif match.group(1) == f"value={ast.unparse(value)}":
+            yield Fix(f"Write `{match.group(1)}`", (_insert(doc, doc.start(value), "value="),))
+        elif match.group(2) and _parameter_name(doc.tree, value):
+            written = f"{_parameter_name(doc.tree, value)}.Type.{match.group(2)}"
+            yield Fix(f"Write `{written}`",
+                      (Edit(doc.source.path, doc.start(value), doc.end(value), written),))
+
+
+_WRITE = re.compile(r"Write `(.+)`|Use `Parameter\.Type\.([A-Z_]+)`")
+"""PYC070's helps that name one replacement."""
+
+
+def _parameter_name(tree: ast.Module, value: ast.AST) -> str | None:
+    """How the ``Parameter`` call holding ``value`` names rclpy's ``Parameter`` class."""
+    for call in ast.walk(tree):
+        if isinstance(call, ast.Call) and any(a is value for a in call.args) and \
+                isinstance(call.func, (ast.Name, ast.Attribute)):
+            return ast.unparse(call.func)
+    return None

@@ -163,6 +163,7 @@ RULES = {
     "PYC067": ("service-type-mismatch", "error", True, "python.service_type_mismatch"),
     "PYC068": ("misspelled-main-guard", "warning", True, "python.misspelled_main_guard"),
     "PYC069": ("tf2-argument-misuse", "error", True, "python.tf2_argument_misuse"),
+    "PYC070": ("parameter-type-disagrees", "error", True, "python.parameter_type_disagrees"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),
@@ -197,6 +198,6 @@ FIXED = frozenset({
     "MAN013", "MAN015", "MAN017", "MAN018", "MAN019", "MAN021", "MAN024", "PYC001", "PYC013",
     "PYC014", "PYC016", "PYC019", "PYC025", "PYC026", "PYC029", "PYC031", "PYC032", "PYC041",
     "PYC046", "PYC047", "PYC050", "PYC058", "PYC062", "PYC063", "PYC064", "PYC065", "PYC066",
-    "PYC068", "SET003", "SET004", "SET005", "SET006", "SET007", "SET008", "SET009", "SET010",
-    "SET016",
+    "PYC068", "PYC070", "SET003", "SET004", "SET005", "SET006", "SET007", "SET008", "SET009",
+    "SET010", "SET016",
 })
