@@ -49,11 +49,15 @@ DIST_MODULES: dict[str, tuple[str, ...]] = {
     "msgpack-python": ("msgpack",), "netcdf4": ("netCDF4",), "pynacl": ("nacl",),
     "python-magic": ("magic",), "python-slugify": ("slugify",), "wxpython": ("wx",),
     "matplotlib": ("matplotlib", "mpl_toolkits", "pylab"),
+    "speechrecognition": ("speech_recognition",), "rpi-gpio": ("RPi",), "jetson-gpio": ("Jetson",), "python-vlc": ("vlc",),
+    "adafruit-blinka": ("adafruit_blinka", "board", "busio", "digitalio", "microcontroller"),
+    "python-socketio": ("socketio",), "python-dotenv": ("dotenv",),
 }
 """Distribution names (PyPI, or Debian/Gentoo without ``python3-``) whose modules have other names.
 
 Facts about each distribution's top-level modules (checked against installed wheels where the
-test environment has them); any other distribution ``foo-bar`` provides ``foo_bar``.
+test environment has them); an ``adafruit-circuitpython-foo`` library provides ``adafruit_foo``,
+any other distribution ``foo-bar`` provides ``foo_bar``.
 """
 
 KEPT_STDLIB = frozenset({"tkinter"})
@@ -127,7 +131,9 @@ def distribution_names(definition: object) -> set[str]:
 
 def modules_of(distribution: str, stdlib: frozenset[str]) -> set[str]:
     """Top-level import names (lower case) a normalised distribution name provides."""
-    modules = DIST_MODULES.get(distribution, (distribution.replace("-", "_"),))
+    circuit = distribution.removeprefix("adafruit-circuitpython-")
+    default = f"adafruit_{circuit}" if circuit != distribution else distribution
+    modules = DIST_MODULES.get(distribution, (default.replace("-", "_"),))
     tops = {m.split(".")[0].lower() for m in modules}
     return {m for m in tops if m.isidentifier() and (m not in stdlib or m in KEPT_STDLIB)}
 
