@@ -49,7 +49,8 @@ DIST_MODULES: dict[str, tuple[str, ...]] = {
     "msgpack-python": ("msgpack",), "netcdf4": ("netCDF4",), "pynacl": ("nacl",),
     "python-magic": ("magic",), "python-slugify": ("slugify",), "wxpython": ("wx",),
     "matplotlib": ("matplotlib", "mpl_toolkits", "pylab"),
-    "speechrecognition": ("speech_recognition",), "rpi-gpio": ("RPi",), "jetson-gpio": ("Jetson",), "python-vlc": ("vlc",),
+    "speechrecognition": ("speech_recognition",), "rpi-gpio": ("RPi",), "jetson-gpio": ("Jetson",),
+    "python-vlc": ("vlc",),
     "adafruit-blinka": ("adafruit_blinka", "board", "busio", "digitalio", "microcontroller"),
     "python-socketio": ("socketio",), "python-dotenv": ("dotenv",),
 }
