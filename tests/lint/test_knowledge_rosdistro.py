@@ -135,7 +135,7 @@ def test_every_pip_name_that_is_its_import_name_maps_to_its_keys() -> None:
     ("PIL", "python3-pil"), ("serial", "python3-serial"), ("numpy", "python3-numpy"),
     ("catkin_pkg", "python3-catkin-pkg"), ("tkinter", "python3-tk"),
     ("speech_recognition", "python-speechrecognition-pip"), ("RPi", "python-rpi.gpio-pip"),
-    ("Jetson", "python-jetson-gpio-pip"),,
+    ("Jetson", "python-jetson-gpio-pip"),
     ("adafruit_mpu6050", "python3-adafruit-circuitpython-mpu6050-pip"), ("vlc", "python-vlc-pip"),
 ])
 def test_known_import_keys(module: str, key: str) -> None:
