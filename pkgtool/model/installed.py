@@ -137,8 +137,9 @@ def installed_files(package: Package) -> frozenset[str]:
     installs ``launch/``, ``config/``, ... to ``share/``, whatever ``__init__.py`` they hold),
     and of a CMake package only those its CMakeLists.txt installs when that is known
     (:func:`cmake_installed`). A setup.py and the files of a :func:`separate_projects`
-    project never are."""
-    installed = installed_modules(package)
+    project never are, nor what the setup.py of a CMake package names (colcon never runs
+    it)."""
+    installed = installed_modules(package) if is_ament_python(package) else None
     if installed is not None:
         files = frozenset(installed.values())
     else:
