@@ -5,8 +5,9 @@
 of ``scripts/`` importable by their bare names in the rest of the process. Only paths built
 from ``__file__`` and string literals are understood: ``os.path`` (``dirname``, ``join``,
 ``abspath``, ``realpath``, ``normpath``), ``pathlib.Path`` (``parent``, ``parents[n]``, ``/``,
-``joinpath``, ``resolve()``, ``absolute()``), ``str()``/``os.fspath()``, and names assigned
-once at module level to such a path. Nothing is executed; a path leaving the package is
+``joinpath``, ``resolve()``, ``absolute()``), ``str()``/``os.fspath()``, a text starting with
+``/`` added to a path (``dirname(__file__) + "/../lib"``, or in an f-string), and names
+assigned once at module level to such a path. Nothing is executed; a path leaving the package is
 ignored.
 """
 
@@ -129,6 +130,12 @@ def _path(node: ast.expr, file: str, aliases: dict[str, str], once: dict[str, as
     if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Div):
         base, tail = _path(node.left, *here), _literal(node.right)
         return posixpath.join(base, tail) if base is not None and tail else None
+    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
+        return _appended(_path(node.left, *here), node.right)
+    if isinstance(node, ast.JoinedStr) and len(node.values) == 2 and \
+            isinstance(node.values[0], ast.FormattedValue) and not node.values[0].format_spec \
+            and node.values[0].conversion == -1:
+        return _appended(_path(node.values[0].value, *here), node.values[1])
     if isinstance(node, ast.Attribute) and node.attr == "parent":
         base = _path(node.value, *here)
         return posixpath.dirname(posixpath.normpath(base)) if base is not None else None
@@ -162,6 +169,14 @@ def _called(node: ast.Call, here: tuple[str, dict[str, str], dict[str, ast.expr]
         base = _path(func.value, *here)
         return _joined(base, args) if func.attr == "joinpath" else None if args else base
     return None
+
+
+def _appended(base: str | None, text: ast.expr) -> str | None:
+    """``base + "/../lib"``: a path with a literal text starting with ``/`` added to it."""
+    if base is None or not isinstance(text, ast.Constant) or not isinstance(text.value, str) \
+            or not text.value.startswith("/"):
+        return None
+    return posixpath.normpath(base + text.value)
 
 
 def _joined(base: str | None, parts: list[ast.expr]) -> str | None:
