@@ -7,7 +7,9 @@ from ``__file__`` and string literals are understood: ``os.path`` (``dirname``, 
 ``abspath``, ``realpath``, ``normpath``), ``pathlib.Path`` (``parent``, ``parents[n]``, ``/``,
 ``joinpath``, ``resolve()``, ``absolute()``), ``str()``/``os.fspath()``, a text starting with
 ``/`` added to a path (``dirname(__file__) + "/../lib"``, or in an f-string), and names
-assigned once at module level to such a path. Nothing is executed; a path leaving the package is
+assigned once at module level to such a path. The package's own share folder
+(``get_package_share_directory('<package>')``) stands for its root: a launch file putting
+``share/<package>/launch`` on the path imports the package's ``launch/`` modules. Nothing is executed; a path leaving the package is
 ignored.
 """
 
@@ -16,6 +18,7 @@ from __future__ import annotations
 import ast
 import posixpath
 from collections.abc import Iterator
+from typing import NamedTuple
 
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
@@ -30,6 +33,12 @@ _JOINING = frozenset({"os.path.join", "pathlib.Path", "pathlib.PurePath", "pathl
 """Calls joining their first argument's path with the string literals that follow."""
 _FUNCTIONS = _SAME | _JOINING | {"os.path.dirname"}
 _EDITS = frozenset({"insert", "append"})
+_SHARE_LOOKUPS = frozenset({f"ament_index_python{where}.{function}"
+                            for where in ("", ".packages")
+                            for function in ("get_package_share_directory",
+                                             "get_package_share_path")})
+"""The package's share folder, which holds the folders the package installs there under
+their source names (``launch/``): read as the package's root."""
 
 
 @per_package
@@ -55,7 +64,7 @@ def _edits(tree: ast.Module, path: str, package: Package) -> Iterator[tuple[int,
                 and node.func.attr in _EDITS and node.args
                 and _dotted(node.func.value, aliases) == "sys.path"):
             continue
-        folder = _path(node.args[-1], path, aliases, once, 0)
+        folder = _path(node.args[-1], _Source(path, package.name), aliases, once, 0)
         relative = _relative(folder) if folder is not None else None
         if relative is not None and (relative == "" or any(
                 f.startswith(relative + "/") for f in package.files)):
@@ -116,7 +125,14 @@ def _literal(node: ast.expr) -> str | None:
     return None
 
 
-def _path(node: ast.expr, file: str, aliases: dict[str, str], once: dict[str, ast.expr],
+class _Source(NamedTuple):
+    """The module whose ``sys.path`` edits are read, and the name of its package."""
+
+    path: str
+    package: str
+
+
+def _path(node: ast.expr, file: _Source, aliases: dict[str, str], once: dict[str, ast.expr],
           depth: int) -> str | None:
     """The absolute path (under :data:`_ROOT`) ``node`` evaluates to, or None if unknown."""
     if depth > 20:
@@ -124,7 +140,7 @@ def _path(node: ast.expr, file: str, aliases: dict[str, str], once: dict[str, as
     here = (file, aliases, once, depth + 1)
     if isinstance(node, ast.Name):
         if node.id == "__file__":
-            return f"{_ROOT}/{file}"
+            return f"{_ROOT}/{file.path}"
         value = once.get(node.id)
         return _path(value, *here) if value is not None else None
     if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Div):
@@ -151,12 +167,16 @@ def _path(node: ast.expr, file: str, aliases: dict[str, str], once: dict[str, as
     return None
 
 
-def _called(node: ast.Call, here: tuple[str, dict[str, str], dict[str, ast.expr], int]
+def _called(node: ast.Call, here: tuple[_Source, dict[str, str], dict[str, ast.expr], int]
             ) -> str | None:
     """The path a call returns: ``os.path`` functions, ``Path(...)``, ``str(...)`` and the
     path methods ``resolve``, ``absolute`` and ``joinpath``."""
     func, args = node.func, node.args
     name = _dotted(func, here[1])
+    if name in _SHARE_LOOKUPS:  # share/<package> holds the package's folders, as installed
+        own = len(args) == 1 and isinstance(args[0], ast.Constant) and \
+            args[0].value == here[0].package
+        return _ROOT if own else None
     if name in _FUNCTIONS:
         first = _path(args[0], *here) if args else None
         if name == "os.path.dirname":
