@@ -9,8 +9,8 @@ from ``__file__`` and string literals are understood: ``os.path`` (``dirname``, 
 ``/`` added to a path (``dirname(__file__) + "/../lib"``, or in an f-string), and names
 assigned once at module level to such a path. The package's own share folder
 (``get_package_share_directory('<package>')``) stands for its root: a launch file putting
-``share/<package>/launch`` on the path imports the package's ``launch/`` modules. Nothing is executed; a path leaving the package is
-ignored.
+``share/<package>/launch`` on the path imports the package's ``launch/`` modules. Nothing is
+executed; a path leaving the package is ignored.
 """
 
 from __future__ import annotations
