@@ -35,10 +35,12 @@ KEYWORDS = {
     "Node": frozenset("""executable package name namespace exec_name parameters remappings
                       ros_arguments arguments""".split()) | _PROCESS_KEYWORDS,
 }
-KEYWORDS["LifecycleNode"] = KEYWORDS["Node"]
+KEYWORDS["LifecycleNode"] = KEYWORDS["Node"] | {"autostart"}
 KEYWORDS["ComposableNodeContainer"] = KEYWORDS["Node"] | {"composable_node_descriptions"}
 """The keywords each Python node action of launch_ros takes (Foxy to Rolling: the union,
-read from the ros2/launch_ros and ros2/launch sources), besides :data:`REMOVED_KEYWORDS`."""
+read from the ros2/launch_ros and ros2/launch sources), besides :data:`REMOVED_KEYWORDS`.
+``LifecycleNode(autostart=...)`` came with ros2/launch_ros#430 (Rolling, and Jazzy from
+launch_ros 0.26.7)."""
 OUTPUTS = frozenset({"screen", "log", "both", "own_log", "full"})
 """The ``output`` configurations launch knows (launch.logging, Humble to Rolling)."""
 
