@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.ros_names import LAUNCH_RUNTIME
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import launch_keys, needs
+from pkgtool.rules.imports import ANY, declaration, declared, launch_keys, needs
 from pkgtool.rules.registry import rule
 
 
@@ -48,6 +48,9 @@ def undeclared_launch_import(package: Package) -> Iterator[Hit]:
                 continue
             if need.top in LAUNCH_RUNTIME and "ros2launch" in available:
                 continue
+            other = declared(package, ANY).get(need.key)
+            missing = f"`{need.key}` is declared only as {declaration(need.key, other)}" \
+                if other else need.missing
             yield Hit(need.imported.span,
-                      f"`{need.top}` is imported by a launch file but {need.missing}",
+                      f"`{need.top}` is imported by a launch file but {missing}",
                       f"Add `<exec_depend>{need.key}</exec_depend>` to package.xml")
