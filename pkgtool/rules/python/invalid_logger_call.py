@@ -41,9 +41,13 @@ def python_logger() -> frozenset[str]:
                                              "disabled", "filters", "manager", "root"}
 
 
-def _problem(call: ast.Call, typed: Callable[[ast.expr], str | None]) -> str | None:
+def _problem(call: ast.Call, typed: Callable[[ast.expr], str | None], level: str
+             ) -> str | None:
     """What is wrong with the arguments of a logger method call, if anything (``typed``: the
-    type an expression certainly has, if known)."""
+    type an expression certainly has, if known). rclpy reads the options and the message
+    only for a level that is enabled: ``debug()`` raises once DEBUG messages are."""
+    raises = "rclpy raises `TypeError` once DEBUG messages are enabled" if level == "debug" \
+        else "rclpy raises `TypeError`"
     if unpacks(call):
         return None
     if len(call.args) > 1:
@@ -55,17 +59,15 @@ def _problem(call: ast.Call, typed: Callable[[ast.expr], str | None]) -> str | N
                "`TypeError`"
     unknown = sorted(k.arg for k in call.keywords if k.arg and k.arg not in OPTIONS | {MESSAGE})
     if unknown:
-        return f"has no option `{unknown[0]}`: rclpy raises `TypeError` (its options are " \
+        return f"has no option `{unknown[0]}`: {raises} (its options are " \
                "`throttle_duration_sec`, `skip_first`, `once`)"
     message = logged_message(call)
     if isinstance(message, ast.Constant) and not isinstance(message.value, str) or \
             isinstance(message, (ast.List, ast.Tuple, ast.Dict, ast.Set)):
-        return "takes a string: rclpy raises `TypeError` for anything else; write " \
-               "`str(...)` or an f-string"
+        return f"takes a string: {raises} for anything else; write `str(...)` or an f-string"
     given = typed(message) if message is not None else None
     if given is not None:
-        return f"is given {given}, not a string: rclpy raises `TypeError`; write `str(...)` " \
-               "or an f-string"
+        return f"is given {given}, not a string: {raises}; write `str(...)` or an f-string"
     return None
 
 
@@ -143,7 +145,8 @@ def invalid_logger_call(package: Package) -> Iterator[Hit]:
     `info('x %s', n)` too, `info(5)` raises "incompatible function arguments", and an option
     such as `end=` raises `TypeError: parameter "end" is not one of the recognized logging
     options`; `err('x')` or `exception('x')` raise `AttributeError`. The node dies in the
-    callback that logs.
+    callback that logs (for a wrong option or message given to `debug()`, once DEBUG messages
+    are enabled: rclpy reads them only for a level it logs).
 
     ## Example
     ```python
@@ -163,7 +166,7 @@ def invalid_logger_call(package: Package) -> Iterator[Hit]:
         for call, func in logger_method_calls(tree, index, package):
             if any(first <= call.lineno <= last for first, last in dead):
                 continue
-            problem = _problem(call, typed) if func.attr in LEVELS else \
+            problem = _problem(call, typed, func.attr) if func.attr in LEVELS else \
                 _unknown_method(func, index) if func.attr not in ATTRIBUTES else None
             if problem:
                 yield Hit(Span(module.path, call.lineno, call.col_offset + 1),
