@@ -104,8 +104,9 @@ COMMAND_PACKAGES = {"xacro": "xacro"}
 
 @record
 class PackageRef:
-    """A package named by get_package_share_directory, FindPackageShare or $(find-pkg-share),
-    or whose executable a command substitution runs (:data:`COMMAND_PACKAGES`).
+    """A package named by get_package_share_directory, FindPackageShare, $(find-pkg-share),
+    ExecutableInPackage or $(exec-in-pkg), or whose executable a command substitution runs
+    (:data:`COMMAND_PACKAGES`).
 
     ``optional`` as for :class:`NodeRef`; ``unused`` marks a substitution
     (``FindPackageShare``) inside an action that is never started (:class:`NodeRef`): it is

@@ -314,6 +314,12 @@ class _Reader(ast.NodeVisitor):
         if runs in COMMAND_PACKAGES:
             self.packages.append(PackageRef(COMMAND_PACKAGES[runs], self._span(node),
                                             bool(self.optional), bool(self.dead)))
+        if name == "ExecutableInPackage":  # (executable, package): looked up in the ament index
+            package = self.value(_keyword(node, "package") or
+                                 (node.args[1] if len(node.args) > 1 else None))
+            if isinstance(package, str) and package:
+                self.packages.append(PackageRef(package, self._span(node), bool(self.optional),
+                                                bool(self.dead)))
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
             found = self.value(node)
             if isinstance(found, Share):

@@ -18,6 +18,8 @@ from pkgtool.model.xml import XmlElement
 from pkgtool.records import replace
 
 _LOOKUP = re.compile(r"\$\(\s*find-pkg-(share|prefix)\s+([A-Za-z0-9_]+)\s*\)")
+_EXECUTABLE_IN = re.compile(r"\$\(\s*exec-in-pkg\s+[\w.-]+\s+([A-Za-z0-9_]+)\s*\)")
+"""``$(exec-in-pkg <executable> <package>)``: launch looks the package up in the ament index."""
 _COMMAND = re.compile(r"""\$\(\s*command\s+['"]?\s*([\w.-]+)""")
 _SHARE_PATH = re.compile(r"^\$\(\s*find-pkg-share\s+([A-Za-z0-9_]+)\s*\)(/[^$]*)$")
 NODE_TAGS = {"node": ("exec", "executable"), "lifecycle_node": ("exec", "executable"),
@@ -75,6 +77,7 @@ def _substitutions(values: list[tuple[str, Span]]) -> tuple[tuple[PackageRef, ..
     files: list[FileRef] = []
     for value, span in values:
         packages.extend(PackageRef(m.group(2), span) for m in _LOOKUP.finditer(value))
+        packages.extend(PackageRef(m.group(1), span) for m in _EXECUTABLE_IN.finditer(value))
         packages.extend(PackageRef(COMMAND_PACKAGES[m.group(1)], span)
                         for m in _COMMAND.finditer(value) if m.group(1) in COMMAND_PACKAGES)
         found = _share_file(value, span)

@@ -20,7 +20,8 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
     ## What it does
     Collects the packages a launch file names statically: `Node(package=...)`,
     `get_package_share_directory(...)`, `FindPackageShare(...)`, `$(find-pkg-share ...)` in
-    XML and YAML launch files, and `xacro`'s package for a command substitution running it
+    XML and YAML launch files, the package of `ExecutableInPackage(exe, pkg)` and
+    `$(exec-in-pkg exe pkg)`, and `xacro`'s package for a command substitution running it
     (`Command(['xacro ', path])`, `$(command 'xacro ...')`). A name that is no package of
     the workspace or of the target's release is said so, with the package (of the workspace,
     this one or the release) it is a typo of, if any. Each one other than this
