@@ -20,6 +20,9 @@ from pkgtool.records import replace
 _LOOKUP = re.compile(r"\$\(\s*find-pkg-(share|prefix)\s+([A-Za-z0-9_]+)\s*\)")
 _EXECUTABLE_IN = re.compile(r"\$\(\s*exec-in-pkg\s+[\w.-]+\s+([A-Za-z0-9_]+)\s*\)")
 """``$(exec-in-pkg <executable> <package>)``: launch looks the package up in the ament index."""
+_SHARE_WORD = re.compile(r"(?<![^\s])\$\(\s*find-pkg-share\s+[A-Za-z0-9_]+\s*\)"
+                         r"/[^\s$'\"]*(?=\s|$)")
+"""A share path that is one whole word of a node's ``args`` (``-d $(find-pkg-share p)/a.rviz``)."""
 _COMMAND = re.compile(r"""\$\(\s*command\s+['"]?\s*([\w.-]+)""")
 _SHARE_PATH = re.compile(r"^\$\(\s*find-pkg-share\s+([A-Za-z0-9_]+)\s*\)(/[^$]*)$")
 NODE_TAGS = {"node": ("exec", "executable"), "lifecycle_node": ("exec", "executable"),
@@ -133,6 +136,9 @@ def _xml(path: str, text: str) -> Read | ParseProblem:
                 element.attribute("name"), element.attribute("namespace"), froms, remaps,
                 arguments))
         values.extend((value, element.span) for _, value in element.attributes)
+        if element.tag in NODE_TAGS:  # `args="-d $(find-pkg-share pkg)/view.rviz"`
+            values.extend((m.group(0), element.span)
+                          for m in _SHARE_WORD.finditer(element.attribute("args") or ""))
     return nodes, values, paths
 
 
