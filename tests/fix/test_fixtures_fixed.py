@@ -85,7 +85,8 @@ MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages
           ("PYC025", "scalars_for_sequences"),
           ("ENT003", "node_class_as_entry"), ("ENT003", "attribute_of_function"),
           ("PYC014", "read_before_declaring"),
-          ("LCH001", "wrong_executable_names"), ("DAT009", "default_name_from_code"),
+          ("LCH001", "wrong_executable_names"), ("LCH001", "data_files_walked_at_build"),
+          ("DAT009", "default_name_from_code"),
           ("DAT009", "xml_and_yaml_launch")}
 """MAN018 fixes pip and import names only; build types, ROS 1 packages and standard library modules
 need the user (a `<build_type>`, a ROS 2 replacement, or nothing). DAT001 fixes a string of

@@ -21,9 +21,9 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     For each launch file data_files installs, and each installed module that imports
     `ament_index_python`, looks at the paths it builds from this package's share folder
     (`get_package_share_directory('<pkg>')`, `FindPackageShare`, `$(find-pkg-share <pkg>)`
-    joined with static parts, also as a word of an XML node's `args`) and reports those that data_files does not install and that
-    are no file or folder of the package either: a misspelt name (`param.yaml` for
-    `params.yaml`), a wrong folder, a file never committed. It suggests the closest path the
+    joined with static parts, also as a word of an XML node's `args`) and reports those
+    that data_files does not install and that are no file or folder of the package either:
+    a misspelt name (`param.yaml` for `params.yaml`), a wrong folder, a file never committed. It suggests the closest path the
     package installs or has. A file the package has but does not install is DAT006's. In a
     launch file that sets a simulator's search path (`GZ_SIM_RESOURCE_PATH`,
     `GAZEBO_MODEL_PATH`, ...), folders (a last part with no suffix) are left alone, by both

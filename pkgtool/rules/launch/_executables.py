@@ -8,7 +8,7 @@ from pkgtool.model.installed import is_ament_python
 from pkgtool.model.package import Package
 
 
-def executables(package: Package) -> frozenset[str] | None:
+def executables(package: Package, *, any_data: bool = False) -> frozenset[str] | None:
     """Names the package installs into ``lib/<package>``, or None when that cannot be known.
 
     Console scripts of setup.py and setup.cfg count, and so do files that data_files copies
@@ -16,14 +16,36 @@ def executables(package: Package) -> frozenset[str] | None:
     (unevaluated keywords, ``scripts=``, a setup.cfg or pyproject.toml that did not parse or
     may declare scripts) makes the answer unknown, and so does a package colcon builds with
     CMake (another build type, or a CMakeLists.txt and none): CMake installs the executables
-    then.
+    then. With ``any_data``, a data_files that could not be evaluated counts as installing
+    every file of the package into ``lib/<package>`` (data_files copies files under their own
+    names): the names that may be there, for telling a name that cannot be.
     """
+    names = console_scripts(package)
+    setup = package.setup_py
+    if names is None or setup is None:
+        return None
+    if setup.is_unresolved("data_files"):
+        return names | {posixpath.basename(f) for f in package.files} if any_data else None
+    library = f"lib/{package.name}"
+    copied = set()
+    for entry in setup.data_files or ():
+        if posixpath.normpath(entry.destination.strip("/")) == library:
+            for source in entry.sources:
+                copied.update(posixpath.basename(m) for m in source.matches)
+                if not source.is_glob:
+                    copied.add(posixpath.basename(source.pattern))
+    return names | copied
+
+
+def console_scripts(package: Package) -> frozenset[str] | None:
+    """The console scripts of setup.py and setup.cfg, or None when they cannot be known (see
+    :func:`executables`)."""
     setup = package.setup_py
     if setup is None or "scripts" in setup.keywords or package.has_file("pyproject.toml"):
         return None
     if not is_ament_python(package):
         return None  # CMake installs its executables; a setup.py beside it is not run
-    if any(setup.is_unresolved(k) for k in ("entry_points", "data_files", "**")):
+    if any(setup.is_unresolved(k) for k in ("entry_points", "**")):
         return None
     if package.has_file("setup.cfg") and package.setup_cfg is None:
         return None
@@ -35,11 +57,4 @@ def executables(package: Package) -> frozenset[str] | None:
     if option is not None:
         names.update(line.split("=", 1)[0].strip() for line in option.value.splitlines()
                      if "=" in line)
-    library = f"lib/{package.name}"
-    for entry in setup.data_files or ():
-        if posixpath.normpath(entry.destination.strip("/")) == library:
-            for source in entry.sources:
-                names.update(posixpath.basename(m) for m in source.matches)
-                if not source.is_glob:
-                    names.add(posixpath.basename(source.pattern))
     return frozenset(names)

@@ -8,7 +8,7 @@ from difflib import get_close_matches
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.model.package import Package
-from pkgtool.rules.launch._executables import executables
+from pkgtool.rules.launch._executables import console_scripts, executables
 from pkgtool.rules.registry import rule
 
 
@@ -20,11 +20,12 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
     ## What it does
     For every `Node(package=..., executable=...)` (or `<node pkg= exec=>`) naming this
     package, checks that the executable is a console script of setup.py or setup.cfg, or a
-    file data_files installs into `lib/<package>`. Executables given by launch arguments or
-    other substitutions are not checked, nor nodes that are never started (assigned to a
-    local name the function never reads): the executable is looked up only when a node
-    starts, so such a node cannot fail. LCH005 still checks their arguments, which the
-    `Node()` call itself rejects.
+    file data_files installs into `lib/<package>` (a data_files that could not be evaluated
+    may install any file of the package: a name no file has is still reported). Executables
+    given by launch arguments or other substitutions are not checked, nor nodes that are
+    never started (assigned to a local name the function never reads): the executable is
+    looked up only when a node starts, so such a node cannot fail. LCH005 still checks
+    their arguments, which the `Node()` call itself rejects.
 
     ## Why is this bad?
     `ros2 launch` looks the executable up in `lib/<package>` only when the launch file runs
@@ -40,17 +41,19 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
     Node(package='my_robot', executable='talker')
     ```
     """
-    known = executables(package)
+    known = executables(package, any_data=True)
     if known is None:
         return
+    shown = executables(package) or console_scripts(package) or frozenset()
+    # what certainly is there: a data_files never evaluated may copy any file
     for launch in package.launch_files:
         for node in launch.nodes:
             if node.package != package.name or node.executable is None or node.unused:
                 continue
             if node.executable not in known:
-                choices = ", ".join(f"`{n}`" for n in sorted(known)) or "none"
-                close = get_close_matches(node.executable, sorted(known), n=1)
-                meant = typo_of(node.executable, known)
+                choices = ", ".join(f"`{n}`" for n in sorted(shown)) or "none"
+                close = get_close_matches(node.executable, sorted(shown), n=1)
+                meant = typo_of(node.executable, shown)
                 yield Hit(node.executable_span or node.span,
                           f"`{node.executable}` is not an executable of `{package.name}` "
                           f"({f'did you mean `{close[0]}`? ' if close else ''}it installs: "
