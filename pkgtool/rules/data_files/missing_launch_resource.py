@@ -23,18 +23,19 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     (`get_package_share_directory('<pkg>')`, `FindPackageShare`, `$(find-pkg-share <pkg>)`
     joined with static parts, also as a word of an XML node's `args`) and reports those
     that data_files does not install and that are no file or folder of the package either:
-    a misspelt name (`param.yaml` for `params.yaml`), a wrong folder, a file never committed. It suggests the closest path the
-    package installs or has. A file the package has but does not install is DAT006's. In a
-    launch file that sets a simulator's search path (`GZ_SIM_RESOURCE_PATH`,
-    `GAZEBO_MODEL_PATH`, ...), folders (a last part with no suffix) are left alone, by both
-    rules: they are entries of the path, which skips a missing one, not files read. Nor is
-    a file whose name a `.gitignore` of the package or of the folders above it lists (a
-    calibration or a map the user makes, kept out of git on purpose). Paths that are glob patterns
-    (`config/*.yaml`) count when installed files match them, and a module that asks whether
-    files or folders exist (`os.path.exists`, `os.path.isdir`, `Path.exists()`: it handles a
-    missing one, as a model it downloads) or makes folders (`os.makedirs`) is left alone. A
-    path a launch file builds but never uses (the value of a local name never read, or read
-    only by nodes it never starts) is not read either.
+    a misspelt name (`param.yaml` for `params.yaml`), a wrong folder, a file never committed.
+    It suggests the closest path the package installs or has. A file the package has but
+    does not install is DAT006's. In a launch file that sets a simulator's search path
+    (`GZ_SIM_RESOURCE_PATH`, `GAZEBO_MODEL_PATH`, ...), folders (a last part with no
+    suffix) are left alone, by both rules: they are entries of the path, which skips a
+    missing one, not files read. Nor is a file whose name a `.gitignore` of the package or
+    of the folders above it lists (a calibration or a map the user makes, kept out of git
+    on purpose). Paths that are glob patterns (`config/*.yaml`) count when installed files
+    match them, and a module that asks whether files or folders exist (`os.path.exists`,
+    `os.path.isdir`, `Path.exists()`: it handles a missing one, as a model it downloads) or
+    makes folders (`os.makedirs`) is left alone. A path the code builds but never uses (the
+    value of a local name never read, read only by nodes it never starts, or replaced
+    before any use; or stored in `self.x` that the module never reads) is not read either.
 
     ## Why is this bad?
     Nothing can install a file the package does not have: `ros2 launch` fails on the missing
