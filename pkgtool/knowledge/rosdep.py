@@ -32,6 +32,7 @@ ROS_MODULE_PACKAGES: dict[str, str] = {
     "moveit": "moveit_py",
     "hri": "pyhri",  # ament_python_install_package(hri); the released `hri` is libhri's C++
     "camera_info_manager": "camera_info_manager_py",  # image_common; the other is C++ only
+    "scripts": "gazebo_ros",  # ament_python_install_package(scripts): `GazeboRosPaths`
 }
 """ROS import names whose package has another name (every other ROS import is its package).
 Most of them are Python bindings whose module takes the name of the C++ package they wrap."""
