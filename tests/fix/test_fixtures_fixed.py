@@ -87,7 +87,7 @@ MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages
           ("PYC014", "read_before_declaring"),
           ("LCH001", "wrong_executable_names"), ("LCH001", "data_files_walked_at_build"),
           ("DAT009", "default_name_from_code"),
-          ("DAT009", "xml_and_yaml_launch")}
+          ("DAT009", "xml_and_yaml_launch"), ("LCH003", "gazebo_classic_module")}
 """MAN018 fixes pip and import names only; build types, ROS 1 packages and standard library modules
 need the user (a `<build_type>`, a ROS 2 replacement, or nothing). DAT001 fixes a string of
 sources and creates the (empty) ament index marker: other missing files have content only their
@@ -106,7 +106,9 @@ needs a `main` the author writes; PYC014 renames reads, and moving a declaration
 call; PYC025 does not guess the list a number or a string given to a sequence stands for;
 `talker_node` for `talker` (LCH001) and a block `main_talker` for the node `talker` (DAT009) are
 more than a typo away: other names, maybe meant, and so is `timeout=` for `timeout_sec=`
-(PYC029); a block `movr` beside a block `mover` would merge into it (DAT009)."""
+(PYC029); a block `movr` beside a block `mover` would merge into it (DAT009). `gazebo_ros`, whose
+module a Gazebo Classic launch file imports, has no release after Humble: the fixer declares
+only keys that resolve for the target (LCH003)."""
 
 REVEALED = {("PYC013", "called_callbacks"): {"PYC026"},
             ("LCH005", "parameters_not_a_list"): {"DAT012"},
