@@ -63,6 +63,7 @@ RULES = {
     "LCH015": ("unknown-substitution", "error", True, "launch.unknown_substitution"),
     "LCH016": ("unknown-launch-description-method", "error", True,
                "launch.unknown_description_method"),
+    "LCH017": ("launch-file-as-executable", "error", True, "launch.launch_file_as_executable"),
     "MAN001": ("invalid-package-name", "error", True, "manifest.invalid_package_name"),
     "MAN002": ("invalid-version", "error", True, "manifest.invalid_version"),
     "MAN003": ("missing-required-element", "error", True, "manifest.missing_required_element"),

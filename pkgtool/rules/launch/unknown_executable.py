@@ -9,6 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.model.package import Package
 from pkgtool.rules.launch._executables import console_scripts, executables
+from pkgtool.rules.launch.launch_file_as_executable import LAUNCH_FILE_NAME
 from pkgtool.rules.registry import rule
 
 
@@ -48,7 +49,8 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
     # what certainly is there: a data_files never evaluated may copy any file
     for launch in package.launch_files:
         for node in launch.nodes:
-            if node.package != package.name or node.executable is None or node.unused:
+            if node.package != package.name or node.executable is None or node.unused or \
+                    LAUNCH_FILE_NAME.search(node.executable):  # LCH017's
                 continue
             if node.executable not in known:
                 choices = ", ".join(f"`{n}`" for n in sorted(shown)) or "none"
