@@ -3,9 +3,14 @@
 from __future__ import annotations
 
 import posixpath
+import re
 
 from pkgtool.model.installed import is_ament_python
 from pkgtool.model.package import Package
+
+LAUNCH_FILE_NAME = re.compile(r"(?:^|[._-])launch\.(?:py|xml|ya?ml)$")
+"""The names ROS 2 gives launch files (``bringup_launch.py``, ``robot.launch.xml``): never
+an executable's."""
 
 
 def executables(package: Package, *, any_data: bool = False) -> frozenset[str] | None:

@@ -2,15 +2,12 @@
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
+from pkgtool.rules.launch._executables import LAUNCH_FILE_NAME
 from pkgtool.rules.registry import rule
-
-LAUNCH_FILE_NAME = re.compile(r"(?:^|[._-])launch\.(?:py|xml|ya?ml)$")
-"""The names ROS 2 gives launch files (``bringup_launch.py``, ``robot.launch.xml``)."""
 
 
 @rule("LCH017", "launch-file-as-executable", Severity.ERROR,

@@ -8,8 +8,7 @@ from difflib import get_close_matches
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.model.package import Package
-from pkgtool.rules.launch._executables import console_scripts, executables
-from pkgtool.rules.launch.launch_file_as_executable import LAUNCH_FILE_NAME
+from pkgtool.rules.launch._executables import LAUNCH_FILE_NAME, console_scripts, executables
 from pkgtool.rules.registry import rule
 
 
