@@ -52,7 +52,7 @@ DIST_MODULES: dict[str, tuple[str, ...]] = {
     "speechrecognition": ("speech_recognition",), "rpi-gpio": ("RPi",), "jetson-gpio": ("Jetson",),
     "python-vlc": ("vlc",),
     "adafruit-blinka": ("adafruit_blinka", "board", "busio", "digitalio", "microcontroller"),
-    "python-socketio": ("socketio",), "python-dotenv": ("dotenv",),
+    "python-socketio": ("socketio",), "python-dotenv": ("dotenv",), "numpy-stl": ("stl",),
 }
 """Distribution names (PyPI, or Debian/Gentoo without ``python3-``) whose modules have other names.
 
