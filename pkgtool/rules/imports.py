@@ -20,8 +20,9 @@ from collections.abc import Iterable, Iterator
 from functools import lru_cache
 
 from pkgtool.knowledge.ros_names import looks_like_ros
-from pkgtool.knowledge.rosdep import (ALTERNATIVE_KEYS, ROS_MODULE_PACKAGES, accepted_keys,
-                                      brought_in, package_for_ros_module, suggested_key)
+from pkgtool.knowledge.rosdep import (ALTERNATIVE_KEYS, ROS1_PACKAGES, ROS_MODULE_PACKAGES,
+                                      accepted_keys, brought_in, package_for_ros_module,
+                                      suggested_key)
 from pkgtool.knowledge.rosdistro import (any_stdlib_module, is_released_package,
                                          keys_for_import, stdlib_modules)
 from pkgtool.model.cmake_interfaces import installed_python_packages
@@ -439,6 +440,8 @@ def _needs(package: Package, module: PythonModule, guarded: bool | None) -> Iter
             continue
         seen.add(shown)
         kind, keys = classify(shown.replace(".", "_"), names, package.context)
+        if ros1 and kind == "unknown" and top in ROS1_PACKAGES:  # rospy in a catkin package
+            kind, keys = "ros", (top,)
         if ros1 and kind == "ros":
             keys = _ros1_keys(top, keys)
         yield Need(module, imported, shown, kind, keys)
