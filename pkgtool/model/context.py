@@ -127,6 +127,8 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
         parts = path.split("/")
         if parts[-1] == "__init__.py" and _is_module(parts[:-1]):
             modules.add(parts[-2])
+        elif path == f"{name}.py":  # py_modules=['<name>']: a module named like the package
+            modules.add(name)
         elif parts[0] in _KINDS and len(parts) <= _DEPTH + 1:
             kind_and_stem = interface_file(path)
             if kind_and_stem is not None:

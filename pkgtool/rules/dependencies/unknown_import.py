@@ -29,8 +29,9 @@ def unknown_import(package: Package) -> Iterator[Hit]:
     (released for the target distribution, or ROS by name), and not a module that rosdep's
     data maps to a key (the pip and Debian names in rosdistro's `python.yaml`), unless a key
     that looks like it (`python3-<name>`, `python3-<name>-pip` or the bare name) is
-    declared. The suggested key
-    is a guess from the module name. ROS 1 modules (`rospy`, `tf`) are reported as such.
+    declared. The suggested key is a guess from the module name. ROS 1 modules (`rospy`,
+    `tf`) are reported as such, and so is the name of a package of the workspace that
+    installs no Python package (a CMake package without `ament_python_install_package`).
 
     ## Why is this bad?
     An import that package.xml does not cover fails on a clean machine, but pip and rosdep
@@ -61,7 +62,15 @@ def unknown_import(package: Package) -> Iterator[Hit]:
                    if need.kind == "unknown" and not any(k in available for k in need.keys))
         for need, others in grouped(unknown):
             related = tuple(other.imported.span for other in others)
-            if need.top in ROS1_PACKAGES:
+            if need.top in package.context.workspace and need.top != package.name:
+                yield Hit(need.imported.span,
+                          f"`{need.top}` is a package of the workspace, but it installs no "
+                          f"Python package of that name{also_imported(others)}: the import "
+                          "raises ModuleNotFoundError",
+                          f"Install `{need.top}`'s Python code (`ament_python_install_package("
+                          f"{need.top})` in a CMake package), or import what it does install",
+                          related)
+            elif need.top in ROS1_PACKAGES:
                 yield Hit(need.imported.span, f"`{need.top}` is a ROS 1 module: ROS 2 does not "
                           f"have it{also_imported(others)}",
                           f"Port the code to {ROS1_PACKAGES[need.top]}", related)
