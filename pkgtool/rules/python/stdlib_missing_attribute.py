@@ -20,7 +20,7 @@ def _missing(module: str, name: str) -> tuple[bool, str | None]:
     """Whether ``module`` (one the table lists) certainly lacks ``name``, and the name a typo
     away it has. On a platform-dependent module only a typo of a name it has counts."""
     names, portable = stdlib_names()[module]
-    if name in names or name.startswith("_"):
+    if name in names or name.startswith("_") or name == "*":  # `from math import *`
         return False, None
     meant = typo_of(name, names)
     return portable or meant is not None, meant
