@@ -9,7 +9,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import keys_for_import, stdlib_modules
-from pkgtool.model.installed import installed_modules
+from pkgtool.model.installed import installed_data, installed_modules
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
@@ -27,7 +27,9 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports unguarded absolute imports (`import helpers`, `from helpers import x`) in modules
     that setup.py installs, when `helpers.py` (or a `helpers/` package) sits in the same
-    folder and is not itself installed as a top-level module. Names of the standard library,
+    folder and is not itself installed as a top-level module (nor copied by data_files into
+    `lib/<package>`, beside the console scripts, whose folder Python puts first on the
+    path). Names of the standard library,
     of package.xml's dependencies and of third-party modules whose rosdep key package.xml
     declares are left alone (a `visualization.py` beside the module, with no
     `autolab-visualization-pip` declared, is the module meant), and so is
@@ -68,7 +70,8 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
         return
     modules = {module.path: module for module in package.modules}
     top_level = {name.split(".")[0] for name in installed}
-    skip = top_level | stdlib_modules(package.context.distro) | declared(package, ANY).keys()
+    skip = top_level | stdlib_modules(package.context.distro) | declared(package, ANY).keys() | \
+        _beside_the_scripts(package)
     scripts = console_script_files(package)
     for module in installed_code(package):
         folder = posixpath.dirname(module.path)
@@ -102,6 +105,14 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
             yield Hit(imported.span, f"`{top}` is a module next to `{module.path}`, not a "
                                      f"top-level module: the import fails once installed",
                       f"Import `{parent}.{top}` (or `.{top}`) instead")
+
+
+def _beside_the_scripts(package: Package) -> set[str]:
+    """Modules data_files copies into ``lib/<package>``, the folder of the console scripts:
+    Python puts a script's folder first on the path, so they import by their bare names."""
+    library = f"lib/{package.name}/"
+    return {posixpath.basename(target)[:-3] for target in installed_data(package) or ()
+            if posixpath.normpath(target).startswith(library) and target.endswith(".py")}
 
 
 def _third_party_meant(package: Package, folder: str, imported: Import,
