@@ -173,6 +173,7 @@ def load_package(root: Path, context: Context | None = None) -> Package:
 
 _LAUNCH_XML = re.compile(r"\s*(?:<\?xml[^>]*\?>\s*)?(?:<!--.*?-->\s*)*<launch[\s>/]", re.S)
 _LAUNCH_YAML = re.compile(r"^launch\s*:", re.M)
+_LAUNCH_FUNCTION = re.compile(r"^def generate_launch_description\s*\(", re.M)
 
 
 def is_test_material(relpath: str) -> bool:
@@ -200,18 +201,22 @@ def is_test_data(relpath: str) -> bool:
 
 def _launch_by_content(relpath: str, text_of: Callable[[str], str | None],
                        nested: frozenset[str]) -> bool:
-    """An XML or YAML file in a ``launch`` folder (not a template) whose root is ``launch``,
-    whatever its name.
+    """A file in a ``launch`` folder (not a template) that is a launch file by its content,
+    whatever its name: XML or YAML whose root is ``launch``, Python defining
+    ``generate_launch_description`` (``lab5-launch.py``, ``bringup.py``).
 
     ``ros2 launch`` accepts any file name; only files in a folder named ``launch`` are read
     for this, so URDF, RViz and parameter files elsewhere cost nothing.
     """
-    if "launch" not in relpath.split("/")[:-1] or not relpath.endswith((".xml", ".yaml", ".yml")) \
-            or is_template(relpath) or below(relpath, nested):
+    if "launch" not in relpath.split("/")[:-1] or \
+            not relpath.endswith((".xml", ".yaml", ".yml", ".py")) or \
+            is_template(relpath) or below(relpath, nested):
         return False
     text = text_of(relpath)
     if text is None:
         return False
+    if relpath.endswith(".py"):
+        return _LAUNCH_FUNCTION.search(text) is not None and not is_launch_test(relpath, text)
     if relpath.endswith(".xml"):
         return _LAUNCH_XML.match(text) is not None
     return _LAUNCH_YAML.search(text) is not None
