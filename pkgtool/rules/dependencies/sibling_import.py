@@ -14,7 +14,7 @@ from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.rules.imports import (ANY, console_script_files, declared, enclosing_package_import,
-                                   installed_code, python_package_of)
+                                   installed_code, path_modules, python_package_of)
 from pkgtool.rules.registry import rule
 
 
@@ -80,10 +80,12 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
             continue
         own_name = posixpath.basename(module.path)[:-3]
         exempt: bool | None = None  # worked out at the first import that would be reported
+        on_path = path_modules(package, module)
         for imported in module.imports:
             top = imported.top_level
-            if imported.guarded or not top or top in skip:
-                continue
+            if imported.guarded or not top or top in skip or any(
+                    line < imported.span.line and top in names for line, names in on_path):
+                continue  # a folder the module puts on sys.path first holds it
             inside = enclosing_package_import(package, parent, imported)
             sibling = None if inside else next(
                 (f for f in (f"{folder}/{top}.py", f"{folder}/{top}/__init__.py")
