@@ -128,10 +128,11 @@ def load_package(root: Path, context: Context | None = None) -> Package:
     modules: list[PythonModule] = []
     launches: list[LaunchFile] = []
     folders, nested = python_folders(files), nested_packages(files)
+    shared = _shared_sources(setup_py)
     for relpath in files:
         if is_launch_file(relpath, folders, nested) and \
                 not is_launch_test(relpath, text_of(relpath)) or \
-                _launch_by_content(relpath, text_of, nested):
+                _launch_by_content(relpath, text_of, nested, shared):
             text = text_of(relpath)
             if text is not None:
                 launch = parse_launch(relpath, text)
@@ -199,11 +200,22 @@ def is_test_data(relpath: str) -> bool:
     return is_test_material(relpath) and not collected
 
 
+def _shared_sources(setup_py: SetupPy | ParseProblem | None) -> frozenset[str]:
+    """The files data_files copies into ``share/``, as far as it was evaluated."""
+    if not isinstance(setup_py, SetupPy):
+        return frozenset()
+    return frozenset(match for entry in setup_py.data_files or ()
+                     if entry.destination.lstrip("/").startswith("share/")
+                     and not entry.sources_is_text
+                     for source in entry.sources for match in source.matches)
+
+
 def _launch_by_content(relpath: str, text_of: Callable[[str], str | None],
-                       nested: frozenset[str]) -> bool:
+                       nested: frozenset[str], shared: frozenset[str]) -> bool:
     """A file in a ``launch`` folder (not a template) that is a launch file by its content,
     whatever its name: XML or YAML whose root is ``launch``, Python defining
-    ``generate_launch_description`` (``lab5-launch.py``, ``bringup.py``).
+    ``generate_launch_description`` that data_files installs in ``share/`` (``lab5-launch.py``;
+    not a module beside the launch files, nor a copy kept aside: ``launch_old.py``).
 
     ``ros2 launch`` accepts any file name; only files in a folder named ``launch`` are read
     for this, so URDF, RViz and parameter files elsewhere cost nothing.
@@ -216,7 +228,8 @@ def _launch_by_content(relpath: str, text_of: Callable[[str], str | None],
     if text is None:
         return False
     if relpath.endswith(".py"):
-        return _LAUNCH_FUNCTION.search(text) is not None and not is_launch_test(relpath, text)
+        return relpath in shared and _LAUNCH_FUNCTION.search(text) is not None and \
+            not is_launch_test(relpath, text)
     if relpath.endswith(".xml"):
         return _LAUNCH_XML.match(text) is not None
     return _LAUNCH_YAML.search(text) is not None
