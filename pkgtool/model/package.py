@@ -143,7 +143,8 @@ def load_package(root: Path, context: Context | None = None) -> Package:
             if is_test_yaml(relpath):
                 continue  # test data, deliberately broken at times: not package files
             text = text_of(relpath)
-            if text is not None and "{%" not in text:  # a Jinja template is not YAML yet
+            if text is not None and "{%" not in text and \
+                    not text.startswith(_OPENCV_STORAGE):  # a Jinja template, OpenCV's own
                 found = yaml_problem(relpath, text)
                 if isinstance(found, ParseProblem):
                     problems.append(found)
@@ -174,6 +175,9 @@ def load_package(root: Path, context: Context | None = None) -> Package:
 
 _LAUNCH_XML = re.compile(r"\s*(?:<\?xml[^>]*\?>\s*)?(?:<!--.*?-->\s*)*<launch[\s>/]", re.S)
 _LAUNCH_YAML = re.compile(r"^launch\s*:", re.M)
+_OPENCV_STORAGE = ("%YAML:", "\ufeff%YAML:")
+"""How OpenCV's ``FileStorage`` files start (``%YAML:1.0``): a format of OpenCV's that YAML
+parsers refuse, read by ``cv2.FileStorage`` (ORB-SLAM's camera settings), never by ROS."""
 _LAUNCH_FUNCTION = re.compile(r"^def generate_launch_description\s*\(", re.M)
 
 
