@@ -241,6 +241,15 @@ class _Reader(ast.NodeVisitor):
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
             package = self.value(_keyword(node, "package") or first, depth + 1, top)
             return Share(package, "", name in SHARE_LOOKUPS) if isinstance(package, str) else None
+        if name == "find" and isinstance(node.func, ast.Attribute) and \
+                isinstance(node.func.value, ast.Call) and \
+                _name(node.func.value.func) in ("FindPackageShare", "FindPackagePrefix"):
+            # FindPackageShare('pkg').find('pkg'): the folder, found when the line runs
+            looked_up = self.value(first or node.func.value, depth + 1, top)
+            if isinstance(looked_up, Share):
+                return looked_up
+            return Share(looked_up, "", _name(node.func.value.func) == "FindPackageShare") \
+                if isinstance(looked_up, str) else None
         if name in JOINS:
             items = [self.value(a, depth + 1, top) for a in node.args]
             if isinstance(node.func, ast.Attribute) and name == "joinpath":
