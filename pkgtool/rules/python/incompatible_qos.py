@@ -1,4 +1,4 @@
-"""PYC022: a subscription whose QoS asks more than a publisher of its topic offers."""
+"""PYC022: a subscription whose QoS asks more than every publisher of its topic offers."""
 
 from __future__ import annotations
 
@@ -26,7 +26,7 @@ def _conflicts(publisher: Endpoint, subscription: Endpoint) -> list[str]:
       fix="Make the subscription's policy no stricter than the publisher's (e.g. both "
           "`qos_profile_sensor_data`, or a reliable publisher)")
 def incompatible_qos(package: Package) -> Iterator[Hit]:
-    """A subscription's QoS requests a policy that a publisher of its topic does not offer.
+    """A subscription's QoS requests a policy that no publisher of its topic offers.
 
     ## What it does
     Pairs publishers and subscriptions of the package by topic name as PYC021 does, and
@@ -36,7 +36,9 @@ def incompatible_qos(package: Package) -> Iterator[Hit]:
     `QoSProfile(...)` with its policies given as `ReliabilityPolicy.X` /
     `DurabilityPolicy.X` (directly or through a name bound once and never changed).
     Reports a subscription that requests `RELIABLE` from a `BEST_EFFORT` publisher, or
-    `TRANSIENT_LOCAL` from a `VOLATILE` one.
+    `TRANSIENT_LOCAL` from a `VOLATILE` one, when every publisher of the topic in the
+    package is such (one it matches is enough: DDS connects pairs, and separate demos of
+    one topic each have their own).
 
     ## Why is this bad?
     DDS connects a publisher and a subscription only when the offered QoS satisfies the
@@ -57,11 +59,11 @@ def incompatible_qos(package: Package) -> Iterator[Hit]:
     """
     for publishers, subscriptions in by_topic(package):
         for subscription in subscriptions:
-            for publisher in publishers:
-                conflicts = _conflicts(publisher, subscription)
-                if conflicts:
-                    yield Hit(subscription.qos_span,
-                              f"The subscription to `{subscription.topic}` requests "
-                              f"{' and '.join(conflicts)}: they never connect",
-                              related=(publisher.qos_span,))
-                    break
+            conflicts = [_conflicts(publisher, subscription) for publisher in publishers]
+            if conflicts and all(conflicts):  # one publisher it matches is enough
+                others = " (and no other publisher of the package offers what it asks)" \
+                    if len(publishers) > 1 else ""
+                yield Hit(subscription.qos_span,
+                          f"The subscription to `{subscription.topic}` requests "
+                          f"{' and '.join(conflicts[0])}{others}: they never connect",
+                          related=tuple(p.qos_span for p in publishers))
