@@ -16,9 +16,9 @@ from typing import Any
 from pkgtool.model.ast_nodes import child_nodes, descendants
 from pkgtool.model.launch import COMMAND_PACKAGES, FileRef, NodeRef, PackageRef
 from pkgtool.model.launch_remaps import not_pairs
-from pkgtool.model.launch_scopes import (bindings, import_origins, overwritten_calls,
-                                         read_only_by, scope_nodes, unread_attribute_calls,
-                                         unread_calls)
+from pkgtool.model.launch_scopes import (bindings, import_origins, overwritten_values,
+                                         read_only_by, scope_nodes, unread_attribute_values,
+                                         unread_values, unread_module_values)
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import depends_on_ros_distro
 from pkgtool.records import record
@@ -83,7 +83,7 @@ _METHODS: dict[type, Callable[[_Reader, Any], None]] = {}
 
 
 class _Reader(ast.NodeVisitor):
-    def __init__(self, path: str, tree: ast.Module) -> None:
+    def __init__(self, path: str, tree: ast.Module, exported: frozenset[str]) -> None:
         self.path = path
         self.scopes = [bindings(scope_nodes(tree.body), None)]
         self.cache: list[dict[str, Value]] = [{}]
@@ -94,7 +94,8 @@ class _Reader(ast.NodeVisitor):
         self.origins = import_origins(tree)
         self.optional = 0  # > 0 inside a block that runs only if some package is installed
         self.distro_branches = 0  # > 0 inside a branch of a test on the ROS distribution
-        self.unread = unread_attribute_calls(tree)  # calls whose value is never read
+        self.unread: set[ast.expr] = unread_attribute_values(tree)  # values never read
+        self.unread_paths = unread_module_values(tree, exported)  # and module-level ones
         self.dead = 0  # > 0 inside a node action that is never started
 
     def _span(self, node: ast.AST) -> Span:
@@ -127,9 +128,10 @@ class _Reader(ast.NodeVisitor):
         nodes = scope_nodes(node.body)
         self.scopes.append(bindings(nodes, node.args))
         self.cache.append({})
-        unread = unread_calls(node, nodes) | overwritten_calls(node, nodes)
-        dead = {call for call in unread if self._action(call.func) in NODE_ACTIONS |
-                PLUGIN_ACTIONS or _name(call.func) == "ExecuteProcess"}
+        unread = unread_values(node, nodes) | overwritten_values(node, nodes)
+        dead = {call for call in unread if isinstance(call, ast.Call) and (
+            self._action(call.func) in NODE_ACTIONS | PLUGIN_ACTIONS or
+            _name(call.func) == "ExecuteProcess")}
         self.unread.update(unread, read_only_by(node, nodes, dead) if dead else ())
         for statement in node.body:
             self.visit(statement)
@@ -487,7 +489,7 @@ class _Reader(ast.NodeVisitor):
     def _record_path(self, node: ast.expr) -> None:
         """Record the share file ``node`` names, unless nothing ever uses the path: it is the
         value of a local name never read, or inside a node action never started."""
-        if node in self.unread or self.dead:
+        if node in self.unread or node in self.unread_paths or self.dead:
             return
         found = self.value(node)
         if isinstance(found, Share) and found.share and found.parts:
@@ -599,10 +601,12 @@ def _extends(longer: FileRef, prefix: FileRef, appended_to: bool) -> bool:
         whole.startswith(start + "/") or (appended_to and whole.startswith(start)))
 
 
-def read_python_launch(path: str, tree: ast.Module) -> tuple[
-        tuple[NodeRef, ...], tuple[PackageRef, ...], tuple[FileRef, ...]]:
-    """The nodes, package lookups and share files of a parsed Python launch file."""
-    reader = _Reader(path, tree)
+def read_python_launch(path: str, tree: ast.Module, exported: frozenset[str] = frozenset()
+                       ) -> tuple[tuple[NodeRef, ...], tuple[PackageRef, ...],
+                                  tuple[FileRef, ...]]:
+    """The nodes, package lookups and share files of a parsed Python launch file (or module:
+    ``exported`` are the names other modules may import from it)."""
+    reader = _Reader(path, tree, exported)
     reader.visit(tree)
     files = [f for f in reader.files if not any(
         _extends(o, f, (f.package, f.parts) in reader.extended) for o in reader.files)]

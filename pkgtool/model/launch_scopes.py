@@ -57,15 +57,17 @@ def scope_nodes(body: list[ast.stmt]) -> list[ast.AST]:
 
 SCOPE_READERS = frozenset({"locals", "vars", "eval", "exec"})
 """Calls that may read any local name of the function making them."""
+PATH_VALUES = (ast.Call, ast.BinOp, ast.JoinedStr)
+"""The expressions that build a path (``join(...)``, ``share + '/a.yaml'``, an f-string)."""
 
 
-def unread_calls(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[ast.AST]
-                 ) -> set[ast.Call]:
-    """Calls that are the whole value of an assignment to a local name ``function`` never
-    reads: no load of the name anywhere in it (nested functions included), no ``del``, no
-    ``global`` or ``nonlocal`` declaration, no ``locals()``, ``vars()``, ``eval`` or ``exec``
-    in it, and no ``:=`` inside the call (the value it names may be read). ``nodes`` are the
-    :func:`scope_nodes` of its body."""
+def unread_values(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[ast.AST]
+                  ) -> set[ast.expr]:
+    """Path-building values (:data:`PATH_VALUES`) of assignments to a local name ``function``
+    never reads: no load of the name anywhere in it (nested functions included), no ``del``,
+    no ``global`` or ``nonlocal`` declaration, no ``locals()``, ``vars()``, ``eval`` or
+    ``exec`` in it, and no ``:=`` inside the value (the value it names may be read).
+    ``nodes`` are the :func:`scope_nodes` of its body."""
     read: set[str] = set()
     for node in subtree(function):
         if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Store):
@@ -76,15 +78,37 @@ def unread_calls(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[a
                 node.func.id in SCOPE_READERS:
             return set()
     return {node.value for node in nodes
-            if simple_assignment(node) and isinstance(node.value, ast.Call)
+            if simple_assignment(node) and isinstance(node.value, PATH_VALUES)
             and node.targets[0].id not in read  # type: ignore[attr-defined]
             and not any(isinstance(n, ast.NamedExpr) for n in descendants(node.value))}
 
 
-def overwritten_calls(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[ast.AST]
-                      ) -> set[ast.Call]:
-    """Calls that are the whole value of an assignment to a local name which the next
-    statement of the same block naming it binds again without reading it (``path =
+def unread_module_values(tree: ast.Module, exported: frozenset[str]) -> set[ast.expr]:
+    """Path-building values (:data:`PATH_VALUES`) of module-level ``name = value`` statements
+    whose name nothing in the module reads (nor declares ``global``, nor lists in
+    ``__all__``) and that is not among the ``exported`` names other modules import; none
+    when the module may read its names indirectly (``globals()``, ``vars()``, ``eval``)."""
+    read = set(exported)
+    for node in nodes_of_class(tree, ast.Name, ast.Global, ast.Nonlocal, ast.Call, ast.Constant):
+        if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Store):
+            read.add(node.id)
+        elif isinstance(node, (ast.Global, ast.Nonlocal)):
+            read.update(node.names)
+        elif isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and \
+                node.func.id in SCOPE_READERS | {"globals"}:
+            return set()
+        elif isinstance(node, ast.Constant) and isinstance(node.value, str):
+            read.add(node.value)  # `__all__ = ['CONFIG']`, getattr(module, 'CONFIG')
+    return {node.value for node in tree.body
+            if simple_assignment(node) and isinstance(node.value, PATH_VALUES)
+            and node.targets[0].id not in read  # type: ignore[attr-defined]
+            and not any(isinstance(n, ast.NamedExpr) for n in descendants(node.value))}
+
+
+def overwritten_values(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[ast.AST]
+                       ) -> set[ast.expr]:
+    """Path-building values (:data:`PATH_VALUES`) of assignments to a local name which the
+    next statement of the same block naming it binds again without reading it (``path =
     join(...)`` then ``path = '/opt/x'``): values never used. Names a nested function reads,
     and functions that may read their own scope (``locals()``...), are left out. ``nodes``
     are the :func:`scope_nodes` of its body."""
@@ -105,10 +129,10 @@ def overwritten_calls(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: l
                                     if isinstance(n, ast.Name)}
         return named[id(statement)]
 
-    found: set[ast.Call] = set()
+    found: set[ast.expr] = set()
     for block in _blocks(function, nodes):
         for at, statement in enumerate(block):
-            if not simple_assignment(statement) or not isinstance(statement.value, ast.Call) \
+            if not simple_assignment(statement) or not isinstance(statement.value, PATH_VALUES) \
                     or statement.targets[0].id in held:  # type: ignore[attr-defined]
                 continue
             name = statement.targets[0].id  # type: ignore[attr-defined]
@@ -131,9 +155,9 @@ def _blocks(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[ast.AS
     return blocks
 
 
-def unread_attribute_calls(tree: ast.Module) -> set[ast.Call]:
-    """Calls that are the whole value of ``self.x = ...`` where the module never reads an
-    attribute ``x`` (nor names a function ``x``, nor reads ``getattr(..., 'x')`` or
+def unread_attribute_values(tree: ast.Module) -> set[ast.expr]:
+    """Path-building values (:data:`PATH_VALUES`) of ``self.x = ...`` where the module never
+    reads an attribute ``x`` (nor names a function ``x``, nor reads ``getattr(..., 'x')`` or
     ``__dict__``): values stored and never used."""
     read: set[str] = set()
     stores: list[ast.Assign] = []
@@ -148,7 +172,7 @@ def unread_attribute_calls(tree: ast.Module) -> set[ast.Call]:
             read.update(a.value for a in node.args[1:2]
                         if isinstance(a, ast.Constant) and isinstance(a.value, str))
         elif isinstance(node, ast.Assign) and len(node.targets) == 1 and \
-                isinstance(node.value, ast.Call) and _on_self(node.targets[0]):
+                isinstance(node.value, PATH_VALUES) and _on_self(node.targets[0]):
             stores.append(node)
     if "__dict__" in read:
         return set()
@@ -177,11 +201,11 @@ def import_origins(tree: ast.Module) -> dict[str, set[str]]:
 
 
 def read_only_by(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[ast.AST],
-                 dead: set[ast.Call]) -> set[ast.Call]:
-    """Calls that are the whole value of an assignment to a local name whose every read is
-    inside one of the ``dead`` calls (node actions never started), and so on for the names
+                 dead: set[ast.expr]) -> set[ast.expr]:
+    """Path-building values of assignments to a local name whose every read is inside one
+    of the ``dead`` calls (node actions never started), and so on for the names
     those feed: the values never used. ``nodes`` are the :func:`scope_nodes` of its body."""
-    found: set[ast.Call] = set()
+    found: set[ast.expr] = set()
     inside = {id(n) for call in dead for n in descendants(call)}
     while True:
         reads: dict[str, bool] = {}  # name -> every read is inside a dead call
@@ -189,7 +213,7 @@ def read_only_by(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[a
             if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Store):
                 reads[node.id] = reads.get(node.id, True) and id(node) in inside
         more = {node.value for node in nodes
-                if simple_assignment(node) and isinstance(node.value, ast.Call)
+                if simple_assignment(node) and isinstance(node.value, PATH_VALUES)
                 and reads.get(node.targets[0].id)  # type: ignore[attr-defined]
                 and node.value not in found}
         if not more:

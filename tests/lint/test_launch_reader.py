@@ -2,11 +2,13 @@
 
 from __future__ import annotations
 
+import ast
 import textwrap
 
 import pytest
 
 from pkgtool.model.launch import LaunchFile, is_launch_file
+from pkgtool.model.launch_python import read_python_launch
 from pkgtool.model.launch_reader import read_launch
 
 
@@ -114,6 +116,7 @@ def test_python_path_join_substitution_and_pathlib() -> None:
         urdf = PathJoinSubstitution([FindPackageShare('desc'), 'urdf', 'robot.urdf'])
         rviz = Path(get_package_share_directory('desc')) / 'rviz' / 'view.rviz'
         world = get_package_share_path('sim') / 'worlds/empty.world'
+        use(urdf, rviz, world)
         """)
     assert _files(launch) == [("desc", ("urdf", "robot.urdf"), 3),
                               ("desc", ("rviz", "view.rviz"), 4),
@@ -126,8 +129,23 @@ def test_python_concatenation_and_f_strings() -> None:
         a = share + '/config/a.yaml'
         b = f'{share}/config/b.yaml'
         c = share + 'config'
+        use(a, b, c)
         """)
     assert _files(launch) == [("demo", ("config", "a.yaml"), 3), ("demo", ("config", "b.yaml"), 4)]
+
+
+def test_python_module_level_paths_nothing_reads_are_not_read() -> None:
+    text = textwrap.dedent("""
+        share = get_package_share_directory('demo')
+        LEGACY = share + '/config/legacy.yaml'
+        TABLE = os.path.join(share, 'config', 'table.yaml')
+        USED = os.path.join(share, 'config', 'used.yaml')
+        print(USED)
+        """)
+    tree = ast.parse(text)
+    assert [f.parts for f in read_python_launch("m.py", tree)[2]] == [("config", "used.yaml")]
+    exported = [f.parts for f in read_python_launch("m.py", tree, frozenset({"TABLE"}))[2]]
+    assert exported == [("config", "table.yaml"), ("config", "used.yaml")]
 
 
 def test_python_include_launch_description() -> None:
@@ -146,6 +164,7 @@ def test_python_directory_refs_are_dropped_when_a_file_below_is_used() -> None:
     launch = _py("""
         config = os.path.join(get_package_share_directory('demo'), 'config')
         params = os.path.join(config, 'params.yaml')
+        use(params)
         """)
     assert _files(launch) == [("demo", ("config", "params.yaml"), 3)]
 

@@ -100,7 +100,18 @@ def _share_reads(package: Package, shared: set[str]
                                 not (searched and ref.parts and "." not in ref.parts[-1]))
     for module, tree, index in installed_trees(package):
         if index.imports_from("ament_index_python") and not _checks_files(index):
-            yield module.path, read_python_launch(module.path, tree)[2]
+            yield module.path, read_python_launch(module.path, tree, _imported_names(package))[2]
+
+
+@per_package
+def _imported_names(package: Package) -> frozenset[str]:
+    """Every name a module of the package may take from another: those ``from`` imports name
+    and every attribute read (``config.MAP_PATH``)."""
+    names = {name for module in package.modules for imported in module.imports
+             for name in imported.names}
+    names.update(node.attr for _, _, index in installed_trees(package)
+                 for node in index.attributes)
+    return frozenset(names)
 
 
 _EXISTENCE = frozenset({"exists", "isfile", "is_file", "isdir", "is_dir", "lexists",

@@ -35,7 +35,8 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     `os.path.isdir`, `Path.exists()`: it handles a missing one, as a model it downloads) or
     makes folders (`os.makedirs`) is left alone. A path the code builds but never uses (the
     value of a local name never read, read only by nodes it never starts, or replaced
-    before any use; or stored in `self.x` that the module never reads) is not read either.
+    before any use; of a module-level name nothing reads or imports; or stored in `self.x`
+    that the module never reads) is not read either.
 
     ## Why is this bad?
     Nothing can install a file the package does not have: `ros2 launch` fails on the missing
