@@ -247,7 +247,8 @@ def test_launch_package_fix_adds_the_package_named_never_the_package_itself(
     assert "<exec_depend>pkg</exec_depend>" not in fixed
     left = [f.message for f in run([str(src)], options=options).findings if f.code == "LCH002"]
     assert left == ["`stage_sim` is used by a launch file but not declared in package.xml, "
-                    "and no package of the workspace or of jazzy's release has that name"]
+                    "and no package of jazzy's release or of the packages linted with it has "
+                    "that name"]
 
 
 def test_a_dozen_missing_dependencies_are_all_declared_in_one_run(tmp_path: Path) -> None:

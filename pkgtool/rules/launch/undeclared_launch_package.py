@@ -23,8 +23,9 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
     XML and YAML launch files, the package of `ExecutableInPackage(exe, pkg)` and
     `$(exec-in-pkg exe pkg)`, and `xacro`'s package for a command substitution running it
     (`Command(['xacro ', path])`, `$(command 'xacro ...')`). A name that is no package of
-    the workspace or of the target's release is said so, with the package (of the workspace,
-    this one or the release) it is a typo of, if any. Each one other than this
+    the target's release nor of the packages linted with it (the workspace pkgtool sees) is
+    said so, with the package (of the workspace, this one or the release) it is a typo of,
+    if any. Each one other than this
     package must be an `<exec_depend>` or `<depend>` (a `<test_depend>` for launch files
     under `test/`), or be brought in by a released metapackage declared so (`ros2_control`
     brings `controller_manager`;
@@ -73,8 +74,10 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
                     name, package.context.distro, limit=3,
                     extra=frozenset((*package.context.workspace, package.name)))
                     if not digits_differ(name, close)]
-                missing += (f", and no package of the workspace or of "
-                            f"{package.context.distro}'s release has that name")
+                linted = " or of the packages linted with it" \
+                    if len(package.context.workspace) > 1 else ""
+                missing += (f", and no package of {package.context.distro}'s release{linted} "
+                            "has that name")
                 missing += f" (did you mean `{meant[0]}`?)" if meant else ""
                 fix = f"Write `{meant[0]}`" if meant else "Check the name; declare the " \
                     "package if a workspace it is built in provides it"
