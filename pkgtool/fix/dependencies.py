@@ -58,10 +58,30 @@ def _add(doc: ManifestDoc, tag: str, key: str) -> Iterator[Fix | Refusal]:
     return offer(f"Add `<{tag}>{key}</{tag}>`", lambda: doc.add(tag, key))
 
 
-@fixer("DEP001", "Add an `<exec_depend>` with the rosdep key")
+@fixer("DEP001", "Add an `<exec_depend>` with the rosdep key; spell a misspelt package right")
 def undeclared(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
-    """Declare each import's rosdep key for run time."""
-    yield from _declare(package, findings, unmet_runtime_needs(package), "exec_depend")
+    """Declare each import's rosdep key for run time, and write the package a ``from``
+    import misspells as the one the finding names (``from sensors_msgs.msg import Imu``
+    becomes ``from sensor_msgs.msg import Imu``). Safe: that import raised. ``import
+    sensors_msgs.msg``, whose uses would change too, needs the user."""
+    misspelt = [f for f in findings if _MEANT.fullmatch(f.fix or "")]
+    yield from _declare(package, [f for f in findings if f not in misspelt],
+                        unmet_runtime_needs(package), "exec_depend")
+    for doc, finding, nodes in python_nodes(package, misspelt):
+        meant = _MEANT.fullmatch(finding.fix or "")
+        statement = next((n for n in nodes if isinstance(n, ast.ImportFrom)), None)
+        if meant is None or statement is None or statement.level or not statement.module:
+            continue
+        wrong = statement.module.split(".")[0]
+        written = re.match(rf"from\s+({re.escape(wrong)})\b", doc.text[doc.start(statement):])
+        if written:
+            at = doc.start(statement) + written.start(1)
+            yield Fix(f"Import from `{meant[1]}`",
+                      (Edit(doc.source.path, at, at + len(wrong), meant[1]),))
+
+
+_MEANT = re.compile(r"Write `([A-Za-z_][A-Za-z0-9_]*)`")
+"""DEP001's help on an import of a misspelt package: the package meant."""
 
 
 @fixer("DEP002", "Make the build-only dependency `<depend>`, or add an `<exec_depend>`")

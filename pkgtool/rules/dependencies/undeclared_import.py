@@ -9,7 +9,8 @@ from pkgtool.model.manifest import Dependency
 from pkgtool.model.package import Package
 from pkgtool.rules.dependency_names import names_module, unknown_dependencies
 from pkgtool.rules.imports import (BUILD_ONLY, TEST, Need, also_imported, declared,
-                                   dependency_cause, grouped, misnamed, unmet_runtime_needs)
+                                   dependency_cause, grouped, misnamed, misspelt_package,
+                                   unmet_runtime_needs)
 from pkgtool.rules.registry import rule
 
 
@@ -66,6 +67,16 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
              if need.kind != "unknown" and not any(k in build_only for k in need.keys) and
              not any(names_module(key, need.imported.top_level) for key in unknown))
     for need, others in grouped(unmet, by_key=True):
+        meant = misspelt_package(package, need)
+        if meant is not None:
+            linted = " or of the packages linted with it" \
+                if len(package.context.workspace) > 1 else ""
+            yield Hit(need.imported.span,
+                      f"`{need.top}` is imported but no package of {package.context.distro}'s "
+                      f"release{linted} has that name (did you mean `{meant}`?): the import "
+                      f"raises ModuleNotFoundError{also_imported(others)}",
+                      f"Write `{meant}`", related=tuple(other.imported.span for other in others))
+            continue
         tops = _first_per_module((need, *others))
         yield Hit(need.imported.span,
                   _message(package, tops, tests) + also_imported(others, naming=len(tops) > 1),

@@ -10,7 +10,7 @@ from pkgtool.knowledge.ros_names import looks_like_ros
 from pkgtool.knowledge.rosdep import ALTERNATIVE_KEYS, ROS_MODULE_PACKAGES, brought_in
 from pkgtool.knowledge.rosdistro import modules_of_key
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import RUNTIME, all_python, declared, needs
+from pkgtool.rules.imports import RUNTIME, all_python, declared, misspelt_package, needs
 from pkgtool.rules.registry import rule
 
 NEVER_IMPORTED = frozenset({
@@ -73,6 +73,7 @@ def unused_dependency(package: Package) -> Iterator[Hit]:
     for module in modules:
         for need in needs(package, module, guarded=None):
             used.update(need.keys)
+            used.add(misspelt_package(package, need) or "")  # `sensors_msgs` means it
     for launch in package.launch_files:
         used.update(n.package for n in launch.nodes if n.package)
         used.update(p.package for p in launch.packages)
