@@ -23,9 +23,9 @@ from pkgtool.knowledge.ros_names import looks_like_ros
 from pkgtool.knowledge.rosdep import (ALTERNATIVE_KEYS, ROS1_PACKAGES, ROS_MODULE_PACKAGES,
                                       accepted_keys, brought_in, package_for_ros_module,
                                       suggested_key)
-from pkgtool.knowledge.rosdistro import (any_stdlib_module, close_names, digits_differ,
-                                         is_released_package, key_resolves, keys_for_import,
-                                         stdlib_modules)
+from pkgtool.knowledge.rosdistro import (DISTROS, any_stdlib_module, close_names,
+                                         digits_differ, is_released_package, is_rosdep_key,
+                                         keys_for_import, stdlib_modules)
 from pkgtool.model.cmake_interfaces import installed_python_packages
 from pkgtool.model.context import Context
 from pkgtool.model.installed import (DATA_FOLDERS, installed_files, installed_modules,
@@ -511,13 +511,13 @@ def also_imported(others: tuple[Need, ...], *, naming: bool = False) -> str:
 
 def misspelt_package(package: Package, need: Need) -> str | None:
     """The package a ROS import names with a typo (``sensors_msgs`` for ``sensor_msgs``): a
-    name no package of the target's release, of the workspace or of package.xml has, nor a
-    rosdep key, a typo away from one of those (never a numbered sibling); else None."""
+    name no package of any distribution's release, of the workspace or of package.xml has,
+    nor a rosdep key, a typo away from one of those (never a numbered sibling); else None."""
     top, distro = need.top, package.context.distro
     workspace = package.context.workspace
-    if need.kind != "ros" or "." in top or top in workspace or \
-            is_released_package(top, distro) or key_resolves(top, distro):
-        return None
+    if need.kind != "ros" or "." in top or top in workspace or is_rosdep_key(top) or \
+            any(is_released_package(top, other) for other in DISTROS):
+        return None  # a package of another distribution is no typo
     names = frozenset((*workspace, *declared(package, ANY)))
     if top in names:
         return None
