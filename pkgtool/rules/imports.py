@@ -25,7 +25,7 @@ from pkgtool.knowledge.rosdep import (ALTERNATIVE_KEYS, ROS1_PACKAGES, ROS_MODUL
                                       suggested_key)
 from pkgtool.knowledge.rosdistro import (DISTROS, any_stdlib_module, close_names,
                                          digits_differ, is_released_package, is_rosdep_key,
-                                         keys_for_import, stdlib_modules)
+                                         keys_for_import, stdlib_modules, typo_distance)
 from pkgtool.model.cmake_interfaces import installed_python_packages
 from pkgtool.model.context import Context
 from pkgtool.model.installed import (DATA_FOLDERS, installed_files, installed_modules,
@@ -512,7 +512,9 @@ def also_imported(others: tuple[Need, ...], *, naming: bool = False) -> str:
 def misspelt_package(package: Package, need: Need) -> str | None:
     """The package a ROS import names with a typo (``sensors_msgs`` for ``sensor_msgs``): a
     name no package of any distribution's release, of the workspace or of package.xml has,
-    nor a rosdep key, a typo away from one of those (never a numbered sibling); else None."""
+    nor a rosdep key, one edit away from exactly one of those (never a numbered sibling: a
+    package built from another repository may well be called ``grbl_interfaces``); else
+    None."""
     top, distro = need.top, package.context.distro
     workspace = package.context.workspace
     if need.kind != "ros" or "." in top or top in workspace or is_rosdep_key(top) or \
@@ -522,8 +524,8 @@ def misspelt_package(package: Package, need: Need) -> str | None:
     if top in names:
         return None
     meant = [close for close in close_names(top, distro, extra=names, limit=3)
-             if not digits_differ(top, close)]
-    return meant[0] if meant else None
+             if not digits_differ(top, close) and typo_distance(top, close, 1) <= 1]
+    return meant[0] if len(meant) == 1 else None
 
 
 @per_package

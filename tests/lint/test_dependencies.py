@@ -9,7 +9,7 @@ import pytest
 from pkgtool.model.cmake_interfaces import installed_sources
 from pkgtool.model.context import Context, WorkspacePackage
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import classify, installed_code, needs, own_modules
+from pkgtool.rules.imports import classify, installed_code, misspelt_package, needs, own_modules
 from pkgtool.rules import test_modules
 from tests.helpers import MINIMAL_MANIFEST, codes, findings, make_package
 
@@ -307,3 +307,13 @@ def test_own_package_in_launch_files_is_never_undeclared(tmp_path: Path) -> None
                                   '<include file="$(find-pkg-share demo)/launch/b.launch.py"/>'
                                   "</launch>"})
     assert codes(package, "LCH001", "LCH002") == []
+
+
+def test_a_package_one_edit_from_a_released_one_is_a_typo_of_it(tmp_path: Path) -> None:
+    package = _package(tmp_path, {"demo/talker.py": (
+        "from sensors_msgs.msg import Imu\nfrom grbl_interfaces.msg import State\n"
+        "from turtlebot5_msgs.msg import Dock\n")}, "<exec_depend>sensor_msgs</exec_depend>")
+    module = next(m for m in package.modules if m.path == "demo/talker.py")
+    meant = {need.top: misspelt_package(package, need) for need in needs(package, module)}
+    assert meant == {"sensors_msgs": "sensor_msgs", "grbl_interfaces": None,
+                     "turtlebot5_msgs": None}  # two edits from rcl_interfaces; a number
