@@ -23,6 +23,21 @@ def _catches_import_error(handler: ast.ExceptHandler) -> bool:
                (t.id if isinstance(t, ast.Name) else t.attr) in _GUARD_EXCEPTIONS for t in types)
 
 
+_EXITS = frozenset({"exit", "quit", "_exit"})
+"""``sys.exit``, ``exit()``, ``quit()``, ``os._exit``: calls that end the program."""
+
+
+def _stops(handler: ast.ExceptHandler) -> bool:
+    """True for a handler that ends with ``raise`` or exits the program: the module cannot
+    run without what the ``try`` imports (``except ImportError: sys.exit('pip install x')``)."""
+    last = handler.body[-1] if handler.body else None
+    if isinstance(last, ast.Raise):
+        return True
+    call = last.value if isinstance(last, ast.Expr) else None
+    return isinstance(call, ast.Call) and isinstance(call.func, (ast.Name, ast.Attribute)) and \
+        (call.func.id if isinstance(call.func, ast.Name) else call.func.attr) in _EXITS
+
+
 def _is_type_checking(test: ast.expr) -> bool:
     return (isinstance(test, ast.Name) and test.id == "TYPE_CHECKING") or (
         isinstance(test, ast.Attribute) and test.attr == "TYPE_CHECKING")
@@ -54,7 +69,8 @@ def _guarded_parts(node: ast.AST, constants: dict[str, bool]) -> list[tuple[ast.
     """The statements directly inside ``node``, each with whether ``node`` guards its imports
     (they are guarded too when a block around ``node`` guards it)."""
     if isinstance(node, TRIES):
-        return (_block(node.body, any(_catches_import_error(h) for h in node.handlers))
+        return (_block(node.body, any(_catches_import_error(h) and not _stops(h)
+                                      for h in node.handlers))
                 + [(h, _catches_import_error(h)) for h in node.handlers]
                 + _block(node.orelse, False) + _block(node.finalbody, False))
     if isinstance(node, ast.If):
