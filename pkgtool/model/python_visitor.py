@@ -65,11 +65,14 @@ def _block(statements: list[ast.AST], guarded: bool) -> list[tuple[ast.AST, bool
     return parts
 
 
-def _guarded_parts(node: ast.AST, constants: dict[str, bool]) -> list[tuple[ast.AST, bool]]:
+def _guarded_parts(node: ast.AST, constants: dict[str, bool], at_top: bool
+                   ) -> list[tuple[ast.AST, bool]]:
     """The statements directly inside ``node``, each with whether ``node`` guards its imports
-    (they are guarded too when a block around ``node`` guards it)."""
+    (they are guarded too when a block around ``node`` guards it). A ``try`` at the top of
+    the module (``at_top``) whose handler stops the program guards nothing: the module cannot
+    be imported without what it imports (in a function or a branch, it is a feature's)."""
     if isinstance(node, TRIES):
-        return (_block(node.body, any(_catches_import_error(h) and not _stops(h)
+        return (_block(node.body, any(_catches_import_error(h) and not (at_top and _stops(h))
                                       for h in node.handlers))
                 + [(h, _catches_import_error(h)) for h in node.handlers]
                 + _block(node.orelse, False) + _block(node.finalbody, False))
@@ -119,8 +122,9 @@ def _guard_finder(tree: ast.Module, parents: dict[int, ast.AST]) -> Callable[[as
             parent = parents[id(node)]
             flags = blocks.get(id(parent))
             if flags is None:
+                at_top = parents.get(id(parent)) is tree
                 flags = blocks[id(parent)] = {
-                    id(part): flag for part, flag in _guarded_parts(parent, constants)}
+                    id(part): flag for part, flag in _guarded_parts(parent, constants, at_top)}
             if flags[id(node)]:
                 return True
             node = parent
