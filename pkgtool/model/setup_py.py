@@ -100,6 +100,7 @@ class SetupPy:
     extras_require: Value | None
     install_requires: Value | None
     unresolved: tuple[tuple[str, Unresolved], ...] = ()
+    scripts: tuple[str, ...] | None = None
 
     def is_unresolved(self, keyword: str) -> bool:
         """True when ``keyword`` was given but could not be evaluated."""

@@ -70,7 +70,8 @@ def _unreached_call(runner: Runner, module: ast.Module) -> SetupCall | None:
     return None
 
 
-_FIELDS = (*_VALUE_FIELDS, "packages", "package_dir", "py_modules", "data_files", "entry_points")
+_FIELDS = (*_VALUE_FIELDS, "packages", "package_dir", "py_modules", "data_files", "entry_points",
+           "scripts")
 
 
 def _setup_py(path: str, call: SetupCall | None, tree: Tree) -> SetupPy:
@@ -98,7 +99,7 @@ def _field(key: str, value: Any, span: Span, tree: Tree, source: Unresolved) -> 
         return _packages(value, span)
     if key == "package_dir":
         return _package_dir(value)
-    if key == "py_modules":
+    if key in ("py_modules", "scripts"):
         if not isinstance(value, (list, tuple)) or not all(isinstance(m, str) for m in value):
             raise Malformed(key)
         return tuple(str(m) for m in value)

@@ -16,14 +16,15 @@ an executable's."""
 def executables(package: Package, *, any_data: bool = False) -> frozenset[str] | None:
     """Names the package installs into ``lib/<package>``, or None when that cannot be known.
 
-    Console scripts of setup.py and setup.cfg count, and so do files that data_files copies
-    into ``lib/<package>``. A malformed console script (ENT001's), anything dynamic
-    (unevaluated keywords, ``scripts=``, a setup.cfg or pyproject.toml that did not parse or
-    may declare scripts) makes the answer unknown, and so does a package colcon builds with
-    CMake (another build type, or a CMakeLists.txt and none): CMake installs the executables
-    then. With ``any_data``, a data_files that could not be evaluated counts as installing
-    every file of the package into ``lib/<package>`` (data_files copies files under their own
-    names): the names that may be there, for telling a name that cannot be.
+    Console scripts of setup.py and setup.cfg count, and so do the ``scripts=`` setup.py
+    lists and files that data_files copies into ``lib/<package>``. A malformed console script
+    (ENT001's), anything dynamic (unevaluated keywords, ``scripts=`` included, a setup.cfg or
+    pyproject.toml that did not parse or may declare scripts) makes the answer unknown, and
+    so does a package colcon builds with CMake (another build type, or a CMakeLists.txt and
+    none): CMake installs the executables then. With ``any_data``, a data_files that could
+    not be evaluated counts as installing every file of the package into ``lib/<package>``
+    (data_files copies files under their own names): the names that may be there, for telling
+    a name that cannot be.
     """
     names = console_scripts(package)
     setup = package.setup_py
@@ -46,7 +47,8 @@ def console_scripts(package: Package) -> frozenset[str] | None:
     """The console scripts of setup.py and setup.cfg, or None when they cannot be known (see
     :func:`executables`)."""
     setup = package.setup_py
-    if setup is None or "scripts" in setup.keywords or package.has_file("pyproject.toml"):
+    if setup is None or "scripts" in setup.keywords and setup.scripts is None or \
+            package.has_file("pyproject.toml"):
         return None
     if not is_ament_python(package):
         return None  # CMake installs its executables; a setup.py beside it is not run
@@ -57,6 +59,7 @@ def console_scripts(package: Package) -> frozenset[str] | None:
     if not all(entry.valid for entry in setup.console_scripts):
         return None  # setuptools refuses the whole list (ENT001): nothing is installed
     names = {entry.name for entry in setup.console_scripts}
+    names.update(posixpath.basename(script) for script in setup.scripts or ())
     option = package.setup_cfg.get("options.entry_points", "console_scripts") \
         if package.setup_cfg else None
     if option is not None:
