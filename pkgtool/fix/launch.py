@@ -1,6 +1,7 @@
 """Fixers of launch files: node arguments ROS 2's launch rejects (renamed keywords and
 attributes, parameters not in a list), launch actions given arguments they reject, a
-misspelt executable, and a node started without its package."""
+misspelt executable, a node started without its package, and an action a stray comma makes
+a tuple."""
 
 from __future__ import annotations
 
@@ -280,3 +281,27 @@ def description_method(package: Package, findings: list[Finding]) -> Iterator[Fi
     yield from renames(package, findings,
                        re.compile(r"^`\w+` is a `LaunchDescription`, which has no `(\w+)`"),
                        before=".")
+
+
+@fixer("LCH018", "Remove the comma that makes a launch action a tuple")
+def action_tuple(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Delete the comma after ``node = Node(...)`` when the name is given to the launch as
+    an action. Safe: the launch failed with AttributeError on the tuple."""
+    for doc, finding, nodes in python_nodes(package, findings):
+        read = next((n for n in nodes if isinstance(n, ast.Name)), None)
+        line = _COMMA_LINE.search(finding.fix or "")
+        assignment = next((n for n in ast.walk(doc.tree) if read is not None and line and
+                           isinstance(n, ast.Assign) and isinstance(n.value, ast.Tuple) and
+                           n.value.end_lineno == int(line[1]) and len(n.value.elts) == 1 and
+                           isinstance(n.targets[0], ast.Name) and n.targets[0].id == read.id),
+                          None)
+        if assignment is None:
+            continue
+        item, whole = assignment.value.elts[0], assignment.value  # type: ignore[attr-defined]
+        if doc.text[doc.end(item):doc.end(whole)].strip() == ",":
+            yield Fix(f"Remove the comma after `{read.id}`'s action",  # type: ignore[union-attr]
+                      (Edit(doc.source.path, doc.end(item), doc.end(whole), ""),))
+
+
+_COMMA_LINE = re.compile(r"Remove the comma that ends line (\d+)")
+"""LCH018's help: the line the tuple's comma ends."""
