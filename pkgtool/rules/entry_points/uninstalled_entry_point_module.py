@@ -3,12 +3,14 @@
 from __future__ import annotations
 
 import posixpath
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.model.installed import why_not_installed
 from pkgtool.model.launch import python_folders
 from pkgtool.model.package import Package
+from pkgtool.model.setup_py import EntryPoint
 from pkgtool.rules.console_scripts import scripts_and_modules
 from pkgtool.rules.registry import rule
 
@@ -35,6 +37,27 @@ def _meant(package: Package, module: str, modules: dict[str, str]) -> str | None
     return near[0] if len(near) == 1 and root not in declared else None
 
 
+def _misspelt_root(package: Package, module: str, modules: dict[str, str]
+                   ) -> Callable[[EntryPoint], Hit] | None:
+    """How to report an entry whose top-level package is a typo of the one installed top-level
+    package so spelled (``artth.operator`` for ``arith``) that package.xml does not
+    declare, or None."""
+    root, _, rest = module.partition(".")
+    declared = {d.name for d in package.manifest.dependencies} if package.manifest else {root}
+    own = typo_of(root, {name.split(".")[0] for name in modules}) \
+        if root not in declared else None
+    if own is None:
+        return None
+    fixed = f"{own}.{rest}" if rest else own
+
+    def hit(entry: EntryPoint) -> Hit:
+        return Hit(entry.span, f"`{module}` is not installed: this package installs no `{root}` "
+                               f"(did you mean `{own}`?)",
+                   f"Write `{fixed}:{entry.attr or 'main'}`" if fixed in modules else
+                   f"Write `{own}` and the module's name")
+    return hit
+
+
 @rule("ENT002", "uninstalled-entry-point-module", Severity.ERROR,
       fix="Make setup.py install the module: list its package in `packages` (or use "
           "`find_packages()`), and give every package folder an `__init__.py`")
@@ -49,8 +72,9 @@ def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
     it. Modules outside this package's own top-level names are not judged, unless the name
     is an installed module without its package prefix (`talker` for `my_pkg.talker`), or
     with another package prefix that package.xml does not declare (`my_pkgs.talker`, or a
-    prefix copied from another package, for the one installed `my_pkg.talker`), or starts
-    with the name of one of the package's Python package folders below the top
+    prefix copied from another package, for the one installed `my_pkg.talker`), or a prefix
+    a typo away from the one installed package so spelled (`artth.talker` for `arith`), or
+    starts with the name of one of the package's Python package folders below the top
     (`nodes.talker` for a `my_pkg/nodes/` that holds no `talker`).
 
     ## Why is this bad?
@@ -82,7 +106,11 @@ def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
             if meant is not None:  # `talker:main` for the installed `my_pkg.talker`
                 yield Hit(entry.span, f"`{entry.module}` is not installed: the module is "
                                       f"`{meant}`", f"Write `{meant}:{entry.attr or 'main'}`")
-            if meant is not None or entry.module.split(".")[0] not in folders:
+            typo = None if meant else _misspelt_root(package, entry.module, modules)
+            if typo is not None:
+                yield typo(entry)
+            if meant is not None or typo is not None or \
+                    entry.module.split(".")[0] not in folders:
                 continue
         reason, exists = why_not_installed(package, entry.module)
         fix = None if exists else "Write the module, or point the entry at an existing one"
