@@ -19,7 +19,7 @@ from pkgtool.model.setup_cfg import SetupCfg, parse_setup_cfg
 from pkgtool.model.setup_py import SetupPy, parse_setup_py
 from pkgtool.model.span import ParseProblem
 from pkgtool.model.submodules import (GitIgnore, gitignore_patterns, ignores_above,
-                                      unfetched_submodules)
+                                      unfetched_names, unfetched_submodules)
 from pkgtool.records import field, record
 
 _PY_SUPPRESSION = re.compile(r"#\s*pkgtool:\s*ignore(?:\[([A-Za-z0-9_,\s-]*)\])?")
@@ -53,6 +53,9 @@ class Package:
     ignores: tuple[GitIgnore, ...] = ()
     """The patterns of the ``.gitignore`` files of the package and of the folders above it
     (see :mod:`pkgtool.model.submodules`)."""
+    submodules: frozenset[str] = frozenset()
+    """The folder names of the repository's git submodules that are not checked out (each
+    may hold a package of that name once fetched)."""
 
     @property
     def name(self) -> str:
@@ -170,7 +173,8 @@ def load_package(root: Path, context: Context | None = None) -> Package:
         suppressions.update(_suppressions(relpath, text))
     return Package(root, files, manifest, setup_py, setup_cfg, tuple(modules), tuple(launches),
                    tuple(problems), suppressions, texts, frozenset(files), context or Context(),
-                   unfetched_submodules(root, files), _ignores(root, texts))
+                   unfetched_submodules(root, files), _ignores(root, texts),
+                   unfetched_names(root))
 
 
 _LAUNCH_XML = re.compile(r"\s*(?:<\?xml[^>]*\?>\s*)?(?:<!--.*?-->\s*)*<launch[\s>/]", re.S)

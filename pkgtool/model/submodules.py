@@ -44,6 +44,25 @@ def unfetched_submodules(root: Path, files: tuple[str, ...]) -> frozenset[str]:
     return frozenset(found)
 
 
+def unfetched_names(root: Path) -> frozenset[str]:
+    """The folder names of the repository's submodules that are not checked out (an empty or
+    missing folder): a package of the workspace each may hold once fetched, named like it."""
+    declared = _declared(os.path.abspath(root))
+    if declared is None:
+        return frozenset()
+    top, paths = declared
+    return frozenset(os.path.basename(os.path.normpath(path)) for path in paths
+                     if not _has_entries(os.path.join(top, path)))
+
+
+def _has_entries(folder: str) -> bool:
+    try:
+        with os.scandir(folder) as entries:
+            return any(True for _ in entries)
+    except OSError:
+        return False
+
+
 @lru_cache(maxsize=256)
 def _declared(folder: str) -> tuple[str, tuple[str, ...]] | None:
     """The repository folder holding ``folder`` and the submodule paths its ``.gitmodules``

@@ -60,8 +60,9 @@ def checked_dependencies(package: Package) -> list[Dependency]:
 def is_local(package: Package, name: str) -> bool:
     """True when ``name`` is the package itself or a package of its workspace (looked up, not
     copied: a copy of the workspace's names per package grows a run with the square of its
-    size)."""
-    return name == package.name or name in package.context.workspace
+    size), or names a git submodule of its repository that is not checked out."""
+    return name == package.name or name in package.context.workspace or \
+        name in package.submodules
 
 
 def neighbours(package: Package) -> frozenset[str]:

@@ -19,8 +19,9 @@ def unknown_dependency(package: Package) -> Iterator[Hit]:
     Like MAN021 (the same sources and exceptions), for keys that are not spelled like any
     known name: a package from a private repository or another workspace, a key of a custom
     rosdep source, a package that the target distribution does not release (the message
-    names the distributions that do), or a made-up name. It is a warning because private
-    rosdep sources and overlay workspaces are legitimate.
+    names the distributions that do), or a made-up name. A name of a git submodule of the
+    repository that is not checked out is left alone (it holds the package once fetched).
+    It is a warning because private rosdep sources and overlay workspaces are legitimate.
 
     ## Why is this bad?
     On a machine with only the public rosdep sources, ``rosdep install`` cannot install the
