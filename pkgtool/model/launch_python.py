@@ -18,7 +18,8 @@ from pkgtool.model.launch import COMMAND_PACKAGES, FileRef, NodeRef, PackageRef
 from pkgtool.model.launch_remaps import not_pairs
 from pkgtool.model.launch_scopes import (bindings, import_origins, overwritten_values,
                                          read_only_by, scope_nodes, unread_attribute_values,
-                                         unread_values, unread_module_values)
+                                         unread_module_values, unread_values,
+                                         written_paths)
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import depends_on_ros_distro
 from pkgtool.records import record
@@ -95,7 +96,8 @@ class _Reader(ast.NodeVisitor):
         self.optional = 0  # > 0 inside a block that runs only if some package is installed
         self.distro_branches = 0  # > 0 inside a branch of a test on the ROS distribution
         self.unread: set[ast.expr] = unread_attribute_values(tree)  # values never read
-        self.unread_paths = unread_module_values(tree, exported)  # and module-level ones
+        self.unread_paths = unread_module_values(tree, exported) | \
+            written_paths(tree)  # and module-level ones, and files the code writes
         self.dead = 0  # > 0 inside a node action that is never started
 
     def _span(self, node: ast.AST) -> Span:

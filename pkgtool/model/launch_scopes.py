@@ -185,6 +185,36 @@ def _on_self(target: ast.expr) -> bool:
         target.value.id == "self"
 
 
+_WRITING = frozenset("wax")
+"""The letters of ``open()`` modes that make the file (write, append, exclusive create)."""
+
+
+def written_paths(tree: ast.Module) -> set[ast.expr]:
+    """Paths the module opens only to write (``open(path, 'w')``): the expression given, and
+    the values of the names every read of which is such a call (``out = join(...)`` then
+    ``open(out, 'w')``). A file written is made by the code, never read from the package."""
+    found: set[ast.expr] = set()
+    written_names: dict[str, int] = {}
+    for call in nodes_of_class(tree, ast.Call):
+        mode = next((k.value for k in call.keywords if k.arg == "mode"),  # type: ignore
+                    call.args[1] if len(call.args) > 1 else None)
+        if isinstance(call.func, ast.Name) and call.func.id == "open" and call.args and \
+                isinstance(mode, ast.Constant) and isinstance(mode.value, str) and \
+                _WRITING & set(mode.value):
+            found.add(call.args[0])
+            if isinstance(call.args[0], ast.Name):
+                written_names[call.args[0].id] = written_names.get(call.args[0].id, 0) + 1
+    if written_names:
+        reads: dict[str, int] = {}
+        for name in nodes_of_class(tree, ast.Name):
+            if isinstance(name, ast.Name) and isinstance(name.ctx, ast.Load):
+                reads[name.id] = reads.get(name.id, 0) + 1
+        only = {name for name, count in written_names.items() if reads.get(name) == count}
+        found.update(node.value for node in nodes_of_class(tree, ast.Assign)
+                     if simple_assignment(node) and node.targets[0].id in only)  # type: ignore
+    return found
+
+
 def import_origins(tree: ast.Module) -> dict[str, set[str]]:
     """Each name any import of the file binds, with the dotted names it was imported as."""
     origins: dict[str, set[str]] = {}

@@ -36,7 +36,8 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     makes folders (`os.makedirs`) is left alone. A path the code builds but never uses (the
     value of a local name never read, read only by nodes it never starts, or replaced
     before any use; of a module-level name nothing reads or imports; or stored in `self.x`
-    that the module never reads) is not read either.
+    that the module never reads) is not read either, nor is a file it opens to write
+    (`open(path, 'w')`, `'a'`, `'x'`): the code makes it.
 
     ## Why is this bad?
     Nothing can install a file the package does not have: `ros2 launch` fails on the missing
