@@ -22,7 +22,7 @@ from pkgtool.fix.registry import fixer
 from pkgtool.model.package import Package
 from pkgtool.rules.launch.invalid_launch_action_argument import BY_KEYWORD, IN_A_LIST, ITEMS
 from pkgtool.rules.launch.invalid_node_argument import (FRONTEND_TAGS, KEYWORDS, REMOVED_KEYWORDS,
-                                                        WRONG_ATTRIBUTES)
+                                                        WRONG_ATTRIBUTES, removed_message)
 from pkgtool.rules.launch.unknown_substitution import SUBSTITUTION, ros2_substitution
 
 _ONE_NAME = re.compile(r"`(\w+)`(?: \(.*\))?")
@@ -73,7 +73,7 @@ def _node_fix(doc: PyDoc, call: ast.Call, finding: Finding) -> Fix | None:
     action = ast.unparse(call.func).rpartition(".")[2]
     for keyword in call.keywords:
         name = keyword.arg or ""
-        if finding.message in (f"`{action}()` has no `{name}` argument since ROS 2 Foxy",
+        if finding.message in (removed_message(action, name),
                                f"`{action}()` has no `{name}` argument: launch raises "
                                "TypeError"):
             close = get_close_matches(name, sorted(KEYWORDS.get(action, ())), n=2)

@@ -19,6 +19,13 @@ FRONTEND_TAGS = frozenset({"node", "lifecycle_node", "node_container"})
 REMOVED_KEYWORDS = {"node_executable": "executable", "node_name": "name",
                     "node_namespace": "namespace"}
 """Python keywords of ROS 2 Dashing/Eloquent that later releases removed, and their names now."""
+
+
+def removed_message(action: str, name: str) -> str:
+    """LCH005's message on a keyword of :data:`REMOVED_KEYWORDS` (its fixer matches it)."""
+    return f"`{action}()` has no `{name}` argument since ROS 2 Galactic (Foxy deprecated it)"
+
+
 WRONG_ATTRIBUTES = {"type": "`exec` (`type` is ROS 1)", "executable": "`exec`",
                     "package": "`pkg`", "ns": "`namespace` (`ns` is ROS 1)",
                     "node_name": "`name`", "node_executable": "`exec`",
@@ -92,7 +99,7 @@ def _problems(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
         removed = set() if node.other_distros else given & REMOVED_KEYWORDS.keys()
         for name in sorted(removed):
             where = node.executable_span if name == "node_executable" else None
-            yield (f"`{node.action}()` has no `{name}` argument since ROS 2 Foxy",
+            yield (removed_message(node.action, name),
                    f"Write `{REMOVED_KEYWORDS[name]}=`", where or node.span)
         for name in sorted(given - KEYWORDS[node.action] - REMOVED_KEYWORDS.keys() - {"*", "**"}):
             close = get_close_matches(name, sorted(KEYWORDS[node.action]), n=1)
