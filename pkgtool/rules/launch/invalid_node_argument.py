@@ -18,7 +18,7 @@ FRONTEND_TAGS = frozenset({"node", "lifecycle_node", "node_container"})
 """XML/YAML node tags; each needs ``exec``."""
 REMOVED_KEYWORDS = {"node_executable": "executable", "node_name": "name",
                     "node_namespace": "namespace"}
-"""Python keywords of ROS 2 Dashing/Eloquent that later releases removed, and their names now."""
+"""Python keywords of ROS 2 Dashing to Foxy that Galactic removed, and their names now."""
 
 
 def removed_message(action: str, name: str) -> str:
@@ -129,7 +129,7 @@ def invalid_launch_node_argument(package: Package) -> Iterator[Hit]:
     ## What it does
     Checks the node actions of launch files: Python `Node`, `LifecycleNode` and
     `ComposableNodeContainer` calls need `executable=`, must not use `node_executable`,
-    `node_name` or `node_namespace` (removed after ROS 2 Eloquent) nor a keyword none of
+    `node_name` or `node_namespace` (deprecated in Foxy, gone since Galactic) nor a keyword none of
     Foxy to Rolling takes (`nam=`, `parameter=`, `args=`), and their `parameters=`
     must be a list (not a path, a string, a tuple or a dict); their `remappings=` (and
     those of a `ComposableNode`) must be a list of tuples of two (not a single pair
