@@ -51,10 +51,25 @@ def checked_dependencies(package: Package) -> list[Dependency]:
         if (dependency.tag in _NOT_CHECKED or not _KEY.fullmatch(name or "")
                 or not applies(dependency.condition, package.context.distro)):
             continue
-        if name in NOT_PACKAGES or name in ROS1_PACKAGES or suggested_key(name):
+        if name in NOT_PACKAGES or name in ROS1_PACKAGES or \
+                key_instead(name, package.context.distro):
             continue  # MAN018's
         found.append(dependency)
     return found
+
+
+def key_instead(name: str, distro: str) -> str | None:
+    """The rosdep key to write for a declared ``name`` that is no key but a pip or ROS 1 name
+    (:func:`~pkgtool.knowledge.rosdep.suggested_key`) or the import name of a module rosdep's
+    data knows (``dlib``: ``python3-dlib-pip``); None for a key, a released package or a name
+    nothing knows."""
+    known = suggested_key(name)
+    if known is not None:
+        return known
+    if rosdistro.is_known_dependency(name, distro):
+        return None
+    keys = rosdistro.keys_for_import(name, distro)
+    return keys[0] if keys else None
 
 
 def is_local(package: Package, name: str) -> bool:

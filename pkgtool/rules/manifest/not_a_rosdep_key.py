@@ -5,10 +5,11 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.rosdep import NOT_PACKAGES, ROS1_PACKAGES, suggested_key
+from pkgtool.knowledge.rosdep import NOT_PACKAGES, ROS1_PACKAGES
 from pkgtool.model.condition import applies
 from pkgtool.model.package import Package
 from pkgtool.model.xml import XmlElement
+from pkgtool.rules.dependency_names import key_instead
 from pkgtool.rules.manifest.common import build_types, tree
 from pkgtool.rules.manifest.schema import DEPENDS_1, DEPENDS_2, token
 from pkgtool.rules.registry import rule
@@ -29,7 +30,7 @@ _CPP_KEYS = {"opencv": "libopencv-dev", "opencv2": "libopencv-dev", "OpenCV": "l
 """The C++ library key for a name whose Python key MAN018 suggests elsewhere."""
 
 
-def _hit(element: XmlElement, ros2: bool, compiled: bool) -> Hit | None:
+def _hit(element: XmlElement, ros2: bool, compiled: bool, distro: str) -> Hit | None:
     key, tag = token(element.text), element.tag
     if key in NOT_PACKAGES:
         return Hit(element.span, f"`{key}` is a build type, not a package",
@@ -41,7 +42,7 @@ def _hit(element: XmlElement, ros2: bool, compiled: bool) -> Hit | None:
     if key in ROS1_PACKAGES and ros2:
         return Hit(element.span, f"`{key}` is a ROS 1 package that ROS 2 does not have",
                    f"Replace it with {ROS1_PACKAGES[key]}")
-    python = suggested_key(key)
+    python = key_instead(key, distro)
     if python is None:
         return None
     replacement = _CPP_KEYS.get(key, "") if compiled and python.startswith("python3-") \
@@ -100,7 +101,8 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
     ros2 = any(t.startswith("ament_") for t in types)
     compiled = bool(types) and "ament_python" not in types  # CMake: C++ code, libraries
     for element in found.elements():
-        hit = _hit(element, ros2, compiled) if element.tag in _CHECKED and \
+        hit = _hit(element, ros2, compiled, package.context.distro) \
+            if element.tag in _CHECKED and \
             applies(element.attribute("condition"), package.context.distro) else None
         if hit:
             yield hit
