@@ -52,19 +52,20 @@ def checked_dependencies(package: Package) -> list[Dependency]:
                 or not applies(dependency.condition, package.context.distro)):
             continue
         if name in NOT_PACKAGES or name in ROS1_PACKAGES or \
-                key_instead(name, package.context.distro):
+                key_instead(name, package.context.distro, dependency.tag):
             continue  # MAN018's
         found.append(dependency)
     return found
 
 
-def key_instead(name: str, distro: str) -> str | None:
+def key_instead(name: str, distro: str, tag: str) -> str | None:
     """The rosdep key to write for a declared ``name`` that is no key but a pip or ROS 1 name
-    (:func:`~pkgtool.knowledge.rosdep.suggested_key`) or the import name of a module rosdep's
-    data knows (``dlib``: ``python3-dlib-pip``); None for a key, a released package or a name
-    nothing knows."""
+    (:func:`~pkgtool.knowledge.rosdep.suggested_key`) or, but in a ``<doc_depend>`` (rosdoc2
+    mocks the modules it names: ``lark``), the import name of a module rosdep's data knows
+    (``dlib``: ``python3-dlib-pip``); None for a key, a released package or a name nothing
+    knows."""
     known = suggested_key(name)
-    if known is not None:
+    if known is not None or tag == "doc_depend":
         return known
     if rosdistro.is_known_dependency(name, distro):
         return None

@@ -42,7 +42,7 @@ def _hit(element: XmlElement, ros2: bool, compiled: bool, distro: str) -> Hit | 
     if key in ROS1_PACKAGES and ros2:
         return Hit(element.span, f"`{key}` is a ROS 1 package that ROS 2 does not have",
                    f"Replace it with {ROS1_PACKAGES[key]}")
-    python = key_instead(key, distro)
+    python = key_instead(key, distro, tag)
     if python is None:
         return None
     replacement = _CPP_KEYS.get(key, "") if compiled and python.startswith("python3-") \
