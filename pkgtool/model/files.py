@@ -130,12 +130,14 @@ def _walk(root: Path, depth: Callable[[str], int | None] | None = None
     found: list[tuple[str, os.DirEntry[str]]] = []
     stack: list[tuple[str, list[os.DirEntry[str]], int | None]] = [
         ("", listing(os.fspath(root)), None)]
+    linked = _LinkedFolders(os.fspath(root))
     while stack:
         prefix, entries, left = stack.pop()
         for entry in entries:  # is_dir/is_file follow symbolic links; broken ones are neither
             try:
                 if entry.is_dir():
-                    if entry.is_symlink() or _skipped_name(entry.name):
+                    if _skipped_name(entry.name) or entry.is_symlink() and \
+                            not linked.follow(entry.path):
                         continue
                     below = depth(entry.name) if depth and not prefix else left
                     if below is not None and below < 1:
@@ -150,6 +152,31 @@ def _walk(root: Path, depth: Callable[[str], int | None] | None = None
             except OSError:
                 continue
     return found
+
+
+class _LinkedFolders:
+    """Which symbolic links to folders a walk of a package follows, as setuptools' does
+    (``find_packages`` installs a package folder linked from another): each target once, and
+    only inside the repository holding the package (the nearest folder up with ``.git``, else
+    the package's parent folder), never a folder around the package (a loop)."""
+
+    def __init__(self, root: str) -> None:
+        self.root = os.path.realpath(root)
+        top = self.root
+        while not os.path.exists(os.path.join(top, ".git")) and os.path.dirname(top) != top:
+            top = os.path.dirname(top)
+        self.boundary = top if os.path.exists(os.path.join(top, ".git")) else \
+            os.path.dirname(self.root)
+        self.seen: set[str] = set()
+
+    def follow(self, path: str) -> bool:
+        target = os.path.realpath(path)
+        inside = target.startswith(self.boundary + os.sep)
+        around = self.root == target or self.root.startswith(target + os.sep)
+        if not inside or around or target in self.seen:
+            return False
+        self.seen.add(target)
+        return True
 
 
 def _size_time(entry: os.DirEntry[str]) -> list[int]:

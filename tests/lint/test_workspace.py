@@ -153,7 +153,7 @@ def test_the_workspace_index_reads_the_same_from_the_folders_or_from_a_file_list
     read = read_workspace_package(tmp_path)
     assert read == read_workspace_package(tmp_path, list_files(tmp_path))
     assert read.name == "things"
-    assert read.modules == {"things", "lib", "helpers"}
+    assert read.modules == {"things", "lib", "helpers", "linked"}  # setuptools follows links
     assert {kind: set(names) for kind, names in read.interfaces.items()} == {
         "msg": {"Plain", "Deep", "Shape", "Listed"}, "srv": {"Ask"}, "action": {"Go"}}
 
@@ -179,3 +179,16 @@ def test_packages_of_one_name_are_twins_only_under_one_colcon_src(tmp_path: Path
     assert same_named(tmp_path / "ws/src/lab", index) == ("src/old/lab_v1",)
     assert same_named(tmp_path / "other_ws/src/lab", index) == ()
     assert same_named(tmp_path / "book/ch4/lab", index) == ()
+
+
+def test_folders_linked_inside_the_repository_are_listed_once_and_never_loop(
+        tmp_path: Path) -> None:
+    """setuptools installs a package folder linked from elsewhere in the repository."""
+    repo = tmp_path / "repo"
+    write_tree(repo, {".git/HEAD": "ref", "common/tools/__init__.py": "",
+                      "pkg/pkg/__init__.py": "", "outside_link_target/x.py": ""})
+    (repo / "pkg" / "pkg" / "tools").symlink_to(repo / "common" / "tools")
+    (repo / "pkg" / "pkg" / "again").symlink_to(repo / "common" / "tools")
+    (repo / "pkg" / "pkg" / "loop").symlink_to(repo / "pkg")
+    (repo / "pkg" / "pkg" / "far").symlink_to(tmp_path)
+    assert list_files(repo / "pkg") == ("pkg/__init__.py", "pkg/again/__init__.py")
