@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -30,6 +31,12 @@ def _why(module: str, version: str) -> tuple[str, str]:
             f"Use {_INSTEAD.get(module, 'its replacement')} instead of `{module}`")
 
 
+def _setuptools_shim(path: str, top: str) -> bool:
+    """True for ``distutils`` in a ``setup.py``: it runs with setuptools, whose shim
+    provides ``distutils`` on every Python."""
+    return top == "distutils" and posixpath.basename(path) == "setup.py"
+
+
 @rule("PYC010", "stdlib-module-not-on-target", Severity.ERROR,
       fix="Use a module that the target distribution's Python has")
 def stdlib_module_not_on_target(package: Package) -> Iterator[Hit]:
@@ -44,7 +51,8 @@ def stdlib_module_not_on_target(package: Package) -> Iterator[Hit]:
     humble). Module lists come from a table generated from the stdlib-list package. Imports
     inside `try/except ImportError` are alternatives and stay silent, and so are imports of the
     package's own modules named like one (a `test/` package the tests import as `test.support`,
-    which pytest's import mode puts on `sys.path`).
+    which pytest's import mode puts on `sys.path`), and `distutils` in a `setup.py`, which
+    runs with setuptools and its `distutils` shim.
 
     ## Why is this bad?
     The node fails with `ModuleNotFoundError` on the robot's Python although it ran on the
@@ -69,7 +77,7 @@ def stdlib_module_not_on_target(package: Package) -> Iterator[Hit]:
         for imported in module.imports:
             top = imported.top_level
             if (not top or top in seen or imported.guarded or top in here or top not in known
-                    or keys_for_import(top, distro)):
+                    or keys_for_import(top, distro) or _setuptools_shim(module.path, top)):
                 continue
             seen.add(top)
             why, fix = _why(top, version)
