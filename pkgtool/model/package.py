@@ -132,10 +132,11 @@ def load_package(root: Path, context: Context | None = None) -> Package:
     launches: list[LaunchFile] = []
     folders, nested = python_folders(files), nested_packages(files)
     shared = _shared_sources(setup_py)
+    ros1 = getattr(manifest, "is_ros1", False)  # roslaunch files: not ROS 2's to check
     for relpath in files:
-        if is_launch_file(relpath, folders, nested) and \
+        if not ros1 and is_launch_file(relpath, folders, nested) and \
                 not is_launch_test(relpath, text_of(relpath)) or \
-                _launch_by_content(relpath, text_of, nested, shared):
+                not ros1 and _launch_by_content(relpath, text_of, nested, shared):
             text = text_of(relpath)
             if text is not None:
                 launch = parse_launch(relpath, text)
