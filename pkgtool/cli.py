@@ -17,6 +17,7 @@ import typer
 
 from pkgtool import __version__
 from pkgtool.cli_fast import COMPLETION_VARIABLE, INTERRUPTED, finish
+from pkgtool.cli_output import closed_pipe
 HELP = {"help_option_names": ["-h", "--help"]}
 
 app = typer.Typer(
@@ -86,4 +87,6 @@ def main() -> None:
         code = error.exit_code
     except (typer.Abort, KeyboardInterrupt):
         code = INTERRUPTED
+    except BrokenPipeError:
+        code = closed_pipe()
     finish(code if isinstance(code, int) else 0)

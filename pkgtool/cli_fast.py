@@ -58,6 +58,10 @@ def main() -> None:
         code = lint_call(**call)
     except KeyboardInterrupt:
         code = INTERRUPTED
+    except BrokenPipeError:
+        from pkgtool.cli_output import closed_pipe
+
+        code = closed_pipe()
     finish(code)
 
 

@@ -93,6 +93,8 @@ def lint_call(paths: Optional[list[str]] = None, fmt: Format = Format.TEXT,
             if explain is not None or list_rules:
                 return _show_rules(explain, fmt, output)
             return _lint(paths or [], options, fmt, output, witness, worker)
+        except BrokenPipeError:
+            raise  # the reader stopped early: no bug (the entry point exits quietly)
         except Exception as error:  # noqa: BLE001 - a bug in pkgtool: exit 3, no bare traceback
             import traceback
 

@@ -6,6 +6,7 @@ write error says why on stderr and ends the process with the usage code (``Syste
 
 from __future__ import annotations
 
+import os
 import sys
 from pathlib import Path
 from typing import Optional
@@ -36,3 +37,19 @@ def check_output(output: Optional[Path], verb: str) -> None:
 def _usage_error(verb: str, message: str) -> None:
     sys.stderr.write(f"pkgtool {verb}: {message}\n")
     raise SystemExit(int(ExitCode.USAGE))
+
+
+CLOSED_PIPE = 141
+"""The exit code when whoever reads the report stops early (``pkgtool lint | head``): that
+of a process SIGPIPE ends, as ``cat`` and ``grep`` exit then."""
+
+
+def closed_pipe() -> int:
+    """Point stdout at ``os.devnull`` after the reader closed the pipe (so that exiting does
+    not fail flushing it again) and give :data:`CLOSED_PIPE`."""
+    try:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):
+        pass
+    return CLOSED_PIPE
