@@ -123,6 +123,7 @@ def unknown_dependencies(package: Package) -> list[Unknown]:
         close = [] if elsewhere else rosdistro.close_names(name, distro, extra=neighbours(package))
         meant = close[0] if close and _same_module(package, name, close[0]) and \
             not _of_a_family(package, name, close[0]) and \
+            not rosdistro.digits_differ(name, close[0]) and \
             len(rosdistro.numbered_variants(name, distro)) < 2 else None
         found.append(Unknown(dependency, meant, elsewhere))
     return found
