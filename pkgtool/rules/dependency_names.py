@@ -123,13 +123,20 @@ def unknown_dependencies(package: Package) -> list[Unknown]:
         close = [] if elsewhere else rosdistro.close_names(name, distro, extra=neighbours(package))
         meant = close[0] if close and _same_module(package, name, close[0]) and \
             not _of_a_family(package, name, close[0]) and \
-            not rosdistro.digits_differ(name, close[0]) and \
+            not _version_of(name, close[0]) and \
             len(rosdistro.numbered_variants(name, distro)) < 2 else None
         found.append(Unknown(dependency, meant, elsewhere))
     return found
 
 
 _PARTS = re.compile(r"[-_.]")
+
+
+def _version_of(key: str, close: str) -> bool:
+    """True when one name is the other with a version number at its end (``gz-plugin3`` and
+    ``gz-plugin``): a library's versions are named so, never a typo of each other."""
+    bare_key, bare_close = key.rstrip("0123456789"), close.rstrip("0123456789")
+    return bare_key == bare_close and (bare_key == key or bare_close == close)
 
 
 def _of_a_family(package: Package, key: str, close: str) -> bool:
