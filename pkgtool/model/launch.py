@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import re
+
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.records import record
@@ -169,6 +171,13 @@ def is_launch_file(path: str, python_folders: frozenset[str] = frozenset(),
         return True
     return not (name.startswith("test_") or (parts and parts[0] in NOT_LAUNCH_FOLDERS)
                 or folder in python_folders)
+
+
+def other_yaml(path: str, text: str | None) -> bool:
+    """True for a YAML file named like a launch file with no ``launch:`` key at its top (a
+    Docker Compose file, ``docker-compose.launch.yaml``): no launch file."""
+    return path.endswith((".yaml", ".yml")) and text is not None and \
+        re.search(r"^launch\s*:", text, re.M) is None
 
 
 def is_launch_test(path: str, text: str | None) -> bool:

@@ -9,7 +9,7 @@ from pathlib import Path
 from pkgtool.model.cmake_interfaces import with_included
 from pkgtool.model.context import Context
 from pkgtool.model.files import TextFile, list_files, read_text
-from pkgtool.model.launch import (LaunchFile, below, is_launch_file, is_launch_test,
+from pkgtool.model.launch import (LaunchFile, below, is_launch_file, is_launch_test, other_yaml,
                                   is_template, nested_packages, parse_launch, python_folders)
 from pkgtool.model.launch_reader import yaml_problem
 from pkgtool.model.manifest import Manifest, parse_manifest
@@ -135,7 +135,8 @@ def load_package(root: Path, context: Context | None = None) -> Package:
     ros1 = getattr(manifest, "is_ros1", False)  # roslaunch files: not ROS 2's to check
     for relpath in files:
         if not ros1 and is_launch_file(relpath, folders, nested) and \
-                not is_launch_test(relpath, text_of(relpath)) or \
+                not is_launch_test(relpath, text_of(relpath)) and \
+                not other_yaml(relpath, text_of(relpath)) or \
                 not ros1 and _launch_by_content(relpath, text_of, nested, shared):
             text = text_of(relpath)
             if text is not None:

@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import installed_data
-from pkgtool.model.launch import (is_launch_file, is_launch_test, nested_packages,
+from pkgtool.model.launch import (is_launch_file, is_launch_test, nested_packages, other_yaml,
                                   python_folders)
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
@@ -57,7 +57,8 @@ def uninstalled_launch_file(package: Package) -> Iterator[Hit]:
     shared = {source for target, source in installed.items() if target.startswith(share)}
     folders, nested = python_folders(package.files), nested_packages(package.files)
     for path in sorted({*(f for f in package.files if is_launch_file(f, folders, nested) and
-                          not is_launch_test(f, package.texts.get(f))),
+                          not is_launch_test(f, package.texts.get(f)) and
+                          not other_yaml(f, package.texts.get(f))),
                         *(launch.path for launch in package.launch_files)}):
         if path.split("/")[0] not in NOT_INSTALLED_FOLDERS and path not in shared:
             name = path.rsplit("/", 1)[-1]
