@@ -157,7 +157,7 @@ def load_package(root: Path, context: Context | None = None) -> Package:
             text_of(relpath)
         elif relpath.endswith(".py") and relpath != "setup.py":
             text = text_of(relpath)
-            if text is not None:
+            if text is not None and not _other_language(text):
                 module = parse_module(relpath, text)
                 modules.append(module)
                 if module.syntax_error and not is_test_data(relpath):
@@ -208,6 +208,13 @@ def is_test_data(relpath: str) -> bool:
     name = relpath.rsplit("/", 1)[-1]
     collected = name.startswith("test_") or name.endswith("_test.py") or name == "conftest.py"
     return is_test_material(relpath) and not collected
+
+
+def _other_language(text: str) -> bool:
+    """True for a file whose ``#!`` line runs something other than Python (a bash script
+    named ``start.py``): no module."""
+    first = text.split("\n", 1)[0]
+    return first.startswith("#!") and "python" not in first
 
 
 def _shared_sources(setup_py: SetupPy | ParseProblem | None) -> frozenset[str]:

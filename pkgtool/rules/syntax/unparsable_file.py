@@ -29,7 +29,8 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     Test material is left alone where tests of error handling keep files broken on purpose:
     Python files under `test/` that pytest does not collect, and YAML under `test/`,
     `test_data/`, `testdata/` and similar folders. Nor are OpenCV's `FileStorage` files
-    (starting `%YAML:1.0`), which OpenCV reads and YAML parsers refuse.
+    (starting `%YAML:1.0`), which OpenCV reads and YAML parsers refuse, nor a `.py` file
+    whose `#!` line runs another language (a bash script named `start.py`).
     Python is parsed by the Python running pkgtool: when that is older than the target
     distribution's (3.11 for jazzy's 3.12), a failing line that uses syntax the target's Python
     added is not reported, as the target may well accept it: an f-string that is complete
