@@ -74,12 +74,14 @@ def _uninstalled(package: Package) -> Iterator[tuple[str, FileRef, str, dict[str
               for entry in setup.data_files or () if not entry.sources_is_text
               for source in entry.sources if not source.is_glob}
     shared = {source for target, source in installed.items() if target.startswith(share + "/")}
+    folders = {posixpath.normpath(entry.destination) for entry in setup.data_files or ()}
+    # setuptools makes every destination folder, even for an empty list of files
     for path, refs in _share_reads(package, shared):
         for ref in refs:
             if ref.package != package.name or not ref.parts:
                 continue
             target = posixpath.normpath(posixpath.join(share, *ref.parts))
-            if target in installed or target in listed or \
+            if target in installed or target in listed or target in folders or \
                     any(t.startswith(target + "/") for t in installed) or \
                     _GLOB.search(target) and any(fnmatch.fnmatchcase(t, target)
                                                  for t in (*installed, *listed)):
@@ -115,16 +117,18 @@ def _imported_names(package: Package) -> frozenset[str]:
 
 
 _EXISTENCE = frozenset({"exists", "isfile", "is_file", "isdir", "is_dir", "lexists",
-                        "makedirs", "mkdir"})
+                        "makedirs", "mkdir", "load_dotenv"})
 """``os.path.exists``, ``os.path.isfile``, ``Path.is_dir()``..., and ``os.makedirs``,
-``Path.mkdir()``: a module making folders may make the share path it names too."""
+``Path.mkdir()``: a module making folders may make the share path it names too;
+``load_dotenv()``, which returns False for a missing file."""
 
 
 def _checks_files(index: Index) -> bool:
     """True when the module asks whether files or folders exist, or makes folders: it handles
     a share file that may be missing (a model it downloads when absent, a file the user adds,
     a folder it creates), so none of its share paths is certainly read."""
-    return any(isinstance(call.func, ast.Attribute) and call.func.attr in _EXISTENCE
+    return any(isinstance(call.func, ast.Attribute) and call.func.attr in _EXISTENCE or
+               isinstance(call.func, ast.Name) and call.func.id == "load_dotenv"
                for call in index.calls)
 
 
