@@ -34,11 +34,12 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     match them, and a module that asks whether files or folders exist (`os.path.exists`,
     `os.path.isdir`, `Path.exists()`: it handles a missing one, as a model it downloads),
     makes folders (`os.makedirs`) or loads an optional `.env` file (`load_dotenv`) is left
-    alone, and so is a folder data_files installs into (setuptools makes it, files or not). A path the code builds but never uses (the
-    value of a local name never read, read only by nodes it never starts, or replaced
-    before any use; of a module-level name nothing reads or imports; or stored in `self.x`
-    that the module never reads) is not read either, nor is a file it opens to write
-    (`open(path, 'w')`, `'a'`, `'x'`): the code makes it.
+    alone, and so is a folder data_files installs into (setuptools makes it, files or not).
+    A path the code builds but never uses (the value of a local name never read, read only
+    by nodes it never starts, or replaced before any use; of a module-level name nothing
+    reads or imports; or stored in `self.x` that the module never reads) is not read
+    either, nor is a file it opens to write (`open(path, 'w')`, `'a'`, `'x'`): the code
+    makes it.
 
     ## Why is this bad?
     Nothing can install a file the package does not have: `ros2 launch` fails on the missing
