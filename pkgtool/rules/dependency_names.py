@@ -133,10 +133,11 @@ _PARTS = re.compile(r"[-_.]")
 
 
 def _version_of(key: str, close: str) -> bool:
-    """True when one name is the other with a version number at its end (``gz-plugin3`` and
-    ``gz-plugin``): a library's versions are named so, never a typo of each other."""
-    bare_key, bare_close = key.rstrip("0123456789"), close.rstrip("0123456789")
-    return bare_key == bare_close and (bare_key == key or bare_close == close)
+    """True when ``key`` is ``close`` with a version number at its end (``gz-plugin3`` for
+    ``gz-plugin``): a library's versions are named so, never a typo. The other way round
+    (``rviz`` for ``rviz2``, ROS 1's name) stays a near miss."""
+    bare = key.rstrip("0123456789")
+    return bare != key and bare == close
 
 
 def _of_a_family(package: Package, key: str, close: str) -> bool:
