@@ -45,6 +45,7 @@ NOT_ROSDEP_KEYS: dict[str, str] = {
     "opencv-python-headless": "python3-opencv",
     "opencv-contrib-python": "python3-opencv",
     "opencv": "python3-opencv",
+    "opencv2": "python3-opencv",  # ROS 1's key
     "cv2": "python3-opencv",
     "pyyaml": "python3-yaml",
     "PyYAML": "python3-yaml",
