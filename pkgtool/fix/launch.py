@@ -160,7 +160,8 @@ def action_arguments(package: Package, findings: list[Finding]) -> Iterator[Fix]
     action in a list; ``DeclareLaunchArgument`` gets its default as ``default_value=``, a
     shortened keyword written out (``default=`` becomes ``default_value=``) and a number or
     bool default as text (``False`` becomes ``'false'``); ``PathJoinSubstitution``'s parts go
-    in one list. Safe: each raised TypeError."""
+    in one list; ``Command(['xacro', path])`` gets its space (``'xacro '``). Safe: each raised
+    TypeError, or ran a command that does not exist."""
     for doc, finding, nodes in python_nodes(package, findings):
         node, path = (nodes[0] if nodes else None), doc.source.path
         if finding.fix == ITEMS and isinstance(node, (ast.Dict, ast.DictComp)):
@@ -178,8 +179,10 @@ def action_arguments(package: Package, findings: list[Finding]) -> Iterator[Fix]
                 yield fix
         elif isinstance(node, ast.Constant) and finding.fix and \
                 finding.fix.startswith("Write `'") and finding.fix.endswith("'`"):
-            yield Fix("Write the default as text", (Edit(
-                path, doc.start(node), doc.end(node), doc.string(finding.fix[8:-2])),))
+            what = "Add the space after the program" if isinstance(node.value, str) else \
+                "Write the default as text"
+            yield Fix(what, (Edit(path, doc.start(node), doc.end(node),
+                                  doc.string(finding.fix[8:-2])),))
         elif finding.fix == BY_KEYWORD and isinstance(node, ast.expr):
             yield from _by_keyword(doc, node)
         elif finding.fix and finding.fix.startswith("Write `[") and isinstance(node, ast.expr):

@@ -36,7 +36,7 @@ PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprec
           ("PYC026", "action_and_parameter_callbacks"), ("PYC026", "wrong_value_returned"),
           ("LCH005", "remappings_not_pairs"), ("LCH016", "misspelt_methods"),
           ("LCH010", "arguments_launch_rejects"), ("PYC041", "init_without_super"),
-          ("PYC070", "set_wrong_types")}
+          ("PYC070", "set_wrong_types"), ("LCH010", "command_words_joined")}
 """GPLv3 can mean -only or -or-later, `my_robot_description` is no known package, values outside
 `ros__parameters` belong to a node only the user knows, a node without its executable names
 none, `required="true"` and YAML launch files are left to the user, `exception()` is close to
@@ -56,7 +56,8 @@ callback's response is the one rclpy passes in; the pairs remappings were meant 
 words of an f-string of arguments are the author's to write, and so is the condition a
 `condition='true'` was meant to be, the node name a constructor without `super().__init__`
 needs, the one message a print-style logging call's arguments were meant to form, and the value
-a `Parameter` of a bool or a list was meant to have): no fix
+a `Parameter` of a bool or a list was meant to have, and where a command's program ends when a
+substitution names it): no fix
 guesses, the user chooses; the other findings
 of the case are fixed."""
 MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages"),

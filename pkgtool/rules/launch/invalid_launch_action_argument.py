@@ -73,6 +73,33 @@ def _path_join(call: ast.Call, _: Index) -> Iterator[tuple[ast.AST, str, str]]:
                f"{len(call.args)} arguments: it raises TypeError", f"Write `[{parts}]`")
 
 
+_EXECUTABLE_LOOKUPS = frozenset({"FindExecutable", "ExecutableInPackage"})
+
+
+def _command(call: ast.Call, index: Index) -> Iterator[tuple[ast.AST, str, str]]:
+    """``Command(['xacro', path])``: the program and its first argument joined into one word
+    (launch concatenates the parts as they are)."""
+    parts = call.args[0] if call.args else None
+    if not isinstance(parts, (ast.List, ast.Tuple)) or len(parts.elts) < 2:
+        return
+    first, second = parts.elts[:2]
+    spaced = isinstance(second, ast.Constant) and isinstance(second.value, str) and \
+        second.value[:1].isspace()
+    if spaced or isinstance(second, ast.Starred):
+        return
+    if isinstance(first, ast.Constant) and isinstance(first.value, str) and first.value and \
+            not first.value[-1].isspace() and " " not in first.value.strip() and \
+            not (isinstance(second, ast.Constant) and isinstance(second.value, str)):
+        yield (first, f"`Command()` joins its parts as they are: `{first.value}` and the part "
+               "after it make one word, so the command it runs does not exist",
+               f"Write `'{first.value} '`")
+    elif isinstance(first, ast.Call) and launch_class(first, index)[1] in _EXECUTABLE_LOOKUPS \
+            and not (isinstance(second, ast.Constant) and isinstance(second.value, str)):
+        yield (second, "`Command()` joins its parts as they are: the program and this part "
+               "make one word, so the command it runs does not exist",
+               "Put `' '` between the program and its first argument")
+
+
 def _condition(call: ast.Call, action: str) -> Iterator[tuple[ast.AST, str, str]]:
     """A ``condition=`` that is a literal (``'true'``, ``True``) or an f-string, not one of
     launch's conditions."""
@@ -90,7 +117,8 @@ def _condition(call: ast.Call, action: str) -> Iterator[tuple[ast.AST, str, str]
 CHECKS = {"DeclareLaunchArgument": ("launch.actions", _declare),
           "IncludeLaunchDescription": ("launch.actions", _include),
           "LaunchDescription": ("launch", _description),
-          "PathJoinSubstitution": ("launch.substitutions", _path_join)}
+          "PathJoinSubstitution": ("launch.substitutions", _path_join),
+          "Command": ("launch.substitutions", _command)}
 """Class -> (the module it is in, or a package holding it; its check)."""
 
 
@@ -108,6 +136,8 @@ def invalid_launch_action_argument(package: Package) -> Iterator[Hit]:
     written as a dict (display or comprehension) instead of its `.items()`; and
     `LaunchDescription` given one action (`LaunchDescription(Node(...))`) instead of a list;
     and `PathJoinSubstitution` given its parts as separate arguments instead of one list;
+    and `Command` given its program and first argument with no space between
+    (`Command(['xacro', path])`, `Command([FindExecutable(name='xacro'), path])`);
     and any action of `launch.actions` or `launch_ros.actions` given a literal or f-string as
     `condition=` (`condition='true'`) instead of a condition (`IfCondition(...)`). Only
     literals and displays are judged: a dict held in a variable is not.
@@ -117,8 +147,9 @@ def invalid_launch_action_argument(package: Package) -> Iterator[Hit]:
     (launch arguments are strings or substitutions; its default is keyword-only; it has no
     `default` argument); `IncludeLaunchDescription` iterates a dict's keys and fails to
     unpack each as a (name, value) pair when it runs ("too many values to unpack"); a
-    `LaunchDescription` cannot iterate an action; and an action calls its condition's
-    `evaluate()`, which a string does not have.
+    `LaunchDescription` cannot iterate an action; `Command` runs `xacro/home/.../robot.urdf`,
+    which does not exist; and an action calls its condition's `evaluate()`, which a string
+    does not have.
 
     ## Example
     ```python
