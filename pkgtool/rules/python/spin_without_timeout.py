@@ -11,6 +11,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.syntax_trees import Index, installed_trees
 from pkgtool.rules.node_api import spin_cause
+from pkgtool.rules.python._message_instances import method_receiver
 from pkgtool.rules.registry import rule
 
 _NAME = "spin_until_future_complete"
@@ -49,9 +50,19 @@ def _waited_future(call: ast.Call, index: Index) -> ast.expr | None:
     if index.qualified(call.func) == f"rclpy.{_NAME}" and len(call.args) < 4:
         return keyword or (call.args[1] if len(call.args) > 1 else None)
     if (isinstance(call.func, ast.Attribute) and call.func.attr == _NAME
-            and index.qualified(call.func) is None and len(call.args) < 2):
+            and index.qualified(call.func) is None and len(call.args) < 2
+            and not _on_own_receiver(call.func, index)):
         return keyword or (call.args[0] if call.args else None)
     return None
+
+
+def _on_own_receiver(func: ast.Attribute, index: Index) -> bool:
+    """True for ``self.spin_until_future_complete(...)`` in a method: the class's own method
+    (a wrapper with its own timeout) or none at all (a node has none: PYC023's error)."""
+    method = index.enclosing_function(func, through_lambdas=False)
+    return isinstance(func.value, ast.Name) and method is not None and \
+        index.enclosing_class(func) is not None and \
+        method_receiver(method) == func.value.id
 
 
 @rule("PYC005", "spin-without-timeout", Severity.WARNING,
@@ -65,7 +76,8 @@ def spin_without_timeout(package: Package) -> Iterator[Hit]:
     `timeout_sec` while waiting for a server's answer: a future from `call_async`,
     `send_goal_async`, `get_result_async` or `cancel_goal_async`. Spinning until some other
     future (a main loop that ends on a signal) and an explicit `timeout_sec=None` are taken
-    as intended and not reported.
+    as intended and not reported, nor is `self.spin_until_future_complete(...)` in a method:
+    the class's own wrapper, or a method a node lacks (PYC023's AttributeError).
 
     ## Why is this bad?
     If the service or action server never answers (it crashed, its name is misspelled, the
