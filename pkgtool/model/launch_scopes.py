@@ -77,10 +77,15 @@ def unread_values(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[
         elif isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and \
                 node.func.id in SCOPE_READERS:
             return set()
-    return {node.value for node in nodes
-            if simple_assignment(node) and isinstance(node.value, PATH_VALUES)
-            and node.targets[0].id not in read  # type: ignore[attr-defined]
-            and not any(isinstance(n, ast.NamedExpr) for n in descendants(node.value))}
+    return {node.value for node in nodes  # type: ignore[attr-defined]
+            if _names_path(node) and node.targets[0].id not in read}
+
+
+def _names_path(node: ast.AST) -> bool:
+    """True for ``name = value`` with a path-building value (:data:`PATH_VALUES`) holding no
+    ``:=`` (the value it names may be read)."""
+    return simple_assignment(node) and isinstance(node.value, PATH_VALUES) and \
+        not any(isinstance(n, ast.NamedExpr) for n in descendants(node.value))
 
 
 def unread_module_values(tree: ast.Module, exported: frozenset[str]) -> set[ast.expr]:
@@ -99,10 +104,8 @@ def unread_module_values(tree: ast.Module, exported: frozenset[str]) -> set[ast.
             return set()
         elif isinstance(node, ast.Constant) and isinstance(node.value, str):
             read.add(node.value)  # `__all__ = ['CONFIG']`, getattr(module, 'CONFIG')
-    return {node.value for node in tree.body
-            if simple_assignment(node) and isinstance(node.value, PATH_VALUES)
-            and node.targets[0].id not in read  # type: ignore[attr-defined]
-            and not any(isinstance(n, ast.NamedExpr) for n in descendants(node.value))}
+    return {node.value for node in tree.body  # type: ignore[attr-defined]
+            if _names_path(node) and node.targets[0].id not in read}
 
 
 def overwritten_values(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[ast.AST]
@@ -132,13 +135,12 @@ def overwritten_values(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: 
     found: set[ast.expr] = set()
     for block in _blocks(function, nodes):
         for at, statement in enumerate(block):
-            if not simple_assignment(statement) or not isinstance(statement.value, PATH_VALUES) \
-                    or statement.targets[0].id in held:  # type: ignore[attr-defined]
+            if not _names_path(statement) or \
+                    statement.targets[0].id in held:  # type: ignore[attr-defined]
                 continue
             name = statement.targets[0].id  # type: ignore[attr-defined]
             later = next((s for s in block[at + 1:] if name in names(s)), None)
-            if simple_assignment(later) and name not in names(later.value) and \
-                    not any(isinstance(n, ast.NamedExpr) for n in descendants(statement.value)):
+            if simple_assignment(later) and name not in names(later.value):
                 found.add(statement.value)
     return found
 
