@@ -173,11 +173,15 @@ def is_launch_file(path: str, python_folders: frozenset[str] = frozenset(),
                 or folder in python_folders)
 
 
+LAUNCH_YAML = re.compile(r"^launch\s*:", re.M)
+"""The top-level ``launch:`` key of a YAML launch file."""
+
+
 def other_yaml(path: str, text: str | None) -> bool:
     """True for a YAML file named like a launch file with no ``launch:`` key at its top (a
     Docker Compose file, ``docker-compose.launch.yaml``): no launch file."""
     return path.endswith((".yaml", ".yml")) and text is not None and \
-        re.search(r"^launch\s*:", text, re.M) is None
+        LAUNCH_YAML.search(text) is None
 
 
 def is_launch_test(path: str, text: str | None) -> bool:

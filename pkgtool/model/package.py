@@ -9,8 +9,9 @@ from pathlib import Path
 from pkgtool.model.cmake_interfaces import with_included
 from pkgtool.model.context import Context
 from pkgtool.model.files import TextFile, list_files, read_text
-from pkgtool.model.launch import (LaunchFile, below, is_launch_file, is_launch_test, other_yaml,
-                                  is_template, nested_packages, parse_launch, python_folders)
+from pkgtool.model.launch import (LAUNCH_YAML, LaunchFile, below, is_launch_file,
+                                  is_launch_test, is_template, nested_packages, other_yaml,
+                                  parse_launch, python_folders)
 from pkgtool.model.launch_reader import yaml_problem
 from pkgtool.model.manifest import Manifest, parse_manifest
 from pkgtool.model.modules import PythonModule, parse_module
@@ -134,10 +135,10 @@ def load_package(root: Path, context: Context | None = None) -> Package:
     shared = _shared_sources(setup_py)
     ros1 = getattr(manifest, "is_ros1", False)  # roslaunch files: not ROS 2's to check
     for relpath in files:
-        if not ros1 and is_launch_file(relpath, folders, nested) and \
-                not is_launch_test(relpath, text_of(relpath)) and \
-                not other_yaml(relpath, text_of(relpath)) or \
-                not ros1 and _launch_by_content(relpath, text_of, nested, shared):
+        if not ros1 and (is_launch_file(relpath, folders, nested) and
+                         not is_launch_test(relpath, text_of(relpath)) and
+                         not other_yaml(relpath, text_of(relpath)) or
+                         _launch_by_content(relpath, text_of, nested, shared)):
             text = text_of(relpath)
             if text is not None:
                 launch = parse_launch(relpath, text)
@@ -180,7 +181,6 @@ def load_package(root: Path, context: Context | None = None) -> Package:
 
 
 _LAUNCH_XML = re.compile(r"\s*(?:<\?xml[^>]*\?>\s*)?(?:<!--.*?-->\s*)*<launch[\s>/]", re.S)
-_LAUNCH_YAML = re.compile(r"^launch\s*:", re.M)
 _OPENCV_STORAGE = ("%YAML:", "\ufeff%YAML:")
 """How OpenCV's ``FileStorage`` files start (``%YAML:1.0``): a format of OpenCV's that YAML
 parsers refuse, read by ``cv2.FileStorage`` (ORB-SLAM's camera settings), never by ROS."""
@@ -249,7 +249,7 @@ def _launch_by_content(relpath: str, text_of: Callable[[str], str | None],
             not is_launch_test(relpath, text)
     if relpath.endswith(".xml"):
         return _LAUNCH_XML.match(text) is not None
-    return _LAUNCH_YAML.search(text) is not None
+    return LAUNCH_YAML.search(text) is not None
 
 
 def _parsed(problems, relpath, text_of, parse, files):  # type: ignore[no-untyped-def]
