@@ -5,6 +5,7 @@ from __future__ import annotations
 import errno
 import os
 import stat
+from functools import cached_property
 from pathlib import Path
 from typing import Callable
 
@@ -161,18 +162,23 @@ class _LinkedFolders:
     the package's parent folder), never a folder around the package (a loop)."""
 
     def __init__(self, root: str) -> None:
-        self.root = os.path.realpath(root)
-        top = self.root
-        while not os.path.exists(os.path.join(top, ".git")) and os.path.dirname(top) != top:
-            top = os.path.dirname(top)
-        self.boundary = top if os.path.exists(os.path.join(top, ".git")) else \
-            os.path.dirname(self.root)
+        self.given = root
         self.seen: set[str] = set()
 
+    @cached_property
+    def place(self) -> tuple[str, str]:
+        """The package's real folder and the folder links must stay inside, worked out at the
+        first link (most packages have none)."""
+        root = top = os.path.realpath(self.given)
+        while not os.path.exists(os.path.join(top, ".git")) and os.path.dirname(top) != top:
+            top = os.path.dirname(top)
+        return root, top if os.path.exists(os.path.join(top, ".git")) else os.path.dirname(root)
+
     def follow(self, path: str) -> bool:
+        root, boundary = self.place
         target = os.path.realpath(path)
-        inside = target.startswith(self.boundary + os.sep)
-        around = self.root == target or self.root.startswith(target + os.sep)
+        inside = target.startswith(boundary + os.sep)
+        around = root == target or root.startswith(target + os.sep)
         if not inside or around or target in self.seen:
             return False
         self.seen.add(target)
