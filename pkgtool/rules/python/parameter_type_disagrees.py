@@ -9,9 +9,9 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import argument, unpacks
+from pkgtool.rules.python._code_and_tests import code_and_test_indexes
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, index_of, installed_trees
-from pkgtool.rules.test_modules import test_trees
+from pkgtool.rules.syntax_trees import Index
 
 _PARAMETER = "rclpy.parameter.Parameter"
 _TYPE = f"{_PARAMETER}.Type."
@@ -43,17 +43,6 @@ def _agrees(kind: str, value: object) -> bool:
     items = _ITEMS.get(kind)
     return items is None or isinstance(value, (list, tuple)) and all(
         isinstance(v, items) and (not isinstance(v, bytes) or len(v) == 1) for v in value)
-
-
-def _checked(package: Package) -> Iterator[tuple[str, Index]]:
-    """The installed modules and the tests, each with its index."""
-    done = set()
-    for module, _, index in installed_trees(package):
-        done.add(module.path)
-        yield module.path, index
-    for path, tree in test_trees(package):
-        if path not in done:
-            yield path, index_of(tree)
 
 
 _EXPECTING = frozenset({"raises", "assertRaises", "assertRaisesRegex"})
@@ -137,7 +126,8 @@ def parameter_type_disagrees(package: Package) -> Iterator[Hit]:
     self.set_parameters([Parameter('speed', Parameter.Type.DOUBLE, 2.0)])
     ```
     """
-    for path, index in _checked(package):
+    for module, index in code_and_test_indexes(package):
+        path = module.path
         if not index.imports_from("rclpy"):
             continue
         for call in index.calls:

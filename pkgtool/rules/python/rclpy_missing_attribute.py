@@ -13,17 +13,17 @@ from pkgtool.knowledge.rclpy_missing import missing_attribute
 from pkgtool.knowledge.rclpy_names import close_name, defined_on, defines
 from pkgtool.knowledge.rclpy_node import GOAL_HANDLE_ATTRIBUTES
 from pkgtool.model.ast_nodes import nodes_of_class
-from pkgtool.model.modules import Import, PythonModule
+from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.python._callbacks import callback_arguments
+from pkgtool.rules.python._code_and_tests import code_and_test_indexes
 from pkgtool.rules.python._message_instances import callback_function
 from pkgtool.rules.python._rclpy_objects import object_class
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings
-from pkgtool.rules.syntax_trees import Index, index_of, installed_trees, resolved_attributes
-from pkgtool.rules.test_modules import test_trees
+from pkgtool.rules.syntax_trees import Index, installed_trees, resolved_attributes
 
 
 @rule("PYC004", "rclpy-missing-attribute", Severity.ERROR,
@@ -88,7 +88,7 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
     distro = package.context.distro
     yield from _goal_handle_reads(package)
     yield from _object_reads(package)
-    for module, index in _checked_modules(package):
+    for module, index in code_and_test_indexes(package):  # tests fail the same way
         for node, owner, attr in resolved_attributes(index):
             if owner.split(".")[0] != "rclpy" or index.in_unevaluated_annotation(node):
                 continue
@@ -119,18 +119,6 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
             if imported.top_level == "rclpy" and not imported.guarded and \
                     imported.span.line not in curated:
                 yield from _missing_import(imported, distro)
-
-
-def _checked_modules(package: Package) -> Iterator[tuple[PythonModule, Index]]:
-    """The installed modules and the test modules (whose rclpy imports and names fail the
-    same way), each with its index."""
-    installed = installed_trees(package)
-    yield from ((module, index) for module, _, index in installed)
-    done = {module.path for module, _, _ in installed}
-    modules = {module.path: module for module in package.modules if module.path not in done}
-    for path, tree in test_trees(package):
-        if path in modules:
-            yield modules[path], index_of(tree)
 
 
 _HANDLED = frozenset({"execute_callback", "cancel_callback", "handle_accepted_callback"})
