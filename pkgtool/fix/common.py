@@ -111,6 +111,8 @@ def line_of(starts: list[int], offset: int) -> int:
 
 WRITE_ONE = re.compile(r"Write `([^`]+)`")
 """The help of a finding whose fix is one name: the near miss of a misspelt one."""
+WRITE_NAME = re.compile(r"Write `([A-Za-z_]\w*)`")
+"""The help of a finding whose fix is one Python name: the near miss of a misspelt one."""
 
 
 def renames(package: Package, findings: list[Finding], wrong: re.Pattern[str],

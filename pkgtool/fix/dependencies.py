@@ -10,7 +10,7 @@ from collections.abc import Iterable, Iterator
 from pkgtool.edit.core import Edit, Fix
 from pkgtool.edit.manifest import ManifestDoc
 from pkgtool.findings import Finding
-from pkgtool.fix.common import child_at, manifest_doc, offer, python_nodes
+from pkgtool.fix.common import WRITE_NAME, child_at, manifest_doc, offer, python_nodes
 from pkgtool.fix.registry import Refusal, fixer
 from pkgtool.knowledge.rosdistro import is_known_dependency
 from pkgtool.model.package import Package
@@ -64,11 +64,11 @@ def undeclared(package: Package, findings: list[Finding]) -> Iterator[Fix | Refu
     import misspells as the one the finding names (``from sensors_msgs.msg import Imu``
     becomes ``from sensor_msgs.msg import Imu``). Safe: that import raised. ``import
     sensors_msgs.msg``, whose uses would change too, needs the user."""
-    misspelt = [f for f in findings if _MEANT.fullmatch(f.fix or "")]
+    misspelt = [f for f in findings if WRITE_NAME.fullmatch(f.fix or "")]
     yield from _declare(package, [f for f in findings if f not in misspelt],
                         unmet_runtime_needs(package), "exec_depend")
     for doc, finding, nodes in python_nodes(package, misspelt):
-        meant = _MEANT.fullmatch(finding.fix or "")
+        meant = WRITE_NAME.fullmatch(finding.fix or "")
         statement = next((n for n in nodes if isinstance(n, ast.ImportFrom)), None)
         if meant is None or statement is None or statement.level or not statement.module:
             continue
@@ -78,10 +78,6 @@ def undeclared(package: Package, findings: list[Finding]) -> Iterator[Fix | Refu
             at = doc.start(statement) + written.start(1)
             yield Fix(f"Import from `{meant[1]}`",
                       (Edit(doc.source.path, at, at + len(wrong), meant[1]),))
-
-
-_MEANT = re.compile(r"Write `([A-Za-z_][A-Za-z0-9_]*)`")
-"""DEP001's help on an import of a misspelt package: the package meant."""
 
 
 @fixer("DEP002", "Make the build-only dependency `<depend>`, or add an `<exec_depend>`")

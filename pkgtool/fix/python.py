@@ -15,7 +15,7 @@ from collections.abc import Iterator
 from pkgtool.edit.core import Edit, Fix
 from pkgtool.edit.pysource import PyDoc
 from pkgtool.findings import Finding
-from pkgtool.fix.common import python_nodes, renames
+from pkgtool.fix.common import WRITE_NAME, python_nodes, renames
 from pkgtool.fix.registry import fixer
 from pkgtool.model.package import Package, is_test_material
 from pkgtool.rules.python.field_value_type import TO_MSG, float_fix
@@ -25,8 +25,6 @@ from pkgtool.rules.python.path_without_separator import joins
 from pkgtool.rules.syntax_trees import index_of
 
 _DECIMAL = re.compile(r"[0-9][0-9_]*")
-_WRITE_NAME = re.compile(r"Write `([A-Za-z_]\w*)`")
-"""The help of a finding whose fix is one Python name: the near miss of a misspelt one."""
 _MODULES = frozenset("""argparse copy glob json math os random re shutil signal socket
                      struct subprocess sys threading time""".split())
 """Standard library modules code uses by their name (``math.pi``) and forgets to import."""
@@ -232,7 +230,7 @@ def message_field(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Rename a field a message does not have (set, read or given as a keyword) to the one
     field spelled like it. Unsafe: it guesses which field was meant; the code raised
     AttributeError (or the constructor ignored the keyword) before."""
-    yield from renames(package, findings, re.compile(r"has no field `(\w+)`"), _WRITE_NAME)
+    yield from renames(package, findings, re.compile(r"has no field `(\w+)`"), WRITE_NAME)
 
 
 @fixer("PYC063", "Write the standard library name the misspelt one is close to", safe=False)
@@ -240,7 +238,7 @@ def stdlib_name(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Rename a name a standard library module lacks to the one name it has spelled like it
     (``signal.SIGNT`` to ``signal.SIGINT``). Unsafe: it guesses which name was meant; the
     line raised AttributeError or ImportError before."""
-    yield from renames(package, findings, re.compile(r"has no `(\w+)` on Python"), _WRITE_NAME)
+    yield from renames(package, findings, re.compile(r"has no `(\w+)` on Python"), WRITE_NAME)
 
 
 @fixer("PYC064", "Read the attribute of the package's class the misspelt one is close to",
@@ -249,7 +247,7 @@ def instance_attribute(package: Package, findings: list[Finding]) -> Iterator[Fi
     """Rename an attribute an instance of a package class lacks to the one name its class
     defines spelled like it (``detect_edge`` to ``detect_edges``). Unsafe: it guesses which
     attribute was meant; the read raised AttributeError before."""
-    yield from renames(package, findings, re.compile(r"has no attribute `(\w+)`"), _WRITE_NAME)
+    yield from renames(package, findings, re.compile(r"has no attribute `(\w+)`"), WRITE_NAME)
 
 
 @fixer("PYC029", "Write the keyword rclpy's function takes that the misspelt one is close to",
@@ -269,7 +267,7 @@ def parameter_read(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     it (``perod`` to ``period``). Unsafe: it guesses which parameter was meant; the read
     raised ParameterNotDeclaredException before."""
     yield from renames(package, findings, re.compile(r"reads parameter `([^`]+)` but never"),
-                       _WRITE_NAME)
+                       WRITE_NAME)
 
 
 @fixer("PYC058", "Add the `f` prefix the string's fields need", safe=False)
@@ -322,7 +320,7 @@ def pytest_name(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     (``fixure`` to ``fixture``, ``paramtrize`` to ``parametrize``). Unsafe: it guesses which
     name was meant; the test module or the test did not run as written before."""
     yield from renames(package, findings,
-                       re.compile(r"(?:^`pytest\.mark\.|^`pytest` has no `)(\w+)`"), _WRITE_NAME)
+                       re.compile(r"(?:^`pytest\.mark\.|^`pytest` has no `)(\w+)`"), WRITE_NAME)
 
 
 @fixer("PYC066", "Name the test function's parameter the misspelt one is close to",
@@ -332,7 +330,7 @@ def parametrize_name(package: Package, findings: list[Finding]) -> Iterator[Fix]
     it (``sped`` to ``speed``). Unsafe: it guesses which parameter was meant; pytest refused
     the test before."""
     yield from renames(package, findings, re.compile(r"^`parametrize` names `(\w+)`"),
-                       _WRITE_NAME)
+                       WRITE_NAME)
 
 
 @fixer("PYC026", "Return the response a service callback fills in", safe=False)
