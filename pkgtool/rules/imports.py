@@ -509,6 +509,13 @@ def also_imported(others: tuple[Need, ...], *, naming: bool = False) -> str:
     return f"; also imported in {places}{more}"
 
 
+def no_package_named(package: Package) -> str:
+    """How a message says a name is no package pkgtool knows: of the target's release, or of
+    the packages linted with this one (it sees no workspace beyond those)."""
+    linted = " or of the packages linted with it" if len(package.context.workspace) > 1 else ""
+    return f"no package of {package.context.distro}'s release{linted} has that name"
+
+
 def misspelt_package(package: Package, need: Need) -> str | None:
     """The package a ROS import names with a typo (``sensors_msgs`` for ``sensor_msgs``): a
     name no package of any distribution's release, of the workspace or of package.xml has,

@@ -10,7 +10,7 @@ from pkgtool.model.package import Package
 from pkgtool.rules.dependency_names import names_module, unknown_dependencies
 from pkgtool.rules.imports import (BUILD_ONLY, TEST, Need, also_imported, declared,
                                    dependency_cause, grouped, misnamed, misspelt_package,
-                                   unmet_runtime_needs)
+                                   no_package_named, unmet_runtime_needs)
 from pkgtool.rules.registry import rule
 
 
@@ -69,12 +69,10 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     for need, others in grouped(unmet, by_key=True):
         meant = misspelt_package(package, need)
         if meant is not None:
-            linted = " or of the packages linted with it" \
-                if len(package.context.workspace) > 1 else ""
             yield Hit(need.imported.span,
-                      f"`{need.top}` is imported but no package of {package.context.distro}'s "
-                      f"release{linted} has that name (did you mean `{meant}`?): the import "
-                      f"raises ModuleNotFoundError{also_imported(others)}",
+                      f"`{need.top}` is imported but {no_package_named(package)} (did you mean "
+                      f"`{meant}`?): the import raises ModuleNotFoundError"
+                      f"{also_imported(others)}",
                       f"Write `{meant}`", related=tuple(other.imported.span for other in others))
             continue
         tops = _first_per_module((need, *others))

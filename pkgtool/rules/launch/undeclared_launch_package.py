@@ -8,7 +8,8 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import (close_names, digits_differ, is_released_package,
                                          key_resolves)
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import ANY, declaration, declared, dependency_cause, launch_keys
+from pkgtool.rules.imports import (ANY, declaration, declared, dependency_cause, launch_keys,
+                                   no_package_named)
 from pkgtool.rules.registry import rule
 
 
@@ -74,10 +75,7 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
                     name, package.context.distro, limit=3,
                     extra=frozenset((*package.context.workspace, package.name)))
                     if not digits_differ(name, close)]
-                linted = " or of the packages linted with it" \
-                    if len(package.context.workspace) > 1 else ""
-                missing += (f", and no package of {package.context.distro}'s release{linted} "
-                            "has that name")
+                missing += f", and {no_package_named(package)}"
                 missing += f" (did you mean `{meant[0]}`?)" if meant else ""
                 fix = f"Write `{meant[0]}`" if meant else "Check the name; declare the " \
                     "package if a workspace it is built in provides it"
