@@ -9,11 +9,12 @@ each merged with what other runs wrote to it meanwhile.
 The key of a package is a SHA-256 over: the cache schema, pkgtool's version and a fingerprint
 of its installed code and data, the Python version and the installed distributions, the
 package's effective settings (rule selection, severities, path ignores, target distribution),
-the workspace index its rules read (every sibling package's folder, name, interfaces and
-Python packages), and the path and content hash of every file of the package. A file's content hash
-is reused from the entry when its size and modification time are unchanged and it was last
-modified well before it was hashed (so an edit within the file system's time granularity is
-never missed); otherwise the file is read again.
+the workspace index its rules read (every sibling package's folder, name, interfaces, their
+message fields, Python packages and a digest of its setup files), and the path and content
+hash of every file of the package. A file's content hash is reused from the entry when its
+size and modification time are unchanged and it was last modified well before it was hashed
+(so an edit within the file system's time granularity is never missed); otherwise the file is
+read again.
 
 A file is written to a temporary file and renamed into place, so concurrent runs never see
 it half-written (the last one to finish keeps its own entries). An entry that cannot be read,
@@ -39,18 +40,12 @@ from pkgtool.cache.serial import BadEntry, decode, encode, index_entry, index_re
 from pkgtool.config import Settings
 from pkgtool.findings import Finding
 from pkgtool.model.context import WorkspacePackage
+from pkgtool.model.digest import sha256
 from pkgtool.model.files import Scan, scan
 from pkgtool.records import record
 
-try:  # CPython's own SHA-256: hashlib loads OpenSSL first, ~5 ms of every cached run's start
-    from _sha2 import sha256  # Python 3.12 and later
-except ImportError:
-    try:
-        from _sha256 import sha256  # Python 3.10 and 3.11
-    except ImportError:
-        from hashlib import sha256
 
-SCHEMA = "pkgtool-lint-cache-5"
+SCHEMA = "pkgtool-lint-cache-6"
 PACKS = 16
 """The files in ``lint/`` the entries are spread over (by package folder): a run that checked
 a few packages writes a few small files."""
@@ -305,8 +300,9 @@ def _settings_parts(settings: Settings) -> list[Any]:
 
 
 def _workspace_key(workspace: Mapping[Path, WorkspacePackage]) -> list[Any]:
-    return [[str(folder), p.name, sorted((k, sorted(v)) for k, v in p.interfaces.items()),
-             sorted(p.modules)] for folder, p in sorted(workspace.items())]
+    """Every entry of the index, whole: a sibling's message fields and setup files are read
+    by the rules too (PYC019, LCH001)."""
+    return [[str(folder), *index_record(p)] for folder, p in sorted(workspace.items())]
 
 
 def _code_fingerprint() -> list[Any]:

@@ -23,6 +23,7 @@ from pkgtool.knowledge.interface_definitions import definitions
 from pkgtool.knowledge.tables import DEFAULT_DISTRO
 from pkgtool.model.cmake_interfaces import (installed_python_packages, with_included,
                                             with_listed)
+from pkgtool.model.digest import text_digest
 from pkgtool.model.files import list_files, read_bytes
 from pkgtool.model.memo import per_object
 from pkgtool.records import field, record
@@ -39,12 +40,20 @@ _NOT_MODULES = frozenset({"test", "tests", "launch", "resource", "build", "insta
 class WorkspacePackage:
     """Another package of the workspace: its interfaces (kind -> names), Python packages, and
     the fields and constants of the message classes its ``.msg``, ``.srv`` and ``.action``
-    files define (``pkg/kind/Class`` -> entry: :mod:`pkgtool.knowledge.interface_definitions`)."""
+    files define (``pkg/kind/Class`` -> entry: :mod:`pkgtool.knowledge.interface_definitions`).
+
+    ``folder`` is where it lies; ``setup_digest`` is a digest of its setup.py and setup.cfg
+    when colcon builds it with setup.py alone (ament_python, no pyproject.toml), else empty:
+    :func:`~pkgtool.model.sibling_scripts.sibling_executables` reads its executables from
+    those files when a rule asks, and the digest keys the lint cache to them.
+    """
 
     name: str
     interfaces: Mapping[str, frozenset[str]] = field(default_factory=dict)
     modules: frozenset[str] = frozenset()
     messages: Mapping[str, str] = field(default_factory=dict)
+    folder: str = ""
+    setup_digest: str = ""
 
 
 @record
@@ -144,7 +153,28 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
         modules |= installed_python_packages(cmake)
     interfaces = with_listed(folders, cmake, listed) or {}
     return WorkspacePackage(name, interfaces, frozenset(modules),
-                            _messages(base, name, interfaces, defined))
+                            _messages(base, name, interfaces, defined), base,
+                            _setup_digest(base, manifest, listed))
+
+
+_BUILD_TYPE = re.compile(r"<build_type>\s*([^<\s]+)\s*</build_type>")
+_COMMENT = re.compile(r"<!--.*?-->", re.DOTALL)
+
+
+def _setup_digest(base: str, manifest: str | None, listed: tuple[str, ...]) -> str:
+    """:attr:`WorkspacePackage.setup_digest` of the package at ``base`` with files ``listed``."""
+    if "setup.py" not in listed or "pyproject.toml" in listed:
+        return ""
+    found = _BUILD_TYPE.search(_COMMENT.sub("", manifest or ""))
+    if (found.group(1) != "ament_python") if found else "CMakeLists.txt" in listed:
+        return ""
+    return text_digest(*setup_texts(base))
+
+
+def setup_texts(base: str) -> tuple[str | None, str | None]:
+    """The texts of setup.py and setup.cfg of the package at ``base`` (None: missing or
+    unreadable)."""
+    return _read(os.path.join(base, "setup.py")), _read(os.path.join(base, "setup.cfg"))
 
 
 def _messages(base: str, name: str, interfaces: Mapping[str, frozenset[str]],

@@ -112,8 +112,10 @@ class SetupPy:
         return tuple(e for e in self.entry_points or () if e.group == "console_scripts")
 
 
-def parse_setup_py(path: str, text: str, files: tuple[str, ...]) -> SetupPy | ParseProblem:
-    """Read setup.py ``text``; ``files`` (the package's file list) resolves globs and finders."""
+def parse_setup_py(path: str, text: str, files: tuple[str, ...] | None
+                   ) -> SetupPy | ParseProblem:
+    """Read setup.py ``text``; ``files`` (the package's file list) resolves globs and finders
+    (None: they are not evaluated, see :func:`~pkgtool.model.setup_eval.evaluate`)."""
     from pkgtool.model.setup_eval import read_setup
 
     return read_setup(path, text, files)

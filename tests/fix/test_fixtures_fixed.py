@@ -13,6 +13,7 @@ from pkgtool.fix.registry import fixers
 FIXTURES = Path(__file__).resolve().parents[1] / "fixtures"
 CASES = [(code, case) for code in fixers() for case in sorted((FIXTURES / code / "bad").iterdir())]
 PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprecated_ids"),
+          ("LCH001", "node_of_another_workspace_package"),
           ("LCH002", "undeclared_packages"), ("LCH002", "xacro_run_by_command"),
           ("MAN018", "cmake_package_keys"),
           ("DAT008", "wrong_shapes"),

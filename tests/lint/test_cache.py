@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import importlib.util
 import json
+import re
 import os
 import shutil
 import subprocess
@@ -136,7 +137,11 @@ def test_the_workspace_index_is_kept_with_settled_packages_and_read_again_on_cha
     first = _lint(ws).stdout
     assert "DEP001" in first
     alpha_root = str(ws / "src" / "alpha")
-    assert _entries(ws / ".pkgtool_cache")[alpha_root]["index"] == ["alpha", {}, ["alpha"], {}]
+    name, interfaces, modules, messages, folder, setup_digest = \
+        _entries(ws / ".pkgtool_cache")[alpha_root]["index"]
+    assert [name, interfaces, modules, messages, folder] == \
+        ["alpha", {}, ["alpha"], {}, alpha_root]
+    assert re.fullmatch(r"[0-9a-f]{64}", setup_digest)  # ament_python: its scripts may be read
     assert _lint(ws).stdout == first  # the index of both packages comes from the cache
     pack = ws / ".pkgtool_cache" / "lint" / pack_of(alpha_root)
     whole = json.loads(pack.read_text())
@@ -154,6 +159,25 @@ def test_the_workspace_index_is_kept_with_settled_packages_and_read_again_on_cha
     moved = _lint(ws).stdout
     assert moved == _lint(ws, "--no-cache").stdout != first
     assert _lint(ws).stdout == moved
+
+
+def test_a_sibling_s_changed_console_scripts_are_seen_through_the_cache(tmp_path: Path) -> None:
+    """LCH001 reads another workspace package's console scripts: the cache is keyed to them."""
+    beta = correct_package_files("beta")
+    beta["launch/alpha.launch.py"] = (
+        "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n\n\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([Node(package='alpha', executable='talker')])\n")
+    ws = write_tree(tmp_path / "ws", {
+        **{f"src/alpha/{k}": v for k, v in correct_package_files("alpha").items()},
+        **{f"src/beta/{k}": v for k, v in beta.items()}})
+    _settle(ws)
+    assert "LCH001" not in _lint(ws).stdout
+    setup = ws / "src" / "alpha" / "setup.py"
+    setup.write_text(setup.read_text().replace("'talker = ", "'speaker = "))
+    changed = _lint(ws).stdout
+    assert "LCH001" in changed and "`talker` is not an executable of `alpha`" in changed
+    assert changed == _lint(ws, "--no-cache").stdout == _lint(ws).stdout
 
 
 def test_corrupt_or_foreign_entries_are_ignored_and_rewritten(tmp_path: Path) -> None:

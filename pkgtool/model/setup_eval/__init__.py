@@ -16,7 +16,7 @@ from pkgtool.model.setup_eval.entries import Malformed, data_files, entry_points
 from pkgtool.model.setup_eval.evaluator import SetupCall
 from pkgtool.model.setup_eval.executor import CONTROL_FLOW, Runner
 from pkgtool.model.setup_eval.scope import Scope
-from pkgtool.model.setup_eval.tree import Tree, normalize
+from pkgtool.model.setup_eval.tree import BlindTree, Tree, normalize
 from pkgtool.model.setup_eval.values import Found, NotStatic, plain
 from pkgtool.model.setup_py import PackagesSpec, SetupPy, Value
 from pkgtool.model.span import ParseProblem, Span, Unresolved
@@ -36,12 +36,20 @@ class Evaluation:
     tree: Tree
 
 
-def evaluate(path: str, text: str, files: tuple[str, ...]) -> Evaluation | ParseProblem:
-    """Run setup.py ``text`` over evaluated data; a syntax error gives a ParseProblem."""
+def evaluate(path: str, text: str, files: tuple[str, ...] | None
+             ) -> Evaluation | ParseProblem:
+    """Run setup.py ``text`` over evaluated data; a syntax error gives a ParseProblem.
+
+    ``files`` is the package's file list; None evaluates without one: globs and package
+    finders are refused, so what is evaluated does not depend on the files (a
+    :class:`~pkgtool.model.setup_eval.tree.BlindTree`).
+    """
     module = parse_tree(path, text)  # the parse PYC001 and PYC006 share
     if isinstance(module, ParseProblem):
         return module
-    runner = Runner(path, text, files)
+    runner = Runner(path, text, files or ())
+    if files is None:
+        runner.tree = BlindTree(runner.budget)
     scope = Scope()
     try:
         runner.run_block(module.body, scope)
@@ -51,8 +59,9 @@ def evaluate(path: str, text: str, files: tuple[str, ...]) -> Evaluation | Parse
     return Evaluation(module, scope, call, runner.tree)
 
 
-def read_setup(path: str, text: str, files: tuple[str, ...]) -> SetupPy | ParseProblem:
-    """Evaluate setup.py ``text`` statically; a syntax error gives a ParseProblem."""
+def read_setup(path: str, text: str, files: tuple[str, ...] | None) -> SetupPy | ParseProblem:
+    """Evaluate setup.py ``text`` statically (``files``: see :func:`evaluate`); a syntax
+    error gives a ParseProblem."""
     found = evaluate(path, text, files)
     if isinstance(found, ParseProblem):
         return found

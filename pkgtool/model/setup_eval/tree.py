@@ -181,3 +181,21 @@ def spelled_as_written(pattern: str, matches: list[str]) -> list[str] | None:
 
 def _join(base: str, name: str) -> str:
     return f"{base}/{name}" if base else name
+
+
+class BlindTree(Tree):
+    """A package with no files whose globs and package finders are refused (their values
+    unresolved): what setup.py computes without looking at its files evaluates as before."""
+
+    def __init__(self, budget: Budget | None = None) -> None:
+        super().__init__((), budget)
+
+    def glob(self, pattern: str, *, recursive: bool, hidden: bool = False,
+             dirs_only_at_end: bool = False) -> list[str]:
+        """Refused (every caller evaluates it under the interpreter's guard)."""
+        raise TooLarge("a glob, not read")
+
+    def find_packages(self, where: str, include: tuple[str, ...], exclude: tuple[str, ...],
+                      *, namespace: bool) -> list[str]:
+        """Refused, like :meth:`glob`."""
+        raise TooLarge("a package finder, not read")

@@ -7,6 +7,7 @@ import re
 
 from pkgtool.model.installed import is_ament_python
 from pkgtool.model.package import Package
+from pkgtool.model.scripts import script_names
 
 LAUNCH_FILE_NAME = re.compile(r"(?:^|[._-])launch\.(?:py|xml|ya?ml)$")
 """The names ROS 2 gives launch files (``bringup_launch.py``, ``robot.launch.xml``): never
@@ -47,22 +48,8 @@ def console_scripts(package: Package) -> frozenset[str] | None:
     """The console scripts of setup.py and setup.cfg, or None when they cannot be known (see
     :func:`executables`)."""
     setup = package.setup_py
-    if setup is None or "scripts" in setup.keywords and setup.scripts is None or \
-            package.has_file("pyproject.toml"):
-        return None
-    if not is_ament_python(package):
+    if setup is None or package.has_file("pyproject.toml") or not is_ament_python(package):
         return None  # CMake installs its executables; a setup.py beside it is not run
-    if any(setup.is_unresolved(k) for k in ("entry_points", "**")):
-        return None
     if package.has_file("setup.cfg") and package.setup_cfg is None:
         return None
-    if not all(entry.valid for entry in setup.console_scripts):
-        return None  # setuptools refuses the whole list (ENT001): nothing is installed
-    names = {entry.name for entry in setup.console_scripts}
-    names.update(posixpath.basename(script) for script in setup.scripts or ())
-    option = package.setup_cfg.get("options.entry_points", "console_scripts") \
-        if package.setup_cfg else None
-    if option is not None:
-        names.update(line.split("=", 1)[0].strip() for line in option.value.splitlines()
-                     if "=" in line)
-    return frozenset(names)
+    return script_names(setup, package.setup_cfg)

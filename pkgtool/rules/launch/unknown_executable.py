@@ -7,7 +7,9 @@ from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import typo_of
+from pkgtool.model.launch import NodeRef
 from pkgtool.model.package import Package
+from pkgtool.model.scripts import sibling_executables
 from pkgtool.rules.launch._executables import LAUNCH_FILE_NAME, console_scripts, executables
 from pkgtool.rules.registry import rule
 
@@ -15,17 +17,21 @@ from pkgtool.rules.registry import rule
 @rule("LCH001", "launch-unknown-executable", Severity.ERROR,
       fix="Add the executable to `console_scripts` in setup.py, or launch an existing one")
 def launch_unknown_executable(package: Package) -> Iterator[Hit]:
-    """A launch file starts an executable of this package that setup.py does not install.
+    """A launch file starts an executable that its package (this one, or another ament_python
+    package of the workspace) does not install.
 
     ## What it does
     For every `Node(package=..., executable=...)` (or `<node pkg= exec=>`) naming this
     package, checks that the executable is a console script of setup.py or setup.cfg, or a
     file data_files installs into `lib/<package>` (a data_files that could not be evaluated
-    may install any file of the package: a name no file has is still reported). Executables
-    given by launch arguments or other substitutions are not checked, nor nodes that are
-    never started (assigned to a local name the function never reads): the executable is
-    looked up only when a node starts, so such a node cannot fail. LCH005 still checks
-    their arguments, which the `Node()` call itself rejects.
+    may install any file of the package: a name no file has is still reported). A node of
+    another package linted with this one (a bringup package starting a driver's node) is
+    checked against that package's console scripts when it is an ament_python package whose
+    setup.py and setup.cfg say all it installs (evaluated statically, no data_files into
+    `lib/<package>`). Executables given by launch arguments or other substitutions are not
+    checked, nor nodes that are never started (assigned to a local name the function never
+    reads): the executable is looked up only when a node starts, so such a node cannot fail.
+    LCH005 still checks their arguments, which the `Node()` call itself rejects.
 
     ## Why is this bad?
     `ros2 launch` looks the executable up in `lib/<package>` only when the launch file runs
@@ -42,23 +48,37 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
     ```
     """
     known = executables(package, any_data=True)
-    if known is None:
-        return
-    shown = executables(package) or console_scripts(package) or frozenset()
     # what certainly is there: a data_files never evaluated may copy any file
+    shown = (executables(package) or console_scripts(package) or frozenset()) \
+        if known is not None else None
     for launch in package.launch_files:
         for node in launch.nodes:
-            if node.package != package.name or node.executable is None or node.unused or \
+            if node.package is None or node.executable is None or node.unused or \
                     LAUNCH_FILE_NAME.search(node.executable):  # LCH017's
                 continue
-            if node.executable not in known:
-                choices = ", ".join(f"`{n}`" for n in sorted(shown)) or "none"
-                close = get_close_matches(node.executable, sorted(shown), n=1)
-                meant = typo_of(node.executable, shown)
-                yield Hit(node.executable_span or node.span,
-                          f"`{node.executable}` is not an executable of `{package.name}` "
-                          f"({f'did you mean `{close[0]}`? ' if close else ''}it installs: "
-                          f"{choices})",
-                          f"Write `{meant}`" if meant else
-                          f"Add `{node.executable} = {package.name}.<module>:main` to "
-                          f"console_scripts, or launch one of the installed executables")
+            installed = (known, shown) if node.package == package.name else \
+                _sibling(package, node.package)
+            if installed[0] is not None and node.executable not in installed[0]:
+                yield _unknown(node, installed[1] or frozenset())
+
+
+def _sibling(package: Package, name: str) -> tuple[frozenset[str] | None, frozenset[str] | None]:
+    """What another workspace package named ``name`` installs (twice, as :func:`executables`
+    gives a package's own: what may be there, what is shown); None when unknown."""
+    sibling = package.context.workspace.get(name)
+    found = sibling_executables(sibling) if sibling is not None else None
+    return found, found
+
+
+def _unknown(node: NodeRef, shown: frozenset[str]) -> Hit:
+    """The finding for ``node``, whose executable is none of ``shown``."""
+    executable = node.executable or ""
+    choices = ", ".join(f"`{n}`" for n in sorted(shown)) or "none"
+    close = get_close_matches(executable, sorted(shown), n=1)
+    meant = typo_of(executable, shown)
+    return Hit(node.executable_span or node.span,
+               f"`{executable}` is not an executable of `{node.package}` "
+               f"({f'did you mean `{close[0]}`? ' if close else ''}it installs: {choices})",
+               f"Write `{meant}`" if meant else
+               f"Add `{executable} = {node.package}.<module>:main` to console_scripts, or "
+               "launch one of the installed executables")
