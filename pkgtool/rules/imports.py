@@ -385,14 +385,22 @@ def local_modules(package: Package, module: PythonModule) -> frozenset[str]:
     """Top-level names an import in ``module`` finds in the package itself: its own modules,
     the modules next to ``module`` (not ``module`` itself when another provider has its name:
     ``from launch import ...`` in ``my_pkg/launch.py`` is ROS's ``launch``, Python 3's imports
-    being absolute), and for test code those pytest puts on ``sys.path``."""
+    being absolute), and for test code those pytest puts on ``sys.path`` and those of the
+    folders above the test's (``python3 -m pytest tests`` run in ``tool/`` imports
+    ``tool/generator.py`` from ``tool/tests/test_generator.py``: the current folder)."""
     own = posixpath.basename(module.path).removesuffix(".py")
     siblings = _siblings(package, module.path)
     if own in siblings and own not in own_modules(package) and \
             provided_elsewhere(own, package.context):
         siblings = siblings - {own}
     local = own_modules(package) | siblings
-    return local | pytest_path_modules(package) if is_test_code(package, module) else local
+    if not is_test_code(package, module):
+        return local
+    folder, above = posixpath.dirname(module.path), set()
+    while folder:
+        folder = posixpath.dirname(folder)
+        above |= _siblings(package, posixpath.join(folder, "_"))
+    return local | pytest_path_modules(package) | above
 
 
 @per_package

@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+import re
+from collections.abc import Iterable, Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
+from pkgtool.knowledge.ros_names import looks_like_ros
 from pkgtool.knowledge.rosdep import ROS1_PACKAGES
+from pkgtool.knowledge.rosdistro import is_released_package, modules_of_key
 from pkgtool.model.modules import PythonModule
 from pkgtool.rules.imports import ANY, also_imported, declared, grouped, needs
 from pkgtool.rules.registry import rule
@@ -43,6 +46,11 @@ def unknown_import(package: Package) -> Iterator[Hit]:
     and so does the Python package rosidl generates for a workspace interface package (its
     name, whatever it looks like).
 
+    A package declaring a ROS package of Python bindings (named `..._python`, `..._py`,
+    `python_...`, `...pybind...`) that none of its imports is known to use gets no finding:
+    such a package's module is often named otherwise (`rmf_fleet_adapter_python` installs
+    `rmf_adapter`), and the unknown import may be it.
+
     ## Example
     ```python
     from filterpy.kalman import KalmanFilter  # pkgtool guesses `python3-filterpy`
@@ -57,9 +65,11 @@ def unknown_import(package: Package) -> Iterator[Hit]:
     if package.manifest is None:
         return
     available = declared(package, ANY)
+    binding = _unused_binding(package, available)
     for modules in _by_kind(package):
         unknown = (need for module in modules for need in needs(package, module)
-                   if need.kind == "unknown" and not any(k in available for k in need.keys))
+                   if need.kind == "unknown" and not any(k in available for k in need.keys)
+                   and not (binding and need.top not in package.context.workspace))
         for need, others in grouped(unknown):
             related = tuple(other.imported.span for other in others)
             if need.top in package.context.workspace and need.top != package.name:
@@ -82,6 +92,23 @@ def unknown_import(package: Package) -> Iterator[Hit]:
                           f"Declare the key that installs `{need.top}`, e.g. "
                           f"`<exec_depend>{need.key}</exec_depend>` if `rosdep resolve "
                           f"{need.key}` knows it", related)
+
+
+_BINDING = re.compile(r"(?:^|_)py(?:thon)?3?(?:_|$)|pybind")
+"""How ROS packages of Python bindings are named (``rmf_fleet_adapter_python``, ``tf2_ros_py``,
+``python_qt_binding``): their module is often named otherwise (``rmf_adapter``)."""
+
+
+def _unused_binding(package: Package, available: Iterable[str]) -> bool:
+    """True when a declared ROS package named as a Python binding, whose modules pkgtool does
+    not know, is imported by no name it knows: the unknown imports may be its modules."""
+    bindings = {key for key in available if _BINDING.search(key) and not modules_of_key(key)
+                and (looks_like_ros(key) or is_released_package(key, package.context.distro))}
+    if not bindings:
+        return False
+    used = {key for module in package.modules for need in needs(package, module)
+            for key in need.keys if need.kind != "unknown"}
+    return bool(bindings - used)
 
 
 def _by_kind(package: Package) -> tuple[list[PythonModule], ...]:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -76,6 +77,9 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
     A tag whose REP 149 ``condition`` is false for the target ROS 2 distribution (or not
     understood) is not used there and not checked, as packages for both ROS versions have:
     ``<exec_depend condition="$ROS_PYTHON_VERSION == 2">python-numpy</exec_depend>``.
+    A name that is a package of the workspace linted with this one, or that CMakeLists.txt
+    finds with ``find_package(name)``, is a package built from source beside it (``serial``
+    cloned by a ``.repos`` file) and not checked.
 
     ## Why is this bad?
     ``rosdep install`` stops with "Cannot locate rosdep definition", build farms refuse the
@@ -100,7 +104,12 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
     types = [b.text for b in build_types(found)]
     ros2 = any(t.startswith("ament_") for t in types)
     compiled = bool(types) and "ament_python" not in types  # CMake: C++ code, libraries
+    cmake = package.texts.get("CMakeLists.txt", "")
     for element in found.elements():
+        key = token(element.text)
+        if key in package.context.workspace and key not in NOT_PACKAGES or \
+                re.search(rf"(?i:find_package)\s*\(\s*{re.escape(key)}[\s)]", cmake):
+            continue  # a package built from source with this one (a workspace's, a .repos's)
         hit = _hit(element, ros2, compiled, package.context.distro) \
             if element.tag in _CHECKED and \
             applies(element.attribute("condition"), package.context.distro) else None

@@ -6,7 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import nodes_of, nodes_of_class
+from pkgtool.model.ast_nodes import nodes_of, nodes_of_class, walk_once
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
@@ -78,11 +78,83 @@ def undefined_name(package: Package) -> Iterator[Hit]:
         for line, column, name in _pyflakes_undefined(path, tree):
             if stored is None or name in stored or \
                     any(first <= line <= last for first, last in dead) or \
-                    any(start <= (line, column) <= end for start, end in notes):
+                    any(start <= (line, column) <= end for start, end in notes) or \
+                    _bound_at_run_time(tree, line, column, name):
                 continue
             if (line, name) not in seen:
                 seen.add((line, name))
                 yield Hit(Span(path, line, column + 1), f"Undefined name `{name}`")
+
+
+_DEFERRING = frozenset({"add_done_callback", "create_timer", "create_wall_timer",
+                        "create_subscription", "create_service", "create_guard_condition",
+                        "Thread", "Timer", "Process", "submit", "call_later", "call_soon",
+                        "call_soon_threadsafe", "run_in_executor", "after", "connect",
+                        "register", "start_new_thread", "partial"})
+"""Calls that keep a function to run it later (callbacks, threads, executors)."""
+_SCOPES = (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef)
+_DEFINITIONS = (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)
+_LOOPS = (ast.For, ast.AsyncFor, ast.While)
+_BRANCHES = (ast.If, ast.IfExp, ast.BoolOp, ast.Try, ast.ExceptHandler)
+
+
+def _bound_at_run_time(tree: ast.Module, line: int, column: int, name: str) -> bool:
+    """True for the two kinds of pyflakes' undefined names that Python finds bound: a local
+    read in a loop that assigns it further on (``x = prev + 1`` ... ``prev = x``: bound by
+    the pass that reads it, when the first pass skips the read), and the name of an ``except
+    ... as name`` read by a lambda that the handler passes to a call that runs it at once
+    (pyflakes checks function bodies after the handler, which unbinds the name)."""
+    node = _loads(tree).get((line, column))
+    if node is None or node.id != name:
+        return False
+    parents = walk_once(tree).parents
+    parent = parents.get(id(node))
+    lambdas: list[ast.Lambda] = []
+    branched = False  # the read is in a branch some pass may skip
+    while parent is not None and not isinstance(parent, _DEFINITIONS):
+        if isinstance(parent, ast.ExceptHandler) and parent.name == name:
+            return len(lambdas) == 1 and _run_at_once(lambdas[0], parents)
+        if isinstance(parent, ast.Lambda):
+            lambdas.append(parent)
+        elif isinstance(parent, _BRANCHES):
+            branched = True
+        elif isinstance(parent, _LOOPS) and branched and not lambdas and \
+                _stored_after(parent, node):
+            return True
+        parent = parents.get(id(parent))
+    return False
+
+
+def _loads(tree: ast.Module) -> dict[tuple[int, int], ast.Name]:
+    """The names ``tree`` reads, by line and column (from 0)."""
+    return {(n.lineno, n.col_offset): n for n in nodes_of_class(tree, ast.Name)
+            if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load)}
+
+
+def _stored_after(loop: ast.AST, read: ast.Name) -> bool:
+    """True when the body of ``loop`` (not a function or class in it) assigns the name
+    ``read`` reads after it, in source order."""
+    found = list(getattr(loop, "body", ()))
+    for current in found:
+        if isinstance(current, ast.Name) and current.id == read.id and \
+                isinstance(current.ctx, ast.Store) and \
+                (current.lineno, current.col_offset) > (read.lineno, read.col_offset):
+            return True
+        if not isinstance(current, _SCOPES):
+            found.extend(ast.iter_child_nodes(current))
+    return False
+
+
+def _run_at_once(function: ast.Lambda, parents: dict[int, ast.AST]) -> bool:
+    """True when ``function`` is an argument of a call that does not keep it for later."""
+    call = parents.get(id(function))
+    if isinstance(call, ast.keyword):
+        call = parents.get(id(call))
+    if not isinstance(call, ast.Call):
+        return False
+    callee = call.func.attr if isinstance(call.func, ast.Attribute) else \
+        call.func.id if isinstance(call.func, ast.Name) else None
+    return callee is not None and callee not in _DEFERRING
 
 
 def _stored_in_globals(tree: ast.Module) -> frozenset[str] | None:
