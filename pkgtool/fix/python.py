@@ -192,6 +192,19 @@ def method_call(package: Package, findings: list[Finding]) -> Iterator[Fix]:
                       (_insert(doc, doc.end(method), "()"),), safe=raised)
 
 
+@fixer("PYC033", "Pass a timeout given in the executor's place as `timeout_sec=`")
+def timeout_keyword(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Write ``timeout_sec=`` before the timeout PYC033 finds in the place of
+    ``rclpy.spin_until_future_complete()``'s executor. Safe: the call failed before. The
+    other PYC033 findings (too many arguments) need the user."""
+    for doc, finding, nodes in python_nodes(package, findings):
+        value = next((n for n in nodes if isinstance(n, ast.expr) and finding.message.startswith(
+            f"`{ast.unparse(n)}` is given in the place of")), None)
+        if value is not None:
+            yield Fix(f"Pass `timeout_sec={ast.unparse(value)}`",
+                      (_insert(doc, doc.start(value), "timeout_sec="),))
+
+
 @fixer("PYC047", "Write the augmented assignment `=+` stands for", safe=False)
 def augmented_assignment(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Swap ``=+`` to ``+=`` (``=-`` to ``-=``) in the assignment PYC047 reports. Unsafe:

@@ -126,7 +126,8 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
     base = os.fspath(root)
     manifest = _read(os.path.join(base, "package.xml"))
     found = _NAME.search(manifest) if manifest is not None else None
-    name = found.group(1) if found else root.name
+    name = found.group(1) if found else \
+        (_setup_name(base) if manifest is None else None) or root.name
     kinds: dict[str, set[str]] = {}
     modules: set[str] = set()
     defined: dict[tuple[str, str], str | None] = {}
@@ -169,6 +170,22 @@ def _setup_digest(base: str, manifest: str | None, listed: tuple[str, ...]) -> s
     if (found.group(1) != "ament_python") if found else "CMakeLists.txt" in listed:
         return ""
     return text_digest(*setup_texts(base))
+
+
+def _setup_name(base: str) -> str | None:
+    """The name colcon gives a Python project without package.xml: setup.py's ``name=``, else
+    setup.cfg's ``[metadata] name`` (not its folder's name)."""
+    from pkgtool.model.setup_cfg import SetupCfg, parse_setup_cfg
+    from pkgtool.model.setup_py import SetupPy, parse_setup_py
+
+    setup_text, cfg_text = setup_texts(base)
+    setup = parse_setup_py("setup.py", setup_text, None) if setup_text is not None else None
+    if isinstance(setup, SetupPy) and setup.name is not None and \
+            isinstance(setup.name.value, str) and setup.name.value:
+        return setup.name.value
+    cfg = parse_setup_cfg("setup.cfg", cfg_text) if cfg_text is not None else None
+    option = cfg.get("metadata", "name") if isinstance(cfg, SetupCfg) else None
+    return option.value.strip() or None if option is not None else None
 
 
 def setup_texts(base: str) -> tuple[str | None, str | None]:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from typing import Any
 
 from pkgtool.model.span import ParseProblem, Span
@@ -27,14 +28,24 @@ class XmlElement:
         return dict(self.attributes).get(name)
 
 
+XML_VERSION = re.compile(r"\ufeff?\s*<\?xml\s+version\s*=\s*[\"']([^\"']*)[\"']")
+"""The version of a document's XML declaration (group 1)."""
+
+
 def parse_xml(path: str, text: str) -> XmlElement | ParseProblem:
-    """Parse ``text``; a syntax error or a DOCTYPE/entity declaration becomes a ParseProblem."""
+    """Parse ``text``; a syntax error or a DOCTYPE/entity declaration becomes a ParseProblem.
+    A declaration of an XML version other than 1.x is read as 1.0, as the ROS tools do
+    (MAN027 reports it in package.xml)."""
     from lxml import etree
 
     if "<!DOCTYPE" in text or "<!ENTITY" in text:
         line = text[: max(text.find("<!DOCTYPE"), text.find("<!ENTITY"))].count("\n") + 1
         return ParseProblem("xml-entity", Span(path, line, 1),
                             "DOCTYPE and entity declarations are not allowed in package files")
+    declared = XML_VERSION.match(text)
+    if declared is not None and declared.group(1) not in ("1.0", "1.1"):
+        # expat (Python's xml, catkin_pkg, launch) reads any number; libxml2 refuses it
+        text = f"{text[:declared.start(1)]}1.0{text[declared.end(1):]}"
     try:
         root = etree.fromstring(text.encode("utf-8"), parser())
     except etree.XMLSyntaxError as error:

@@ -57,11 +57,13 @@ callback's response is the one rclpy passes in; the pairs remappings were meant 
 words of an f-string of arguments are the author's to write, and so is the condition a
 `condition='true'` was meant to be, the node name a constructor without `super().__init__`
 needs, the one message a print-style logging call's arguments were meant to form, and the value
-a `Parameter` of a bool or a list was meant to have, and where a command's program ends when a
-substitution names it): no fix
+a `Parameter` of a bool or a list was meant to have, where a command's program ends when a
+substitution names it, and which of too many positional arguments were meant by keyword): no
+fix
 guesses, the user chooses; the other findings
 of the case are fixed."""
 MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages"),
+          ("PYC033", "extra_positional"), ("PYC033", "parameter_default_by_position"),
           ("PYC029", "near_keywords"),
           ("MAN018", "standard_library_modules"), ("DAT001", "typo_in_path"),
           ("DAT008", "flat_file_for_a_component_and_a_node"),

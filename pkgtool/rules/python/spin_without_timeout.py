@@ -47,7 +47,7 @@ def _waited_future(call: ast.Call, index: Index) -> ast.expr | None:
             k.arg in (None, "timeout_sec", "timeout") for k in call.keywords):
         return None
     keyword = next((k.value for k in call.keywords if k.arg == "future"), None)
-    if index.qualified(call.func) == f"rclpy.{_NAME}" and len(call.args) < 4:
+    if index.qualified(call.func) == f"rclpy.{_NAME}" and len(call.args) < 3:  # 3rd: PYC033
         return keyword or (call.args[1] if len(call.args) > 1 else None)
     if (isinstance(call.func, ast.Attribute) and call.func.attr == _NAME
             and index.qualified(call.func) is None and len(call.args) < 2

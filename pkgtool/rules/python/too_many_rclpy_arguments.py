@@ -4,6 +4,7 @@ takes."""
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -63,6 +64,45 @@ def _function_calls(package: Package) -> Iterator[Hit]:
                       f"Pass it by keyword: `{meant}=...`")
 
 
+_EXECUTOR_SLOTS = {"rclpy.spin_until_future_complete": 2}
+"""rclpy functions taking an executor by position, and its index (``node, future, executor,
+timeout_sec``)."""
+_TIMEOUT_NAME = re.compile(r"(?i)time|sec|duration|wait")
+
+
+def _timeouts_as_executor(package: Package) -> Iterator[Hit]:
+    """A number, or a name telling a time, given in the executor's place of
+    :data:`_EXECUTOR_SLOTS`."""
+    for module, _, index in installed_trees(package):
+        for call in index.calls:
+            slot = _EXECUTOR_SLOTS.get(index.qualified(call.func) or "")
+            if slot is None or len(call.args) <= slot or \
+                    any(isinstance(a, ast.Starred) for a in call.args[:slot + 1]):
+                continue
+            value = call.args[slot]
+            if _is_number(value) or _TIMEOUT_NAME.search(_last_name(value)):
+                yield Hit(Span(module.path, value.lineno, value.col_offset + 1),
+                          f"`{ast.unparse(value)}` is given in the place of `"
+                          f"{ast.unparse(call.func)}()`'s `executor` (its third parameter; the "
+                          "timeout is the fourth): the call fails with AttributeError",
+                          f"Pass it by keyword: `timeout_sec={ast.unparse(value)}`")
+
+
+def _is_number(value: ast.expr) -> bool:
+    """True for a number, written or computed from numbers (``2.0``, ``-1``, ``1 / 2``)."""
+    if isinstance(value, ast.UnaryOp):
+        return _is_number(value.operand)
+    if isinstance(value, ast.BinOp):
+        return _is_number(value.left) and _is_number(value.right)
+    return isinstance(value, ast.Constant) and type(value.value) in (int, float)
+
+
+def _last_name(value: ast.expr) -> str:
+    """The last identifier of a name or attribute (``args.timeout``: ``timeout``), else ''."""
+    return value.id if isinstance(value, ast.Name) else \
+        value.attr if isinstance(value, ast.Attribute) else ""
+
+
 EXECUTORS = frozenset(f"rclpy.executors.{name}" for name in (
     "Executor", "SingleThreadedExecutor", "MultiThreadedExecutor", "EventsExecutor"))
 """rclpy's executor classes."""
@@ -114,7 +154,10 @@ def too_many_rclpy_arguments(package: Package) -> Iterator[Hit]:
     the usual case. Also reports `rclpy.spin_once(node, 0.1)`: its `timeout_sec` is
     keyword-only, and `rclpy.init(args)`: `init` takes keywords only (`args=args`), and an
     executor's `spin(node)` (it takes no argument: `add_node(node)` gives it the node; also
-    `spin_once`, `add_node` and the others given too many). Calls passing `*args` are not
+    `spin_once`, `add_node` and the others given too many), and a timeout given to
+    `rclpy.spin_until_future_complete(node, future, 5.0)` in the place of its third
+    parameter, `executor` (a number, or a name telling a time: `args.timeout`, `wait_sec`),
+    which fails with AttributeError. Calls passing `*args` are not
     judged, nor packages defining a function of the same name.
 
     ## Why is this bad?
@@ -146,3 +189,4 @@ def too_many_rclpy_arguments(package: Package) -> Iterator[Hit]:
                   None if keywords else _DEFAULT)
     yield from _function_calls(package)
     yield from _executor_calls(package)
+    yield from _timeouts_as_executor(package)

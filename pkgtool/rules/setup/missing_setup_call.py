@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.installed import is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
@@ -16,7 +17,8 @@ def missing_setup_call(package: Package) -> Iterator[Hit]:
     """setup.py contains no `setup(...)` call at all.
 
     ## What it does
-    Reports a setup.py (that parses) in which no call named `setup` appears anywhere.
+    Reports a setup.py (that parses) in which no call named `setup` appears anywhere, in a
+    package colcon builds with it (not a CMake package's leftover file, which nothing runs).
 
     ## Why is this bad?
     Running such a setup.py installs nothing: colcon reports the build as done, yet the
@@ -38,5 +40,5 @@ def missing_setup_call(package: Package) -> Iterator[Hit]:
     ```
     """
     setup = package.setup_py
-    if setup is not None and setup.setup_span is None:
+    if setup is not None and setup.setup_span is None and is_ament_python(package):
         yield Hit(Span(setup.path, 1, 1), "`setup.py` never calls `setup()`")
