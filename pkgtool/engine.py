@@ -2,12 +2,15 @@
 
 from __future__ import annotations
 
+import ast
 from collections.abc import Iterable, Mapping
 
 from pkgtool.config import ALL, Layer, settings_for
 from pkgtool.findings import Finding, Hit, Severity
 from pkgtool.model.package import Package
+from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
+from pkgtool.model.static_branches import dead_lines
 from pkgtool.records import record, replace
 from pkgtool.rules.registry import Rule
 
@@ -57,12 +60,24 @@ def check_package(package: Package, rules: Iterable[Rule], *, root_label: str,
             found.append((_internal_error(package, rule, error, root_label), None))
             continue
         for hit in hits:
+            if rule.code.startswith("PYC") and _never_runs(package, hit.span):
+                continue
             finding = Finding(rule.code, overrides.get(rule.code, rule.severity), package.name,
                               root_label, hit.span, hit.message, hit.fix or rule.fix,
                               related=hit.related)
             if not _suppressed(package, finding, rule):
                 found.append((finding, hit))
     return sorted(set(_fold_consequences(found)), key=lambda f: f.sort_key)
+
+
+def _never_runs(package: Package, span: Span) -> bool:
+    """True when ``span`` is on a line of Python code that never runs (after a ``return`` in
+    its block, in an ``if`` branch never taken on Python 3: :func:`dead_lines`): the PYC
+    rules judge what runs."""
+    text = package.texts.get(span.path) if span.path.endswith(".py") and span.line else None
+    tree = parse_tree(span.path, text) if text is not None else None
+    return isinstance(tree, ast.Module) and \
+        any(first <= span.line <= last for first, last in dead_lines(tree))
 
 
 def _fold_consequences(found: list[tuple[Finding, Hit | None]]) -> list[Finding]:

@@ -140,6 +140,22 @@ def launch_package(package: Package, findings: list[Finding]) -> Iterator[Fix | 
         yield from _add(doc, "exec_depend", name)
 
 
+_LOOKED_UP = re.compile(r"`([^`]+)` is used by the package's code")
+"""The package a DEP011 finding names."""
+
+
+@fixer("DEP011", "Add an `<exec_depend>` for the package the code looks up")
+def looked_up_package(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
+    """Declare each package whose share folder or prefix installed code looks up (the name is
+    its key), for names that resolve (see :func:`_resolves`)."""
+    doc = manifest_doc(package)
+    names = dict.fromkeys(named.group(1) for f in findings
+                          if (named := _LOOKED_UP.match(f.message)) is not None)
+    for name in names if doc is not None else ():
+        if name != package.name and _resolves(package, name):
+            yield from _add(doc, "exec_depend", name)
+
+
 @fixer("DEP007", "Import the module through its package")
 def sibling_module(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Write the installed name of a module imported by its bare name: ``from helpers import

@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import ast
 import operator
+import re
 from collections import Counter
 from collections.abc import Callable
 
@@ -280,18 +281,25 @@ def _reads_variable(node: ast.AST, variable: str) -> bool:
 
 
 def depends_on_ros_distro(test: ast.expr,
-                          assigned: Callable[[str], ast.expr | None] = lambda name: None) -> bool:
-    """The test reads the ROS distribution: directly, or through a name whose one assignment
-    (``assigned`` looks it up in the enclosing scopes) reads it. Code in either branch is
-    written for some distributions only."""
+                          assigned: Callable[[str], ast.expr | None] = lambda name: None,
+                          depth: int = 0) -> bool:
+    """The test reads the ROS distribution: directly, or through names whose one assignment
+    (``assigned`` looks it up in the enclosing scopes) reads it, a few names deep (``p =
+    subprocess.Popen('echo $ROS_DISTRO', ...)``, ``version = p.communicate()[0]``). Code in
+    either branch is written for some distributions only."""
     for node in descendants(test):
-        if _reads_ros_distro(node):
+        if _reads_ros_distro(node) or depth and isinstance(node, ast.Constant) and \
+                isinstance(node.value, str) and _SHELL_DISTRO.search(node.value):
             return True
-        if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
+        if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load) and depth < 3:
             value = assigned(node.id)
-            if value is not None and any(_reads_ros_distro(n) for n in descendants(value)):
+            if value is not None and depends_on_ros_distro(value, assigned, depth + 1):
                 return True
     return False
+
+
+_SHELL_DISTRO = re.compile(r"\$\{?ROS_DISTRO\b|^ROS_DISTRO$")
+"""The distribution as a command reads it: ``echo $ROS_DISTRO``, ``['printenv', 'ROS_DISTRO']``."""
 
 
 def _is_name(node: ast.expr, name: str) -> bool:

@@ -36,6 +36,7 @@ RULES = {
     "DEP008": ("unknown-interface-import", "error", True, "dependencies.unknown_interface_import"),
     "DEP009": ("unknown-interface-type", "error", True, "dependencies.unknown_interface_type"),
     "DEP010": ("missing-own-module", "error", True, "dependencies.missing_own_module"),
+    "DEP011": ("undeclared-share-package", "error", True, "dependencies.undeclared_share_package"),
     "ENT001": ("malformed-console-script", "error", True, "entry_points.malformed_console_script"),
     "ENT002": ("uninstalled-entry-point-module", "error", True,
                "entry_points.uninstalled_entry_point_module"),
@@ -196,11 +197,11 @@ RULES = {
 
 FIXED = frozenset({
     "DAT001", "DAT003", "DAT004", "DAT005", "DAT006", "DAT007", "DAT008", "DAT009", "DEP001",
-    "DEP002", "DEP003", "DEP006", "DEP007", "DEP008", "ENT002", "ENT003", "ENT005", "LCH001",
-    "LCH002", "LCH003", "LCH005", "LCH010", "LCH013", "LCH015", "LCH016", "LCH018", "MAN004",
-    "MAN012", "MAN013", "MAN015", "MAN017", "MAN018", "MAN019", "MAN021", "MAN024", "MAN027",
-    "PYC001", "PYC013", "PYC014", "PYC016", "PYC019", "PYC025", "PYC026", "PYC029", "PYC031",
-    "PYC032", "PYC033", "PYC041", "PYC046", "PYC047", "PYC050", "PYC058", "PYC062", "PYC063",
-    "PYC064", "PYC065", "PYC066", "PYC068", "PYC070", "SET003", "SET004", "SET005", "SET006",
-    "SET007", "SET008", "SET009", "SET010", "SET016",
+    "DEP002", "DEP003", "DEP006", "DEP007", "DEP008", "DEP011", "ENT002", "ENT003", "ENT005",
+    "LCH001", "LCH002", "LCH003", "LCH005", "LCH010", "LCH013", "LCH015", "LCH016", "LCH018",
+    "MAN004", "MAN012", "MAN013", "MAN015", "MAN017", "MAN018", "MAN019", "MAN021", "MAN024",
+    "MAN027", "PYC001", "PYC013", "PYC014", "PYC016", "PYC019", "PYC025", "PYC026", "PYC029",
+    "PYC031", "PYC032", "PYC033", "PYC041", "PYC046", "PYC047", "PYC050", "PYC058", "PYC062",
+    "PYC063", "PYC064", "PYC065", "PYC066", "PYC068", "PYC070", "SET003", "SET004", "SET005",
+    "SET006", "SET007", "SET008", "SET009", "SET010", "SET016",
 })

@@ -122,6 +122,7 @@ def unknown_dependencies(package: Package) -> list[Unknown]:
         elsewhere = tuple(d for d in DISTROS if rosdistro.is_released_package(name, d))
         close = [] if elsewhere else rosdistro.close_names(name, distro, extra=neighbours(package))
         meant = close[0] if close and _same_module(package, name, close[0]) and \
+            not cmake_finds(package, name) and \
             not _of_a_family(package, name, close[0]) and \
             not _version_of(name, close[0]) and \
             len(rosdistro.numbered_variants(name, distro)) < 2 else None
@@ -130,6 +131,15 @@ def unknown_dependencies(package: Package) -> list[Unknown]:
 
 
 _PARTS = re.compile(r"[-_.]")
+
+
+def cmake_finds(package: Package, name: str) -> bool:
+    """True when the package's CMakeLists.txt calls ``find_package(name ...)``: a package
+    built with it (from source beside it, when no release has that name), whatever its name
+    looks like."""
+    cmake = package.texts.get("CMakeLists.txt")
+    return cmake is not None and re.search(
+        rf"(?i:find_package)\s*\(\s*{re.escape(name)}[\s)]", cmake) is not None
 
 
 def _version_of(key: str, close: str) -> bool:

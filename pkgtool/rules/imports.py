@@ -387,20 +387,35 @@ def local_modules(package: Package, module: PythonModule) -> frozenset[str]:
     ``from launch import ...`` in ``my_pkg/launch.py`` is ROS's ``launch``, Python 3's imports
     being absolute), and for test code those pytest puts on ``sys.path`` and those of the
     folders above the test's (``python3 -m pytest tests`` run in ``tool/`` imports
-    ``tool/generator.py`` from ``tool/tests/test_generator.py``: the current folder)."""
+    ``tool/generator.py`` from ``tool/tests/test_generator.py``: the current folder; their
+    modules and regular packages, not a folder of Python files a package of its name on
+    ``sys.path`` comes before, as ROS's ``launch`` does before a ``launch/`` folder)."""
     own = posixpath.basename(module.path).removesuffix(".py")
     siblings = _siblings(package, module.path)
     if own in siblings and own not in own_modules(package) and \
             provided_elsewhere(own, package.context):
         siblings = siblings - {own}
-    local = own_modules(package) | siblings
+    local = own_modules(package) | siblings | _own_top_package(package, module.path)
     if not is_test_code(package, module):
         return local
     folder, above = posixpath.dirname(module.path), set()
     while folder:
         folder = posixpath.dirname(folder)
-        above |= _siblings(package, posixpath.join(folder, "_"))
+        prefix = f"{folder}/" if folder else ""
+        above.update(name for name in _siblings(package, f"{prefix}_")
+                     if package.has_file(f"{prefix}{name}.py") or
+                     package.has_file(f"{prefix}{name}/__init__.py"))
     return local | pytest_path_modules(package) | above
+
+
+def _own_top_package(package: Package, path: str) -> frozenset[str]:
+    """The top Python package the file at ``path`` is part of (its folders upwards while they
+    hold an ``__init__.py``): a vendored library importing itself by name
+    (``vendor/lib/lib/blocks/__init__.py`` imports ``lib``) with its folder on ``sys.path``."""
+    folder, top = posixpath.dirname(path), None
+    while folder and package.has_file(f"{folder}/__init__.py"):
+        folder, top = posixpath.dirname(folder), posixpath.basename(folder)
+    return frozenset({top}) if top and folder else frozenset()  # the root's: own_modules'
 
 
 @per_package

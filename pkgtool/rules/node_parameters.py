@@ -248,9 +248,13 @@ def _within(index: Index, node: ast.AST, cls: ast.ClassDef) -> bool:
 
 
 def _module_skip(tree: ast.Module) -> str | None:
-    for node in nodes_of_class(tree, ast.keyword):
-        if isinstance(node, ast.keyword) and node.arg in PERMISSIVE:
-            return f"it uses `{node.arg}`"
+    """Why the module's parameter reads are not judged: it uses a :data:`PERMISSIVE` option,
+    as a keyword or as a key of the keywords it passes (``options['allow_undeclared_parameters']
+    = True``, ``super().__init__('n', **options)``)."""
+    for node in nodes_of_class(tree, ast.keyword, ast.Constant):
+        name = node.arg if isinstance(node, ast.keyword) else getattr(node, "value", None)
+        if isinstance(name, str) and name in PERMISSIVE:
+            return f"it uses `{name}`"
     return None
 
 

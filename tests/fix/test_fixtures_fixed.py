@@ -14,6 +14,7 @@ FIXTURES = Path(__file__).resolve().parents[1] / "fixtures"
 CASES = [(code, case) for code in fixers() for case in sorted((FIXTURES / code / "bad").iterdir())]
 PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprecated_ids"),
           ("LCH001", "node_of_another_workspace_package"),
+          ("DEP011", "lookups_of_undeclared_packages"),
           ("LCH002", "undeclared_packages"), ("LCH002", "xacro_run_by_command"),
           ("MAN018", "cmake_package_keys"),
           ("DAT008", "wrong_shapes"),
@@ -58,12 +59,13 @@ words of an f-string of arguments are the author's to write, and so is the condi
 `condition='true'` was meant to be, the node name a constructor without `super().__init__`
 needs, the one message a print-style logging call's arguments were meant to form, and the value
 a `Parameter` of a bool or a list was meant to have, where a command's program ends when a
-substitution names it, and which of too many positional arguments were meant by keyword): no
-fix
+substitution names it, which of too many positional arguments were meant by keyword, and
+which program was to read a data file run as a command): no fix
 guesses, the user chooses; the other findings
 of the case are fixed."""
 MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages"),
           ("PYC033", "extra_positional"), ("PYC033", "parameter_default_by_position"),
+          ("LCH010", "data_file_as_program"),
           ("PYC029", "near_keywords"),
           ("MAN018", "standard_library_modules"), ("DAT001", "typo_in_path"),
           ("DAT008", "flat_file_for_a_component_and_a_node"),

@@ -13,9 +13,10 @@ from pkgtool.model.launch import FileRef, LaunchFile
 from pkgtool.model.launch_python import read_python_launch
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
+from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.setup_py import DataFile, DataSource
 from pkgtool.rules.setup_values import checked_setup
-from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.rules.syntax_trees import Index, index_of, installed_trees
 
 _SEARCH_PATHS = re.compile(r"\b(?:GZ_SIM|IGN_GAZEBO)_(?:RESOURCE|SYSTEM_PLUGIN)_PATH\b|"
                            r"\bGAZEBO_(?:MODEL|RESOURCE|PLUGIN)_PATH\b|\b(?:GZ|IGN)_FILE_PATH\b|"
@@ -94,7 +95,7 @@ def _share_reads(package: Package, shared: set[str]
     """The share files each installed launch file (but those only nodes never started use)
     and each installed module reading a package's share folder reads."""
     for launch in package.launch_files:
-        if launch.path in shared:
+        if launch.path in shared and not _launch_checks_files(package, launch):
             unread = _only_unused_nodes_read(launch)
             searched = _SEARCH_PATHS.search(package.texts.get(launch.path, "")) is not None
             yield launch.path, (ref for ref in launch.files
@@ -130,6 +131,13 @@ def _checks_files(index: Index) -> bool:
     return any(isinstance(call.func, ast.Attribute) and call.func.attr in _EXISTENCE or
                isinstance(call.func, ast.Name) and call.func.id == "load_dotenv"
                for call in index.calls)
+
+
+def _launch_checks_files(package: Package, launch: LaunchFile) -> bool:
+    """:func:`_checks_files` for a Python launch file (``if os.path.exists(config):``)."""
+    text = package.texts.get(launch.path)
+    tree = parse_tree(launch.path, text) if launch.kind == "python" and text else None
+    return isinstance(tree, ast.Module) and _checks_files(index_of(tree))
 
 
 def _only_unused_nodes_read(launch: LaunchFile) -> set[tuple[str | None, tuple[str, ...]]]:

@@ -23,7 +23,8 @@ def unknown_parameter_in_file(package: Package) -> Iterator[Hit]:
     `pid: {p: 1}` is `pid.p`) against the names the class's module declares with
     `declare_parameter('name', ...)` and `declare_parameters('ns', [('name', ...)])`.
     Skipped when the module uses `allow_undeclared_parameters` or
-    `automatically_declare_parameters_from_overrides`, declares a name that is not a literal,
+    `automatically_declare_parameters_from_overrides` (as keywords, or keys of a dict passed
+    with `**`), declares a name that is not a literal,
     when the class derives from another class besides `Node`, or hands `self` to other code.
     `use_sim_time` and `qos_overrides.*` are never reported. The parameters a Python launch
     file gives a node of this package as a dict (`parameters=[{'period': 1.0}]`, literal

@@ -31,10 +31,12 @@ def _base(imported: Import, dotted: str, is_package: bool) -> str | None:
 def _in_tree(package: Package, module: str) -> bool:
     """True when the package has a file or folder for the dotted ``module`` (it may be
     uninstalled for another reason, which other rules report), or may generate it: its
-    name is in setup.py or a ``.gitignore`` (a module written at build time)."""
+    name is in setup.py, CMakeLists.txt (an extension module CMake builds,
+    ``pybind11_add_module(name ...)``) or a ``.gitignore`` (a module written at build
+    time)."""
     path = module.replace(".", "/")
     generated = [package.texts.get(f, "") for f in package.files
-                 if f == "setup.py" or f.endswith(".gitignore")]
+                 if f in ("setup.py", "CMakeLists.txt") or f.endswith(".gitignore")]
     stem = module.rpartition(".")[2]
     return package.has_file(f"{path}.py") or any(
         f.startswith(f"{path}/") for f in package.files) or any(
@@ -64,10 +66,10 @@ def missing_own_module(package: Package) -> Iterator[Hit]:
     `from my_pkg.utils import name` takes from an installed module which neither defines it
     at its top level nor has it as a submodule. Modules with `from x import *`, a
     module-level `__getattr__`, or calls of `globals()`, `exec()` or `setattr()` are not
-    judged on their names; a module named in setup.py or
-    a `.gitignore` (generated at build time) is taken to exist, and an absolute import is
-    left alone when a module of its first name sits next to the importing file (run as a
-    script, the file imports that one).
+    judged on their names; a module named in setup.py, CMakeLists.txt (an extension module
+    CMake builds) or a `.gitignore` (generated at build time) is taken to exist, and an
+    absolute import is left alone when a module of its first name sits next to the
+    importing file (run as a script, the file imports that one).
 
     ## Why is this bad?
     The node dies at start-up with `ModuleNotFoundError` or `ImportError: cannot import

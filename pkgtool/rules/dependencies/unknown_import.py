@@ -47,9 +47,9 @@ def unknown_import(package: Package) -> Iterator[Hit]:
     name, whatever it looks like).
 
     A package declaring a ROS package of Python bindings (named `..._python`, `..._py`,
-    `python_...`, `...pybind...`) that none of its imports is known to use gets no finding:
-    such a package's module is often named otherwise (`rmf_fleet_adapter_python` installs
-    `rmf_adapter`), and the unknown import may be it.
+    `python_...`, `...pybind...`) that none of its imports is known to use gets no finding
+    for an import named with words of that package's name: such a package's module is often
+    named otherwise (`rmf_fleet_adapter_python` installs `rmf_adapter`).
 
     ## Example
     ```python
@@ -65,11 +65,11 @@ def unknown_import(package: Package) -> Iterator[Hit]:
     if package.manifest is None:
         return
     available = declared(package, ANY)
-    binding = _unused_binding(package, available)
+    bindings = _unused_bindings(package, available)
     for modules in _by_kind(package):
         unknown = (need for module in modules for need in needs(package, module)
                    if need.kind == "unknown" and not any(k in available for k in need.keys)
-                   and not (binding and need.top not in package.context.workspace))
+                   and not any(_words(need.top) <= words for words in bindings))
         for need, others in grouped(unknown):
             related = tuple(other.imported.span for other in others)
             if need.top in package.context.workspace and need.top != package.name:
@@ -99,16 +99,27 @@ _BINDING = re.compile(r"(?:^|_)py(?:thon)?3?(?:_|$)|pybind")
 ``python_qt_binding``): their module is often named otherwise (``rmf_adapter``)."""
 
 
-def _unused_binding(package: Package, available: Iterable[str]) -> bool:
-    """True when a declared ROS package named as a Python binding, whose modules pkgtool does
-    not know, is imported by no name it knows: the unknown imports may be its modules."""
+def _unused_bindings(package: Package, available: Iterable[str]) -> list[frozenset[str]]:
+    """The words of each declared ROS package named as a Python binding, whose modules pkgtool
+    does not know, that no import it knows uses: an unknown import named with some of those
+    words (``rmf_adapter`` of ``rmf_fleet_adapter_python``) may be its module."""
     bindings = {key for key in available if _BINDING.search(key) and not modules_of_key(key)
+                and not key.startswith("ament_")
                 and (looks_like_ros(key) or is_released_package(key, package.context.distro))}
     if not bindings:
-        return False
+        return []
     used = {key for module in package.modules for need in needs(package, module)
             for key in need.keys if need.kind != "unknown"}
-    return bool(bindings - used)
+    return [_words(key) - _BINDING_WORDS for key in bindings - used]
+
+
+_BINDING_WORDS = frozenset({"py", "python", "python3", "pybind", "pybind11", "binding",
+                            "bindings"})
+
+
+def _words(name: str) -> frozenset[str]:
+    """The lower-case words of a snake-case name."""
+    return frozenset(word for word in name.lower().split("_") if word)
 
 
 def _by_kind(package: Package) -> tuple[list[PythonModule], ...]:

@@ -6,6 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.launch._python_launch import launch_class, launch_indexes, within
@@ -76,10 +77,24 @@ def _path_join(call: ast.Call, _: Index) -> Iterator[tuple[ast.AST, str, str]]:
 _EXECUTABLE_LOOKUPS = frozenset({"FindExecutable", "ExecutableInPackage"})
 
 
+_DATA_SUFFIXES = (".urdf", ".xacro", ".sdf", ".srdf", ".yaml", ".yml", ".xml", ".rviz",
+                  ".world", ".json")
+"""Suffixes of the data files a launch file reads, never of a program."""
+
+
 def _command(call: ast.Call, index: Index) -> Iterator[tuple[ast.AST, str, str]]:
     """``Command(['xacro', path])``: the program and its first argument joined into one word
-    (launch concatenates the parts as they are)."""
+    (launch concatenates the parts as they are); ``Command([urdf_path])``: a data file run
+    as the program."""
     parts = call.args[0] if call.args else None
+    first_part = parts.elts[0] if isinstance(parts, (ast.List, ast.Tuple)) and parts.elts \
+        else parts
+    data = _data_file(first_part, index) if first_part is not None else None
+    if data is not None:
+        yield (first_part, f"`Command()` runs its first word as a program, and that is the data "
+               f"file `{data}`: running it fails (PermissionError, or 'Exec format error'), "
+               "and the launch stops", "Run the program that reads it: "
+               "`Command(['xacro ', path])` for a URDF or xacro file")
     if not isinstance(parts, (ast.List, ast.Tuple)) or len(parts.elts) < 2:
         return
     first, second = parts.elts[:2]
@@ -98,6 +113,31 @@ def _command(call: ast.Call, index: Index) -> Iterator[tuple[ast.AST, str, str]]
         yield (second, "`Command()` joins its parts as they are: the program and this part "
                "make one word, so the command it runs does not exist",
                "Put `' '` between the program and its first argument")
+
+
+def _data_file(value: ast.expr, index: Index) -> str | None:
+    """The name of the data file ``value`` is the path of (a literal, a join of path parts
+    ending in one, or a name assigned one of those once), else None."""
+    if isinstance(value, ast.Name):
+        scope: ast.AST = index.enclosing_function(value) or _module_of(value, index)
+        values = [node.value for node in nodes_of_class(scope, ast.Assign)
+                  if isinstance(node, ast.Assign) and any(
+                      isinstance(t, ast.Name) and t.id == value.id for t in node.targets)]
+        value = values[0] if len(values) == 1 else value
+    if isinstance(value, ast.Call) and value.args:  # os.path.join, PathJoinSubstitution
+        last = value.args[-1]
+        value = last.elts[-1] if isinstance(last, (ast.List, ast.Tuple)) and last.elts else last
+    if isinstance(value, ast.Constant) and isinstance(value.value, str) and \
+            " " not in value.value.strip() and value.value.strip().endswith(_DATA_SUFFIXES):
+        return value.value.strip().rsplit("/", 1)[-1]
+    return None
+
+
+def _module_of(node: ast.AST, index: Index) -> ast.AST:
+    """The module ``node`` is in (the top of its parents)."""
+    while (parent := index.parents.get(id(node))) is not None:
+        node = parent
+    return node
 
 
 def _condition(call: ast.Call, action: str) -> Iterator[tuple[ast.AST, str, str]]:
@@ -137,7 +177,9 @@ def invalid_launch_action_argument(package: Package) -> Iterator[Hit]:
     `LaunchDescription` given one action (`LaunchDescription(Node(...))`) instead of a list;
     and `PathJoinSubstitution` given its parts as separate arguments instead of one list;
     and `Command` given its program and first argument with no space between
-    (`Command(['xacro', path])`, `Command([FindExecutable(name='xacro'), path])`);
+    (`Command(['xacro', path])`, `Command([FindExecutable(name='xacro'), path])`), or a data
+    file as its program (`Command([urdf_path])`, the path of a `.urdf`, `.xacro`, `.yaml`
+    ... file, written or joined in the call or assigned once to the name);
     and any action of `launch.actions` or `launch_ros.actions` given a literal or f-string as
     `condition=` (`condition='true'`) instead of a condition (`IfCondition(...)`). Only
     literals and displays are judged: a dict held in a variable is not.

@@ -139,8 +139,9 @@ def invalid_launch_node_argument(package: Package) -> Iterator[Hit]:
     attribute names (`type`, `ns`, `executable`, `package`, `required`, ...). Calls that pass
     `**kwargs` are not checked, nor the removed keywords of calls in either branch of a test
     on the ROS distribution (`if os.environ['ROS_DISTRO'] <= 'eloquent':`, also through a
-    variable assigned from `os.environ.get('ROS_DISTRO')` or `os.getenv('ROS_DISTRO')`): that
-    code is written for older distributions on purpose. Nodes that are never started (left
+    variable assigned from `os.environ.get('ROS_DISTRO')`, `os.getenv('ROS_DISTRO')` or a
+    command's output, `subprocess.Popen('echo $ROS_DISTRO', ...)`): that code is written for
+    older distributions on purpose. Nodes that are never started (left
     out of the LaunchDescription) are checked too: the call that makes them raises. In every
     kind of launch file, a node name or namespace written literally (`name='talker node'`,
     `namespace="my robot"`, a `__node:=` remapping) must be one rcl accepts: letters,

@@ -45,6 +45,11 @@ def _near_miss(path: str, text: str) -> Span:
     return Span(path, found.lineno, found.col_offset + 1) if found else Span(path, 1, 1)
 
 
+_WRITE_FUNCTION = frozenset({"better_launch"})
+"""Launch libraries whose decorator writes the function into the module (better_launch's
+``@launch_this``) when ``ros2 launch`` loads it."""
+
+
 def _loaded_by_others(package: Package) -> dict[str, set[str]]:
     """File name or module name -> the Python files of the package that import it, or run or
     load a file of that name (``runpy.run_path(...'helpers_launch.py')``); tests are left out
@@ -87,7 +92,9 @@ def missing_launch_function(package: Package) -> Iterator[Hit]:
     Reports Python launch files (`*.launch.py`, `*_launch.py`) that neither define nor import
     a top-level `generate_launch_description`, at a function whose name is close to it when
     there is one. Test files (`launch_testing` files define `generate_test_description`),
-    files with a star import and helpers that another Python file of the package (not a test)
+    files with a star import, files of launch libraries whose decorator writes the function
+    when `ros2 launch` loads them (better_launch's `@launch_this`), and helpers that another
+    Python file of the package (not a test)
     imports or runs (`import shared_launch`, `runpy.run_path(... 'nodes_launch.py')`,
     `importlib.util.spec_from_file_location`) are not checked. Also reports a
     `generate_launch_description` that requires a parameter (`def
@@ -119,7 +126,7 @@ def missing_launch_function(package: Package) -> Iterator[Hit]:
                       "arguments, and Python raises TypeError",
                       f"Give `{required.arg}` a default, or remove it")
         if FUNCTION in names or "generate_test_description" in names or \
-                any("*" in i.names for i in module.imports):
+                any("*" in i.names or i.top_level in _WRITE_FUNCTION for i in module.imports):
             continue
         loaded = _loaded_by_others(package) if loaded is None else loaded
         if _helper(path, loaded):

@@ -5,11 +5,9 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.rosdistro import (close_names, digits_differ, is_released_package,
-                                         key_resolves)
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import (ANY, declaration, declared, dependency_cause, launch_keys,
-                                   no_package_named)
+from pkgtool.rules.imports import launch_keys
+from pkgtool.rules.package_lookups import unlisted_packages
 from pkgtool.rules.registry import rule
 
 
@@ -58,34 +56,7 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
         return
     for launch in package.launch_files:
         available = launch_keys(package, launch.path)
-        seen: set[str] = set()
         used = [(n.package, n.package_span or n.span) for n in launch.nodes
                 if n.package and not n.optional and not n.unused] + [
             (p.package, p.span) for p in launch.packages if not p.optional and not p.unused]
-        for name, span in sorted(used, key=lambda u: (u[1].line, u[1].col)):
-            if name == package.name or name in available or name in seen:
-                continue
-            seen.add(name)
-            other = declared(package, ANY).get(name)
-            missing = (f"declared only as {declaration(name, other)}" if other else
-                       "not declared in package.xml")
-            fix = f"Add `<exec_depend>{name}</exec_depend>` to package.xml"
-            if not other and not _known(package, name):
-                meant = [close for close in close_names(
-                    name, package.context.distro, limit=3,
-                    extra=frozenset((*package.context.workspace, package.name)))
-                    if not digits_differ(name, close)]
-                missing += f", and {no_package_named(package)}"
-                missing += f" (did you mean `{meant[0]}`?)" if meant else ""
-                fix = f"Write `{meant[0]}`" if meant else "Check the name; declare the " \
-                    "package if a workspace it is built in provides it"
-            yield Hit(span, f"`{name}` is used by a launch file but {missing}", fix,
-                      cause="" if other else dependency_cause(name), consequence=True)
-
-
-def _known(package: Package, name: str) -> bool:
-    """True when ``name`` is a package of the workspace or a released one (or a rosdep key)
-    on the target distribution."""
-    distro = package.context.distro
-    return name in package.context.workspace or is_released_package(name, distro) or \
-        key_resolves(name, distro)
+        yield from unlisted_packages(package, used, available, "a launch file")

@@ -22,7 +22,9 @@ def misspelled_dependency(package: Package) -> Iterator[Hit]:
     jazzy), the rosdep keys of rosdep's ``base.yaml`` and ``python.yaml``, and the packages
     of the same workspace (those linted in the same run, and every package under the ``src``
     folder of the colcon workspace the package is in). A key that is none of these but is
-    spelled like one of them is reported with that name. Dependencies whose REP 149
+    spelled like one of them is reported with that name, unless the code uses exactly that
+    name (a Python import of it, a ``find_package()`` of it in CMakeLists.txt): a package
+    built from source elsewhere, which MAN022 reports as unknown. Dependencies whose REP 149
     ``condition`` is false for the target (``$ROS_VERSION == 1``) are skipped, and so are
     ROS 1 (catkin) manifests. Names with no near miss are MAN022's. When the misspelt key is
     a run dependency, the imports (DEP001) and launch files (LCH002) left without the name it

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -10,7 +9,7 @@ from pkgtool.knowledge.rosdep import NOT_PACKAGES, ROS1_PACKAGES
 from pkgtool.model.condition import applies
 from pkgtool.model.package import Package
 from pkgtool.model.xml import XmlElement
-from pkgtool.rules.dependency_names import key_instead
+from pkgtool.rules.dependency_names import cmake_finds, key_instead
 from pkgtool.rules.manifest.common import build_types, tree
 from pkgtool.rules.manifest.schema import DEPENDS_1, DEPENDS_2, token
 from pkgtool.rules.registry import rule
@@ -104,11 +103,10 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
     types = [b.text for b in build_types(found)]
     ros2 = any(t.startswith("ament_") for t in types)
     compiled = bool(types) and "ament_python" not in types  # CMake: C++ code, libraries
-    cmake = package.texts.get("CMakeLists.txt", "")
     for element in found.elements():
         key = token(element.text)
         if key in package.context.workspace and key not in NOT_PACKAGES or \
-                re.search(rf"(?i:find_package)\s*\(\s*{re.escape(key)}[\s)]", cmake):
+                cmake_finds(package, key):
             continue  # a package built from source with this one (a workspace's, a .repos's)
         hit = _hit(element, ros2, compiled, package.context.distro) \
             if element.tag in _CHECKED and \

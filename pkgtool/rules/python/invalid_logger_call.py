@@ -11,7 +11,6 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.ast_nodes import descendants
 from pkgtool.model.span import Span
-from pkgtool.model.static_branches import dead_lines
 from pkgtool.rules.node_api import node_subclasses, unpacks
 from pkgtool.rules.python._field_reads import field_reads
 from pkgtool.rules.python._loggers import (GETTERS, LEVELS, MESSAGE, logged_message,
@@ -162,10 +161,7 @@ def invalid_logger_call(package: Package) -> Iterator[Hit]:
         if not any(i.top_level == "rclpy" for i in module.imports):
             continue
         typed = _typer(package, tree, index)
-        dead = dead_lines(tree)
         for call, func in logger_method_calls(tree, index, package):
-            if any(first <= call.lineno <= last for first, last in dead):
-                continue
             problem = _problem(call, typed, func.attr) if func.attr in LEVELS else \
                 _unknown_method(func, index) if func.attr not in ATTRIBUTES else None
             if problem:

@@ -9,7 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.node_api import name_argument, node_constructions, unpacks
+from pkgtool.rules.node_api import NODE_CLASSES, name_argument, node_constructions, unpacks
 from pkgtool.rules.scopes import scope_bindings
 from pkgtool.rules.syntax_trees import Index, installed_trees
 from pkgtool.rules.registry import rule
@@ -32,6 +32,26 @@ def _forwarded(call: ast.Call, index: Index) -> str | None:
     reads = [n for n in nodes_of_class(init, ast.Name) if isinstance(n, ast.Name) and
              n.id in packed]
     return cls.name if len(reads) == len(given) else None
+
+
+def _reaches_another_base(call: ast.Call, index: Index) -> bool:
+    """True for ``super().__init__()`` in a class whose first base is not the node class it
+    initialises by name in the same method (``class W(Thread, Node)``: ``super().__init__()``
+    is ``Thread.__init__``, then ``Node.__init__(self, 'worker')``)."""
+    func = call.func
+    if not (isinstance(func, ast.Attribute) and isinstance(func.value, ast.Call) and
+            isinstance(func.value.func, ast.Name) and func.value.func.id == "super"):
+        return False
+    init = index.enclosing_function(call)
+    cls = index.parents.get(id(init)) if init is not None else None
+    if init is None or not isinstance(cls, ast.ClassDef) or len(cls.bases) < 2:
+        return False
+    later = {ast.unparse(base) for base in cls.bases[1:]
+             if (index.qualified(base) or "") in NODE_CLASSES}
+    return any(isinstance(c.func, ast.Attribute) and c.func.attr == "__init__" and
+               ast.unparse(c.func.value) in later and c.args and
+               isinstance(c.args[0], ast.Name) and c.args[0].id == "self"
+               for c in nodes_of_class(init, ast.Call) if isinstance(c, ast.Call))
 
 
 def _unnamed_constructions(tree: ast.Module, index: Index, name: str) -> Iterator[ast.Call]:
@@ -59,7 +79,10 @@ def missing_node_name(package: Package) -> Iterator[Hit]:
     `super().__init__()` nothing but its own `*args` and `**kwargs` (used nowhere else in
     it, `super().__init__(**kwargs)`), constructed in the same module with no positional
     argument and no `node_name=` (`Talker()`). Forwarding the arguments is correct code when
-    the caller names the node (`Talker(node_name='talker')`).
+    the caller names the node (`Talker(node_name='talker')`). Nor is `super().__init__()` in
+    a class whose first base is another class and whose `__init__` initialises its node base
+    by name (`class Worker(Thread, Node)`: `super().__init__()` is `Thread.__init__()`, then
+    `Node.__init__(self, 'worker')`).
 
     ## Why is this bad?
     `node_name` is a required argument of `Node.__init__`: the node dies at start-up with
@@ -82,7 +105,7 @@ def missing_node_name(package: Package) -> Iterator[Hit]:
     """
     for module, tree, index in installed_trees(package):
         for call in node_constructions(index):
-            if name_argument(call) is not None:
+            if name_argument(call) is not None or _reaches_another_base(call, index):
                 continue
             if not unpacks(call):
                 yield Hit(Span(module.path, call.lineno, call.col_offset + 1),

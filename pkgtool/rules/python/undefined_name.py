@@ -10,7 +10,6 @@ from pkgtool.model.ast_nodes import nodes_of, nodes_of_class, walk_once
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
-from pkgtool.model.static_branches import dead_lines
 from pkgtool.rules.python._names_proof import every_name_defined
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import installed_modules
@@ -73,11 +72,10 @@ def undefined_name(package: Package) -> Iterator[Hit]:
         if every_name_defined(tree):  # pyflakes would find nothing: spare it (most files)
             continue
         seen: set[tuple[int, str]] = set()
-        dead, notes = dead_lines(tree), _unevaluated_annotations(tree)
+        notes = _unevaluated_annotations(tree)
         stored = _stored_in_globals(tree)
         for line, column, name in _pyflakes_undefined(path, tree):
             if stored is None or name in stored or \
-                    any(first <= line <= last for first, last in dead) or \
                     any(start <= (line, column) <= end for start, end in notes) or \
                     _bound_at_run_time(tree, line, column, name):
                 continue

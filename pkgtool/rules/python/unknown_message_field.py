@@ -14,7 +14,7 @@ from pkgtool.knowledge.tables import DEFAULT_DISTRO
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.model.static_branches import dead_lines, depends_on_ros_distro
+from pkgtool.model.static_branches import depends_on_ros_distro
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.python._message_instances import Instance, Known, known_messages
 from pkgtool.rules.python._messages import message_instances
@@ -32,12 +32,11 @@ def _problem(message: Message, name: str) -> str:
 
 
 def _silent_lines(tree: ast.Module) -> list[tuple[int, int]]:
-    """Line ranges never checked: branches that do not run under ROS 2 (``if ROS_VERSION ==
-    1:``) and both branches of a test on the ROS distribution (written for some only)."""
-    return [*dead_lines(tree), *((node.lineno, node.end_lineno or node.lineno)
-                                 for node in nodes_of_class(tree, ast.If)
-                                 if isinstance(node, ast.If)
-                                 and depends_on_ros_distro(node.test))]
+    """Line ranges never checked: both branches of a test on the ROS distribution (written
+    for some only; code that never runs, ``if ROS_VERSION == 1:``, no PYC rule judges)."""
+    return [(node.lineno, node.end_lineno or node.lineno)
+            for node in nodes_of_class(tree, ast.If)
+            if isinstance(node, ast.If) and depends_on_ros_distro(node.test)]
 
 
 def _wrong_attributes(instance: Instance, index: Index, probed: frozenset[str]

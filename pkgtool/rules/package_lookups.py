@@ -1,0 +1,49 @@
+"""What LCH002 and DEP011 share: packages a file names (to start, include or read the share
+folder of) that package.xml does not declare, or that no package has as its name."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator, Mapping
+
+from pkgtool.findings import Hit
+from pkgtool.knowledge.rosdistro import (close_names, digits_differ, is_released_package,
+                                         key_resolves)
+from pkgtool.model.manifest import Dependency
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.imports import (ANY, declaration, declared, dependency_cause,
+                                   no_package_named)
+
+
+def unlisted_packages(package: Package, used: Iterable[tuple[str, Span]],
+                      available: Mapping[str, Dependency], user: str) -> Iterator[Hit]:
+    """A hit for the first use of each package named in ``used`` (name, where) that is not this
+    one nor among the ``available`` keys; ``user`` says what uses it (``a launch file``)."""
+    seen: set[str] = set()
+    for name, span in sorted(used, key=lambda u: (u[1].line, u[1].col)):
+        if name == package.name or name in available or name in seen:
+            continue
+        seen.add(name)
+        other = declared(package, ANY).get(name)
+        missing = (f"declared only as {declaration(name, other)}" if other else
+                   "not declared in package.xml")
+        fix = f"Add `<exec_depend>{name}</exec_depend>` to package.xml"
+        if not other and not _known(package, name):
+            meant = [close for close in close_names(
+                name, package.context.distro, limit=3,
+                extra=frozenset((*package.context.workspace, package.name)))
+                if not digits_differ(name, close)]
+            missing += f", and {no_package_named(package)}"
+            missing += f" (did you mean `{meant[0]}`?)" if meant else ""
+            fix = f"Write `{meant[0]}`" if meant else "Check the name; declare the " \
+                "package if a workspace it is built in provides it"
+        yield Hit(span, f"`{name}` is used by {user} but {missing}", fix,
+                  cause="" if other else dependency_cause(name), consequence=True)
+
+
+def _known(package: Package, name: str) -> bool:
+    """True when ``name`` is a package of the workspace or a released one (or a rosdep key)
+    on the target distribution."""
+    distro = package.context.distro
+    return name in package.context.workspace or is_released_package(name, distro) or \
+        key_resolves(name, distro)
