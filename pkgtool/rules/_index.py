@@ -24,6 +24,7 @@ RULES = {
     "DAT011": ("parameter-type-mismatch", "error", True, "data_files.parameter_type_mismatch"),
     "DAT012": ("missing-launch-resource", "error", True, "data_files.missing_launch_resource"),
     "DAT013": ("duplicate-parameter", "warning", True, "data_files.duplicate_parameter"),
+    "DAT014": ("home-folder-path", "warning", True, "data_files.home_folder_path"),
     "DEP001": ("undeclared-import", "error", True, "dependencies.undeclared_import"),
     "DEP002": ("import-declared-only-as-build-depend", "error", True,
                "dependencies.build_only_import"),

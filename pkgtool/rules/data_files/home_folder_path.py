@@ -1,0 +1,145 @@
+"""DAT014: code, a launch file or a parameter file names a file in one user's home folder."""
+
+from __future__ import annotations
+
+import ast
+import re
+from collections.abc import Callable, Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import nodes_of_class, walk_once
+from pkgtool.model.installed import installed_data, is_ament_python
+from pkgtool.model.package import Package, is_test_material
+from pkgtool.model.span import Span
+from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import installed_trees, python_files
+
+HOME_PATH = re.compile(r"(?<![\w.~$}/-])(?:/home/(?!\$|\{)[\w.-]+|/Users/[\w.-]+)/[\w.-]")
+"""An absolute path inside a named user's home folder (not ``/home/$USER/``)."""
+_HINTS = ("/home/", "/Users/")
+_MESSAGES = frozenset({"print", "info", "warn", "warning", "error", "debug", "fatal", "log",
+                       "exception", "critical", "write", "format", "add_argument"})
+"""Calls whose text arguments are messages."""
+_CHECKS = frozenset({"exists", "isfile", "isdir", "is_file", "is_dir", "lexists"})
+"""Calls that ask whether a path exists: a file that does the same for its paths handles
+their absence."""
+_PATH_END = re.compile(r"[\s\"'<>,;)\]}]")
+_DATA_SUFFIXES = (".yaml", ".yml", ".xml", ".launch")
+
+
+@rule("DAT014", "home-folder-path", Severity.WARNING,
+      fix="Install the file and find it with `get_package_share_directory('<package>')`, or "
+          "take the path as a parameter")
+def home_folder_path(package: Package) -> Iterator[Hit]:
+    """Code, a launch file or a parameter file names a file inside one user's home folder.
+
+    ## What it does
+    Reports absolute paths into a named user's home folder (`/home/alice/...`,
+    `/Users/alice/...`): string literals of installed modules and Python launch files (not
+    docstrings, nor messages given to `print`, a logger or `argparse`; not in a file that
+    asks whether paths exist, `os.path.exists()` and the like, as code that falls back when a
+    machine lacks the file does), and values in XML and YAML launch files and in the YAML
+    and XML files the package installs (not comments; in a package whose installed files
+    are not known, those outside `doc`, `docs` and `example` folders). Tests and test data
+    are left alone.
+
+    ## Why is this bad?
+    The path exists on the author's machine only: on a teammate's, a grader's, the robot's
+    or in CI the node or the launch fails to find the file (`FileNotFoundError`, or a
+    parameter file that is silently not loaded). Files the package needs belong in it,
+    installed by data_files and found through its share folder.
+
+    ## Example
+    ```python
+    params = '/home/alice/ros2_ws/src/my_robot/config/params.yaml'
+    ```
+
+    ## Use instead
+    ```python
+    params = os.path.join(get_package_share_directory('my_robot'), 'config', 'params.yaml')
+    ```
+    """
+    checked = {module.path for module, _, _ in installed_trees(package)} | \
+        {f.path for f in package.launch_files if f.kind == "python"}
+    for path, _, tree in python_files(package, _HINTS):
+        if path in checked and not _checks_paths(tree):
+            yield from _python_paths(path, tree)
+    shipped = _shipped(package)
+    for path, text in sorted(package.texts.items()):
+        if path.endswith(_DATA_SUFFIXES) and path != "package.xml" and shipped(path) and \
+                not is_test_material(path) and any(h in text for h in _HINTS):
+            yield from _text_paths(path, text)
+
+
+_ASIDE = frozenset({"doc", "docs", "example", "examples"})
+
+
+def _shipped(package: Package) -> Callable[[str], bool]:
+    """Whether a data file is one the package runs with: a launch file, a file data_files
+    installs (in an ament_python package whose data_files evaluated), else any file outside
+    documentation and examples."""
+    launch = {f.path for f in package.launch_files}
+    installed = installed_data(package) if is_ament_python(package) else None
+    if installed is not None:
+        sources = launch | set(installed.values())
+        return sources.__contains__
+    return lambda path: path in launch or not (
+        _ASIDE & set(path.split("/")[:-1]) or path.rpartition("/")[2].startswith("example"))
+
+
+def _python_paths(path: str, tree: ast.Module) -> Iterator[Hit]:
+    parents = walk_once(tree).parents
+    for node in nodes_of_class(tree, ast.Constant):
+        value = getattr(node, "value", None)
+        found = HOME_PATH.search(value) if isinstance(value, str) else None
+        if found is None or "\n" in value or _docstring(node, parents) or \
+                _message(node, parents):
+            continue
+        yield _hit(Span(path, node.lineno, node.col_offset + 1), found.group(0), value)
+
+
+def _text_paths(path: str, text: str) -> Iterator[Hit]:
+    for number, line in enumerate(text.splitlines(), 1):
+        stripped = line.strip()
+        found = HOME_PATH.search(line) if not stripped.startswith(("#", "<!--")) else None
+        if found is not None and "#" not in line[:found.start()]:
+            end = _PATH_END.search(line, found.end())
+            yield _hit(Span(path, number, found.start() + 1), found.group(0),
+                       line[found.start():end.start() if end else len(line)])
+
+
+def _hit(span: Span, start: str, value: str) -> Hit:
+    shown = value if len(value) <= 80 else value[:77] + "..."
+    user = start.split("/")[2]
+    return Hit(span, f"`{shown}` is in the home folder of the user `{user}`: on any other "
+               "machine the file is not there")
+
+
+def _checks_paths(tree: ast.Module) -> bool:
+    """True when the file asks whether some path exists (see :data:`_CHECKS`)."""
+    return any(isinstance(call, ast.Call) and (
+        isinstance(call.func, ast.Attribute) and call.func.attr in _CHECKS or
+        isinstance(call.func, ast.Name) and call.func.id in _CHECKS)
+        for call in nodes_of_class(tree, ast.Call))
+
+
+def _docstring(node: ast.AST, parents: dict[int, ast.AST]) -> bool:
+    """True for a string statement (a docstring or a comment written as a string)."""
+    return isinstance(parents.get(id(node)), ast.Expr)
+
+
+def _message(node: ast.AST, parents: dict[int, ast.AST]) -> bool:
+    """True for a string (or part of an f-string) given to one of :data:`_MESSAGES`."""
+    parent = parents.get(id(node))
+    if isinstance(parent, ast.JoinedStr):
+        node, parent = parent, parents.get(id(parent))
+    if isinstance(parent, ast.keyword):
+        if parent.arg == "help":
+            return True
+        node, parent = parent, parents.get(id(parent))
+    if not isinstance(parent, ast.Call) or node is parent.func:
+        return False
+    func = parent.func
+    name = func.attr if isinstance(func, ast.Attribute) else \
+        func.id if isinstance(func, ast.Name) else None
+    return name in _MESSAGES
