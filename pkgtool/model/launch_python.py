@@ -33,6 +33,8 @@ NODE_ACTIONS = frozenset({"Node", "LifecycleNode", "ComposableNodeContainer"})
 PLUGIN_ACTIONS = frozenset({"ComposableNode"})
 JOINS = frozenset({"join", "PathJoinSubstitution", "joinpath"})
 CONCATENATING = ("LaunchDescriptionSource", "Command")
+JOINED_PARTS = ("PythonExpression", "Command")
+"""Substitutions whose list of parts launch joins into one text (a path, an expression)."""
 PRESENCE_CHECKS = frozenset({"get_packages_with_prefixes", "get_package_prefix",
                              "get_package_share_directory", "get_package_share_path",
                              "has_resource", "get_resource"})
@@ -92,6 +94,7 @@ class _Reader(ast.NodeVisitor):
         self.packages: list[PackageRef] = []
         self.files: list[FileRef] = []
         self.extended: set[tuple[str, tuple[str, ...]]] = set()  # share paths text is added to
+        self.continued: set[int] = set()  # parts of a joined list that later parts continue
         self.origins = import_origins(tree)
         self.optional = 0  # > 0 inside a block that runs only if some package is installed
         self.distro_branches = 0  # > 0 inside a branch of a test on the ROS distribution
@@ -273,6 +276,12 @@ class _Reader(ast.NodeVisitor):
         dead = self._never_started(node)
         self.dead += dead
         self._record_call(node)
+        parts = node.args[0] if node.args and _name(node.func).endswith(JOINED_PARTS) else None
+        items = parts.elts if isinstance(parts, (ast.List, ast.Tuple)) else []
+        for part, after in zip(items, items[1:]):
+            if not (isinstance(after, ast.Constant) and isinstance(after.value, str) and
+                    after.value[:1].isspace()):  # the next part goes on with its text
+                self.continued.update(id(n) for n in ast.walk(part))
         self.generic_visit(node)
         self.dead -= dead
 
@@ -490,8 +499,10 @@ class _Reader(ast.NodeVisitor):
 
     def _record_path(self, node: ast.expr) -> None:
         """Record the share file ``node`` names, unless nothing ever uses the path: it is the
-        value of a local name never read, or inside a node action never started."""
-        if node in self.unread or node in self.unread_paths or self.dead:
+        value of a local name never read, or inside a node action never started; nor a path
+        that later parts of a ``PythonExpression`` or ``Command`` list continue."""
+        if node in self.unread or node in self.unread_paths or self.dead or \
+                id(node) in self.continued:
             return
         found = self.value(node)
         if isinstance(found, Share) and found.share and found.parts:

@@ -112,13 +112,19 @@ def overwritten_values(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: 
                        ) -> set[ast.expr]:
     """Path-building values (:data:`PATH_VALUES`) of assignments to a local name which the
     next statement of the same block naming it binds again without reading it (``path =
-    join(...)`` then ``path = '/opt/x'``): values never used. Names a nested function reads,
+    join(...)`` then ``path = '/opt/x'``), or, in the function's own body, which no later
+    statement names (``node = Node(...)`` after the description was built): values never
+    used. Names a nested function reads,
     and functions that may read their own scope (``locals()``...), are left out. ``nodes``
     are the :func:`scope_nodes` of its body."""
     held: set[str] = set()  # read by a nested scope, or declared global or nonlocal
     for node in nodes:
         if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef)):
-            held.update(n.id for n in subtree(node) if isinstance(n, ast.Name))
+            for inner in subtree(node):
+                if isinstance(inner, ast.Name):
+                    held.add(inner.id)
+                elif isinstance(inner, (ast.Global, ast.Nonlocal)):
+                    held.update(inner.names)
         elif isinstance(node, (ast.Global, ast.Nonlocal)):
             held.update(node.names)
         elif isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and \
@@ -140,7 +146,8 @@ def overwritten_values(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: 
                 continue
             name = statement.targets[0].id  # type: ignore[attr-defined]
             later = next((s for s in block[at + 1:] if name in names(s)), None)
-            if simple_assignment(later) and name not in names(later.value):
+            if later is None and block is function.body or \
+                    simple_assignment(later) and name not in names(later.value):
                 found.add(statement.value)
     return found
 

@@ -134,12 +134,24 @@ _PARTS = re.compile(r"[-_.]")
 
 
 def cmake_finds(package: Package, name: str) -> bool:
-    """True when the package's CMakeLists.txt calls ``find_package(name ...)``: a package
-    built with it (from source beside it, when no release has that name), whatever its name
-    looks like."""
+    """True when the package's CMakeLists.txt calls ``find_package(name ...)``, or lists the
+    name among a ``find_package(catkin COMPONENTS ...)``'s: a package built with it (from
+    source beside it, when no release has that name), whatever its name looks like."""
     cmake = package.texts.get("CMakeLists.txt")
-    return cmake is not None and re.search(
-        rf"(?i:find_package)\s*\(\s*{re.escape(name)}[\s)]", cmake) is not None
+    return cmake is not None and any(_finds(found, name)
+                                     for found in _FIND_PACKAGE.finditer(cmake))
+
+
+_FIND_PACKAGE = re.compile(r"(?i:find_package)\s*\(\s*([\w.+-]+)([^)]*)\)")
+"""A ``find_package(Name ...)`` call: the name, and the rest (``REQUIRED COMPONENTS a b``)."""
+
+
+def _finds(found: re.Match[str], name: str) -> bool:
+    """True when the ``find_package`` call ``found`` finds ``name``, or lists it among its
+    components."""
+    words = found.group(2).split()
+    components = words[words.index("COMPONENTS") + 1:] if "COMPONENTS" in words else []
+    return found.group(1) == name or name in components
 
 
 def _version_of(key: str, close: str) -> bool:

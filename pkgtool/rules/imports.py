@@ -205,10 +205,17 @@ def _siblings(package: Package, path: str) -> frozenset[str]:
 def path_modules(package: Package, module: PythonModule) -> list[tuple[int, frozenset[str]]]:
     """What the folders of the package that ``module`` puts on ``sys.path`` hold (their
     ``.py`` modules and the folders with Python files below them), each with the line of
-    the edit; for test code also those of the ``conftest.py`` files of its folder and the
-    folders above it (pytest runs them first: line 0)."""
+    the edit; also those the ``__init__.py`` of its package and of the packages around it
+    puts there, and for test code those of the ``conftest.py`` files of its folder and the
+    folders above it (both run first: line 0)."""
     edits = sys_path_edits(package)
     found = [(line, folder) for line, folder in edits.get(module.path, ())]
+    folder = posixpath.dirname(module.path)
+    while edits and folder and package.has_file(f"{folder}/__init__.py"):
+        init = f"{folder}/__init__.py"  # runs before any module of its package
+        if init != module.path:
+            found.extend((0, edited) for _, edited in edits.get(init, ()))
+        folder = posixpath.dirname(folder)
     if edits and is_test_code(package, module):
         folder = posixpath.dirname(module.path)
         while True:

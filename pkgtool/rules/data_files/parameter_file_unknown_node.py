@@ -2,9 +2,11 @@
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.rules.node_parameters import file_entries, near, write_meant
 from pkgtool.rules.registry import rule
@@ -34,7 +36,8 @@ def parameter_file_unknown_node(package: Package) -> Iterator[Hit]:
     `bt_navigator_navigate_to_pose_rclcpp_node`). Files are skipped when
     a node's name is not known that way, when a launch file gives some node parameters not
     read statically (a launch argument may name the file), or when the package's Python code
-    mentions the file's name.
+    mentions the file's name. A block named by a quoted word of a Python launch file that
+    loads YAML itself (`yaml.safe_load`) is left alone: the launch file may read it.
 
     ## Why is this bad?
     ROS 2 ignores parameters of nodes that do not exist: nothing warns, and the node runs with
@@ -59,6 +62,8 @@ def parameter_file_unknown_node(package: Package) -> Iterator[Hit]:
     for entry in file_entries(package):
         if not entry.matched and entry.foreign and _made_by_the_process(entry.key, entry.names):
             continue  # a node another package's process makes (Nav2's local_costmap/...)
+        if not entry.matched and entry.key.rpartition("/")[2] in _read_by_launch(package):
+            continue  # a block a launch file loads with yaml and reads itself
         if not entry.matched:
             base = entry.key.rpartition("/")[2]
             shown = ", ".join(f"`{n}`" for n in entry.names)
@@ -77,6 +82,19 @@ def parameter_file_unknown_node(package: Package) -> Iterator[Hit]:
                       f"the node's full name, so its parameters reach no node",
                       f"Write `{spaces[0].rstrip('/')}/{base}`" if len(spaces) == 1 and
                       spaces[0].startswith("/") else f"Write `/**/{base}` (any namespace)")
+
+
+_YAML_LOADS = re.compile(r"\byaml\.(?:safe_|full_|unsafe_)?load\b")
+_QUOTED = re.compile(r"""['"]([\w.-]+)['"]""")
+
+
+@per_package
+def _read_by_launch(package: Package) -> frozenset[str]:
+    """The quoted words of the Python launch files that load YAML themselves
+    (``yaml.safe_load(f).get('viewer')``): blocks of a parameter file they may read."""
+    return frozenset(word for launch in package.launch_files if launch.kind == "python"
+                     for text in [package.texts.get(launch.path, "")]
+                     if _YAML_LOADS.search(text) for word in _QUOTED.findall(text))
 
 
 def _made_by_the_process(key: str, names: tuple[str, ...] | list[str]) -> bool:

@@ -9,7 +9,7 @@ from collections.abc import Iterator
 from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.installed import installed_modules
+from pkgtool.model.installed import installed_modules, is_ament_python
 from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import installed_code, test_code
@@ -43,6 +43,22 @@ def _in_tree(package: Package, module: str) -> bool:
         re.search(rf"\b{re.escape(stem)}\b", text) for text in generated)
 
 
+def _left_out(package: Package, module: str, installed: dict[str, str]) -> str | None:
+    """The subpackage of an installed package that holds ``module`` in the source tree but
+    that setup.py does not install (none of its modules is installed), or None."""
+    parts = module.split(".")
+    for count in range(2, len(parts) + 1):
+        parent, name = ".".join(parts[:count - 1]), ".".join(parts[:count])
+        parent_file = installed.get(parent, "")
+        if not parent_file.endswith("/__init__.py"):
+            return None
+        folder = f"{posixpath.dirname(parent_file)}/{parts[count - 1]}"
+        if name not in installed and not any(m.startswith(f"{name}.") for m in installed) and \
+                any(f.startswith(f"{folder}/") and f.endswith(".py") for f in package.files):
+            return name
+    return None
+
+
 def _shadowed(package: Package, path: str, root: str) -> bool:
     """True when ``root`` is also a module next to the file ``path``: run as a script, the
     file imports that one."""
@@ -62,7 +78,11 @@ def missing_own_module(package: Package) -> Iterator[Hit]:
     `from my_pkg.talker import Talker` in `test/test_talker.py`) that name a module below
     one of the package's own installed top-level packages (`import my_pkg.utils`,
     `from my_pkg.utils import clamp`, `from .utils import clamp`), reports a module that
-    setup.py does not install and that has no file in the package, and a name that
+    setup.py does not install and that has no file in the package; a module of installed
+    code in a subpackage that is in the source tree but that `packages` does not list (no
+    module of it installed: `packages=['my_pkg']` with `my_pkg/models/`, or a folder
+    without `__init__.py` that `find_packages()` skips), which imports only under
+    `--symlink-install`; and a name that
     `from my_pkg.utils import name` takes from an installed module which neither defines it
     at its top level nor has it as a submodule. Modules with `from x import *`, a
     module-level `__getattr__`, or calls of `globals()`, `exec()` or `setattr()` are not
@@ -102,7 +122,16 @@ def missing_own_module(package: Package) -> Iterator[Hit]:
                     imported.level == 0 and _shadowed(package, module.path, imported.top_level)):
                 continue
             if base not in installed:
-                if not _in_tree(package, base):
+                left_out = _left_out(package, base, installed) \
+                    if dotted and is_ament_python(package) else None
+                if left_out is not None:
+                    yield Hit(imported.span, f"`{left_out}` is in the source tree, but setup.py "
+                              "does not install it (`packages` does not list it): the import "
+                              "works only with `colcon build --symlink-install`, and raises "
+                              "ModuleNotFoundError once installed",
+                              "List the subpackage: `packages=find_packages(exclude=['test'])`"
+                              ", with an `__init__.py` in each of its folders")
+                elif not _in_tree(package, base):
                     close = get_close_matches(base, list(installed), n=1)
                     hint = f" (did you mean `{close[0]}`?)" if close else ""
                     yield Hit(imported.span, f"`{base}` is not a module of this package"

@@ -30,7 +30,8 @@ def invalid_ros_name(package: Package) -> Iterator[Hit]:
     starting with a digit, no empty part; also the topic of a publisher or subscription, and
     the name of a service, client or action server or client, given through a name bound once
     to a string or through a parameter whose literal default no parameter or launch file of
-    the package changes. Names with `{substitutions}` are not checked.
+    the package changes (but an empty default, a placeholder for the value a parameter file
+    gives). Names with `{substitutions}` are not checked.
 
     ## Why is this bad?
     ROS 1 and other middleware accept names such as `cmd-vel` or `my node`; rclpy raises
@@ -65,7 +66,8 @@ def invalid_ros_name(package: Package) -> Iterator[Hit]:
                 yield Hit(Span(module.path, space.lineno, space.col_offset + 1),
                           f"`{space.value}` is not a valid namespace: {problem}")
     for endpoint in (*endpoints(package), *service_endpoints(package)):
-        problem = None if endpoint.literal else topic_name_problem(endpoint.topic)
+        problem = None if endpoint.literal or not endpoint.topic else \
+            topic_name_problem(endpoint.topic)  # '': a placeholder a parameter file sets
         if problem:
             what = "topic" if endpoint.kind in ("publisher", "subscription") else \
                 "action name" if endpoint.kind.startswith("action") else "service name"

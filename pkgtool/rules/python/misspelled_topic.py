@@ -3,6 +3,7 @@ a typo away from one the package publishes (serves)."""
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -25,7 +26,9 @@ def misspelled_topic(package: Package) -> Iterator[Hit]:
     parameter or launch file changes; topics a launch file quotes, which it may remap, are
     left out). Reports a subscription whose topic no publisher of the package uses when
     exactly one published topic of the same message type is a typo away from it (one edit,
-    or a swap of neighbours), unless the two differ in a digit (`robot1`, `robot2`). The
+    or a swap of neighbours), unless the two differ in a digit (`robot1`, `robot2`) or in
+    one word of a pair names of paired topics use (`can_tx` and `can_rx`, `left`/`right`,
+    `global`/`local`, `in`/`out`...): another package may publish it. The
     same for a client whose service name no service of the package has, a typo away from the
     one name served with the same service type, and for rclpy's action clients and servers.
 
@@ -75,5 +78,23 @@ def _near_misses(found: tuple[Endpoint, ...], offering: str, using: str
             continue
         same_type = [t for t, types in offered.items() if types == {endpoint.type}]
         meant = typo_of(name, same_type)
-        if meant is not None and not digits_differ(name, meant):
+        if meant is not None and not digits_differ(name, meant) and \
+                not _opposite_words(name, meant):
             yield endpoint, meant
+
+
+_OPPOSITES = frozenset(frozenset(pair.split("/")) for pair in """tx/rx in/out input/output
+    left/right l/r front/back front/rear upper/lower up/down min/max start/stop on/off
+    global/local request/response req/res req/resp src/dst source/target send/recv
+    read/write get/set pub/sub open/close enable/disable x/y""".split())
+"""Words names of paired topics differ by (a node subscribing ``can_tx`` and publishing
+``can_rx``): never a typo of each other."""
+
+
+def _opposite_words(name: str, other: str) -> bool:
+    """True when the two names differ only in one word, and the two words are
+    :data:`_OPPOSITES`."""
+    words, others = re.split(r"[/_]", name), re.split(r"[/_]", other)
+    changed = [(a, b) for a, b in zip(words, others) if a != b]
+    return len(words) == len(others) and len(changed) == 1 and \
+        frozenset(changed[0]) in _OPPOSITES

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import nodes_of, nodes_of_class, walk_once
-from pkgtool.model.package import Package
+from pkgtool.model.package import Package, is_test_data
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.python._names_proof import every_name_defined
@@ -31,9 +31,11 @@ def undefined_name(package: Package) -> Iterator[Hit]:
     Runs pyflakes' checker (as a library, on the parsed tree; a quick proof first spares it
     the files where it would surely find nothing) over every installed module, every test
     module, setup.py and every Python launch file (not those calling `exec()`, which may
-    define any name) and reports its "undefined name" messages (not for names the module
-    stores through `globals()`, as generated API clients' lazy imports do), with pyflakes'
-    own handling of builtins, `__all__`, star imports, conditional definitions and `except
+    define any name, nor a script under `test/` that pytest does not collect and nothing
+    imports: test data, which a test may run with `exec()` and names of its own) and
+    reports its "undefined name" messages (not for names the module stores through
+    `globals()`, as generated API clients' lazy imports do), with pyflakes' own handling of
+    builtins, `__all__`, star imports, conditional definitions and `except
     NameError` guards. Code that never runs on Python 3 is skipped: branches of `if
     sys.version_info < (3,):`, `if six.PY2:` or of a module constant set once to False, lines
     after a `return`, `raise`, `continue` or `break` of the same block, and annotations Python
@@ -62,9 +64,11 @@ def undefined_name(package: Package) -> Iterator[Hit]:
     trees = [(module.path, tree) for module, tree in installed_modules(package)]
     launch = (f.path for f in package.launch_files if f.kind == "python")
     checked = {path for path, _ in trees}
+    imported = _imported_names(package)
     for path in dict.fromkeys(("setup.py", *launch, *sorted(test_files(package)))):
-        if path in checked:
-            continue
+        if path in checked or is_test_data(path) and \
+                path.rpartition("/")[2].removesuffix(".py") not in imported:
+            continue  # a script of test data nothing imports: a test may exec() it
         tree = parse_tree(path, package.texts[path]) if path in package.texts else None
         if isinstance(tree, ast.Module) and not _names_exec(tree):
             trees.append((path, tree))
@@ -96,8 +100,16 @@ _LOOPS = (ast.For, ast.AsyncFor, ast.While)
 _BRANCHES = (ast.If, ast.IfExp, ast.BoolOp, ast.Try, ast.ExceptHandler)
 
 
+def _imported_names(package: Package) -> frozenset[str]:
+    """Every module name the package's Python files import (each part of a dotted one) and
+    every name they import from one."""
+    return frozenset(name for module in package.modules for imported in module.imports
+                     for name in ((imported.module or "").split(".") + list(imported.names)))
+
+
 def _bound_at_run_time(tree: ast.Module, line: int, column: int, name: str) -> bool:
-    """True for the two kinds of pyflakes' undefined names that Python finds bound: a local
+    """True for the kinds of pyflakes' undefined names that Python finds bound: one read
+    only where ``'name' in globals()`` holds; a local
     read in a loop that assigns it further on (``x = prev + 1`` ... ``prev = x``: bound by
     the pass that reads it, when the first pass skips the read), and the name of an ``except
     ... as name`` read by a lambda that the handler passes to a call that runs it at once
@@ -106,12 +118,15 @@ def _bound_at_run_time(tree: ast.Module, line: int, column: int, name: str) -> b
     if node is None or node.id != name:
         return False
     parents = walk_once(tree).parents
-    parent = parents.get(id(node))
+    child, parent = node, parents.get(id(node))
     lambdas: list[ast.Lambda] = []
     branched = False  # the read is in a branch some pass may skip
     while parent is not None and not isinstance(parent, _DEFINITIONS):
         if isinstance(parent, ast.ExceptHandler) and parent.name == name:
             return len(lambdas) == 1 and _run_at_once(lambdas[0], parents)
+        if isinstance(parent, (ast.If, ast.IfExp)) and child is not parent.test and \
+                _asks_defined(parent.test, name):
+            return True
         if isinstance(parent, ast.Lambda):
             lambdas.append(parent)
         elif isinstance(parent, _BRANCHES):
@@ -119,8 +134,17 @@ def _bound_at_run_time(tree: ast.Module, line: int, column: int, name: str) -> b
         elif isinstance(parent, _LOOPS) and branched and not lambdas and \
                 _stored_after(parent, node):
             return True
-        parent = parents.get(id(parent))
+        child, parent = parent, parents.get(id(parent))
     return False
+
+
+def _asks_defined(test: ast.expr, name: str) -> bool:
+    """True for ``'name' in globals()`` (or ``locals()``, ``dir()``, ``vars()``)."""
+    return isinstance(test, ast.Compare) and isinstance(test.left, ast.Constant) and \
+        test.left.value == name and len(test.ops) == 1 and isinstance(test.ops[0], ast.In) and \
+        isinstance(test.comparators[0], ast.Call) and \
+        isinstance(test.comparators[0].func, ast.Name) and \
+        test.comparators[0].func.id in ("globals", "locals", "dir", "vars")
 
 
 def _loads(tree: ast.Module) -> dict[tuple[int, int], ast.Name]:
