@@ -71,6 +71,19 @@ def _edits(tree: ast.Module, path: str, package: Package) -> Iterator[tuple[int,
             yield node.lineno, relative
 
 
+def file_relative_paths(tree: ast.Module, path: str) -> Iterator[tuple[ast.expr, str]]:
+    """Each call or operation of the module at ``path`` that builds a path from its
+    ``__file__`` (``os.path.join(os.path.dirname(__file__), 'sounds', 'x.mp3')``), with the
+    package-relative path it evaluates to (none that leaves the package)."""
+    aliases, once = _aliases(tree), _assigned_once(tree)
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.Call, ast.BinOp)):  # no package: no share folder stands in
+            found = _path(node, _Source(path, ""), aliases, once, 0)
+            relative = _relative(found) if found is not None else None
+            if relative:
+                yield node, relative
+
+
 def _aliases(tree: ast.Module) -> dict[str, str]:
     """Name -> the dotted module or attribute its imports bind it to (``osp`` -> ``os.path``)."""
     found: dict[str, str] = {}

@@ -102,7 +102,7 @@ def _share_reads(package: Package, shared: set[str]
                                 if (ref.package, ref.parts) not in unread and
                                 not (searched and ref.parts and "." not in ref.parts[-1]))
     for module, tree, index in installed_trees(package):
-        if index.imports_from("ament_index_python") and not _checks_files(index):
+        if index.imports_from("ament_index_python") and not checks_files(index):
             yield module.path, read_python_launch(module.path, tree, _imported_names(package))[2]
 
 
@@ -124,7 +124,7 @@ _EXISTENCE = frozenset({"exists", "isfile", "is_file", "isdir", "is_dir", "lexis
 ``load_dotenv()``, which returns False for a missing file."""
 
 
-def _checks_files(index: Index) -> bool:
+def checks_files(index: Index) -> bool:
     """True when the module asks whether files or folders exist, or makes folders: it handles
     a share file that may be missing (a model it downloads when absent, a file the user adds,
     a folder it creates), so none of its share paths is certainly read."""
@@ -134,10 +134,10 @@ def _checks_files(index: Index) -> bool:
 
 
 def _launch_checks_files(package: Package, launch: LaunchFile) -> bool:
-    """:func:`_checks_files` for a Python launch file (``if os.path.exists(config):``)."""
+    """:func:`checks_files` for a Python launch file (``if os.path.exists(config):``)."""
     text = package.texts.get(launch.path)
     tree = parse_tree(launch.path, text) if launch.kind == "python" and text else None
-    return isinstance(tree, ast.Module) and _checks_files(index_of(tree))
+    return isinstance(tree, ast.Module) and checks_files(index_of(tree))
 
 
 def _only_unused_nodes_read(launch: LaunchFile) -> set[tuple[str | None, tuple[str, ...]]]:

@@ -12,7 +12,8 @@ from pkgtool.model.installed import installed_data, is_ament_python
 from pkgtool.model.package import Package, is_test_material
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import installed_trees, python_files
+from pkgtool.rules.data_files.common import checks_files
+from pkgtool.rules.syntax_trees import index_of, installed_trees, python_files
 
 HOME_PATH = re.compile(r"(?<![\w.~$}/-])(?:/home/(?!\$|\{)[\w.-]+|/Users/[\w.-]+)/[\w.-]")
 """An absolute path inside a named user's home folder (not ``/home/$USER/``)."""
@@ -20,9 +21,6 @@ _HINTS = ("/home/", "/Users/")
 _MESSAGES = frozenset({"print", "info", "warn", "warning", "error", "debug", "fatal", "log",
                        "exception", "critical", "write", "format", "add_argument"})
 """Calls whose text arguments are messages."""
-_CHECKS = frozenset({"exists", "isfile", "isdir", "is_file", "is_dir", "lexists"})
-"""Calls that ask whether a path exists: a file that does the same for its paths handles
-their absence."""
 _PATH_END = re.compile(r"[\s\"'<>,;)\]}]")
 _DATA_SUFFIXES = (".yaml", ".yml", ".xml", ".launch")
 
@@ -62,7 +60,7 @@ def home_folder_path(package: Package) -> Iterator[Hit]:
     checked = {module.path for module, _, _ in installed_trees(package)} | \
         {f.path for f in package.launch_files if f.kind == "python"}
     for path, _, tree in python_files(package, _HINTS):
-        if path in checked and not _checks_paths(tree):
+        if path in checked and not checks_files(index_of(tree)):
             yield from _python_paths(path, tree)
     shipped = _shipped(package)
     for path, text in sorted(package.texts.items()):
@@ -113,14 +111,6 @@ def _hit(span: Span, start: str, value: str) -> Hit:
     user = start.split("/")[2]
     return Hit(span, f"`{shown}` is in the home folder of the user `{user}`: on any other "
                "machine the file is not there")
-
-
-def _checks_paths(tree: ast.Module) -> bool:
-    """True when the file asks whether some path exists (see :data:`_CHECKS`)."""
-    return any(isinstance(call, ast.Call) and (
-        isinstance(call.func, ast.Attribute) and call.func.attr in _CHECKS or
-        isinstance(call.func, ast.Name) and call.func.id in _CHECKS)
-        for call in nodes_of_class(tree, ast.Call))
 
 
 def _docstring(node: ast.AST, parents: dict[int, ast.AST]) -> bool:

@@ -1,0 +1,79 @@
+"""DAT015: installed code reads a data file next to its own source, which setup.py does not
+install there."""
+
+from __future__ import annotations
+
+import posixpath
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.installed import installed_modules, is_ament_python
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.data_files.common import checks_files
+from pkgtool.rules.registry import rule
+from pkgtool.rules.sys_path import file_relative_paths
+from pkgtool.rules.syntax_trees import installed_trees
+
+_CODE = (".py", ".pyc", ".so", ".pyd")
+"""Suffixes of what setuptools installs with a Python package (or builds into it)."""
+_PACKAGE_DATA = ("package_data", "include_package_data")
+"""setup() keywords that install other files into a Python package's folder."""
+
+
+@rule("DAT015", "file-beside-module-not-installed", Severity.ERROR,
+      fix="Install the file with data_files into `share/<package>` and find it with "
+          "`get_package_share_directory('<package>')`")
+def file_beside_module(package: Package) -> Iterator[Hit]:
+    """Installed code reads a data file found from its own `__file__` that setup.py does not
+    install there.
+
+    ## What it does
+    Evaluates the paths installed modules build from `__file__`
+    (`os.path.join(os.path.dirname(__file__), 'sounds', 'siren.mp3')`,
+    `Path(__file__).parent / 'model.pt'`, also through a name assigned once) and reports one
+    that names a file of the package (not Python code) which the install does not put
+    there: a file outside the package's Python packages (`<module>/../config/x.yaml`, the
+    package root's `config/`), or one inside them when setup.py has no `package_data` nor
+    `include_package_data`. Modules that ask whether paths exist (`os.path.exists`) are left
+    alone, as are packages whose setup.py installs into `site-packages` by other means.
+
+    ## Why is this bad?
+    `colcon build --symlink-install` runs the sources in place, so the file is found; a plain
+    `colcon build` (a grader's, a robot's, CI's) installs only the `.py` files into
+    `site-packages`, and the node fails with `FileNotFoundError` when it reads the file.
+
+    ## Example
+    ```python
+    sound = os.path.join(os.path.dirname(__file__), 'sounds', 'siren.mp3')
+    ```
+
+    ## Use instead
+    ```python
+    # setup.py: data_files=[('share/' + package_name + '/sounds', ['sounds/siren.mp3'])]
+    sound = os.path.join(get_package_share_directory('my_pkg'), 'sounds', 'siren.mp3')
+    ```
+    """
+    setup = package.setup_py
+    if setup is None or not is_ament_python(package) or \
+            any(keyword in setup.keywords for keyword in _PACKAGE_DATA) or \
+            setup.is_unresolved("data_files") or setup.is_unresolved("**") or \
+            any("site-packages" in entry.destination for entry in setup.data_files or ()):
+        return
+    folders = {posixpath.dirname(file) for file in (installed_modules(package) or {}).values()}
+    files = set(package.files)
+    for module, tree, index in installed_trees(package):
+        if "__file__" not in package.texts.get(module.path, "") or checks_files(index):
+            continue
+        seen: set[str] = set()
+        for node, path in file_relative_paths(tree, module.path):
+            if path in seen or path not in files or path.endswith(_CODE):
+                continue
+            seen.add(path)
+            inside = any(path.startswith(f"{folder}/") for folder in folders if folder)
+            where = "in the Python package, where setuptools installs only its `.py` files" \
+                if inside else "outside the Python packages, which is not installed"
+            yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
+                      f"`{path}` is read next to the module (from `__file__`), but it is "
+                      f"{where}: it works only with `colcon build --symlink-install`, and a "
+                      "plain build fails with FileNotFoundError")
