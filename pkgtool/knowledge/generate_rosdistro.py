@@ -38,6 +38,7 @@ DIST_MODULES: dict[str, tuple[str, ...]] = {
     "websocket-client": ("websocket",), "pyusb": ("usb",), "pyopengl": ("OpenGL",),
     "opengl": ("OpenGL",), "pycairo": ("cairo",), "dbus-python": ("dbus",),
     "pymongo": ("pymongo", "bson", "gridfs"), "paho-mqtt": ("paho",), "empy": ("em",),
+    "pybullet": ("pybullet", "pybullet_data", "pybullet_envs", "pybullet_utils"),
     "grpcio": ("grpc",), "lark-parser": ("lark",), "python-can": ("can",),
     "ruamel-yaml": ("ruamel",), "pytest": ("pytest", "_pytest", "py"),
     "setuptools": ("setuptools", "pkg_resources", "_distutils_hack"),

@@ -353,7 +353,8 @@ class _Reader(ast.NodeVisitor):
     def _command_executable(self, node: ast.Call) -> str | None:
         """The executable a ``Command`` substitution runs, when written out: the first word of
         ``Command(['xacro ', path])``, ``Command('xacro ' + path)``, ``Command(f'xacro
-        {path}')`` or ``Command([FindExecutable(name='xacro'), ' ', path])``."""
+        {path}')`` or ``Command([FindExecutable(name='xacro'), ' ', path])`` (also inside a
+        one-part ``PathJoinSubstitution``)."""
         first = node.args[0] if node.args else _keyword(node, "command")
         if isinstance(first, (ast.List, ast.Tuple)):
             first = first.elts[0] if first.elts else None
@@ -361,6 +362,10 @@ class _Reader(ast.NodeVisitor):
             first = first.left
         if isinstance(first, ast.JoinedStr):
             first = first.values[0] if first.values else None
+        if isinstance(first, ast.Call) and _name(first.func) == "PathJoinSubstitution" and \
+                first.args and isinstance(first.args[0], (ast.List, ast.Tuple)) and \
+                len(first.args[0].elts) == 1:  # PathJoinSubstitution([FindExecutable(...)])
+            first = first.args[0].elts[0]
         if isinstance(first, ast.Call) and _name(first.func) == "FindExecutable":
             first = _keyword(first, "name") or (first.args[0] if first.args else None)
         found = self.value(first) if isinstance(first, ast.expr) else None

@@ -32,6 +32,11 @@ _CPP_KEYS = {"opencv": "libopencv-dev", "opencv2": "libopencv-dev", "OpenCV": "l
 
 def _hit(element: XmlElement, ros2: bool, compiled: bool, distro: str) -> Hit | None:
     key, tag = token(element.text), element.tag
+    owner, slash, rest = key.partition("/")
+    if slash and rest and owner.replace("_", "").replace("-", "").isalnum():
+        return Hit(element.span, f"`{key}` names something inside a package (an interface, a "
+                   "file), not a package: rosdep cannot resolve it",
+                   f"Write `<{tag}>{owner}</{tag}>`")
     if key in NOT_PACKAGES:
         return Hit(element.span, f"`{key}` is a build type, not a package",
                    f"Remove this `<{tag}>` and declare `<build_type>{key}</build_type>` in "
@@ -66,6 +71,7 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Reports dependency keys that are known not to be rosdep keys, with the key to use:
+    a name with a ``/`` (``turtlesim/msg/Pose``: its package is the dependency),
     pip distribution names (``opencv-python``, ``pyyaml``, ``numpy``), import names (``cv2``),
     ROS 1 Python 2 keys (``python-opencv``), ROS 1 packages (``rospy``, ``catkin``) in a package
     whose build type is ``ament_*``, ``ament_python``, which is a build type, and

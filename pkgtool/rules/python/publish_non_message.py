@@ -145,7 +145,8 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
     (held the same ways), for literals and classes (`call_async(Trigger.Request)`).
     `bytes` (published as serialized data), other names, calls and unknown types are never
     reported. A `publish()` given a second positional argument (`pub.publish(String, msg)`)
-    or no message at all (`pub.publish()`) is reported too, and so is what an action server's
+    or no message at all (`pub.publish()`) or the message's fields as keywords (rospy's
+    `pub.publish(data='hi')`) is reported too, and so is what an action server's
     execute callback gives its goal handle's `publish_feedback()` when it is such a literal
     or class.
 
@@ -188,6 +189,15 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
                               f"`{ast.unparse(empty)}` is given no message: rclpy raises "
                               "TypeError (missing 1 required positional argument: 'msg')",
                               "Publish a message: `self.pub.publish(msg)`")
+                foreign = next((k for k in empty.keywords if k.arg not in _SENT), None) \
+                    if empty is not None else None
+                if foreign is not None:
+                    yield Hit(Span(module.path, foreign.lineno, foreign.col_offset + 1),
+                              f"`{ast.unparse(ref)}.publish()` is given `{foreign.arg}=`: it "
+                              "takes the message alone (`msg`), not its fields as keywords, and"
+                              f" rclpy raises TypeError (unexpected keyword argument "
+                              f"'{foreign.arg}')",
+                              _fields_fix(ref, empty, publisher.message.message))
                 if extra is not None:
                     yield Hit(Span(module.path, extra.lineno, extra.col_offset + 1),
                               f"`{ast.unparse(ref)}.publish()` is given more than the message:"
@@ -199,6 +209,14 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
                                      certain_type(value, package, tree, index)) if value else None
                 if sent is not None and value is not None and why:
                     yield _sent_hit(module.path, ref, sent[0], value, why, publisher.message)
+
+
+def _fields_fix(ref: ast.expr, call: ast.Call, message: Message | None) -> str:
+    """Publishing a message built from the fields a ``publish()`` call was given."""
+    fields = ", ".join(f"{k.arg}=..." for k in call.keywords)
+    made = f"{message.name.rpartition('/')[2]}({fields})" if message is not None \
+        else f"<Message>({fields})"
+    return f"Build the message and publish it: `{ast.unparse(ref)}.publish({made})`"
 
 
 def _sent_hit(path: str, ref: ast.expr, method: str, value: ast.expr, why: str,
