@@ -26,6 +26,8 @@ RULES = {
     "DAT013": ("duplicate-parameter", "warning", True, "data_files.duplicate_parameter"),
     "DAT014": ("home-folder-path", "warning", True, "data_files.home_folder_path"),
     "DAT015": ("file-beside-module-not-installed", "error", True, "data_files.file_beside_module"),
+    "DAT016": ("python-version-in-data-files", "error", True,
+               "data_files.python_version_in_destination"),
     "DEP001": ("undeclared-import", "error", True, "dependencies.undeclared_import"),
     "DEP002": ("import-declared-only-as-build-depend", "error", True,
                "dependencies.build_only_import"),

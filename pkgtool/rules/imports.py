@@ -476,9 +476,18 @@ def _needs(package: Package, module: PythonModule, guarded: bool | None) -> Iter
         kind, keys = classify(shown.replace(".", "_"), names, package.context)
         if ros1 and kind == "unknown" and top in ROS1_PACKAGES:  # rospy in a catkin package
             kind, keys = "ros", (top,)
+        elif kind == "unknown" and _interface_module(imported.module):
+            kind, keys = "ros", (top,)  # `from x.msg import Y`: rosidl's, named as its package
         if ros1 and kind == "ros":
             keys = _ros1_keys(top, keys)
         yield Need(module, imported, shown, kind, keys)
+
+
+def _interface_module(module: str | None) -> bool:
+    """True for ``x.msg``, ``x.srv`` and ``x.action``: the modules rosidl generates for an
+    interface package ``x`` (whatever its name looks like)."""
+    parts = (module or "").split(".")
+    return len(parts) == 2 and parts[1] in ("msg", "srv", "action")
 
 
 NAMESPACE_PACKAGES = {"google": "protobuf", "azure": "", "zope": "", "backports": "",

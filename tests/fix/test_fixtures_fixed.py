@@ -60,12 +60,13 @@ words of an f-string of arguments are the author's to write, and so is the condi
 needs, the one message a print-style logging call's arguments were meant to form, and the value
 a `Parameter` of a bool or a list was meant to have, where a command's program ends when a
 substitution names it, which of too many positional arguments were meant by keyword, and
-which program was to read a data file run as a command): no fix
+which program was to read a data file run as a command, and whether a package no release
+has is built elsewhere): no fix
 guesses, the user chooses; the other findings
 of the case are fixed."""
 MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages"),
           ("PYC033", "extra_positional"), ("PYC033", "parameter_default_by_position"),
-          ("LCH010", "data_file_as_program"),
+          ("LCH010", "data_file_as_program"), ("DEP001", "interfaces_of_an_unknown_package"),
           ("PYC029", "near_keywords"),
           ("MAN018", "standard_library_modules"), ("DAT001", "typo_in_path"),
           ("DAT008", "flat_file_for_a_component_and_a_node"),

@@ -117,19 +117,20 @@ def _imported_names(package: Package) -> frozenset[str]:
     return frozenset(names)
 
 
-_EXISTENCE = frozenset({"exists", "isfile", "is_file", "isdir", "is_dir", "lexists",
-                        "makedirs", "mkdir", "load_dotenv"})
-"""``os.path.exists``, ``os.path.isfile``, ``Path.is_dir()``..., and ``os.makedirs``,
-``Path.mkdir()``: a module making folders may make the share path it names too;
-``load_dotenv()``, which returns False for a missing file."""
+ASKS_EXISTENCE = frozenset({"exists", "isfile", "is_file", "isdir", "is_dir", "lexists"})
+"""``os.path.exists``, ``os.path.isfile``, ``Path.is_dir()``..."""
+_EXISTENCE = ASKS_EXISTENCE | {"makedirs", "mkdir", "load_dotenv"}
+"""Those, ``os.makedirs`` and ``Path.mkdir()`` (a module making folders may make the share
+path it names too) and ``load_dotenv()``, which returns False for a missing file."""
 
 
-def checks_files(index: Index) -> bool:
-    """True when the module asks whether files or folders exist, or makes folders: it handles
-    a share file that may be missing (a model it downloads when absent, a file the user adds,
-    a folder it creates), so none of its share paths is certainly read."""
-    return any(isinstance(call.func, ast.Attribute) and call.func.attr in _EXISTENCE or
-               isinstance(call.func, ast.Name) and call.func.id == "load_dotenv"
+def checks_files(index: Index, calls: frozenset[str] = _EXISTENCE) -> bool:
+    """True when the module makes one of ``calls`` (by default: asks whether files or folders
+    exist, or makes folders): it handles a share file that may be missing (a model it
+    downloads when absent, a file the user adds, a folder it creates), so none of its share
+    paths is certainly read."""
+    return any(isinstance(call.func, ast.Attribute) and call.func.attr in calls or
+               isinstance(call.func, ast.Name) and call.func.id in calls & {"load_dotenv"}
                for call in index.calls)
 
 

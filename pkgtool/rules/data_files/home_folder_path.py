@@ -12,7 +12,7 @@ from pkgtool.model.installed import installed_data, is_ament_python
 from pkgtool.model.package import Package, is_test_material
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
-from pkgtool.rules.data_files.common import checks_files
+from pkgtool.rules.data_files.common import ASKS_EXISTENCE, checks_files
 from pkgtool.rules.syntax_trees import index_of, installed_trees, python_files
 
 HOME_PATH = re.compile(r"(?<![\w.~$}/-])(?:/home/(?!\$|\{)[\w.-]+|/Users/[\w.-]+)/[\w.-]")
@@ -60,7 +60,7 @@ def home_folder_path(package: Package) -> Iterator[Hit]:
     checked = {module.path for module, _, _ in installed_trees(package)} | \
         {f.path for f in package.launch_files if f.kind == "python"}
     for path, _, tree in python_files(package, _HINTS):
-        if path in checked and not checks_files(index_of(tree)):
+        if path in checked and not checks_files(index_of(tree), ASKS_EXISTENCE):
             yield from _python_paths(path, tree)
     shipped = _shipped(package)
     for path, text in sorted(package.texts.items()):
