@@ -19,6 +19,7 @@ import re
 from collections.abc import Iterable, Iterator
 from functools import lru_cache
 
+from pkgtool.knowledge.interfaces import interface_kind, is_known_package
 from pkgtool.knowledge.ros_names import looks_like_ros
 from pkgtool.knowledge.rosdep import (ALTERNATIVE_KEYS, ROS1_PACKAGES, ROS_MODULE_PACKAGES,
                                       accepted_keys, brought_in, package_for_ros_module,
@@ -574,7 +575,18 @@ def misspelt_package(package: Package, need: Need) -> str | None:
         return None
     meant = [close for close in close_names(top, distro, extra=names, limit=3)
              if not digits_differ(top, close) and typo_distance(top, close, 1) <= 1]
-    return meant[0] if len(meant) == 1 else None
+    return meant[0] if len(meant) == 1 and _has_imported(meant[0], need, distro) else None
+
+
+def _has_imported(meant: str, need: Need, distro: str) -> bool:
+    """False when ``need`` imports interfaces (``from x.action import Dock``) that the known
+    package ``meant`` lacks: ``x`` is a package of its own (``action_msg`` beside
+    ``action_msgs``), not a typo."""
+    kind = (need.imported.module or "").partition(".")[2]
+    if kind not in ("msg", "srv", "action") or not is_known_package(meant, distro):
+        return True
+    return all(interface_kind(meant, name, distro) == kind
+               for name in need.imported.names if name != "*")
 
 
 @per_package
