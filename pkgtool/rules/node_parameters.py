@@ -15,7 +15,7 @@ from difflib import get_close_matches
 from collections.abc import Iterable, Iterator
 
 from pkgtool.knowledge.rosdistro import typo_of
-from pkgtool.model.ast_nodes import nodes_of_class, walk_once
+from pkgtool.model.ast_nodes import nodes_of_class, subtree, walk_once
 from pkgtool.model.installed import installed_data
 from pkgtool.model.launch import NodeRef
 from pkgtool.model.memo import per_package
@@ -127,9 +127,10 @@ def _static_typing(descriptor: ast.expr | None) -> bool:
         "ParameterDescriptor" and _flag(descriptor, "dynamic_typing") is False
 
 
-def _declarations(call: ast.Call, method: str, path: str) -> list[Declared] | None:
+def _declarations(call: ast.Call, method: str, path: str, index: Index
+                  ) -> list[Declared] | None:
     """The parameters a call of ``method`` (``declare_parameter(s)``) declares; None when not
-    all literal."""
+    all literal (a ``parameters=`` list may be a local name bound once to one)."""
     span = Span(path, call.lineno, call.col_offset + 1)
     if method == "declare_parameter":
         name = _literal_string(_argument(call, 0, "name"))
@@ -139,6 +140,8 @@ def _declarations(call: ast.Call, method: str, path: str) -> list[Declared] | No
                                              _argument(call, 2, "descriptor")), span)]
     namespace = _literal_string(_argument(call, 0, "namespace"))
     items = _argument(call, 1, "parameters")
+    if isinstance(items, ast.Name):
+        items = _list_bound_once(items, index)
     if namespace is None or not isinstance(items, (ast.List, ast.Tuple)):
         return None
     found: list[Declared] = []
@@ -151,6 +154,25 @@ def _declarations(call: ast.Call, method: str, path: str) -> list[Declared] | No
         found.append(Declared(full, _default_type(call, parts[1] if len(parts) > 1 else None,
                                                   parts[2] if len(parts) > 2 else None), span))
     return found
+
+
+def _list_bound_once(name: ast.Name, index: Index) -> ast.expr | None:
+    """The list or tuple display ``name`` is bound to by the one assignment of it in its
+    function, when nothing there changes it (no other binding, no method call or item
+    store on it); else None."""
+    function = index.enclosing_function(name)
+    if function is None:
+        return None
+    bound = [node for node in subtree(function) if isinstance(node, ast.Name) and
+             node.id == name.id and not isinstance(node.ctx, ast.Load)]
+    changed = any(isinstance(node, (ast.Attribute, ast.Subscript)) and
+                  isinstance(node.value, ast.Name) and node.value.id == name.id and
+                  (isinstance(node, ast.Attribute) or not isinstance(node.ctx, ast.Load))
+                  for node in subtree(function))
+    assignment = index.parents.get(id(bound[0])) if len(bound) == 1 else None
+    return assignment.value if isinstance(assignment, ast.Assign) and not changed and \
+        len(assignment.targets) == 1 and \
+        isinstance(assignment.value, (ast.List, ast.Tuple)) else None
 
 
 Scope = tuple[int, str]
@@ -218,7 +240,7 @@ def _node_class(path: str, cls: ast.ClassDef, index: Index, module_skip: str | N
     if len(cls.bases) != 1 or cls.keywords:
         skip = skip or "it derives from another class besides Node"
     for call in declaring:
-        found = None if call is None else _declarations(*call, path)
+        found = None if call is None else _declarations(*call, path, index)
         if found is None:
             skip = skip or "it declares a parameter whose name is not known statically"
         else:
