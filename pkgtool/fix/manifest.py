@@ -14,7 +14,7 @@ from pkgtool.fix.common import child_at, line_of, manifest_doc, offer
 from pkgtool.fix.registry import Refusal, fixer
 from pkgtool.knowledge.rosdistro import close_names
 from pkgtool.model.package import Package
-from pkgtool.model.xml import XML_VERSION
+from pkgtool.model.xml import foreign_xml_version
 from pkgtool.records import replace
 from pkgtool.rules.dependency_names import neighbours
 from pkgtool.rules.manifest.non_spdx_license import spdx_spelling
@@ -38,7 +38,7 @@ def xml_version(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Write ``1.0`` over the version the XML declaration names. Safe: the ROS tools read
     the file as XML 1.0 already."""
     text = package.texts.get("package.xml")
-    declared = XML_VERSION.match(text) if text is not None and findings else None
+    declared = foreign_xml_version(text) if text is not None and findings else None
     if declared is not None:
         yield Fix("Declare `<?xml version=\"1.0\"?>`",
                   (Edit("package.xml", declared.start(1), declared.end(1), "1.0"),))

@@ -13,10 +13,11 @@ installs with ``ament_python_install_package`` too). Reading is cheap
 
 from __future__ import annotations
 
+import functools
 import os
 import re
 from collections import Counter
-from collections.abc import Iterable, Mapping
+from collections.abc import Callable, Iterable, Mapping
 from pathlib import Path
 
 from pkgtool.knowledge.interface_definitions import definitions
@@ -44,7 +45,7 @@ class WorkspacePackage:
 
     ``folder`` is where it lies; ``setup_digest`` is a digest of its setup.py and setup.cfg
     when colcon builds it with setup.py alone (ament_python, no pyproject.toml), else empty:
-    :func:`~pkgtool.model.sibling_scripts.sibling_executables` reads its executables from
+    :func:`~pkgtool.model.scripts.sibling_executables` reads its executables from
     those files when a rule asks, and the digest keys the lint cache to them.
     """
 
@@ -124,10 +125,11 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
     when the caller has them: the result is the same, without listing folders again.
     """
     base = os.fspath(root)
+    setup = functools.cache(lambda: setup_texts(base))  # read once, if at all
     manifest = _read(os.path.join(base, "package.xml"))
     found = _NAME.search(manifest) if manifest is not None else None
     name = found.group(1) if found else \
-        (_setup_name(base) if manifest is None else None) or root.name
+        (_setup_name(*setup()) if manifest is None else None) or root.name
     kinds: dict[str, set[str]] = {}
     modules: set[str] = set()
     defined: dict[tuple[str, str], str | None] = {}
@@ -155,30 +157,31 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
     interfaces = with_listed(folders, cmake, listed) or {}
     return WorkspacePackage(name, interfaces, frozenset(modules),
                             _messages(base, name, interfaces, defined), base,
-                            _setup_digest(base, manifest, listed))
+                            _setup_digest(manifest, listed, setup))
 
 
 _BUILD_TYPE = re.compile(r"<build_type>\s*([^<\s]+)\s*</build_type>")
 _COMMENT = re.compile(r"<!--.*?-->", re.DOTALL)
 
 
-def _setup_digest(base: str, manifest: str | None, listed: tuple[str, ...]) -> str:
-    """:attr:`WorkspacePackage.setup_digest` of the package at ``base`` with files ``listed``."""
+def _setup_digest(manifest: str | None, listed: tuple[str, ...],
+                  setup: Callable[[], tuple[str | None, str | None]]) -> str:
+    """:attr:`WorkspacePackage.setup_digest` of the package with files ``listed``, whose
+    setup.py and setup.cfg texts ``setup`` reads."""
     if "setup.py" not in listed or "pyproject.toml" in listed:
         return ""
     found = _BUILD_TYPE.search(_COMMENT.sub("", manifest or ""))
     if (found.group(1) != "ament_python") if found else "CMakeLists.txt" in listed:
         return ""
-    return text_digest(*setup_texts(base))
+    return text_digest(*setup())
 
 
-def _setup_name(base: str) -> str | None:
+def _setup_name(setup_text: str | None, cfg_text: str | None) -> str | None:
     """The name colcon gives a Python project without package.xml: setup.py's ``name=``, else
     setup.cfg's ``[metadata] name`` (not its folder's name)."""
     from pkgtool.model.setup_cfg import SetupCfg, parse_setup_cfg
     from pkgtool.model.setup_py import SetupPy, parse_setup_py
 
-    setup_text, cfg_text = setup_texts(base)
     setup = parse_setup_py("setup.py", setup_text, None) if setup_text is not None else None
     if isinstance(setup, SetupPy) and setup.name is not None and \
             isinstance(setup.name.value, str) and setup.name.value:

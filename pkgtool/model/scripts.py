@@ -10,7 +10,7 @@ import posixpath
 from pkgtool.model.context import WorkspacePackage, setup_texts
 from pkgtool.model.digest import text_digest
 from pkgtool.model.setup_cfg import SetupCfg, parse_setup_cfg
-from pkgtool.model.setup_py import SetupPy, parse_setup_py
+from pkgtool.model.setup_py import DataFile, SetupPy, parse_setup_py
 from pkgtool.model.span import ParseProblem
 
 
@@ -32,11 +32,11 @@ def script_names(setup: SetupPy, setup_cfg: SetupCfg | None) -> frozenset[str] |
     return frozenset(names)
 
 
-def copies_to_library(setup: SetupPy, name: str) -> bool:
-    """True when data_files copies anything into ``lib/<name>`` (beside the console scripts)."""
+def library_entries(setup: SetupPy, name: str) -> list[DataFile]:
+    """The data_files entries that copy into ``lib/<name>`` (beside the console scripts)."""
     library = f"lib/{name}"
-    return any(posixpath.normpath(entry.destination.strip("/")) == library
-               for entry in setup.data_files or ())
+    return [entry for entry in setup.data_files or ()
+            if posixpath.normpath(entry.destination.strip("/")) == library]
 
 
 def sibling_executables(package: WorkspacePackage) -> frozenset[str] | None:
@@ -63,6 +63,6 @@ def _executables(folder: str, name: str, digest: str) -> frozenset[str] | None:
     setup_cfg = parse_setup_cfg("setup.cfg", cfg_text) if cfg_text is not None else None
     if not isinstance(destinations, SetupPy) or not isinstance(scripts, SetupPy) or \
             isinstance(setup_cfg, ParseProblem) or destinations.is_unresolved("data_files") or \
-            copies_to_library(destinations, name):
+            library_entries(destinations, name):
         return None
     return script_names(scripts, setup_cfg)

@@ -28,8 +28,16 @@ class XmlElement:
         return dict(self.attributes).get(name)
 
 
-XML_VERSION = re.compile(r"\ufeff?\s*<\?xml\s+version\s*=\s*[\"']([^\"']*)[\"']")
+_XML_VERSION = re.compile(r"\ufeff?\s*<\?xml\s+version\s*=\s*[\"']([^\"']*)[\"']")
 """The version of a document's XML declaration (group 1)."""
+
+
+def foreign_xml_version(text: str) -> re.Match[str] | None:
+    """The XML declaration's version (group 1) when it is none XML has (1.0, 1.1), else
+    None."""
+    declared = _XML_VERSION.match(text)
+    return declared if declared is not None and declared.group(1) not in ("1.0", "1.1") \
+        else None
 
 
 def parse_xml(path: str, text: str) -> XmlElement | ParseProblem:
@@ -42,8 +50,8 @@ def parse_xml(path: str, text: str) -> XmlElement | ParseProblem:
         line = text[: max(text.find("<!DOCTYPE"), text.find("<!ENTITY"))].count("\n") + 1
         return ParseProblem("xml-entity", Span(path, line, 1),
                             "DOCTYPE and entity declarations are not allowed in package files")
-    declared = XML_VERSION.match(text)
-    if declared is not None and declared.group(1) not in ("1.0", "1.1"):
+    declared = foreign_xml_version(text)
+    if declared is not None:
         # expat (Python's xml, catkin_pkg, launch) reads any number; libxml2 refuses it
         text = f"{text[:declared.start(1)]}1.0{text[declared.end(1):]}"
     try:

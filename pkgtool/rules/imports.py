@@ -19,7 +19,7 @@ import re
 from collections.abc import Iterable, Iterator
 from functools import lru_cache
 
-from pkgtool.knowledge.interfaces import interface_kind, is_known_package
+from pkgtool.knowledge.interfaces import KINDS, interface_kind, is_known_package
 from pkgtool.knowledge.ros_names import looks_like_ros
 from pkgtool.knowledge.rosdep import (ALTERNATIVE_KEYS, ROS1_PACKAGES, ROS_MODULE_PACKAGES,
                                       accepted_keys, brought_in, package_for_ros_module,
@@ -413,7 +413,7 @@ def local_modules(package: Package, module: PythonModule) -> frozenset[str]:
     while folder:
         folder = posixpath.dirname(folder)
         prefix = f"{folder}/" if folder else ""
-        above.update(name for name in _siblings(package, f"{prefix}_")
+        above.update(name for name in _layout(package.files).children.get(folder, ())
                      if package.has_file(f"{prefix}{name}.py") or
                      package.has_file(f"{prefix}{name}/__init__.py"))
     return local | pytest_path_modules(package) | above
@@ -477,18 +477,19 @@ def _needs(package: Package, module: PythonModule, guarded: bool | None) -> Iter
         kind, keys = classify(shown.replace(".", "_"), names, package.context)
         if ros1 and kind == "unknown" and top in ROS1_PACKAGES:  # rospy in a catkin package
             kind, keys = "ros", (top,)
-        elif kind == "unknown" and _interface_module(imported.module):
+        elif kind == "unknown" and _interface_kind(imported.module):
             kind, keys = "ros", (top,)  # `from x.msg import Y`: rosidl's, named as its package
         if ros1 and kind == "ros":
             keys = _ros1_keys(top, keys)
         yield Need(module, imported, shown, kind, keys)
 
 
-def _interface_module(module: str | None) -> bool:
-    """True for ``x.msg``, ``x.srv`` and ``x.action``: the modules rosidl generates for an
-    interface package ``x`` (whatever its name looks like)."""
+def _interface_kind(module: str | None) -> str | None:
+    """``msg``, ``srv`` or ``action`` for ``x.msg``, ``x.srv`` and ``x.action``, the modules
+    rosidl generates for an interface package ``x`` (whatever its name looks like); else
+    None."""
     parts = (module or "").split(".")
-    return len(parts) == 2 and parts[1] in ("msg", "srv", "action")
+    return parts[1] if len(parts) == 2 and parts[1] in KINDS else None
 
 
 NAMESPACE_PACKAGES = {"google": "protobuf", "azure": "", "zope": "", "backports": "",
@@ -582,8 +583,8 @@ def _has_imported(meant: str, need: Need, distro: str) -> bool:
     """False when ``need`` imports interfaces (``from x.action import Dock``) that the known
     package ``meant`` lacks: ``x`` is a package of its own (``action_msg`` beside
     ``action_msgs``), not a typo."""
-    kind = (need.imported.module or "").partition(".")[2]
-    if kind not in ("msg", "srv", "action") or not is_known_package(meant, distro):
+    kind = _interface_kind(need.imported.module)
+    if kind is None or not is_known_package(meant, distro):
         return True
     return all(interface_kind(meant, name, distro) == kind
                for name in need.imported.names if name != "*")

@@ -130,7 +130,8 @@ def checks_files(index: Index, calls: frozenset[str] = _EXISTENCE) -> bool:
     downloads when absent, a file the user adds, a folder it creates), so none of its share
     paths is certainly read."""
     return any(isinstance(call.func, ast.Attribute) and call.func.attr in calls or
-               isinstance(call.func, ast.Name) and call.func.id in calls & {"load_dotenv"}
+               isinstance(call.func, ast.Name) and call.func.id == "load_dotenv" and
+               "load_dotenv" in calls
                for call in index.calls)
 
 

@@ -7,7 +7,7 @@ import re
 
 from pkgtool.model.installed import is_ament_python
 from pkgtool.model.package import Package
-from pkgtool.model.scripts import script_names
+from pkgtool.model.scripts import library_entries, script_names
 
 LAUNCH_FILE_NAME = re.compile(r"(?:^|[._-])launch\.(?:py|xml|ya?ml)$")
 """The names ROS 2 gives launch files (``bringup_launch.py``, ``robot.launch.xml``): never
@@ -33,14 +33,12 @@ def executables(package: Package, *, any_data: bool = False) -> frozenset[str] |
         return None
     if setup.is_unresolved("data_files"):
         return names | {posixpath.basename(f) for f in package.files} if any_data else None
-    library = f"lib/{package.name}"
     copied = set()
-    for entry in setup.data_files or ():
-        if posixpath.normpath(entry.destination.strip("/")) == library:
-            for source in entry.sources:
-                copied.update(posixpath.basename(m) for m in source.matches)
-                if not source.is_glob:
-                    copied.add(posixpath.basename(source.pattern))
+    for entry in library_entries(setup, package.name):
+        for source in entry.sources:
+            copied.update(posixpath.basename(m) for m in source.matches)
+            if not source.is_glob:
+                copied.add(posixpath.basename(source.pattern))
     return names | copied
 
 

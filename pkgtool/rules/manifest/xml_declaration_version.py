@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.model.xml import XML_VERSION
+from pkgtool.model.xml import foreign_xml_version
 from pkgtool.rules.registry import rule
 
 
@@ -39,8 +39,8 @@ def xml_declaration_version(package: Package) -> Iterator[Hit]:
     ```
     """
     text = package.texts.get("package.xml")
-    declared = XML_VERSION.match(text) if text is not None else None
-    if declared is None or declared.group(1) in ("1.0", "1.1"):
+    declared = foreign_xml_version(text) if text is not None else None
+    if declared is None:
         return
     line = text[:declared.start(1)].count("\n") + 1 if text else 1
     column = declared.start(1) - (text.rfind("\n", 0, declared.start(1)) + 1) + 1 if text else 1
