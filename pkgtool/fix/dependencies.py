@@ -16,7 +16,7 @@ from pkgtool.knowledge.rosdistro import is_known_dependency
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.knowledge.interfaces import kind_in
-from pkgtool.rules.dependencies.interface_types import interfaces_for
+from pkgtool.rules.interface_types import interfaces_for
 from pkgtool.rules.dependencies.sibling_import import installed_name
 from pkgtool.rules.dependencies.unknown_interface_import import written_import
 from pkgtool.rules.imports import (BUILD_ONLY, Need, declared, needs, test_code,

@@ -21,7 +21,8 @@ class Refusal:
 
 Make: TypeAlias = Callable[[Package, list[Finding]], Iterable["Fix | Refusal"]]
 
-_MODULES = ("pkgtool.fix.data_files", "pkgtool.fix.dependencies", "pkgtool.fix.launch",
+_MODULES = ("pkgtool.fix.data_files", "pkgtool.fix.dependencies", "pkgtool.fix.interfaces",
+            "pkgtool.fix.launch",
             "pkgtool.fix.manifest", "pkgtool.fix.parameters", "pkgtool.fix.python",
             "pkgtool.fix.setup_cfg", "pkgtool.fix.setup_py")
 

@@ -23,6 +23,7 @@ from pkgtool.records import record
 
 __all__ = ["COMPANIONS", "KINDS", "NO_COMPANIONS", "close_interfaces", "companion_of",
            "interface_kind", "generated_module", "interfaces_of", "is_known_package", "kind_in",
+           "packages_with",
            "meant_kind", "mismatch", "parse_type", "type_problem"]
 
 KINDS = ("msg", "srv", "action")
@@ -57,6 +58,12 @@ def _table(distro: str) -> dict[str, Interfaces]:
 def is_known_package(package: str, distro: str = DEFAULT_DISTRO) -> bool:
     """True when the table knows every interface of ``package`` in ``distro``."""
     return package in _table(distro)
+
+
+def packages_with(kind: str, name: str, distro: str = DEFAULT_DISTRO) -> list[str]:
+    """The known packages that define the interface ``name`` of ``kind``, by name."""
+    return sorted(package for package, interfaces in _table(distro).items()
+                  if name in interfaces.get(kind, ()))
 
 
 def interfaces_of(package: str, distro: str = DEFAULT_DISTRO) -> Interfaces | None:

@@ -7,7 +7,7 @@ from collections.abc import Callable
 from pathlib import Path
 
 from pkgtool.model.cmake_interfaces import with_included
-from pkgtool.model.context import Context
+from pkgtool.model.context import Context, interface_file
 from pkgtool.model.files import TextFile, list_files, read_text
 from pkgtool.model.launch import (LAUNCH_YAML, LaunchFile, below, is_launch_file,
                                   is_launch_test, is_template, nested_packages, other_yaml,
@@ -154,8 +154,8 @@ def load_package(root: Path, context: Context | None = None) -> Package:
                 found = yaml_problem(relpath, text)
                 if isinstance(found, ParseProblem):
                     problems.append(found)
-        elif relpath.rpartition("/")[2] == ".gitignore":  # modules generated at build time
-            text_of(relpath)
+        elif relpath.rpartition("/")[2] == ".gitignore" or is_interface_definition(relpath):
+            text_of(relpath)  # modules generated at build time; .msg, .srv, .action files
         elif relpath.endswith(".py") and relpath != "setup.py":
             text = text_of(relpath)
             if text is not None and not _other_language(text):
@@ -208,6 +208,12 @@ def is_test_data(relpath: str) -> bool:
     name = relpath.rsplit("/", 1)[-1]
     collected = name.startswith("test_") or name.endswith("_test.py") or name == "conftest.py"
     return is_test_material(relpath) and not collected
+
+
+def is_interface_definition(relpath: str) -> bool:
+    """A ``.msg``, ``.srv`` or ``.action`` file rosidl would generate an interface from (one
+    under the ``msg``, ``srv`` or ``action`` folder)."""
+    return relpath.endswith((".msg", ".srv", ".action")) and interface_file(relpath) is not None
 
 
 def _other_language(text: str) -> bool:

@@ -29,6 +29,7 @@ FAMILIES = {
     "DAT": "data_files: installed resources",
     "DEP": "imports versus package.xml dependencies",
     "LCH": "launch files",
+    "IFC": "interface definitions: .msg, .srv and .action files",
     "PYC": "Python code",
     "STY": "style: flake8 and pydocstyle with ament's settings",
     "CPY": "copyright and license headers",

@@ -13,7 +13,7 @@ from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.imports import all_python, dependency_cause
-from pkgtool.rules.dependencies.interface_types import interfaces_for, patched_interfaces
+from pkgtool.rules.interface_types import interfaces_for, patched_interfaces
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import index_of, python_files, resolved_attributes
 

@@ -9,7 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.interfaces import type_problem
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.dependencies.interface_types import interfaces_for
+from pkgtool.rules.interface_types import interfaces_for
 from pkgtool.rules.registry import rule
 
 _TYPE = re.compile(r"(?<![\w/.-])([a-z][a-z0-9_]*)/(msg|srv|action)/([A-Za-z]\w*)(?![\w/]|\.\w)")
