@@ -44,3 +44,16 @@ GOAL_HANDLE_ATTRIBUTES = frozenset("""
     request status succeed""".split())
 """The public attributes of ``rclpy.action.server.ServerGoalHandle`` (Jazzy; the same since
 Foxy), the goal handle an ``ActionServer`` passes its callbacks."""
+
+LIFECYCLE_NODE_ATTRIBUTES = NODE_ATTRIBUTES | frozenset("""
+    _callbacks _managed_entities _service_change_state _service_get_available_states
+    _service_get_available_transitions _service_get_state _service_get_transition_graph
+    _state_machine add_managed_entity create_lifecycle_publisher destroy_lifecycle_publisher
+    on_activate on_cleanup on_configure on_deactivate on_error on_shutdown register_callback
+    trigger_activate trigger_cleanup trigger_configure trigger_deactivate trigger_shutdown
+""".split())
+"""The attributes of rclpy's ``LifecycleNode`` (``rclpy.lifecycle.Node``, Humble to Rolling):
+the Node's and those of its lifecycle mixin."""
+LIFECYCLE_NODES = frozenset({"rclpy.lifecycle.Node", "rclpy.lifecycle.LifecycleNode",
+                             "rclpy.lifecycle.node.LifecycleNode"})
+"""The dotted names rclpy's lifecycle node class is imported by."""

@@ -195,6 +195,7 @@ RULES = {
                "setup.data_folder_installed_as_package"),
     "SET015": ("package-without-init", "warning", True, "setup.package_without_init"),
     "SET016": ("misspelled-setup-keyword", "error", True, "setup.misspelled_setup_keyword"),
+    "SET017": ("repeated-setup-key", "error", True, "setup.repeated_setup_key"),
     "STY001": ("flake8-violation", "error", False, "style.flake8_violation"),
     "STY002": ("docstring-violation", "error", False, "style.docstring_violation"),
     "SYN001": ("unparsable-file", "error", True, "syntax.unparsable_file"),

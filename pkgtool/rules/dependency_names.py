@@ -136,10 +136,13 @@ _PARTS = re.compile(r"[-_.]")
 def cmake_finds(package: Package, name: str) -> bool:
     """True when the package's CMakeLists.txt calls ``find_package(name ...)``, or lists the
     name among a ``find_package(catkin COMPONENTS ...)``'s: a package built with it (from
-    source beside it, when no release has that name), whatever its name looks like."""
+    source beside it, when no release has that name), whatever its name looks like. Not in
+    an ament_python package, whose build never runs a CMakeLists.txt."""
     cmake = package.texts.get("CMakeLists.txt")
-    return cmake is not None and any(_finds(found, name)
-                                     for found in _FIND_PACKAGE.finditer(cmake))
+    build_type = package.manifest.build_type if package.manifest else None
+    if cmake is None or build_type is not None and build_type.value == "ament_python":
+        return False  # an ament_python build never runs a CMakeLists.txt left beside it
+    return any(_finds(found, name) for found in _FIND_PACKAGE.finditer(cmake))
 
 
 _FIND_PACKAGE = re.compile(r"(?i:find_package)\s*\(\s*([\w.+-]+)([^)]*)\)")

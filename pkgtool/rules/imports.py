@@ -207,14 +207,16 @@ def path_modules(package: Package, module: PythonModule) -> list[tuple[int, froz
     """What the folders of the package that ``module`` puts on ``sys.path`` hold (their
     ``.py`` modules and the folders with Python files below them), each with the line of
     the edit; also those the ``__init__.py`` of its package and of the packages around it
-    puts there, its own folder when some module of the package puts it there (the module
-    that imports it by its bare name, having done so), and for test code those of the
-    ``conftest.py`` files of its folder and the folders above it (all run first: line 0)."""
+    puts there, its own folder or one around it when some module of the package puts it
+    there (the module that imports it by its bare name, having done so), and for test code
+    those of the ``conftest.py`` files of its folder and the folders above it (all run
+    first: line 0)."""
     edits = sys_path_edits(package)
     found = [(line, folder) for line, folder in edits.get(module.path, ())]
     folder = posixpath.dirname(module.path)
-    if any(edited == folder for made in edits.values() for _, edited in made):
-        found.append((0, folder))  # its importers put its own folder on the path first
+    found += [(0, edited) for edited in sorted({edited for made in edits.values()
+                                               for _, edited in made})
+              if edited == folder or folder.startswith(f"{edited}/")]  # its importers did
     while edits and folder and package.has_file(f"{folder}/__init__.py"):
         init = f"{folder}/__init__.py"  # runs before any module of its package
         if init != module.path:

@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import ast
 from collections.abc import Iterator
 
 from pkgtool.model.installed import is_ament_python, keyword_known, package_folder
 from pkgtool.model.package import Package
+from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.setup_py import SetupPy, Value
 from pkgtool.model.span import Span
 
@@ -22,6 +24,14 @@ def checked_setup(package: Package) -> SetupPy | None:
     if package.manifest is None or setup is None or setup.setup_span is None:
         return None
     return setup if is_ament_python(package) else None
+
+
+def setup_tree(package: Package) -> ast.Module | None:
+    """The syntax tree of setup.py when :func:`checked_setup` has one to check."""
+    if checked_setup(package) is None or "setup.py" not in package.texts:
+        return None
+    tree = parse_tree("setup.py", package.texts["setup.py"])
+    return tree if isinstance(tree, ast.Module) else None
 
 
 def text_of(value: Value | None) -> tuple[str, Span] | None:

@@ -5,9 +5,9 @@
 of ``scripts/`` importable by their bare names in the rest of the process. Only paths built
 from ``__file__`` and string literals are understood: ``os.path`` (``dirname``, ``join``,
 ``abspath``, ``realpath``, ``normpath``), ``pathlib.Path`` (``parent``, ``parents[n]``, ``/``,
-``joinpath``, ``resolve()``, ``absolute()``), ``str()``/``os.fspath()``, a text starting with
-``/`` added to a path (``dirname(__file__) + "/../lib"``, or in an f-string), and names
-assigned once at module level to such a path. The package's own share folder
+``joinpath``, ``resolve()``, ``absolute()``, ``as_posix()``), ``str()``/``os.fspath()``, a text
+starting with ``/`` added to a path (``dirname(__file__) + "/../lib"``, or in an f-string), and
+names assigned once at module level to such a path. The package's own share folder
 (``get_package_share_directory('<package>')``) stands for its root: a launch file putting
 ``share/<package>/launch`` on the path imports the package's ``launch/`` modules. Nothing is
 executed; a path leaving the package is ignored.
@@ -183,7 +183,7 @@ def _path(node: ast.expr, file: _Source, aliases: dict[str, str], once: dict[str
 def _called(node: ast.Call, here: tuple[_Source, dict[str, str], dict[str, ast.expr], int]
             ) -> str | None:
     """The path a call returns: ``os.path`` functions, ``Path(...)``, ``str(...)`` and the
-    path methods ``resolve``, ``absolute`` and ``joinpath``."""
+    path methods ``resolve``, ``absolute``, ``as_posix`` and ``joinpath``."""
     func, args = node.func, node.args
     name = _dotted(func, here[1])
     if name in _SHARE_LOOKUPS:  # share/<package> holds the package's folders, as installed
@@ -198,7 +198,8 @@ def _called(node: ast.Call, here: tuple[_Source, dict[str, str], dict[str, ast.e
         if name not in _SAME or len(args) > 1:
             return _joined(first, args[1:]) if name in _JOINING else None
         return first
-    if isinstance(func, ast.Attribute) and func.attr in ("resolve", "absolute", "joinpath"):
+    if isinstance(func, ast.Attribute) and \
+            func.attr in ("resolve", "absolute", "joinpath", "as_posix"):
         base = _path(func.value, *here)
         return _joined(base, args) if func.attr == "joinpath" else None if args else base
     return None

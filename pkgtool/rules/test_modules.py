@@ -7,6 +7,7 @@ import posixpath
 from collections.abc import Iterator
 from fnmatch import fnmatch
 
+from pkgtool.model.ast_nodes import TRIES
 from pkgtool.model.installed import installed_files
 from pkgtool.model.memo import per_package
 from pkgtool.model.modules import PythonModule
@@ -23,9 +24,11 @@ def matches(name: str, patterns: tuple[str, ...]) -> bool:
 
 
 def first_test(tree: ast.Module, config: PytestConfig) -> ast.AST | None:
-    """The first top-level test function, or class holding test methods, pytest would run."""
+    """The first module-level test function, or class holding test methods, pytest would run
+    (also one defined under a module-level ``if``, ``try`` or ``with``: ``if os.name !=
+    'nt':``)."""
     functions, classes = config.get("python_functions"), config.get("python_classes")
-    for node in tree.body:
+    for node in _module_level(tree.body):
         if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and \
                 matches(node.name, functions):
             return node
@@ -38,6 +41,18 @@ def first_test(tree: ast.Module, config: PytestConfig) -> ast.AST | None:
                     matches(m.name, methods) for m in node.body):
                 return node
     return None
+
+
+def _module_level(body: list[ast.stmt]) -> Iterator[ast.stmt]:
+    """The statements of ``body`` and those of the blocks of its ``if``, ``try`` and ``with``
+    statements, which run at module level too."""
+    for node in body:
+        yield node
+        if isinstance(node, (ast.If, ast.With, ast.AsyncWith, *TRIES)):
+            for block in ("body", "orelse", "finalbody"):
+                yield from _module_level(getattr(node, block, []))
+            for handler in getattr(node, "handlers", []):
+                yield from _module_level(handler.body)
 
 
 def why_not_collected(package: Package, path: str, config: PytestConfig) -> str | None:

@@ -207,3 +207,20 @@ def test_rclpy_signatures_table_knows_every_parameter_of_the_installed_rclpy() -
         if names - (parameters_of(call) or set()):
             missing[call] = sorted(names - (parameters_of(call) or set()))
     assert missing == {}
+
+
+@pytest.mark.ros
+def test_node_tables_know_every_attribute_of_the_installed_rclpy_nodes() -> None:
+    """No false PYC023: what the installed (Jazzy) Node and LifecycleNode classes define, the
+    tables know (name-mangled privates aside); each lifecycle name is the lifecycle node's."""
+    import rclpy.lifecycle
+    import rclpy.node
+
+    from pkgtool.knowledge.rclpy_node import (LIFECYCLE_NODE_ATTRIBUTES, LIFECYCLE_NODES,
+                                              NODE_ATTRIBUTES)
+
+    lifecycle = rclpy.lifecycle.LifecycleNode
+    public = {name for name in dir(lifecycle) if not name.startswith(("__", "_Lifecycle"))}
+    assert public - LIFECYCLE_NODE_ATTRIBUTES == set()
+    assert {n for n in dir(rclpy.node.Node) if not n.startswith("__")} - NODE_ATTRIBUTES == set()
+    assert all(_resolve(name) is lifecycle for name in LIFECYCLE_NODES)

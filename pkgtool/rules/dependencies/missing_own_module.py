@@ -12,6 +12,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import installed_modules, is_ament_python
 from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
+from pkgtool.model.submodules import under
 from pkgtool.rules.imports import installed_code, test_code
 from pkgtool.rules.registry import rule
 
@@ -33,12 +34,12 @@ def _in_tree(package: Package, module: str) -> bool:
     uninstalled for another reason, which other rules report), or may generate it: its
     name is in setup.py, CMakeLists.txt (an extension module CMake builds,
     ``pybind11_add_module(name ...)``) or a ``.gitignore`` (a module written at build
-    time)."""
+    time); or it lies in a git submodule that is not checked out (SYN005 says so)."""
     path = module.replace(".", "/")
     generated = [package.texts.get(f, "") for f in package.files
                  if f in ("setup.py", "CMakeLists.txt") or f.endswith(".gitignore")]
     stem = module.rpartition(".")[2]
-    return package.has_file(f"{path}.py") or any(
+    return package.has_file(f"{path}.py") or under(path, package.unfetched) or any(
         f.startswith(f"{path}/") for f in package.files) or any(
         re.search(rf"\b{re.escape(stem)}\b", text) for text in generated)
 

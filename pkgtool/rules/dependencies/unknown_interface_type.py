@@ -34,8 +34,8 @@ def unknown_interface_type(package: Package) -> Iterator[Hit]:
     XML, YAML) and YAML files outside `test/` (parameters, bridge configurations) and checks
     them like DEP008: against the package's own interface folders, the workspace's interface
     packages and (for a jazzy target) pkgtool's table of the ROS 2 Jazzy interface packages.
-    Unknown packages are not reported; the companion types of services and actions
-    (`std_srvs/srv/Trigger_Event`) count as DEP008 counts them.
+    Unknown packages are not reported, nor types in comments; the companion types of
+    services and actions (`std_srvs/srv/Trigger_Event`) count as DEP008 counts them.
 
     ## Why is this bad?
     Types in strings are only resolved when the launch runs: `ros2 topic pub`, a bridge or a
@@ -57,9 +57,26 @@ def unknown_interface_type(package: Package) -> Iterator[Hit]:
     for path in _files(package):
         text = package.texts[path]
         for match in _TYPE.finditer(text):
+            if _in_comment(path, text, match.start()):
+                continue  # documentation, or a line left out: nothing resolves it
             name, kind, leaf = match.groups()
             known = interfaces_for(package, name)
             problem = None if known is None else type_problem(
                 name, kind, leaf, known, package.context.distro)
             if problem:
                 yield Hit(Span.of_offset(path, text, match.start()), problem)
+
+
+_HASH_COMMENT = re.compile(r"(?:^|\s)#")
+"""Where a comment starts in a YAML or Python line (a ``#`` at the start or after a space)."""
+
+
+def _in_comment(path: str, text: str, offset: int) -> bool:
+    """True when ``offset`` of ``text`` (the file ``path``) is inside a comment: after a
+    ``#`` of its line outside quotes (YAML, Python), or inside ``<!-- -->`` (XML)."""
+    if path.endswith((".xml", ".launch")):
+        return text.rfind("<!--", 0, offset) > text.rfind("-->", 0, offset)
+    before = text[text.rfind("\n", 0, offset) + 1:offset]
+    found = _HASH_COMMENT.search(before)
+    return found is not None and before[:found.start()].count("'") % 2 == 0 and \
+        before[:found.start()].count('"') % 2 == 0

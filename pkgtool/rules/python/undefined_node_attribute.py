@@ -7,7 +7,8 @@ from collections.abc import Iterator
 from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
+from pkgtool.knowledge.rclpy_node import (LIFECYCLE_NODE_ATTRIBUTES, LIFECYCLE_NODES,
+                                          NODE_ATTRIBUTES)
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
@@ -100,12 +101,18 @@ def _package_facts(package: Package) -> tuple[_Stores, frozenset[str]]:
     return stores, base_names(package)
 
 
-def _node_classes(index: Index, bases: frozenset[str]) -> Iterator[ast.ClassDef]:
-    """Plain classes deriving from rclpy's Node alone that no class of the package extends."""
+def _node_classes(index: Index, bases: frozenset[str]
+                  ) -> Iterator[tuple[ast.ClassDef, str, frozenset[str]]]:
+    """Plain classes deriving from rclpy's Node (or LifecycleNode) alone that no class of
+    the package extends, each with the name of its base and the attributes that has."""
     for cls in index.classes:
-        if not cls.decorator_list and derives_from_node_alone(cls, index) and \
-                cls.name not in bases:
-            yield cls
+        if cls.decorator_list or cls.name in bases:
+            continue
+        if derives_from_node_alone(cls, index):
+            yield cls, "Node", NODE_ATTRIBUTES
+        elif len(cls.bases) == 1 and not cls.keywords and \
+                index.qualified(cls.bases[0]) in LIFECYCLE_NODES:
+            yield cls, "LifecycleNode", LIFECYCLE_NODE_ATTRIBUTES
 
 
 def _suggestion(attr: str, known: set[str]) -> str:
@@ -152,13 +159,15 @@ def _instance_reads(package: Package, path: str, tree: ast.Module, index: Index,
                     bases: frozenset[str], stored: _Stores, probed: frozenset[str]
                     ) -> Iterator[Hit]:
     """Attributes read on a local name that holds an instance of one of the module's node
-    classes (:func:`_instances`) that neither the class nor rclpy's Node has and nothing
-    stores."""
-    classes = {cls.name: cls for cls in _node_classes(index, bases)}
+    classes (:func:`_instances`) that neither the class nor rclpy's Node (or LifecycleNode)
+    has and nothing stores."""
+    kinds = {cls.name: (base, inherited) for cls, base, inherited in _node_classes(index, bases)}
+    classes = {cls.name: cls for cls, _, _ in _node_classes(index, bases)}
     if not classes:
         return
     for function, name, cls in _instances(package, tree, index, classes):
-        known = set(scope_bindings(cls)) | stored.of(cls) | NODE_ATTRIBUTES
+        base, inherited = kinds[cls.name]
+        known = set(scope_bindings(cls)) | stored.of(cls) | inherited
         reads: dict[str, list[Span]] = {}
         for node in attributes_taken(function, name):
             if isinstance(node.ctx, ast.Load) and not node.attr.startswith("__") and \
@@ -169,7 +178,7 @@ def _instance_reads(package: Package, path: str, tree: ast.Module, index: Index,
         for attr, spans in reads.items():
             yield Hit(spans[0], f"`{name}` is a `{cls.name}`, which has no attribute "
                       f"`{attr}`{_suggestion(attr, known)}: nothing assigns it and "
-                      "rclpy's Node has none, so reading it raises AttributeError",
+                      f"rclpy's {base} has none, so reading it raises AttributeError",
                       related=tuple(spans[1:]))
 
 
@@ -180,10 +189,11 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
     """A `Node` subclass reads an attribute of `self` that nothing ever defines.
 
     ## What it does
-    In installed modules, looks at the classes deriving from `rclpy.node.Node` alone (no
-    other base, no decorator, no metaclass, extended by no class of the package) and reports
-    `self.x` read in their plain methods when `x` is not a method or class attribute of the
-    class, not an attribute of rclpy's `Node` (any of Humble to Rolling), and nothing may
+    In installed modules, looks at the classes deriving from `rclpy.node.Node` or
+    `rclpy.lifecycle.Node` alone (no other base, no decorator, no metaclass, extended by no
+    class of the package) and reports `self.x` read in their plain methods when `x` is not a
+    method or class attribute of the class, not an attribute of rclpy's `Node` or
+    `LifecycleNode` (any of Humble to Rolling), and nothing may
     assign or delete it on an instance of the class: neither the class's own methods through
     `self`, nor any installed module of the package through anything but a method's `self`
     (`self.x = ...` in another class's method stores on that class's instances only, and
@@ -230,8 +240,8 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
         probed = probed_names(index)
         augmented = _augmented(tree)
         yield from _instance_reads(package, module.path, tree, index, bases, stored, probed)
-        for cls in _node_classes(index, bases):
-            known = set(scope_bindings(cls)) | stored.of(cls) | NODE_ATTRIBUTES
+        for cls, base, inherited in _node_classes(index, bases):
+            known = set(scope_bindings(cls)) | stored.of(cls) | inherited
             reads: dict[str, list[ast.Attribute]] = {}
             for method in cls.body:
                 receiver = method_receiver(method)
@@ -246,11 +256,11 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
                 if any(attr in names for names in stored.by_class.values()):
                     yield Hit(spans[0], f"`{cls.name}` never assigns `self.{attr}` (another "
                               "class of the package does, for its own instances) and rclpy's "
-                              "Node has none, so reading it raises AttributeError",
+                              f"{base} has none, so reading it raises AttributeError",
                               f"Assign `self.{attr}` in `{cls.name}.__init__`",
                               related=tuple(spans[1:]))
                     continue
                 hint = _suggestion(attr, known)
                 yield Hit(spans[0], f"`{cls.name}` has no attribute `{attr}`{hint}: nothing "
-                          f"assigns `self.{attr}` and rclpy's Node has none, so reading it "
+                          f"assigns `self.{attr}` and rclpy's {base} has none, so reading it "
                           "raises AttributeError", related=tuple(spans[1:]))

@@ -9,10 +9,9 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
-from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup_values import checked_setup
+from pkgtool.rules.setup_values import setup_tree
 from pkgtool.rules.syntax_trees import index_of
 
 SETUP_KEYWORDS = frozenset({
@@ -91,10 +90,8 @@ def misspelled_setup_keyword(package: Package) -> Iterator[Hit]:
     setup(name=package_name, packages=find_packages(exclude=['test']), ...)
     ```
     """
-    if checked_setup(package) is None or "setup.py" not in package.texts:
-        return
-    tree = parse_tree("setup.py", package.texts["setup.py"])
-    if not isinstance(tree, ast.Module):
+    tree = setup_tree(package)
+    if tree is None:
         return
     keywords = list(_setup_keywords(tree))
     given = {k.arg for k in keywords}
