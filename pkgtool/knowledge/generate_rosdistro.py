@@ -51,7 +51,7 @@ DIST_MODULES: dict[str, tuple[str, ...]] = {
     "python-magic": ("magic",), "python-slugify": ("slugify",), "wxpython": ("wx",),
     "matplotlib": ("matplotlib", "mpl_toolkits", "pylab"),
     "speechrecognition": ("speech_recognition",), "rpi-gpio": ("RPi",), "jetson-gpio": ("Jetson",),
-    "python-vlc": ("vlc",),
+    "python-vlc": ("vlc",), "jetson-stats": ("jtop",), "sparkfun-ublox-gps": ("ublox_gps",),
     "adafruit-blinka": ("adafruit_blinka", "board", "busio", "digitalio", "microcontroller"),
     "python-socketio": ("socketio",), "python-dotenv": ("dotenv",), "numpy-stl": ("stl",),
 }

@@ -187,6 +187,12 @@ parsers refuse, read by ``cv2.FileStorage`` (ORB-SLAM's camera settings), never 
 _LAUNCH_FUNCTION = re.compile(r"^def generate_launch_description\s*\(", re.M)
 
 
+def defines_launch_description(text: str) -> bool:
+    """True for Python defining ``generate_launch_description()`` at top level: a file
+    ``ros2 launch`` can run, whatever its name."""
+    return _LAUNCH_FUNCTION.search(text) is not None
+
+
 def is_test_material(relpath: str) -> bool:
     """A file in a ``test`` or ``tests`` folder (also one inside the Python package)."""
     return any(part in ("test", "tests") for part in relpath.split("/")[:-1])
@@ -251,7 +257,7 @@ def _launch_by_content(relpath: str, text_of: Callable[[str], str | None],
     if text is None:
         return False
     if relpath.endswith(".py"):
-        return relpath in shared and _LAUNCH_FUNCTION.search(text) is not None and \
+        return relpath in shared and defines_launch_description(text) and \
             not is_launch_test(relpath, text)
     if relpath.endswith(".xml"):
         return _LAUNCH_XML.match(text) is not None

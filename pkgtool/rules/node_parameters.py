@@ -20,6 +20,7 @@ from pkgtool.model.installed import installed_data
 from pkgtool.model.launch import NodeRef
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
+from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.records import record
 from pkgtool.rules.console_scripts import scripts_and_modules
@@ -377,7 +378,8 @@ def fully_seen_parameter_files(package: Package) -> dict[str, tuple[NodeRef, ...
 
     Empty when a launch file does not parse or gives a node parameters that are not read
     statically (a launch argument may name any file); a file whose name the package's
-    Python code mentions (it may read it itself) is left out.
+    Python code mentions (it may read it itself), or that a launch file hands to a launch
+    file it includes, is left out.
     """
     launches = package.launch_files
     if any(f.problem for f in launches) or any(n.other_parameters for f in launches
@@ -385,8 +387,40 @@ def fully_seen_parameter_files(package: Package) -> dict[str, tuple[NodeRef, ...
         return {}
     code = [package.texts.get(p, "") for p in package.files
             if p.endswith(".py") and p not in {f.path for f in launches}]
+    code.append(_handed_to_includes(package))
     return {path: nodes for path, nodes in parameter_file_nodes(package).items()
             if not any(posixpath.basename(path) in text for text in code)}
+
+
+_XML_INCLUDE = re.compile(r"<include\b.*?(?:/>|</include>)", re.S)
+
+
+def _handed_to_includes(package: Package) -> str:
+    """The text of what the launch files hand to the launch files they include: a Python
+    ``IncludeLaunchDescription``'s ``launch_arguments`` (with the values of the names it
+    reads, as the module assigns them), an XML ``<include>`` element. A parameter file named
+    there may reach nodes the included file starts, whose names pkgtool does not see."""
+    found: list[str] = []
+    for launch in package.launch_files:
+        text = package.texts.get(launch.path, "")
+        if launch.kind == "xml":
+            found += _XML_INCLUDE.findall(text)
+            continue
+        tree = parse_tree(launch.path, text) if launch.kind == "python" and \
+            "IncludeLaunchDescription" in text else None
+        if not isinstance(tree, ast.Module):
+            continue
+        values = {target.id: node.value for node in nodes_of_class(tree, ast.Assign)
+                  for target in node.targets if isinstance(target, ast.Name)}
+        for call in nodes_of_class(tree, ast.Call):
+            handed = [k.value for k in call.keywords if k.arg == "launch_arguments"] + \
+                call.args[1:2] if ast.unparse(call.func).endswith("IncludeLaunchDescription") \
+                else []
+            for part in handed:
+                found.append(ast.unparse(part))
+                found += [ast.unparse(values[n.id]) for n in ast.walk(part)
+                          if isinstance(n, ast.Name) and n.id in values]
+    return "\n".join(found)
 
 
 def yaml_type(node: object) -> str | None:

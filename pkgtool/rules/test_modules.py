@@ -97,12 +97,27 @@ def test_files(package: Package) -> frozenset[str]:
     (``test_*.py``, ``*_test.py``) are, except such a module that colcon installs as part of a
     Python package (outside any ``test``/``tests`` folder): code the package ships (a base
     class for other packages' tests, imported at run time), unless pytest collects it and it
-    defines a test (a test shipped by mistake).
+    defines a test (a test shipped by mistake); nor is such a module outside test folders of
+    a CMake package that its CMake files never name (a demo script ctest never runs).
     """
     installed = installed_files(package)
     config = pytest_config(package) or PytestConfig()
     return frozenset(m.path for m in package.modules if m.is_test and not (
-        m.path in installed and _shipped_code(package, m, config)))
+        m.path in installed and _shipped_code(package, m, config)) and
+        not _cmake_script(package, m.path))
+
+
+def _cmake_script(package: Package, path: str) -> bool:
+    """True for a module named like a test, outside test folders, of a package CMake builds
+    whose CMake files never name it: ``colcon test`` runs ctest there, which runs only the
+    tests CMakeLists.txt registers (``ament_add_pytest_test``), never pytest's own search."""
+    build_type = package.manifest.build_type if package.manifest else None
+    if build_type is None or build_type.value not in ("ament_cmake", "cmake") or \
+            is_test_material(path) or posixpath.basename(path) == "conftest.py":
+        return False
+    cmake = "\n".join(text for name, text in package.texts.items()
+                      if name.endswith(("CMakeLists.txt", ".cmake")))
+    return posixpath.basename(path) not in cmake
 
 
 def _shipped_code(package: Package, module: PythonModule, config: PytestConfig) -> bool:

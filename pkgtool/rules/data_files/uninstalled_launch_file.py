@@ -6,9 +6,9 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import installed_data
-from pkgtool.model.launch import (is_launch_file, is_launch_test, nested_packages, other_yaml,
-                                  python_folders)
-from pkgtool.model.package import Package
+from pkgtool.model.launch import (below, is_launch_file, is_launch_test, is_template,
+                                  nested_packages, other_yaml, python_folders)
+from pkgtool.model.package import Package, defines_launch_description
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
 from pkgtool.rules.setup_values import checked_setup
@@ -24,12 +24,14 @@ def uninstalled_launch_file(package: Package) -> Iterator[Hit]:
     """A launch file of the package is not installed under `share/<package>`.
 
     ## What it does
-    Reports launch files (`*.launch.py`, `*_launch.py`, XML and YAML variants) that data_files
-    does not install anywhere under `share/<name>`; installing them flat into `share/<name>`
-    or into `share/<name>/launch` are both fine. Launch files under `test/` and `doc/` are
-    ignored, and so are files that only look like launch files: outside a `launch` folder, a
-    module inside the Python package, a `test_*` file or a file under `examples/` or `samples/`,
-    files under a sub-folder with a package.xml of its own (that package's), and a
+    Reports launch files (`*.launch.py`, `*_launch.py`, XML and YAML variants, and any Python
+    file of a `launch` folder defining `generate_launch_description`: `launch/launch.py`) that
+    data_files does not install anywhere under `share/<name>`; installing them flat into
+    `share/<name>` or into `share/<name>/launch` are both fine. Launch files under `test/`
+    and `doc/` are ignored, and so are files that only look like launch files: outside a
+    `launch` folder, a module inside the Python package, a `test_*` file or a file under
+    `examples/` or `samples/`, files under a sub-folder with a package.xml of its own (that
+    package's), and a
     `launch_testing` test kept in a `launch` folder (it defines `generate_test_description`
     and no `generate_launch_description`: `ros2 launch` cannot run it).
 
@@ -59,8 +61,23 @@ def uninstalled_launch_file(package: Package) -> Iterator[Hit]:
     for path in sorted({*(f for f in package.files if is_launch_file(f, folders, nested) and
                           not is_launch_test(f, package.texts.get(f)) and
                           not other_yaml(f, package.texts.get(f))),
-                        *(launch.path for launch in package.launch_files)}):
+                        *(launch.path for launch in package.launch_files),
+                        *_launch_by_content(package, folders, nested)}):
         if path.split("/")[0] not in NOT_INSTALLED_FOLDERS and path not in shared:
             name = path.rsplit("/", 1)[-1]
             yield Hit(Span(path, 1, 1), f"`{path}` is not installed under `{share[:-1]}`: "
                                         f"`ros2 launch {package.name} {name}` will not find it")
+
+
+def _launch_by_content(package: Package, folders: frozenset[str], nested: frozenset[str]
+                       ) -> Iterator[str]:
+    """Python files of a ``launch`` folder (not a Python package's, a template's or a nested
+    package's) that define ``generate_launch_description`` whatever their name
+    (``launch/launch.py``, ``launch/debugging.py``)."""
+    for path in package.files:
+        folder = path.rpartition("/")[0]
+        if path.endswith(".py") and "launch" in folder.split("/") and folder not in folders \
+                and not below(path, nested) and not is_template(path) and \
+                defines_launch_description(package.texts.get(path, "")) and \
+                not is_launch_test(path, package.texts.get(path)):
+            yield path

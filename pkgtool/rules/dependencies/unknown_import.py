@@ -11,7 +11,8 @@ from pkgtool.knowledge.ros_names import looks_like_ros
 from pkgtool.knowledge.rosdep import ROS1_PACKAGES
 from pkgtool.knowledge.rosdistro import is_released_package, modules_of_key
 from pkgtool.model.modules import PythonModule
-from pkgtool.rules.imports import ANY, also_imported, declared, grouped, needs
+from pkgtool.rules.imports import (ANY, also_imported, declared, grouped, installed_code,
+                                   needs)
 from pkgtool.rules.registry import rule
 from pkgtool.rules.test_modules import test_files
 
@@ -22,7 +23,8 @@ def unknown_import(package: Package) -> Iterator[Hit]:
     """A module is imported that pkgtool cannot map to a rosdep key.
 
     ## What it does
-    Reports unguarded absolute imports (in any module or Python launch file) of names that
+    Reports unguarded absolute imports (in installed modules, tests and Python launch files;
+    not in files colcon never installs, such as firmware or offline scripts) of names that
     are not standard library (of the target distribution's Python), not the package's own
     (for test code, also a helper module in a folder pytest puts on `sys.path`; for any
     file, a module of a folder of the package that the file, or a `conftest.py` above a
@@ -123,8 +125,8 @@ def _words(name: str) -> frozenset[str]:
 
 
 def _by_kind(package: Package) -> tuple[list[PythonModule], ...]:
-    """Code, tests and launch files: one finding per unknown name and kind of file."""
+    """Installed code, tests and launch files: one finding per unknown name and kind of
+    file (code colcon never installs, firmware or an offline script, needs no key)."""
     launch = [f.python for f in package.launch_files if f.python]
     tests = test_files(package)
-    return ([m for m in package.modules if m.path not in tests],
-            [m for m in package.modules if m.path in tests], launch)
+    return (installed_code(package), [m for m in package.modules if m.path in tests], launch)

@@ -6,8 +6,8 @@ import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.interfaces import (KINDS, WORDS, Mismatch, generated_module, kind_in,
-                                          meant_kind, mismatch)
+from pkgtool.knowledge.interfaces import (KINDS, WORDS, Interfaces, Mismatch, generated_module,
+                                          kind_in, meant_kind, mismatch)
 from pkgtool.knowledge.ros_names import ROS_SUFFIXES
 from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
@@ -46,7 +46,9 @@ def unknown_interface_import(package: Package) -> Iterator[Hit]:
 
     The same goes for a name read on the module (`std_msgs.msg.Strng()` after `import
     std_msgs.msg`). Also reports a misspelled module of an interface package (`std_msgs.msgs`,
-    `geometry_msgs.message`, `example_interfaces.srvs`, `from std_msgs import Msg`), an
+    `geometry_msgs.message`, `example_interfaces.srvs`, `from std_msgs import Msg`; a word
+    too short to tell, `from my_interfaces.src import AddTwo`, when every name imported is an
+    interface of one kind of the package), an
     interface package written in other letter cases (`from Robot_interfaces.srv import
     Home` for the workspace's `robot_interfaces`), and an interface imported from the package
     itself (`from std_msgs import String`): the
@@ -127,10 +129,11 @@ def _misspelled_module(package: Package, imported: Import) -> Iterator[Hit]:
     name, _, rest = imported.module.partition(".")
     words = [rest.split(".")[0]] if rest else list(imported.names)
     for word in words:
-        kind = meant_kind(word)
+        known = interfaces_for(package, name) or {}
+        kind = meant_kind(word) or (_kind_of_all(known, imported.names) if rest and
+                                    word not in KINDS else None)
         if kind is None or not _interface_package(package, name, word):
             continue
-        known = interfaces_for(package, name) or {}
         kind = next(filter(None, (kind_in(known, n) for n in imported.names)), kind)
         right = f"{name}.{kind}"
         written = f"{name}.{word}"
@@ -178,6 +181,13 @@ def _miscased_package(package: Package, imported: Import, name: str, kind: str
                   f"`{right}`, and Python imports are case-sensitive",
                   f"Write `from {right}.{kind} import {names}`" if names else None,
                   cause=dependency_cause(name))
+
+
+def _kind_of_all(known: Interfaces, names: tuple[str, ...] | list[str]) -> str | None:
+    """The one kind every name of ``names`` is of among ``known`` (``src`` written for
+    ``srv`` is too short to tell by itself, but ``AddTwoInts`` is a service), or None."""
+    kinds = {kind_in(known, name) for name in names}
+    return kinds.pop() if len(kinds) == 1 and None not in kinds else None
 
 
 def _interface_package(package: Package, name: str, word: str) -> bool:
