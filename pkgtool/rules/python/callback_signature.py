@@ -8,7 +8,9 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._callbacks import callback_arguments
+from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.rules.python._callbacks import Argument, callback_arguments
+from pkgtool.rules.syntax_trees import installed_trees
 from pkgtool.rules.python._message_instances import callback_function
 from pkgtool.rules.registry import rule
 
@@ -54,7 +56,10 @@ def callback_signature_mismatch(package: Package) -> Iterator[Hit]:
     `create_subscription` (the message, or the message and its `MessageInfo`),
     `create_service` (the request and the response), `ActionServer`'s `execute_callback`,
     `goal_callback`, `cancel_callback` and `handle_accepted_callback` (one argument) and
-    `add_done_callback` (the future), when the callback is a lambda, a plain method of the
+    `add_done_callback` (the future), and the `registerCallback` of a message_filters
+    `TimeSynchronizer` or `ApproximateTimeSynchronizer` made from a list of `n` filters (`n`
+    messages, then the extra arguments given to `registerCallback`), when the callback is a
+    lambda, a plain method of the
     registering class (`self.on_message`) or a plain function bound once in the module:
     reports one whose required parameters are more than rclpy passes, whose positional
     parameters are fewer, or that has a keyword-only parameter without default. Functions
@@ -84,8 +89,9 @@ def callback_signature_mismatch(package: Package) -> Iterator[Hit]:
         self.get_logger().info('got one')
     ```
     """
-    for path, value, api, parameter, index, tree in callback_arguments(package):
-        passed = _PASSED.get((api, parameter))
+    for path, value, api, parameter, index, tree in (*callback_arguments(package),
+                                                     *_synchronized(package)):
+        passed = _PASSED.get((api, parameter)) or _synchronizer_passes(api)
         if isinstance(value, ast.Lambda):
             found: tuple[ast.Lambda | ast.FunctionDef | ast.AsyncFunctionDef, int] | None = (
                 value, 0)
@@ -97,5 +103,44 @@ def callback_signature_mismatch(package: Package) -> Iterator[Hit]:
         if not any(_accepts(found[0].args, found[1], count) for count in counts):
             name = "the lambda" if isinstance(value, ast.Lambda) else f"`{ast.unparse(value)}`"
             yield Hit(Span(path, value.lineno, value.col_offset + 1),
-                      f"`{api[:-2]}` calls {name} with {what}, which its parameters cannot "
-                      "take: the call raises TypeError")
+                      f"`{api.split()[0][:-2]}` calls {name} with {what}, which its "
+                      "parameters cannot take: the call raises TypeError")
+
+
+_SYNCHRONIZERS = frozenset({"message_filters.TimeSynchronizer",
+                            "message_filters.ApproximateTimeSynchronizer"})
+_SYNCHRONIZED = "registerCallback()"
+
+
+def _synchronized(package: Package) -> Iterator[Argument]:
+    """The callbacks given to ``registerCallback`` of a message_filters synchronizer made from
+    a list of ``n`` filters (bound once in the module, to a name or ``self.x``), the API
+    written ``registerCallback() <n>`` (with the extra arguments it passes on added)."""
+    for module, tree, index in installed_trees(package):
+        made: dict[str, list[int | None]] = {}
+        for node in nodes_of_class(tree, ast.Assign):
+            value = node.value  # type: ignore[attr-defined]
+            for target in node.targets:  # type: ignore[attr-defined]
+                inputs = value.args[0] if isinstance(value, ast.Call) and value.args and \
+                    index.qualified(value.func) in _SYNCHRONIZERS else None
+                made.setdefault(ast.unparse(target), []).append(
+                    len(inputs.elts) if isinstance(inputs, (ast.List, ast.Tuple)) and not any(
+                        isinstance(e, ast.Starred) for e in inputs.elts) else None)
+        for call in index.calls:
+            func = call.func
+            if not isinstance(func, ast.Attribute) or func.attr != "registerCallback" or \
+                    not call.args or any(isinstance(a, ast.Starred) for a in call.args):
+                continue
+            counts = made.get(ast.unparse(func.value), [])
+            if len(counts) == 1 and counts[0] is not None:
+                passed = counts[0] + len(call.args) - 1
+                yield module.path, call.args[0], f"{_SYNCHRONIZED} {passed}", "callback", \
+                    index, tree
+
+
+def _synchronizer_passes(api: str) -> tuple[tuple[int, ...], str] | None:
+    """What a synchronizer's ``registerCallback`` passes (:func:`_synchronized`'s API)."""
+    if not api.startswith(_SYNCHRONIZED):
+        return None
+    count = int(api.rsplit(" ", 1)[1])
+    return (count,), f"{count} argument{'s' if count != 1 else ''} (one message per input)"

@@ -7,7 +7,7 @@ import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.rosdistro import digits_differ, typo_of
+from pkgtool.knowledge.rosdistro import digits_differ, typo_distance, typo_of
 from pkgtool.model.package import Package
 from pkgtool.rules.endpoints import Endpoint, endpoints, service_endpoints
 from pkgtool.rules.registry import rule
@@ -26,9 +26,10 @@ def misspelled_topic(package: Package) -> Iterator[Hit]:
     parameter or launch file changes; topics a launch file quotes, which it may remap, are
     left out). Reports a subscription whose topic no publisher of the package uses when
     exactly one published topic of the same message type is a typo away from it (one edit,
-    or a swap of neighbours), unless the two differ in a digit (`robot1`, `robot2`) or in
+    or a swap of neighbours), unless the two differ in a digit (`robot1`, `robot2`), in
     one word of a pair names of paired topics use (`can_tx` and `can_rx`, `left`/`right`,
-    `global`/`local`, `in`/`out`...): another package may publish it. The
+    `global`/`local`, `in`/`out`...) or in one short word wholly replaced (`dt/status`,
+    `ui/status`: two namespaces): another package may publish it. The
     same for a client whose service name no service of the package has, a typo away from the
     one name served with the same service type, and for rclpy's action clients and servers.
 
@@ -79,7 +80,7 @@ def _near_misses(found: tuple[Endpoint, ...], offering: str, using: str
         same_type = [t for t, types in offered.items() if types == {endpoint.type}]
         meant = typo_of(name, same_type)
         if meant is not None and not digits_differ(name, meant) and \
-                not _opposite_words(name, meant):
+                not _opposite_words(name, meant) and not _word_replaced(name, meant):
             yield endpoint, meant
 
 
@@ -89,6 +90,15 @@ _OPPOSITES = frozenset(frozenset(pair.split("/")) for pair in """tx/rx in/out in
     read/write get/set pub/sub open/close enable/disable x/y""".split())
 """Words names of paired topics differ by (a node subscribing ``can_tx`` and publishing
 ``can_rx``): never a typo of each other."""
+
+
+def _word_replaced(name: str, other: str) -> bool:
+    """True when the two names differ in one word of theirs that is wholly another word
+    (``dt/recording_status`` and ``ui/recording_status``: two namespaces, not a typo)."""
+    words, others = re.split(r"[/_]", name), re.split(r"[/_]", other)
+    changed = [(a, b) for a, b in zip(words, others) if a != b]
+    return len(words) == len(others) and len(changed) == 1 and \
+        typo_distance(*changed[0], budget=9) >= min(map(len, changed[0]))
 
 
 def _opposite_words(name: str, other: str) -> bool:
