@@ -33,6 +33,8 @@ def comparison_as_statement(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports a statement that is only an equality comparison (`msg.data == 'hello'`,
     `self.count == 0`, `add(1, 2) == 3` in a test), in every Python file of the package.
+    When the comparison holds a call (`cv2.waitKey(50) & 0xFF == ord('q')`), the call still
+    runs: the message says so and proposes using the result, not removing the line.
 
     ## Why is this bad?
     Python evaluates the comparison and drops the result: the assignment meant (`=`) never
@@ -51,12 +53,17 @@ def comparison_as_statement(package: Package) -> Iterator[Hit]:
     msg.data = 'hello'
     ```
     """
-    for path, _, tree in python_files(package, ("==",)):
+    for path, text, tree in python_files(package, ("==",)):
         for compare in comparison_statements(tree):
-            left, right = ast.unparse(compare.left), ast.unparse(compare.comparators[0])
+            left, right = (ast.get_source_segment(text, side) or ast.unparse(side)
+                           for side in (compare.left, compare.comparators[0]))
             meant = f"`assert {left} == {right}`" if is_test_material(path) else \
                 f"`{left} = {right}`" if isinstance(compare.left, _TARGETS) else None
+            called = any(isinstance(node, ast.Call) for node in ast.walk(compare))
+            effect = "its calls run, but the comparison is lost" if called else \
+                "the statement does nothing"
             yield Hit(Span(path, compare.lineno, compare.col_offset + 1),
-                      f"`{left} == {right}` compares and drops the result: the statement does "
-                      f"nothing" + (f" (did you mean {meant}?)" if meant else ""),
-                      f"Write {meant}" if meant else "Use the result, or remove the line")
+                      f"`{left} == {right}` compares and drops the result: {effect}" +
+                      (f" (did you mean {meant}?)" if meant else ""),
+                      f"Write {meant}" if meant else "Use the result (`if ...:`)" if called
+                      else "Use the result, or remove the line")
