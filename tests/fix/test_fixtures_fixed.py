@@ -65,7 +65,7 @@ has is built elsewhere): no fix
 guesses, the user chooses; the other findings
 of the case are fixed."""
 MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages"),
-          ("MAN018", "ament_python_with_a_leftover_cmakelists"),
+          ("MAN018", "ament_python_with_a_leftover_cmakelists"), ("PYC050", "call_in_comparison"),
           ("PYC033", "extra_positional"), ("PYC033", "parameter_default_by_position"),
           ("LCH010", "data_file_as_program"), ("DEP001", "interfaces_of_an_unknown_package"),
           ("PYC029", "near_keywords"),
@@ -117,7 +117,8 @@ call; PYC025 does not guess the list a number or a string given to a sequence st
 more than a typo away: other names, maybe meant, and so is `timeout=` for `timeout_sec=`
 (PYC029); a block `movr` beside a block `mover` would merge into it (DAT009). `gazebo_ros`, whose
 module a Gazebo Classic launch file imports, has no release after Humble: the fixer declares
-only keys that resolve for the target (LCH003)."""
+only keys that resolve for the target (LCH003). A dropped comparison holding a call (PYC050)
+needs the `if` its author meant."""
 
 REVEALED = {("PYC013", "called_callbacks"): {"PYC026"},
             ("LCH005", "parameters_not_a_list"): {"DAT012"},
