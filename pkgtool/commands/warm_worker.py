@@ -108,10 +108,15 @@ def cores() -> int:
 
 
 def threads_running() -> bool:
-    """True when this process runs other threads (forking it then is unsafe). A process that
-    never imported ``threading`` started none (importing it costs a small run ~1 ms)."""
-    threading = sys.modules.get("threading")
-    return threading is not None and threading.active_count() > 1
+    """True when this process runs other threads (forking it then is unsafe): Python's, or
+    native ones a library started (a DDS middleware's, after rclpy ran in the process), as
+    Linux lists them in ``/proc/self/task``. Elsewhere, a process that never imported
+    ``threading`` started no Python thread (importing it costs a small run ~1 ms)."""
+    try:
+        return len(os.listdir("/proc/self/task")) > 1
+    except OSError:
+        threading = sys.modules.get("threading")
+        return threading is not None and threading.active_count() > 1
 
 
 def _serve(warm_up: Callable[[], Iterable[Callable[[], None]]], receive: int, send: int

@@ -6,14 +6,14 @@ import ast
 import re
 from collections.abc import Callable, Iterator
 
-from pkgtool.findings import Hit, Severity
+from pkgtool.findings import Hit, Severity, shortened
 from pkgtool.model.ast_nodes import nodes_of_class, walk_once
 from pkgtool.model.installed import installed_data, is_ament_python
 from pkgtool.model.package import Package, is_test_material
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
 from pkgtool.rules.data_files.common import ASKS_EXISTENCE, checks_files
-from pkgtool.rules.syntax_trees import index_of, installed_trees, python_files
+from pkgtool.rules.syntax_trees import Index, index_of, installed_trees, python_files
 
 HOME_PATH = re.compile(r"(?<![\w.~$}/-])(?:/home/(?!\$|\{)[\w.-]+|/Users/[\w.-]+)/[\w.-]")
 """An absolute path inside a named user's home folder (not ``/home/$USER/``)."""
@@ -34,12 +34,15 @@ def home_folder_path(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports absolute paths into a named user's home folder (`/home/alice/...`,
     `/Users/alice/...`): string literals of installed modules and Python launch files (not
-    docstrings, nor messages given to `print`, a logger or `argparse`; not in a file that
+    docstrings, nor messages given to `print`, a logger, `argparse` or a launch argument's
+    `description`; not in a file that
     asks whether paths exist, `os.path.exists()` and the like, as code that falls back when a
     machine lacks the file does), and values in XML and YAML launch files and in the YAML
     and XML files the package installs (not comments; in a package whose installed files
-    are not known, those outside `doc`, `docs` and `example` folders). Tests and test data
-    are left alone.
+    are not known, those outside `doc`, `docs` and `example` folders). In Python, also a
+    path built from the home folder into a colcon workspace's `src` or `install` folder
+    (`'~/ros2_ws/src/...'`, `os.path.join(os.getenv('HOME'), 'ws', 'src', ...)`,
+    `f"{os.environ['HOME']}/ros2_ws/install/..."`). Tests and test data are left alone.
 
     ## Why is this bad?
     The path exists on the author's machine only: on a teammate's, a grader's, the robot's
@@ -59,9 +62,10 @@ def home_folder_path(package: Package) -> Iterator[Hit]:
     """
     checked = {module.path for module, _, _ in installed_trees(package)} | \
         {f.path for f in package.launch_files if f.kind == "python"}
-    for path, _, tree in python_files(package, _HINTS):
+    for path, _, tree in python_files(package, (*_HINTS, *_HOME_HINTS)):
         if path in checked and not checks_files(index_of(tree), ASKS_EXISTENCE):
             yield from _python_paths(path, tree)
+            yield from _workspace_paths(path, tree, index_of(tree))
     shipped = _shipped(package)
     for path, text in sorted(package.texts.items()):
         if path.endswith(_DATA_SUFFIXES) and path != "package.xml" and shipped(path) and \
@@ -96,6 +100,65 @@ def _python_paths(path: str, tree: ast.Module) -> Iterator[Hit]:
         yield _hit(Span(path, node.lineno, node.col_offset + 1), found.group(0), value)
 
 
+_HOME_HINTS = ("HOME", "~", "home()")
+_HOME_CALLS = frozenset({"os.getenv", "os.environ.get", "os.path.expanduser", "pathlib.Path.home",
+                         "os.path.expandvars"})
+_WORKSPACE = re.compile(r"^~?/?(?:[\w.-]+/)*?[\w.-]+/(?:src|install)(?:/|$)")
+"""A path from the home folder into a colcon workspace's ``src`` or ``install`` folder."""
+
+
+def _workspace_paths(path: str, tree: ast.Module, index: Index) -> Iterator[Hit]:
+    """Paths built from the home folder (``~/ros2_ws/src/...``, ``os.path.join(
+    os.getenv('HOME'), 'ws', 'src', ...)``, an f-string starting with ``$HOME``) that go into
+    a workspace's ``src`` or ``install`` folder: one user's checkout."""
+    parents = walk_once(tree).parents
+    for node in nodes_of_class(tree, ast.Constant, ast.Call, ast.JoinedStr):
+        rest = _after_home(node, index)
+        if rest is not None and _WORKSPACE.match(rest) and \
+                not _docstring(node, parents) and not _message(node, parents):
+            shown = shortened(ast.unparse(node))
+            yield Hit(Span(path, node.lineno, node.col_offset + 1),
+                      f"`{shown}` is a file of the colcon workspace in one user's home folder "
+                      f"(`~/{rest.lstrip('~/')}`): on any other machine, or with the "
+                      "workspace elsewhere, the file is not there")
+
+
+def _after_home(node: ast.AST, index: Index) -> str | None:
+    """What ``node`` adds to the home folder: the text of ``'~/x/y'``, of the parts of
+    ``os.path.join(<home>, 'x', 'y')`` or of an f-string ``f'{<home>}/x/y'``; None for
+    anything else."""
+    if isinstance(node, ast.Constant):
+        value = node.value
+        return value if isinstance(value, str) and value.startswith("~/") else None
+    if isinstance(node, ast.Call) and index.qualified(node.func) == "os.path.join" and \
+            node.args and _is_home(node.args[0], index) and \
+            all(isinstance(a, ast.Constant) and isinstance(a.value, str) for a in node.args[1:]):
+        return "/".join(a.value.strip("/") for a in node.args[1:])  # type: ignore[attr-defined]
+    if isinstance(node, ast.JoinedStr) and len(node.values) >= 2 and \
+            isinstance(node.values[0], ast.FormattedValue) and \
+            _is_home(node.values[0].value, index) and \
+            isinstance(node.values[1], ast.Constant) and isinstance(node.values[1].value, str):
+        return node.values[1].value.lstrip("/")
+    return None
+
+
+def _is_home(node: ast.expr, index: Index) -> bool:
+    """True for ``os.getenv('HOME')``, ``os.environ['HOME']``, ``os.environ.get('HOME')``,
+    ``os.path.expanduser('~')`` and ``Path.home()`` (also inside ``str()``)."""
+    if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and \
+            node.func.id == "str" and len(node.args) == 1:
+        node = node.args[0]
+    if isinstance(node, ast.Subscript):
+        key = node.slice
+        return index.qualified(node.value) == "os.environ" and \
+            isinstance(key, ast.Constant) and key.value == "HOME"
+    if not isinstance(node, ast.Call) or index.qualified(node.func) not in _HOME_CALLS:
+        return False
+    first = node.args[0] if node.args else None
+    return first is None or isinstance(first, ast.Constant) and first.value in ("HOME", "~",
+                                                                                "$HOME")
+
+
 def _text_paths(path: str, text: str) -> Iterator[Hit]:
     for number, line in enumerate(text.splitlines(), 1):
         stripped = line.strip()
@@ -124,7 +187,7 @@ def _message(node: ast.AST, parents: dict[int, ast.AST]) -> bool:
     if isinstance(parent, ast.JoinedStr):
         node, parent = parent, parents.get(id(parent))
     if isinstance(parent, ast.keyword):
-        if parent.arg == "help":
+        if parent.arg in ("help", "description"):  # argparse's, a launch argument's
             return True
         node, parent = parent, parents.get(id(parent))
     if not isinstance(parent, ast.Call) or node is parent.func:
