@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -69,14 +70,20 @@ def uninstalled_launch_file(package: Package) -> Iterator[Hit]:
                                         f"`ros2 launch {package.name} {name}` will not find it")
 
 
+_KEPT_ASIDE = re.compile(r"(?i)(?:^|[_.\- ])(?:old|orig|original|copy|backup|bak|unused|"
+                         r"deprecated)(?:[_.\- ]|\d|$)")
+"""A copy kept aside by its name (``flow.launch_original.py``, ``ctrl_launch-Copy1.py``)."""
+
+
 def _launch_by_content(package: Package, folders: frozenset[str], nested: frozenset[str]
                        ) -> Iterator[str]:
     """Python files of a ``launch`` folder (not a Python package's, a template's or a nested
     package's) that define ``generate_launch_description`` whatever their name
-    (``launch/launch.py``, ``launch/debugging.py``)."""
+    (``launch/launch.py``, ``launch/debugging.py``), unless named as a copy kept aside."""
     for path in package.files:
-        folder = path.rpartition("/")[0]
+        folder, _, name = path.rpartition("/")
         if path.endswith(".py") and "launch" in folder.split("/") and folder not in folders \
+                and not _KEPT_ASIDE.search(name[:-3]) \
                 and not below(path, nested) and not is_template(path) and \
                 defines_launch_description(package.texts.get(path, "")) and \
                 not is_launch_test(path, package.texts.get(path)):

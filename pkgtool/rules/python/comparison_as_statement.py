@@ -55,11 +55,12 @@ def comparison_as_statement(package: Package) -> Iterator[Hit]:
     """
     for path, text, tree in python_files(package, ("==",)):
         for compare in comparison_statements(tree):
-            left, right = (ast.get_source_segment(text, side) or ast.unparse(side)
-                           for side in (compare.left, compare.comparators[0]))
+            left, right = (_written(text, side) for side in (compare.left,
+                                                             compare.comparators[0]))
             meant = f"`assert {left} == {right}`" if is_test_material(path) else \
                 f"`{left} = {right}`" if isinstance(compare.left, _TARGETS) else None
-            called = any(isinstance(node, ast.Call) for node in ast.walk(compare))
+            called = meant is None and any(isinstance(node, ast.Call)
+                                           for node in ast.walk(compare))
             effect = "its calls run, but the comparison is lost" if called else \
                 "the statement does nothing"
             yield Hit(Span(path, compare.lineno, compare.col_offset + 1),
@@ -67,3 +68,9 @@ def comparison_as_statement(package: Package) -> Iterator[Hit]:
                       (f" (did you mean {meant}?)" if meant else ""),
                       f"Write {meant}" if meant else "Use the result (`if ...:`)" if called
                       else "Use the result, or remove the line")
+
+
+def _written(text: str, node: ast.expr) -> str:
+    """``node`` as the source writes it (``0xFF``), or unparsed when that spans lines."""
+    segment = ast.get_source_segment(text, node)
+    return segment if segment and "\n" not in segment else ast.unparse(node)
