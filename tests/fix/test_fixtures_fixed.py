@@ -25,6 +25,7 @@ PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprec
           ("DEP008", "interfaces_in_subfolders"), ("DEP008", "misspelled_and_wrong_kind"),
           ("DEP008", "misspelled_modules"), ("DEP008", "workspace_interfaces"),
           ("MAN017", "ros2_pkg_create_defaults"), ("IFC003", "types"),
+          ("DEP007", "folder_without_init"),
           ("PYC001", "missing_standard_module"), ("DEP007", "own_package_by_bare_name"),
           ("PYC025", "builtin_results"), ("PYC031", "parameter_texts"),
           *(("PYC019", case) for case in (

@@ -89,7 +89,7 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
             inside = enclosing_package_import(package, parent, imported)
             sibling = None if inside else next(
                 (f for f in (f"{folder}/{top}.py", f"{folder}/{top}/__init__.py")
-                 if package.has_file(f)), None)
+                 if package.has_file(f)), None) or _namespace_folder(package, folder, top)
             if not inside and (sibling is None or top == own_name
                                or _third_party_meant(package, folder, imported, skip)
                                or _imports_itself(modules.get(f"{folder}/{top}.py"), top)):
@@ -104,9 +104,24 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
                                          "in, not a top-level module: the import fails once "
                                          "installed", f"Import `{inside[1]}` instead")
                 continue
+            if sibling.endswith("/"):
+                yield Hit(imported.span, f"`{top}` is a folder next to `{module.path}` (with "
+                                         "no `__init__.py`), not a top-level module: the "
+                                         "import fails once installed",
+                          f"Import `{parent}.{top}`, and add `{sibling}__init__.py` so that "
+                          "setup.py installs the folder")
+                continue
             yield Hit(imported.span, f"`{top}` is a module next to `{module.path}`, not a "
                                      f"top-level module: the import fails once installed",
                       f"Import `{parent}.{top}` (or `.{top}`) instead")
+
+
+def _namespace_folder(package: Package, folder: str, top: str) -> str | None:
+    """``<folder>/<top>/`` when that folder holds Python files but no ``__init__.py`` (a
+    folder ``find_packages()`` and ``packages=[...]`` leave out), else None."""
+    prefix = f"{folder}/{top}/"
+    return prefix if any(f.startswith(prefix) and f.endswith(".py") for f in package.files) \
+        else None
 
 
 def _beside_the_scripts(package: Package) -> set[str]:
