@@ -133,7 +133,8 @@ def installed_modules(package: Package) -> dict[str, str] | None:
 @per_package
 def installed_files(package: Package) -> frozenset[str]:
     """Python files colcon installs as modules, tests included: those setup.py installs when
-    that is known, else files inside Python package folders other than data folders (CMake
+    that is known (with the scripts data_files copies into ``lib/<package>``, which ``ros2
+    run`` starts), else files inside Python package folders other than data folders (CMake
     installs ``launch/``, ``config/``, ... to ``share/``, whatever ``__init__.py`` they hold),
     and of a CMake package only those its CMakeLists.txt installs when that is known
     (:func:`cmake_installed`). A setup.py and the files of a :func:`separate_projects`
@@ -141,7 +142,10 @@ def installed_files(package: Package) -> frozenset[str]:
     it)."""
     installed = installed_modules(package) if is_ament_python(package) else None
     if installed is not None:
-        files = frozenset(installed.values())
+        scripts = f"lib/{package.name}/"
+        files = frozenset(installed.values()) | {
+            source for target, source in (installed_data(package) or {}).items()
+            if target.startswith(scripts) and source.endswith(".py")}  # `ros2 run` starts
     else:
         packages = python_folders(package.files)
         data = DATA_FOLDERS - {package.name}

@@ -176,5 +176,21 @@ def _of_a_family(package: Package, key: str, close: str) -> bool:
     return any(other.name != key and any(part.startswith(tuple(changed))
                                          for part in _PARTS.split(other.name)) and
                not rosdistro.is_known_dependency(other.name, distro) and
-               not is_local(package, other.name)
+               not is_local(package, other.name) and
+               not _same_slip(other.name, key, close, distro)
                for other in package.manifest.dependencies if other.name)
+
+
+def _same_slip(other: str, key: str, close: str, distro: str) -> bool:
+    """True when ``other`` with the parts ``key`` misspells written as ``close`` has them is
+    a known dependency: the same slip made twice (``join_state_publisher`` and
+    ``join_state_publisher_gui``), not a family of keys."""
+    ours, theirs = _PARTS.split(key), _PARTS.split(close)
+    if len(ours) != len(theirs):
+        return False
+    fixed = dict(zip(ours, theirs))
+    mended = other
+    for part in _PARTS.split(other):
+        if part in fixed and fixed[part] != part:
+            mended = re.sub(rf"(?<![^\W_]){re.escape(part)}(?![^\W_])", fixed[part], mended)
+    return mended != other and rosdistro.is_known_dependency(mended, distro)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import ast
 import posixpath
+import re
 from collections.abc import Iterator
 from fnmatch import fnmatch
 
@@ -109,15 +110,19 @@ def test_files(package: Package) -> frozenset[str]:
 
 def _cmake_script(package: Package, path: str) -> bool:
     """True for a module named like a test, outside test folders, of a package CMake builds
-    whose CMake files never name it: ``colcon test`` runs ctest there, which runs only the
-    tests CMakeLists.txt registers (``ament_add_pytest_test``), never pytest's own search."""
+    whose CMake files never name it, or install it as a program (``install(PROGRAMS
+    scripts/jtc_test.py ...)``: a tool ``ros2 run`` starts): ``colcon test`` runs ctest
+    there, which runs only the tests CMakeLists.txt registers (``ament_add_pytest_test``),
+    never pytest's own search."""
     build_type = package.manifest.build_type if package.manifest else None
     if build_type is None or build_type.value not in ("ament_cmake", "cmake") or \
             is_test_material(path) or posixpath.basename(path) == "conftest.py":
         return False
     cmake = "\n".join(text for name, text in package.texts.items()
                       if name.endswith(("CMakeLists.txt", ".cmake")))
-    return posixpath.basename(path) not in cmake
+    name = posixpath.basename(path)
+    return name not in cmake or re.search(
+        rf"(?i)\binstall\s*\(\s*PROGRAMS\b[^)]*\b{re.escape(name)}\b", cmake) is not None
 
 
 def _shipped_code(package: Package, module: PythonModule, config: PytestConfig) -> bool:

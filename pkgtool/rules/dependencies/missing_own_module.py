@@ -34,12 +34,17 @@ def _in_tree(package: Package, module: str) -> bool:
     uninstalled for another reason, which other rules report), or may generate it: its
     name is in setup.py, CMakeLists.txt (an extension module CMake builds,
     ``pybind11_add_module(name ...)``) or a ``.gitignore`` (a module written at build
-    time); or it lies in a git submodule that is not checked out (SYN005 says so)."""
+    time); or it lies in a git submodule that is not checked out (SYN005 says so); or it is
+    a compiled extension module kept in the tree (``dsrbind.so``,
+    ``dsrbind.cpython-312-x86_64-linux-gnu.so``)."""
     path = module.replace(".", "/")
     generated = [package.texts.get(f, "") for f in package.files
                  if f in ("setup.py", "CMakeLists.txt") or f.endswith(".gitignore")]
     stem = module.rpartition(".")[2]
+    folder, _, stem = path.rpartition("/")
+    prefix = f"{folder}/{stem}." if folder else f"{stem}."
     return package.has_file(f"{path}.py") or under(path, package.unfetched) or any(
+        f.startswith(prefix) and f.endswith((".so", ".pyd")) for f in package.files) or any(
         f.startswith(f"{path}/") for f in package.files) or any(
         re.search(rf"\b{re.escape(stem)}\b", text) for text in generated)
 

@@ -92,18 +92,28 @@ def _served_callbacks(package: Package) -> Iterator[tuple[str, Function, ast.Mod
 
 
 def _default_group_callbacks(package: Package) -> Iterator[tuple[str, Function, Index]]:
-    """Methods of a class registered by it (``self.create_timer(p, self.tick)``) as the
-    callback of a timer, subscription or service in the node's default callback group (no
-    ``callback_group=``), with their file and module index."""
+    """Methods of a class deriving from rclpy's node classes registered by it
+    (``self.create_timer(p, self.tick)``) as the callback of a timer, subscription or service
+    in the node's default callback group (no ``callback_group=``, nor a timer's third
+    argument), with their file and module index."""
     for path, value, api, _, index, tree in callback_arguments(package):
         call = index.parents.get(id(value))
         call = index.parents.get(id(call)) if isinstance(call, ast.keyword) else call
         if api not in _SERVED or not isinstance(call, ast.Call) or unpacks(call) or \
-                any(k.arg == _GROUP for k in call.keywords):
-            continue
+                any(k.arg == _GROUP for k in call.keywords) or \
+                api == "create_timer()" and len(call.args) > 2 or \
+                any(index.defines_function(made) for made in _MAKERS):
+            continue  # a group given by position, or a class making entities its own way
         found = callback_function(value, tree, index)
-        if found is not None and found[1] == 1:
+        cls = index.enclosing_class(found[0]) if found is not None else None
+        if found is not None and found[1] == 1 and cls is not None and \
+                cls in node_subclasses(index):
             yield path, found[0], index
+
+
+_MAKERS = ("create_client", "create_timer", "create_subscription", "create_service")
+"""Node methods a class of the module may define itself (putting entities in groups of its
+own, as ``simple_node``'s base class does)."""
 
 
 def _default_group_clients(tree: ast.Module, index: Index) -> set[str]:

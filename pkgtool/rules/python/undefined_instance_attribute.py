@@ -112,8 +112,21 @@ def _annotated(name: ast.Name, index: Index, package: Package) -> str | None:
     """The package class a parameter is annotated with (``grid: Grid``), when the function
     around ``name`` never rebinds it."""
     function = index.enclosing_function(name, through_lambdas=False)
+    if function is not None and not _in_body(name, function, index):
+        return None  # a decorator, default or annotation: read where the function is defined
     named = annotated_name(parameter_annotation(function, name.id)) if function else None
     return _resolved(named, index, package) if named else None
+
+
+def _in_body(node: ast.AST, function: ast.FunctionDef | ast.AsyncFunctionDef, index: Index
+             ) -> bool:
+    """True when ``node`` lies in the body of ``function`` (its own scope), not in its
+    decorators, defaults or annotations (``@payload.setter`` above ``def payload(self,
+    payload: Payload)`` reads the property of the class body)."""
+    child: ast.AST = node
+    while (parent := index.parents.get(id(child))) is not None and parent is not function:
+        child = parent
+    return parent is function and any(child is statement for statement in function.body)
 
 
 def _class_read(target: ast.expr, node: ast.Attribute, index: Index, package: Package
