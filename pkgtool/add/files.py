@@ -4,16 +4,16 @@ package's nodes, installed through data_files."""
 from __future__ import annotations
 
 import ast
-import re
 
 from pkgtool.add.depends import declare
 from pkgtool.add.node import LAUNCH_DEPENDS
 from pkgtool.add.target import Target
 from pkgtool.create.nodes import Kind, NodeSpec
 from pkgtool.edit.core import EditError
+from pkgtool.lazy_regex import lazy_pattern
 
-_ROS_NAME = re.compile(r"^[A-Za-z_][A-Za-z0-9_]*$")
-_LAUNCH_NAME = re.compile(r"^[A-Za-z0-9_.-]+[._]launch\.py$")
+_ROS_NAME = lazy_pattern(r"^[A-Za-z_][A-Za-z0-9_]*$")
+_LAUNCH_NAME = lazy_pattern(r"^[A-Za-z0-9_.-]+[._]launch\.py$")
 _SCALARS = (str, int, float, bool)
 
 

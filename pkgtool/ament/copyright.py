@@ -12,9 +12,10 @@ import re
 
 from pkgtool.knowledge.licenses import license_of_header, spdx_in_text
 from pkgtool.records import record
+from pkgtool.lazy_regex import lazy_pattern
 
 _YEARS = r"\d{4}(?:\s*-\s*\d{4})?(?:,\s*\d{4}(?:\s*-\s*\d{4})?)*"
-COPYRIGHT_LINE = re.compile(  # ament_copyright's pattern: one stray character may lead
+COPYRIGHT_LINE = lazy_pattern(  # ament_copyright's pattern: one stray character may lead
     rf"^.?\s*(?:\\copyright\s*)?copyright(?:\s+\(c\))?\s+({_YEARS}),?\s+(\S.*)$", re.IGNORECASE)
 
 

@@ -36,7 +36,6 @@ from __future__ import annotations
 import binascii
 import json
 import os
-import re
 import sys
 import time
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
@@ -44,6 +43,7 @@ from itertools import accumulate
 from operator import attrgetter
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, NamedTuple
+from pkgtool.lazy_regex import lazy_pattern
 
 if TYPE_CHECKING:
     from pkgtool.findings import Finding
@@ -73,7 +73,7 @@ _WALK_PREFIX = "walk-"
 _OUTCOMES_PREFIX = "outcomes-"
 _SETTINGS_FILE = "pyproject.toml"
 """Where settings come from (:mod:`pkgtool.config`): one in a package may set its neighbours'."""
-_CHECK = re.compile("[0-9a-f]{8}")
+_CHECK = lazy_pattern("[0-9a-f]{8}")
 _TIMES = attrgetter("st_size", "st_mtime_ns", "st_ctime_ns")
 """What a record compares of each folder and file."""
 _FOLDER_TIMES = attrgetter("st_mtime_ns", "st_ctime_ns")

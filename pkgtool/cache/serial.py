@@ -11,15 +11,15 @@ says); anything else raises :class:`BadEntry`.
 from __future__ import annotations
 
 import importlib
-import re
 import sys
 from enum import Enum
 from typing import Any
 
 from pkgtool.model.context import WorkspacePackage
 from pkgtool.records import fields, is_record
+from pkgtool.lazy_regex import lazy_pattern
 
-_MODULE = re.compile(r"pkgtool\.(?:findings|model(?:\.\w+)+|edit(?:\.\w+)+)")
+_MODULE = lazy_pattern(r"pkgtool\.(?:findings|model(?:\.\w+)+|edit(?:\.\w+)+)")
 """Modules a finding's values may come from that are safe to import because of an entry:
 they only define data (a fix carries ``pkgtool.edit`` records, for example)."""
 

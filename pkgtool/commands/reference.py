@@ -17,6 +17,7 @@ from typing import TYPE_CHECKING
 
 from pkgtool.commands import ExitCode
 from pkgtool.records import record
+from pkgtool.lazy_regex import lazy_pattern
 
 if TYPE_CHECKING:
     from pkgtool.testresults import TestSummary
@@ -27,7 +28,7 @@ __all__ = ["Entry", "GenerateResult", "ListResult", "PackageReport", "RequestErr
 SUPPORT_FOLDER = "_support"
 """Folder of ``reference_packages/`` holding packages that others need built (nav2_msgs)."""
 _SKIPPED = {"__pycache__", ".pytest_cache", "build", "install", "log"}
-_JOB_EVENT = re.compile(r"^\[(\d+(?:\.\d+)?)\] \((\S+)\) Job(Started|Ended):", re.MULTILINE)
+_JOB_EVENT = lazy_pattern(r"^\[(\d+(?:\.\d+)?)\] \((\S+)\) Job(Started|Ended):", re.MULTILINE)
 
 Progress = Callable[[str, str], None]
 """Called with (package, stage): linted, lint failed, building, built, build failed, testing..."""

@@ -14,6 +14,7 @@ import re
 import textwrap
 
 from pkgtool.create.licenses import LICENSES, licenses_dir
+from pkgtool.lazy_regex import lazy_pattern
 
 _PASSAGES = {
     "Apache-2.0": ("Licensed under the Apache License", "limitations under the License."),
@@ -31,7 +32,7 @@ _LESSER = ("LGPL-3.0-only", "GPL-3.0-only", "GNU General Public License",
 # ament_copyright's header of the 2-clause BSD license opens with these two paragraphs.
 _PREAMBLE = {"BSD-2-Clause": ("All rights reserved.",
                               "Software License Agreement (BSD 2-Clause Simplified License)")}
-_ITEM = re.compile(r"^\d+\.\s+")
+_ITEM = lazy_pattern(r"^\d+\.\s+")
 _WIDTH = 77  # text width of a wrapped paragraph, as in ament's own headers
 _KEEP = 95  # a paragraph whose lines all fit this stays as the license text breaks it
 

@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import re
 from pathlib import Path
+from pkgtool.lazy_regex import lazy_pattern
 
 LICENSES = ("Apache-2.0", "BSL-1.0", "BSD-2-Clause", "BSD-3-Clause", "MIT", "MIT-0",
             "GPL-3.0-only", "LGPL-3.0-only")
@@ -20,8 +21,8 @@ SOURCE_FILE = "SOURCE"
 IDS_FILE = "spdx-ids.json"
 _BUNDLE = ("data", "spdx-bundle.json.gz")
 # The copyright line some texts open with, e.g. ``Copyright (c) <year> <owner>.``.
-_PLACEHOLDER_LINE = re.compile(r"^Copyright (\(c\) )?<year> <(owner|copyright holders?)>",
-                               re.IGNORECASE)
+_PLACEHOLDER_LINE = lazy_pattern(r"^Copyright (\(c\) )?<year> <(owner|copyright holders?)>",
+                                 re.IGNORECASE)
 
 
 def licenses_dir() -> Path:

@@ -8,13 +8,13 @@ that module by every other package's code and tests.
 from __future__ import annotations
 
 import keyword
-import re
 import sys
 
 from pkgtool.create import CreateError
+from pkgtool.lazy_regex import lazy_pattern
 
 # REP 144: lowercase alphanumerics with single underscores between them, a letter first.
-NAME = re.compile(r"^[a-z][a-z0-9]*(_[a-z0-9]+)*$")
+NAME = lazy_pattern(r"^[a-z][a-z0-9]*(_[a-z0-9]+)*$")
 MAX_NAME = {"package name": 40, "node name": 32, "library name": 32}
 """Longer names do not fit the 99-character lines of ament's flake8 settings."""
 _RESERVED = {"test": "it is the folder of the package's tests, which setup.py excludes"}

@@ -6,8 +6,9 @@ import re
 
 from pkgtool.create import CreateError
 from pkgtool.records import record
+from pkgtool.lazy_regex import lazy_pattern
 
-_TYPE = re.compile(r"^([a-z][a-z0-9_]*)/(msg|srv|action)/([A-Z][A-Za-z0-9]*)$")
+_TYPE = lazy_pattern(r"^([a-z][a-z0-9_]*)/(msg|srv|action)/([A-Z][A-Za-z0-9]*)$")
 
 DEFAULT_TYPES = {
     "msg": "std_msgs/msg/String",

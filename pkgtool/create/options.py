@@ -17,10 +17,11 @@ from pkgtool.create.nodes import KINDS, NodeSpec, parse_node
 from pkgtool.knowledge import rosdep
 from pkgtool.knowledge.rosdistro import is_rosdep_key
 from pkgtool.records import record
+from pkgtool.lazy_regex import lazy_pattern
 
 __all__ = ["Plan", "Request", "check_name", "sort_dependencies", "validate"]
 
-_ROSDEP_KEY = re.compile(r"^python3-[a-z0-9][a-z0-9.+-]*$")
+_ROSDEP_KEY = lazy_pattern(r"^python3-[a-z0-9][a-z0-9.+-]*$")
 _TEST_FILES = frozenset({"conftest", "copyright", "flake8", "pep257"})
 _FORMATS = (2, 3)
 

@@ -9,13 +9,13 @@ from __future__ import annotations
 
 import json
 import os
-import re
 import time
 import sys
 from collections.abc import Iterable
+from pkgtool.lazy_regex import lazy_pattern
 
 MAX_LINE = 99
-_PLAIN_YAML = re.compile(r"^[A-Za-z_/][A-Za-z0-9_/.]*$")
+_PLAIN_YAML = lazy_pattern(r"^[A-Za-z_/][A-Za-z0-9_/.]*$")
 _YAML_WORDS = {"true", "false", "yes", "no", "on", "off", "null", "y", "n", "~"}
 
 

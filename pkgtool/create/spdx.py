@@ -10,10 +10,10 @@ from __future__ import annotations
 
 import functools
 import json
-import re
+from pkgtool.lazy_regex import lazy_pattern
 
-_TOKEN = re.compile(r"\(|\)|[^\s()]+")
-_REF = re.compile(r"^(DocumentRef-[A-Za-z0-9.-]+:)?LicenseRef-[A-Za-z0-9.-]+$")
+_TOKEN = lazy_pattern(r"\(|\)|[^\s()]+")
+_REF = lazy_pattern(r"^(DocumentRef-[A-Za-z0-9.-]+:)?LicenseRef-[A-Za-z0-9.-]+$")
 
 
 @functools.cache

@@ -16,10 +16,11 @@ from collections.abc import Sequence
 
 from pkgtool.edit.core import Edit, EditError
 from pkgtool.edit.source import Source
+from pkgtool.lazy_regex import lazy_pattern
 
 MAX_LINE = 99
 """ament's flake8 line length."""
-_PREFIX = re.compile(r"^[rRbBuUfF]*")
+_PREFIX = lazy_pattern(r"^[rRbBuUfF]*")
 
 
 class PyDoc:

@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-import re
 
 from pkgtool.edit.core import Edit, EditError
 from pkgtool.edit.source import Source
+from pkgtool.lazy_regex import lazy_pattern
 
-_SECTION = re.compile(r"^\[(?P<name>[^\]]+)\]\s*(?:[#;].*)?$")
-_OPTION = re.compile(r"^(?P<key>[^\s=:#;][^=:]*?)(?P<sep>\s*[=:]\s*)(?P<value>.*?)\s*$")
+_SECTION = lazy_pattern(r"^\[(?P<name>[^\]]+)\]\s*(?:[#;].*)?$")
+_OPTION = lazy_pattern(r"^(?P<key>[^\s=:#;][^=:]*?)(?P<sep>\s*[=:]\s*)(?P<value>.*?)\s*$")
 
 
 def _lines(source: Source) -> list[tuple[int, str]]:

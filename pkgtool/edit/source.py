@@ -7,17 +7,17 @@ Encoding the edited text back gives the original bytes wherever the text did not
 from __future__ import annotations
 
 import codecs
-import re
 from bisect import bisect_right
 from dataclasses import dataclass
 from functools import cached_property
 
 from pkgtool.edit.core import EditError
+from pkgtool.lazy_regex import lazy_pattern
 
 MAX_BYTES = 2 * 1024 * 1024
 """Larger files are not edited (the model does not read them either)."""
-_CODING = re.compile(rb"^[ \t\f]*#.*?coding[:=][ \t]*([-\w.]+)")
-_LINE_BREAK = re.compile(r"\r\n|\r|\n")
+_CODING = lazy_pattern(rb"^[ \t\f]*#.*?coding[:=][ \t]*([-\w.]+)")
+_LINE_BREAK = lazy_pattern(r"\r\n|\r|\n")
 
 
 @dataclass(frozen=True)

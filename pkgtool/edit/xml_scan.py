@@ -12,15 +12,16 @@ from dataclasses import dataclass, field
 
 from pkgtool.edit.core import Edit
 from pkgtool.edit.source import Source
+from pkgtool.lazy_regex import lazy_pattern
 
-_MARKUP = re.compile(
+_MARKUP = lazy_pattern(
     r"<!--.*?-->|<!\[CDATA\[.*?\]\]>|<\?.*?\?>|<!DOCTYPE[^>]*>"
     r"|</(?P<close>[^\s>]+)\s*>"
     r"|<(?P<open>[^\s/>!?]+)"
     r"(?P<attrs>(?:\s+[^\s=/>]+\s*=\s*(?:\"[^\"]*\"|'[^']*'))*)\s*(?P<empty>/?)>",
     re.S)
-_COMMENT = re.compile(r"<!--.*?-->", re.S)
-_ATTRIBUTE = re.compile(r"([^\s=/>]+)\s*=\s*(?:\"([^\"]*)\"|'([^']*)')")
+_COMMENT = lazy_pattern(r"<!--.*?-->", re.S)
+_ATTRIBUTE = lazy_pattern(r"([^\s=/>]+)\s*=\s*(?:\"([^\"]*)\"|'([^']*)')")
 
 
 @dataclass

@@ -18,6 +18,7 @@ from pkgtool.fix.registry import Refusal
 from pkgtool.knowledge.rosdistro import is_typo
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.lazy_regex import lazy_pattern
 
 
 def offer(title: str, build: Callable[[], Sequence[Edit]], *, safe: bool = True
@@ -109,9 +110,9 @@ def line_of(starts: list[int], offset: int) -> int:
     return bisect_right(starts, offset)
 
 
-WRITE_ONE = re.compile(r"Write `([^`]+)`")
+WRITE_ONE = lazy_pattern(r"Write `([^`]+)`")
 """The help of a finding whose fix is one name: the near miss of a misspelt one."""
-WRITE_NAME = re.compile(r"Write `([A-Za-z_]\w*)`")
+WRITE_NAME = lazy_pattern(r"Write `([A-Za-z_]\w*)`")
 """The help of a finding whose fix is one Python name: the near miss of a misspelt one."""
 
 

@@ -21,6 +21,7 @@ from pkgtool.rules.dependencies.sibling_import import installed_name
 from pkgtool.rules.dependencies.unknown_interface_import import written_import
 from pkgtool.rules.imports import (BUILD_ONLY, Need, declared, needs, test_code,
                                    unmet_runtime_needs)
+from pkgtool.lazy_regex import lazy_pattern
 
 
 def _declare(package: Package, findings: list[Finding], found: Iterable[Need], tag: str
@@ -38,7 +39,7 @@ def _declare(package: Package, findings: list[Finding], found: Iterable[Need], t
         yield from _add(doc, tag, key)
 
 
-_NAMED = re.compile(r"`([^`]+)` is used by a launch file")
+_NAMED = lazy_pattern(r"`([^`]+)` is used by a launch file")
 """The package an LCH002 finding names."""
 
 
@@ -140,7 +141,7 @@ def launch_package(package: Package, findings: list[Finding]) -> Iterator[Fix | 
         yield from _add(doc, "exec_depend", name)
 
 
-_LOOKED_UP = re.compile(r"`([^`]+)` is used by the package's code")
+_LOOKED_UP = lazy_pattern(r"`([^`]+)` is used by the package's code")
 """The package a DEP011 finding names."""
 
 

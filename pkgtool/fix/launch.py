@@ -24,8 +24,9 @@ from pkgtool.rules.launch.invalid_launch_action_argument import BY_KEYWORD, IN_A
 from pkgtool.rules.launch.invalid_node_argument import (FRONTEND_TAGS, KEYWORDS, REMOVED_KEYWORDS,
                                                         WRONG_ATTRIBUTES, removed_message)
 from pkgtool.rules.launch.unknown_substitution import SUBSTITUTION, ros2_substitution
+from pkgtool.lazy_regex import lazy_pattern
 
-_ONE_NAME = re.compile(r"`(\w+)`(?: \(.*\))?")
+_ONE_NAME = lazy_pattern(r"`(\w+)`(?: \(.*\))?")
 """What WRONG_ATTRIBUTES says to write when that is one attribute name."""
 
 
@@ -306,5 +307,5 @@ def action_tuple(package: Package, findings: list[Finding]) -> Iterator[Fix]:
                       (Edit(doc.source.path, doc.end(item), doc.end(whole), ""),))
 
 
-_COMMA_LINE = re.compile(r"Remove the comma that ends line (\d+)")
+_COMMA_LINE = lazy_pattern(r"Remove the comma that ends line (\d+)")
 """LCH018's help: the line the tuple's comma ends."""

@@ -3,7 +3,6 @@ names, misspelled, inside ``<export>``), SPDX, the build type."""
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 
 from pkgtool.edit.core import Edit, EditError, Fix
@@ -20,6 +19,7 @@ from pkgtool.rules.dependency_names import neighbours
 from pkgtool.rules.manifest.non_spdx_license import spdx_spelling
 from pkgtool.rules.manifest.template_placeholder import is_placeholder
 from pkgtool.rules.setup_values import text_of
+from pkgtool.lazy_regex import lazy_pattern
 
 
 def _remove_lines(package: Package, findings: list[Finding], title: str, *, safe: bool
@@ -87,7 +87,7 @@ def spdx(package: Package, findings: list[Finding]) -> Iterator[Fix]:
             yield Fix(f"Write `{identifier}`", (doc.replace_text(element, identifier),))
 
 
-_WRITE_KEY = re.compile(r"Write `<\w+>([\w.+-]+)</\w+>`")
+_WRITE_KEY = lazy_pattern(r"Write `<\w+>([\w.+-]+)</\w+>`")
 """The fix MAN018 states when it knows the one key to write."""
 
 

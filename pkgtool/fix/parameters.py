@@ -13,11 +13,12 @@ from pkgtool.fix.common import renames
 from pkgtool.fix.registry import fixer
 from pkgtool.model.package import Package
 from pkgtool.rules.data_files.malformed_parameter_file import PARAMS_KEY, renamed
+from pkgtool.lazy_regex import lazy_pattern
 
 
-_NAMESPACE_MISSED = re.compile(r"^`([^`]+)`(?: \(`[^`]+`\))? cannot name the node")
+_NAMESPACE_MISSED = lazy_pattern(r"^`([^`]+)`(?: \(`[^`]+`\))? cannot name the node")
 """A DAT009 message on a key that misses its node's namespace, and the key."""
-_WRITE_KEY = re.compile(r"^Write `([^`]+)`")
+_WRITE_KEY = lazy_pattern(r"^Write `([^`]+)`")
 
 
 @fixer("DAT008", "Rename the misspelled key to `ros__parameters`")

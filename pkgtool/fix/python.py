@@ -23,12 +23,13 @@ from pkgtool.rules.python._loggers import logged_message
 from pkgtool.rules.python.invalid_logger_call import ATTRIBUTES, meant_level
 from pkgtool.rules.python.path_without_separator import joins
 from pkgtool.rules.syntax_trees import index_of
+from pkgtool.lazy_regex import lazy_pattern
 
-_DECIMAL = re.compile(r"[0-9][0-9_]*")
+_DECIMAL = lazy_pattern(r"[0-9][0-9_]*")
 _MODULES = frozenset("""argparse copy glob json math os random re shutil signal socket
                      struct subprocess sys threading time""".split())
 """Standard library modules code uses by their name (``math.pi``) and forgets to import."""
-_OPENING = re.compile(r"[rRbBuUfF]*(\"\"\"|'''|\"|')")
+_OPENING = lazy_pattern(r"[rRbBuUfF]*(\"\"\"|'''|\"|')")
 """A string literal's prefix and opening quotes."""
 
 
@@ -110,7 +111,7 @@ def logger_method(package: Package, findings: list[Finding]) -> Iterator[Fix]:
                       (Edit(doc.source.path, end - len(func.attr), end, meant),))
 
 
-_NOT_TEXT = re.compile(r"(is given .*, not a string|takes a string): rclpy raises `TypeError`")
+_NOT_TEXT = lazy_pattern(r"(is given .*, not a string|takes a string): rclpy raises `TypeError`")
 """PYC016's message for a logging call given a value that is certainly no string."""
 
 
@@ -430,7 +431,7 @@ def parameter_type(package: Package, findings: list[Finding]) -> Iterator[Fix]:
                       (Edit(doc.source.path, doc.start(value), doc.end(value), written),))
 
 
-_WRITE = re.compile(r"Write `(.+)`|Use `Parameter\.Type\.([A-Z_]+)`")
+_WRITE = lazy_pattern(r"Write `(.+)`|Use `Parameter\.Type\.([A-Z_]+)`")
 """PYC070's helps that name one replacement."""
 
 

@@ -13,12 +13,12 @@ from __future__ import annotations
 import functools
 import itertools
 import os
-import re
 import signal
 import time
 from pathlib import Path
 
 from pkgtool.records import record
+from pkgtool.lazy_regex import lazy_pattern
 
 # controller -> (limit file, events file, event counted), per cgroup version
 _FILES = {
@@ -29,7 +29,7 @@ _FILES = {
 }
 _ROOT = Path("/sys/fs/cgroup")
 _names = itertools.count()
-_NAME = re.compile(r"^pkgtool-(\d+)-\d+$")
+_NAME = lazy_pattern(r"^pkgtool-(\d+)-\d+$")
 
 
 @record

@@ -25,10 +25,11 @@ from packaging.requirements import Requirement
 from pkgtool.compat import tomllib
 from pkgtool.grade.rubric import RubricError, load_rubric
 from pkgtool.resources import resource_dir
+from pkgtool.lazy_regex import lazy_pattern
 
 EXTRAS = ("ros", "style")
 """The extras grading needs: ROS 2 and colcon to build and test, the style checkers."""
-_PINNED = re.compile(r"^([A-Za-z0-9][A-Za-z0-9._-]*)==(\S+)", re.MULTILINE)
+_PINNED = lazy_pattern(r"^([A-Za-z0-9][A-Za-z0-9._-]*)==(\S+)", re.MULTILINE)
 _EPOCH = "315532800"  # 1980-01-01, the earliest date a zip entry can hold
 UV_VERSION = "0.13.9"
 BUILD_BACKEND = ("setuptools==68.1.2", "wheel==0.45.1")

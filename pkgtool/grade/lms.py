@@ -13,9 +13,10 @@ import re
 from pathlib import Path
 
 from pkgtool.grade.extract import is_archive
+from pkgtool.lazy_regex import lazy_pattern
 
-_MOODLE = re.compile(r"(?P<name>.+?)_(?P<id>\d+)_assignsubmission_[a-z]+_?")
-_CANVAS = re.compile(r"(?P<name>[A-Za-z0-9-]+?)_(?:LATE_)?(?P<id>\d+)_\d+_.+", re.IGNORECASE)
+_MOODLE = lazy_pattern(r"(?P<name>.+?)_(?P<id>\d+)_assignsubmission_[a-z]+_?")
+_CANVAS = lazy_pattern(r"(?P<name>[A-Za-z0-9-]+?)_(?:LATE_)?(?P<id>\d+)_\d+_.+", re.IGNORECASE)
 
 
 def lms_submission(entry: Path) -> tuple[str, Path] | None:

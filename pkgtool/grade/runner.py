@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import json
 import os
-import re
 import sys
 import sysconfig
 from collections.abc import Sequence
@@ -18,8 +17,9 @@ from pkgtool.grade.hidden import run_hidden, timeout_args
 from pkgtool.testresults import TestSummary, parse_junit
 from pkgtool.grade.sandbox import Sandbox
 from pkgtool.ros.colcon import ColconRun, colcon_build, colcon_env, colcon_test
+from pkgtool.lazy_regex import lazy_pattern
 
-_ERROR_LINE = re.compile(r"^(error: |[\w.]*(Error|Exception)\b)")
+_ERROR_LINE = lazy_pattern(r"^(error: |[\w.]*(Error|Exception)\b)")
 
 _ENTRY_POINT_PROBE = """
 import importlib.metadata as md, json, os, sys

@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import hashlib
 import os
-import re
 import stat
 from collections.abc import Iterable, Sequence
 from pathlib import Path
@@ -24,11 +23,12 @@ from pkgtool.safe_fs import (MB, Entry, TreeWriter, UnsafeFile, lexical_target, 
                              walk_tree)
 from pkgtool.model.package import load_package
 from pkgtool.workspace import IGNORE_MARKERS, discover
+from pkgtool.lazy_regex import lazy_pattern
 
 _SKIPPED = frozenset({".git", "__pycache__", ".pytest_cache"})
 _OUTPUT = frozenset({"build", "install", "log"})
 """colcon's output folders: skipped beside a package.xml unless they are Python packages."""
-_SAFE_NAME = re.compile(r"^[A-Za-z0-9][A-Za-z0-9_.-]{0,99}$")
+_SAFE_NAME = lazy_pattern(r"^[A-Za-z0-9][A-Za-z0-9_.-]{0,99}$")
 
 
 @record

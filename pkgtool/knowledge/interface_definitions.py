@@ -13,6 +13,7 @@ classes stay unknown, so no rule judges them.
 from __future__ import annotations
 
 import re
+from pkgtool.lazy_regex import lazy_pattern
 
 _PRIMITIVES = {"bool": "boolean", "byte": "octet", "char": "uint8", "float32": "float",
                "float64": "double", "int8": "int8", "uint8": "uint8", "int16": "int16",
@@ -22,10 +23,10 @@ _PRIMITIVES = {"bool": "boolean", "byte": "octet", "char": "uint8", "float32": "
 PARTS = {"msg": ("",), "srv": ("_Request", "_Response"),
          "action": ("_Goal", "_Result", "_Feedback")}
 """Kind -> the suffixes of the message classes of one file's sections, in order."""
-_TYPE = re.compile(r"(?:(?P<package>[A-Za-z]\w*)/)?(?P<base>[A-Za-z]\w*)"
-                   r"(?:(?P<strbound><=\d+))?(?:\[(?P<bound><=)?(?P<size>\d*)\])?")
-_NAME = re.compile(r"[a-z][a-z0-9_]*")
-_CONSTANT = re.compile(r"(?P<type>\S+)\s+(?P<name>[A-Z][A-Z0-9_]*)\s*=")
+_TYPE = lazy_pattern(r"(?:(?P<package>[A-Za-z]\w*)/)?(?P<base>[A-Za-z]\w*)"
+                     r"(?:(?P<strbound><=\d+))?(?:\[(?P<bound><=)?(?P<size>\d*)\])?")
+_NAME = lazy_pattern(r"[a-z][a-z0-9_]*")
+_CONSTANT = lazy_pattern(r"(?P<type>\S+)\s+(?P<name>[A-Z][A-Z0-9_]*)\s*=")
 
 
 def definitions(package: str, kind: str, name: str, text: str) -> dict[str, str]:

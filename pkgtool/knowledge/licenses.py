@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import re
+from pkgtool.lazy_regex import lazy_pattern
 
 SPDX_ALIASES: dict[str, tuple[str, ...]] = {
     "Apache-2.0": ("apache 2.0", "apache license 2.0", "apache2", "apache 2", "apache2.0",
@@ -42,7 +43,7 @@ _BY_ALIAS = {alias: spdx for spdx, aliases in SPDX_ALIASES.items()
              for alias in (spdx.lower(), *aliases)}
 """Informal spellings and (a fast path that spares importing packaging's SPDX list) the ids."""
 _OPERATORS = frozenset({"AND", "OR", "WITH", "(", ")"})
-_GNU = re.compile(r"^(A?GPL|LGPL|GFDL)-(\d\.\d)(-only|-or-later|\+)?$")
+_GNU = lazy_pattern(r"^(A?GPL|LGPL|GFDL)-(\d\.\d)(-only|-or-later|\+)?$")
 
 
 def spdx_expression(text: str) -> str | None:
@@ -123,8 +124,8 @@ _HEADER_PHRASES: tuple[tuple[str, tuple[str, ...], tuple[str, ...]], ...] = (
     ("MIT-0", ("permission is hereby granted, free of charge",), ("the above copyright notice",)),
 )
 
-_SPDX_LINE = re.compile(r"SPDX-License-Identifier:\s*([A-Za-z0-9.+\-() ]+?)\s*(?:\*/|-->)?\s*$",
-                        re.MULTILINE)
+_SPDX_LINE = lazy_pattern(r"SPDX-License-Identifier:\s*([A-Za-z0-9.+\-() ]+?)\s*(?:\*/|-->)?\s*$",
+                          re.MULTILINE)
 
 
 def spdx_in_text(text: str) -> str | None:

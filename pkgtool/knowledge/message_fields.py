@@ -16,13 +16,13 @@ nothing is known and callers must stay silent. It is read the first time a rule 
 from __future__ import annotations
 
 import difflib
-import re
 from collections.abc import Mapping
 from functools import cache
 
 from pkgtool.knowledge.interfaces import NO_COMPANIONS
 from pkgtool.knowledge.tables import DEFAULT_DISTRO, FLAGS, read
 from pkgtool.records import record
+from pkgtool.lazy_regex import lazy_pattern
 
 __all__ = ["COMPANIONS", "CONSTRUCTOR_OPTIONS", "Message", "close_field",
            "constructor_options", "message_of", "nested_message"]
@@ -32,7 +32,7 @@ COMPANIONS = frozenset({"Request", "Response", "Event", "Goal", "Result", "Feedb
 CONSTRUCTOR_OPTIONS = frozenset({"check_fields"})
 """Keyword arguments every message constructor takes besides the fields (since Iron; see
 :func:`constructor_options`)."""
-MESSAGE_TYPE = re.compile(r"[A-Za-z]\w*/[A-Za-z]\w*")
+MESSAGE_TYPE = lazy_pattern(r"[A-Za-z]\w*/[A-Za-z]\w*")
 """A field type that is one message (not a sequence or array of them): ``pkg/Name``."""
 
 

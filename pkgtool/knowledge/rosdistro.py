@@ -8,11 +8,11 @@ function takes the target ``distro`` (one of :data:`DISTROS`, default :data:`DEF
 from __future__ import annotations
 
 import difflib
-import re
 from collections.abc import Iterable
 from functools import cache, lru_cache
 
 from pkgtool.knowledge.tables import DEFAULT_DISTRO, DISTROS, FLAGS, read
+from pkgtool.lazy_regex import lazy_pattern
 
 __all__ = ["DEFAULT_DISTRO", "DISTROS", "PYTHON_VERSIONS", "alternative_key", "close_names",
            "is_known_dependency", "is_released_package", "is_rosdep_key", "key_resolves",
@@ -152,7 +152,7 @@ def _candidates(distro: str) -> frozenset[str]:
     return released_packages(distro) | rosdep_keys()
 
 
-_NUMBERS = re.compile(r"[0-9]+")
+_NUMBERS = lazy_pattern(r"[0-9]+")
 
 
 def numbered_variants(name: str, distro: str = DEFAULT_DISTRO) -> list[str]:

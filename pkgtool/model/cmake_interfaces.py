@@ -23,11 +23,12 @@ from collections.abc import Callable, Iterable
 from fnmatch import fnmatchcase
 
 from pkgtool.records import record
+from pkgtool.lazy_regex import lazy_pattern
 
-_CALL = re.compile(r"\b([A-Za-z_]\w*)\s*\(([^()]*(?:\([^()]*\)[^()]*)*)\)", re.S)
-_COMMENT = re.compile(r"#[^\n]*")
-_TOKEN = re.compile(r'"([^"]*)"|(\S+)')
-_VARIABLE = re.compile(r"\$\{(\w+)\}")
+_CALL = lazy_pattern(r"\b([A-Za-z_]\w*)\s*\(([^()]*(?:\([^()]*\)[^()]*)*)\)", re.S)
+_COMMENT = lazy_pattern(r"#[^\n]*")
+_TOKEN = lazy_pattern(r'"([^"]*)"|(\S+)')
+_VARIABLE = lazy_pattern(r"\$\{(\w+)\}")
 _SOURCE_DIRS = frozenset({"CMAKE_CURRENT_SOURCE_DIR", "PROJECT_SOURCE_DIR", "CMAKE_SOURCE_DIR",
                           "CMAKE_CURRENT_LIST_DIR"})
 """Variables holding the package's own folder: a path under them is a path in the package."""

@@ -7,9 +7,9 @@ target ``ROS_VERSION`` is ``2``, ``ROS_PYTHON_VERSION`` ``3`` and ``ROS_DISTRO``
 
 from __future__ import annotations
 
-import re
+from pkgtool.lazy_regex import lazy_pattern
 
-_TOKEN = re.compile(r"\s*(\$?[\w.-]+|==|!=|\(|\)|\S)")
+_TOKEN = lazy_pattern(r"\s*(\$?[\w.-]+|==|!=|\(|\)|\S)")
 
 
 def environment(distro: str) -> dict[str, str]:

@@ -28,8 +28,9 @@ from pkgtool.model.digest import text_digest
 from pkgtool.model.files import list_files, read_bytes
 from pkgtool.model.memo import per_object
 from pkgtool.records import field, record
+from pkgtool.lazy_regex import lazy_pattern
 
-_NAME = re.compile(r"<name>\s*([^<\s]+)\s*</name>")
+_NAME = lazy_pattern(r"<name>\s*([^<\s]+)\s*</name>")
 _KINDS = ("msg", "srv", "action")
 _SUFFIX_KINDS = {".msg": "msg", ".srv": "srv", ".action": "action"}
 _DEPTH = 4
@@ -160,8 +161,8 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
                             _setup_digest(manifest, listed, setup))
 
 
-_BUILD_TYPE = re.compile(r"<build_type>\s*([^<\s]+)\s*</build_type>")
-_COMMENT = re.compile(r"<!--.*?-->", re.DOTALL)
+_BUILD_TYPE = lazy_pattern(r"<build_type>\s*([^<\s]+)\s*</build_type>")
+_COMMENT = lazy_pattern(r"<!--.*?-->", re.DOTALL)
 
 
 def _setup_digest(manifest: str | None, listed: tuple[str, ...],

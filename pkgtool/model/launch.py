@@ -7,6 +7,7 @@ import re
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.records import record
+from pkgtool.lazy_regex import lazy_pattern
 
 LAUNCH_SUFFIXES = (".launch.py", "_launch.py", ".launch.xml", "_launch.xml", ".launch.yaml",
                    "_launch.yaml", ".launch.yml", "_launch.yml")
@@ -173,7 +174,7 @@ def is_launch_file(path: str, python_folders: frozenset[str] = frozenset(),
                 or folder in python_folders)
 
 
-LAUNCH_YAML = re.compile(r"^launch\s*:", re.M)
+LAUNCH_YAML = lazy_pattern(r"^launch\s*:", re.M)
 """The top-level ``launch:`` key of a YAML launch file."""
 
 

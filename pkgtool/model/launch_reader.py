@@ -8,7 +8,6 @@ from __future__ import annotations
 
 import functools
 import math
-import re
 from collections.abc import Iterator
 
 from pkgtool.model.launch import COMMAND_PACKAGES, FileRef, LaunchFile, NodeRef, PackageRef
@@ -16,15 +15,16 @@ from pkgtool.model.launch_python import NAME_REMAPS, remapped_name
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.model.xml import XmlElement
 from pkgtool.records import replace
+from pkgtool.lazy_regex import lazy_pattern
 
-_LOOKUP = re.compile(r"\$\(\s*find-pkg-(share|prefix)\s+([A-Za-z0-9_]+)\s*\)")
-_EXECUTABLE_IN = re.compile(r"\$\(\s*exec-in-pkg\s+[\w.-]+\s+([A-Za-z0-9_]+)\s*\)")
+_LOOKUP = lazy_pattern(r"\$\(\s*find-pkg-(share|prefix)\s+([A-Za-z0-9_]+)\s*\)")
+_EXECUTABLE_IN = lazy_pattern(r"\$\(\s*exec-in-pkg\s+[\w.-]+\s+([A-Za-z0-9_]+)\s*\)")
 """``$(exec-in-pkg <executable> <package>)``: launch looks the package up in the ament index."""
-_SHARE_WORD = re.compile(r"(?<![^\s])\$\(\s*find-pkg-share\s+[A-Za-z0-9_]+\s*\)"
-                         r"/[^\s$'\"]*(?=\s|$)")
+_SHARE_WORD = lazy_pattern(r"(?<![^\s])\$\(\s*find-pkg-share\s+[A-Za-z0-9_]+\s*\)"
+                           r"/[^\s$'\"]*(?=\s|$)")
 """A share path that is one whole word of a node's ``args`` (``-d $(find-pkg-share p)/a.rviz``)."""
-_COMMAND = re.compile(r"""\$\(\s*command\s+['"]?\s*([\w.-]+)""")
-_SHARE_PATH = re.compile(r"^\$\(\s*find-pkg-share\s+([A-Za-z0-9_]+)\s*\)(/[^$]*)$")
+_COMMAND = lazy_pattern(r"""\$\(\s*command\s+['"]?\s*([\w.-]+)""")
+_SHARE_PATH = lazy_pattern(r"^\$\(\s*find-pkg-share\s+([A-Za-z0-9_]+)\s*\)(/[^$]*)$")
 NODE_TAGS = {"node": ("exec", "executable"), "lifecycle_node": ("exec", "executable"),
              "node_container": ("exec", "executable"), "composable_node": ()}
 """Launch actions that start a node, and the attribute(s) naming its executable."""

@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-import re
 
 from pkgtool.model.condition import under_ros2
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.model.xml import XmlElement, parse_xml
 from pkgtool.records import record, replace
+from pkgtool.lazy_regex import lazy_pattern
 
 
 @record
@@ -83,7 +83,7 @@ def parse_manifest(path: str, text: str) -> Manifest | ParseProblem:
                    schema_format=Text(schema.group(1), where) if schema else None)
 
 
-_SCHEMA = re.compile(r"<\?xml-model\s[^>]*?href\s*=\s*[\"'][^\"']*package_format(\d+)\.xsd")
+_SCHEMA = lazy_pattern(r"<\?xml-model\s[^>]*?href\s*=\s*[\"'][^\"']*package_format(\d+)\.xsd")
 """The ``<?xml-model?>`` processing instruction naming a package.xml schema."""
 
 

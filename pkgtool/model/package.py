@@ -22,9 +22,10 @@ from pkgtool.model.span import ParseProblem
 from pkgtool.model.submodules import (GitIgnore, gitignore_patterns, ignores_above,
                                       unfetched_names, unfetched_submodules)
 from pkgtool.records import field, record
+from pkgtool.lazy_regex import lazy_pattern
 
-_PY_SUPPRESSION = re.compile(r"#\s*pkgtool:\s*ignore(?:\[([A-Za-z0-9_,\s-]*)\])?")
-_XML_SUPPRESSION = re.compile(r"<!--\s*pkgtool:\s*ignore\b([A-Za-z0-9_,\s-]*)-->")
+_PY_SUPPRESSION = lazy_pattern(r"#\s*pkgtool:\s*ignore(?:\[([A-Za-z0-9_,\s-]*)\])?")
+_XML_SUPPRESSION = lazy_pattern(r"<!--\s*pkgtool:\s*ignore\b([A-Za-z0-9_,\s-]*)-->")
 
 
 @record
@@ -180,11 +181,11 @@ def load_package(root: Path, context: Context | None = None) -> Package:
                    unfetched_names(root))
 
 
-_LAUNCH_XML = re.compile(r"\s*(?:<\?xml[^>]*\?>\s*)?(?:<!--.*?-->\s*)*<launch[\s>/]", re.S)
+_LAUNCH_XML = lazy_pattern(r"\s*(?:<\?xml[^>]*\?>\s*)?(?:<!--.*?-->\s*)*<launch[\s>/]", re.S)
 _OPENCV_STORAGE = ("%YAML:", "\ufeff%YAML:")
 """How OpenCV's ``FileStorage`` files start (``%YAML:1.0``): a format of OpenCV's that YAML
 parsers refuse, read by ``cv2.FileStorage`` (ORB-SLAM's camera settings), never by ROS."""
-_LAUNCH_FUNCTION = re.compile(r"^def generate_launch_description\s*\(", re.M)
+_LAUNCH_FUNCTION = lazy_pattern(r"^def generate_launch_description\s*\(", re.M)
 
 
 def defines_launch_description(text: str) -> bool:

@@ -23,12 +23,12 @@ from __future__ import annotations
 
 import ast
 import operator
-import re
 from collections import Counter
 from collections.abc import Callable
 
 from pkgtool.model.ast_nodes import descendants, enclosing, nodes_of_class, walk_once
 from pkgtool.model.memo import per_tree
+from pkgtool.lazy_regex import lazy_pattern
 
 _COMPARE = {ast.Lt: operator.lt, ast.LtE: operator.le, ast.Gt: operator.gt,
             ast.GtE: operator.ge, ast.Eq: operator.eq, ast.NotEq: operator.ne}
@@ -298,7 +298,7 @@ def depends_on_ros_distro(test: ast.expr,
     return False
 
 
-_SHELL_DISTRO = re.compile(r"\$\{?ROS_DISTRO\b|^ROS_DISTRO$")
+_SHELL_DISTRO = lazy_pattern(r"\$\{?ROS_DISTRO\b|^ROS_DISTRO$")
 """The distribution as a command reads it: ``echo $ROS_DISTRO``, ``['printenv', 'ROS_DISTRO']``."""
 
 

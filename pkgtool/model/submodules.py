@@ -22,8 +22,9 @@ from pathlib import Path
 
 from pkgtool.model.files import read_bytes
 from pkgtool.records import record
+from pkgtool.lazy_regex import lazy_pattern
 
-_PATH = re.compile(rb"^\s*path\s*=\s*(.+?)\s*$", re.M)
+_PATH = lazy_pattern(rb"^\s*path\s*=\s*(.+?)\s*$", re.M)
 
 
 def unfetched_submodules(root: Path, files: tuple[str, ...]) -> frozenset[str]:

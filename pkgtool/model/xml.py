@@ -8,6 +8,7 @@ from typing import Any
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.records import record
 from pkgtool.safe_xml import parser
+from pkgtool.lazy_regex import lazy_pattern
 
 
 @record
@@ -28,7 +29,7 @@ class XmlElement:
         return dict(self.attributes).get(name)
 
 
-_XML_VERSION = re.compile(r"\ufeff?\s*<\?xml\s+version\s*=\s*[\"']([^\"']*)[\"']")
+_XML_VERSION = lazy_pattern(r"\ufeff?\s*<\?xml\s+version\s*=\s*[\"']([^\"']*)[\"']")
 """The version of a document's XML declaration (group 1)."""
 
 

@@ -12,8 +12,9 @@ a reader still sees that it was there.
 from __future__ import annotations
 
 import re
+from pkgtool.lazy_regex import lazy_pattern
 
-_UNSAFE = re.compile(
+_UNSAFE = lazy_pattern(
     "[\x00-\x08\x0b-\x1f\x7f-\x9f"  # control characters but tab and newline (C0, DEL, C1)
     "\u061c\u200e\u200f\u202a-\u202e\u2066-\u2069"  # bidirectional marks and overrides
     "\u2028\u2029"  # line and paragraph separators

@@ -7,13 +7,13 @@ install we point those strings at this interpreter's folders. Idempotent.
 
 from __future__ import annotations
 
-import re
 import sys
 import sysconfig
 from pathlib import Path
+from pkgtool.lazy_regex import lazy_pattern
 
-_BUILD_PYTHON_INCLUDE = re.compile(r"/opt/python/cp3\d+-cp3\d+/include/python3\.\d+")
-_BUILD_NUMPY_INCLUDE = re.compile(
+_BUILD_PYTHON_INCLUDE = lazy_pattern(r"/opt/python/cp3\d+-cp3\d+/include/python3\.\d+")
+_BUILD_NUMPY_INCLUDE = lazy_pattern(
     r"/opt/python/cp3\d+-cp3\d+/lib/python3\.\d+/site-packages/numpy/(?:_)?core/include"
 )
 

@@ -18,8 +18,9 @@ from pkgtool.model.manifest import Dependency
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.records import record
+from pkgtool.lazy_regex import lazy_pattern
 
-_KEY = re.compile(r"[A-Za-z0-9][A-Za-z0-9._+-]*")
+_KEY = lazy_pattern(r"[A-Za-z0-9][A-Za-z0-9._+-]*")
 _NOT_CHECKED = frozenset({"group_depend", "conflict", "replace"})
 
 
@@ -87,7 +88,7 @@ def neighbours(package: Package) -> frozenset[str]:
     return frozenset(package.context.workspace) - {package.name}
 
 
-_AFFIXES = re.compile(r"^(python3?-)|(-pip-shim|-pip|-python3?)$")
+_AFFIXES = lazy_pattern(r"^(python3?-)|(-pip-shim|-pip|-python3?)$")
 
 
 def names_module(key: str, module: str) -> bool:
@@ -130,7 +131,7 @@ def unknown_dependencies(package: Package) -> list[Unknown]:
     return found
 
 
-_PARTS = re.compile(r"[-_.]")
+_PARTS = lazy_pattern(r"[-_.]")
 
 
 def cmake_finds(package: Package, name: str) -> bool:
@@ -145,7 +146,7 @@ def cmake_finds(package: Package, name: str) -> bool:
     return any(_finds(found, name) for found in _FIND_PACKAGE.finditer(cmake))
 
 
-_FIND_PACKAGE = re.compile(r"(?i:find_package)\s*\(\s*([\w.+-]+)([^)]*)\)")
+_FIND_PACKAGE = lazy_pattern(r"(?i:find_package)\s*\(\s*([\w.+-]+)([^)]*)\)")
 """A ``find_package(Name ...)`` call: the name, and the rest (``REQUIRED COMPONENTS a b``)."""
 
 

@@ -15,7 +15,6 @@ that is none of these is ``unknown`` and only ever gets a guessed key.
 from __future__ import annotations
 
 import posixpath
-import re
 from collections.abc import Iterable, Iterator
 from functools import lru_cache
 
@@ -41,6 +40,7 @@ from pkgtool.records import record
 from pkgtool.rules.optional_imports import optional_modules
 from pkgtool.rules.sys_path import sys_path_edits
 from pkgtool.rules.test_modules import is_test_code, test_files
+from pkgtool.lazy_regex import lazy_pattern
 
 RUNTIME = frozenset({"depend", "exec_depend", "run_depend"})
 BUILD_ONLY = frozenset({"build_depend", "build_export_depend", "buildtool_depend",
@@ -281,7 +281,7 @@ def enclosing_package_import(package: Package, owner: str, imported: Import
     return None
 
 
-_COLLECTED = re.compile(r"(?:test_.*|.*_test|conftest)\.py")
+_COLLECTED = lazy_pattern(r"(?:test_.*|.*_test|conftest)\.py")
 
 
 @per_package

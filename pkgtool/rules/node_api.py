@@ -8,7 +8,6 @@ looked at, so a project's own ``create_publisher`` wrapper is never judged by rc
 from __future__ import annotations
 
 import ast
-import re
 from collections.abc import Collection, Iterator
 
 from pkgtool.model.memo import per_package
@@ -17,6 +16,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.scopes import plainly_decorated
 from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.lazy_regex import lazy_pattern
 
 PARAMETERS = {
     "create_publisher": ("msg_type", "topic", "qos_profile"),
@@ -26,7 +26,7 @@ PARAMETERS = {
     "create_client": ("srv_type", "srv_name"),
 }
 """Required parameters of rclpy ``Node`` methods (Jazzy), in order."""
-INTERFACE = re.compile(r"\w+\.(msg|srv|action)\.\w+")
+INTERFACE = lazy_pattern(r"\w+\.(msg|srv|action)\.\w+")
 """The dotted name of a message, service or action class (``std_msgs.msg.String``)."""
 _DISPLAYS = {ast.List: "list", ast.Tuple: "tuple", ast.Dict: "dict", ast.Set: "set",
              ast.JoinedStr: "str"}

@@ -26,6 +26,7 @@ from pkgtool.records import record
 from pkgtool.rules.console_scripts import scripts_and_modules
 from pkgtool.rules.node_api import NODE_CLASSES, name_argument, node_constructions
 from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.lazy_regex import lazy_pattern
 
 PERMISSIVE = frozenset({"allow_undeclared_parameters",
                         "automatically_declare_parameters_from_overrides"})
@@ -39,8 +40,8 @@ BUILT_IN = frozenset({"use_sim_time", "start_type_description_service"})
 _BOOLS = frozenset({"Y", "y", "yes", "Yes", "YES", "true", "True", "TRUE", "on", "On", "ON",
                     "N", "n", "no", "No", "NO", "false", "False", "FALSE", "off", "Off", "OFF"})
 """Plain scalars rcl's YAML parameter parser reads as booleans."""
-_INT = re.compile(r"[+-]?(0[xX][0-9a-fA-F]+|0[0-7]*|[1-9][0-9]*)")
-_FLOAT = re.compile(r"[+-]?((\d+\.?\d*|\.\d+)([eE][+-]?\d+)?|inf|infinity|nan)", re.I)
+_INT = lazy_pattern(r"[+-]?(0[xX][0-9a-fA-F]+|0[0-7]*|[1-9][0-9]*)")
+_FLOAT = lazy_pattern(r"[+-]?((\d+\.?\d*|\.\d+)([eE][+-]?\d+)?|inf|infinity|nan)", re.I)
 _SPECIAL_FLOATS = frozenset(f"{sign}.{word}" for sign in ("", "+", "-")
                             for word in ("inf", "Inf", "INF")) | {".nan", ".NaN", ".NAN"}
 
@@ -392,7 +393,7 @@ def fully_seen_parameter_files(package: Package) -> dict[str, tuple[NodeRef, ...
             if not any(posixpath.basename(path) in text for text in code)}
 
 
-_XML_INCLUDE = re.compile(r"<include\b.*?(?:/>|</include>)", re.S)
+_XML_INCLUDE = lazy_pattern(r"<include\b.*?(?:/>|</include>)", re.S)
 
 
 def _handed_to_includes(package: Package) -> str:

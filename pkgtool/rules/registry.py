@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import importlib
-import re
 import sys
 from collections.abc import Callable, Iterable
 from functools import cache
@@ -11,14 +10,15 @@ from typing import TYPE_CHECKING, NamedTuple, TypeAlias
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.records import record
+from pkgtool.lazy_regex import lazy_pattern
 
 if TYPE_CHECKING:
     from pkgtool.model.package import Package
 
 Check: TypeAlias = "Callable[[Package], Iterable[Hit]]"
 
-CODE_PATTERN = re.compile(r"^[A-Z]{3}\d{3}$")
-NAME_PATTERN = re.compile(r"^[a-z][a-z0-9]*(-[a-z0-9]+)*$")
+CODE_PATTERN = lazy_pattern(r"^[A-Z]{3}\d{3}$")
+NAME_PATTERN = lazy_pattern(r"^[a-z][a-z0-9]*(-[a-z0-9]+)*$")
 DOC_SECTIONS = ("## What it does", "## Why is this bad?", "## Example", "## Use instead")
 
 FAMILIES = {

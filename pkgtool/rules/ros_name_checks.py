@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-import re
+from pkgtool.lazy_regex import lazy_pattern
 
-_NODE_NAME = re.compile(r"[A-Za-z_][A-Za-z0-9_]*")
-_TOPIC_CHARS = re.compile(r"[A-Za-z0-9_/~]*")
+_NODE_NAME = lazy_pattern(r"[A-Za-z_][A-Za-z0-9_]*")
+_TOPIC_CHARS = lazy_pattern(r"[A-Za-z0-9_/~]*")
 
 
 def node_name_problem(name: str) -> str | None:

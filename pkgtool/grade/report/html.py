@@ -9,7 +9,6 @@ Content-Security-Policy forbids anything else. Student text goes through
 
 from __future__ import annotations
 
-import re
 import statistics
 from collections import Counter
 from collections.abc import Sequence
@@ -18,10 +17,11 @@ from pkgtool.grade.report import points
 from pkgtool.grade.results import SubmissionResult
 from pkgtool.grade.rubric import Rubric
 from pkgtool.report.html import page, text
+from pkgtool.lazy_regex import lazy_pattern
 
 BINS = 10
 """Histogram bars: scores as a share of the maximum, in tenths (the last bar holds 100 %)."""
-_FINDING = re.compile(r":\d+: ([A-Z]{3}\d{3}) ")
+_FINDING = lazy_pattern(r":\d+: ([A-Z]{3}\d{3}) ")
 _STYLE = """body{font-family:system-ui,sans-serif;margin:2em;max-width:70em;color:#222}
 table{border-collapse:collapse;margin:1em 0}td,th{border:1px solid #ccc;padding:.3em .6em}
 th{background:#f3f3f3;text-align:left}td.num{text-align:right}.error{color:#a00}

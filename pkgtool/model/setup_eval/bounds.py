@@ -10,9 +10,9 @@ statement is refused (``OutOfBudget``), which lint reports as not evaluated.
 
 from __future__ import annotations
 
-import re
 import string
 from typing import Any
+from pkgtool.lazy_regex import lazy_pattern
 
 MAX_STEPS = 200_000
 """Evaluation steps before the evaluator gives up (loops over huge globs, runaway code)."""
@@ -23,10 +23,10 @@ MAX_INT_BITS = 65_536
 MAX_COST = 20_000_000
 """Work units (characters or items touched) one setup.py may cost in all."""
 
-_SPEC = re.compile(r"(?:.?[<>=^])?[-+ ]?z?#?0?(?P<width>\d*)[,_]?(?:\.(?P<precision>\d+))?"
-                   r"[bcdeEfFgGnosxX%]?")
-_PERCENT = re.compile(r"%(?:\([^)]*\))?[#0\- +]*(?P<width>\*|\d*)(?:\.(?P<precision>\*|\d*))?"
-                      r"[hlL]?[diouxXeEfFgGcrsa%]")
+_SPEC = lazy_pattern(r"(?:.?[<>=^])?[-+ ]?z?#?0?(?P<width>\d*)[,_]?(?:\.(?P<precision>\d+))?"
+                     r"[bcdeEfFgGnosxX%]?")
+_PERCENT = lazy_pattern(r"%(?:\([^)]*\))?[#0\- +]*(?P<width>\*|\d*)(?:\.(?P<precision>\*|\d*))?"
+                        r"[hlL]?[diouxXeEfFgGcrsa%]")
 
 
 class TooLarge(Exception):

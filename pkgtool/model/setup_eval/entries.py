@@ -2,24 +2,25 @@
 
 from __future__ import annotations
 
-import re
 from typing import Any
 
 from pkgtool.model.setup_eval.tree import Tree, normalize
 from pkgtool.model.setup_eval.values import GlobOrigin, PathValue
 from pkgtool.model.setup_py import DataFile, DataSource, EntryPoint
 from pkgtool.model.span import Span
+from pkgtool.lazy_regex import lazy_pattern
 
 
 class Malformed(Exception):
     """A keyword value whose shape setuptools would not accept; treated as unresolved."""
 
 
-_SECTION = re.compile(r"^\[\s*(?P<group>[^\]]+?)\s*\]$")
-_VALUE = re.compile(r"^(?P<module>[^:\[\s]+)\s*(?::\s*(?P<attr>[^\[\s]+)\s*)?(?P<extras>\[.*\])?$")
+_SECTION = lazy_pattern(r"^\[\s*(?P<group>[^\]]+?)\s*\]$")
+_VALUE = lazy_pattern(
+    r"^(?P<module>[^:\[\s]+)\s*(?::\s*(?P<attr>[^\[\s]+)\s*)?(?P<extras>\[.*\])?$")
 
 
-_PART = re.compile(r"\w+")
+_PART = lazy_pattern(r"\w+")
 
 
 def _dotted(name: str | None) -> bool:

@@ -7,13 +7,13 @@ where colcon runs it).
 from __future__ import annotations
 
 import posixpath
-import re
 from collections.abc import Iterable, Iterator
 from fnmatch import fnmatchcase
 
 from pkgtool.model.setup_eval.bounds import MAX_COST, Budget, TooLarge
+from pkgtool.lazy_regex import lazy_pattern
 
-_MAGIC = re.compile(r"[*?[]")
+_MAGIC = lazy_pattern(r"[*?[]")
 
 VISIT_COST = 20
 """Budget units per folder entry a glob visits (Python-level work: about 20 characters' worth

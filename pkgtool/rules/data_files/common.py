@@ -5,7 +5,6 @@ from __future__ import annotations
 import ast
 import fnmatch
 import posixpath
-import re
 from collections.abc import Iterable, Iterator
 
 from pkgtool.model.installed import installed_data
@@ -17,10 +16,11 @@ from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.setup_py import DataFile, DataSource
 from pkgtool.rules.setup_values import checked_setup
 from pkgtool.rules.syntax_trees import Index, index_of, installed_trees
+from pkgtool.lazy_regex import lazy_pattern
 
-_SEARCH_PATHS = re.compile(r"\b(?:GZ_SIM|IGN_GAZEBO)_(?:RESOURCE|SYSTEM_PLUGIN)_PATH\b|"
-                           r"\bGAZEBO_(?:MODEL|RESOURCE|PLUGIN)_PATH\b|\b(?:GZ|IGN)_FILE_PATH\b|"
-                           r"\bSDF_PATH\b")
+_SEARCH_PATHS = lazy_pattern(r"\b(?:GZ_SIM|IGN_GAZEBO)_(?:RESOURCE|SYSTEM_PLUGIN)_PATH\b|"
+                             r"\bGAZEBO_(?:MODEL|RESOURCE|PLUGIN)_PATH\b|\b(?:GZ|IGN)_FILE_PATH\b|"
+                             r"\bSDF_PATH\b")
 """Environment variables of simulators' search paths: a launch file setting one joins share
 folders to put on it, where a missing folder is skipped, not read."""
 MARKER_FOLDER = "share/ament_index/resource_index/packages"
@@ -60,7 +60,7 @@ def uninstalled_launch_resources(package: Package
     return tuple(_uninstalled(package))
 
 
-_GLOB = re.compile(r"[*?[]")
+_GLOB = lazy_pattern(r"[*?[]")
 """A path that is a glob pattern (what ``glob.glob`` expands), not a file name."""
 
 

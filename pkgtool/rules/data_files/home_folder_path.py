@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import ast
-import re
 from collections.abc import Callable, Iterator
 
 from pkgtool.findings import Hit, Severity, shortened
@@ -14,14 +13,15 @@ from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
 from pkgtool.rules.data_files.common import ASKS_EXISTENCE, checks_files
 from pkgtool.rules.syntax_trees import Index, index_of, installed_trees, python_files
+from pkgtool.lazy_regex import lazy_pattern
 
-HOME_PATH = re.compile(r"(?<![\w.~$}/-])(?:/home/(?!\$|\{)[\w.-]+|/Users/[\w.-]+)/[\w.-]")
+HOME_PATH = lazy_pattern(r"(?<![\w.~$}/-])(?:/home/(?!\$|\{)[\w.-]+|/Users/[\w.-]+)/[\w.-]")
 """An absolute path inside a named user's home folder (not ``/home/$USER/``)."""
 _HINTS = ("/home/", "/Users/")
 _MESSAGES = frozenset({"print", "info", "warn", "warning", "error", "debug", "fatal", "log",
                        "exception", "critical", "write", "format", "add_argument"})
 """Calls whose text arguments are messages."""
-_PATH_END = re.compile(r"[\s\"'<>,;)\]}]")
+_PATH_END = lazy_pattern(r"[\s\"'<>,;)\]}]")
 _DATA_SUFFIXES = (".yaml", ".yml", ".xml", ".launch")
 
 
@@ -103,7 +103,7 @@ def _python_paths(path: str, tree: ast.Module) -> Iterator[Hit]:
 _HOME_HINTS = ("HOME", "~", "home()")
 _HOME_CALLS = frozenset({"os.getenv", "os.environ.get", "os.path.expanduser", "pathlib.Path.home",
                          "os.path.expandvars"})
-_WORKSPACE = re.compile(r"^~?/?(?:[\w.-]+/)*?[\w.-]+/(?:src|install)(?:/|$)")
+_WORKSPACE = lazy_pattern(r"^~?/?(?:[\w.-]+/)*?[\w.-]+/(?:src|install)(?:/|$)")
 """A path from the home folder into a colcon workspace's ``src`` or ``install`` folder."""
 
 

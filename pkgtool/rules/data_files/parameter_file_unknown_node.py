@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -10,6 +9,7 @@ from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.rules.node_parameters import file_entries, near, write_meant
 from pkgtool.rules.registry import rule
+from pkgtool.lazy_regex import lazy_pattern
 
 
 @rule("DAT009", "parameter-file-unknown-node", Severity.WARNING,
@@ -84,8 +84,8 @@ def parameter_file_unknown_node(package: Package) -> Iterator[Hit]:
                       spaces[0].startswith("/") else f"Write `/**/{base}` (any namespace)")
 
 
-_YAML_LOADS = re.compile(r"\byaml\.(?:safe_|full_|unsafe_)?load\b")
-_QUOTED = re.compile(r"""['"]([\w.-]+)['"]""")
+_YAML_LOADS = lazy_pattern(r"\byaml\.(?:safe_|full_|unsafe_)?load\b")
+_QUOTED = lazy_pattern(r"""['"]([\w.-]+)['"]""")
 
 
 @per_package

@@ -2,15 +2,15 @@
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import PYTHON_VERSIONS
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
+from pkgtool.lazy_regex import lazy_pattern
 
-_VERSIONED = re.compile(r"(?:^|/)python(\d+\.\d+)(?:/|$)")
+_VERSIONED = lazy_pattern(r"(?:^|/)python(\d+\.\d+)(?:/|$)")
 """A destination folder named for one Python version (``lib/python3.8/site-packages``)."""
 
 

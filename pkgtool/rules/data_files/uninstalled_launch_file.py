@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -13,6 +12,7 @@ from pkgtool.model.package import Package, defines_launch_description
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
 from pkgtool.rules.setup_values import checked_setup
+from pkgtool.lazy_regex import lazy_pattern
 
 NOT_INSTALLED_FOLDERS = frozenset({"test", "tests", "doc", "docs"})
 """Top-level folders whose launch files are test or documentation material."""
@@ -70,8 +70,8 @@ def uninstalled_launch_file(package: Package) -> Iterator[Hit]:
                                         f"`ros2 launch {package.name} {name}` will not find it")
 
 
-_KEPT_ASIDE = re.compile(r"(?i)(?:^|[_.\- ])(?:old|orig|original|copy|backup|bak|unused|"
-                         r"deprecated)(?:[_.\- ]|\d|$)")
+_KEPT_ASIDE = lazy_pattern(r"(?i)(?:^|[_.\- ])(?:old|orig|original|copy|backup|bak|unused|"
+                           r"deprecated)(?:[_.\- ]|\d|$)")
 """A copy kept aside by its name (``flow.launch_original.py``, ``ctrl_launch-Copy1.py``)."""
 
 

@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import ast
 import posixpath
-import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -16,6 +15,7 @@ from pkgtool.model.python_visitor import parse_tree
 from pkgtool.rules.imports import (ANY, console_script_files, declared, enclosing_package_import,
                                    installed_code, path_modules, python_package_of)
 from pkgtool.rules.registry import rule
+from pkgtool.lazy_regex import lazy_pattern
 
 
 @rule("DEP007", "sibling-module-import", Severity.ERROR,
@@ -191,9 +191,9 @@ def _imports_itself(module: PythonModule | None, name: str) -> bool:
     return module is not None and any(i.top_level == name for i in module.imports)
 
 
-_NEXT_TO = re.compile(r"`(?P<top>\w+)` is a module next to .*")
-_SIBLING_FIX = re.compile(r"Import `(?P<full>[\w.]+)` \(or `\.\w+`\) instead")
-_ENCLOSING = re.compile(r"`(?P<top>\w+)` is the package `(?P<full>[\w.]+)` this module is in.*")
+_NEXT_TO = lazy_pattern(r"`(?P<top>\w+)` is a module next to .*")
+_SIBLING_FIX = lazy_pattern(r"Import `(?P<full>[\w.]+)` \(or `\.\w+`\) instead")
+_ENCLOSING = lazy_pattern(r"`(?P<top>\w+)` is the package `(?P<full>[\w.]+)` this module is in.*")
 
 
 def installed_name(message: str, fix: str | None) -> tuple[str, str] | None:

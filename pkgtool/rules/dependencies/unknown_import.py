@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterable, Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -15,6 +14,7 @@ from pkgtool.rules.imports import (ANY, also_imported, declared, grouped, instal
                                    needs)
 from pkgtool.rules.registry import rule
 from pkgtool.rules.test_modules import test_files
+from pkgtool.lazy_regex import lazy_pattern
 
 
 @rule("DEP004", "unknown-import", Severity.WARNING,
@@ -96,7 +96,7 @@ def unknown_import(package: Package) -> Iterator[Hit]:
                           f"{need.key}` knows it", related)
 
 
-_BINDING = re.compile(r"(?:^|_)py(?:thon)?3?(?:_|$)|pybind")
+_BINDING = lazy_pattern(r"(?:^|_)py(?:thon)?3?(?:_|$)|pybind")
 """How ROS packages of Python bindings are named (``rmf_fleet_adapter_python``, ``tf2_ros_py``,
 ``python_qt_binding``): their module is often named otherwise (``rmf_adapter``)."""
 

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -16,6 +15,7 @@ from pkgtool.rules.imports import all_python, dependency_cause
 from pkgtool.rules.interface_types import interfaces_for, patched_interfaces
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import index_of, python_files, resolved_attributes
+from pkgtool.lazy_regex import lazy_pattern
 
 
 @rule("DEP008", "unknown-interface-import", Severity.ERROR,
@@ -228,7 +228,7 @@ def _fix(found: Mismatch) -> str | None:
     return f"Write `from {found.package}.{kind} import {name}`" if kind else None
 
 
-_WRITE_FROM = re.compile(r"Write `from ([\w.]+) import ([\w, ]+)`")
+_WRITE_FROM = lazy_pattern(r"Write `from ([\w.]+) import ([\w, ]+)`")
 
 
 def written_import(fix: str | None) -> tuple[str, tuple[str, ...]] | None:

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -11,8 +10,9 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.interface_types import interfaces_for
 from pkgtool.rules.registry import rule
+from pkgtool.lazy_regex import lazy_pattern
 
-_TYPE = re.compile(r"(?<![\w/.-])([a-z][a-z0-9_]*)/(msg|srv|action)/([A-Za-z]\w*)(?![\w/]|\.\w)")
+_TYPE = lazy_pattern(r"(?<![\w/.-])([a-z][a-z0-9_]*)/(msg|srv|action)/([A-Za-z]\w*)(?![\w/]|\.\w)")
 
 
 def _files(package: Package) -> Iterator[str]:
@@ -67,7 +67,7 @@ def unknown_interface_type(package: Package) -> Iterator[Hit]:
                 yield Hit(Span.of_offset(path, text, match.start()), problem)
 
 
-_HASH_COMMENT = re.compile(r"(?:^|\s)#")
+_HASH_COMMENT = lazy_pattern(r"(?:^|\s)#")
 """Where a comment starts in a YAML or Python line (a ``#`` at the start or after a space)."""
 
 

@@ -2,21 +2,21 @@
 
 from __future__ import annotations
 
-import re
 
 from pkgtool.model.cmake_interfaces import listed_interfaces, with_included
 from pkgtool.model.context import interface_file
 from pkgtool.model.interface_file import InterfaceFile, read_interface
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package, is_interface_definition
+from pkgtool.lazy_regex import lazy_pattern
 
 PRIMITIVES = frozenset({"bool", "byte", "char", "float32", "float64", "int8", "uint8", "int16",
                         "uint16", "int32", "uint32", "int64", "uint64", "string", "wstring",
                         "duration", "time"})
 """The basic types of ``.msg`` files rosidl knows (``duration`` and ``time`` kept from ROS 1)."""
-LOWER_NAME = re.compile(r"(?!.*__)(?!.*_$)[a-z][a-z0-9_]*")
+LOWER_NAME = lazy_pattern(r"(?!.*__)(?!.*_$)[a-z][a-z0-9_]*")
 """What rosidl accepts for a package or field name."""
-MESSAGE_NAME = re.compile(r"[A-Z][A-Za-z0-9]*")
+MESSAGE_NAME = lazy_pattern(r"[A-Z][A-Za-z0-9]*")
 """What rosidl accepts for a message name."""
 
 

@@ -12,15 +12,16 @@ from pkgtool.model.span import Span
 from pkgtool.rules.interfaces._files import (LOWER_NAME, PRIMITIVES, base_name,
                                              built_interface_files, split_type)
 from pkgtool.rules.registry import rule
+from pkgtool.lazy_regex import lazy_pattern
 
-_CONSTANT_NAME = re.compile(r"[A-Z](?:[A-Z0-9_]?[A-Z0-9]+)*")
+_CONSTANT_NAME = lazy_pattern(r"[A-Z](?:[A-Z0-9_]?[A-Z0-9]+)*")
 """What rosidl accepts for a constant's name."""
 _INTEGERS = {"byte": (0, 255), "char": (0, 255), "int8": (-2 ** 7, 2 ** 7 - 1),
              "uint8": (0, 2 ** 8 - 1), "int16": (-2 ** 15, 2 ** 15 - 1),
              "uint16": (0, 2 ** 16 - 1), "int32": (-2 ** 31, 2 ** 31 - 1),
              "uint32": (0, 2 ** 32 - 1), "int64": (-2 ** 63, 2 ** 63 - 1),
              "uint64": (0, 2 ** 64 - 1)}
-_ARRAY = re.compile(r"\[(?:<=)?(\d*)\]")
+_ARRAY = lazy_pattern(r"\[(?:<=)?(\d*)\]")
 _KIND_NAMES = {"msg": "a message", "srv": "a service", "action": "an action"}
 
 

@@ -3,13 +3,13 @@
 from __future__ import annotations
 
 import posixpath
-import re
 
 from pkgtool.model.installed import is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.model.scripts import library_entries, script_names
+from pkgtool.lazy_regex import lazy_pattern
 
-LAUNCH_FILE_NAME = re.compile(r"(?:^|[._-])launch\.(?:py|xml|ya?ml)$")
+LAUNCH_FILE_NAME = lazy_pattern(r"(?:^|[._-])launch\.(?:py|xml|ya?ml)$")
 """The names ROS 2 gives launch files (``bringup_launch.py``, ``robot.launch.xml``): never
 an executable's."""
 

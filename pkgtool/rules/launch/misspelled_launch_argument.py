@@ -14,6 +14,7 @@ from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.launch._python_launch import python_launch_files
 from pkgtool.rules.registry import rule
+from pkgtool.lazy_regex import lazy_pattern
 
 _DECLARE = "DeclareLaunchArgument"
 _READ = "LaunchConfiguration"
@@ -22,7 +23,7 @@ _FRONTEND_DECLARED = (re.compile(r"<(?:arg|let)\b[^>]*?\bname\s*=\s*[\"']([^\"']
                                  re.M))
 """An XML (``<arg name="x">``, ``<let name="x">``) or YAML (``- arg:`` / ``name: x``)
 launch file's declared or set arguments."""
-_FRONTEND_READ = re.compile(r"\$\(var\s+([\w.-]+)\s*\)")
+_FRONTEND_READ = lazy_pattern(r"\$\(var\s+([\w.-]+)\s*\)")
 """A ``$(var x)`` substitution of an XML or YAML launch file."""
 
 

@@ -11,8 +11,9 @@ from pkgtool.knowledge.launch_api import FRONTEND_SUBSTITUTIONS, ROS1_SUBSTITUTI
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
+from pkgtool.lazy_regex import lazy_pattern
 
-SUBSTITUTION = re.compile(r"\$\(\s*([A-Za-z_][\w-]*)")
+SUBSTITUTION = lazy_pattern(r"\$\(\s*([A-Za-z_][\w-]*)")
 """The start of a ``$(name ...)`` substitution, and its name."""
 
 _COMMENTS = {"xml": re.compile(r"<!--.*?-->", re.DOTALL), "yaml": re.compile(r"(?m)(?:^|\s)#.*$")}

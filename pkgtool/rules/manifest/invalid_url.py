@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import difflib
-import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -11,9 +10,10 @@ from pkgtool.model.package import Package
 from pkgtool.rules.manifest.common import tree
 from pkgtool.rules.manifest.schema import URL_TYPES, token, valid_any_uri
 from pkgtool.rules.registry import rule
+from pkgtool.lazy_regex import lazy_pattern
 
 
-_SCP_LIKE = re.compile(r"[\w.-]+@(?P<host>[\w.-]+):(?P<path>[^/].*)")
+_SCP_LIKE = lazy_pattern(r"[\w.-]+@(?P<host>[\w.-]+):(?P<path>[^/].*)")
 """git's scp-like address ``git@host:owner/repo.git``, which is not a URI."""
 _SYNONYMS = {
     **dict.fromkeys(("source", "code", "git", "github", "repo", "vcs", "scm"), "repository"),

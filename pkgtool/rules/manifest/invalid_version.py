@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -10,9 +9,10 @@ from pkgtool.model.package import Package
 from pkgtool.rules.manifest.common import tree
 from pkgtool.rules.manifest.schema import VERSION, token
 from pkgtool.rules.registry import rule
+from pkgtool.lazy_regex import lazy_pattern
 
-_NUMBERS = re.compile(r"v?([0-9]+)(?:\.([0-9]+))?(?:\.([0-9]+))?")
-_CATKIN_VERSION = re.compile(r"[0-9]+\.[0-9]+\.[0-9]+")
+_NUMBERS = lazy_pattern(r"v?([0-9]+)(?:\.([0-9]+))?(?:\.([0-9]+))?")
+_CATKIN_VERSION = lazy_pattern(r"[0-9]+\.[0-9]+\.[0-9]+")
 
 
 def _suggestion(version: str) -> str | None:

@@ -12,6 +12,7 @@ import functools
 import re
 
 from pkgtool.records import record
+from pkgtool.lazy_regex import lazy_pattern
 
 FORMATS = (1, 2, 3)
 
@@ -28,13 +29,13 @@ URL_TYPES = ("website", "bugtracker", "repository")
 XSI = "{http://www.w3.org/2001/XMLSchema-instance}"
 
 # Linear-time rewrites of the XSD patterns (same languages, no nested quantifiers).
-NAME = re.compile(r"[a-z][a-z0-9]*(?:_[a-z0-9]+)*")
-VERSION = re.compile(r"(?:0|[1-9][0-9]*)(?:\.(?:0|[1-9][0-9]*)){2}")
-VERSION_LIMIT = re.compile(r"(?:0|[1-9][0-9]*)(?:\.(?:0|[1-9][0-9]*)){0,2}")
-EMAIL = re.compile(r"[-a-zA-Z0-9_%+]+(?:\.[-a-zA-Z0-9_%+]+)*"
-                   r"@[-a-zA-Z0-9%]+(?:\.[-a-zA-Z0-9%]+)*\.[a-zA-Z]{2,}")
-DEPEND_CONDITION = re.compile(r"[$A-Za-z0-9_ \t\n\r\"'<>!=()-]*")
-GROUP_CONDITION = re.compile(r"[$A-Za-z0-9_ \t\n\r<>!=()-]*")
+NAME = lazy_pattern(r"[a-z][a-z0-9]*(?:_[a-z0-9]+)*")
+VERSION = lazy_pattern(r"(?:0|[1-9][0-9]*)(?:\.(?:0|[1-9][0-9]*)){2}")
+VERSION_LIMIT = lazy_pattern(r"(?:0|[1-9][0-9]*)(?:\.(?:0|[1-9][0-9]*)){0,2}")
+EMAIL = lazy_pattern(r"[-a-zA-Z0-9_%+]+(?:\.[-a-zA-Z0-9_%+]+)*"
+                     r"@[-a-zA-Z0-9%]+(?:\.[-a-zA-Z0-9%]+)*\.[a-zA-Z]{2,}")
+DEPEND_CONDITION = lazy_pattern(r"[$A-Za-z0-9_ \t\n\r\"'<>!=()-]*")
+GROUP_CONDITION = lazy_pattern(r"[$A-Za-z0-9_ \t\n\r<>!=()-]*")
 
 
 @functools.cache

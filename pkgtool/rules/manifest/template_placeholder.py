@@ -2,15 +2,15 @@
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.manifest.common import tree
 from pkgtool.rules.registry import rule
+from pkgtool.lazy_regex import lazy_pattern
 
-_TODO = re.compile(r"TODO(?::|$)")
+_TODO = lazy_pattern(r"TODO(?::|$)")
 """``TODO: Package description`` (ros2 pkg create) and a bare ``TODO`` (catkin_create_pkg)."""
 _PLACEHOLDER_DOMAIN = "@todo.todo"
 """``ros2 pkg create`` writes ``<user>@todo.todo`` when git has no ``user.email``."""

@@ -17,13 +17,14 @@ from pkgtool.rules.python._message_instances import kept, known_messages
 from pkgtool.rules.python._messages import message_instances
 from pkgtool.rules.python._value_types import certain_type
 from pkgtool.rules.syntax_trees import Index
+from pkgtool.lazy_regex import lazy_pattern
 
 _PYTHON_TYPES = ((re.compile(r"float|double"), "float"),
                  (re.compile(r"u?int(8|16|32|64)"), "int"),
                  (re.compile(r"boolean"), "bool"),
                  (re.compile(r"w?string(<=?\d+>)?"), "str"))
 """rosidl basic types and the Python type rclpy gives a field of each."""
-ARRAY_SEQUENCE = re.compile(r"sequence<(u?int(8|16|32|64)|float|double)[,>].*")
+ARRAY_SEQUENCE = lazy_pattern(r"sequence<(u?int(8|16|32|64)|float|double)[,>].*")
 """Sequences rclpy stores as an ``array.array`` (converting what it is given); the others
 (strings, bools, octets, messages) are lists."""
 ORDER = {ast.Lt: "<", ast.Gt: ">", ast.LtE: "<=", ast.GtE: ">="}

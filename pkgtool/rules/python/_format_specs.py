@@ -10,9 +10,10 @@ from collections.abc import Iterator
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.rules.node_api import unpacks
 from pkgtool.rules.syntax_trees import Index
+from pkgtool.lazy_regex import lazy_pattern
 
-PERCENT = re.compile(r"%(?:\((?P<key>[^)]*)\))?[-#0 +]*(?P<width>\*|\d+)?"
-                     r"(?:\.(?P<precision>\*|\d+))?[hlL]?(?P<type>[diouxXeEfFgGcrsa%])")
+PERCENT = lazy_pattern(r"%(?:\((?P<key>[^)]*)\))?[-#0 +]*(?P<width>\*|\d+)?"
+                       r"(?:\.(?P<precision>\*|\d+))?[hlL]?(?P<type>[diouxXeEfFgGcrsa%])")
 """One ``%`` conversion of printf-style formatting."""
 
 

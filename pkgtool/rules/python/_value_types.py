@@ -17,7 +17,6 @@ a read of ``msg``: a str; :mod:`._reaching`).
 from __future__ import annotations
 
 import ast
-import re
 from collections.abc import Iterator
 
 from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
@@ -30,6 +29,7 @@ from pkgtool.rules.node_parameters import module_nodes
 from pkgtool.rules.python._message_instances import binding_counts, method_receiver
 from pkgtool.rules.python._reaching import reaching_store
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
+from pkgtool.lazy_regex import lazy_pattern
 
 PARAMETER = "Parameter"
 """The type of what a node's ``get_parameter()`` returns (``rclpy.parameter.Parameter``)."""
@@ -38,7 +38,8 @@ PARAMETER_TEXT = "str (a Parameter object's repr)"
 one: a str, ``<rclpy.parameter.Parameter object at 0x...>``, not the parameter's value."""
 _BUILTINS = {"int": "int", "float": "float", "str": "str", "bool": "bool", "len": "int"}
 """Builtins whose call always gives a value of one type, and that type."""
-_INTERFACE_CLASS = re.compile(INTERFACE.pattern + r"(\.(Request|Response|Goal|Result|Feedback))?")
+_INTERFACE_CLASS = lazy_pattern(
+    INTERFACE.pattern + r"(\.(Request|Response|Goal|Result|Feedback))?")
 """An imported message, service or action class, or one of the messages of the latter two."""
 NUMBER_TYPES = frozenset({"int", "float", "bool"})
 """The certain types that are numbers (a bool adds and compares as one)."""

@@ -4,7 +4,6 @@ something other than a service type, an action client or server no action type."
 from __future__ import annotations
 
 import ast
-import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -15,8 +14,9 @@ from pkgtool.rules.node_api import (ACTION_PARAMETERS, ACTIONS, PARAMETERS, argu
                                     node_api_calls)
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.lazy_regex import lazy_pattern
 
-_KIND = re.compile(r"(?P<package>\w+)\.(?P<kind>msg|srv|action)\.(?P<name>\w+)(?P<part>\.\w+)?")
+_KIND = lazy_pattern(r"(?P<package>\w+)\.(?P<kind>msg|srv|action)\.(?P<name>\w+)(?P<part>\.\w+)?")
 """An imported interface class: ``std_msgs.msg.String``, ``std_srvs.srv.Trigger.Request``."""
 _MESSAGE_PARTS = {"srv": (".Request", ".Response"),
                   "action": (".Goal", ".Result", ".Feedback")}

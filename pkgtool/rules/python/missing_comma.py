@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import ast
-import re
 import warnings
 from collections.abc import Iterator
 
@@ -13,9 +12,10 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import python_files
+from pkgtool.lazy_regex import lazy_pattern
 
 _HINT = "; perhaps you missed a comma?"
-_QUOTED = re.compile(r"'(\w+)'")
+_QUOTED = lazy_pattern(r"'(\w+)'")
 _LITERALS = (ast.Constant, ast.Tuple, ast.List, ast.ListComp, ast.Set, ast.SetComp, ast.Dict,
              ast.DictComp, ast.GeneratorExp, ast.JoinedStr, ast.FormattedValue)
 """Every node kind CPython's compiler warns about when called or indexed (a superset)."""

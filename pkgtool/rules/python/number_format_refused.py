@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import ast
-import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -14,10 +13,11 @@ from pkgtool.rules.python._format_specs import format_specs
 from pkgtool.rules.python._value_types import NUMBER_TYPES
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import installed_trees
+from pkgtool.lazy_regex import lazy_pattern
 
 _SAMPLES = {"int": 1, "float": 1.5, "bool": True}
 """A value of each number type, to ask Python itself whether it takes a specification."""
-_HUGE = re.compile(r"\d{5,}")
+_HUGE = lazy_pattern(r"\d{5,}")
 """A width or precision too large to try (formatting would build a huge string)."""
 
 

@@ -4,7 +4,6 @@ service or action client something that is certainly no request or goal."""
 from __future__ import annotations
 
 import ast
-import re
 from collections.abc import Callable, Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -21,10 +20,11 @@ from pkgtool.rules.python._messages import message_instances
 from pkgtool.rules.python._value_types import certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.lazy_regex import lazy_pattern
 
 _ACCEPTED = frozenset({"bytes", "NoneType", "ellipsis"})
 """Literals never reported: ``bytes`` (published raw, serialized) and ``None``/``...``."""
-_BASIC = re.compile(r"boolean|float|double|u?int(?:8|16|32|64)|w?string(?:<\d+>)?")
+_BASIC = lazy_pattern(r"boolean|float|double|u?int(?:8|16|32|64)|w?string(?:<\d+>)?")
 """Field types whose values are plain Python values (``bool``, ``float``, ``int``, ``str``)."""
 
 

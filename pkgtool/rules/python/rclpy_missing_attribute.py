@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import ast
-import re
 from collections.abc import Iterator
 from difflib import get_close_matches
 
@@ -24,6 +23,7 @@ from pkgtool.rules.python._rclpy_objects import object_class
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings
 from pkgtool.rules.syntax_trees import Index, installed_trees, resolved_attributes
+from pkgtool.lazy_regex import lazy_pattern
 
 
 @rule("PYC004", "rclpy-missing-attribute", Severity.ERROR,
@@ -150,7 +150,7 @@ def _goal_handle_reads(package: Package) -> Iterator[Hit]:
                           f"Use `{name}.{close[0]}`" if close else None)
 
 
-_MEMBER = re.compile(r"[A-Z][A-Z0-9_]*")
+_MEMBER = lazy_pattern(r"[A-Z][A-Z0-9_]*")
 """How the members of rclpy's QoS policy enums are named."""
 
 

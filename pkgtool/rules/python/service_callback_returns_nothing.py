@@ -4,7 +4,6 @@ returns its result."""
 from __future__ import annotations
 
 import ast
-import re
 from collections.abc import Iterator
 from typing import NamedTuple
 
@@ -19,6 +18,7 @@ from pkgtool.rules.python._value_types import PARAMETER, PARAMETER_TEXT, certain
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import plainly_decorated, returns_none, scope_walk
 from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.lazy_regex import lazy_pattern
 
 
 class _Callback(NamedTuple):
@@ -75,10 +75,10 @@ _STOPS = (ast.Return, ast.Raise, ast.While, ast.Try, ast.With, ast.AsyncWith, as
 _PLAIN_ENDS = (ast.Expr, ast.Assign, ast.AugAssign, ast.AnnAssign)
 
 
-_RESULT_KINDS = re.compile(r"_(Response|Result)$")
+_RESULT_KINDS = lazy_pattern(r"_(Response|Result)$")
 """Field types a callback's result could be (a message holding a service response or action
 result: the field may be returned)."""
-_MESSAGE_CLASS = re.compile(r"\w+\.msg\.\w+")
+_MESSAGE_CLASS = lazy_pattern(r"\w+\.msg\.\w+")
 """The qualified name of a message class (not a service's or action's message)."""
 _DEPTH = 8
 """How many names deep a returned value is followed (``b = Path()``, ``a = b``)."""

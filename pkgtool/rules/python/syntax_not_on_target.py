@@ -14,6 +14,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.imports import all_python
 from pkgtool.rules.registry import rule
+from pkgtool.lazy_regex import lazy_pattern
 
 
 def _problem(text: str, version: tuple[int, int]) -> SyntaxError | None:
@@ -28,7 +29,7 @@ def _problem(text: str, version: tuple[int, int]) -> SyntaxError | None:
     return None
 
 
-_EXCEPT_STAR = re.compile(r"^[ \t]*except[ \t]*\*", re.MULTILINE)
+_EXCEPT_STAR = lazy_pattern(r"^[ \t]*except[ \t]*\*", re.MULTILINE)
 
 
 def _where(path: str, text: str, problem: SyntaxError) -> Span:

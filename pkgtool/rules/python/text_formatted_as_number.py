@@ -14,10 +14,11 @@ from pkgtool.rules.python._format_specs import format_specs, percent_values
 from pkgtool.rules.python._message_instances import binding_counts
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.lazy_regex import lazy_pattern
 
-_SPEC = re.compile(r"(?:.(?P<align>[<>=^])|(?P<first>[<>=^]))?(?P<sign>[-+ ])?(?P<z>z)?"
-                   r"(?P<alt>#)?0?\d*(?P<group>[,_])?(?:\.\d+)?(?P<type>[bcdeEfFgGnosxX%])?",
-                   re.S)
+_SPEC = lazy_pattern(r"(?:.(?P<align>[<>=^])|(?P<first>[<>=^]))?(?P<sign>[-+ ])?(?P<z>z)?"
+                     r"(?P<alt>#)?0?\d*(?P<group>[,_])?(?:\.\d+)?(?P<type>[bcdeEfFgGnosxX%])?",
+                     re.S)
 """Python's format specification mini-language (``[[fill]align][sign][z][#][0][width]
 [grouping][.precision][type]``), the parts a str refuses named."""
 _PERCENT_ERRORS = {**dict.fromkeys("diu", "%{} format: a real number is required, not str"),

@@ -4,7 +4,6 @@ takes."""
 from __future__ import annotations
 
 import ast
-import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -15,6 +14,7 @@ from pkgtool.rules.python._assignments import assigned_values
 from pkgtool.rules.python._value_types import receiver_class
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import installed_trees
+from pkgtool.lazy_regex import lazy_pattern
 
 POSITIONAL = {
     "create_publisher": (("msg_type", "topic", "qos_profile"),
@@ -67,7 +67,7 @@ def _function_calls(package: Package) -> Iterator[Hit]:
 _EXECUTOR_SLOTS = {"rclpy.spin_until_future_complete": 2}
 """rclpy functions taking an executor by position, and its index (``node, future, executor,
 timeout_sec``)."""
-_TIMEOUT_NAME = re.compile(r"(?i)time|sec|duration|wait")
+_TIMEOUT_NAME = lazy_pattern(r"(?i)time|sec|duration|wait")
 
 
 def _timeouts_as_executor(package: Package) -> Iterator[Hit]:

@@ -10,8 +10,9 @@ from pkgtool.knowledge.licenses import AMBIGUOUS, same_license, spdx_expression,
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
 from pkgtool.rules.setup_values import checked_setup, same_text, text_of
+from pkgtool.lazy_regex import lazy_pattern
 
-_SEPARATORS = re.compile(r"\s+(?:or|and)\s+|\s*[,;/]\s*", re.IGNORECASE)
+_SEPARATORS = lazy_pattern(r"\s+(?:or|and)\s+|\s*[,;/]\s*", re.IGNORECASE)
 _FAMILIES = frozenset({"bsd", "gpl", "lgpl", "agpl", "apache", "mpl", "epl", "mit"})
 
 

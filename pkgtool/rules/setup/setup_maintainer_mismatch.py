@@ -2,15 +2,15 @@
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
 from pkgtool.rules.setup_values import checked_setup, same_text, text_of
+from pkgtool.lazy_regex import lazy_pattern
 
-_ADDRESSED = re.compile(r"\s*(?P<name>[^<>]*?)\s*<\s*(?P<address>[^<>]*?)\s*>\s*")
+_ADDRESSED = lazy_pattern(r"\s*(?P<name>[^<>]*?)\s*<\s*(?P<address>[^<>]*?)\s*>\s*")
 """A person written as ``Name <address>`` (or ``<address>`` alone)."""
 
 

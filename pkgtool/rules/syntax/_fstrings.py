@@ -3,9 +3,10 @@
 from __future__ import annotations
 
 import re
+from pkgtool.lazy_regex import lazy_pattern
 
-_OPENING = re.compile(r"(?<![\w'\"])((?:[rR]?[fF]|[fF][rR]))('''|\"\"\"|'|\")")
-_PREFIX = re.compile(r"(?<!\w)[rRbBuUfF]{1,2}$")
+_OPENING = lazy_pattern(r"(?<![\w'\"])((?:[rR]?[fF]|[fF][rR]))('''|\"\"\"|'|\")")
+_PREFIX = lazy_pattern(r"(?<!\w)[rRbBuUfF]{1,2}$")
 
 
 def _string_end(text: str, i: int, quote: str, fmt: bool, nested: bool = False

@@ -2,18 +2,18 @@
 
 from __future__ import annotations
 
-import re
 import sys
 
 from pkgtool.knowledge.rosdistro import PYTHON_VERSIONS
 from pkgtool.model.package import Package
 from pkgtool.model.span import ParseProblem
 from pkgtool.rules.syntax._fstrings import needs_python_312
+from pkgtool.lazy_regex import lazy_pattern
 
-_TYPE_PARAMETERS = re.compile(r"^\s*(?:type\s+\w+\s*(?:\[|=)|(?:async\s+)?def\s+\w+\s*\[|"
-                              r"class\s+\w+\s*\[)")
+_TYPE_PARAMETERS = lazy_pattern(r"^\s*(?:type\s+\w+\s*(?:\[|=)|(?:async\s+)?def\s+\w+\s*\[|"
+                                r"class\s+\w+\s*\[)")
 """``type`` aliases and type parameters (Python 3.12, PEP 695)."""
-_EXCEPT_STAR = re.compile(r"^\s*except\s*\*")
+_EXCEPT_STAR = lazy_pattern(r"^\s*except\s*\*")
 """``except*`` (Python 3.11, PEP 654)."""
 _SINCE = (((3, 12), _TYPE_PARAMETERS), ((3, 11), _EXCEPT_STAR))
 
