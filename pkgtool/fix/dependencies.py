@@ -17,10 +17,11 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.knowledge.interfaces import kind_in
 from pkgtool.rules.interface_types import interfaces_for
+from pkgtool.rules.launch._python_launch import launch_tests
 from pkgtool.rules.dependencies.sibling_import import installed_name
 from pkgtool.rules.dependencies.unknown_interface_import import written_import
-from pkgtool.rules.imports import (BUILD_ONLY, Need, declared, needs, test_code,
-                                   unmet_runtime_needs)
+from pkgtool.rules.imports import (BUILD_ONLY, Need, declared, is_test_launch, needs,
+                                   test_code, unmet_runtime_needs)
 from pkgtool.lazy_regex import lazy_pattern
 
 
@@ -121,7 +122,8 @@ def launch_import(package: Package, findings: list[Finding]) -> Iterator[Fix | R
 
 @fixer("LCH002", "Add an `<exec_depend>` for the package the launch file uses")
 def launch_package(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
-    """Declare each ROS package a launch file starts or includes (the name is its key).
+    """Declare each ROS package a launch file starts or includes (the name is its key), as a
+    ``<test_depend>`` for a launch file of the tests or a ``launch_testing`` test.
 
     Only the package each finding names (an XML tag may use several, its own among them), and
     only names that resolve, as for every key these fixers add (see :func:`_resolves`).
@@ -131,14 +133,16 @@ def launch_package(package: Package, findings: list[Finding]) -> Iterator[Fix | 
         return
     wanted = {(_at(f.span), named.group(1)) for f in findings
               if (named := _NAMED.match(f.message)) is not None}
-    names = []
-    for launch in package.launch_files:
+    names: dict[str, str] = {}
+    tests = launch_tests(package)
+    for launch in (*package.launch_files, *tests):
+        tag = "test_depend" if launch in tests or is_test_launch(launch.path) else "exec_depend"
         used = [(n.package, n.package_span or n.span) for n in launch.nodes if n.package] + [
             (p.package, p.span) for p in launch.packages]
-        names += [name for name, span in used if (_at(span), name) in wanted and
-                  name not in names and name != package.name and _resolves(package, name)]
-    for name in names:
-        yield from _add(doc, "exec_depend", name)
+        names.update((name, tag) for name, span in used if (_at(span), name) in wanted and
+                     name not in names and name != package.name and _resolves(package, name))
+    for name, tag in names.items():
+        yield from _add(doc, tag, name)
 
 
 _LOOKED_UP = lazy_pattern(r"`([^`]+)` is used by the package's code")

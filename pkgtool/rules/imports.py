@@ -627,5 +627,9 @@ def misnamed(package: Package, need: Need) -> str | None:
 
 def launch_keys(package: Package, path: str) -> dict[str, Dependency]:
     """Keys a launch file may use: run-time ones, and test ones for launch files of tests."""
-    is_test = path.split("/", 1)[0] in ("test", "tests")
-    return declared(package, RUNTIME | TEST if is_test else RUNTIME)
+    return declared(package, RUNTIME | TEST if is_test_launch(path) else RUNTIME)
+
+
+def is_test_launch(path: str) -> bool:
+    """True for a launch file of the package's tests (under ``test/`` or ``tests/``)."""
+    return path.split("/", 1)[0] in ("test", "tests")

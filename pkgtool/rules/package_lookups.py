@@ -16,9 +16,11 @@ from pkgtool.rules.imports import (ANY, declaration, declared, dependency_cause,
 
 
 def unlisted_packages(package: Package, used: Iterable[tuple[str, Span]],
-                      available: Mapping[str, Dependency], user: str) -> Iterator[Hit]:
+                      available: Mapping[str, Dependency], user: str,
+                      tag: str = "exec_depend") -> Iterator[Hit]:
     """A hit for the first use of each package named in ``used`` (name, where) that is not this
-    one nor among the ``available`` keys; ``user`` says what uses it (``a launch file``)."""
+    one nor among the ``available`` keys; ``user`` says what uses it (``a launch file``),
+    ``tag`` how to declare it."""
     seen: set[str] = set()
     for name, span in sorted(used, key=lambda u: (u[1].line, u[1].col)):
         if name == package.name or name in available or name in seen:
@@ -27,7 +29,7 @@ def unlisted_packages(package: Package, used: Iterable[tuple[str, Span]],
         other = declared(package, ANY).get(name)
         missing = (f"declared only as {declaration(name, other)}" if other else
                    "not declared in package.xml")
-        fix = f"Add `<exec_depend>{name}</exec_depend>` to package.xml"
+        fix = f"Add `<{tag}>{name}</{tag}>` to package.xml"
         if not other and not _known(package, name):
             meant = [close for close in close_names(
                 name, package.context.distro, limit=3,

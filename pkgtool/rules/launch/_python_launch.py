@@ -6,6 +6,8 @@ from __future__ import annotations
 import ast
 from collections.abc import Iterator
 
+from pkgtool.model.launch import LaunchFile, is_launch_test, parse_launch
+from pkgtool.model.memo import per_package
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
@@ -43,3 +45,12 @@ def launch_class(call: ast.Call, index: Index) -> tuple[str, str]:
     import (``launch.actions``, ``DeclareLaunchArgument``); ``("", "")`` for any other call."""
     module, _, name = (index.qualified(call.func) or "").rpartition(".")
     return (module, name) if module.split(".")[0] in ("launch", "launch_ros") else ("", "")
+
+
+@per_package
+def launch_tests(package: Package) -> tuple[LaunchFile, ...]:
+    """The package's ``launch_testing`` tests (modules defining ``generate_test_description``)
+    read as Python launch files: the nodes they start, the packages they name."""
+    return tuple(parse_launch(module.path, text) for module in package.modules
+                 if (text := package.texts.get(module.path)) is not None and
+                 is_launch_test(module.path, text))

@@ -6,7 +6,8 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import launch_keys
+from pkgtool.rules.imports import RUNTIME, TEST, declared, is_test_launch
+from pkgtool.rules.launch._python_launch import launch_tests
 from pkgtool.rules.package_lookups import unlisted_packages
 from pkgtool.rules.registry import rule
 
@@ -26,7 +27,8 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
     said so, with the package (of the workspace, this one or the release) it is a typo of,
     if any. Each one other than this
     package must be an `<exec_depend>` or `<depend>` (a `<test_depend>` for launch files
-    under `test/`), or be brought in by a released metapackage declared so (`ros2_control`
+    under `test/` and for `launch_testing` tests, whose `generate_test_description` starts
+    nodes too), or be brought in by a released metapackage declared so (`ros2_control`
     brings `controller_manager`;
     metapackages nest, but a regular package's own dependencies never count).
     Packages used only after the launch file checked that they are installed (`if 'nav2_bringup'
@@ -54,9 +56,13 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
     """
     if package.manifest is None:
         return
-    for launch in package.launch_files:
-        available = launch_keys(package, launch.path)
+    tests = {launch.path for launch in launch_tests(package)}
+    for launch in (*package.launch_files, *launch_tests(package)):
+        test = launch.path in tests or is_test_launch(launch.path)
+        available = declared(package, RUNTIME | TEST) if test else \
+            declared(package, RUNTIME)
         used = [(n.package, n.package_span or n.span) for n in launch.nodes
                 if n.package and not n.optional and not n.unused] + [
             (p.package, p.span) for p in launch.packages if not p.optional and not p.unused]
-        yield from unlisted_packages(package, used, available, "a launch file")
+        yield from unlisted_packages(package, used, available, "a launch file",
+                                     "test_depend" if test else "exec_depend")
