@@ -305,8 +305,15 @@ def module_nodes(package: Package) -> dict[str, ModuleNodes]:
         declaring = _declaring_calls(tree, index) if direct else []
         found[module.path] = ModuleNodes(
             tuple(_node_class(module.path, c, index, skip, declaring) for c in direct),
-            len(index.classes) > len(direct), calls)
+            any(c not in direct and _may_be_a_node(c) for c in index.classes), calls)
     return found
+
+
+def _may_be_a_node(cls: ast.ClassDef) -> bool:
+    """False for a class that derives from nothing (``class PController:``, ``(object)``):
+    it cannot be a node; any other may be one through its bases."""
+    return cls.keywords != [] or any(not (isinstance(b, ast.Name) and b.id == "object")
+                                     for b in cls.bases)
 
 
 def node_classes(package: Package) -> Iterator[NodeClass]:
@@ -319,9 +326,10 @@ def node_classes(package: Package) -> Iterator[NodeClass]:
 def executable_nodes(package: Package) -> dict[str, tuple[str | None, NodeClass | None]]:
     """Console script -> (default node name, Node class) of the node its module runs.
 
-    Known when the module defines exactly one class, a direct Node subclass, and constructs
-    no other node (the name then comes from ``super().__init__``), or defines no class and
-    constructs one node with ``Node('name')`` / ``create_node('name')`` (the class is None).
+    Known when the module defines exactly one direct Node subclass (and besides it only
+    classes deriving from nothing, helpers) and constructs no other node (the name then comes
+    from ``super().__init__``), or defines no such class and constructs one node with
+    ``Node('name')`` / ``create_node('name')`` (the class is None).
     A script missing from the result, or a None name, is not known.
     """
     entries, modules = scripts_and_modules(package)
