@@ -40,6 +40,9 @@ def parse_entry_point(group: str, spec: str, span: Span) -> EntryPoint:
         return EntryPoint(group, name.strip(), "", None, spec.strip(), span, False)
     module, attr = match.group("module"), match.group("attr")
     valid = bool(name.strip()) and _dotted(module) and (attr is None or _dotted(attr))
+    package, dot, last = module.rpartition(".")
+    if dot and last == "__init__":
+        module = package  # `pkg.__init__` loads pkg/__init__.py, the package's own module
     return EntryPoint(group, name.strip(), module, attr, spec.strip(), span, valid)
 
 
