@@ -54,7 +54,8 @@ def relative_package_path(package: Package) -> Iterator[Hit]:
     (`PythonLaunchDescriptionSource('launch/robot.launch.py')`) in a Python launch file, or
     as the `from` of a node's `<param>` (`param: [{from: ...}]` in YAML), the `file` of an
     `<include>` or the `filename` of a `<set_parameters_from_file>` in an XML or YAML launch
-    file, that is a relative path to a file of this package's source folder.
+    file, that is a relative path to a file of this package's source folder, or one written
+    from a workspace's folder (`src/my_pkg/config/params.yaml`).
 
     ## Why is this bad?
     A relative path is resolved against the folder `ros2 launch` runs in, not against the
@@ -79,7 +80,22 @@ def relative_package_path(package: Package) -> Iterator[Hit]:
     """
     files = frozenset(package.files)
     for text, span in _written(package):
-        if not posixpath.isabs(text) and posixpath.normpath(text) in files:
+        if posixpath.isabs(text):
+            continue
+        path = posixpath.normpath(text)
+        if path in files:
             yield Hit(span, f"`{text}` is relative to the folder `ros2 launch` runs in, not "
                       "to the package: the file is found only when launching from the "
                       "package's source folder")
+        elif (inside := _through_the_workspace(path, package.name)) in files:
+            yield Hit(span, f"`{text}` is relative to the folder `ros2 launch` runs in: the "
+                      f"package's `{inside}` is found only when launching from the "
+                      "workspace's folder")
+
+
+def _through_the_workspace(path: str, name: str) -> str | None:
+    """The package file a path relative to a workspace names (``src/<name>/config/x.yaml``,
+    ``<name>/config/x.yaml``, ``ws/src/<name>/...``): what follows the package's folder."""
+    parts = path.split("/")
+    return next(("/".join(parts[at + 1:]) for at in range(len(parts) - 1)
+                 if parts[at] == name and (at == 0 or parts[at - 1] == "src")), None)
