@@ -40,8 +40,9 @@ def misspelled_init(package: Package) -> Iterator[Hit]:
     is `__init__` misspelt (its letters a typo from `init`: `__int__`, `__inti__`, `_init_`,
     `__init`, `init__`) and either it calls `super().__init__(...)`, as only a constructor
     does, or it is written like a special method (`_init_`, `__inti__`) that Python does not
-    have. Real special methods (`__int__` converting to a number, `__iter__`, `__new__`) that
-    do not call `super().__init__` and methods the module calls by name are left alone.
+    have, or `__int__` taking parameters besides `self` (`int()` passes none). Real special
+    methods (`__int__(self)` converting to a number, `__iter__`, `__new__`) that do not call
+    `super().__init__` and methods the module calls by name are left alone.
 
     ## Why is this bad?
     Python calls `__init__` when it makes an object; a method of another name only runs when
@@ -73,8 +74,18 @@ def misspelled_init(package: Package) -> Iterator[Hit]:
                 if not _init_like(method.name) or method.name in called:
                     continue
                 special = method.name.startswith("_") and method.name.endswith("_")
-                if _runs_base_init(method) or special and method.name not in _REAL:
+                if _runs_base_init(method) or special and (
+                        method.name not in _REAL or _takes_arguments(method)):
                     yield Hit(Span(module.path, method.lineno, method.col_offset + 1),
                               f"`{cls.name}` defines `{method.name}`, not `__init__`: Python "
                               f"never calls it when a `{cls.name}` is made, and the base "
                               "class's constructor runs instead", "Write `__init__`")
+
+
+def _takes_arguments(method: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
+    """True for a method with parameters besides its receiver: never the special method
+    ``__int__``, which ``int()`` calls with none (``def __int__(self, rate=10)`` is a
+    constructor misspelt)."""
+    arguments = method.args
+    return len([*arguments.posonlyargs, *arguments.args]) > 1 or bool(arguments.kwonlyargs) \
+        or arguments.vararg is not None or arguments.kwarg is not None
