@@ -34,7 +34,7 @@ class TypeProblem:
 @rule("IFC003", "unknown-field-type", Severity.ERROR,
       fix="Use a basic type (`float64`, `string`) or a message as `package/Message`")
 def unknown_field_type(package: Package) -> Iterator[Hit]:
-    """A field or constant of an interface definition has a type that does not exist.
+    """A field of an interface definition has a type that does not exist.
 
     ## What it does
     Checks the type of every field of the `.msg`, `.srv` and `.action` files of a ROS 2
