@@ -2,8 +2,9 @@
 
 A small evaluator follows string literals, module- and function-level names assigned once,
 concatenation, f-strings, ``os.path.join``, ``pathlib`` ``/``, ``PathJoinSubstitution`` and the
-share-folder lookups. Whatever else it meets (``LaunchConfiguration``, parameters, loops) is
-unknown, and unknown values are never reported.
+share-folder lookups; a loop or comprehension over texts it knows (``for e in ('talker',
+'listener')``) is read once per text. Whatever else it meets (``LaunchConfiguration``,
+parameters, other loops) is unknown, and unknown values are never reported.
 """
 
 from __future__ import annotations
@@ -144,6 +145,45 @@ class _Reader(ast.NodeVisitor):
         self.cache.pop()
 
     visit_AsyncFunctionDef = visit_FunctionDef
+
+    # loops over literal names -----------------------------------------------------------
+    def visit_ListComp(self, node: ast.ListComp | ast.GeneratorExp | ast.SetComp) -> None:
+        """``[Node(executable=e) for e in ('talker', 'listener')]``: the element once for each
+        text of a literal (or a name bound once to one), the loop name bound to it."""
+        generator = node.generators[0] if len(node.generators) == 1 else None
+        if generator is None or generator.ifs:
+            self.generic_visit(node)
+            return
+        self._each(generator.target, generator.iter, [node.elt], lambda: self.generic_visit(node))
+
+    visit_GeneratorExp = visit_SetComp = visit_ListComp
+
+    def visit_For(self, node: ast.For) -> None:
+        """``for e in ('talker', 'listener'): ld.add_action(Node(executable=e))``: the body
+        once for each text, as for a comprehension."""
+        if node.orelse:
+            self.generic_visit(node)
+            return
+        self._each(node.target, node.iter, node.body, lambda: self.generic_visit(node))
+
+    def _each(self, target: ast.expr, iterable: ast.expr, body: list[Any],
+              otherwise: Callable[[], None]) -> None:
+        """Visit ``body`` once per text ``iterable`` certainly holds, ``target`` (a name)
+        bound to it; else ``otherwise()`` (the loop read as any other code)."""
+        items = self.value(iterable) if isinstance(target, ast.Name) else None
+        if not (isinstance(items, tuple) and items and
+                all(isinstance(item, str) for item in items)):
+            otherwise()
+            return
+        self.visit(iterable)
+        for item in items:
+            bound = ast.copy_location(ast.Constant(item), target)
+            self.scopes.append({target.id: bound})  # type: ignore[attr-defined]
+            self.cache.append({})
+            for part in body:
+                self.visit(part)
+            self.scopes.pop()
+            self.cache.pop()
 
     # blocks that run only when a package is installed ------------------------------------
     def visit_If(self, node: ast.If) -> None:

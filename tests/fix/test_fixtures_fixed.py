@@ -96,6 +96,7 @@ MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages
           ("ENT003", "node_class_as_entry"), ("ENT003", "attribute_of_function"),
           ("PYC014", "read_before_declaring"),
           ("LCH001", "wrong_executable_names"), ("LCH001", "data_files_walked_at_build"),
+          ("LCH001", "executables_of_a_loop"),
           ("DAT009", "default_name_from_code"),
           ("DAT009", "xml_and_yaml_launch"), ("LCH003", "gazebo_classic_module")}
 """MAN018 fixes pip and import names only; build types, ROS 1 packages and standard library modules
@@ -119,7 +120,8 @@ more than a typo away: other names, maybe meant, and so is `timeout=` for `timeo
 (PYC029); a block `movr` beside a block `mover` would merge into it (DAT009). `gazebo_ros`, whose
 module a Gazebo Classic launch file imports, has no release after Humble: the fixer declares
 only keys that resolve for the target (LCH003). A dropped comparison holding a call (PYC050)
-needs the `if` its author meant."""
+needs the `if` its author meant. An executable a launch file loops over (LCH001) is written in
+a list the fixer does not edit."""
 
 REVEALED = {("PYC013", "called_callbacks"): {"PYC026"},
             ("LCH005", "parameters_not_a_list"): {"DAT012"},
