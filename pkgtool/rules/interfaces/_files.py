@@ -44,7 +44,7 @@ def split_type(written: str) -> tuple[str, str]:
     return written, ""
 
 
-def base_name(written: str) -> str:
+def type_base(written: str) -> str:
     """The type ``written`` names without array and string bounds (``string<=5[3]`` gives
     ``string``)."""
     return split_type(written)[0].split("<=", 1)[0]

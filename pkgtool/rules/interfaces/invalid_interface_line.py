@@ -9,7 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.interface_file import SECTIONS, SEPARATOR, InterfaceFile, Member
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.interfaces._files import (LOWER_NAME, PRIMITIVES, base_name,
+from pkgtool.rules.interfaces._files import (LOWER_NAME, PRIMITIVES, type_base,
                                              built_interface_files, split_type)
 from pkgtool.rules.registry import rule
 from pkgtool.lazy_regex import lazy_pattern
@@ -133,7 +133,7 @@ def _written_problem(member: Member) -> str | None:
 
 def _constant_problem(member: Member) -> str | None:
     """What rosidl refuses in a constant's line, or None."""
-    if base_name(member.type) not in PRIMITIVES or split_type(member.type)[1]:
+    if type_base(member.type) not in PRIMITIVES or split_type(member.type)[1]:
         return f"constant `{member.name}` has type `{member.type}`: constants take basic types"
     if not _CONSTANT_NAME.fullmatch(member.name):
         return (f"constant name `{member.name}` is not upper case with single underscores "
