@@ -14,6 +14,7 @@ class of their parent's ``ctx``, ``op`` or ``ops`` (read them there). They look 
 from __future__ import annotations
 
 import ast
+from collections.abc import Iterator
 
 from pkgtool.model.memo import per_tree
 from pkgtool.records import record
@@ -80,6 +81,19 @@ def walk_once(tree: ast.AST) -> Walk:
                 parents[id(value)] = node
                 append(value)
     return Walk(tuple(found), parents, by_class)
+
+
+def block_statements(body: list[ast.stmt], kinds: tuple[type, ...]) -> Iterator[ast.stmt]:
+    """The statements of ``body``, each followed by those of the blocks (``body``, ``orelse``,
+    ``finalbody``, then the ``except`` handlers) of the ones of ``kinds`` among them, at any
+    depth: what runs at the level of ``body`` (a module's ``if``/``try`` blocks)."""
+    for node in body:
+        yield node
+        if isinstance(node, kinds):
+            for block in ("body", "orelse", "finalbody"):
+                yield from block_statements(getattr(node, block, []), kinds)
+            for handler in getattr(node, "handlers", []):
+                yield from block_statements(handler.body, kinds)
 
 
 def enclosing(node: ast.AST, parents: dict[int, ast.AST], kinds: tuple[type, ...]

@@ -193,6 +193,22 @@ def is_launch_test(path: str, text: str | None) -> bool:
         "def generate_test_description" in text and "def generate_launch_description" not in text
 
 
+_LAUNCH_FUNCTION = lazy_pattern(r"^def generate_launch_description\s*\(", re.M)
+
+
+def runs_as_launch_file(path: str, text: str) -> bool:
+    """True for Python defining ``generate_launch_description()`` at top level, and not a
+    ``launch_testing`` test: a file ``ros2 launch`` can run, whatever its name."""
+    return _LAUNCH_FUNCTION.search(text) is not None and not is_launch_test(path, text)
+
+
+def in_launch_folder(path: str, nested: frozenset[str]) -> bool:
+    """True for a file inside a folder named ``launch``, not a template's nor one of a package
+    nested in this one (``nested``: :func:`nested_packages`)."""
+    return "launch" in path.split("/")[:-1] and not is_template(path) and \
+        not below(path, nested)
+
+
 def below(path: str, folders: frozenset[str]) -> bool:
     """True when ``path`` is inside one of ``folders`` (:func:`nested_packages`)."""
     return any(path.startswith(f"{folder}/") for folder in folders)

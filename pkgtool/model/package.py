@@ -9,9 +9,9 @@ from pathlib import Path
 from pkgtool.model.cmake_interfaces import with_included
 from pkgtool.model.context import Context, interface_file
 from pkgtool.model.files import TextFile, list_files, read_text
-from pkgtool.model.launch import (LAUNCH_YAML, LaunchFile, below, is_launch_file,
-                                  is_launch_test, is_template, nested_packages, other_yaml,
-                                  parse_launch, python_folders)
+from pkgtool.model.launch import (LAUNCH_YAML, LaunchFile, in_launch_folder, is_launch_file,
+                                  is_launch_test, nested_packages, other_yaml, parse_launch,
+                                  python_folders, runs_as_launch_file)
 from pkgtool.model.launch_reader import yaml_problem
 from pkgtool.model.manifest import Manifest, parse_manifest
 from pkgtool.model.modules import PythonModule, parse_module
@@ -185,13 +185,6 @@ _LAUNCH_XML = lazy_pattern(r"\s*(?:<\?xml[^>]*\?>\s*)?(?:<!--.*?-->\s*)*<launch[
 _OPENCV_STORAGE = ("%YAML:", "\ufeff%YAML:")
 """How OpenCV's ``FileStorage`` files start (``%YAML:1.0``): a format of OpenCV's that YAML
 parsers refuse, read by ``cv2.FileStorage`` (ORB-SLAM's camera settings), never by ROS."""
-_LAUNCH_FUNCTION = lazy_pattern(r"^def generate_launch_description\s*\(", re.M)
-
-
-def defines_launch_description(text: str) -> bool:
-    """True for Python defining ``generate_launch_description()`` at top level: a file
-    ``ros2 launch`` can run, whatever its name."""
-    return _LAUNCH_FUNCTION.search(text) is not None
 
 
 def is_test_material(relpath: str) -> bool:
@@ -250,16 +243,14 @@ def _launch_by_content(relpath: str, text_of: Callable[[str], str | None],
     ``ros2 launch`` accepts any file name; only files in a folder named ``launch`` are read
     for this, so URDF, RViz and parameter files elsewhere cost nothing.
     """
-    if "launch" not in relpath.split("/")[:-1] or \
-            not relpath.endswith((".xml", ".yaml", ".yml", ".py")) or \
-            is_template(relpath) or below(relpath, nested):
+    if not relpath.endswith((".xml", ".yaml", ".yml", ".py")) or \
+            not in_launch_folder(relpath, nested):
         return False
     text = text_of(relpath)
     if text is None:
         return False
     if relpath.endswith(".py"):
-        return relpath in shared and defines_launch_description(text) and \
-            not is_launch_test(relpath, text)
+        return relpath in shared and runs_as_launch_file(relpath, text)
     if relpath.endswith(".xml"):
         return _LAUNCH_XML.match(text) is not None
     return LAUNCH_YAML.search(text) is not None

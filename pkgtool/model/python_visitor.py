@@ -6,7 +6,7 @@ import ast
 import functools
 from collections.abc import Callable
 
-from pkgtool.model.ast_nodes import TRIES, descendants, walk_once
+from pkgtool.model.ast_nodes import TRIES, block_statements, descendants, walk_once
 from pkgtool.model.memo import forget_tree_facts
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.span import ParseProblem, Span
@@ -135,7 +135,7 @@ def _guard_finder(tree: ast.Module, parents: dict[int, ast.AST]) -> Callable[[as
 
 def _top_level_names(tree: ast.Module) -> frozenset[str]:
     names: set[str] = set()
-    for node in _flatten(tree.body):
+    for node in block_statements(tree.body, (ast.If, ast.Try)):  # at module level
         if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
             names.add(node.name)
         elif isinstance(node, (ast.Assign, ast.AnnAssign, ast.AugAssign)):
@@ -147,20 +147,6 @@ def _top_level_names(tree: ast.Module) -> frozenset[str]:
                 if alias.name != "*":
                     names.add((alias.asname or alias.name).split(".")[0])
     return frozenset(names)
-
-
-def _flatten(body: list[ast.stmt]) -> list[ast.stmt]:
-    """Statements at module level, including those inside top-level if/try blocks."""
-    result: list[ast.stmt] = []
-    for node in body:
-        result.append(node)
-        if isinstance(node, ast.If):
-            result.extend(_flatten(node.body) + _flatten(node.orelse))
-        elif isinstance(node, ast.Try):
-            result.extend(_flatten(node.body) + _flatten(node.orelse) + _flatten(node.finalbody))
-            for handler in node.handlers:
-                result.extend(_flatten(handler.body))
-    return result
 
 
 @functools.lru_cache(maxsize=8192)

@@ -14,6 +14,7 @@ from pkgtool.knowledge import rosdistro
 from pkgtool.knowledge.rosdep import NOT_PACKAGES, ROS1_PACKAGES, suggested_key
 from pkgtool.knowledge.tables import DISTROS
 from pkgtool.model.condition import applies
+from pkgtool.model.installed import is_ament_python
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
@@ -140,8 +141,7 @@ def cmake_finds(package: Package, name: str) -> bool:
     source beside it, when no release has that name), whatever its name looks like. Not in
     an ament_python package, whose build never runs a CMakeLists.txt."""
     cmake = package.texts.get("CMakeLists.txt")
-    build_type = package.manifest.build_type if package.manifest else None
-    if cmake is None or build_type is not None and build_type.value == "ament_python":
+    if cmake is None or is_ament_python(package):
         return False  # an ament_python build never runs a CMakeLists.txt left beside it
     return any(_finds(found, name) for found in _FIND_PACKAGE.finditer(cmake))
 

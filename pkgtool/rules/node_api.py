@@ -10,7 +10,7 @@ from __future__ import annotations
 import ast
 from collections.abc import Collection, Iterator
 
-from pkgtool.model.memo import per_package
+from pkgtool.model.memo import per_package, per_tree
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
@@ -157,8 +157,10 @@ def derives_from_node_alone(cls: ast.ClassDef, index: Index) -> bool:
         index.qualified(cls.bases[0]) == "rclpy.node.Node"
 
 
-def node_subclasses(index: Index) -> list[ast.ClassDef]:
-    """Classes of the module derived from rclpy's node classes (directly or through others)."""
+@per_tree
+def node_subclasses(index: Index) -> tuple[ast.ClassDef, ...]:
+    """Classes of the module derived from rclpy's node classes (directly or through others),
+    worked out once per module (a dozen rules ask)."""
     found: list[ast.ClassDef] = []
     grew = True
     while grew:
@@ -168,7 +170,7 @@ def node_subclasses(index: Index) -> list[ast.ClassDef]:
             isinstance(b, ast.Name) and b.id in names for b in c.bases)]
         found.extend(more)
         grew = bool(more)
-    return found
+    return tuple(found)
 
 
 def node_constructions(index: Index) -> Iterator[ast.Call]:

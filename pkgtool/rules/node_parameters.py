@@ -422,9 +422,11 @@ def _handed_to_includes(package: Package) -> str:
         values = {target.id: node.value for node in nodes_of_class(tree, ast.Assign)
                   for target in node.targets if isinstance(target, ast.Name)}
         for call in nodes_of_class(tree, ast.Call):
+            func = call.func
+            name = func.id if isinstance(func, ast.Name) else \
+                func.attr if isinstance(func, ast.Attribute) else ""
             handed = [k.value for k in call.keywords if k.arg == "launch_arguments"] + \
-                call.args[1:2] if ast.unparse(call.func).endswith("IncludeLaunchDescription") \
-                else []
+                call.args[1:2] if name.endswith("IncludeLaunchDescription") else []
             for part in handed:
                 found.append(ast.unparse(part))
                 found += [ast.unparse(values[n.id]) for n in ast.walk(part)

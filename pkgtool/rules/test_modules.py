@@ -8,7 +8,8 @@ import re
 from collections.abc import Iterator
 from fnmatch import fnmatch
 
-from pkgtool.model.ast_nodes import TRIES
+from pkgtool.model.ast_nodes import TRIES, block_statements
+from pkgtool.model.cmake_interfaces import with_included
 from pkgtool.model.installed import installed_files
 from pkgtool.model.memo import per_package
 from pkgtool.model.modules import PythonModule
@@ -29,7 +30,7 @@ def first_test(tree: ast.Module, config: PytestConfig) -> ast.AST | None:
     (also one defined under a module-level ``if``, ``try`` or ``with``: ``if os.name !=
     'nt':``)."""
     functions, classes = config.get("python_functions"), config.get("python_classes")
-    for node in _module_level(tree.body):
+    for node in block_statements(tree.body, (ast.If, ast.With, ast.AsyncWith, *TRIES)):
         if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)) and \
                 matches(node.name, functions):
             return node
@@ -42,18 +43,6 @@ def first_test(tree: ast.Module, config: PytestConfig) -> ast.AST | None:
                     matches(m.name, methods) for m in node.body):
                 return node
     return None
-
-
-def _module_level(body: list[ast.stmt]) -> Iterator[ast.stmt]:
-    """The statements of ``body`` and those of the blocks of its ``if``, ``try`` and ``with``
-    statements, which run at module level too."""
-    for node in body:
-        yield node
-        if isinstance(node, (ast.If, ast.With, ast.AsyncWith, *TRIES)):
-            for block in ("body", "orelse", "finalbody"):
-                yield from _module_level(getattr(node, block, []))
-            for handler in getattr(node, "handlers", []):
-                yield from _module_level(handler.body)
 
 
 def why_not_collected(package: Package, path: str, config: PytestConfig) -> str | None:
@@ -118,8 +107,7 @@ def _cmake_script(package: Package, path: str) -> bool:
     if build_type is None or build_type.value not in ("ament_cmake", "cmake") or \
             is_test_material(path) or posixpath.basename(path) == "conftest.py":
         return False
-    cmake = "\n".join(text for name, text in package.texts.items()
-                      if name.endswith(("CMakeLists.txt", ".cmake")))
+    cmake = with_included(package.texts.get("CMakeLists.txt", ""), package.texts.get)
     name = posixpath.basename(path)
     return name not in cmake or re.search(
         rf"(?i)\binstall\s*\(\s*PROGRAMS\b[^)]*\b{re.escape(name)}\b", cmake) is not None

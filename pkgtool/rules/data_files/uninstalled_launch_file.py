@@ -6,9 +6,10 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import installed_data
-from pkgtool.model.launch import (below, is_launch_file, is_launch_test, is_template,
-                                  nested_packages, other_yaml, python_folders)
-from pkgtool.model.package import Package, defines_launch_description
+from pkgtool.model.launch import (in_launch_folder, is_launch_file, is_launch_test,
+                                  nested_packages, other_yaml, python_folders,
+                                  runs_as_launch_file)
+from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
 from pkgtool.rules.setup_values import checked_setup
@@ -82,9 +83,7 @@ def _launch_by_content(package: Package, folders: frozenset[str], nested: frozen
     (``launch/launch.py``, ``launch/debugging.py``), unless named as a copy kept aside."""
     for path in package.files:
         folder, _, name = path.rpartition("/")
-        if path.endswith(".py") and "launch" in folder.split("/") and folder not in folders \
-                and not _KEPT_ASIDE.search(name[:-3]) \
-                and not below(path, nested) and not is_template(path) and \
-                defines_launch_description(package.texts.get(path, "")) and \
-                not is_launch_test(path, package.texts.get(path)):
+        if path.endswith(".py") and in_launch_folder(path, nested) and folder not in folders \
+                and not _KEPT_ASIDE.search(name[:-3]) and \
+                runs_as_launch_file(path, package.texts.get(path, "")):
             yield path

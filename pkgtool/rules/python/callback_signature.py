@@ -117,15 +117,17 @@ def _synchronized(package: Package) -> Iterator[Argument]:
     a list of ``n`` filters (bound once in the module, to a name or ``self.x``), the API
     written ``registerCallback() <n>`` (with the extra arguments it passes on added)."""
     for module, tree, index in installed_trees(package):
+        if not index.imports_from("message_filters"):
+            continue  # no synchronizer made here
         made: dict[str, list[int | None]] = {}
         for node in nodes_of_class(tree, ast.Assign):
             value = node.value  # type: ignore[attr-defined]
+            inputs = value.args[0] if isinstance(value, ast.Call) and value.args and \
+                index.qualified(value.func) in _SYNCHRONIZERS else None
+            count = len(inputs.elts) if isinstance(inputs, (ast.List, ast.Tuple)) and not any(
+                isinstance(e, ast.Starred) for e in inputs.elts) else None
             for target in node.targets:  # type: ignore[attr-defined]
-                inputs = value.args[0] if isinstance(value, ast.Call) and value.args and \
-                    index.qualified(value.func) in _SYNCHRONIZERS else None
-                made.setdefault(ast.unparse(target), []).append(
-                    len(inputs.elts) if isinstance(inputs, (ast.List, ast.Tuple)) and not any(
-                        isinstance(e, ast.Starred) for e in inputs.elts) else None)
+                made.setdefault(ast.unparse(target), []).append(count)
         for call in index.calls:
             func = call.func
             if not isinstance(func, ast.Attribute) or func.attr != "registerCallback" or \

@@ -80,7 +80,7 @@ def _near_misses(found: tuple[Endpoint, ...], offering: str, using: str
         same_type = [t for t, types in offered.items() if types == {endpoint.type}]
         meant = typo_of(name, same_type)
         if meant is not None and not digits_differ(name, meant) and \
-                not _opposite_words(name, meant) and not _word_replaced(name, meant):
+                not _not_a_typo(name, meant):
             yield endpoint, meant
 
 
@@ -92,19 +92,18 @@ _OPPOSITES = frozenset(frozenset(pair.split("/")) for pair in """tx/rx in/out in
 ``can_rx``): never a typo of each other."""
 
 
-def _word_replaced(name: str, other: str) -> bool:
-    """True when the two names differ in one word of theirs that is wholly another word
-    (``dt/recording_status`` and ``ui/recording_status``: two namespaces, not a typo)."""
+def _changed_word(name: str, other: str) -> tuple[str, str] | None:
+    """The one word (parts between ``/`` and ``_``) the two names differ in, as written in
+    each, or None when they differ in another number of words."""
     words, others = re.split(r"[/_]", name), re.split(r"[/_]", other)
     changed = [(a, b) for a, b in zip(words, others) if a != b]
-    return len(words) == len(others) and len(changed) == 1 and \
-        typo_distance(*changed[0], budget=9) >= min(map(len, changed[0]))
+    return changed[0] if len(words) == len(others) and len(changed) == 1 else None
 
 
-def _opposite_words(name: str, other: str) -> bool:
-    """True when the two names differ only in one word, and the two words are
-    :data:`_OPPOSITES`."""
-    words, others = re.split(r"[/_]", name), re.split(r"[/_]", other)
-    changed = [(a, b) for a, b in zip(words, others) if a != b]
-    return len(words) == len(others) and len(changed) == 1 and \
-        frozenset(changed[0]) in _OPPOSITES
+def _not_a_typo(name: str, other: str) -> bool:
+    """True when the two names differ in one word that is either wholly another word
+    (``dt/recording_status`` and ``ui/recording_status``: two namespaces) or its partner in
+    :data:`_OPPOSITES` (``can_tx``, ``can_rx``)."""
+    changed = _changed_word(name, other)
+    return changed is not None and (frozenset(changed) in _OPPOSITES or
+                                    typo_distance(*changed, budget=9) >= min(map(len, changed)))

@@ -174,14 +174,13 @@ def too_many_rclpy_arguments(package: Package) -> Iterator[Hit]:
     self.client = self.create_client(AddTwoInts, 'add', callback_group=self.group)
     ```
     """
-    nodes_of: dict[int, list[ast.ClassDef]] = {}
     for module, call, method, index in node_api_calls(package, POSITIONAL):
         positional, keywords = POSITIONAL[method]
         if any(isinstance(a, ast.Starred) for a in call.args) or \
                 len(call.args) <= len(positional):
             continue
-        nodes = nodes_of.setdefault(id(index), node_subclasses(index))
-        if receiver_class(call.func.value, index) not in nodes:  # type: ignore[attr-defined]
+        receiver = receiver_class(call.func.value, index)  # type: ignore[attr-defined]
+        if receiver not in node_subclasses(index):
             continue  # not `self.<method>(...)` in a method of a Node subclass
         extra = call.args[len(positional)]
         yield Hit(Span(module.path, extra.lineno, extra.col_offset + 1),

@@ -161,8 +161,9 @@ def _instance_reads(package: Package, path: str, tree: ast.Module, index: Index,
     """Attributes read on a local name that holds an instance of one of the module's node
     classes (:func:`_instances`) that neither the class nor rclpy's Node (or LifecycleNode)
     has and nothing stores."""
-    kinds = {cls.name: (base, inherited) for cls, base, inherited in _node_classes(index, bases)}
-    classes = {cls.name: cls for cls, _, _ in _node_classes(index, bases)}
+    found = list(_node_classes(index, bases))
+    kinds = {cls.name: (base, inherited) for cls, base, inherited in found}
+    classes = {cls.name: cls for cls, _, _ in found}
     if not classes:
         return
     for function, name, cls in _instances(package, tree, index, classes):
