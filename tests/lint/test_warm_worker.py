@@ -93,3 +93,16 @@ def test_a_closed_worker_leaves_no_process_behind() -> None:
             print("gone")
         """)
     assert out == "gone\n"
+
+
+def test_no_worker_is_forked_while_a_thread_the_threading_module_never_saw_runs() -> None:
+    """A thread started below ``threading`` (``_thread``, as a native library's are) makes
+    forking unsafe as much as any other: it is seen in ``/proc/self/task``."""
+    out = _run("""\
+        import _thread, sys
+        _thread.start_new_thread(time.sleep, (30,))
+        time.sleep(0.1)
+        print("threading" in sys.modules, warm_worker.threads_running(),
+              warm_worker.start(steps))
+        """)
+    assert out == "False True None\n"
