@@ -113,6 +113,12 @@ def brought_in(name: str) -> frozenset[str]:
     return frozenset(found)
 
 
+def is_metapackage(name: str) -> bool:
+    """True for a released metapackage (``perception``, ``desktop``): it holds no code, so no
+    import is ever its."""
+    return name in read("metapackages").values
+
+
 def key_for_python_module(top_level: str, distro: str = DEFAULT_DISTRO) -> str | None:
     """The rosdep key providing a third-party top-level import, or None if rosdep has none."""
     keys = keys_for_import(top_level, distro)

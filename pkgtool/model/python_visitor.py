@@ -19,8 +19,21 @@ def _catches_import_error(handler: ast.ExceptHandler) -> bool:
     if handler.type is None:
         return True
     types = handler.type.elts if isinstance(handler.type, ast.Tuple) else [handler.type]
+    return _names_import_error(types)
+
+
+def _names_import_error(types: list[ast.expr]) -> bool:
+    """True when one of the exception classes ``types`` catches ImportError."""
     return any(isinstance(t, (ast.Name, ast.Attribute)) and
                (t.id if isinstance(t, ast.Name) else t.attr) in _GUARD_EXCEPTIONS for t in types)
+
+
+def _suppresses_import_error(node: ast.With | ast.AsyncWith) -> bool:
+    """True for ``with contextlib.suppress(ImportError):`` (or a broader class)."""
+    return any(isinstance(call := item.context_expr, ast.Call) and
+               isinstance(call.func, (ast.Name, ast.Attribute)) and
+               (call.func.id if isinstance(call.func, ast.Name) else call.func.attr) == "suppress"
+               and _names_import_error(call.args) for item in node.items)
 
 
 _EXITS = frozenset({"exit", "quit", "_exit"})
@@ -81,6 +94,8 @@ def _guarded_parts(node: ast.AST, constants: dict[str, bool], at_top: bool
         either = _mentions_find_spec(node.test) or mentions_module_name(node.test)
         inner = either or _is_type_checking(node.test) or value is False
         return _block(node.body, inner) + _block(node.orelse, either or value is True)
+    if isinstance(node, (ast.With, ast.AsyncWith)):
+        return _block(node.body, _suppresses_import_error(node))
     return [part for field in _BLOCK_FIELDS for part in _block(getattr(node, field, []), False)]
 
 

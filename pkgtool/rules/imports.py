@@ -21,8 +21,8 @@ from functools import lru_cache
 from pkgtool.knowledge.interfaces import KINDS, interface_kind, is_known_package
 from pkgtool.knowledge.ros_names import looks_like_ros
 from pkgtool.knowledge.rosdep import (ALTERNATIVE_KEYS, ROS1_PACKAGES, ROS_MODULE_PACKAGES,
-                                      accepted_keys, brought_in, package_for_ros_module,
-                                      suggested_key)
+                                      accepted_keys, brought_in, is_metapackage,
+                                      package_for_ros_module, suggested_key)
 from pkgtool.knowledge.rosdistro import (DISTROS, any_stdlib_module, close_names,
                                          digits_differ, is_released_package, is_rosdep_key,
                                          keys_for_import, stdlib_modules, typo_distance)
@@ -38,7 +38,7 @@ from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.records import record
 from pkgtool.rules.optional_imports import optional_modules
-from pkgtool.rules.sys_path import sys_path_edits
+from pkgtool.rules.sys_path import outside_edits, sys_path_edits
 from pkgtool.rules.test_modules import is_test_code, test_files
 from pkgtool.lazy_regex import lazy_pattern
 
@@ -366,10 +366,11 @@ def classify(top: str, declared_names: Iterable[str], context: Context = Context
 
     A workspace package whose Python package ``top`` is provides it too, and comes first: the
     workspace builds it from source, though rosdep (``python3-x-pip``) or the distribution
-    (a released package of the same name) may also have one.
+    (a released package of the same name) may also have one. A released metapackage
+    (``perception``) holds no code: a module of its name is someone else's.
     """
     distro = context.distro
-    released = is_released_package(top, distro)
+    released = is_released_package(top, distro) and not is_metapackage(top)
     provider = context.provider(top)
     source = (provider,) if provider else ()
     keys = keys_for_import(top, distro)
@@ -383,8 +384,14 @@ def classify(top: str, declared_names: Iterable[str], context: Context = Context
         return "ros", source
     if top in declared_names:
         return "ros", (top,)
+    return "unknown", _guessed_keys(top)
+
+
+def _guessed_keys(top: str) -> tuple[str, ...]:
+    """The keys a module rosdep and ROS do not know might have: ``python3-x``, its ``-pip``
+    variant, its own name."""
     guess = "python3-" + top.lower().replace("_", "-")
-    return "unknown", (guess, guess + "-pip", top)
+    return guess, guess + "-pip", top
 
 
 @lru_cache(maxsize=8)
@@ -463,6 +470,7 @@ def _needs(package: Package, module: PythonModule, guarded: bool | None) -> Iter
     seen: set[str] = set()
     owner = python_package_of(package, module)
     on_path = path_modules(package, module)
+    above = outside_edits(package).get(module.path)
     for imported in module.imports:
         top = imported.top_level
         is_guarded = imported.guarded or optional
@@ -477,13 +485,27 @@ def _needs(package: Package, module: PythonModule, guarded: bool | None) -> Iter
             continue
         seen.add(shown)
         kind, keys = classify(shown.replace(".", "_"), names, package.context)
+        if package.name in keys:  # `azure.iot` read as `azure_iot`, the package's own name
+            keys = tuple(k for k in keys if k != package.name)
+            guessed = tuple(k for k in _guessed_keys(shown.replace(".", "_")) if k != package.name)
+            kind, keys = (kind, keys) if keys else ("unknown", guessed)
         if ros1 and kind == "unknown" and top in ROS1_PACKAGES:  # rospy in a catkin package
             kind, keys = "ros", (top,)
         elif kind == "unknown" and _interface_kind(imported.module):
             kind, keys = "ros", (top,)  # `from x.msg import Y`: rosidl's, named as its package
+        elif kind == "unknown" and above is not None and above < imported.span.line and \
+                not _holds_module(package, top):
+            continue  # maybe a module of the checkout a `sys.path` edit above the package reaches
         if ros1 and kind == "ros":
             keys = _ros1_keys(top, keys)
         yield Need(module, imported, shown, kind, keys)
+
+
+def _holds_module(package: Package, name: str) -> bool:
+    """True when some folder of the package holds a module or package ``name`` (an edit of
+    ``sys.path`` that reaches above the package instead probably missed it)."""
+    return any(posixpath.basename(path) == f"{name}.py" or path.endswith(f"{name}/__init__.py")
+               and posixpath.basename(posixpath.dirname(path)) == name for path in package.files)
 
 
 def _interface_kind(module: str | None) -> str | None:

@@ -41,22 +41,42 @@ _SHARE_LOOKUPS = frozenset({f"ament_index_python{where}.{function}"
 their source names (``launch/``): read as the package's root."""
 
 
-@per_package
 def sys_path_edits(package: Package) -> dict[str, tuple[tuple[int, str], ...]]:
     """Module path -> (line, package-relative folder) of each ``sys.path.insert``/``append``
     of a folder of the package the module makes, for the modules that make any."""
-    found: dict[str, tuple[tuple[int, str], ...]] = {}
+    return _package_edits(package)[0]
+
+
+def outside_edits(package: Package) -> dict[str, int]:
+    """Module path -> the line of its first ``sys.path.insert``/``append`` of a folder above
+    the package's own (``os.path.join(os.path.dirname(__file__), '..', '..', '..')``): what
+    the module imports after it may come from the rest of the checkout."""
+    return _package_edits(package)[1]
+
+
+@per_package
+def _package_edits(package: Package) -> tuple[dict[str, tuple[tuple[int, str], ...]],
+                                              dict[str, int]]:
+    inside: dict[str, tuple[tuple[int, str], ...]] = {}
+    outside: dict[str, int] = {}
     for module in package.modules:
         text = package.texts.get(module.path)
         tree = parse_tree(module.path, text) if text and "sys.path" in text else None
-        if isinstance(tree, ast.Module):
-            edits = tuple(_edits(tree, module.path, package))
-            if edits:
-                found[module.path] = edits
-    return found
+        if not isinstance(tree, ast.Module):
+            continue
+        edits = list(_edits(tree, module.path, package))
+        own = tuple((line, folder) for line, folder in edits if folder is not None)
+        if own:
+            inside[module.path] = own
+        above = [line for line, folder in edits if folder is None]
+        if above:
+            outside[module.path] = min(above)
+    return inside, outside
 
 
-def _edits(tree: ast.Module, path: str, package: Package) -> Iterator[tuple[int, str]]:
+def _edits(tree: ast.Module, path: str, package: Package) -> Iterator[tuple[int, str | None]]:
+    """(line, package-relative folder) of each ``sys.path`` edit of a folder of the package,
+    and (line, None) of each of a folder above the package's."""
     aliases = _aliases(tree)
     once = _assigned_once(tree)
     for node in ast.walk(tree):
@@ -69,6 +89,8 @@ def _edits(tree: ast.Module, path: str, package: Package) -> Iterator[tuple[int,
         if relative is not None and (relative == "" or any(
                 f.startswith(relative + "/") for f in package.files)):
             yield node.lineno, relative
+        elif folder is not None and relative is None:
+            yield node.lineno, None
 
 
 def file_relative_paths(tree: ast.Module, path: str) -> Iterator[tuple[ast.expr, str]]:

@@ -35,7 +35,8 @@ def uninstalled_launch_file(package: Package) -> Iterator[Hit]:
     `examples/` or `samples/`, files under a sub-folder with a package.xml of its own (that
     package's), and a
     `launch_testing` test kept in a `launch` folder (it defines `generate_test_description`
-    and no `generate_launch_description`: `ros2 launch` cannot run it).
+    and no `generate_launch_description`: `ros2 launch` cannot run it), and a copy of a
+    launch file whose name an installed one has (`ros2 launch` finds that one).
 
     ## Why is this bad?
     `ros2 launch <package> <file>` searches the installed share folder only: the launch file
@@ -59,14 +60,16 @@ def uninstalled_launch_file(package: Package) -> Iterator[Hit]:
         return
     share = f"share/{package.name}/"
     shared = {source for target, source in installed.items() if target.startswith(share)}
+    names = {target.rsplit("/", 1)[-1] for target in installed if target.startswith(share)}
     folders, nested = python_folders(package.files), nested_packages(package.files)
     for path in sorted({*(f for f in package.files if is_launch_file(f, folders, nested) and
                           not is_launch_test(f, package.texts.get(f)) and
                           not other_yaml(f, package.texts.get(f))),
                         *(launch.path for launch in package.launch_files),
                         *_launch_by_content(package, folders, nested)}):
-        if path.split("/")[0] not in NOT_INSTALLED_FOLDERS and path not in shared:
-            name = path.rsplit("/", 1)[-1]
+        name = path.rsplit("/", 1)[-1]
+        if path.split("/")[0] not in NOT_INSTALLED_FOLDERS and path not in shared and \
+                name not in names:
             yield Hit(Span(path, 1, 1), f"`{path}` is not installed under `{share[:-1]}`: "
                                         f"`ros2 launch {package.name} {name}` will not find it")
 

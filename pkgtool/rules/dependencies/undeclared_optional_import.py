@@ -14,7 +14,8 @@ from pkgtool.rules.registry import rule
 @rule("DEP005", "undeclared-optional-import", Severity.INFO,
       fix="Declare the package if the feature that needs it matters on the robot")
 def undeclared_optional_import(package: Package) -> Iterator[Hit]:
-    """An optional import (`try/except ImportError`, `TYPE_CHECKING`, `find_spec`) is undeclared.
+    """An optional import (`try/except ImportError`, `suppress(ImportError)`, `TYPE_CHECKING`,
+    `find_spec`) is undeclared.
 
     ## What it does
     Reports guarded imports whose package or rosdep key package.xml does not declare in any

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import ast
-import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -11,6 +10,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.launch._python_launch import launch_class, launch_indexes, within
 from pkgtool.rules.registry import rule
+from pkgtool.rules.relative_paths import package_file_named
 from pkgtool.rules.syntax_trees import Index
 
 _SOURCES = ("launch.launch_description_sources", "launch_ros.actions", "launch_ros.descriptions")
@@ -78,24 +78,16 @@ def relative_package_path(package: Package) -> Iterator[Hit]:
     <param from="$(find-pkg-share my_pkg)/config/params.yaml"/>
     ```
     """
-    files = frozenset(package.files)
     for text, span in _written(package):
-        if posixpath.isabs(text):
+        named = package_file_named(text, package)
+        if named is None:
             continue
-        path = posixpath.normpath(text)
-        if path in files:
+        inside, from_workspace = named
+        if not from_workspace:
             yield Hit(span, f"`{text}` is relative to the folder `ros2 launch` runs in, not "
                       "to the package: the file is found only when launching from the "
                       "package's source folder")
-        elif (inside := _through_the_workspace(path, package.name)) in files:
+        else:
             yield Hit(span, f"`{text}` is relative to the folder `ros2 launch` runs in: the "
                       f"package's `{inside}` is found only when launching from the "
                       "workspace's folder")
-
-
-def _through_the_workspace(path: str, name: str) -> str | None:
-    """The package file a path relative to a workspace names (``src/<name>/config/x.yaml``,
-    ``<name>/config/x.yaml``, ``ws/src/<name>/...``): what follows the package's folder."""
-    parts = path.split("/")
-    return next(("/".join(parts[at + 1:]) for at in range(len(parts) - 1)
-                 if parts[at] == name and (at == 0 or parts[at - 1] == "src")), None)

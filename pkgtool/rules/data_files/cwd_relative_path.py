@@ -1,0 +1,189 @@
+"""DAT017: code or a Python launch file opens a file of its package by a path relative to the
+folder it is started in."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity, shortened
+from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.installed import installed_data
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.data_files.common import ASKS_EXISTENCE, checks_files
+from pkgtool.rules.registry import rule
+from pkgtool.rules.relative_paths import package_file_named
+from pkgtool.rules.scopes import scope_bindings, single_assignments
+from pkgtool.rules.syntax_trees import Index, index_of, installed_trees, python_files
+
+READERS = frozenset({
+    "io.open", "codecs.open", "cv2.imread",
+    "cv2.VideoCapture", "cv2.CascadeClassifier", "cv2.dnn.readNet", "cv2.dnn.readNetFromONNX",
+    "cv2.dnn.readNetFromCaffe", "cv2.dnn.readNetFromTensorflow", "cv2.dnn.readNetFromDarknet",
+    "numpy.load", "numpy.loadtxt", "numpy.genfromtxt", "pandas.read_csv", "pandas.read_excel",
+    "pandas.read_json", "torch.load", "torch.jit.load", "PIL.Image.open", "joblib.load",
+    "ultralytics.YOLO", "onnxruntime.InferenceSession", "xml.etree.ElementTree.parse",
+    "lxml.etree.parse", "xacro.process_file", "tensorflow.keras.models.load_model",
+    "keras.models.load_model", "playsound.playsound", "pygame.mixer.Sound",
+    "pygame.image.load"})
+"""Functions and classes (by qualified name) whose first argument is a file they read."""
+_PATHS = frozenset({"pathlib.Path", "pathlib.PurePath"})
+_PATH_READS = frozenset({"read_text", "read_bytes", "open"})
+"""Methods of a ``Path`` that read its file (a ``Path`` alone may be resolved elsewhere)."""
+_SAME_PATH = frozenset({"str", "os.path.abspath", "os.path.realpath", "os.path.normpath",
+                        *_PATHS})
+"""Calls whose one argument is the path they give (``open(Path('x'))``)."""
+_WRITES = frozenset("wax")
+"""Characters of an ``open()`` mode that write (a file made where the node runs is its own)."""
+
+
+@rule("DAT017", "cwd-relative-path", Severity.ERROR,
+      fix="Install the file with data_files and open it from "
+          "`get_package_share_directory('<package>')`")
+def cwd_relative_path(package: Package) -> Iterator[Hit]:
+    """Code or a Python launch file opens a file of its package by a path relative to the
+    folder the process is started in.
+
+    ## What it does
+    Reports calls in installed modules and Python launch files that read a file (`open()` for
+    reading, `Path(...).read_text()`, `cv2.imread`, `numpy.load`, `torch.load`, `ultralytics.YOLO`,
+    `xacro.process_file`, `PIL.Image.open`, `yaml`'s stream from `open()`, ...) named by a
+    relative path that is a file of the package's source folder: written from the
+    package's folder (`'config/params.yaml'`) or from a workspace's
+    (`'src/my_pkg/models/best.pt'`, a file the package has or not: a model kept out of
+    git). The path is a string literal, or a name or `self.x` assigned that literal and
+    nothing else. A module that asks whether files exist
+    (`os.path.exists()` and the like) is left alone: it may fall back when the file is not
+    there. Tests are not checked (pytest runs them from a known folder).
+
+    ## Why is this bad?
+    A relative path is resolved against the working folder of the process, not against the
+    package: `python3 my_node.py` run from the package's folder finds the file, but `ros2
+    run` and `ros2 launch` start the node wherever the user is, and the installed package
+    has no source folder at all. The node (or the launch) then fails with
+    `FileNotFoundError` on every machine but the author's habit.
+
+    ## Example
+    ```python
+    with open('config/waypoints.yaml') as stream:
+        waypoints = yaml.safe_load(stream)
+    ```
+
+    ## Use instead
+    ```python
+    share = get_package_share_directory('my_pkg')
+    with open(os.path.join(share, 'config', 'waypoints.yaml')) as stream:
+        waypoints = yaml.safe_load(stream)
+    ```
+    """
+    indexes = [(module.path, index) for module, _, index in installed_trees(package)]
+    launch = {f.path for f in package.launch_files if f.kind == "python"}
+    indexes += [(path, index_of(tree)) for path, _, tree in python_files(package)
+                if path in launch]
+    shares = _share_paths(package)
+    for path, index in indexes:
+        if checks_files(index, ASKS_EXISTENCE):
+            continue
+        for call in index.calls:
+            read = _file_read(call, index)
+            for text in _path_texts(read, index) if read is not None else ():
+                named = package_file_named(text.removeprefix("./"), package, absent=True)
+                if named is not None:
+                    yield _hit(Span(path, call.lineno, call.col_offset + 1), call, text,
+                               named, package.name, shares.get(named[0]))
+                    break
+
+
+def _file_read(call: ast.Call, index: Index) -> ast.expr | None:
+    """The path argument of a call that reads a file: ``open()`` not given a mode that
+    writes, one of :data:`READERS`, a ``Path(...)`` whose file is read at once
+    (``Path('x').read_text()``); seen through ``str()``, ``Path()`` and ``os.path.abspath()``
+    around it."""
+    func = call.func
+    if not call.args or not isinstance(func, (ast.Name, ast.Attribute)):
+        return None
+    if isinstance(func, ast.Name) and func.id == "open" and "open" not in index.bound:
+        mode = call.args[1] if len(call.args) > 1 else \
+            next((k.value for k in call.keywords if k.arg == "mode"), None)
+        if mode is not None and not (isinstance(mode, ast.Constant) and
+                                     isinstance(mode.value, str) and
+                                     not _WRITES & set(mode.value)):
+            return None
+    elif index.qualified(func) in _PATHS:
+        method = index.parents.get(id(call))
+        if not (isinstance(method, ast.Attribute) and method.attr in _PATH_READS and
+                isinstance(index.parents.get(id(method)), ast.Call)):
+            return None
+    elif index.qualified(func) not in READERS:
+        return None
+    argument = call.args[0]
+    while isinstance(argument, ast.Call) and len(argument.args) == 1 and \
+            isinstance(argument.func, (ast.Name, ast.Attribute)) and \
+            (index.qualified(argument.func) in _SAME_PATH or
+             isinstance(argument.func, ast.Name) and argument.func.id == "str"):
+        argument = argument.args[0]
+    return argument
+
+
+def _path_texts(value: ast.expr, index: Index) -> list[str]:
+    """The text ``value`` certainly holds: a string literal, or the literal a name is bound to
+    once (in the innermost function around that binds it, else in the module), or the one
+    literal every store of ``self.x`` in the module assigns, all in one class."""
+    if isinstance(value, ast.Name):
+        scopes = [f for f in index.functions_around(value) if scope_bindings(f)[value.id]]
+        scope = scopes[0] if scopes else _root(value, index)
+        value = single_assignments(scope).get(value.id, value)
+    elif isinstance(value, ast.Attribute) and isinstance(value.value, ast.Name):
+        values = _stored(value, index)
+        value = values[0] if len(values) == 1 else value
+    return [value.value] if isinstance(value, ast.Constant) and isinstance(value.value, str) \
+        else []
+
+
+def _stored(value: ast.Attribute, index: Index) -> list[ast.expr]:
+    """The values of every store of ``.x`` in the module when each is a plain assignment in
+    the class whose method reads ``self.x`` (else none)."""
+    cls = index.enclosing_class(value)
+    found: list[ast.expr] = []
+    for store in nodes_of_class(_root(value, index), ast.Attribute):
+        assert isinstance(store, ast.Attribute)
+        if store.attr != value.attr or isinstance(store.ctx, ast.Load):
+            continue
+        parent = index.parents.get(id(store))
+        if cls is None or not (isinstance(parent, ast.Assign) and parent.targets == [store]) or \
+                index.enclosing_class(store) is not cls:
+            return []
+        found.append(parent.value)
+    return found
+
+
+def _root(node: ast.AST, index: Index) -> ast.AST:
+    while (parent := index.parents.get(id(node))) is not None:
+        node = parent
+    return node
+
+
+def _share_paths(package: Package) -> dict[str, str]:
+    """Source file -> its path below ``share/<package>/``, for the files data_files
+    installs there."""
+    prefix = f"share/{package.name}/"
+    return {source: installed.removeprefix(prefix)
+            for installed, source in (installed_data(package) or {}).items()
+            if installed.startswith(prefix)}
+
+
+def _hit(span: Span, call: ast.Call, text: str, named: tuple[str, bool], name: str,
+         shared: str | None) -> Hit:
+    inside, from_workspace = named
+    folder = "a workspace's folder" if from_workspace else "the package's source folder"
+    message = (f"`{shortened(ast.unparse(call))}` opens `{text}` relative to the folder the "
+               f"process starts in, not to the package: it finds the package's `{inside}` "
+               f"only when started from {folder} (`ros2 run` and `ros2 launch` start it "
+               "anywhere, and an installed package has no source folder: FileNotFoundError)")
+    if shared is not None:
+        parts = ", ".join(f"'{part}'" for part in shared.split("/"))
+        return Hit(span, message, f"Open `os.path.join(get_package_share_directory('{name}'), "
+                   f"{parts})`: data_files installs `{inside}` there")
+    return Hit(span, message, f"Install `{inside}` with data_files into `share/{name}` and open "
+               f"it from `get_package_share_directory('{name}')`")
