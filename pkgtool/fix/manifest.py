@@ -89,14 +89,19 @@ def spdx(package: Package, findings: list[Finding]) -> Iterator[Fix]:
 
 _WRITE_KEY = lazy_pattern(r"Write `<\w+>([\w.+-]+)</\w+>`")
 """The fix MAN018 states when it knows the one key to write."""
+_NEEDS_NONE = ("is part of the Python standard library", "is a file name, not a package")
+"""How MAN018 states a dependency that declares nothing to install (a standard library
+module, a file of the package): removing it changes nothing rosdep or colcon does."""
 
 
-@fixer("MAN018", "Write the rosdep key instead of the pip or import name")
+@fixer("MAN018", "Write the rosdep key instead of the pip or import name, or drop a "
+       "standard library module or a file name")
 def rosdep_key(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Rename the key to the one the finding names (``numpy`` -> ``python3-numpy``,
     ``opencv`` -> ``libopencv-dev`` in a CMake package); when that tag already declares the
-    right key, drop the wrong one. Build types, ROS 1 packages and keys the finding leaves to
-    the user (a Python key's name in a CMake package) stay manual."""
+    right key, drop the wrong one. Drop a standard library module (``math``) or a file name
+    (``robot.launch.py``): there is nothing to install. Build types, ROS 1 packages and keys
+    the finding leaves to the user (a Python key's name in a CMake package) stay manual."""
     doc = manifest_doc(package)
     if doc is None:
         return
@@ -105,6 +110,9 @@ def rosdep_key(package: Package, findings: list[Finding]) -> Iterator[Fix]:
         written = _WRITE_KEY.fullmatch(finding.fix or "")
         if element is not None and written is not None:
             yield _rename(doc, element, written.group(1))
+        elif element is not None and any(why in finding.message for why in _NEEDS_NONE):
+            yield Fix(f"Remove `{doc.text_of(element)}`: nothing to install",
+                      (doc.remove(element),))
 
 
 @fixer("MAN021", "Write the one known name the misspelled dependency is close to",

@@ -11,12 +11,37 @@ from __future__ import annotations
 from pkgtool.records import record
 
 
+SYSTEM_NUMPY = {"humble": (1, 21), "jazzy": (1, 26), "kilted": (1, 26), "rolling": (1, 26)}
+"""The NumPy release (major, minor) of the Ubuntu release each ROS 2 distribution targets."""
+
+
+def system_has(removed: "Removed", distro: str) -> bool:
+    """True when the NumPy the target's Ubuntu ships still has the name (pip's is newer)."""
+    return SYSTEM_NUMPY.get(distro, (1, 26)) < removed.release
+
+
+def _release(text: str) -> tuple[int, int]:
+    major, minor = text.split(" ")[0].split(".")[:2]
+    return int(major), int(minor)
+
+
 @record
 class Removed:
     """``removed_in`` is the NumPy release that dropped the name; ``use`` the replacement."""
 
     removed_in: str
     use: str
+
+    @property
+    def release(self) -> tuple[int, int]:
+        """The (major, minor) of the NumPy release that dropped the name."""
+        return _release(self.removed_in)
+
+    @property
+    def lacking(self) -> str:
+        """The NumPy releases that lack the name (``2.0 and newer``, ``1.24 to 1.26``)."""
+        first = self.removed_in.split(" ")[0]
+        return f"{first} to 1.26" if "back in" in self.removed_in else f"{first} and newer"
 
 
 _ALIASES_1_24 = {"float": "float", "int": "int", "object": "object", "str": "str",

@@ -137,9 +137,10 @@ def installed_files(package: Package) -> frozenset[str]:
     run`` starts), else files inside Python package folders other than data folders (CMake
     installs ``launch/``, ``config/``, ... to ``share/``, whatever ``__init__.py`` they hold),
     and of a CMake package only those its CMakeLists.txt installs when that is known
-    (:func:`cmake_installed`). A setup.py and the files of a :func:`separate_projects`
-    project never are, nor what the setup.py of a CMake package names (colcon never runs
-    it)."""
+    (:func:`cmake_installed`), with the Python files it names (``install(PROGRAMS
+    scripts/node.py ...)``: what ``ros2 run`` starts). A setup.py and the files of a
+    :func:`separate_projects` project never are, nor what the setup.py of a CMake package
+    names (colcon never runs it)."""
     installed = installed_modules(package) if is_ament_python(package) else None
     if installed is not None:
         scripts = f"lib/{package.name}/"
@@ -154,8 +155,9 @@ def installed_files(package: Package) -> frozenset[str]:
                           and m.path.split("/", 1)[0] not in data)
         sources = cmake_installed(package)
         if sources is not None:
+            named = {m.path for m in package.modules if m.path in sources}  # PROGRAMS x.py
             files = frozenset(f for f in files if any(
-                s == "." or f == s or f.startswith(s + "/") for s in sources))
+                s == "." or f == s or f.startswith(s + "/") for s in sources)) | named
     return frozenset(f for f in files if posixpath.basename(f) != "setup.py"
                      and not posixpath.basename(f).startswith(".")  # setuptools globs `*.py`
                      and not in_separate_project(package, f))

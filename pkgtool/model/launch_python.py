@@ -517,12 +517,20 @@ class _Reader(ast.NodeVisitor):
         return (known[-1] if known else None), None in names
 
     def _ros2_run(self, node: ast.Call) -> None:
+        """``ros2 run <package> <executable>`` runs a node; ``ros2 launch <package> <file>``
+        looks the package up (its share folder)."""
         command = self.value(_keyword(node, "cmd"))
         if (isinstance(command, tuple) and len(command) >= 4 and command[:2] == ("ros2", "run")
                 and all(isinstance(c, str) for c in command[2:4])):
             self.nodes.append(NodeRef(command[2], command[3], self._span(node),
                                       optional=bool(self.optional), name_unknown=True,
                                       other_parameters=True, unused=bool(self.dead)))
+        elif (isinstance(command, tuple) and len(command) >= 4 and
+              command[:2] == ("ros2", "launch") and isinstance(command[2], str) and
+              not command[2].startswith("-") and "/" not in command[2] and
+              isinstance(command[3], str) and not command[2].endswith(".py")):
+            self.packages.append(PackageRef(command[2], self._span(node), bool(self.optional),
+                                            bool(self.dead)))
 
     def visit_BinOp(self, node: ast.BinOp) -> None:
         self._record_path(node)

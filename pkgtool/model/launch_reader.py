@@ -31,10 +31,10 @@ NODE_TAGS = {"node": ("exec", "executable"), "lifecycle_node": ("exec", "executa
 
 
 def kind_of(path: str) -> str:
-    """``python``, ``xml`` or ``yaml`` from the launch file's name."""
+    """``python``, ``xml`` or ``yaml`` from the launch file's name (``.launch``: XML)."""
     if path.endswith(".py"):
         return "python"
-    return "xml" if path.endswith(".xml") else "yaml"
+    return "xml" if path.endswith((".xml", ".launch")) else "yaml"
 
 
 def read_launch(path: str, text: str) -> LaunchFile:

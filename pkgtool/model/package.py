@@ -182,6 +182,10 @@ def load_package(root: Path, context: Context | None = None) -> Package:
 
 
 _LAUNCH_XML = lazy_pattern(r"\s*(?:<\?xml[^>]*\?>\s*)?(?:<!--.*?-->\s*)*<launch[\s>/]", re.S)
+_ROS2_XML = lazy_pattern(r"<node\b[^>]*\sexec\s*=|\$\(find-pkg-(?:share|prefix)\s|<let\s|"
+                         r"<set_parameter\s|<executable\s")
+"""What only ROS 2's XML launch format has (a ``<node exec=...>``, ``$(find-pkg-share x)``):
+a ``.launch`` file holding it is ROS 2's, not a roslaunch file."""
 _OPENCV_STORAGE = ("%YAML:", "\ufeff%YAML:")
 """How OpenCV's ``FileStorage`` files start (``%YAML:1.0``): a format of OpenCV's that YAML
 parsers refuse, read by ``cv2.FileStorage`` (ORB-SLAM's camera settings), never by ROS."""
@@ -236,14 +240,15 @@ def _shared_sources(setup_py: SetupPy | ParseProblem | None) -> frozenset[str]:
 def _launch_by_content(relpath: str, text_of: Callable[[str], str | None],
                        nested: frozenset[str], shared: frozenset[str]) -> bool:
     """A file in a ``launch`` folder (not a template) that is a launch file by its content,
-    whatever its name: XML or YAML whose root is ``launch``, Python defining
+    whatever its name: XML or YAML whose root is ``launch`` (a ``.launch`` file too, in ROS
+    2's XML format), Python defining
     ``generate_launch_description`` that data_files installs in ``share/`` (``lab5-launch.py``;
     not a module beside the launch files, nor a copy kept aside: ``launch_old.py``).
 
     ``ros2 launch`` accepts any file name; only files in a folder named ``launch`` are read
     for this, so URDF, RViz and parameter files elsewhere cost nothing.
     """
-    if not relpath.endswith((".xml", ".yaml", ".yml", ".py")) or \
+    if not relpath.endswith((".xml", ".yaml", ".yml", ".py", ".launch")) or \
             not in_launch_folder(relpath, nested):
         return False
     text = text_of(relpath)
@@ -253,6 +258,8 @@ def _launch_by_content(relpath: str, text_of: Callable[[str], str | None],
         return relpath in shared and runs_as_launch_file(relpath, text)
     if relpath.endswith(".xml"):
         return _LAUNCH_XML.match(text) is not None
+    if relpath.endswith(".launch"):  # ROS 1's suffix, used by ROS 2 XML files at times
+        return _LAUNCH_XML.match(text) is not None and _ROS2_XML.search(text) is not None
     return LAUNCH_YAML.search(text) is not None
 
 

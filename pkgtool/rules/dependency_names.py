@@ -54,10 +54,25 @@ def checked_dependencies(package: Package) -> list[Dependency]:
                 or not applies(dependency.condition, package.context.distro)):
             continue
         if name in NOT_PACKAGES or name in ROS1_PACKAGES or \
-                key_instead(name, package.context.distro, dependency.tag):
+                key_instead(name, package.context.distro, dependency.tag) or \
+                names_a_file(name, package.context.distro):
             continue  # MAN018's
         found.append(dependency)
     return found
+
+
+_FILE_SUFFIXES = (".py", ".launch", ".xml", ".yaml", ".yml", ".json", ".msg", ".srv", ".action",
+                  ".urdf", ".xacro", ".txt", ".cfg", ".rviz", ".sdf", ".world", ".sh", ".csv")
+"""Suffixes of files a dependency tag sometimes names by mistake (a launch file, a parameter
+file)."""
+
+
+def names_a_file(name: str, distro: str) -> bool:
+    """True for a declared name that is a file name (``robot.launch.py``, ``params.yaml``):
+    no released package is named so, and the rosdep keys that are (``python3-ruamel.yaml``)
+    are not."""
+    return name.endswith(_FILE_SUFFIXES) and not rosdistro.is_rosdep_key(name) and \
+        not rosdistro.is_released_package(name, distro)
 
 
 def key_instead(name: str, distro: str, tag: str) -> str | None:
@@ -102,10 +117,22 @@ def names_module(key: str, module: str) -> bool:
 def _same_module(package: Package, key: str, close: str) -> bool:
     """False when ``key`` is written for a module the package's code imports and ``close`` is
     not (``python3-pcl`` for ``import pcl`` is no misspelt ``python3-pil``: a key of its own
-    that rosdep lacks); ``cv-bridge`` and ``cv_bridge`` both name ``cv_bridge``."""
+    that rosdep lacks), or is a package its launch files name and ``close`` is not;
+    ``cv-bridge`` and ``cv_bridge`` both name ``cv_bridge``."""
     return not any(names_module(key, imported.top_level) and
                    not names_module(close, imported.top_level)
-                   for module in package.modules for imported in module.imports)
+                   for module in package.modules for imported in module.imports) and \
+        not (key in _launched(package) and close not in _launched(package))
+
+
+@per_package
+def _launched(package: Package) -> frozenset[str]:
+    """The packages the package's launch files start nodes of or look up: a declared key a
+    launch file names (``Node(package='navigation')``) is the package it means, built
+    elsewhere, not a misspelling of a released one."""
+    return frozenset({node.package for launch in package.launch_files for node in launch.nodes}
+                     | {ref.package for launch in package.launch_files
+                        for ref in launch.packages})
 
 
 @per_package

@@ -461,6 +461,19 @@ def needs(package: Package, module: PythonModule, *, guarded: bool | None = Fals
     return kept[key]
 
 
+_ROS1_CLIENTS = frozenset({"rospy", "roslib"})
+"""ROS 1's Python client library: a module importing it unguarded is ROS 1 code."""
+
+
+def is_ros1_module(package: Package, module: PythonModule) -> bool:
+    """True for a module of a ROS 2 package that imports ``rospy`` or ``roslib`` unguarded:
+    ROS 1 code left in the package, which cannot run at all on ROS 2 (the import fails first;
+    DEP004 says so): its other imports and its API use are not ROS 2's."""
+    return package.manifest is not None and not package.manifest.is_ros1 and any(
+        imported.top_level in _ROS1_CLIENTS and not imported.guarded
+        for imported in module.imports)
+
+
 def _needs(package: Package, module: PythonModule, guarded: bool | None) -> Iterator[Need]:
     skip = local_modules(package, module)
     stdlib = _stdlib(package.context.distro)
@@ -471,8 +484,11 @@ def _needs(package: Package, module: PythonModule, guarded: bool | None) -> Iter
     owner = python_package_of(package, module)
     on_path = path_modules(package, module)
     above = outside_edits(package).get(module.path)
+    ros1_code = is_ros1_module(package, module)
     for imported in module.imports:
         top = imported.top_level
+        if ros1_code and top not in ROS1_PACKAGES:
+            continue  # ROS 1 code: only its ROS 1 imports are told (DEP004)
         is_guarded = imported.guarded or optional
         if (not top or (guarded is not None and is_guarded != guarded)
                 or top in skip or (top in stdlib and not keys_for_import(top))

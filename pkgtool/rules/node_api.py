@@ -83,15 +83,29 @@ def node_api_calls(package: Package, methods: Collection[str] = PARAMETERS
 @per_package
 def _method_calls(package: Package) -> tuple[tuple[PythonModule, ast.Call, str, Index], ...]:
     """``x.<method>(...)`` calls in the installed modules importing rclpy, of methods the
-    module defines no function of its own for, with the method name (a dozen rules ask)."""
+    module defines no function of its own for, with the method name (a dozen rules ask). A
+    method a class of another module of the package defines counts only on ``self`` of a
+    class deriving from rclpy's Node alone (``self._client_handler.create_client()`` may be
+    the package's own)."""
     found = []
-    for module, _, index in installed_trees(package):
+    trees = installed_trees(package)
+    methods = {f.name for _, _, index in trees for cls in index.classes for f in cls.body
+               if isinstance(f, (ast.FunctionDef, ast.AsyncFunctionDef))}
+    for module, _, index in trees:
         if not any(i.top_level == "rclpy" for i in module.imports):
             continue
         found.extend((module, call, call.func.attr, index) for call in index.calls
                      if isinstance(call.func, ast.Attribute) and
-                     not index.defines_function(call.func.attr))
+                     not index.defines_function(call.func.attr) and
+                     (call.func.attr not in methods or _on_node_self(call.func.value, index)))
     return tuple(found)
+
+
+def _on_node_self(receiver: ast.expr, index: Index) -> bool:
+    """True for ``self`` in a method of a class deriving from rclpy's Node alone."""
+    cls = index.enclosing_class(receiver)
+    return isinstance(receiver, ast.Name) and receiver.id == "self" and cls is not None and \
+        derives_from_node_alone(cls, index)
 
 
 def not_from_rclpy(receiver: ast.expr, index: Index) -> bool:

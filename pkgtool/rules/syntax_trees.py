@@ -16,7 +16,7 @@ from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.records import field, record
-from pkgtool.rules.imports import installed_code
+from pkgtool.rules.imports import installed_code, is_ros1_module
 
 FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
 
@@ -176,12 +176,14 @@ index_of = per_tree(_index)
 @per_package
 def installed_modules(package: Package) -> tuple[tuple[PythonModule, ast.Module], ...]:
     """Installed, parseable modules with their syntax trees (the model's parse, shared), listed
-    once per package (most PYC rules ask)."""
+    once per package (most PYC rules ask); not ROS 1 modules (:func:`is_ros1_module`)."""
     return tuple(_installed_modules(package))
 
 
 def _installed_modules(package: Package) -> Iterator[tuple[PythonModule, ast.Module]]:
     for module in installed_code(package):
+        if is_ros1_module(package, module):
+            continue  # ROS 1 code left in a ROS 2 package: rospy's API, not rclpy's
         text = package.texts.get(module.path)
         tree = parse_tree(module.path, text) if text is not None and not module.syntax_error \
             else None

@@ -15,9 +15,12 @@ from pkgtool.rules.data_files.common import ASKS_EXISTENCE, checks_files
 from pkgtool.rules.syntax_trees import Index, index_of, installed_trees, python_files
 from pkgtool.lazy_regex import lazy_pattern
 
-HOME_PATH = lazy_pattern(r"(?<![\w.~$}/-])(?:/home/(?!\$|\{)[\w.-]+|/Users/[\w.-]+)/[\w.-]")
-"""An absolute path inside a named user's home folder (not ``/home/$USER/``)."""
-_HINTS = ("/home/", "/Users/")
+HOME_PATH = lazy_pattern(r"(?<![\w.~$}/-])(?:/home/(?!\$|\{)[\w.-]+|/Users/[\w.-]+|"
+                         r"/root(?=/(?:[\w.-]+/)*?[\w.-]+/(?:src|install)/))/[\w.-]")
+"""An absolute path inside a named user's home folder (not ``/home/$USER/``), or into a
+colcon workspace's ``src`` or ``install`` folder in root's (``/root/ros2_ws/src/...``: a
+container's; root's other files, ``/root/.bashrc``, are left alone)."""
+_HINTS = ("/home/", "/Users/", "/root/")
 _MESSAGES = frozenset({"print", "info", "warn", "warning", "error", "debug", "fatal", "log",
                        "exception", "critical", "write", "format", "add_argument"})
 """Calls whose text arguments are messages."""
@@ -33,7 +36,8 @@ def home_folder_path(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Reports absolute paths into a named user's home folder (`/home/alice/...`,
-    `/Users/alice/...`): string literals of installed modules and Python launch files (not
+    `/Users/alice/...`, and root's into a workspace's `src` or `install` folder:
+    `/root/ros2_ws/src/...`): string literals of installed modules and Python launch files (not
     docstrings, nor messages given to `print`, a logger, `argparse` or a launch argument's
     `description`; not in a file that
     asks whether paths exist, `os.path.exists()` and the like, as code that falls back when a
@@ -171,7 +175,7 @@ def _text_paths(path: str, text: str) -> Iterator[Hit]:
 
 def _hit(span: Span, start: str, value: str) -> Hit:
     shown = value if len(value) <= 80 else value[:77] + "..."
-    user = start.split("/")[2]
+    user = "root" if start.startswith("/root/") else start.split("/")[2]
     return Hit(span, f"`{shown}` is in the home folder of the user `{user}`: on any other "
                "machine the file is not there")
 

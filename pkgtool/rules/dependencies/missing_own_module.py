@@ -12,7 +12,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import installed_modules, is_ament_python
 from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
-from pkgtool.model.submodules import under
+from pkgtool.model.submodules import ignored, under
 from pkgtool.rules.imports import installed_code, test_code
 from pkgtool.rules.registry import rule
 
@@ -34,16 +34,18 @@ def _in_tree(package: Package, module: str) -> bool:
     uninstalled for another reason, which other rules report), or may generate it: its
     name is in setup.py, CMakeLists.txt (an extension module CMake builds,
     ``pybind11_add_module(name ...)``) or a ``.gitignore`` (a module written at build
-    time); or it lies in a git submodule that is not checked out (SYN005 says so); or it is
-    a compiled extension module kept in the tree (``dsrbind.so``,
-    ``dsrbind.cpython-312-x86_64-linux-gnu.so``)."""
+    time), or a ``.gitignore`` leaves out its file or a folder around it (code a script
+    generates, ``flatc -o my_pkg/flatbuffers``, or the user copies in); or it lies in a git
+    submodule that is not checked out (SYN005 says so); or it is a compiled extension module
+    kept in the tree (``dsrbind.so``, ``dsrbind.cpython-312-x86_64-linux-gnu.so``)."""
     path = module.replace(".", "/")
     generated = [package.texts.get(f, "") for f in package.files
                  if f in ("setup.py", "CMakeLists.txt") or f.endswith(".gitignore")]
     stem = module.rpartition(".")[2]
     folder, _, stem = path.rpartition("/")
     prefix = f"{folder}/{stem}." if folder else f"{stem}."
-    return package.has_file(f"{path}.py") or under(path, package.unfetched) or any(
+    return package.has_file(f"{path}.py") or under(path, package.unfetched) or \
+        ignored(f"{path}.py", package.ignores) or any(
         f.startswith(prefix) and f.endswith((".so", ".pyd")) for f in package.files) or any(
         f.startswith(f"{path}/") for f in package.files) or any(
         re.search(rf"\b{re.escape(stem)}\b", text) for text in generated)
@@ -93,7 +95,8 @@ def missing_own_module(package: Package) -> Iterator[Hit]:
     at its top level nor has it as a submodule. Modules with `from x import *`, a
     module-level `__getattr__`, or calls of `globals()`, `exec()` or `setattr()` are not
     judged on their names; a module named in setup.py, CMakeLists.txt (an extension module
-    CMake builds) or a `.gitignore` (generated at build time) is taken to exist, and an
+    CMake builds) or a `.gitignore` (generated at build time), or whose file a `.gitignore`
+    leaves out (`**/flatbuffers/`: code a script generates), is taken to exist, and an
     absolute import is left alone when a module of its first name sits next to the
     importing file (run as a script, the file imports that one).
 

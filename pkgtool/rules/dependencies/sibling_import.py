@@ -8,7 +8,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import keys_for_import, stdlib_modules
-from pkgtool.model.installed import installed_data, installed_modules
+from pkgtool.model.installed import installed_data, installed_modules, separate_projects
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
@@ -118,8 +118,12 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
 
 def _namespace_folder(package: Package, folder: str, top: str) -> str | None:
     """``<folder>/<top>/`` when that folder holds Python files but no ``__init__.py`` (a
-    folder ``find_packages()`` and ``packages=[...]`` leave out), else None."""
+    folder ``find_packages()`` and ``packages=[...]`` leave out), else None; not when it is a
+    Python project of its own (a ``setup.py`` or ``pyproject.toml``: a library kept in the
+    package and pip-installed, whose code is a level further down)."""
     prefix = f"{folder}/{top}/"
+    if f"{folder}/{top}" in separate_projects(package):
+        return None
     return prefix if any(f.startswith(prefix) and f.endswith(".py") for f in package.files) \
         else None
 

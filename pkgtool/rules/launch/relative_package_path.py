@@ -18,15 +18,21 @@ _SOURCES = ("launch.launch_description_sources", "launch_ros.actions", "launch_r
 
 
 def _paths(call: ast.Call, index: Index) -> list[ast.expr]:
-    """The file arguments of a launch call: each item of ``parameters=[...]`` of a launch_ros
-    node, and the first argument of a launch description source."""
+    """The file arguments of a launch call: each item of ``parameters=[...]`` and of
+    ``arguments=[...]`` of a launch_ros node (``['-d', 'rviz/view.rviz']``: only a text
+    naming a file of the package counts), and the first argument of a launch description
+    source."""
     module, name = launch_class(call, index)
     if not within(module, _SOURCES):
         return []
     if name.endswith("LaunchDescriptionSource"):
         return call.args[:1] + [k.value for k in call.keywords if k.arg == "launch_file_path"]
-    parameters = next((k.value for k in call.keywords if k.arg == "parameters"), None)
-    return list(parameters.elts) if isinstance(parameters, (ast.List, ast.Tuple)) else []
+    found: list[ast.expr] = []
+    for keyword in call.keywords:
+        if keyword.arg in ("parameters", "arguments") and \
+                isinstance(keyword.value, (ast.List, ast.Tuple)):
+            found.extend(keyword.value.elts)
+    return found
 
 
 def _written(package: Package) -> Iterator[tuple[str, Span]]:
@@ -50,7 +56,8 @@ def relative_package_path(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Reports a string literal given as a parameter file of a launch_ros node
-    (`parameters=['config/params.yaml']`) or as the file of a launch description source
+    (`parameters=['config/params.yaml']`) or in its command line (`arguments=['-d',
+    'rviz/view.rviz']`), or as the file of a launch description source
     (`PythonLaunchDescriptionSource('launch/robot.launch.py')`) in a Python launch file, or
     as the `from` of a node's `<param>` (`param: [{from: ...}]` in YAML), the `file` of an
     `<include>` or the `filename` of a `<set_parameters_from_file>` in an XML or YAML launch

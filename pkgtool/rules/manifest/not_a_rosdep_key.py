@@ -6,10 +6,11 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdep import NOT_PACKAGES, ROS1_PACKAGES
+from pkgtool.knowledge.rosdistro import is_released_package, is_rosdep_key, stdlib_modules
 from pkgtool.model.condition import applies
 from pkgtool.model.package import Package
 from pkgtool.model.xml import XmlElement
-from pkgtool.rules.dependency_names import cmake_finds, key_instead
+from pkgtool.rules.dependency_names import cmake_finds, key_instead, names_a_file
 from pkgtool.rules.manifest.common import build_types, tree
 from pkgtool.rules.manifest.schema import DEPENDS_1, DEPENDS_2, token
 from pkgtool.rules.registry import rule
@@ -23,7 +24,9 @@ _STDLIB = frozenset({
     "struct", "subprocess", "sys", "tempfile", "threading", "time", "traceback", "typing",
     "unittest", "urllib", "warnings",
 })
-"""Pure-Python standard library modules students declare; none is a rosdep key or ROS package."""
+"""Standard library modules students declare (``time`` is also a rosdep key, for GNU time, that
+a Python package never means); any other standard library module counts when it is neither a
+rosdep key nor a released package (``uuid``, ``zlib`` and ``sqlite3`` are keys)."""
 
 
 _CPP_KEYS = {"opencv": "libopencv-dev", "opencv2": "libopencv-dev", "OpenCV": "libopencv-dev"}
@@ -41,7 +44,12 @@ def _hit(element: XmlElement, ros2: bool, compiled: bool, distro: str) -> Hit | 
         return Hit(element.span, f"`{key}` is a build type, not a package",
                    f"Remove this `<{tag}>` and declare `<build_type>{key}</build_type>` in "
                    "`<export>`")
-    if key in _STDLIB:
+    if names_a_file(key, distro):
+        return Hit(element.span, f"`{key}` is a file name, not a package: rosdep cannot "
+                   "resolve it", f"Remove this `<{tag}>` (files of the package need no "
+                   "dependency), or name the package that provides the file")
+    if key in _STDLIB or key in stdlib_modules(distro) and not is_rosdep_key(key) and \
+            not is_released_package(key, distro):
         return Hit(element.span, f"`{key}` is part of the Python standard library, not a rosdep "
                    "key", f"Remove this `<{tag}>`: the standard library needs no dependency")
     if key in ROS1_PACKAGES and ros2:
@@ -71,14 +79,15 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Reports dependency keys that are known not to be rosdep keys, with the key to use:
-    a name with a ``/`` (``turtlesim/msg/Pose``: its package is the dependency),
+    a name with a ``/`` (``turtlesim/msg/Pose``: its package is the dependency), a file name
+    (``robot.launch.py``, ``params.yaml``),
     pip distribution names (``opencv-python``, ``pyyaml``, ``numpy``), import names (``cv2``),
     ROS 1 Python 2 keys (``python-opencv``), ROS 1 packages (``rospy``, ``catkin``) in a package
     whose build type is ``ament_*``, ``ament_python``, which is a build type, and
-    standard library modules (``math``, ``threading``), which need no dependency. In a package
-    whose ``<build_type>`` is another than ``ament_python`` (``ament_cmake``, ``cmake``), whose
-    C++ code wants libraries, the key offered for ``opencv`` is ``libopencv-dev``, and none
-    where only a Python key is known.
+    standard library modules (``math``, ``threading``, ``termios``), which need no
+    dependency. In a package whose ``<build_type>`` is another than ``ament_python``
+    (``ament_cmake``, ``cmake``), whose C++ code wants libraries, the key offered for
+    ``opencv`` is ``libopencv-dev``, and none where only a Python key is known.
     A tag whose REP 149 ``condition`` is false for the target ROS 2 distribution (or not
     understood) is not used there and not checked, as packages for both ROS versions have:
     ``<exec_depend condition="$ROS_PYTHON_VERSION == 2">python-numpy</exec_depend>``.

@@ -22,13 +22,17 @@ GETTERS = frozenset({"rclpy.logging.get_logger"})
 def is_logger_call(node: ast.AST, index: Index, own: frozenset[str] = frozenset()) -> bool:
     """True for ``<x>.get_logger()`` or ``rclpy.logging.get_logger(...)``; not for
     ``self.get_logger()`` in a method of a class named in ``own``
-    (:func:`own_logger_classes`)."""
+    (:func:`own_logger_classes`), nor for ``<x>.get_logger(name)`` on anything but
+    ``rclpy.logging`` (a node's takes no argument: another library's logger factory)."""
     if not isinstance(node, ast.Call):
         return False
     func = node.func
+    if index.qualified(func) in GETTERS:
+        return True
     if isinstance(func, ast.Attribute) and func.attr == "get_logger":
-        return not own or not _own_getter(func.value, index, own)
-    return index.qualified(func) in GETTERS
+        return not node.args and not node.keywords and \
+            (not own or not _own_getter(func.value, index, own))
+    return False
 
 
 def _own_getter(receiver: ast.expr, index: Index, own: frozenset[str]) -> bool:

@@ -129,9 +129,23 @@ def _unsettled_returns(block: list[ast.stmt], handle: str, before: str = NEVER
         if isinstance(statement, ast.Return) and statement.value is not None and state == NEVER:
             yield statement
         for inner in _inner_blocks(statement):
-            yield from _unsettled_returns(inner, handle, state)
+            settled = isinstance(statement, ast.If) and _ended_in(statement, handle) is inner
+            yield from _unsettled_returns(inner, handle, SETTLES if settled else state)
         found = _statement(statement, handle)
         state = SETTLES if found == SETTLES else UNKNOWN if UNKNOWN in (state, found) else NEVER
+
+
+def _ended_in(statement: ast.If, handle: str) -> list[ast.stmt] | None:
+    """The branch of ``if not goal_handle.is_active:`` (its body; of ``if
+    goal_handle.is_active:``, its ``else``) that runs only once the goal's state is final
+    (canceled or aborted elsewhere): rclpy leaves a goal that is not active alone."""
+    test, negated = statement.test, False
+    if isinstance(test, ast.UnaryOp) and isinstance(test.op, ast.Not):
+        test, negated = test.operand, True
+    if isinstance(test, ast.Attribute) and test.attr == "is_active" and \
+            isinstance(test.value, ast.Name) and test.value.id == handle:
+        return statement.body if negated else statement.orelse
+    return None
 
 
 def _inner_blocks(statement: ast.stmt) -> list[list[ast.stmt]]:

@@ -113,6 +113,21 @@ def _named_alone(node: ast.Attribute, index: Index) -> bool:
     return not isinstance(around, ast.With)
 
 
+_LOG_LEVELS = frozenset({"debug", "info", "warn", "warning", "error", "fatal"})
+
+
+def _logs_through(node: ast.Attribute, index: Index) -> bool:
+    """True for ``<object>.get_logger.info(...)`` in a module defining no ``get_logger``: a
+    logging call on the method itself, whatever node it belongs to (not on a module:
+    ``rclpy.get_logger`` is PYC004's)."""
+    parent = index.parents.get(id(node))
+    call = index.parents.get(id(parent))
+    return node.attr == "get_logger" and index.qualified(node) is None and \
+        isinstance(parent, ast.Attribute) and \
+        parent.attr in _LOG_LEVELS and isinstance(call, ast.Call) and call.func is parent \
+        and not index.defines_function("get_logger")
+
+
 def _uncalled_methods(package: Package, tree: ast.Module, index: Index
                       ) -> Iterator[tuple[ast.expr, str]]:
     """(node, kind of object) of the methods of :data:`METHODS` taken without a call, and
@@ -125,6 +140,9 @@ def _uncalled_methods(package: Package, tree: ast.Module, index: Index
             yield node, ""
             continue
         if node.attr not in wanted or not _uncalled(node, index):
+            continue
+        if _logs_through(node, index):
+            yield node, "node"
             continue
         kind = _kind(node.value, package, tree, index)
         if kind is not None and node.attr in METHODS.get(kind, ()) and (
@@ -164,14 +182,14 @@ def method_not_called(package: Package) -> Iterator[Hit]:
     parameter of a done callback), `service_is_ready` and `wait_for_service` of a client,
     `server_is_ready` and `wait_for_server` of an action client, `now` of `get_clock()`, and
     a node's own `get_logger`, `get_clock`, `get_name`, `get_namespace` (only where what it
-    returns is used: `self.get_logger.info(...)`), taken without `()` (not when passed to a
-    call: a callable given on purpose), and `rclpy.ok` tested without `()`. A local name or a
-    node's `self.x` counts when every assignment of it makes such an object (or None). Also
-    reports a statement that
-    only names a method code calls for what it does (`self.timer.cancel`, `node.destroy_node`,
-    `rclpy.shutdown`, `rate.sleep`, `publisher.publish`: see the list in the source), on any
-    object, outside `with` blocks and the body and handlers of a `try` (in its `finally`
-    block too).
+    returns is used: `self.get_logger.info(...)`; any object's `get_logger` given a logging
+    call, `self.node.get_logger.warn(...)`, in a module defining no `get_logger`), taken
+    without `()` (not when passed to a call: a callable given on purpose), and `rclpy.ok`
+    tested without `()`. A local name or a node's `self.x` counts when every assignment of
+    it makes such an object (or None). Also reports a statement that only names a method
+    code calls for what it does (`self.timer.cancel`, `node.destroy_node`, `rclpy.shutdown`,
+    `rate.sleep`, `publisher.publish`: see the list in the source), on any object, outside
+    `with` blocks and the body and handlers of a `try` (in its `finally` block too).
 
     ## Why is this bad?
     Without `()` the code has the bound method, not its result: `future.result.sum` raises

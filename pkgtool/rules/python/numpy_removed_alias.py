@@ -6,18 +6,26 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.numpy_removed import REMOVED
+from pkgtool.knowledge.numpy_removed import REMOVED, SYSTEM_NUMPY, system_has
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.syntax_trees import installed_trees, resolved_attributes
 from pkgtool.rules.registry import rule
 
 
-def _hit(path: str, node: ast.AST, name: str) -> Hit:
+def _hit(path: str, node: ast.AST, name: str, distro: str) -> Hit:
     removed = REMOVED[name]
+    system = ".".join(map(str, SYSTEM_NUMPY.get(distro, ())))
+    if system_has(removed, distro):
+        whose = "Ubuntu 24.04's" if "back in" in removed.removed_in else \
+            "pip's, the PyPI ROS wheels'"
+        what = (f"raises AttributeError under NumPy {removed.lacking} ({whose}; the NumPy "
+                f"{system} Ubuntu ships for {distro} still has it)")
+    else:
+        what = f"raises AttributeError with the NumPy {system} Ubuntu ships for {distro}"
     return Hit(Span(path, node.lineno, node.col_offset + 1),  # type: ignore[attr-defined]
-               f"`np.{name}` was removed in NumPy {removed.removed_in} and raises "
-               f"AttributeError", f"Use {removed.use} instead of `np.{name}`")
+               f"`np.{name}` was removed in NumPy {removed.removed_in}: it {what}",
+               f"Use {removed.use} instead of `np.{name}`")
 
 
 @rule("PYC002", "numpy-removed-alias", Severity.ERROR,
@@ -35,8 +43,9 @@ def numpy_removed_alias(package: Package) -> Iterator[Hit]:
 
     ## Why is this bad?
     The line raises `AttributeError` (or `ImportError`) when it runs. ROS 2 Jazzy on Ubuntu
-    24.04 ships NumPy 1.26, pip installs NumPy 2: old tutorials' `np.int0` breaks on the
-    latter, `np.float` and `np.bool` on the former.
+    24.04 ships NumPy 1.26, pip (and the PyPI ROS 2 wheels courses run on) installs NumPy 2:
+    old tutorials' `np.int0` breaks on the latter, `np.float` and `np.bool` on the former.
+    The message says which NumPy the name is missing from.
 
     ## Example
     ```python
@@ -53,9 +62,9 @@ def numpy_removed_alias(package: Package) -> Iterator[Hit]:
             continue  # nothing can resolve to numpy (the common case: no walk over attributes)
         for node, owner, attr in resolved_attributes(index):
             if owner == "numpy" and attr in REMOVED and not index.in_unevaluated_annotation(node):
-                yield _hit(module.path, node, attr)
+                yield _hit(module.path, node, attr, package.context.distro)
         for node in index.import_froms:
             if node.module == "numpy" and node.level == 0:
                 for alias in node.names:
                     if alias.name in REMOVED:
-                        yield _hit(module.path, node, alias.name)
+                        yield _hit(module.path, node, alias.name, package.context.distro)

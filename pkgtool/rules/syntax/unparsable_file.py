@@ -5,7 +5,9 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.installed import installed_files
 from pkgtool.model.package import Package
+from pkgtool.model.span import ParseProblem
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax._newer_syntax import newer_syntax
 from pkgtool.rules.syntax._problems import problem_hits
@@ -30,7 +32,9 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     Python files under `test/` that pytest does not collect, and YAML under `test/`,
     `test_data/`, `testdata/` and similar folders. Nor are OpenCV's `FileStorage` files
     (starting `%YAML:1.0`), which OpenCV reads and YAML parsers refuse, nor a `.py` file
-    whose `#!` line runs another language (a bash script named `start.py`).
+    whose `#!` line runs another language (a bash script named `start.py`), nor a Python
+    file the package does not install in a folder of another project's code (`thirdparty/`,
+    `external/`, `vendor/`: Eigen's Python 2 maintenance scripts).
     Python is parsed by the Python running pkgtool: when that is older than the target
     distribution's (3.11 for jazzy's 3.12), a failing line that uses syntax the target's Python
     added is not reported, as the target may well accept it: an f-string that is complete
@@ -52,4 +56,19 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     <name>my_pkg</name>
     ```
     """
-    yield from problem_hits(package, _PARSE_KINDS, lambda p: not newer_syntax(package, p))
+    yield from problem_hits(package, _PARSE_KINDS, lambda p: not newer_syntax(package, p) and
+                            not _vendored_and_unused(package, p))
+
+
+_VENDORED = frozenset({"thirdparty", "third_party", "3rdparty", "external", "extern", "vendor",
+                       "vendored"})
+"""Folders of code a package keeps from another project (Eigen's maintenance scripts)."""
+
+
+def _vendored_and_unused(package: Package, problem: ParseProblem) -> bool:
+    """True for a Python file in a folder of another project's code that the package does
+    not install: nothing builds, runs or imports it (a Python 2 maintenance script)."""
+    path = problem.span.path
+    return problem.kind == "python-syntax" and \
+        bool(_VENDORED & {part.lower() for part in path.split("/")[:-1]}) and \
+        path not in installed_files(package)
