@@ -15,7 +15,9 @@ class Import:
     can run without: inside ``try`` blocks that catch ImportError/ModuleNotFoundError/Exception
     (with a handler that neither ends in ``raise`` nor exits: ``except ImportError:
     sys.exit(...)`` needs the module) and in their ``except`` fallbacks, in the body of ``with
-    contextlib.suppress(ImportError):`` (or a broader class), under ``if
+    contextlib.suppress(ImportError):`` (or a broader class), in a module-level function (or
+    a module-level class's ``__init__``) that the module only ever calls (constructs) inside
+    such ``try`` blocks (an optional backend with a fallback), under ``if
     TYPE_CHECKING:``, in either branch of an ``importlib.util.find_spec`` check or after one
     that raises or returns (``if find_spec("x") is None: raise ...``), in either branch of a
     test on ``__name__`` or ``__package__`` (run as a script or as a package), and in

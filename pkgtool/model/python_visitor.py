@@ -132,7 +132,7 @@ def _guard_finder(tree: ast.Module, parents: dict[int, ast.AST]) -> Callable[[as
     constants = module_constants(tree)
     blocks: dict[int, dict[int, bool]] = {}
 
-    def guarded(node: ast.AST) -> bool:
+    def in_blocks(node: ast.AST) -> bool:
         while node is not tree:
             parent = parents[id(node)]
             flags = blocks.get(id(parent))
@@ -145,7 +145,63 @@ def _guard_finder(tree: ast.Module, parents: dict[int, ast.AST]) -> Callable[[as
             node = parent
         return False
 
+    def guarded(node: ast.AST) -> bool:
+        if in_blocks(node):
+            return True
+        uses = _uses_of_function_around(node, tree, parents)
+        return bool(uses) and all(isinstance(use, ast.Call) and
+                                  _in_try_with_fallback(_statement_of(use, parents), parents)
+                                  for use in uses)
+
     return guarded
+
+
+def _in_try_with_fallback(node: ast.AST, parents: dict[int, ast.AST]) -> bool:
+    """True when ``node`` stands in the body of a ``try`` whose handler catches ImportError
+    (or a broader class) and goes on (neither re-raises at its end nor exits)."""
+    child, parent = node, parents.get(id(node))
+    while parent is not None:
+        if isinstance(parent, TRIES) and any(child is part for part in parent.body) and any(
+                _catches_import_error(h) and not _stops(h) for h in parent.handlers):
+            return True
+        child, parent = parent, parents.get(id(parent))
+    return False
+
+
+def _uses_of_function_around(node: ast.AST, tree: ast.Module, parents: dict[int, ast.AST]
+                             ) -> list[ast.AST]:
+    """Where the module uses the module-level function ``node`` is in (a call of it, or any
+    other use of its name; not ``main``, which a console script calls), or the class whose
+    ``__init__`` it is in; none for code elsewhere: an import there runs only when a use does
+    (``RPiBackend()`` called under ``try/except Exception`` with a fallback makes the
+    backend's own import optional)."""
+    function = parents.get(id(node))
+    while function is not None and not isinstance(function, (ast.FunctionDef,
+                                                             ast.AsyncFunctionDef)):
+        function = parents.get(id(function))
+    if function is None:
+        return []
+    owner = parents.get(id(function))
+    if owner is tree and function.name != "main":  # main: a console script's, called elsewhere
+        name = function.name
+    elif isinstance(owner, ast.ClassDef) and function.name == "__init__" and \
+            parents.get(id(owner)) is tree:
+        name = owner.name
+    else:
+        return []
+    uses: list[ast.AST] = []
+    for use in walk_once(tree).by_class.get(ast.Name, ()):
+        if use.id == name and isinstance(use.ctx, ast.Load):  # type: ignore[attr-defined]
+            call = parents.get(id(use))
+            uses.append(call if isinstance(call, ast.Call) and call.func is use else use)
+    return uses
+
+
+def _statement_of(node: ast.AST, parents: dict[int, ast.AST]) -> ast.AST:
+    """The statement ``node`` is part of."""
+    while not isinstance(node, ast.stmt):
+        node = parents[id(node)]
+    return node
 
 
 def _top_level_names(tree: ast.Module) -> frozenset[str]:

@@ -20,9 +20,10 @@ def undeclared_optional_import(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports guarded imports whose package or rosdep key package.xml does not declare in any
     dependency tag. The code is written to survive without the module, so this is
-    information, not an error. The imports of an own module that the package only ever
-    imports under such a guard (an optional back-end, like rqt_py_console's spyder console)
-    count as guarded too. ROS 1 modules (`rospy`) guarded in a ROS 2 package are its ROS 1
+    information, not an error. An import in a function (or a class's `__init__`) that the
+    module only calls (constructs) under `try/except Exception` with a fallback counts as
+    guarded too, and so do the imports of an own module that the package only ever
+    imports under such a guard (an optional back-end, like rqt_py_console's spyder console). ROS 1 modules (`rospy`) guarded in a ROS 2 package are its ROS 1
     code path (`if ROS_VERSION == 1:`, `except ImportError:`): there is nothing to declare.
 
     ## Why is this bad?

@@ -44,6 +44,12 @@ def _hit(element: XmlElement, ros2: bool, compiled: bool, distro: str) -> Hit | 
         return Hit(element.span, f"`{key}` is a build type, not a package",
                    f"Remove this `<{tag}>` and declare `<build_type>{key}</build_type>` in "
                    "`<export>`")
+    owner, _, kind = key.rpartition(".")
+    if kind in ("msg", "srv", "action") and owner and \
+            (is_released_package(owner, distro) or owner.endswith(("_msgs", "_interfaces"))):
+        return Hit(element.span, f"`{key}` names the `{kind}` module of `{owner}` (what code "
+                   "imports), not a package: rosdep cannot resolve it",
+                   f"Write `<{tag}>{owner}</{tag}>`")
     if names_a_file(key, distro):
         return Hit(element.span, f"`{key}` is a file name, not a package: rosdep cannot "
                    "resolve it", f"Remove this `<{tag}>` (files of the package need no "
