@@ -131,8 +131,11 @@ def misspelled(package: Package, findings: list[Finding]) -> Iterator[Fix]:
         if element is None:
             continue
         close = close_names(doc.text_of(element), package.context.distro, extra=others, limit=2)
+        written = _WRITE_KEY.fullmatch(finding.fix or "")
         if len(close) == 1:
             yield replace(_rename(doc, element, close[0]), safe=False)
+        elif not close and written is not None:  # the key of a module the code imports
+            yield replace(_rename(doc, element, written.group(1)), safe=False)
 
 
 def _rename(doc: ManifestDoc, element: Element, key: str) -> Fix:

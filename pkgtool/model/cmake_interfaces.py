@@ -136,6 +136,26 @@ def installed_sources(text: str, files: Iterable[str] = ()) -> frozenset[str] | 
     return frozenset(found)
 
 
+def installed_programs(text: str) -> frozenset[str]:
+    """The names under which ``install(PROGRAMS ...)`` calls of ``text`` install files into
+    ``lib/<package>``, where ``ros2 run`` and launch look executables up (a file keeps its
+    name, ``.py`` and all, unless ``RENAME`` gives another); sources that are not static are
+    left out."""
+    calls = _calls(text)
+    variables = _variables(calls, frozenset())
+    found: set[str] = set()
+    for name, args in calls:
+        destination = args[args.index("DESTINATION") + 1] if "DESTINATION" in args[:-1] else ""
+        if name != "install" or args[:1] != ["PROGRAMS"] or not destination.startswith("lib"):
+            continue
+        renamed = args[args.index("RENAME") + 1] if "RENAME" in args[:-1] else None
+        for arg in _install_args(name, args):
+            for value in _expand(arg, variables, _DEPTH):
+                if value and "${" not in value:
+                    found.add(renamed or posixpath.basename(value))
+    return frozenset(found)
+
+
 def _install_args(name: str, args: list[str]) -> list[str]:
     """The source arguments of one installing command (none for other commands)."""
     if name == "install" and args[:1] and args[0] in _INSTALL_SOURCES:

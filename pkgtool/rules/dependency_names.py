@@ -32,6 +32,8 @@ class Unknown:
     dependency: Dependency
     close: str | None
     elsewhere: tuple[str, ...]
+    module: str | None = None
+    """The imported module whose key ``close`` is, when the name misspells that module's."""
 
     def describe(self, distro: str) -> str:
         """`key` is not ... (the first half of a message)."""
@@ -155,8 +157,25 @@ def unknown_dependencies(package: Package) -> list[Unknown]:
             not _of_a_family(package, name, close[0]) and \
             not _version_of(name, close[0]) and \
             len(rosdistro.numbered_variants(name, distro)) < 2 else None
-        found.append(Unknown(dependency, meant, elsewhere))
+        module = _misspelt_import(package, name) if meant is None and not elsewhere else None
+        found.append(Unknown(dependency, module[1] if module else meant, elsewhere,
+                             module[0] if module else None))
     return found
+
+
+def _misspelt_import(package: Package, name: str) -> tuple[str, str] | None:
+    """(module, its rosdep key) when ``name`` is a typo of the name of a module the package
+    imports that no declared key provides (``simpole_pid`` for ``import simple_pid``)."""
+    distro = package.context.distro
+    declared = {d.name for d in package.manifest.dependencies} if package.manifest else set()
+    for module in package.modules:
+        for imported in module.imports:
+            top = imported.top_level
+            keys = rosdistro.keys_for_import(top, distro) if top and top != name else ()
+            if keys and not declared & set(keys) and \
+                    rosdistro.is_typo(name.replace("-", "_").lower(), top.lower()):
+                return top, keys[0]
+    return None
 
 
 _PARTS = lazy_pattern(r"[-_.]")

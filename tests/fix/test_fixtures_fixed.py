@@ -70,7 +70,7 @@ MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages
           ("PYC033", "extra_positional"), ("PYC033", "parameter_default_by_position"),
           ("LCH010", "data_file_as_program"), ("DEP001", "interfaces_of_an_unknown_package"),
           ("PYC029", "near_keywords"),
-          ("DAT001", "typo_in_path"),
+          ("DAT001", "typo_in_path"), ("LCH001", "cmake_script_installed_with_its_suffix"),
           ("DAT008", "flat_file_for_a_component_and_a_node"),
           ("LCH005", "launch_node_through_alias"),
           ("LCH005", "invalid_names"),

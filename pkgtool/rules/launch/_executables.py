@@ -3,8 +3,11 @@
 from __future__ import annotations
 
 import posixpath
+import re
 
+from pkgtool.model.cmake_interfaces import installed_programs, with_included
 from pkgtool.model.installed import is_ament_python
+from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.scripts import library_entries, script_names
 from pkgtool.lazy_regex import lazy_pattern
@@ -40,6 +43,20 @@ def executables(package: Package, *, any_data: bool = False) -> frozenset[str] |
             if not source.is_glob:
                 copied.add(posixpath.basename(source.pattern))
     return names | copied
+
+
+@per_package
+def cmake_programs(package: Package) -> dict[str, str]:
+    """Executable names a launch file may mean for the scripts a CMake package installs with
+    ``install(PROGRAMS x.py ...)`` under their file names (``x`` -> ``x.py``), when its CMake
+    files name ``x`` nowhere else (a target, a ``RENAME``, a component's ``EXECUTABLE``)."""
+    cmake = package.texts.get("CMakeLists.txt")
+    if cmake is None or is_ament_python(package):
+        return {}
+    text = with_included(cmake, package.texts.get)
+    return {name[:-3]: name for name in installed_programs(text)
+            if name.endswith(".py") and
+            not re.search(rf"(?<![\w./-]){re.escape(name[:-3])}(?![\w.-])", text)}
 
 
 def console_scripts(package: Package) -> frozenset[str] | None:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+from difflib import get_close_matches
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -35,10 +36,13 @@ def _declare(call: ast.Call, _: Index) -> Iterator[tuple[ast.AST, str, str]]:
         yield (call.args[1], "`DeclareLaunchArgument()` takes its default by keyword only: "
                "a second positional argument raises TypeError", BY_KEYWORD)
     for keyword in call.keywords:
-        meant = next((k for k in DECLARE_KEYWORDS if k.startswith(keyword.arg or "_")), None)
-        if keyword.arg not in DECLARE_KEYWORDS and meant:
+        meant = next((k for k in DECLARE_KEYWORDS if k.startswith(keyword.arg or "_")), None) \
+            or next(iter(get_close_matches(keyword.arg or "", DECLARE_KEYWORDS, n=1)), None)
+        if keyword.arg is not None and keyword.arg not in DECLARE_KEYWORDS:
             yield (keyword, f"`DeclareLaunchArgument()` has no `{keyword.arg}` argument: it "
-                   "raises TypeError", f"Write `{meant}=`")
+                   "raises TypeError when the launch file is loaded",
+                   f"Write `{meant}=`" if meant else
+                   f"Pass only {', '.join(f'`{k}`' for k in DECLARE_KEYWORDS[1:])}")
         number = _not_text(keyword.value) if keyword.arg == "default_value" else None
         if number is not None:
             text = str(number.value).lower() if isinstance(number.value, bool) \
@@ -141,9 +145,15 @@ def _module_of(node: ast.AST, index: Index) -> ast.AST:
 
 
 def _condition(call: ast.Call, action: str) -> Iterator[tuple[ast.AST, str, str]]:
-    """A ``condition=`` that is a literal (``'true'``, ``True``) or an f-string, not one of
-    launch's conditions."""
+    """A ``condition=`` that is a literal (``'true'``, ``True``), an f-string or a lambda, not
+    one of launch's conditions."""
     value = next((k.value for k in call.keywords if k.arg == "condition"), None)
+    if isinstance(value, ast.Lambda):
+        yield (value, f"`condition=` of `{action}()` is a lambda, not a condition: launch "
+               "raises AttributeError when it evaluates it ('function' object has no "
+               "attribute 'evaluate')", "Write `condition=IfCondition(LaunchConfiguration"
+               "('name'))`, or a `launch.conditions` class")
+        return
     if isinstance(value, ast.JoinedStr) or isinstance(value, ast.Constant) and \
             value.value is not None:
         shown = ast.unparse(value)

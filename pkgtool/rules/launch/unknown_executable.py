@@ -10,7 +10,8 @@ from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.model.launch import NodeRef
 from pkgtool.model.package import Package
 from pkgtool.model.scripts import sibling_executables
-from pkgtool.rules.launch._executables import LAUNCH_FILE_NAME, console_scripts, executables
+from pkgtool.rules.launch._executables import (LAUNCH_FILE_NAME, cmake_programs,
+                                               console_scripts, executables)
 from pkgtool.rules.registry import rule
 
 
@@ -31,7 +32,10 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
     `lib/<package>`). Executables given by launch arguments or other substitutions are not
     checked, nor nodes that are never started (assigned to a local name the function never
     reads): the executable is looked up only when a node starts, so such a node cannot fail.
-    LCH005 still checks their arguments, which the `Node()` call itself rejects.
+    LCH005 still checks their arguments, which the `Node()` call itself rejects. In a package
+    built with CMake, a node naming `detector` is reported when the CMakeLists.txt installs
+    the script `detector.py` with `install(PROGRAMS ...)` into `lib/` (under its file name)
+    and names `detector` nowhere else (no target, `RENAME` or component of that name).
 
     ## Why is this bad?
     `ros2 launch` looks the executable up in `lib/<package>` only when the launch file runs
@@ -51,15 +55,28 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
     # what certainly is there: a data_files never evaluated may copy any file
     shown = (executables(package) or console_scripts(package) or frozenset()) \
         if known is not None else None
+    programs = cmake_programs(package)
     for launch in package.launch_files:
         for node in launch.nodes:
             if node.package is None or node.executable is None or node.unused or \
                     LAUNCH_FILE_NAME.search(node.executable):  # LCH017's
                 continue
+            if node.package == package.name and node.executable in programs:
+                yield _kept_suffix(node, programs[node.executable])
+                continue
             installed = (known, shown) if node.package == package.name else \
                 _sibling(package, node.package)
             if installed[0] is not None and node.executable not in installed[0]:
                 yield _unknown(node, installed[1] or frozenset())
+
+
+def _kept_suffix(node: NodeRef, installed: str) -> Hit:
+    """The finding for a node naming a script a CMake package installs under its file name."""
+    return Hit(node.executable_span or node.span,
+               f"`{node.executable}` is not an executable of `{node.package}`: its "
+               f"CMakeLists.txt installs the script as `{installed}` (`install(PROGRAMS)` keeps "
+               "the file's name)", f"Write `executable='{installed}'`, or install the script "
+               f"with `RENAME {node.executable}`")
 
 
 def _sibling(package: Package, name: str) -> tuple[frozenset[str] | None, frozenset[str] | None]:

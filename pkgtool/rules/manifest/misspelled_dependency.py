@@ -22,7 +22,9 @@ def misspelled_dependency(package: Package) -> Iterator[Hit]:
     jazzy), the rosdep keys of rosdep's ``base.yaml`` and ``python.yaml``, and the packages
     of the same workspace (those linted in the same run, and every package under the ``src``
     folder of the colcon workspace the package is in). A key that is none of these but is
-    spelled like one of them is reported with that name, unless the code uses exactly that
+    spelled like one of them is reported with that name (or spelled like a module the code
+    imports that no declared key provides: `simpole_pid` for `import simple_pid` is
+    `python3-simple-pid-pip`), unless the code uses exactly that
     name (a Python import of it, a ``find_package()`` of it in CMakeLists.txt): a package
     built from source elsewhere, which MAN022 reports as unknown. Dependencies whose REP 149
     ``condition`` is false for the target (``$ROS_VERSION == 1``) are skipped, and so are
@@ -47,7 +49,9 @@ def misspelled_dependency(package: Package) -> Iterator[Hit]:
     for unknown in unknown_dependencies(package):
         if unknown.close:
             tag = unknown.dependency.tag
+            whose = f", the key of `{unknown.module}`, which the code imports" \
+                if unknown.module else ""
             yield Hit(unknown.dependency.span,
                       f"{unknown.describe(package.context.distro)}; did you mean "
-                      f"`{unknown.close}`?", f"Write `<{tag}>{unknown.close}</{tag}>`",
+                      f"`{unknown.close}`{whose}?", f"Write `<{tag}>{unknown.close}</{tag}>`",
                       cause=dependency_cause(unknown.close) if tag in RUNTIME else "")
