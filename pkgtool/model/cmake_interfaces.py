@@ -334,16 +334,21 @@ def _expand(arg: str, variables: dict[str, list[str] | None], depth: int
 def with_listed(found: dict[str, frozenset[str]], cmake: str | None, files: Iterable[str] = ()
                 ) -> dict[str, frozenset[str]] | None:
     """``found`` (kind -> names of the interface folders) and what ``cmake`` lists besides
-    (its globs matched against ``files``, the package's).
+    (its globs matched against ``files``, the package's), but files of its ``msg``, ``srv``
+    and ``action`` folders that ``files`` lacks (rosidl stops at a missing file: no such
+    interface is ever made).
 
     None when the list is open: the package defines interfaces no file of its tree shows.
     """
     if cmake is None or "rosidl_generate_interfaces" not in cmake:
         return found
+    files = frozenset(files)
     listed = listed_interfaces(cmake, files)
     if listed.open:
         return None
     merged = dict(found)
-    for kind, names in interfaces_of_files(listed.files).items():
+    present = {path for path in listed.files
+               if path in files or path.split("/", 1)[0] not in _KINDS}
+    for kind, names in interfaces_of_files(frozenset(present)).items():
         merged[kind] = merged.get(kind, frozenset()) | names
     return merged

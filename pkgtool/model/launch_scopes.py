@@ -67,7 +67,24 @@ def unread_values(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[
     never reads: no load of the name anywhere in it (nested functions included), no ``del``,
     no ``global`` or ``nonlocal`` declaration, no ``locals()``, ``vars()``, ``eval`` or
     ``exec`` in it, and no ``:=`` inside the value (the value it names may be read).
-    ``nodes`` are the :func:`scope_nodes` of its body."""
+    ``nodes`` are the :func:`scope_nodes` of its body. Also the calls of a tuple
+    so assigned (``unused = Node(...),``: a trailing comma makes a tuple of the action)."""
+    read = _read_names(function)
+    if read is None:
+        return set()
+    found = {node.value for node in nodes  # type: ignore[attr-defined]
+             if _names_path(node) and node.targets[0].id not in read}
+    for node in nodes:
+        if simple_assignment(node) and isinstance(node.value, ast.Tuple) and \
+                node.targets[0].id not in read:  # type: ignore[attr-defined]
+            found.update(item for item in node.value.elts  # type: ignore[attr-defined]
+                         if isinstance(item, ast.Call))
+    return found
+
+
+def _read_names(function: ast.FunctionDef | ast.AsyncFunctionDef) -> set[str] | None:
+    """The names ``function`` reads anywhere (nested functions included, ``global`` and
+    ``nonlocal`` declarations too); None when it may read any (``locals()``, ``eval``)."""
     read: set[str] = set()
     for node in subtree(function):
         if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Store):
@@ -76,9 +93,8 @@ def unread_values(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[
             read.update(node.names)
         elif isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and \
                 node.func.id in SCOPE_READERS:
-            return set()
-    return {node.value for node in nodes  # type: ignore[attr-defined]
-            if _names_path(node) and node.targets[0].id not in read}
+            return None
+    return read
 
 
 def _names_path(node: ast.AST) -> bool:

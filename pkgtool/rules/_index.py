@@ -56,6 +56,7 @@ RULES = {
     "IFC003": ("unknown-field-type", "error", True, "interfaces.unknown_field_type"),
     "IFC004": ("interfaces-in-python-package", "error", True,
                "interfaces.interfaces_in_python_package"),
+    "IFC005": ("missing-interface-file", "error", True, "interfaces.missing_interface_file"),
     "LCH001": ("launch-unknown-executable", "error", True, "launch.unknown_executable"),
     "LCH002": ("undeclared-launch-package", "error", True, "launch.undeclared_launch_package"),
     "LCH003": ("undeclared-launch-import", "warning", True, "launch.undeclared_launch_import"),

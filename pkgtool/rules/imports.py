@@ -29,7 +29,7 @@ from pkgtool.knowledge.rosdistro import (DISTROS, any_stdlib_module, close_names
 from pkgtool.model.cmake_interfaces import installed_python_packages
 from pkgtool.model.context import Context
 from pkgtool.model.installed import (DATA_FOLDERS, installed_files, installed_modules,
-                                     separate_projects)
+                                     is_ament_python, separate_projects)
 from pkgtool.model.launch import is_launch_file, python_folders
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.setup_py import EntryPoint
@@ -310,11 +310,24 @@ def pytest_path_modules(package: Package) -> frozenset[str]:
 def installed_code(package: Package) -> list[PythonModule]:
     """Non-test modules that colcon installs
     (:func:`~pkgtool.model.installed.installed_files`; a module named like a test counts as
-    test code only where :func:`~pkgtool.rules.test_modules.test_files` says so)."""
+    test code only where :func:`~pkgtool.rules.test_modules.test_files` says so), and those a
+    console script names that setup.py leaves out (a folder without ``__init__.py``: ENT002
+    says so, and their imports are checked now rather than once that is fixed)."""
     files, tests = installed_files(package), test_files(package)
     scripts = console_script_files(package)
-    return [m for m in package.modules if m.path in files
+    meant = _console_script_sources(package)
+    return [m for m in package.modules if (m.path in files or m.path in meant)
             and (m.path not in tests or m.path in scripts)]
+
+
+def _console_script_sources(package: Package) -> frozenset[str]:
+    """The files the console scripts' modules would be in (``pkg/node.py`` for
+    ``pkg.node:main``), installed or not, in an ament_python package."""
+    entries = package.setup_py.entry_points if package.setup_py else None
+    if not entries or not is_ament_python(package):
+        return frozenset()
+    return frozenset(f"{e.module.replace('.', '/')}.py" for e in entries
+                     if e.group == "console_scripts" and e.module)
 
 
 def entry_points_installed(package: Package, group: str) -> list[tuple[EntryPoint, str]]:

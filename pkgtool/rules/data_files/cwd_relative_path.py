@@ -34,6 +34,9 @@ _PATH_READS = frozenset({"read_text", "read_bytes", "open"})
 _SAME_PATH = frozenset({"str", "os.path.abspath", "os.path.realpath", "os.path.normpath",
                         *_PATHS})
 """Calls whose one argument is the path they give (``open(Path('x'))``)."""
+_SETS_THE_FOLDER = ASKS_EXISTENCE | {"chdir"}
+"""Calls after which a relative path may well be right: the module asks whether the file is
+there (and falls back), or changes the working folder first (``os.chdir(share)``)."""
 _WRITES = frozenset("wax")
 """Characters of an ``open()`` mode that write (a file made where the node runs is its own)."""
 
@@ -53,9 +56,10 @@ def cwd_relative_path(package: Package) -> Iterator[Hit]:
     package's folder (`'config/params.yaml'`) or from a workspace's
     (`'src/my_pkg/models/best.pt'`, a file the package has or not: a model kept out of
     git). The path is a string literal, or a name or `self.x` assigned that literal and
-    nothing else. A module that asks whether files exist
-    (`os.path.exists()` and the like) is left alone: it may fall back when the file is not
-    there. Tests are not checked (pytest runs them from a known folder).
+    nothing else. A module that asks whether files exist (`os.path.exists()` and the like)
+    or changes the working folder (`os.chdir()`) is left alone: it may fall back when the
+    file is not there, or open it from the right folder. Tests are not checked (pytest runs
+    them from a known folder).
 
     ## Why is this bad?
     A relative path is resolved against the working folder of the process, not against the
@@ -83,7 +87,7 @@ def cwd_relative_path(package: Package) -> Iterator[Hit]:
                 if path in launch]
     shares = _share_paths(package)
     for path, index in indexes:
-        if checks_files(index, ASKS_EXISTENCE):
+        if checks_files(index, _SETS_THE_FOLDER):
             continue
         for call in index.calls:
             read = _file_read(call, index)

@@ -35,12 +35,40 @@ def _paths(call: ast.Call, index: Index) -> list[ast.expr]:
     return found
 
 
+def _argument_defaults(index: Index) -> dict[str, ast.expr]:
+    """The ``default_value`` of each launch argument the file declares once, by name."""
+    found: dict[str, list[ast.expr]] = {}
+    for call in index.calls:
+        module, name = launch_class(call, index)
+        given = call.args[0] if call.args else next(
+            (k.value for k in call.keywords if k.arg == "name"), None)
+        default = next((k.value for k in call.keywords if k.arg == "default_value"), None)
+        if name == "DeclareLaunchArgument" and within(module, ("launch.actions",)) and \
+                isinstance(given, ast.Constant) and isinstance(given.value, str) and \
+                default is not None:
+            found.setdefault(given.value, []).append(default)
+    return {name: values[0] for name, values in found.items() if len(values) == 1}
+
+
+def _configuration_name(value: ast.expr, index: Index) -> str | None:
+    """The argument ``LaunchConfiguration('name')`` reads."""
+    if not isinstance(value, ast.Call) or len(value.args) != 1 or \
+            not isinstance(value.args[0], ast.Constant):
+        return None
+    module, name = launch_class(value, index)
+    return value.args[0].value if name == "LaunchConfiguration" and \
+        within(module, ("launch.substitutions",)) and isinstance(value.args[0].value, str) \
+        else None
+
+
 def _written(package: Package) -> Iterator[tuple[str, Span]]:
     """The file paths the launch files write as literals where a file is read: Python's
     (:func:`_paths`) and the XML and YAML ones' (``<param from=>``, ``<include file=>``)."""
     for path, index in launch_indexes(package):
+        defaults = _argument_defaults(index)
         for call in index.calls:
             for value in _paths(call, index):
+                value = defaults.get(_configuration_name(value, index) or "", value)
                 if isinstance(value, ast.Constant) and isinstance(value.value, str):
                     yield value.value, Span(path, value.lineno, value.col_offset + 1)
     for launch in package.launch_files:
@@ -56,7 +84,8 @@ def relative_package_path(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Reports a string literal given as a parameter file of a launch_ros node
-    (`parameters=['config/params.yaml']`) or in its command line (`arguments=['-d',
+    (`parameters=['config/params.yaml']`, also as the default of the launch argument a
+    `LaunchConfiguration` there reads) or in its command line (`arguments=['-d',
     'rviz/view.rviz']`), or as the file of a launch description source
     (`PythonLaunchDescriptionSource('launch/robot.launch.py')`) in a Python launch file, or
     as the `from` of a node's `<param>` (`param: [{from: ...}]` in YAML), the `file` of an
