@@ -13,7 +13,7 @@ RULES = {
     "DAT003": ("unregistered-package", "error", True, "data_files.unregistered_package"),
     "DAT004": ("uninstalled-package-xml", "warning", True, "data_files.uninstalled_package_xml"),
     "DAT005": ("uninstalled-launch-file", "error", True, "data_files.uninstalled_launch_file"),
-    "DAT006": ("uninstalled-launch-resource", "warning", True,
+    "DAT006": ("uninstalled-launch-resource", "error", True,
                "data_files.uninstalled_launch_resource"),
     "DAT007": ("directory-data-source", "error", True, "data_files.directory_data_source"),
     "DAT008": ("malformed-parameter-file", "error", True, "data_files.malformed_parameter_file"),

@@ -10,7 +10,7 @@ from pkgtool.rules.data_files.common import is_folder, uninstalled_launch_resour
 from pkgtool.rules.registry import rule
 
 
-@rule("DAT006", "uninstalled-launch-resource", Severity.WARNING,
+@rule("DAT006", "uninstalled-launch-resource", Severity.ERROR,
       fix="Install the file with data_files, e.g. `(os.path.join('share', package_name, "
           "'config'), glob('config/*.yaml'))`")
 def uninstalled_launch_resource(package: Package) -> Iterator[Hit]:
