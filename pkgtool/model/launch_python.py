@@ -527,8 +527,8 @@ class _Reader(ast.NodeVisitor):
                                       other_parameters=True, unused=bool(self.dead)))
         elif (isinstance(command, tuple) and len(command) >= 4 and
               command[:2] == ("ros2", "launch") and isinstance(command[2], str) and
-              not command[2].startswith("-") and "/" not in command[2] and
-              isinstance(command[3], str) and not command[2].endswith(".py")):
+              not command[2].startswith("-") and not {"/", ".", "$"} & set(command[2]) and
+              isinstance(command[3], str)):  # a package name: not a launch file's path
             self.packages.append(PackageRef(command[2], self._span(node), bool(self.optional),
                                             bool(self.dead)))
 

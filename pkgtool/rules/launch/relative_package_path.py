@@ -17,11 +17,11 @@ _SOURCES = ("launch.launch_description_sources", "launch_ros.actions", "launch_r
 """The modules of the launch classes whose file arguments are read here."""
 
 
-def _paths(call: ast.Call, index: Index) -> list[ast.expr]:
-    """The file arguments of a launch call: each item of ``parameters=[...]`` and of
-    ``arguments=[...]`` of a launch_ros node (``['-d', 'rviz/view.rviz']``: only a text
-    naming a file of the package counts), and the first argument of a launch description
-    source."""
+def _paths(call: ast.Call, index: Index, own: str) -> list[ast.expr]:
+    """The file arguments of a launch call: each item of ``parameters=[...]`` of a launch_ros
+    node, the items after an option in the ``arguments=[...]`` of a node of another package
+    than ``own`` (``['-d', 'rviz/view.rviz']``: only a text naming a file of the package
+    counts), and the first argument of a launch description source."""
     module, name = launch_class(call, index)
     if not within(module, _SOURCES):
         return []
@@ -29,10 +29,23 @@ def _paths(call: ast.Call, index: Index) -> list[ast.expr]:
         return call.args[:1] + [k.value for k in call.keywords if k.arg == "launch_file_path"]
     found: list[ast.expr] = []
     for keyword in call.keywords:
-        if keyword.arg in ("parameters", "arguments") and \
-                isinstance(keyword.value, (ast.List, ast.Tuple)):
+        if keyword.arg == "parameters" and isinstance(keyword.value, (ast.List, ast.Tuple)):
             found.extend(keyword.value.elts)
+        elif keyword.arg == "arguments" and isinstance(keyword.value, (ast.List, ast.Tuple)) \
+                and _other_package(call, own):
+            items = keyword.value.elts
+            found.extend(item for before, item in zip(items, items[1:])
+                         if isinstance(before, ast.Constant) and
+                         str(before.value).startswith("-"))
     return found
+
+
+def _other_package(call: ast.Call, own: str) -> bool:
+    """True for a node of a package other than ``own`` (``rviz2``): a node of the package
+    itself may resolve a relative argument against its own share folder."""
+    package = next((k.value for k in call.keywords if k.arg == "package"), None)
+    return isinstance(package, ast.Constant) and isinstance(package.value, str) and \
+        package.value != own
 
 
 def _argument_defaults(index: Index) -> dict[str, ast.expr]:
@@ -67,7 +80,7 @@ def _written(package: Package) -> Iterator[tuple[str, Span]]:
     for path, index in launch_indexes(package):
         defaults = _argument_defaults(index)
         for call in index.calls:
-            for value in _paths(call, index):
+            for value in _paths(call, index, package.name):
                 value = defaults.get(_configuration_name(value, index) or "", value)
                 if isinstance(value, ast.Constant) and isinstance(value.value, str):
                     yield value.value, Span(path, value.lineno, value.col_offset + 1)
@@ -85,8 +98,9 @@ def relative_package_path(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports a string literal given as a parameter file of a launch_ros node
     (`parameters=['config/params.yaml']`, also as the default of the launch argument a
-    `LaunchConfiguration` there reads) or in its command line (`arguments=['-d',
-    'rviz/view.rviz']`), or as the file of a launch description source
+    `LaunchConfiguration` there reads) or after an option in the command line of a node of
+    another package (`arguments=['-d', 'rviz/view.rviz']`), or as the file of a launch
+    description source
     (`PythonLaunchDescriptionSource('launch/robot.launch.py')`) in a Python launch file, or
     as the `from` of a node's `<param>` (`param: [{from: ...}]` in YAML), the `file` of an
     `<include>` or the `filename` of a `<set_parameters_from_file>` in an XML or YAML launch
