@@ -321,13 +321,15 @@ def installed_code(package: Package) -> list[PythonModule]:
 
 
 def _console_script_sources(package: Package) -> frozenset[str]:
-    """The files the console scripts' modules would be in (``pkg/node.py`` for
-    ``pkg.node:main``), installed or not, in an ament_python package."""
+    """The files the console scripts' modules that setup.py does not install would be in
+    (``pkg/node.py`` for ``pkg.node:main``), in an ament_python package whose installed
+    modules are known."""
     entries = package.setup_py.entry_points if package.setup_py else None
-    if not entries or not is_ament_python(package):
+    installed = installed_modules(package) if entries and is_ament_python(package) else None
+    if installed is None:
         return frozenset()
-    return frozenset(f"{e.module.replace('.', '/')}.py" for e in entries
-                     if e.group == "console_scripts" and e.module)
+    return frozenset(f"{e.module.replace('.', '/')}.py" for e in entries or ()
+                     if e.group == "console_scripts" and e.module and e.module not in installed)
 
 
 def entry_points_installed(package: Package, group: str) -> list[tuple[EntryPoint, str]]:
