@@ -20,11 +20,6 @@ def system_has(removed: "Removed", distro: str) -> bool:
     return SYSTEM_NUMPY.get(distro, (1, 26)) < removed.release
 
 
-def _release(text: str) -> tuple[int, int]:
-    major, minor = text.split(" ")[0].split(".")[:2]
-    return int(major), int(minor)
-
-
 @record
 class Removed:
     """``removed_in`` is the NumPy release that dropped the name; ``use`` the replacement."""
@@ -35,13 +30,19 @@ class Removed:
     @property
     def release(self) -> tuple[int, int]:
         """The (major, minor) of the NumPy release that dropped the name."""
-        return _release(self.removed_in)
+        major, minor = self.removed_in.split(" ")[0].split(".")[:2]
+        return int(major), int(minor)
+
+    @property
+    def comes_back(self) -> bool:
+        """True for a name NumPy 2.0 has again, with another meaning (``np.bool``)."""
+        return "back in" in self.removed_in
 
     @property
     def lacking(self) -> str:
         """The NumPy releases that lack the name (``2.0 and newer``, ``1.24 to 1.26``)."""
         first = self.removed_in.split(" ")[0]
-        return f"{first} to 1.26" if "back in" in self.removed_in else f"{first} and newer"
+        return f"{first} to 1.26" if self.comes_back else f"{first} and newer"
 
 
 _ALIASES_1_24 = {"float": "float", "int": "int", "object": "object", "str": "str",

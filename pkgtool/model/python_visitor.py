@@ -6,7 +6,7 @@ import ast
 import functools
 from collections.abc import Callable
 
-from pkgtool.model.ast_nodes import TRIES, block_statements, descendants, walk_once
+from pkgtool.model.ast_nodes import TRIES, block_statements, descendants, enclosing, walk_once
 from pkgtool.model.memo import forget_tree_facts
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.span import ParseProblem, Span
@@ -175,11 +175,8 @@ def _uses_of_function_around(node: ast.AST, tree: ast.Module, parents: dict[int,
     ``__init__`` it is in; none for code elsewhere: an import there runs only when a use does
     (``RPiBackend()`` called under ``try/except Exception`` with a fallback makes the
     backend's own import optional)."""
-    function = parents.get(id(node))
-    while function is not None and not isinstance(function, (ast.FunctionDef,
-                                                             ast.AsyncFunctionDef)):
-        function = parents.get(id(function))
-    if function is None:
+    function = enclosing(node, parents, (ast.FunctionDef, ast.AsyncFunctionDef))
+    if not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
         return []
     owner = parents.get(id(function))
     if owner is tree and function.name != "main":  # main: a console script's, called elsewhere

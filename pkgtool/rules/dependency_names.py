@@ -124,17 +124,17 @@ def _same_module(package: Package, key: str, close: str) -> bool:
     return not any(names_module(key, imported.top_level) and
                    not names_module(close, imported.top_level)
                    for module in package.modules for imported in module.imports) and \
-        not (key in _launched(package) and close not in _launched(package))
+        not (key in launched_packages(package) and close not in launched_packages(package))
 
 
 @per_package
-def _launched(package: Package) -> frozenset[str]:
-    """The packages the package's launch files start nodes of or look up: a declared key a
-    launch file names (``Node(package='navigation')``) is the package it means, built
-    elsewhere, not a misspelling of a released one."""
-    return frozenset({node.package for launch in package.launch_files for node in launch.nodes}
-                     | {ref.package for launch in package.launch_files
-                        for ref in launch.packages})
+def launched_packages(package: Package) -> frozenset[str]:
+    """The packages the package's launch files start nodes of or look up (a declared key a
+    launch file names, ``Node(package='navigation')``, is the package it means, built
+    elsewhere, not a misspelling of a released one)."""
+    return frozenset({node.package for launch in package.launch_files for node in launch.nodes
+                      if node.package} |
+                     {ref.package for launch in package.launch_files for ref in launch.packages})
 
 
 @per_package

@@ -515,10 +515,11 @@ def _needs(package: Package, module: PythonModule, guarded: bool | None) -> Iter
         if shown in seen:
             continue
         seen.add(shown)
-        kind, keys = classify(shown.replace(".", "_"), names, package.context)
+        joined = shown.replace(".", "_")
+        kind, keys = classify(joined, names, package.context)
         if package.name in keys:  # `azure.iot` read as `azure_iot`, the package's own name
             keys = tuple(k for k in keys if k != package.name)
-            guessed = tuple(k for k in _guessed_keys(shown.replace(".", "_")) if k != package.name)
+            guessed = tuple(k for k in _guessed_keys(joined) if k != package.name)
             kind, keys = (kind, keys) if keys else ("unknown", guessed)
         if ros1 and kind == "unknown" and top in ROS1_PACKAGES:  # rospy in a catkin package
             kind, keys = "ros", (top,)

@@ -68,6 +68,12 @@ class Index:
             current = self.parents.get(id(current))
         return current is not None
 
+    def module_of(self, node: ast.AST) -> ast.AST:
+        """The module ``node`` is in (the top of its parents)."""
+        while (parent := self.parents.get(id(node))) is not None:
+            node = parent
+        return node
+
     def enclosing_class(self, node: ast.AST) -> ast.ClassDef | None:
         """The innermost class around ``node``, or None."""
         parent = self.parents.get(id(node))
@@ -255,3 +261,21 @@ def _resolved(index: Index) -> Iterator[tuple[ast.Attribute, str, str]]:
         if name is not None:
             owner, _, attr = name.rpartition(".")
             yield node, owner, attr
+
+
+def python_launch_files(package: Package) -> Iterator[tuple[str, PythonModule, str]]:
+    """(path, module, text) of each Python launch file that parses and is not a test."""
+    for launch in package.launch_files:
+        module = launch.python
+        text = package.texts.get(launch.path)
+        if module is not None and not module.syntax_error and text is not None and \
+                not module.is_test:
+            yield launch.path, module, text
+
+
+def launch_indexes(package: Package) -> Iterator[tuple[str, Index]]:
+    """(path, index of its syntax tree) of each file :func:`python_launch_files` gives."""
+    for path, _, text in python_launch_files(package):
+        tree = parse_tree(path, text)
+        if isinstance(tree, ast.Module):
+            yield path, index_of(tree)

@@ -15,7 +15,7 @@ from pkgtool.rules.data_files.common import ASKS_EXISTENCE, checks_files
 from pkgtool.rules.registry import rule
 from pkgtool.rules.relative_paths import package_file_named
 from pkgtool.rules.scopes import scope_bindings, single_assignments
-from pkgtool.rules.syntax_trees import Index, index_of, installed_trees, python_files
+from pkgtool.rules.syntax_trees import Index, installed_trees, launch_indexes
 
 READERS = frozenset({
     "io.open", "codecs.open", "cv2.imread",
@@ -31,9 +31,8 @@ READERS = frozenset({
 _PATHS = frozenset({"pathlib.Path", "pathlib.PurePath"})
 _PATH_READS = frozenset({"read_text", "read_bytes", "open"})
 """Methods of a ``Path`` that read its file (a ``Path`` alone may be resolved elsewhere)."""
-_SAME_PATH = frozenset({"str", "os.path.abspath", "os.path.realpath", "os.path.normpath",
-                        *_PATHS})
-"""Calls whose one argument is the path they give (``open(Path('x'))``)."""
+_SAME_PATH = frozenset({"os.path.abspath", "os.path.realpath", "os.path.normpath", *_PATHS})
+"""Calls whose one argument is the path they give (``open(Path('x'))``; ``str()`` too)."""
 _SETS_THE_FOLDER = ASKS_EXISTENCE | {"chdir"}
 """Calls after which a relative path may well be right: the module asks whether the file is
 there (and falls back), or changes the working folder first (``os.chdir(share)``)."""
@@ -82,11 +81,8 @@ def cwd_relative_path(package: Package) -> Iterator[Hit]:
     ```
     """
     indexes = [(module.path, index) for module, _, index in installed_trees(package)]
-    launch = {f.path for f in package.launch_files if f.kind == "python"}
-    indexes += [(path, index_of(tree)) for path, _, tree in python_files(package)
-                if path in launch]
     shares = _share_paths(package)
-    for path, index in indexes:
+    for path, index in [*indexes, *launch_indexes(package)]:
         if checks_files(index, _SETS_THE_FOLDER):
             continue
         for call in index.calls:
@@ -136,7 +132,7 @@ def _path_texts(value: ast.expr, index: Index) -> list[str]:
     literal every store of ``self.x`` in the module assigns, all in one class."""
     if isinstance(value, ast.Name):
         scopes = [f for f in index.functions_around(value) if scope_bindings(f)[value.id]]
-        scope = scopes[0] if scopes else _root(value, index)
+        scope = scopes[0] if scopes else index.module_of(value)
         value = single_assignments(scope).get(value.id, value)
     elif isinstance(value, ast.Attribute) and isinstance(value.value, ast.Name):
         values = _stored(value, index)
@@ -150,7 +146,7 @@ def _stored(value: ast.Attribute, index: Index) -> list[ast.expr]:
     the class whose method reads ``self.x`` (else none)."""
     cls = index.enclosing_class(value)
     found: list[ast.expr] = []
-    for store in nodes_of_class(_root(value, index), ast.Attribute):
+    for store in nodes_of_class(index.module_of(value), ast.Attribute):
         assert isinstance(store, ast.Attribute)
         if store.attr != value.attr or isinstance(store.ctx, ast.Load):
             continue
@@ -160,12 +156,6 @@ def _stored(value: ast.Attribute, index: Index) -> list[ast.expr]:
             return []
         found.append(parent.value)
     return found
-
-
-def _root(node: ast.AST, index: Index) -> ast.AST:
-    while (parent := index.parents.get(id(node))) is not None:
-        node = parent
-    return node
 
 
 def _share_paths(package: Package) -> dict[str, str]:

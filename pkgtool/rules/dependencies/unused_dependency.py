@@ -10,6 +10,7 @@ from pkgtool.knowledge.ros_names import looks_like_ros
 from pkgtool.knowledge.rosdep import ALTERNATIVE_KEYS, ROS_MODULE_PACKAGES, brought_in
 from pkgtool.knowledge.rosdistro import modules_of_key
 from pkgtool.model.package import Package
+from pkgtool.rules.dependency_names import launched_packages
 from pkgtool.rules.imports import RUNTIME, all_python, declared, misspelt_package, needs
 from pkgtool.rules.registry import rule
 
@@ -74,9 +75,7 @@ def unused_dependency(package: Package) -> Iterator[Hit]:
         for need in needs(package, module, guarded=None):
             used.update(need.keys)
             used.add(misspelt_package(package, need) or "")  # `sensors_msgs` means it
-    for launch in package.launch_files:
-        used.update(n.package for n in launch.nodes if n.package)
-        used.update(p.package for p in launch.packages)
+    used.update(launched_packages(package))
     texts = "\n".join(t for p, t in package.texts.items() if p != "package.xml")
     has_config = any(p.endswith(_CONFIG_SUFFIXES) and p != "package.xml" for p in package.files)
     for key, dependency in declared(package, RUNTIME, bringing=False).items():

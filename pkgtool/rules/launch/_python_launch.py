@@ -1,38 +1,26 @@
-"""What the rules on Python launch files share: which files they read, the function's name,
-the launch classes calls make."""
+"""What the rules on Python launch files share: the function's name, the launch classes calls
+make (which files they read: :func:`pkgtool.rules.syntax_trees.launch_indexes`)."""
 
 from __future__ import annotations
 
 import ast
-from collections.abc import Iterator
 
 from pkgtool.model.launch import LaunchFile, is_launch_test, parse_launch
 from pkgtool.model.memo import per_package
-from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
-from pkgtool.model.python_visitor import parse_tree
-from pkgtool.rules.syntax_trees import Index, index_of
+from pkgtool.rules.syntax_trees import Index
 
 FUNCTION = "generate_launch_description"
 """The function ``ros2 launch`` calls in a Python launch file."""
 
 
-def python_launch_files(package: Package) -> Iterator[tuple[str, PythonModule, str]]:
-    """(path, module, text) of each Python launch file that parses and is not a test."""
-    for launch in package.launch_files:
-        module = launch.python
-        text = package.texts.get(launch.path)
-        if module is not None and not module.syntax_error and text is not None and \
-                not module.is_test:
-            yield launch.path, module, text
-
-
-def launch_indexes(package: Package) -> Iterator[tuple[str, Index]]:
-    """(path, index of its syntax tree) of each file :func:`python_launch_files` gives."""
-    for path, _, text in python_launch_files(package):
-        tree = parse_tree(path, text)
-        if isinstance(tree, ast.Module):
-            yield path, index_of(tree)
+def text_argument(call: ast.Call, keyword: str) -> str | None:
+    """The first argument (or ``keyword``) of a call, when it is a string literal (the name a
+    ``DeclareLaunchArgument`` declares, a ``LaunchConfiguration`` reads)."""
+    value = call.args[0] if call.args else next(
+        (k.value for k in call.keywords if k.arg == keyword), None)
+    return value.value if isinstance(value, ast.Constant) and isinstance(value.value, str) \
+        else None
 
 
 def within(module: str, homes: tuple[str, ...]) -> bool:

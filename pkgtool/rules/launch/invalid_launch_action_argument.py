@@ -10,9 +10,9 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.launch._python_launch import launch_class, launch_indexes, within
+from pkgtool.rules.launch._python_launch import launch_class, within
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index
+from pkgtool.rules.syntax_trees import Index, launch_indexes
 
 DECLARE_KEYWORDS = ("name", "default_value", "description", "choices", "condition")
 """The keywords ``DeclareLaunchArgument`` takes (``condition`` is every action's)."""
@@ -123,7 +123,7 @@ def _data_file(value: ast.expr, index: Index) -> str | None:
     """The name of the data file ``value`` is the path of (a literal, a join of path parts
     ending in one, or a name assigned one of those once), else None."""
     if isinstance(value, ast.Name):
-        scope: ast.AST = index.enclosing_function(value) or _module_of(value, index)
+        scope: ast.AST = index.enclosing_function(value) or index.module_of(value)
         values = [node.value for node in nodes_of_class(scope, ast.Assign)
                   if isinstance(node, ast.Assign) and any(
                       isinstance(t, ast.Name) and t.id == value.id for t in node.targets)]
@@ -135,13 +135,6 @@ def _data_file(value: ast.expr, index: Index) -> str | None:
             " " not in value.value.strip() and value.value.strip().endswith(_DATA_SUFFIXES):
         return value.value.strip().rsplit("/", 1)[-1]
     return None
-
-
-def _module_of(node: ast.AST, index: Index) -> ast.AST:
-    """The module ``node`` is in (the top of its parents)."""
-    while (parent := index.parents.get(id(node))) is not None:
-        node = parent
-    return node
 
 
 def _condition(call: ast.Call, action: str) -> Iterator[tuple[ast.AST, str, str]]:

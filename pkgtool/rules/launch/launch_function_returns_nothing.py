@@ -9,8 +9,9 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
-from pkgtool.rules.launch._python_launch import FUNCTION, python_launch_files
+from pkgtool.rules.launch._python_launch import FUNCTION
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import python_launch_files
 from pkgtool.rules.scopes import returns_none, scope_walk
 
 _COLLECTIONS = {ast.List: "list", ast.Tuple: "tuple", ast.ListComp: "list"}

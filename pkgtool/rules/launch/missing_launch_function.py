@@ -13,8 +13,9 @@ from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.imports import all_python
-from pkgtool.rules.launch._python_launch import FUNCTION, python_launch_files
+from pkgtool.rules.launch._python_launch import FUNCTION
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import python_launch_files
 
 _LOADERS = frozenset({"run_path", "spec_from_file_location", "SourceFileLoader",
                       "load_source", "import_module"})

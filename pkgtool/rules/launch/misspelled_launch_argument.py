@@ -12,8 +12,9 @@ from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
-from pkgtool.rules.launch._python_launch import python_launch_files
 from pkgtool.rules.registry import rule
+from pkgtool.rules.launch._python_launch import text_argument
+from pkgtool.rules.syntax_trees import python_launch_files
 from pkgtool.lazy_regex import lazy_pattern
 
 _DECLARE = "DeclareLaunchArgument"
@@ -30,14 +31,6 @@ _FRONTEND_READ = lazy_pattern(r"\$\(var\s+([\w.-]+)\s*\)")
 def _name(func: ast.expr) -> str:
     return func.id if isinstance(func, ast.Name) else (
         func.attr if isinstance(func, ast.Attribute) else "")
-
-
-def _literal(call: ast.Call, keyword: str) -> str | None:
-    """The first argument (or ``keyword``) of a call, when it is a string literal."""
-    value = call.args[0] if call.args else next(
-        (k.value for k in call.keywords if k.arg == keyword), None)
-    return value.value if isinstance(value, ast.Constant) and isinstance(value.value, str) \
-        else None
 
 
 @rule("LCH008", "misspelled-launch-argument", Severity.ERROR,
@@ -85,12 +78,12 @@ def misspelled_launch_argument(package: Package) -> Iterator[Hit]:
         found = nodes_of_class(tree, ast.Call) if isinstance(tree, ast.Module) else []
         calls[path] = found
         declared_anywhere.update(name for c in found if _name(c.func) == _DECLARE
-                                 and (name := _literal(c, "name")) is not None)
+                                 and (name := text_argument(c, "name")) is not None)
     for path, _, text in files:
         declared = {name for c in calls[path] if _name(c.func) == _DECLARE
-                    and (name := _literal(c, "name")) is not None}
+                    and (name := text_argument(c, "name")) is not None}
         for call in calls[path]:
-            name = _literal(call, "variable_name") if _name(call.func) == _READ else None
+            name = text_argument(call, "variable_name") if _name(call.func) == _READ else None
             if name is None or name in declared_anywhere or len(call.args) > 1 or any(
                     k.arg == "default" for k in call.keywords) or \
                     text.count(f"'{name}'") + text.count(f'"{name}"') > 1:

@@ -8,10 +8,10 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.launch._python_launch import launch_class, launch_indexes, within
+from pkgtool.rules.launch._python_launch import launch_class, text_argument, within
 from pkgtool.rules.registry import rule
 from pkgtool.rules.relative_paths import package_file_named
-from pkgtool.rules.syntax_trees import Index
+from pkgtool.rules.syntax_trees import Index, launch_indexes
 
 _SOURCES = ("launch.launch_description_sources", "launch_ros.actions", "launch_ros.descriptions")
 """The modules of the launch classes whose file arguments are read here."""
@@ -53,25 +53,21 @@ def _argument_defaults(index: Index) -> dict[str, ast.expr]:
     found: dict[str, list[ast.expr]] = {}
     for call in index.calls:
         module, name = launch_class(call, index)
-        given = call.args[0] if call.args else next(
-            (k.value for k in call.keywords if k.arg == "name"), None)
+        given = text_argument(call, "name")
         default = next((k.value for k in call.keywords if k.arg == "default_value"), None)
         if name == "DeclareLaunchArgument" and within(module, ("launch.actions",)) and \
-                isinstance(given, ast.Constant) and isinstance(given.value, str) and \
-                default is not None:
-            found.setdefault(given.value, []).append(default)
+                given is not None and default is not None:
+            found.setdefault(given, []).append(default)
     return {name: values[0] for name, values in found.items() if len(values) == 1}
 
 
 def _configuration_name(value: ast.expr, index: Index) -> str | None:
     """The argument ``LaunchConfiguration('name')`` reads."""
-    if not isinstance(value, ast.Call) or len(value.args) != 1 or \
-            not isinstance(value.args[0], ast.Constant):
+    if not isinstance(value, ast.Call) or len(value.args) != 1:
         return None
     module, name = launch_class(value, index)
-    return value.args[0].value if name == "LaunchConfiguration" and \
-        within(module, ("launch.substitutions",)) and isinstance(value.args[0].value, str) \
-        else None
+    return text_argument(value, "variable_name") if name == "LaunchConfiguration" and \
+        within(module, ("launch.substitutions",)) else None
 
 
 def _written(package: Package) -> Iterator[tuple[str, Span]]:

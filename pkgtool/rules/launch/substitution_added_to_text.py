@@ -8,10 +8,10 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.launch._python_launch import launch_class, launch_indexes, within
+from pkgtool.rules.launch._python_launch import launch_class, within
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import single_assignments
-from pkgtool.rules.syntax_trees import Index
+from pkgtool.rules.syntax_trees import Index, launch_indexes
 
 SUBSTITUTIONS = ("launch.substitutions", "launch_ros.substitutions")
 """The modules whose classes are all substitutions."""

@@ -11,10 +11,10 @@ from pkgtool.knowledge.launch_api import LAUNCH_DESCRIPTION_ATTRIBUTES
 from pkgtool.model.ast_nodes import subtree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.launch._python_launch import launch_class, launch_indexes
+from pkgtool.rules.launch._python_launch import launch_class
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import bound_names
-from pkgtool.rules.syntax_trees import Index
+from pkgtool.rules.syntax_trees import Index, launch_indexes
 
 
 def _descriptions(function: ast.FunctionDef | ast.AsyncFunctionDef, index: Index

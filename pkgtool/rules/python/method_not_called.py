@@ -12,6 +12,7 @@ from pkgtool.model.span import Span
 from pkgtool.rules.node_api import ACTION_CLIENTS, bases_are_nodes
 from pkgtool.rules.python._assignments import (assigned_values, done_callback_futures,
                                                is_none)
+from pkgtool.rules.python._loggers import LEVELS
 from pkgtool.rules.python._value_types import receiver_class
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
@@ -113,9 +114,6 @@ def _named_alone(node: ast.Attribute, index: Index) -> bool:
     return not isinstance(around, ast.With)
 
 
-_LOG_LEVELS = frozenset({"debug", "info", "warn", "warning", "error", "fatal"})
-
-
 def _logs_through(node: ast.Attribute, index: Index) -> bool:
     """True for ``<object>.get_logger.info(...)`` in a module defining no ``get_logger``: a
     logging call on the method itself, whatever node it belongs to (not on a module:
@@ -124,7 +122,7 @@ def _logs_through(node: ast.Attribute, index: Index) -> bool:
     call = index.parents.get(id(parent))
     return node.attr == "get_logger" and index.qualified(node) is None and \
         isinstance(parent, ast.Attribute) and \
-        parent.attr in _LOG_LEVELS and isinstance(call, ast.Call) and call.func is parent \
+        parent.attr in LEVELS and isinstance(call, ast.Call) and call.func is parent \
         and not index.defines_function("get_logger")
 
 

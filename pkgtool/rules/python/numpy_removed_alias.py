@@ -17,7 +17,7 @@ def _hit(path: str, node: ast.AST, name: str, distro: str) -> Hit:
     removed = REMOVED[name]
     system = ".".join(map(str, SYSTEM_NUMPY.get(distro, ())))
     if system_has(removed, distro):
-        whose = "Ubuntu 24.04's" if "back in" in removed.removed_in else \
+        whose = "Ubuntu 24.04's" if removed.comes_back else \
             "pip's, the PyPI ROS wheels'"
         what = (f"raises AttributeError under NumPy {removed.lacking} ({whose}; the NumPy "
                 f"{system} Ubuntu ships for {distro} still has it)")
