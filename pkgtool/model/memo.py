@@ -19,6 +19,7 @@ _KEEP = 4
 _TREE_ENTRIES = 200_000
 """How many results the per-tree caches hold together before they start over: far more than
 the largest package makes (callers that never call :func:`forget_tree_facts` stay bounded)."""
+_NOTHING = object()
 _tree_caches: list[dict[int, tuple[object, object]]] = []
 
 
@@ -33,18 +34,22 @@ def per_object(keep: int) -> Callable[[Callable[[P], R]], Callable[[P], R]]:
 
     def decorate(function: Callable[[P], R]) -> Callable[[P], R]:
         cache: OrderedDict[int, tuple[P, R]] = OrderedDict()
+        last: list[object] = [_NOTHING, None]  # the object asked for last, its result: most
+        # calls ask for the same package again, and this test is cheaper than the look-up
 
         @functools.wraps(function)
         def cached(obj: P) -> R:
+            if last[0] is obj:
+                return last[1]  # type: ignore[return-value]
             key = id(obj)
             hit = cache.get(key)
-            if hit is not None and hit[0] is obj:
-                return hit[1]
-            result = function(obj)
-            cache[key] = (obj, result)
-            if len(cache) > keep:
-                cache.popitem(last=False)
-            return result
+            if hit is None or hit[0] is not obj:
+                hit = (obj, function(obj))
+                cache[key] = hit
+                if len(cache) > keep:
+                    cache.popitem(last=False)
+            last[0], last[1] = hit
+            return hit[1]
 
         return cached
 

@@ -6,7 +6,8 @@ import ast
 import functools
 from collections.abc import Callable
 
-from pkgtool.model.ast_nodes import TRIES, block_statements, descendants, enclosing, walk_once
+from pkgtool.model.ast_nodes import (TRIES, block_statements, descendants, enclosing, subtree,
+                                     walk_once)
 from pkgtool.model.memo import forget_tree_facts
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.span import ParseProblem, Span
@@ -78,7 +79,28 @@ def _block(statements: list[ast.AST], guarded: bool) -> list[tuple[ast.AST, bool
     return parts
 
 
-def _guarded_parts(node: ast.AST, constants: dict[str, bool], at_top: bool
+def _import_probes(tree: ast.Module) -> frozenset[str]:
+    """The module-level functions that try an import and catch its ImportError without
+    stopping: availability probes (``def is_jupyter(): try: import IPython ... except
+    ImportError: return False``)."""
+    return frozenset(
+        function.name for function in tree.body
+        if isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef))
+        and any(isinstance(node, TRIES)
+                and any(isinstance(s, (ast.Import, ast.ImportFrom)) for s in node.body)
+                and any(_catches_import_error(h) and not _stops(h) for h in node.handlers)
+                for node in subtree(function)))
+
+
+def _calls_probe(test: ast.expr, probes: Callable[[], frozenset[str]]) -> bool:
+    """True when ``test`` calls one of the availability ``probes`` (``if is_jupyter():``)."""
+    called = {n.func.id for n in descendants(test)
+              if isinstance(n, ast.Call) and isinstance(n.func, ast.Name)}
+    return bool(called) and not called.isdisjoint(probes())
+
+
+def _guarded_parts(node: ast.AST, constants: dict[str, bool],
+                   probes: Callable[[], frozenset[str]], at_top: bool
                    ) -> list[tuple[ast.AST, bool]]:
     """The statements directly inside ``node``, each with whether ``node`` guards its imports
     (they are guarded too when a block around ``node`` guards it). A ``try`` at the top of
@@ -92,7 +114,8 @@ def _guarded_parts(node: ast.AST, constants: dict[str, bool], at_top: bool
     if isinstance(node, ast.If):
         value = truth(node.test, constants)
         either = _mentions_find_spec(node.test) or mentions_module_name(node.test)
-        inner = either or _is_type_checking(node.test) or value is False
+        inner = either or _is_type_checking(node.test) or value is False or \
+            _calls_probe(node.test, probes)
         return _block(node.body, inner) + _block(node.orelse, either or value is True)
     if isinstance(node, (ast.With, ast.AsyncWith)):
         return _block(node.body, _suppresses_import_error(node))
@@ -130,6 +153,7 @@ def _guard_finder(tree: ast.Module, parents: dict[int, ast.AST]) -> Callable[[as
     not at all.
     """
     constants = module_constants(tree)
+    probes = functools.cache(lambda: _import_probes(tree))
     blocks: dict[int, dict[int, bool]] = {}
 
     def in_blocks(node: ast.AST) -> bool:
@@ -138,8 +162,8 @@ def _guard_finder(tree: ast.Module, parents: dict[int, ast.AST]) -> Callable[[as
             flags = blocks.get(id(parent))
             if flags is None:
                 at_top = parents.get(id(parent)) is tree
-                flags = blocks[id(parent)] = {
-                    id(part): flag for part, flag in _guarded_parts(parent, constants, at_top)}
+                parts = _guarded_parts(parent, constants, probes, at_top)
+                flags = blocks[id(parent)] = {id(part): flag for part, flag in parts}
             if flags[id(node)]:
                 return True
             node = parent

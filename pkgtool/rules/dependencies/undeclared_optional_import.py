@@ -24,8 +24,11 @@ def undeclared_optional_import(package: Package) -> Iterator[Hit]:
     module only calls (constructs) under `try/except Exception` with a fallback counts as
     guarded too, and so do the imports of an own module that the package only ever
     imports under such a guard (an optional back-end, like rqt_py_console's spyder
-    console). ROS 1 modules (`rospy`) guarded in a ROS 2 package are its ROS 1 code path
-    (`if ROS_VERSION == 1:`, `except ImportError:`): there is nothing to declare.
+    console), and so do imports under `if probe():`, where `probe` is a module function
+    that tries an import and returns when it fails (`if in_notebook(): from
+    IPython.display import display`). ROS 1 modules (`rospy`) guarded in a ROS 2 package
+    are its ROS 1 code path (`if ROS_VERSION == 1:`, `except ImportError:`): there is
+    nothing to declare.
 
     ## Why is this bad?
     Without a declaration the optional feature is silently off on every machine set up with
