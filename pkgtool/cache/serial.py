@@ -103,22 +103,24 @@ def index_record(package: WorkspacePackage) -> list[Any]:
     """A workspace-index entry as JSON."""
     return [package.name, {kind: sorted(names) for kind, names in package.interfaces.items()},
             sorted(package.modules), dict(sorted(package.messages.items())), package.folder,
-            package.setup_digest]
+            package.setup_digest, sorted(package.depends)]
 
 
 def index_entry(stored: Any) -> WorkspacePackage | None:
     """The :class:`WorkspacePackage` :func:`index_record` stored; None when it is not one."""
     try:
-        name, interfaces, modules, messages, folder, setup_digest = stored
+        name, interfaces, modules, messages, folder, setup_digest, depends = stored
         if isinstance(name, str) and isinstance(interfaces, dict) and \
                 isinstance(modules, list) and all(isinstance(m, str) for m in modules) and \
                 all(isinstance(k, str) and isinstance(v, list) and
                     all(isinstance(n, str) for n in v) for k, v in interfaces.items()) and \
                 isinstance(messages, dict) and \
                 all(isinstance(k, str) and isinstance(v, str) for k, v in messages.items()) and \
-                isinstance(folder, str) and isinstance(setup_digest, str):
+                isinstance(folder, str) and isinstance(setup_digest, str) and \
+                isinstance(depends, list) and all(isinstance(d, str) for d in depends):
             return WorkspacePackage(name, {k: frozenset(v) for k, v in interfaces.items()},
-                                    frozenset(modules), messages, folder, setup_digest)
+                                    frozenset(modules), messages, folder, setup_digest,
+                                    frozenset(depends))
     except (TypeError, ValueError):
         pass
     return None

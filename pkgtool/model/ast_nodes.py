@@ -148,3 +148,18 @@ def nodes_of_class(tree: ast.AST, *classes: type[ast.AST]) -> list[ast.AST]:
     ``ast.Call``, not ``ast.expr``), grouped by class, each group in walk order."""
     by_class = walk_once(tree).by_class
     return [node for kind in classes for node in by_class.get(kind, ())]
+
+
+_EXITS = frozenset({"exit", "quit", "_exit"})
+"""``sys.exit``, ``exit()``, ``quit()``, ``os._exit``: calls that end the program."""
+
+
+def handler_stops(handler: ast.ExceptHandler) -> bool:
+    """True for a handler that ends with ``raise`` or exits the program: what it catches stops
+    the program (``except ImportError: sys.exit('pip install x')``)."""
+    last = handler.body[-1] if handler.body else None
+    if isinstance(last, ast.Raise):
+        return True
+    call = last.value if isinstance(last, ast.Expr) else None
+    return isinstance(call, ast.Call) and isinstance(call.func, (ast.Name, ast.Attribute)) and \
+        (call.func.id if isinstance(call.func, ast.Name) else call.func.attr) in _EXITS

@@ -56,6 +56,9 @@ class WorkspacePackage:
     messages: Mapping[str, str] = field(default_factory=dict)
     folder: str = ""
     setup_digest: str = ""
+    depends: frozenset[str] = frozenset()
+    """The packages its package.xml declares as build or run dependencies (any tag but
+    ``test_depend`` and ``doc_depend``)."""
 
 
 @record
@@ -128,6 +131,8 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
     base = os.fspath(root)
     setup = functools.cache(lambda: setup_texts(base))  # read once, if at all
     manifest = _read(os.path.join(base, "package.xml"))
+    if manifest is not None and "<!--" in manifest:
+        manifest = _COMMENT.sub("", manifest)  # an old manifest kept in a comment names nothing
     found = _NAME.search(manifest) if manifest is not None else None
     name = found.group(1) if found else \
         (_setup_name(*setup()) if manifest is None else None) or root.name
@@ -158,7 +163,16 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
     interfaces = with_listed(folders, cmake, listed) or {}
     return WorkspacePackage(name, interfaces, frozenset(modules),
                             _messages(base, name, interfaces, defined), base,
-                            _setup_digest(manifest, listed, setup))
+                            _setup_digest(manifest, listed, setup), _depends(manifest))
+
+
+_DEPEND = lazy_pattern(r"<(?:depend|exec_depend|run_depend|build_depend|build_export_depend|"
+                       r"buildtool_depend)(?:\s[^>]*)?>\s*([^<\s]+)\s*</")
+
+
+def _depends(manifest: str | None) -> frozenset[str]:
+    """The build and run dependencies a package.xml's text (without comments) declares."""
+    return frozenset(_DEPEND.findall(manifest)) if manifest else frozenset()
 
 
 _BUILD_TYPE = lazy_pattern(r"<build_type>\s*([^<\s]+)\s*</build_type>")

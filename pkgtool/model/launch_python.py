@@ -14,13 +14,13 @@ import math
 from collections.abc import Callable, Iterator
 from typing import Any
 
-from pkgtool.model.ast_nodes import child_nodes, descendants
+from pkgtool.model.ast_nodes import child_nodes, descendants, handler_stops, nodes_of_class
 from pkgtool.model.launch import COMMAND_PACKAGES, FileRef, NodeRef, PackageRef
 from pkgtool.model.launch_remaps import not_pairs
 from pkgtool.model.launch_scopes import (bindings, import_origins, overwritten_values,
-                                         read_only_by, scope_nodes, unread_attribute_values,
-                                         unread_module_values, unread_values,
-                                         written_paths)
+                                         read_only_by, scope_nodes, unread_argument_defaults,
+                                         unread_attribute_values, unread_module_values,
+                                         unread_values, written_paths)
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import depends_on_ros_distro
 from pkgtool.records import record
@@ -100,9 +100,12 @@ class _Reader(ast.NodeVisitor):
         self.optional = 0  # > 0 inside a block that runs only if some package is installed
         self.distro_branches = 0  # > 0 inside a branch of a test on the ROS distribution
         self.unread: set[ast.expr] = unread_attribute_values(tree)  # values never read
-        self.unread_paths = unread_module_values(tree, exported) | \
-            written_paths(tree)  # and module-level ones, and files the code writes
+        self.unread_paths = unread_module_values(tree, exported) | written_paths(tree) | \
+            unread_argument_defaults(tree)  # module-level ones, files the code writes, and
+        # defaults of launch arguments nothing reads
         self.dead = 0  # > 0 inside a node action that is never started
+        self.read_names = frozenset(n.id for n in nodes_of_class(tree, ast.Name)
+                                    if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load))
 
     def _span(self, node: ast.AST) -> Span:
         return Span(self.path, getattr(node, "lineno", 1), getattr(node, "col_offset", 0) + 1)
@@ -128,6 +131,9 @@ class _Reader(ast.NodeVisitor):
 
     # scopes -----------------------------------------------------------------------------
     def visit_FunctionDef(self, node: ast.FunctionDef | ast.AsyncFunctionDef) -> None:
+        if len(self.scopes) > 1 and not node.decorator_list and \
+                node.name not in self.read_names:
+            return  # a nested function nothing calls or passes on (to OpaqueFunction): dead
         for default in (*node.args.defaults, *node.args.kw_defaults, *node.decorator_list):
             if default is not None:
                 self.visit(default)
@@ -212,12 +218,13 @@ class _Reader(ast.NodeVisitor):
     def visit_Try(self, node: ast.Try) -> None:
         looked_up = any(isinstance(n, ast.Call) and _name(n.func) in _LOOKUPS
                         for statement in node.body for n in descendants(statement))
+        going_on = [h for h in node.handlers if not handler_stops(h)]  # not re-raising
         checked = any(isinstance(n, (ast.Name, ast.Attribute)) and
                       (_name(n) == "PackageNotFoundError" or
                        looked_up and _name(n) in _BROADER_CATCHES)
-                      for handler in node.handlers if handler.type
+                      for handler in going_on if handler.type
                       for n in descendants(handler.type)) or \
-            looked_up and any(handler.type is None for handler in node.handlers)
+            looked_up and any(handler.type is None for handler in going_on)
         self._visit_block(node.body, checked)
         for part in (*node.handlers, *node.orelse, *node.finalbody):
             self.visit(part)
@@ -518,15 +525,19 @@ class _Reader(ast.NodeVisitor):
 
     def _ros2_run(self, node: ast.Call) -> None:
         """``ros2 run <package> <executable>`` runs a node; ``ros2 launch <package> <file>``
-        looks the package up (its share folder)."""
-        command = self.value(_keyword(node, "cmd"))
-        if (isinstance(command, tuple) and len(command) >= 4 and command[:2] == ("ros2", "run")
+        looks the package up (its share folder); also after a terminal that runs the rest
+        (``['gnome-terminal', '--', 'ros2', 'run', ...]``)."""
+        whole = self.value(_keyword(node, "cmd"))
+        start = next((i for i, word in enumerate(whole) if word == "ros2"), None) \
+            if isinstance(whole, tuple) else None
+        command = whole[start:] if start is not None else ()
+        if (len(command) >= 4 and command[:2] == ("ros2", "run")
                 and all(isinstance(c, str) for c in command[2:4])):
             self.nodes.append(NodeRef(command[2], command[3], self._span(node),
                                       optional=bool(self.optional), name_unknown=True,
                                       other_parameters=True, unused=bool(self.dead)))
-        elif (isinstance(command, tuple) and len(command) >= 4 and
-              command[:2] == ("ros2", "launch") and isinstance(command[2], str) and
+        elif (len(command) >= 4 and command[:2] == ("ros2", "launch") and
+              isinstance(command[2], str) and
               not command[2].startswith("-") and not {"/", ".", "$"} & set(command[2]) and
               isinstance(command[3], str)):  # a package name: not a launch file's path
             self.packages.append(PackageRef(command[2], self._span(node), bool(self.optional),
@@ -554,8 +565,10 @@ class _Reader(ast.NodeVisitor):
         """Record the share file ``node`` names, unless nothing ever uses the path: it is the
         value of a local name never read, or inside a node action never started; nor a path
         that later parts of a ``PythonExpression`` or ``Command`` list continue."""
-        if node in self.unread or node in self.unread_paths or self.dead or \
-                id(node) in self.continued:
+        if node in self.unread or node in self.unread_paths:
+            self.unread_paths.update(descendants(node))  # its parts (``share / 'sdf'``) too
+            return
+        if self.dead or id(node) in self.continued:
             return
         found = self.value(node)
         if isinstance(found, Share) and found.share and found.parts:

@@ -229,6 +229,10 @@ def written_paths(tree: ast.Module) -> set[ast.expr]:
             found.add(call.args[0])
             if isinstance(call.args[0], ast.Name):
                 written_names[call.args[0].id] = written_names.get(call.args[0].id, 0) + 1
+    outputs = _command_outputs(tree)
+    found.update(outputs.values())
+    found.update(node.value for node in nodes_of_class(tree, ast.Assign)
+                 if simple_assignment(node) and node.targets[0].id in outputs)  # type: ignore
     if written_names:
         reads: dict[str, int] = {}
         for name in nodes_of_class(tree, ast.Name):
@@ -237,6 +241,67 @@ def written_paths(tree: ast.Module) -> set[ast.expr]:
         only = {name for name, count in written_names.items() if reads.get(name) == count}
         found.update(node.value for node in nodes_of_class(tree, ast.Assign)
                      if simple_assignment(node) and node.targets[0].id in only)  # type: ignore
+    return found
+
+
+def unread_argument_defaults(tree: ast.Module) -> set[ast.expr]:
+    """The default values of launch arguments nothing reads: ``DeclareLaunchArgument('model',
+    default_value=str(sdf))`` where no other text of the file is ``'model'`` (no
+    ``LaunchConfiguration('model')``, no ``context.launch_configurations['model']``) and the
+    file includes no launch file (which could read it); with the values of the names such a
+    default alone reads (``sdf = share / 'sdf' / 'robot.sdf'``)."""
+    calls = nodes_of_class(tree, ast.Call)
+    if any(_called(call) == "IncludeLaunchDescription" for call in calls):
+        return set()
+    texts: dict[str, int] = {}
+    for constant in nodes_of_class(tree, ast.Constant):
+        if isinstance(constant.value, str):  # type: ignore[attr-defined]
+            texts[constant.value] = texts.get(constant.value, 0) + 1  # type: ignore
+    found: set[ast.expr] = set()
+    for call in calls:
+        if _called(call) != "DeclareLaunchArgument":
+            continue
+        given = {k.arg: k.value for k in call.keywords}  # type: ignore[attr-defined]
+        name = call.args[0] if call.args else given.get("name")  # type: ignore[attr-defined]
+        default = given.get("default_value")
+        if isinstance(name, ast.Constant) and texts.get(name.value) == 1 and default is not None:
+            found.add(default)
+            found.update(_values_read_only_in(tree, default))
+    return found
+
+
+def _called(call: ast.AST) -> str:
+    func = call.func  # type: ignore[attr-defined]
+    return func.id if isinstance(func, ast.Name) else \
+        func.attr if isinstance(func, ast.Attribute) else ""
+
+
+def _values_read_only_in(tree: ast.Module, part: ast.expr) -> list[ast.expr]:
+    """The values assigned to the names ``part`` reads that nothing else in ``tree`` reads."""
+    inside = {n.id for n in descendants(part) if isinstance(n, ast.Name)}
+    reads: dict[str, int] = {}
+    for node in nodes_of_class(tree, ast.Name):
+        if node.id in inside and not isinstance(node.ctx, ast.Store):  # type: ignore
+            reads[node.id] = reads.get(node.id, 0) + 1  # type: ignore[attr-defined]
+    once = {name for name in inside if reads.get(name) == 1}
+    return [node.value for node in nodes_of_class(tree, ast.Assign)  # type: ignore
+            if simple_assignment(node) and node.targets[0].id in once]  # type: ignore
+
+
+_OUTPUT_OPTIONS = frozenset({"-o", "--output", "--out", "--output-file"})
+"""Options of command lines naming the file the command writes (``xacro in.xacro -o out``)."""
+
+
+def _command_outputs(tree: ast.Module) -> dict[str, ast.expr]:
+    """The values a command list literal gives after an output option (``['xacro', src, '-o',
+    urdf]``), by the name they are read through (another expression by its id): the file
+    is made by the launch file, whatever else then reads it."""
+    found: dict[str, ast.expr] = {}
+    for listed in nodes_of_class(tree, ast.List, ast.Tuple):
+        elements = listed.elts  # type: ignore[attr-defined]
+        for option, value in zip(elements, elements[1:]):
+            if isinstance(option, ast.Constant) and option.value in _OUTPUT_OPTIONS:
+                found[value.id if isinstance(value, ast.Name) else f"#{id(value)}"] = value
     return found
 
 

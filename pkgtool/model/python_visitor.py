@@ -6,8 +6,8 @@ import ast
 import functools
 from collections.abc import Callable
 
-from pkgtool.model.ast_nodes import (TRIES, block_statements, descendants, enclosing, subtree,
-                                     walk_once)
+from pkgtool.model.ast_nodes import (TRIES, block_statements, descendants, enclosing,
+                                     handler_stops, subtree, walk_once)
 from pkgtool.model.memo import forget_tree_facts
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.span import ParseProblem, Span
@@ -35,21 +35,6 @@ def _suppresses_import_error(node: ast.With | ast.AsyncWith) -> bool:
                isinstance(call.func, (ast.Name, ast.Attribute)) and
                (call.func.id if isinstance(call.func, ast.Name) else call.func.attr) == "suppress"
                and _names_import_error(call.args) for item in node.items)
-
-
-_EXITS = frozenset({"exit", "quit", "_exit"})
-"""``sys.exit``, ``exit()``, ``quit()``, ``os._exit``: calls that end the program."""
-
-
-def _stops(handler: ast.ExceptHandler) -> bool:
-    """True for a handler that ends with ``raise`` or exits the program: the module cannot
-    run without what the ``try`` imports (``except ImportError: sys.exit('pip install x')``)."""
-    last = handler.body[-1] if handler.body else None
-    if isinstance(last, ast.Raise):
-        return True
-    call = last.value if isinstance(last, ast.Expr) else None
-    return isinstance(call, ast.Call) and isinstance(call.func, (ast.Name, ast.Attribute)) and \
-        (call.func.id if isinstance(call.func, ast.Name) else call.func.attr) in _EXITS
 
 
 def _is_type_checking(test: ast.expr) -> bool:
@@ -88,7 +73,7 @@ def _import_probes(tree: ast.Module) -> frozenset[str]:
         if isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef))
         and any(isinstance(node, TRIES)
                 and any(isinstance(s, (ast.Import, ast.ImportFrom)) for s in node.body)
-                and any(_catches_import_error(h) and not _stops(h) for h in node.handlers)
+                and any(_catches_import_error(h) and not handler_stops(h) for h in node.handlers)
                 for node in subtree(function)))
 
 
@@ -107,8 +92,8 @@ def _guarded_parts(node: ast.AST, constants: dict[str, bool],
     the module (``at_top``) whose handler stops the program guards nothing: the module cannot
     be imported without what it imports (in a function or a branch, it is a feature's)."""
     if isinstance(node, TRIES):
-        return (_block(node.body, any(_catches_import_error(h) and not (at_top and _stops(h))
-                                      for h in node.handlers))
+        return (_block(node.body, any(_catches_import_error(h) and
+                                      not (at_top and handler_stops(h)) for h in node.handlers))
                 + [(h, _catches_import_error(h)) for h in node.handlers]
                 + _block(node.orelse, False) + _block(node.finalbody, False))
     if isinstance(node, ast.If):
@@ -186,7 +171,7 @@ def _in_try_with_fallback(node: ast.AST, parents: dict[int, ast.AST]) -> bool:
     child, parent = node, parents.get(id(node))
     while parent is not None:
         if isinstance(parent, TRIES) and any(child is part for part in parent.body) and any(
-                _catches_import_error(h) and not _stops(h) for h in parent.handlers):
+                _catches_import_error(h) and not handler_stops(h) for h in parent.handlers):
             return True
         child, parent = parent, parents.get(id(parent))
     return False

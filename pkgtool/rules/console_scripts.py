@@ -16,8 +16,6 @@ def problem(entry: EntryPoint) -> str | None:
         return "has no `=` between the command name and `module:function`"
     if not entry.name:
         return "has no command name before `=`"
-    if any(c.isspace() for c in entry.name):
-        return "has a command name with spaces"
     if not entry.valid:
         return "does not name a `module:function` of letters, digits and underscores"
     if entry.attr is None:

@@ -23,7 +23,8 @@ def unlisted_packages(package: Package, used: Iterable[tuple[str, Span]],
     ``tag`` how to declare it."""
     seen: set[str] = set()
     for name, span in sorted(used, key=lambda u: (u[1].line, u[1].col)):
-        if name == package.name or name in available or name in seen:
+        if name == package.name or name in available or name in seen or \
+                depends_on(package, name):
             continue
         seen.add(name)
         other = declared(package, ANY).get(name)
@@ -41,6 +42,23 @@ def unlisted_packages(package: Package, used: Iterable[tuple[str, Span]],
                 "package if a workspace it is built in provides it"
         yield Hit(span, f"`{name}` is used by {user} but {missing}", fix,
                   cause="" if other else dependency_cause(name), consequence=True)
+
+
+def depends_on(package: Package, name: str) -> bool:
+    """True when the workspace package ``name`` depends on ``package`` (itself or through
+    other workspace packages): declaring it would make a cycle colcon cannot order, so a
+    launch file or module of ``package`` may only look it up (xarm_ros2's launch files)."""
+    workspace = package.context.workspace
+    seen, todo = {name}, [name]
+    while todo:
+        other = workspace.get(todo.pop())
+        for dependency in other.depends if other is not None else ():
+            if dependency == package.name:
+                return True
+            if dependency not in seen and dependency in workspace:
+                seen.add(dependency)
+                todo.append(dependency)
+    return False
 
 
 def _known(package: Package, name: str) -> bool:

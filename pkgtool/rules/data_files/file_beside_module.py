@@ -3,22 +3,48 @@ install there."""
 
 from __future__ import annotations
 
+import ast
 import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.installed import installed_modules, is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.data_files.common import checks_files
 from pkgtool.rules.registry import rule
 from pkgtool.rules.sys_path import file_relative_paths
-from pkgtool.rules.syntax_trees import installed_trees
+from pkgtool.rules.syntax_trees import Index, installed_trees
 
 _CODE = (".py", ".pyc", ".so", ".pyd")
 """Suffixes of what setuptools installs with a Python package (or builds into it)."""
 _PACKAGE_DATA = ("package_data", "include_package_data")
 """setup() keywords that install other files into a Python package's folder."""
+_TOLERANT = frozenset({"QIcon", "QPixmap", "QImage", "QMovie", "setWindowIcon", "setPixmap"})
+"""Qt calls that take a missing file for an empty image instead of raising."""
+
+
+def _only_shown(node: ast.AST, index: Index) -> bool:
+    """True when the path ``node`` builds goes only to :data:`_TOLERANT` Qt calls, itself or
+    through a name every read of which does (``icon = join(here, 'icon.png')``, then
+    ``QIcon(icon)``): a missing icon shows nothing, it does not fail."""
+    parent = index.parents.get(id(node))
+    if isinstance(parent, ast.Call) and node in parent.args:
+        return _callee(parent) in _TOLERANT
+    if not (isinstance(parent, ast.Assign) and len(parent.targets) == 1 and
+            isinstance(parent.targets[0], ast.Name)):
+        return False
+    name = parent.targets[0].id
+    reads = [n for n in nodes_of_class(index.module_of(node), ast.Name)
+             if isinstance(n, ast.Name) and n.id == name and isinstance(n.ctx, ast.Load)]
+    return bool(reads) and all(_only_shown(read, index) for read in reads)
+
+
+def _callee(call: ast.Call) -> str:
+    func = call.func
+    return func.id if isinstance(func, ast.Name) else \
+        func.attr if isinstance(func, ast.Attribute) else ""
 
 
 @rule("DAT015", "file-beside-module-not-installed", Severity.ERROR,
@@ -36,7 +62,9 @@ def file_beside_module(package: Package) -> Iterator[Hit]:
     there: a file outside the package's Python packages (`<module>/../config/x.yaml`, the
     package root's `config/`), or one inside them when setup.py has no `package_data` nor
     `include_package_data`. Modules that ask whether paths exist (`os.path.exists`) are left
-    alone, as are packages whose setup.py installs into `site-packages` by other means.
+    alone, as are packages whose setup.py installs into `site-packages` by other means, and
+    paths only shown as images by Qt (`QIcon(path)`, `QPixmap(path)`: a missing file makes
+    an empty image, no error).
 
     ## Why is this bad?
     `colcon build --symlink-install` runs the sources in place, so the file is found; a plain
@@ -67,7 +95,8 @@ def file_beside_module(package: Package) -> Iterator[Hit]:
             continue
         seen: set[str] = set()
         for node, path in file_relative_paths(tree, module.path):
-            if path in seen or path not in files or path.endswith(_CODE):
+            if path in seen or path not in files or path.endswith(_CODE) or \
+                    _only_shown(node, index):
                 continue
             seen.add(path)
             inside = any(path.startswith(f"{folder}/") for folder in folders if folder)

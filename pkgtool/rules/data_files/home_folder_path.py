@@ -15,9 +15,10 @@ from pkgtool.rules.data_files.common import ASKS_EXISTENCE, checks_files
 from pkgtool.rules.syntax_trees import Index, index_of, installed_trees, python_files
 from pkgtool.lazy_regex import lazy_pattern
 
-HOME_PATH = lazy_pattern(r"(?<![\w.~$}/-])(?:/home/(?!\$|\{)[\w.-]+|/Users/[\w.-]+|"
+HOME_PATH = lazy_pattern(r"(?<![\w.~$}/-])(?:/home/(?!\$|\{)(?:[\w.-]+|<[\w.-]+>)|/Users/[\w.-]+|"
                          r"/root(?=/(?:[\w.-]+/)*?[\w.-]+/(?:src|install)/))/[\w.-]")
-"""An absolute path inside a named user's home folder (not ``/home/$USER/``), or into a
+"""An absolute path inside a named user's home folder (not ``/home/$USER/``; a placeholder
+never filled in, ``/home/<username>/``, is one too), or into a
 colcon workspace's ``src`` or ``install`` folder in root's (``/root/ros2_ws/src/...``: a
 container's; root's other files, ``/root/.bashrc``, are left alone)."""
 _HINTS = ("/home/", "/Users/", "/root/")
@@ -43,7 +44,8 @@ def home_folder_path(package: Package) -> Iterator[Hit]:
     asks whether paths exist, `os.path.exists()` and the like, as code that falls back when a
     machine lacks the file does), and values in XML and YAML launch files and in the YAML
     and XML files the package installs (not comments; in a package whose installed files
-    are not known, those outside `doc`, `docs` and `example` folders). In Python, also a
+    are not known, those outside `doc`, `docs` and `example` folders and hidden ones: CI
+    settings such as `.travis.yml` name the CI machine's home). In Python, also a
     path built from the home folder into a colcon workspace's `src` or `install` folder
     (`'~/ros2_ws/src/...'`, `os.path.join(os.getenv('HOME'), 'ws', 'src', ...)`,
     `f"{os.environ['HOME']}/ros2_ws/install/..."`). Tests and test data are left alone.
@@ -83,14 +85,16 @@ _ASIDE = frozenset({"doc", "docs", "example", "examples"})
 def _shipped(package: Package) -> Callable[[str], bool]:
     """Whether a data file is one the package runs with: a launch file, a file data_files
     installs (in an ament_python package whose data_files evaluated), else any file outside
-    documentation and examples."""
+    documentation, examples and hidden files and folders (CI settings: `.travis.yml`,
+    `.github/`)."""
     launch = {f.path for f in package.launch_files}
     installed = installed_data(package) if is_ament_python(package) else None
     if installed is not None:
         sources = launch | set(installed.values())
         return sources.__contains__
     return lambda path: path in launch or not (
-        _ASIDE & set(path.split("/")[:-1]) or path.rpartition("/")[2].startswith("example"))
+        _ASIDE & set(path.split("/")[:-1]) or path.rpartition("/")[2].startswith("example") or
+        any(part.startswith(".") for part in path.split("/")))  # CI settings: .travis.yml
 
 
 def _python_paths(path: str, tree: ast.Module) -> Iterator[Hit]:

@@ -110,7 +110,7 @@ def _node_level(path: str, mapping: yaml.MappingNode, names: tuple[str, ...], pa
             if not names:
                 yield Hit(_span(path, key), "`ros__parameters` has no node name above it",
                           "Put it under the node's name, or `/**:` for every node")
-            elif not _is(value, "mapping"):
+            elif not _is(value, "mapping") and not (_is(value, "sequence") and not value.value):
                 yield Hit(_span(path, key), f"`ros__parameters` of `{'/'.join(names)}` is not "
                           "a mapping of parameters", "Write `ros__parameters: {}` or indent "
                           "the parameters under it")
@@ -142,6 +142,15 @@ def _stray(name: str, names: tuple[str, ...], beside: bool) -> str:
     return f"`{'/'.join(names)}` holds values but no `ros__parameters` key above them"
 
 
+def _code_reads_parameter_keys(package: Package) -> bool:
+    """True when a module of the package (not a launch file) names `ros__parameters`: it
+    reads parameter-style YAML itself (``cfg.get('ros__parameters', cfg)``), so a file no
+    launch file passes to a node may follow that code's format."""
+    launch = {f.path for f in package.launch_files}
+    return any("ros__parameters" in text for path, text in package.texts.items()
+               if path.endswith(".py") and path not in launch and path != "setup.py")
+
+
 def _candidates(package: Package) -> Iterator[str]:
     launch = {f.path for f in package.launch_files}
     for path, text in package.texts.items():
@@ -159,7 +168,8 @@ def malformed_parameter_file(package: Package) -> Iterator[Hit]:
     Checks YAML parameter files the way `rcl_yaml_param_parser` reads them: above
     `ros__parameters` every key is a node name or namespace (`node:`, `/ns/node:`, `/**:`,
     nested `ns: {node: ...}`), holding mappings only; `ros__parameters` needs a node name
-    above it and holds a mapping. It reports a misspelled `ros__parameters` (`ros_parameters`,
+    above it and holds a mapping (or an empty list, which rcl reads as no parameters: a
+    placeholder file). It reports a misspelled `ros__parameters` (`ros_parameters`,
     `ros__parameter`, `ros_params`, or `parameters` right under a node name), values outside
     `ros__parameters` (beside it, at the top level, or under a node without it), and a file
     passed to a node whose top level is a list.
@@ -169,10 +179,13 @@ def malformed_parameter_file(package: Package) -> Iterator[Hit]:
     the blocks holding `ros__parameters` or a near miss of it are checked, and the rest is
     taken for data the code reads itself (files mixing both exist); YAML without any such key
     (maps, RViz or bridge configurations, waypoints), files under `test/` and launch files
-    are not checked. In such a file a near miss (or `parameters:` under a node name) counts
-    only when every mapping above it, the top level included, holds only mappings, as node
-    names and namespaces do: beside a scalar or a list (`serial_number: a200`, `urdf: null`)
-    it is a key of some other YAML, such as a robot description read by code.
+    are not checked, nor is any file no launch file passes when the package's own code
+    names `ros__parameters` (it reads those files itself: `yaml.safe_load(f).get(
+    'ros__parameters', {})`, the path given as a program option). In a checked file a near
+    miss (or `parameters:` under a node name) counts only when every mapping above it, the
+    top level included, holds only mappings, as node names and namespaces do: beside a
+    scalar or a list (`serial_number: a200`, `urdf: null`) it is a key of some other YAML,
+    such as a robot description read by code.
     A file passed only to components (`ComposableNode`, `<composable_node>`) is checked as one
     no launch file passes: launch_ros reads it itself and takes a file without
     `ros__parameters` as the component's parameters (`image_transport: raw` at the top level).
@@ -198,7 +211,10 @@ def malformed_parameter_file(package: Package) -> Iterator[Hit]:
     """
     passed = {path for path, nodes in parameter_file_nodes(package).items()
               if not all(node.composable for node in nodes)}
+    own_reader = _code_reads_parameter_keys(package)
     for path in _candidates(package):
+        if own_reader and path not in passed:
+            continue  # the package's code reads such files itself: its own format
         documents = yaml_problem(path, package.texts[path])
         if not isinstance(documents, list):
             continue  # SYN001

@@ -36,7 +36,8 @@ def uninstalled_launch_file(package: Package) -> Iterator[Hit]:
     package's), and a
     `launch_testing` test kept in a `launch` folder (it defines `generate_test_description`
     and no `generate_launch_description`: `ros2 launch` cannot run it), and a copy of a
-    launch file whose name an installed one has (`ros2 launch` finds that one).
+    launch file whose name an installed one has (`ros2 launch` finds that one), or one
+    named as kept aside (`robot_launch_old.py`, `controller_launch(discarded).py`).
 
     ## Why is this bad?
     `ros2 launch <package> <file>` searches the installed share folder only: the launch file
@@ -69,14 +70,15 @@ def uninstalled_launch_file(package: Package) -> Iterator[Hit]:
                         *_launch_by_content(package, folders, nested)}):
         name = path.rsplit("/", 1)[-1]
         if path.split("/")[0] not in NOT_INSTALLED_FOLDERS and path not in shared and \
-                name not in names:
+                name not in names and not _KEPT_ASIDE.search(name.rsplit(".", 1)[0]):
             yield Hit(Span(path, 1, 1), f"`{path}` is not installed under `{share[:-1]}`: "
                                         f"`ros2 launch {package.name} {name}` will not find it")
 
 
-_KEPT_ASIDE = lazy_pattern(r"(?i)(?:^|[_.\- ])(?:old|orig|original|copy|backup|bak|unused|"
-                           r"deprecated)(?:[_.\- ]|\d|$)")
-"""A copy kept aside by its name (``flow.launch_original.py``, ``ctrl_launch-Copy1.py``)."""
+_KEPT_ASIDE = lazy_pattern(r"(?i)(?:^|[_.\- (\[])(?:old|orig|original|copy|backup|bak|unused|"
+                           r"deprecated|discarded|obsolete|legacy)(?:[_.\- )\]]|\d|$)")
+"""A copy kept aside by its name (``flow.launch_original.py``, ``ctrl_launch-Copy1.py``,
+``controller_launch(discarded).py``)."""
 
 
 def _launch_by_content(package: Package, folders: frozenset[str], nested: frozenset[str]

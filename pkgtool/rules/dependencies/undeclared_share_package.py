@@ -28,7 +28,8 @@ def undeclared_share_package(package: Package) -> Iterator[Hit]:
     nor of the packages linted with it is said so, with the package it is a typo of, if any
     (a node copied from another package, still looking up that package's name). A lookup in
     a `try` that catches `PackageNotFoundError` (or `KeyError`, `Exception`, anything), or
-    after checking that the package is installed, is optional and left alone.
+    after checking that the package is installed, is optional and left alone, and so is a
+    workspace package that depends on this one (declaring it would make a cycle).
 
     ## Why is this bad?
     The lookup raises `PackageNotFoundError` when the node starts on a machine where the

@@ -7,6 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
+from pkgtool.rules.setup_values import checked_setup
 
 
 @rule("ENT004", "duplicate-console-script", Severity.WARNING,
@@ -31,7 +32,7 @@ def duplicate_console_script(package: Package) -> Iterator[Hit]:
     'console_scripts': ['talker = my_pkg.talker:main', 'listener = my_pkg.listener:main']
     ```
     """
-    setup = package.setup_py
+    setup = checked_setup(package)
     seen: dict[str, str] = {}
     for entry in setup.console_scripts if setup else ():
         if entry.name in seen:

@@ -8,6 +8,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.console_scripts import SCRIPT_GROUPS, problem
 from pkgtool.rules.registry import rule
+from pkgtool.rules.setup_values import checked_setup
 
 
 @rule("ENT001", "malformed-console-script", Severity.ERROR,
@@ -17,10 +18,12 @@ def malformed_console_script(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Parses each `console_scripts` (and `gui_scripts`) entry the way setuptools does and
-    reports entries without `=`, without a command name, with spaces in the name, with a
-    module or function path that is not dotted words of letters, digits and underscores
-    (`my-pkg.node`), or without the `:function` part. Parts need not be Python identifiers:
-    the wrapper setuptools installs loads `pkg.96:main` with `importlib`, which works.
+    reports entries without `=`, without a command name, with a module or function path
+    that is not dotted words of letters, digits and underscores (`my-pkg.node`), or without
+    the `:function` part. Parts need not be Python identifiers: the wrapper setuptools
+    installs loads `pkg.96:main` with `importlib`, which works; nor need the command name
+    be one word (`MAP EXPLORER` installs as `lib/<package>/MAP EXPLORER`, which launch_ros
+    starts).
 
     ## Why is this bad?
     setuptools rejects unparsable entries and the build fails; an entry without `:function`
@@ -29,15 +32,16 @@ def malformed_console_script(package: Package) -> Iterator[Hit]:
     ## Example
     ```python
     entry_points={'console_scripts': ['talker = my_pkg.talker.main',
-                                      'my talker = my_pkg.talker:main']}
+                                      'listener = my-pkg.listener:main']}
     ```
 
     ## Use instead
     ```python
-    entry_points={'console_scripts': ['talker = my_pkg.talker:main']}
+    entry_points={'console_scripts': ['talker = my_pkg.talker:main',
+                                      'listener = my_pkg.listener:main']}
     ```
     """
-    setup = package.setup_py
+    setup = checked_setup(package)
     for entry in setup.entry_points or () if setup else ():
         if entry.group in SCRIPT_GROUPS:
             reason = problem(entry)

@@ -9,6 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.console_scripts import SCRIPT_GROUPS
 from pkgtool.rules.registry import rule
+from pkgtool.rules.setup_values import checked_setup
 
 
 def misspelt(group: str) -> str | None:
@@ -44,7 +45,7 @@ def misspelled_script_group(package: Package) -> Iterator[Hit]:
     entry_points={'console_scripts': ['talker = my_pkg.talker:main']}
     ```
     """
-    setup = package.setup_py
+    setup = checked_setup(package)
     seen: set[str] = set()
     for entry in setup.entry_points or () if setup else ():
         wanted = misspelt(entry.group)

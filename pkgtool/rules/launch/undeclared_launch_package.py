@@ -33,12 +33,15 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
     metapackages nest, but a regular package's own dependencies never count).
     Packages used only after the launch file checked that they are installed (`if 'nav2_bringup'
     in get_packages_with_prefixes():`, or in a `try` that catches `PackageNotFoundError`,
-    or one that looks a package up and catches `KeyError`, `Exception` or anything) are
-    optional and left alone, and so is a node that is never started: one assigned to a local
+    or one that looks a package up and catches `KeyError`, `Exception` or anything, with a
+    handler that goes on rather than raising again or exiting) are optional and left alone,
+    and so is a node that is never started: one assigned to a local
     name its function never reads (`rviz = Node(package='rviz2', ...)` left out of the
     LaunchDescription), with the `FindPackageShare` substitutions inside it, which only a
     started action performs. `get_package_share_directory` runs when the file does and is
-    always checked.
+    always checked. A workspace package that depends on this one (itself or through other
+    workspace packages) is left alone too: declaring it would make a dependency cycle, which
+    colcon cannot order (xarm_ros2's MoveIt launch files look up its planner so).
 
     ## Why is this bad?
     `ros2 launch` fails with "package not found" on machines set up with rosdep, because

@@ -209,9 +209,20 @@ def method_receiver(method: ast.AST) -> str | None:
              else "") not in _INSTANCE_DECORATORS for d in method.decorator_list):
         return None
     positional = [*method.args.posonlyargs, *method.args.args]
-    if not positional or _names(method).counts[positional[0].arg] != 1:
+    if not positional or _names(method).counts[positional[0].arg] != 1 or \
+            _annotated_otherwise(positional[0], method):
         return None
     return positional[0].arg
+
+
+def _annotated_otherwise(first: ast.arg, method: ast.FunctionDef | ast.AsyncFunctionDef
+                         ) -> bool:
+    """True when the first parameter is annotated with a class (``pt: JointTrajectoryPoint``)
+    and is not ``self``/``cls``: a method missing its ``self``, whose first parameter the
+    author meant as that class, not the instance."""
+    note = first.annotation
+    return note is not None and first.arg not in ("self", "cls") and \
+        not (isinstance(note, ast.Name) and note.id == "Self")
 
 
 def attributes_taken(scope: ast.AST, name: str) -> list[ast.Attribute]:

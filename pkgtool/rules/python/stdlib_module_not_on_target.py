@@ -8,6 +8,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import (PYTHON_VERSIONS, STDLIB_VERSIONS, any_stdlib_module,
                                          keys_for_import, stdlib_modules, stdlib_versions)
+from pkgtool.model.installed import is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import all_python, local_modules
 from pkgtool.rules.registry import rule
@@ -31,10 +32,12 @@ def _why(module: str, version: str) -> tuple[str, str]:
             f"Use {_INSTEAD.get(module, 'its replacement')} instead of `{module}`")
 
 
-def _setuptools_shim(path: str, top: str) -> bool:
-    """True for ``distutils`` in a ``setup.py``: it runs with setuptools, whose shim
-    provides ``distutils`` on every Python."""
-    return top == "distutils" and posixpath.basename(path) == "setup.py"
+def _setuptools_shim(package: Package, path: str, top: str) -> bool:
+    """True for ``distutils`` in a ``setup.py`` or any module of an ament_python package: the
+    setuptools that builds it is on the machine, and its ``distutils-precedence.pth`` shim
+    provides ``distutils`` on every Python (Python 3.12 included)."""
+    return top == "distutils" and (posixpath.basename(path) == "setup.py" or
+                                   is_ament_python(package))
 
 
 @rule("PYC010", "stdlib-module-not-on-target", Severity.ERROR,
@@ -51,8 +54,10 @@ def stdlib_module_not_on_target(package: Package) -> Iterator[Hit]:
     humble). Module lists come from a table generated from the stdlib-list package. Imports
     inside `try/except ImportError` are alternatives and stay silent, and so are imports of the
     package's own modules named like one (a `test/` package the tests import as `test.support`,
-    which pytest's import mode puts on `sys.path`), and `distutils` in a `setup.py`, which
-    runs with setuptools and its `distutils` shim.
+    which pytest's import mode puts on `sys.path`), and `distutils` in a `setup.py` or in
+    any module of an ament_python package: the setuptools that builds the package is on the
+    machine, and its `distutils` shim (`distutils-precedence.pth`) provides the module on
+    every Python.
 
     ## Why is this bad?
     The node fails with `ModuleNotFoundError` on the robot's Python although it ran on the
@@ -77,7 +82,8 @@ def stdlib_module_not_on_target(package: Package) -> Iterator[Hit]:
         for imported in module.imports:
             top = imported.top_level
             if (not top or top in seen or imported.guarded or top in here or top not in known
-                    or keys_for_import(top, distro) or _setuptools_shim(module.path, top)):
+                    or keys_for_import(top, distro)
+                    or _setuptools_shim(package, module.path, top)):
                 continue
             seen.add(top)
             why, fix = _why(top, version)

@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.installed import installed_data
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
 from pkgtool.rules.setup._ros2_run import is_rqt_plugin, meant_for_ros2_run
@@ -24,7 +25,9 @@ def missing_setup_cfg(package: Package) -> Iterator[Hit]:
     (`ros2`, linters, code generators) install to `bin/` on purpose; without such evidence
     the package gets SET013 (info) instead. An rqt plugin (package.xml exports `<rqt_gui
     plugin=...>`) is exempt: rqt tools install their standalone script to `bin/` on purpose,
-    so that `rqt_graph` runs without `ros2 run`.
+    so that `rqt_graph` runs without `ros2 run`, and so is a package whose data_files install
+    an executable of each script's name into `lib/<package>` (wrapper scripts kept in
+    the source tree: `ros2 run` finds those).
 
     ## Why is this bad?
     Without `script_dir`/`install_scripts`, setuptools installs the executables into the
@@ -50,6 +53,9 @@ def missing_setup_cfg(package: Package) -> Iterator[Hit]:
         return
     if is_rqt_plugin(package) or not meant_for_ros2_run(package):
         return
+    installed = installed_data(package) or {}
+    if all(f"lib/{package.name}/{script.name}" in installed for script in setup.console_scripts):
+        return  # data_files installs an executable of each name where `ros2 run` looks
     yield Hit(setup.console_scripts[0].span,
               f"Without `setup.cfg` console scripts install to `bin/`, where `ros2 run "
               f"{package.name}` does not look")
