@@ -159,7 +159,7 @@ def load_package(root: Path, context: Context | None = None) -> Package:
             text_of(relpath)  # modules generated at build time; .msg, .srv, .action files
         elif relpath.endswith(".py") and relpath != "setup.py":
             text = text_of(relpath)
-            if text is not None and not _other_language(text):
+            if text is not None and (not _other_language(text) or _collected(relpath)):
                 module = parse_module(relpath, text)
                 modules.append(module)
                 if module.syntax_error and not is_test_data(relpath):
@@ -212,6 +212,12 @@ def is_test_data(relpath: str) -> bool:
     name = relpath.rsplit("/", 1)[-1]
     collected = name.startswith("test_") or name.endswith("_test.py") or name == "conftest.py"
     return is_test_material(relpath) and not collected
+
+
+def _collected(relpath: str) -> bool:
+    """A test module pytest collects (``test/test_x.py``): parsed as Python whatever its
+    ``#!`` line says, as pytest imports it (a bash script named so fails the test run)."""
+    return is_test_material(relpath) and not is_test_data(relpath)
 
 
 def is_interface_definition(relpath: str) -> bool:

@@ -15,12 +15,14 @@ from pkgtool.rules.data_files.common import ASKS_EXISTENCE, checks_files
 from pkgtool.rules.syntax_trees import Index, index_of, installed_trees, python_files
 from pkgtool.lazy_regex import lazy_pattern
 
-HOME_PATH = lazy_pattern(r"(?<![\w.~$}/-])(?:/home/(?!\$|\{)(?:[\w.-]+|<[\w.-]+>)|/Users/[\w.-]+|"
+HOME_PATH = lazy_pattern(r"(?<![\w.~$}/-])(?:/home/(?!\$|\{)[\w.-]+|/Users/[\w.-]+|"
                          r"/root(?=/(?:[\w.-]+/)*?[\w.-]+/(?:src|install)/))/[\w.-]")
-"""An absolute path inside a named user's home folder (not ``/home/$USER/``; a placeholder
-never filled in, ``/home/<username>/``, is one too), or into a
+"""An absolute path inside a named user's home folder (not ``/home/$USER/``), or into a
 colcon workspace's ``src`` or ``install`` folder in root's (``/root/ros2_ws/src/...``: a
 container's; root's other files, ``/root/.bashrc``, are left alone)."""
+_PLACEHOLDER_HOME = lazy_pattern(r"(?<![\w.~$}/-])/home/<[\w.-]+>/[\w.-]")
+"""A home folder left as a placeholder in code (``'/home/<username>/data'``): in a settings
+file it is a template for the user to fill in, in code a path that never exists."""
 _HINTS = ("/home/", "/Users/", "/root/")
 _MESSAGES = frozenset({"print", "info", "warn", "warning", "error", "debug", "fatal", "log",
                        "exception", "critical", "write", "format", "add_argument"})
@@ -101,7 +103,8 @@ def _python_paths(path: str, tree: ast.Module) -> Iterator[Hit]:
     parents = walk_once(tree).parents
     for node in nodes_of_class(tree, ast.Constant):
         value = getattr(node, "value", None)
-        found = HOME_PATH.search(value) if isinstance(value, str) else None
+        found = (HOME_PATH.search(value) or _PLACEHOLDER_HOME.search(value)) \
+            if isinstance(value, str) else None
         if found is None or "\n" in value or _docstring(node, parents) or \
                 _message(node, parents):
             continue

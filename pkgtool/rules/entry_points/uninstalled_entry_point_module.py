@@ -12,6 +12,7 @@ from pkgtool.model.launch import python_folders
 from pkgtool.model.package import Package
 from pkgtool.model.setup_py import EntryPoint
 from pkgtool.rules.console_scripts import scripts_and_modules
+from pkgtool.rules.imports import RUNTIME, declared
 from pkgtool.rules.registry import rule
 
 
@@ -35,6 +36,19 @@ def _meant(package: Package, module: str, modules: dict[str, str]) -> str | None
     declared = {d.name for d in package.manifest.dependencies} if package.manifest else {root}
     near = [m for m in modules if rest and m.partition(".")[2] == rest]
     return near[0] if len(near) == 1 and root not in declared else None
+
+
+def _undeclared_provider(package: Package, entry: EntryPoint) -> Iterator[Hit]:
+    """A hit when the entry names a module of another workspace package that package.xml
+    does not declare for run time (a `<test_depend>` installs nothing for `ros2 run`)."""
+    root = entry.module.split(".")[0]
+    providers = [other.name for other in package.context.workspace.values()
+                 if root in other.modules and other.name != package.name]
+    if len(providers) == 1 and providers[0] not in declared(package, RUNTIME):
+        yield Hit(entry.span, f"`{entry.module}` is a module of the package `{providers[0]}`, "
+                  "which package.xml does not declare for run time: the script fails with "
+                  "ModuleNotFoundError where that package is not installed",
+                  f"Add `<exec_depend>{providers[0]}</exec_depend>` to package.xml")
 
 
 def _misspelt_root(package: Package, module: str, modules: dict[str, str]
@@ -75,7 +89,9 @@ def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
     prefix copied from another package, for the one installed `my_pkg.talker`), or a prefix
     a typo away from the one installed package so spelled (`artth.talker` for `arith`), or
     starts with the name of one of the package's Python package folders below the top
-    (`nodes.talker` for a `my_pkg/nodes/` that holds no `talker`).
+    (`nodes.talker` for a `my_pkg/nodes/` that holds no `talker`); a module of another
+    package of the workspace counts when package.xml declares that package for run time
+    (`<exec_depend>`, `<depend>`), not only for tests.
 
     ## Why is this bad?
     The build succeeds, but running the command fails with `ModuleNotFoundError`. With
@@ -109,6 +125,8 @@ def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
             typo = None if meant else _misspelt_root(package, entry.module, modules)
             if typo is not None:
                 yield typo(entry)
+            if meant is None and typo is None:
+                yield from _undeclared_provider(package, entry)
             if meant is not None or typo is not None or \
                     entry.module.split(".")[0] not in folders:
                 continue

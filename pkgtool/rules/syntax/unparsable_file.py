@@ -32,7 +32,8 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     Python files under `test/` that pytest does not collect, and YAML under `test/`,
     `test_data/`, `testdata/` and similar folders. Nor are OpenCV's `FileStorage` files
     (starting `%YAML:1.0`), which OpenCV reads and YAML parsers refuse, nor a `.py` file
-    whose `#!` line runs another language (a bash script named `start.py`), nor a Python
+    whose `#!` line runs another language (a bash script named `start.py`; but one pytest
+    collects, `test/test_x.py`, is imported as Python and reported), nor a Python
     file the package does not install in a folder of another project's code (`thirdparty/`,
     `external/`, `vendor/`: Eigen's Python 2 maintenance scripts).
     Python is parsed by the Python running pkgtool: when that is older than the target
