@@ -309,3 +309,39 @@ def action_tuple(package: Package, findings: list[Finding]) -> Iterator[Fix]:
 
 _COMMA_LINE = lazy_pattern(r"Remove the comma that ends line (\d+)")
 """LCH018's help: the line the tuple's comma ends."""
+
+
+@fixer("LCH020", "Add the launch argument's action to the returned description")
+def argument_added(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Add the name a ``DeclareLaunchArgument`` is assigned to at the start of the list of the
+    function's ``return LaunchDescription([...])``, when that is the name's only assignment in
+    the function. Safe: the launch failed without the argument, and declaring it is what the
+    author wrote the action for. A declaration assigned over (``x = ...`` twice) or a
+    description built with ``add_action`` needs the user."""
+    for doc, _, nodes in python_nodes(package, findings):
+        call = next((n for n in nodes if isinstance(n, ast.Call)), None)
+        function = next((f for f in ast.walk(doc.tree) if isinstance(f, ast.FunctionDef) and
+                         call is not None and call in ast.walk(f)), None)
+        if call is None or function is None:
+            continue
+        stores = [a for a in ast.walk(function) if isinstance(a, ast.Assign) and
+                  len(a.targets) == 1 and isinstance(a.targets[0], ast.Name)]
+        mine = next((a for a in stores if a.value is call), None)
+        name = mine.targets[0].id if mine is not None else None  # type: ignore[attr-defined]
+        listed = _returned_list(function)
+        if name is None or listed is None or \
+                sum(a.targets[0].id == name for a in stores) != 1:  # type: ignore[attr-defined]
+            continue
+        at = doc.start(listed) + 1
+        yield Fix(f"Add `{name}` to the returned `LaunchDescription`",
+                  (Edit(doc.source.path, at, at, f"{name}, " if listed.elts else name),))
+
+
+def _returned_list(function: ast.FunctionDef) -> ast.List | None:
+    """The list literal of the function's one ``return LaunchDescription([...])``."""
+    returns = [r for r in ast.walk(function) if isinstance(r, ast.Return)]
+    value = returns[0].value if len(returns) == 1 else None
+    if isinstance(value, ast.Call) and ast.unparse(value.func).endswith("LaunchDescription") \
+            and len(value.args) == 1 and isinstance(value.args[0], ast.List):
+        return value.args[0]
+    return None

@@ -402,6 +402,23 @@ def classify(top: str, declared_names: Iterable[str], context: Context = Context
     return "unknown", _guessed_keys(top)
 
 
+def source_path_module(package: Package, module: PythonModule, imported: Import
+                       ) -> str | None:
+    """The installed module of this package that an absolute import names through folders
+    above it (``lecture10_demo.action_demo.action_demo.navigate_client`` for the installed
+    ``action_demo.navigate_client``: a path of the source tree, which no install has), when
+    the import's first name is no module anything provides."""
+    parts = imported.module.split(".") if not imported.level and imported.module else []
+    installed = (installed_modules(package) or {}) if len(parts) > 2 else {}
+    roots = {name.split(".")[0] for name in installed}
+    if not roots or parts[0] in roots or parts[0] in _stdlib(package.context.distro) or \
+            parts[0] in local_modules(package, module) or \
+            classify(parts[0], (), package.context)[0] != "unknown":
+        return None
+    return next((".".join(parts[start:]) for start in range(1, len(parts) - 1)
+                 if parts[start] in roots and ".".join(parts[start:]) in installed), None)
+
+
 def _guessed_keys(top: str) -> tuple[str, ...]:
     """The keys a module rosdep and ROS do not know might have: ``python3-x``, its ``-pip``
     variant, its own name."""

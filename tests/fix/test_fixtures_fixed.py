@@ -92,7 +92,7 @@ MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages
               "misspelt_prefix_of_a_missing_module",
               "module_of_a_workspace_package_declared_for_tests")),
           ("PYC019", "kilted_target"), ("PYC019", "reads_in_properties"),
-          ("ENT003", "function_named_differently"),
+          ("ENT003", "function_named_differently"), ("LCH020", "declaration_assigned_over"),
           ("PYC025", "scalars_for_sequences"),
           ("ENT003", "node_class_as_entry"), ("ENT003", "attribute_of_function"),
           ("PYC014", "read_before_declaring"),

@@ -13,7 +13,7 @@ from pkgtool.model.installed import installed_modules, is_ament_python
 from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
 from pkgtool.model.submodules import ignored, under
-from pkgtool.rules.imports import installed_code, test_code
+from pkgtool.rules.imports import installed_code, source_path_module, test_code
 from pkgtool.rules.registry import rule
 
 
@@ -98,7 +98,10 @@ def missing_own_module(package: Package) -> Iterator[Hit]:
     CMake builds) or a `.gitignore` (generated at build time), or whose file a `.gitignore`
     leaves out (`**/flatbuffers/`: code a script generates), is taken to exist, and an
     absolute import is left alone when a module of its first name sits next to the
-    importing file (run as a script, the file imports that one).
+    importing file (run as a script, the file imports that one). Also an installed module's
+    import of an own module through folders above it, whose first name nothing provides
+    (`from ws.action_demo.action_demo.client import Client` for the installed
+    `action_demo.client`: the source tree's path).
 
     ## Why is this bad?
     The node dies at start-up with `ModuleNotFoundError` or `ImportError: cannot import
@@ -127,6 +130,13 @@ def missing_own_module(package: Package) -> Iterator[Hit]:
             if dotted is None and imported.level:
                 continue  # a test's relative import: its own folder, not the package
             base = _base(imported, dotted or "", module.path.endswith("__init__.py"))
+            meant = None if imported.guarded or not dotted else \
+                source_path_module(package, module, imported)
+            if meant is not None:
+                yield Hit(imported.span, f"`{imported.module}` is a path of the source tree, "
+                          "not a module: the import raises ModuleNotFoundError once installed, "
+                          f"where the module is `{meant}`", f"Write `{meant}`")
+                continue
             if imported.guarded or base is None or base.split(".")[0] not in roots or (
                     imported.level == 0 and _shadowed(package, module.path, imported.top_level)):
                 continue

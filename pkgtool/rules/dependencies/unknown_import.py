@@ -11,7 +11,7 @@ from pkgtool.knowledge.rosdep import ROS1_PACKAGES
 from pkgtool.knowledge.rosdistro import is_released_package, modules_of_key
 from pkgtool.model.modules import PythonModule
 from pkgtool.rules.imports import (ANY, also_imported, declared, grouped, installed_code,
-                                   needs)
+                                   needs, source_path_module)
 from pkgtool.rules.registry import rule
 from pkgtool.rules.test_modules import test_files
 from pkgtool.lazy_regex import lazy_pattern
@@ -71,6 +71,7 @@ def unknown_import(package: Package) -> Iterator[Hit]:
     for modules in _by_kind(package):
         unknown = (need for module in modules for need in needs(package, module)
                    if need.kind == "unknown" and not any(k in available for k in need.keys)
+                   and source_path_module(package, module, need.imported) is None
                    and not any(_words(need.top) <= words for words in bindings))
         for need, others in grouped(unknown):
             related = tuple(other.imported.span for other in others)
