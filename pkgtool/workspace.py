@@ -11,7 +11,9 @@ A package is a folder holding ``package.xml`` or ``setup.py``. Discovery follows
   ``pyvenv.cfg``), CMake build trees (a ``CMakeCache.txt``: generated, as a vendored
   library's build holding a copy of its Python bindings), ``__pycache__``, ``node_modules``,
   ``site-packages`` and ``*.egg-info``;
-- packages do not nest: once a folder is a package, its sub-folders are not searched.
+- packages do not nest: once a folder is a package, its sub-folders are not searched; but a
+  Python project without package.xml (a pip project's ``setup.py`` at a repository's root)
+  that holds ROS packages (with package.xml) below gives those ROS packages, not itself.
 
 A folder named on the command line is linted (or searched) even when it holds an ignore
 marker: the user asked for it. A file, or a folder inside a package with no package below it,
@@ -65,9 +67,11 @@ def discover(paths: Sequence[str], *, cwd: Path) -> Discovery:
         if not os.path.lexists(path):
             missing.append(argument)
             continue
-        if path.is_dir():
-            roots = [(path, "")] if is_package(path) else list(_walk(path)) or \
-                _owner(path, cwd)
+        if path.is_dir() and is_package(path):
+            listed, real = listing(path), os.path.realpath(path)
+            roots = list(_package_or_inner(path, real, listed, {e.name for e in listed}, {real}))
+        elif path.is_dir():
+            roots = list(_walk(path)) or _owner(path, cwd)
             if not roots:
                 empty.append(argument)
         else:
@@ -125,10 +129,14 @@ def _walk(top: Path) -> Iterable[tuple[Path, str]]:
     parent's joined with its name (no system call).
     """
     real_top = os.path.realpath(top)
-    seen = {real_top}
     folders: Found = []
     links: Found = []
     _below(top, real_top, listing(top), folders, links)
+    yield from _search(folders, links, {real_top})
+
+
+def _search(folders: Found, links: Found, seen: set[str]) -> Iterator[tuple[Path, str]]:
+    """The packages in and below ``folders`` and ``links`` (see :func:`_walk`)."""
     while folders or links:
         sub, real = folders.pop() if folders else links.pop()
         real = real or os.path.realpath(sub)
@@ -140,9 +148,33 @@ def _walk(top: Path) -> Iterable[tuple[Path, str]]:
         if not names.isdisjoint(IGNORE_MARKERS) or not names.isdisjoint(GENERATED_MARKERS):
             continue
         if any(e.name in PACKAGE_MARKERS and _is_file(e) for e in listed):
-            yield sub, real
+            yield from _package_or_inner(sub, real, listed, names, seen)
         else:
             _below(sub, real, listed, folders, links)
+
+
+_TEST_FOLDERS = frozenset({"test", "tests", "testdata", "test_data", "fixtures"})
+"""Folders of a Python project whose ROS packages are its test material (rosdoc2's
+``test/packages``): they keep the project a package."""
+
+
+def _package_or_inner(folder: Path, real: str, listed: list[os.DirEntry[str]], names: set[str],
+                      seen: set[str]) -> Iterator[tuple[Path, str]]:
+    """``folder``, a package; but for a Python project without package.xml (a pip project's
+    setup.py at a repository's root) holding ROS packages below (not in its test folders),
+    those ROS packages instead:
+    pkgtool checks ROS packages, which colcon builds from a workspace linking their folder."""
+    if "package.xml" not in names:
+        inner: Found = []
+        inner_links: Found = []
+        _below(folder, real, listed, inner, inner_links)
+        ros = [(path, inner_real) for path, inner_real in _search(inner, inner_links, seen)
+               if any(e.name == "package.xml" for e in listing(path)) and
+               _TEST_FOLDERS.isdisjoint(path.relative_to(folder).parts)]
+        if ros:
+            yield from ros
+            return
+    yield folder, real
 
 
 Found = list[tuple[Path, str]]

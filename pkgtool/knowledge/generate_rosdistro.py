@@ -43,7 +43,8 @@ DIST_MODULES: dict[str, tuple[str, ...]] = {
     "ruamel-yaml": ("ruamel",), "pytest": ("pytest", "_pytest", "py"),
     "setuptools": ("setuptools", "pkg_resources", "_distutils_hack"),
     "pkg-resources": ("pkg_resources",), "libgpiod": ("gpiod",), "tz": ("pytz",),
-    "pykdl": ("PyKDL",), "python-orocos-kdl": ("PyKDL",), "tk": ("tkinter",),
+    "pykdl": ("PyKDL",), "python-orocos-kdl": ("PyKDL",),
+    "tk": ("tkinter", "turtle", "turtledemo", "idlelib"), "venv": ("ensurepip",),
     "protobuf": ("google.protobuf",), "pycryptodome": ("Crypto",),
     "pycryptodomex": ("Cryptodome",),
     "pyjwt": ("jwt",), "python-xlib": ("Xlib",), "xlib": ("Xlib",), "attrs": ("attr", "attrs"),
@@ -62,8 +63,9 @@ test environment has them); an ``adafruit-circuitpython-foo`` library provides `
 any other distribution ``foo-bar`` provides ``foo_bar``.
 """
 
-KEPT_STDLIB = frozenset({"tkinter"})
-"""Standard library modules that Debian and Ubuntu ship in a package of their own."""
+KEPT_STDLIB = frozenset({"tkinter", "turtle", "turtledemo", "idlelib", "ensurepip"})
+"""Standard library modules that Debian and Ubuntu ship in a package of their own
+(``python3-tk``: tkinter and what imports it; ``python3-venv``: ensurepip)."""
 
 
 def _commit(source: Path) -> str:

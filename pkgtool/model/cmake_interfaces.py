@@ -214,11 +214,14 @@ def _calls(text: str) -> list[tuple[str, list[str]]]:
 
 
 def interfaces_of_files(files: frozenset[str]) -> dict[str, frozenset[str]]:
-    """Kind -> interface names of ``files``, the kind being the folder that holds each file."""
+    """Kind -> interface names of ``files``: the kind of a ``.msg``, ``.srv`` or ``.action``
+    file is its suffix, wherever it lies (rosidl_adapter puts ``error_msgs/Error.msg`` into
+    ``msg``), that of an ``.idl`` file the folder holding it."""
     found: dict[str, set[str]] = {}
     for path in files:
         folder, name = posixpath.split(path)
-        kind = posixpath.basename(folder)
+        suffix = name.rsplit(".", 1)[-1]
+        kind = suffix if suffix in _KINDS else posixpath.basename(folder)
         if kind in _KINDS:
             found.setdefault(kind, set()).add(name.rsplit(".", 1)[0])
     return {kind: frozenset(names) for kind, names in found.items()}

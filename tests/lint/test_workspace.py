@@ -192,3 +192,19 @@ def test_folders_linked_inside_the_repository_are_listed_once_and_never_loop(
     (repo / "pkg" / "pkg" / "loop").symlink_to(repo / "pkg")
     (repo / "pkg" / "pkg" / "far").symlink_to(tmp_path)
     assert list_files(repo / "pkg") == ("pkg/__init__.py", "pkg/again/__init__.py")
+
+
+def test_a_python_project_holding_ros_packages_gives_those_packages(tmp_path: Path) -> None:
+    setup = "from setuptools import setup\nsetup(name='tool')\n"
+    write_tree(tmp_path, {"setup.py": setup, "tool/__init__.py": "",
+                          "ros2/src/arm/package.xml": MANIFEST, "ros2/src/arm/setup.py": setup,
+                          "plain/setup.py": setup, "plain/sub/setup.py": setup,
+                          "doc_tool/setup.py": setup,
+                          "doc_tool/test/packages/bad/package.xml": MANIFEST})
+    ros = (tmp_path / "ros2" / "src" / "arm",)
+    assert discover(["."], cwd=tmp_path).packages == ros
+    assert discover(["ros2"], cwd=tmp_path).packages == ros
+    # a Python project with only Python projects below it is one package, as colcon sees it,
+    # and so is one whose ROS packages are its test material
+    assert discover(["plain"], cwd=tmp_path).packages == (tmp_path / "plain",)
+    assert discover(["doc_tool"], cwd=tmp_path).packages == (tmp_path / "doc_tool",)

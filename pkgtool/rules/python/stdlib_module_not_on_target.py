@@ -2,19 +2,17 @@
 
 from __future__ import annotations
 
-import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import (PYTHON_VERSIONS, STDLIB_VERSIONS, any_stdlib_module,
                                          keys_for_import, stdlib_modules, stdlib_versions)
-from pkgtool.model.installed import is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import all_python, local_modules
 from pkgtool.rules.registry import rule
 
 _VERSIONS = STDLIB_VERSIONS
-_INSTEAD = {"imp": "`importlib`", "distutils": "`setuptools`, `sysconfig` or `shutil`",
+_INSTEAD = {"imp": "`importlib`",
             "asyncore": "`asyncio`", "asynchat": "`asyncio`", "smtpd": "`aiosmtpd`"}
 """What replaces a removed module (the "What's New" of the release that removed it)."""
 
@@ -32,12 +30,9 @@ def _why(module: str, version: str) -> tuple[str, str]:
             f"Use {_INSTEAD.get(module, 'its replacement')} instead of `{module}`")
 
 
-def _setuptools_shim(package: Package, path: str, top: str) -> bool:
-    """True for ``distutils`` in a ``setup.py`` or any module of an ament_python package: the
-    setuptools that builds it is on the machine, and its ``distutils-precedence.pth`` shim
-    provides ``distutils`` on every Python (Python 3.12 included)."""
-    return top == "distutils" and (posixpath.basename(path) == "setup.py" or
-                                   is_ament_python(package))
+_SHIMMED = "distutils"
+"""Removed from Python 3.12, but setuptools' ``distutils-precedence.pth`` provides it to every
+Python process of a machine with setuptools, which every ROS 2 install has (colcon, ament)."""
 
 
 @rule("PYC010", "stdlib-module-not-on-target", Severity.ERROR,
@@ -50,14 +45,13 @@ def stdlib_module_not_on_target(package: Package) -> Iterator[Hit]:
     target distribution's Python (humble 3.10, jazzy 3.12, kilted and rolling 3.12; set the
     distribution with `--rosdistro` or `rosdistro` in `[tool.pkgtool]`), not of the Python
     running pkgtool: a module that some Python 3 has in its standard library but the target's
-    has not, either removed (`imp`, `distutils`, `asyncore` in 3.12) or newer (`tomllib` on
+    has not, either removed (`imp`, `asyncore` in 3.12) or newer (`tomllib` on
     humble). Module lists come from a table generated from the stdlib-list package. Imports
     inside `try/except ImportError` are alternatives and stay silent, and so are imports of the
     package's own modules named like one (a `test/` package the tests import as `test.support`,
-    which pytest's import mode puts on `sys.path`), and `distutils` in a `setup.py` or in
-    any module of an ament_python package: the setuptools that builds the package is on the
-    machine, and its `distutils` shim (`distutils-precedence.pth`) provides the module on
-    every Python.
+    which pytest's import mode puts on `sys.path`), and `distutils`: setuptools, which every
+    ROS 2 install has (colcon and ament build with it), provides it to every Python process
+    through its `distutils-precedence.pth` shim, Python 3.12 included.
 
     ## Why is this bad?
     The node fails with `ModuleNotFoundError` on the robot's Python although it ran on the
@@ -83,7 +77,7 @@ def stdlib_module_not_on_target(package: Package) -> Iterator[Hit]:
             top = imported.top_level
             if (not top or top in seen or imported.guarded or top in here or top not in known
                     or keys_for_import(top, distro)
-                    or _setuptools_shim(package, module.path, top)):
+                    or top == _SHIMMED):
                 continue
             seen.add(top)
             why, fix = _why(top, version)
