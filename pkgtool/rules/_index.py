@@ -81,6 +81,7 @@ RULES = {
     "LCH018": ("launch-action-in-a-tuple", "error", True, "launch.action_in_a_tuple"),
     "LCH019": ("launch-file-root", "error", True, "launch.launch_file_root"),
     "LCH020": ("launch-argument-never-declared", "error", True, "launch.argument_never_declared"),
+    "LCH021": ("parameter-value-as-file", "error", True, "launch.parameter_value_as_file"),
     "MAN001": ("invalid-package-name", "error", True, "manifest.invalid_package_name"),
     "MAN002": ("invalid-version", "error", True, "manifest.invalid_version"),
     "MAN003": ("missing-required-element", "error", True, "manifest.missing_required_element"),
