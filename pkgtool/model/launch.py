@@ -18,12 +18,15 @@ class FileRef:
     """A file the launch file reads from a package's share folder, e.g. ('config', 'p.yaml').
 
     ``package`` is the package whose share folder is used (None if unknown); ``parts`` are the
-    static path components after the share folder.
+    static path components after the share folder. ``checked``: the file asks whether this
+    path (or a folder above it) exists (``os.path.exists``), or asks so of a path it cannot
+    work out: the file may be missing on purpose.
     """
 
     package: str | None
     parts: tuple[str, ...]
     span: Span
+    checked: bool = False
 
 
 @record
@@ -139,6 +142,9 @@ class LaunchFile:
     paths: tuple[tuple[str, Span], ...] = ()
 
 
+EXISTENCE_CHECKS = frozenset({"exists", "isfile", "is_file", "isdir", "is_dir", "lexists"})
+"""``os.path.exists``, ``os.path.isfile``, ``Path.is_dir()``...: calls asking whether a path
+exists."""
 NOT_LAUNCH_FOLDERS = frozenset({"test", "tests", "example", "examples", "sample", "samples",
                                 "doc", "docs"})
 """Top-level folders of test and documentation material: a launch-like name there is not enough."""

@@ -15,7 +15,8 @@ from collections.abc import Callable, Iterator
 from typing import Any
 
 from pkgtool.model.ast_nodes import child_nodes, descendants, handler_stops, nodes_of_class
-from pkgtool.model.launch import COMMAND_PACKAGES, FileRef, NodeRef, PackageRef
+from pkgtool.model.launch import (COMMAND_PACKAGES, EXISTENCE_CHECKS, FileRef, NodeRef,
+                                  PackageRef)
 from pkgtool.model.launch_remaps import not_pairs
 from pkgtool.model.launch_scopes import (bindings, import_origins, overwritten_values,
                                          read_only_by, scope_nodes, unread_argument_defaults,
@@ -23,7 +24,7 @@ from pkgtool.model.launch_scopes import (bindings, import_origins, overwritten_v
                                          unread_values, written_paths)
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import depends_on_ros_distro
-from pkgtool.records import record
+from pkgtool.records import record, replace
 
 SHARE_LOOKUPS = frozenset({"get_package_share_directory", "get_package_share_path",
                            "FindPackageShare"})
@@ -104,6 +105,8 @@ class _Reader(ast.NodeVisitor):
             unread_argument_defaults(tree)  # module-level ones, files the code writes, and
         # defaults of launch arguments nothing reads
         self.dead = 0  # > 0 inside a node action that is never started
+        self.checked: set[tuple[str, tuple[str, ...]]] | None = set()  # share paths asked
+        # whether they exist (None: one the reader cannot work out)
         self.read_names = frozenset(n.id for n in nodes_of_class(tree, ast.Name)
                                     if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load))
 
@@ -320,6 +323,8 @@ class _Reader(ast.NodeVisitor):
 
     # recording --------------------------------------------------------------------------
     def visit_Call(self, node: ast.Call) -> None:
+        if _name(node.func) in EXISTENCE_CHECKS:
+            self._record_check(node)
         dead = self._never_started(node)
         self.dead += dead
         self._record_call(node)
@@ -331,6 +336,21 @@ class _Reader(ast.NodeVisitor):
                 self.continued.update(id(n) for n in ast.walk(part))
         self.generic_visit(node)
         self.dead -= dead
+
+    def _record_check(self, node: ast.Call) -> None:
+        """Note the share path ``os.path.exists(path)`` or ``Path(path).exists()`` asks about."""
+        func = node.func
+        asked = node.args[0] if node.args else \
+            func.value if isinstance(func, ast.Attribute) else None
+        if isinstance(asked, ast.Call) and _name(asked.func) in ("Path", "PurePath") and \
+                asked.args:
+            asked = asked.args[0]
+        found = self.value(asked) if asked is not None else None
+        if isinstance(found, Share) and found.share and found.parts is not None:
+            if self.checked is not None:
+                self.checked.add((found.package, found.parts))
+        elif not isinstance(found, str):
+            self.checked = None  # a path not worked out: any of the file's may be the one
 
     def _never_started(self, node: ast.Call) -> bool:
         """A node action (or ``ExecuteProcess``) assigned to a local name never read; any
@@ -687,8 +707,11 @@ def read_python_launch(path: str, tree: ast.Module, exported: frozenset[str] = f
     ``exported`` are the names other modules may import from it)."""
     reader = _Reader(path, tree, exported)
     reader.visit(tree)
-    files = [f for f in reader.files if not any(
-        _extends(o, f, (f.package, f.parts) in reader.extended) for o in reader.files)]
+    checked = reader.checked
+    files = [replace(f, checked=checked is None or any(
+        f.package == package and f.parts[:len(parts)] == parts for package, parts in checked))
+        for f in reader.files if not any(
+            _extends(o, f, (f.package, f.parts) in reader.extended) for o in reader.files)]
     unique = {(f.package, f.parts, f.span.line): f for f in reversed(files)}
     return (tuple(reader.nodes), tuple(reader.packages),
             tuple(sorted(unique.values(), key=lambda f: (f.span.line, f.span.col))))

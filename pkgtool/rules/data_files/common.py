@@ -8,7 +8,7 @@ import posixpath
 from collections.abc import Iterable, Iterator
 
 from pkgtool.model.installed import installed_data
-from pkgtool.model.launch import FileRef, LaunchFile
+from pkgtool.model.launch import EXISTENCE_CHECKS, FileRef, LaunchFile
 from pkgtool.model.launch_python import read_python_launch
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
@@ -95,12 +95,12 @@ def _share_reads(package: Package, shared: set[str]
     """The share files each installed launch file (but those only nodes never started use)
     and each installed module reading a package's share folder reads."""
     for launch in package.launch_files:
-        if launch.path in shared and not _launch_checks_files(package, launch):
+        if launch.path in shared and not _launch_makes_folders(package, launch):
             unread = _only_unused_nodes_read(launch)
             searched = _SEARCH_PATHS.search(package.texts.get(launch.path, "")) is not None
             yield launch.path, (ref for ref in launch.files
-                                if (ref.package, ref.parts) not in unread and
-                                not (searched and ref.parts and "." not in ref.parts[-1]))
+                                if (ref.package, ref.parts) not in unread and not ref.checked
+                                and not (searched and ref.parts and "." not in ref.parts[-1]))
     for module, tree, index in installed_trees(package):
         if index.imports_from("ament_index_python") and not checks_files(index):
             yield module.path, read_python_launch(module.path, tree, _imported_names(package))[2]
@@ -117,7 +117,7 @@ def _imported_names(package: Package) -> frozenset[str]:
     return frozenset(names)
 
 
-ASKS_EXISTENCE = frozenset({"exists", "isfile", "is_file", "isdir", "is_dir", "lexists"})
+ASKS_EXISTENCE = EXISTENCE_CHECKS
 """``os.path.exists``, ``os.path.isfile``, ``Path.is_dir()``..."""
 _EXISTENCE = ASKS_EXISTENCE | {"makedirs", "mkdir", "load_dotenv"}
 """Those, ``os.makedirs`` and ``Path.mkdir()`` (a module making folders may make the share
@@ -135,11 +135,14 @@ def checks_files(index: Index, calls: frozenset[str] = _EXISTENCE) -> bool:
                for call in index.calls)
 
 
-def _launch_checks_files(package: Package, launch: LaunchFile) -> bool:
-    """:func:`checks_files` for a Python launch file (``if os.path.exists(config):``)."""
+def _launch_makes_folders(package: Package, launch: LaunchFile) -> bool:
+    """True when a Python launch file makes folders or loads an optional ``.env`` file
+    (:data:`_EXISTENCE` but the existence checks, which each file reference says itself:
+    ``FileRef.checked``): it may make the share path it names."""
     text = package.texts.get(launch.path)
     tree = parse_tree(launch.path, text) if launch.kind == "python" and text else None
-    return isinstance(tree, ast.Module) and checks_files(index_of(tree))
+    return isinstance(tree, ast.Module) and \
+        checks_files(index_of(tree), _EXISTENCE - ASKS_EXISTENCE)
 
 
 def _only_unused_nodes_read(launch: LaunchFile) -> set[tuple[str | None, tuple[str, ...]]]:

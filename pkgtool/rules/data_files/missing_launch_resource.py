@@ -31,11 +31,13 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     missing one, not files read. Nor is a file whose name a `.gitignore` of the package or
     of the folders above it lists (a calibration or a map the user makes, kept out of git
     on purpose). Paths that are glob patterns (`config/*.yaml`) count when installed files
-    match them, and a module or Python launch file that asks whether files or folders
-    exist (`os.path.exists`,
+    match them, and a module that asks whether files or folders exist (`os.path.exists`,
     `os.path.isdir`, `Path.exists()`: it handles a missing one, as a model it downloads),
-    makes folders (`os.makedirs`) or loads an optional `.env` file (`load_dotenv`) is left
-    alone, and so is a folder data_files installs into (setuptools makes it, files or not).
+    and a module or Python launch file that makes folders (`os.makedirs`) or loads an
+    optional `.env` file (`load_dotenv`) is left alone; a launch file asking whether a path
+    exists is left alone for that path and those below it (for all when it asks of a path
+    pkgtool cannot work out), and so is a folder data_files installs into (setuptools
+    makes it, files or not).
     A path the code builds but never uses (the value of a local name never read, read only
     by nodes it never starts, or replaced before any use; of a module-level name nothing
     reads or imports; or stored in `self.x` that the module never reads) is not read

@@ -24,7 +24,9 @@ def uninstalled_launch_resource(package: Package) -> Iterator[Hit]:
     does not install (neither the file nor a folder holding it) while the package has them.
     A file the package does not have at all is DAT012's. Paths that are glob patterns
     (`config/*.yaml`) count when installed files match them, and a module that asks whether
-    files exist (`os.path.exists`, `Path.exists()`: it handles a missing one) is left alone.
+    files exist (`os.path.exists`, `Path.exists()`: it handles a missing one) is left alone;
+    in a launch file only the paths it asks that of are (all of them when it asks of a path
+    pkgtool cannot work out).
 
     ## Why is this bad?
     The launch file starts, then fails on the missing parameter file, URDF or RViz config,
