@@ -31,6 +31,8 @@ RULES = {
     "DAT017": ("cwd-relative-path", "error", True, "data_files.cwd_relative_path"),
     "DAT018": ("colliding-data-files", "error", True, "data_files.colliding_data_files"),
     "DAT019": ("misplaced-data-files", "error", True, "data_files.misplaced_data_files"),
+    "DAT020": ("missing-cmake-install-source", "error", True,
+               "data_files.missing_cmake_install_source"),
     "DEP001": ("undeclared-import", "error", True, "dependencies.undeclared_import"),
     "DEP002": ("import-declared-only-as-build-depend", "error", True,
                "dependencies.build_only_import"),

@@ -1,0 +1,57 @@
+"""DAT020: a CMake ``install()`` names a file or folder the package does not have."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.installed import cmake_installed
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.model.submodules import ignored, under
+from pkgtool.rules.registry import rule
+
+
+@rule("DAT020", "missing-cmake-install-source", Severity.ERROR,
+      fix="Add the file or folder to the package, or remove it from the `install()` call")
+def missing_cmake_install_source(package: Package) -> Iterator[Hit]:
+    """A CMake package's `install()` names a file or folder the package does not have.
+
+    ## What it does
+    Reads the sources of `install(PROGRAMS|FILES|DIRECTORY ...)` in CMakeLists.txt (and the
+    CMake files it includes; `ament_python_install_package` folders too) and reports one that
+    is no file or folder of the package, when every source is known statically (no
+    variable the file does not set, no `add_subdirectory`, function or macro). Sources a
+    `.gitignore` leaves out (made before the build) or inside a git submodule that is not
+    checked out are left alone. An empty folder counts as missing: git keeps no empty
+    folders, so a fresh clone lacks it.
+
+    ## Why is this bad?
+    `colcon build` stops at the install step ("file INSTALL cannot find ..."): nothing of the
+    package is installed, on every machine that builds it from the repository.
+
+    ## Example
+    ```cmake
+    install(PROGRAMS scripts/teleop.py scripts/internal_test.py  # no internal_test.py
+            DESTINATION lib/${PROJECT_NAME})
+    ```
+
+    ## Use instead
+    ```cmake
+    install(PROGRAMS scripts/teleop.py DESTINATION lib/${PROJECT_NAME})
+    ```
+    """
+    sources = cmake_installed(package)
+    text = package.texts.get("CMakeLists.txt", "")
+    for source in sorted(sources or ()):
+        if source in ("", ".") or package.has_file(source) or \
+                any(f.startswith(source + "/") for f in package.files) or \
+                ignored(source, package.ignores) or under(source, package.unfetched):
+            continue
+        found = re.search(rf"(?<![\w.-]){re.escape(source)}(?![\w./-])", text)
+        if found is None:
+            continue  # written in an included file, or built from parts: not placed
+        yield Hit(Span.of_offset("CMakeLists.txt", text, found.start()),
+                  f"`install()` names `{source}`, which the package does not have: "
+                  "`colcon build` fails at the install step")
