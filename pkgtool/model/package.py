@@ -9,9 +9,10 @@ from pathlib import Path
 from pkgtool.model.cmake_interfaces import with_included
 from pkgtool.model.context import Context, interface_file
 from pkgtool.model.files import TextFile, list_files, read_text
-from pkgtool.model.launch import (LAUNCH_YAML, LaunchFile, in_launch_folder, is_launch_file,
-                                  is_launch_test, nested_packages, other_yaml, parse_launch,
-                                  python_folders, runs_as_launch_file)
+from pkgtool.model.launch import (LAUNCH_SUFFIXES, LAUNCH_YAML, LaunchFile, in_launch_folder,
+                                  is_launch_file, is_launch_test, is_template, nested_packages,
+                                  other_yaml, parse_launch, python_folders,
+                                  runs_as_launch_file)
 from pkgtool.model.launch_reader import yaml_problem
 from pkgtool.model.manifest import Manifest, parse_manifest
 from pkgtool.model.modules import PythonModule, parse_module
@@ -136,7 +137,8 @@ def load_package(root: Path, context: Context | None = None) -> Package:
     shared = _shared_sources(setup_py)
     ros1 = getattr(manifest, "is_ros1", False)  # roslaunch files: not ROS 2's to check
     for relpath in files:
-        if not ros1 and (is_launch_file(relpath, folders, nested) and
+        if not ros1 and ((is_launch_file(relpath, folders, nested) or
+                          _installed_as_launch_file(relpath, shared)) and
                          not is_launch_test(relpath, text_of(relpath)) and
                          not other_yaml(relpath, text_of(relpath)) or
                          _launch_by_content(relpath, text_of, nested, shared)):
@@ -231,6 +233,12 @@ def _other_language(text: str) -> bool:
     named ``start.py``): no module."""
     first = text.split("\n", 1)[0]
     return first.startswith("#!") and "python" not in first
+
+
+def _installed_as_launch_file(relpath: str, shared: frozenset[str]) -> bool:
+    """A file named like a launch file that data_files copies into ``share/`` wherever it
+    lies (``example/example/chassis/line_tracking.launch.py``): ``ros2 launch`` runs it."""
+    return relpath in shared and relpath.endswith(LAUNCH_SUFFIXES) and not is_template(relpath)
 
 
 def _shared_sources(setup_py: SetupPy | ParseProblem | None) -> frozenset[str]:

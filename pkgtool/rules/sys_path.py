@@ -59,7 +59,8 @@ def _package_edits(package: Package) -> tuple[dict[str, tuple[tuple[int, str], .
                                               dict[str, int]]:
     inside: dict[str, tuple[tuple[int, str], ...]] = {}
     outside: dict[str, int] = {}
-    for module in package.modules:
+    launch = [f.python for f in package.launch_files if f.python is not None]
+    for module in (*package.modules, *launch):
         text = package.texts.get(module.path)
         tree = parse_tree(module.path, text) if text and "sys.path" in text else None
         if not isinstance(tree, ast.Module):
