@@ -31,6 +31,15 @@ def _targets(name: str, path: str, imported: Import, own: dict[str, str]) -> set
     return {own[n] for n in names if n in own}
 
 
+def _fallback(imports: tuple[Import, ...], imported: Import, target: str) -> bool:
+    """True when another guarded import of the module names the same file by its bare name
+    (``try: from target_types import X`` / ``except ImportError: from
+    my_pkg.target_types import X``): one of the two always runs, so the module is needed."""
+    stem = posixpath.basename(target).removesuffix(".py")
+    return any(other is not imported and other.guarded and not other.level and
+               other.module == stem for other in imports)
+
+
 @per_package
 def optional_modules(package: Package) -> frozenset[str]:
     """Paths of own modules imported only guarded, by installed code, and never an entry point.
@@ -51,6 +60,7 @@ def optional_modules(package: Package) -> frozenset[str]:
         for imported in module.imports:
             for target in _targets(names[module.path], module.path, imported, own):
                 if target != module.path:
-                    sites.setdefault(target, set()).add(imported.guarded)
+                    sites.setdefault(target, set()).add(
+                        imported.guarded and not _fallback(module.imports, imported, target))
     return frozenset(path for path, guards in sites.items()
                      if guards == {True} and names[path] not in entries)

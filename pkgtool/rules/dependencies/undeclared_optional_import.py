@@ -24,7 +24,9 @@ def undeclared_optional_import(package: Package) -> Iterator[Hit]:
     module only calls (constructs) under `try/except Exception` with a fallback counts as
     guarded too, and so do the imports of an own module that the package only ever
     imports under such a guard (an optional back-end, like rqt_py_console's spyder
-    console), and so do imports under `if probe():`, where `probe` is a module function
+    console; not one the guard imports by its bare name and its handler by its package's,
+    `from target_types import X` then `from my_pkg.target_types import X`: one of the
+    two always runs), and so do imports under `if probe():`, where `probe` is a module function
     that tries an import and returns when it fails (`if in_notebook(): from
     IPython.display import display`). ROS 1 modules (`rospy`) guarded in a ROS 2 package
     are its ROS 1 code path (`if ROS_VERSION == 1:`, `except ImportError:`): there is
