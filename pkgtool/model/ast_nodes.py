@@ -163,3 +163,10 @@ def handler_stops(handler: ast.ExceptHandler) -> bool:
     call = last.value if isinstance(last, ast.Expr) else None
     return isinstance(call, ast.Call) and isinstance(call.func, (ast.Name, ast.Attribute)) and \
         (call.func.id if isinstance(call.func, ast.Name) else call.func.attr) in _EXITS
+
+
+def last_name(func: ast.expr) -> str:
+    """The name a call's function ends in: ``f`` of ``f()``, ``exists`` of
+    ``os.path.exists()``; ``""`` for another expression (``make()()``)."""
+    return func.id if isinstance(func, ast.Name) else \
+        func.attr if isinstance(func, ast.Attribute) else ""

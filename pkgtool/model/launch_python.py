@@ -14,7 +14,8 @@ import math
 from collections.abc import Callable, Iterator
 from typing import Any
 
-from pkgtool.model.ast_nodes import child_nodes, descendants, handler_stops, nodes_of_class
+from pkgtool.model.ast_nodes import (child_nodes, descendants, handler_stops, last_name,
+                                     nodes_of_class)
 from pkgtool.model.launch import (COMMAND_PACKAGES, EXISTENCE_CHECKS, FileRef, NodeRef,
                                   PackageRef)
 from pkgtool.model.launch_remaps import not_pairs
@@ -71,11 +72,6 @@ class Share:
 
 Value = str | Share | tuple | None
 """What an expression evaluates to: a string, a share path, a tuple of values, or unknown."""
-
-
-def _name(func: ast.expr) -> str:
-    return func.id if isinstance(func, ast.Name) else (
-        func.attr if isinstance(func, ast.Attribute) else "")
 
 
 def _split(text: str) -> tuple[str, ...] | None:
@@ -146,7 +142,7 @@ class _Reader(ast.NodeVisitor):
         unread = unread_values(node, nodes) | overwritten_values(node, nodes)
         dead = {call for call in unread if isinstance(call, ast.Call) and (
             self._action(call.func) in NODE_ACTIONS | PLUGIN_ACTIONS or
-            _name(call.func) == "ExecuteProcess")}
+            last_name(call.func) == "ExecuteProcess")}
         self.unread.update(unread, read_only_by(node, nodes, dead) if dead else ())
         for statement in node.body:
             self.visit(statement)
@@ -197,7 +193,7 @@ class _Reader(ast.NodeVisitor):
     # blocks that run only when a package is installed ------------------------------------
     def visit_If(self, node: ast.If) -> None:
         self.visit(node.test)
-        checked = any(isinstance(n, ast.Call) and _name(n.func) in PRESENCE_CHECKS
+        checked = any(isinstance(n, ast.Call) and last_name(n.func) in PRESENCE_CHECKS
                       for n in descendants(node.test))
         distro = depends_on_ros_distro(node.test, self._assigned)
         self.distro_branches += distro
@@ -219,12 +215,12 @@ class _Reader(ast.NodeVisitor):
         return None
 
     def visit_Try(self, node: ast.Try) -> None:
-        looked_up = any(isinstance(n, ast.Call) and _name(n.func) in _LOOKUPS
+        looked_up = any(isinstance(n, ast.Call) and last_name(n.func) in _LOOKUPS
                         for statement in node.body for n in descendants(statement))
         going_on = [h for h in node.handlers if not handler_stops(h)]  # not re-raising
         checked = any(isinstance(n, (ast.Name, ast.Attribute)) and
-                      (_name(n) == "PackageNotFoundError" or
-                       looked_up and _name(n) in _BROADER_CATCHES)
+                      (last_name(n) == "PackageNotFoundError" or
+                       looked_up and last_name(n) in _BROADER_CATCHES)
                       for handler in going_on if handler.type
                       for n in descendants(handler.type)) or \
             looked_up and any(handler.type is None for handler in going_on)
@@ -250,11 +246,11 @@ class _Reader(ast.NodeVisitor):
             base = base.value
         origins = self.origins.get(base.id) if isinstance(base, ast.Name) else None
         if not origins:
-            return _name(func)
+            return last_name(func)
         launch = sorted(o for o in origins if o.split(".")[0] == "launch_ros")
         if not launch:
             return ""
-        return launch[0].rsplit(".", 1)[-1] if isinstance(func, ast.Name) else _name(func)
+        return launch[0].rsplit(".", 1)[-1] if isinstance(func, ast.Name) else last_name(func)
 
     # evaluation -------------------------------------------------------------------------
     def value(self, node: ast.expr | None, depth: int = 0, top: int | None = None) -> Value:
@@ -293,19 +289,19 @@ class _Reader(ast.NodeVisitor):
         return None
 
     def _call_value(self, node: ast.Call, depth: int, top: int | None) -> Value:
-        name = _name(node.func)
+        name = last_name(node.func)
         first = node.args[0] if node.args else None
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
             package = self.value(_keyword(node, "package") or first, depth + 1, top)
             return Share(package, "", name in SHARE_LOOKUPS) if isinstance(package, str) else None
         if name == "find" and isinstance(node.func, ast.Attribute) and \
                 isinstance(node.func.value, ast.Call) and \
-                _name(node.func.value.func) in ("FindPackageShare", "FindPackagePrefix"):
+                last_name(node.func.value.func) in ("FindPackageShare", "FindPackagePrefix"):
             # FindPackageShare('pkg').find('pkg'): the folder, found when the line runs
             looked_up = self.value(first or node.func.value, depth + 1, top)
             if isinstance(looked_up, Share):
                 return looked_up
-            return Share(looked_up, "", _name(node.func.value.func) == "FindPackageShare") \
+            return Share(looked_up, "", last_name(node.func.value.func) == "FindPackageShare") \
                 if isinstance(looked_up, str) else None
         if name in JOINS:
             items = [self.value(a, depth + 1, top) for a in node.args]
@@ -323,12 +319,12 @@ class _Reader(ast.NodeVisitor):
 
     # recording --------------------------------------------------------------------------
     def visit_Call(self, node: ast.Call) -> None:
-        if _name(node.func) in EXISTENCE_CHECKS:
+        if last_name(node.func) in EXISTENCE_CHECKS:
             self._record_check(node)
         dead = self._never_started(node)
         self.dead += dead
         self._record_call(node)
-        parts = node.args[0] if node.args and _name(node.func).endswith(JOINED_PARTS) else None
+        parts = node.args[0] if node.args and last_name(node.func).endswith(JOINED_PARTS) else None
         items = parts.elts if isinstance(parts, (ast.List, ast.Tuple)) else []
         for part, after in zip(items, items[1:]):
             if not (isinstance(after, ast.Constant) and isinstance(after.value, str) and
@@ -342,7 +338,7 @@ class _Reader(ast.NodeVisitor):
         func = node.func
         asked = node.args[0] if node.args else \
             func.value if isinstance(func, ast.Attribute) else None
-        if isinstance(asked, ast.Call) and _name(asked.func) in ("Path", "PurePath") and \
+        if isinstance(asked, ast.Call) and last_name(asked.func) in ("Path", "PurePath") and \
                 asked.args:
             asked = asked.args[0]
         found = self.value(asked) if asked is not None else None
@@ -356,10 +352,10 @@ class _Reader(ast.NodeVisitor):
         """A node action (or ``ExecuteProcess``) assigned to a local name never read; any
         other call so assigned may have effects (``unused = ld.add_action(Node(...))``)."""
         return node in self.unread and (self._action(node.func) in NODE_ACTIONS | PLUGIN_ACTIONS
-                                        or _name(node.func) == "ExecuteProcess")
+                                        or last_name(node.func) == "ExecuteProcess")
 
     def _record_call(self, node: ast.Call) -> None:
-        name, action = _name(node.func), self._action(node.func)
+        name, action = last_name(node.func), self._action(node.func)
         if action in NODE_ACTIONS or action in PLUGIN_ACTIONS:
             package_node = _keyword(node, "package")
             executable_node = None if action in PLUGIN_ACTIONS else (
@@ -429,11 +425,11 @@ class _Reader(ast.NodeVisitor):
             first = first.left
         if isinstance(first, ast.JoinedStr):
             first = first.values[0] if first.values else None
-        if isinstance(first, ast.Call) and _name(first.func) == "PathJoinSubstitution" and \
+        if isinstance(first, ast.Call) and last_name(first.func) == "PathJoinSubstitution" and \
                 first.args and isinstance(first.args[0], (ast.List, ast.Tuple)) and \
                 len(first.args[0].elts) == 1:  # PathJoinSubstitution([FindExecutable(...)])
             first = first.args[0].elts[0]
-        if isinstance(first, ast.Call) and _name(first.func) == "FindExecutable":
+        if isinstance(first, ast.Call) and last_name(first.func) == "FindExecutable":
             first = _keyword(first, "name") or (first.args[0] if first.args else None)
         found = self.value(first) if isinstance(first, ast.expr) else None
         words = found.split() if isinstance(found, str) else []
@@ -628,7 +624,7 @@ def _last_part(node: ast.expr) -> ast.expr:
     if isinstance(node, (ast.List, ast.Tuple)) and node.elts:
         return _last_part(node.elts[-1])
     if isinstance(node, ast.Call) and node.args:
-        name = _name(node.func)
+        name = last_name(node.func)
         if name in JOINS:
             return _last_part(node.args[-1])
         if name.endswith(CONCATENATING) or name in ("Path", "PurePath", "str"):

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import ast
 
-from pkgtool.model.ast_nodes import child_nodes, descendants, nodes_of_class, subtree
+from pkgtool.model.ast_nodes import child_nodes, descendants, last_name, nodes_of_class, subtree
 
 
 def bindings(nodes: list[ast.AST], params: ast.arguments | None
@@ -251,7 +251,7 @@ def unread_argument_defaults(tree: ast.Module) -> set[ast.expr]:
     file includes no launch file (which could read it); with the values of the names such a
     default alone reads (``sdf = share / 'sdf' / 'robot.sdf'``)."""
     calls = nodes_of_class(tree, ast.Call)
-    if any(_called(call) == "IncludeLaunchDescription" for call in calls):
+    if any(last_name(call.func) == "IncludeLaunchDescription" for call in calls):
         return set()
     texts: dict[str, int] = {}
     for constant in nodes_of_class(tree, ast.Constant):
@@ -259,7 +259,7 @@ def unread_argument_defaults(tree: ast.Module) -> set[ast.expr]:
             texts[constant.value] = texts.get(constant.value, 0) + 1  # type: ignore
     found: set[ast.expr] = set()
     for call in calls:
-        if _called(call) != "DeclareLaunchArgument":
+        if last_name(call.func) != "DeclareLaunchArgument":
             continue
         given = {k.arg: k.value for k in call.keywords}  # type: ignore[attr-defined]
         name = call.args[0] if call.args else given.get("name")  # type: ignore[attr-defined]
@@ -268,12 +268,6 @@ def unread_argument_defaults(tree: ast.Module) -> set[ast.expr]:
             found.add(default)
             found.update(_values_read_only_in(tree, default))
     return found
-
-
-def _called(call: ast.AST) -> str:
-    func = call.func  # type: ignore[attr-defined]
-    return func.id if isinstance(func, ast.Name) else \
-        func.attr if isinstance(func, ast.Attribute) else ""
 
 
 def _values_read_only_in(tree: ast.Module, part: ast.expr) -> list[ast.expr]:

@@ -8,7 +8,7 @@ import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.ast_nodes import last_name, nodes_of_class
 from pkgtool.model.installed import installed_modules, is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
@@ -31,7 +31,7 @@ def _only_shown(node: ast.AST, index: Index) -> bool:
     ``QIcon(icon)``): a missing icon shows nothing, it does not fail."""
     parent = index.parents.get(id(node))
     if isinstance(parent, ast.Call) and node in parent.args:
-        return _callee(parent) in _TOLERANT
+        return last_name(parent.func) in _TOLERANT
     if not (isinstance(parent, ast.Assign) and len(parent.targets) == 1 and
             isinstance(parent.targets[0], ast.Name)):
         return False
@@ -39,12 +39,6 @@ def _only_shown(node: ast.AST, index: Index) -> bool:
     reads = [n for n in nodes_of_class(index.module_of(node), ast.Name)
              if isinstance(n, ast.Name) and n.id == name and isinstance(n.ctx, ast.Load)]
     return bool(reads) and all(_only_shown(read, index) for read in reads)
-
-
-def _callee(call: ast.Call) -> str:
-    func = call.func
-    return func.id if isinstance(func, ast.Name) else \
-        func.attr if isinstance(func, ast.Attribute) else ""
 
 
 @rule("DAT015", "file-beside-module-not-installed", Severity.ERROR,

@@ -7,7 +7,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.ast_nodes import last_name, nodes_of_class
 from pkgtool.model.launch_scopes import overwritten_values, scope_nodes, unread_values
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
@@ -57,14 +57,14 @@ def launch_argument_never_declared(package: Package) -> Iterator[Hit]:
         calls = [c for c in nodes_of_class(tree, ast.Call) if isinstance(c, ast.Call)]
         lost = {id(value) for function in nodes_of_class(tree, *FUNCTIONS)
                 for value in _lost_values(function)}
-        declared = {name for c in calls if _called(c) == _DECLARE and id(c) not in lost
+        declared = {name for c in calls if last_name(c.func) == _DECLARE and id(c) not in lost
                     and (name := text_argument(c, "name")) is not None}
-        reads = {name: c for c in reversed(calls) if _called(c) == _READ and len(c.args) < 2
+        reads = {name: c for c in reversed(calls) if last_name(c.func) == _READ and len(c.args) < 2
                  and id(c) not in lost and not any(k.arg == "default" for k in c.keywords)
                  and (name := text_argument(c, "variable_name")) is not None}
         for call in calls:
             name = text_argument(call, "name") if id(call) in lost and \
-                _called(call) == _DECLARE else None
+                last_name(call.func) == _DECLARE else None
             read = reads.get(name) if name is not None and name not in declared else None
             if read is not None:
                 yield Hit(Span(path, call.lineno, call.col_offset + 1),
@@ -78,9 +78,3 @@ def _lost_values(function: ast.FunctionDef | ast.AsyncFunctionDef) -> set[ast.ex
     """The values the function assigns to a name it never reads, or assigns again first."""
     nodes = scope_nodes(function.body)
     return unread_values(function, nodes) | overwritten_values(function, nodes)
-
-
-def _called(call: ast.Call) -> str:
-    func = call.func
-    return func.id if isinstance(func, ast.Name) else \
-        func.attr if isinstance(func, ast.Attribute) else ""

@@ -8,7 +8,7 @@ from collections.abc import Iterator
 from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.ast_nodes import last_name, nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
@@ -26,11 +26,6 @@ _FRONTEND_DECLARED = (re.compile(r"<(?:arg|let)\b[^>]*?\bname\s*=\s*[\"']([^\"']
 launch file's declared or set arguments."""
 _FRONTEND_READ = lazy_pattern(r"\$\(var\s+([\w.-]+)\s*\)")
 """A ``$(var x)`` substitution of an XML or YAML launch file."""
-
-
-def _name(func: ast.expr) -> str:
-    return func.id if isinstance(func, ast.Name) else (
-        func.attr if isinstance(func, ast.Attribute) else "")
 
 
 @rule("LCH008", "misspelled-launch-argument", Severity.ERROR,
@@ -77,13 +72,13 @@ def misspelled_launch_argument(package: Package) -> Iterator[Hit]:
     for path, tree, _ in files:
         found = nodes_of_class(tree, ast.Call) if isinstance(tree, ast.Module) else []
         calls[path] = found
-        declared_anywhere.update(name for c in found if _name(c.func) == _DECLARE
+        declared_anywhere.update(name for c in found if last_name(c.func) == _DECLARE
                                  and (name := text_argument(c, "name")) is not None)
     for path, _, text in files:
-        declared = {name for c in calls[path] if _name(c.func) == _DECLARE
+        declared = {name for c in calls[path] if last_name(c.func) == _DECLARE
                     and (name := text_argument(c, "name")) is not None}
         for call in calls[path]:
-            name = text_argument(call, "variable_name") if _name(call.func) == _READ else None
+            name = text_argument(call, "variable_name") if last_name(call.func) == _READ else None
             if name is None or name in declared_anywhere or len(call.args) > 1 or any(
                     k.arg == "default" for k in call.keywords) or \
                     text.count(f"'{name}'") + text.count(f'"{name}"') > 1:

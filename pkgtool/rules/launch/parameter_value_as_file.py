@@ -6,7 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import enclosing, nodes_of_class, walk_once
+from pkgtool.model.ast_nodes import enclosing, last_name, nodes_of_class, walk_once
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
@@ -57,7 +57,7 @@ def parameter_value_as_file(package: Package) -> Iterator[Hit]:
         parents = walk_once(tree).parents
         for call in calls:
             given = next((k.value for k in call.keywords if k.arg == "parameters"), None) \
-                if _called(call) in _NODES else None
+                if last_name(call.func) in _NODES else None
             if not isinstance(given, (ast.List, ast.Tuple)):
                 continue
             function = enclosing(call, parents, FUNCTIONS)
@@ -79,7 +79,8 @@ def _argument_defaults(calls: list[ast.Call]) -> dict[str, str | None]:
     not a literal)."""
     found: dict[str, str | None] = {}
     for call in calls:
-        name = text_argument(call, "name") if _called(call) == "DeclareLaunchArgument" else None
+        declares = last_name(call.func) == "DeclareLaunchArgument"
+        name = text_argument(call, "name") if declares else None
         if name is not None:
             default = _keyword_text(call, "default_value")
             found[name] = default if found.get(name, default) == default else None
@@ -89,7 +90,7 @@ def _argument_defaults(calls: list[ast.Call]) -> dict[str, str | None]:
 def _plain_value(value: ast.expr, defaults: dict[str, str | None]) -> str | None:
     """The text ``value`` evaluates to when it is a boolean, number or URL (no file), else
     None."""
-    if isinstance(value, ast.Call) and _called(value) == "LaunchConfiguration":
+    if isinstance(value, ast.Call) and last_name(value.func) == "LaunchConfiguration":
         name = text_argument(value, "variable_name")
         default = _keyword_text(value, "default")
         text = default if default is not None else defaults.get(name or "")
@@ -115,9 +116,3 @@ def _no_file(text: str) -> bool:
     except ValueError:
         return False
     return True
-
-
-def _called(call: ast.Call) -> str:
-    func = call.func
-    return func.id if isinstance(func, ast.Name) else \
-        func.attr if isinstance(func, ast.Attribute) else ""
