@@ -161,8 +161,7 @@ def handler_stops(handler: ast.ExceptHandler) -> bool:
     if isinstance(last, ast.Raise):
         return True
     call = last.value if isinstance(last, ast.Expr) else None
-    return isinstance(call, ast.Call) and isinstance(call.func, (ast.Name, ast.Attribute)) and \
-        (call.func.id if isinstance(call.func, ast.Name) else call.func.attr) in _EXITS
+    return isinstance(call, ast.Call) and last_name(call.func) in _EXITS
 
 
 def last_name(func: ast.expr) -> str:

@@ -230,9 +230,10 @@ def written_paths(tree: ast.Module) -> set[ast.expr]:
             if isinstance(call.args[0], ast.Name):
                 written_names[call.args[0].id] = written_names.get(call.args[0].id, 0) + 1
     outputs = _command_outputs(tree)
-    found.update(outputs.values())
+    named = {value.id for value in outputs if isinstance(value, ast.Name)}
+    found.update(outputs)
     found.update(node.value for node in nodes_of_class(tree, ast.Assign)
-                 if simple_assignment(node) and node.targets[0].id in outputs)  # type: ignore
+                 if simple_assignment(node) and node.targets[0].id in named)  # type: ignore
     if written_names:
         reads: dict[str, int] = {}
         for name in nodes_of_class(tree, ast.Name):
@@ -286,17 +287,12 @@ _OUTPUT_OPTIONS = frozenset({"-o", "--output", "--out", "--output-file"})
 """Options of command lines naming the file the command writes (``xacro in.xacro -o out``)."""
 
 
-def _command_outputs(tree: ast.Module) -> dict[str, ast.expr]:
-    """The values a command list literal gives after an output option (``['xacro', src, '-o',
-    urdf]``), by the name they are read through (another expression by its id): the file
-    is made by the launch file, whatever else then reads it."""
-    found: dict[str, ast.expr] = {}
-    for listed in nodes_of_class(tree, ast.List, ast.Tuple):
-        elements = listed.elts  # type: ignore[attr-defined]
-        for option, value in zip(elements, elements[1:]):
-            if isinstance(option, ast.Constant) and option.value in _OUTPUT_OPTIONS:
-                found[value.id if isinstance(value, ast.Name) else f"#{id(value)}"] = value
-    return found
+def _command_outputs(tree: ast.Module) -> list[ast.expr]:
+    """The values command list literals give after an output option (``['xacro', src, '-o',
+    urdf]``): the file is made by the launch file, whatever else then reads it."""
+    return [value for listed in nodes_of_class(tree, ast.List, ast.Tuple)
+            for option, value in zip(listed.elts, listed.elts[1:])  # type: ignore[attr-defined]
+            if isinstance(option, ast.Constant) and option.value in _OUTPUT_OPTIONS]
 
 
 def import_origins(tree: ast.Module) -> dict[str, set[str]]:

@@ -117,9 +117,7 @@ def _imported_names(package: Package) -> frozenset[str]:
     return frozenset(names)
 
 
-ASKS_EXISTENCE = EXISTENCE_CHECKS
-"""``os.path.exists``, ``os.path.isfile``, ``Path.is_dir()``..."""
-_EXISTENCE = ASKS_EXISTENCE | {"makedirs", "mkdir", "load_dotenv"}
+_EXISTENCE = EXISTENCE_CHECKS | {"makedirs", "mkdir", "load_dotenv"}
 """Those, ``os.makedirs`` and ``Path.mkdir()`` (a module making folders may make the share
 path it names too) and ``load_dotenv()``, which returns False for a missing file."""
 
@@ -142,7 +140,7 @@ def _launch_makes_folders(package: Package, launch: LaunchFile) -> bool:
     text = package.texts.get(launch.path)
     tree = parse_tree(launch.path, text) if launch.kind == "python" and text else None
     return isinstance(tree, ast.Module) and \
-        checks_files(index_of(tree), _EXISTENCE - ASKS_EXISTENCE)
+        checks_files(index_of(tree), _EXISTENCE - EXISTENCE_CHECKS)
 
 
 def _only_unused_nodes_read(launch: LaunchFile) -> set[tuple[str | None, tuple[str, ...]]]:

@@ -9,9 +9,10 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity, shortened
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.installed import installed_data
+from pkgtool.model.launch import EXISTENCE_CHECKS
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.data_files.common import ASKS_EXISTENCE, checks_files
+from pkgtool.rules.data_files.common import checks_files
 from pkgtool.rules.registry import rule
 from pkgtool.rules.relative_paths import package_file_named
 from pkgtool.rules.scopes import scope_bindings, single_assignments
@@ -33,7 +34,7 @@ _PATH_READS = frozenset({"read_text", "read_bytes", "open"})
 """Methods of a ``Path`` that read its file (a ``Path`` alone may be resolved elsewhere)."""
 _SAME_PATH = frozenset({"os.path.abspath", "os.path.realpath", "os.path.normpath", *_PATHS})
 """Calls whose one argument is the path they give (``open(Path('x'))``; ``str()`` too)."""
-_SETS_THE_FOLDER = ASKS_EXISTENCE | {"chdir"}
+_SETS_THE_FOLDER = EXISTENCE_CHECKS | {"chdir"}
 """Calls after which a relative path may well be right: the module asks whether the file is
 there (and falls back), or changes the working folder first (``os.chdir(share)``)."""
 _WRITES = frozenset("wax")

@@ -8,10 +8,11 @@ from collections.abc import Callable, Iterator
 from pkgtool.findings import Hit, Severity, shortened
 from pkgtool.model.ast_nodes import nodes_of_class, walk_once
 from pkgtool.model.installed import installed_data, is_ament_python
+from pkgtool.model.launch import EXISTENCE_CHECKS
 from pkgtool.model.package import Package, is_test_material
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
-from pkgtool.rules.data_files.common import ASKS_EXISTENCE, checks_files
+from pkgtool.rules.data_files.common import checks_files
 from pkgtool.rules.syntax_trees import Index, index_of, installed_trees, python_files
 from pkgtool.lazy_regex import lazy_pattern
 
@@ -71,7 +72,7 @@ def home_folder_path(package: Package) -> Iterator[Hit]:
     checked = {module.path for module, _, _ in installed_trees(package)} | \
         {f.path for f in package.launch_files if f.kind == "python"}
     for path, _, tree in python_files(package, (*_HINTS, *_HOME_HINTS)):
-        if path in checked and not checks_files(index_of(tree), ASKS_EXISTENCE):
+        if path in checked and not checks_files(index_of(tree), EXISTENCE_CHECKS):
             yield from _python_paths(path, tree)
             yield from _workspace_paths(path, tree, index_of(tree))
     shipped = _shipped(package)

@@ -10,6 +10,7 @@ from pkgtool.model.installed import cmake_installed
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.submodules import ignored, under
+from pkgtool.rules.data_files.common import is_folder
 from pkgtool.rules.registry import rule
 
 
@@ -45,8 +46,7 @@ def missing_cmake_install_source(package: Package) -> Iterator[Hit]:
     sources = cmake_installed(package)
     text = package.texts.get("CMakeLists.txt", "")
     for source in sorted(sources or ()):
-        if source in ("", ".") or package.has_file(source) or \
-                any(f.startswith(source + "/") for f in package.files) or \
+        if source in ("", ".") or package.has_file(source) or is_folder(package, source) or \
                 ignored(source, package.ignores) or under(source, package.unfetched):
             continue
         found = re.search(rf"(?<![\w.-]){re.escape(source)}(?![\w./-])", text)

@@ -7,14 +7,13 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import last_name, nodes_of_class
+from pkgtool.model.ast_nodes import last_name
 from pkgtool.model.launch_scopes import overwritten_values, scope_nodes, unread_values
 from pkgtool.model.package import Package
-from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.launch._python_launch import text_argument
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import FUNCTIONS, python_launch_files
+from pkgtool.rules.syntax_trees import launch_indexes
 
 _DECLARE, _READ = "DeclareLaunchArgument", "LaunchConfiguration"
 
@@ -50,13 +49,11 @@ def launch_argument_never_declared(package: Package) -> Iterator[Hit]:
     return LaunchDescription([auto_start_arg, node])
     ```
     """
-    for path, _, text in python_launch_files(package):
-        tree = parse_tree(path, text)
-        if not isinstance(tree, ast.Module) or _DECLARE not in text:
+    for path, index in launch_indexes(package):
+        calls = index.calls
+        if not any(last_name(c.func) == _DECLARE for c in calls):
             continue
-        calls = [c for c in nodes_of_class(tree, ast.Call) if isinstance(c, ast.Call)]
-        lost = {id(value) for function in nodes_of_class(tree, *FUNCTIONS)
-                for value in _lost_values(function)}
+        lost = {id(value) for function in index.functions for value in _lost_values(function)}
         declared = {name for c in calls if last_name(c.func) == _DECLARE and id(c) not in lost
                     and (name := text_argument(c, "name")) is not None}
         reads = {name: c for c in reversed(calls) if last_name(c.func) == _READ and len(c.args) < 2

@@ -6,14 +6,13 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import enclosing, last_name, nodes_of_class, walk_once
+from pkgtool.model.ast_nodes import last_name
 from pkgtool.model.package import Package
-from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.launch._python_launch import text_argument
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import single_assignments
-from pkgtool.rules.syntax_trees import FUNCTIONS, python_launch_files
+from pkgtool.rules.syntax_trees import launch_indexes
 
 _NODES = frozenset({"Node", "ComposableNode", "LifecycleNode"})
 _BOOLEANS = frozenset({"true", "false"})
@@ -47,21 +46,19 @@ def parameter_value_as_file(package: Package) -> Iterator[Hit]:
     Node(package='demo', executable='talker', parameters=[{'use_sim_time': use_sim_time}])
     ```
     """
-    for path, _, text in python_launch_files(package):
-        tree = parse_tree(path, text)
-        if not isinstance(tree, ast.Module) or "parameters" not in text:
+    for path, index in launch_indexes(package):
+        lists = [(call, given) for call in index.calls if last_name(call.func) in _NODES
+                 for k in call.keywords if k.arg == "parameters"
+                 and isinstance(given := k.value, (ast.List, ast.Tuple))]
+        if not lists:
             continue
-        calls = [c for c in nodes_of_class(tree, ast.Call) if isinstance(c, ast.Call)]
-        defaults = _argument_defaults(calls)
-        at_top = single_assignments(tree)
-        parents = walk_once(tree).parents
-        for call in calls:
-            given = next((k.value for k in call.keywords if k.arg == "parameters"), None) \
-                if last_name(call.func) in _NODES else None
-            if not isinstance(given, (ast.List, ast.Tuple)):
-                continue
-            function = enclosing(call, parents, FUNCTIONS)
-            local = single_assignments(function) if function is not None else {}
+        defaults = _argument_defaults(index.calls)
+        at_top = single_assignments(index.module_of(lists[0][0]))
+        scopes: dict[int, dict[str, ast.expr]] = {}  # each function's, worked out once
+        for call, given in lists:
+            function = index.enclosing_function(call)
+            local = {} if function is None else scopes.setdefault(
+                id(function), single_assignments(function))
             for item in given.elts:
                 value = local.get(item.id, at_top.get(item.id)) \
                     if isinstance(item, ast.Name) else item
