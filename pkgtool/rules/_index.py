@@ -187,6 +187,7 @@ RULES = {
     "PYC069": ("tf2-argument-misuse", "error", True, "python.tf2_argument_misuse"),
     "PYC070": ("parameter-type-disagrees", "error", True, "python.parameter_type_disagrees"),
     "PYC071": ("package-lookup-arguments", "error", True, "python.package_lookup_arguments"),
+    "PYC072": ("node-class-without-node-base", "error", True, "python.node_class_without_base"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

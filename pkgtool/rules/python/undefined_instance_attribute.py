@@ -8,87 +8,17 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import typo_of
-from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._assignments import (annotated_name, assigned_values, is_none,
                                                parameter_annotation)
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.python._own_callees import rebound_around
-from pkgtool.rules.python._package_modules import (imported_from_package, module_names,
-                                                   modules_by_name)
+from pkgtool.rules.python._package_classes import (attributes_of_class, closed_class,
+                                                   package_class, package_classes)
 from pkgtool.rules.python._value_types import attribute_stores
 from pkgtool.rules.registry import rule
-from pkgtool.rules.scopes import scope_bindings
-from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
-
-_OPENING = frozenset({"__getattr__", "__getattribute__"})
-"""Methods through which a class may have any attribute."""
-_DECORATORS = frozenset({"dataclass", "dataclasses.dataclass", "unique", "enum.unique"})
-"""Class decorators that add no attribute a user reads (a dataclass's fields are its own)."""
-ENUMS = frozenset({"enum.Enum", "enum.Flag"})
-"""Bases whose classes get their members from their own body (``IntEnum`` and ``StrEnum``
-members have every method of ``int`` and ``str`` too: left alone)."""
-ENUM_ATTRIBUTES = frozenset({"name", "value"})
-"""What an enum member has besides its class's body (names starting with ``_`` aside)."""
-_DEPTH = 8
-"""How many bases deep a class is followed."""
-
-
-@per_package
-def _classes(package: Package) -> dict[str, tuple[ast.ClassDef, Index]]:
-    """The top-level classes of the installed modules, bound once in their module, by dotted
-    name (``my_pkg.vision.Processor``), each with its module's index."""
-    found: dict[str, tuple[ast.ClassDef, Index]] = {}
-    for module, (tree, index) in modules_by_name(package).items():
-        bound = scope_bindings(tree)
-        for node in tree.body:
-            if isinstance(node, ast.ClassDef) and bound[node.name] == 1:
-                found[f"{module}.{node.name}"] = (node, index)
-    return found
-
-
-def _resolved(name: str, index: Index, package: Package) -> str | None:
-    """The dotted name of the package class the name ``name`` of the module of ``index``
-    stands for: a class it defines, or one it imports (absolutely or relatively) once."""
-    classes, where = _classes(package), module_names(package).get(id(index))
-    if where is None:
-        return None
-    if f"{where[0]}.{name}" in classes:
-        return f"{where[0]}.{name}"
-    tree = modules_by_name(package)[where[0]][0]
-    found = imported_from_package(name, tree, index, package)
-    return ".".join(found) if found and ".".join(found) in classes else None
-
-
-def _closed(dotted: str, package: Package, depth: int = 0) -> bool:
-    """True when every attribute of the class's instances comes from its body, its bases (all
-    closed classes of the package, or ``object``) or stores the package makes."""
-    cls, index = _classes(package)[dotted]
-    decorators = {ast.unparse(d.func if isinstance(d, ast.Call) else d)
-                  for d in cls.decorator_list}
-    if depth > _DEPTH or cls.keywords or decorators - _DECORATORS or \
-            any(isinstance(s, FUNCTIONS) and s.name in _OPENING for s in cls.body):
-        return False
-    for base in cls.bases:
-        if isinstance(base, ast.Name) and base.id == "object" or \
-                isinstance(base, (ast.Name, ast.Attribute)) and index.qualified(base) in ENUMS:
-            continue
-        found = _resolved(base.id, index, package) if isinstance(base, ast.Name) else None
-        if found is None or not _closed(found, package, depth + 1):
-            return False
-    return True
-
-
-def _attributes(dotted: str, package: Package) -> set[str]:
-    """The names the class body and its bases' bodies bind (and an enum's ``name`` and
-    ``value``)."""
-    cls, index = _classes(package)[dotted]
-    found = set(scope_bindings(cls)) | ENUM_ATTRIBUTES
-    for base in cls.bases:
-        named = _resolved(base.id, index, package) if isinstance(base, ast.Name) else None
-        found |= _attributes(named, package) if named else set()
-    return found
+from pkgtool.rules.syntax_trees import Index, installed_trees
 
 
 def _instance_of(value: ast.expr, package: Package, tree: ast.Module, index: Index
@@ -100,12 +30,12 @@ def _instance_of(value: ast.expr, package: Package, tree: ast.Module, index: Ind
     if assigned_all is None and isinstance(value, ast.Name):
         found = _annotated(value, index, package)
     else:
-        made = {_resolved(v.func.id, i, package)
+        made = {package_class(v.func.id, i, package)
                 if isinstance(v, ast.Call) and isinstance(v.func, ast.Name) else None
                 for v, i in assigned_all or () if not is_none(v)}
         found = next(iter(made)) if len(made) == 1 else None
-    return found if found and _closed(found, package) and \
-        "__new__" not in _attributes(found, package) else None  # __new__ may make another
+    return found if found and closed_class(found, package) and \
+        "__new__" not in attributes_of_class(found, package) else None  # may make another
 
 
 def _annotated(name: ast.Name, index: Index, package: Package) -> str | None:
@@ -115,7 +45,7 @@ def _annotated(name: ast.Name, index: Index, package: Package) -> str | None:
     if function is not None and not _in_body(name, function, index):
         return None  # a decorator, default or annotation: read where the function is defined
     named = annotated_name(parameter_annotation(function, name.id)) if function else None
-    return _resolved(named, index, package) if named else None
+    return package_class(named, index, package) if named else None
 
 
 def _in_body(node: ast.AST, function: ast.FunctionDef | ast.AsyncFunctionDef, index: Index
@@ -135,8 +65,8 @@ def _class_read(target: ast.expr, node: ast.Attribute, index: Index, package: Pa
     scope around the read rebinds the name."""
     if not isinstance(target, ast.Name) or rebound_around(node, target.id, index):
         return None
-    found = _resolved(target.id, index, package)
-    return found if found and _closed(found, package) else None
+    found = package_class(target.id, index, package)
+    return found if found and closed_class(found, package) else None
 
 
 def _instance_target(target: ast.expr, index: Index) -> bool:
@@ -187,7 +117,7 @@ def undefined_instance_attribute(package: Package) -> Iterator[Hit]:
     """
     if not any(not any((index.qualified(b) or "").startswith("rclpy.") for b in cls.bases)
                for _, _, index in installed_trees(package) for cls in index.classes) or \
-            not any(_closed(dotted, package) for dotted in _classes(package)):
+            not any(closed_class(dotted, package) for dotted in package_classes(package)):
         return  # no class whose instances' attributes are all known (node classes only)
     everywhere = attribute_stores(package)
     if everywhere is None:
@@ -205,10 +135,10 @@ def undefined_instance_attribute(package: Package) -> Iterator[Hit]:
             probed = probed_names(index) if probed is None else probed
             if dotted is None or guarded(node, index, probed) or \
                     cls is not None and node.attr.startswith("_") or \
-                    node.attr in _attributes(dotted, package):
+                    node.attr in attributes_of_class(dotted, package):
                 continue
             name = dotted.rpartition(".")[2]
-            meant = typo_of(node.attr, _attributes(dotted, package))
+            meant = typo_of(node.attr, attributes_of_class(dotted, package))
             hint = f" (did you mean `{meant}`?)" if meant else ""
             what = f"the package's class `{name}`" if cls else \
                 f"an instance of the package's class `{name}`"
