@@ -15,8 +15,10 @@ from pkgtool.knowledge.rosdistro import close_names
 from pkgtool.model.package import Package
 from pkgtool.model.xml import foreign_xml_version
 from pkgtool.records import replace
+from pkgtool.safe_xml import xml_text
 from pkgtool.rules.dependency_names import neighbours
 from pkgtool.rules.manifest.non_spdx_license import spdx_spelling
+from pkgtool.rules.manifest.not_a_rosdep_key import several_keys
 from pkgtool.rules.manifest.template_placeholder import is_placeholder
 from pkgtool.rules.setup_values import text_of
 from pkgtool.lazy_regex import lazy_pattern
@@ -108,7 +110,10 @@ def rosdep_key(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     for finding in findings:
         element = child_at(doc, finding.span.line)
         written = _WRITE_KEY.fullmatch(finding.fix or "")
-        if element is not None and written is not None:
+        keys = several_keys(doc.text_of(element)) if element is not None else []
+        if element is not None and keys:
+            yield _split(doc, element, keys)
+        elif element is not None and written is not None:
             yield _rename(doc, element, written.group(1))
         elif element is not None and any(why in finding.message for why in _NEEDS_NONE):
             yield Fix(f"Remove `{doc.text_of(element)}`: nothing to install",
@@ -136,6 +141,23 @@ def misspelled(package: Package, findings: list[Finding]) -> Iterator[Fix]:
             yield replace(_rename(doc, element, close[0]), safe=False)
         elif not close and written is not None:  # the key of a module the code imports
             yield replace(_rename(doc, element, written.group(1)), safe=False)
+
+
+def _split(doc: ManifestDoc, element: Element, keys: list[str]) -> Fix:
+    """One tag per key of ``keys``, in their order, for the tag listing them all (its
+    attributes kept on each); keys its tag declares elsewhere are not repeated."""
+    tag, source = element.tag, doc.source
+    opening = source.text[element.start:element.inner_start]
+    wanted = [key for key in dict.fromkeys(keys) if not doc.find(element.local, key)]
+    if not wanted:
+        return Fix(f"Remove `{doc.text_of(element)}`: its keys are declared",
+                   (doc.remove(element),))
+    indent = source.newline + (source.indent_at(element.start) or "")
+    more = indent.join(f"{opening}{xml_text(key)}</{tag}>" for key in wanted[1:])
+    edits = [doc.replace_text(element, wanted[0])]
+    if more:
+        edits.append(insert_after(source, element, more))
+    return Fix(f"Write one `<{element.local}>` per key: {', '.join(wanted)}", tuple(edits))
 
 
 def _rename(doc: ManifestDoc, element: Element, key: str) -> Fix:

@@ -136,6 +136,28 @@ def installed_sources(text: str, files: Iterable[str] = ()) -> frozenset[str] | 
     return frozenset(found)
 
 
+_EXISTENCE_TESTS = frozenset({"EXISTS", "IS_DIRECTORY"})
+"""``if()`` operators asking whether a path exists."""
+
+
+def tolerated_missing_sources(text: str) -> frozenset[str]:
+    """The install sources ``text`` copes with missing: those of an ``install(... OPTIONAL)``
+    and the paths an ``if(EXISTS ...)`` or ``if(IS_DIRECTORY ...)`` asks about (a source
+    installed only when it is there), as package-relative paths."""
+    calls = _calls(text)
+    variables = _variables(calls, frozenset())
+    found: set[str] = set()
+    for name, args in calls:
+        if name in ("if", "elseif"):
+            paths = [args[i + 1] for i, arg in enumerate(args[:-1]) if arg in _EXISTENCE_TESTS]
+        else:
+            paths = _install_args(name, args) if "OPTIONAL" in args else []
+        for path in paths:
+            found.update(posixpath.normpath(value.lstrip("/"))
+                         for value in _expand(path, variables, _DEPTH) if value)
+    return frozenset(found)
+
+
 def installed_programs(text: str) -> frozenset[str]:
     """The names under which ``install(PROGRAMS ...)`` calls of ``text`` install files into
     ``lib/<package>``, where ``ros2 run`` and launch look executables up (a file keeps its

@@ -61,11 +61,32 @@ def read_text(root: Path, relpath: str, *, allow_empty: bool = True) -> TextFile
     try:
         text = data.decode("utf-8")
     except UnicodeDecodeError as error:
-        line = data[: error.start].count(b"\n") + 1
-        return ParseProblem("not-utf8", Span(relpath, line, 1), f"byte {error.start} is not UTF-8")
+        accepted = python_source(data) if relpath.endswith(".py") else None
+        if accepted is None:
+            line = data[: error.start].count(b"\n") + 1
+            return ParseProblem("not-utf8", Span(relpath, line, 1),
+                                f"byte {error.start} is not UTF-8")
+        text = accepted
     if not allow_empty and not text.strip():
         return ParseProblem("empty", span, "the file is empty")
     return TextFile(relpath, text.removeprefix("\ufeff"))
+
+
+def python_source(data: bytes) -> str | None:
+    """The text of Python source that is not UTF-8 yet Python compiles: bytes of another
+    encoding in comments only (which CPython never decodes), or a file declaring its encoding
+    (``# -*- coding: latin-1 -*-``); None when Python rejects it too. Compiled to a syntax
+    tree only, never run."""
+    import ast
+    import io
+    import tokenize
+
+    try:
+        encoding, _ = tokenize.detect_encoding(io.BytesIO(data).readline)
+        compile(data, "<source>", "exec", ast.PyCF_ONLY_AST, dont_inherit=True)
+        return data.decode(encoding, errors="replace")
+    except (SyntaxError, ValueError, LookupError):
+        return None
 
 
 _READ_FLAGS = os.O_RDONLY | getattr(os, "O_BINARY", 0) | getattr(os, "O_NONBLOCK", 0)

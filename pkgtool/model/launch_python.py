@@ -105,6 +105,7 @@ class _Reader(ast.NodeVisitor):
         # whether they exist (None: one the reader cannot work out)
         self.read_names = frozenset(n.id for n in nodes_of_class(tree, ast.Name)
                                     if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load))
+        self.presence_flags = presence_flags(tree)
 
     def _span(self, node: ast.AST) -> Span:
         return Span(self.path, getattr(node, "lineno", 1), getattr(node, "col_offset", 0) + 1)
@@ -193,7 +194,8 @@ class _Reader(ast.NodeVisitor):
     # blocks that run only when a package is installed ------------------------------------
     def visit_If(self, node: ast.If) -> None:
         self.visit(node.test)
-        checked = any(isinstance(n, ast.Call) and last_name(n.func) in PRESENCE_CHECKS
+        checked = any(isinstance(n, ast.Call) and last_name(n.func) in PRESENCE_CHECKS or
+                      isinstance(n, ast.Name) and n.id in self.presence_flags
                       for n in descendants(node.test))
         distro = depends_on_ros_distro(node.test, self._assigned)
         self.distro_branches += distro
@@ -215,16 +217,7 @@ class _Reader(ast.NodeVisitor):
         return None
 
     def visit_Try(self, node: ast.Try) -> None:
-        looked_up = any(isinstance(n, ast.Call) and last_name(n.func) in _LOOKUPS
-                        for statement in node.body for n in descendants(statement))
-        going_on = [h for h in node.handlers if not handler_stops(h)]  # not re-raising
-        checked = any(isinstance(n, (ast.Name, ast.Attribute)) and
-                      (last_name(n) == "PackageNotFoundError" or
-                       looked_up and last_name(n) in _BROADER_CATCHES)
-                      for handler in going_on if handler.type
-                      for n in descendants(handler.type)) or \
-            looked_up and any(handler.type is None for handler in going_on)
-        self._visit_block(node.body, checked)
+        self._visit_block(node.body, _checks_presence(node))
         for part in (*node.handlers, *node.orelse, *node.finalbody):
             self.visit(part)
 
@@ -694,6 +687,42 @@ def _extends(longer: FileRef, prefix: FileRef, appended_to: bool) -> bool:
     whole, start = "/".join(longer.parts), "/".join(prefix.parts)
     return longer.package == prefix.package and whole != start and (
         whole.startswith(start + "/") or (appended_to and whole.startswith(start)))
+
+
+def _checks_presence(node: ast.Try) -> bool:
+    """True for a ``try`` whose handlers take a missing package for good: one catching
+    PackageNotFoundError (or, around a lookup, anything broader) without raising again."""
+    looked_up = any(isinstance(n, ast.Call) and last_name(n.func) in _LOOKUPS
+                    for statement in node.body for n in descendants(statement))
+    going_on = [h for h in node.handlers if not handler_stops(h)]  # not re-raising
+    return any(isinstance(n, (ast.Name, ast.Attribute)) and
+               (last_name(n) == "PackageNotFoundError" or
+                looked_up and last_name(n) in _BROADER_CATCHES)
+               for handler in going_on if handler.type
+               for n in descendants(handler.type)) or \
+        looked_up and any(handler.type is None for handler in going_on)
+
+
+def presence_flags(tree: ast.Module) -> frozenset[str]:
+    """Names a launch file sets from whether a package is installed: ``True`` assigned in a
+    ``try`` that checks for one (``found = True`` after the lookup), or what a function of
+    the file with such a ``try`` returns (``has_mux = package_available('twist_mux')``)."""
+    tries = [n for n in nodes_of_class(tree, ast.Try)
+             if isinstance(n, ast.Try) and _checks_presence(n)]
+    checking = {id(n) for n in tries}
+    probes = {f.name for f in nodes_of_class(tree, ast.FunctionDef, ast.AsyncFunctionDef)
+              if isinstance(f, (ast.FunctionDef, ast.AsyncFunctionDef)) and
+              any(id(n) in checking for n in descendants(f))}
+    flags = {target.id for block in tries for statement in block.body
+             if isinstance(statement, ast.Assign) and isinstance(statement.value, ast.Constant)
+             and statement.value.value is True
+             for target in statement.targets if isinstance(target, ast.Name)}
+    if probes:
+        flags.update(target.id for node in nodes_of_class(tree, ast.Assign)
+                     if isinstance(node, ast.Assign) and isinstance(node.value, ast.Call) and
+                     last_name(node.value.func) in probes
+                     for target in node.targets if isinstance(target, ast.Name))
+    return frozenset(flags)
 
 
 def read_python_launch(path: str, tree: ast.Module, exported: frozenset[str] = frozenset()

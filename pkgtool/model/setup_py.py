@@ -58,6 +58,10 @@ class DataFile:
     """True when the sources were one string, which setuptools reads character by character."""
 
 
+PACKAGE_DATA = ("package_data", "include_package_data")
+"""setup() keywords that install other files into a Python package's folder."""
+
+
 @record
 class PackagesSpec:
     """How ``packages=`` was given and what it resolves to.

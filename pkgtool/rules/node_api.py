@@ -110,8 +110,11 @@ def _on_node_self(receiver: ast.expr, index: Index) -> bool:
 
 def not_from_rclpy(receiver: ast.expr, index: Index) -> bool:
     """True when ``receiver`` is certainly no rclpy node: an imported name, or what calling one
-    makes, from a module other than rclpy (``boto3.session.Session().create_client(...)``)."""
+    makes, from a module other than rclpy (``boto3.session.Session().create_client(...)``),
+    or from the package itself (``from .. import backend``: ``backend.create_publisher()``)."""
     made = receiver.func if isinstance(receiver, ast.Call) else receiver
+    if isinstance(made, ast.Name) and made.id in index.relative:
+        return True
     qualified = index.qualified(made) if isinstance(made, (ast.Name, ast.Attribute)) else None
     return qualified is not None and qualified.split(".")[0] != "rclpy"
 

@@ -26,6 +26,7 @@ class Index:
     """The nodes of one module the PYC rules look at, collected in a single walk.
 
     ``aliases`` maps names bound only by imports to the dotted name they stand for;
+    ``relative`` holds the names bound only by relative imports (``from . import tools``);
     ``parents`` maps ``id(node)`` to the node's parent; ``bound`` holds every name the module
     binds anywhere (imports, assignments, parameters, definitions); ``dotted`` keeps what
     :meth:`qualified` found, by ``id(node)`` (with the node: its id is not reused meanwhile).
@@ -39,6 +40,7 @@ class Index:
     classes: list[ast.ClassDef] = field(default_factory=list)
     parents: dict[int, ast.AST] = field(default_factory=dict)
     aliases: dict[str, str] = field(default_factory=dict)
+    relative: frozenset[str] = frozenset()
     bound: frozenset[str] = frozenset()
     dotted: dict[int, tuple[ast.expr, str | None]] = field(default_factory=dict, compare=False,
                                                            repr=False)
@@ -124,15 +126,22 @@ def _function_names(index: Index) -> frozenset[str]:
     return frozenset(function.name for function in index.functions)
 
 
+_RELATIVE = ""
+"""The target :func:`_bindings` gives a name a relative import binds (its module is the
+package's, known only with the package's layout)."""
+
+
 def _bindings(node: ast.AST) -> Iterator[tuple[str, str | None]]:
-    """The names ``node`` binds, each with the dotted import it stands for (None: not one)."""
+    """The names ``node`` binds, each with the dotted import it stands for (None: not one;
+    :data:`_RELATIVE`: a relative import)."""
     if isinstance(node, ast.Import):
         for alias in node.names:
             top = alias.name.split(".")[0]
             yield alias.asname or top, alias.name if alias.asname else top
     elif isinstance(node, ast.ImportFrom):
         for alias in node.names:
-            target = f"{node.module}.{alias.name}" if node.level == 0 and node.module else None
+            target = f"{node.module}.{alias.name}" if node.level == 0 and node.module else \
+                _RELATIVE if node.level else None
             yield alias.asname or alias.name, target
     elif isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
         yield node.id, None
@@ -165,13 +174,15 @@ def _index(tree: ast.Module) -> Index:
         for node in by_class.get(kind, ()):
             for name, target in _bindings(node):
                 bound.setdefault(name, set()).add(target)
-    index = Index(parents=walk.parents, bound=frozenset(bound))
+    index = Index(parents=walk.parents, bound=frozenset(bound),
+                  relative=frozenset(name for name, targets in bound.items()
+                                     if targets == {_RELATIVE} and name != "*"))
     index.attributes.extend(node for node in by_class.get(ast.Attribute, ())  # type: ignore
                             if isinstance(node.ctx, ast.Load))  # type: ignore[attr-defined]
     for kind, field_name in _COLLECTED:
         getattr(index, field_name).extend(by_class.get(kind, ()))
     index.aliases.update({name: target for name, (target, *more) in bound.items()
-                          if not more and target is not None and name != "*"})
+                          if not more and target and name != "*"})
     return index
 
 

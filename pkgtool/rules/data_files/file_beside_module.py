@@ -11,6 +11,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import last_name, nodes_of_class
 from pkgtool.model.installed import installed_modules, is_ament_python
 from pkgtool.model.package import Package
+from pkgtool.model.setup_py import PACKAGE_DATA
 from pkgtool.model.span import Span
 from pkgtool.rules.data_files.common import checks_files
 from pkgtool.rules.registry import rule
@@ -19,8 +20,6 @@ from pkgtool.rules.syntax_trees import Index, installed_trees
 
 _CODE = (".py", ".pyc", ".so", ".pyd")
 """Suffixes of what setuptools installs with a Python package (or builds into it)."""
-_PACKAGE_DATA = ("package_data", "include_package_data")
-"""setup() keywords that install other files into a Python package's folder."""
 _TOLERANT = frozenset({"QIcon", "QPixmap", "QImage", "QMovie", "setWindowIcon", "setPixmap"})
 """Qt calls that take a missing file for an empty image instead of raising."""
 
@@ -78,7 +77,7 @@ def file_beside_module(package: Package) -> Iterator[Hit]:
     """
     setup = package.setup_py
     if setup is None or not is_ament_python(package) or \
-            any(keyword in setup.keywords for keyword in _PACKAGE_DATA) or \
+            any(keyword in setup.keywords for keyword in PACKAGE_DATA) or \
             setup.is_unresolved("data_files") or setup.is_unresolved("**") or \
             any("site-packages" in entry.destination for entry in setup.data_files or ()):
         return

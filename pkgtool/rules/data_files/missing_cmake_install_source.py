@@ -6,6 +6,7 @@ import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.cmake_interfaces import tolerated_missing_sources, with_included
 from pkgtool.model.installed import cmake_installed
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
@@ -25,7 +26,9 @@ def missing_cmake_install_source(package: Package) -> Iterator[Hit]:
     is no file or folder of the package, when every source is known statically (no
     variable the file does not set, no `add_subdirectory`, function or macro). Sources a
     `.gitignore` leaves out (made before the build) or inside a git submodule that is not
-    checked out are left alone. An empty folder counts as missing: git keeps no empty
+    checked out are left alone, and so are sources the file copes with missing: those of an
+    `install(... OPTIONAL)` and paths it tests with `if(EXISTS ...)` or `if(IS_DIRECTORY
+    ...)` (installed only when present). An empty folder counts as missing: git keeps no empty
     folders, so a fresh clone lacks it.
 
     ## Why is this bad?
@@ -45,9 +48,12 @@ def missing_cmake_install_source(package: Package) -> Iterator[Hit]:
     """
     sources = cmake_installed(package)
     text = package.texts.get("CMakeLists.txt", "")
+    tolerated = tolerated_missing_sources(with_included(text, package.texts.get)) \
+        if sources else frozenset()
     for source in sorted(sources or ()):
         if source in ("", ".") or package.has_file(source) or is_folder(package, source) or \
-                ignored(source, package.ignores) or under(source, package.unfetched):
+                source in tolerated or ignored(source, package.ignores) or \
+                under(source, package.unfetched):
             continue
         found = re.search(rf"(?<![\w.-]){re.escape(source)}(?![\w./-])", text)
         if found is None:

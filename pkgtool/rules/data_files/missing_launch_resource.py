@@ -6,6 +6,7 @@ from collections.abc import Iterator
 from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.package import Package
 from pkgtool.model.submodules import ignored, under
 from pkgtool.rules.data_files.common import is_folder, uninstalled_launch_resources
@@ -37,7 +38,8 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     optional `.env` file (`load_dotenv`) is left alone; a launch file asking whether a path
     exists is left alone for that path and those below it (for all when it asks of a path
     pkgtool cannot work out), and so is a folder data_files installs into (setuptools
-    makes it, files or not).
+    makes it, files or not), and a file in a folder setup.py installs only when it exists
+    (`glob('maps/*') if os.path.exists('maps') else []`: the user makes it).
     A path the code builds but never uses (the value of a local name never read, read only
     by nodes it never starts, or replaced before any use; of a module-level name nothing
     reads or imports; or stored in `self.x` that the module never reads) is not read
@@ -63,7 +65,8 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     share = f"share/{package.name}/"
     for reader, ref, relative, installed in uninstalled_launch_resources(package):
         if package.has_file(relative) or is_folder(package, relative) or \
-                under(relative, package.unfetched) or ignored(relative, package.ignores):
+                under(relative, package.unfetched) or ignored(relative, package.ignores) or \
+                _installed_when_present(package, relative):
             continue  # a file git ignores is the user's to make (a calibration, a map)
         known = {target[len(share):] for target in installed if target.startswith(share)}
         known.update(package.files)
@@ -72,3 +75,17 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
         yield Hit(ref.span, f"`{relative}` is no file of `{package.name}`: `{reader}` "
                             f"reads it from the share folder, where nothing installs it{hint}",
                   f"Write `{close[0]}`" if close else None)
+
+
+_EXISTENCE = lazy_pattern(r"\b(?:exists|isdir|is_dir)\(")
+
+
+def _installed_when_present(package: Package, relative: str) -> bool:
+    """True when a line of setup.py asks whether the top folder of ``relative`` exists
+    (``glob('maps/*') if os.path.exists('maps') else []``): the folder is the user's to
+    make (a map saved after a mapping run), installed when there."""
+    folder = relative.split("/")[0]
+    quoted = (f"'{folder}'", f'"{folder}"', f"'{folder}/", f'"{folder}/')
+    return "/" in relative and any(
+        _EXISTENCE.search(line) and any(q in line for q in quoted)
+        for line in package.texts.get("setup.py", "").splitlines())

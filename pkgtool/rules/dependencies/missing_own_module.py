@@ -12,6 +12,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import installed_modules, is_ament_python
 from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
+from pkgtool.model.setup_py import PACKAGE_DATA
 from pkgtool.model.submodules import ignored, under
 from pkgtool.rules.imports import installed_code, source_path_module, test_code
 from pkgtool.rules.registry import rule
@@ -65,6 +66,14 @@ def _left_out(package: Package, module: str, installed: dict[str, str]) -> str |
                 any(f.startswith(f"{folder}/") and f.endswith(".py") for f in package.files):
             return name
     return None
+
+
+def _ships_data(package: Package) -> bool:
+    """True when setup.py copies more files into its Python packages (``package_data``,
+    ``include_package_data``): a subfolder's modules may go with them (a folder without
+    ``__init__.py`` under an installed package then imports as a namespace package)."""
+    setup = package.setup_py
+    return setup is not None and any(k in setup.keywords for k in PACKAGE_DATA)
 
 
 def _shadowed(package: Package, path: str, root: str) -> bool:
@@ -142,7 +151,7 @@ def missing_own_module(package: Package) -> Iterator[Hit]:
                 continue
             if base not in installed:
                 left_out = _left_out(package, base, installed) \
-                    if dotted and is_ament_python(package) else None
+                    if dotted and is_ament_python(package) and not _ships_data(package) else None
                 if left_out is not None:
                     yield Hit(imported.span, f"`{left_out}` is in the source tree, but setup.py "
                               "does not install it (`packages` does not list it): the import "

@@ -34,7 +34,9 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
     Packages used only after the launch file checked that they are installed (`if 'nav2_bringup'
     in get_packages_with_prefixes():`, or in a `try` that catches `PackageNotFoundError`,
     or one that looks a package up and catches `KeyError`, `Exception` or anything, with a
-    handler that goes on rather than raising again or exiting) are optional and left alone,
+    handler that goes on rather than raising again or exiting; or under `if flag:` where the
+    flag is set to `True` in such a `try`, or is what a function of the file with such a
+    `try` returns, `has_mux = package_available('twist_mux')`) are optional and left alone,
     and so is a node that is never started: one assigned to a local
     name its function never reads (`rviz = Node(package='rviz2', ...)` left out of the
     LaunchDescription), with the `FindPackageShare` substitutions inside it, which only a

@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.knowledge.rosdep import NOT_PACKAGES, ROS1_PACKAGES
 from pkgtool.knowledge.rosdistro import is_released_package, is_rosdep_key, stdlib_modules
 from pkgtool.model.condition import applies
@@ -16,6 +17,9 @@ from pkgtool.rules.manifest.schema import DEPENDS_1, DEPENDS_2, token
 from pkgtool.rules.registry import rule
 
 _CHECKED = frozenset(DEPENDS_1 + DEPENDS_2) - {"conflict", "replace"}
+_SEPARATORS = lazy_pattern(r"[\s,;]+")
+_KEY = lazy_pattern(r"[A-Za-z0-9][\w.+-]*")
+"""What a package name or rosdep key looks like."""
 _STDLIB = frozenset({
     "abc", "argparse", "array", "asyncio", "base64", "collections", "concurrent", "copy", "csv",
     "dataclasses", "datetime", "enum", "functools", "glob", "hashlib", "heapq", "importlib",
@@ -33,8 +37,21 @@ _CPP_KEYS = {"opencv": "libopencv-dev", "opencv2": "libopencv-dev", "OpenCV": "l
 """The C++ library key for a name whose Python key MAN018 suggests elsewhere."""
 
 
+def several_keys(key: str) -> list[str]:
+    """The keys of a dependency that lists several (``rclpy sensor_msgs``, ``a, b``); empty
+    for one key."""
+    parts = [part for part in _SEPARATORS.split(key) if part]
+    return parts if len(parts) > 1 and all(_KEY.fullmatch(part) for part in parts) else []
+
+
 def _hit(element: XmlElement, ros2: bool, compiled: bool, distro: str) -> Hit | None:
     key, tag = token(element.text), element.tag
+    keys = several_keys(key)
+    if keys:
+        return Hit(element.span, f"`{key}` is {len(keys)} keys in one `<{tag}>`: rosdep and "
+                   "colcon read it as one key, which does not exist, and depend on none of "
+                   "them", "Write one tag per key: " +
+                   ", ".join(f"`<{tag}>{part}</{tag}>`" for part in keys))
     owner, slash, rest = key.partition("/")
     if slash and rest and owner.replace("_", "").replace("-", "").isalnum():
         return Hit(element.span, f"`{key}` names something inside a package (an interface, a "
@@ -85,6 +102,7 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Reports dependency keys that are known not to be rosdep keys, with the key to use:
+    several keys in one tag (``<depend>rclpy sensor_msgs</depend>``),
     a name with a ``/`` (``turtlesim/msg/Pose``: its package is the dependency), a file name
     (``robot.launch.py``, ``params.yaml``),
     pip distribution names (``opencv-python``, ``pyyaml``, ``numpy``), import names (``cv2``),

@@ -25,13 +25,17 @@ def guarded(node: ast.Attribute, index: Index, probed: frozenset[str]) -> bool:
     """True for a name the module probes for, or inside a ``try`` that catches
     AttributeError, or anything (``except Exception:``) without raising it again (a handler
     with a bare ``raise`` lets the error out): code that expects the attribute may be
-    missing."""
+    missing; or inside an ``except AttributeError:`` handler, the fallback of code written
+    for two APIs (``info.k = ...`` tried, ``info.K = ...`` when that fails)."""
     if node.attr in probed:
         return True
     child, parent = node, index.parents.get(id(node))
     while parent is not None:
         if isinstance(parent, ast.Try) and child in parent.body and \
                 any(_catches(handler) for handler in parent.handlers):
+            return True
+        if isinstance(parent, ast.ExceptHandler) and child is not parent.type and \
+                "AttributeError" in _caught_names(parent):
             return True
         child, parent = parent, index.parents.get(id(parent))
     return False
@@ -41,10 +45,15 @@ def guarded(node: ast.Attribute, index: Index, probed: frozenset[str]) -> bool:
 def _catches(handler: ast.ExceptHandler) -> bool:
     """True when ``handler`` takes an AttributeError for good: it names AttributeError, or
     catches everything and has no bare ``raise``."""
-    names = {n.id for n in descendants(handler.type) if isinstance(n, ast.Name)} \
-        if handler.type is not None else _BROAD
+    names = _caught_names(handler)
     if "AttributeError" in names:
         return True
     return bool(names & _BROAD) and not any(
         isinstance(n, ast.Raise) and n.exc is None
         for statement in handler.body for n in descendants(statement))
+
+
+def _caught_names(handler: ast.ExceptHandler) -> set[str]:
+    """The exception names ``handler`` catches (:data:`_BROAD` for a bare ``except:``)."""
+    return {n.id for n in descendants(handler.type) if isinstance(n, ast.Name)} \
+        if handler.type is not None else set(_BROAD)

@@ -9,6 +9,7 @@ from collections.abc import Iterator
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
+from pkgtool.rules.node_api import not_from_rclpy
 from pkgtool.rules.python._message_instances import method_receiver
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, base_name, installed_trees
 
@@ -23,7 +24,8 @@ def is_logger_call(node: ast.AST, index: Index, own: frozenset[str] = frozenset(
     """True for ``<x>.get_logger()`` or ``rclpy.logging.get_logger(...)``; not for
     ``self.get_logger()`` in a method of a class named in ``own``
     (:func:`own_logger_classes`), nor for ``<x>.get_logger(name)`` on anything but
-    ``rclpy.logging`` (a node's takes no argument: another library's logger factory)."""
+    ``rclpy.logging`` (a node's takes no argument: another library's logger factory), nor
+    on a name an import binds that is not rclpy's (a module's ``get_logger`` function)."""
     if not isinstance(node, ast.Call):
         return False
     func = node.func
@@ -31,6 +33,7 @@ def is_logger_call(node: ast.AST, index: Index, own: frozenset[str] = frozenset(
         return True
     if isinstance(func, ast.Attribute) and func.attr == "get_logger":
         return not node.args and not node.keywords and \
+            not not_from_rclpy(func.value, index) and \
             (not own or not _own_getter(func.value, index, own))
     return False
 

@@ -6,6 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import child_nodes
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
@@ -84,11 +85,22 @@ def _next_statement_results(function: ast.FunctionDef) -> Iterator[ast.Call]:
                     _sends(sent.value) and isinstance(following, _SIMPLE)):
                 continue
             future = ast.unparse(sent.targets[0])
-            calls = [n for n in ast.walk(following) if isinstance(n, ast.Call)]
+            calls = [n for n in _run_now(following) if isinstance(n, ast.Call)]
             results = [c for c in calls if _is_result(c) and
                        ast.unparse(c.func.value) == future]  # type: ignore[attr-defined]
             if results and not any(_may_wait(c, future) for c in calls if c not in results):
                 yield results[0]
+
+
+def _run_now(statement: ast.stmt) -> Iterator[ast.AST]:
+    """The nodes of ``statement`` in source order, but not those of its lambdas (a done
+    callback's body runs once the future is done)."""
+    pending: list[ast.AST] = [statement]
+    while pending:
+        node = pending.pop()
+        if not isinstance(node, ast.Lambda):
+            yield node
+            pending.extend(reversed(child_nodes(node)))
 
 
 def _may_wait(call: ast.Call, future: str) -> bool:

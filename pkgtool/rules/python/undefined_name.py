@@ -12,6 +12,7 @@ from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.python._names_proof import every_name_defined
 from pkgtool.rules.registry import rule
+from pkgtool.rules.scopes import catches_name_error
 from pkgtool.rules.syntax_trees import installed_modules
 from pkgtool.rules.test_modules import test_files
 
@@ -36,7 +37,9 @@ def undefined_name(package: Package) -> Iterator[Hit]:
     reports its "undefined name" messages (not for names the module stores through
     `globals()`, as generated API clients' lazy imports do), with pyflakes' own handling of
     builtins, `__all__`, star imports, conditional definitions and `except
-    NameError` guards. Code that never runs on Python 3 is skipped: branches of `if
+    NameError` guards; a `try` of one or two assignments whose handler catches anything and
+    assigns the same names (`try: text = unicode` / `except Exception: text = str`) is
+    such a guard too. Code that never runs on Python 3 is skipped: branches of `if
     sys.version_info < (3,):`, `if six.PY2:` or of a module constant set once to False, lines
     after a `return`, `raise`, `continue` or `break` of the same block, and annotations Python
     never evaluates: those of assignments in a function body, a string in
@@ -127,6 +130,9 @@ def _bound_at_run_time(tree: ast.Module, line: int, column: int, name: str) -> b
         if isinstance(parent, (ast.If, ast.IfExp)) and child is not parent.test and \
                 _asks_defined(parent.test, name):
             return True
+        if isinstance(parent, ast.Try) and any(child is s for s in parent.body) and \
+                _compatibility_fallback(parent):
+            return True
         if isinstance(parent, ast.Lambda):
             lambdas.append(parent)
         elif isinstance(parent, _BRANCHES):
@@ -135,6 +141,25 @@ def _bound_at_run_time(tree: ast.Module, line: int, column: int, name: str) -> b
                 _stored_after(parent, node):
             return True
         child, parent = parent, parents.get(id(parent))
+    return False
+
+
+def _compatibility_fallback(block: ast.Try) -> bool:
+    """True for a ``try`` of assignments (two at most) with a handler catching NameError or
+    anything that assigns the same names or passes: ``try: text = unicode`` / ``except
+    Exception: text = str``, code written for Python 2 and 3 (pyflakes knows ``except
+    NameError:`` alone)."""
+    if len(block.body) > 2 or not all(isinstance(s, ast.Assign) for s in block.body):
+        return False
+    assigned = {ast.unparse(target) for s in block.body for target in s.targets}  # type: ignore
+    for handler in block.handlers:
+        if not catches_name_error(handler) or \
+                not all(isinstance(s, (ast.Assign, ast.Pass)) for s in handler.body):
+            continue
+        fallback = {ast.unparse(target) for s in handler.body if isinstance(s, ast.Assign)
+                    for target in s.targets}
+        if not fallback or fallback == assigned:
+            return True
     return False
 
 
