@@ -10,7 +10,7 @@ from pkgtool.findings import Finding, Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
-from pkgtool.model.static_branches import dead_lines
+from pkgtool.model.static_branches import dead_expressions, dead_lines
 from pkgtool.records import record, replace
 from pkgtool.rules.registry import Rule
 
@@ -72,12 +72,15 @@ def check_package(package: Package, rules: Iterable[Rule], *, root_label: str,
 
 def _never_runs(package: Package, span: Span) -> bool:
     """True when ``span`` is on a line of Python code that never runs (after a ``return`` in
-    its block, in an ``if`` branch never taken on Python 3: :func:`dead_lines`): the PYC
+    its block, in an ``if`` branch never taken on Python 3: :func:`dead_lines`), or in a
+    branch of a conditional expression never taken (:func:`dead_expressions`): the PYC
     rules judge what runs."""
     text = package.texts.get(span.path) if span.path.endswith(".py") and span.line else None
     tree = parse_tree(span.path, text) if text is not None else None
-    return isinstance(tree, ast.Module) and \
-        any(first <= span.line <= last for first, last in dead_lines(tree))
+    where = (span.line, max(span.col - 1, 0))
+    return isinstance(tree, ast.Module) and (
+        any(first <= span.line <= last for first, last in dead_lines(tree)) or
+        span.col > 0 and any(start <= where < end for start, end in dead_expressions(tree)))
 
 
 def _fold_consequences(found: list[tuple[Finding, Hit | None]]) -> list[Finding]:

@@ -706,13 +706,14 @@ def _checks_presence(node: ast.Try) -> bool:
 def presence_flags(tree: ast.Module) -> frozenset[str]:
     """Names a launch file sets from whether a package is installed: ``True`` assigned in a
     ``try`` that checks for one (``found = True`` after the lookup), or what a function of
-    the file with such a ``try`` returns (``has_mux = package_available('twist_mux')``)."""
+    the file with such a ``try``, returning only ``True`` or ``False``, returns (``has_mux =
+    package_available('twist_mux')``)."""
     tries = [n for n in nodes_of_class(tree, ast.Try)
              if isinstance(n, ast.Try) and _checks_presence(n)]
     checking = {id(n) for n in tries}
     probes = {f.name for f in nodes_of_class(tree, ast.FunctionDef, ast.AsyncFunctionDef)
               if isinstance(f, (ast.FunctionDef, ast.AsyncFunctionDef)) and
-              any(id(n) in checking for n in descendants(f))}
+              any(id(n) in checking for n in descendants(f)) and _answers_yes_or_no(f)}
     flags = {target.id for block in tries for statement in block.body
              if isinstance(statement, ast.Assign) and isinstance(statement.value, ast.Constant)
              and statement.value.value is True
@@ -723,6 +724,14 @@ def presence_flags(tree: ast.Module) -> frozenset[str]:
                      last_name(node.value.func) in probes
                      for target in node.targets if isinstance(target, ast.Name))
     return frozenset(flags)
+
+
+def _answers_yes_or_no(function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
+    """True when every ``return`` of ``function`` gives ``True`` or ``False`` (a probe, not a
+    loader that returns what it found)."""
+    returns = [n for n in descendants(function) if isinstance(n, ast.Return)]
+    return bool(returns) and all(isinstance(r.value, ast.Constant) and
+                                 isinstance(r.value.value, bool) for r in returns)
 
 
 def read_python_launch(path: str, tree: ast.Module, exported: frozenset[str] = frozenset()

@@ -44,10 +44,10 @@ def module_constants(tree: ast.Module) -> dict[str, bool]:
     Computed once per tree; callers must not change the returned dict. Only the names of the
     module-level constant assignments (most modules have none) are counted in the rest.
     """
-    candidates = [(node.targets[0].id, node.value.value) for node in tree.body
+    candidates = [(node.targets[0].id, value) for node in tree.body
                   if isinstance(node, ast.Assign) and len(node.targets) == 1
                   and isinstance(node.targets[0], ast.Name)
-                  and isinstance(node.value, ast.Constant)]
+                  and (value := _fixed_value(node.value)) is not None]
     if not candidates:
         return {}
     names = {name for name, _ in candidates}
@@ -56,6 +56,15 @@ def module_constants(tree: ast.Module) -> dict[str, bool]:
     stores.update(name for n in nodes_of_class(tree, ast.Global, ast.Nonlocal)
                   for name in n.names if name in names)  # type: ignore[attr-defined]
     return {name: bool(value) for name, value in candidates if stores[name] == 1}
+
+
+def _fixed_value(value: ast.expr) -> object | None:
+    """What a module-level assignment of ``value`` sets on every Python 3: a constant, or a
+    test decided there (``_IS_PY2 = sys.version_info.major == 2``); None when not fixed."""
+    if isinstance(value, ast.Constant):
+        return value.value
+    return truth(value, {}) if isinstance(value, (ast.Compare, ast.BoolOp, ast.UnaryOp)) \
+        else None
 
 
 def truth(test: ast.expr, constants: dict[str, bool]) -> bool | None:
@@ -210,6 +219,23 @@ def function_constants(tree: ast.Module) -> dict[int, dict[str, bool]]:
     for function, name, value in candidates:
         if binds[name] == 1:
             found.setdefault(id(function), {})[name] = bool(value)
+    return found
+
+
+@per_tree
+def dead_expressions(tree: ast.Module) -> list[tuple[tuple[int, int], tuple[int, int]]]:
+    """Where the branches of conditional expressions that never run on Python 3 stand
+    (``basestring if PY2 else str``), as ((line, column), (end line, end column)), columns
+    from 0; treat as read-only."""
+    constants = module_constants(tree)
+    found = []
+    for node in nodes_of_class(tree, ast.IfExp):
+        assert isinstance(node, ast.IfExp)
+        value = truth(node.test, constants)
+        branch = node.body if value is False else node.orelse if value is True else None
+        if branch is not None:
+            found.append(((branch.lineno, branch.col_offset),
+                          (branch.end_lineno or branch.lineno, branch.end_col_offset or 0)))
     return found
 
 

@@ -188,6 +188,7 @@ RULES = {
     "PYC070": ("parameter-type-disagrees", "error", True, "python.parameter_type_disagrees"),
     "PYC071": ("package-lookup-arguments", "error", True, "python.package_lookup_arguments"),
     "PYC072": ("node-class-without-node-base", "error", True, "python.node_class_without_base"),
+    "PYC073": ("empty-list-parameter-default", "warning", True, "python.empty_list_parameter"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),
@@ -214,6 +215,7 @@ RULES = {
     "SYN004": ("oversized-file", "info", True, "syntax.oversized_file"),
     "SYN005": ("submodule-not-checked-out", "info", True, "syntax.submodule_not_checked_out"),
     "SYN006": ("compile-error", "error", True, "syntax.compile_error"),
+    "SYN007": ("newer-python-syntax", "info", True, "syntax.newer_python_syntax"),
 }
 
 FIXED = frozenset({

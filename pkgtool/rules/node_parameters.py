@@ -102,7 +102,7 @@ def python_type(value: object) -> str | None:
 def _default_type(call: ast.Call, value: ast.expr | None, descriptor: ast.expr | None
                   ) -> str | None:
     """The checked type of a declaration's default (see :class:`Declared`)."""
-    if value is None or _flag(call, "ignore_override") is not False or not _static_typing(
+    if value is None or literal_flag(call, "ignore_override") is not False or not static_typing(
             descriptor):
         return None
     try:
@@ -111,7 +111,7 @@ def _default_type(call: ast.Call, value: ast.expr | None, descriptor: ast.expr |
         return None
 
 
-def _flag(call: ast.Call, keyword: str) -> bool | None:
+def literal_flag(call: ast.Call, keyword: str) -> bool | None:
     """A keyword's literal boolean: False when absent, None when not a literal."""
     found = next((k.value for k in call.keywords if k.arg == keyword), None)
     if found is None:
@@ -120,13 +120,13 @@ def _flag(call: ast.Call, keyword: str) -> bool | None:
         isinstance(found.value, bool) else None
 
 
-def _static_typing(descriptor: ast.expr | None) -> bool:
+def static_typing(descriptor: ast.expr | None) -> bool:
     """True when no descriptor, or a ``ParameterDescriptor(...)`` without dynamic typing."""
     if descriptor is None:
         return True
     return isinstance(descriptor, ast.Call) and \
         getattr(descriptor.func, "id", getattr(descriptor.func, "attr", "")) == \
-        "ParameterDescriptor" and _flag(descriptor, "dynamic_typing") is False
+        "ParameterDescriptor" and literal_flag(descriptor, "dynamic_typing") is False
 
 
 def _declarations(call: ast.Call, method: str, path: str, index: Index

@@ -39,8 +39,10 @@ def _run(*args: str, cwd: Path) -> str:
 
 
 def _lint(pkgtool: str, cwd: Path) -> str:
+    """The JSON report of every fixture; SYN007 aside, which notes what the Python running
+    pkgtool cannot parse (it differs by design)."""
     return _run(pkgtool, "lint", "--no-cache", "--isolated", "--exit-zero", "--format", "json",
-                str(ROOT / "tests" / "fixtures"), cwd=cwd)
+                "--ignore", "SYN007", str(ROOT / "tests" / "fixtures"), cwd=cwd)
 
 
 def test_lint_on_python_3_10_reports_what_it_reports_here(tmp_path: Path) -> None:

@@ -68,12 +68,15 @@ def _left_out(package: Package, module: str, installed: dict[str, str]) -> str |
     return None
 
 
-def _ships_data(package: Package) -> bool:
-    """True when setup.py copies more files into its Python packages (``package_data``,
-    ``include_package_data``): a subfolder's modules may go with them (a folder without
-    ``__init__.py`` under an installed package then imports as a namespace package)."""
-    setup = package.setup_py
-    return setup is not None and any(k in setup.keywords for k in PACKAGE_DATA)
+def _shipped_as_data(package: Package, subpackage: str) -> bool:
+    """True when setup.py copies the files of ``subpackage``'s folder into its parent
+    package as data: it has ``package_data`` and a pattern for the folder
+    (``{'mylib': ['plugins/*']}``); the folder, without ``__init__.py``, then imports as a
+    namespace package."""
+    setup, folder = package.setup_py, subpackage.rpartition(".")[2]
+    text = package.texts.get("setup.py", "")
+    return setup is not None and any(k in setup.keywords for k in PACKAGE_DATA) and \
+        (f"'{folder}/" in text or f'"{folder}/' in text)
 
 
 def _shadowed(package: Package, path: str, root: str) -> bool:
@@ -151,7 +154,9 @@ def missing_own_module(package: Package) -> Iterator[Hit]:
                 continue
             if base not in installed:
                 left_out = _left_out(package, base, installed) \
-                    if dotted and is_ament_python(package) and not _ships_data(package) else None
+                    if dotted and is_ament_python(package) else None
+                if left_out is not None and _shipped_as_data(package, left_out):
+                    continue
                 if left_out is not None:
                     yield Hit(imported.span, f"`{left_out}` is in the source tree, but setup.py "
                               "does not install it (`packages` does not list it): the import "

@@ -7,13 +7,14 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import last_name
-from pkgtool.model.launch_scopes import overwritten_values, scope_nodes, unread_values
+from pkgtool.model.ast_nodes import last_name, subtree
+from pkgtool.model.launch_scopes import (overwritten_values, scope_nodes, simple_assignment,
+                                         unread_values)
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.launch._python_launch import text_argument
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import launch_indexes
+from pkgtool.rules.syntax_trees import Index, launch_indexes
 
 _DECLARE, _READ = "DeclareLaunchArgument", "LaunchConfiguration"
 
@@ -53,11 +54,12 @@ def launch_argument_never_declared(package: Package) -> Iterator[Hit]:
         calls = index.calls
         if not any(last_name(c.func) == _DECLARE for c in calls):
             continue
-        lost = {id(value) for function in index.functions for value in _lost_values(function)}
+        lost = {id(value) for function in index.functions
+                for value in _lost_values(function, index)}
         declared = {name for c in calls if last_name(c.func) == _DECLARE and id(c) not in lost
                     and (name := text_argument(c, "name")) is not None}
         reads = {name: c for c in reversed(calls) if last_name(c.func) == _READ and len(c.args) < 2
-                 and id(c) not in lost and not any(k.arg == "default" for k in c.keywords)
+                 and not index.inside(c, lost) and not any(k.arg == "default" for k in c.keywords)
                  and (name := text_argument(c, "variable_name")) is not None}
         for call in calls:
             name = text_argument(call, "name") if id(call) in lost and \
@@ -71,7 +73,26 @@ def launch_argument_never_declared(package: Package) -> Iterator[Hit]:
                           f"configuration '{name}' does not exist\" unless given `{name}:=...`")
 
 
-def _lost_values(function: ast.FunctionDef | ast.AsyncFunctionDef) -> set[ast.expr]:
-    """The values the function assigns to a name it never reads, or assigns again first."""
+def _lost_values(function: ast.FunctionDef | ast.AsyncFunctionDef, index: Index
+                 ) -> set[ast.expr]:
+    """The values the function assigns to a name it never reads, or assigns again first, or
+    reads only inside such values (``mode = LaunchConfiguration('mode')`` read only by a
+    node left out of the description)."""
     nodes = scope_nodes(function.body)
-    return unread_values(function, nodes) | overwritten_values(function, nodes)
+    lost = unread_values(function, nodes) | overwritten_values(function, nodes)
+    loads: dict[str, list[ast.Name]] = {}
+    for node in subtree(function):
+        if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
+            loads.setdefault(node.id, []).append(node)
+    assigned = [node for node in nodes if simple_assignment(node) and
+                isinstance(node.value, ast.Call)]  # type: ignore[attr-defined]
+    grew = True
+    while grew:
+        ids = {id(value) for value in lost}
+        more = {node.value for node in assigned  # type: ignore[attr-defined]
+                if node.value not in lost and  # type: ignore[attr-defined]
+                (reads := loads.get(node.targets[0].id)) and  # type: ignore[attr-defined]
+                all(index.inside(read, ids) for read in reads)}
+        lost |= more
+        grew = bool(more)
+    return lost

@@ -6,6 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import last_name
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.launch._python_launch import launch_class, within
@@ -81,6 +82,19 @@ def substitution_added_to_text(package: Package) -> Iterator[Hit]:
             yield from _joined_otherwise(path, function, index, single)
 
 
+_SHOWN = frozenset({"print", "debug", "info", "warning", "warn", "error", "critical",
+                    "exception"})
+"""Calls that only show text (``print``, a Python logger's methods): no launch value."""
+
+
+def _only_shown(node: ast.FormattedValue, index: Index) -> bool:
+    """True when the f-string holding ``node`` is an argument of :data:`_SHOWN` (a debug
+    ``print(f'ns: {ns}')`` while the description is built), not of a launch action."""
+    string = index.parents.get(id(node))
+    call = index.parents.get(id(string))
+    return isinstance(call, ast.Call) and string in call.args and last_name(call.func) in _SHOWN
+
+
 def _joined_otherwise(path: str, function: ast.AST, index: Index, single: dict[str, ast.expr]
                       ) -> Iterator[Hit]:
     """Substitutions given to ``os.path.join`` (TypeError) or formatted into an f-string (the
@@ -96,7 +110,7 @@ def _joined_otherwise(path: str, function: ast.AST, index: Index, single: dict[s
                           f"A `{made}` is given to `os.path.join`: it raises TypeError (a "
                           "substitution is no path)",
                           "Use `PathJoinSubstitution([...])` with the same parts")
-        elif isinstance(node, ast.FormattedValue):
+        elif isinstance(node, ast.FormattedValue) and not _only_shown(node, index):
             made = _substitution(node.value, index, single)
             if made:
                 yield Hit(Span(path, node.value.lineno, node.value.col_offset + 1),

@@ -74,11 +74,18 @@ def node_class_without_node_base(package: Package) -> Iterator[Hit]:
             probed = probed_names(index) if probed is None else probed
             reason = _super_init_arguments(cls) or \
                 _node_method_read(cls, dotted, index, package, stores, probed)
-            if reason is not None:
-                node, what = reason
-                yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
-                          f"`{cls.name}` derives from no class, yet {what}: its instances are "
-                          "plain objects, not nodes (was `(Node)` left out of "
+            if reason is None:
+                continue
+            node, what = reason
+            span = Span(module.path, node.lineno, node.col_offset + 1)
+            if isinstance(node, ast.Attribute) and node.attr == "get_logger":
+                yield Hit(span, f"`{cls.name}` derives from no class, yet {what}: a helper "
+                          "class has no node's logger", "Give the class a logger of its own "
+                          f"(`rclpy.logging.get_logger('{cls.name.lower()}')`) or pass it the "
+                          "node's")
+            else:
+                yield Hit(span, f"`{cls.name}` derives from no class, yet {what}: its "
+                          "instances are plain objects, not nodes (was `(Node)` left out of "
                           f"`class {cls.name}`?)", f"Write `class {cls.name}(Node):`")
 
 

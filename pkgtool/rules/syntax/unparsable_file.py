@@ -35,6 +35,7 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     whose `#!` line runs another language (a bash script named `start.py`; but one pytest
     collects, `test/test_x.py`, is imported as Python and reported), nor a Python
     file the package does not install in a folder of another project's code (`thirdparty/`,
+    `third_party_packages/`,
     `external/`, `vendor/`: Eigen's Python 2 maintenance scripts).
     Python is parsed by the Python running pkgtool: when that is older than the target
     distribution's (3.11 for jazzy's 3.12), a failing line that uses syntax the target's Python
@@ -71,5 +72,12 @@ def _vendored_and_unused(package: Package, problem: ParseProblem) -> bool:
     not install: nothing builds, runs or imports it (a Python 2 maintenance script)."""
     path = problem.span.path
     return problem.kind == "python-syntax" and \
-        bool(_VENDORED & {part.lower() for part in path.split("/")[:-1]}) and \
+        any(_vendored_folder(part) for part in path.split("/")[:-1]) and \
         path not in installed_files(package)
+
+
+def _vendored_folder(name: str) -> bool:
+    """True for a folder named like :data:`_VENDORED`, also with more words
+    (``third_party_packages``, ``vendor_libs``)."""
+    words = name.lower().replace("-", "_")
+    return words in _VENDORED or any(words.startswith(f"{kind}_") for kind in _VENDORED)
