@@ -103,13 +103,14 @@ def index_record(package: WorkspacePackage) -> list[Any]:
     """A workspace-index entry as JSON."""
     return [package.name, {kind: sorted(names) for kind, names in package.interfaces.items()},
             sorted(package.modules), dict(sorted(package.messages.items())), package.folder,
-            package.setup_digest, sorted(package.depends)]
+            package.setup_digest, sorted(package.depends),
+            None if package.executables is None else sorted(package.executables)]
 
 
 def index_entry(stored: Any) -> WorkspacePackage | None:
     """The :class:`WorkspacePackage` :func:`index_record` stored; None when it is not one."""
     try:
-        name, interfaces, modules, messages, folder, setup_digest, depends = stored
+        name, interfaces, modules, messages, folder, setup_digest, depends, executables = stored
         if isinstance(name, str) and isinstance(interfaces, dict) and \
                 isinstance(modules, list) and all(isinstance(m, str) for m in modules) and \
                 all(isinstance(k, str) and isinstance(v, list) and
@@ -117,10 +118,13 @@ def index_entry(stored: Any) -> WorkspacePackage | None:
                 isinstance(messages, dict) and \
                 all(isinstance(k, str) and isinstance(v, str) for k, v in messages.items()) and \
                 isinstance(folder, str) and isinstance(setup_digest, str) and \
-                isinstance(depends, list) and all(isinstance(d, str) for d in depends):
+                isinstance(depends, list) and all(isinstance(d, str) for d in depends) and \
+                (executables is None or isinstance(executables, list) and
+                 all(isinstance(e, str) for e in executables)):
             return WorkspacePackage(name, {k: frozenset(v) for k, v in interfaces.items()},
                                     frozenset(modules), messages, folder, setup_digest,
-                                    frozenset(depends))
+                                    frozenset(depends),
+                                    None if executables is None else frozenset(executables))
     except (TypeError, ValueError):
         pass
     return None

@@ -22,8 +22,8 @@ from pathlib import Path
 
 from pkgtool.knowledge.interface_definitions import definitions
 from pkgtool.knowledge.tables import DEFAULT_DISTRO
-from pkgtool.model.cmake_interfaces import (installed_python_packages, with_included,
-                                            with_listed)
+from pkgtool.model.cmake_interfaces import (installed_executables, installed_python_packages,
+                                            with_included, with_listed)
 from pkgtool.model.digest import text_digest
 from pkgtool.model.files import list_files, read_bytes
 from pkgtool.model.memo import per_object
@@ -59,6 +59,10 @@ class WorkspacePackage:
     depends: frozenset[str] = frozenset()
     """The packages its package.xml declares as build or run dependencies (any tag but
     ``test_depend`` and ``doc_depend``)."""
+    executables: frozenset[str] | None = None
+    """For a package CMake builds, the executables its CMakeLists.txt installs into
+    ``lib/<name>`` (:func:`~pkgtool.model.cmake_interfaces.installed_executables`); None when
+    not known or not such a package."""
 
 
 @record
@@ -161,9 +165,12 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
         cmake = with_included(cmake, lambda path: _read(os.path.join(base, path)))
         modules |= installed_python_packages(cmake)
     interfaces = with_listed(folders, cmake, listed) or {}
+    setup_digest = _setup_digest(manifest, listed, setup)
+    executables = installed_executables(cmake) if cmake is not None and not setup_digest and \
+        _build_type(manifest) in ("ament_cmake", "cmake") else None
     return WorkspacePackage(name, interfaces, frozenset(modules),
-                            _messages(base, name, interfaces, defined), base,
-                            _setup_digest(manifest, listed, setup), _depends(manifest))
+                            _messages(base, name, interfaces, defined), base, setup_digest,
+                            _depends(manifest), executables)
 
 
 _DEPEND = lazy_pattern(r"<(?:depend|exec_depend|run_depend|build_depend|build_export_depend|"
@@ -185,10 +192,16 @@ def _setup_digest(manifest: str | None, listed: tuple[str, ...],
     setup.py and setup.cfg texts ``setup`` reads."""
     if "setup.py" not in listed or "pyproject.toml" in listed:
         return ""
-    found = _BUILD_TYPE.search(_COMMENT.sub("", manifest or ""))
-    if (found.group(1) != "ament_python") if found else "CMakeLists.txt" in listed:
+    build_type = _build_type(manifest)
+    if (build_type != "ament_python") if build_type else "CMakeLists.txt" in listed:
         return ""
     return text_digest(*setup())
+
+
+def _build_type(manifest: str | None) -> str | None:
+    """The ``<build_type>`` a package.xml's text declares (comments aside), or None."""
+    found = _BUILD_TYPE.search(_COMMENT.sub("", manifest or ""))
+    return found.group(1) if found else None
 
 
 def _setup_name(setup_text: str | None, cfg_text: str | None) -> str | None:

@@ -14,6 +14,7 @@ FIXTURES = Path(__file__).resolve().parents[1] / "fixtures"
 CASES = [(code, case) for code in fixers() for case in sorted((FIXTURES / code / "bad").iterdir())]
 PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprecated_ids"),
           ("LCH001", "node_of_another_workspace_package"),
+          ("LCH001", "executable_of_a_cmake_workspace_package"),
           ("DEP011", "lookups_of_undeclared_packages"),
           ("LCH002", "undeclared_packages"), ("LCH002", "xacro_run_by_command"),
           ("MAN018", "cmake_package_keys"),
@@ -97,7 +98,7 @@ MANUAL = {("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages
           ("ENT003", "node_class_as_entry"), ("ENT003", "attribute_of_function"),
           ("PYC014", "read_before_declaring"),
           ("LCH001", "wrong_executable_names"), ("LCH001", "data_files_walked_at_build"),
-          ("LCH001", "executables_of_a_loop"),
+          ("LCH001", "executables_of_a_loop"), ("LCH001", "cmake_executables_never_installed"),
           ("DAT009", "default_name_from_code"),
           ("DAT009", "xml_and_yaml_launch"), ("LCH003", "gazebo_classic_module")}
 """MAN018 fixes pip and import names only; build types, ROS 1 packages and standard library modules

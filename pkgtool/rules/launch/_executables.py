@@ -5,7 +5,8 @@ from __future__ import annotations
 import posixpath
 import re
 
-from pkgtool.model.cmake_interfaces import installed_programs, with_included
+from pkgtool.model.cmake_interfaces import (installed_executables, installed_programs,
+                                            with_included)
 from pkgtool.model.installed import is_ament_python
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
@@ -57,6 +58,16 @@ def cmake_programs(package: Package) -> dict[str, str]:
     return {name[:-3]: name for name in installed_programs(text)
             if name.endswith(".py") and
             not re.search(rf"(?<![\w./-]){re.escape(name[:-3])}(?![\w.-])", text)}
+
+
+@per_package
+def cmake_executables(package: Package) -> frozenset[str] | None:
+    """The executables a package CMake builds installs into ``lib/<package>``, when its
+    CMakeLists.txt says so for certain (:func:`installed_executables`); None otherwise."""
+    cmake = package.texts.get("CMakeLists.txt")
+    if cmake is None or is_ament_python(package):
+        return None
+    return installed_executables(with_included(cmake, package.texts.get))
 
 
 def console_scripts(package: Package) -> frozenset[str] | None:

@@ -10,8 +10,8 @@ from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.model.launch import NodeRef
 from pkgtool.model.package import Package
 from pkgtool.model.scripts import sibling_executables
-from pkgtool.rules.launch._executables import (LAUNCH_FILE_NAME, cmake_programs,
-                                               console_scripts, executables)
+from pkgtool.rules.launch._executables import (LAUNCH_FILE_NAME, cmake_executables,
+                                               cmake_programs, console_scripts, executables)
 from pkgtool.rules.registry import rule
 
 
@@ -35,7 +35,14 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
     LCH005 still checks their arguments, which the `Node()` call itself rejects. In a package
     built with CMake, a node naming `detector` is reported when the CMakeLists.txt installs
     the script `detector.py` with `install(PROGRAMS ...)` into `lib/` (under its file name)
-    and names `detector` nowhere else (no target, `RENAME` or component of that name).
+    and names `detector` nowhere else (no target, `RENAME` or component of that name). A
+    node of a package CMake builds (this one or one of the workspace) is checked against the
+    executables its CMakeLists.txt installs into `lib/<package>`, when its text says so for
+    certain: targets of `install(TARGETS ...)` (by their `OUTPUT_NAME`), files of
+    `install(PROGRAMS ...)` (or their `RENAME`), `ament_auto_add_executable` targets and
+    components' `EXECUTABLE`; not when it uses commands of the project's own, loops,
+    subdirectories or folders installed into `lib/` (the setup.py a CMake package may hold
+    is never run by colcon).
 
     ## Why is this bad?
     `ros2 launch` looks the executable up in `lib/<package>` only when the launch file runs
@@ -56,6 +63,8 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
     shown = (executables(package) or console_scripts(package) or frozenset()) \
         if known is not None else None
     programs = cmake_programs(package)
+    if known is None:  # a package CMake builds: what its CMakeLists.txt installs, if certain
+        known = shown = cmake_executables(package)
     for launch in package.launch_files:
         for node in launch.nodes:
             if node.package is None or node.executable is None or node.unused or \
@@ -67,7 +76,7 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
             installed = (known, shown) if node.package == package.name else \
                 _sibling(package, node.package)
             if installed[0] is not None and node.executable not in installed[0]:
-                yield _unknown(node, installed[1] or frozenset())
+                yield _unknown(node, installed[1] or frozenset(), _built_by_cmake(package, node))
 
 
 def _kept_suffix(node: NodeRef, installed: str) -> Hit:
@@ -84,18 +93,30 @@ def _sibling(package: Package, name: str) -> tuple[frozenset[str] | None, frozen
     gives a package's own: what may be there, what is shown); None when unknown."""
     sibling = package.context.workspace.get(name)
     found = sibling_executables(sibling) if sibling is not None else None
+    if found is None and sibling is not None:
+        found = sibling.executables
     return found, found
 
 
-def _unknown(node: NodeRef, shown: frozenset[str]) -> Hit:
-    """The finding for ``node``, whose executable is none of ``shown``."""
+def _built_by_cmake(package: Package, node: NodeRef) -> bool:
+    """True when the package ``node`` starts is one CMake builds."""
+    if node.package == package.name:
+        return cmake_executables(package) is not None
+    sibling = package.context.workspace.get(node.package or "")
+    return sibling is not None and sibling.executables is not None
+
+
+def _unknown(node: NodeRef, shown: frozenset[str], cmake: bool) -> Hit:
+    """The finding for ``node``, whose executable is none of ``shown`` (``cmake``: of a
+    package CMake builds)."""
     executable = node.executable or ""
     choices = ", ".join(f"`{n}`" for n in sorted(shown)) or "none"
     close = get_close_matches(executable, sorted(shown), n=1)
     meant = typo_of(executable, shown)
+    add = f"install it: `install(TARGETS {executable} DESTINATION lib/${{PROJECT_NAME}})`" \
+        if cmake else f"add `{executable} = {node.package}.<module>:main` to console_scripts"
     return Hit(node.executable_span or node.span,
                f"`{executable}` is not an executable of `{node.package}` "
                f"({f'did you mean `{close[0]}`? ' if close else ''}it installs: {choices})",
                f"Write `{meant}`" if meant else
-               f"Add `{executable} = {node.package}.<module>:main` to console_scripts, or "
-               "launch one of the installed executables")
+               f"{add[0].upper()}{add[1:]}, or launch one of the installed executables")
