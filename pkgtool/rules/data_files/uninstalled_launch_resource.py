@@ -26,7 +26,8 @@ def uninstalled_launch_resource(package: Package) -> Iterator[Hit]:
     (`config/*.yaml`) count when installed files match them, and a module that asks whether
     files exist (`os.path.exists`, `Path.exists()`: it handles a missing one) is left alone;
     in a launch file only the paths it asks that of are (all of them when it asks of a path
-    pkgtool cannot work out).
+    pkgtool cannot work out). A folder holding only hidden files (`output/.gitkeep`: where
+    the code writes) has nothing to install.
 
     ## Why is this bad?
     The launch file starts, then fails on the missing parameter file, URDF or RViz config,
@@ -46,6 +47,15 @@ def uninstalled_launch_resource(package: Package) -> Iterator[Hit]:
     """
     share = f"share/{package.name}"
     for reader, ref, relative, _ in uninstalled_launch_resources(package):
-        if package.has_file(relative) or is_folder(package, relative):
+        if package.has_file(relative) or is_folder(package, relative) and \
+                not _placeholder_folder(package, relative):
             yield Hit(ref.span, f"`{relative}` is not installed to `{share}`, but "
                                 f"`{reader}` uses it")
+
+
+def _placeholder_folder(package: Package, path: str) -> bool:
+    """True for a folder holding only hidden files (``output/.gitkeep``): kept in git for
+    what the code writes there, nothing to install."""
+    prefix = path.rstrip("/") + "/"
+    return all(f.rpartition("/")[2].startswith(".") for f in package.files
+               if f.startswith(prefix))

@@ -10,7 +10,7 @@ from pkgtool.model.cmake_interfaces import (installed_executables, installed_pro
 from pkgtool.model.installed import is_ament_python
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
-from pkgtool.model.scripts import library_entries, script_names
+from pkgtool.model.scripts import library_entries, script_names, sibling_executables
 from pkgtool.lazy_regex import lazy_pattern
 
 LAUNCH_FILE_NAME = lazy_pattern(r"(?:^|[._-])launch\.(?:py|xml|ya?ml)$")
@@ -79,3 +79,18 @@ def console_scripts(package: Package) -> frozenset[str] | None:
     if package.has_file("setup.cfg") and package.setup_cfg is None:
         return None
     return script_names(setup, package.setup_cfg)
+
+
+def installs_program(package: Package, owner: str, name: str) -> bool:
+    """True when the package ``owner`` (this one, or one of its workspace) installs a program
+    called ``name`` into ``lib/<owner>`` as far as pkgtool can tell: a console script or file
+    setup.py installs there, or a target or program of its CMakeLists.txt."""
+    if owner == package.name:
+        cmake = package.texts.get("CMakeLists.txt")
+        programs = installed_programs(with_included(cmake, package.texts.get)) \
+            if cmake is not None and not is_ament_python(package) else frozenset()
+        return name in programs or name in (executables(package, any_data=True) or ()) or \
+            name in (cmake_executables(package) or ())
+    sibling = package.context.workspace.get(owner)
+    return sibling is not None and (name in (sibling_executables(sibling) or ()) or
+                                    name in (sibling.executables or ()))

@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.launch._executables import LAUNCH_FILE_NAME
+from pkgtool.rules.launch._executables import LAUNCH_FILE_NAME, installs_program
 from pkgtool.rules.registry import rule
 
 
@@ -17,7 +17,9 @@ def launch_file_as_executable(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Reports a `Node(executable=...)` (`<node exec=...>`) whose executable is named like a
-    launch file: `bringup_launch.py`, `robot.launch.py`, `sim.launch.xml`, of any package.
+    launch file: `bringup_launch.py`, `robot.launch.py`, `sim.launch.xml`, of any package;
+    not one its package installs as a program under that name (a node script called
+    `rosapi_launch.py` that CMake's `install(PROGRAMS ...)` puts into `lib/<package>`).
 
     ## Why is this bad?
     `Node` runs a program from the package's `lib/<package>` folder; launch files are
@@ -39,7 +41,9 @@ def launch_file_as_executable(package: Package) -> Iterator[Hit]:
     """
     for launch in package.launch_files:
         for node in launch.nodes:
-            if node.executable and not node.unused and LAUNCH_FILE_NAME.search(node.executable):
+            if node.executable and not node.unused and \
+                    LAUNCH_FILE_NAME.search(node.executable) and \
+                    not installs_program(package, node.package or package.name, node.executable):
                 owner = node.package or "<package>"
                 yield Hit(node.executable_span or node.span,
                           f"`{node.executable}` is a launch file, not an executable of "

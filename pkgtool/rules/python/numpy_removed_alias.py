@@ -9,6 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.numpy_removed import REMOVED, SYSTEM_NUMPY, system_has
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.syntax_trees import installed_trees, resolved_attributes
 from pkgtool.rules.registry import rule
 
@@ -39,7 +40,8 @@ def numpy_removed_alias(package: Package) -> Iterator[Hit]:
     removed in NumPy 1.24 (`np.float`, `np.int`, `np.object`, `np.bool`, ...) and the names
     NumPy 2 removed (`np.int0`, `np.float_`, `np.product`, `np.NaN`, ...). Annotations Python
     never evaluates (of an assignment in a function, or under `from __future__ import
-    annotations`) are not checked.
+    annotations`) are not checked, nor are names the module probes (`if getattr(np, 'bool',
+    False):`, `hasattr`) or reads where AttributeError is caught.
 
     ## Why is this bad?
     The line raises `AttributeError` (or `ImportError`) when it runs. ROS 2 Jazzy on Ubuntu
@@ -60,8 +62,10 @@ def numpy_removed_alias(package: Package) -> Iterator[Hit]:
     for module, _, index in installed_trees(package):
         if not any(i.top_level == "numpy" for i in module.imports):
             continue  # nothing can resolve to numpy (the common case: no walk over attributes)
+        probed = probed_names(index)
         for node, owner, attr in resolved_attributes(index):
-            if owner == "numpy" and attr in REMOVED and not index.in_unevaluated_annotation(node):
+            if owner == "numpy" and attr in REMOVED and \
+                    not index.in_unevaluated_annotation(node) and not guarded(node, index, probed):
                 yield _hit(module.path, node, attr, package.context.distro)
         for node in index.import_froms:
             if node.module == "numpy" and node.level == 0:

@@ -112,7 +112,7 @@ def _imported_names(package: Package) -> frozenset[str]:
 
 def _bound_at_run_time(tree: ast.Module, line: int, column: int, name: str) -> bool:
     """True for the kinds of pyflakes' undefined names that Python finds bound: one read
-    only where ``'name' in globals()`` holds; a local
+    only where ``'name' in globals()`` holds, or in a function only called there; a local
     read in a loop that assigns it further on (``x = prev + 1`` ... ``prev = x``: bound by
     the pass that reads it, when the first pass skips the read), and the name of an ``except
     ... as name`` read by a lambda that the handler passes to a call that runs it at once
@@ -139,6 +139,34 @@ def _bound_at_run_time(tree: ast.Module, line: int, column: int, name: str) -> b
             branched = True
         elif isinstance(parent, _LOOPS) and branched and not lambdas and \
                 _stored_after(parent, node):
+            return True
+        child, parent = parent, parents.get(id(parent))
+    return isinstance(parent, (ast.FunctionDef, ast.AsyncFunctionDef)) and not lambdas and \
+        _called_only_when_defined(tree, parent, name, parents)
+
+
+def _called_only_when_defined(tree: ast.Module, function: ast.FunctionDef |
+                              ast.AsyncFunctionDef, name: str, parents: dict[int, ast.AST]
+                              ) -> bool:
+    """True when every use of ``function`` (by its name: ``save()``, ``self.save()``) is a
+    call in the body of an ``if 'name' in globals():`` (a module constant left out on
+    purpose turns the feature off)."""
+    uses = [n for n in nodes_of_class(tree, ast.Name, ast.Attribute)
+            if (n.id if isinstance(n, ast.Name) else n.attr) == function.name  # type: ignore
+            and isinstance(n.ctx, ast.Load)]  # type: ignore[attr-defined]
+    return bool(uses) and all(_guarded_call(use, name, parents) for use in uses)
+
+
+def _guarded_call(use: ast.AST, name: str, parents: dict[int, ast.AST]) -> bool:
+    """True when ``use`` is the function a call calls, inside the body of an ``if`` asking
+    whether ``name`` is defined."""
+    call = parents.get(id(use))
+    if not isinstance(call, ast.Call) or call.func is not use:
+        return False
+    child, parent = call, parents.get(id(call))
+    while parent is not None:
+        if isinstance(parent, ast.If) and any(child is s for s in parent.body) and \
+                _asks_defined(parent.test, name):
             return True
         child, parent = parent, parents.get(id(parent))
     return False
