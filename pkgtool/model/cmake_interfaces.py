@@ -355,15 +355,27 @@ def with_included(text: str, read: Callable[[str], str | None]) -> str:
     return "\n".join(parts)
 
 
+_MODULE_NAME = lazy_pattern(r"[A-Za-z_][\w-]*")
+
+
 def included_files(text: str) -> list[str]:
-    """The package-relative paths of the ``.cmake`` files ``text`` includes (modules such as
-    ``include(GNUInstallDirs)`` are CMake's own)."""
+    """The package-relative paths of the ``.cmake`` files ``text`` includes: by path, or by
+    module name from a folder of the package ``CMAKE_MODULE_PATH`` lists (other modules, such
+    as ``include(GNUInstallDirs)``, are CMake's own)."""
     calls = _calls(text)
     variables = _variables(calls, frozenset())
-    return [posixpath.normpath(value.lstrip("/")) for name, args in calls
-            if name == "include" and args for value in _expand(args[0], variables, _DEPTH)
-            if value and value.endswith(".cmake") and "${" not in value
-            and not posixpath.normpath(value.lstrip("/")).startswith("..")]
+    folders = dict.fromkeys(posixpath.normpath(folder.lstrip("/")) for value in
+                            variables.get("CMAKE_MODULE_PATH") or () if value
+                            for folder in _expand(value, variables, _DEPTH)
+                            if folder and "${" not in folder)
+    found = []
+    for name, args in calls:
+        for value in _expand(args[0], variables, _DEPTH) if name == "include" and args else ():
+            if value and value.endswith(".cmake") and "${" not in value:
+                found.append(posixpath.normpath(value.lstrip("/")))
+            elif value and _MODULE_NAME.fullmatch(value):  # a module of CMAKE_MODULE_PATH
+                found.extend(f"{folder}/{value}.cmake" for folder in folders)
+    return [path for path in found if not path.startswith("..")]
 
 
 def _calls(text: str) -> list[tuple[str, list[str]]]:
@@ -407,8 +419,10 @@ def _variables(calls: list[tuple[str, list[str]]], files: frozenset[str]
     for name, args in calls:
         if name == "set" and args:
             found.setdefault(args[0], []).extend(a for a in args[1:] if a != "PARENT_SCOPE")
-        elif name == "list" and len(args) > 1 and args[0] == "APPEND":
+        elif name == "list" and len(args) > 1 and args[0] in ("APPEND", "PREPEND"):
             found.setdefault(args[1], []).extend(args[2:])
+        elif name == "list" and len(args) > 2 and args[0] == "INSERT":
+            found.setdefault(args[1], []).extend(args[3:])
         elif name == "file" and len(args) > 1 and args[0] in ("GLOB", "GLOB_RECURSE"):
             found[args[1]] = _globbed(args[2:], files, args[0] == "GLOB_RECURSE")
         elif name == "foreach" and args:

@@ -11,6 +11,7 @@ from __future__ import annotations
 import posixpath
 from fnmatch import fnmatchcase
 
+from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.cmake_interfaces import installed_sources, with_included
 from pkgtool.model.launch import python_folders
 from pkgtool.model.memo import per_package
@@ -140,7 +141,8 @@ def installed_files(package: Package) -> frozenset[str]:
     (:func:`cmake_installed`), with the Python files it names (``install(PROGRAMS
     scripts/node.py ...)``: what ``ros2 run`` starts). A setup.py and the files of a
     :func:`separate_projects` project never are, nor what the setup.py of a CMake package
-    names (colcon never runs it)."""
+    names (colcon never runs it); when what CMake installs is not known, nor the folders of
+    the scripts it runs while building (:func:`build_time_folders`)."""
     installed = installed_modules(package) if is_ament_python(package) else None
     if installed is not None:
         scripts = f"lib/{package.name}/"
@@ -158,9 +160,30 @@ def installed_files(package: Package) -> frozenset[str]:
             named = {m.path for m in package.modules if m.path in sources}  # PROGRAMS x.py
             files = frozenset(f for f in files if any(
                 s == "." or f == s or f.startswith(s + "/") for s in sources)) | named
+        elif not is_ament_python(package):
+            tools = build_time_folders(package)
+            files = frozenset(f for f in files if posixpath.dirname(f) not in tools)
     return frozenset(f for f in files if posixpath.basename(f) != "setup.py"
                      and not posixpath.basename(f).startswith(".")  # setuptools globs `*.py`
                      and not in_separate_project(package, f))
+
+
+_RUN_BY_PYTHON = lazy_pattern(r"\$\{(?:PYTHON|Python3?|PYTHON3)_EXECUTABLE\}\s+\"?"
+                              r"(?:\$\{(?:CMAKE_CURRENT_SOURCE_DIR|PROJECT_SOURCE_DIR|"
+                              r"CMAKE_CURRENT_LIST_DIR)\}/)?([\w./-]+)\.py\b")
+"""A Python script a CMake file runs while building (``${PYTHON_EXECUTABLE}
+${CMAKE_CURRENT_SOURCE_DIR}/scripts/gen.py``)."""
+
+
+@per_package
+def build_time_folders(package: Package) -> frozenset[str]:
+    """The package folders holding Python scripts its CMake files run at build time (code
+    generators): tools of the build, not installed code."""
+    texts = [text for path, text in package.texts.items()
+             if path == "CMakeLists.txt" or path.endswith(".cmake")]
+    return frozenset(posixpath.dirname(posixpath.normpath(match))
+                     for text in texts for match in _RUN_BY_PYTHON.findall(text)
+                     if "/" in match and not match.startswith(".."))
 
 
 @per_package
