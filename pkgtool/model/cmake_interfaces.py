@@ -293,15 +293,20 @@ def _destinations(args: list[str], variables: dict[str, list[str] | None]) -> li
 
 def _runtime_destination(args: list[str], variables: dict[str, list[str] | None]
                          ) -> str | None:
-    """Where ``install(TARGETS ...)`` puts executables: the ``DESTINATION`` after
-    ``RUNTIME``, else the one given for all kinds; ``""`` when none applies."""
-    kind = ""
+    """Where ``install(TARGETS ...)`` puts executables: the last ``DESTINATION`` given after
+    ``RUNTIME`` (CMake keeps the last), else the last given for all kinds; ``""`` when none
+    applies, None when it is not static."""
+    kind, runtime, common = "", None, None
     for i, arg in enumerate(args[:-1]):
         if arg in _TARGET_KINDS and args[i - 1] != "EXPORT":
             kind = arg
-        elif arg == "DESTINATION" and kind in ("", "RUNTIME") and args[i - 1] != "EXPORT":
-            return _static(args[i + 1], variables)
-    return ""
+        elif arg == "DESTINATION" and args[i - 1] != "EXPORT" and kind in ("", "RUNTIME"):
+            if kind:
+                runtime = args[i + 1]
+            else:
+                common = args[i + 1]
+    chosen = runtime if runtime is not None else common
+    return "" if chosen is None else _static(chosen, variables)
 
 
 def _until_keyword(args: list[str]) -> list[str]:

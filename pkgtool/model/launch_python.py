@@ -24,7 +24,7 @@ from pkgtool.model.launch_scopes import (bindings, import_origins, overwritten_v
                                          unread_attribute_values, unread_module_values,
                                          unread_values, written_paths)
 from pkgtool.model.span import Span
-from pkgtool.model.static_branches import depends_on_ros_distro
+from pkgtool.model.static_branches import depends_on_ros_distro, reads_environment
 from pkgtool.records import record, replace
 
 SHARE_LOOKUPS = frozenset({"get_package_share_directory", "get_package_share_path",
@@ -195,7 +195,8 @@ class _Reader(ast.NodeVisitor):
     def visit_If(self, node: ast.If) -> None:
         self.visit(node.test)
         checked = any(isinstance(n, ast.Call) and last_name(n.func) in PRESENCE_CHECKS or
-                      isinstance(n, ast.Name) and n.id in self.presence_flags
+                      isinstance(n, ast.Name) and n.id in self.presence_flags or
+                      reads_environment(n, "RMW_IMPLEMENTATION")  # installed when selected
                       for n in descendants(node.test))
         distro = depends_on_ros_distro(node.test, self._assigned)
         self.distro_branches += distro

@@ -293,6 +293,12 @@ def _reads_ros_distro(node: ast.AST) -> bool:
     return _reads_variable(node, _ROS_DISTRO_VARIABLE)
 
 
+def reads_environment(node: ast.AST, variable: str) -> bool:
+    """``node`` reads the environment variable ``variable`` (``os.environ[...]``,
+    ``os.environ.get``, ``os.getenv``)."""
+    return _reads_variable(node, variable)
+
+
 def _reads_variable(node: ast.AST, variable: str) -> bool:
     """``node`` reads the environment variable ``variable`` (as :func:`_reads_ros_distro`)."""
     if isinstance(node, ast.Subscript):

@@ -12,7 +12,7 @@ EXPORT = "  <export>\n    <build_type>ament_python</build_type>\n  </export>\n"
 
 def test_dependency_in_export_moves_beside_the_others(tmp_path: Path) -> None:
     """numpy joins the run dependencies (after them: they are not sorted); std_msgs is
-    declared already, so its copy in `<export>` only goes."""
+    declared already, so its copy in `<export>` is inert: no finding, left as written."""
     root = _package(tmp_path, package_dot_xml=(
         EXPORT, "  <export>\n    <build_type>ament_python</build_type>\n"
         "    <exec_depend>python3-numpy</exec_depend>  <!-- for the maths -->\n"
@@ -21,7 +21,6 @@ def test_dependency_in_export_moves_beside_the_others(tmp_path: Path) -> None:
     after = _fixed_once(root, "MAN024", "package.xml")
     assert after == before.replace(
         "    <exec_depend>python3-numpy</exec_depend>  <!-- for", "    <!-- for").replace(
-        "    <exec_depend>std_msgs</exec_depend>\n  </export>", "  </export>").replace(
         "  <exec_depend>launch_ros</exec_depend>\n",
         "  <exec_depend>launch_ros</exec_depend>\n  <exec_depend>python3-numpy</exec_depend>\n")
 

@@ -7,11 +7,13 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.manifest.common import snippet, tree
-from pkgtool.rules.manifest.schema import DEPENDS_1, DEPENDS_2, GROUP_TAGS
+from pkgtool.rules.manifest.schema import DEPENDS_1, DEPENDS_2, GROUP_TAGS, token
 from pkgtool.rules.registry import rule
 
 _DEPENDENCY_TAGS = frozenset({*DEPENDS_1, *DEPENDS_2, *GROUP_TAGS})
 """The dependency tags of every format (``conflict``, ``replace`` and the group tags too)."""
+_COVERED = frozenset({"build_depend", "build_export_depend", "exec_depend"})
+"""The tags a ``<depend>`` of the same key stands for."""
 
 
 @rule("MAN024", "dependency-in-export", Severity.ERROR,
@@ -24,7 +26,8 @@ def dependency_in_export(package: Package) -> Iterator[Hit]:
     ``<depend>``, ``<exec_depend>``, ``<build_depend>``, ``<test_depend>``, the other
     ``*_depend`` tags, ``<conflict>``, ``<replace>``, ``<group_depend>`` and
     ``<member_of_group>``. Deeper elements (the content of a tool's own export element) are
-    left alone.
+    left alone, and so are copies of what `<package>` declares itself (the same tag and key,
+    or a `<depend>` of the key for a build, export or exec dependency): inert.
 
     ## Why is this bad?
     The schema lets ``<export>`` hold anything, so nothing complains, but catkin_pkg, colcon,
@@ -52,8 +55,11 @@ def dependency_in_export(package: Package) -> Iterator[Hit]:
     found = tree(package)
     if found is None:
         return
+    declared = {(child.tag, token(child.text)) for child in found.root.children}
     for export in found.named("export"):
         for child in export.children:
-            if child.tag in _DEPENDENCY_TAGS:
+            key = token(child.text)
+            if child.tag in _DEPENDENCY_TAGS and (child.tag, key) not in declared and \
+                    not (child.tag in _COVERED and ("depend", key) in declared):
                 yield Hit(child.span, f"`{snippet(child)}` is inside `<export>`: no build or "
                                       "install tool reads it there, so it declares nothing")

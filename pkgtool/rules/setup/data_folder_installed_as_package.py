@@ -31,7 +31,10 @@ def data_folder_installed_as_package(package: Package) -> Iterator[Hit]:
     `urdf`, `worlds`, `maps`, `rviz`, `msg`, ... A folder named like a module nothing else
     provides (`config`) is left alone when the package's code imports it (it is code then);
     one named like a module of the standard library, ROS or rosdep (`launch`, `test`) is
-    always reported, and the import rules never take it for the package's own module.
+    always reported, and the import rules never take it for the package's own module. A
+    folder without `__init__.py` (`find_namespace_packages()`) becomes a namespace package,
+    which hides no regular package of that name (Python prefers those): it is reported as
+    installed, not as hiding.
 
     ## Why is this bad?
     The folder lands in `site-packages` as a package of that name. An installed `launch`
@@ -53,8 +56,10 @@ def data_folder_installed_as_package(package: Package) -> Iterator[Hit]:
     if setup is None or setup.packages is None:
         return
     finder = f"{setup.packages.kind}()"
+    where = "" if setup.packages.where in (".", "") else setup.packages.where.strip("/") + "/"
     for name in sorted(found_top_level(package) & DATA_FOLDERS - {package.name}):
-        if provided_elsewhere(name, package.context):
+        if provided_elsewhere(name, package.context) and \
+                package.has_file(f"{where}{name}/__init__.py"):
             yield Hit(setup.packages.span, f"`{finder}` installs the folder `{name}` as the "
                       f"top-level package `{name}`, which hides the real `{name}` module")
         elif not _imported_as_code(package, name):
