@@ -22,8 +22,9 @@ from pathlib import Path
 
 from pkgtool.knowledge.interface_definitions import definitions
 from pkgtool.knowledge.tables import DEFAULT_DISTRO
-from pkgtool.model.cmake_interfaces import (installed_executables, installed_python_packages,
-                                            with_included, with_listed)
+from pkgtool.model.cmake_install import installed_executables, installed_python_packages
+from pkgtool.model.cmake_interfaces import with_listed
+from pkgtool.model.cmake_text import with_included
 from pkgtool.model.digest import text_digest
 from pkgtool.model.files import list_files, read_bytes
 from pkgtool.model.memo import per_object
@@ -61,7 +62,7 @@ class WorkspacePackage:
     ``test_depend`` and ``doc_depend``)."""
     executables: frozenset[str] | None = None
     """For a package CMake builds, the executables its CMakeLists.txt installs into
-    ``lib/<name>`` (:func:`~pkgtool.model.cmake_interfaces.installed_executables`); None when
+    ``lib/<name>`` (:func:`~pkgtool.model.cmake_install.installed_executables`); None when
     not known or not such a package."""
 
 

@@ -12,7 +12,8 @@ import posixpath
 from fnmatch import fnmatchcase
 
 from pkgtool.lazy_regex import lazy_pattern
-from pkgtool.model.cmake_interfaces import installed_sources, with_included
+from pkgtool.model.cmake_install import installed_sources
+from pkgtool.model.cmake_text import with_included
 from pkgtool.model.launch import python_folders
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
@@ -189,7 +190,7 @@ def build_time_folders(package: Package) -> frozenset[str]:
 @per_package
 def cmake_installed(package: Package) -> frozenset[str] | None:
     """The files and folders the CMakeLists.txt of a package colcon builds with CMake installs
-    (:func:`~pkgtool.model.cmake_interfaces.installed_sources`), None when not known: a Python
+    (:func:`~pkgtool.model.cmake_install.installed_sources`), None when not known: a Python
     folder it never installs (a build-time generator, a test helper the tests put on
     ``PYTHONPATH``) is no installed code."""
     cmake = package.texts.get("CMakeLists.txt")

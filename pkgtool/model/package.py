@@ -6,7 +6,7 @@ import re
 from collections.abc import Callable
 from pathlib import Path
 
-from pkgtool.model.cmake_interfaces import with_included
+from pkgtool.model.cmake_text import with_included
 from pkgtool.model.context import Context, interface_file
 from pkgtool.model.files import TextFile, list_files, read_text
 from pkgtool.model.launch import (LAUNCH_SUFFIXES, LAUNCH_YAML, LaunchFile, in_launch_folder,

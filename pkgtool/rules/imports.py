@@ -26,7 +26,7 @@ from pkgtool.knowledge.rosdep import (ALTERNATIVE_KEYS, ROS1_PACKAGES, ROS_MODUL
 from pkgtool.knowledge.rosdistro import (DISTROS, any_stdlib_module, close_names,
                                          digits_differ, is_released_package, is_rosdep_key,
                                          keys_for_import, stdlib_modules, typo_distance)
-from pkgtool.model.cmake_interfaces import installed_python_packages
+from pkgtool.model.cmake_install import installed_python_packages
 from pkgtool.model.context import Context
 from pkgtool.model.installed import (DATA_FOLDERS, installed_files, installed_modules,
                                      is_ament_python, separate_projects)

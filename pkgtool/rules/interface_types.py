@@ -16,7 +16,8 @@ import ast
 
 from pkgtool.knowledge.interfaces import KINDS, Interfaces, interfaces_of
 from pkgtool.model.ast_nodes import nodes_of_class
-from pkgtool.model.cmake_interfaces import with_included, with_listed
+from pkgtool.model.cmake_interfaces import with_listed
+from pkgtool.model.cmake_text import with_included
 from pkgtool.model.context import interface_file
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package

@@ -9,7 +9,7 @@ from collections.abc import Iterator
 from fnmatch import fnmatch
 
 from pkgtool.model.ast_nodes import TRIES, block_statements
-from pkgtool.model.cmake_interfaces import with_included
+from pkgtool.model.cmake_text import with_included
 from pkgtool.model.installed import installed_files
 from pkgtool.model.memo import per_package
 from pkgtool.model.modules import PythonModule

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from pkgtool.model.cmake_interfaces import installed_sources
+from pkgtool.model.cmake_install import installed_sources
 from pkgtool.model.context import Context, WorkspacePackage
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import classify, installed_code, misspelt_package, needs, own_modules

@@ -6,7 +6,8 @@ import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.cmake_interfaces import tolerated_missing_sources, with_included
+from pkgtool.model.cmake_install import tolerated_missing_sources
+from pkgtool.model.cmake_text import with_included
 from pkgtool.model.installed import cmake_installed
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span

@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 
-from pkgtool.model.cmake_interfaces import listed_interfaces, with_included
+from pkgtool.model.cmake_interfaces import listed_interfaces
+from pkgtool.model.cmake_text import with_included
 from pkgtool.model.context import interface_file
 from pkgtool.model.interface_file import InterfaceFile, read_interface
 from pkgtool.model.memo import per_package

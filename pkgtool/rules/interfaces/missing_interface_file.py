@@ -5,7 +5,8 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.cmake_interfaces import listed_interfaces, with_included
+from pkgtool.model.cmake_interfaces import listed_interfaces
+from pkgtool.model.cmake_text import with_included
 from pkgtool.model.installed import is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span

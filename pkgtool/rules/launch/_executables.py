@@ -5,8 +5,8 @@ from __future__ import annotations
 import posixpath
 import re
 
-from pkgtool.model.cmake_interfaces import (installed_executables, installed_programs,
-                                            with_included)
+from pkgtool.model.cmake_install import installed_executables, installed_programs
+from pkgtool.model.cmake_text import with_included
 from pkgtool.model.installed import is_ament_python
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
