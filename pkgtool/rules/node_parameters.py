@@ -227,6 +227,26 @@ def _declaring_calls(tree: ast.Module, index: Index) -> list[tuple[ast.Call, str
     return found
 
 
+_NODE_USERS = frozenset({"ActionClient", "ActionServer", "TransformListener",
+                         "TransformBroadcaster", "StaticTransformBroadcaster", "Buffer",
+                         "Subscriber", "Cache", "spin", "spin_once",
+                         "spin_until_future_complete"})
+"""Classes and functions of rclpy, tf2_ros and message_filters that take a node and declare
+no parameter on it."""
+_NODE_USER_MODULES = frozenset({"rclpy", "tf2_ros", "message_filters"})
+
+
+def _declares_nothing(call: ast.Call, index: Index) -> bool:
+    """True for a call of :data:`_NODE_USERS` (imported from :data:`_NODE_USER_MODULES`) or
+    an executor's ``add_node``: handed the node, it declares no parameter."""
+    func = call.func
+    if isinstance(func, ast.Attribute) and func.attr == "add_node":
+        return True
+    dotted = index.qualified(func) if isinstance(func, (ast.Name, ast.Attribute)) else None
+    return dotted is not None and dotted.split(".")[0] in _NODE_USER_MODULES and \
+        dotted.rsplit(".", 1)[-1] in _NODE_USERS
+
+
 def _is_self(node: ast.expr) -> bool:
     return isinstance(node, ast.Name) and node.id == "self"
 
@@ -247,7 +267,8 @@ def _node_class(path: str, cls: ast.ClassDef, index: Index, module_skip: str | N
             skip = skip or "it declares a parameter whose name is not known statically"
         else:
             declared.extend(found)
-    if any(_is_self(a) for c in inside for a in (*c.args, *(k.value for k in c.keywords))):
+    if any(_is_self(a) for c in inside if not _declares_nothing(c, index)
+           for a in (*c.args, *(k.value for k in c.keywords))):
         skip = skip or "it hands `self` to other code, which may declare parameters"
     reads = [(n, Span(path, c.lineno, c.col_offset + 1))
              for c in inside if isinstance(c.func, ast.Attribute) and

@@ -25,7 +25,9 @@ def unknown_parameter_in_file(package: Package) -> Iterator[Hit]:
     Skipped when the module uses `allow_undeclared_parameters` or
     `automatically_declare_parameters_from_overrides` (as keywords, or keys of a dict passed
     with `**`), declares a name that is not a literal,
-    when the class derives from another class besides `Node`, or hands `self` to other code.
+    when the class derives from another class besides `Node`, or hands `self` to other code
+    (rclpy's and tf2_ros's helpers that declare nothing aside: `ActionClient(self, ...)`,
+    `TransformListener(buffer, self)`).
     `use_sim_time` and `qos_overrides.*` are never reported. The parameters a Python launch
     file gives a node of this package as a dict (`parameters=[{'period': 1.0}]`, literal
     keys) or as `-p name:=value` arguments (`ros_arguments=['-p', 'period:=1.0']`, or in
