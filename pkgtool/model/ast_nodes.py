@@ -164,6 +164,13 @@ def handler_stops(handler: ast.ExceptHandler) -> bool:
     return isinstance(call, ast.Call) and last_name(call.func) in _EXITS
 
 
+def is_super_init(node: ast.AST) -> bool:
+    """True for a call ``super().__init__(...)`` (``super(C, self).__init__(...)`` too)."""
+    return isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and \
+        node.func.attr == "__init__" and isinstance(node.func.value, ast.Call) and \
+        isinstance(node.func.value.func, ast.Name) and node.func.value.func.id == "super"
+
+
 def last_name(func: ast.expr) -> str:
     """The name a call's function ends in: ``f`` of ``f()``, ``exists`` of
     ``os.path.exists()``; ``""`` for another expression (``make()()``)."""

@@ -27,6 +27,7 @@ from pkgtool.model.cmake_interfaces import with_listed
 from pkgtool.model.cmake_text import with_included
 from pkgtool.model.digest import text_digest
 from pkgtool.model.files import list_files, read_bytes
+from pkgtool.model.manifest import CMAKE_BUILD_TYPES
 from pkgtool.model.memo import per_object
 from pkgtool.records import field, record
 from pkgtool.lazy_regex import lazy_pattern
@@ -168,7 +169,7 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
     interfaces = with_listed(folders, cmake, listed) or {}
     setup_digest = _setup_digest(manifest, listed, setup)
     executables = installed_executables(cmake) if cmake is not None and not setup_digest and \
-        _build_type(manifest) in ("ament_cmake", "cmake") else None
+        _build_type(manifest) in CMAKE_BUILD_TYPES else None
     return WorkspacePackage(name, interfaces, frozenset(modules),
                             _messages(base, name, interfaces, defined), base, setup_digest,
                             _depends(manifest), executables)

@@ -188,15 +188,24 @@ def build_time_folders(package: Package) -> frozenset[str]:
 
 
 @per_package
+def cmake_text(package: Package) -> str | None:
+    """The package's CMakeLists.txt followed by the CMake files it includes
+    (:func:`~pkgtool.model.cmake_text.with_included`), read once per package (several rules
+    ask); None without one."""
+    cmake = package.texts.get("CMakeLists.txt")
+    return None if cmake is None else with_included(cmake, package.texts.get)
+
+
+@per_package
 def cmake_installed(package: Package) -> frozenset[str] | None:
     """The files and folders the CMakeLists.txt of a package colcon builds with CMake installs
     (:func:`~pkgtool.model.cmake_install.installed_sources`), None when not known: a Python
     folder it never installs (a build-time generator, a test helper the tests put on
     ``PYTHONPATH``) is no installed code."""
-    cmake = package.texts.get("CMakeLists.txt")
-    if cmake is None or is_ament_python(package):
+    text = cmake_text(package)
+    if text is None or is_ament_python(package):
         return None
-    return installed_sources(with_included(cmake, package.texts.get), package.files)
+    return installed_sources(text, package.files)
 
 
 @per_package

@@ -9,6 +9,9 @@ from pkgtool.model.xml import XmlElement, parse_xml
 from pkgtool.records import record, replace
 from pkgtool.lazy_regex import lazy_pattern
 
+CMAKE_BUILD_TYPES = frozenset({"ament_cmake", "cmake"})
+"""Build types colcon builds with CMake, from the package's CMakeLists.txt."""
+
 
 @record
 class Text:

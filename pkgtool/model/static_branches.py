@@ -178,8 +178,8 @@ def _ros_version_side(node: ast.expr) -> str | None:
     """``str`` for a read of the environment variable, ``int`` for one through ``int()``,
     ``any`` for a name or attribute called ``ROS_VERSION``; None for anything else."""
     if isinstance(node, ast.Call) and _is_name(node.func, "int") and len(node.args) == 1:
-        return "int" if _reads_variable(node.args[0], _ROS_VERSION) else None
-    if _reads_variable(node, _ROS_VERSION):
+        return "int" if reads_environment(node.args[0], _ROS_VERSION) else None
+    if reads_environment(node, _ROS_VERSION):
         return "str"
     if (isinstance(node, ast.Name) and node.id == _ROS_VERSION) or (
             isinstance(node, ast.Attribute) and node.attr == _ROS_VERSION):
@@ -290,16 +290,10 @@ _ROS_DISTRO_VARIABLE = "ROS_DISTRO"
 def _reads_ros_distro(node: ast.AST) -> bool:
     """``os.environ['ROS_DISTRO']``, ``os.environ.get('ROS_DISTRO', ...)``, ``os.getenv(...)``
     (also through ``from os import environ, getenv``)."""
-    return _reads_variable(node, _ROS_DISTRO_VARIABLE)
+    return reads_environment(node, _ROS_DISTRO_VARIABLE)
 
 
 def reads_environment(node: ast.AST, variable: str) -> bool:
-    """``node`` reads the environment variable ``variable`` (``os.environ[...]``,
-    ``os.environ.get``, ``os.getenv``)."""
-    return _reads_variable(node, variable)
-
-
-def _reads_variable(node: ast.AST, variable: str) -> bool:
     """``node`` reads the environment variable ``variable`` (as :func:`_reads_ros_distro`)."""
     if isinstance(node, ast.Subscript):
         return _is_environ(node.value) and _names(node.slice, variable)

@@ -17,8 +17,8 @@ import ast
 from pkgtool.knowledge.interfaces import KINDS, Interfaces, interfaces_of
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.cmake_interfaces import with_listed
-from pkgtool.model.cmake_text import with_included
 from pkgtool.model.context import interface_file
+from pkgtool.model.installed import cmake_text
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.rules.syntax_trees import installed_modules
@@ -35,10 +35,8 @@ def own_interfaces(package: Package) -> Interfaces | None:
     found: dict[str, set[str]] = {}
     for kind, name in filter(None, map(interface_file, package.files)):
         found.setdefault(kind, set()).add(name)
-    cmake = package.texts.get("CMakeLists.txt")
     return with_listed({kind: frozenset(names) for kind, names in found.items()},
-                       None if cmake is None else with_included(cmake, package.texts.get),
-                       package.files)
+                       cmake_text(package), package.files)
 
 
 def ros1_layout(interfaces: Interfaces) -> Interfaces:

@@ -10,6 +10,7 @@ from __future__ import annotations
 import ast
 from collections.abc import Collection, Iterator
 
+from pkgtool.model.ast_nodes import is_super_init
 from pkgtool.model.memo import per_package, per_tree
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
@@ -195,10 +196,7 @@ def node_constructions(index: Index) -> Iterator[ast.Call]:
     node_classes = {id(c) for c in index.classes
                     if any(index.qualified(b) in NODE_CLASSES for b in c.bases)}
     for call in index.calls:
-        if isinstance(call.func, ast.Attribute) and call.func.attr == "__init__" and \
-                isinstance(call.func.value, ast.Call) and \
-                getattr(call.func.value.func, "id", "") == "super" and \
-                id(index.enclosing_class(call)) in node_classes:
+        if is_super_init(call) and id(index.enclosing_class(call)) in node_classes:
             yield call
     yield from (c for c in index.calls if index.qualified(c.func) in NODE_CLASSES)
 

@@ -9,8 +9,8 @@ from collections.abc import Iterator
 from fnmatch import fnmatch
 
 from pkgtool.model.ast_nodes import TRIES, block_statements
-from pkgtool.model.cmake_text import with_included
-from pkgtool.model.installed import installed_files
+from pkgtool.model.installed import cmake_text, installed_files
+from pkgtool.model.manifest import CMAKE_BUILD_TYPES
 from pkgtool.model.memo import per_package
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package, is_test_material
@@ -104,10 +104,10 @@ def _cmake_script(package: Package, path: str) -> bool:
     there, which runs only the tests CMakeLists.txt registers (``ament_add_pytest_test``),
     never pytest's own search."""
     build_type = package.manifest.build_type if package.manifest else None
-    if build_type is None or build_type.value not in ("ament_cmake", "cmake") or \
+    if build_type is None or build_type.value not in CMAKE_BUILD_TYPES or \
             is_test_material(path) or posixpath.basename(path) == "conftest.py":
         return False
-    cmake = with_included(package.texts.get("CMakeLists.txt", ""), package.texts.get)
+    cmake = cmake_text(package) or ""
     name = posixpath.basename(path)
     return name not in cmake or re.search(
         rf"(?i)\binstall\s*\(\s*PROGRAMS\b[^)]*\b{re.escape(name)}\b", cmake) is not None

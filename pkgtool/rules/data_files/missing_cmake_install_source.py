@@ -7,8 +7,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.cmake_install import tolerated_missing_sources
-from pkgtool.model.cmake_text import with_included
-from pkgtool.model.installed import cmake_installed
+from pkgtool.model.installed import cmake_installed, cmake_text
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.submodules import ignored, under
@@ -49,8 +48,7 @@ def missing_cmake_install_source(package: Package) -> Iterator[Hit]:
     """
     sources = cmake_installed(package)
     text = package.texts.get("CMakeLists.txt", "")
-    tolerated = tolerated_missing_sources(with_included(text, package.texts.get)) \
-        if sources else frozenset()
+    tolerated = tolerated_missing_sources(cmake_text(package) or "") if sources else frozenset()
     for source in sorted(sources or ()):
         if source in ("", ".") or package.has_file(source) or is_folder(package, source) or \
                 source in tolerated or ignored(source, package.ignores) or \

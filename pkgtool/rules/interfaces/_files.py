@@ -4,8 +4,8 @@ from __future__ import annotations
 
 
 from pkgtool.model.cmake_interfaces import listed_interfaces
-from pkgtool.model.cmake_text import with_included
 from pkgtool.model.context import interface_file
+from pkgtool.model.installed import cmake_text
 from pkgtool.model.interface_file import InterfaceFile, read_interface
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package, is_interface_definition
@@ -57,8 +57,8 @@ def built_interface_files(package: Package) -> tuple[InterfaceFile, ...]:
     passes to ``rosidl_generate_interfaces`` (literally, through variables it sets, or by
     its globs). None of an ament_python package (IFC004's business) nor of one whose listing
     cannot be read: a file left out of the list is never parsed (a course's template)."""
-    cmake = package.texts.get("CMakeLists.txt")
+    cmake = cmake_text(package)
     if cmake is None:
         return ()
-    listed = listed_interfaces(with_included(cmake, package.texts.get), package.files).files
+    listed = listed_interfaces(cmake, package.files).files
     return tuple(found for found in interface_files(package) if found.path in listed)

@@ -6,8 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.cmake_interfaces import listed_interfaces
-from pkgtool.model.cmake_text import with_included
-from pkgtool.model.installed import is_ament_python
+from pkgtool.model.installed import cmake_text, is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.submodules import ignored, under
@@ -52,7 +51,7 @@ def missing_interface_file(package: Package) -> Iterator[Hit]:
     cmake = package.texts.get("CMakeLists.txt")
     if cmake is None or "rosidl_generate_interfaces" not in cmake or is_ament_python(package):
         return
-    text = with_included(cmake, package.texts.get)
+    text = cmake_text(package) or ""
     if _REBUILT_LIST.search(text):
         return  # a list rebuilt by a loop or list() (names given folders later): not read
     listed = listed_interfaces(text, package.files)

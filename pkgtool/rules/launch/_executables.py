@@ -6,8 +6,7 @@ import posixpath
 import re
 
 from pkgtool.model.cmake_install import installed_executables, installed_programs
-from pkgtool.model.cmake_text import with_included
-from pkgtool.model.installed import is_ament_python
+from pkgtool.model.installed import cmake_text, is_ament_python
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.scripts import library_entries, script_names, sibling_executables
@@ -51,10 +50,9 @@ def cmake_programs(package: Package) -> dict[str, str]:
     """Executable names a launch file may mean for the scripts a CMake package installs with
     ``install(PROGRAMS x.py ...)`` under their file names (``x`` -> ``x.py``), when its CMake
     files name ``x`` nowhere else (a target, a ``RENAME``, a component's ``EXECUTABLE``)."""
-    cmake = package.texts.get("CMakeLists.txt")
-    if cmake is None or is_ament_python(package):
+    text = cmake_text(package)
+    if text is None or is_ament_python(package):
         return {}
-    text = with_included(cmake, package.texts.get)
     return {name[:-3]: name for name in installed_programs(text)
             if name.endswith(".py") and
             not re.search(rf"(?<![\w./-]){re.escape(name[:-3])}(?![\w.-])", text)}
@@ -64,10 +62,10 @@ def cmake_programs(package: Package) -> dict[str, str]:
 def cmake_executables(package: Package) -> frozenset[str] | None:
     """The executables a package CMake builds installs into ``lib/<package>``, when its
     CMakeLists.txt says so for certain (:func:`installed_executables`); None otherwise."""
-    cmake = package.texts.get("CMakeLists.txt")
-    if cmake is None or is_ament_python(package):
+    text = cmake_text(package)
+    if text is None or is_ament_python(package):
         return None
-    return installed_executables(with_included(cmake, package.texts.get))
+    return installed_executables(text)
 
 
 def console_scripts(package: Package) -> frozenset[str] | None:
@@ -86,9 +84,9 @@ def installs_program(package: Package, owner: str, name: str) -> bool:
     called ``name`` into ``lib/<owner>`` as far as pkgtool can tell: a console script or file
     setup.py installs there, or a target or program of its CMakeLists.txt."""
     if owner == package.name:
-        cmake = package.texts.get("CMakeLists.txt")
-        programs = installed_programs(with_included(cmake, package.texts.get)) \
-            if cmake is not None and not is_ament_python(package) else frozenset()
+        text = cmake_text(package)
+        programs = installed_programs(text) \
+            if text is not None and not is_ament_python(package) else frozenset()
         return name in programs or name in (executables(package, any_data=True) or ()) or \
             name in (cmake_executables(package) or ())
     sibling = package.context.workspace.get(owner)

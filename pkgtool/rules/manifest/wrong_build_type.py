@@ -5,15 +5,12 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.manifest import CMAKE_BUILD_TYPES
 from pkgtool.model.package import Package
 from pkgtool.model.submodules import under
 from pkgtool.rules.manifest.common import build_types, tree
 from pkgtool.rules.manifest.schema import token
 from pkgtool.rules.registry import rule
-
-
-_CMAKE_TYPES = frozenset({"ament_cmake", "cmake"})
-"""Build types colcon builds with CMake, from the package's CMakeLists.txt."""
 
 
 @rule("MAN016", "wrong-build-type", Severity.ERROR,
@@ -63,7 +60,7 @@ def wrong_build_type(package: Package) -> Iterator[Hit]:
             not package.has_file("CMakeLists.txt"):
         declared = f"Build type `{kind}`" if kind else "Empty `<build_type>`"
         yield Hit(element.span, f"{declared} but the package has setup.py and no CMakeLists.txt")
-    elif kind in _CMAKE_TYPES and not package.has_file("CMakeLists.txt") and \
+    elif kind in CMAKE_BUILD_TYPES and not package.has_file("CMakeLists.txt") and \
             not under("CMakeLists.txt", package.unfetched):
         yield Hit(element.span, f"Build type `{kind}` but the package has no CMakeLists.txt: "
                   "colcon build stops (\"The source directory does not appear to contain "

@@ -6,7 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.ast_nodes import is_super_init, nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import NODE_CLASSES, name_argument, node_constructions, unpacks
@@ -38,9 +38,7 @@ def _reaches_another_base(call: ast.Call, index: Index) -> bool:
     """True for ``super().__init__()`` in a class whose first base is not the node class it
     initialises by name in the same method (``class W(Thread, Node)``: ``super().__init__()``
     is ``Thread.__init__``, then ``Node.__init__(self, 'worker')``)."""
-    func = call.func
-    if not (isinstance(func, ast.Attribute) and isinstance(func.value, ast.Call) and
-            isinstance(func.value.func, ast.Name) and func.value.func.id == "super"):
+    if not is_super_init(call):
         return False
     init = index.enclosing_function(call)
     cls = index.parents.get(id(init)) if init is not None else None

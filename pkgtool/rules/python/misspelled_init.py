@@ -7,7 +7,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import is_typo
-from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.ast_nodes import is_super_init, nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
@@ -25,10 +25,7 @@ def _init_like(name: str) -> bool:
 
 def _runs_base_init(method: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
     """True when the method calls ``super().__init__(...)`` (or ``super(C, self).__init__``)."""
-    return any(isinstance(call.func, ast.Attribute) and call.func.attr == "__init__" and
-               isinstance(call.func.value, ast.Call) and
-               isinstance(call.func.value.func, ast.Name) and call.func.value.func.id == "super"
-               for call in nodes_of_class(method, ast.Call) if isinstance(call, ast.Call))
+    return any(is_super_init(call) for call in nodes_of_class(method, ast.Call))
 
 
 @rule("PYC062", "misspelled-init", Severity.ERROR, fix="Name the method `__init__`")

@@ -8,6 +8,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
+from pkgtool.model.ast_nodes import is_super_init
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
@@ -118,11 +119,7 @@ def _super_init_arguments(cls: ast.ClassDef) -> tuple[ast.AST, str] | None:
     for statement in cls.body:
         if isinstance(statement, ast.FunctionDef) and statement.name == "__init__":
             for node in ast.walk(statement):
-                if isinstance(node, ast.Call) and (node.args or node.keywords) and \
-                        isinstance(node.func, ast.Attribute) and node.func.attr == "__init__" \
-                        and isinstance(node.func.value, ast.Call) and \
-                        isinstance(node.func.value.func, ast.Name) and \
-                        node.func.value.func.id == "super":
+                if is_super_init(node) and (node.args or node.keywords):  # type: ignore
                     return node, f"`{ast.unparse(node)}` passes arguments to " \
                         "`object.__init__`, which takes none (TypeError)"
     return None
