@@ -199,3 +199,23 @@ def test_bad_setup_py_never_raises(tmp_path: Path, content: bytes) -> None:
     codes = [c for c in load_all() if c.startswith(FAMILIES)]
     for finding in findings(load_package(root), *codes):
         assert finding.span.path in ("setup.py", "package.xml")
+
+
+@pytest.mark.parametrize(("finder", "init", "hides"), [
+    ("find_packages(exclude=['test'])", True, True),
+    ("find_namespace_packages(exclude=['test'])", False, False),
+])
+def test_a_launch_folder_hides_launch_only_as_a_regular_package(
+        tmp_path: Path, finder: str, init: bool, hides: bool) -> None:
+    """A `launch/` folder installed as a package: with `__init__.py` it is a regular package
+    that comes before ROS 2's `launch`; without, a namespace package, which hides nothing."""
+    files = ros2_pkg_create("my_pkg", finder)
+    files["setup.py"] = str(files["setup.py"]).replace(
+        "from setuptools import find_packages, setup",
+        "from setuptools import find_namespace_packages, find_packages, setup")
+    files["launch/demo.launch.py"] = LAUNCH.format("my_pkg")
+    if init:
+        files["launch/__init__.py"] = ""
+    found = [p for p in problems(tmp_path / "my_pkg", files)
+             if p.startswith("SET014") and "the folder `launch`" in p]
+    assert len(found) == 1 and ("hides the real `launch` module" in found[0]) == hides, found
