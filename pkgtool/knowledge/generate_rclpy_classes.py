@@ -35,7 +35,8 @@ CLASSES = ("rclpy.publisher.Publisher", "rclpy.subscription.Subscription",
            "rclpy.qos.ReliabilityPolicy", "rclpy.qos.HistoryPolicy",
            "rclpy.qos.DurabilityPolicy", "rclpy.qos.LivelinessPolicy",
            "rclpy.executors.SingleThreadedExecutor", "rclpy.executors.MultiThreadedExecutor",
-           "rclpy.action.client.ActionClient", "rclpy.action.server.ActionServer",
+           "rclpy.action.client.ActionClient", "rclpy.action.client.ClientGoalHandle",
+           "rclpy.action.server.ActionServer",
            "rclpy.action.server.GoalResponse", "rclpy.action.server.CancelResponse")
 """The classes whose attributes the table holds."""
 INSTALLED = "installed"

@@ -1,6 +1,6 @@
 """The rclpy class an expression's value certainly is (PYC004): what a node's ``create_*``
-methods make, its clock and that clock's times, futures of service calls, times, durations and
-the executors rclpy provides.
+methods make, its clock and that clock's times, futures of service calls, times, durations,
+the executors rclpy provides, and an action client's goal futures and goal handles.
 
 A node is ``self`` in a plain method of a class deriving from ``rclpy.node.Node`` alone, or
 what ``Node(...)``/``rclpy.create_node(...)`` makes; a future, also the parameter of a done
@@ -31,6 +31,11 @@ ACTIONS = {f"rclpy.action{where}.Action{kind}": f"rclpy.action.{kind.lower()}.Ac
 """rclpy's action client and server classes by every name they are imported by."""
 CLOCK = "rclpy.clock.ROSClock"
 """A node's clock (a ``Clock`` made for ROS time is one too: the class with most)."""
+ACTION_CLIENT = "rclpy.action.client.ActionClient"
+GOAL_HANDLE = "rclpy.action.client.ClientGoalHandle"
+GOAL_FUTURE = f"{FUTURE}<ClientGoalHandle>"
+"""The future ``ActionClient.send_goal_async`` returns: a ``Future`` whose result is the goal's
+``ClientGoalHandle`` (the one future whose result's class is certain)."""
 _MADE_BY = {
     (NODE, "create_publisher"): "rclpy.publisher.Publisher",
     (NODE, "create_subscription"): "rclpy.subscription.Subscription",
@@ -38,6 +43,8 @@ _MADE_BY = {
     (NODE, "create_client"): "rclpy.client.Client",
     (NODE, "create_service"): "rclpy.service.Service", (NODE, "get_clock"): CLOCK,
     (CLOCK, "now"): TIME, ("rclpy.client.Client", "call_async"): FUTURE,
+    (ACTION_CLIENT, "send_goal_async"): GOAL_FUTURE, (GOAL_FUTURE, "result"): GOAL_HANDLE,
+    (GOAL_HANDLE, "get_result_async"): FUTURE, (GOAL_HANDLE, "cancel_goal_async"): FUTURE,
 }
 """(class, method) -> the class of what the method returns (Humble to Rolling)."""
 _CONSTRUCTED = {NODE: NODE, "rclpy.create_node": NODE, TIME: TIME, DURATION: DURATION,
@@ -131,6 +138,11 @@ def _node_self(name: ast.Name, index: Index) -> bool:
     """True for ``self`` in a plain method of a class deriving from rclpy's Node alone."""
     cls = receiver_class(name, index)
     return cls is not None and derives_from_node_alone(cls, index)
+
+
+def table_class(cls: str) -> str:
+    """The class whose attributes ``cls`` has (a :data:`GOAL_FUTURE` is a ``Future``)."""
+    return cls.partition("<")[0]
 
 
 def _one(classes: set[str | None]) -> str | None:

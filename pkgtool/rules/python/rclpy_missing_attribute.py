@@ -19,7 +19,7 @@ from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.python._callbacks import callback_arguments
 from pkgtool.rules.python._code_and_tests import code_and_test_indexes
 from pkgtool.rules.python._message_instances import callback_function
-from pkgtool.rules.python._rclpy_objects import object_class
+from pkgtool.rules.python._rclpy_objects import object_class, table_class
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings
 from pkgtool.rules.syntax_trees import Index, installed_trees, resolved_attributes
@@ -167,7 +167,7 @@ def _object_reads(package: Package) -> Iterator[Hit]:
             if enum is not None and not _MEMBER.fullmatch(node.attr):
                 continue
             cls = enum or object_class(node.value, package, tree, index)
-            known = attributes_of(cls) if cls is not None else None
+            known = attributes_of(table_class(cls)) if cls is not None else None
             if cls is not None and node.attr in PROPERTIES.get(cls, ()) and \
                     _called(node, index):
                 owner = _owner(node.value)
@@ -180,7 +180,7 @@ def _object_reads(package: Package) -> Iterator[Hit]:
                     index.in_unevaluated_annotation(node):
                 continue
             shown = shortened(ast.unparse(node.value))
-            use = missing_attribute(cls, node.attr) if cls else None
+            use = missing_attribute(table_class(cls), node.attr) if cls else None
             close = get_close_matches(node.attr, sorted(a for a in known if a[0] != "_"), n=1)
             kind = "the enum" if enum else "an rclpy"
             owner = _owner(node.value)
