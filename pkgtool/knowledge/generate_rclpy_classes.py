@@ -36,6 +36,7 @@ CLASSES = ("rclpy.publisher.Publisher", "rclpy.subscription.Subscription",
            "rclpy.qos.DurabilityPolicy", "rclpy.qos.LivelinessPolicy",
            "rclpy.executors.SingleThreadedExecutor", "rclpy.executors.MultiThreadedExecutor",
            "rclpy.action.client.ActionClient", "rclpy.action.client.ClientGoalHandle",
+           "rclpy.parameter.Parameter",
            "rclpy.action.server.ActionServer",
            "rclpy.action.server.GoalResponse", "rclpy.action.server.CancelResponse")
 """The classes whose attributes the table holds."""

@@ -16,9 +16,14 @@ _CLASSES = {
     "rclpy.timer.Timer": (),
     "rclpy.service.Service": (),
     "rclpy.task.Future": (),
+    "rclpy.parameter.Parameter": (),
 }
 """Canonical class path -> other import paths of the same class."""
 
+_PARAMETER_VALUE_FIELDS = tuple(f"{kind}_value" for kind in (
+    "bool", "integer", "double", "string", "byte_array", "bool_array", "integer_array",
+    "double_array", "string_array"))
+"""The fields of the ``ParameterValue`` message, which a ``Parameter`` does not have."""
 _MISSING: dict[str, dict[str, str]] = {
     "rclpy.action.ActionClient": {
         "GoalStatus": "`from action_msgs.msg import GoalStatus`"},
@@ -61,6 +66,11 @@ _MISSING: dict[str, dict[str, str]] = {
         "call_async": "a client: `node.create_client(...)`, then `client.call_async(request)`",
         "wait_for_service": "a client's `wait_for_service()`: a service does not wait for "
                             "itself"},
+    "rclpy.parameter.Parameter": {
+        **{field: f"`parameter.value`, or `parameter.get_parameter_value().{field}`"
+           for field in _PARAMETER_VALUE_FIELDS},
+        "get_value": "`parameter.value`",
+        "parameter_value": "`parameter.get_parameter_value()`"},
     "rclpy.task.Future": {
         "get_result": "`future.result()`",
         "get": "`future.result()`",

@@ -126,11 +126,13 @@ def test_rclpy_names_table_knows_every_name_of_the_installed_rclpy() -> None:
 @pytest.mark.ros
 def test_rclpy_classes_table_knows_every_attribute_of_real_objects() -> None:
     """No false error: every public attribute of the objects a real (Jazzy) node makes, its
-    clock, times, durations and futures, of the executors, action clients and servers, and of
-    rclpy's enums, is in PYC004's table (PYC004 never reports a name starting with ``_``)."""
+    clock, times, durations, futures and parameters, of the executors, action clients, their
+    goal handles and servers, and of rclpy's enums, is in PYC004's table (PYC004 never reports a name starting with ``_``)."""
     import rclpy
     from rclpy.duration import Duration
     from rclpy.action import ActionClient, ActionServer, CancelResponse, GoalResponse
+    from rclpy.action.client import ClientGoalHandle
+    from unique_identifier_msgs.msg import UUID
     from rclpy.executors import MultiThreadedExecutor, SingleThreadedExecutor
     from rclpy.node import Node
     from rclpy.qos import DurabilityPolicy, HistoryPolicy, LivelinessPolicy, ReliabilityPolicy
@@ -158,7 +160,11 @@ def test_rclpy_classes_table_knows_every_attribute_of_real_objects() -> None:
                 "rclpy.executors.MultiThreadedExecutor": MultiThreadedExecutor(context=context),
                 "rclpy.action.client.ActionClient": ActionClient(node, Fibonacci, "probe"),
                 "rclpy.action.server.ActionServer": ActionServer(node, Fibonacci, "probe",
-                                                                 execute_callback=print)}
+                                                                 execute_callback=print),
+                "rclpy.parameter.Parameter": node.declare_parameter("probe", 1.0)}
+        made["rclpy.action.client.ClientGoalHandle"] = ClientGoalHandle(
+            made["rclpy.action.client.ActionClient"], UUID(),
+            Fibonacci.Impl.SendGoalService.Response())
         made.update({f"rclpy.qos.{enum.__name__}": enum for enum in
                      (ReliabilityPolicy, HistoryPolicy, DurabilityPolicy, LivelinessPolicy)})
         made.update({f"rclpy.action.server.{enum.__name__}": enum for enum in

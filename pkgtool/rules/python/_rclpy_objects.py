@@ -1,6 +1,7 @@
 """The rclpy class an expression's value certainly is (PYC004): what a node's ``create_*``
 methods make, its clock and that clock's times, futures of service calls, times, durations,
-the executors rclpy provides, and an action client's goal futures and goal handles.
+the executors rclpy provides, a node's parameters, and an action client's goal futures and
+goal handles.
 
 A node is ``self`` in a plain method of a class deriving from ``rclpy.node.Node`` alone, or
 what ``Node(...)``/``rclpy.create_node(...)`` makes; a future, also the parameter of a done
@@ -33,6 +34,7 @@ CLOCK = "rclpy.clock.ROSClock"
 """A node's clock (a ``Clock`` made for ROS time is one too: the class with most)."""
 ACTION_CLIENT = "rclpy.action.client.ActionClient"
 GOAL_HANDLE = "rclpy.action.client.ClientGoalHandle"
+PARAMETER = "rclpy.parameter.Parameter"
 GOAL_FUTURE = f"{FUTURE}<ClientGoalHandle>"
 """The future ``ActionClient.send_goal_async`` returns: a ``Future`` whose result is the goal's
 ``ClientGoalHandle`` (the one future whose result's class is certain)."""
@@ -44,12 +46,14 @@ _MADE_BY = {
     (NODE, "create_service"): "rclpy.service.Service", (NODE, "get_clock"): CLOCK,
     (CLOCK, "now"): TIME, ("rclpy.client.Client", "call_async"): FUTURE,
     (ACTION_CLIENT, "send_goal_async"): GOAL_FUTURE, (GOAL_FUTURE, "result"): GOAL_HANDLE,
+    (NODE, "declare_parameter"): PARAMETER, (NODE, "get_parameter"): PARAMETER,
+    (NODE, "get_parameter_or"): PARAMETER,
     (GOAL_HANDLE, "get_result_async"): FUTURE, (GOAL_HANDLE, "cancel_goal_async"): FUTURE,
 }
 """(class, method) -> the class of what the method returns (Humble to Rolling)."""
 _CONSTRUCTED = {NODE: NODE, "rclpy.create_node": NODE, TIME: TIME, DURATION: DURATION,
                 "rclpy.time.Duration": DURATION, "rclpy.clock.Clock": CLOCK, CLOCK: CLOCK,
-                FUTURE: FUTURE,
+                FUTURE: FUTURE, PARAMETER: PARAMETER,
                 f"{TIME}.from_msg": TIME, f"{DURATION}.from_msg": DURATION,
                 **{executor: executor for executor in EXECUTORS}, **ACTIONS}
 """What calling an rclpy class or factory makes."""

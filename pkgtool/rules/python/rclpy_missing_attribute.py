@@ -51,14 +51,19 @@ def rclpy_missing_attribute(package: Package) -> Iterator[Hit]:
     stores an attribute on it. And reads of attributes missing on the objects a node makes,
     often rospy habits: `self.timer.start()`, `self.pub.get_num_connections()`,
     `self.get_clock().now().to_sec()`, `executor.spin_some()`, `stamp.sec` on an rclpy
-    `Time`, `(now - start).to_sec()` on a `Duration`, `future.get_result()`, and enum
+    `Time`, `(now - start).to_sec()` on a `Duration`, `future.get_result()`,
+    `self.get_parameter('rate').double_value` (a `Parameter` has `value` and
+    `get_parameter_value()`), `goal_handle.is_accepted` on the goal handle an action client's
+    goal future holds, and enum
     members that do not exist (`QoSReliabilityPolicy.RELIABLE_RELIABLE`); and calls of a
     property that holds a value (`(now - start).nanoseconds()`: an int). The object's class
     must be certain: what
     `self.create_publisher/subscription/timer/rate/client/service()` or `self.get_clock()`
     return in a class deriving from rclpy's `Node` alone (one that does not define the method
-    itself), a clock's `now()`, `Time(...)`, `Duration(...)`, an executor
-    (`SingleThreadedExecutor()`, `MultiThreadedExecutor()`), a client's `call_async()`, the
+    itself), `self.declare_parameter()`/`get_parameter()`/`get_parameter_or()`, a clock's
+    `now()`, `Time(...)`, `Duration(...)`, `Parameter(...)`, an executor
+    (`SingleThreadedExecutor()`, `MultiThreadedExecutor()`), a client's `call_async()`, an
+    action client's `send_goal_async()`, the result of that future, the
     future a done callback gets, a parameter annotated with one of these classes (`future:
     Future`) and never rebound, and local names or `self.x` every assignment of which gives
     one class (`None` placeholders aside). Attributes are checked against the union of
