@@ -210,7 +210,7 @@ def method_receiver(method: ast.AST) -> str | None:
         return None
     positional = [*method.args.posonlyargs, *method.args.args]
     if not positional or _names(method).counts[positional[0].arg] != 1 or \
-            _annotated_otherwise(positional[0], method):
+            positional[0].arg != "self" or _annotated_otherwise(positional[0], method):
         return None
     return positional[0].arg
 

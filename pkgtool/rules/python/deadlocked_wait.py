@@ -32,6 +32,18 @@ _MULTI_THREADED = frozenset({"rclpy.executors.MultiThreadedExecutor"})
 """The executor that runs a Rate's timer while a callback sleeps on it."""
 
 
+def _spin_handed_over(call: ast.Call) -> bool:
+    """True for a call handing a spin function over to run (``Thread(target=rclpy.spin,
+    args=(node,))``, ``pool.submit(executor.spin)``), however the thread class was imported
+    (a star import may bring ``threading``)."""
+    values = [*call.args, *(k.value for k in call.keywords)]
+    return any(isinstance(v, ast.Attribute) and v.attr in _SPIN_NAMES or
+               isinstance(v, ast.Name) and v.id in _SPIN_NAMES for v in values)
+
+
+_SPIN_NAMES = frozenset({"spin", "spin_once", "spin_until_future_complete"})
+
+
 def _rate_made(value: ast.expr | None) -> bool:
     """True for a call ``<x>.create_rate(...)``."""
     return isinstance(value, ast.Call) and isinstance(value.func, ast.Attribute) and \
@@ -269,7 +281,8 @@ def deadlocked_wait(package: Package) -> Iterator[Hit]:
                              f"spins the node inside its own callback `{function.name}`: what "
                              "it waits for is never delivered (it returns at its timeout, if "
                              "any, with no result)", cause=spin_cause(where))
-    if any(i.top_level in _THREADS for module, _, _ in trees for i in module.imports):
+    if any(i.top_level in _THREADS for module, _, _ in trees for i in module.imports) or \
+            any(_spin_handed_over(call) for _, _, i in trees for call in i.calls):
         return
     if not any(i.qualified(n) in _MULTI_THREADED for _, _, i in trees for n in i.attributes) \
             and not any(f.module == "rclpy.executors" and any(
