@@ -12,6 +12,7 @@ from pkgtool.model.ast_nodes import last_name, nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
+from pkgtool.rules.launch._frontend_text import without_comments
 from pkgtool.rules.registry import rule
 from pkgtool.rules.launch._python_launch import text_argument
 from pkgtool.rules.syntax_trees import python_launch_files
@@ -63,7 +64,8 @@ def misspelled_launch_argument(package: Package) -> Iterator[Hit]:
     """
     files = [(path, parse_tree(path, text), text) for path, _, text in
              python_launch_files(package)]
-    frontends = [(launch.path, text) for launch in package.launch_files
+    frontends = [(launch.path, without_comments(text, launch.kind))
+                 for launch in package.launch_files
                  if launch.kind in ("xml", "yaml") and launch.problem is None and
                  (text := package.texts.get(launch.path)) is not None]
     declared_anywhere = {name for _, text in frontends for pattern in _FRONTEND_DECLARED

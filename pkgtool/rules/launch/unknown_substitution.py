@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 from difflib import get_close_matches
 
@@ -10,19 +9,12 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.launch_api import FRONTEND_SUBSTITUTIONS, ROS1_SUBSTITUTIONS
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.rules.launch._frontend_text import without_comments
 from pkgtool.rules.registry import rule
 from pkgtool.lazy_regex import lazy_pattern
 
 SUBSTITUTION = lazy_pattern(r"\$\(\s*([A-Za-z_][\w-]*)")
 """The start of a ``$(name ...)`` substitution, and its name."""
-
-_COMMENTS = {"xml": re.compile(r"<!--.*?-->", re.DOTALL), "yaml": re.compile(r"(?m)(?:^|\s)#.*$")}
-"""Comments, where a ``$(`` is no substitution."""
-
-
-def _blank(comment: re.Match[str]) -> str:
-    """A comment's text as spaces, its line breaks kept (offsets and lines stay)."""
-    return re.sub(r"[^\n]", " ", comment.group(0))
 
 
 def ros2_substitution(name: str) -> str | None:
@@ -73,7 +65,7 @@ def unknown_substitution(package: Package) -> Iterator[Hit]:
         text = package.texts.get(launch.path)
         if launch.kind not in ("xml", "yaml") or launch.problem is not None or text is None:
             continue
-        for found in SUBSTITUTION.finditer(_COMMENTS[launch.kind].sub(_blank, text)):
+        for found in SUBSTITUTION.finditer(without_comments(text, launch.kind)):
             name = found.group(1)
             meant = ros2_substitution(name)
             if meant is None:
