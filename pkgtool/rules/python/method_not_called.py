@@ -15,6 +15,7 @@ from pkgtool.rules.python._assignments import (assigned_values, done_callback_fu
 from pkgtool.rules.python._loggers import LEVELS
 from pkgtool.rules.python._value_types import receiver_class
 from pkgtool.rules.registry import rule
+from pkgtool.rules.scopes import bound_names
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
 METHODS = {"future": frozenset({"result", "done", "exception", "cancelled"}),
@@ -123,7 +124,22 @@ def _logs_through(node: ast.Attribute, index: Index) -> bool:
     return node.attr == "get_logger" and index.qualified(node) is None and \
         isinstance(parent, ast.Attribute) and \
         parent.attr in LEVELS and isinstance(call, ast.Call) and call.func is parent \
-        and not index.defines_function("get_logger")
+        and not index.defines_function("get_logger") and not _stray_self(node.value, index)
+
+
+def _stray_self(value: ast.expr, index: Index) -> bool:
+    """True for ``self`` (or ``self.x``) where no function around binds ``self`` (in a
+    module-level ``main()``): the NameError PYC001 reports comes first."""
+    while isinstance(value, ast.Attribute):
+        value = value.value
+    if not isinstance(value, ast.Name) or value.id != "self":
+        return False
+    function = index.enclosing_function(value)
+    while function is not None:
+        if "self" in bound_names(function):
+            return False
+        function = index.enclosing_function(function)
+    return True
 
 
 def _uncalled_methods(package: Package, tree: ast.Module, index: Index
