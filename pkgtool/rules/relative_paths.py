@@ -11,8 +11,9 @@ def package_file_named(text: str, package: Package, *, absent: bool = False
                        ) -> tuple[str, bool] | None:
     """The file of ``package`` a relative path names, and whether it is written from a
     workspace's or a repository's folder (``src/<name>/config/x.yaml``,
-    ``<name>/config/x.yaml``, ``ws/src/<name>/...``, ``robots/<name>/...``) rather than from the package's own (``config/x.yaml``); None for
-    an absolute path or one naming no file of the package. With ``absent``, a path through
+    ``<name>/config/x.yaml``, ``ws/src/<name>/...``, ``robots/<name>/...``) rather than
+    from the package's own (``config/x.yaml``); None for an absolute path or one naming no
+    file of the package. With ``absent``, a path through
     a workspace's ``src/<name>/`` names a file of the package even when the package lacks it
     (a model kept out of git: the path still reads the source tree)."""
     if not text or posixpath.isabs(text) or text.startswith(("~", "$")):

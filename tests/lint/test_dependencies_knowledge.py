@@ -127,7 +127,8 @@ def test_rclpy_names_table_knows_every_name_of_the_installed_rclpy() -> None:
 def test_rclpy_classes_table_knows_every_attribute_of_real_objects() -> None:
     """No false error: every public attribute of the objects a real (Jazzy) node makes, its
     clock, times, durations, futures and parameters, of the executors, action clients, their
-    goal handles and servers, and of rclpy's enums, is in PYC004's table (PYC004 never reports a name starting with ``_``)."""
+    goal handles and servers, and of rclpy's enums, is in PYC004's table (PYC004 never
+    reports a name starting with ``_``)."""
     import rclpy
     from rclpy.duration import Duration
     from rclpy.action import ActionClient, ActionServer, CancelResponse, GoalResponse

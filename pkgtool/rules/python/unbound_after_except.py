@@ -87,26 +87,34 @@ def _flag_after(name: str, node: ast.Try) -> set[str]:
             bound_names(node.body)[flag] == 1}
 
 
-def _guarded(use: ast.Name, name: str, node: ast.Try, rest: list[ast.stmt],
-             index: Index) -> bool:
-    """True when ``use`` runs only while a flag of :func:`_flag_after` is truthy: under
-    ``if ok:``/``if ok is not None:``, or after ``if not ok: return``."""
+def _guarded(use: ast.Name, name: str, node: ast.Try, going_on: list[ast.ExceptHandler],
+             rest: list[ast.stmt], index: Index) -> bool:
+    """True when ``use`` runs only while a flag of :func:`_flag_after` is truthy (under ``if
+    ok:``/``if ok is not None:``, or after ``if not ok: return``), or only after a test of a
+    name the handlers that go on set (``status = FAILED`` there, then ``if status ==
+    SUCCEEDED:`` around the use, or ``if status != SUCCEEDED: return`` before it)."""
     flags = {f for f in _flag_after(name, node) if _falsy_before(f, node, index)}
-    if not flags:
-        return False
+    states = set(bound_names([s for h in going_on for s in h.body]))
     child, parent = use, index.parents.get(id(use))
     while parent is not None and parent is not node:
-        if isinstance(parent, ast.If) and any(child is s for s in parent.body) and \
-                flags & set(tested_names(parent.test)):
+        if isinstance(parent, ast.If) and (
+                any(child is s for s in parent.body) and flags & set(tested_names(parent.test))
+                or states & _read_names(parent.test)):
             return True
         child, parent = parent, index.parents.get(id(parent))
     for statement in rest:
         if any(n is use for n in ast.walk(statement)):
             return False
-        if isinstance(statement, ast.If) and _negated_flag(statement.test) in flags and \
-                statement.body and isinstance(statement.body[-1], (ast.Return, ast.Raise)):
+        if isinstance(statement, ast.If) and statement.body and \
+                isinstance(statement.body[-1], (ast.Return, ast.Raise)) and (
+                    _negated_flag(statement.test) in flags or
+                    states & _read_names(statement.test)):
             return True
     return False
+
+
+def _read_names(test: ast.expr) -> set[str]:
+    return {n.id for n in ast.walk(test) if isinstance(n, ast.Name)}
 
 
 def _negated_flag(test: ast.expr) -> str | None:
@@ -151,7 +159,7 @@ def _unbound_reads(index: Index, node: ast.Try) -> Iterator[tuple[ast.Name, str,
                 not _fails_only_until(node.body, name):
             continue
         use = next((u for u in uses(rest, name)
-                    if not _guarded(u, name, node, rest, index)), None)
+                    if not _guarded(u, name, node, going_on, rest, index)), None)
         if use is not None:
             line = next(s.lineno for s in node.body if name in bound_names([s]))
             yield use, name, line, going_on[0].lineno
@@ -174,8 +182,10 @@ def unbound_after_except(package: Package) -> Iterator[Hit]:
     the `try` can raise.
     Not reported: `try` blocks inside loops, functions calling `locals()`, reads guarded
     by a flag set after the name in the `try` and falsy before it (`ok = False` ... `ok =
-    True` ... `if ok:` or `if not ok: return`), names the `except` block assigns too, and
-    reads that `finally` or a catch-all `except` makes (PYC003's).
+    True` ... `if ok:` or `if not ok: return`) or by a test of what the `except` block
+    sets (`status = FAILED` there, `if status == SUCCEEDED:` around the read), names the
+    `except` block assigns too, and reads that `finally` or a catch-all `except` makes
+    (PYC003's).
 
     ## Why is this bad?
     When the assignment fails, the `except` block logs the error and the function goes on
