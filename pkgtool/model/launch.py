@@ -66,7 +66,10 @@ class NodeRef:
     string instead of a list (launch iterates it: one argument per character, or a
     TypeError), with the keyword. ``remapped``
     are the names a Python ``remappings=[(from, to), ...]`` display remaps, when written as
-    literals, each where it is written.
+    literals, each where it is written. ``package_written`` is an XML node's ``pkg`` as
+    written when it is not static (``$(find-pkg-share x)``); ``params_without_source`` are
+    its ``<param>`` children with neither ``name`` nor ``from``, each with its attributes
+    (``<param file=...>``, ROS 1's rosparam habit).
     """
 
     package: str | None
@@ -91,6 +94,8 @@ class NodeRef:
     output: str | None = None
     not_text: tuple[Span, str] | None = None
     remapped: tuple[tuple[str, Span], ...] = ()
+    package_written: str | None = None
+    params_without_source: tuple[tuple[Span, tuple[str, ...]], ...] = ()
 
     @property
     def composable(self) -> bool:

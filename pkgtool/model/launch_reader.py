@@ -128,11 +128,17 @@ def _xml(path: str, text: str) -> Read | ParseProblem:
             remaps = [(c.attribute("from"), c.attribute("to"))
                       for c in element.children if c.tag == "remap"]
             arguments = [element.attribute(a) for a in ("args", "ros_args")]
+            package = element.attribute("pkg")
+            sourceless = tuple((c.span, tuple(k for k, _ in c.attributes))
+                               for c in element.children if c.tag == "param" and
+                               c.attribute("name") is None and c.attribute("from") is None)
             nodes.append(_named(NodeRef(
-                _static(element.attribute("pkg")), _static(executable), element.span,
+                _static(package), _static(executable), element.span,
                 element.tag, tuple(k for k, _ in element.attributes),
                 inline_parameters=tuple(_xml_parameters(element.children)),
-                output=_static(element.attribute("output"))),
+                output=_static(element.attribute("output")),
+                package_written=package if _static(package) is None else None,
+                params_without_source=sourceless),
                 element.attribute("name"), element.attribute("namespace"), froms, remaps,
                 arguments))
         values.extend((value, element.span) for _, value in element.attributes)

@@ -6,6 +6,7 @@ import re
 from collections.abc import Callable
 from pathlib import Path
 
+from pkgtool.model.cmake_install import installed_sources
 from pkgtool.model.cmake_text import with_included
 from pkgtool.model.context import Context, interface_file
 from pkgtool.model.files import TextFile, list_files, read_text
@@ -134,7 +135,7 @@ def load_package(root: Path, context: Context | None = None) -> Package:
     modules: list[PythonModule] = []
     launches: list[LaunchFile] = []
     folders, nested = python_folders(files), nested_packages(files)
-    shared = _shared_sources(setup_py)
+    shared = _shared_sources(setup_py) | _cmake_shared(files, text_of)
     ros1 = getattr(manifest, "is_ros1", False)  # roslaunch files: not ROS 2's to check
     for relpath in files:
         if not ros1 and ((is_launch_file(relpath, folders, nested) or
@@ -239,6 +240,18 @@ def _installed_as_launch_file(relpath: str, shared: frozenset[str]) -> bool:
     """A file named like a launch file that data_files copies into ``share/`` wherever it
     lies (``example/example/chassis/line_tracking.launch.py``): ``ros2 launch`` runs it."""
     return relpath in shared and relpath.endswith(LAUNCH_SUFFIXES) and not is_template(relpath)
+
+
+def _cmake_shared(files: tuple[str, ...], text_of: Callable[[str], str | None]
+                  ) -> frozenset[str]:
+    """The Python files of ``launch`` folders a CMakeLists.txt installs (``install(DIRECTORY
+    launch ...)``): ``ros2 launch`` runs them whatever their names (``launch_mavros.py``)."""
+    text = text_of("CMakeLists.txt") if "CMakeLists.txt" in files else None
+    installed = installed_sources(text, files) if text else None
+    if not installed:
+        return frozenset()
+    return frozenset(f for f in files if f.endswith(".py") and "launch" in f.split("/")[:-1]
+                     and (f in installed or any(f.startswith(f"{i}/") for i in installed)))
 
 
 def _shared_sources(setup_py: SetupPy | ParseProblem | None) -> frozenset[str]:

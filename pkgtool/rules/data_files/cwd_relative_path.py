@@ -27,7 +27,8 @@ READERS = frozenset({
     "ultralytics.YOLO", "onnxruntime.InferenceSession", "xml.etree.ElementTree.parse",
     "lxml.etree.parse", "xacro.process_file", "tensorflow.keras.models.load_model",
     "keras.models.load_model", "playsound.playsound", "pygame.mixer.Sound",
-    "pygame.image.load"})
+    "pygame.image.load", "sqlite3.connect", "scipy.io.loadmat",
+    "open3d.io.read_point_cloud", "open3d.io.read_triangle_mesh", "trimesh.load"})
 """Functions and classes (by qualified name) whose first argument is a file they read."""
 _PATHS = frozenset({"pathlib.Path", "pathlib.PurePath"})
 _PATH_READS = frozenset({"read_text", "read_bytes", "open"})

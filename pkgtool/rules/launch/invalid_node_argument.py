@@ -6,6 +6,7 @@ from collections.abc import Iterator
 from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.launch import NodeRef
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
@@ -50,6 +51,11 @@ read from the ros2/launch_ros and ros2/launch sources), besides :data:`REMOVED_K
 launch_ros 0.26.7)."""
 OUTPUTS = frozenset({"screen", "log", "both", "own_log", "full"})
 """The ``output`` configurations launch knows (launch.logging, Humble to Rolling)."""
+
+
+_SHARE_LOOKUP = lazy_pattern(r"\$\(\s*find-pkg-(?:share|prefix)\b")
+"""A substitution giving a package's folder, not its name."""
+_ROS1_PARAM = "; `file=` is ROS 1's `<rosparam file=>`"
 
 
 def _names(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
@@ -119,6 +125,15 @@ def _problems(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
         if "exec" not in given and not given & {"type", "executable", "node_executable"}:
             yield (f"`<{node.action}>` has no `exec` attribute", "Add `exec=\"<executable>\"`",
                    node.span)
+        if node.package_written and _SHARE_LOOKUP.search(node.package_written):
+            yield (f"`pkg` of `<{node.action}>` is `{node.package_written}`, a folder of the "
+                   "package, not its name: launch cannot find the package (PackageNotFoundError)",
+                   "Write the package's name: `pkg=\"my_pkg\"`", node.span)
+        for where, attributes in node.params_without_source:
+            ros1 = _ROS1_PARAM if "file" in attributes else ""
+            yield ("`<param>` has neither `name` nor `from`: launch raises ValueError (param "
+                   f"Entity should have name or from attribute){ros1}",
+                   "Write `from=` for a parameter file, or `name=` and `value=`", where)
 
 
 @rule("LCH005", "invalid-launch-node-argument", Severity.ERROR,
@@ -136,7 +151,9 @@ def invalid_launch_node_argument(package: Package) -> Iterator[Hit]:
     `('/a', '/b')`, a string, a dict, nor a list holding a string `[('/a')]`, a list or a
     tuple of another length); only displays and literals are judged. XML and YAML `node`,
     `lifecycle_node` and `node_container` need `exec` and must not use ROS 1 or Python
-    attribute names (`type`, `ns`, `executable`, `package`, `required`, ...). Calls that pass
+    attribute names (`type`, `ns`, `executable`, `package`, `required`, ...); an XML node's
+    `pkg` must not be a package's folder (`$(find-pkg-share x)`), and each of its `<param>`
+    needs `name` or `from` (`<param file=...>` is ROS 1's rosparam). Calls that pass
     `**kwargs` are not checked, nor the removed keywords of calls in either branch of a test
     on the ROS distribution (`if os.environ['ROS_DISTRO'] <= 'eloquent':`, also through a
     variable assigned from `os.environ.get('ROS_DISTRO')`, `os.getenv('ROS_DISTRO')` or a
