@@ -251,7 +251,13 @@ def _cmake_shared(files: tuple[str, ...], text_of: Callable[[str], str | None]
     if not installed:
         return frozenset()
     return frozenset(f for f in files if f.endswith(".py") and "launch" in f.split("/")[:-1]
+                     and _KEPT_ASIDE.search(f.rsplit("/", 1)[-1]) is None
                      and (f in installed or any(f.startswith(f"{i}/") for i in installed)))
+
+
+_KEPT_ASIDE = lazy_pattern(r"(?i)copy|backup|\bbak\b|(?:^|[._-])(?:old|orig)(?:[._-]|$)")
+"""Names of a copy kept aside (``robot.launch_copy.py``, ``launch_old.py``), which a whole
+installed folder carries along though nobody runs it."""
 
 
 def _shared_sources(setup_py: SetupPy | ParseProblem | None) -> frozenset[str]:
