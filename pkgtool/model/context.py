@@ -319,17 +319,24 @@ def context_for(root: Path, index: Mapping[Path, WorkspacePackage], distro: str)
 
 def same_named(root: Path, index: Mapping[Path, WorkspacePackage]) -> tuple[str, ...]:
     """The other folders of the ``index`` that hold a package named as the one at ``root``
-    under the same colcon ``src`` folder, relative to the workspace (the folder above
+    under the same colcon ``src`` folder (the outermost one), relative to the workspace (the folder above
     ``src``): colcon refuses to build a workspace with two. Packages in no ``src`` folder
     have none: folders of one repository (a book's chapters) are often built one at a time."""
     own = index.get(root)
     places = _names(index)[1].get(own.name, []) if own is not None else []
-    source = colcon_src(root) if places else None
+    source = _outermost_src(root) if places else None
     if source is None:
         return ()
     return tuple(sorted(Path(os.path.relpath(folder, source.parent)).as_posix()
                         for folder, _ in places
-                        if folder != root and colcon_src(folder) == source))
+                        if folder != root and _outermost_src(folder) == source))
+
+
+def _outermost_src(root: Path) -> Path | None:
+    """The outermost ``src`` folder above ``root``: colcon, run beside it, walks every folder
+    below it, ``src`` folders of vendored workspaces included
+    (``src/deps/driver/src/<package>``)."""
+    return next((f for f in reversed(root.parents) if f.name == "src" and f.is_dir()), None)
 
 
 @per_object(2)
