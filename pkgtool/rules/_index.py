@@ -190,6 +190,7 @@ RULES = {
     "PYC072": ("node-class-without-node-base", "error", True, "python.node_class_without_base"),
     "PYC073": ("empty-list-parameter-default", "warning", True, "python.empty_list_parameter"),
     "PYC074": ("unbound-after-except", "error", True, "python.unbound_after_except"),
+    "PYC075": ("rclpy-object-called", "error", True, "python.rclpy_object_called"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),
