@@ -319,9 +319,10 @@ def context_for(root: Path, index: Mapping[Path, WorkspacePackage], distro: str)
 
 def same_named(root: Path, index: Mapping[Path, WorkspacePackage]) -> tuple[str, ...]:
     """The other folders of the ``index`` that hold a package named as the one at ``root``
-    under the same colcon ``src`` folder (the outermost one), relative to the workspace (the folder above
-    ``src``): colcon refuses to build a workspace with two. Packages in no ``src`` folder
-    have none: folders of one repository (a book's chapters) are often built one at a time."""
+    under the same colcon ``src`` folder (the outermost one), relative to the workspace (the
+    folder above ``src``): colcon refuses to build a workspace with two. Packages in no
+    ``src`` folder have none: folders of one repository (a book's chapters) are often built
+    one at a time."""
     own = index.get(root)
     places = _names(index)[1].get(own.name, []) if own is not None else []
     source = _outermost_src(root) if places else None
