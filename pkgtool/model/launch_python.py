@@ -228,6 +228,13 @@ class _Reader(ast.NodeVisitor):
             self.visit(statement)
         self.optional -= optional
 
+    def _function_name(self, func: ast.expr) -> str:
+        """The name a call's function ends in, through an import's alias
+        (``get_package_share_directory as pkgdir``: ``pkgdir(...)`` is the lookup)."""
+        imported = {o.rsplit(".", 1)[-1] for o in self.origins.get(func.id, ())} \
+            if isinstance(func, ast.Name) else set()
+        return imported.pop() if len(imported) == 1 else last_name(func)
+
     def _action(self, func: ast.expr) -> str:
         """The launch action a call constructs, through the file's imports ('' for none).
 
@@ -283,7 +290,7 @@ class _Reader(ast.NodeVisitor):
         return None
 
     def _call_value(self, node: ast.Call, depth: int, top: int | None) -> Value:
-        name = last_name(node.func)
+        name = self._function_name(node.func)
         first = node.args[0] if node.args else None
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
             package = self.value(_keyword(node, "package") or first, depth + 1, top)
@@ -349,7 +356,7 @@ class _Reader(ast.NodeVisitor):
                                         or last_name(node.func) == "ExecuteProcess")
 
     def _record_call(self, node: ast.Call) -> None:
-        name, action = last_name(node.func), self._action(node.func)
+        name, action = self._function_name(node.func), self._action(node.func)
         if action in NODE_ACTIONS or action in PLUGIN_ACTIONS:
             package_node = _keyword(node, "package")
             executable_node = None if action in PLUGIN_ACTIONS else (
