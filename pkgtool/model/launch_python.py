@@ -33,6 +33,12 @@ PREFIX_LOOKUPS = frozenset({"get_package_prefix", "FindPackagePrefix", "FindPack
 SUBSTITUTIONS = frozenset({"FindPackageShare", "FindPackagePrefix", "FindPackage"})
 """Lookups made only when the action holding them runs (the others run when the file does)."""
 NODE_ACTIONS = frozenset({"Node", "LifecycleNode", "ComposableNodeContainer"})
+_INERT_ACTIONS = frozenset({"ExecuteProcess", "TimerAction", "GroupAction",
+                            "IncludeLaunchDescription", "RegisterEventHandler", "OnProcessExit",
+                            "OnProcessStart", "OnExecutionComplete", "OnShutdown"})
+"""Launch actions (and event handlers) whose construction does nothing: one assigned to a
+name nobody reads never runs, nor do the actions inside it
+(``delayed = TimerAction(actions=[rviz])`` left out of the description)."""
 PLUGIN_ACTIONS = frozenset({"ComposableNode"})
 JOINS = frozenset({"join", "PathJoinSubstitution", "joinpath"})
 CONCATENATING = ("LaunchDescriptionSource", "Command")
@@ -143,7 +149,7 @@ class _Reader(ast.NodeVisitor):
         unread = unread_values(node, nodes) | overwritten_values(node, nodes)
         dead = {call for call in unread if isinstance(call, ast.Call) and (
             self._action(call.func) in NODE_ACTIONS | PLUGIN_ACTIONS or
-            last_name(call.func) == "ExecuteProcess")}
+            last_name(call.func) in _INERT_ACTIONS)}
         self.unread.update(unread, read_only_by(node, nodes, dead) if dead else ())
         for statement in node.body:
             self.visit(statement)
