@@ -52,9 +52,14 @@ def separate_projects(package: Package) -> frozenset[str]:
 
     Each is a Python project of its own (a pip-installable API, a vendored tool): colcon
     installs none of its files as this package's code, whatever the package's build type.
+    Not a folder the package's setup.py installs as one of its Python packages (a stray
+    setup.py left inside ``my_pkg/``): its modules are installed all the same.
     """
+    setup = package.setup_py
+    installed = {package_folder(name, setup.package_dir or {}) for name in (
+        setup.packages.names if setup and setup.packages else ())}
     return frozenset(folder for folder, _, name in (p.rpartition("/") for p in package.files)
-                     if folder and name in PROJECT_FILES)
+                     if folder and name in PROJECT_FILES and folder not in installed)
 
 
 def in_separate_project(package: Package, path: str) -> bool:
