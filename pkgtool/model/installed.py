@@ -141,7 +141,7 @@ def installed_modules(package: Package) -> dict[str, str] | None:
 def installed_files(package: Package) -> frozenset[str]:
     """Python files colcon installs as modules, tests included: those setup.py installs when
     that is known (with the scripts data_files copies into ``lib/<package>``, which ``ros2
-    run`` starts), else files inside Python package folders other than data folders (CMake
+    run`` starts, and the ``.py`` files of ``scripts=``), else files inside Python package folders other than data folders (CMake
     installs ``launch/``, ``config/``, ... to ``share/``, whatever ``__init__.py`` they hold),
     and of a CMake package only those its CMakeLists.txt installs when that is known
     (:func:`cmake_installed`), with the Python files it names (``install(PROGRAMS
@@ -154,7 +154,9 @@ def installed_files(package: Package) -> frozenset[str]:
         scripts = f"lib/{package.name}/"
         files = frozenset(installed.values()) | {
             source for target, source in (installed_data(package) or {}).items()
-            if target.startswith(scripts) and source.endswith(".py")}  # `ros2 run` starts
+            if target.startswith(scripts) and source.endswith(".py")} | {  # `ros2 run` starts
+            posixpath.normpath(script) for script in (package.setup_py.scripts or ())
+            if script.endswith(".py") and package.has_file(posixpath.normpath(script))}
     else:
         packages = python_folders(package.files)
         data = DATA_FOLDERS - {package.name}
