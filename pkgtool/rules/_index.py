@@ -209,6 +209,7 @@ RULES = {
     "SET015": ("package-without-init", "warning", True, "setup.package_without_init"),
     "SET016": ("misspelled-setup-keyword", "error", True, "setup.misspelled_setup_keyword"),
     "SET017": ("repeated-setup-key", "error", True, "setup.repeated_setup_key"),
+    "SET018": ("setup-reads-missing-file", "error", True, "setup.setup_reads_missing_file"),
     "STY001": ("flake8-violation", "error", False, "style.flake8_violation"),
     "STY002": ("docstring-violation", "error", False, "style.docstring_violation"),
     "SYN001": ("unparsable-file", "error", True, "syntax.unparsable_file"),
