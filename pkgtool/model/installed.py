@@ -141,11 +141,12 @@ def installed_modules(package: Package) -> dict[str, str] | None:
 def installed_files(package: Package) -> frozenset[str]:
     """Python files colcon installs as modules, tests included: those setup.py installs when
     that is known (with the scripts data_files copies into ``lib/<package>``, which ``ros2
-    run`` starts, and the ``.py`` files of ``scripts=``), else files inside Python package folders other than data folders (CMake
-    installs ``launch/``, ``config/``, ... to ``share/``, whatever ``__init__.py`` they hold),
-    and of a CMake package only those its CMakeLists.txt installs when that is known
-    (:func:`cmake_installed`), with the Python files it names (``install(PROGRAMS
-    scripts/node.py ...)``: what ``ros2 run`` starts). A setup.py and the files of a
+    run`` starts, and the ``.py`` files of ``scripts=``), else files inside Python package
+    folders other than data folders (CMake installs ``launch/``, ``config/``, ... to
+    ``share/``, whatever ``__init__.py`` they hold), and of a CMake package only those its
+    CMakeLists.txt installs when that is known (:func:`cmake_installed`), with the Python
+    files it names (``install(PROGRAMS scripts/node.py ...)``: what ``ros2 run`` starts). A
+    setup.py and the files of a
     :func:`separate_projects` project never are, nor what the setup.py of a CMake package
     names (colcon never runs it); when what CMake installs is not known, nor the folders of
     the scripts it runs while building (:func:`build_time_folders`)."""

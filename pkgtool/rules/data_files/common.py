@@ -14,8 +14,9 @@ from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.setup_py import DataFile, DataSource
+from pkgtool.rules.existence_checks import HANDLING_FILES, checks_files
 from pkgtool.rules.setup_values import checked_setup
-from pkgtool.rules.syntax_trees import Index, index_of, installed_trees
+from pkgtool.rules.syntax_trees import index_of, installed_trees
 from pkgtool.lazy_regex import lazy_pattern
 
 _SEARCH_PATHS = lazy_pattern(r"\b(?:GZ_SIM|IGN_GAZEBO)_(?:RESOURCE|SYSTEM_PLUGIN)_PATH\b|"
@@ -117,30 +118,15 @@ def _imported_names(package: Package) -> frozenset[str]:
     return frozenset(names)
 
 
-_EXISTENCE = EXISTENCE_CHECKS | {"makedirs", "mkdir", "load_dotenv"}
-"""Those, ``os.makedirs`` and ``Path.mkdir()`` (a module making folders may make the share
-path it names too) and ``load_dotenv()``, which returns False for a missing file."""
-
-
-def checks_files(index: Index, calls: frozenset[str] = _EXISTENCE) -> bool:
-    """True when the module makes one of ``calls`` (by default: asks whether files or folders
-    exist, or makes folders): it handles a share file that may be missing (a model it
-    downloads when absent, a file the user adds, a folder it creates), so none of its share
-    paths is certainly read."""
-    return any(isinstance(call.func, ast.Attribute) and call.func.attr in calls or
-               isinstance(call.func, ast.Name) and call.func.id == "load_dotenv" and
-               "load_dotenv" in calls
-               for call in index.calls)
-
-
 def _launch_makes_folders(package: Package, launch: LaunchFile) -> bool:
     """True when a Python launch file makes folders or loads an optional ``.env`` file
-    (:data:`_EXISTENCE` but the existence checks, which each file reference says itself:
-    ``FileRef.checked``): it may make the share path it names."""
+    (:data:`~pkgtool.rules.existence_checks.HANDLING_FILES` but the existence checks, which
+    each file reference says itself: ``FileRef.checked``): it may make the share path it
+    names."""
     text = package.texts.get(launch.path)
     tree = parse_tree(launch.path, text) if launch.kind == "python" and text else None
     return isinstance(tree, ast.Module) and \
-        checks_files(index_of(tree), _EXISTENCE - EXISTENCE_CHECKS)
+        checks_files(index_of(tree), HANDLING_FILES - EXISTENCE_CHECKS)
 
 
 def _only_unused_nodes_read(launch: LaunchFile) -> set[tuple[str | None, tuple[str, ...]]]:

@@ -12,7 +12,7 @@ from pkgtool.model.installed import installed_data
 from pkgtool.model.launch import EXISTENCE_CHECKS
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.data_files.common import checks_files
+from pkgtool.rules.existence_checks import checks_files
 from pkgtool.rules.registry import rule
 from pkgtool.rules.relative_paths import package_file_named
 from pkgtool.rules.scopes import scope_bindings, single_assignments

@@ -13,7 +13,7 @@ from pkgtool.model.installed import installed_modules, is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.model.setup_py import PACKAGE_DATA
 from pkgtool.model.span import Span
-from pkgtool.rules.data_files.common import checks_files
+from pkgtool.rules.existence_checks import checks_files
 from pkgtool.rules.registry import rule
 from pkgtool.rules.sys_path import file_relative_paths
 from pkgtool.rules.syntax_trees import Index, installed_trees

@@ -12,7 +12,7 @@ from pkgtool.model.launch import EXISTENCE_CHECKS
 from pkgtool.model.package import Package, is_test_material
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
-from pkgtool.rules.data_files.common import checks_files
+from pkgtool.rules.existence_checks import checks_files
 from pkgtool.rules.syntax_trees import Index, index_of, installed_trees, python_files
 from pkgtool.lazy_regex import lazy_pattern
 

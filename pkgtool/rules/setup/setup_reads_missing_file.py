@@ -11,7 +11,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.model.submodules import ignored
-from pkgtool.rules.data_files.common import checks_files
+from pkgtool.rules.existence_checks import checks_files
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import catches_everything
 from pkgtool.rules.sys_path import file_relative_paths
