@@ -69,16 +69,22 @@ def _field_end(text: str, i: int, quote: str) -> tuple[int, bool] | None:
     return None
 
 
+_BEFORE = 20
+"""How many lines before the failing one an f-string that reaches it may open (a literal part
+continued by a backslash at the end of its lines)."""
+
+
 def needs_python_312(text: str, line: int) -> bool:
-    """True when an f-string opening on ``line`` (1-based) is complete under Python 3.12's rules
-    but uses what older Pythons reject: its quote reused inside, a replacement field spanning
+    """True when an f-string on ``line`` (1-based: opening there, or opening up to
+    :data:`_BEFORE` lines earlier and reaching it) is complete under Python 3.12's rules but
+    uses what older Pythons reject: its quote reused inside, a replacement field spanning
     lines, a backslash or a comment in one."""
     starts = [0] + [m.end() for m in re.finditer("\n", text)]
     if not 0 < line <= len(starts):
         return False
     stop = starts[line] if line < len(starts) else len(text)
-    for opening in _OPENING.finditer(text, starts[line - 1], stop):
+    for opening in _OPENING.finditer(text, starts[max(line - 1 - _BEFORE, 0)], stop):
         end = _string_end(text, opening.end(), opening.group(2), True)
-        if end is not None and end[1]:
+        if end is not None and end[1] and end[0] > starts[line - 1]:
             return True
     return False
