@@ -277,8 +277,22 @@ def enclosing_package_import(package: Package, owner: str, imported: Import
         if parts[end - 1] == top:
             base = ".".join(parts[:end])
             named = [".".join([base, *rest])] if rest else [f"{base}.{n}" for n in imported.names]
-            return next(((base, name) for name in named if name in installed), None)
+            found = next(((base, name) for name in named if name in installed), None)
+            return found if found is None or not rest or \
+                _provides(package, installed, found[1], imported.names) else None
     return None
+
+
+def _provides(package: Package, installed: dict[str, str], module: str,
+              names: tuple[str, ...]) -> bool:
+    """True when the installed ``module`` defines one of ``names`` or has it as a submodule:
+    ``from launch.actions import ExecuteProcess`` in ``my_pkg/launch/`` whose ``actions``
+    defines no ``ExecuteProcess`` means ROS's ``launch``, whatever the folder is called."""
+    if not names or "*" in names:
+        return True
+    source = next((m for m in package.modules if m.path == installed[module]), None)
+    return source is None or any(name in source.top_level_names or f"{module}.{name}" in installed
+                                 for name in names)
 
 
 _COLLECTED = lazy_pattern(r"(?:test_.*|.*_test|conftest)\.py")
