@@ -29,6 +29,7 @@ from pkgtool.model.digest import text_digest
 from pkgtool.model.files import list_files, read_bytes
 from pkgtool.model.manifest import CMAKE_BUILD_TYPES
 from pkgtool.model.memo import per_object
+from pkgtool.model.pyproject import pyproject_may_add_scripts
 from pkgtool.records import field, record
 from pkgtool.lazy_regex import lazy_pattern
 
@@ -167,7 +168,7 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
         cmake = with_included(cmake, lambda path: _read(os.path.join(base, path)))
         modules |= installed_python_packages(cmake)
     interfaces = with_listed(folders, cmake, listed) or {}
-    setup_digest = _setup_digest(manifest, listed, setup)
+    setup_digest = _setup_digest(manifest, listed, setup, base)
     executables = installed_executables(cmake) if cmake is not None and not setup_digest and \
         _build_type(manifest) in CMAKE_BUILD_TYPES else None
     return WorkspacePackage(name, interfaces, frozenset(modules),
@@ -189,15 +190,18 @@ _COMMENT = lazy_pattern(r"<!--.*?-->", re.DOTALL)
 
 
 def _setup_digest(manifest: str | None, listed: tuple[str, ...],
-                  setup: Callable[[], tuple[str | None, str | None]]) -> str:
-    """:attr:`WorkspacePackage.setup_digest` of the package with files ``listed``, whose
-    setup.py and setup.cfg texts ``setup`` reads."""
-    if "setup.py" not in listed or "pyproject.toml" in listed:
+                  setup: Callable[[], tuple[str | None, str | None]], base: str) -> str:
+    """:attr:`WorkspacePackage.setup_digest` of the package in ``base`` with files ``listed``,
+    whose setup.py and setup.cfg texts ``setup`` reads (a pyproject.toml of tool settings
+    only is part of the digest: it adds no executable, but may come to)."""
+    project = _read(os.path.join(base, "pyproject.toml")) if "pyproject.toml" in listed \
+        else None
+    if "setup.py" not in listed or pyproject_may_add_scripts(project):
         return ""
     build_type = _build_type(manifest)
     if (build_type != "ament_python") if build_type else "CMakeLists.txt" in listed:
         return ""
-    return text_digest(*setup())
+    return text_digest(*setup(), *(() if project is None else (project,)))
 
 
 def _build_type(manifest: str | None) -> str | None:

@@ -9,6 +9,7 @@ from pkgtool.model.cmake_install import installed_executables, installed_program
 from pkgtool.model.installed import cmake_text, is_ament_python
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
+from pkgtool.model.pyproject import pyproject_may_add_scripts
 from pkgtool.model.scripts import library_entries, script_names, sibling_executables
 from pkgtool.lazy_regex import lazy_pattern
 
@@ -72,7 +73,8 @@ def console_scripts(package: Package) -> frozenset[str] | None:
     """The console scripts of setup.py and setup.cfg, or None when they cannot be known (see
     :func:`executables`)."""
     setup = package.setup_py
-    if setup is None or package.has_file("pyproject.toml") or not is_ament_python(package):
+    if setup is None or pyproject_may_add_scripts(package.texts.get("pyproject.toml")) or \
+            not is_ament_python(package):
         return None  # CMake installs its executables; a setup.py beside it is not run
     if package.has_file("setup.cfg") and package.setup_cfg is None:
         return None
