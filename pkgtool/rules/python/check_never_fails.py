@@ -30,12 +30,21 @@ def _tuple_asserts(path: str, tree: ast.Module) -> Iterator[Hit]:
                       f"Drop the parentheses: `assert {shown}, <message>`")
 
 
+def _collectable(body: list[ast.stmt]) -> Iterator[ast.FunctionDef]:
+    """The functions pytest may collect: at module level and in classes (nested ones too),
+    never those defined inside a function (a helper the test calls or hands on)."""
+    for statement in body:
+        if isinstance(statement, ast.FunctionDef):
+            yield statement
+        elif isinstance(statement, ast.ClassDef):
+            yield from _collectable(statement.body)
+
+
 def _returned_checks(path: str, tree: ast.Module, config: PytestConfig) -> Iterator[Hit]:
     """``return <comparison>`` in a test function's own body (not in a function nested in it:
-    a predicate the test passes on)."""
+    a predicate the test passes on; nor in a function defined inside another)."""
     functions = config.get("python_functions")
-    for node in nodes_of_class(tree, ast.FunctionDef):
-        assert isinstance(node, ast.FunctionDef)
+    for node in _collectable(tree.body):
         if not matches(node.name, functions):
             continue
         for statement in scope_walk(node.body):
