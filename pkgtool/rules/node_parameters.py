@@ -408,15 +408,15 @@ def fully_seen_parameter_files(package: Package) -> dict[str, tuple[NodeRef, ...
 
     Empty when a launch file does not parse or gives a node parameters that are not read
     statically (a launch argument may name any file); a file whose name the package's
-    Python code mentions (it may read it itself), or that a launch file hands to a launch
-    file it includes, is left out.
+    Python code other than setup.py mentions (it may read it itself), or that a launch file
+    hands to a launch file it includes, is left out.
     """
     launches = package.launch_files
     if any(f.problem for f in launches) or any(n.other_parameters for f in launches
                                                for n in f.nodes):
         return {}
-    code = [package.texts.get(p, "") for p in package.files
-            if p.endswith(".py") and p not in {f.path for f in launches}]
+    code = [package.texts.get(p, "") for p in package.files  # setup.py installs, reads none
+            if p.endswith(".py") and p != "setup.py" and p not in {f.path for f in launches}]
     code.append(_handed_to_includes(package))
     return {path: nodes for path, nodes in parameter_file_nodes(package).items()
             if not any(posixpath.basename(path) in text for text in code)}
