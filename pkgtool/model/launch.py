@@ -69,7 +69,9 @@ class NodeRef:
     literals, each where it is written. ``package_written`` is an XML node's ``pkg`` as
     written when it is not static (``$(find-pkg-share x)``); ``params_without_source`` are
     its ``<param>`` children with neither ``name`` nor ``from``, each with its attributes
-    (``<param file=...>``, ROS 1's rosparam habit).
+    (``<param file=...>``, ROS 1's rosparam habit). ``always_started`` marks a node the
+    launch file starts every time, in no namespace but its own (:mod:`launch_started`; an XML
+    node directly under ``<launch>`` with no ``if``/``unless``).
     """
 
     package: str | None
@@ -96,6 +98,7 @@ class NodeRef:
     remapped: tuple[tuple[str, Span], ...] = ()
     package_written: str | None = None
     params_without_source: tuple[tuple[Span, tuple[str, ...]], ...] = ()
+    always_started: bool = False
 
     @property
     def composable(self) -> bool:

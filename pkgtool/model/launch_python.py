@@ -23,6 +23,7 @@ from pkgtool.model.launch_scopes import (bindings, import_origins, overwritten_v
                                          read_only_by, scope_nodes, unread_argument_defaults,
                                          unread_attribute_values, unread_module_values,
                                          unread_values, written_paths)
+from pkgtool.model.launch_started import certainly_started
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import depends_on_ros_distro, reads_environment
 from pkgtool.records import record, replace
@@ -112,6 +113,7 @@ class _Reader(ast.NodeVisitor):
         self.read_names = frozenset(n.id for n in nodes_of_class(tree, ast.Name)
                                     if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load))
         self.presence_flags = presence_flags(tree)
+        self.certain = certainly_started(tree)
 
     def _span(self, node: ast.AST) -> Span:
         return Span(self.path, getattr(node, "lineno", 1), getattr(node, "col_offset", 0) + 1)
@@ -399,7 +401,8 @@ class _Reader(ast.NodeVisitor):
                                    *self._argument_parameters(node)),
                 output=output if isinstance(output, str) else None, not_text=not_text,
                 text_not_list=text_not_list,
-                remapped=tuple(self._remapped(_keyword(node, "remappings")))))
+                remapped=tuple(self._remapped(_keyword(node, "remappings"))),
+                always_started=node in self.certain))
         elif name == "ExecuteProcess":
             self._ros2_run(node)
         runs = self._command_executable(node) if name == "Command" else None

@@ -115,6 +115,7 @@ def _xml(path: str, text: str) -> Read | ParseProblem:
     nodes: list[NodeRef] = []
     values: list[tuple[str, Span]] = []
     paths: list[tuple[str, Span]] = []
+    top = {id(child) for child in root.children if not _conditional(child)}
     for element in _elements(root):
         named = element.attribute(_XML_FILES.get(element.tag, "from")) \
             if element.tag in _XML_FILES or element.tag == "param" else None
@@ -138,7 +139,7 @@ def _xml(path: str, text: str) -> Read | ParseProblem:
                 inline_parameters=tuple(_xml_parameters(element.children)),
                 output=_static(element.attribute("output")),
                 package_written=package if _static(package) is None else None,
-                params_without_source=sourceless),
+                params_without_source=sourceless, always_started=id(element) in top),
                 element.attribute("name"), element.attribute("namespace"), froms, remaps,
                 arguments))
         values.extend((value, element.span) for _, value in element.attributes)
@@ -203,6 +204,14 @@ def _named(node: NodeRef, name: str | None, namespace: str | None,
     return replace(node, parameter_files=tuple(f for f in files if f),
                    other_parameters=None in files, name=known[-1] if known else None,
                    namespace=_static(namespace), name_unknown=None in names)
+
+
+def _conditional(element: XmlElement) -> bool:
+    """True for an XML launch node that may not start, or may start in another namespace
+    than its own: ``if``/``unless``, a ``__ns`` remapping."""
+    return element.attribute("if") is not None or element.attribute("unless") is not None \
+        or any("__ns" in value for _, value in element.attributes) \
+        or any("__ns" in (c.attribute("from") or "") for c in element.children)
 
 
 def _elements(root: XmlElement) -> Iterator[XmlElement]:
