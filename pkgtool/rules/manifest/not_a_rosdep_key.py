@@ -19,6 +19,8 @@ from pkgtool.rules.registry import rule
 _CHECKED = frozenset(DEPENDS_1 + DEPENDS_2) - {"conflict", "replace"}
 _SEPARATORS = lazy_pattern(r"[\s,;]+")
 _KEY = lazy_pattern(r"[A-Za-z0-9][\w.+-]*")
+_STRAY_EDGES = lazy_pattern(r"^[^A-Za-z0-9]+|[^\w+]+$")
+"""Characters no key starts or ends with (``rclpy/``, ``'numpy'``, ``rclpy,``)."""
 """What a package name or rosdep key looks like."""
 _STDLIB = frozenset({
     "abc", "argparse", "array", "asyncio", "base64", "collections", "concurrent", "copy", "csv",
@@ -57,6 +59,8 @@ def _hit(element: XmlElement, ros2: bool, compiled: bool, distro: str) -> Hit | 
         return Hit(element.span, f"`{key}` names something inside a package (an interface, a "
                    "file), not a package: rosdep cannot resolve it",
                    f"Write `<{tag}>{owner}</{tag}>`")
+    if key and not _KEY.fullmatch(key):
+        return _stray_characters(element, key)
     if key in NOT_PACKAGES:
         return Hit(element.span, f"`{key}` is a build type, not a package",
                    f"Remove this `<{tag}>` and declare `<build_type>{key}</build_type>` in "
@@ -95,6 +99,15 @@ def _hit(element: XmlElement, ros2: bool, compiled: bool, distro: str) -> Hit | 
                f"Write `<{tag}>{replacement}</{tag}>`")
 
 
+def _stray_characters(element: XmlElement, key: str) -> Hit:
+    """The hit for a key holding a character no package name or rosdep key has."""
+    tag, cleaned = element.tag, _STRAY_EDGES.sub("", key)
+    return Hit(element.span, f"`{key}` holds characters no package name or rosdep key has: "
+               "rosdep cannot resolve it, and colcon orders nothing by it",
+               f"Write `<{tag}>{cleaned}</{tag}>`" if _KEY.fullmatch(cleaned) else
+               "Write the package's name or rosdep key alone")
+
+
 @rule("MAN018", "not-a-rosdep-key", Severity.ERROR,
       fix="Use the rosdep key, e.g. `python3-numpy`")
 def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
@@ -103,7 +116,8 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports dependency keys that are known not to be rosdep keys, with the key to use:
     several keys in one tag (``<depend>rclpy sensor_msgs</depend>``),
-    a name with a ``/`` (``turtlesim/msg/Pose``: its package is the dependency), a file name
+    a name with a ``/`` (``turtlesim/msg/Pose``: its package is the dependency), a name with
+    characters no key has (``rclpy/``, ``'numpy'``), a file name
     (``robot.launch.py``, ``params.yaml``),
     pip distribution names (``opencv-python``, ``pyyaml``, ``numpy``), import names (``cv2``),
     ROS 1 Python 2 keys (``python-opencv``), ROS 1 packages (``rospy``, ``catkin``) in a package

@@ -402,11 +402,11 @@ def callback_instances(tree: ast.Module, index: Index, known: Known
         message = next(iter(messages.values())) if len(messages) == 1 else None
         if message is None or position >= len(parameters):
             continue
-        yield from _parameter_instance(tree, function, parameters[position], message, via,
+        yield from parameter_instance(tree, function, parameters[position], message, via,
                                        index)
 
 
-def _parameter_instance(tree: ast.Module, function: Function, name: str, message: Message,
+def parameter_instance(tree: ast.Module, function: Function, name: str, message: Message,
                         via: str | None, index: Index) -> Iterator[Instance[Message]]:
     """The instance a parameter holds (or holds at ``name.<via>``) when never rebound."""
     facts = _names(function)

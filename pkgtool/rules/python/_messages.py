@@ -14,6 +14,7 @@ import ast
 from pkgtool.knowledge.message_fields import Message
 from pkgtool.model.package import Package
 from pkgtool.rules.node_api import PARAMETERS, argument
+from pkgtool.rules.python._annotated_messages import annotated_instances
 from pkgtool.rules.python._assignments import (assigned_values, done_callback_futures,
                                                is_none)
 from pkgtool.rules.python._message_instances import (Instance, Known, attribute_instances,
@@ -112,5 +113,10 @@ def _instances(package: Package, tree: ast.Module, index: Index, known: Known
     received = list(callback_instances(tree, index, known))
     held = {id(ref): instance.message for instance in received for ref in instance.refs
             if isinstance(ref, ast.Name)}
+    annotated = [instance for instance in annotated_instances(tree, index, known)
+                 if not any(id(ref) in held for ref in instance.refs)]  # not a callback's
+    held.update((id(ref), instance.message) for instance in annotated for ref in instance.refs
+                if isinstance(ref, ast.Name))
+    received.extend(annotated)
     return [*local_instances(tree, index, make), *attribute_instances(tree, index, make, held),
             *received, *_result_instances(package, tree, index, known)]

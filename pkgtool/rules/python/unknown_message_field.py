@@ -93,7 +93,10 @@ def unknown_message_field(package: Package) -> Iterator[Hit]:
     message of `create_subscription` (not `raw=True`), the request and response of
     `create_service`, the goal of an `ActionServer` (`goal_handle.request`), when the callback
     is a plain method of the registering class (`self.on_message`) or a plain function bound
-    once in the module and never rebinds the parameter, or as a service's response:
+    once in the module and never rebinds the parameter, or as a parameter annotated with a
+    known message class (`def describe(msg: JointState)`, `Optional[Twist]`; not a method's
+    receiver, not a string annotation) that its function never rebinds, or as a service's
+    response:
     `future.result()` (used directly, or assigned as above) of a future that is certainly a
     client's `call_async()` (or the future a done callback registered on one gets) of a client
     certainly made by `create_client()` for a known service; fields of fields are followed while
