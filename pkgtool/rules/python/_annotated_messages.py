@@ -4,8 +4,9 @@ one.
 
 Annotations are often loose (``goal_handle: Fibonacci.Goal`` for the goal handle, ``grid:
 OccupancyGrid`` for a NumPy array made of one), so a parameter counts only when each
-attribute its function takes on it is a field of the class or a near miss of one (a typo). A method's first parameter (its receiver) is left out, as is
-``Optional[...]``/``X | None``'s ``None``; string annotations are not read.
+attribute its function takes on it is a field of the class or a near miss of one (a typo).
+A method's first parameter (its receiver) is left out, as is ``Optional[...]``/``X |
+None``'s ``None``; string annotations are not read.
 """
 
 from __future__ import annotations

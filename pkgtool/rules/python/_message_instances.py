@@ -403,11 +403,11 @@ def callback_instances(tree: ast.Module, index: Index, known: Known
         if message is None or position >= len(parameters):
             continue
         yield from parameter_instance(tree, function, parameters[position], message, via,
-                                       index)
+                                      index)
 
 
 def parameter_instance(tree: ast.Module, function: Function, name: str, message: Message,
-                        via: str | None, index: Index) -> Iterator[Instance[Message]]:
+                       via: str | None, index: Index) -> Iterator[Instance[Message]]:
     """The instance a parameter holds (or holds at ``name.<via>``) when never rebound."""
     facts = _names(function)
     if facts.counts[name] != 1:
