@@ -26,6 +26,7 @@ from pkgtool.records import record
 from pkgtool.rules.console_scripts import scripts_and_modules
 from pkgtool.rules.node_api import NODE_CLASSES, name_argument, node_constructions
 from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.rules.test_modules import test_files
 from pkgtool.lazy_regex import lazy_pattern
 
 PERMISSIVE = frozenset({"allow_undeclared_parameters",
@@ -408,15 +409,17 @@ def fully_seen_parameter_files(package: Package) -> dict[str, tuple[NodeRef, ...
 
     Empty when a launch file does not parse or gives a node parameters that are not read
     statically (a launch argument may name any file); a file whose name the package's
-    Python code other than setup.py mentions (it may read it itself), or that a launch file
-    hands to a launch file it includes, is left out.
+    Python code other than setup.py and tests mentions (it may read it itself), or that a
+    launch file hands to a launch file it includes, is left out.
     """
     launches = package.launch_files
     if any(f.problem for f in launches) or any(n.other_parameters for f in launches
                                                for n in f.nodes):
         return {}
-    code = [package.texts.get(p, "") for p in package.files  # setup.py installs, reads none
-            if p.endswith(".py") and p != "setup.py" and p not in {f.path for f in launches}]
+    skipped = {"setup.py", *(f.path for f in launches), *test_files(package)}  # setup.py
+    # installs files and tests check them: neither hands the node its parameters
+    code = [package.texts.get(p, "") for p in package.files
+            if p.endswith(".py") and p not in skipped]
     code.append(_handed_to_includes(package))
     return {path: nodes for path, nodes in parameter_file_nodes(package).items()
             if not any(posixpath.basename(path) in text for text in code)}

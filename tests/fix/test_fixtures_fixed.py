@@ -37,7 +37,7 @@ PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprec
           ("PYC065", "misspelt_names_and_marks"), ("PYC029", "keywords_no_distribution_takes"),
           ("DEP008", "typos_and_module_reads"), ("PYC066", "misspelt_names"),
           ("PYC014", "misspelled_reads"), ("DAT009", "misspelled_node"),
-          ("DAT009", "file_named_in_setup_py"),
+          ("DAT009", "file_named_in_setup_py"), ("DAT009", "file_named_in_a_test"),
           ("PYC026", "action_and_parameter_callbacks"), ("PYC026", "wrong_value_returned"),
           ("LCH005", "remappings_not_pairs"), ("LCH016", "misspelt_methods"),
           ("LCH010", "arguments_launch_rejects"), ("PYC041", "init_without_super"),
