@@ -1,10 +1,10 @@
-"""The names the package-level modules of ``launch`` and ``launch_ros`` define, and the
-substitutions their XML and YAML front ends know.
+"""The names the package-level modules of ``launch``, ``launch_ros`` and
+``ament_index_python`` define, and the substitutions launch's XML and YAML front ends know.
 
 Each module's top-level bindings and submodules (what ``from <module> import <name>`` can
 import), public names only, read from the ros2/launch and ros2/launch_ros sources of Foxy,
 Galactic, Humble, Iron, Jazzy and Rolling (December 2024): the union, so a name any of them has
-is known. A name missing here may still be newer than this table.
+is known; ament_index_python's public names from its Jazzy wheel (1.8), which Humble's match. A name missing here may still be newer than this table.
 """
 
 from __future__ import annotations
@@ -92,6 +92,26 @@ MODULE_NAMES: dict[str, frozenset[str]] = {
     "launch_ros.substitutions": frozenset("""
     ExecutableInPackage FindPackage FindPackagePrefix FindPackageShare Parameter
     executable_in_package find_package parameter
+    """.split()),
+    "ament_index_python": frozenset("""
+    InvalidResourceNameError InvalidResourceTypeNameError PackageNotFoundError
+    RESOURCE_INDEX_SUBFOLDER cli constants get_package_prefix get_package_share_directory
+    get_package_share_path get_packages_with_prefixes get_resource get_resource_types
+    get_resources get_search_paths has_resource packages resources search_paths
+    """.split()),
+    "ament_index_python.constants": frozenset("""
+    AMENT_PREFIX_PATH_ENV_VAR RESOURCE_INDEX_SUBFOLDER
+    """.split()),
+    "ament_index_python.packages": frozenset("""
+    PackageNotFoundError get_package_prefix get_package_share_directory get_package_share_path
+    get_packages_with_prefixes get_resource get_resources get_search_paths
+    """.split()),
+    "ament_index_python.resources": frozenset("""
+    InvalidResourceNameError InvalidResourceTypeNameError RESOURCE_INDEX_SUBFOLDER
+    get_resource get_resource_types get_resources get_search_paths has_resource
+    """.split()),
+    "ament_index_python.search_paths": frozenset("""
+    AMENT_PREFIX_PATH_ENV_VAR get_search_paths
     """.split()),
 }
 

@@ -1,4 +1,5 @@
-"""LCH009: an import of a launch class from a module of launch or launch_ros that lacks it."""
+"""LCH009: an import from a module of launch, launch_ros or ament_index_python that lacks the
+name, or from a module those packages do not have."""
 
 from __future__ import annotations
 
@@ -21,7 +22,7 @@ def _missing(module: str, name: str) -> tuple[str, str] | None:
 
 
 def _missing_module(dotted: str) -> tuple[str, str] | None:
-    """(message, fix) when ``dotted`` is a module of launch or launch_ros that does not
+    """(message, fix) when ``dotted`` is a module of the table's packages that does not
     exist, in the singular or plural of one that does (``launch_ros.substitution``) or a
     typo away from one (``launch_ros.actons``), else None."""
     parent, _, leaf = dotted.rpartition(".")
@@ -39,19 +40,19 @@ def _missing_module(dotted: str) -> tuple[str, str] | None:
 @rule("LCH009", "unknown-launch-import", Severity.ERROR,
       fix="Import the class from the module that defines it (see the message)")
 def unknown_launch_import(package: Package) -> Iterator[Hit]:
-    """An import from launch or launch_ros names a class or module that is not there.
+    """An import from launch, launch_ros or ament_index_python names something not there.
 
     ## What it does
     Checks the unguarded `from ... import` statements of the package's Python files (launch
-    files, nodes and tests) whose module is one of the package-level modules of `launch` and
+    files, nodes and tests) whose module is one of the package-level modules of `launch`,
     `launch_ros` (`launch.actions`, `launch.substitutions`, `launch_ros.actions`,
-    `launch_ros.substitutions`, ...): a name the module does not define is reported when
-    another of those modules does (`Node` is in `launch_ros.actions`, not `launch.actions`;
+    `launch_ros.substitutions`, ...) and `ament_index_python` (`ament_index_python.packages`):
+    a name the module does not define is reported when another of those modules does (`Node` is in `launch_ros.actions`, not `launch.actions`;
     `FindPackageShare` in `launch_ros.substitutions`, `PathJoinSubstitution` in
     `launch.substitutions`). A module that does not exist is reported when it is the singular
     or plural of one that does (`launch_ros.substitution`, `launch_ros.action`) or a typo
-    away from one (`launch_ros.actons`, `launch.substiutions`). The names
-    are those of Foxy to Rolling; a name no module of the table has is left alone (it may be
+    away from one (`launch_ros.actons`, `launch.substiutions`, `ament_index_python.packges`).
+    The names are those of Foxy to Rolling; a name no module of the table has is left alone (it may be
     newer than the table).
 
     ## Why is this bad?
@@ -75,7 +76,7 @@ def unknown_launch_import(package: Package) -> Iterator[Hit]:
     for module in all_python(package):
         for found in module.imports:
             if found.level or found.guarded or found.module.split(".")[0] not in (
-                    "launch", "launch_ros"):
+                    "launch", "launch_ros", "ament_index_python"):
                 continue
             problems = [_missing_module(found.module)] if found.module not in MODULE_NAMES \
                 else [_missing(found.module, name) for name in found.names]
