@@ -33,7 +33,7 @@ def _base(imported: Import, dotted: str, is_package: bool) -> str | None:
 def _in_tree(package: Package, module: str) -> bool:
     """True when the package has a file or folder for the dotted ``module`` (it may be
     uninstalled for another reason, which other rules report), or may generate it: its
-    name is in setup.py, CMakeLists.txt (an extension module CMake builds,
+    name (the first of its names with no folder in the package) is in setup.py, CMakeLists.txt (an extension module CMake builds,
     ``pybind11_add_module(name ...)``) or a ``.gitignore`` (a module written at build
     time), or a ``.gitignore`` leaves out its file or a folder around it (code a script
     generates, ``flatc -o my_pkg/flatbuffers``, or the user copies in); or it lies in a git
@@ -42,14 +42,25 @@ def _in_tree(package: Package, module: str) -> bool:
     path = module.replace(".", "/")
     generated = [package.texts.get(f, "") for f in package.files
                  if f in ("setup.py", "CMakeLists.txt") or f.endswith(".gitignore")]
-    stem = module.rpartition(".")[2]
     folder, _, stem = path.rpartition("/")
     prefix = f"{folder}/{stem}." if folder else f"{stem}."
+    missing = _first_missing(package, module.split("."))
     return package.has_file(f"{path}.py") or under(path, package.unfetched) or \
         ignored(f"{path}.py", package.ignores) or any(
         f.startswith(prefix) and f.endswith((".so", ".pyd")) for f in package.files) or any(
         f.startswith(f"{path}/") for f in package.files) or any(
-        re.search(rf"\b{re.escape(stem)}\b", text) for text in generated)
+        re.search(rf"\b{re.escape(missing)}\b", text) for text in generated)
+
+
+def _first_missing(package: Package, parts: list[str]) -> str:
+    """The first of a dotted module's names with no folder in the package (``senors`` of
+    ``my_pkg.senors.imu``, whose ``my_pkg/senors/`` does not exist); the last name when every
+    folder exists. Only that name can be one a build step generates."""
+    for depth in range(1, len(parts)):
+        folder = "/".join(parts[:depth])
+        if not any(f.startswith(f"{folder}/") for f in package.files):
+            return parts[depth - 1]
+    return parts[-1]
 
 
 def _left_out(package: Package, module: str, installed: dict[str, str]) -> str | None:
