@@ -4,7 +4,8 @@
 Each module's top-level bindings and submodules (what ``from <module> import <name>`` can
 import), public names only, read from the ros2/launch and ros2/launch_ros sources of Foxy,
 Galactic, Humble, Iron, Jazzy and Rolling (December 2024): the union, so a name any of them has
-is known; ament_index_python's public names from its Jazzy wheel (1.8), which Humble's match. A name missing here may still be newer than this table.
+is known; ament_index_python's public names from its Jazzy wheel (1.8), which Humble's match. A
+name missing here may still be newer than this table.
 """
 
 from __future__ import annotations

@@ -32,10 +32,11 @@ def _base(imported: Import, dotted: str, is_package: bool) -> str | None:
 
 def _in_tree(package: Package, module: str) -> bool:
     """True when the package has a file or folder for the dotted ``module`` (it may be
-    uninstalled for another reason, which other rules report), or may generate it: its
-    name (the first of its names with no folder in the package) is in setup.py, CMakeLists.txt (an extension module CMake builds,
-    ``pybind11_add_module(name ...)``) or a ``.gitignore`` (a module written at build
-    time), or a ``.gitignore`` leaves out its file or a folder around it (code a script
+    uninstalled for another reason, which other rules report), or may generate it: its name
+    (the first of its names with no folder in the package) is in setup.py, CMakeLists.txt (an
+    extension module CMake builds, ``pybind11_add_module(name ...)``) or a ``.gitignore`` (a
+    module written at build time), or a ``.gitignore`` leaves out its file or a folder around
+    it (code a script
     generates, ``flatc -o my_pkg/flatbuffers``, or the user copies in); or it lies in a git
     submodule that is not checked out (SYN005 says so); or it is a compiled extension module
     kept in the tree (``dsrbind.so``, ``dsrbind.cpython-312-x86_64-linux-gnu.so``)."""

@@ -47,13 +47,14 @@ def unknown_launch_import(package: Package) -> Iterator[Hit]:
     files, nodes and tests) whose module is one of the package-level modules of `launch`,
     `launch_ros` (`launch.actions`, `launch.substitutions`, `launch_ros.actions`,
     `launch_ros.substitutions`, ...) and `ament_index_python` (`ament_index_python.packages`):
-    a name the module does not define is reported when another of those modules does (`Node` is in `launch_ros.actions`, not `launch.actions`;
-    `FindPackageShare` in `launch_ros.substitutions`, `PathJoinSubstitution` in
-    `launch.substitutions`). A module that does not exist is reported when it is the singular
-    or plural of one that does (`launch_ros.substitution`, `launch_ros.action`) or a typo
-    away from one (`launch_ros.actons`, `launch.substiutions`, `ament_index_python.packges`).
-    The names are those of Foxy to Rolling; a name no module of the table has is left alone (it may be
-    newer than the table).
+    a name the module does not define is reported when another of those modules does (`Node` is
+    in `launch_ros.actions`, not `launch.actions`; `FindPackageShare` in
+    `launch_ros.substitutions`, `PathJoinSubstitution` in `launch.substitutions`). A module
+    that does not exist is reported when it is the singular or plural of one that does
+    (`launch_ros.substitution`, `launch_ros.action`) or a typo away from one
+    (`launch_ros.actons`, `launch.substiutions`, `ament_index_python.packges`). The names are
+    those of Foxy to Rolling; a name no module of the table has is left alone (it may be newer
+    than the table).
 
     ## Why is this bad?
     The import raises `ImportError` (`cannot import name 'Node' from 'launch.actions'`):
