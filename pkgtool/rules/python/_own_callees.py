@@ -2,7 +2,9 @@
 arguments bind to their parameters.
 
 ``self.name(...)`` in a plain method of a class runs the class's own ``def name`` when the
-class body binds ``name`` once and no ``self.name`` is ever assigned; ``name(...)`` runs the
+class body binds ``name`` once and no ``self.name`` is ever assigned, and so does
+``x.name(...)`` where ``x`` certainly holds an instance of the class and the module assigns
+no attribute ``name``; ``name(...)`` runs the
 module's top-level ``def name`` (or constructs its ``class name``) when no scope around the
 call binds ``name`` and the module binds it once.
 """
@@ -14,6 +16,7 @@ import ast
 from pkgtool.model.ast_nodes import subtree
 from pkgtool.model.memo import per_tree
 from pkgtool.rules.node_api import unpacks
+from pkgtool.rules.python._message_instances import binding_counts
 from pkgtool.rules.scopes import scope_bindings
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index
 
@@ -31,7 +34,7 @@ def _definitions(scope: ast.Module | ast.ClassDef) -> dict[str, list[ast.stmt]]:
 
 
 @per_tree
-def _stored_attributes(cls: ast.ClassDef) -> frozenset[str]:
+def _stored_attributes(cls: ast.ClassDef | ast.Module) -> frozenset[str]:
     """The attribute names assigned or deleted anywhere in ``cls`` (``x.name = ...``)."""
     return frozenset(n.attr for n in subtree(cls)
                      if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load))
@@ -80,6 +83,50 @@ def own_method(call: ast.Call, index: Index) -> tuple[ast.FunctionDef, ast.Class
     assert cls is not None
     method = None if func.attr in _stored_attributes(cls) else defined_once(cls, func.attr)
     return (method, cls) if isinstance(method, ast.FunctionDef) else None
+
+
+def instance_method(call: ast.Call, index: Index, tree: ast.Module
+                    ) -> tuple[ast.FunctionDef, ast.ClassDef] | None:
+    """The method ``x.name()`` calls where ``x`` certainly holds an instance of a class of the
+    module (:func:`_instance_class`), found in that class, when nothing in the module assigns
+    an attribute ``name``; with that class."""
+    func = call.func
+    if not (isinstance(func, ast.Attribute) and isinstance(func.value, ast.Name)) or \
+            index.enclosing_class(call) is not None and index.enclosing_function(call) is None:
+        return None
+    scope = index.enclosing_function(call, through_lambdas=False)
+    if scope is None and index.functions_around(call):
+        return None  # inside a lambda: its parameters may shadow the name
+    name = _instance_class(scope or tree, func.value.id, index)
+    cls = defined_once(tree, name, ast.ClassDef) if name else None
+    if not isinstance(cls, ast.ClassDef) or rebound_around(call, cls.name, index) or \
+            func.attr in _stored_attributes(tree):
+        return None
+    method = defined_once(cls, func.attr)
+    return (method, cls) if isinstance(method, ast.FunctionDef) else None
+
+
+def _instance_class(scope: ast.AST, name: str, index: Index) -> str | None:
+    """The class ``name`` is an instance of in ``scope``, when ``scope`` (and every scope in
+    it) binds ``name`` once: as a parameter annotated with a class name (``node:
+    Talker``), or by ``name = Class(...)`` in the scope's own code."""
+    if binding_counts(scope)[name] != 1:
+        return None
+    if isinstance(scope, FUNCTIONS):
+        arguments = scope.args
+        for parameter in (*arguments.posonlyargs, *arguments.args, *arguments.kwonlyargs):
+            if parameter.arg == name:
+                note = parameter.annotation
+                return note.id if isinstance(note, ast.Name) else None
+    for node in subtree(scope):
+        if isinstance(node, ast.Assign) and len(node.targets) == 1 and \
+                isinstance(node.targets[0], ast.Name) and node.targets[0].id == name:
+            value = node.value
+            own = index.enclosing_function(node, through_lambdas=False) is (
+                scope if isinstance(scope, FUNCTIONS) else None)
+            return value.func.id if own and isinstance(value, ast.Call) and \
+                isinstance(value.func, ast.Name) else None
+    return None
 
 
 def own_definition(call: ast.Call, index: Index, tree: ast.Module,

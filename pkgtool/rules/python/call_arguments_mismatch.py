@@ -9,8 +9,9 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import bases_are_nodes
-from pkgtool.rules.python._own_callees import (binding_error, defined_once, may_run_own,
-                                               own_definition, own_method, rebound_around)
+from pkgtool.rules.python._own_callees import (binding_error, defined_once, instance_method,
+                                               may_run_own, own_definition, own_method,
+                                               rebound_around)
 from pkgtool.rules.python._package_modules import imported_from_package, modules_by_name
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, base_names, installed_trees
@@ -30,7 +31,7 @@ def _callee(call: ast.Call, index: Index, tree: ast.Module, package: Package
     it: a method of the caller's own class (when no class derives from that class), a
     function of the module or one imported from another module of the package, the
     ``__init__`` of such a class."""
-    method = own_method(call, index)
+    method = own_method(call, index) or instance_method(call, index, tree)
     if method is not None:
         function, cls = method
         if cls.name in base_names(package) or function.decorator_list or \
@@ -71,7 +72,9 @@ def call_arguments_mismatch(package: Package) -> Iterator[Hit]:
     function of the module or one imported from another installed module of the package
     (`from .trajectory import single_point`, `tick(...)`), a plain method of the caller's own class
     (`self.publish(...)`, when no class derives from that class and nothing assigns
-    `self.publish`), or the `__init__` of such a class deriving from nothing or from rclpy's
+    `self.publish`) or of a name that certainly holds an instance of such a class of the
+    module (`node = Talker()`, or a parameter annotated `node: Talker`, bound once:
+    `node.publish(...)`), or the `__init__` of such a class deriving from nothing or from rclpy's
     node classes alone (`Talker(...)`). Decorated functions and classes, calls
     passing `*args` or `**kwargs`, and names any scope around the call rebinds are left
     alone.
