@@ -255,6 +255,15 @@ def stdlib_name(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     yield from renames(package, findings, re.compile(r"has no `(\w+)` on Python"), WRITE_NAME)
 
 
+@fixer("PYC076", "Write the NumPy name the misspelt one is close to", safe=False)
+def numpy_name(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename a name no NumPy release defines to the one name it is a typo of (``np.uit8`` to
+    ``np.uint8``). Unsafe: it guesses which name was meant; the line raised AttributeError or
+    ImportError before."""
+    yield from renames(package, findings, re.compile(r"has no `(\w+)` in any release"),
+                       WRITE_NAME)
+
+
 @fixer("PYC064", "Read the attribute of the package's class the misspelt one is close to",
        safe=False)
 def instance_attribute(package: Package, findings: list[Finding]) -> Iterator[Fix]:

@@ -192,6 +192,7 @@ RULES = {
     "PYC073": ("empty-list-parameter-default", "warning", True, "python.empty_list_parameter"),
     "PYC074": ("unbound-after-except", "error", True, "python.unbound_after_except"),
     "PYC075": ("rclpy-object-called", "error", True, "python.rclpy_object_called"),
+    "PYC076": ("numpy-missing-attribute", "error", True, "python.numpy_missing_attribute"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),
@@ -229,6 +230,6 @@ FIXED = frozenset({
     "LCH018", "LCH020", "MAN004", "MAN012", "MAN013", "MAN015", "MAN017", "MAN018", "MAN019",
     "MAN021", "MAN024", "MAN027", "PYC001", "PYC013", "PYC014", "PYC016", "PYC019", "PYC025",
     "PYC026", "PYC029", "PYC031", "PYC032", "PYC033", "PYC041", "PYC046", "PYC047", "PYC050",
-    "PYC058", "PYC062", "PYC063", "PYC064", "PYC065", "PYC066", "PYC068", "PYC070", "SET003",
-    "SET004", "SET005", "SET006", "SET007", "SET008", "SET009", "SET010", "SET016",
+    "PYC058", "PYC062", "PYC063", "PYC064", "PYC065", "PYC066", "PYC068", "PYC070", "PYC076",
+    "SET003", "SET004", "SET005", "SET006", "SET007", "SET008", "SET009", "SET010", "SET016",
 })
