@@ -9,6 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import bases_are_nodes
+from pkgtool.rules.python._dataclass_init import dataclass_init
 from pkgtool.rules.python._own_callees import (binding_error, defined_once, instance_method,
                                                may_run_own, own_definition, own_method,
                                                rebound_around)
@@ -46,7 +47,12 @@ def _callee(call: ast.Call, index: Index, tree: ast.Module, package: Package
             found = defined_once(tree, imported[1], (ast.FunctionDef, ast.ClassDef))
     if isinstance(found, ast.FunctionDef):
         return (found, 0, found.name) if not found.decorator_list else None
-    if not isinstance(found, ast.ClassDef) or not _plain_class(found, index):
+    if not isinstance(found, ast.ClassDef):
+        return None
+    made = dataclass_init(found, index)
+    if made is not None:
+        return made, 1, f"{found.name}.__init__"
+    if not _plain_class(found, index):
         return None
     init = defined_once(found, "__init__")
     if not isinstance(init, ast.FunctionDef) or init.decorator_list:
@@ -75,7 +81,8 @@ def call_arguments_mismatch(package: Package) -> Iterator[Hit]:
     `self.publish`) or of a name that certainly holds an instance of such a class of the
     module (`node = Talker()`, or a parameter annotated `node: Talker`, bound once:
     `node.publish(...)`), or the `__init__` of such a class deriving from nothing or from rclpy's
-    node classes alone (`Talker(...)`). Decorated functions and classes, calls
+    node classes alone (`Talker(...)`), or the `__init__` that `@dataclass` writes for a
+    class of plain fields (`Settings(rate=1.0)`). Other decorated functions and classes, calls
     passing `*args` or `**kwargs`, and names any scope around the call rebinds are left
     alone.
 
