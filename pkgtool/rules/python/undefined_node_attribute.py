@@ -10,6 +10,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rclpy_node import (LIFECYCLE_NODE_ATTRIBUTES, LIFECYCLE_NODES,
                                           NODE_ATTRIBUTES)
 from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.records import record
@@ -20,6 +21,8 @@ from pkgtool.rules.python._assignments import (annotated_name, assigned_values, 
 from pkgtool.rules.python._message_instances import (attributes_taken, known_messages,
                                                      method_receiver)
 from pkgtool.rules.python._messages import message_instances
+from pkgtool.rules.python._own_callees import defined_once
+from pkgtool.rules.python._package_modules import imported_from_package, modules_by_name
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings
 from pkgtool.rules.syntax_trees import Index, base_names, installed_trees
@@ -79,6 +82,7 @@ def _on_message(node: ast.Attribute, fields: set[int]) -> bool:
     return False
 
 
+@per_package
 def _package_facts(package: Package) -> tuple[_Stores, frozenset[str]]:
     """What the installed modules store, and the names any class of the package derives
     from."""
@@ -101,18 +105,47 @@ def _package_facts(package: Package) -> tuple[_Stores, frozenset[str]]:
     return stores, base_names(package)
 
 
-def _node_classes(index: Index, bases: frozenset[str]
+def _node_classes(package: Package, tree: ast.Module, index: Index, bases: frozenset[str]
                   ) -> Iterator[tuple[ast.ClassDef, str, frozenset[str]]]:
-    """Plain classes deriving from rclpy's Node (or LifecycleNode) alone that no class of
-    the package extends, each with the name of its base and the attributes that has."""
+    """Plain classes deriving from rclpy's Node (or LifecycleNode) alone, directly or through
+    plain classes of the package (:func:`_lineage`), that no class of the package extends,
+    each with the name of rclpy's base and the attributes the bases have."""
     for cls in index.classes:
         if cls.decorator_list or cls.name in bases:
             continue
-        if derives_from_node_alone(cls, index):
-            yield cls, "Node", NODE_ATTRIBUTES
-        elif len(cls.bases) == 1 and not cls.keywords and \
-                index.qualified(cls.bases[0]) in LIFECYCLE_NODES:
-            yield cls, "LifecycleNode", LIFECYCLE_NODE_ATTRIBUTES
+        found = _lineage(package, cls, tree, index)
+        if found is not None:
+            yield cls, *found
+
+
+def _lineage(package: Package, cls: ast.ClassDef, tree: ast.Module, index: Index,
+             depth: int = 0) -> tuple[str, frozenset[str]] | None:
+    """rclpy's node class ``cls`` derives from through one base at each step, and what its
+    bases have: rclpy's attributes, and each package base's names and the attributes it
+    stores on ``self`` (a base of the module, or imported from an installed module of the
+    package; plain: one base, no decorator, no metaclass, no dynamic attributes)."""
+    if len(cls.bases) != 1 or cls.keywords or depth > 4:
+        return None
+    if derives_from_node_alone(cls, index):
+        return "Node", NODE_ATTRIBUTES
+    if index.qualified(cls.bases[0]) in LIFECYCLE_NODES:
+        return "LifecycleNode", LIFECYCLE_NODE_ATTRIBUTES
+    base = cls.bases[0]
+    if not isinstance(base, ast.Name) or not depth and not isinstance(
+            index.parents.get(id(cls)), ast.Module):
+        return None
+    parent: ast.AST | None = defined_once(tree, base.id, ast.ClassDef)
+    imported = imported_from_package(base.id, tree, index, package) if parent is None else None
+    if imported is not None:
+        tree, index = modules_by_name(package)[imported[0]]
+        parent = defined_once(tree, imported[1], ast.ClassDef)
+    if not isinstance(parent, ast.ClassDef) or parent.decorator_list or _dynamic(tree):
+        return None
+    found = _lineage(package, parent, tree, index, depth + 1)
+    if found is None:
+        return None
+    stored = _package_facts(package)[0].by_class.get(id(parent), set())
+    return found[0], found[1] | frozenset(scope_bindings(parent)) | frozenset(stored)
 
 
 def _suggestion(attr: str, known: set[str]) -> str:
@@ -161,7 +194,7 @@ def _instance_reads(package: Package, path: str, tree: ast.Module, index: Index,
     """Attributes read on a local name that holds an instance of one of the module's node
     classes (:func:`_instances`) that neither the class nor rclpy's Node (or LifecycleNode)
     has and nothing stores."""
-    found = list(_node_classes(index, bases))
+    found = list(_node_classes(package, tree, index, bases))
     kinds = {cls.name: (base, inherited) for cls, base, inherited in found}
     classes = {cls.name: cls for cls, _, _ in found}
     if not classes:
@@ -192,8 +225,11 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
     ## What it does
     In installed modules, looks at the classes deriving from `rclpy.node.Node` or
     `rclpy.lifecycle.Node` alone (no other base, no decorator, no metaclass, extended by no
-    class of the package) and reports `self.x` read in their plain methods when `x` is not a
-    method or class attribute of the class, not an attribute of rclpy's `Node` or
+    class of the package), directly or through such plain classes of the package (`class
+    Avoider(ScanAgent)`, `ScanAgent` deriving from `Node` in the module or another installed
+    module), and reports `self.x` read in their plain methods when `x` is not a method or
+    class attribute of the class or of its package bases, nor stored on `self` by them, not
+    an attribute of rclpy's `Node` or
     `LifecycleNode` (any of Humble to Rolling), and nothing may
     assign or delete it on an instance of the class: neither the class's own methods through
     `self`, nor any installed module of the package through anything but a method's `self`
@@ -234,14 +270,15 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
     """
     facts: tuple[_Stores, frozenset[str]] | None = None
     for module, tree, index in installed_trees(package):
-        if not any(i.top_level == "rclpy" for i in module.imports) or _dynamic(tree):
-            continue
+        if not any(i.top_level == "rclpy" for i in module.imports) and \
+                not any(cls.bases for cls in index.classes) or _dynamic(tree):
+            continue  # neither rclpy's classes nor subclasses of the package's
         facts = facts or _package_facts(package)
         stored, bases = facts
         probed = probed_names(index)
         augmented = _augmented(tree)
         yield from _instance_reads(package, module.path, tree, index, bases, stored, probed)
-        for cls, base, inherited in _node_classes(index, bases):
+        for cls, base, inherited in _node_classes(package, tree, index, bases):
             known = set(scope_bindings(cls)) | stored.of(cls) | inherited
             reads: dict[str, list[ast.Attribute]] = {}
             for method in cls.body:
