@@ -32,6 +32,16 @@ _DYNAMIC = frozenset({"setattr", "delattr", "vars", "__dict__", "__getattr__",
 """Names whose use in a module means any attribute may exist."""
 
 
+_OBJECT_NAMES = frozenset({
+    "__class__", "__del__", "__delattr__", "__dict__", "__dir__", "__doc__", "__enter__",
+    "__eq__", "__exit__", "__format__", "__ge__", "__getattribute__", "__getstate__", "__gt__",
+    "__hash__", "__init__", "__init_subclass__", "__le__", "__lt__", "__module__", "__ne__",
+    "__new__", "__reduce__", "__reduce_ex__", "__repr__", "__setattr__", "__sizeof__",
+    "__str__", "__subclasshook__", "__weakref__"})
+"""What every class has from ``object`` (Python 3.10-3.13), and the context manager methods
+rclpy's newer nodes add."""
+
+
 def _dynamic(tree: ast.Module) -> bool:
     """True when the module may create attributes in ways not written as ``x.name = ...``."""
     return (any(isinstance(n, ast.Name) and n.id in _DYNAMIC
@@ -241,7 +251,9 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
     catches `AttributeError` are left alone. The same goes for `node.x` read on a local name
     that holds an instance of such a class (`node = Talker()`, None as a placeholder aside,
     or a parameter annotated `node: Talker` and never rebound): `node.destroy()` for
-    `node.destroy_node()`. Typical causes: a misspelt callback
+    `node.destroy_node()`. So does `super().x` in those classes' methods when neither their
+    bases nor `object` have `x` (`super().__int__('talker')`, `super().spin()`). Typical
+    causes: a misspelt callback
     (`self.timer_calback`), a publisher stored as `self.publisher_` and used as
     `self.publisher`, a method renamed but not its uses.
 
@@ -302,3 +314,23 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
                 yield Hit(spans[0], f"`{cls.name}` has no attribute `{attr}`{hint}: nothing "
                           f"assigns `self.{attr}` and rclpy's {base} has none, so reading it "
                           "raises AttributeError", related=tuple(spans[1:]))
+            yield from _super_reads(module.path, cls, base, inherited)
+
+
+def _super_reads(path: str, cls: ast.ClassDef, base: str, inherited: frozenset[str]
+                 ) -> Iterator[Hit]:
+    """``super().x`` in the class's methods where neither its bases nor ``object`` have
+    ``x`` (``super().__int__('talker')``)."""
+    known = inherited | _OBJECT_NAMES
+    methods = [m for m in cls.body if isinstance(m, (ast.FunctionDef, ast.AsyncFunctionDef))]
+    for node in (n for m in methods for n in nodes_of_class(m, ast.Attribute)):
+        assert isinstance(node, ast.Attribute)
+        call = node.value
+        if isinstance(call, ast.Call) and isinstance(call.func, ast.Name) and \
+                call.func.id == "super" and not call.args and node.attr not in known:
+            hint = _suggestion(node.attr, set(known))
+            yield Hit(Span(path, node.end_lineno or node.lineno,
+                           (node.end_col_offset or 0) - len(node.attr) + 1),
+                      f"`super().{node.attr}`: no base of `{cls.name}` (rclpy's {base} and "
+                      f"the package's) has `{node.attr}`{hint}, so reading it raises "
+                      "AttributeError")
