@@ -21,8 +21,11 @@ def _paths(call: ast.Call, index: Index, own: str) -> list[ast.expr]:
     """The file arguments of a launch call: each item of ``parameters=[...]`` of a launch_ros
     node, the items after an option in the ``arguments=[...]`` of a node of another package
     than ``own`` (``['-d', 'rviz/view.rviz']``: only a text naming a file of the package
-    counts), and the first argument of a launch description source."""
+    counts), the first argument of a launch description source, and the words of an
+    ``ExecuteProcess`` command."""
     module, name = launch_class(call, index)
+    if name == "ExecuteProcess" and within(module, ("launch.actions",)):
+        return _command_words(call)
     if not within(module, _SOURCES):
         return []
     if name.endswith("LaunchDescriptionSource"):
@@ -38,6 +41,16 @@ def _paths(call: ast.Call, index: Index, own: str) -> list[ast.expr]:
                          if isinstance(before, ast.Constant) and
                          str(before.value).startswith("-"))
     return found
+
+
+def _command_words(call: ast.Call) -> list[ast.expr]:
+    """The words of an ``ExecuteProcess`` command list (``cmd=['python3', 'scripts/x.py']``),
+    run from the directory ``ros2 launch`` was started in, unless ``cwd=`` says another."""
+    if any(k.arg in ("cwd", None) for k in call.keywords):
+        return []
+    command = next((k.value for k in call.keywords if k.arg == "cmd"),
+                   call.args[0] if call.args else None)
+    return list(command.elts) if isinstance(command, (ast.List, ast.Tuple)) else []
 
 
 def _other_package(call: ast.Call, own: str) -> bool:
@@ -97,7 +110,9 @@ def relative_package_path(package: Package) -> Iterator[Hit]:
     `LaunchConfiguration` there reads) or after an option in the command line of a node of
     another package (`arguments=['-d', 'rviz/view.rviz']`), or as the file of a launch
     description source
-    (`PythonLaunchDescriptionSource('launch/robot.launch.py')`) in a Python launch file, or
+    (`PythonLaunchDescriptionSource('launch/robot.launch.py')`) or a word of an
+    `ExecuteProcess` command without `cwd=` (`cmd=['python3', 'scripts/tool.py']`) in a
+    Python launch file, or
     as the `from` of a node's `<param>` (`param: [{from: ...}]` in YAML), the `file` of an
     `<include>` or the `filename` of a `<set_parameters_from_file>` in an XML or YAML launch
     file, that is a relative path to a file of this package's source folder, or one written
