@@ -38,6 +38,7 @@ PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprec
           ("DEP008", "typos_and_module_reads"), ("PYC066", "misspelt_names"),
           ("PYC014", "misspelled_reads"), ("DAT009", "misspelled_node"),
           ("DAT009", "file_named_in_setup_py"), ("DAT009", "file_named_in_a_test"),
+          ("PYC064", "reads_on_self"),
           ("PYC026", "action_and_parameter_callbacks"), ("PYC026", "wrong_value_returned"),
           ("LCH005", "remappings_not_pairs"), ("LCH016", "misspelt_methods"),
           ("LCH010", "arguments_launch_rejects"), ("PYC041", "init_without_super"),

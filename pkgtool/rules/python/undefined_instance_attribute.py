@@ -13,12 +13,13 @@ from pkgtool.model.span import Span
 from pkgtool.rules.python._assignments import (annotated_name, assigned_values, is_none,
                                                parameter_annotation)
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
+from pkgtool.rules.python._message_instances import method_receiver
 from pkgtool.rules.python._own_callees import rebound_around
 from pkgtool.rules.python._package_classes import (attributes_of_class, closed_class,
                                                    package_class, package_classes)
 from pkgtool.rules.python._value_types import attribute_stores
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.rules.syntax_trees import Index, base_names, installed_trees
 
 
 def _instance_of(value: ast.expr, package: Package, tree: ast.Module, index: Index
@@ -69,6 +70,23 @@ def _class_read(target: ast.expr, node: ast.Attribute, index: Index, package: Pa
     return found if found and closed_class(found, package) else None
 
 
+def _own_class(target: ast.expr, node: ast.Attribute, index: Index, package: Package
+               ) -> str | None:
+    """The closed package class whose plain method reads ``self.x`` (``target`` is the
+    method's receiver), when no class of the package derives from it (a subclass's
+    instance may be the receiver)."""
+    if not isinstance(target, ast.Name) or target.id != "self":
+        return None
+    method = index.enclosing_function(node, through_lambdas=False)
+    cls = index.parents.get(id(method)) if method is not None else None
+    if not isinstance(cls, ast.ClassDef) or method_receiver(method) != "self" or \
+            cls.name in base_names(package):
+        return None
+    found = package_class(cls.name, index, package)
+    return found if found and closed_class(found, package) and \
+        package_classes(package).get(found, (None,))[0] is cls else None
+
+
 def _instance_target(target: ast.expr, index: Index) -> bool:
     """True for a read on ``<name>.x`` or on a name (not ``self``, not an import) that may hold
     an instance."""
@@ -86,7 +104,8 @@ def undefined_instance_attribute(package: Package) -> Iterator[Hit]:
     ## What it does
     In installed modules, reports `x.name` read where `x` is a class of the package
     (`Outcome.DONE`; defined in the module or imported from another module of the package,
-    the name rebound nowhere around the read), or a local name, a parameter or `self.x`
+    the name rebound nowhere around the read), `self` in a plain method of such a class that
+    no class of the package derives from, or a local name, a parameter or `self.x`
     that always holds an instance of one (every assignment of it is `x = Processor(...)`,
     `None` placeholders aside, or the parameter is annotated `x: Processor` and never
     rebound), when the class and its bases bind no `name` and nothing in the package defines
@@ -129,9 +148,10 @@ def undefined_instance_attribute(package: Package) -> Iterator[Hit]:
             if node.attr in everywhere or node.attr.startswith("__"):
                 continue
             cls = _class_read(target, node, index, package)
-            if cls is None and not _instance_target(target, index):
+            own = _own_class(target, node, index, package) if cls is None else None
+            if cls is None and own is None and not _instance_target(target, index):
                 continue
-            dotted = cls or _instance_of(target, package, tree, index)
+            dotted = cls or own or _instance_of(target, package, tree, index)
             probed = probed_names(index) if probed is None else probed
             if dotted is None or guarded(node, index, probed) or \
                     cls is not None and node.attr.startswith("_") or \
