@@ -248,15 +248,17 @@ def written_paths(tree: ast.Module) -> set[ast.expr]:
 def unread_argument_defaults(tree: ast.Module) -> set[ast.expr]:
     """The default values of launch arguments nothing reads: ``DeclareLaunchArgument('model',
     default_value=str(sdf))`` where no other text of the file is ``'model'`` (no
-    ``LaunchConfiguration('model')``, no ``context.launch_configurations['model']``) and the
+    ``LaunchConfiguration('model')`` but one assigned to a name nothing reads, no
+    ``context.launch_configurations['model']``) and the
     file includes no launch file (which could read it); with the values of the names such a
     default alone reads (``sdf = share / 'sdf' / 'robot.sdf'``)."""
     calls = nodes_of_class(tree, ast.Call)
     if any(last_name(call.func) == "IncludeLaunchDescription" for call in calls):
         return set()
     texts: dict[str, int] = {}
+    unused = _unused_configurations(tree)
     for constant in nodes_of_class(tree, ast.Constant):
-        if isinstance(constant.value, str):  # type: ignore[attr-defined]
+        if isinstance(constant.value, str) and id(constant) not in unused:  # type: ignore
             texts[constant.value] = texts.get(constant.value, 0) + 1  # type: ignore
     found: set[ast.expr] = set()
     for call in calls:
@@ -269,6 +271,17 @@ def unread_argument_defaults(tree: ast.Module) -> set[ast.expr]:
             found.add(default)
             found.update(_values_read_only_in(tree, default))
     return found
+
+
+def _unused_configurations(tree: ast.Module) -> set[int]:
+    """The ids of the names in ``x = LaunchConfiguration('name')`` assignments to a name ``x``
+    the module never reads: such a configuration is read by nothing."""
+    loaded = {n.id for n in nodes_of_class(tree, ast.Name)  # type: ignore[attr-defined]
+              if isinstance(n.ctx, ast.Load)}  # type: ignore[attr-defined]
+    return {id(node.value.args[0]) for node in nodes_of_class(tree, ast.Assign)  # type: ignore
+            if simple_assignment(node) and node.targets[0].id not in loaded  # type: ignore
+            and isinstance(node.value, ast.Call) and node.value.args  # type: ignore
+            and last_name(node.value.func) == "LaunchConfiguration"}  # type: ignore
 
 
 def _values_read_only_in(tree: ast.Module, part: ast.expr) -> list[ast.expr]:

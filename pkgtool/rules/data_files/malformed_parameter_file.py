@@ -114,8 +114,8 @@ def _node_level(path: str, mapping: yaml.MappingNode, names: tuple[str, ...], pa
                 yield Hit(_span(path, key), f"`ros__parameters` of `{'/'.join(names)}` is not "
                           "a mapping of parameters", "Write `ros__parameters: {}` or indent "
                           "the parameters under it")
-        elif (passed or nested) and _misspelled(name, value, names) and \
-                not _holds_parameters(value):
+        elif (passed or nested and names) and _misspelled(name, value, names) and \
+                not _holds_parameters(value):  # unpassed: a near miss needs a node above
             yield Hit(_span(path, key), f"`{name}` is not `ros__parameters`: ROS 2 reads no "
                       "parameters from it and rejects the file", RENAME.format(name=name))
         elif _is(value, "mapping"):
