@@ -142,7 +142,7 @@ def load_package(root: Path, context: Context | None = None) -> Package:
                           _installed_as_launch_file(relpath, shared)) and
                          not is_launch_test(relpath, text_of(relpath)) and
                          not other_yaml(relpath, text_of(relpath)) or
-                         _launch_by_content(relpath, text_of, nested, shared)):
+                         _launch_by_content(relpath, text_of, nested, shared, folders)):
             text = text_of(relpath)
             if text is not None:
                 launch = parse_launch(relpath, text)
@@ -255,7 +255,7 @@ def _cmake_shared(files: tuple[str, ...], text_of: Callable[[str], str | None]
                      and (f in installed or any(f.startswith(f"{i}/") for i in installed)))
 
 
-_KEPT_ASIDE = lazy_pattern(r"(?i)copy|backup|\bbak\b|(?:^|[._-])(?:old|orig)(?:[._-]|$)")
+_KEPT_ASIDE = lazy_pattern(r"(?i)copy|backup|\bbak\b|(?:^|[._-])(?:old|orig|original)(?:[._-]|$)")
 """Names of a copy kept aside (``robot.launch_copy.py``, ``launch_old.py``), which a whole
 installed folder carries along though nobody runs it."""
 
@@ -271,12 +271,14 @@ def _shared_sources(setup_py: SetupPy | ParseProblem | None) -> frozenset[str]:
 
 
 def _launch_by_content(relpath: str, text_of: Callable[[str], str | None],
-                       nested: frozenset[str], shared: frozenset[str]) -> bool:
+                       nested: frozenset[str], shared: frozenset[str],
+                       folders: frozenset[str] = frozenset()) -> bool:
     """A file in a ``launch`` folder (not a template) that is a launch file by its content,
     whatever its name: XML or YAML whose root is ``launch`` (a ``.launch`` file too, in ROS
     2's XML format), Python defining
     ``generate_launch_description`` that data_files installs in ``share/`` (``lab5-launch.py``;
-    not a module beside the launch files, nor a copy kept aside: ``launch_old.py``).
+    not a module beside the launch files, nor a copy kept aside: ``launch_old.py``) or that
+    lies right in the package's ``launch/`` folder (``launch/slam.py``, installed or not).
 
     ``ros2 launch`` accepts any file name; only files in a folder named ``launch`` are read
     for this, so URDF, RViz and parameter files elsewhere cost nothing.
@@ -288,7 +290,9 @@ def _launch_by_content(relpath: str, text_of: Callable[[str], str | None],
     if text is None:
         return False
     if relpath.endswith(".py"):
-        return relpath in shared and runs_as_launch_file(relpath, text)
+        loose = relpath.split("/")[0] == "launch" and relpath.count("/") == 1 and \
+            "launch" not in folders and _KEPT_ASIDE.search(relpath) is None
+        return (relpath in shared or loose) and runs_as_launch_file(relpath, text)
     if relpath.endswith(".xml"):
         return _LAUNCH_XML.match(text) is not None
     if relpath.endswith(".launch"):  # ROS 1's suffix, used by ROS 2 XML files at times
