@@ -54,12 +54,14 @@ def _in_tree(package: Package, module: str) -> bool:
 
 
 def _first_missing(package: Package, parts: list[str]) -> str:
-    """The first of a dotted module's names with no folder in the package (``senors`` of
-    ``my_pkg.senors.imu``, whose ``my_pkg/senors/`` does not exist); the last name when every
-    folder exists. Only that name can be one a build step generates."""
+    """The first of a dotted name's parts with no folder or module in the package (``senors``
+    of ``my_pkg.senors.imu``, whose ``my_pkg/senors/`` does not exist; ``Missing`` of
+    ``my_pkg.talker.Missing``); the last part when all exist. Only that name can be one a
+    build step generates."""
     for depth in range(1, len(parts)):
         folder = "/".join(parts[:depth])
-        if not any(f.startswith(f"{folder}/") for f in package.files):
+        if not package.has_file(f"{folder}.py") and \
+                not any(f.startswith(f"{folder}/") for f in package.files):
             return parts[depth - 1]
     return parts[-1]
 
