@@ -21,6 +21,7 @@ import posixpath
 from collections.abc import Iterable
 
 from pkgtool.model.cmake_text import DEPTH, commands, expand, set_variables
+from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.records import record
 
 _KEYWORDS = frozenset({"DEPENDENCIES", "LIBRARY_NAME", "SKIP_INSTALL", "ADD_LINTER_TESTS",
@@ -93,10 +94,10 @@ def _interface_args(args: list[str]) -> list[str]:
 
 def with_listed(found: dict[str, frozenset[str]], cmake: str | None, files: Iterable[str] = ()
                 ) -> dict[str, frozenset[str]] | None:
-    """``found`` (kind -> names of the interface folders) and what ``cmake`` lists besides
-    (its globs matched against ``files``, the package's), but files of its ``msg``, ``srv``
-    and ``action`` folders that ``files`` lacks (rosidl stops at a missing file: no such
-    interface is ever made).
+    """What ``cmake`` lists (its globs matched against ``files``, the package's), but files of
+    its ``msg``, ``srv`` and ``action`` folders that ``files`` lacks (rosidl stops at a
+    missing file: no such interface is ever made); when the CMake code rebuilds lists
+    (:func:`rebuilds_list`), also ``found`` (kind -> names of the interface folders).
 
     None when the list is open: the package defines interfaces no file of its tree shows.
     """
@@ -106,9 +107,23 @@ def with_listed(found: dict[str, frozenset[str]], cmake: str | None, files: Iter
     listed = listed_interfaces(cmake, files)
     if listed.open:
         return None
-    merged = dict(found)
     present = {path for path in listed.files
                if path in files or path.split("/", 1)[0] not in _KINDS}
-    for kind, names in interfaces_of_files(frozenset(present)).items():
+    made = interfaces_of_files(frozenset(present))
+    if not rebuilds_list(cmake):  # the list is all rosidl gets: unlisted files make nothing
+        return dict(made)
+    merged = dict(found)
+    for kind, names in made.items():
         merged[kind] = merged.get(kind, frozenset()) | names
     return merged
+
+
+_REBUILT_LIST = lazy_pattern(r"(?i)\bforeach\s*\(|\blist\s*\(\s*(?:TRANSFORM|APPEND|INSERT)")
+"""CMake that builds a list of files anew (``foreach(f ${MSG_FILES}) list(APPEND ...
+"msg/${f}")``): what the first list names are not the paths rosidl gets."""
+
+
+def rebuilds_list(cmake: str) -> bool:
+    """True when CMake code builds a list anew (a loop, ``list(APPEND ...)``): the lists it
+    sets are not read whole here."""
+    return _REBUILT_LIST.search(cmake) is not None

@@ -60,6 +60,7 @@ RULES = {
     "IFC004": ("interfaces-in-python-package", "error", True,
                "interfaces.interfaces_in_python_package"),
     "IFC005": ("missing-interface-file", "error", True, "interfaces.missing_interface_file"),
+    "IFC006": ("unlisted-interface-file", "warning", True, "interfaces.unlisted_interface_file"),
     "LCH001": ("launch-unknown-executable", "error", True, "launch.unknown_executable"),
     "LCH002": ("undeclared-launch-package", "error", True, "launch.undeclared_launch_package"),
     "LCH003": ("undeclared-launch-import", "warning", True, "launch.undeclared_launch_import"),

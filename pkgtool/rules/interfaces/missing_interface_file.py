@@ -5,18 +5,12 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.cmake_interfaces import listed_interfaces
+from pkgtool.model.cmake_interfaces import listed_interfaces, rebuilds_list
 from pkgtool.model.installed import cmake_text, is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.submodules import ignored, under
 from pkgtool.rules.registry import rule
-from pkgtool.lazy_regex import lazy_pattern
-
-_REBUILT_LIST = lazy_pattern(r"(?i)\bforeach\s*\(|\blist\s*\(\s*(?:TRANSFORM|APPEND|INSERT)")
-"""CMake that builds a list of files anew (``foreach(f ${MSG_FILES}) list(APPEND ...
-"msg/${f}")``): what the first list names are not the paths rosidl gets."""
-
 
 @rule("IFC005", "missing-interface-file", Severity.ERROR,
       fix="Write the interface file, or take it out of `rosidl_generate_interfaces`")
@@ -52,7 +46,7 @@ def missing_interface_file(package: Package) -> Iterator[Hit]:
     if cmake is None or "rosidl_generate_interfaces" not in cmake or is_ament_python(package):
         return
     text = cmake_text(package) or ""
-    if _REBUILT_LIST.search(text):
+    if rebuilds_list(text):
         return  # a list rebuilt by a loop or list() (names given folders later): not read
     listed = listed_interfaces(text, package.files)
     for path in sorted(listed.files):
