@@ -12,6 +12,7 @@ from pkgtool.model.span import Span
 from pkgtool.model.submodules import ignored, under
 from pkgtool.rules.registry import rule
 
+
 @rule("IFC005", "missing-interface-file", Severity.ERROR,
       fix="Write the interface file, or take it out of `rosidl_generate_interfaces`")
 def missing_interface_file(package: Package) -> Iterator[Hit]:
