@@ -70,11 +70,25 @@ def keys_for_import(top_level: str, distro: str = DEFAULT_DISTRO) -> tuple[str, 
     """The rosdep keys that install the top-level module ``top_level``, best first.
 
     The first key is one that resolves on ``distro`` when any does; empty when rosdep has no
-    key for the module. Module names are matched ignoring case, as Debian's names do.
+    key for the module. Module names are matched ignoring case, as Debian's names do, but
+    for the two Adafruit families (:func:`_other_adafruit_family`).
     """
-    keys = read("python_imports").values.get(top_level.lower(), "").split()
+    keys = [k for k in read("python_imports").values.get(top_level.lower(), "").split()
+            if not _other_adafruit_family(top_level, k)]
     usable = [k for k in keys if key_resolves(k, distro)]
     return tuple(usable + [k for k in keys if k not in usable])
+
+
+def _other_adafruit_family(top_level: str, key: str) -> bool:
+    """True for a key of the other Adafruit family than the import's: CircuitPython
+    libraries are imported in lower case (``adafruit_pca9685``) and installed by
+    ``*-circuitpython-*`` keys; the older Adafruit_Python libraries, installed by the other
+    ``adafruit-*`` keys, are imported capitalised (``Adafruit_PCA9685``). The table matches
+    names ignoring case, which would offer one family's key for the other's import."""
+    if not top_level.lower().startswith("adafruit_") or "adafruit" not in key or \
+            "blinka" in key:
+        return False
+    return ("circuitpython" in key) != top_level.startswith("adafruit_")
 
 
 @cache

@@ -120,8 +120,9 @@ def test_every_pip_name_that_is_its_import_name_maps_to_its_keys() -> None:
     """rosdep's pip names are the oracle: ``numpy`` installs module numpy, and so on."""
     checked = 0
     for module, keys in _pip_names().items():
-        if not module.isidentifier() or module in ("pyyaml", "pillow", "pyserial"):
-            continue
+        if not module.isidentifier() or module in ("pyyaml", "pillow", "pyserial") or \
+                module.startswith("adafruit_"):  # the older Adafruit_Python libraries'
+            continue  # distributions provide capitalised modules (Adafruit_PCA9685)
         got = set(rosdistro.keys_for_import(module))
         if got:
             checked += 1
@@ -137,10 +138,18 @@ def test_every_pip_name_that_is_its_import_name_maps_to_its_keys() -> None:
     ("speech_recognition", "python-speechrecognition-pip"), ("RPi", "python-rpi.gpio-pip"),
     ("Jetson", "python-jetson-gpio-pip"),
     ("adafruit_mpu6050", "python3-adafruit-circuitpython-mpu6050-pip"), ("vlc", "python-vlc-pip"),
+    ("Adafruit_PCA9685", "adafruit-pca9685-pip"),
+    ("adafruit_ads1x15", "python3-adafruit-circuitpython-ads1x15-pip"),
 ])
 def test_known_import_keys(module: str, key: str) -> None:
     assert rosdistro.keys_for_import(module)[0] == key
     assert key in _rosdep()
+
+
+def test_a_circuitpython_import_gets_no_key_of_the_older_adafruit_library() -> None:
+    """``adafruit-pca9685-pip`` installs ``Adafruit_PCA9685``; rosdep has no key for the
+    CircuitPython ``adafruit_pca9685`` (b150, b155: the old key was offered as the fix)."""
+    assert rosdistro.keys_for_import("adafruit_pca9685") == ()
 
 
 def test_keys_that_resolve_on_the_target_come_first() -> None:
