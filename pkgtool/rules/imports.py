@@ -5,7 +5,8 @@ Python), one of the package's own modules, a module next to the importing file, 
 the importing file's own package named through the package's bare name (DEP007's mistake), a
 module of a folder of the package the importing file (or, for test code, a ``conftest.py``
 above it) puts on ``sys.path`` before the import (:mod:`pkgtool.rules.sys_path`), or (in test
-code) a module pytest puts on ``sys.path``.
+code) a module pytest puts on ``sys.path``; after the importing file puts another module's
+folder on ``sys.path`` (``dirname(other_pkg.__file__)``), only ROS packages need a key.
 Third-party names map to rosdep keys through rosdep's data
 (:func:`pkgtool.knowledge.rosdistro.keys_for_import`); ROS names (released for the target, or
 ROS-looking) to ROS packages; Python packages of workspace packages to those packages; a name
@@ -38,7 +39,7 @@ from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.records import record
 from pkgtool.rules.optional_imports import optional_modules
-from pkgtool.rules.sys_path import outside_edits, sys_path_edits
+from pkgtool.rules.sys_path import outside_edits, sys_path_edits, vendored_edits
 from pkgtool.rules.test_modules import is_test_code, test_files
 from pkgtool.lazy_regex import lazy_pattern
 
@@ -530,6 +531,7 @@ def _needs(package: Package, module: PythonModule, guarded: bool | None) -> Iter
     owner = python_package_of(package, module)
     on_path = path_modules(package, module)
     above = outside_edits(package).get(module.path)
+    copies = vendored_edits(package).get(module.path)
     ros1_code = is_ros1_module(package, module)
     for imported in module.imports:
         top = imported.top_level
@@ -559,6 +561,8 @@ def _needs(package: Package, module: PythonModule, guarded: bool | None) -> Iter
         elif kind == "unknown" and above is not None and above < imported.span.line and \
                 not _holds_module(package, top):
             continue  # maybe a module of the checkout a `sys.path` edit above the package reaches
+        elif kind != "ros" and copies is not None and copies < imported.span.line:
+            continue  # maybe the copy of a library another package's folder holds
         if ros1 and kind == "ros":
             keys = _ros1_keys(top, keys)
         yield Need(module, imported, shown, kind, keys)

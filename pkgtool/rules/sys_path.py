@@ -54,11 +54,19 @@ def outside_edits(package: Package) -> dict[str, int]:
     return _package_edits(package)[1]
 
 
+def vendored_edits(package: Package) -> dict[str, int]:
+    """Module path -> the line of its first ``sys.path`` edit of a folder built from another
+    module's file (``os.path.dirname(webots_ros2_importer.__file__)``): a folder of another
+    installed package, which may hold a copy of any library (it vendors ``urdf2webots``)."""
+    return _package_edits(package)[2]
+
+
 @per_package
 def _package_edits(package: Package) -> tuple[dict[str, tuple[tuple[int, str], ...]],
-                                              dict[str, int]]:
+                                              dict[str, int], dict[str, int]]:
     inside: dict[str, tuple[tuple[int, str], ...]] = {}
     outside: dict[str, int] = {}
+    vendored: dict[str, int] = {}
     launch = [f.python for f in package.launch_files if f.python is not None]
     for module in (*package.modules, *launch):
         text = package.texts.get(module.path)
@@ -72,7 +80,20 @@ def _package_edits(package: Package) -> tuple[dict[str, tuple[tuple[int, str], .
         above = [line for line, folder in edits if folder is None]
         if above:
             outside[module.path] = min(above)
-    return inside, outside
+        copies = [n.lineno for n in _path_edits(tree) if _in_another_module(n.args[-1])]
+        if copies:
+            vendored[module.path] = min(copies)
+    return inside, outside, vendored
+
+
+def _path_edits(tree: ast.Module) -> Iterator[ast.Call]:
+    """The ``sys.path.insert(...)``/``append(...)`` calls of the module."""
+    aliases = _aliases(tree)
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and \
+                node.func.attr in _EDITS and node.args and \
+                _dotted(node.func.value, aliases) == "sys.path":
+            yield node
 
 
 def _edits(tree: ast.Module, path: str, package: Package) -> Iterator[tuple[int, str | None]]:
@@ -80,11 +101,7 @@ def _edits(tree: ast.Module, path: str, package: Package) -> Iterator[tuple[int,
     and (line, None) of each of a folder above the package's."""
     aliases = _aliases(tree)
     once = _assigned_once(tree)
-    for node in ast.walk(tree):
-        if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute)
-                and node.func.attr in _EDITS and node.args
-                and _dotted(node.func.value, aliases) == "sys.path"):
-            continue
+    for node in _path_edits(tree):
         folder = _path(node.args[-1], _Source(path, package.name), aliases, once, 0)
         relative = _relative(folder) if folder is not None else None
         if relative is not None and (relative == "" or any(
@@ -92,6 +109,14 @@ def _edits(tree: ast.Module, path: str, package: Package) -> Iterator[tuple[int,
             yield node.lineno, relative
         elif folder is not None and relative is None:
             yield node.lineno, None
+
+
+def _in_another_module(path: ast.expr) -> bool:
+    """True for a path built from another module's file (``os.path.dirname(
+    webots_ros2_importer.__file__)``): a folder of another installed package, which may
+    hold any module (a copy of a library it vendors)."""
+    return any(isinstance(n, ast.Attribute) and n.attr == "__file__" and
+               isinstance(n.value, (ast.Name, ast.Attribute)) for n in ast.walk(path))
 
 
 def file_relative_paths(tree: ast.Module, path: str) -> Iterator[tuple[ast.expr, str]]:
