@@ -3,8 +3,8 @@
 Command-line tools (`ros2`, `rqt`, linters, code generators) install their scripts to `bin/`
 on purpose. Scripts count as meant for `ros2 run` when there is evidence: a launch file of
 the package starts one of the package's executables, the package's README names `ros2 run
-<package>`, or a script's module imports rclpy's `Node` (it builds a node; `ros2` and `rqt`
-import rclpy for other things).
+<package>`, or a script's module imports rclpy's `Node` or spins one with `rclpy.spin()`
+(it runs a node; `ros2` and `rqt` import rclpy for other things).
 """
 
 from __future__ import annotations
@@ -33,7 +33,8 @@ def meant_for_ros2_run(package: Package) -> bool:
         return True
     files = installed_modules(package) or {}
     for entry in setup.console_scripts:
-        module = package.module(files.get(entry.module, ""))
+        path = files.get(entry.module) or entry.module.replace(".", "/") + ".py"  # the file
+        module = package.module(path)  # even where a missing __init__.py leaves it out
         if module is not None and any(_imports_node(i) for i in module.imports):
             return True
     return False
