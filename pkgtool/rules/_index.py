@@ -194,6 +194,7 @@ RULES = {
     "PYC074": ("unbound-after-except", "error", True, "python.unbound_after_except"),
     "PYC075": ("rclpy-object-called", "error", True, "python.rclpy_object_called"),
     "PYC076": ("numpy-missing-attribute", "error", True, "python.numpy_missing_attribute"),
+    "PYC077": ("rclpy-method-arguments", "error", True, "python.rclpy_method_arguments"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

@@ -13,9 +13,30 @@ from pkgtool.rules.syntax_trees import Index
 _LOOPS = (ast.For, ast.AsyncFor, ast.While)
 
 
+_LOG_LEVELS = frozenset({"debug", "info", "warn", "warning", "error", "fatal", "critical"})
+
+
+def _logs(statement: ast.stmt) -> bool:
+    """A log line or ``print()`` whose arguments call nothing (``self.get_logger().info(
+    f'Connecting to {port}...')``): it does not raise in practice."""
+    call = statement.value if isinstance(statement, ast.Expr) else None
+    if not isinstance(call, ast.Call):
+        return False
+    func = call.func
+    logger = isinstance(func, ast.Attribute) and func.attr in _LOG_LEVELS and (
+        isinstance(func.value, ast.Call) and isinstance(func.value.func, ast.Attribute) and
+        func.value.func.attr == "get_logger" or
+        isinstance(func.value, ast.Name) and "log" in func.value.id.lower())
+    printed = isinstance(func, ast.Name) and func.id == "print"
+    return (logger or printed) and not any(
+        isinstance(n, ast.Call) for a in (*call.args, *(k.value for k in call.keywords))
+        for n in ast.walk(a))
+
+
 def harmless(statement: ast.stmt) -> bool:
-    """Statements that cannot raise: ``pass`` and assignments of literals or names."""
-    if isinstance(statement, ast.Pass):
+    """Statements that cannot raise (in practice): ``pass``, assignments of literals or names,
+    and log lines (:func:`_logs`)."""
+    if isinstance(statement, ast.Pass) or _logs(statement):
         return True
     value = statement.value if isinstance(statement, (ast.Assign, ast.AnnAssign)) else None
     return value is not None and all(
