@@ -126,7 +126,8 @@ def list_files(root: Path, depth: Callable[[str], int | None] | None = None
     """Every regular file under ``root`` as sorted POSIX paths, skipping tool and build folders.
 
     Nested packages (a sub-folder holding its own package.xml) and virtual environments are not
-    part of this package. ``depth(name)``, when given, says how many folder levels to read
+    part of this package: of a nested package only its package.xml is listed, which marks the
+    folder (:func:`~pkgtool.model.launch.nested_packages`; CMake may install it whole). ``depth(name)``, when given, says how many folder levels to read
     below the top-level folder ``name`` (0: not read; None: all): the same files as without
     it, less those deeper than that.
     """
@@ -169,6 +170,9 @@ def _walk(root: Path, depth: Callable[[str], int | None] | None = None
                     if not _not_the_packages(entry.name, files, not prefix):
                         deeper = None if below is None else below - 1
                         stack.append((f"{prefix}{entry.name}/", inside, deeper))
+                    elif "package.xml" in files and "pyvenv.cfg" not in files:
+                        found.extend((f"{prefix}{entry.name}/{e.name}", e) for e in inside
+                                     if e.name == "package.xml")  # marks the nested package
                 elif entry.is_file():
                     found.append((prefix + entry.name, entry))
             except OSError:

@@ -139,6 +139,7 @@ def test_the_workspace_index_reads_the_same_from_the_folders_or_from_a_file_list
     write_tree(tmp_path, {
         "package.xml": "<package format='3'><name>things</name></package>\n",
         "CMakeLists.txt":
+            "foreach(f ${EXTRA})\n  list(APPEND listed \"${f}\")\nendforeach()\n"
             "rosidl_generate_interfaces(${PROJECT_NAME} \"interfaces/msg/Listed.msg\")\n"
             "ament_python_install_package(helpers PACKAGE_DIR python/helpers)\n",
         "msg/Plain.msg": "", "msg/a/b/c/Deep.msg": "", "msg/a/b/c/d/TooDeep.msg": "",
@@ -156,6 +157,17 @@ def test_the_workspace_index_reads_the_same_from_the_folders_or_from_a_file_list
     assert read.modules == {"things", "lib", "helpers", "linked"}  # setuptools follows links
     assert {kind: set(names) for kind, names in read.interfaces.items()} == {
         "msg": {"Plain", "Deep", "Shape", "Listed"}, "srv": {"Ask"}, "action": {"Go"}}
+
+
+def test_a_closed_interface_list_is_all_the_package_generates(tmp_path: Path) -> None:
+    """rosidl makes only what ``rosidl_generate_interfaces`` lists: a file of ``msg/`` the
+    list leaves out is no interface (IFC006 reports it)."""
+    write_tree(tmp_path, {
+        "package.xml": "<package format='3'><name>things</name></package>\n",
+        "CMakeLists.txt": "rosidl_generate_interfaces(${PROJECT_NAME} \"msg/Listed.msg\")\n",
+        "msg/Listed.msg": "", "msg/Unlisted.msg": "", "srv/Ask.srv": ""})
+    read = read_workspace_package(tmp_path)
+    assert {kind: set(names) for kind, names in read.interfaces.items()} == {"msg": {"Listed"}}
 
 
 def test_a_depth_limited_listing_is_the_full_one_less_what_lies_deeper(tmp_path: Path) -> None:
