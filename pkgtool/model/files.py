@@ -127,9 +127,10 @@ def list_files(root: Path, depth: Callable[[str], int | None] | None = None
 
     Nested packages (a sub-folder holding its own package.xml) and virtual environments are not
     part of this package: of a nested package only its package.xml is listed, which marks the
-    folder (:func:`~pkgtool.model.launch.nested_packages`; CMake may install it whole). ``depth(name)``, when given, says how many folder levels to read
-    below the top-level folder ``name`` (0: not read; None: all): the same files as without
-    it, less those deeper than that.
+    folder (:func:`~pkgtool.model.launch.nested_packages`; CMake may install it whole).
+    ``depth(name)``, when given, says how many folder levels to read below the top-level
+    folder ``name`` (0: not read; None: all): the same files as without it, less those
+    deeper than that.
     """
     return tuple(sorted(path for path, _ in _walk(root, depth)))
 
