@@ -16,12 +16,17 @@ _TARGETS = (ast.Name, ast.Attribute, ast.Subscript)
 """What an assignment can store to: the left side of a comparison that may be meant as one."""
 
 
+_SYMBOLS = {ast.Eq: "==", ast.NotEq: "!=", ast.Lt: "<", ast.LtE: "<=", ast.Gt: ">",
+            ast.GtE: ">="}
+"""The comparisons reported, by operator class, as written."""
+
+
 def comparison_statements(tree: ast.Module) -> Iterator[ast.Compare]:
-    """The ``a == b`` expressions that are whole statements."""
+    """The ``a == b`` (``!=``, ``<``, ...) expressions that are whole statements."""
     for statement in nodes_of_class(tree, ast.Expr):
         value = statement.value  # type: ignore[attr-defined]
         if isinstance(value, ast.Compare) and len(value.ops) == 1 and \
-                isinstance(value.ops[0], ast.Eq):
+                type(value.ops[0]) in _SYMBOLS:
             yield value
 
 
@@ -31,8 +36,9 @@ def comparison_as_statement(package: Package) -> Iterator[Hit]:
     """A comparison `x == y` stands alone as a statement: it does nothing.
 
     ## What it does
-    Reports a statement that is only an equality comparison (`msg.data == 'hello'`,
-    `self.count == 0`, `add(1, 2) == 3` in a test), in every Python file of the package.
+    Reports a statement that is only a comparison (`msg.data == 'hello'`, `self.count == 0`,
+    `add(1, 2) == 3` or `result != None` in a test; also `<`, `<=`, `>`, `>=`), in every
+    Python file of the package.
     When the comparison holds a call (`cv2.waitKey(50) & 0xFF == ord('q')`), the call still
     runs: the message says so and proposes using the result, not removing the line.
 
@@ -53,18 +59,20 @@ def comparison_as_statement(package: Package) -> Iterator[Hit]:
     msg.data = 'hello'
     ```
     """
-    for path, text, tree in python_files(package, ("==",)):
+    for path, text, tree in python_files(package, ("==", "!=", "<", ">")):
         for compare in comparison_statements(tree):
             left, right = (_written(text, side) for side in (compare.left,
                                                              compare.comparators[0]))
-            meant = f"`assert {left} == {right}`" if is_test_material(path) else \
-                f"`{left} = {right}`" if isinstance(compare.left, _TARGETS) else None
+            op = _SYMBOLS[type(compare.ops[0])]
+            meant = f"`assert {left} {op} {right}`" if is_test_material(path) else \
+                f"`{left} = {right}`" if isinstance(compare.left, _TARGETS) and op == "==" \
+                else None
             called = meant is None and any(isinstance(node, ast.Call)
                                            for node in ast.walk(compare))
             effect = "its calls run, but the comparison is lost" if called else \
                 "the statement does nothing"
             yield Hit(Span(path, compare.lineno, compare.col_offset + 1),
-                      f"`{left} == {right}` compares and drops the result: {effect}" +
+                      f"`{left} {op} {right}` compares and drops the result: {effect}" +
                       (f" (did you mean {meant}?)" if meant else ""),
                       f"Write {meant}" if meant else "Use the result (`if ...:`)" if called
                       else "Use the result, or remove the line")
