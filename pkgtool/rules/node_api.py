@@ -11,6 +11,7 @@ import ast
 from collections.abc import Collection, Iterator
 
 from pkgtool.model.ast_nodes import is_super_init
+from pkgtool.model.installed import installed_modules
 from pkgtool.model.memo import per_package, per_tree
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
@@ -76,9 +77,52 @@ def node_api_calls(package: Package, methods: Collection[str] = PARAMETERS
                    ) -> Iterator[tuple[PythonModule, ast.Call, str, Index]]:
     """``x.<method>(...)`` calls of ``methods`` (:data:`PARAMETERS`), with the method name;
     not where ``x`` is certainly no node (:func:`not_from_rclpy`)."""
+    own = _own_tops(package)
     for module, call, method, index in _method_calls(package):
-        if method in methods and not not_from_rclpy(call.func.value, index):  # type: ignore
+        receiver = call.func.value  # type: ignore[attr-defined]
+        if method in methods and not not_from_rclpy(receiver, index) and \
+                not _made_elsewhere(receiver, index, own):
             yield module, call, method, index
+
+
+@per_package
+def _own_tops(package: Package) -> frozenset[str]:
+    """The top-level names of the modules setup.py installs, or when that is not known, of
+    every folder and module holding the package's Python files (``src`` of ``src/pkg/x.py``
+    too), and the package's name."""
+    installed = installed_modules(package)
+    if installed is not None:
+        return frozenset(n.split(".")[0] for n in installed) | {package.name}
+    return frozenset(part for module in package.modules
+                     for part in module.path.removesuffix(".py").split("/")) | {package.name}
+
+
+def _made_elsewhere(receiver: ast.expr, index: Index, own: frozenset[str]) -> bool:
+    """True for a local name bound once to what a class of another library than rclpy and
+    the package makes (``arm = MoveItPy(...)``: ``arm.create_subscription()`` is no node's)."""
+    value = _only_value(receiver, index) if isinstance(receiver, ast.Name) else None
+    made = value.func if isinstance(value, ast.Call) else None
+    qualified = index.qualified(made) if isinstance(made, (ast.Name, ast.Attribute)) else None
+    return qualified is not None and qualified.split(".")[0] not in own | {"rclpy"} and \
+        not (isinstance(made, ast.Name) and made.id in index.relative)
+
+
+def _only_value(name: ast.Name, index: Index) -> ast.expr | None:
+    """The value of the one ``name = value`` binding ``name`` in the function around it, when
+    that function binds the name nowhere else (no parameter, loop or second assignment)."""
+    function = index.enclosing_function(name)
+    if function is None:
+        return None
+    arguments = function.args
+    if any(a.arg == name.id for a in (*arguments.posonlyargs, *arguments.args,
+                                      *arguments.kwonlyargs, arguments.vararg,
+                                      arguments.kwarg) if a is not None):
+        return None
+    stores = [n for n in ast.walk(function) if isinstance(n, ast.Name) and n.id == name.id
+              and not isinstance(n.ctx, ast.Load)]
+    assigns = [n for n in ast.walk(function) if isinstance(n, ast.Assign) and
+               len(n.targets) == 1 and n.targets[0] in stores]
+    return assigns[0].value if len(stores) == 1 and len(assigns) == 1 else None
 
 
 @per_package
