@@ -457,7 +457,18 @@ def stamp(arguments: dict[str, Any], colour: bool) -> list[Any]:
     import pkgtool
 
     return [SCHEMA, pkgtool.__version__, sys.executable, sys.version, os.getcwd(), colour,
-            sorted(arguments.items())]
+            sorted(arguments.items()), _source_stamp(Path(pkgtool.__file__).parent)]
+
+
+def _source_stamp(code: Path) -> list[Any]:
+    """For pkgtool run from a source tree (an editable install, not ``site-packages``), the
+    sizes and times of its files: an edited rule must not replay an older report. A release
+    is told apart by its version alone."""
+    if "site-packages" in code.parts or "dist-packages" in code.parts:
+        return []
+    from pkgtool.model.files import scan
+
+    return [[path, *size_time] for path, size_time in scan(code)]
 
 
 class Record(NamedTuple):

@@ -19,7 +19,8 @@ class Import:
     a module-level class's ``__init__``) that the module only ever calls (constructs) inside
     such ``try`` blocks (an optional backend with a fallback), under ``if
     TYPE_CHECKING:``, in either branch of an ``importlib.util.find_spec`` check or after one
-    that raises or returns (``if find_spec("x") is None: raise ...``), in either branch of a
+    that raises or returns (``if find_spec("x") is None: raise ...``), after a call that
+    pip-installs requirements on demand (``check_requirements('x')``), in either branch of a
     test on ``__name__`` or ``__package__`` (run as a script or as a package), and in
     branches that never run on Python 3 (:mod:`pkgtool.model.static_branches`). ``names``
     are the names of a ``from`` import.

@@ -54,13 +54,28 @@ def _is_find_spec_exit(node: ast.AST) -> bool:
         isinstance(node.body[-1], (ast.Raise, ast.Return)) and _mentions_find_spec(node.test)
 
 
+_INSTALLERS = frozenset({"check_requirements", "check_requirement", "install_requirements",
+                         "pip_install"})
+"""Functions that pip-install a missing requirement on demand (YOLOv5's and Ultralytics'
+``check_requirements('onnxruntime')`` before ``import onnxruntime``)."""
+
+
+def _installs_on_demand(node: ast.AST) -> bool:
+    """True for a statement that is a call of an on-demand installer (:data:`_INSTALLERS`)."""
+    call = node.value if isinstance(node, ast.Expr) else None
+    func = call.func if isinstance(call, ast.Call) else None
+    return (func.id if isinstance(func, ast.Name) else func.attr if
+            isinstance(func, ast.Attribute) else "") in _INSTALLERS
+
+
 def _block(statements: list[ast.AST], guarded: bool) -> list[tuple[ast.AST, bool]]:
     """``statements`` each with whether its imports are guarded: those after a
-    :func:`_is_find_spec_exit` guard clause are, like those inside such an ``if``."""
+    :func:`_is_find_spec_exit` guard clause are, like those inside such an ``if``, and so
+    are those after an on-demand install (:func:`_installs_on_demand`)."""
     parts = []
     for statement in statements:
         parts.append((statement, guarded))
-        guarded = guarded or _is_find_spec_exit(statement)
+        guarded = guarded or _is_find_spec_exit(statement) or _installs_on_demand(statement)
     return parts
 
 

@@ -289,3 +289,19 @@ def test_file_and_folder_names_that_are_not_utf8(tmp_path: Path) -> None:
     assert "PYC001" in expected
     assert _lint(ws).stdout == expected
     assert _lint(ws).stdout == expected
+
+
+def test_a_source_tree_stamps_its_files_and_a_release_its_version(tmp_path: Path) -> None:
+    """An edited rule in an editable install must not replay an older report; an installed
+    release is told apart by its version (its files are not scanned)."""
+    from pkgtool.cache.replay import _source_stamp
+
+    source = tmp_path / "src" / "pkgtool"
+    source.mkdir(parents=True)
+    (source / "rule.py").write_text("A = 1\n")
+    before = _source_stamp(source)
+    (source / "rule.py").write_text("A = 22\n")
+    assert before and _source_stamp(source) != before
+    release = tmp_path / "lib" / "site-packages" / "pkgtool"
+    release.mkdir(parents=True)
+    assert _source_stamp(release) == []

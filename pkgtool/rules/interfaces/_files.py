@@ -3,9 +3,9 @@
 from __future__ import annotations
 
 
-from pkgtool.model.cmake_interfaces import listed_interfaces
+from pkgtool.model.cmake_interfaces import ListedInterfaces, listed_interfaces, rebuilds_list
 from pkgtool.model.context import interface_file
-from pkgtool.model.installed import cmake_text
+from pkgtool.model.installed import cmake_text, is_ament_python
 from pkgtool.model.interface_file import InterfaceFile, read_interface
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package, is_interface_definition
@@ -62,3 +62,14 @@ def built_interface_files(package: Package) -> tuple[InterfaceFile, ...]:
         return ()
     listed = listed_interfaces(cmake, package.files).files
     return tuple(found for found in interface_files(package) if found.path in listed)
+
+
+def read_listing(package: Package) -> ListedInterfaces | None:
+    """The interface files a CMake package's ``rosidl_generate_interfaces`` lists (with the
+    CMake files it includes), when it calls it and no loop or ``list()`` rebuilds its lists
+    (names given folders later, not read here); None otherwise."""
+    cmake = package.texts.get("CMakeLists.txt")
+    if cmake is None or "rosidl_generate_interfaces" not in cmake or is_ament_python(package):
+        return None
+    text = cmake_text(package) or ""
+    return None if rebuilds_list(text) else listed_interfaces(text, package.files)

@@ -5,11 +5,10 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.cmake_interfaces import listed_interfaces, rebuilds_list
-from pkgtool.model.installed import cmake_text, is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.submodules import ignored, under
+from pkgtool.rules.interfaces._files import read_listing
 from pkgtool.rules.registry import rule
 
 
@@ -43,13 +42,10 @@ def missing_interface_file(package: Package) -> Iterator[Hit]:
     rosidl_generate_interfaces(${PROJECT_NAME} "msg/Status.msg")
     ```
     """
-    cmake = package.texts.get("CMakeLists.txt")
-    if cmake is None or "rosidl_generate_interfaces" not in cmake or is_ament_python(package):
+    listed = read_listing(package)
+    if listed is None:
         return
-    text = cmake_text(package) or ""
-    if rebuilds_list(text):
-        return  # a list rebuilt by a loop or list() (names given folders later): not read
-    listed = listed_interfaces(text, package.files)
+    cmake = package.texts.get("CMakeLists.txt", "")
     for path in sorted(listed.files):
         if "/" not in path or package.has_file(path) or under(path, package.unfetched) or \
                 ignored(path, package.ignores):

@@ -6,10 +6,9 @@ import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.cmake_interfaces import listed_interfaces, rebuilds_list
-from pkgtool.model.installed import cmake_text, is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.rules.interfaces._files import read_listing
 from pkgtool.rules.registry import rule
 
 _KIND_NAMES = {"msg": "message", "srv": "service", "action": "action"}
@@ -45,12 +44,8 @@ def unlisted_interface_file(package: Package) -> Iterator[Hit]:
     rosidl_generate_interfaces(${PROJECT_NAME} "msg/Status.msg" "srv/Reset.srv")
     ```
     """
-    cmake = package.texts.get("CMakeLists.txt")
-    if cmake is None or "rosidl_generate_interfaces" not in cmake or is_ament_python(package):
-        return
-    text = cmake_text(package) or ""
-    listed = listed_interfaces(text, package.files)
-    if listed.open or rebuilds_list(text) or not listed.files:
+    listed = read_listing(package)
+    if listed is None or listed.open or not listed.files:
         return
     for path in package.files:
         folder, name = posixpath.split(path)
