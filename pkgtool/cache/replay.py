@@ -466,6 +466,11 @@ def _source_stamp(code: Path) -> list[Any]:
     is told apart by its version alone."""
     if "site-packages" in code.parts or "dist-packages" in code.parts:
         return []
+    return code_files(code)
+
+
+def code_files(code: Path) -> list[list[Any]]:
+    """The files of pkgtool's code folder ``code``, each with its size and time."""
     from pkgtool.model.files import scan
 
     return [[path, *size_time] for path, size_time in scan(code)]

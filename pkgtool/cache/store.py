@@ -35,7 +35,7 @@ from pathlib import Path
 from typing import Any
 
 from pkgtool.cache import prepare, write_atomically
-from pkgtool.cache.replay import site_folders
+from pkgtool.cache.replay import code_files, site_folders
 from pkgtool.cache.serial import BadEntry, decode, encode, index_entry, index_record
 from pkgtool.config import Settings
 from pkgtool.findings import Finding
@@ -313,7 +313,7 @@ def _code_fingerprint() -> list[Any]:
     """
     import pkgtool
 
-    files = [[path, *size_time] for path, size_time in scan(Path(pkgtool.__file__).parent)]
+    files = code_files(Path(pkgtool.__file__).parent)
     distributions = sorted(name for entry in site_folders() for name in os.listdir(entry)
                            if name.endswith(".dist-info"))
     return [pkgtool.__version__, sys.version, files, distributions]

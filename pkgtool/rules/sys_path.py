@@ -73,14 +73,15 @@ def _package_edits(package: Package) -> tuple[dict[str, tuple[tuple[int, str], .
         tree = parse_tree(module.path, text) if text and "sys.path" in text else None
         if not isinstance(tree, ast.Module):
             continue
-        edits = list(_edits(tree, module.path, package))
+        calls = list(_path_edits(tree))
+        edits = list(_edits(tree, calls, module.path, package))
         own = tuple((line, folder) for line, folder in edits if folder is not None)
         if own:
             inside[module.path] = own
         above = [line for line, folder in edits if folder is None]
         if above:
             outside[module.path] = min(above)
-        copies = [n.lineno for n in _path_edits(tree) if _in_another_module(n.args[-1])]
+        copies = [n.lineno for n in calls if _in_another_module(n.args[-1])]
         if copies:
             vendored[module.path] = min(copies)
     return inside, outside, vendored
@@ -96,12 +97,13 @@ def _path_edits(tree: ast.Module) -> Iterator[ast.Call]:
             yield node
 
 
-def _edits(tree: ast.Module, path: str, package: Package) -> Iterator[tuple[int, str | None]]:
-    """(line, package-relative folder) of each ``sys.path`` edit of a folder of the package,
-    and (line, None) of each of a folder above the package's."""
+def _edits(tree: ast.Module, calls: list[ast.Call], path: str, package: Package
+           ) -> Iterator[tuple[int, str | None]]:
+    """(line, package-relative folder) of each ``sys.path`` edit (``calls``) of a folder of
+    the package, and (line, None) of each of a folder above the package's."""
     aliases = _aliases(tree)
     once = _assigned_once(tree)
-    for node in _path_edits(tree):
+    for node in calls:
         folder = _path(node.args[-1], _Source(path, package.name), aliases, once, 0)
         relative = _relative(folder) if folder is not None else None
         if relative is not None and (relative == "" or any(
