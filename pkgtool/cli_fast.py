@@ -62,15 +62,31 @@ def main() -> None:
         from pkgtool.cli_output import closed_pipe
 
         code = closed_pipe()
-    finish(code)
+    finish(code, at_once=True)
 
 
-def finish(code: int) -> None:
-    """Exit with ``code``; after Ctrl-C, say that nothing was written."""
+def finish(code: int, *, at_once: bool = False) -> None:
+    """Exit with ``code``; after Ctrl-C, say that nothing was written.
+
+    ``at_once`` (a lint run: every file it writes is closed by now) ends the process without
+    tearing the interpreter down, which frees every module and object one by one (~10 ms, a
+    tenth of a one-package run): the exit handlers run and the standard streams are flushed
+    first, as a normal exit does.
+    """
     if code == INTERRUPTED:
         sys.stderr.write("Interrupted: nothing was written\n")
     gc.freeze()  # exit frees what is left: the final collection would only walk it (~20 ms)
-    sys.exit(code)
+    if not at_once:
+        sys.exit(code)
+    import atexit
+
+    atexit._run_exitfuncs()
+    for stream in (sys.stdout, sys.stderr):
+        try:
+            stream.flush()
+        except (OSError, ValueError):  # a closed pipe or stream: nothing more can be said
+            pass
+    os._exit(code)
 
 
 def parse_lint(arguments: Sequence[str]) -> Optional[dict[str, Any]]:

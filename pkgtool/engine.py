@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import ast
 from collections.abc import Iterable, Mapping
+from typing import Optional
 
 from pkgtool.config import ALL, Layer, settings_for
 from pkgtool.findings import Finding, Hit, Severity
@@ -44,6 +45,10 @@ def _suppressed(package: Package, finding: Finding, rule: Rule) -> bool:
     return not codes or ALL in codes or rule.code in codes or rule.name in codes
 
 
+Found = tuple[Finding, Optional[Hit]]
+"""A finding and the hit it came from (None for a rule's internal error)."""
+
+
 def check_package(package: Package, rules: Iterable[Rule], *, root_label: str,
                   severities: Mapping[str, Severity] | None = None) -> list[Finding]:
     """Run ``rules`` on one package; suppressed hits are dropped, the rest sorted.
@@ -51,7 +56,14 @@ def check_package(package: Package, rules: Iterable[Rule], *, root_label: str,
     A rule that raises does not stop the run: its hits so far are dropped and it yields one
     error finding marked ``internal`` that names the rule and the exception.
     """
-    found: list[tuple[Finding, Hit | None]] = []
+    return settled(rule_findings(package, rules, root_label=root_label, severities=severities))
+
+
+def rule_findings(package: Package, rules: Iterable[Rule], *, root_label: str,
+                  severities: Mapping[str, Severity] | None = None) -> list[Found]:
+    """The findings of ``rules`` on ``package`` in rule order, unsuppressed, each with its hit:
+    :func:`check_package` before :func:`settled` (rules may run in several processes)."""
+    found: list[Found] = []
     overrides = severities or {}
     for rule in rules:
         try:
@@ -67,6 +79,12 @@ def check_package(package: Package, rules: Iterable[Rule], *, root_label: str,
                               related=hit.related)
             if not _suppressed(package, finding, rule):
                 found.append((finding, hit))
+    return found
+
+
+def settled(found: list[Found]) -> list[Finding]:
+    """The findings of :func:`rule_findings` (of rules in code order), consequences folded
+    into their causes, duplicates dropped, sorted."""
     return sorted(set(_fold_consequences(found)), key=lambda f: f.sort_key)
 
 
@@ -83,7 +101,7 @@ def _never_runs(package: Package, span: Span) -> bool:
         span.col > 0 and any(start <= where < end for start, end in dead_expressions(tree)))
 
 
-def _fold_consequences(found: list[tuple[Finding, Hit | None]]) -> list[Finding]:
+def _fold_consequences(found: list[Found]) -> list[Finding]:
     """One finding per root cause: consequence hits join the finding that states their cause
     (its places in ``related``, named in its message, its severity the worst of them)."""
     causes = {hit.cause: finding for finding, hit in found

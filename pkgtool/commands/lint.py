@@ -214,18 +214,21 @@ def _fix_all(jobs: list[Job], workspace: Workspace, options: LintOptions, errors
 
 
 def _model_and_findings(root: Path, *, label: str, settings: Settings, workspace: Workspace,
-                        offers: bool = True) -> tuple[Package, list[Finding]]:
+                        offers: bool = True, split: bool = False
+                        ) -> tuple[Package, list[Finding]]:
     """Read and check one package (exceptions propagate: ``_check`` reports them); with
     ``offers``, the findings ``--fix`` cannot repair are marked so (``--fix`` itself asks the
-    fixers anyway)."""
+    fixers anyway); with ``split`` (the run's only package), on two cores when it can."""
     from pkgtool.engine import check_package
     from pkgtool.model.package import load_package
     from pkgtool.model.python_visitor import forget_trees
 
     package = load_package(root, context_for(root, workspace, settings.rosdistro))
     try:
-        found = check_package(package, settings.rules, root_label=label,
-                              severities=settings.severities)
+        found = _split_check(package, label, settings) if split else None
+        if found is None:
+            found = check_package(package, settings.rules, root_label=label,
+                                  severities=settings.severities)
         if offers:
             from pkgtool.fix.offers import offers_marked
 
@@ -236,6 +239,14 @@ def _model_and_findings(root: Path, *, label: str, settings: Settings, workspace
         found = [f for f in found
                  if f.internal or not settings.ignores(root / f.span.path, f.code)]
     return package, found
+
+
+def _split_check(package: Package, label: str, settings: Settings) -> list[Finding] | None:
+    """The package's findings from :mod:`pkgtool.commands.two_cores`, or None."""
+    from pkgtool.commands.two_cores import check_on_two_cores
+
+    return check_on_two_cores(package, settings.codes, root_label=label,
+                              severities=settings.severities)
 
 
 Job = tuple[Path, str, Settings]
@@ -276,7 +287,7 @@ def _check_each(jobs: list[Job], workspace: Workspace, cache: LintCache | None,
     if worker is not None:
         worker.close()
     if workers < 2 or threads_running():
-        yield from map(check, jobs)
+        yield from map(partial(check, split=len(jobs) == 1), jobs)
         return
     import multiprocessing  # only here: importing it costs a small lint run ~10 ms
 
@@ -354,20 +365,22 @@ def _check_in(worker: WarmWorker, jobs: list[Job], workspace: Workspace, cache: 
     for checked by ``worker`` (here, when it could not)."""
     found = [cache.lookup(root, settings) for root, _, settings in jobs]
     stale = [job for job, lookup in zip(jobs, found) if lookup is None or lookup.hit is None]
-    lint = partial(_lint_one, workspace=workspace)
+    lint = partial(_lint_one, workspace=workspace, split=len(stale) == 1)
     outcomes = iter((worker.map(lint, stale) or list(map(lint, stale))) if stale else ())
     for job, lookup in zip(jobs, found):
         fresh = lookup is None or lookup.hit is None
         yield _settled(job, lookup, cache, next(outcomes) if fresh else None)
 
 
-def _check(job: Job, workspace: Workspace, cache: LintCache | None) -> Checked:
-    """One package's outcome: from ``cache`` when valid, else checked; and the entry to record."""
+def _check(job: Job, workspace: Workspace, cache: LintCache | None, split: bool = False
+           ) -> Checked:
+    """One package's outcome: from ``cache`` when valid, else checked (``split``: see
+    :func:`_model_and_findings`); and the entry to record."""
     if cache is None:
-        return _lint_one(job, workspace), None
+        return _lint_one(job, workspace, split), None
     found = cache.lookup(job[0], job[2])
     fresh = found is None or found.hit is None
-    return _settled(job, found, cache, _lint_one(job, workspace) if fresh else None)
+    return _settled(job, found, cache, _lint_one(job, workspace, split) if fresh else None)
 
 
 def _settled(job: Job, found: Lookup | None, cache: LintCache, outcome: Outcome | None) -> Checked:
@@ -385,12 +398,13 @@ def _settled(job: Job, found: Lookup | None, cache: LintCache, outcome: Outcome 
                                 [replace(f, root="") for f in outcome[1]])
 
 
-def _lint_one(job: Job, workspace: Workspace) -> Outcome:
-    """Read one package and check it; an exception becomes an internal-error message."""
+def _lint_one(job: Job, workspace: Workspace, split: bool = False) -> Outcome:
+    """Read one package and check it (``split``: see :func:`_model_and_findings`); an
+    exception becomes an internal-error message."""
     root, label, settings = job
     try:
         package, found = _model_and_findings(root, label=label, settings=settings,
-                                             workspace=workspace)
+                                             workspace=workspace, split=split)
     except Exception as error:  # noqa: BLE001 - report it, keep linting the others
         return (f"Internal error while reading the package at `{label}`: "
                 f"{type(error).__name__}: {error}. Please report this pkgtool bug.")

@@ -90,6 +90,58 @@ def start(warm_up: Callable[[], Iterable[Callable[[], None]]]) -> Optional[WarmW
     return WarmWorker(pid, to_child, from_child)
 
 
+def forked(call: Callable[[], Any]) -> Optional[Callable[[], Any]]:
+    """Start ``call()`` in a forked child now; a function that waits for the child and gives
+    what ``call`` returned (None when the child failed or its answer cannot be read). None
+    where a child is not used (the same conditions as :func:`start`)."""
+    if not sys.platform.startswith("linux") or chosen_jobs() == 1 or cores() < 2 or \
+            threads_running():
+        return None
+    import gc
+
+    receive, send = os.pipe()
+    sys.stdout.flush()
+    sys.stderr.flush()
+    gc.freeze()  # the child's collections never walk (and copy) what it inherits
+    pid = os.fork()
+    if pid == 0:
+        os.close(receive)
+        _answer(call, send)
+    gc.unfreeze()
+    os.close(send)
+    return lambda: _answer_of(pid, receive)
+
+
+def _answer(call: Callable[[], Any], send: int) -> None:
+    """The forked child's life: run ``call``, send its result, exit (without the parent's exit
+    handlers or buffers)."""
+    code = 1
+    try:
+        import pickle
+
+        result = call()
+        with os.fdopen(send, "wb") as pipe:
+            pickle.dump(result, pipe, protocol=pickle.HIGHEST_PROTOCOL)
+        code = 0
+    except BaseException:  # noqa: BLE001 - anything: the parent does the work itself
+        pass
+    finally:
+        os._exit(code)
+
+
+def _answer_of(pid: int, receive: int) -> Any:
+    """What the child ``pid`` sends on ``receive`` (None when it failed); waits for its end."""
+    import pickle
+
+    try:
+        with os.fdopen(receive, "rb") as pipe:
+            result = pickle.load(pipe)
+    except (OSError, EOFError, pickle.PickleError, AttributeError, ValueError, TypeError):
+        result = None
+    _, status = os.waitpid(pid, 0)
+    return result if status == 0 else None
+
+
 def chosen_jobs() -> int:
     """The number of processes ``$PKGTOOL_LINT_JOBS`` asks for (1: no pool, no worker); 0
     when it is not set or not a number."""

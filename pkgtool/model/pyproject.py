@@ -8,10 +8,10 @@ def pyproject_may_add_scripts(text: str | None) -> bool:
     ``[project]`` table with ``scripts``, ``gui-scripts`` or ``entry-points`` (or naming them
     ``dynamic``), or a file that does not parse. A file of tool settings only
     (``[tool.pyright]``, ``[tool.black]``) adds none."""
-    from pkgtool.compat import tomllib
-
     if text is None:
         return False
+    from pkgtool.compat import tomllib
+
     try:
         project = tomllib.loads(text).get("project")
     except tomllib.TOMLDecodeError:

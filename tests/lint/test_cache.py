@@ -15,6 +15,7 @@ import pytest
 
 from pkgtool.cache.serial import BadEntry, decode, encode
 from pkgtool.cache.store import pack_of
+from pkgtool.commands.warm_worker import cores
 from pkgtool.findings import Severity
 from pkgtool.model.span import ParseProblem, Span
 from tests.helpers import correct_package_files, make_finding, write_tree
@@ -98,6 +99,44 @@ def test_findings_are_identical_with_and_without_cache_and_workers(corpus: Path)
         f.write("\nother_undefined_name\n")
     checked_by_the_warm_worker = _lint(corpus, jobs=0).stdout  # the default: a worker forked
     assert checked_by_the_warm_worker == _lint(corpus, "--no-cache", jobs=1).stdout != edited
+
+
+SPLIT_PROBE = """
+import json, sys
+from pathlib import Path
+from pkgtool.commands.two_cores import check_on_two_cores
+from pkgtool.config import settings_for
+from pkgtool.engine import check_package
+from pkgtool.model.context import context_for, workspace_index
+from pkgtool.model.package import load_package
+
+settings = settings_for([])
+roots = sorted(p for p in Path(sys.argv[1]).iterdir() if (p / "package.xml").is_file())
+index = workspace_index(roots)
+split = differ = 0
+for root in roots:
+    package = load_package(root, context_for(root, index, settings.rosdistro))
+    both = check_on_two_cores(package, settings.codes, root_label=root.name,
+                              severities=settings.severities)
+    alone = check_package(package, settings.rules, root_label=root.name,
+                          severities=settings.severities)
+    split += both is not None
+    differ += both is not None and both != alone
+print(json.dumps([len(roots), split, differ]))
+"""
+
+
+def test_findings_are_identical_when_one_package_is_checked_on_two_cores(corpus: Path) -> None:
+    """The split of :mod:`pkgtool.commands.two_cores` (a lint run of one package) changes no
+    finding, folded consequences of rules on either side included (a process of its own: a
+    pytest worker runs threads, and then no child is forked)."""
+    environment = {**os.environ, "PKGTOOL_LINT_JOBS": "0"}
+    done = subprocess.run([sys.executable, "-c", SPLIT_PROBE, str(corpus / "src")], check=True,
+                          capture_output=True, text=True, timeout=600, env=environment)
+    packages, split, differ = json.loads(done.stdout)
+    assert packages > 100 and differ == 0
+    if cores() > 1:
+        assert split == packages
 
 
 def test_an_edit_a_sibling_or_other_settings_invalidate(tmp_path: Path) -> None:
