@@ -141,12 +141,18 @@ def field_value(package: Package, findings: list[Finding]) -> Iterator[Fix]:
 @fixer("PYC031", "Take the parameter's value with `.value`")
 def parameter_value(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Append ``.value`` to the ``Parameter`` object used as a value
-    (``self.get_parameter('period')`` becomes ``self.get_parameter('period').value``). Safe
-    where it raised TypeError (arithmetic, ``create_timer``, ``float()``); a comparison, which
-    was always false, then compares the value: that fix is unsafe."""
+    (``self.get_parameter('period')`` becomes ``self.get_parameter('period').value``), or taken
+    as text (``str(self.get_parameter('topic'))`` becomes
+    ``str(self.get_parameter('topic').value)``; a name holding such a text is left to the
+    user). Safe where it raised TypeError (arithmetic, ``create_timer``, ``float()``) or the
+    text was refused; a comparison, which was always false, then compares the value: that fix
+    is unsafe."""
     for doc, finding, nodes in python_nodes(package, findings):
         value = next((n for n in nodes if isinstance(n, (ast.Call, ast.Name, ast.Attribute))
                       and finding.message.startswith(f"`{ast.unparse(n)}` ")), None)
+        if value is not None and "` is the text of the `Parameter`" in finding.message:
+            value = value.args[0] if isinstance(value, ast.Call) and len(value.args) == 1 \
+                and isinstance(value.args[0], ast.Call) else None
         if value is None:
             continue
         compared = any(isinstance(n, ast.Compare) and (n.left is value or value in n.comparators)
@@ -262,6 +268,15 @@ def numpy_name(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     ImportError before."""
     yield from renames(package, findings, re.compile(r"has no `(\w+)` in any release"),
                        WRITE_NAME)
+
+
+@fixer("PYC078", "Write the method of the builtin type the misspelt one is close to",
+       safe=False)
+def builtin_attribute(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename an attribute a list, dict, str or number lacks to the one it has spelled like it
+    (``items.apend`` to ``items.append``). Unsafe: it guesses which one was meant; the line
+    raised AttributeError before."""
+    yield from renames(package, findings, re.compile(r"which has no `(\w+)`"), WRITE_NAME)
 
 
 @fixer("PYC064", "Read the attribute of the package's class the misspelt one is close to",

@@ -14,6 +14,7 @@ unknown.
 from __future__ import annotations
 
 import ast
+from collections.abc import Callable
 
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
@@ -61,12 +62,16 @@ _ARITHMETIC = {(TIME, ast.Sub, TIME): DURATION, (TIME, ast.Sub, DURATION): TIME,
                (TIME, ast.Add, DURATION): TIME, (DURATION, ast.Add, TIME): TIME}
 _DEPTH = 8
 """How many bindings deep a value is followed (``t = clock.now()`` with ``clock = ...``)."""
+_cut = [0]
+"""How many times :func:`object_class` stopped at :data:`_DEPTH`: a class not found when it
+did is not final (the same name asked for less deep may have one)."""
 
 
 def object_class(value: ast.expr, package: Package, tree: ast.Module, index: Index,
                  depth: int = 0) -> str | None:
     """The rclpy class ``value`` (in ``tree``) certainly is an instance of, or None."""
     if depth > _DEPTH:
+        _cut[0] += 1
         return None
     if isinstance(value, ast.Call):
         func = value.func
@@ -91,22 +96,31 @@ def object_class(value: ast.expr, package: Package, tree: ast.Module, index: Ind
         function = index.enclosing_function(value, through_lambdas=False)
         if function is None:
             return None
-        known = _attribute_classes(package)  # every read of a local name has the same
-        key = (id(function), value.id)
-        if key not in known:
-            known[key] = _annotated_class(value.id, function, index) or \
-                _assigned_class(value, package, tree, index, depth)
-        return known[key]
+        return _remembered(package, (id(function), value.id), depth, lambda: (
+            _annotated_class(value.id, function, index) or
+            _assigned_class(value, package, tree, index, depth)))
     if isinstance(value, ast.Attribute) and isinstance(value.value, ast.Name):
         cls = receiver_class(value.value, index)
         if cls is None:
             return None
-        known = _attribute_classes(package)
-        key = (id(cls), value.attr)
-        if key not in known:
-            known[key] = _assigned_class(value, package, tree, index, depth)
-        return known[key]
+        return _remembered(package, (id(cls), value.attr), depth,
+                           lambda: _assigned_class(value, package, tree, index, depth))
     return None
+
+
+def _remembered(package: Package, key: tuple[int, str], depth: int,
+                find: Callable[[], str | None]) -> str | None:
+    """The class of a local name or ``self.x`` (``key``: see :func:`_attribute_classes`) asked
+    for ``depth`` bindings deep: found once, and again only when asked for less deep than a
+    search that stopped at :data:`_DEPTH` (at most :data:`_DEPTH` searches per key)."""
+    known = _attribute_classes(package)
+    entry = known.get(key)
+    if entry is not None and (entry[0] is not None or not entry[2] or entry[1] <= depth):
+        return entry[0]
+    cuts = _cut[0]
+    found = find()
+    known[key] = (found, depth, _cut[0] != cuts)
+    return found
 
 
 def _annotated_class(name: str, function: ast.FunctionDef | ast.AsyncFunctionDef,
@@ -131,10 +145,11 @@ def _assigned_class(value: ast.Name | ast.Attribute, package: Package, tree: ast
 
 
 @per_package
-def _attribute_classes(package: Package) -> dict[tuple[int, str], str | None]:
+def _attribute_classes(package: Package) -> dict[tuple[int, str], tuple[str | None, int, bool]]:
     """The class of ``self.x`` by (id of the class whose method reads it, ``x``), and of a
     local name by (id of its function, name), filled as rules ask (every read of ``self.x``
-    in one class, of a name in one function, has the same)."""
+    in one class, of a name in one function, has the same); with the depth it was searched
+    at and whether that search stopped at :data:`_DEPTH`."""
     return {}
 
 

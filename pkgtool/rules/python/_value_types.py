@@ -36,8 +36,12 @@ PARAMETER = "Parameter"
 PARAMETER_TEXT = "str (a Parameter object's repr)"
 """The type of ``str()`` of a node's ``self.get_parameter(...)``, or of an f-string formatting
 one: a str, ``<rclpy.parameter.Parameter object at 0x...>``, not the parameter's value."""
-_BUILTINS = {"int": "int", "float": "float", "str": "str", "bool": "bool", "len": "int"}
+_BUILTINS = {"int": "int", "float": "float", "str": "str", "bool": "bool", "len": "int",
+             "list": "list", "dict": "dict", "set": "set", "tuple": "tuple",
+             "frozenset": "frozenset"}
 """Builtins whose call always gives a value of one type, and that type."""
+_WITHOUT_ARGUMENTS = frozenset(_BUILTINS) - {"len"}
+"""The builtins of :data:`_BUILTINS` that may be called with no argument (``list()``)."""
 _INTERFACE_CLASS = lazy_pattern(
     INTERFACE.pattern + r"(\.(Request|Response|Goal|Result|Feedback))?")
 """An imported message, service or action class, or one of the messages of the latter two."""
@@ -67,13 +71,15 @@ def receiver_class(name: ast.expr, index: Index) -> ast.ClassDef | None:
 
 
 def _builtin_result(value: ast.expr, index: Index) -> str | None:
-    """The type a call of one of :data:`_BUILTINS` gives, when the module binds its name
-    nowhere; :data:`PARAMETER_TEXT` for ``str()`` of a node's ``get_parameter()``."""
+    """The type a call of one of :data:`_BUILTINS` with one argument (or none, but ``len``)
+    gives, when the module binds its name nowhere; :data:`PARAMETER_TEXT` for ``str()`` of a
+    node's ``get_parameter()``."""
     if not isinstance(value, ast.Call) or not isinstance(value.func, ast.Name) or \
             value.func.id not in _BUILTINS or value.func.id in index.bound or value.keywords \
-            or len(value.args) != 1 or isinstance(value.args[0], ast.Starred):
+            or len(value.args) > 1 or any(isinstance(a, ast.Starred) for a in value.args) or \
+            not value.args and value.func.id not in _WITHOUT_ARGUMENTS:
         return None
-    if value.func.id == "str" and _made_type(value.args[0], index) == PARAMETER:
+    if value.args and value.func.id == "str" and _made_type(value.args[0], index) == PARAMETER:
         return PARAMETER_TEXT
     return _BUILTINS[value.func.id]
 
