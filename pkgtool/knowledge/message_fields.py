@@ -25,7 +25,7 @@ from pkgtool.records import record
 from pkgtool.lazy_regex import lazy_pattern
 
 __all__ = ["COMPANIONS", "CONSTRUCTOR_OPTIONS", "Message", "close_field",
-           "constructor_options", "message_of", "nested_message"]
+           "constructor_options", "element_message", "message_of", "nested_message"]
 
 COMPANIONS = frozenset({"Request", "Response", "Event", "Goal", "Result", "Feedback"})
 """Attributes of a service or action class ``X`` that are its message class ``X_<attribute>``."""
@@ -129,6 +129,22 @@ def nested_message(message: Message, field: str) -> Message | None:
     sequence, array or basic value) of a class known on the distribution ``message`` is
     defined for; else None."""
     kind = message.fields.get(field, "")
+    name = _nested_names(message.distro).get(kind) if MESSAGE_TYPE.fullmatch(kind) else None
+    return _message(name, message.distro) if name else None
+
+
+def element_message(message: Message, field: str) -> Message | None:
+    """The message class of the elements of ``message``'s field ``field`` when it holds a
+    sequence or array of messages (``sequence<geometry_msgs/PoseStamped>``, bounded
+    ``sequence<pkg/Type,10>``, ``pkg/Type[3]``) of a class known as :func:`nested_message`
+    knows one; else None."""
+    kind = message.fields.get(field, "")
+    if kind.startswith("sequence<") and kind.endswith(">"):
+        kind = kind[len("sequence<"):-1].partition(",")[0]
+    elif kind.endswith("]"):
+        kind = kind.partition("[")[0]
+    else:
+        return None
     name = _nested_names(message.distro).get(kind) if MESSAGE_TYPE.fullmatch(kind) else None
     return _message(name, message.distro) if name else None
 

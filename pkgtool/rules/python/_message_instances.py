@@ -123,8 +123,8 @@ def _path(node: ast.Attribute) -> tuple[str, ...]:
     return tuple(reversed(names))
 
 
-def _instance(message: T, uses: list[ast.Attribute], refs: list[ast.expr], index: Index,
-              skip: int = 0) -> Instance[T]:
+def instance_of(message: T, uses: list[ast.Attribute], refs: list[ast.expr], index: Index,
+                skip: int = 0) -> Instance[T]:
     """The instance used by ``uses``: the paths stored under it (the first ``skip`` names of
     each path are the way to the instance itself)."""
     stored = set()
@@ -180,8 +180,8 @@ def local_instances(tree: ast.Module, index: Index, make: Maker[T]) -> Iterator[
         names = _names(scope)
         for name, message in found:
             if names.counts[name] == 1:
-                yield _instance(message, names.uses.get(name, []), names.refs.get(name, []),
-                                index)
+                yield instance_of(message, names.uses.get(name, []), names.refs.get(name, []),
+                                  index)
 
 
 def _scope(statement: ast.AST, tree: ast.Module, index: Index) -> Scope | None:
@@ -296,8 +296,8 @@ def attribute_instances(tree: ast.Module, index: Index, make: Maker[T],
                     if not _assigned_none(target, index)]
             if (made and made[0] is not None and made.count(made[0]) == len(made)
                     and len(targets) == stores[attr] and not facts.defined[attr]):
-                yield _instance(made[0], facts.uses.get(attr, []), facts.refs.get(attr, []),
-                                index, skip=1)
+                yield instance_of(made[0], facts.uses.get(attr, []), facts.refs.get(attr, []),
+                                  index, skip=1)
 
 
 def _assigned_none(target: ast.Attribute, index: Index) -> bool:
@@ -414,12 +414,12 @@ def parameter_instance(tree: ast.Module, function: Function, name: str, message:
         return
     uses = facts.uses.get(name, [])
     if via is None:
-        yield _instance(message, uses, facts.refs.get(name, []), index)
+        yield instance_of(message, uses, facts.refs.get(name, []), index)
         return
     refs: list[ast.expr] = [use for use in uses if use.attr == via]
     deeper = [parent for ref in refs if isinstance(parent := index.parents.get(id(ref)),
                                                    ast.Attribute) and parent.value is ref]
-    yield _instance(message, deeper, refs, index, skip=1)
+    yield instance_of(message, deeper, refs, index, skip=1)
 
 
 def known_messages(package: Package, index: Index, distro: str | None = None) -> Known:

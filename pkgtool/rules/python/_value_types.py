@@ -50,7 +50,7 @@ NUMBER_TYPES = frozenset({"int", "float", "bool"})
 _UNKNOWN = "?"
 _KEEPING = (ast.Add, ast.Sub, ast.Mult)
 """Augmented operators that give an int for two ints, a float for two floats (``/`` does
-not) and a str for two strs."""
+not) and a str for two strs (``+=`` of a list or tuple display keeps a list or tuple too)."""
 _DYNAMIC = frozenset({"setattr", "vars", "__dict__", "__setattr__", "__slots__"})
 """Names whose use in a module means attributes may be stored unseen."""
 
@@ -163,9 +163,10 @@ def _bound_type(target: ast.expr, index: Index, package: Package | None = None) 
         return (_made_type(parent.value, index, package) if parent.value is not None
                 else None) or \
             _UNKNOWN
-    if isinstance(parent, ast.AugAssign) and parent.target is target and \
-            isinstance(parent.op, _KEEPING) and literal_type(parent.value) in \
-            ("int", "float", "str"):
+    if isinstance(parent, ast.AugAssign) and parent.target is target and (
+            isinstance(parent.op, _KEEPING) and literal_type(parent.value) in
+            ("int", "float", "str") or isinstance(parent.op, ast.Add) and
+            literal_type(parent.value) in ("list", "tuple")):
         return literal_type(parent.value) or _UNKNOWN
     return _UNKNOWN
 
@@ -196,11 +197,12 @@ def _local_type(name: ast.Name, tree: ast.Module, index: Index, package: Package
                 ) -> str | None:
     """The type of a function's local ``name`` when all its bindings agree on one, or when
     they disagree, the type of the one the read certainly sees (:mod:`._reaching`)."""
-    function = index.enclosing_function(name, through_lambdas=False)
+    stores = _assigned_names(tree).get(name.id)
+    function = index.enclosing_function(name, through_lambdas=False) if stores else None
     if function is None:
         return None
     start, end = function.lineno, function.end_lineno or function.lineno
-    assigned = [n for n in _assigned_names(tree).get(name.id, ())
+    assigned = [n for n in stores or ()
                 if start <= n.lineno <= end and
                 index.enclosing_function(n, through_lambdas=False) is function]
     if not assigned or len(assigned) != binding_counts(function)[name.id] or \

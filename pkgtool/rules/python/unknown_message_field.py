@@ -16,6 +16,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import depends_on_ros_distro
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
+from pkgtool.rules.python._derived_messages import derived_instances
 from pkgtool.rules.python._message_instances import Instance, Known, known_messages
 from pkgtool.rules.python._messages import message_instances
 from pkgtool.rules.syntax_trees import Index, installed_trees
@@ -100,7 +101,11 @@ def unknown_message_field(package: Package) -> Iterator[Hit]:
     `future.result()` (used directly, or assigned as above) of a future that is certainly a
     client's `call_async()` (or the future a done callback registered on one gets) of a client
     certainly made by `create_client()` for a known service; fields of fields are followed while
-    their message class is certain (not after `msg.pose = ...`). Names starting with `_`,
+    their message class is certain (not after `msg.pose = ...`), also through a name bound once
+    to a field (`header = msg.header`) or to an element of a field holding messages (`last =
+    msg.poses[-1]`), through a `for` or comprehension target over such a field (`for pose in
+    msg.poses`, with `enumerate()` too) and an element used where it is indexed
+    (`msg.poses[0].pose`). Names starting with `_`,
     constants (`GoalStatus.STATUS_SUCCEEDED`), code inside `try` blocks that catch
     `AttributeError`, names the module passes to `hasattr` and annotations Python never
     evaluates (`request: Fibonacci.Request = goal_handle.request` in a function) are never
@@ -159,9 +164,12 @@ def unknown_message_field(package: Package) -> Iterator[Hit]:
                           f"{owner} has no attribute `{node.attr}`{meant}: reading "
                           f"`{ast.unparse(node)}` raises AttributeError")
         places: dict[tuple[str, str], list[tuple[ast.Attribute, Message]]] = {}
-        for instance in message_instances(package, tree, index, known):
+        held = message_instances(package, tree, index, known)
+        seen: set[int] = set()
+        for instance in (*held, *derived_instances(held, tree, index)):
             for node, message in _wrong_attributes(instance, index, probed):
-                if not _within(node, silent):
+                if not _within(node, silent) and id(node) not in seen:
+                    seen.add(id(node))
                     places.setdefault((message.name, node.attr), []).append((node, message))
         for found in places.values():
             yield _field_hit(module.path, sorted(found, key=lambda f: _where(f[0])))
