@@ -15,8 +15,9 @@ from collections.abc import Callable, Iterator, Sequence
 from pkgtool.edit.core import Edit, Fix
 from pkgtool.edit.setup_py import SetupDoc
 from pkgtool.findings import Finding
-from pkgtool.fix.common import offer, setup_doc
+from pkgtool.fix.common import offer, renames, setup_doc
 from pkgtool.fix.registry import Refusal, fixer
+from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.launch import LAUNCH_SUFFIXES
 from pkgtool.model.package import Package
 from pkgtool.model.setup_py import DataFile, DataSource
@@ -314,3 +315,24 @@ def _glob_instead(doc: SetupDoc, entry: DataFile, pattern: str) -> list[Edit]:
     call, imports = doc.glob_call(pattern)
     return [doc.replace_sequence(sources, call, "the data_files sources")] + \
         doc.doc.add_imports(imports)
+
+
+_TYPO_OF = lazy_pattern(r": `([\w.-]+)` is a typo of")
+"""The misspelt name in a DAT021 or DAT022 message."""
+_SHARE_MEANT = lazy_pattern(r"Install into `share/([\w.-]+)(?:/[^`]*)?`")
+_FOLDER_MEANT = lazy_pattern(r"Install into `share/[\w.-]+/([\w.-]+)`")
+"""The names meant in DAT021's and DAT022's help."""
+
+
+@fixer("DAT021", "Write the package's name where the share folder misspells it")
+def share_folder(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename the misspelt package name of a data_files destination (``'share/deom/config'``
+    to ``'share/demo/config'``): the files were installed where nothing looks."""
+    yield from renames(package, findings, _TYPO_OF, _SHARE_MEANT)
+
+
+@fixer("DAT022", "Name the installed folder like its source folder", safe=False)
+def data_folder(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename the misspelt folder of a data_files destination (``'lauch'`` to ``'launch'``).
+    Unsafe: code may read the files from the misspelt folder."""
+    yield from renames(package, findings, _TYPO_OF, _FOLDER_MEANT)

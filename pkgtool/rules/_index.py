@@ -33,6 +33,8 @@ RULES = {
     "DAT019": ("misplaced-data-files", "error", True, "data_files.misplaced_data_files"),
     "DAT020": ("missing-cmake-install-source", "error", True,
                "data_files.missing_cmake_install_source"),
+    "DAT021": ("misspelled-share-folder", "error", True, "data_files.misspelled_share_folder"),
+    "DAT022": ("misspelled-data-folder", "warning", True, "data_files.misspelled_data_folder"),
     "DEP001": ("undeclared-import", "error", True, "dependencies.undeclared_import"),
     "DEP002": ("import-declared-only-as-build-depend", "error", True,
                "dependencies.build_only_import"),
@@ -227,13 +229,13 @@ RULES = {
 }
 
 FIXED = frozenset({
-    "DAT001", "DAT003", "DAT004", "DAT005", "DAT006", "DAT007", "DAT008", "DAT009", "DEP001",
-    "DEP002", "DEP003", "DEP006", "DEP007", "DEP008", "DEP011", "ENT002", "ENT003", "ENT005",
-    "IFC003", "LCH001", "LCH002", "LCH003", "LCH005", "LCH010", "LCH013", "LCH015", "LCH016",
-    "LCH018", "LCH020", "MAN004", "MAN012", "MAN013", "MAN015", "MAN017", "MAN018", "MAN019",
-    "MAN021", "MAN024", "MAN027", "PYC001", "PYC013", "PYC014", "PYC016", "PYC019", "PYC025",
-    "PYC026", "PYC029", "PYC031", "PYC032", "PYC033", "PYC041", "PYC046", "PYC047", "PYC050",
-    "PYC058", "PYC062", "PYC063", "PYC064", "PYC065", "PYC066", "PYC068", "PYC070", "PYC076",
-    "PYC078", "SET003", "SET004", "SET005", "SET006", "SET007", "SET008", "SET009", "SET010",
-    "SET016",
+    "DAT001", "DAT003", "DAT004", "DAT005", "DAT006", "DAT007", "DAT008", "DAT009", "DAT021",
+    "DAT022", "DEP001", "DEP002", "DEP003", "DEP006", "DEP007", "DEP008", "DEP011", "ENT002",
+    "ENT003", "ENT005", "IFC003", "LCH001", "LCH002", "LCH003", "LCH005", "LCH010", "LCH013",
+    "LCH015", "LCH016", "LCH018", "LCH020", "MAN004", "MAN012", "MAN013", "MAN015", "MAN017",
+    "MAN018", "MAN019", "MAN021", "MAN024", "MAN027", "PYC001", "PYC013", "PYC014", "PYC016",
+    "PYC019", "PYC025", "PYC026", "PYC029", "PYC031", "PYC032", "PYC033", "PYC041", "PYC046",
+    "PYC047", "PYC050", "PYC058", "PYC062", "PYC063", "PYC064", "PYC065", "PYC066", "PYC068",
+    "PYC070", "PYC076", "PYC078", "SET003", "SET004", "SET005", "SET006", "SET007", "SET008",
+    "SET009", "SET010", "SET016",
 })
