@@ -299,6 +299,16 @@ def rclpy_keyword(package: Package, findings: list[Finding]) -> Iterator[Fix]:
                        re.compile(r"Write `(\w+)=`"))
 
 
+@fixer("PYC079", "Write the keyword the standard library call takes that the misspelt one "
+       "is close to", safe=False)
+def stdlib_keyword(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename a keyword no Python 3.10-3.13 gives the call to the one a typo away
+    (``reversed=`` to ``reverse=``). Unsafe: it guesses which keyword was meant; the call
+    raised TypeError before."""
+    yield from renames(package, findings, re.compile(r"has no `(\w+)` argument on Python"),
+                       re.compile(r"Write `(\w+)=`"))
+
+
 @fixer("PYC014", "Read the declared parameter the misspelt name is close to", safe=False)
 def parameter_read(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Rename a parameter read but never declared to the one declared parameter spelled like

@@ -22,7 +22,8 @@ def misspelled_share_folder(package: Package) -> Iterator[Hit]:
     name but a typo of it (one edit, two for long names; names differing in a digit are
     never a typo): `('share/my_robto/config', ...)` in the package `my_robot`. Destinations
     built from `package_name` and other packages' share folders (`share/ament_index/...`,
-    `share/other_package`) are not reported.
+    `share/other_package`) are not reported, nor the name setup.py gives the package: when
+    that one is misspelt, SET003 reports it with the places that follow it.
 
     ## Why is this bad?
     The files land in `install/<package>/share/my_robto`, a folder no package owns:
@@ -42,9 +43,10 @@ def misspelled_share_folder(package: Package) -> Iterator[Hit]:
     """
     setup = checked_setup(package)
     name = package.name
+    own = setup.name.value if setup and setup.name else None
     for entry in setup.data_files or () if setup else ():
         parts = posixpath.normpath(entry.destination.replace("\\", "/")).split("/")
-        if len(parts) < 2 or parts[0] != "share" or parts[1] == name or \
+        if len(parts) < 2 or parts[0] != "share" or parts[1] in (name, own) or \
                 not is_typo(parts[1], name) or digits_differ(parts[1], name):
             continue
         rest = "/".join(parts[2:])

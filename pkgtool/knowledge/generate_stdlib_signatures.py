@@ -1,0 +1,97 @@
+"""Generate ``data/stdlib_signatures.txt``: the keywords common standard library calls take.
+
+Run ``python -m pkgtool.knowledge.generate_stdlib_signatures`` where ``python3.10`` to
+``python3.13`` are on PATH (on Linux). Each of them reads ``inspect.signature`` of every call of
+:data:`CALLS` in a fresh isolated process; an entry is ``<call> <parameter>...``: the names a
+keyword may give (not positional-only ones), the union over the Pythons. A call that takes
+``**kwargs`` on some Python, or whose signature some Python cannot tell, is left out (any
+keyword may be right); a call that hands its ``**kwargs`` to another (``subprocess.run`` to
+``Popen``) gets that one's names too (:data:`FORWARDS`). Builtins whose signature no Python
+before 3.13 tells come from :data:`WRITTEN`, their documented keywords (the same since 3.10).
+"""
+
+from __future__ import annotations
+
+import json
+import subprocess
+
+from pkgtool.knowledge.tables import generator_main, render
+
+PYTHONS = ("3.10", "3.11", "3.12", "3.13")
+CALLS = (
+    "builtins.abs", "builtins.enumerate", "builtins.input", "builtins.int", "builtins.max",
+    "builtins.min", "builtins.open", "builtins.pow", "builtins.print", "builtins.round",
+    "builtins.sorted", "builtins.str", "builtins.sum", "builtins.zip",
+    "collections.deque", "collections.namedtuple", "dataclasses.dataclass",
+    "dataclasses.field", "datetime.timedelta", "functools.lru_cache", "itertools.combinations",
+    "itertools.permutations", "itertools.product", "json.dump", "json.dumps", "json.load",
+    "json.loads", "math.isclose", "os.getenv", "os.listdir", "os.makedirs", "os.walk",
+    "queue.Queue", "random.gauss", "random.randint", "random.sample", "random.uniform",
+    "re.compile", "re.findall", "re.finditer", "re.fullmatch", "re.match", "re.search",
+    "re.split", "re.sub", "shutil.copy", "shutil.copyfile", "shutil.copytree", "shutil.move",
+    "shutil.rmtree", "shutil.which", "socket.socket", "subprocess.Popen", "subprocess.call",
+    "subprocess.check_call", "subprocess.check_output", "subprocess.run",
+    "tempfile.NamedTemporaryFile", "tempfile.TemporaryDirectory", "tempfile.mkdtemp",
+    "threading.Event", "threading.Thread", "threading.Timer", "time.sleep",
+)
+"""Calls ROS 2 Python code makes often, by the dotted name code calls them by."""
+FORWARDS = {"subprocess.run": "subprocess.Popen", "subprocess.call": "subprocess.Popen",
+            "subprocess.check_call": "subprocess.Popen",
+            "subprocess.check_output": "subprocess.Popen"}
+"""Calls that hand their ``**kwargs`` to another, whose keywords they then take too."""
+WRITTEN = {"builtins.print": ("sep", "end", "file", "flush"), "builtins.max": ("key", "default"),
+           "builtins.min": ("key", "default"), "builtins.int": ("base",),
+           "builtins.str": ("object", "encoding", "errors"), "builtins.zip": ("strict",),
+           "collections.deque": ("iterable", "maxlen"), "time.sleep": (),
+           "datetime.timedelta": ("days", "seconds", "microseconds", "milliseconds", "minutes",
+                                  "hours", "weeks")}
+"""Calls whose signature ``inspect`` cannot tell on every Python: their keywords, by hand."""
+_LIST = """
+import importlib, inspect, json, sys
+found = {}
+for dotted in sys.argv[1:]:
+    module, _, name = dotted.rpartition(".")
+    target = getattr(importlib.import_module(module), name)
+    try:
+        parameters = inspect.signature(target).parameters.values()
+    except (TypeError, ValueError):
+        found[dotted] = None
+        continue
+    found[dotted] = [p.name if p.kind is not p.VAR_KEYWORD else "**" for p in parameters
+                     if p.kind not in (p.POSITIONAL_ONLY, p.VAR_POSITIONAL)]
+print(json.dumps(found))
+"""
+
+
+def _signatures(python: str) -> dict[str, list[str] | None]:
+    done = subprocess.run([f"python{python}", "-I", "-c", _LIST, *CALLS], check=True,
+                          capture_output=True, text=True)
+    return json.loads(done.stdout)
+
+
+def table() -> str:
+    """The text of ``stdlib_signatures.txt``, from each Python's own signatures."""
+    names: dict[str, set[str] | None] = {call: set() for call in CALLS}
+    for python in PYTHONS:
+        for call, found in _signatures(python).items():
+            known = names[call]
+            names[call] = None if found is None or known is None else known | set(found)
+    names.update((call, set(keywords)) for call, keywords in WRITTEN.items())
+    for call, target in FORWARDS.items():
+        known, forwarded = names[call], names[target]
+        if known is not None and forwarded is not None and "**" in known:
+            names[call] = (known - {"**"}) | forwarded
+    lines = [f"{call} {' '.join(sorted(found))}" for call, found in sorted(names.items())
+             if found is not None and "**" not in found]
+    return render("The keywords common standard library calls take on Python 3.10-3.13.\n"
+                  "Generated by `python -m pkgtool.knowledge.generate_stdlib_signatures`; "
+                  "do not edit.", [f"python{p}" for p in PYTHONS], [("-", lines)])
+
+
+def main(argv: list[str] | None = None) -> None:
+    """Write the table."""
+    generator_main("stdlib_signatures", table, __doc__.splitlines()[0], argv)
+
+
+if __name__ == "__main__":
+    main()
