@@ -35,10 +35,10 @@ def _callee(call: ast.Call, index: Index, tree: ast.Module, package: Package
     method = own_method(call, index) or instance_method(call, index, tree)
     if method is not None:
         function, cls = method
-        if cls.name in base_names(package) or function.decorator_list or \
-                not _plain_class(cls, index):
+        skipped = _receivers(function)
+        if cls.name in base_names(package) or skipped is None or not _plain_class(cls, index):
             return None
-        return function, 1, f"{cls.name}.{function.name}"
+        return function, skipped, f"{cls.name}.{function.name}"
     found = own_definition(call, index, tree, (ast.FunctionDef, ast.ClassDef))
     if found is None and isinstance(call.func, ast.Name):
         imported = imported_from_package(call.func.id, tree, index, package)
@@ -60,6 +60,16 @@ def _callee(call: ast.Call, index: Index, tree: ast.Module, package: Package
     return init, 1, f"{found.name}.__init__"
 
 
+def _receivers(method: ast.FunctionDef) -> int | None:
+    """How many leading parameters of ``method`` a call on an instance does not fill: 1 for a
+    plain method or a ``@classmethod``, 0 for a ``@staticmethod``; None under any other
+    decorator."""
+    decorators = [ast.unparse(d) for d in method.decorator_list]
+    if decorators in ([], ["classmethod"]):
+        return 1
+    return 0 if decorators == ["staticmethod"] else None
+
+
 def _signature(function: ast.FunctionDef) -> str:
     """``name(self, a, b=1, *, c)`` as written (defaults shown as ``=...``)."""
     arguments = ast.unparse(function.args)
@@ -76,7 +86,8 @@ def call_arguments_mismatch(package: Package) -> Iterator[Hit]:
     a parameter it requires, gives one twice (by position and by keyword) or names a keyword
     it has no parameter for, where the function is certainly the package's own: a plain
     function of the module or one imported from another installed module of the package
-    (`from .trajectory import single_point`, `tick(...)`), a plain method of the caller's own class
+    (`from .trajectory import single_point`, `tick(...)`), a plain method (or a
+    `@staticmethod`, which receives no instance, or a `@classmethod`) of the caller's own class
     (`self.publish(...)`, when no class derives from that class and nothing assigns
     `self.publish`) or of a name that certainly holds an instance of such a class of the
     module (`node = Talker()`, or a parameter annotated `node: Talker`, bound once:
@@ -125,7 +136,9 @@ def _receiver_note(callee: tuple[ast.FunctionDef, int, str]) -> str:
     """`` (`target` receives the instance: is `self` missing?)`` for a method whose first
     parameter is not named ``self``."""
     function, skipped, _ = callee
-    first = [*function.args.posonlyargs, *function.args.args][:skipped]
-    if first and first[0].arg not in ("self", "cls"):
+    first = [*function.args.posonlyargs, *function.args.args][:max(skipped, 1)]
+    if skipped and first and first[0].arg not in ("self", "cls"):
         return f" (`{first[0].arg}` receives the instance: is `self` missing?)"
+    if not skipped and first and first[0].arg == "self":
+        return " (a `@staticmethod` receives no instance: its `self` is an argument to give)"
     return ""
