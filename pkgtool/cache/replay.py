@@ -54,7 +54,7 @@ if TYPE_CHECKING:
     Outcome = tuple[str, list[Finding]]
     """A package's name and findings."""
 
-SCHEMA = "pkgtool-lint-replay-3"
+SCHEMA = "pkgtool-lint-replay-4"
 SETTLED_NS = 2_000_000_000
 """Times this close to a record's are not trusted on a file system with coarse times (FAT keeps
 two seconds, HFS+ one, exFAT ten milliseconds): a later change within the same tick would not

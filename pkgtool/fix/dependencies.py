@@ -46,10 +46,12 @@ _NAMED = lazy_pattern(r"`([^`]+)` is used by a launch file")
 
 def _resolves(package: Package, name: str) -> bool:
     """True for a released package or rosdep key of the target distribution, or a workspace
-    package: an unknown name may be misspelled or live elsewhere, and declaring it would only
-    turn the finding into MAN021/MAN022."""
+    package with a package.xml: an unknown name may be misspelled or live elsewhere, and
+    declaring it would only turn the finding into MAN021/MAN022; a Python project without
+    package.xml is a name rosdep cannot resolve (the user chooses)."""
     context = package.context
-    return name in context.workspace or is_known_dependency(name, context.distro)
+    owner = context.workspace.get(name)
+    return owner.manifest if owner is not None else is_known_dependency(name, context.distro)
 
 
 def _at(span: Span) -> tuple[str, int, int]:

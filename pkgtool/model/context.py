@@ -66,6 +66,9 @@ class WorkspacePackage:
     """For a package CMake builds, the executables its CMakeLists.txt installs into
     ``lib/<name>`` (:func:`~pkgtool.model.cmake_install.installed_executables`); None when
     not known or not such a package."""
+    manifest: bool = True
+    """False for a Python project without package.xml (a ``setup.py`` alone): colcon builds
+    it, but rosdep knows no such package, so no package.xml can declare a dependency on it."""
 
 
 @record
@@ -173,7 +176,7 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
         _build_type(manifest) in CMAKE_BUILD_TYPES else None
     return WorkspacePackage(name, interfaces, frozenset(modules),
                             _messages(base, name, interfaces, defined), base, setup_digest,
-                            _depends(manifest), executables)
+                            _depends(manifest), executables, manifest is not None)
 
 
 _DEPEND = lazy_pattern(r"<(?:depend|exec_depend|run_depend|build_depend|build_export_depend|"

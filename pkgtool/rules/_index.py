@@ -199,6 +199,7 @@ RULES = {
     "PYC077": ("rclpy-method-arguments", "error", True, "python.rclpy_method_arguments"),
     "PYC078": ("builtin-missing-attribute", "error", True, "python.builtin_missing_attribute"),
     "PYC079": ("stdlib-unexpected-keyword", "error", True, "python.stdlib_unexpected_keyword"),
+    "PYC080": ("message-subscripted", "error", True, "python.message_subscripted"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

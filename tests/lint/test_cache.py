@@ -176,13 +176,14 @@ def test_the_workspace_index_is_kept_with_settled_packages_and_read_again_on_cha
     first = _lint(ws).stdout
     assert "DEP001" in first
     alpha_root = str(ws / "src" / "alpha")
-    name, interfaces, modules, messages, folder, setup_digest, depends, executables = \
+    name, interfaces, modules, messages, folder, setup_digest, depends, executables, own = \
         _entries(ws / ".pkgtool_cache")[alpha_root]["index"]
     assert [name, interfaces, modules, messages, folder] == \
         ["alpha", {}, ["alpha"], {}, alpha_root]
     assert "rclpy" in depends  # what it depends on: a cycle a declaration would make
     assert re.fullmatch(r"[0-9a-f]{64}", setup_digest)  # ament_python: its scripts may be read
     assert executables is None  # what CMakeLists.txt installs: for CMake packages alone
+    assert own is True  # it has a package.xml: rosdep can resolve a dependency on it
     assert _lint(ws).stdout == first  # the index of both packages comes from the cache
     pack = ws / ".pkgtool_cache" / "lint" / pack_of(alpha_root)
     whole = json.loads(pack.read_text())

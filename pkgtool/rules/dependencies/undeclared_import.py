@@ -43,7 +43,10 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     generator run at build time or a helper the tests put on `PYTHONPATH` is not installed
     code). A folder below the root with its own setup.py or pyproject.toml is a separate
     Python project (a pip-installable client library): its files are never the package's
-    installed code, and its top-level modules count as the package's own.
+    installed code, and its top-level modules count as the package's own. A module of another
+    Python project of the workspace without package.xml (a pip project kept in the checkout)
+    is named by the name colcon gives it (setup.py's); rosdep knows no such key, so the help
+    says so and `--fix` leaves the choice to the user.
 
     ## Why is this bad?
     `rosdep install` and the binary packages built by the ROS buildfarm install only what
@@ -76,9 +79,14 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
                       f"Write `{meant}`", related=tuple(other.imported.span for other in others))
             continue
         tops = _first_per_module((need, *others))
+        owner = package.context.workspace.get(need.key)
         yield Hit(need.imported.span,
                   _message(package, tops, tests) + also_imported(others, naming=len(tops) > 1),
-                  f"Add `<exec_depend>{need.key}</exec_depend>` to package.xml",
+                  f"Add `<exec_depend>{need.key}</exec_depend>` to package.xml" if
+                  owner is None or owner.manifest else
+                  f"Give `{owner.folder.rsplit('/', 1)[-1]}` a package.xml, or add "
+                  f"`<exec_depend>{need.key}</exec_depend>` and run rosdep with `--skip-keys "
+                  f"{need.key}` (colcon builds that Python project, rosdep knows no such key)",
                   related=tuple(other.imported.span for other in others),
                   cause="" if need.key in tests else dependency_cause(need.key),
                   consequence=True)

@@ -18,7 +18,7 @@ from collections.abc import Iterator
 
 from pkgtool.knowledge.message_fields import Message, element_message, nested_message
 from pkgtool.rules.python._message_instances import (Instance, attributes_taken,
-                                                     binding_counts, instance_of)
+                                                     binding_counts, instance_of, name_reads)
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index
 
 _LEVELS = 3
@@ -116,9 +116,9 @@ def _named(name: str, scope: ast.AST | None, message: Message, index: Index
            ) -> Iterator[Instance[Message]]:
     """``name`` as an instance of ``message`` in ``scope``, when bound once there."""
     if scope is not None and binding_counts(scope)[name] == 1:
-        uses = attributes_taken(scope, name)
-        if uses:
-            yield instance_of(message, uses, [], index)
+        uses, reads = attributes_taken(scope, name), name_reads(scope, name)
+        if uses or reads:
+            yield instance_of(message, uses, reads, index)
 
 
 def _scope(statement: ast.AST, tree: ast.Module, index: Index) -> ast.AST | None:

@@ -225,6 +225,11 @@ def _annotated_otherwise(first: ast.arg, method: ast.FunctionDef | ast.AsyncFunc
         not (isinstance(note, ast.Name) and note.id == "Self")
 
 
+def name_reads(scope: ast.AST, name: str) -> list[ast.expr]:
+    """The reads of ``name`` itself in ``scope`` and every scope inside it, in walk order."""
+    return _names(scope).refs.get(name, [])
+
+
 def attributes_taken(scope: ast.AST, name: str) -> list[ast.Attribute]:
     """The attributes taken on ``name`` (``name.x``, read or stored) in ``scope`` and every
     scope inside it, in walk order (from the scope's one walk for its names)."""

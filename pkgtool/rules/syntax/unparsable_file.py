@@ -35,8 +35,9 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     whose `#!` line runs another language (a bash script named `start.py`; but one pytest
     collects, `test/test_x.py`, is imported as Python and reported), nor a Python
     file the package does not install in a folder of another project's code (`thirdparty/`,
-    `third_party_packages/`,
-    `external/`, `vendor/`: Eigen's Python 2 maintenance scripts).
+    `third_party_packages/`, `external/`, `vendor/`: Eigen's Python 2 maintenance scripts) or
+    of C and C++ headers (`include/`, where a library's headers come with its scripts:
+    Boost.odeint's Python 2 benchmarks).
     Python is parsed by the Python running pkgtool: when that is older than the target
     distribution's (3.11 for jazzy's 3.12), a failing line that uses syntax the target's Python
     added is not reported, as the target may well accept it: an f-string that is complete
@@ -63,8 +64,9 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
 
 
 _VENDORED = frozenset({"thirdparty", "third_party", "3rdparty", "external", "extern", "vendor",
-                       "vendored"})
-"""Folders of code a package keeps from another project (Eigen's maintenance scripts)."""
+                       "vendored", "include"})
+"""Folders of code a package keeps from another project (Eigen's maintenance scripts), and of
+C and C++ headers (``include``), which hold no Python of the package's own."""
 
 
 def _vendored_and_unused(package: Package, problem: ParseProblem) -> bool:
