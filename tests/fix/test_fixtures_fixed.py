@@ -95,7 +95,7 @@ MANUAL = {("PYC078", "habits_of_other_languages"), ("PYC079", "unknown_keywords"
               "package_named_by_its_path",
               "package_path_with_trailing_slash", "src_layout_without_package_dir",
               "misspelt_prefix_of_a_missing_module",
-              "module_of_a_workspace_package_declared_for_tests")),
+              "module_of_a_workspace_package_declared_for_tests", "py_module_without_its_file")),
           ("PYC019", "kilted_target"), ("PYC019", "reads_in_properties"),
           ("ENT003", "function_named_differently"), ("LCH020", "declaration_assigned_over"),
           ("PYC025", "scalars_for_sequences"),

@@ -114,10 +114,11 @@ def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
     roots = _own_roots(package, modules) if entries else set()
     # the package's Python package folders at any depth: an entry naming one names its code
     folders = {posixpath.basename(f) for f in python_folders(package.files)} if entries else set()
+    listed = set(package.setup_py.py_modules or ()) if entries and package.setup_py else set()
     for entry in entries:
         if entry.module in modules:
             continue
-        if entry.module.split(".")[0] not in roots:
+        if entry.module.split(".")[0] not in roots and entry.module not in listed:
             meant = _meant(package, entry.module, modules)
             if meant is not None:  # `talker:main` for the installed `my_pkg.talker`
                 yield Hit(entry.span, f"`{entry.module}` is not installed: the module is "
