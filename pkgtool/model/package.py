@@ -115,13 +115,15 @@ def load_package(root: Path, context: Context | None = None) -> Package:
 
     unreadable: set[str] = set()
 
-    def text_of(relpath: str) -> str | None:
-        """The file's text, read once; an unreadable file is recorded once."""
+    def text_of(relpath: str, quiet: bool = False) -> str | None:
+        """The file's text, read once; an unreadable file is recorded once (unless ``quiet``:
+        a file no build or run tool reads as text, such as a README)."""
         if relpath in texts or relpath in unreadable:
             return texts.get(relpath)
         result = read_text(root, relpath)
         if isinstance(result, ParseProblem):
-            problems.append(result)
+            if not quiet:
+                problems.append(result)
             unreadable.add(relpath)
             return None
         assert isinstance(result, TextFile)
@@ -158,8 +160,10 @@ def load_package(root: Path, context: Context | None = None) -> Package:
                 found = yaml_problem(relpath, text)
                 if isinstance(found, ParseProblem):
                     problems.append(found)
-        elif relpath.rpartition("/")[2] == ".gitignore" or is_interface_definition(relpath):
-            text_of(relpath)  # modules generated at build time; .msg, .srv, .action files
+        elif relpath.rpartition("/")[2] == ".gitignore":
+            text_of(relpath, quiet=True)  # modules generated at build time: git reads bytes
+        elif is_interface_definition(relpath):
+            text_of(relpath)  # .msg, .srv, .action files
         elif relpath.endswith(".py") and relpath != "setup.py":
             text = text_of(relpath)
             if text is not None and (not _other_language(text) or _collected(relpath)):
@@ -167,8 +171,10 @@ def load_package(root: Path, context: Context | None = None) -> Package:
                 modules.append(module)
                 if module.syntax_error and not is_test_data(relpath):
                     problems.append(module.syntax_error)
-    for other in ("README.md", "README.rst", "README.txt", "README",  # `ros2 run ...`
-                  "pytest.ini", ".pytest.ini", "pyproject.toml", "tox.ini",  # pytest's settings
+    for other in ("README.md", "README.rst", "README.txt", "README"):  # `ros2 run ...`
+        if other in files:
+            text_of(other, quiet=True)  # documentation: in any encoding, nothing reads it
+    for other in ("pytest.ini", ".pytest.ini", "pyproject.toml", "tox.ini",  # pytest's settings
                   "CMakeLists.txt"):  # the interfaces it generates
         if other in files:
             text_of(other)

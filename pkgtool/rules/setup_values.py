@@ -19,9 +19,12 @@ def name_cause(name: str) -> str:
 
 
 def checked_setup(package: Package) -> SetupPy | None:
-    """setup.py of an ament_python package with a package.xml, when it calls setup()."""
+    """setup.py of an ament_python package with a package.xml, when it calls setup(); also
+    when that package.xml does not parse (SYN001 says so) and no CMakeLists.txt says the
+    package is built otherwise: its setup.py still has its own mistakes."""
     setup = package.setup_py
-    if package.manifest is None or setup is None or setup.setup_span is None:
+    if package.manifest is None and not package.has_file("package.xml") or setup is None or \
+            setup.setup_span is None:
         return None
     return setup if is_ament_python(package) else None
 

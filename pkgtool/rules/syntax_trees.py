@@ -229,6 +229,24 @@ def base_names(package: Package) -> frozenset[str]:
                      for base in cls.bases if (name := base_name(base)) is not None)
 
 
+@per_package
+def _overrides(package: Package) -> frozenset[tuple[str, str]]:
+    """(base class name, method name) for each method a class of the installed modules
+    defines, by each name its bases are written with."""
+    return frozenset((name, statement.name) for _, _, index in installed_trees(package)
+                     for cls in index.classes for base in cls.bases
+                     if (name := base_name(base)) is not None
+                     for statement in cls.body if isinstance(statement, FUNCTIONS))
+
+
+def overridden(package: Package, method: ast.AST, index: Index) -> bool:
+    """True when ``method`` is a method that a class deriving from its class (by name)
+    defines again: on such an instance, ``self.method`` runs the other one."""
+    cls = index.parents.get(id(method))
+    return isinstance(cls, ast.ClassDef) and isinstance(method, FUNCTIONS) and \
+        (cls.name, method.name) in _overrides(package)
+
+
 def base_name(base: ast.expr) -> str | None:
     """The name a base class is written with (``Base``, ``Node`` of ``rclpy.node.Node``), or
     None for any other expression."""

@@ -99,6 +99,31 @@ def test_helper_function_with_arguments_and_return() -> None:
                            "share/demo/config": ("config/params.yaml",)}
 
 
+def test_an_early_return_under_a_test_not_evaluated_leaves_the_result_unknown() -> None:
+    setup = evaluate("""
+        import os
+        from setuptools import setup
+        def files(folder):
+            found = []
+            if not os.path.isdir(os.path.join(os.path.dirname(__file__), folder)):
+                return found  # may or may not happen: the result is not `[]`
+            for name in os.listdir(folder):
+                found.append(os.path.join(folder, name))
+            return found
+        def first(names):
+            for name in names:
+                if name.endswith(os.environ['SUFFIX']):
+                    break  # may or may not happen: `kept` is not all of `names`
+                kept.append(name)
+            return kept
+        kept = []
+        setup(data_files=[('share/demo/launch', files('launch'))],
+              packages=first(['demo', 'other']))
+    """)
+    assert setup.data_files is None and setup.packages is None
+    assert setup.unresolved
+
+
 def test_globs_match_like_the_glob_module() -> None:
     setup = evaluate("""
         from glob import glob

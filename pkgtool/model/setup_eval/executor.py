@@ -47,6 +47,9 @@ class Runner(Interpreter):
     """Runs setup.py's statements; ``setup_calls`` collects the setup() calls reached."""
 
     depth = 0
+    uncertain_exits = 0
+    """How many ``return``, ``break`` and ``continue`` statements ran under a test not
+    evaluated (they may or may not leave their function or loop)."""
 
     def __init__(self, path: str, text: str, files: tuple[str, ...]) -> None:
         super().__init__(path, text, files)
@@ -92,17 +95,21 @@ class Runner(Interpreter):
         local = Scope(function.scope)
         self._bind_arguments(definition.args, args, kwargs, local, function.scope, node)
         self.depth += 1
+        exits = self.uncertain_exits
         try:
             self.run_block(definition.body, local)
-        except _Return as returned:
-            if isinstance(returned.value, Opaque):
-                raise NotStatic(returned.value.unresolved) from None
-            return returned.value
+            returned: Any = None
+        except _Return as done:
+            returned = done.value
         except (_Break, _Continue):
             raise self.refuse(node) from None
         finally:
             self.depth -= 1
-        return None
+        if self.uncertain_exits != exits:  # it may have returned elsewhere, or something else
+            raise self.refuse(node)
+        if isinstance(returned, Opaque):
+            raise NotStatic(returned.unresolved)
+        return returned
 
     def _bind_arguments(self, spec: ast.arguments, args: list[Any], kwargs: dict[str, Any],
                         local: Scope, defining: Scope, node: ast.Call) -> None:
@@ -158,17 +165,23 @@ class Runner(Interpreter):
             self.store(target, self.binary(node.op, current, value, node), scope)
 
     def _run_For(self, node: ast.For, scope: Scope) -> None:
+        """Run the loop; when a ``break`` or ``continue`` under a test not evaluated may have
+        left it early, what it changes becomes opaque."""
         items = self.iterate(self.eval(node.iter, scope), node.iter)
+        exits = self.uncertain_exits
         for item in items:
             self.tick(node)
             self.store(node.target, item, scope)
             try:
                 self.run_block(node.body, scope)
             except _Break:
-                return
+                break
             except _Continue:
                 continue
-        self.run_block(node.orelse, scope)
+        else:
+            self.run_block(node.orelse, scope)
+        if self.uncertain_exits != exits:
+            raise self.refuse(node)
 
     def _run_If(self, node: ast.If, scope: Scope) -> None:
         """A test not evaluated runs both branches (uncertain), unless it is one that never
@@ -182,8 +195,11 @@ class Runner(Interpreter):
                 return
             self.uncertain += 1
             try:
-                self.run_block(node.body, scope)
-                self.run_block(node.orelse, scope)
+                for branch in (node.body, node.orelse):
+                    try:
+                        self.run_block(branch, scope)
+                    except CONTROL_FLOW:  # a return, break or continue that may not happen
+                        self.uncertain_exits += 1
             finally:
                 self.uncertain -= 1
             for branch in (*node.body, *node.orelse):

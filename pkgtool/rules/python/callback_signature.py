@@ -10,7 +10,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.rules.python._callbacks import Argument, callback_arguments
-from pkgtool.rules.syntax_trees import installed_trees
+from pkgtool.rules.syntax_trees import installed_trees, overridden
 from pkgtool.rules.python._message_instances import callback_function
 from pkgtool.rules.registry import rule
 
@@ -97,8 +97,9 @@ def callback_signature_mismatch(package: Package) -> Iterator[Hit]:
                 value, 0)
         else:
             found = callback_function(value, tree, index)
-        if passed is None or found is None or _annotated(found[0].args):
-            continue
+        if passed is None or found is None or _annotated(found[0].args) or \
+                overridden(package, found[0], index):
+            continue  # (last: a subclass's method may be the one that runs)
         counts, what = passed
         if not any(_accepts(found[0].args, found[1], count) for count in counts):
             name = "the lambda" if isinstance(value, ast.Lambda) else f"`{ast.unparse(value)}`"

@@ -17,7 +17,7 @@ from pkgtool.rules.python._message_instances import Function, binding_counts, ca
 from pkgtool.rules.python._value_types import PARAMETER, PARAMETER_TEXT, certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import plainly_decorated, returns_none, scope_walk
-from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.rules.syntax_trees import Index, installed_trees, overridden
 from pkgtool.lazy_regex import lazy_pattern
 
 
@@ -229,8 +229,8 @@ def service_callback_returns_nothing(package: Package) -> Iterator[Hit]:
     for path, value, api, parameter, index, tree in callback_arguments(package):
         kind = _RETURNED.get((api, parameter))
         found = callback_function(value, tree, index) if kind else None
-        if kind is None or found is None:
-            continue
+        if kind is None or found is None or overridden(package, found[0], index):
+            continue  # a subclass's method may be the one that runs
         function = found[0]
         parameters = function.args.posonlyargs + function.args.args
         arguments = [a.arg for a in parameters[found[1]:]]
