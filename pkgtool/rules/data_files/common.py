@@ -28,6 +28,11 @@ MARKER_FOLDER = "share/ament_index/resource_index/packages"
 """Where an ament_python package installs its ament index marker."""
 
 
+def destination_parts(entry: DataFile) -> list[str]:
+    """The folders of a data_files entry's destination, normalised (``share/pkg/launch``)."""
+    return posixpath.normpath(entry.destination.replace("\\", "/")).split("/")
+
+
 def entries_to(package: Package, destination: str) -> Iterator[tuple[DataFile, DataSource]]:
     """data_files sources declared for ``destination`` (whether or not they exist)."""
     setup = package.setup_py

@@ -8,6 +8,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import digits_differ, is_typo
 from pkgtool.model.package import Package
+from pkgtool.rules.data_files.common import destination_parts
 from pkgtool.rules.registry import rule
 from pkgtool.rules.setup_values import checked_setup
 
@@ -43,7 +44,7 @@ def misspelled_data_folder(package: Package) -> Iterator[Hit]:
     """
     setup = checked_setup(package)
     for entry in setup.data_files or () if setup else ():
-        parts = posixpath.normpath(entry.destination.replace("\\", "/")).split("/")
+        parts = destination_parts(entry)
         folders = {posixpath.normpath(s.pattern.replace("\\", "/")).split("/")[0]
                    for s in entry.sources if "/" in s.pattern.replace("\\", "/")}
         if len(parts) < 3 or parts[:2] != ["share", package.name] or len(folders) != 1:

@@ -2,12 +2,12 @@
 
 from __future__ import annotations
 
-import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import digits_differ, is_typo
 from pkgtool.model.package import Package
+from pkgtool.rules.data_files.common import destination_parts
 from pkgtool.rules.registry import rule
 from pkgtool.rules.setup_values import checked_setup
 
@@ -45,7 +45,7 @@ def misspelled_share_folder(package: Package) -> Iterator[Hit]:
     name = package.name
     own = setup.name.value if setup and setup.name else None
     for entry in setup.data_files or () if setup else ():
-        parts = posixpath.normpath(entry.destination.replace("\\", "/")).split("/")
+        parts = destination_parts(entry)
         if len(parts) < 2 or parts[0] != "share" or parts[1] in (name, own) or \
                 not is_typo(parts[1], name) or digits_differ(parts[1], name):
             continue
