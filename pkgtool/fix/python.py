@@ -309,6 +309,26 @@ def stdlib_keyword(package: Package, findings: list[Finding]) -> Iterator[Fix]:
                        re.compile(r"Write `(\w+)=`"))
 
 
+@fixer("PYC080", "Read the field a point, vector or quaternion holds at that position",
+       safe=False)
+def message_position(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Replace a literal index of a point, vector or quaternion message by its field
+    (``position[0]`` becomes ``position.x``). Unsafe: it takes the `[x, y, z(, w)]` order
+    other APIs use; the line raised TypeError before."""
+    for doc, finding, nodes in python_nodes(package, findings):
+        meant = _FIELD_AT.fullmatch(finding.fix or "")
+        subscript = next((n for n in nodes if isinstance(n, ast.Subscript) and meant and
+                          ast.unparse(n.value) == meant[1]), None)
+        if meant is not None and subscript is not None:
+            yield Fix(f"Write `{meant[1]}.{meant[2]}`", (
+                Edit(doc.source.path, doc.end(subscript.value), doc.end(subscript),
+                     f".{meant[2]}"),))
+
+
+_FIELD_AT = re.compile(r"Write `(.+)\.([xyzw])`")
+"""The help of a PYC080 finding that names the field meant."""
+
+
 @fixer("PYC014", "Read the declared parameter the misspelt name is close to", safe=False)
 def parameter_read(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Rename a parameter read but never declared to the one declared parameter spelled like

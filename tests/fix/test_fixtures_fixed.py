@@ -12,7 +12,8 @@ from pkgtool.fix.registry import fixers
 
 FIXTURES = Path(__file__).resolve().parents[1] / "fixtures"
 CASES = [(code, case) for code in fixers() for case in sorted((FIXTURES / code / "bad").iterdir())]
-PARTLY = {("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprecated_ids"),
+PARTLY = {("PYC080", "indexed_messages"),
+          ("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprecated_ids"),
           ("LCH001", "node_of_another_workspace_package"),
           ("LCH001", "executable_of_a_cmake_workspace_package"),
           ("DEP011", "lookups_of_undeclared_packages"),

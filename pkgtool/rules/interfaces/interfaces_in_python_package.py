@@ -69,6 +69,12 @@ def _imports_own_interfaces(package: Package) -> bool:
 
 def _defined_elsewhere(package: Package, found: InterfaceFile) -> bool:
     """True when another package of the workspace defines an interface of that kind and
-    name."""
-    return any(found.name in other.interfaces.get(found.kind, ())
+    name, also spelled otherwise (``joints_now.srv`` for the ``JointsNow`` a copy became)."""
+    wanted = _spelling(found.name)
+    return any(wanted in {_spelling(n) for n in other.interfaces.get(found.kind, ())}
                for name, other in package.context.workspace.items() if name != package.name)
+
+
+def _spelling(name: str) -> str:
+    """``name`` without case and underscores: ``joints_now`` and ``JointsNow`` are one."""
+    return name.replace("_", "").lower()

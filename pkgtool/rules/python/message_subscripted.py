@@ -53,7 +53,7 @@ def message_subscripted(package: Package) -> Iterator[Hit]:
             for value, message in _indexed(instance, index):
                 if id(value) not in seen:
                     seen.add(id(value))
-                    yield _hit(module.path, value, message)
+                    yield _hit(module.path, value, message, index)
 
 
 def _indexed(instance: Instance[Message], index: Index
@@ -85,11 +85,24 @@ def _subscripted(value: ast.expr, index: Index) -> bool:
     return isinstance(parent, ast.Subscript) and parent.value is value
 
 
-def _hit(path: str, value: ast.expr, message: Message) -> Hit:
-    """The finding for ``value[...]``, ``value`` an instance of ``message``."""
+_ORDERED = {"geometry_msgs/msg/Point": "xyz", "geometry_msgs/msg/Point32": "xyz",
+            "geometry_msgs/msg/Vector3": "xyz", "geometry_msgs/msg/Quaternion": "xyzw"}
+"""Messages whose fields other APIs hold as a list in this order (``[x, y, z]``)."""
+
+
+def _hit(path: str, value: ast.expr, message: Message, index: Index) -> Hit:
+    """The finding for ``value[...]``, ``value`` an instance of ``message``: the field meant
+    when the index is a literal position of a point, vector or quaternion."""
     fields = ", ".join(f"`.{name}`" for name in message.fields)
     shown = ast.unparse(value)
+    subscript = index.parents[id(value)]
+    position = subscript.slice.value if isinstance(subscript, ast.Subscript) and \
+        isinstance(subscript.slice, ast.Constant) else None
+    order = _ORDERED.get(message.name, "")
+    meant = order[position] if isinstance(position, int) and not isinstance(position, bool) \
+        and 0 <= position < len(order) else None
     return Hit(Span(path, value.lineno, value.col_offset + 1),
                f"`{shown}` is one `{message.name}` message, not a sequence: indexing it raises "
                "TypeError (messages have no items)",
+               f"Write `{shown}.{meant}`" if meant else
                f"Read its fields by name: {fields}" if fields else None)
