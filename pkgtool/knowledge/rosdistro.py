@@ -81,14 +81,20 @@ def keys_for_import(top_level: str, distro: str = DEFAULT_DISTRO) -> tuple[str, 
 
 def _other_adafruit_family(top_level: str, key: str) -> bool:
     """True for a key of the other Adafruit family than the import's: CircuitPython
-    libraries are imported in lower case (``adafruit_pca9685``) and installed by
-    ``*-circuitpython-*`` keys; the older Adafruit_Python libraries, installed by the other
-    ``adafruit-*`` keys, are imported capitalised (``Adafruit_PCA9685``). The table matches
-    names ignoring case, which would offer one family's key for the other's import."""
-    if not top_level.lower().startswith("adafruit_") or "adafruit" not in key or \
-            "blinka" in key:
+    libraries are imported in lower case (``adafruit_pca9685``, ``adafruit_servokit``); the
+    older Adafruit_Python libraries, whose keys python_imports.txt lists apart (read from the
+    distributions they install), are imported capitalised (``Adafruit_PCA9685``). The table
+    matches names ignoring case, which would offer one family's key for the other's import."""
+    if not top_level.lower().startswith("adafruit_") or "adafruit" not in key:
         return False
-    return ("circuitpython" in key) != top_level.startswith("adafruit_")
+    return (key in _older_adafruit_keys()) == top_level.startswith("adafruit_")
+
+
+@cache
+def _older_adafruit_keys() -> frozenset[str]:
+    """The keys installing the older Adafruit_Python libraries."""
+    table = read("python_imports")
+    return frozenset(key for key, flags in table.flags.items() if flags == "older-adafruit")
 
 
 @cache
