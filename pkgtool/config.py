@@ -18,7 +18,7 @@ from pathlib import Path
 
 from pkgtool.findings import Severity
 from pkgtool.knowledge.tables import DEFAULT_DISTRO, DISTROS
-from pkgtool.records import record
+from pkgtool.records import record, replace
 from pkgtool.rules.registry import FAMILIES, Rule, index, load, matching
 
 PYPROJECT = "pyproject.toml"
@@ -62,6 +62,9 @@ class Settings:
     strict: bool
     path_ignores: tuple[tuple[Path, str, frozenset[str]], ...] = ()
     rosdistro: str = DEFAULT_DISTRO
+    python: tuple[int, int] | None = None
+    """The Python the project's pyproject.toml declares (:mod:`pkgtool.model.declared_python`),
+    when one at or above the package does: not configuration, a fact about the project."""
 
     @property
     def rules(self) -> tuple[Rule, ...]:
@@ -221,19 +224,32 @@ class ConfigFinder:
         self._isolated = isolated
         self._layers: dict[Path, Layer | None] = {}
         self._nearest: dict[Path, Layer | None] = {}
-        self._settings: dict[tuple[Layer, ...], Settings] = {}
+        self._pythons: dict[Path, tuple[int, int] | None] = {}
+        self._settings: dict[tuple[tuple[Layer, ...], tuple[int, int] | None], Settings] = {}
 
     def settings(self, root: Path) -> Settings:
         """The settings of the package at absolute ``root``."""
         found = () if self._isolated else (self._above(root.parent), self._at(root))
         layers = tuple(layer for layer in found if layer is not None) + (self._cli,)
-        if layers not in self._settings:
-            self._settings[layers] = settings_for(layers)
-        return self._settings[layers]
+        python = None if self._isolated else self._python(root)
+        if (layers, python) not in self._settings:
+            chosen = settings_for(layers)
+            self._settings[layers, python] = replace(chosen, python=python) if python \
+                else chosen
+        return self._settings[layers, python]
 
     def consulted(self) -> list[Path]:
         """Every pyproject.toml path looked at so far, whether it exists or not."""
-        return [folder / PYPROJECT for folder in self._layers]
+        return [folder / PYPROJECT for folder in dict.fromkeys((*self._layers, *self._pythons))]
+
+    def _python(self, folder: Path) -> tuple[int, int] | None:
+        """The Python the nearest pyproject.toml at or above ``folder`` declaring one does."""
+        if folder not in self._pythons:
+            file = os.path.join(folder, PYPROJECT)
+            here = _declared(file) if os.path.isfile(file) else None
+            parent = folder.parent
+            self._pythons[folder] = here if here or parent == folder else self._python(parent)
+        return self._pythons[folder]
 
     def _at(self, folder: Path) -> Layer | None:
         if folder not in self._layers:
@@ -248,6 +264,17 @@ class ConfigFinder:
             parent = folder.parent
             self._nearest[folder] = here if here or parent == folder else self._above(parent)
         return self._nearest[folder]
+
+
+def _declared(file: str) -> tuple[int, int] | None:
+    """The Python the pyproject.toml ``file`` declares; None also when it cannot be read."""
+    from pkgtool.model.declared_python import declared_python
+
+    try:
+        with open(file, encoding="utf-8") as stream:
+            return declared_python(stream.read())
+    except (OSError, UnicodeDecodeError):
+        return None
 
 
 def _close(word: str, choices: Iterable[str], n: int) -> list[str]:

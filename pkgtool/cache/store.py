@@ -296,7 +296,7 @@ def _digest(parts: list[Any]) -> str:
 def _settings_parts(settings: Settings) -> list[Any]:
     ignores = [[str(base), glob, sorted(codes)] for base, glob, codes in settings.path_ignores]
     return [list(settings.codes), sorted((c, s.value) for c, s in settings.severities.items()),
-            ignores, settings.rosdistro]
+            ignores, settings.rosdistro, settings.python and list(settings.python)]
 
 
 def _workspace_key(workspace: Mapping[Path, WorkspacePackage]) -> list[Any]:

@@ -223,7 +223,8 @@ def _model_and_findings(root: Path, *, label: str, settings: Settings, workspace
     from pkgtool.model.package import load_package
     from pkgtool.model.python_visitor import forget_trees
 
-    package = load_package(root, context_for(root, workspace, settings.rosdistro))
+    package = load_package(root, context_for(root, workspace, settings.rosdistro,
+                                             settings.python))
     try:
         found = _split_check(package, label, settings) if split else None
         if found is None:

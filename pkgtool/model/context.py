@@ -81,6 +81,9 @@ class Context:
     twins: tuple[str, ...] = ()
     """Other folders of the package's colcon workspace holding a package of its name
     (:func:`same_named`)."""
+    python: tuple[int, int] | None = None
+    """The Python the project declares in a pyproject.toml, when it does
+    (:mod:`pkgtool.model.declared_python`); else the distribution's."""
 
     def provider(self, module: str) -> str | None:
         """The workspace package whose Python package ``module`` is, if any: one installing a
@@ -319,9 +322,11 @@ def workspace_near(root: Path, index: Mapping[Path, WorkspacePackage]
     return near
 
 
-def context_for(root: Path, index: Mapping[Path, WorkspacePackage], distro: str) -> Context:
-    """The context of the package at ``root`` in a run whose workspace ``index`` it is in."""
-    return Context(distro, workspace_near(root, index), same_named(root, index))
+def context_for(root: Path, index: Mapping[Path, WorkspacePackage], distro: str,
+                python: tuple[int, int] | None = None) -> Context:
+    """The context of the package at ``root`` in a run whose workspace ``index`` it is in (and
+    the Python its project declares, if any)."""
+    return Context(distro, workspace_near(root, index), same_named(root, index), python)
 
 
 def same_named(root: Path, index: Mapping[Path, WorkspacePackage]) -> tuple[str, ...]:

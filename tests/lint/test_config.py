@@ -134,3 +134,56 @@ def test_rep149_conditions_for_a_jazzy_target(condition: str, value: bool | None
     from pkgtool.model.condition import environment, evaluate
 
     assert evaluate(condition, environment("jazzy")) is value
+
+
+def test_the_python_a_project_declares_is_read_from_the_nearest_pyproject(tmp_path: Path) -> None:
+    write_tree(tmp_path, {
+        "pyproject.toml": '[tool.pixi.feature.ros.dependencies]\npython = "3.14*"\n'
+                          '[tool.pkgtool]\nstrict = true\n',
+        "src/a/package.xml": "<package/>\n",
+        "src/a/pyproject.toml": "[tool.black]\nline-length = 99\n",  # declares no Python
+        "src/b/package.xml": "<package/>\n",
+        "src/b/pyproject.toml": "[project]\nname = 'b'\nrequires-python = '>=3.10'\n",
+    })
+    finder = ConfigFinder(CLI)
+    assert finder.settings(tmp_path / "src/a").python == (3, 14)
+    assert finder.settings(tmp_path / "src/a").strict  # the configuration is still found
+    assert finder.settings(tmp_path / "src/b").python == (3, 10)
+    assert ConfigFinder(CLI, isolated=True).settings(tmp_path / "src/a").python is None
+    assert tmp_path / "pyproject.toml" in finder.consulted()
+
+
+@pytest.mark.parametrize(("text", "python"), [
+    ("[tool.mypy]\npython_version = '3.14'\n", (3, 14)),
+    ("[tool.ruff]\ntarget-version = 'py313'\n", (3, 13)),
+    ("[project]\nrequires-python = '>=3.12,<3.15'\n", (3, 12)),
+    ("[tool.pixi.dependencies]\npython = '>=3.14'\n", (3, 14)),
+    ("[tool.black]\nline-length = 99\n", None),
+    ("[project\nrequires-python = '>=3.14'\n", None),  # no TOML: nothing declared
+])
+def test_declared_python(text: str, python: tuple[int, int] | None) -> None:
+    from pkgtool.model.declared_python import declared_python
+
+    assert declared_python(text) == python
+
+
+def test_annotations_are_not_evaluated_on_a_declared_python_3_14(tmp_path: Path) -> None:
+    """PEP 649: from Python 3.14 a class named in its own methods' annotations is no
+    NameError, so PYC001 is silent there; on the distributions' Pythons it is one."""
+    from pkgtool.commands.lint import LintOptions, run
+    from tests.helpers import correct_package_files
+
+    files = correct_package_files("geo")
+    files["geo/rotation.py"] = ("class Rotation:\n"
+                                "    def inverse(self) -> Rotation:\n"
+                                "        return self\n")
+    write_tree(tmp_path / "ws", {f"src/geo/{k}": v for k, v in files.items()})
+
+    def undefined(cache: bool) -> list[str]:
+        found = run([str(tmp_path / "ws" / "src" / "geo")], options=LintOptions(
+            cache=cache, cache_dir=str(tmp_path / "cache")))
+        return [f.message for f in found.findings if f.code == "PYC001"]
+
+    assert undefined(cache=True) == ["Undefined name `Rotation`"]
+    (tmp_path / "ws" / "pyproject.toml").write_text("[tool.mypy]\npython_version = '3.14'\n")
+    assert undefined(cache=False) == undefined(cache=True) == []  # the cache keys the Python

@@ -44,7 +44,9 @@ def undefined_name(package: Package) -> Iterator[Hit]:
     after a `return`, `raise`, `continue` or `break` of the same block, and annotations Python
     never evaluates: those of assignments in a function body, a string in
     an annotation (a forward reference, `Optional['Pose']`), and every annotation under `from
-    __future__ import annotations`.
+    __future__ import annotations` or in a project whose pyproject.toml declares Python 3.14
+    or newer (`requires-python`, `[tool.mypy] python_version`, `[tool.ruff] target-version`,
+    a pixi `python` dependency), which evaluates annotations only when they are read (PEP 649).
 
     ## Why is this bad?
     The line raises `NameError` when it runs, which for a node usually means inside a
@@ -75,11 +77,12 @@ def undefined_name(package: Package) -> Iterator[Hit]:
         tree = parse_tree(path, package.texts[path]) if path in package.texts else None
         if isinstance(tree, ast.Module) and not _names_exec(tree):
             trees.append((path, tree))
+    lazy = (package.context.python or (3, 0)) >= LAZY_ANNOTATIONS
     for path, tree in trees:
         if every_name_defined(tree):  # pyflakes would find nothing: spare it (most files)
             continue
         seen: set[tuple[int, str]] = set()
-        notes = _unevaluated_annotations(tree)
+        notes = _unevaluated_annotations(tree, lazy=lazy)
         stored = _stored_in_globals(tree)
         for line, column, name in _pyflakes_undefined(path, tree):
             if stored is None or name in stored or \
@@ -91,6 +94,8 @@ def undefined_name(package: Package) -> Iterator[Hit]:
                 yield Hit(Span(path, line, column + 1), f"Undefined name `{name}`")
 
 
+LAZY_ANNOTATIONS = (3, 14)
+"""The first Python that evaluates annotations only when they are read (PEP 649)."""
 _DEFERRING = frozenset({"add_done_callback", "create_timer", "create_wall_timer",
                         "create_subscription", "create_service", "create_guard_condition",
                         "Thread", "Timer", "Process", "submit", "call_later", "call_soon",
@@ -273,14 +278,16 @@ def _pyflakes_undefined(path: str, tree: ast.Module) -> list[tuple[int, int, str
                   if isinstance(m, UndefinedName))
 
 
-def _unevaluated_annotations(tree: ast.Module) -> list[tuple[tuple[int, int], tuple[int, int]]]:
+def _unevaluated_annotations(tree: ast.Module, *, lazy: bool = False
+                             ) -> list[tuple[tuple[int, int], tuple[int, int]]]:
     """Where annotations Python never evaluates stand: every annotation under ``from
-    __future__ import annotations`` (PEP 563), that of an assignment inside a function
-    (PEP 526), and a string in any annotation (a forward reference, ``Optional['Pose']``)."""
+    __future__ import annotations`` (PEP 563) or on a Python that evaluates them only when
+    read (``lazy``: 3.14, PEP 649), that of an assignment inside a function (PEP 526), and a
+    string in any annotation (a forward reference, ``Optional['Pose']``)."""
     ranges: list[tuple[tuple[int, int], tuple[int, int]]] = []
-    postponed = any(isinstance(node, ast.ImportFrom) and node.module == "__future__"
-                    and any(alias.name == "annotations" for alias in node.names)
-                    for node in tree.body)
+    postponed = lazy or any(isinstance(node, ast.ImportFrom) and node.module == "__future__"
+                            and any(alias.name == "annotations" for alias in node.names)
+                            for node in tree.body)
     in_functions = {id(node) for function in nodes_of(tree)
                     if isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef))
                     for node in ast.walk(function) if isinstance(node, ast.AnnAssign)}
