@@ -21,6 +21,7 @@ from pkgtool.model.package import Package, is_test_material
 from pkgtool.rules.python.field_value_type import TO_MSG, float_fix
 from pkgtool.rules.python._loggers import logged_message
 from pkgtool.rules.python.invalid_logger_call import ATTRIBUTES, meant_level
+from pkgtool.rules.python.parameter_object_as_value import truth_tests
 from pkgtool.rules.python.path_without_separator import joins
 from pkgtool.rules.syntax_trees import index_of
 from pkgtool.lazy_regex import lazy_pattern
@@ -156,7 +157,8 @@ def parameter_value(package: Package, findings: list[Finding]) -> Iterator[Fix]:
         if value is None:
             continue
         compared = any(isinstance(n, ast.Compare) and (n.left is value or value in n.comparators)
-                       for n in ast.walk(doc.tree))
+                       for n in ast.walk(doc.tree)) or \
+            any(test is value for test in truth_tests(doc.tree))
         yield Fix(f"Take `{ast.unparse(value)}.value`",
                   (_insert(doc, doc.end(value), ".value"),), safe=not compared)
 

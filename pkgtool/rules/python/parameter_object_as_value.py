@@ -56,6 +56,8 @@ def _uses(tree: ast.Module, index: Index) -> Iterator[tuple[ast.expr, str, str |
         if not converted:
             yield value, f"is formatted with `{spec}`: it has no format of its own, Python " \
                 "raises TypeError", None
+    for test in truth_tests(tree):
+        yield test, "is tested for truth: a `Parameter` object is always true", None
     for node in nodes_of_class(tree, ast.BinOp, ast.Compare, ast.Assign):
         if isinstance(node, ast.BinOp):
             yield node.left, _ARITHMETIC, None
@@ -73,6 +75,16 @@ def _uses(tree: ast.Module, index: Index) -> Iterator[tuple[ast.expr, str, str |
         elif isinstance(node, ast.Assign) and any(
                 isinstance(t, ast.Attribute) and t.attr in _FRAMES for t in node.targets):
             yield node.value, "", "names a frame: the message names a frame that does not exist"
+
+
+def truth_tests(tree: ast.Module) -> Iterator[ast.expr]:
+    """The expressions Python tests for truth: the test of an ``if``, ``while``, conditional
+    expression or ``assert``, the operand of ``not``, each operand of ``and``/``or`` there."""
+    for node in nodes_of_class(tree, ast.If, ast.While, ast.IfExp, ast.Assert, ast.UnaryOp):
+        test = node.operand if isinstance(node, ast.UnaryOp) else node.test  # type: ignore
+        if isinstance(node, ast.UnaryOp) and not isinstance(node.op, ast.Not):
+            continue
+        yield from test.values if isinstance(test, ast.BoolOp) else (test,)
 
 
 def _reads(value: ast.expr | None) -> bool:
@@ -113,7 +125,8 @@ def parameter_object_as_value(package: Package) -> Iterator[Hit]:
     assignment of which is such a call, and reports it where a plain value is needed: the
     period of `create_timer`, the topic or QoS depth of `create_publisher` and
     `create_subscription`, the name of `create_service` and `create_client`, `float()` or
-    `int()`, arithmetic (`period * 2`), comparisons (`speed > 1.0`) and formatting as a number
+    `int()`, arithmetic (`period * 2`), comparisons (`speed > 1.0`), truth tests (`if
+    self.get_parameter('calibrate'):`, always true) and formatting as a number
     (`f'{period:.2f}'`, `'%f' % period`). Also reports the
     text of such a call, `str(self.get_parameter('x'))` or an f-string formatting it
     (directly, or through a name or attribute every assignment of which is one), given as
