@@ -18,7 +18,8 @@ from collections.abc import Iterator
 
 from pkgtool.knowledge.message_fields import Message, element_message, nested_message
 from pkgtool.rules.python._message_instances import (Instance, attributes_taken,
-                                                     binding_counts, instance_of, name_reads)
+                                                     binding_counts, fields_taken, instance_of,
+                                                     name_reads)
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index
 
 _LEVELS = 3
@@ -42,26 +43,17 @@ def derived_instances(instances: list[Instance[Message]], tree: ast.Module, inde
 
 def _reached(instance: Instance[Message], tree: ast.Module, index: Index
              ) -> Iterator[Instance[Message]]:
-    """The instances reached from the fields ``instance`` is used through."""
-    for use in instance.uses:
-        node: ast.expr = use
-        message: Message | None = instance.message
-        path: tuple[str, ...] = ()
-        while isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Load) and \
-                message is not None and not node.attr.startswith("_"):
-            path = (*path, node.attr)
-            if path in instance.stored:
-                break
-            element = element_message(message, node.attr)
-            if element is not None:
-                yield from _elements(node, element, tree, index)
-            message = nested_message(message, node.attr)
-            if message is not None:
-                yield from _bound(node, message, tree, index)
-            parent = index.parents.get(id(node))
-            if not (isinstance(parent, ast.Attribute) and parent.value is node):
-                break
-            node = parent
+    """The instances reached from the fields ``instance`` is used through (not through a
+    field the code assigns)."""
+    for node, message, path in fields_taken(instance, index):
+        if path in instance.stored:
+            continue
+        element = element_message(message, node.attr)
+        if element is not None:
+            yield from _elements(node, element, tree, index)
+        nested = nested_message(message, node.attr)
+        if nested is not None:
+            yield from _bound(node, nested, tree, index)
 
 
 def _elements(field: ast.Attribute, element: Message, tree: ast.Module, index: Index

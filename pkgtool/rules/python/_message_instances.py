@@ -22,7 +22,7 @@ from collections import Counter
 from collections.abc import Callable, Iterator, Mapping
 from typing import Any, Generic, TypeVar
 
-from pkgtool.knowledge.message_fields import Message, message_of
+from pkgtool.knowledge.message_fields import Message, message_of, nested_message
 from pkgtool.model.ast_nodes import nodes_of, nodes_of_class, subtree
 from pkgtool.model.memo import per_tree
 from pkgtool.model.package import Package
@@ -223,6 +223,29 @@ def _annotated_otherwise(first: ast.arg, method: ast.FunctionDef | ast.AsyncFunc
     note = first.annotation
     return note is not None and first.arg not in ("self", "cls") and \
         not (isinstance(note, ast.Name) and note.id == "Self")
+
+
+def fields_taken(instance: Instance[Message], index: Index
+                 ) -> Iterator[tuple[ast.Attribute, Message, tuple[str, ...]]]:
+    """Down each use of a message instance (``msg.pose.position.x``), every attribute taken
+    with the message it is taken on and its path from the instance (``("pose", "position")``),
+    while that message is certain: not past a private name, an attribute the message lacks
+    (yielded, then the walk stops) or a field the code assigns (``msg.pose = ...``)."""
+    for use in instance.uses:
+        node: ast.AST = use
+        message: Message | None = instance.message
+        path: tuple[str, ...] = ()
+        while isinstance(node, ast.Attribute) and message is not None and \
+                not node.attr.startswith("_"):
+            path = (*path, node.attr)
+            yield node, message, path
+            if not message.has(node.attr):
+                break
+            message = None if path in instance.stored else nested_message(message, node.attr)
+            parent = index.parents.get(id(node))
+            if not (isinstance(parent, ast.Attribute) and parent.value is node):
+                break
+            node = parent
 
 
 def name_reads(scope: ast.AST, name: str) -> list[ast.expr]:

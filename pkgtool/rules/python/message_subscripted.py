@@ -10,7 +10,7 @@ from pkgtool.knowledge.message_fields import Message, nested_message
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._derived_messages import derived_instances
-from pkgtool.rules.python._message_instances import Instance, known_messages
+from pkgtool.rules.python._message_instances import Instance, fields_taken, known_messages
 from pkgtool.rules.python._messages import message_instances
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
@@ -63,20 +63,10 @@ def _indexed(instance: Instance[Message], index: Index
     for ref in instance.refs:
         if _subscripted(ref, index):
             yield ref, instance.message
-    for use in instance.uses:
-        node: ast.expr = use
-        message: Message | None = instance.message
-        path: tuple[str, ...] = ()
-        while isinstance(node, ast.Attribute) and message is not None and \
-                message.has(node.attr):
-            path = (*path, node.attr)
-            message = None if path in instance.stored else nested_message(message, node.attr)
-            if message is not None and _subscripted(node, index):
-                yield node, message
-            parent = index.parents.get(id(node))
-            if not (isinstance(parent, ast.Attribute) and parent.value is node):
-                break
-            node = parent
+    for node, message, path in fields_taken(instance, index):
+        nested = nested_message(message, node.attr) if path not in instance.stored else None
+        if nested is not None and _subscripted(node, index):
+            yield node, nested
 
 
 def _subscripted(value: ast.expr, index: Index) -> bool:

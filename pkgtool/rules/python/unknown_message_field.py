@@ -8,8 +8,7 @@ from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import typo_of
-from pkgtool.knowledge.message_fields import (Message, close_field, constructor_options,
-                                              nested_message)
+from pkgtool.knowledge.message_fields import Message, close_field, constructor_options
 from pkgtool.knowledge.tables import DEFAULT_DISTRO
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
@@ -17,7 +16,8 @@ from pkgtool.model.span import Span
 from pkgtool.model.static_branches import depends_on_ros_distro
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.python._derived_messages import derived_instances
-from pkgtool.rules.python._message_instances import Instance, Known, known_messages
+from pkgtool.rules.python._message_instances import (Instance, Known, fields_taken,
+                                                     known_messages)
 from pkgtool.rules.python._messages import message_instances
 from pkgtool.rules.syntax_trees import Index, installed_trees
 from pkgtool.rules.registry import rule
@@ -44,21 +44,9 @@ def _wrong_attributes(instance: Instance, index: Index, probed: frozenset[str]
                       ) -> Iterator[tuple[ast.Attribute, Message]]:
     """Attributes taken on the instance, or on its message-typed fields, that the message
     there does not have."""
-    for use in instance.uses:
-        node: ast.AST = use
-        message: Message | None = instance.message
-        path: tuple[str, ...] = ()
-        while isinstance(node, ast.Attribute) and message is not None:
-            if node.attr.startswith("_"):
-                break
-            if not message.has(node.attr):
-                if not guarded(node, index, probed):
-                    yield node, message
-                break
-            path = (*path, node.attr)
-            message = None if path in instance.stored else nested_message(message, node.attr)
-            parent = index.parents.get(id(node))
-            node = parent if isinstance(parent, ast.Attribute) and parent.value is node else None
+    for node, message, _ in fields_taken(instance, index):
+        if not message.has(node.attr) and not guarded(node, index, probed):
+            yield node, message
 
 
 @rule("PYC019", "unknown-message-field", Severity.ERROR,
