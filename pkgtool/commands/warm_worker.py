@@ -72,10 +72,8 @@ def start(warm_up: Callable[[], Iterable[Callable[[], None]]]) -> Optional[WarmW
     """Fork a worker that runs the steps ``warm_up()`` gives (imports, tables) until the call
     of :meth:`WarmWorker.map` comes, then serves it; None where a worker is not used (not
     Linux, one core, threads running, one job asked for)."""
-    if not sys.platform.startswith("linux") or chosen_jobs() == 1 or cores() < 2:
-        return None  # on one core, the worker would only slow the run down
-    if threads_running():
-        return None  # forking a process that runs threads is unsafe
+    if not may_fork():
+        return None
     from_parent, to_child = os.pipe()
     from_child, to_parent = os.pipe()
     sys.stdout.flush()
@@ -94,8 +92,7 @@ def forked(call: Callable[[], Any]) -> Optional[Callable[[], Any]]:
     """Start ``call()`` in a forked child now; a function that waits for the child and gives
     what ``call`` returned (None when the child failed or its answer cannot be read). None
     where a child is not used (the same conditions as :func:`start`)."""
-    if not sys.platform.startswith("linux") or chosen_jobs() == 1 or cores() < 2 or \
-            threads_running():
+    if not may_fork():
         return None
     import gc
 
@@ -140,6 +137,14 @@ def _answer_of(pid: int, receive: int) -> Any:
         result = None
     _, status = os.waitpid(pid, 0)
     return result if status == 0 else None
+
+
+def may_fork() -> bool:
+    """True where a helper process is forked: on Linux (forking a process without threads is
+    safe and cheap there), with two cores or more (on one, a helper only slows the run down),
+    unless one job is asked for, and never while this process runs threads (unsafe)."""
+    return sys.platform.startswith("linux") and chosen_jobs() != 1 and cores() >= 2 and \
+        not threads_running()
 
 
 def chosen_jobs() -> int:
