@@ -84,11 +84,16 @@ def unread_values(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[
 
 def _read_names(function: ast.FunctionDef | ast.AsyncFunctionDef) -> set[str] | None:
     """The names ``function`` reads anywhere (nested functions included, ``global`` and
-    ``nonlocal`` declarations too); None when it may read any (``locals()``, ``eval``)."""
+    ``nonlocal`` declarations too); None when it may read any (``locals()``, ``eval``). An
+    event handler's ``target_action=name`` is not a read: it watches the action, it does not
+    start it (a node named only there never runs)."""
     read: set[str] = set()
+    watched = {id(node.value) for node in subtree(function)
+               if isinstance(node, ast.keyword) and node.arg == "target_action"}
     for node in subtree(function):
         if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Store):
-            read.add(node.id)
+            if id(node) not in watched:
+                read.add(node.id)
         elif isinstance(node, (ast.Global, ast.Nonlocal)):
             read.update(node.names)
         elif isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and \

@@ -15,6 +15,7 @@ that is none of these is ``unknown`` and only ever gets a guessed key.
 
 from __future__ import annotations
 
+import ast
 import posixpath
 from collections.abc import Iterable, Iterator
 from functools import lru_cache
@@ -37,6 +38,7 @@ from pkgtool.model.setup_py import EntryPoint
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
+from pkgtool.model.python_visitor import parse_tree
 from pkgtool.records import record
 from pkgtool.rules.optional_imports import optional_modules
 from pkgtool.rules.sys_path import outside_edits, sys_path_edits, vendored_edits
@@ -371,6 +373,26 @@ def console_script_files(package: Package) -> frozenset[str]:
     return _entry_point_files(package, "console_scripts")
 
 
+def run_as_a_script(package: Package, module: PythonModule,
+                    scripts: frozenset[str] | None = None) -> bool:
+    """True for a script kept in the package folder: it runs code at its top level (a call,
+    or an ``if __name__ == '__main__':`` block), no console script runs it and no module of
+    the package imports it. Run as ``python3 path/to/it.py``, its folder is on ``sys.path``
+    and its neighbours import as top-level modules. ``scripts``: the files console scripts
+    run (:func:`console_script_files`, when the caller has them)."""
+    if module.path in (console_script_files(package) if scripts is None else scripts):
+        return False
+    tree = parse_tree(module.path, package.texts.get(module.path, ""))
+    if not isinstance(tree, ast.Module) or not any(
+            isinstance(s, ast.Expr) and isinstance(s.value, ast.Call) or
+            isinstance(s, ast.If) and "__main__" in ast.unparse(s.test) for s in tree.body):
+        return False
+    name = posixpath.basename(module.path)[:-3]
+    return not any(name in (i.module.rpartition(".")[2], *i.names)
+                   for other in package.modules if other.path != module.path
+                   for i in other.imports)
+
+
 def runtime_code(package: Package) -> list[PythonModule]:
     """Installed code that runs outside tests: all of it except pytest plugins."""
     plugins = pytest_plugins(package)
@@ -543,29 +565,29 @@ def _needs(package: Package, module: PythonModule, guarded: bool | None) -> Iter
                 or enclosing_package_import(package, owner, imported)
                 or any(line < imported.span.line and top in names for line, names in on_path)):
             continue
-        member = _namespace_member(imported)
-        shown = f"{top}.{member}" if member else top
-        if shown in seen:
-            continue
-        seen.add(shown)
-        joined = shown.replace(".", "_")
-        kind, keys = classify(joined, names, package.context)
-        if package.name in keys:  # `azure.iot` read as `azure_iot`, the package's own name
-            keys = tuple(k for k in keys if k != package.name)
-            guessed = tuple(k for k in _guessed_keys(joined) if k != package.name)
-            kind, keys = (kind, keys) if keys else ("unknown", guessed)
-        if ros1 and kind == "unknown" and top in ROS1_PACKAGES:  # rospy in a catkin package
-            kind, keys = "ros", (top,)
-        elif kind == "unknown" and _interface_kind(imported.module):
-            kind, keys = "ros", (top,)  # `from x.msg import Y`: rosidl's, named as its package
-        elif kind == "unknown" and above is not None and above < imported.span.line and \
-                not _holds_module(package, top):
-            continue  # maybe a module of the checkout a `sys.path` edit above the package reaches
-        elif kind != "ros" and copies is not None and copies < imported.span.line:
-            continue  # maybe the copy of a library another package's folder holds
-        if ros1 and kind == "ros":
-            keys = _ros1_keys(top, keys)
-        yield Need(module, imported, shown, kind, keys)
+        for member in _namespace_members(imported):
+            shown = f"{top}.{member}" if member else top
+            if shown in seen:
+                continue
+            seen.add(shown)
+            joined = shown.replace(".", "_")
+            kind, keys = classify(joined, names, package.context)
+            if package.name in keys:  # `azure.iot` read as `azure_iot`, the package's own name
+                keys = tuple(k for k in keys if k != package.name)
+                guessed = tuple(k for k in _guessed_keys(joined) if k != package.name)
+                kind, keys = (kind, keys) if keys else ("unknown", guessed)
+            if ros1 and kind == "unknown" and top in ROS1_PACKAGES:  # rospy in a catkin package
+                kind, keys = "ros", (top,)
+            elif kind == "unknown" and _interface_kind(imported.module):
+                kind, keys = "ros", (top,)  # `from x.msg import Y`: rosidl's package
+            elif kind == "unknown" and above is not None and above < imported.span.line and \
+                    not _holds_module(package, top):
+                continue  # maybe a module of the checkout a `sys.path` edit above reaches
+            elif kind != "ros" and copies is not None and copies < imported.span.line:
+                continue  # maybe the copy of a library another package's folder holds
+            if ros1 and kind == "ros":
+                keys = _ros1_keys(top, keys)
+            yield Need(module, imported, shown, kind, keys)
 
 
 def _holds_module(package: Package, name: str) -> bool:
@@ -590,17 +612,27 @@ NAMESPACE_PACKAGES = {"google": "protobuf", "azure": "", "zope": "", "backports"
 for in rosdep's data (``google``: protobuf's)."""
 
 
-def _namespace_member(imported: Import) -> str | None:
-    """The member of a namespace package an import takes (``auth`` of ``import google.auth``
-    or ``from google import auth``, ``cloud.storage`` of ``from google.cloud import storage``
-    when rosdep's data knows that one), when it is not the one the plain name stands for."""
+def _namespace_members(imported: Import) -> list[str | None]:
+    """What ``imported`` needs: ``[None]`` for its top-level name; for a namespace package,
+    each member it takes (``auth`` of ``import google.auth`` or ``from google import auth``,
+    ``cloud.storage`` of ``from google.cloud import storage`` when rosdep's data knows that
+    one; None for the member the plain name stands for), and nothing for the namespace alone
+    (``import google``: whatever members the code reads are imported elsewhere)."""
     top = imported.top_level
     if top not in NAMESPACE_PACKAGES:
-        return None
+        return [None]
     parts = imported.module.split(".")[1:]
-    if len(imported.names) == 1 and imported.names[0] != "*":
-        parts.append(imported.names[0])
-    if not parts or parts[0] == NAMESPACE_PACKAGES[top]:
+    names = [name for name in imported.names if name != "*"]
+    if names:
+        return [_member(top, [*parts, name]) for name in names]
+    return [_member(top, parts)] if parts else []
+
+
+def _member(top: str, parts: list[str]) -> str | None:
+    """The member of the namespace ``top`` that ``parts`` (after it) reach: the longest start
+    rosdep's data knows, else the first part; None when it is the one the plain name stands
+    for."""
+    if parts[0] == NAMESPACE_PACKAGES[top]:
         return None
     longest = next((parts[:n] for n in range(len(parts), 1, -1)
                     if keys_for_import("_".join([top, *parts[:n]]))), parts[:1])

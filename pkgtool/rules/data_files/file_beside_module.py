@@ -9,11 +9,12 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import last_name, nodes_of_class
-from pkgtool.model.installed import installed_modules, is_ament_python
+from pkgtool.model.installed import installed_data, installed_modules, is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.model.setup_py import PACKAGE_DATA
 from pkgtool.model.span import Span
 from pkgtool.rules.existence_checks import checks_files
+from pkgtool.rules.imports import run_as_a_script
 from pkgtool.rules.registry import rule
 from pkgtool.rules.sys_path import file_relative_paths
 from pkgtool.rules.syntax_trees import Index, installed_trees
@@ -55,7 +56,10 @@ def file_beside_module(package: Package) -> Iterator[Hit]:
     there: a file outside the package's Python packages (`<module>/../config/x.yaml`, the
     package root's `config/`), or one inside them when setup.py has no `package_data` nor
     `include_package_data`. Modules that ask whether paths exist (`os.path.exists`) are left
-    alone, as are packages whose setup.py installs into `site-packages` by other means, and
+    alone, as are packages whose setup.py installs into `site-packages` by other means, scripts
+    kept in the package folder (code at their top level that no console script runs, no
+    module imports and data_files does not copy: run as `python3 path/to/it.py` from the
+    sources), and
     paths only shown as images by Qt (`QIcon(path)`, `QPixmap(path)`: a missing file makes
     an empty image, no error).
 
@@ -83,8 +87,10 @@ def file_beside_module(package: Package) -> Iterator[Hit]:
         return
     folders = {posixpath.dirname(file) for file in (installed_modules(package) or {}).values()}
     files = set(package.files)
+    copied = set((installed_data(package) or {}).values())
     for module, tree, index in installed_trees(package):
-        if "__file__" not in package.texts.get(module.path, "") or checks_files(index):
+        if "__file__" not in package.texts.get(module.path, "") or checks_files(index) or \
+                run_as_a_script(package, module) and module.path not in copied:
             continue
         seen: set[str] = set()
         for node, path in file_relative_paths(tree, module.path):

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import ast
 import posixpath
 from collections.abc import Iterator
 
@@ -11,9 +10,9 @@ from pkgtool.knowledge.rosdistro import keys_for_import, stdlib_modules
 from pkgtool.model.installed import installed_data, installed_modules, separate_projects
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.package import Package
-from pkgtool.model.python_visitor import parse_tree
 from pkgtool.rules.imports import (ANY, console_script_files, declared, enclosing_package_import,
-                                   installed_code, path_modules, python_package_of)
+                                   installed_code, path_modules, python_package_of,
+                                   run_as_a_script)
 from pkgtool.rules.registry import rule
 from pkgtool.lazy_regex import lazy_pattern
 
@@ -95,7 +94,7 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
                                or _imports_itself(modules.get(f"{folder}/{top}.py"), top)):
                 continue
             if exempt is None:
-                exempt = _run_as_a_script(package, module, scripts) or \
+                exempt = run_as_a_script(package, module, scripts) or \
                     _helper_of_scripts(package, module, scripts)
             if exempt:
                 break
@@ -150,24 +149,6 @@ def _third_party_meant(package: Package, folder: str, imported: Import,
         package.has_file(f"{path}.py") or package.has_file(f"{path}/__init__.py"))
 
 
-def _run_as_a_script(package: Package, module: PythonModule, scripts: frozenset[str]) -> bool:
-    """True for a script kept in the package folder: it runs code at its top level (a call,
-    or an ``if __name__ == '__main__':`` block), no console script runs it and no module of
-    the package imports it. Run as ``python3 path/to/it.py``, its folder is on ``sys.path``
-    and its neighbours import as top-level modules."""
-    if module.path in scripts:
-        return False
-    tree = parse_tree(module.path, package.texts.get(module.path, ""))
-    if not isinstance(tree, ast.Module) or not any(
-            isinstance(s, ast.Expr) and isinstance(s.value, ast.Call) or
-            isinstance(s, ast.If) and "__main__" in ast.unparse(s.test) for s in tree.body):
-        return False
-    name = posixpath.basename(module.path)[:-3]
-    return not any(name in (i.module.rpartition(".")[2], *i.names)
-                   for other in package.modules if other.path != module.path
-                   for i in other.imports)
-
-
 def _helper_of_scripts(package: Package, module: PythonModule, scripts: frozenset[str]
                        ) -> bool:
     """True for a module that only scripts of its folder import, by its bare name (``import
@@ -185,7 +166,7 @@ def _helper_of_scripts(package: Package, module: PythonModule, scripts: frozense
                  if other.path != module.path and naming(other)]
     return bool(importers) and all(
         posixpath.dirname(other.path) == folder and set(naming(other)) == {name} and
-        _run_as_a_script(package, other, scripts) for other in importers)
+        run_as_a_script(package, other, scripts) for other in importers)
 
 
 def _imports_itself(module: PythonModule | None, name: str) -> bool:

@@ -27,7 +27,8 @@ def launch_node_never_started(package: Package) -> Iterator[Hit]:
     Reports `Node(...)` (and the other node actions) whose call is the whole value of an
     assignment to a local name that its function never reads: no load of the name anywhere
     in the function, nested functions included, no `del`, `global`, `nonlocal`, `locals()`,
-    `vars()`, `eval` or `exec`.
+    `vars()`, `eval` or `exec`; a read as an event handler's `target_action=` does not count
+    (the handler watches the action, it does not start it, and never fires).
     A node whose name a comment of the file mentions (`# rviz,` left in the list) was
     disabled on purpose and is not reported.
 
@@ -57,4 +58,4 @@ def launch_node_never_started(package: Package) -> Iterator[Hit]:
             if node.unused and not _disabled(lines, node.span.line):
                 started = f"`{node.executable}`" if node.executable else "this node"
                 yield Hit(node.span, f"The `{node.action}` action for {started} is assigned "
-                          "to a name that is never used: the node is never started")
+                          "to a name that nothing uses to start it: the node is never started")

@@ -297,9 +297,9 @@ def _class_facts(cls: ast.ClassDef) -> _ClassFacts:
 @per_tree
 def _stored_attributes(tree: ast.Module) -> Counter[str] | None:
     """How often the module stores each attribute name, once per tree (PYC019 and PYC020 ask);
-    None when it calls ``setattr`` or ``delattr`` (any attribute may change)."""
-    if any(isinstance(n, ast.Call) and isinstance(n.func, ast.Name)
-           and n.func.id in ("setattr", "delattr") for n in nodes_of_class(tree, ast.Call)):
+    None when it calls ``setattr``, ``delattr`` or ``exec`` (any attribute may change)."""
+    if any(isinstance(n, ast.Call) and isinstance(n.func, ast.Name) and
+           n.func.id in ("setattr", "delattr", "exec") for n in nodes_of_class(tree, ast.Call)):
         return None
     return Counter(n.attr for n in nodes_of_class(tree, ast.Attribute)
                    if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load))

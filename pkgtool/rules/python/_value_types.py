@@ -217,9 +217,10 @@ def _local_type(name: ast.Name, tree: ast.Module, index: Index, package: Package
 
 
 def _dynamic(tree: ast.Module, index: Index) -> bool:
-    """True when the module calls ``setattr``/``vars``, defines ``__setattr__`` or assigns
-    ``__slots__`` (``__dict__`` is looked for with the stores)."""
-    return any(isinstance(c.func, ast.Name) and c.func.id in _DYNAMIC for c in index.calls) \
+    """True when the module calls ``setattr``/``exec``/``vars``, defines ``__setattr__`` or
+    assigns ``__slots__`` (``__dict__`` is looked for with the stores)."""
+    return any(isinstance(c.func, ast.Name) and c.func.id in (*_DYNAMIC, "exec")
+               for c in index.calls) \
         or any(f.name in _DYNAMIC for f in index.functions) or "__slots__" in \
         _assigned_names(tree)
 

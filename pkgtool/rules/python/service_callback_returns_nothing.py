@@ -61,8 +61,9 @@ _RETURNED = {
         "Return `CancelResponse.ACCEPT` or `CancelResponse.REJECT`", rejects=True),
     ("add_on_set_parameters_callback()", "callback"): _Callback(
         "set-parameters callback", "a `SetParametersResult`",
-        "rclpy rejects every parameter change ('Callback returned an invalid type')",
-        "rclpy rejects the parameter change ('Callback returned an invalid type')",
+        "every parameter change fails: rclpy reads `.successful` of the `None` it gets "
+        "(AttributeError)",
+        "rclpy reads `.successful` of a `SetParametersResult` from it to accept the change",
         "End the callback with `return SetParametersResult(successful=True)`",
         "Return `SetParametersResult(successful=...)`"),
 }

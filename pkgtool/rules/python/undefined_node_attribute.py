@@ -30,6 +30,9 @@ from pkgtool.rules.syntax_trees import Index, base_names, installed_trees
 _DYNAMIC = frozenset({"setattr", "delattr", "vars", "__dict__", "__getattr__",
                       "__getattribute__", "__setattr__", "__slots__"})
 """Names whose use in a module means any attribute may exist."""
+_BUILTINS = _DYNAMIC | {"exec"}
+"""Those names, and builtins that do the same (``exec('self.x = 1')``), read as names (an
+attribute ``app.exec`` is another thing)."""
 
 
 _OBJECT_NAMES = frozenset({
@@ -44,7 +47,7 @@ rclpy's newer nodes add."""
 
 def _dynamic(tree: ast.Module) -> bool:
     """True when the module may create attributes in ways not written as ``x.name = ...``."""
-    return (any(isinstance(n, ast.Name) and n.id in _DYNAMIC
+    return (any(isinstance(n, ast.Name) and n.id in _BUILTINS
                 for n in nodes_of_class(tree, ast.Name))
             or any(isinstance(n, ast.Attribute) and n.attr in _DYNAMIC
                    for n in nodes_of_class(tree, ast.Attribute))
@@ -246,7 +249,7 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
     (`self.x = ...` in another class's method stores on that class's instances only, and
     `goal.pose.header.frame_id = ...` on a message a field). An
     augmented assignment, `self.x += 1`, reads `x` first, so it counts as a read. Modules
-    using `setattr`, `delattr`, `vars`, `__dict__`, `__getattr__`, `__setattr__` or
+    using `setattr`, `delattr`, `exec`, `vars`, `__dict__`, `__getattr__`, `__setattr__` or
     `__slots__`, names they pass to `hasattr`/`getattr`, and reads inside a `try` that
     catches `AttributeError` are left alone. The same goes for `node.x` read on a local name
     that holds an instance of such a class (`node = Talker()`, None as a placeholder aside,
