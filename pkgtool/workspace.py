@@ -36,6 +36,9 @@ IGNORE_MARKERS = frozenset({"COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE",
                             "_setup_util.py", "_order_isolated_packages.py"})
 SKIPPED_NAMES = frozenset({"__pycache__", "node_modules", "site-packages"})
 GENERATED_MARKERS = frozenset({"pyvenv.cfg", "CMakeCache.txt"})
+VENDORED_NAMES = frozenset({"include"})
+"""Folders discovery does not search for packages: a C/C++ header tree never holds a ROS
+package's sources, and a package.xml there came with a copied library (mavlink's headers)."""
 """Files marking a folder whose contents are generated (a virtual environment, a CMake build
 tree): skipped with everything below it, beyond colcon."""
 
@@ -186,7 +189,8 @@ def _below(folder: Path, real: str, listed: list[os.DirEntry[str]], folders: Fou
     """Add the sub-folders of ``folder`` worth searching to ``folders`` (real ones, with their
     real paths) and ``links``; only then are their paths made (a package's are never)."""
     for entry in listed:
-        if not _skipped_name(entry.name) and _is_dir(entry):
+        if not _skipped_name(entry.name) and entry.name not in VENDORED_NAMES and \
+                _is_dir(entry):
             if entry.is_symlink():
                 links.append((folder / entry.name, ""))
             else:

@@ -21,8 +21,8 @@ from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.launch import LAUNCH_SUFFIXES
 from pkgtool.model.package import Package
 from pkgtool.model.setup_py import DataFile, DataSource
-from pkgtool.rules.data_files.common import (MARKER_FOLDER, is_folder,
-                                             uninstalled_launch_resources)
+from pkgtool.rules.data_files.common import is_folder, uninstalled_launch_resources
+from pkgtool.rules.plain_projects import MARKER_FOLDER
 
 Build = Callable[[SetupDoc], Sequence[Edit]]
 

@@ -7,9 +7,11 @@ from collections.abc import Iterator
 from pkgtool.edit.core import Edit, EditError, Fix
 from pkgtool.edit.changes import read_source
 from pkgtool.findings import Finding
-from pkgtool.fix.registry import fixer
+from pkgtool.fix.common import manifest_doc, offer
+from pkgtool.fix.registry import Refusal, fixer
 from pkgtool.model.package import Package
 from pkgtool.rules.interfaces._files import built_interface_files
+from pkgtool.rules.interfaces.interface_package_not_in_group import GROUP
 from pkgtool.rules.interfaces.unknown_field_type import type_problem
 
 
@@ -39,3 +41,15 @@ def field_type(package: Package, findings: list[Finding]) -> Iterator[Fix]:
             yield Fix(f"Write `{problem.meant}`",
                       (Edit(found.path, start, start + len(member.type), problem.meant),),
                       safe=False)
+
+
+@fixer("IFC007", "Join the `rosidl_interface_packages` group")
+def interface_group(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
+    """Add ``<member_of_group>rosidl_interface_packages</member_of_group>`` to a format 3
+    package.xml. Safe: rosidl stopped the build without it; a format 2 package.xml is left
+    to the user (moving to format 3 changes what other elements mean)."""
+    doc = manifest_doc(package)
+    if doc is None or not findings:
+        return
+    yield from offer(f"Add `<member_of_group>{GROUP}</member_of_group>`",
+                     lambda: doc.add("member_of_group", GROUP))

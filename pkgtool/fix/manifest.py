@@ -91,7 +91,8 @@ def spdx(package: Package, findings: list[Finding]) -> Iterator[Fix]:
 
 _WRITE_KEY = lazy_pattern(r"Write `<\w+>([\w.+-]+)</\w+>`")
 """The fix MAN018 states when it knows the one key to write."""
-_NEEDS_NONE = ("is part of the Python standard library", "is a file name, not a package")
+_NEEDS_NONE = ("is part of the Python standard library", "is Python's standard library module",
+               "is a file name, not a package")
 """How MAN018 states a dependency that declares nothing to install (a standard library
 module, a file of the package): removing it changes nothing rosdep or colcon does."""
 

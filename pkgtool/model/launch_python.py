@@ -671,13 +671,17 @@ def _keyword(node: ast.Call, name: str) -> ast.expr | None:
 
 
 def _concat(items: list[Value]) -> Value:
-    """String concatenation: strings stay strings; a share path may be followed by '/...'."""
+    """String concatenation: strings stay strings; a share path may be followed by '/...',
+    not by white space (``path + "\\n"`` joins a list of paths, ``path + ' arg:=1'`` a command
+    line: text, no file name)."""
     if not items or any(i is None or isinstance(i, tuple) for i in items):
         return None
     head, rest = items[0], items[1:]
     if any(isinstance(i, Share) for i in rest):
         return None
     tail = "".join(str(i) for i in rest)
+    if isinstance(head, Share) and any(character.isspace() for character in tail):
+        return None
     if len(tail) + len(head.suffix if isinstance(head, Share) else str(head)) > _MAX_TEXT:
         return None
     if isinstance(head, Share):

@@ -30,8 +30,8 @@ from pkgtool.knowledge.rosdistro import (DISTROS, any_stdlib_module, close_names
                                          keys_for_import, stdlib_modules, typo_distance)
 from pkgtool.model.cmake_install import installed_python_packages
 from pkgtool.model.context import Context
-from pkgtool.model.installed import (DATA_FOLDERS, installed_files, installed_modules,
-                                     is_ament_python, separate_projects)
+from pkgtool.model.installed import (DATA_FOLDERS, installed_data, installed_files,
+                                     installed_modules, is_ament_python, separate_projects)
 from pkgtool.model.launch import is_launch_file, python_folders
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.setup_py import EntryPoint
@@ -470,6 +470,20 @@ def _stdlib(distro: str) -> frozenset[str]:
     return stdlib_modules(distro) | any_stdlib_module()
 
 
+@per_package
+def beside_the_scripts(package: Package) -> frozenset[str]:
+    """Modules installed into ``lib/<package>``, the folder of the console scripts: those
+    data_files copies there, and the ``.py`` files of ``scripts=`` (into setup.cfg's
+    ``install_scripts``, which SET009 wants there): Python puts a script's folder first on
+    the path, so they import by their bare names."""
+    library = f"lib/{package.name}/"
+    copied = {posixpath.basename(target)[:-3] for target in installed_data(package) or ()
+              if posixpath.normpath(target).startswith(library) and target.endswith(".py")}
+    scripts = package.setup_py.scripts if package.setup_py else None
+    return frozenset(copied) | {posixpath.basename(script)[:-3]
+                                for script in scripts or () if script.endswith(".py")}
+
+
 def local_modules(package: Package, module: PythonModule) -> frozenset[str]:
     """Top-level names an import in ``module`` finds in the package itself: its own modules,
     the modules next to ``module`` (not ``module`` itself when another provider has its name:
@@ -478,7 +492,9 @@ def local_modules(package: Package, module: PythonModule) -> frozenset[str]:
     folders above the test's (``python3 -m pytest tests`` run in ``tool/`` imports
     ``tool/generator.py`` from ``tool/tests/test_generator.py``: the current folder; their
     modules and regular packages, not a folder of Python files a package of its name on
-    ``sys.path`` comes before, as ROS's ``launch`` does before a ``launch/`` folder)."""
+    ``sys.path`` comes before, as ROS's ``launch`` does before a ``launch/`` folder); for
+    installed code, the modules installed beside the console scripts
+    (:func:`beside_the_scripts`)."""
     own = posixpath.basename(module.path).removesuffix(".py")
     siblings = _siblings(package, module.path)
     if own in siblings and own not in own_modules(package) and \
@@ -486,7 +502,7 @@ def local_modules(package: Package, module: PythonModule) -> frozenset[str]:
         siblings = siblings - {own}
     local = own_modules(package) | siblings | _own_top_package(package, module.path)
     if not is_test_code(package, module):
-        return local
+        return local | beside_the_scripts(package)
     folder, above = posixpath.dirname(module.path), set()
     while folder:
         folder = posixpath.dirname(folder)

@@ -46,6 +46,7 @@ def workspace(tmp_path: Path) -> Path:
         "old_install/_setup_util.py": "",  # a catkin install space
         "old_install/share/eta/package.xml": MANIFEST,
         "src/node_modules/epsilon/package.xml": MANIFEST,
+        "src/conan/mavlink/include/mavlink/package.xml": MANIFEST,  # came with the headers
         "third_party/opencv_build/CMakeCache.txt": "",  # a CMake build tree: generated
         "third_party/opencv_build/python_loader/setup.py": "from setuptools import setup\n",
         "README.md": "workspace\n",

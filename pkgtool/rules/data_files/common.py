@@ -24,8 +24,6 @@ _SEARCH_PATHS = lazy_pattern(r"\b(?:GZ_SIM|IGN_GAZEBO)_(?:RESOURCE|SYSTEM_PLUGIN
                              r"\bSDF_PATH\b")
 """Environment variables of simulators' search paths: a launch file setting one joins share
 folders to put on it, where a missing folder is skipped, not read."""
-MARKER_FOLDER = "share/ament_index/resource_index/packages"
-"""Where an ament_python package installs its ament index marker."""
 
 
 def destination_parts(entry: DataFile) -> list[str]:

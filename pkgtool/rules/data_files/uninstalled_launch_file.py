@@ -15,8 +15,9 @@ from pkgtool.rules.registry import rule
 from pkgtool.rules.setup_values import checked_setup
 from pkgtool.lazy_regex import lazy_pattern
 
-NOT_INSTALLED_FOLDERS = frozenset({"test", "tests", "doc", "docs"})
-"""Top-level folders whose launch files are test or documentation material."""
+NOT_INSTALLED_FOLDERS = frozenset({"test", "tests", "doc", "docs", "docker", ".devcontainer"})
+"""Top-level folders whose launch files are test or documentation material, or what a
+container image copies in and runs by its path (``ros2 launch /ws/server.launch.py``)."""
 
 
 @rule("DAT005", "uninstalled-launch-file", Severity.ERROR,
@@ -29,8 +30,9 @@ def uninstalled_launch_file(package: Package) -> Iterator[Hit]:
     Reports launch files (`*.launch.py`, `*_launch.py`, XML and YAML variants, and any Python
     file of a `launch` folder defining `generate_launch_description`: `launch/launch.py`) that
     data_files does not install anywhere under `share/<name>`; installing them flat into
-    `share/<name>` or into `share/<name>/launch` are both fine. Launch files under `test/`
-    and `doc/` are ignored, and so are files that only look like launch files: outside a
+    `share/<name>` or into `share/<name>/launch` are both fine. Launch files under `test/`,
+    `doc/`, `docker/` and `.devcontainer/` (a container runs them by their path) are
+    ignored, and so are files that only look like launch files: outside a
     `launch` folder, a module inside the Python package, a `test_*` file or a file under
     `examples/` or `samples/`, files under a sub-folder with a package.xml of its own (that
     package's), and a

@@ -8,7 +8,8 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import keyword_known
 from pkgtool.model.package import Package
-from pkgtool.rules.data_files.common import MARKER_FOLDER, entries_to, source_names
+from pkgtool.rules.data_files.common import entries_to, source_names
+from pkgtool.rules.plain_projects import MARKER_FOLDER
 from pkgtool.rules.registry import rule
 from pkgtool.rules.setup_values import checked_setup, name_cause
 

@@ -7,12 +7,12 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import keys_for_import, stdlib_modules
-from pkgtool.model.installed import installed_data, installed_modules, separate_projects
+from pkgtool.model.installed import installed_modules, separate_projects
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import (ANY, console_script_files, declared, enclosing_package_import,
                                    installed_code, path_modules, python_package_of,
-                                   run_as_a_script)
+                                   beside_the_scripts, run_as_a_script)
 from pkgtool.rules.registry import rule
 from pkgtool.lazy_regex import lazy_pattern
 
@@ -70,7 +70,7 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     modules = {module.path: module for module in package.modules}
     top_level = {name.split(".")[0] for name in installed}
     skip = top_level | stdlib_modules(package.context.distro) | declared(package, ANY).keys() | \
-        _beside_the_scripts(package)
+        beside_the_scripts(package)
     scripts = console_script_files(package)
     for module in installed_code(package):
         folder = posixpath.dirname(module.path)
@@ -125,14 +125,6 @@ def _namespace_folder(package: Package, folder: str, top: str) -> str | None:
         return None
     return prefix if any(f.startswith(prefix) and f.endswith(".py") for f in package.files) \
         else None
-
-
-def _beside_the_scripts(package: Package) -> set[str]:
-    """Modules data_files copies into ``lib/<package>``, the folder of the console scripts:
-    Python puts a script's folder first on the path, so they import by their bare names."""
-    library = f"lib/{package.name}/"
-    return {posixpath.basename(target)[:-3] for target in installed_data(package) or ()
-            if posixpath.normpath(target).startswith(library) and target.endswith(".py")}
 
 
 def _third_party_meant(package: Package, folder: str, imported: Import,

@@ -6,9 +6,8 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
+from pkgtool.rules.plain_projects import ros_package_entry
 from pkgtool.rules.registry import rule
-
-MARKER_FOLDER = "share/ament_index/resource_index/packages"
 
 
 @rule("MAN020", "missing-package-xml", Severity.ERROR,
@@ -39,9 +38,7 @@ def missing_package_xml(package: Package) -> Iterator[Hit]:
     setup = package.setup_py
     if setup is None or package.has_file("package.xml") or setup.setup_span is None:
         return
-    for entry in setup.data_files or ():
-        names = {name for source in entry.sources for name in (source.pattern, *source.matches)}
-        if "package.xml" in names or entry.destination.rstrip("/") == MARKER_FOLDER:
-            yield Hit(entry.span, "The package has no `package.xml`, but setup.py installs "
-                                  "ROS package files: colcon will not build it as a ROS package")
-            return
+    entry = ros_package_entry(package)
+    if entry is not None:
+        yield Hit(entry.span, "The package has no `package.xml`, but setup.py installs "
+                              "ROS package files: colcon will not build it as a ROS package")

@@ -35,6 +35,8 @@ a Python package never means); any other standard library module counts when it 
 rosdep key nor a released package (``uuid``, ``zlib`` and ``sqlite3`` are keys)."""
 
 
+_STDLIB_AND_KEY = {"time": "GNU time, a command-line program"}
+"""Names of :data:`_STDLIB` that are rosdep keys too, with what the key installs."""
 _CPP_KEYS = {"opencv": "libopencv-dev", "opencv2": "libopencv-dev", "OpenCV": "libopencv-dev"}
 """The C++ library key for a name whose Python key MAN018 suggests elsewhere."""
 
@@ -75,6 +77,10 @@ def _hit(element: XmlElement, ros2: bool, compiled: bool, distro: str) -> Hit | 
         return Hit(element.span, f"`{key}` is a file name, not a package: rosdep cannot "
                    "resolve it", f"Remove this `<{tag}>` (files of the package need no "
                    "dependency), or name the package that provides the file")
+    if key in _STDLIB_AND_KEY:
+        return Hit(element.span, f"`{key}` is Python's standard library module here, which "
+                   f"needs no dependency; the rosdep key `{key}` installs "
+                   f"{_STDLIB_AND_KEY[key]}", f"Remove this `<{tag}>`")
     if key in _STDLIB or key in stdlib_modules(distro) and not is_rosdep_key(key) and \
             not is_released_package(key, distro):
         return Hit(element.span, f"`{key}` is part of the Python standard library, not a rosdep "

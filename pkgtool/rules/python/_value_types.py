@@ -28,7 +28,7 @@ from pkgtool.rules.node_api import (INTERFACE, NODE_CLASSES, derives_from_node_a
 from pkgtool.rules.node_parameters import module_nodes
 from pkgtool.rules.python._message_instances import binding_counts, method_receiver
 from pkgtool.rules.python._reaching import reaching_store
-from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_tree_of, installed_trees
 from pkgtool.lazy_regex import lazy_pattern
 
 PARAMETER = "Parameter"
@@ -271,8 +271,10 @@ def _attribute_type(package: Package, name: str) -> str | None:
 
 
 def _node_attribute_type(value: ast.Attribute, package: Package, index: Index) -> str | None:
-    """The type of ``self.x`` read in a method of a class deriving from rclpy's Node alone."""
-    if value.attr in NODE_ATTRIBUTES:
+    """The type of ``self.x`` read in a method of a class deriving from rclpy's Node alone, in
+    an installed module (:func:`attribute_stores` knows the stores of those only: a script
+    kept in ``resource/`` or ``scripts/`` may store ``x`` otherwise)."""
+    if value.attr in NODE_ATTRIBUTES or id(index) not in installed_tree_of(package):
         return None
     cls = receiver_class(value.value, index)
     if cls is None or not derives_from_node_alone(cls, index):

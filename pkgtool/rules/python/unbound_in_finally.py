@@ -27,7 +27,8 @@ def _unbound_uses(index: Index, node: ast.Try) -> Iterator[tuple[ast.Name, str, 
         if count != everywhere.get(name) or not fails_before(node.body, name):
             continue
         use = next((u for body in places for u in uses(body, name)
-                    if not _guarded_by_earlier(u, name, node, index, everywhere)), None)
+                    if not _guarded_by_earlier(u, name, node, index, everywhere) and
+                    not _after_a_failing_read(u, body, name, node, everywhere)), None)
         if use is not None:
             yield use, name, next(s.lineno for s in node.body if name in bound_names([s]))
 
@@ -53,6 +54,48 @@ def _guarded_by_earlier(use: ast.Name, name: str, node: ast.Try, index: Index,
     return False
 
 
+_CONDITIONAL = (ast.Lambda, ast.IfExp, ast.BoolOp, ast.ListComp, ast.SetComp, ast.DictComp,
+                ast.GeneratorExp)
+"""Expressions whose parts may not run."""
+
+
+def _after_a_failing_read(use: ast.Name, body: list[ast.stmt], name: str, node: ast.Try,
+                          everywhere: dict[str, int]) -> bool:
+    """True when an earlier simple statement of ``body`` certainly reads a name the ``try``
+    body alone binds, no earlier than ``name``: ``use`` runs only when that read did not
+    fail, so the ``try`` got past ``name``'s binding (``logger.log(sim)`` then ``if
+    energy:``, ``energy`` bound before ``sim``); that read is the one reported."""
+    bound = bound_names(node.body)
+    order = {key: next(i for i, s in enumerate(node.body) if key in bound_names([s]))
+             for key in bound}
+    for statement in body:
+        if any(n is use for n in ast.walk(statement)):
+            return False
+        if isinstance(statement, (ast.Expr, ast.Assign)) and any(
+                _bound_no_earlier(order[read], order[name], node.body) and
+                bound[read] == everywhere.get(read)
+                for read in _certain_reads(statement.value) if read in order):
+            return True
+    return False
+
+
+def _bound_no_earlier(later: int, earlier: int, body: list[ast.stmt]) -> bool:
+    """True when the statement ``later`` of ``body`` comes after ``earlier``, or is that one
+    when it is a plain assignment (``sim, ctrl = make()``: both or neither)."""
+    return later > earlier or later == earlier and isinstance(body[earlier], ast.Assign)
+
+
+def _certain_reads(value: ast.expr) -> Iterator[str]:
+    """The names ``value`` reads whatever happens (not in a lambda, a branch, a ``and``/``or``
+    operand or a comprehension)."""
+    found = [value]
+    for current in found:
+        if isinstance(current, ast.Name) and isinstance(current.ctx, ast.Load):
+            yield current.id
+        elif not isinstance(current, _CONDITIONAL):
+            found.extend(ast.iter_child_nodes(current))
+
+
 @rule("PYC003", "unbound-in-finally", Severity.ERROR,
       fix="Assign the name (e.g. `node = None`) before `try` and check it before use")
 def unbound_in_finally(package: Package) -> Iterator[Hit]:
@@ -65,7 +108,9 @@ def unbound_in_finally(package: Package) -> Iterator[Hit]:
     `locals()` or a `try/except NameError` (or in the `else:` of one whose body reads the
     bare name), are not reported; nor a use under `if guard:` where `guard = None`
     before the `try` and the `try` binds `guard` earlier, with nothing that can raise from
-    there to the name's binding (`executor = Pool()` then `pending = None`).
+    there to the name's binding (`executor = Pool()` then `pending = None`); nor a use after
+    a statement of the block that reads a name the `try` binds no earlier (`logger.log(sim)`,
+    then `if energy:` with `energy` bound before `sim`): only that first read can fail.
 
     ## Why is this bad?
     When the assignment fails (the node's constructor raises, Ctrl-C arrives first), the

@@ -8,7 +8,9 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import installed_files
 from pkgtool.model.package import Package
 from pkgtool.model.span import ParseProblem
+from pkgtool.rules.plain_projects import plain_python_project
 from pkgtool.rules.registry import rule
+from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.rules.syntax._newer_syntax import newer_syntax
 from pkgtool.rules.syntax._problems import problem_hits
 
@@ -37,7 +39,9 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     file the package does not install in a folder of another project's code (`thirdparty/`,
     `third_party_packages/`, `external/`, `vendor/`: Eigen's Python 2 maintenance scripts) or
     of C and C++ headers (`include/`, where a library's headers come with its scripts:
-    Boost.odeint's Python 2 benchmarks).
+    Boost.odeint's Python 2 benchmarks), or of a plain Python project kept in the workspace
+    (a setup.py and no package.xml: dlib's examples); nor a YAML file that is a Jinja template
+    (`{{ ... }}`, `{% ... %}`: a conda recipe's `meta.yaml`), which its tool renders first.
     Python is parsed by the Python running pkgtool: when that is older than the target
     distribution's (3.11 for jazzy's 3.12), a failing line that uses syntax the target's Python
     added is not reported, as the target may well accept it: an f-string that is complete
@@ -60,7 +64,8 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     ```
     """
     yield from problem_hits(package, _PARSE_KINDS, lambda p: not newer_syntax(package, p) and
-                            not _vendored_and_unused(package, p))
+                            not _vendored_and_unused(package, p) and
+                            not _template(package, p))
 
 
 _VENDORED = frozenset({"thirdparty", "third_party", "3rdparty", "external", "extern", "vendor",
@@ -70,12 +75,24 @@ C and C++ headers (``include``), which hold no Python of the package's own."""
 
 
 def _vendored_and_unused(package: Package, problem: ParseProblem) -> bool:
-    """True for a Python file in a folder of another project's code that the package does
-    not install: nothing builds, runs or imports it (a Python 2 maintenance script)."""
+    """True for a Python file in a folder of another project's code (or of a plain Python
+    project kept in the workspace, with no package.xml: dlib's examples) that the package
+    does not install: nothing builds, runs or imports it (a Python 2 maintenance script)."""
     path = problem.span.path
-    return problem.kind == "python-syntax" and \
-        any(_vendored_folder(part) for part in path.split("/")[:-1]) and \
-        path not in installed_files(package)
+    return problem.kind == "python-syntax" and (
+        any(_vendored_folder(part) for part in path.split("/")[:-1]) or
+        plain_python_project(package)) and path not in installed_files(package)
+
+
+_TEMPLATE = lazy_pattern(r"\{\{.*?\}\}|\{%.*?%\}")
+"""Jinja's expressions and statements: a YAML file holding them is a template some tool
+renders first (a conda recipe's ``meta.yaml``), not YAML yet."""
+
+
+def _template(package: Package, problem: ParseProblem) -> bool:
+    """True for a YAML file that is a Jinja template (:data:`_TEMPLATE`)."""
+    return problem.kind == "yaml-syntax" and \
+        _TEMPLATE.search(package.texts.get(problem.span.path, "")) is not None
 
 
 def _vendored_folder(name: str) -> bool:
