@@ -192,11 +192,22 @@ LAUNCH_YAML = lazy_pattern(r"^launch\s*:", re.M)
 """The top-level ``launch:`` key of a YAML launch file."""
 
 
-def other_yaml(path: str, text: str | None) -> bool:
-    """True for a YAML file named like a launch file with no ``launch:`` key at its top (a
-    Docker Compose file, ``docker-compose.launch.yaml``): no launch file."""
-    return path.endswith((".yaml", ".yml")) and text is not None and \
-        LAUNCH_YAML.search(text) is None
+def named_like_launch_only(path: str, text: str | None) -> bool:
+    """True for a file named like a launch file that is something else: a YAML file with no
+    ``launch:`` key at its top (a Docker Compose file, ``docker-compose.launch.yaml``), or a
+    Python script outside a ``launch`` folder, run by its ``if __name__ == '__main__':``
+    block, that defines no ``generate_launch_description`` (one writing launch files,
+    ``generate_static_tf_launch.py``)."""
+    if text is None:
+        return False
+    if path.endswith((".yaml", ".yml")):
+        return LAUNCH_YAML.search(text) is None
+    return path.endswith(".py") and "launch" not in path.split("/")[:-1] and \
+        _MAIN_BLOCK.search(text) is not None and _LAUNCH_FUNCTION.search(text) is None
+
+
+_MAIN_BLOCK = lazy_pattern(r"^if\s+__name__\s*==\s*['\"]__main__['\"]\s*:", re.M)
+"""A script's top-level ``if __name__ == '__main__':``."""
 
 
 def is_launch_test(path: str, text: str | None) -> bool:

@@ -220,11 +220,12 @@ _WRITING = frozenset("wax")
 
 
 def written_paths(tree: ast.Module) -> set[ast.expr]:
-    """Paths the module opens only to write (``open(path, 'w')``): the expression given, and
-    the values of the names every read of which is such a call (``out = join(...)`` then
-    ``open(out, 'w')``). A file written is made by the code, never read from the package."""
+    """Paths the module opens to write (``open(path, 'w')``): the expression given, and the
+    values of the names so opened (``urdf = join(share, 'robot.urdf')``, ``open(urdf, 'w')``,
+    then ``arguments=[urdf]``: the launch file makes the file it passes on). A file written
+    is made by the code, never read from the package."""
     found: set[ast.expr] = set()
-    written_names: dict[str, int] = {}
+    written_names: set[str] = set()
     for call in nodes_of_class(tree, ast.Call):
         mode = next((k.value for k in call.keywords if k.arg == "mode"),  # type: ignore
                     call.args[1] if len(call.args) > 1 else None)
@@ -233,20 +234,12 @@ def written_paths(tree: ast.Module) -> set[ast.expr]:
                 _WRITING & set(mode.value):
             found.add(call.args[0])
             if isinstance(call.args[0], ast.Name):
-                written_names[call.args[0].id] = written_names.get(call.args[0].id, 0) + 1
+                written_names.add(call.args[0].id)
     outputs = _command_outputs(tree)
-    named = {value.id for value in outputs if isinstance(value, ast.Name)}
+    named = written_names | {value.id for value in outputs if isinstance(value, ast.Name)}
     found.update(outputs)
     found.update(node.value for node in nodes_of_class(tree, ast.Assign)
                  if simple_assignment(node) and node.targets[0].id in named)  # type: ignore
-    if written_names:
-        reads: dict[str, int] = {}
-        for name in nodes_of_class(tree, ast.Name):
-            if isinstance(name, ast.Name) and isinstance(name.ctx, ast.Load):
-                reads[name.id] = reads.get(name.id, 0) + 1
-        only = {name for name, count in written_names.items() if reads.get(name) == count}
-        found.update(node.value for node in nodes_of_class(tree, ast.Assign)
-                     if simple_assignment(node) and node.targets[0].id in only)  # type: ignore
     return found
 
 

@@ -12,7 +12,7 @@ from pkgtool.model.context import Context, interface_file
 from pkgtool.model.files import TextFile, list_files, read_text
 from pkgtool.model.launch import (LAUNCH_SUFFIXES, LAUNCH_YAML, LaunchFile, in_launch_folder,
                                   is_launch_file, is_launch_test, is_template, nested_packages,
-                                  other_yaml, parse_launch, python_folders,
+                                  named_like_launch_only, parse_launch, python_folders,
                                   runs_as_launch_file)
 from pkgtool.model.launch_reader import yaml_problem
 from pkgtool.model.manifest import Manifest, parse_manifest
@@ -143,7 +143,7 @@ def load_package(root: Path, context: Context | None = None) -> Package:
         if not ros1 and ((is_launch_file(relpath, folders, nested) or
                           _installed_as_launch_file(relpath, shared)) and
                          not is_launch_test(relpath, text_of(relpath)) and
-                         not other_yaml(relpath, text_of(relpath)) or
+                         not named_like_launch_only(relpath, text_of(relpath)) or
                          _launch_by_content(relpath, text_of, nested, shared, folders)):
             text = text_of(relpath)
             if text is not None:

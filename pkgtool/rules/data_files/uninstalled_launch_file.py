@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import installed_data
 from pkgtool.model.launch import (in_launch_folder, is_launch_file, is_launch_test,
-                                  nested_packages, other_yaml, python_folders,
+                                  nested_packages, named_like_launch_only, python_folders,
                                   runs_as_launch_file)
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
@@ -67,7 +67,7 @@ def uninstalled_launch_file(package: Package) -> Iterator[Hit]:
     folders, nested = python_folders(package.files), nested_packages(package.files)
     for path in sorted({*(f for f in package.files if is_launch_file(f, folders, nested) and
                           not is_launch_test(f, package.texts.get(f)) and
-                          not other_yaml(f, package.texts.get(f))),
+                          not named_like_launch_only(f, package.texts.get(f))),
                         *(launch.path for launch in package.launch_files),
                         *_launch_by_content(package, folders, nested)}):
         name = path.rsplit("/", 1)[-1]

@@ -9,7 +9,8 @@ from pkgtool.model.package import Package
 from pkgtool.knowledge.ros_names import looks_like_ros
 from pkgtool.knowledge.rosdep import ROS1_PACKAGES
 from pkgtool.knowledge.rosdistro import is_released_package, modules_of_key
-from pkgtool.model.modules import PythonModule
+from pkgtool.model.installed import installed_modules
+from pkgtool.model.modules import Import, PythonModule
 from pkgtool.rules.imports import (ANY, also_imported, declared, grouped, installed_code,
                                    needs, source_path_module)
 from pkgtool.rules.registry import rule
@@ -83,6 +84,12 @@ def unknown_import(package: Package) -> Iterator[Hit]:
                           f"Install `{need.top}`'s Python code (`ament_python_install_package("
                           f"{need.top})` in a CMake package), or import what it does install",
                           related)
+            elif (own := _renamed_own_module(package, need.imported)) is not None:
+                yield Hit(need.imported.span,
+                          f"`{need.top}` is no known package, but `{need.imported.module}` "
+                          f"is this package's `{own}` under another name (the package's "
+                          "former name?): the import raises ModuleNotFoundError"
+                          f"{also_imported(others)}", f"Import `{own}`", related)
             elif need.top in ROS1_PACKAGES:
                 yield Hit(need.imported.span, f"`{need.top}` is a ROS 1 module: ROS 2 does not "
                           f"have it{also_imported(others)}",
@@ -95,6 +102,22 @@ def unknown_import(package: Package) -> Iterator[Hit]:
                           f"Declare the key that installs `{need.top}`, e.g. "
                           f"`<exec_depend>{need.key}</exec_depend>` if `rosdep resolve "
                           f"{need.key}` knows it", related)
+
+
+def _renamed_own_module(package: Package, imported: Import) -> str | None:
+    """The module of this package that ``imported`` names under another top-level name
+    (``from p3_ekf_adr.motion_models import predict`` in ``ekf_estimator``, which installs
+    ``ekf_estimator.motion_models`` defining ``predict``), or None. Not a module that imports
+    from that other name itself: it wraps the other project's module of the same name
+    (``kompass.actions`` extends ``ros_sugar.actions``)."""
+    top, _, rest = imported.module.partition(".")
+    installed = installed_modules(package) or {}
+    modules = {module.path: module for module in package.modules}
+    wanted = set(imported.names) - {"*"}
+    return next((name for name in sorted(installed) if rest and name.partition(".")[2] == rest
+                 and (module := modules.get(installed[name])) is not None
+                 and wanted <= module.top_level_names
+                 and not any(i.top_level == top for i in module.imports)), None)
 
 
 _BINDING = lazy_pattern(r"(?:^|_)py(?:thon)?3?(?:_|$)|pybind")

@@ -28,7 +28,8 @@ def interface_package_not_in_group(package: Package) -> Iterator[Hit]:
     `rosidl_generate_interfaces` while its package.xml has no
     `<member_of_group>rosidl_interface_packages</member_of_group>`. Calls with
     `SKIP_INSTALL` or `SKIP_GROUP_MEMBERSHIP_CHECK` are left alone: rosidl checks nothing
-    then.
+    then; so are CMake files setting `<package>_MEMBER_OF_GROUPS` themselves (the value
+    rosidl's check reads).
 
     ## Why is this bad?
     `rosidl_generate_interfaces` checks the group when CMake configures the package (Humble
@@ -62,9 +63,10 @@ def interface_package_not_in_group(package: Package) -> Iterator[Hit]:
     if manifest is None or manifest.is_ros1 or manifest.format is None or \
             read_listing(package) is None:
         return
-    calls = [args for name, args in commands(cmake_text(package) or "")
-             if name == "rosidl_generate_interfaces"]
+    text = cmake_text(package) or ""
+    calls = [args for name, args in commands(text) if name == "rosidl_generate_interfaces"]
     if not calls or any(_SKIPPING & set(args) for args in calls) or \
+            "_MEMBER_OF_GROUPS" in text or \
             any(child.tag == "member_of_group" and child.text.split() == [GROUP]
                 for child in manifest.root.children):
         return
