@@ -88,6 +88,8 @@ def object_class(value: ast.expr, package: Package, tree: ast.Module, index: Ind
         right = object_class(value.right, package, tree, index, depth + 1) if left else None
         return _ARITHMETIC.get((left or "", type(value.op), right or ""))
     if isinstance(value, ast.Name):
+        if value.id in index.aliases:
+            return None  # bound by imports alone: a module or class, never an instance
         registered = done_callback_futures(tree, index).get(id(value))
         if registered:  # a done callback's parameter: the future, when it is rclpy's
             return _one({object_class(v, package, tree, index, depth + 1) for v in registered})
