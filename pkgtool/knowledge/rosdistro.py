@@ -125,7 +125,10 @@ def close_names(name: str, distro: str = DEFAULT_DISTRO, *, extra: frozenset[str
     """Released packages, rosdep keys and ``extra`` names spelled like ``name``: near misses
     that are also a typo away (one edit for names under 14 characters, else two; a swap of
     neighbours is one), so that a different package with a similar name is not offered."""
-    candidates = _candidates(distro) | extra
+    lengths = range(len(name) - 2, len(name) + 3)  # a typo changes the length by two at most
+    by_length = _candidates_by_length(distro)
+    candidates = [c for length in lengths for c in by_length.get(length, ())] + \
+        [c for c in extra if len(c) in lengths]
     similar = difflib.get_close_matches(name, candidates, n=max(limit, 20), cutoff=0.7)
     return [c for c in similar if is_typo(name, c)][:limit]
 
@@ -170,6 +173,15 @@ def typo_distance(first: str, second: str, budget: int) -> int:
 @cache
 def _candidates(distro: str) -> frozenset[str]:
     return released_packages(distro) | rosdep_keys()
+
+
+@cache
+def _candidates_by_length(distro: str) -> dict[int, tuple[str, ...]]:
+    """:func:`_candidates` by length, each group sorted (the order ties keep)."""
+    found: dict[int, list[str]] = {}
+    for name in sorted(_candidates(distro)):
+        found.setdefault(len(name), []).append(name)
+    return {length: tuple(names) for length, names in found.items()}
 
 
 _NUMBERS = lazy_pattern(r"[0-9]+")
