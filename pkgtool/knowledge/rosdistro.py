@@ -127,8 +127,8 @@ def close_names(name: str, distro: str = DEFAULT_DISTRO, *, extra: frozenset[str
     neighbours is one), so that a different package with a similar name is not offered."""
     lengths = range(len(name) - 2, len(name) + 3)  # a typo changes the length by two at most
     by_length = _candidates_by_length(distro)
-    candidates = [c for length in lengths for c in by_length.get(length, ())] + \
-        [c for c in extra if len(c) in lengths]
+    candidates = dict.fromkeys([*(c for length in lengths for c in by_length.get(length, ())),
+                                *sorted(c for c in extra if len(c) in lengths)])
     similar = difflib.get_close_matches(name, candidates, n=max(limit, 20), cutoff=0.7)
     return [c for c in similar if is_typo(name, c)][:limit]
 
