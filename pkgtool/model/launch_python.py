@@ -711,17 +711,30 @@ def _extends(longer: FileRef, prefix: FileRef, appended_to: bool) -> bool:
 
 
 def _checks_presence(node: ast.Try) -> bool:
-    """True for a ``try`` whose handlers take a missing package for good: one catching
-    PackageNotFoundError (or, around a lookup, anything broader) without raising again."""
+    """True for a ``try`` whose handlers expect a missing package: one catching
+    PackageNotFoundError by name (going on, or stopping with the author's own message when
+    it was the last of several alternatives), or around a lookup anything broader without
+    raising again."""
     looked_up = any(isinstance(n, ast.Call) and last_name(n.func) in _LOOKUPS
                     for statement in node.body for n in descendants(statement))
     going_on = [h for h in node.handlers if not handler_stops(h)]  # not re-raising
     return any(isinstance(n, (ast.Name, ast.Attribute)) and
-               (last_name(n) == "PackageNotFoundError" or
-                looked_up and last_name(n) in _BROADER_CATCHES)
-               for handler in going_on if handler.type
+               last_name(n) == "PackageNotFoundError"
+               for handler in node.handlers if handler.type and not _raises_again(handler)
                for n in descendants(handler.type)) or \
-        looked_up and any(handler.type is None for handler in going_on)
+        looked_up and (any(isinstance(n, (ast.Name, ast.Attribute)) and
+                           last_name(n) in _BROADER_CATCHES
+                           for handler in going_on if handler.type
+                           for n in descendants(handler.type)) or
+                       any(handler.type is None for handler in going_on))
+
+
+def _raises_again(handler: ast.ExceptHandler) -> bool:
+    """True for a handler raising what it caught again (a bare ``raise``, or ``raise e`` of
+    its ``as e``): it does not expect the failure."""
+    return any(isinstance(n, ast.Raise) and (n.exc is None or isinstance(n.exc, ast.Name) and
+                                             n.exc.id == handler.name)
+               for n in descendants(handler))
 
 
 def presence_flags(tree: ast.Module) -> frozenset[str]:
