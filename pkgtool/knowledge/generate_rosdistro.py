@@ -126,8 +126,9 @@ def distribution_names(definition: object) -> set[str]:
     for kind, name in _names(definition):
         if kind == "pip":
             found.add(name)
-        elif kind in ("ubuntu", "debian") and name.startswith("python3-"):
-            found.add(name[len("python3-"):])
+        elif kind in ("ubuntu", "debian", "openembedded") and \
+                name.startswith("python3-"):
+            found.add(name[len("python3-"):].split("@")[0])
         elif kind == "gentoo" and name.startswith("dev-python/"):
             found.add(name[len("dev-python/"):])
     return {re.sub(r"[-_.]+", "-", n.split("[")[0]).lower() for n in found}
@@ -144,17 +145,17 @@ def modules_of(distribution: str, stdlib: frozenset[str]) -> set[str]:
 
 def _rank(key: str, name: str, owners: set[str]) -> tuple[int, int, str]:
     """Preference among keys providing one module: apt python3 keys (the module's name, then
-    the name of a distribution providing it: ``gridfs`` is pymongo's), -pip keys, others,
-    py2."""
+    the name of a distribution providing it: ``gridfs`` is pymongo's), -pip keys, others
+    (named for Python 3 first), py2."""
     if key.startswith("python-"):
-        tier = 5
+        tier = 6
     elif key.endswith("-pip"):
         tier = 3
     elif key.startswith("python3-"):
         named = key.removeprefix("python3-")
         tier = 0 if named == name.replace("_", "-") else 1 if named in owners else 2
     else:
-        tier = 4
+        tier = 4 if key.endswith("3") else 5  # `ipython3` before `ipython` (Python 2's)
     return (tier, len(key), key)
 
 

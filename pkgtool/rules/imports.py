@@ -387,10 +387,34 @@ def run_as_a_script(package: Package, module: PythonModule,
             isinstance(s, ast.Expr) and isinstance(s.value, ast.Call) or
             isinstance(s, ast.If) and "__main__" in ast.unparse(s.test) for s in tree.body):
         return False
-    name = posixpath.basename(module.path)[:-3]
-    return not any(name in (i.module.rpartition(".")[2], *i.names)
-                   for other in package.modules if other.path != module.path
-                   for i in other.imports)
+    return not any(importers_of(package, module))
+
+
+def importers_of(package: Package, module: PythonModule) -> dict[str, list[Import]]:
+    """The imports of the package's other modules that load ``module``, by importer's path:
+    by its bare name from its own folder (a script's neighbour), relatively, or by its
+    dotted name (not another project's module of the same name: ``otherlib.utils``)."""
+    folder, name = posixpath.split(module.path[:-3])
+    dotted = {key for key, path in (installed_modules(package) or {}).items()
+              if path == module.path} or {module.path[:-3].replace("/", ".")}
+    parents = {key.rpartition(".")[0] for key in dotted}
+    found: dict[str, list[Import]] = {}
+    for other in package.modules:
+        if other.path == module.path:
+            continue
+        here = posixpath.dirname(other.path)
+        for imported in other.imports:
+            if imported.level:
+                base = posixpath.normpath(posixpath.join(here, *[".."] * (imported.level - 1)))
+                target = posixpath.normpath(posixpath.join(
+                    base, *imported.module.split("."))) if imported.module else base
+                hit = target == module.path[:-3] or target == folder and name in imported.names
+            else:
+                hit = imported.module == name and here == folder or imported.module in dotted \
+                    or imported.module in parents and name in imported.names
+            if hit:
+                found.setdefault(other.path, []).append(imported)
+    return found
 
 
 def runtime_code(package: Package) -> list[PythonModule]:

@@ -140,6 +140,7 @@ def test_every_pip_name_that_is_its_import_name_maps_to_its_keys() -> None:
     ("adafruit_mpu6050", "python3-adafruit-circuitpython-mpu6050-pip"), ("vlc", "python-vlc-pip"),
     ("Adafruit_PCA9685", "adafruit-pca9685-pip"),
     ("adafruit_ads1x15", "python3-adafruit-circuitpython-ads1x15-pip"),
+    ("IPython", "ipython3"), ("attrs", "python3-attrs"), ("Cython", "cython3"),
 ])
 def test_known_import_keys(module: str, key: str) -> None:
     assert rosdistro.keys_for_import(module)[0] == key

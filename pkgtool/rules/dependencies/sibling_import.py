@@ -12,7 +12,7 @@ from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import (ANY, console_script_files, declared, enclosing_package_import,
                                    installed_code, path_modules, python_package_of,
-                                   beside_the_scripts, run_as_a_script)
+                                   beside_the_scripts, importers_of, run_as_a_script)
 from pkgtool.rules.registry import rule
 from pkgtool.lazy_regex import lazy_pattern
 
@@ -43,7 +43,8 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     are guarded and never reported, and so are scripts kept in the package folder: a module
     that runs code at its top level (a call, an `if __name__ == '__main__':` block) that no
     console script runs and no module imports, run as `python3 path/to/it.py`, and the
-    helpers only such scripts of the same folder import, by their bare name.
+    helpers only such scripts (or their helpers) of the same folder import, by their bare
+    name.
 
     ## Why is this bad?
     `python3 my_pkg/node.py` puts the file's folder on `sys.path`, so the import works while
@@ -141,24 +142,22 @@ def _third_party_meant(package: Package, folder: str, imported: Import,
         package.has_file(f"{path}.py") or package.has_file(f"{path}/__init__.py"))
 
 
-def _helper_of_scripts(package: Package, module: PythonModule, scripts: frozenset[str]
-                       ) -> bool:
+def _helper_of_scripts(package: Package, module: PythonModule, scripts: frozenset[str],
+                       seen: frozenset[str] = frozenset()) -> bool:
     """True for a module that only scripts of its folder import, by its bare name (``import
-    detector``): it runs with them, their folder on ``sys.path`` (no console script runs it,
+    detector``), or helpers of theirs (``run_me.py`` imports ``utils``, which imports
+    ``policy``): it runs with them, their folder on ``sys.path`` (no console script runs it,
     nothing imports it through the package)."""
-    if module.path in scripts:
+    if module.path in scripts or module.path in seen:
         return False
     folder, name = posixpath.split(module.path[:-3])
-
-    def naming(other: PythonModule) -> list[str]:
-        return [i.module for i in other.imports
-                if name in (i.module.rpartition(".")[2], *i.names)]
-
-    importers = [other for other in package.modules
-                 if other.path != module.path and naming(other)]
+    importers = importers_of(package, module)
+    modules = {other.path: other for other in package.modules}
     return bool(importers) and all(
-        posixpath.dirname(other.path) == folder and set(naming(other)) == {name} and
-        run_as_a_script(package, other, scripts) for other in importers)
+        posixpath.dirname(path) == folder and {i.module for i in imports} == {name} and
+        (run_as_a_script(package, modules[path], scripts) or
+         _helper_of_scripts(package, modules[path], scripts, seen | {module.path}))
+        for path, imports in importers.items())
 
 
 def _imports_itself(module: PythonModule | None, name: str) -> bool:
