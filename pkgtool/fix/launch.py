@@ -20,7 +20,8 @@ from pkgtool.findings import Finding
 from pkgtool.fix.common import python_nodes, renames
 from pkgtool.fix.registry import fixer
 from pkgtool.model.package import Package
-from pkgtool.rules.launch.invalid_launch_action_argument import BY_KEYWORD, IN_A_LIST, ITEMS
+from pkgtool.rules.launch.invalid_launch_action_argument import (BY_KEYWORD, CMD_BY_KEYWORD,
+                                                                 IN_A_LIST, ITEMS)
 from pkgtool.rules.launch.invalid_node_argument import (FRONTEND_TAGS, KEYWORDS, REMOVED_KEYWORDS,
                                                         WRONG_ATTRIBUTES, removed_message)
 from pkgtool.rules.launch.unknown_substitution import SUBSTITUTION, ros2_substitution
@@ -161,8 +162,11 @@ def action_arguments(package: Package, findings: list[Finding]) -> Iterator[Fix]
     action in a list; ``DeclareLaunchArgument`` gets its default as ``default_value=``, a
     shortened keyword written out (``default=`` becomes ``default_value=``) and a number or
     bool default as text (``False`` becomes ``'false'``); ``PathJoinSubstitution``'s parts go
-    in one list; ``Command(['xacro', path])`` gets its space (``'xacro '``). Safe: each raised
-    TypeError, or ran a command that does not exist."""
+    in one list; ``Command(['xacro', path])`` gets its space (``'xacro '``);
+    ``ExecuteProcess``'s command written as one string becomes its list of words (when no
+    quotes, and no shell signs without ``shell=True``, make the split uncertain), and a list
+    given positionally is passed as ``cmd=``. Safe: each raised TypeError, or ran a command
+    that does not exist."""
     for doc, finding, nodes in python_nodes(package, findings):
         node, path = (nodes[0] if nodes else None), doc.source.path
         if finding.fix == ITEMS and isinstance(node, (ast.Dict, ast.DictComp)):
@@ -178,6 +182,13 @@ def action_arguments(package: Package, findings: list[Finding]) -> Iterator[Fix]
             fix = _rename(doc, _owners(doc)[id(node)], node, finding.fix[7:-2])
             if fix is not None:
                 yield fix
+        elif isinstance(node, (ast.Constant, ast.keyword)) and finding.fix and \
+                finding.fix.startswith("Write `cmd=[") and finding.fix != CMD_BY_KEYWORD:
+            yield Fix("Write the command as a list of words",
+                      (Edit(path, doc.start(node), doc.end(node), finding.fix[7:-1]),))
+        elif finding.fix == CMD_BY_KEYWORD and isinstance(node, (ast.List, ast.Tuple)):
+            yield Fix("Pass the command as `cmd=`",
+                      (Edit(path, doc.start(node), doc.start(node), "cmd="),))
         elif isinstance(node, ast.Constant) and finding.fix and \
                 finding.fix.startswith("Write `'") and finding.fix.endswith("'`"):
             what = "Add the space after the program" if isinstance(node.value, str) else \

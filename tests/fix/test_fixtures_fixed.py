@@ -15,6 +15,7 @@ CASES = [(code, case) for code in fixers() for case in sorted((FIXTURES / code /
 PARTLY = {("PYC080", "indexed_messages"),
           ("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprecated_ids"),
           ("LCH001", "node_of_another_workspace_package"),
+          ("LCH010", "command_as_one_formatted_string"),
           ("LCH001", "executable_of_a_cmake_workspace_package"),
           ("DEP011", "lookups_of_undeclared_packages"),
           ("LCH002", "undeclared_packages"), ("LCH002", "xacro_run_by_command"),

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+import shlex
 from difflib import get_close_matches
 from collections.abc import Iterator
 
@@ -21,6 +22,7 @@ ACTION_MODULES = ("launch.actions", "launch_ros.actions")
 BY_KEYWORD = "Write `default_value=...`"
 ITEMS = "Pass `{...}.items()`"
 IN_A_LIST = "Write `LaunchDescription([{}(...)])`"
+CMD_BY_KEYWORD = "Write `cmd=[...]`"
 """Fixes the fixer of LCH010 knows how to apply (besides renamed keywords and quoted text)."""
 
 
@@ -137,6 +139,46 @@ def _data_file(value: ast.expr, index: Index) -> str | None:
     return None
 
 
+SHELL_SIGNS = frozenset("|&;<>()$`*?~'\"\\")
+"""Characters whose meaning a shell gives and a list of words would lose or change."""
+
+
+def _execute_process(call: ast.Call, _: Index) -> Iterator[tuple[ast.AST, str, str]]:
+    """``ExecuteProcess(['ls'])`` (``cmd`` is keyword-only) and ``cmd='ros2 bag play x'``:
+    one string, whose characters launch takes as the command's words."""
+    shell = any(k.arg == "shell" and isinstance(k.value, ast.Constant) and k.value.value is True
+                for k in call.keywords)
+    if call.args and not any(isinstance(a, ast.Starred) for a in call.args):
+        first = call.args[0]
+        text = _text(first)
+        yield (first, "`ExecuteProcess()` takes its command by keyword only, as a list of "
+               "words: a positional argument raises TypeError", _words(text, shell)
+               if text is not None or isinstance(first, ast.JoinedStr) else CMD_BY_KEYWORD)
+    keyword = next((k for k in call.keywords if k.arg == "cmd"), None)
+    text = _text(keyword.value) if keyword else None
+    if keyword is None or text is None and not isinstance(keyword.value, ast.JoinedStr) or \
+            text is not None and len(text.strip()) < 2:
+        return
+    program = f"`{text.strip()[0]}`" if text else "after its first character"
+    yield (keyword, "`cmd=` of `ExecuteProcess()` is one string, not a list of words: launch "
+           f"takes each character as a word, so it runs a program named {program} and the "
+           "process fails to start", _words(text, shell))
+
+
+def _text(value: ast.expr) -> str | None:
+    return value.value if isinstance(value, ast.Constant) and isinstance(value.value, str) \
+        else None
+
+
+def _words(text: str | None, shell: bool) -> str:
+    """The fix of a command written as one string: its words, where splitting it is certain
+    (no quotes, and no shell signs unless a shell reads the words)."""
+    if text is None or {"'", '"', "\\"} & set(text) or not shell and SHELL_SIGNS & set(text):
+        return ("Pass the words as a list (`cmd=['ros2', 'bag', 'play', path]`), with "
+                "`shell=True` for a shell's pipes or `&&`")
+    return f"Write `cmd={shlex.split(text)!r}`"
+
+
 def _condition(call: ast.Call, action: str) -> Iterator[tuple[ast.AST, str, str]]:
     """A ``condition=`` that is a literal (``'true'``, ``True``), an f-string or a lambda, not
     one of launch's conditions."""
@@ -161,7 +203,8 @@ CHECKS = {"DeclareLaunchArgument": ("launch.actions", _declare),
           "IncludeLaunchDescription": ("launch.actions", _include),
           "LaunchDescription": ("launch", _description),
           "PathJoinSubstitution": ("launch.substitutions", _path_join),
-          "Command": ("launch.substitutions", _command)}
+          "Command": ("launch.substitutions", _command),
+          "ExecuteProcess": ("launch.actions", _execute_process)}
 """Class -> (the module it is in, or a package holding it; its check)."""
 
 
@@ -183,6 +226,8 @@ def invalid_launch_action_argument(package: Package) -> Iterator[Hit]:
     (`Command(['xacro', path])`, `Command([FindExecutable(name='xacro'), path])`), or a data
     file as its program (`Command([urdf_path])`, the path of a `.urdf`, `.xacro`, `.yaml`
     ... file, written or joined in the call or assigned once to the name);
+    and `ExecuteProcess` given its command positionally (`cmd` is keyword-only) or as one
+    string (`cmd='ros2 bag play run1'`, an f-string too) instead of a list of words;
     and any action of `launch.actions` or `launch_ros.actions` given a literal or f-string as
     `condition=` (`condition='true'`) instead of a condition (`IfCondition(...)`). Only
     literals and displays are judged: a dict held in a variable is not.
@@ -193,8 +238,9 @@ def invalid_launch_action_argument(package: Package) -> Iterator[Hit]:
     `default` argument); `IncludeLaunchDescription` iterates a dict's keys and fails to
     unpack each as a (name, value) pair when it runs ("too many values to unpack"); a
     `LaunchDescription` cannot iterate an action; `Command` runs `xacro/home/.../robot.urdf`,
-    which does not exist; and an action calls its condition's `evaluate()`, which a string
-    does not have.
+    which does not exist; `ExecuteProcess` iterates its command, so a string becomes one
+    word per character and the program it runs is its first letter; and an action calls its
+    condition's `evaluate()`, which a string does not have.
 
     ## Example
     ```python
