@@ -110,7 +110,7 @@ def _endpoints(package: Package, kinds: dict[str, str], names: tuple[str, str], 
             continue
         assert name_expr is not None
         yield Endpoint(
-            kinds[method], name, _interface(kind, index, module),
+            kinds[method], name, _interface(kind, index, module, package),
             _profile(qos, index) if qos is not None else None,
             Span(code.path, kind.lineno, kind.col_offset + 1),
             Span(code.path, (qos or kind).lineno, (qos or kind).col_offset + 1),
@@ -118,11 +118,17 @@ def _endpoints(package: Package, kinds: dict[str, str], names: tuple[str, str], 
             isinstance(name_expr, ast.Constant))
 
 
-def _interface(kind: ast.expr, index: Index, module: str) -> str | None:
-    """``pkg/Name`` of an interface class imported by name from ``pkg.<module>``, or None."""
+def _interface(kind: ast.expr, index: Index, module: str, package: Package) -> str | None:
+    """``pkg/Name`` of an interface class imported by name from ``pkg.<module>``, or None
+    (also for a module of the package's own Python code, ``my_pkg/msg.py`` re-exporting
+    another package's class: an ament_python package generates no interfaces)."""
     dotted = index.qualified(kind)
     parts = dotted.split(".") if dotted else []
-    return f"{parts[0]}/{parts[-1]}" if len(parts) >= 3 and parts[1] == module else None
+    if len(parts) < 3 or parts[1] != module or any(
+            package.has_file(f"{folder}{parts[0]}/{module}{end}")
+            for folder in ("", "src/") for end in (".py", "/__init__.py")):
+        return None
+    return f"{parts[0]}/{parts[-1]}"
 
 
 @record

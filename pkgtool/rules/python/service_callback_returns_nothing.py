@@ -102,8 +102,9 @@ def _wrong_returns(function: Function, arguments: list[str], result: str | None,
         return
     bound, reads = binding_counts(function), field_reads(tree, index, package)
     given = {name for name in arguments if bound[name] == 1}
+    replaced = _replaced_by_finally(function)
     for node in scope_walk(function.body):
-        if not isinstance(node, ast.Return):
+        if not isinstance(node, ast.Return) or id(node) in replaced:
             continue
         value, root = node.value, node.value
         while isinstance(root, ast.Attribute):
@@ -126,6 +127,27 @@ def _wrong_returns(function: Function, arguments: list[str], result: str | None,
         elif (found := certain_type(value, package, tree, index, texts=True)) in _NOT_RESULTS:
             kind = found.split(" ")[0]
             yield value, f"`{_shown(value)}`, {'an' if kind[0] in 'aeiou' else 'a'} {kind}"
+
+
+def _replaced_by_finally(function: Function) -> set[int]:
+    """Ids of the ``return`` statements of ``function`` inside a ``try`` (its body, handlers
+    or ``else``) whose ``finally`` certainly ends in a ``return`` or ``raise``: that one
+    replaces what they return."""
+    replaced: set[int] = set()
+    for node in scope_walk(function.body):
+        if isinstance(node, ast.Try) and node.finalbody and _leaves(node.finalbody):
+            replaced.update(id(inner) for part in (node.body, node.orelse, *(
+                handler.body for handler in node.handlers))
+                for inner in scope_walk(part) if isinstance(inner, ast.Return))
+    return replaced
+
+
+def _leaves(body: list[ast.stmt]) -> bool:
+    """True when running ``body`` certainly ends in a ``return`` or ``raise`` (its last
+    statement is one, or an ``if`` each of whose branches ends so)."""
+    last = body[-1]
+    return isinstance(last, (ast.Return, ast.Raise)) or isinstance(last, ast.If) and \
+        bool(last.orelse) and _leaves(last.body) and _leaves(last.orelse)
 
 
 def _rejection(returned: ast.AST) -> bool:
