@@ -100,6 +100,7 @@ class _Reader(ast.NodeVisitor):
         self.files: list[FileRef] = []
         self.extended: set[tuple[str, tuple[str, ...]]] = set()  # share paths text is added to
         self.continued: set[int] = set()  # parts of a joined list that later parts continue
+        self.refound: set[int] = set()  # FindPackageShare(x) calls whose .find(y) looks up y
         self.origins = import_origins(tree)
         self.optional = 0  # > 0 inside a block that runs only if some package is installed
         self.distro_branches = 0  # > 0 inside a branch of a test on the ROS distribution
@@ -303,9 +304,7 @@ class _Reader(ast.NodeVisitor):
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
             package = self.value(_keyword(node, "package") or first, depth + 1, top)
             return Share(package, "", name in SHARE_LOOKUPS) if isinstance(package, str) else None
-        if name == "find" and isinstance(node.func, ast.Attribute) and \
-                isinstance(node.func.value, ast.Call) and \
-                last_name(node.func.value.func) in ("FindPackageShare", "FindPackagePrefix"):
+        if name == "find" and _find_of_a_lookup(node):
             # FindPackageShare('pkg').find('pkg'): the folder, found when the line runs
             looked_up = self.value(first or node.func.value, depth + 1, top)
             if isinstance(looked_up, Share):
@@ -415,9 +414,11 @@ class _Reader(ast.NodeVisitor):
             if isinstance(package, str) and package:
                 self.packages.append(PackageRef(package, self._span(node), bool(self.optional),
                                                 bool(self.dead)))
-        if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS:
+        if _refinding(node):  # FindPackageShare(x).find(y): y is looked up, x never
+            self.refound.add(id(node.func.value))  # type: ignore[attr-defined]
+        if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS or _refinding(node):
             found = self.value(node)
-            if isinstance(found, Share):
+            if isinstance(found, Share) and id(node) not in self.refound:
                 self.packages.append(PackageRef(found.package, self._span(node),
                                                 bool(self.optional),
                                                 bool(self.dead) and name in SUBSTITUTIONS))
@@ -798,3 +799,16 @@ def _non_text(value: ast.expr | None) -> Iterator[ast.Constant]:
         inner = item.elts if isinstance(item, ast.Tuple) else [item]
         yield from (i for i in inner if isinstance(i, ast.Constant) and
                     i.value is not None and not isinstance(i.value, str))
+
+
+def _find_of_a_lookup(node: ast.Call) -> bool:
+    """True for ``FindPackageShare(...).find(...)`` (or ``FindPackagePrefix``'s)."""
+    return isinstance(node.func, ast.Attribute) and node.func.attr == "find" and \
+        isinstance(node.func.value, ast.Call) and \
+        last_name(node.func.value.func) in ("FindPackageShare", "FindPackagePrefix")
+
+
+def _refinding(node: ast.Call) -> bool:
+    """True for ``FindPackageShare(x).find(y)`` given its own package name ``y``: the
+    method looks up ``y`` alone (``x`` is never used)."""
+    return bool(node.args) and _find_of_a_lookup(node)

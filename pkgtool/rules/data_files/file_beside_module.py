@@ -18,27 +18,75 @@ from pkgtool.rules.imports import run_as_a_script
 from pkgtool.rules.registry import rule
 from pkgtool.rules.sys_path import file_relative_paths
 from pkgtool.rules.syntax_trees import Index, installed_trees
+from pkgtool.lazy_regex import lazy_pattern
 
 _CODE = (".py", ".pyc", ".so", ".pyd")
 """Suffixes of what setuptools installs with a Python package (or builds into it)."""
 _TOLERANT = frozenset({"QIcon", "QPixmap", "QImage", "QMovie", "setWindowIcon", "setPixmap"})
 """Qt calls that take a missing file for an empty image instead of raising."""
+_WRITES = frozenset({"savefig", "imwrite", "save", "savez", "savez_compressed", "savetxt",
+                     "to_csv", "to_json", "write_image", "write_html", "imsave"})
+"""Calls whose path argument is a file they write (a plot, an image, an array, a table)."""
+_WRITE_MODES = lazy_pattern(r"[wax]")
+_DEPTH = 3
+"""How many local functions deep a path is followed to where it is used."""
 
 
-def _only_shown(node: ast.AST, index: Index) -> bool:
-    """True when the path ``node`` builds goes only to :data:`_TOLERANT` Qt calls, itself or
-    through a name every read of which does (``icon = join(here, 'icon.png')``, then
-    ``QIcon(icon)``): a missing icon shows nothing, it does not fail."""
+def _never_read(node: ast.AST, index: Index, depth: int = 0) -> bool:
+    """True when the path ``node`` builds is never read as a file: it goes only to
+    :data:`_TOLERANT` Qt calls (a missing icon shows nothing), or to calls that write it
+    (``plt.savefig(path)``, ``open(path, 'w')``), itself or through a name every read of which
+    does, or a parameter of a function of the module every read of which does."""
     parent = index.parents.get(id(node))
     if isinstance(parent, ast.Call) and node in parent.args:
-        return last_name(parent.func) in _TOLERANT
+        called = last_name(parent.func)
+        return called in _TOLERANT or called in _WRITES or called == "open" and \
+            _written(parent) or depth < _DEPTH and _parameter_never_read(
+                parent, parent.args.index(node), index, depth)
     if not (isinstance(parent, ast.Assign) and len(parent.targets) == 1 and
             isinstance(parent.targets[0], ast.Name)):
         return False
-    name = parent.targets[0].id
-    reads = [n for n in nodes_of_class(index.module_of(node), ast.Name)
+    return _reads_never_read(parent.targets[0].id, index.module_of(node), index, depth)
+
+
+def _written(call: ast.Call) -> bool:
+    """True for ``open(path, 'w')`` (any mode that writes, by position or ``mode=``)."""
+    mode = call.args[1] if len(call.args) > 1 else next(
+        (k.value for k in call.keywords if k.arg == "mode"), None)
+    return isinstance(mode, ast.Constant) and isinstance(mode.value, str) and \
+        bool(_WRITE_MODES.search(mode.value))
+
+
+def _parameter_never_read(call: ast.Call, position: int, index: Index, depth: int) -> bool:
+    """True when ``call`` calls a function the module defines once, whose parameter at
+    ``position`` is only ever used as a path that is never read."""
+    if not isinstance(call.func, ast.Name):
+        return False
+    defined = [f for f in index.functions if f.name == call.func.id]
+    if len(defined) != 1 or defined[0].args.vararg is not None:
+        return False
+    function = defined[0]
+    parameters = [*function.args.posonlyargs, *function.args.args]
+    return position < len(parameters) and _reads_never_read(
+        parameters[position].arg, function, index, depth + 1)
+
+
+def _reads_never_read(name: str, scope: ast.AST, index: Index, depth: int) -> bool:
+    reads = [n for n in nodes_of_class(scope, ast.Name)
              if isinstance(n, ast.Name) and n.id == name and isinstance(n.ctx, ast.Load)]
-    return bool(reads) and all(_only_shown(read, index) for read in reads)
+    return bool(reads) and all(_never_read(read, index, depth) for read in reads)
+
+
+def _in_main_block(node: ast.AST, index: Index) -> bool:
+    """True for a node inside a module-level ``if __name__ == '__main__':`` block: it runs
+    only when the file runs as a script, never when a console script imports its module."""
+    parent = index.parents.get(id(node))
+    while parent is not None:
+        if isinstance(parent, ast.If) and "__main__" in ast.unparse(parent.test) and \
+                isinstance(index.parents.get(id(parent)), ast.Module):
+            return True
+        parent = index.parents.get(id(parent))
+    return False
 
 
 @rule("DAT015", "file-beside-module-not-installed", Severity.ERROR,
@@ -59,9 +107,11 @@ def file_beside_module(package: Package) -> Iterator[Hit]:
     alone, as are packages whose setup.py installs into `site-packages` by other means, scripts
     kept in the package folder (code at their top level that no console script runs, no
     module imports and data_files does not copy: run as `python3 path/to/it.py` from the
-    sources), and
-    paths only shown as images by Qt (`QIcon(path)`, `QPixmap(path)`: a missing file makes
-    an empty image, no error).
+    sources), and reads in a module's `if __name__ == '__main__':` block (it runs only
+    when the file runs as a script, from the sources, unless data_files copies it), paths
+    only shown as images by Qt (`QIcon(path)`, `QPixmap(path)`: a missing file makes an
+    empty image, no error) and paths only written (`plt.savefig(path)`, `open(path, 'w')`,
+    `cv2.imwrite(path, image)`, also through a function of the module taking the path).
 
     ## Why is this bad?
     `colcon build --symlink-install` runs the sources in place, so the file is found; a plain
@@ -95,7 +145,8 @@ def file_beside_module(package: Package) -> Iterator[Hit]:
         seen: set[str] = set()
         for node, path in file_relative_paths(tree, module.path):
             if path in seen or path not in files or path.endswith(_CODE) or \
-                    _only_shown(node, index):
+                    _never_read(node, index) or \
+                    module.path not in copied and _in_main_block(node, index):
                 continue
             seen.add(path)
             inside = any(path.startswith(f"{folder}/") for folder in folders if folder)
