@@ -52,6 +52,8 @@ _MADE_BY = {
     (GOAL_HANDLE, "get_result_async"): FUTURE, (GOAL_HANDLE, "cancel_goal_async"): FUTURE,
 }
 """(class, method) -> the class of what the method returns (Humble to Rolling)."""
+_MAKERS = frozenset(method for _, method in _MADE_BY)
+"""The methods whose result may have a class: the receiver of any other is not asked for."""
 _CONSTRUCTED = {NODE: NODE, "rclpy.create_node": NODE, TIME: TIME, DURATION: DURATION,
                 "rclpy.time.Duration": DURATION, "rclpy.clock.Clock": CLOCK, CLOCK: CLOCK,
                 FUTURE: FUTURE, PARAMETER: PARAMETER,
@@ -75,7 +77,7 @@ def object_class(value: ast.expr, package: Package, tree: ast.Module, index: Ind
         return None
     if isinstance(value, ast.Call):
         func = value.func
-        if isinstance(func, ast.Attribute):
+        if isinstance(func, ast.Attribute) and func.attr in _MAKERS:
             receiver = object_class(func.value, package, tree, index, depth + 1)
             made = _MADE_BY.get((receiver or "", func.attr))
             own = receiver == NODE and index.defines_function(func.attr)  # the class's method
