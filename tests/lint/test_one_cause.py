@@ -56,3 +56,16 @@ def test_without_the_misspelling_rule_the_undeclared_names_stand_alone() -> None
     found = _lint(MISSPELLED, ignore=("MAN021",))
     assert sorted((f.code, f.span.line) for f in found) == [
         ("DEP001", 2), ("DEP001", 4), ("DEP003", 2), ("LCH002", 10)]
+
+
+def test_a_pip_name_for_a_rosdep_key_holds_the_import_it_leaves_undeclared(
+        tmp_path: Path) -> None:
+    root = tmp_path / "demo"
+    shutil.copytree(MISSPELLED, root)
+    (root / "demo" / "machine.py").write_text("import transitions\n\nprint(transitions)\n")
+    manifest = root / "package.xml"
+    manifest.write_text(manifest.read_text().replace(
+        "</package>", "  <exec_depend>transitions</exec_depend>\n</package>"))
+    found = [f for f in _lint(root) if "transitions" in f.message]
+    assert [(f.code, f.span.path) for f in found] == [("MAN018", "package.xml")]
+    assert "`demo/machine.py:1` (DEP001)" in found[0].message
