@@ -133,6 +133,11 @@ only keys that resolve for the target (LCH003). A dropped comparison holding a c
 needs the `if` its author meant. An executable a launch file loops over (LCH001) is written in
 a list the fixer does not edit."""
 
+FOLDED = {("DEP001", "pip_name_instead_of_key")}
+"""Cases whose findings fold into the finding of their cause when every rule runs: the pip name
+declared instead of the key (MAN018) holds the import it leaves undeclared; its fix clears
+both."""
+
 REVEALED = {("PYC013", "called_callbacks"): {"PYC026"},
             ("LCH005", "parameters_not_a_list"): {"DAT012"},
             ("PYC032", "joined_without_separator"): {"DAT012"},
@@ -156,7 +161,7 @@ def test_fix_clears_the_rule_and_adds_nothing(tmp_path: Path, code: str, case: P
     before = _keys(package, code)
     after = _keys(package, code, fix=True, unsafe_fixes=True)
     mine = [key for key in after if key[0] == code]
-    if (code, case.name) not in MANUAL:
+    if (code, case.name) not in MANUAL | FOLDED:
         assert len(mine) < len([key for key in before if key[0] == code])
         assert not mine or (code, case.name) in PARTLY, mine
     added = {key for key in set(after) - set(before)

@@ -90,7 +90,7 @@ def numpy_only_test_depend(root: Path) -> None:
          "  <test_depend>python3-pytest</test_depend>\n")
 
 
-@case("DEP001", TALKER, "import numpy as np")
+@case("MAN018", TALKER, "import numpy as np")  # the pip name holds the import's DEP001
 def numpy_declared_under_pip_name(root: Path) -> None:
     _import(root, TALKER, "import numpy as np", "self.history = np.zeros(10)")
     edit(root, XML, "  <exec_depend>launch</exec_depend>\n",
