@@ -69,3 +69,16 @@ def test_a_pip_name_for_a_rosdep_key_holds_the_import_it_leaves_undeclared(
     found = [f for f in _lint(root) if "transitions" in f.message]
     assert [(f.code, f.span.path) for f in found] == [("MAN018", "package.xml")]
     assert "`demo/machine.py:1` (DEP001)" in found[0].message
+
+
+def test_a_run_dependency_inside_export_holds_the_import_it_leaves_undeclared(
+        tmp_path: Path) -> None:
+    root = tmp_path / "demo"
+    shutil.copytree(MISSPELLED, root)
+    (root / "demo" / "filters.py").write_text("import numpy\n\nprint(numpy)\n")
+    manifest = root / "package.xml"
+    manifest.write_text(manifest.read_text().replace(
+        "<export>", "<export>\n    <exec_depend>python3-numpy</exec_depend>"))
+    found = [f for f in _lint(root) if "numpy" in f.message]
+    assert [(f.code, f.span.path) for f in found] == [("MAN024", "package.xml")]
+    assert "`demo/filters.py:1` (DEP001)" in found[0].message
