@@ -179,7 +179,7 @@ def pip_name_as_test_depend(root: Path) -> None:
          "<test_depend>pytest</test_depend>")
 
 
-@case("DEP001", "base_pkg/talker.py", "from std_msgs.msg import String")
+@case("MAN024", "base_pkg/talker.py", "from std_msgs.msg import String")  # holds the DEP001
 def dependency_inside_export(root: Path) -> None:
     edit(root, XML, "  <depend>std_msgs</depend>\n", "")
     edit(root, XML, "  <export>\n", "  <export>\n    <depend>std_msgs</depend>\n")
