@@ -54,9 +54,25 @@ def missing_cmake_install_source(package: Package) -> Iterator[Hit]:
                 source in tolerated or ignored(source, package.ignores) or \
                 under(source, package.unfetched):
             continue
-        found = re.search(rf"(?<![\w.-]){re.escape(source)}(?![\w./-])", text)
+        found = _place(source, text)
         if found is None:
             continue  # written in an included file, or built from parts: not placed
-        yield Hit(Span.of_offset("CMakeLists.txt", text, found.start()),
+        yield Hit(Span.of_offset("CMakeLists.txt", text, found),
                   f"`install()` names `{source}`, which the package does not have: "
                   "`colcon build` fails at the install step")
+
+
+_INSTALL = re.compile(r"\binstall\s*\(", re.IGNORECASE)
+
+
+def _place(source: str, text: str) -> int | None:
+    """The offset of ``source`` in CMakeLists.txt: where an ``install()`` call names it (not
+    an earlier mention, ``add_service_files(FILES x.srv)``), else its first mention."""
+    mentions = [m.start() for m in re.finditer(
+        rf"(?<![\w.-]){re.escape(source)}(?![\w./-])", text)]
+    for call in _INSTALL.finditer(text):
+        end = text.find(")", call.end())
+        inside = [at for at in mentions if call.end() <= at < (end if end >= 0 else len(text))]
+        if inside:
+            return inside[0]
+    return mentions[0] if mentions else None

@@ -24,9 +24,11 @@ def unexpected_content(package: Package) -> Iterator[Hit]:
     Tags of another format are MAN006. ``<description>`` and ``<export>`` may contain anything.
 
     ## Why is this bad?
-    The schema rejects all of these and catkin_pkg refuses unknown tags and nested elements, so
-    colcon does not see a ROS package. A misspelt dependency tag is silently not a dependency
-    for any tool that does validate.
+    The schema rejects all of these (`ament_xmllint`, run by `colcon test` where
+    `ament_lint_common` is a test dependency, fails), and catkin_pkg refuses unknown tags and
+    nested elements, so colcon does not see a ROS package; stray text fails the schema check
+    alone. A misspelt dependency tag is silently not a dependency for any tool that does not
+    validate.
 
     ## Example
     ```xml
