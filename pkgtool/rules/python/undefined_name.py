@@ -213,12 +213,20 @@ def _loads(tree: ast.Module) -> dict[tuple[int, int], ast.Name]:
 
 def _stored_after(loop: ast.AST, read: ast.Name) -> bool:
     """True when the body of ``loop`` (not a function or class in it) assigns the name
-    ``read`` reads after it, in source order."""
+    ``read`` reads after it: later in source order, or as the target of the assignment
+    whose value holds the read (``acc = row if first else acc + row``: stored once the value
+    is worked out)."""
     found = list(getattr(loop, "body", ()))
     for current in found:
         if isinstance(current, ast.Name) and current.id == read.id and \
                 isinstance(current.ctx, ast.Store) and \
                 (current.lineno, current.col_offset) > (read.lineno, read.col_offset):
+            return True
+        if isinstance(current, (ast.Assign, ast.AnnAssign)) and current.value is not None and \
+                any(n is read for n in ast.walk(current.value)) and any(
+                    isinstance(n, ast.Name) and n.id == read.id
+                    for target in (current.targets if isinstance(current, ast.Assign)
+                                   else [current.target]) for n in ast.walk(target)):
             return True
         if not isinstance(current, _SCOPES):
             found.extend(ast.iter_child_nodes(current))
