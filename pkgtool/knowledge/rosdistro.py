@@ -16,7 +16,8 @@ from pkgtool.lazy_regex import lazy_pattern
 
 __all__ = ["DEFAULT_DISTRO", "DISTROS", "PYTHON_VERSIONS", "alternative_key", "close_names",
            "is_known_dependency", "is_released_package", "is_rosdep_key", "key_resolves",
-           "keys_for_import", "modules_of_key", "released_packages", "rosdep_keys",
+           "key_of_ubuntu_package", "keys_for_import", "modules_of_key", "released_packages",
+           "rosdep_keys",
            "source_commit", "stdlib_modules", "any_stdlib_module", "stdlib_versions"]
 
 PYTHON_VERSIONS = {"humble": "3.10", "jazzy": "3.12", "kilted": "3.12", "rolling": "3.12"}
@@ -53,6 +54,19 @@ def rosdep_keys() -> frozenset[str]:
 def is_rosdep_key(name: str) -> bool:
     """True when ``name`` is a key of rosdep's base.yaml or python.yaml."""
     return name in _flags("rosdep_keys")
+
+
+def key_of_ubuntu_package(name: str) -> str | None:
+    """The rosdep key that installs the Ubuntu package ``name`` (no key itself): the one key
+    naming it (``libyaml-cpp-dev``: ``yaml-cpp``), or the key it is with ``-dev`` added
+    (``libpcap-dev``: ``libpcap``, whose Ubuntu package the alias stands for); else None."""
+    if is_rosdep_key(name):
+        return None
+    known = read("ubuntu_packages").values.get(name)
+    if known:
+        return known
+    bare = name.removesuffix("-dev")
+    return bare if bare != name and is_rosdep_key(bare) else None
 
 
 def key_resolves(key: str, distro: str = DEFAULT_DISTRO) -> bool:

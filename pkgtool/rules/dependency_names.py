@@ -81,15 +81,15 @@ def key_instead(name: str, distro: str, tag: str) -> str | None:
     """The rosdep key to write for a declared ``name`` that is no key but a pip or ROS 1 name
     (:func:`~pkgtool.knowledge.rosdep.suggested_key`) or, but in a ``<doc_depend>`` (rosdoc2
     mocks the modules it names: ``lark``), the import name of a module rosdep's data knows
-    (``dlib``: ``python3-dlib-pip``); None for a key, a released package or a name nothing
-    knows."""
+    (``dlib``: ``python3-dlib-pip``), or an Ubuntu package's name (``libyaml-cpp-dev``:
+    ``yaml-cpp``); None for a key, a released package or a name nothing knows."""
     known = suggested_key(name)
     if known is not None or tag == "doc_depend":
         return known
     if rosdistro.is_known_dependency(name, distro):
         return None
     keys = rosdistro.keys_for_import(name, distro)
-    return keys[0] if keys else None
+    return keys[0] if keys else rosdistro.key_of_ubuntu_package(name)
 
 
 def is_local(package: Package, name: str) -> bool:

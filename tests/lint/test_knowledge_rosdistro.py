@@ -207,3 +207,11 @@ def test_stdlib_table_agrees_with_the_running_interpreter() -> None:
     listed = {m for m in rosdistro.any_stdlib_module() if running in rosdistro.stdlib_versions(m)}
     public = {m for m in sys.stdlib_module_names if not m.startswith("_")}
     assert public - listed == set()
+
+
+def test_ubuntu_package_names_map_to_the_key_installing_them() -> None:
+    assert rosdistro.key_of_ubuntu_package("libyaml-cpp-dev") == "yaml-cpp"
+    assert rosdistro.key_of_ubuntu_package("libpcap-dev") == "libpcap"  # an alias of 0.8-dev
+    assert rosdistro.key_of_ubuntu_package("libpcap0.8-dev") == "libpcap"
+    assert rosdistro.key_of_ubuntu_package("libopencv-dev") is None  # a key itself
+    assert rosdistro.key_of_ubuntu_package("no-such-package-dev") is None
