@@ -279,8 +279,9 @@ def deadlocked_wait(package: Package) -> Iterator[Hit]:
             where = Span(path, call.lineno, call.col_offset + 1)
             yield Hit(where, f"`{ast.unparse(call.func)}({method_receiver(function)}, ...)` "
                              f"spins the node inside its own callback `{function.name}`: what "
-                             "it waits for is never delivered (it returns at its timeout, if "
-                             "any, with no result)", cause=spin_cause(where))
+                             "it waits for is never delivered (given a timeout it returns "
+                             "with nothing done; without one it blocks for good)",
+                  cause=spin_cause(where))
     if any(i.top_level in _THREADS for module, _, _ in trees for i in module.imports) or \
             any(_spin_handed_over(call) for _, _, i in trees for call in i.calls):
         return
