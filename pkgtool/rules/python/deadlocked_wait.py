@@ -281,7 +281,7 @@ def deadlocked_wait(package: Package) -> Iterator[Hit]:
                              f"spins the node inside its own callback `{function.name}`: what "
                              "it waits for is never delivered (given a timeout it returns "
                              "with nothing done; without one it blocks for good)",
-                  cause=spin_cause(where))
+                      cause=spin_cause(where))
     if any(i.top_level in _THREADS for module, _, _ in trees for i in module.imports) or \
             any(_spin_handed_over(call) for _, _, i in trees for call in i.calls):
         return
