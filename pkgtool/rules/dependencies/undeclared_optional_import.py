@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.python2_modules import PYTHON2_MODULES
 from pkgtool.knowledge.rosdep import ROS1_PACKAGES
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import ANY, all_python, declared, needs
@@ -29,7 +30,8 @@ def undeclared_optional_import(package: Package) -> Iterator[Hit]:
     two always runs), and so do imports under `if probe():`, where `probe` is a module function
     that tries an import and returns when it fails (`if in_notebook(): from
     IPython.display import display`). ROS 1 modules (`rospy`) guarded in a ROS 2 package
-    are its ROS 1 code path (`if ROS_VERSION == 1:`, `except ImportError:`): there is
+    are its ROS 1 code path (`if ROS_VERSION == 1:`, `except ImportError:`), and Python 2
+    standard modules (`import Queue` beside `import queue`) its Python 2 one: there is
     nothing to declare.
 
     ## Why is this bad?
@@ -54,8 +56,8 @@ def undeclared_optional_import(package: Package) -> Iterator[Hit]:
     for module in all_python(package) if package.manifest else ():
         required = {need.top for need in needs(package, module)}
         for need in needs(package, module, guarded=True):
-            if ros2 and need.top in ROS1_PACKAGES:
-                continue
+            if ros2 and need.top in ROS1_PACKAGES or need.top in PYTHON2_MODULES:
+                continue  # a fallback for ROS 1, or for Python 2
             if need.top not in required and not any(k in available for k in need.keys):
                 guess = " (a guess from the name)" if need.kind == "unknown" else ""
                 yield Hit(need.imported.span,

@@ -7,6 +7,7 @@ from collections.abc import Iterable, Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.knowledge.ros_names import looks_like_ros
+from pkgtool.knowledge.python2_modules import python3_name
 from pkgtool.knowledge.rosdep import ROS1_PACKAGES
 from pkgtool.knowledge.rosdistro import is_released_package, modules_of_key
 from pkgtool.model.installed import installed_modules
@@ -36,7 +37,7 @@ def unknown_import(package: Package) -> Iterator[Hit]:
     data maps to a key (the pip and Debian names in rosdistro's `python.yaml`), unless a key
     that looks like it (`python3-<name>`, `python3-<name>-pip` or the bare name) is
     declared. The suggested key is a guess from the module name. ROS 1 modules (`rospy`,
-    `tf`) are reported as such, and so is the name of a package of the workspace that
+    `tf`) and Python 2 standard modules (`Queue`, `urllib2`) are reported as such, and so is the name of a package of the workspace that
     installs no Python package (a CMake package without `ament_python_install_package`).
 
     ## Why is this bad?
@@ -90,6 +91,11 @@ def unknown_import(package: Package) -> Iterator[Hit]:
                           f"is this package's `{own}` under another name (the package's "
                           "former name?): the import raises ModuleNotFoundError"
                           f"{also_imported(others)}", f"Import `{own}`", related)
+            elif (python3 := python3_name(need.top)) is not None:
+                yield Hit(need.imported.span, f"`{need.top}` is a Python 2 standard module: "
+                          f"Python 3 has {python3} instead, and the import raises "
+                          f"ModuleNotFoundError{also_imported(others)}", f"Import {python3}",
+                          related)
             elif need.top in ROS1_PACKAGES:
                 yield Hit(need.imported.span, f"`{need.top}` is a ROS 1 module: ROS 2 does not "
                           f"have it{also_imported(others)}",
