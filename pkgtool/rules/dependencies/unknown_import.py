@@ -37,8 +37,9 @@ def unknown_import(package: Package) -> Iterator[Hit]:
     data maps to a key (the pip and Debian names in rosdistro's `python.yaml`), unless a key
     that looks like it (`python3-<name>`, `python3-<name>-pip` or the bare name) is
     declared. The suggested key is a guess from the module name. ROS 1 modules (`rospy`,
-    `tf`) and Python 2 standard modules (`Queue`, `urllib2`) are reported as such, and so is the name of a package of the workspace that
-    installs no Python package (a CMake package without `ament_python_install_package`).
+    `tf`) and Python 2 standard modules (`Queue`, `urllib2`) are reported as such, and so
+    is the name of a package of the workspace that installs no Python package (a CMake
+    package without `ament_python_install_package`).
 
     ## Why is this bad?
     An import that package.xml does not cover fails on a clean machine, but pip and rosdep
