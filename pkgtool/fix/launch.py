@@ -164,9 +164,9 @@ def action_arguments(package: Package, findings: list[Finding]) -> Iterator[Fix]
     bool default as text (``False`` becomes ``'false'``); ``PathJoinSubstitution``'s parts go
     in one list; ``Command(['xacro', path])`` gets its space (``'xacro '``);
     ``ExecuteProcess``'s command written as one string becomes its list of words (when no
-    quotes, and no shell signs without ``shell=True``, make the split uncertain), and a list
-    given positionally is passed as ``cmd=``. Safe: each raised TypeError, or ran a command
-    that does not exist."""
+    quotes, newlines or comments, and no shell signs without ``shell=True``, make the split
+    uncertain), and a command given as the one positional argument is passed as ``cmd=``.
+    Safe: each raised TypeError, or ran a command that does not exist."""
     for doc, finding, nodes in python_nodes(package, findings):
         node, path = (nodes[0] if nodes else None), doc.source.path
         if finding.fix == ITEMS and isinstance(node, (ast.Dict, ast.DictComp)):
@@ -186,7 +186,7 @@ def action_arguments(package: Package, findings: list[Finding]) -> Iterator[Fix]
                 finding.fix.startswith("Write `cmd=[") and finding.fix != CMD_BY_KEYWORD:
             yield Fix("Write the command as a list of words",
                       (Edit(path, doc.start(node), doc.end(node), finding.fix[7:-1]),))
-        elif finding.fix == CMD_BY_KEYWORD and isinstance(node, (ast.List, ast.Tuple)):
+        elif finding.fix == CMD_BY_KEYWORD and isinstance(node, ast.expr):
             yield Fix("Pass the command as `cmd=`",
                       (Edit(path, doc.start(node), doc.start(node), "cmd="),))
         elif isinstance(node, ast.Constant) and finding.fix and \

@@ -58,15 +58,26 @@ def is_rosdep_key(name: str) -> bool:
 
 def key_of_ubuntu_package(name: str) -> str | None:
     """The rosdep key that installs the Ubuntu package ``name`` (no key itself): the one key
-    naming it (``libyaml-cpp-dev``: ``yaml-cpp``), or the key it is with ``-dev`` added
-    (``libpcap-dev``: ``libpcap``, whose Ubuntu package the alias stands for); else None."""
+    naming it (``libyaml-cpp-dev``: ``yaml-cpp``), or the key it is with ``-dev`` added when
+    that key installs a development package of its name (``libpcap-dev``: ``libpcap``, which
+    installs ``libpcap0.8-dev``, the package the alias stands for); else None."""
     if is_rosdep_key(name):
         return None
     known = read("ubuntu_packages").values.get(name)
     if known:
         return known
     bare = name.removesuffix("-dev")
-    return bare if bare != name and is_rosdep_key(bare) else None
+    return bare if bare != name and any(
+        other.startswith(bare) and other.endswith("-dev")
+        for other in _ubuntu_packages_by_key().get(bare, ())) else None
+
+
+@cache
+def _ubuntu_packages_by_key() -> dict[str, tuple[str, ...]]:
+    found: dict[str, list[str]] = {}
+    for name, key in read("ubuntu_packages").values.items():
+        found.setdefault(key, []).append(name)
+    return {key: tuple(names) for key, names in found.items()}
 
 
 def key_resolves(key: str, distro: str = DEFAULT_DISTRO) -> bool:

@@ -215,3 +215,8 @@ def test_ubuntu_package_names_map_to_the_key_installing_them() -> None:
     assert rosdistro.key_of_ubuntu_package("libpcap0.8-dev") == "libpcap"
     assert rosdistro.key_of_ubuntu_package("libopencv-dev") is None  # a key itself
     assert rosdistro.key_of_ubuntu_package("no-such-package-dev") is None
+
+
+def test_a_dev_name_maps_to_its_bare_key_only_when_that_key_installs_headers() -> None:
+    assert rosdistro.key_of_ubuntu_package("libopencv-highgui-dev") is None  # runtime only
+    assert rosdistro.key_of_ubuntu_package("libspatialite-dev") is None  # another library

@@ -28,8 +28,8 @@ _WRITES = frozenset({"savefig", "imwrite", "save", "savez", "savez_compressed", 
                      "to_csv", "to_json", "write_image", "write_html", "imsave"})
 """Calls whose path argument is a file they write (a plot, an image, an array, a table)."""
 _WRITE_MODES = lazy_pattern(r"[wax]")
-_DEPTH = 3
-"""How many local functions deep a path is followed to where it is used."""
+_DEPTH = 6
+"""How many names and local functions deep a path is followed to where it is used."""
 
 
 def _never_read(node: ast.AST, index: Index, depth: int = 0) -> bool:
@@ -38,15 +38,17 @@ def _never_read(node: ast.AST, index: Index, depth: int = 0) -> bool:
     (``plt.savefig(path)``, ``open(path, 'w')``), itself or through a name every read of which
     does, or a parameter of a function of the module every read of which does."""
     parent = index.parents.get(id(node))
+    if depth > _DEPTH:
+        return False  # followed far enough (names may pass the path round in a loop)
     if isinstance(parent, ast.Call) and node in parent.args:
         called = last_name(parent.func)
         return called in _TOLERANT or called in _WRITES or called == "open" and \
-            _written(parent) or depth < _DEPTH and _parameter_never_read(
-                parent, parent.args.index(node), index, depth)
+            _written(parent) or _parameter_never_read(
+                parent, parent.args.index(node), index, depth + 1)
     if not (isinstance(parent, ast.Assign) and len(parent.targets) == 1 and
             isinstance(parent.targets[0], ast.Name)):
         return False
-    return _reads_never_read(parent.targets[0].id, index.module_of(node), index, depth)
+    return _reads_never_read(parent.targets[0].id, index.module_of(node), index, depth + 1)
 
 
 def _written(call: ast.Call) -> bool:
@@ -60,15 +62,17 @@ def _written(call: ast.Call) -> bool:
 def _parameter_never_read(call: ast.Call, position: int, index: Index, depth: int) -> bool:
     """True when ``call`` calls a function the module defines once, whose parameter at
     ``position`` is only ever used as a path that is never read."""
-    if not isinstance(call.func, ast.Name):
+    if not isinstance(call.func, ast.Name) or \
+            any(isinstance(a, ast.Starred) for a in call.args[:position]):
         return False
-    defined = [f for f in index.functions if f.name == call.func.id]
+    defined = [f for f in index.functions if f.name == call.func.id and
+               index.enclosing_class(f) is None]
     if len(defined) != 1 or defined[0].args.vararg is not None:
         return False
     function = defined[0]
     parameters = [*function.args.posonlyargs, *function.args.args]
     return position < len(parameters) and _reads_never_read(
-        parameters[position].arg, function, index, depth + 1)
+        parameters[position].arg, function, index, depth)
 
 
 def _reads_never_read(name: str, scope: ast.AST, index: Index, depth: int) -> bool:
@@ -80,13 +84,23 @@ def _reads_never_read(name: str, scope: ast.AST, index: Index, depth: int) -> bo
 def _in_main_block(node: ast.AST, index: Index) -> bool:
     """True for a node inside a module-level ``if __name__ == '__main__':`` block: it runs
     only when the file runs as a script, never when a console script imports its module."""
-    parent = index.parents.get(id(node))
+    child, parent = node, index.parents.get(id(node))
     while parent is not None:
-        if isinstance(parent, ast.If) and "__main__" in ast.unparse(parent.test) and \
+        if isinstance(parent, ast.If) and _is_main_test(parent.test) and \
+                any(child is statement for statement in parent.body) and \
                 isinstance(index.parents.get(id(parent)), ast.Module):
             return True
-        parent = index.parents.get(id(parent))
+        child, parent = parent, index.parents.get(id(parent))
     return False
+
+
+def _is_main_test(test: ast.expr) -> bool:
+    """True for ``__name__ == '__main__'`` (either way round)."""
+    if not (isinstance(test, ast.Compare) and len(test.ops) == 1 and
+            isinstance(test.ops[0], ast.Eq)):
+        return False
+    return {ast.unparse(test.left), ast.unparse(test.comparators[0])} == \
+        {"__name__", "'__main__'"}  # unparse writes every string in single quotes
 
 
 @rule("DAT015", "file-beside-module-not-installed", Severity.ERROR,

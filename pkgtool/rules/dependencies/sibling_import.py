@@ -73,6 +73,7 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     skip = top_level | stdlib_modules(package.context.distro) | declared(package, ANY).keys() | \
         beside_the_scripts(package)
     scripts = console_script_files(package)
+    helpers: dict[str, frozenset[str]] = {}  # by folder, worked out when first needed
     for module in installed_code(package):
         folder = posixpath.dirname(module.path)
         parent = python_package_of(package, module)
@@ -95,8 +96,10 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
                                or _imports_itself(modules.get(f"{folder}/{top}.py"), top)):
                 continue
             if exempt is None:
+                if folder not in helpers:
+                    helpers[folder] = _script_helpers(package, folder, scripts)
                 exempt = run_as_a_script(package, module, scripts) or \
-                    _helper_of_scripts(package, module, scripts)
+                    module.path in helpers[folder]
             if exempt:
                 break
             if inside:
@@ -142,22 +145,35 @@ def _third_party_meant(package: Package, folder: str, imported: Import,
         package.has_file(f"{path}.py") or package.has_file(f"{path}/__init__.py"))
 
 
-def _helper_of_scripts(package: Package, module: PythonModule, scripts: frozenset[str],
-                       seen: frozenset[str] = frozenset()) -> bool:
-    """True for a module that only scripts of its folder import, by its bare name (``import
-    detector``), or helpers of theirs (``run_me.py`` imports ``utils``, which imports
-    ``policy``): it runs with them, their folder on ``sys.path`` (no console script runs it,
-    nothing imports it through the package)."""
-    if module.path in scripts or module.path in seen:
-        return False
-    folder, name = posixpath.split(module.path[:-3])
-    importers = importers_of(package, module)
-    modules = {other.path: other for other in package.modules}
-    return bool(importers) and all(
-        posixpath.dirname(path) == folder and {i.module for i in imports} == {name} and
-        (run_as_a_script(package, modules[path], scripts) or
-         _helper_of_scripts(package, modules[path], scripts, seen | {module.path}))
-        for path, imports in importers.items())
+def _script_helpers(package: Package, folder: str, scripts: frozenset[str]) -> frozenset[str]:
+    """The modules of ``folder`` that only scripts of the folder import, by their bare name
+    (``import detector``), or helpers of theirs (``run_me.py`` imports ``utils``, which
+    imports ``policy``, which may import ``utils`` back): they run with the scripts, their
+    folder on ``sys.path`` (no console script runs them, nothing imports them through the
+    package). The largest such set whose members a script reaches through such imports."""
+    here = [m for m in package.modules if posixpath.dirname(m.path) == folder]
+    runs = {m.path for m in here if run_as_a_script(package, m, scripts)}
+    links: dict[str, set[str]] = {}
+    for module in here:
+        if module.path in scripts or module.path in runs:
+            continue
+        name = posixpath.basename(module.path)[:-3]
+        importers = importers_of(package, module)
+        if importers and all(posixpath.dirname(path) == folder and
+                             {i.module for i in imports} == {name}
+                             for path, imports in importers.items()):
+            links[module.path] = set(importers)
+    helpers = set(links)
+    while dropped := {path for path in helpers if not links[path] <= runs | helpers}:
+        helpers -= dropped
+    reached: set[str] = set()
+    todo = [path for path in helpers if links[path] & runs]
+    while todo:
+        path = todo.pop()
+        if path not in reached:
+            reached.add(path)
+            todo.extend(other for other in helpers if path in links[other])
+    return frozenset(reached)
 
 
 def _imports_itself(module: PythonModule | None, name: str) -> bool:

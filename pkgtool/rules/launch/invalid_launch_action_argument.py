@@ -139,8 +139,11 @@ def _data_file(value: ast.expr, index: Index) -> str | None:
     return None
 
 
-SHELL_SIGNS = frozenset("|&;<>()$`*?~'\"\\")
+SHELL_SIGNS = frozenset("|&;<>()$`*?~")
 """Characters whose meaning a shell gives and a list of words would lose or change."""
+SPLIT_UNCERTAIN = frozenset("'\"\\\n#")
+"""Characters that make splitting a command into words uncertain, shell or not (quoting, a
+second line, a comment)."""
 
 
 def _execute_process(call: ast.Call, _: Index) -> Iterator[tuple[ast.AST, str, str]]:
@@ -148,13 +151,16 @@ def _execute_process(call: ast.Call, _: Index) -> Iterator[tuple[ast.AST, str, s
     one string, whose characters launch takes as the command's words."""
     shell = any(k.arg == "shell" and isinstance(k.value, ast.Constant) and k.value.value is True
                 for k in call.keywords)
+    keyword = next((k for k in call.keywords if k.arg == "cmd"), None)
     if call.args and not any(isinstance(a, ast.Starred) for a in call.args):
         first = call.args[0]
         text = _text(first)
+        alone = len(call.args) == 1 and keyword is None  # `cmd=` can be written before it
         yield (first, "`ExecuteProcess()` takes its command by keyword only, as a list of "
-               "words: a positional argument raises TypeError", _words(text, shell)
-               if text is not None or isinstance(first, ast.JoinedStr) else CMD_BY_KEYWORD)
-    keyword = next((k for k in call.keywords if k.arg == "cmd"), None)
+               "words: a positional argument raises TypeError",
+               (_words(text, shell) if text is not None or isinstance(first, ast.JoinedStr)
+                else CMD_BY_KEYWORD) if alone else "Pass the command as `cmd=[...]` and the "
+               "other arguments by keyword")
     text = _text(keyword.value) if keyword else None
     if keyword is None or text is None and not isinstance(keyword.value, ast.JoinedStr) or \
             text is not None and len(text.strip()) < 2:
@@ -173,7 +179,7 @@ def _text(value: ast.expr) -> str | None:
 def _words(text: str | None, shell: bool) -> str:
     """The fix of a command written as one string: its words, where splitting it is certain
     (no quotes, and no shell signs unless a shell reads the words)."""
-    if text is None or {"'", '"', "\\"} & set(text) or not shell and SHELL_SIGNS & set(text):
+    if text is None or SPLIT_UNCERTAIN & set(text) or not shell and SHELL_SIGNS & set(text):
         return ("Pass the words as a list (`cmd=['ros2', 'bag', 'play', path]`), with "
                 "`shell=True` for a shell's pipes or `&&`")
     return f"Write `cmd={shlex.split(text)!r}`"

@@ -3,14 +3,15 @@
 from __future__ import annotations
 
 import ast
+import posixpath
 from collections.abc import Iterator
+from dataclasses import dataclass, field
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
-from pkgtool.records import record
 from pkgtool.rules.syntax_trees import Index, index_of
 from pkgtool.rules.test_modules import test_trees
 
@@ -61,9 +62,14 @@ def parametrize_unknown_argument(package: Package) -> Iterator[Hit]:
     ```
     """
     trees = list(test_trees(package))
-    fixtures = _fixtures(trees)
+    shared = _Fixtures()
+    for path, tree in trees:
+        if posixpath.basename(path) == "conftest.py":
+            _collect(shared, tree, index_of(tree), None)
     for path, tree in trees:
         index = index_of(tree)
+        here = _Fixtures(dict(shared.requests), set(shared.autouse))
+        _collect(here, tree, index, None)  # module fixtures override the conftest's
         for function in index.functions:
             arguments = function.args
             if arguments.vararg or arguments.kwarg:
@@ -79,7 +85,7 @@ def parametrize_unknown_argument(package: Package) -> Iterator[Hit]:
                 for name in _names(decorator.args[0]) or ():
                     if name in taken:
                         continue
-                    reached = _closure(taken | _marked(function, index), fixtures) \
+                    reached = _closure(taken, function, tree, index, here) \
                         if reached is None else reached
                     if name not in reached:
                         meant = typo_of(name, taken)
@@ -91,62 +97,73 @@ def parametrize_unknown_argument(package: Package) -> Iterator[Hit]:
                                   f"Write `{meant}`" if meant else None)
 
 
-@record
+@dataclass
 class _Fixtures:
-    """The fixtures the package's test files define: the names each requests, by fixture
-    name, and those used by every test (``autouse=True``)."""
+    """Fixtures a test sees: the names each requests, by fixture name, and those used by
+    every test of the scope (``autouse=True``)."""
 
-    requests: dict[str, frozenset[str]]
-    autouse: frozenset[str]
-
-
-def _fixtures(trees: list[tuple[str, ast.Module]]) -> _Fixtures:
-    requests: dict[str, set[str]] = {}
-    autouse: set[str] = set()
-    for _, tree in trees:
-        index = index_of(tree)
-        for function in index.functions:
-            for decorator in function.decorator_list:
-                called = decorator.func if isinstance(decorator, ast.Call) else decorator
-                if index.qualified(called) not in ("pytest.fixture", "pytest.yield_fixture"):
-                    continue
-                keywords = decorator.keywords if isinstance(decorator, ast.Call) else []
-                renamed = next((k.value.value for k in keywords if k.arg == "name" and
-                                isinstance(k.value, ast.Constant)), None)
-                name = renamed if isinstance(renamed, str) else function.name
-                requests.setdefault(name, set()).update(
-                    a.arg for a in (*function.args.posonlyargs, *function.args.args,
-                                    *function.args.kwonlyargs))
-                requests[name].update(_used_fixtures(function, index))
-                if any(k.arg == "autouse" and isinstance(k.value, ast.Constant) and
-                       k.value.value is True for k in keywords):
-                    autouse.add(name)
-    return _Fixtures({k: frozenset(v) for k, v in requests.items()}, frozenset(autouse))
+    requests: dict[str, set[str]] = field(default_factory=dict)
+    autouse: set[str] = field(default_factory=set)
 
 
-def _used_fixtures(node: ast.FunctionDef | ast.AsyncFunctionDef | ast.ClassDef,
-                   index: Index) -> set[str]:
-    """The names ``@pytest.mark.usefixtures('a', 'b')`` gives ``node``."""
-    return {argument.value for decorator in node.decorator_list
-            if isinstance(decorator, ast.Call) and
-            index.qualified(decorator.func) == "pytest.mark.usefixtures"
-            for argument in decorator.args
+def _collect(into: _Fixtures, tree: ast.Module, index: Index, cls: ast.ClassDef | None) -> None:
+    """Add the fixtures defined directly in ``cls`` (or at the top of ``tree``: ``None``) to
+    ``into``, each replacing one of its name."""
+    body = cls.body if cls is not None else tree.body
+    for function in body:
+        if not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            continue
+        for decorator in function.decorator_list:
+            called = decorator.func if isinstance(decorator, ast.Call) else decorator
+            if index.qualified(called) not in ("pytest.fixture", "pytest.yield_fixture"):
+                continue
+            keywords = decorator.keywords if isinstance(decorator, ast.Call) else []
+            renamed = next((k.value.value for k in keywords if k.arg == "name" and
+                            isinstance(k.value, ast.Constant)), None)
+            name = renamed if isinstance(renamed, str) else function.name
+            into.requests[name] = {a.arg for a in (*function.args.posonlyargs,
+                                                   *function.args.args,
+                                                   *function.args.kwonlyargs)} | \
+                _used_fixtures(function.decorator_list, index)
+            if any(k.arg == "autouse" and isinstance(k.value, ast.Constant) and
+                   k.value.value is True for k in keywords):
+                into.autouse.add(name)
+
+
+def _used_fixtures(marks: list[ast.expr], index: Index) -> set[str]:
+    """The names ``pytest.mark.usefixtures('a', 'b')`` marks among ``marks`` give."""
+    return {argument.value for mark in marks
+            if isinstance(mark, ast.Call) and
+            index.qualified(mark.func) == "pytest.mark.usefixtures"
+            for argument in mark.args
             if isinstance(argument, ast.Constant) and isinstance(argument.value, str)}
 
 
-def _marked(function: ast.FunctionDef | ast.AsyncFunctionDef, index: Index) -> set[str]:
-    """The fixtures ``usefixtures`` marks give the test and its class."""
-    cls = index.enclosing_class(function)
-    return _used_fixtures(function, index) | (_used_fixtures(cls, index) if cls else set())
+def _pytestmark(body: list[ast.stmt]) -> list[ast.expr]:
+    """The marks a ``pytestmark = ...`` assignment of ``body`` gives (one or a list)."""
+    marks: list[ast.expr] = []
+    for statement in body:
+        if isinstance(statement, ast.Assign) and any(
+                isinstance(t, ast.Name) and t.id == "pytestmark" for t in statement.targets):
+            value = statement.value
+            marks.extend(value.elts if isinstance(value, (ast.List, ast.Tuple)) else [value])
+    return marks
 
 
-def _closure(taken: set[str], fixtures: _Fixtures) -> set[str]:
+def _closure(taken: set[str], function: ast.FunctionDef | ast.AsyncFunctionDef,
+             tree: ast.Module, index: Index, fixtures: _Fixtures) -> set[str]:
     """Every name the test's fixture closure holds, which pytest lets ``parametrize`` set
     (overriding a fixture a requested fixture depends on): its parameters, the autouse
-    fixtures and those ``usefixtures`` names, and what each requested fixture requests in
-    turn."""
+    fixtures of its module and class, those its `usefixtures` marks (on it, its class, or a
+    `pytestmark`) name, and what each requested fixture requests in turn."""
+    cls = index.enclosing_class(function)
+    if cls is not None:
+        fixtures = _Fixtures(dict(fixtures.requests), set(fixtures.autouse))
+        _collect(fixtures, tree, index, cls)
+    marks = [*function.decorator_list, *_pytestmark(tree.body),
+             *((*cls.decorator_list, *_pytestmark(cls.body)) if cls is not None else ())]
     found: set[str] = set()
-    todo = [*taken, *fixtures.autouse]
+    todo = [*taken, *fixtures.autouse, *_used_fixtures(marks, index)]
     while todo:
         name = todo.pop()
         if name not in found:

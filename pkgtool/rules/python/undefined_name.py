@@ -214,8 +214,8 @@ def _loads(tree: ast.Module) -> dict[tuple[int, int], ast.Name]:
 def _stored_after(loop: ast.AST, read: ast.Name) -> bool:
     """True when the body of ``loop`` (not a function or class in it) assigns the name
     ``read`` reads after it: later in source order, or as the target of the assignment
-    whose value holds the read (``acc = row if first else acc + row``: stored once the value
-    is worked out)."""
+    whose value holds the read in a branch (``acc = row if first else acc + row``: stored
+    once the value is worked out, by a pass that skipped the read)."""
     found = list(getattr(loop, "body", ()))
     for current in found:
         if isinstance(current, ast.Name) and current.id == read.id and \
@@ -223,13 +223,24 @@ def _stored_after(loop: ast.AST, read: ast.Name) -> bool:
                 (current.lineno, current.col_offset) > (read.lineno, read.col_offset):
             return True
         if isinstance(current, (ast.Assign, ast.AnnAssign)) and current.value is not None and \
-                any(n is read for n in ast.walk(current.value)) and any(
+                _in_a_branch_of(current.value, read) and any(
                     isinstance(n, ast.Name) and n.id == read.id
                     for target in (current.targets if isinstance(current, ast.Assign)
                                    else [current.target]) for n in ast.walk(target)):
             return True
         if not isinstance(current, _SCOPES):
             found.extend(ast.iter_child_nodes(current))
+    return False
+
+
+def _in_a_branch_of(value: ast.expr, read: ast.Name) -> bool:
+    """True when ``read`` is in a part of ``value`` that may be skipped: a branch of a
+    conditional expression, or an operand of ``and``/``or`` after the first."""
+    for node in ast.walk(value):
+        parts = [node.body, node.orelse] if isinstance(node, ast.IfExp) else \
+            node.values[1:] if isinstance(node, ast.BoolOp) else []
+        if any(n is read for part in parts for n in ast.walk(part)):
+            return True
     return False
 
 
