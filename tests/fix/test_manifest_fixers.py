@@ -94,7 +94,7 @@ def test_sibling_module_is_imported_through_its_package(tmp_path: Path) -> None:
     body = ("import helpers as h  # aliased\n"
             "from helpers import (clamp)\n"
             "import helpers.x, rclpy\n"
-            "\nprint(h, clamp)\n")
+            "\n\ndef main():\n    print(h, clamp)\n")  # no code at the top: not a script
     (root / "pkg" / "node.py").write_text(body)
     after = _fixed_once(root, "DEP007", "pkg/node.py", allow_left=True)
     assert after == body.replace("import helpers as h", "from pkg import helpers as h").replace(
