@@ -403,18 +403,26 @@ def parameter_file_nodes(package: Package) -> dict[str, tuple[NodeRef, ...]]:
     return {path: tuple(nodes) for path, nodes in found.items()}
 
 
-@per_package
 def fully_seen_parameter_files(package: Package) -> dict[str, tuple[NodeRef, ...]]:
-    """:func:`parameter_file_nodes`, for files whose every user pkgtool sees.
+    """:func:`statically_used_parameter_files`, when those users are every user: empty when
+    a launch file gives a node parameters that are not read statically (a launch argument
+    may name any file)."""
+    if any(n.other_parameters for f in package.launch_files for n in f.nodes):
+        return {}
+    return statically_used_parameter_files(package)
 
-    Empty when a launch file does not parse or gives a node parameters that are not read
-    statically (a launch argument may name any file); a file whose name the package's
-    Python code other than setup.py and tests mentions (it may read it itself), or that a
-    launch file hands to a launch file it includes, is left out.
+
+@per_package
+def statically_used_parameter_files(package: Package) -> dict[str, tuple[NodeRef, ...]]:
+    """:func:`parameter_file_nodes`, for files whose users the launch files name.
+
+    Empty when a launch file does not parse; a file whose name the package's Python code
+    other than setup.py and tests mentions (it may read it itself), or that a launch file
+    hands to a launch file it includes, is left out. A node given a file by a path worked
+    out at run time may get any of them too: what the named users need still holds.
     """
     launches = package.launch_files
-    if any(f.problem for f in launches) or any(n.other_parameters for f in launches
-                                               for n in f.nodes):
+    if any(f.problem for f in launches):
         return {}
     skipped = {"setup.py", *(f.path for f in launches), *test_files(package)}  # setup.py
     # installs files and tests check them: neither hands the node its parameters
@@ -544,11 +552,15 @@ def _matches(key: str, name: str) -> bool:
     return fnmatchcase(name, key.rpartition("/")[2])
 
 
-def file_entries(package: Package) -> Iterator[FileEntry]:
-    """The node blocks of every fully seen parameter file whose nodes all have known names."""
+def file_entries(package: Package, *, unseen_users: bool = False) -> Iterator[FileEntry]:
+    """The node blocks of every fully seen parameter file whose nodes all have known names;
+    with ``unseen_users``, also of files a node may get by a path worked out at run time
+    (what the nodes the launch files name need of a file holds whoever else reads it)."""
     from pkgtool.model.launch_reader import yaml_problem
 
-    for path, nodes in sorted(fully_seen_parameter_files(package).items()):
+    files = statically_used_parameter_files(package) if unseen_users else \
+        fully_seen_parameter_files(package)
+    for path, nodes in sorted(files.items()):
         names = [node_name(package, n) for n in nodes]
         text = package.texts.get(path)
         documents = yaml_problem(path, text) if text is not None else None

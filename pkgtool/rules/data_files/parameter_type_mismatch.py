@@ -19,7 +19,9 @@ def parameter_type_mismatch(package: Package) -> Iterator[Hit]:
     """A parameter file or launch file gives a value of another type than the node declares.
 
     ## What it does
-    For the parameters DAT010 checks, compares the type rcl's YAML parser gives the value
+    For the parameters DAT010 checks (and also where a launch file gives some node a
+    parameter file chosen at run time, since the nodes the launch files name still get their
+    files), compares the type rcl's YAML parser gives the value
     (quoted: string; `true`/`yes`/`on`...: bool; an integer literal: integer; else a
     number: double; else string; a list: an array of its items' type) with the type of the
     literal default of `declare_parameter`. Declarations whose default is not a literal, that
@@ -55,7 +57,7 @@ def parameter_type_mismatch(package: Package) -> Iterator[Hit]:
         period: 1.0
     ```
     """
-    for entry in file_entries(package):
+    for entry in file_entries(package, unseen_users=True):
         classes = analysed_classes(package, entry.matched) or []
         for name, _, value in flat_parameters(entry.parameters):
             if mixed_list(value):
