@@ -176,3 +176,16 @@ def last_name(func: ast.expr) -> str:
     ``os.path.exists()``; ``""`` for another expression (``make()()``)."""
     return func.id if isinstance(func, ast.Name) else \
         func.attr if isinstance(func, ast.Attribute) else ""
+
+
+_WRITING = frozenset("wax")
+"""The letters of ``open()`` modes that make the file (write, append, exclusive create)."""
+
+
+def opens_to_write(call: ast.Call) -> bool:
+    """True when the mode ``call`` gives ``open()`` (second positional argument or
+    ``mode=``) is a literal that makes the file (``'w'``, ``'ab'``, ``'x'``)."""
+    mode = next((k.value for k in call.keywords if k.arg == "mode"),
+                call.args[1] if len(call.args) > 1 else None)
+    return isinstance(mode, ast.Constant) and isinstance(mode.value, str) and \
+        bool(_WRITING & set(mode.value))

@@ -4,7 +4,8 @@ from __future__ import annotations
 
 import ast
 
-from pkgtool.model.ast_nodes import child_nodes, descendants, last_name, nodes_of_class, subtree
+from pkgtool.model.ast_nodes import (child_nodes, descendants, last_name, nodes_of_class,
+                                     opens_to_write, subtree)
 
 
 def bindings(nodes: list[ast.AST], params: ast.arguments | None
@@ -215,10 +216,6 @@ def _on_self(target: ast.expr) -> bool:
         target.value.id == "self"
 
 
-_WRITING = frozenset("wax")
-"""The letters of ``open()`` modes that make the file (write, append, exclusive create)."""
-
-
 def written_paths(tree: ast.Module) -> set[ast.expr]:
     """Paths the module opens to write (``open(path, 'w')``): the expression given, and the
     values of the names so opened (``urdf = join(share, 'robot.urdf')``, ``open(urdf, 'w')``,
@@ -227,11 +224,8 @@ def written_paths(tree: ast.Module) -> set[ast.expr]:
     found: set[ast.expr] = set()
     written_names: set[str] = set()
     for call in nodes_of_class(tree, ast.Call):
-        mode = next((k.value for k in call.keywords if k.arg == "mode"),  # type: ignore
-                    call.args[1] if len(call.args) > 1 else None)
-        if isinstance(call.func, ast.Name) and call.func.id == "open" and call.args and \
-                isinstance(mode, ast.Constant) and isinstance(mode.value, str) and \
-                _WRITING & set(mode.value):
+        if isinstance(call, ast.Call) and isinstance(call.func, ast.Name) and \
+                call.func.id == "open" and call.args and opens_to_write(call):
             found.add(call.args[0])
             if isinstance(call.args[0], ast.Name):
                 written_names.add(call.args[0].id)

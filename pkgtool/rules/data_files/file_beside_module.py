@@ -8,7 +8,7 @@ import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import last_name, nodes_of_class
+from pkgtool.model.ast_nodes import last_name, nodes_of_class, opens_to_write
 from pkgtool.model.installed import installed_data, installed_modules, is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.model.setup_py import PACKAGE_DATA
@@ -18,7 +18,6 @@ from pkgtool.rules.imports import run_as_a_script
 from pkgtool.rules.registry import rule
 from pkgtool.rules.sys_path import file_relative_paths
 from pkgtool.rules.syntax_trees import Index, installed_trees
-from pkgtool.lazy_regex import lazy_pattern
 
 _CODE = (".py", ".pyc", ".so", ".pyd")
 """Suffixes of what setuptools installs with a Python package (or builds into it)."""
@@ -27,7 +26,6 @@ _TOLERANT = frozenset({"QIcon", "QPixmap", "QImage", "QMovie", "setWindowIcon", 
 _WRITES = frozenset({"savefig", "imwrite", "save", "savez", "savez_compressed", "savetxt",
                      "to_csv", "to_json", "write_image", "write_html", "imsave"})
 """Calls whose path argument is a file they write (a plot, an image, an array, a table)."""
-_WRITE_MODES = lazy_pattern(r"[wax]")
 _DEPTH = 6
 """How many names and local functions deep a path is followed to where it is used."""
 
@@ -43,20 +41,12 @@ def _never_read(node: ast.AST, index: Index, depth: int = 0) -> bool:
     if isinstance(parent, ast.Call) and node in parent.args:
         called = last_name(parent.func)
         return called in _TOLERANT or called in _WRITES or called == "open" and \
-            _written(parent) or _parameter_never_read(
+            opens_to_write(parent) or _parameter_never_read(
                 parent, parent.args.index(node), index, depth + 1)
     if not (isinstance(parent, ast.Assign) and len(parent.targets) == 1 and
             isinstance(parent.targets[0], ast.Name)):
         return False
     return _reads_never_read(parent.targets[0].id, index.module_of(node), index, depth + 1)
-
-
-def _written(call: ast.Call) -> bool:
-    """True for ``open(path, 'w')`` (any mode that writes, by position or ``mode=``)."""
-    mode = call.args[1] if len(call.args) > 1 else next(
-        (k.value for k in call.keywords if k.arg == "mode"), None)
-    return isinstance(mode, ast.Constant) and isinstance(mode.value, str) and \
-        bool(_WRITE_MODES.search(mode.value))
 
 
 def _parameter_never_read(call: ast.Call, position: int, index: Index, depth: int) -> bool:
