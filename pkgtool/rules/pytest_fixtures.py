@@ -11,7 +11,7 @@ from pkgtool.model.package import Package
 from pkgtool.rules.syntax_trees import Index, index_of, python_files
 from pkgtool.rules.test_modules import test_files
 
-_FIXTURE = frozenset({"pytest.fixture"})
+_FIXTURE = frozenset({"pytest.fixture", "pytest.yield_fixture"})
 BUILTIN_FIXTURES = frozenset({
     "cache", "capfd", "capfdbinary", "caplog", "capsys", "capsysbinary", "doctest_namespace",
     "monkeypatch", "pytestconfig", "pytester", "record_property", "record_testsuite_property",
@@ -21,13 +21,14 @@ BUILTIN_FIXTURES = frozenset({
 
 
 def is_fixture(function: ast.AST, index: Index) -> bool:
-    """True for a function decorated with ``pytest.fixture`` (with or without arguments)."""
-    return isinstance(function, ast.FunctionDef) and any(
+    """True for a function (``async`` too) decorated with ``pytest.fixture`` (with or without
+    arguments), or the older ``pytest.yield_fixture``."""
+    return isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)) and any(
         index.qualified(d.func if isinstance(d, ast.Call) else d) in _FIXTURE
         for d in function.decorator_list if isinstance(d, (ast.Name, ast.Attribute, ast.Call)))
 
 
-def _fixture_name(function: ast.FunctionDef) -> str:
+def fixture_name(function: ast.FunctionDef | ast.AsyncFunctionDef) -> str:
     """The name a fixture is asked for by: its ``name=``, else the function's."""
     for decorator in function.decorator_list:
         for keyword in decorator.keywords if isinstance(decorator, ast.Call) else ():
@@ -46,5 +47,6 @@ def package_fixtures(package: Package) -> frozenset[str]:
     for path, _, tree in python_files(package, ("fixture",)):
         if path in tests or posixpath.basename(path) == "conftest.py":
             index = index_of(tree)
-            found.update(_fixture_name(f) for f in tree.body if is_fixture(f, index))
+            found.update(fixture_name(f) for f in tree.body  # type: ignore[arg-type]
+                         if is_fixture(f, index))
     return frozenset(found)

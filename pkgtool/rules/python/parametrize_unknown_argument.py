@@ -11,8 +11,9 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import typo_of
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.rules.pytest_fixtures import fixture_name, is_fixture
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, index_of
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, index_of
 from pkgtool.rules.test_modules import test_trees
 
 
@@ -111,23 +112,17 @@ def _collect(into: _Fixtures, tree: ast.Module, index: Index, cls: ast.ClassDef 
     ``into``, each replacing one of its name."""
     body = cls.body if cls is not None else tree.body
     for function in body:
-        if not isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
+        if not isinstance(function, FUNCTIONS) or not is_fixture(function, index):
             continue
-        for decorator in function.decorator_list:
-            called = decorator.func if isinstance(decorator, ast.Call) else decorator
-            if index.qualified(called) not in ("pytest.fixture", "pytest.yield_fixture"):
-                continue
-            keywords = decorator.keywords if isinstance(decorator, ast.Call) else []
-            renamed = next((k.value.value for k in keywords if k.arg == "name" and
-                            isinstance(k.value, ast.Constant)), None)
-            name = renamed if isinstance(renamed, str) else function.name
-            into.requests[name] = {a.arg for a in (*function.args.posonlyargs,
-                                                   *function.args.args,
-                                                   *function.args.kwonlyargs)} | \
-                _used_fixtures(function.decorator_list, index)
-            if any(k.arg == "autouse" and isinstance(k.value, ast.Constant) and
-                   k.value.value is True for k in keywords):
-                into.autouse.add(name)
+        name = fixture_name(function)
+        arguments = function.args
+        into.requests[name] = {a.arg for a in (*arguments.posonlyargs, *arguments.args,
+                                               *arguments.kwonlyargs)} | \
+            _used_fixtures(function.decorator_list, index)
+        if any(k.arg == "autouse" and isinstance(k.value, ast.Constant) and
+               k.value.value is True for d in function.decorator_list
+               if isinstance(d, ast.Call) for k in d.keywords):
+            into.autouse.add(name)
 
 
 def _used_fixtures(marks: list[ast.expr], index: Index) -> set[str]:
