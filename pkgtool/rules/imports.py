@@ -382,12 +382,16 @@ def run_as_a_script(package: Package, module: PythonModule,
     run (:func:`console_script_files`, when the caller has them)."""
     if module.path in (console_script_files(package) if scripts is None else scripts):
         return False
+    return runs_code_at_its_top(package, module) and not importers_of(package, module)
+
+
+def runs_code_at_its_top(package: Package, module: PythonModule) -> bool:
+    """True when ``module`` runs code at its top level: a call, or an ``if __name__ ==
+    '__main__':`` block."""
     tree = parse_tree(module.path, package.texts.get(module.path, ""))
-    if not isinstance(tree, ast.Module) or not any(
-            isinstance(s, ast.Expr) and isinstance(s.value, ast.Call) or
-            isinstance(s, ast.If) and "__main__" in ast.unparse(s.test) for s in tree.body):
-        return False
-    return not any(importers_of(package, module))
+    return isinstance(tree, ast.Module) and any(
+        isinstance(s, ast.Expr) and isinstance(s.value, ast.Call) or
+        isinstance(s, ast.If) and "__main__" in ast.unparse(s.test) for s in tree.body)
 
 
 def importers_of(package: Package, module: PythonModule) -> dict[str, list[Import]]:

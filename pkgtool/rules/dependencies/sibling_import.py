@@ -12,7 +12,8 @@ from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import (ANY, console_script_files, declared, enclosing_package_import,
                                    installed_code, path_modules, python_package_of,
-                                   beside_the_scripts, importers_of, run_as_a_script)
+                                   beside_the_scripts, importers_of, run_as_a_script,
+                                   runs_code_at_its_top)
 from pkgtool.rules.registry import rule
 from pkgtool.lazy_regex import lazy_pattern
 
@@ -151,14 +152,17 @@ def _script_helpers(package: Package, folder: str, scripts: frozenset[str]) -> f
     imports ``policy``, which may import ``utils`` back): they run with the scripts, their
     folder on ``sys.path`` (no console script runs them, nothing imports them through the
     package). The largest such set whose members a script reaches through such imports."""
-    here = [m for m in package.modules if posixpath.dirname(m.path) == folder]
-    runs = {m.path for m in here if run_as_a_script(package, m, scripts)}
+    here = [m for m in package.modules if posixpath.dirname(m.path) == folder and
+            m.path not in scripts]
+    loaders = {m.path: importers_of(package, m) for m in here}
+    runs = {m.path for m in here
+            if not loaders[m.path] and runs_code_at_its_top(package, m)}  # run_as_a_script
     links: dict[str, set[str]] = {}
     for module in here:
-        if module.path in scripts or module.path in runs:
+        if module.path in runs:
             continue
         name = posixpath.basename(module.path)[:-3]
-        importers = importers_of(package, module)
+        importers = loaders[module.path]
         if importers and all(posixpath.dirname(path) == folder and
                              {i.module for i in imports} == {name}
                              for path, imports in importers.items()):
