@@ -59,6 +59,14 @@ def dependency_cause(key: str) -> str:
     return f"misspelled-dependency:{key}"
 
 
+def declaration_cause(tag: str, key: str) -> str:
+    """The cause a mistaken ``<tag>`` states when what it means to declare is ``key`` (a
+    misspelling, a pip name, a dependency kept inside ``<export>``): :func:`dependency_cause`
+    for a run dependency, whose absence the imports and launch files then show; none for
+    others (a ``<build_depend>`` leaves the imports without a run key anyway)."""
+    return dependency_cause(key) if tag in RUNTIME and key else ""
+
+
 @record
 class Need:
     """An import that a package.xml key must provide.

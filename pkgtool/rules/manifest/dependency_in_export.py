@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import RUNTIME, dependency_cause
+from pkgtool.rules.imports import declaration_cause
 from pkgtool.rules.manifest.common import snippet, tree
 from pkgtool.rules.manifest.schema import DEPENDS_1, DEPENDS_2, GROUP_TAGS, token
 from pkgtool.rules.registry import rule
@@ -64,4 +64,4 @@ def dependency_in_export(package: Package) -> Iterator[Hit]:
                     not (child.tag in _COVERED and ("depend", key) in declared):
                 yield Hit(child.span, f"`{snippet(child)}` is inside `<export>`: no build or "
                                       "install tool reads it there, so it declares nothing",
-                          cause=dependency_cause(key) if child.tag in RUNTIME and key else "")
+                          cause=declaration_cause(child.tag, key))

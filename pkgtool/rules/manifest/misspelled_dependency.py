@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import RUNTIME, dependency_cause
+from pkgtool.rules.imports import declaration_cause
 from pkgtool.rules.dependency_names import unknown_dependencies
 from pkgtool.rules.registry import rule
 
@@ -54,4 +54,4 @@ def misspelled_dependency(package: Package) -> Iterator[Hit]:
             yield Hit(unknown.dependency.span,
                       f"{unknown.describe(package.context.distro)}; did you mean "
                       f"`{unknown.close}`{whose}?", f"Write `<{tag}>{unknown.close}</{tag}>`",
-                      cause=dependency_cause(unknown.close) if tag in RUNTIME else "")
+                      cause=declaration_cause(tag, unknown.close))

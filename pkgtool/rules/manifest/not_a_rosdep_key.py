@@ -12,7 +12,7 @@ from pkgtool.model.condition import applies
 from pkgtool.model.package import Package
 from pkgtool.model.xml import XmlElement
 from pkgtool.rules.dependency_names import cmake_finds, key_instead, names_a_file
-from pkgtool.rules.imports import RUNTIME, dependency_cause
+from pkgtool.rules.imports import declaration_cause
 from pkgtool.rules.manifest.common import build_types, tree
 from pkgtool.rules.manifest.schema import DEPENDS_1, DEPENDS_2, token
 from pkgtool.rules.registry import rule
@@ -104,7 +104,7 @@ def _hit(element: XmlElement, ros2: bool, compiled: bool, distro: str) -> Hit | 
         what = f"not a rosdep key (the key is `{replacement}`)"
     return Hit(element.span, f"`{key}` is {what}",
                f"Write `<{tag}>{replacement}</{tag}>`",
-               cause=dependency_cause(replacement) if tag in RUNTIME else "")
+               cause=declaration_cause(tag, replacement))
 
 
 def _stray_characters(element: XmlElement, key: str) -> Hit:
