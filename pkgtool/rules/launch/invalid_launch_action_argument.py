@@ -178,7 +178,8 @@ def _text(value: ast.expr) -> str | None:
 
 def _words(text: str | None, shell: bool) -> str:
     """The fix of a command written as one string: its words, where splitting it is certain
-    (no quotes, and no shell signs unless a shell reads the words)."""
+    (none of :data:`SPLIT_UNCERTAIN`, and none of :data:`SHELL_SIGNS` unless a shell reads
+    the words)."""
     if text is None or SPLIT_UNCERTAIN & set(text) or not shell and SHELL_SIGNS & set(text):
         return ("Pass the words as a list (`cmd=['ros2', 'bag', 'play', path]`), with "
                 "`shell=True` for a shell's pipes or `&&`")
