@@ -201,9 +201,9 @@ def _fix_all(jobs: list[Job], workspace: Workspace, options: LintOptions, errors
     diffs: list[str] = []
     refused: list[str] = []
     for root, label, settings in jobs:
-        outcome = fix_package(root, label, partial(_model_and_findings, label=label,
-                                                   settings=settings, workspace=workspace,
-                                                   offers=False),
+        check = partial(_model_and_findings, root, label=label, settings=settings,
+                        workspace=workspace, offers=False)
+        outcome = fix_package(root, label, lambda folder, check=check: check(read_from=folder),
                               unsafe=options.unsafe_fixes, write=not options.diff)
         fixed.extend(f"{label}: {title}" for title in outcome.applied)
         refused.extend(f"{label}: not fixed: {why}" for why in outcome.refused)
@@ -214,17 +214,19 @@ def _fix_all(jobs: list[Job], workspace: Workspace, options: LintOptions, errors
 
 
 def _model_and_findings(root: Path, *, label: str, settings: Settings, workspace: Workspace,
-                        offers: bool = True, split: bool = False
+                        offers: bool = True, split: bool = False, read_from: Path | None = None
                         ) -> tuple[Package, list[Finding]]:
     """Read and check one package (exceptions propagate: ``_check`` reports them); with
     ``offers``, the findings ``--fix`` cannot repair are marked so (``--fix`` itself asks the
-    fixers anyway); with ``split`` (the run's only package), on two cores when it can."""
+    fixers anyway); with ``split`` (the run's only package), on two cores when it can; with
+    ``read_from``, the files of that copy of the package (``--diff``'s rounds), in the
+    workspace of ``root``."""
     from pkgtool.engine import check_package
     from pkgtool.model.package import load_package
     from pkgtool.model.python_visitor import forget_trees
 
-    package = load_package(root, context_for(root, workspace, settings.rosdistro,
-                                             settings.python))
+    package = load_package(read_from or root, context_for(root, workspace, settings.rosdistro,
+                                                          settings.python))
     try:
         found = _split_check(package, label, settings) if split else None
         if found is None:

@@ -41,6 +41,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.records import record
 from pkgtool.rules.optional_imports import optional_modules
+from pkgtool.rules.ros1_platform import is_ros1_package
 from pkgtool.rules.sys_path import outside_edits, sys_path_edits, vendored_edits
 from pkgtool.rules.test_modules import is_test_code, test_files
 from pkgtool.lazy_regex import lazy_pattern
@@ -600,7 +601,7 @@ def _needs(package: Package, module: PythonModule, guarded: bool | None) -> Iter
     stdlib = _stdlib(package.context.distro)
     names = declared(package, ANY)
     optional = module.path in optional_modules(package)
-    ros1 = package.manifest is not None and package.manifest.is_ros1
+    ros1 = is_ros1_package(package)
     seen: set[str] = set()
     owner = python_package_of(package, module)
     on_path = path_modules(package, module)

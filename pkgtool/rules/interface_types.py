@@ -21,6 +21,7 @@ from pkgtool.model.context import interface_file
 from pkgtool.model.installed import cmake_text
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
+from pkgtool.rules.ros1_platform import is_ros1_package
 from pkgtool.rules.syntax_trees import installed_modules
 
 ROS1_ACTION_MESSAGES = ("Action", "ActionGoal", "ActionResult", "ActionFeedback", "Goal",
@@ -59,7 +60,7 @@ def interfaces_for(package: Package, name: str) -> Interfaces | None:
     For a ROS 1 package only its own are known (the workspace index and the tables describe
     ROS 2's layout).
     """
-    ros1 = package.manifest is not None and package.manifest.is_ros1
+    ros1 = is_ros1_package(package)
     if name == package.name:
         own = own_interfaces(package)
         if own is None:

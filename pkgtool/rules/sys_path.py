@@ -7,10 +7,10 @@ from ``__file__`` and string literals are understood: ``os.path`` (``dirname``, 
 ``abspath``, ``realpath``, ``normpath``), ``pathlib.Path`` (``parent``, ``parents[n]``, ``/``,
 ``joinpath``, ``resolve()``, ``absolute()``, ``as_posix()``), ``str()``/``os.fspath()``, a text
 starting with ``/`` added to a path (``dirname(__file__) + "/../lib"``, or in an f-string), and
-names assigned once at module level to such a path. The package's own share folder
-(``get_package_share_directory('<package>')``) stands for its root: a launch file putting
-``share/<package>/launch`` on the path imports the package's ``launch/`` modules. Nothing is
-executed; a path leaving the package is ignored.
+names assigned such a path once in the whole module (at module level or in a function). The
+package's own share folder (``get_package_share_directory('<package>')``) stands for its root:
+a launch file putting ``share/<package>/launch`` on the path imports the package's ``launch/``
+modules. Nothing is executed; a path leaving the package is ignored.
 """
 
 from __future__ import annotations
@@ -152,8 +152,11 @@ def _aliases(tree: ast.Module) -> dict[str, str]:
 
 
 def _assigned_once(tree: ast.Module) -> dict[str, ast.expr]:
-    """Names bound exactly once in the module, by a module-level ``name = value``."""
+    """Names bound exactly once in the whole module, by a ``name = value`` at module level or
+    in a function (``base = os.path.dirname(__file__)`` in ``__init__``): every read of such a
+    name that does not fail reads that value."""
     counts: dict[str, int] = {}
+    assigned: list[ast.Assign] = []
     for node in ast.walk(tree):
         if isinstance(node, ast.Name) and isinstance(node.ctx, (ast.Store, ast.Del)):
             counts[node.id] = counts.get(node.id, 0) + 1
@@ -161,11 +164,17 @@ def _assigned_once(tree: ast.Module) -> dict[str, ast.expr]:
             counts[node.name] = counts.get(node.name, 0) + 1
         elif isinstance(node, ast.arg):
             counts[node.arg] = counts.get(node.arg, 0) + 1
+        elif isinstance(node, (ast.Import, ast.ImportFrom)):
+            for alias in node.names:
+                name = alias.asname or alias.name.split(".")[0]
+                counts[name] = counts.get(name, 0) + 1
         elif isinstance(node, (ast.Global, ast.Nonlocal)):
             for name in node.names:
                 counts[name] = counts.get(name, 0) + 2
-    return {target.id: node.value for node in tree.body if isinstance(node, ast.Assign)
-            and len(node.targets) == 1 and isinstance(target := node.targets[0], ast.Name)
+        elif isinstance(node, ast.Assign):
+            assigned.append(node)
+    return {target.id: node.value for node in assigned
+            if len(node.targets) == 1 and isinstance(target := node.targets[0], ast.Name)
             and counts.get(target.id) == 1}
 
 

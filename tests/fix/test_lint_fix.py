@@ -47,6 +47,28 @@ def test_diff_prints_the_fixes_and_writes_nothing(package: Path) -> None:
     assert _snapshot(package) == before
 
 
+def test_diff_shows_every_round_of_fix(tmp_path: Path) -> None:
+    """Fixes that overlap take one round each; ``--diff`` shows what ``--fix`` writes in all
+    of them, not the first round alone."""
+    files = correct_package_files("pkg")
+    files["package.xml"] = str(files["package.xml"]).replace(
+        "  <exec_depend>launch_ros</exec_depend>\n",
+        "  <exec_depend>launch_ros</exec_depend>\n  <exec_depend>os</exec_depend>\n")
+    files["pkg/helper.py"] = "import numpy\nimport yaml\nimport scipy\n"
+    write_tree(tmp_path / "shown" / "pkg", files)
+    write_tree(tmp_path / "fixed" / "pkg", files)
+    shown = run_cli("lint", "--diff", "pkg", cwd=tmp_path / "shown")
+    run_cli("lint", "--fix", "pkg", cwd=tmp_path / "fixed")
+    before = str(files["package.xml"]).splitlines(keepends=True)
+    after = (tmp_path / "fixed" / "pkg" / "package.xml").read_text().splitlines(keepends=True)
+    added = [line for line in after if line not in before]
+    removed = [line for line in before if line not in after]
+    assert len(added) == 3 and removed == ["  <exec_depend>os</exec_depend>\n"], after
+    assert all(f"+{line}" in shown.stdout for line in added), shown.stdout
+    assert f"-{removed[0]}" in shown.stdout, shown.stdout
+    assert (tmp_path / "shown" / "pkg" / "package.xml").read_text() == files["package.xml"]
+
+
 def test_fix_repairs_then_reports_what_is_left_and_is_idempotent(package: Path) -> None:
     untouched = {k: v for k, v in _snapshot(package).items() if k != "package.xml"}
     first = run_cli("lint", "--fix", "--strict", "pkg", cwd=package.parent)

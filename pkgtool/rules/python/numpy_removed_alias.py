@@ -12,6 +12,7 @@ from pkgtool.model.span import Span
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.syntax_trees import installed_trees, resolved_attributes
 from pkgtool.rules.registry import rule
+from pkgtool.rules.ros1_platform import is_ros1_package
 
 
 def _hit(path: str, node: ast.AST, name: str, distro: str) -> Hit:
@@ -41,7 +42,8 @@ def numpy_removed_alias(package: Package) -> Iterator[Hit]:
     NumPy 2 removed (`np.int0`, `np.float_`, `np.product`, `np.NaN`, ...). Annotations Python
     never evaluates (of an assignment in a function, or under `from __future__ import
     annotations`) are not checked, nor are names the module probes (`if getattr(np, 'bool',
-    False):`, `hasattr`) or reads where AttributeError is caught.
+    False):`, `hasattr`) or reads where AttributeError is caught. ROS 1 (catkin) packages are
+    left alone: Noetic's NumPy 1.17 has every alias.
 
     ## Why is this bad?
     The line raises `AttributeError` (or `ImportError`) when it runs. ROS 2 Jazzy on Ubuntu
@@ -59,6 +61,8 @@ def numpy_removed_alias(package: Package) -> Iterator[Hit]:
     corners = np.intp(corners)
     ```
     """
+    if is_ros1_package(package):
+        return  # Noetic's NumPy 1.17 has every alias (see pkgtool.rules.ros1_platform)
     for module, _, index in installed_trees(package):
         if not any(i.top_level == "numpy" for i in module.imports):
             continue  # nothing can resolve to numpy (the common case: no walk over attributes)

@@ -10,6 +10,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._module_names import missing_names, used_on
 from pkgtool.rules.registry import rule
+from pkgtool.rules.ros1_platform import is_ros1_package
 
 
 @rule("PYC063", "stdlib-missing-attribute", Severity.ERROR,
@@ -27,7 +28,8 @@ def stdlib_missing_attribute(package: Package) -> Iterator[Hit]:
     `select`, `errno`, `platform`), only a name a typo away from one Linux's Python has is
     reported: `signal.SIGNT`, `os.pah.join`. Private names, names the module assigns or probes
     with `hasattr`/`getattr`, and uses inside `try` (and imports inside `try` or `if`) are left
-    alone.
+    alone. In a ROS 1 (catkin) package, built for Noetic's Python 3.8, only typos of a name
+    the module has are reported (a name missing from 3.10 may be one 3.8 still has).
 
     ## Why is this bad?
     The line raises `AttributeError` (an import, `ImportError`) when it runs: often in a
@@ -46,13 +48,21 @@ def stdlib_missing_attribute(package: Package) -> Iterator[Hit]:
     distance = math.sqrt(dx * dx + dy * dy)
     ```
     """
+    ros1 = is_ros1_package(package)
     for span, module, name, meant, error, uses in missing_names(package, stdlib_names()):
+        if ros1 and (meant is None or _moved(module, name)):
+            continue  # maybe a name Python 3.8 still has (see pkgtool.rules.ros1_platform)
         yield _hit(span, module, name, meant, error, uses)
+
+
+def _moved(module: str, name: str) -> bool:
+    """True for an ABC ``collections`` had until Python 3.10 (now in ``collections.abc``)."""
+    return module == "collections" and name in stdlib_names()["collections.abc"][0]
 
 
 def _hit(span: Span, module: str, name: str, meant: str | None, error: str,
          uses: tuple[Span, ...]) -> Hit:
-    if module == "collections" and name in stdlib_names()["collections.abc"][0]:
+    if _moved(module, name):
         return Hit(span, f"`collections` has no `{name}` since Python 3.10, which moved it to "
                    f"`collections.abc`: the line raises {error}",
                    f"Use `collections.abc.{name}`")

@@ -10,6 +10,7 @@ from pkgtool.knowledge.rosdistro import (PYTHON_VERSIONS, STDLIB_VERSIONS, any_s
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import all_python, local_modules
 from pkgtool.rules.registry import rule
+from pkgtool.rules.ros1_platform import is_ros1_package
 
 _VERSIONS = STDLIB_VERSIONS
 _INSTEAD = {"imp": "`importlib`",
@@ -51,7 +52,9 @@ def stdlib_module_not_on_target(package: Package) -> Iterator[Hit]:
     package's own modules named like one (a `test/` package the tests import as `test.support`,
     which pytest's import mode puts on `sys.path`), and `distutils`: setuptools, which every
     ROS 2 install has (colcon and ament build with it), provides it to every Python process
-    through its `distutils-precedence.pth` shim, Python 3.12 included.
+    through its `distutils-precedence.pth` shim, Python 3.12 included. In a ROS 1 (catkin)
+    package only modules newer than the target's Python are reported: Noetic's Python 3.8
+    still has the removed ones.
 
     ## Why is this bad?
     The node fails with `ModuleNotFoundError` on the robot's Python although it ran on the
@@ -71,6 +74,7 @@ def stdlib_module_not_on_target(package: Package) -> Iterator[Hit]:
     version = PYTHON_VERSIONS[distro]
     here = stdlib_modules(distro)
     known = any_stdlib_module()
+    ros1 = is_ros1_package(package)
     for module in all_python(package):
         seen: set[str] = set(local_modules(package, module))
         for imported in module.imports:
@@ -81,5 +85,7 @@ def stdlib_module_not_on_target(package: Package) -> Iterator[Hit]:
                 continue
             seen.add(top)
             why, fix = _why(top, version)
+            if ros1 and why.startswith("it was removed"):
+                continue  # Noetic's Python 3.8 still has it (see pkgtool.rules.ros1_platform)
             yield Hit(imported.span, f"`{top}` is not in the standard library of Python "
                       f"{version} ({distro}): {why}", fix)

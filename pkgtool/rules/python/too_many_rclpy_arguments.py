@@ -31,8 +31,12 @@ POSITIONAL = {
 positional ones, then the keyword-only ones (``get_parameter`` takes the name alone)."""
 _DEFAULT = "Give the default where the parameter is declared, `self.declare_parameter('x', 0.5)`"
 _INIT = ((), ("args", "context", "domain_id", "signal_handler_options"))
+_SHUTDOWN = ((), ("context", "uninstall_handlers"))
 _FUNCTIONS = {"rclpy.spin_once": (("node",), ("executor", "timeout_sec")),
-              "rclpy.init": _INIT, "rclpy.utilities.init": _INIT}
+              "rclpy.init": _INIT, "rclpy.utilities.init": _INIT,
+              "rclpy.shutdown": _SHUTDOWN, "rclpy.try_shutdown": ((), ("context",)),
+              "rclpy.utilities.shutdown": ((), ("context",)),
+              "rclpy.utilities.try_shutdown": ((), ("context",))}
 """rclpy functions (Humble to Rolling) whose later parameters are keyword-only, the same way."""
 
 
@@ -152,7 +156,9 @@ def too_many_rclpy_arguments(package: Package) -> Iterator[Hit]:
     `callback_group`, ...) is keyword-only (Humble to Rolling). `get_parameter` takes the
     name alone: `self.get_parameter('period', 0.5)`, a default given as to `dict.get`, is
     the usual case. Also reports `rclpy.spin_once(node, 0.1)`: its `timeout_sec` is
-    keyword-only, and `rclpy.init(args)`: `init` takes keywords only (`args=args`), and an
+    keyword-only, and `rclpy.init(args)`: `init` takes keywords only (`args=args`), as do
+    `rclpy.shutdown` and `rclpy.try_shutdown` (`context=`: `rclpy.shutdown(callback)` does
+    not register a callback), and an
     executor's `spin(node)` (it takes no argument: `add_node(node)` gives it the node; also
     `spin_once`, `add_node` and the others given too many), and a timeout given to
     `rclpy.spin_until_future_complete(node, future, 5.0)` in the place of its third

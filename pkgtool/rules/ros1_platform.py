@@ -1,0 +1,16 @@
+"""ROS 1 packages run on ROS 1's platform, which the tables of ROS 2 distributions do not describe.
+
+A catkin package kept beside ROS 2 ones (or linted alone) is built for Noetic, on Ubuntu 20.04:
+Python 3.8 and NumPy 1.17. Names that newer Pythons or NumPy 2 removed (``collections.Iterable``,
+the ``imp`` module, ``numpy.float``) still exist there, so the checks that judge names by a ROS 2
+distribution's Python and NumPy leave them alone in such a package; typos stay typos.
+"""
+
+from __future__ import annotations
+
+from pkgtool.model.package import Package
+
+
+def is_ros1_package(package: Package) -> bool:
+    """True for a ROS 1 (catkin) package: its manifest's build type or build tool is catkin."""
+    return package.manifest is not None and package.manifest.is_ros1
