@@ -57,6 +57,7 @@ NOT_ROSDEP_KEYS: dict[str, str] = {
     "pandas": "python3-pandas",
     "scikit-learn": "python3-sklearn",
     "sklearn": "python3-sklearn",
+    "scikit-image": "python3-skimage",
     "requests": "python3-requests",
     "pytest": "python3-pytest",
     "transforms3d": "python3-transforms3d",

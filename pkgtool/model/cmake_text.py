@@ -164,12 +164,13 @@ def expand(arg: str, variables: dict[str, list[str] | None], depth: int
            ) -> list[str | None]:
     """The values ``arg`` stands for; None for one that comes from outside the file.
 
-    A variable nobody sets is empty,
-    unless its name is that of a package the file finds (``find_package(Pkg)`` sets
-    ``Pkg_...``).
+    A variable nobody sets is empty, unless its name is that of a package the file finds
+    (``find_package(Pkg)`` sets ``Pkg_...``). A path built from variables of one value each
+    (``${PROJECT_NAME}/node.py``, ``${scripts}/x.py``) is joined; the source folder
+    (``${CMAKE_CURRENT_SOURCE_DIR}/``) is the package's root.
     """
     for name in _SOURCE_DIRS:
-        arg = arg.replace(f"${{{name}}}", "")
+        arg = arg.replace(f"${{{name}}}/", "").replace(f"${{{name}}}", "")
     names = VARIABLE.findall(arg)
     if not names:
         return [arg]
@@ -177,9 +178,23 @@ def expand(arg: str, variables: dict[str, list[str] | None], depth: int
         return [None]
     if any(name not in variables for name in names):
         return []  # never set: empty
-    if depth == 0 or arg != f"${{{names[0]}}}":
-        return []  # a path built from the file's own variables: not followed
-    result: list[str | None] = []
-    for value in variables[names[0]] or ():
-        result.extend(expand(value, variables, depth - 1))
-    return result
+    if depth == 0:
+        return []
+    if arg == f"${{{names[0]}}}":
+        result: list[str | None] = []
+        for value in variables[names[0]] or ():
+            result.extend(expand(value, variables, depth - 1))
+        return result
+    return [_joined(arg, variables, depth)]
+
+
+def _joined(arg: str, variables: dict[str, list[str] | None], depth: int) -> str | None:
+    """``arg`` (``${PROJECT_NAME}/node.py``) with each variable replaced by its one value; None
+    when one has no single known value (a list, or a value from outside the file)."""
+    values: dict[str, str] = {}
+    for name in set(VARIABLE.findall(arg)):
+        found = [v for value in variables[name] or () for v in expand(value, variables, depth - 1)]
+        if len(found) != 1 or found[0] is None:
+            return None
+        values[name] = found[0]
+    return VARIABLE.sub(lambda match: values[match.group(1)], arg)

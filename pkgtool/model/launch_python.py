@@ -109,6 +109,9 @@ class _Reader(ast.NodeVisitor):
             unread_argument_defaults(tree)  # module-level ones, files the code writes, and
         # defaults of launch arguments nothing reads
         self.dead = 0  # > 0 inside a node action that is never started
+        self.never_run: set[int] = {id(v) for v in self.unread_paths if self._inert(v)}
+        # ids of values that never run: actions nothing starts (a module-level one nothing
+        # reads too), and what only those read (``cmd = Command([...])`` of such a node)
         self.checked: set[tuple[str, tuple[str, ...]]] | None = set()  # share paths asked
         # whether they exist (None: one the reader cannot work out)
         self.read_names = frozenset(n.id for n in nodes_of_class(tree, ast.Name)
@@ -120,13 +123,24 @@ class _Reader(ast.NodeVisitor):
         return Span(self.path, getattr(node, "lineno", 1), getattr(node, "col_offset", 0) + 1)
 
     def visit(self, node: ast.AST) -> None:
-        """``ast.NodeVisitor.visit`` with the method of each node class looked up once."""
+        """``ast.NodeVisitor.visit`` with the method of each node class looked up once; what
+        is inside a value that never runs is recorded as unused."""
         kind = type(node)
         method = _METHODS.get(kind)
         if method is None:
             method = getattr(_Reader, f"visit_{kind.__name__}", _Reader.generic_visit)
             _METHODS[kind] = method
+        never = id(node) in self.never_run
+        self.dead += never
         method(self, node)
+        self.dead -= never
+
+    def _inert(self, value: ast.expr) -> bool:
+        """True for a call making a launch action (or event handler) whose construction does
+        nothing: one that nothing starts never runs, nor does what it holds."""
+        return isinstance(value, ast.Call) and (
+            self._action(value.func) in NODE_ACTIONS | PLUGIN_ACTIONS or
+            last_name(value.func) in _INERT_ACTIONS)
 
     def generic_visit(self, node: ast.AST) -> None:
         """Visit the children as ``ast.NodeVisitor`` does, less the context and operator nodes
@@ -150,10 +164,10 @@ class _Reader(ast.NodeVisitor):
         self.scopes.append(bindings(nodes, node.args))
         self.cache.append({})
         unread = unread_values(node, nodes) | overwritten_values(node, nodes)
-        dead = {call for call in unread if isinstance(call, ast.Call) and (
-            self._action(call.func) in NODE_ACTIONS | PLUGIN_ACTIONS or
-            last_name(call.func) in _INERT_ACTIONS)}
-        self.unread.update(unread, read_only_by(node, nodes, dead) if dead else ())
+        dead = {call for call in unread if self._inert(call)}
+        fed = read_only_by(node, nodes, dead) if dead else set()
+        self.unread.update(unread, fed)
+        self.never_run.update(id(value) for value in (*dead, *fed))
         for statement in node.body:
             self.visit(statement)
         self.scopes.pop()
@@ -359,8 +373,7 @@ class _Reader(ast.NodeVisitor):
     def _never_started(self, node: ast.Call) -> bool:
         """A node action (or ``ExecuteProcess``) assigned to a local name never read; any
         other call so assigned may have effects (``unused = ld.add_action(Node(...))``)."""
-        return node in self.unread and (self._action(node.func) in NODE_ACTIONS | PLUGIN_ACTIONS
-                                        or last_name(node.func) == "ExecuteProcess")
+        return node in self.unread and self._inert(node)
 
     def _record_call(self, node: ast.Call) -> None:
         name, action = self._function_name(node.func), self._action(node.func)

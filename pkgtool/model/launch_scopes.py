@@ -315,11 +315,15 @@ def import_origins(tree: ast.Module) -> dict[str, set[str]]:
     return origins
 
 
+_FED_VALUES = (*PATH_VALUES, ast.Dict, ast.List, ast.Tuple)
+
+
 def read_only_by(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[ast.AST],
                  dead: set[ast.expr]) -> set[ast.expr]:
-    """Path-building values of assignments to a local name whose every read is inside one
-    of the ``dead`` calls (node actions never started), and so on for the names
-    those feed: the values never used. ``nodes`` are the :func:`scope_nodes` of its body."""
+    """Path-building values (and dicts, lists and tuples: ``{'robot_description': cmd}``) of
+    assignments to a local name whose every read is inside one of the ``dead`` calls (node
+    actions never started), and so on for the names those feed: the values never used.
+    ``nodes`` are the :func:`scope_nodes` of its body."""
     found: set[ast.expr] = set()
     inside = {id(n) for call in dead for n in descendants(call)}
     while True:
@@ -328,7 +332,7 @@ def read_only_by(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[a
             if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Store):
                 reads[node.id] = reads.get(node.id, True) and id(node) in inside
         more = {node.value for node in nodes
-                if simple_assignment(node) and isinstance(node.value, PATH_VALUES)
+                if simple_assignment(node) and isinstance(node.value, _FED_VALUES)
                 and reads.get(node.targets[0].id)  # type: ignore[attr-defined]
                 and node.value not in found}
         if not more:

@@ -77,17 +77,26 @@ def names_a_file(name: str, distro: str) -> bool:
         not rosdistro.is_released_package(name, distro)
 
 
+_PYTHON3 = "python3-"
+
+
 def key_instead(name: str, distro: str, tag: str) -> str | None:
     """The rosdep key to write for a declared ``name`` that is no key but a pip or ROS 1 name
     (:func:`~pkgtool.knowledge.rosdep.suggested_key`) or, but in a ``<doc_depend>`` (rosdoc2
     mocks the modules it names: ``lark``), the import name of a module rosdep's data knows
-    (``dlib``: ``python3-dlib-pip``), or an Ubuntu package's name (``libyaml-cpp-dev``:
-    ``yaml-cpp``); None for a key, a released package or a name nothing knows."""
+    (``dlib``: ``python3-dlib-pip``), ``python3-`` and a pip name whose key is named otherwise
+    (``python3-pillow``: ``python3-pil``; not ``python3-dlib``, which a private rosdep source
+    may define), or an Ubuntu package's name (``libyaml-cpp-dev``: ``yaml-cpp``); None for a
+    key, a released package or a name nothing knows."""
     known = suggested_key(name)
     if known is not None or tag == "doc_depend":
         return known
     if rosdistro.is_known_dependency(name, distro):
         return None
+    prefixed = suggested_key(name[len(_PYTHON3):]) if name.startswith(_PYTHON3) and \
+        not any(rosdistro.is_known_dependency(name, other) for other in DISTROS) else None
+    if prefixed is not None and prefixed != name:
+        return prefixed  # ``python3-`` before a pip name: ``python3-pillow`` is ``python3-pil``
     keys = rosdistro.keys_for_import(name, distro)
     return keys[0] if keys else rosdistro.key_of_ubuntu_package(name)
 

@@ -729,11 +729,14 @@ def also_imported(others: tuple[Need, ...], *, naming: bool = False) -> str:
     return f"; also imported in {places}{more}"
 
 
-def no_package_named(package: Package) -> str:
+def no_package_named(package: Package, name: str = "") -> str:
     """How a message says a name is no package pkgtool knows: of the target's release, or of
-    the packages linted with this one (it sees no workspace beyond those)."""
+    the packages linted with this one (it sees no workspace beyond those); with ``name``, also
+    the distributions that release it (``gazebo_ros``: humble), if any."""
     linted = " or of the packages linted with it" if len(package.context.workspace) > 1 else ""
-    return f"no package of {package.context.distro}'s release{linted} has that name"
+    elsewhere = ", ".join(d for d in DISTROS if name and is_released_package(name, d))
+    released = f" (it is released for {elsewhere})" if elsewhere else ""
+    return f"no package of {package.context.distro}'s release{linted} has that name{released}"
 
 
 def misspelt_package(package: Package, need: Need) -> str | None:

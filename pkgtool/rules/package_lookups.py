@@ -6,7 +6,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator, Mapping
 
 from pkgtool.findings import Hit
-from pkgtool.knowledge.rosdistro import (close_names, digits_differ, is_released_package,
+from pkgtool.knowledge.rosdistro import (DISTROS, close_names, digits_differ, is_released_package,
                                          key_resolves)
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.package import Package
@@ -36,10 +36,13 @@ def unlisted_packages(package: Package, used: Iterable[tuple[str, Span]],
                 name, package.context.distro, limit=3,
                 extra=frozenset((*package.context.workspace, package.name)))
                 if not digits_differ(name, close)]
-            missing += f", and {no_package_named(package)}"
+            missing += f", and {no_package_named(package, name)}"
             missing += f" (did you mean `{meant[0]}`?)" if meant else ""
-            fix = f"Write `{meant[0]}`" if meant else "Check the name; declare the " \
-                "package if a workspace it is built in provides it"
+            elsewhere = [d for d in DISTROS if is_released_package(name, d)]
+            fix = f"Write `{meant[0]}`" if meant else \
+                f"{fix}, and lint with `--rosdistro {elsewhere[-1]}` if the package targets " \
+                f"{elsewhere[-1]}" if elsewhere else "Check the name; declare the package if " \
+                "a workspace it is built in provides it"
         yield Hit(span, f"`{name}` is used by {user} but {missing}", fix,
                   cause="" if other else dependency_cause(name), consequence=True)
 

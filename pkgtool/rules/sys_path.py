@@ -20,6 +20,7 @@ import posixpath
 from collections.abc import Iterator
 from typing import NamedTuple
 
+from pkgtool.model.ast_nodes import nodes_of
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
@@ -90,7 +91,7 @@ def _package_edits(package: Package) -> tuple[dict[str, tuple[tuple[int, str], .
 def _path_edits(tree: ast.Module) -> Iterator[ast.Call]:
     """The ``sys.path.insert(...)``/``append(...)`` calls of the module."""
     aliases = _aliases(tree)
-    for node in ast.walk(tree):
+    for node in nodes_of(tree):
         if isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and \
                 node.func.attr in _EDITS and node.args and \
                 _dotted(node.func.value, aliases) == "sys.path":
@@ -126,7 +127,7 @@ def file_relative_paths(tree: ast.Module, path: str) -> Iterator[tuple[ast.expr,
     ``__file__`` (``os.path.join(os.path.dirname(__file__), 'sounds', 'x.mp3')``), with the
     package-relative path it evaluates to (none that leaves the package)."""
     aliases, once = _aliases(tree), _assigned_once(tree)
-    for node in ast.walk(tree):
+    for node in nodes_of(tree):
         if isinstance(node, (ast.Call, ast.BinOp)):  # no package: no share folder stands in
             found = _path(node, _Source(path, ""), aliases, once, 0)
             relative = _relative(found) if found is not None else None
@@ -137,7 +138,7 @@ def file_relative_paths(tree: ast.Module, path: str) -> Iterator[tuple[ast.expr,
 def _aliases(tree: ast.Module) -> dict[str, str]:
     """Name -> the dotted module or attribute its imports bind it to (``osp`` -> ``os.path``)."""
     found: dict[str, str] = {}
-    for node in ast.walk(tree):
+    for node in nodes_of(tree):
         if isinstance(node, ast.Import):
             for alias in node.names:
                 if alias.asname:
@@ -157,7 +158,7 @@ def _assigned_once(tree: ast.Module) -> dict[str, ast.expr]:
     name that does not fail reads that value."""
     counts: dict[str, int] = {}
     assigned: list[ast.Assign] = []
-    for node in ast.walk(tree):
+    for node in nodes_of(tree):
         if isinstance(node, ast.Name) and isinstance(node.ctx, (ast.Store, ast.Del)):
             counts[node.id] = counts.get(node.id, 0) + 1
         elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import posixpath
 import re
 from collections.abc import Iterator
 
@@ -68,9 +69,13 @@ _INSTALL = re.compile(r"\binstall\s*\(", re.IGNORECASE)
 def _place(source: str, text: str) -> int | None:
     """The offset of ``source`` in CMakeLists.txt: where an ``install()`` call names it (not
     an earlier mention, ``add_service_files(FILES x.srv)``; a folder also with its trailing
-    slash, ``DIRECTORY include/``), else its first mention."""
+    slash, ``DIRECTORY include/``; a source built from a variable by its last part,
+    ``${PROJECT_NAME}/node.py``), else its first mention."""
     mentions = [m.start() for m in re.finditer(
-        rf"(?<![\w.-]){re.escape(source)}(?![\w.-])(?!/[\w.-])", text)]
+        rf"(?<![\w.-]){re.escape(source)}(?![\w.-])(?!/[\w.-])", text)] or \
+        [m.start() for m in re.finditer(  # built from a variable: `${PROJECT_NAME}/node.py`
+            rf"\$\{{\w+\}}/{re.escape(posixpath.basename(source))}(?![\w.-])(?!/[\w.-])",
+            text)]
     for call in _INSTALL.finditer(text):
         end = text.find(")", call.end())
         inside = [at for at in mentions if call.end() <= at < (end if end >= 0 else len(text))]

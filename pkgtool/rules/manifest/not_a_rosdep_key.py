@@ -127,7 +127,8 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
     a name with a ``/`` (``turtlesim/msg/Pose``: its package is the dependency), a name with
     characters no key has (``rclpy/``, ``'numpy'``), a file name
     (``robot.launch.py``, ``params.yaml``),
-    pip distribution names (``opencv-python``, ``pyyaml``, ``numpy``), import names (``cv2``),
+    pip distribution names (``opencv-python``, ``pyyaml``, ``numpy``), also after ``python3-``
+    (``python3-pillow``: the key is ``python3-pil``), import names (``cv2``),
     ROS 1 Python 2 keys (``python-opencv``), ROS 1 packages (``rospy``, ``catkin``) in a package
     whose build type is ``ament_*``, ``ament_python``, which is a build type, and
     standard library modules (``math``, ``threading``, ``termios``), which need no

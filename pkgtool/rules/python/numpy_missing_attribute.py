@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.numpy_removed import REMOVED
 from pkgtool.knowledge.stdlib_names import numpy_names
 from pkgtool.model.package import Package
 from pkgtool.rules.python._module_names import missing_names, used_on
@@ -40,6 +41,8 @@ def numpy_missing_attribute(package: Package) -> Iterator[Hit]:
     ```
     """
     for span, module, name, meant, error, uses in missing_names(package, numpy_names()):
+        if module == "numpy" and name in REMOVED:
+            continue  # a name NumPy had (`np.complex`): PYC002 says when it went away
         yield Hit(span, f"NumPy's `{module}` has no `{name}` in any release (did you mean "
                   f"`{meant}`?): the line raises {error}{used_on(uses)}", f"Write `{meant}`",
                   related=uses)

@@ -6,6 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import nodes_of
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
@@ -50,7 +51,7 @@ def joins(tree: ast.Module, index: Index) -> Iterator[tuple[ast.expr, ast.expr, 
     if not index.imports_from("ament_index_python"):
         return
     scopes: dict[int, tuple[dict[str, ast.expr], ...]] = {}  # by function, for candidates only
-    for node in ast.walk(tree):
+    for node in nodes_of(tree):
         if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
             pairs = [(node.left, node.right)]
         elif isinstance(node, ast.JoinedStr):

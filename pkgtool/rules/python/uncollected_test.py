@@ -8,6 +8,7 @@ import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.installed import is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.model.pytest_config import PytestConfig, pytest_config
@@ -132,7 +133,7 @@ def _uncollected_parts(package: Package, path: str, tree: ast.Module, config: Py
     """In a file pytest collects: plain test classes it skips for their ``__init__``, and
     functions written as tests (misnamed, asserting, used nowhere) under a name it skips."""
     functions, classes = config.get("python_functions"), config.get("python_classes")
-    used = {n.id for n in ast.walk(tree) if isinstance(n, ast.Name)}
+    used = {n.id for n in nodes_of_class(tree, ast.Name)}  # type: ignore[attr-defined]
     for node in tree.body:
         plain = isinstance(node, ast.ClassDef) and all(
             isinstance(b, ast.Name) and b.id == "object" for b in node.bases)

@@ -26,17 +26,13 @@ def undeclared_parameter_read(package: Package) -> Iterator[Hit]:
     `self.get_parameter('name')` and `self.get_parameters([...])` against the names the
     module declares with `declare_parameter` and `declare_parameters` (with their namespace
     prefix: `ns.name`), called directly or through a name bound only to the method in its
-    function (`p = self.declare_parameter`, then `p('rate', 1.0)`). `get_parameter_or` and
-    `has_parameter` are not checked. Skipped when the module uses
-    `allow_undeclared_parameters` or `automatically_declare_parameters_from_overrides`,
-    declares a name that is not a literal, uses the method otherwise (passed to `map`, say),
-    or the class derives from another class besides `Node`, or hands `self` to other code.
-    prefix: `ns.name`). Also reports a read that comes before every declaration of its name
-    in the same method, where each runs once (none in a loop, a `try` or a nested function).
-    `get_parameter_or` and `has_parameter` are not checked. Skipped when the module uses
-    `allow_undeclared_parameters` or `automatically_declare_parameters_from_overrides`,
-    declares a name that is not a literal, or the class derives from another class besides
-    `Node`, or hands `self` to other code.
+    function (`p = self.declare_parameter`, then `p('rate', 1.0)`). Also reports a read that
+    comes before every declaration of its name in the same method, where each runs once
+    (none in a loop, a `try` or a nested function). `get_parameter_or` and `has_parameter`
+    are not checked. Skipped when the module uses `allow_undeclared_parameters` or
+    `automatically_declare_parameters_from_overrides`, declares a name that is not a
+    literal, uses the method otherwise (passed to `map`, say), or the class derives from
+    another class besides `Node`, or hands `self` to other code.
 
     ## Why is this bad?
     `get_parameter` raises `ParameterNotDeclaredException` for a name never declared (or not

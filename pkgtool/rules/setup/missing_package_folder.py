@@ -6,6 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.submodules import under
@@ -24,7 +25,7 @@ def _makes_files(package: Package) -> bool:
     text = package.texts.get("setup.py")
     tree = parse_tree("setup.py", text) if text is not None else None
     return isinstance(tree, ast.Module) and any(
-        isinstance(node, ast.Call) and _maker(node.func) for node in ast.walk(tree))
+        _maker(node.func) for node in nodes_of_class(tree, ast.Call))  # type: ignore
 
 
 def _maker(func: ast.expr) -> bool:
