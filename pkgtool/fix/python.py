@@ -450,6 +450,18 @@ def main_guard(package: Package, findings: list[Finding]) -> Iterator[Fix]:
                       safe=False)
 
 
+@fixer("PYC081", "Name the exception class an `except` clause calls")
+def exception_class(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Write ``KeyboardInterrupt`` for the ``KeyboardInterrupt()`` an ``except`` clause names.
+    Safe: the handler raised TypeError whenever an exception reached it; a call with
+    arguments needs the user."""
+    for doc, _, nodes in python_nodes(package, findings):
+        call = next((n for n in nodes if isinstance(n, ast.Call)), None)
+        if call is not None and not call.args and not call.keywords:
+            yield Fix(f"Write `{ast.unparse(call.func)}`",
+                      (Edit(doc.source.path, doc.end(call.func), doc.end(call), ""),))
+
+
 @fixer("PYC041", "Call `super()` before its `__init__`")
 def super_call(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Write ``super()`` for the ``super`` of ``super.__init__(...)``. Safe: the line raised

@@ -170,9 +170,7 @@ def installed_executables(text: str) -> frozenset[str] | None:
     module, a folder installed into ``lib/``, a name or destination built from what the file
     does not set."""
     calls = commands(text)
-    if any(name not in _PLAIN_COMMANDS or name == "include" and args[:1] and
-           args[0] not in _STANDARD_MODULES and not args[0].endswith(".cmake")
-           for name, args in calls):
+    if not _known_commands(calls):
         return None  # what it installs is not known from the text
     variables = set_variables(calls, frozenset())
     project = _static("${PROJECT_NAME}", variables)
@@ -208,6 +206,42 @@ def installed_executables(text: str) -> frozenset[str] | None:
         elif name == "rclcpp_components_register_node" and "EXECUTABLE" in args[:-1]:
             found.add(_static(args[args.index("EXECUTABLE") + 1], variables))
     return None if None in found else frozenset(n for n in found if n)
+
+
+def installed_into_share(text: str) -> frozenset[str] | None:
+    """The package-relative files and folders ``text`` (a CMakeLists.txt with the files it
+    includes) installs under ``share/<project>``, where ``ros2 launch`` looks launch files up:
+    the sources of ``install(DIRECTORY|FILES|PROGRAMS ...)`` with such a destination and the
+    folders of ``ament_auto_package(INSTALL_TO_SHARE ...)``. None when that is not certain, as
+    for :func:`installed_executables` (a command it does not know, a source or destination
+    built from what the file does not set)."""
+    calls = commands(text)
+    if not _known_commands(calls):
+        return None
+    variables = set_variables(calls, frozenset())
+    project = _static("${PROJECT_NAME}", variables)
+    if project is None:
+        return None
+    share = f"share/{project}"
+    found: set[str | None] = set()
+    for name, args in calls:
+        destinations = _destinations(args, variables) if name == "install" else \
+            [share] if name == "ament_auto_package" else []
+        if None in destinations:
+            return None
+        if any(d == share or str(d).startswith(share + "/") for d in destinations):
+            found.update(_static(arg, variables) for arg in _install_args(name, args))
+    if None in found:
+        return None
+    return frozenset(posixpath.normpath(n) for n in found if n)  # type: ignore[arg-type]
+
+
+def _known_commands(calls: list[tuple[str, list[str]]]) -> bool:
+    """True when every command of ``calls`` is one of :data:`_PLAIN_COMMANDS`, and every
+    included file a CMake module or a ``.cmake`` file of the package."""
+    return not any(name not in _PLAIN_COMMANDS or name == "include" and args[:1] and
+                   args[0] not in _STANDARD_MODULES and not args[0].endswith(".cmake")
+                   for name, args in calls)
 
 
 def _static(arg: str, variables: dict[str, list[str] | None]) -> str | None:
@@ -248,11 +282,21 @@ def _runtime_destination(args: list[str], variables: dict[str, list[str] | None]
     return "" if chosen is None else _static(chosen, variables)
 
 
+_TARGETS_KEYWORDS = _TARGET_KINDS | _INSTALL_OPTIONS | {
+    "EXPORT", "RUNTIME_DEPENDENCIES", "RUNTIME_DEPENDENCY_SET", "NAMELINK_ONLY", "NAMELINK_SKIP",
+    "NAMELINK_COMPONENT"}
+"""The keywords that end the targets of ``install(TARGETS ...)`` (a target may be named in
+capitals: ``EMERGENCY_NODE_LISTENER``)."""
+_AUTO_PACKAGE_KEYWORDS = frozenset({"INSTALL_TO_SHARE", "INSTALL_TO_PATH",
+                                    "USE_SCOPED_HEADER_INSTALL_DIR"})
+"""The keywords of ``ament_auto_package()``."""
+
+
 def _until_keyword(args: list[str]) -> list[str]:
-    """The leading arguments before the first upper-case keyword."""
+    """The leading arguments before the first keyword of ``install(TARGETS ...)``."""
     found = []
     for arg in args:
-        if arg.isupper() and "$" not in arg:
+        if arg in _TARGETS_KEYWORDS:
             break
         found.append(arg)
     return found
@@ -275,7 +319,7 @@ def _install_args(name: str, args: list[str]) -> list[str]:
     if name == "ament_auto_package" and "INSTALL_TO_SHARE" in args:
         folders: list[str] = []
         for arg in args[args.index("INSTALL_TO_SHARE") + 1:]:
-            if arg.isupper():  # the next keyword
+            if arg in _AUTO_PACKAGE_KEYWORDS:  # the next keyword
                 break
             folders.append(arg)
         return folders

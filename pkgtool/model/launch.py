@@ -166,6 +166,19 @@ def is_template(path: str) -> bool:
     return path.split("/", 1)[0] in TEMPLATE_FOLDERS and "/" in path
 
 
+KEPT_ASIDE = lazy_pattern(r"(?i)(?:^|[_.\- (\[])(?:old|orig|original|copy|backup|backups|bak|"
+                          r"unused|deprecated|discarded|obsolete|legacy)(?:[_.\- )\]]|\d|$)")
+"""A copy kept aside by its name (``flow.launch_original.py``, ``ctrl_launch-Copy1.py``,
+``controller_launch(discarded).py``) or its folder's (``backup/``, ``old_launch/``)."""
+
+
+def kept_aside(path: str) -> bool:
+    """True for a file named as a copy kept aside, or kept in a folder so named: nobody runs
+    it, and a whole installed folder carries it along."""
+    *folders, name = path.split("/")
+    return any(KEPT_ASIDE.search(part) for part in (*folders, name.rsplit(".", 1)[0]))
+
+
 def is_launch_file(path: str, python_folders: frozenset[str] = frozenset(),
                    nested: frozenset[str] = frozenset()) -> bool:
     """True for a file with a launch file name that the package keeps as a launch file.
@@ -176,10 +189,12 @@ def is_launch_file(path: str, python_folders: frozenset[str] = frozenset(),
     installed as code), a test (``test_*``) and files under ``test/``, ``examples/``,
     ``samples/`` or ``doc/`` (run by pytest, by ``main()`` with a ``LaunchService``, or by
     path from that folder, next to its data) are not launch files. Nor are those below a
-    ``nested`` folder (:func:`nested_packages`): they are that package's.
+    ``nested`` folder (:func:`nested_packages`): they are that package's. Nor are those of a
+    folder kept aside (``backup/``, ``old/``: :func:`kept_aside`).
     """
     folder, _, name = path.rpartition("/")
-    if not name.endswith(LAUNCH_SUFFIXES) or is_template(path) or below(path, nested):
+    if not name.endswith(LAUNCH_SUFFIXES) or is_template(path) or below(path, nested) or \
+            any(KEPT_ASIDE.search(part) for part in folder.split("/") if part):
         return False
     parts = folder.split("/") if folder else []
     if "launch" in parts:

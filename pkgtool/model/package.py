@@ -11,9 +11,9 @@ from pkgtool.model.cmake_text import with_included
 from pkgtool.model.context import Context, interface_file
 from pkgtool.model.files import TextFile, list_files, read_text
 from pkgtool.model.launch import (LAUNCH_SUFFIXES, LAUNCH_YAML, LaunchFile, in_launch_folder,
-                                  is_launch_file, is_launch_test, is_template, nested_packages,
-                                  named_like_launch_only, parse_launch, python_folders,
-                                  runs_as_launch_file)
+                                  is_launch_file, is_launch_test, is_template, kept_aside,
+                                  nested_packages, named_like_launch_only, parse_launch,
+                                  python_folders, runs_as_launch_file)
 from pkgtool.model.launch_reader import yaml_problem
 from pkgtool.model.manifest import Manifest, parse_manifest
 from pkgtool.model.modules import PythonModule, parse_module
@@ -257,13 +257,8 @@ def _cmake_shared(files: tuple[str, ...], text_of: Callable[[str], str | None]
     if not installed:
         return frozenset()
     return frozenset(f for f in files if f.endswith(".py") and "launch" in f.split("/")[:-1]
-                     and _KEPT_ASIDE.search(f.rsplit("/", 1)[-1]) is None
+                     and not kept_aside(f)
                      and (f in installed or any(f.startswith(f"{i}/") for i in installed)))
-
-
-_KEPT_ASIDE = lazy_pattern(r"(?i)copy|backup|\bbak\b|(?:^|[._-])(?:old|orig|original)(?:[._-]|$)")
-"""Names of a copy kept aside (``robot.launch_copy.py``, ``launch_old.py``), which a whole
-installed folder carries along though nobody runs it."""
 
 
 def _shared_sources(setup_py: SetupPy | ParseProblem | None) -> frozenset[str]:
@@ -297,7 +292,7 @@ def _launch_by_content(relpath: str, text_of: Callable[[str], str | None],
         return False
     if relpath.endswith(".py"):
         loose = relpath.split("/")[0] == "launch" and relpath.count("/") == 1 and \
-            "launch" not in folders and _KEPT_ASIDE.search(relpath) is None
+            "launch" not in folders and not kept_aside(relpath)
         return (relpath in shared or loose) and runs_as_launch_file(relpath, text)
     if relpath.endswith(".xml"):
         return _LAUNCH_XML.match(text) is not None

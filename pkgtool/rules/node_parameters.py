@@ -25,6 +25,7 @@ from pkgtool.model.span import Span
 from pkgtool.records import record
 from pkgtool.rules.console_scripts import scripts_and_modules
 from pkgtool.rules.node_api import NODE_CLASSES, name_argument, node_constructions
+from pkgtool.rules.scopes import scope_bindings
 from pkgtool.rules.syntax_trees import Index, installed_trees
 from pkgtool.rules.test_modules import test_files
 from pkgtool.lazy_regex import lazy_pattern
@@ -33,6 +34,9 @@ PERMISSIVE = frozenset({"allow_undeclared_parameters",
                         "automatically_declare_parameters_from_overrides"})
 """Node options that accept parameters nobody declares."""
 READS = frozenset({"get_parameter", "get_parameters"})
+SETS = frozenset({"set_parameters", "set_parameters_atomically"})
+PARAMETER_CLASSES = frozenset({"rclpy.parameter.Parameter", "rclpy.Parameter"})
+"""What ``Parameter`` objects are made with."""
 """Node methods that raise ParameterNotDeclaredException for an undeclared name."""
 DECLARES = frozenset({"declare_parameter", "declare_parameters"})
 """Node methods that declare parameters."""
@@ -61,8 +65,9 @@ class Declared:
 @record
 class NodeClass:
     """A class of installed code that is a node: its default node name (the literal passed to
-    ``super().__init__``, else None), declared parameters, literal ``get_parameter`` reads
-    and, when its declarations are not known in full, why."""
+    ``super().__init__``, else None), declared parameters, literal ``get_parameter`` reads,
+    when its declarations are not known in full, why, and the literal names of the
+    ``Parameter`` objects it hands to its own ``set_parameters``."""
 
     path: str
     name: str
@@ -70,6 +75,7 @@ class NodeClass:
     declared: tuple[Declared, ...]
     reads: tuple[tuple[str, Span], ...]
     skip: str | None
+    sets: tuple[tuple[str, Span], ...] = ()
 
     def declares(self, parameter: str) -> Declared | None:
         """The declaration of ``parameter``, if the class has one."""
@@ -274,7 +280,34 @@ def _node_class(path: str, cls: ast.ClassDef, index: Index, module_skip: str | N
     reads = [(n, Span(path, c.lineno, c.col_offset + 1))
              for c in inside if isinstance(c.func, ast.Attribute) and
              c.func.attr in READS and _is_self(c.func.value) for n in _read_names(c)]
-    return NodeClass(path, cls.name, name, tuple(declared), tuple(reads), skip)
+    sets = [(n, Span(path, c.lineno, c.col_offset + 1))
+            for c in inside if isinstance(c.func, ast.Attribute) and
+            c.func.attr in SETS and _is_self(c.func.value) for n in _set_names(c, index)]
+    return NodeClass(path, cls.name, name, tuple(declared), tuple(reads), skip, tuple(sets))
+
+
+def _set_names(call: ast.Call, index: Index) -> list[str]:
+    """Literal names of the ``Parameter`` objects a ``set_parameters([...])`` call lists, made
+    in the list or bound once in the function to a name the list holds."""
+    listed = call.args[0] if len(call.args) == 1 and not call.keywords else None
+    if not isinstance(listed, (ast.List, ast.Tuple)):
+        return []
+    function = index.enclosing_function(call)
+    made = [item if isinstance(item, ast.Call) else
+            _made_once(item.id, function) if isinstance(item, ast.Name) and function else None
+            for item in listed.elts]
+    return [name for item in made if isinstance(item, ast.Call) and
+            index.qualified(item.func) in PARAMETER_CLASSES and item.args and
+            (name := _literal_string(item.args[0])) is not None]
+
+
+def _made_once(name: str, function: ast.AST) -> ast.expr | None:
+    """The value ``name`` is bound to when ``function`` binds it once, by ``name = value``."""
+    if scope_bindings(function)[name] != 1:
+        return None
+    return next((n.value for n in subtree(function) if isinstance(n, ast.Assign) and
+                 len(n.targets) == 1 and isinstance(n.targets[0], ast.Name) and
+                 n.targets[0].id == name), None)
 
 
 def _read_names(call: ast.Call) -> list[str]:

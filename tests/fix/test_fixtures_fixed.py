@@ -71,6 +71,7 @@ has is built elsewhere): no fix
 guesses, the user chooses; the other findings
 of the case are fixed."""
 MANUAL = {("PYC078", "habits_of_other_languages"), ("PYC079", "unknown_keywords"),
+          ("DAT005", "cmake_launch_folder_not_installed"),
           ("IFC007", "format_two_manifest"),
           ("DEP001", "module_of_a_plain_python_project"),
           ("MAN018", "buildtool_depend_ament_python"), ("MAN018", "ros1_packages"),

@@ -11,6 +11,7 @@ from pkgtool.rules.dependency_names import names_module, unknown_dependencies
 from pkgtool.rules.imports import (BUILD_ONLY, TEST, Need, also_imported, declared,
                                    dependency_cause, grouped, misnamed, misspelt_package,
                                    no_package_named, unmet_runtime_needs)
+from pkgtool.rules.package_lookups import depends_on
 from pkgtool.rules.registry import rule
 
 
@@ -46,7 +47,9 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     installed code, and its top-level modules count as the package's own. A module of another
     Python project of the workspace without package.xml (a pip project kept in the checkout)
     is named by the name colcon gives it (setup.py's); rosdep knows no such key, so the help
-    says so and `--fix` leaves the choice to the user.
+    says so and `--fix` leaves the choice to the user. A workspace package that depends on
+    this one (itself or through others) is not reported: declaring it would make a cycle
+    colcon cannot order.
 
     ## Why is this bad?
     `rosdep install` and the binary packages built by the ROS buildfarm install only what
@@ -68,7 +71,8 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     unknown = [u.dependency.name for u in unknown_dependencies(package) if not u.close]
     unmet = (need for need in unmet_runtime_needs(package)  # not DEP004's, DEP002's cases
              if need.kind != "unknown" and not any(k in build_only for k in need.keys) and
-             not any(names_module(key, need.imported.top_level) for key in unknown))
+             not any(names_module(key, need.imported.top_level) for key in unknown) and
+             not (need.key in package.context.workspace and depends_on(package, need.key)))
     for need, others in grouped(unmet, by_key=True):
         meant = misspelt_package(package, need)
         if meant is not None:

@@ -6,11 +6,11 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.ast_nodes import TRIES, last_name, nodes_of_class
 from pkgtool.model.package import Package, is_test_material
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import python_files
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, index_of, python_files
 
 _TARGETS = (ast.Name, ast.Attribute, ast.Subscript)
 """What an assignment can store to: the left side of a comparison that may be meant as one."""
@@ -40,7 +40,9 @@ def comparison_as_statement(package: Package) -> Iterator[Hit]:
     `add(1, 2) == 3` or `result != None` in a test; also `<`, `<=`, `>`, `>=`), in every
     Python file of the package.
     When the comparison holds a call (`cv2.waitKey(50) & 0xFF == ord('q')`), the call still
-    runs: the message says so and proposes using the result, not removing the line.
+    runs: the message says so and proposes using the result, not removing the line. A test's
+    comparison expected to raise (in `with pytest.raises(...)` or `assertRaises`, or alone in
+    the body of a `try` with handlers) is left alone.
 
     ## Why is this bad?
     Python evaluates the comparison and drops the result: the assignment meant (`=`) never
@@ -61,6 +63,8 @@ def comparison_as_statement(package: Package) -> Iterator[Hit]:
     """
     for path, text, tree in python_files(package, ("==", "!=", "<", ">")):
         for compare in comparison_statements(tree):
+            if _expected_to_raise(compare, index_of(tree)):
+                continue
             left, right = (_written(text, side) for side in (compare.left,
                                                              compare.comparators[0]))
             op = _SYMBOLS[type(compare.ops[0])]
@@ -76,6 +80,26 @@ def comparison_as_statement(package: Package) -> Iterator[Hit]:
                       (f" (did you mean {meant}?)" if meant else ""),
                       f"Write {meant}" if meant else "Use the result (`if ...:`)" if called
                       else "Use the result, or remove the line")
+
+
+_RAISES = frozenset({"raises", "assertRaises", "assertRaisesRegex"})
+"""Context managers of tests that expect the block to raise."""
+
+
+def _expected_to_raise(compare: ast.Compare, index: Index) -> bool:
+    """True for a comparison a test runs to see it raise: in ``with pytest.raises(...)``
+    (``assertRaises``), or alone in the body of a ``try`` that catches exceptions."""
+    statement = index.parents.get(id(compare))
+    parent = index.parents.get(id(statement))
+    if isinstance(parent, TRIES) and parent.handlers and parent.body == [statement]:
+        return True
+    while parent is not None and not isinstance(parent, FUNCTIONS):
+        if isinstance(parent, (ast.With, ast.AsyncWith)) and any(
+                isinstance(item.context_expr, ast.Call) and
+                last_name(item.context_expr.func) in _RAISES for item in parent.items):
+            return True
+        parent = index.parents.get(id(parent))
+    return False
 
 
 def _written(text: str, node: ast.expr) -> str:

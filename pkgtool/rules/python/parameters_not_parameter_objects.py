@@ -9,11 +9,10 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import argument, literal_type, node_api_calls
+from pkgtool.rules.node_parameters import PARAMETER_CLASSES, SETS
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index
 
-_SETTERS = frozenset({"set_parameters", "set_parameters_atomically"})
-_PARAMETER = frozenset({"rclpy.parameter.Parameter"})
 _LIST = ("parameter_list",)
 """The setters' one parameter (Humble to Rolling)."""
 
@@ -26,7 +25,7 @@ def _refused(value: ast.expr, index: Index) -> str | None:
         return f"its item `{ast.unparse(item)}` is a {literal_type(item)}, not a `Parameter`" \
             if item is not None else None
     if isinstance(value, ast.Call) and isinstance(value.func, (ast.Name, ast.Attribute)) and \
-            index.qualified(value.func) in _PARAMETER:
+            index.qualified(value.func) in PARAMETER_CLASSES:
         return "it is one `Parameter`, not a list of them"
     kind = literal_type(value)
     return f"it is a {kind}, not a list of `Parameter`s" if kind is not None else None
@@ -61,7 +60,7 @@ def set_parameters_without_parameter(package: Package) -> Iterator[Hit]:
     self.set_parameters([Parameter('speed', value=1.0)])
     ```
     """
-    for module, call, method, index in node_api_calls(package, _SETTERS):
+    for module, call, method, index in node_api_calls(package, SETS):
         value = argument(call, _LIST, _LIST[0])
         why = _refused(value, index) if value is not None else None
         if why is not None:

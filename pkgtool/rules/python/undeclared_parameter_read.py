@@ -28,15 +28,18 @@ def undeclared_parameter_read(package: Package) -> Iterator[Hit]:
     prefix: `ns.name`), called directly or through a name bound only to the method in its
     function (`p = self.declare_parameter`, then `p('rate', 1.0)`). Also reports a read that
     comes before every declaration of its name in the same method, where each runs once
-    (none in a loop, a `try` or a nested function). `get_parameter_or` and `has_parameter`
-    are not checked. Skipped when the module uses `allow_undeclared_parameters` or
+    (none in a loop, a `try` or a nested function), and a `self.set_parameters([...])` of a
+    `Parameter('name', ...)` (made in the list, or bound once to a name the list holds) whose
+    name the class never declares. `get_parameter_or` and `has_parameter` are not checked.
+    Skipped when the module uses `allow_undeclared_parameters` or
     `automatically_declare_parameters_from_overrides`, declares a name that is not a
     literal, uses the method otherwise (passed to `map`, say), or the class derives from
     another class besides `Node`, or hands `self` to other code.
 
     ## Why is this bad?
-    `get_parameter` raises `ParameterNotDeclaredException` for a name never declared (or not
-    declared yet): the node dies where it reads it, often a misspelling of a declared name.
+    `get_parameter` (and `set_parameters`) raises `ParameterNotDeclaredException` for a name
+    never declared (or not declared yet): the node dies where it reads it, often a
+    misspelling of a declared name.
 
     ## Example
     ```python
@@ -65,6 +68,11 @@ def undeclared_parameter_read(package: Package) -> Iterator[Hit]:
                 yield Hit(span, f"`{cls.name}` reads parameter `{name}` before it declares it "
                           f"(line {later.line}): ParameterNotDeclaredException", None,
                           (later,))
+        for name, span in cls.sets:
+            if name not in declared and name not in BUILT_IN:
+                yield Hit(span, f"`{cls.name}` sets parameter `{name}` but never declares "
+                          f"it{near(name, declared)}: `set_parameters` raises "
+                          "ParameterNotDeclaredException", write_meant(name, declared))
 
 
 def _declared_later(index: Index, read: Span, declarations: list[Span]) -> Span | None:
