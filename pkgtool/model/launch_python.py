@@ -109,9 +109,11 @@ class _Reader(ast.NodeVisitor):
             unread_argument_defaults(tree)  # module-level ones, files the code writes, and
         # defaults of launch arguments nothing reads
         self.dead = 0  # > 0 inside a node action that is never started
-        self.never_run: set[int] = {id(v) for v in self.unread_paths if self._inert(v)}
-        # ids of values that never run: actions nothing starts (a module-level one nothing
-        # reads too), and what only those read (``cmd = Command([...])`` of such a node)
+        self.never_run: set[int] = {id(v) for v in self.unread_paths if self._inert(v)} \
+            if _describes_launch(tree) else set()
+        # ids of values that never run: actions nothing starts (in a launch file, a
+        # module-level one nothing reads too: a helper module's may be imported from outside
+        # the package), and what only those read (``cmd = Command([...])`` of such a node)
         self.checked: set[tuple[str, tuple[str, ...]]] | None = set()  # share paths asked
         # whether they exist (None: one the reader cannot work out)
         self.read_names = frozenset(n.id for n in nodes_of_class(tree, ast.Name)
@@ -701,6 +703,12 @@ def _concat(items: list[Value]) -> Value:
     if isinstance(head, Share):
         return Share(head.package, head.suffix + tail, head.share)
     return str(head) + tail
+
+
+def _describes_launch(tree: ast.Module) -> bool:
+    """True for a module defining ``generate_launch_description`` at its top level."""
+    return any(isinstance(s, ast.FunctionDef) and s.name == "generate_launch_description"
+               for s in tree.body)
 
 
 def _join(items: list[Value]) -> Value:
