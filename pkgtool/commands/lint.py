@@ -225,8 +225,9 @@ def _model_and_findings(root: Path, *, label: str, settings: Settings, workspace
     from pkgtool.model.package import load_package
     from pkgtool.model.python_visitor import forget_trees
 
-    package = load_package(read_from or root, context_for(root, workspace, settings.rosdistro,
-                                                          settings.python))
+    context = context_for(root, workspace, settings.rosdistro, settings.python)
+    package = load_package(read_from, context, surroundings=root) if read_from else \
+        load_package(root, context)
     try:
         found = _split_check(package, label, settings) if split else None
         if found is None:

@@ -11,6 +11,7 @@ from pkgtool.edit.changes import Changes, FileChange, fix_changes, read_source
 from pkgtool.edit.core import EditError, Fix
 from pkgtool.findings import Finding
 from pkgtool.fix.registry import Refusal, fixers
+from pkgtool.model.files import list_files
 from pkgtool.model.package import Package
 from pkgtool.records import record, replace
 
@@ -55,23 +56,29 @@ def fixes_for(package: Package, findings: list[Finding], *, unsafe: bool
 
 def fix_package(root: Path, label: str, check: Check, *, unsafe: bool, write: bool
                 ) -> FixOutcome:
-    """Fix the package at ``root``; with ``write`` False, fix a copy of it in a temporary
-    folder, every round as ``--fix`` would, and give the diff from the package to the copy."""
+    """Fix the package at ``root``; with ``write`` False, fix a copy of its files in a
+    temporary folder (``check`` reads them in the package's own workspace and repository),
+    every round as ``--fix`` would, and give the diff from the package to the copy."""
     if write:
         return _fix_rounds(root, label, check, unsafe=unsafe)
     with tempfile.TemporaryDirectory(prefix="pkgtool-diff-") as folder:
         copy = Path(folder) / root.name  # as named as the package: rules may read it
         try:
-            shutil.copytree(root, copy, symlinks=True, ignore=_NOT_COPIED)
-        except (OSError, shutil.Error) as error:
+            _copy_files(root, copy)
+        except OSError as error:
             return FixOutcome(error=f"`{label}`: cannot copy the package to show its diff: "
                               f"{error}")
         outcome = _fix_rounds(copy, label, check, unsafe=unsafe)
         return replace(outcome, diff=_diff(root, copy, outcome.touched, label))
 
 
-_NOT_COPIED = shutil.ignore_patterns(".git", "__pycache__", ".pkgtool_cache")
-"""What ``--diff``'s copy of a package leaves out: no fix reads or edits it."""
+def _copy_files(root: Path, copy: Path) -> None:
+    """Copy the files lint reads of the package at ``root`` (symbolic links followed as it
+    follows them; no special files) into the folder ``copy``."""
+    for relpath in list_files(root):
+        target = copy / relpath
+        target.parent.mkdir(parents=True, exist_ok=True)
+        shutil.copyfile(root / relpath, target)
 
 
 def _fix_rounds(root: Path, label: str, check: Check, *, unsafe: bool) -> FixOutcome:

@@ -18,6 +18,7 @@ from pkgtool.findings import Finding
 from pkgtool.fix.common import offer, renames, setup_doc
 from pkgtool.fix.registry import Refusal, fixer
 from pkgtool.lazy_regex import lazy_pattern
+from pkgtool.model.installed import is_ament_python
 from pkgtool.model.launch import LAUNCH_SUFFIXES
 from pkgtool.model.package import Package
 from pkgtool.model.setup_py import DataFile, DataSource
@@ -166,7 +167,11 @@ def _share(doc: SetupDoc, package: Package) -> str:
 @fixer("DAT005", "Install the launch files")
 def launch_files(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
     """Install each folder's launch files by a glob of their suffix (``launch/*.launch.py``)
-    into ``share/<package>/<folder>``. Safe: it only installs files."""
+    into ``share/<package>/<folder>``. Safe: it only installs files. Not for a package built
+    with CMake (its setup.py, if any, is never run): CMakeLists.txt is the user's to edit."""
+    if not is_ament_python(package):
+        yield Refusal("the package is built with CMake: add the `install()` the help names")
+        return
     wanted = dict.fromkeys(_launch_glob(f.span.path) for f in findings)
     for folder, pattern in wanted:
         yield from _offer(package, f"Install `{pattern}`",

@@ -458,8 +458,9 @@ def exception_class(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     for doc, _, nodes in python_nodes(package, findings):
         call = next((n for n in nodes if isinstance(n, ast.Call)), None)
         if call is not None and not call.args and not call.keywords:
-            yield Fix(f"Write `{ast.unparse(call.func)}`",
-                      (Edit(doc.source.path, doc.end(call.func), doc.end(call), ""),))
+            name = ast.unparse(call.func)
+            edit = Edit(doc.source.path, doc.start(call), doc.end(call), name)
+            yield Fix(f"Write `{name}`", (edit,))
 
 
 @fixer("PYC041", "Call `super()` before its `__init__`")

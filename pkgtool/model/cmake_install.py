@@ -208,15 +208,19 @@ def installed_executables(text: str) -> frozenset[str] | None:
     return None if None in found else frozenset(n for n in found if n)
 
 
-def installed_into_share(text: str) -> frozenset[str] | None:
+def installed_into_share(text: str, files: Iterable[str]) -> frozenset[str] | None:
     """The package-relative files and folders ``text`` (a CMakeLists.txt with the files it
     includes) installs under ``share/<project>``, where ``ros2 launch`` looks launch files up:
     the sources of ``install(DIRECTORY|FILES|PROGRAMS ...)`` with such a destination and the
     folders of ``ament_auto_package(INSTALL_TO_SHARE ...)``. None when that is not certain, as
     for :func:`installed_executables` (a command it does not know, a source or destination
-    built from what the file does not set)."""
+    built from what the file does not set, an included file that is not one of the package's
+    ``files``, which ``text`` then lacks)."""
     calls = commands(text)
-    if not _known_commands(calls):
+    listed = frozenset(files)
+    if not _known_commands(calls) or any(
+            name == "include" and args[:1] and args[0] not in _STANDARD_MODULES and
+            _package_path(args[0]) not in listed for name, args in calls):
         return None
     variables = set_variables(calls, frozenset())
     project = _static("${PROJECT_NAME}", variables)
@@ -234,6 +238,14 @@ def installed_into_share(text: str) -> frozenset[str] | None:
     if None in found:
         return None
     return frozenset(posixpath.normpath(n) for n in found if n)  # type: ignore[arg-type]
+
+
+def _package_path(path: str) -> str:
+    """``path`` relative to the package root (``${CMAKE_CURRENT_SOURCE_DIR}/cmake/x.cmake``:
+    ``cmake/x.cmake``); a path leaving the package keeps its ``..``."""
+    for prefix in ("${CMAKE_CURRENT_SOURCE_DIR}/", "${PROJECT_SOURCE_DIR}/"):
+        path = path.removeprefix(prefix)
+    return posixpath.normpath(path)
 
 
 def _known_commands(calls: list[tuple[str, list[str]]]) -> bool:

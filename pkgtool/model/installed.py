@@ -109,10 +109,13 @@ def package_folder(package_name: str, package_dir: dict[str, str]) -> str:
 
 @per_package
 def installed_modules(package: Package) -> dict[str, str] | None:
-    """Every dotted module name setup.py installs, mapped to its package-relative file."""
+    """Every dotted module name setup.py installs, mapped to its package-relative file; None
+    for a package ament builds with CMake, whose setup.py colcon never runs (one left over
+    from an ament_python start), and when not known."""
     setup = package.setup_py
-    if setup is None or not all(keyword_known(package, k)
-                                for k in ("packages", "py_modules", "package_dir")):
+    cmake = not is_ament_python(package) and not (package.manifest and package.manifest.is_ros1)
+    if setup is None or cmake or not all(
+            keyword_known(package, k) for k in ("packages", "py_modules", "package_dir")):
         return None
     if setup.packages is None and setup.py_modules is None:
         return None  # setuptools' automatic discovery decides; not simulated

@@ -373,8 +373,9 @@ class _Reader(ast.NodeVisitor):
             self.checked = None  # a path not worked out: any of the file's may be the one
 
     def _never_started(self, node: ast.Call) -> bool:
-        """A node action (or ``ExecuteProcess``) assigned to a local name never read; any
-        other call so assigned may have effects (``unused = ld.add_action(Node(...))``)."""
+        """An inert launch action (:meth:`_inert`) assigned to a name (or ``self.x``) never
+        read; any other call so assigned may have effects (``unused =
+        ld.add_action(Node(...))``)."""
         return node in self.unread and self._inert(node)
 
     def _record_call(self, node: ast.Call) -> None:

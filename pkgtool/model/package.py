@@ -102,10 +102,13 @@ def _suppressions(path: str, text: str) -> dict[tuple[str, int], frozenset[str]]
     return found
 
 
-def load_package(root: Path, context: Context | None = None) -> Package:
+def load_package(root: Path, context: Context | None = None, *,
+                 surroundings: Path | None = None) -> Package:
     """Read the package at ``root``; never raises for bad content, only records problems.
 
     ``context`` defaults to the default distribution and a workspace of this package alone.
+    ``surroundings``: the folder whose repository (``.gitignore`` files and submodules above
+    it) the package is in, when ``root`` is a copy of it (``lint --diff``); else ``root``.
     The syntax trees (and their facts) kept for the package loaded before are let go.
     """
     forget_trees()
@@ -184,10 +187,11 @@ def load_package(root: Path, context: Context | None = None) -> Package:
     suppressions: dict[tuple[str, int], frozenset[str]] = {}
     for relpath, text in texts.items():
         suppressions.update(_suppressions(relpath, text))
+    place = surroundings or root
     return Package(root, files, manifest, setup_py, setup_cfg, tuple(modules), tuple(launches),
                    tuple(problems), suppressions, texts, frozenset(files), context or Context(),
-                   unfetched_submodules(root, files), _ignores(root, texts),
-                   unfetched_names(root))
+                   unfetched_submodules(place, files), _ignores(place, texts),
+                   unfetched_names(place))
 
 
 _LAUNCH_XML = lazy_pattern(r"\s*(?:<\?xml[^>]*\?>\s*)?(?:<!--.*?-->\s*)*<launch[\s>/]", re.S)

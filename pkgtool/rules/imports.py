@@ -734,9 +734,14 @@ def no_package_named(package: Package, name: str = "") -> str:
     the packages linted with this one (it sees no workspace beyond those); with ``name``, also
     the distributions that release it (``gazebo_ros``: humble), if any."""
     linted = " or of the packages linted with it" if len(package.context.workspace) > 1 else ""
-    elsewhere = ", ".join(d for d in DISTROS if name and is_released_package(name, d))
+    elsewhere = ", ".join(released_for(name)) if name else ""
     released = f" (it is released for {elsewhere})" if elsewhere else ""
     return f"no package of {package.context.distro}'s release{linted} has that name{released}"
+
+
+def released_for(name: str) -> list[str]:
+    """The distributions whose release has a package ``name``, oldest first."""
+    return [distro for distro in DISTROS if is_released_package(name, distro)]
 
 
 def misspelt_package(package: Package, need: Need) -> str | None:

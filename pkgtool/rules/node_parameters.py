@@ -25,7 +25,7 @@ from pkgtool.model.span import Span
 from pkgtool.records import record
 from pkgtool.rules.console_scripts import scripts_and_modules
 from pkgtool.rules.node_api import NODE_CLASSES, name_argument, node_constructions
-from pkgtool.rules.scopes import scope_bindings
+from pkgtool.rules.scopes import single_assignments
 from pkgtool.rules.syntax_trees import Index, installed_trees
 from pkgtool.rules.test_modules import test_files
 from pkgtool.lazy_regex import lazy_pattern
@@ -34,10 +34,11 @@ PERMISSIVE = frozenset({"allow_undeclared_parameters",
                         "automatically_declare_parameters_from_overrides"})
 """Node options that accept parameters nobody declares."""
 READS = frozenset({"get_parameter", "get_parameters"})
+"""Node methods that raise ParameterNotDeclaredException for an undeclared name."""
 SETS = frozenset({"set_parameters", "set_parameters_atomically"})
+"""Node methods that set parameters (ParameterNotDeclaredException for an undeclared one)."""
 PARAMETER_CLASSES = frozenset({"rclpy.parameter.Parameter", "rclpy.Parameter"})
 """What ``Parameter`` objects are made with."""
-"""Node methods that raise ParameterNotDeclaredException for an undeclared name."""
 DECLARES = frozenset({"declare_parameter", "declare_parameters"})
 """Node methods that declare parameters."""
 BUILT_IN = frozenset({"use_sim_time", "start_type_description_service"})
@@ -294,20 +295,12 @@ def _set_names(call: ast.Call, index: Index) -> list[str]:
         return []
     function = index.enclosing_function(call)
     made = [item if isinstance(item, ast.Call) else
-            _made_once(item.id, function) if isinstance(item, ast.Name) and function else None
+            single_assignments(function).get(item.id) if isinstance(item, ast.Name) and function
+            else None
             for item in listed.elts]
     return [name for item in made if isinstance(item, ast.Call) and
             index.qualified(item.func) in PARAMETER_CLASSES and item.args and
             (name := _literal_string(item.args[0])) is not None]
-
-
-def _made_once(name: str, function: ast.AST) -> ast.expr | None:
-    """The value ``name`` is bound to when ``function`` binds it once, by ``name = value``."""
-    if scope_bindings(function)[name] != 1:
-        return None
-    return next((n.value for n in subtree(function) if isinstance(n, ast.Assign) and
-                 len(n.targets) == 1 and isinstance(n.targets[0], ast.Name) and
-                 n.targets[0].id == name), None)
 
 
 def _read_names(call: ast.Call) -> list[str]:

@@ -6,13 +6,13 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator, Mapping
 
 from pkgtool.findings import Hit
-from pkgtool.knowledge.rosdistro import (DISTROS, close_names, digits_differ, is_released_package,
+from pkgtool.knowledge.rosdistro import (close_names, digits_differ, is_released_package,
                                          key_resolves)
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.imports import (ANY, declaration, declared, dependency_cause,
-                                   no_package_named)
+                                   no_package_named, released_for)
 
 
 def unlisted_packages(package: Package, used: Iterable[tuple[str, Span]],
@@ -38,7 +38,7 @@ def unlisted_packages(package: Package, used: Iterable[tuple[str, Span]],
                 if not digits_differ(name, close)]
             missing += f", and {no_package_named(package, name)}"
             missing += f" (did you mean `{meant[0]}`?)" if meant else ""
-            elsewhere = [d for d in DISTROS if is_released_package(name, d)]
+            elsewhere = released_for(name)
             fix = f"Write `{meant[0]}`" if meant else \
                 f"{fix}, and lint with `--rosdistro {elsewhere[-1]}` if the package targets " \
                 f"{elsewhere[-1]}" if elsewhere else "Check the name; declare the package if " \

@@ -114,18 +114,32 @@ def scope_bindings(scope: Scope) -> Counter[str]:
 
 def single_assignments(where: ast.AST) -> dict[str, ast.expr]:
     """Names bound exactly once in ``where`` (a function with its nested scopes, or a whole
-    module), by ``name = value``, with their value."""
+    module), by ``name = value``, with their value: no other binding of the name anywhere in
+    it (an assignment, a parameter, a ``def``, ``class`` or import, ``global``)."""
     counts: dict[str, int] = {}
     values: dict[str, ast.expr] = {}
     for node in ast.walk(where):
-        if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
-            counts[node.id] = counts.get(node.id, 0) + 1
-        elif isinstance(node, ast.arg):
-            counts[node.arg] = counts.get(node.arg, 0) + 2
+        for name, weight in _bound_here(node):
+            counts[name] = counts.get(name, 0) + weight
         if isinstance(node, ast.Assign) and len(node.targets) == 1 and \
                 isinstance(node.targets[0], ast.Name):
             values[node.targets[0].id] = node.value
     return {name: value for name, value in values.items() if counts.get(name) == 1}
+
+
+def _bound_here(node: ast.AST) -> list[tuple[str, int]]:
+    """The names ``node`` binds, each with how much it counts (2: never a plain one)."""
+    if isinstance(node, ast.Name):
+        return [] if isinstance(node.ctx, ast.Load) else [(node.id, 1)]
+    if isinstance(node, ast.arg):
+        return [(node.arg, 2)]
+    if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+        return [(node.name, 2)]
+    if isinstance(node, (ast.Import, ast.ImportFrom)):
+        return [(alias.asname or alias.name.split(".")[0], 2) for alias in node.names]
+    if isinstance(node, (ast.Global, ast.Nonlocal)):
+        return [(name, 2) for name in node.names]
+    return []
 
 
 _PLAIN_DECORATORS = frozenset({"staticmethod", "classmethod"})

@@ -24,6 +24,7 @@ from pkgtool.model.ast_nodes import nodes_of
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
+from pkgtool.rules.scopes import single_assignments
 
 _ROOT = "/package"
 """Where the package's root stands in the absolute paths worked out here."""
@@ -103,7 +104,7 @@ def _edits(tree: ast.Module, calls: list[ast.Call], path: str, package: Package
     """(line, package-relative folder) of each ``sys.path`` edit (``calls``) of a folder of
     the package, and (line, None) of each of a folder above the package's."""
     aliases = _aliases(tree)
-    once = _assigned_once(tree)
+    once = single_assignments(tree)
     for node in calls:
         folder = _path(node.args[-1], _Source(path, package.name), aliases, once, 0)
         relative = _relative(folder) if folder is not None else None
@@ -126,7 +127,7 @@ def file_relative_paths(tree: ast.Module, path: str) -> Iterator[tuple[ast.expr,
     """Each call or operation of the module at ``path`` that builds a path from its
     ``__file__`` (``os.path.join(os.path.dirname(__file__), 'sounds', 'x.mp3')``), with the
     package-relative path it evaluates to (none that leaves the package)."""
-    aliases, once = _aliases(tree), _assigned_once(tree)
+    aliases, once = _aliases(tree), single_assignments(tree)
     for node in nodes_of(tree):
         if isinstance(node, (ast.Call, ast.BinOp)):  # no package: no share folder stands in
             found = _path(node, _Source(path, ""), aliases, once, 0)
@@ -150,33 +151,6 @@ def _aliases(tree: ast.Module) -> dict[str, str]:
             for alias in node.names:
                 found[alias.asname or alias.name] = f"{node.module}.{alias.name}"
     return found
-
-
-def _assigned_once(tree: ast.Module) -> dict[str, ast.expr]:
-    """Names bound exactly once in the whole module, by a ``name = value`` at module level or
-    in a function (``base = os.path.dirname(__file__)`` in ``__init__``): every read of such a
-    name that does not fail reads that value."""
-    counts: dict[str, int] = {}
-    assigned: list[ast.Assign] = []
-    for node in nodes_of(tree):
-        if isinstance(node, ast.Name) and isinstance(node.ctx, (ast.Store, ast.Del)):
-            counts[node.id] = counts.get(node.id, 0) + 1
-        elif isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
-            counts[node.name] = counts.get(node.name, 0) + 1
-        elif isinstance(node, ast.arg):
-            counts[node.arg] = counts.get(node.arg, 0) + 1
-        elif isinstance(node, (ast.Import, ast.ImportFrom)):
-            for alias in node.names:
-                name = alias.asname or alias.name.split(".")[0]
-                counts[name] = counts.get(name, 0) + 1
-        elif isinstance(node, (ast.Global, ast.Nonlocal)):
-            for name in node.names:
-                counts[name] = counts.get(name, 0) + 2
-        elif isinstance(node, ast.Assign):
-            assigned.append(node)
-    return {target.id: node.value for node in assigned
-            if len(node.targets) == 1 and isinstance(target := node.targets[0], ast.Name)
-            and counts.get(target.id) == 1}
 
 
 def _dotted(node: ast.expr, aliases: dict[str, str]) -> str | None:

@@ -69,6 +69,20 @@ def test_diff_shows_every_round_of_fix(tmp_path: Path) -> None:
     assert (tmp_path / "shown" / "pkg" / "package.xml").read_text() == files["package.xml"]
 
 
+def test_diff_reads_the_files_lint_reads(tmp_path: Path) -> None:
+    """``--diff`` fixes a copy of the files lint reads: a folder linked in from elsewhere in
+    the repository is followed (its import needs a key), a named pipe is not copied."""
+    (tmp_path / "shared" / "helpers").mkdir(parents=True)
+    (tmp_path / "shared" / "helpers" / "util.py").write_text("import yaml\n")
+    (tmp_path / "shared" / "helpers" / "__init__.py").write_text("")
+    write_tree(tmp_path / "pkg", correct_package_files("pkg"))
+    (tmp_path / "pkg" / "pkg" / "helpers").symlink_to(tmp_path / "shared" / "helpers")
+    os.mkfifo(tmp_path / "pkg" / "pkg" / "pipe")
+    shown = run_cli("lint", "--diff", "pkg", cwd=tmp_path)
+    assert shown.exit_code == 1, shown.output
+    assert "+  <exec_depend>python3-yaml</exec_depend>" in shown.stdout
+
+
 def test_fix_repairs_then_reports_what_is_left_and_is_idempotent(package: Path) -> None:
     untouched = {k: v for k, v in _snapshot(package).items() if k != "package.xml"}
     first = run_cli("lint", "--fix", "--strict", "pkg", cwd=package.parent)

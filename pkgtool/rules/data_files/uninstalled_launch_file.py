@@ -82,18 +82,19 @@ def _not_installed_by_cmake(package: Package) -> Iterator[Hit]:
     """The launch files of a package built with CMake that no ``install()`` puts under
     ``share/<package>`` (when what its CMakeLists.txt installs there is known)."""
     text = cmake_text(package) if package.has_file("package.xml") else None
-    installed = installed_into_share(text) if text is not None else None
+    installed = installed_into_share(text, package.files) if text is not None else None
     if installed is None:
         return
     for path in _launch_files(package):
         if not any(folder in ("", ".") or path == folder or path.startswith(folder + "/")
                    for folder in installed):
-            name = path.rsplit("/", 1)[-1]
+            folder, _, name = path.rpartition("/")
+            install = f"DIRECTORY {folder.split('/')[0]}" if folder else f"FILES {path}"
             yield Hit(Span(path, 1, 1), f"`{path}` is not installed under `share/"
                       f"{package.name}`: no `install()` of CMakeLists.txt names it or its folder,"
                       f" so `ros2 launch {package.name} {name}` will not find it",
-                      f"Add `install(DIRECTORY {path.split('/')[0]} DESTINATION "
-                      "share/${PROJECT_NAME})` to CMakeLists.txt")
+                      f"Add `install({install} DESTINATION share/${{PROJECT_NAME}})` to "
+                      "CMakeLists.txt")
 
 
 def _launch_files(package: Package) -> list[str]:
