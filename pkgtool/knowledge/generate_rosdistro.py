@@ -57,6 +57,7 @@ DIST_MODULES: dict[str, tuple[str, ...]] = {
     "python-vlc": ("vlc",), "jetson-stats": ("jtop",), "sparkfun-ublox-gps": ("ublox_gps",),
     "adafruit-blinka": ("adafruit_blinka", "board", "busio", "digitalio", "microcontroller"),
     "python-socketio": ("socketio",), "python-dotenv": ("dotenv",), "numpy-stl": ("stl",),
+    "future": ("future", "past", "libfuturize", "libpasteurize"),
 }
 """Distribution names (PyPI, or Debian/Gentoo without ``python3-``) whose modules have other names.
 
