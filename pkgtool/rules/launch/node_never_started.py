@@ -57,5 +57,7 @@ def launch_node_never_started(package: Package) -> Iterator[Hit]:
         for node in launch.nodes:
             if node.unused and not _disabled(lines, node.span.line):
                 started = f"`{node.executable}`" if node.executable else "this node"
-                yield Hit(node.span, f"The `{node.action}` action for {started} is assigned "
-                          "to a name that nothing uses to start it: the node is never started")
+                action = f"`{node.action}` action" if node.action else \
+                    "`ExecuteProcess` running `ros2 run`"
+                yield Hit(node.span, f"The {action} for {started} is assigned to a name that "
+                          "nothing uses to start it: the node is never started")
