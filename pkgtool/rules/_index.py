@@ -90,6 +90,8 @@ RULES = {
     "LCH020": ("launch-argument-never-declared", "error", True, "launch.argument_never_declared"),
     "LCH021": ("parameter-value-as-file", "error", True, "launch.parameter_value_as_file"),
     "LCH022": ("duplicate-node-name", "warning", True, "launch.duplicate_node_name"),
+    "LCH023": ("substitution-tested-in-python", "error", True,
+               "launch.substitution_tested_in_python"),
     "MAN001": ("invalid-package-name", "error", True, "manifest.invalid_package_name"),
     "MAN002": ("invalid-version", "error", True, "manifest.invalid_version"),
     "MAN003": ("missing-required-element", "error", True, "manifest.missing_required_element"),

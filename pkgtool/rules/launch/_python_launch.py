@@ -35,6 +35,21 @@ def launch_class(call: ast.Call, index: Index) -> tuple[str, str]:
     return (module, name) if module.split(".")[0] in ("launch", "launch_ros") else ("", "")
 
 
+SUBSTITUTIONS = ("launch.substitutions", "launch_ros.substitutions")
+"""The modules whose classes are all substitutions."""
+
+
+def substitution_made(value: ast.expr, index: Index, single: dict[str, ast.expr]) -> str | None:
+    """The substitution class ``value`` makes (directly, or through a name the function binds
+    once, to it: ``single``), else None."""
+    if isinstance(value, ast.Name) and value.id in single:
+        value = single[value.id]
+    if not isinstance(value, ast.Call):
+        return None
+    module, name = launch_class(value, index)
+    return name if within(module, SUBSTITUTIONS) and name[:1].isupper() else None
+
+
 @per_package
 def launch_tests(package: Package) -> tuple[LaunchFile, ...]:
     """The package's ``launch_testing`` tests (modules defining ``generate_test_description``)

@@ -9,24 +9,10 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import last_name
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.launch._python_launch import launch_class, within
+from pkgtool.rules.launch._python_launch import substitution_made
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import single_assignments
 from pkgtool.rules.syntax_trees import Index, launch_indexes
-
-SUBSTITUTIONS = ("launch.substitutions", "launch_ros.substitutions")
-"""The modules whose classes are all substitutions."""
-
-
-def _substitution(value: ast.expr, index: Index, single: dict[str, ast.expr]) -> str | None:
-    """The substitution class ``value`` makes (directly, or through a name the function binds
-    once, to it), else None."""
-    if isinstance(value, ast.Name) and value.id in single:
-        value = single[value.id]
-    if not isinstance(value, ast.Call):
-        return None
-    module, name = launch_class(value, index)
-    return name if within(module, SUBSTITUTIONS) and name[:1].isupper() else None
 
 
 def _text(value: ast.expr) -> bool:
@@ -73,7 +59,7 @@ def substitution_added_to_text(package: Package) -> Iterator[Hit]:
                         index.enclosing_function(node) is not function:
                     continue
                 pair = (node.left, node.right)
-                made = next((m for m in (_substitution(v, index, single) for v in pair) if m),
+                made = next((m for m in (substitution_made(v, index, single) for v in pair) if m),
                             None)
                 if made and any(_text(v) for v in pair):
                     yield Hit(Span(path, node.lineno, node.col_offset + 1),
@@ -103,7 +89,7 @@ def _joined_otherwise(path: str, function: ast.AST, index: Index, single: dict[s
         if index.enclosing_function(node) is not function:
             continue
         if isinstance(node, ast.Call) and index.qualified(node.func) == "os.path.join":
-            made = next((m for m in (_substitution(a, index, single) for a in node.args)
+            made = next((m for m in (substitution_made(a, index, single) for a in node.args)
                          if m), None)
             if made:
                 yield Hit(Span(path, node.lineno, node.col_offset + 1),
@@ -111,7 +97,7 @@ def _joined_otherwise(path: str, function: ast.AST, index: Index, single: dict[s
                           "substitution is no path)",
                           "Use `PathJoinSubstitution([...])` with the same parts")
         elif isinstance(node, ast.FormattedValue) and not _only_shown(node, index):
-            made = _substitution(node.value, index, single)
+            made = substitution_made(node.value, index, single)
             if made:
                 yield Hit(Span(path, node.value.lineno, node.value.col_offset + 1),
                           f"A `{made}` is formatted into an f-string: the text is the object's "
