@@ -217,10 +217,7 @@ def installed_into_share(text: str, files: Iterable[str]) -> frozenset[str] | No
     built from what the file does not set, an included file that is not one of the package's
     ``files``, which ``text`` then lacks)."""
     calls = commands(text)
-    listed = frozenset(files)
-    if not _known_commands(calls) or any(
-            name == "include" and args[:1] and args[0] not in _STANDARD_MODULES and
-            _package_path(args[0]) not in listed for name, args in calls):
+    if not _known_commands(calls, frozenset(files)):
         return None
     variables = set_variables(calls, frozenset())
     project = _static("${PROJECT_NAME}", variables)
@@ -248,11 +245,15 @@ def _package_path(path: str) -> str:
     return posixpath.normpath(path)
 
 
-def _known_commands(calls: list[tuple[str, list[str]]]) -> bool:
+def _known_commands(calls: list[tuple[str, list[str]]], files: frozenset[str] | None = None
+                    ) -> bool:
     """True when every command of ``calls`` is one of :data:`_PLAIN_COMMANDS`, and every
-    included file a CMake module or a ``.cmake`` file of the package."""
+    included file a CMake module or a ``.cmake`` file (with ``files``, one of these files of
+    the package: a file outside it is not in the text read)."""
     return not any(name not in _PLAIN_COMMANDS or name == "include" and args[:1] and
-                   args[0] not in _STANDARD_MODULES and not args[0].endswith(".cmake")
+                   args[0] not in _STANDARD_MODULES and (
+                       not args[0].endswith(".cmake") or
+                       files is not None and _package_path(args[0]) not in files)
                    for name, args in calls)
 
 

@@ -175,8 +175,13 @@ KEPT_ASIDE = lazy_pattern(r"(?i)(?:^|[_.\- (\[])(?:old|orig|original|copy|backup
 def kept_aside(path: str) -> bool:
     """True for a file named as a copy kept aside, or kept in a folder so named: nobody runs
     it, and a whole installed folder carries it along."""
-    *folders, name = path.split("/")
-    return any(KEPT_ASIDE.search(part) for part in (*folders, name.rsplit(".", 1)[0]))
+    name = path.rpartition("/")[2]
+    return in_folder_kept_aside(path) or KEPT_ASIDE.search(name.rsplit(".", 1)[0]) is not None
+
+
+def in_folder_kept_aside(path: str) -> bool:
+    """True for a file below a folder named as kept aside (``backup/``, ``old_launch/``)."""
+    return any(KEPT_ASIDE.search(part) for part in path.split("/")[:-1])
 
 
 def is_launch_file(path: str, python_folders: frozenset[str] = frozenset(),
@@ -194,7 +199,7 @@ def is_launch_file(path: str, python_folders: frozenset[str] = frozenset(),
     """
     folder, _, name = path.rpartition("/")
     if not name.endswith(LAUNCH_SUFFIXES) or is_template(path) or below(path, nested) or \
-            any(KEPT_ASIDE.search(part) for part in folder.split("/") if part):
+            in_folder_kept_aside(path):
         return False
     parts = folder.split("/") if folder else []
     if "launch" in parts:

@@ -109,11 +109,13 @@ class _Reader(ast.NodeVisitor):
             unread_argument_defaults(tree)  # module-level ones, files the code writes, and
         # defaults of launch arguments nothing reads
         self.dead = 0  # > 0 inside a node action that is never started
-        self.never_run: set[int] = {id(v) for v in self.unread_paths if self._inert(v)} \
-            if _describes_launch(tree) else set()
-        # ids of values that never run: actions nothing starts (in a launch file, a
-        # module-level one nothing reads too: a helper module's may be imported from outside
-        # the package), and what only those read (``cmd = Command([...])`` of such a node)
+        self.never_run: set[int] = {id(v) for v in self.unread if self._inert(v)} | (
+            {id(v) for v in self.unread_paths if self._inert(v)}
+            if _describes_launch(tree) else set())
+        # ids of values that never run: actions nothing starts (``self.x = Node(...)`` never
+        # read; in a launch file, a module-level one nothing reads too: a helper module's may
+        # be imported from outside the package; a function's, added when it is visited), and
+        # what only those read (``cmd = Command([...])`` of such a node)
         self.checked: set[tuple[str, tuple[str, ...]]] | None = set()  # share paths asked
         # whether they exist (None: one the reader cannot work out)
         self.read_names = frozenset(n.id for n in nodes_of_class(tree, ast.Name)
@@ -345,8 +347,6 @@ class _Reader(ast.NodeVisitor):
     def visit_Call(self, node: ast.Call) -> None:
         if last_name(node.func) in EXISTENCE_CHECKS:
             self._record_check(node)
-        dead = self._never_started(node)
-        self.dead += dead
         self._record_call(node)
         parts = node.args[0] if node.args and last_name(node.func).endswith(JOINED_PARTS) else None
         items = parts.elts if isinstance(parts, (ast.List, ast.Tuple)) else []
@@ -355,7 +355,6 @@ class _Reader(ast.NodeVisitor):
                     after.value[:1].isspace()):  # the next part goes on with its text
                 self.continued.update(id(n) for n in ast.walk(part))
         self.generic_visit(node)
-        self.dead -= dead
 
     def _record_check(self, node: ast.Call) -> None:
         """Note the share path ``os.path.exists(path)`` or ``Path(path).exists()`` asks about."""
@@ -371,12 +370,6 @@ class _Reader(ast.NodeVisitor):
                 self.checked.add((found.package, found.parts))
         elif not isinstance(found, str):
             self.checked = None  # a path not worked out: any of the file's may be the one
-
-    def _never_started(self, node: ast.Call) -> bool:
-        """An inert launch action (:meth:`_inert`) assigned to a name (or ``self.x``) never
-        read; any other call so assigned may have effects (``unused =
-        ld.add_action(Node(...))``)."""
-        return node in self.unread and self._inert(node)
 
     def _record_call(self, node: ast.Call) -> None:
         name, action = self._function_name(node.func), self._action(node.func)

@@ -72,7 +72,7 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
     unmet = (need for need in unmet_runtime_needs(package)  # not DEP004's, DEP002's cases
              if need.kind != "unknown" and not any(k in build_only for k in need.keys) and
              not any(names_module(key, need.imported.top_level) for key in unknown) and
-             not (need.key in package.context.workspace and depends_on(package, need.key)))
+             not depends_on(package, need.key))
     for need, others in grouped(unmet, by_key=True):
         meant = misspelt_package(package, need)
         if meant is not None:

@@ -4,11 +4,14 @@ make (which files they read: :func:`pkgtool.rules.syntax_trees.launch_indexes`).
 from __future__ import annotations
 
 import ast
+from collections.abc import Iterable, Iterator
 
+from pkgtool.model.ast_nodes import subtree
 from pkgtool.model.launch import LaunchFile, is_launch_test, parse_launch
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
-from pkgtool.rules.syntax_trees import Index
+from pkgtool.rules.scopes import single_assignments
+from pkgtool.rules.syntax_trees import Index, launch_indexes
 
 FUNCTION = "generate_launch_description"
 """The function ``ros2 launch`` calls in a Python launch file."""
@@ -35,6 +38,24 @@ def launch_class(call: ast.Call, index: Index) -> tuple[str, str]:
     return (module, name) if module.split(".")[0] in ("launch", "launch_ros") else ("", "")
 
 
+def own_nodes(function: ast.AST, index: Index) -> Iterator[ast.AST]:
+    """The nodes of ``function``'s own body (those of a nested function are its own), in
+    walk order."""
+    return (node for node in subtree(function) if index.enclosing_function(node) is function)
+
+
+def launch_function_nodes(package: Package
+                          ) -> Iterator[tuple[str, Index, dict[str, ast.expr], ast.AST]]:
+    """Each node of the own body of each function of the package's Python launch files, with
+    the file's path and index and the names the function binds once, to their values
+    (:func:`~pkgtool.rules.scopes.single_assignments`)."""
+    for path, index in launch_indexes(package):
+        for function in index.functions:
+            single = single_assignments(function)
+            for node in own_nodes(function, index):
+                yield path, index, single, node
+
+
 SUBSTITUTIONS = ("launch.substitutions", "launch_ros.substitutions")
 """The modules whose classes are all substitutions."""
 
@@ -48,6 +69,14 @@ def substitution_made(value: ast.expr, index: Index, single: dict[str, ast.expr]
         return None
     module, name = launch_class(value, index)
     return name if within(module, SUBSTITUTIONS) and name[:1].isupper() else None
+
+
+def first_substitution(values: Iterable[ast.expr], index: Index, single: dict[str, ast.expr]
+                       ) -> str | None:
+    """The class of the first of ``values`` that is a substitution (:func:`substitution_made`),
+    else None."""
+    return next((made for value in values
+                 if (made := substitution_made(value, index, single))), None)
 
 
 @per_package

@@ -6,10 +6,9 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import subtree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.launch._python_launch import launch_class
+from pkgtool.rules.launch._python_launch import launch_class, own_nodes
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import bound_names
 from pkgtool.rules.syntax_trees import Index, launch_indexes
@@ -23,13 +22,12 @@ def _tupled(function: ast.FunctionDef | ast.AsyncFunctionDef, index: Index
     (``node = Node(...),``), with their assignment."""
     bound = bound_names(function)
     found = {}
-    for node in subtree(function):
+    for node in own_nodes(function, index):
         if isinstance(node, ast.Assign) and len(node.targets) == 1 and \
                 isinstance(target := node.targets[0], ast.Name) and bound[target.id] == 1 and \
                 isinstance(node.value, ast.Tuple) and len(node.value.elts) == 1 and \
                 isinstance(item := node.value.elts[0], ast.Call) and \
-                launch_class(item, index)[0].startswith(_ACTION_MODULES) and \
-                index.enclosing_function(node) is function:
+                launch_class(item, index)[0].startswith(_ACTION_MODULES):
             found[target.id] = node
     return found
 
@@ -38,8 +36,8 @@ def _given(function: ast.FunctionDef | ast.AsyncFunctionDef, names: dict[str, as
            index: Index) -> Iterator[ast.Name]:
     """Reads of ``names`` that hand the tuple to the launch as one entity: an item of a list
     or tuple display given to ``LaunchDescription(...)``, or ``add_action(name)``."""
-    for node in subtree(function):
-        if not isinstance(node, ast.Call) or index.enclosing_function(node) is not function:
+    for node in own_nodes(function, index):
+        if not isinstance(node, ast.Call):
             continue
         if launch_class(node, index)[1] == "LaunchDescription" and node.args and \
                 isinstance(node.args[0], (ast.List, ast.Tuple)):

@@ -9,10 +9,10 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import last_name
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.launch._python_launch import substitution_made
+from pkgtool.rules.launch._python_launch import (first_substitution, launch_function_nodes,
+                                                 substitution_made)
 from pkgtool.rules.registry import rule
-from pkgtool.rules.scopes import single_assignments
-from pkgtool.rules.syntax_trees import Index, launch_indexes
+from pkgtool.rules.syntax_trees import Index
 
 
 def _text(value: ast.expr) -> bool:
@@ -51,21 +51,16 @@ def substitution_added_to_text(package: Package) -> Iterator[Hit]:
     Node(..., namespace=[namespace, '/camera'])
     ```
     """
-    for path, index in launch_indexes(package):
-        for function in index.functions:
-            single = single_assignments(function)
-            for node in ast.walk(function):
-                if not (isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add)) or \
-                        index.enclosing_function(node) is not function:
-                    continue
-                pair = (node.left, node.right)
-                made = next((m for m in (substitution_made(v, index, single) for v in pair) if m),
-                            None)
-                if made and any(_text(v) for v in pair):
-                    yield Hit(Span(path, node.lineno, node.col_offset + 1),
-                              f"A `{made}` is joined to a string with `+`: it raises "
-                              "TypeError (a substitution is no string)")
-            yield from _joined_otherwise(path, function, index, single)
+    for path, index, single, node in launch_function_nodes(package):
+        if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Add):
+            pair = (node.left, node.right)
+            made = first_substitution(pair, index, single)
+            if made and any(_text(v) for v in pair):
+                yield Hit(Span(path, node.lineno, node.col_offset + 1),
+                          f"A `{made}` is joined to a string with `+`: it raises TypeError (a "
+                          "substitution is no string)")
+        else:
+            yield from _joined_otherwise(path, node, index, single)
 
 
 _SHOWN = frozenset({"print", "debug", "info", "warning", "warn", "error", "critical",
@@ -81,24 +76,20 @@ def _only_shown(node: ast.FormattedValue, index: Index) -> bool:
     return isinstance(call, ast.Call) and string in call.args and last_name(call.func) in _SHOWN
 
 
-def _joined_otherwise(path: str, function: ast.AST, index: Index, single: dict[str, ast.expr]
+def _joined_otherwise(path: str, node: ast.AST, index: Index, single: dict[str, ast.expr]
                       ) -> Iterator[Hit]:
-    """Substitutions given to ``os.path.join`` (TypeError) or formatted into an f-string (the
-    object's repr, not its value), in ``function``'s own body."""
-    for node in ast.walk(function):
-        if index.enclosing_function(node) is not function:
-            continue
-        if isinstance(node, ast.Call) and index.qualified(node.func) == "os.path.join":
-            made = next((m for m in (substitution_made(a, index, single) for a in node.args)
-                         if m), None)
-            if made:
-                yield Hit(Span(path, node.lineno, node.col_offset + 1),
-                          f"A `{made}` is given to `os.path.join`: it raises TypeError (a "
-                          "substitution is no path)",
-                          "Use `PathJoinSubstitution([...])` with the same parts")
-        elif isinstance(node, ast.FormattedValue) and not _only_shown(node, index):
-            made = substitution_made(node.value, index, single)
-            if made:
-                yield Hit(Span(path, node.value.lineno, node.value.col_offset + 1),
-                          f"A `{made}` is formatted into an f-string: the text is the object's "
-                          f"repr (`<{made} object at 0x...>`), not the value launch gives it")
+    """A hit when ``node`` gives a substitution to ``os.path.join`` (TypeError) or formats one
+    into an f-string (the object's repr, not its value)."""
+    if isinstance(node, ast.Call) and index.qualified(node.func) == "os.path.join":
+        made = first_substitution(node.args, index, single)
+        if made:
+            yield Hit(Span(path, node.lineno, node.col_offset + 1),
+                      f"A `{made}` is given to `os.path.join`: it raises TypeError (a "
+                      "substitution is no path)",
+                      "Use `PathJoinSubstitution([...])` with the same parts")
+    elif isinstance(node, ast.FormattedValue) and not _only_shown(node, index):
+        made = substitution_made(node.value, index, single)
+        if made:
+            yield Hit(Span(path, node.value.lineno, node.value.col_offset + 1),
+                      f"A `{made}` is formatted into an f-string: the text is the object's "
+                      f"repr (`<{made} object at 0x...>`), not the value launch gives it")

@@ -9,22 +9,14 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.span import Span
 from pkgtool.model.package import Package
-from pkgtool.rules.launch._python_launch import substitution_made
+from pkgtool.rules.launch._python_launch import (first_substitution, launch_function_nodes,
+                                                 substitution_made)
 from pkgtool.rules.registry import rule
-from pkgtool.rules.scopes import single_assignments
-from pkgtool.rules.syntax_trees import Index, launch_indexes
+from pkgtool.rules.syntax_trees import Index
 
 _EQUALITY = (ast.Eq, ast.NotEq)
-
-
-def _tested(function: ast.AST, index: Index) -> Iterator[ast.expr]:
-    """The expressions ``function``'s own body tests for truth: of ``if``, ``while``, a
-    conditional expression, ``assert``, ``not`` and the operands of ``and``/``or`` among them."""
-    for node in ast.walk(function):
-        if index.enclosing_function(node) is not function:
-            continue
-        if isinstance(node, (ast.If, ast.While, ast.IfExp, ast.Assert)):
-            yield from _operands(node.test)
+_TESTS = (ast.If, ast.While, ast.IfExp, ast.Assert)
+"""What tests an expression for truth: ``if``, ``while``, ``x if test else y``, ``assert``."""
 
 
 def _operands(test: ast.expr) -> Iterator[ast.expr]:
@@ -73,27 +65,31 @@ def substitution_tested_in_python(package: Package) -> Iterator[Hit]:
                         condition=IfCondition(use_rviz)))
     ```
     """
-    for path, index in launch_indexes(package):
-        for function in index.functions:
-            single = single_assignments(function)
-            for test in _tested(function, index):
-                made = substitution_made(test, index, single)
-                if made:
-                    yield Hit(Span(path, test.lineno, test.col_offset + 1),
-                              f"`{ast.unparse(test)}` is a `{made}` object here, always true: "
-                              "the test takes the same branch whatever value launch gives it")
-            for node in ast.walk(function):
-                if isinstance(node, ast.Compare) and len(node.ops) == 1 and \
-                        isinstance(node.ops[0], _EQUALITY) and \
-                        index.enclosing_function(node) is function:
-                    yield from _compared(path, node, index, single)
+    for path, index, single, node in launch_function_nodes(package):
+        if isinstance(node, _TESTS):
+            yield from _tested(path, node.test, index, single)  # type: ignore[attr-defined]
+        elif isinstance(node, ast.Compare) and len(node.ops) == 1 and \
+                isinstance(node.ops[0], _EQUALITY):
+            yield from _compared(path, node, index, single)
+
+
+def _tested(path: str, test: ast.expr, index: Index, single: dict[str, ast.expr]
+            ) -> Iterator[Hit]:
+    """A hit for each substitution ``test`` tests for truth (through ``not``, ``and``,
+    ``or``)."""
+    for operand in _operands(test):
+        made = substitution_made(operand, index, single)
+        if made:
+            yield Hit(Span(path, operand.lineno, operand.col_offset + 1),
+                      f"`{ast.unparse(operand)}` is a `{made}` object here, always true: the "
+                      "test takes the same branch whatever value launch gives it")
 
 
 def _compared(path: str, compare: ast.Compare, index: Index, single: dict[str, ast.expr]
               ) -> Iterator[Hit]:
     """A hit for a substitution compared with a string (never equal: no ``__eq__``)."""
     sides = (compare.left, compare.comparators[0])
-    made = next((m for m in (substitution_made(s, index, single) for s in sides) if m), None)
+    made = first_substitution(sides, index, single)
     if made and any(_text(side) for side in sides):
         result = "False" if isinstance(compare.ops[0], ast.Eq) else "True"
         yield Hit(Span(path, compare.lineno, compare.col_offset + 1),
