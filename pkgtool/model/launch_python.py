@@ -417,9 +417,8 @@ class _Reader(ast.NodeVisitor):
         if runs in COMMAND_PACKAGES:
             self.packages.append(PackageRef(COMMAND_PACKAGES[runs], self._span(node),
                                             bool(self.optional), bool(self.dead)))
-        if name == "ExecutableInPackage":  # (executable, package): looked up in the ament index
-            package = self.value(_keyword(node, "package") or
-                                 (node.args[1] if len(node.args) > 1 else None))
+        if name in ("ExecutableInPackage", "MoveItConfigsBuilder"):  # looked up in the index
+            package = self._indexed_package(node, name)
             if isinstance(package, str) and package:
                 self.packages.append(PackageRef(package, self._span(node), bool(self.optional),
                                                 bool(self.dead)))
@@ -432,6 +431,19 @@ class _Reader(ast.NodeVisitor):
                                                 bool(self.optional),
                                                 bool(self.dead) and name in SUBSTITUTIONS))
         self._record_path(node)
+
+    def _indexed_package(self, node: ast.Call, name: str) -> Value:
+        """The package ``ExecutableInPackage(executable, package)`` or
+        ``MoveItConfigsBuilder(robot, description, package_name)`` finds in the ament index (the
+        builder's default: ``<robot>_moveit_config``), when written out."""
+        if name == "ExecutableInPackage":
+            return self.value(_keyword(node, "package") or
+                              (node.args[1] if len(node.args) > 1 else None))
+        given = _keyword(node, "package_name") or (node.args[2] if len(node.args) > 2 else None)
+        if given is not None:
+            return self.value(given)
+        robot = self.value(_keyword(node, "robot_name") or (node.args[0] if node.args else None))
+        return f"{robot}_moveit_config" if isinstance(robot, str) and robot else None
 
     def _command_executable(self, node: ast.Call) -> str | None:
         """The executable a ``Command`` substitution runs, when written out: the first word of

@@ -13,7 +13,7 @@ from pkgtool.knowledge.rosdistro import is_released_package, modules_of_key
 from pkgtool.model.installed import installed_modules
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.rules.imports import (ANY, also_imported, declared, grouped, installed_code,
-                                   needs, source_path_module)
+                                   needs, released_for, source_path_module)
 from pkgtool.rules.registry import rule
 from pkgtool.rules.test_modules import test_files
 from pkgtool.lazy_regex import lazy_pattern
@@ -36,7 +36,9 @@ def unknown_import(package: Package) -> Iterator[Hit]:
     (released for the target distribution, or ROS by name), and not a module that rosdep's
     data maps to a key (the pip and Debian names in rosdistro's `python.yaml`), unless a key
     that looks like it (`python3-<name>`, `python3-<name>-pip` or the bare name) is
-    declared. The suggested key is a guess from the module name. ROS 1 modules (`rospy`,
+    declared. The suggested key is a guess from the module name; for a ROS package that
+    another distribution releases (`tiago_description` on Jazzy) the finding says so and names
+    the package instead. ROS 1 modules (`rospy`,
     `tf`) and Python 2 standard modules (`Queue`, `urllib2`) are reported as such, and so
     is the name of a package of the workspace that installs no Python package (a CMake
     package without `ament_python_install_package`).
@@ -101,6 +103,15 @@ def unknown_import(package: Package) -> Iterator[Hit]:
                 yield Hit(need.imported.span, f"`{need.top}` is a ROS 1 module: ROS 2 does not "
                           f"have it{also_imported(others)}",
                           f"Port the code to {ROS1_PACKAGES[need.top]}", related)
+            elif elsewhere := released_for(need.top):
+                yield Hit(need.imported.span,
+                          f"`{need.top}` is a ROS package released for {', '.join(elsewhere)}"
+                          f" but not for {package.context.distro}, the target"
+                          f"{also_imported(others)}: on {package.context.distro} it must be "
+                          "built from source in the workspace",
+                          f"Declare `<exec_depend>{need.top}</exec_depend>` and build "
+                          f"`{need.top}` from source, or target a distribution that releases "
+                          "it (`--rosdistro`)", related)
             else:
                 yield Hit(need.imported.span,
                           f"`{need.top}` is not a known ROS package or Python module; its "

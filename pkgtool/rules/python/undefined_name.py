@@ -37,7 +37,9 @@ def undefined_name(package: Package) -> Iterator[Hit]:
     reports its "undefined name" messages (not for names the module stores through
     `globals()`, as generated API clients' lazy imports do), with pyflakes' own handling of
     builtins, `__all__`, star imports, conditional definitions and `except
-    NameError` guards; a `try` of one or two assignments whose handler catches anything and
+    NameError` guards (also over the functions and classes such a `try` defines after
+    reading the bare name: `try: unicode` / `def text(v): return isinstance(v, unicode)`);
+    a `try` of one or two assignments whose handler catches anything and
     assigns the same names (`try: text = unicode` / `except Exception: text = str`) is
     such a guard too. Code that never runs on Python 3 is skipped: branches of `if
     sys.version_info < (3,):`, `if six.PY2:` or of a module constant set once to False, lines
@@ -126,6 +128,8 @@ def _bound_at_run_time(tree: ast.Module, line: int, column: int, name: str) -> b
     if node is None or node.id != name:
         return False
     parents = walk_once(tree).parents
+    if _defined_after_probe(node, name, parents):
+        return True
     child, parent = node, parents.get(id(node))
     lambdas: list[ast.Lambda] = []
     branched = False  # the read is in a branch some pass may skip
@@ -148,6 +152,24 @@ def _bound_at_run_time(tree: ast.Module, line: int, column: int, name: str) -> b
         child, parent = parent, parents.get(id(parent))
     return isinstance(parent, (ast.FunctionDef, ast.AsyncFunctionDef)) and not lambdas and \
         _called_only_when_defined(tree, parent, name, parents)
+
+
+def _defined_after_probe(node: ast.Name, name: str, parents: dict[int, ast.AST]) -> bool:
+    """True when ``node`` is inside a function or class defined in the body of a ``try``
+    that reads the bare ``name`` first and catches NameError (``try: unicode`` / ``def
+    text(v): return isinstance(v, unicode)`` / ``except NameError: ...``): where ``name`` is
+    undefined the probe raises, and the definition never happens."""
+    child, parent = node, parents.get(id(node))
+    while parent is not None:
+        if isinstance(parent, ast.Try) and isinstance(child, _DEFINITIONS) and \
+                any(child is s for s in parent.body) and \
+                any(catches_name_error(h) for h in parent.handlers):
+            before = parent.body[:parent.body.index(child)]
+            if any(isinstance(s, ast.Expr) and isinstance(s.value, ast.Name) and
+                   s.value.id == name for s in before):
+                return True
+        child, parent = parent, parents.get(id(parent))
+    return False
 
 
 def _called_only_when_defined(tree: ast.Module, function: ast.FunctionDef |
