@@ -29,8 +29,9 @@ def missing_cmake_install_source(package: Package) -> Iterator[Hit]:
     `.gitignore` leaves out (made before the build) or inside a git submodule that is not
     checked out are left alone, and so are sources the file copes with missing: those of an
     `install(... OPTIONAL)` and paths it tests with `if(EXISTS ...)` or `if(IS_DIRECTORY
-    ...)` (installed only when present). An empty folder counts as missing: git keeps no empty
-    folders, so a fresh clone lacks it.
+    ...)` (installed only when present), and sources outside the package folder
+    (`../dbc/robot.dbc`, an absolute path), which pkgtool does not see. An empty folder
+    counts as missing: git keeps no empty folders, so a fresh clone lacks it.
 
     ## Why is this bad?
     `colcon build` stops at the install step ("file INSTALL cannot find ..."): nothing of the
@@ -53,7 +54,7 @@ def missing_cmake_install_source(package: Package) -> Iterator[Hit]:
     for source in sorted(sources or ()):
         if source in ("", ".") or package.has_file(source) or is_folder(package, source) or \
                 source in tolerated or ignored(source, package.ignores) or \
-                under(source, package.unfetched):
+                under(source, package.unfetched) or _outside(source):
             continue
         found = _place(source, text)
         if found is None:
@@ -61,6 +62,13 @@ def missing_cmake_install_source(package: Package) -> Iterator[Hit]:
         yield Hit(Span.of_offset("CMakeLists.txt", text, found),
                   f"`install()` names `{source}`, which the package does not have: "
                   "`colcon build` fails at the install step")
+
+
+def _outside(source: str) -> bool:
+    """True for a source outside the package folder (``../dbc/can.dbc``, an absolute path):
+    a file of the repository or the system that pkgtool does not see."""
+    normal = posixpath.normpath(source)
+    return posixpath.isabs(normal) or normal == ".." or normal.startswith("../")
 
 
 _INSTALL = re.compile(r"\binstall\s*\(", re.IGNORECASE)

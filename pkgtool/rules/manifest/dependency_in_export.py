@@ -28,7 +28,8 @@ def dependency_in_export(package: Package) -> Iterator[Hit]:
     ``*_depend`` tags, ``<conflict>``, ``<replace>``, ``<group_depend>`` and
     ``<member_of_group>``. Deeper elements (the content of a tool's own export element) are
     left alone, and so are copies of what `<package>` declares itself (the same tag and key,
-    or a `<depend>` of the key for a build, export or exec dependency): inert.
+    or a `<depend>` of the key for a build, export or exec dependency, or a `<depend>` of a
+    key `<package>` declares for build and exec): inert.
 
     ## Why is this bad?
     The schema lets ``<export>`` hold anything, so nothing complains, but catkin_pkg, colcon,
@@ -61,7 +62,9 @@ def dependency_in_export(package: Package) -> Iterator[Hit]:
         for child in export.children:
             key = token(child.text)
             if child.tag in _DEPENDENCY_TAGS and (child.tag, key) not in declared and \
-                    not (child.tag in _COVERED and ("depend", key) in declared):
+                    not (child.tag in _COVERED and ("depend", key) in declared) and \
+                    not (child.tag == "depend" and {("build_depend", key),
+                                                    ("exec_depend", key)} <= declared):
                 yield Hit(child.span, f"`{snippet(child)}` is inside `<export>`: no build or "
                                       "install tool reads it there, so it declares nothing",
                           cause=declaration_cause(child.tag, key))

@@ -28,6 +28,7 @@ def _unbound_uses(index: Index, node: ast.Try) -> Iterator[tuple[ast.Name, str, 
             continue
         use = next((u for body in places for u in uses(body, name)
                     if not _guarded_by_earlier(u, name, node, index, everywhere) and
+                    not _guarded_by_later(u, name, node, index, function) and
                     not _after_a_failing_read(u, body, name, node, everywhere)), None)
         if use is not None:
             yield use, name, next(s.lineno for s in node.body if name in bound_names([s]))
@@ -51,6 +52,73 @@ def _guarded_by_earlier(use: ast.Name, name: str, node: ast.Try, index: Index,
                         all(harmless(s) for s in node.body[at[0] + 1:bound_at + 1]):
                     return True
         child, parent = parent, index.parents.get(id(parent))
+    return False
+
+
+def _guarded_by_later(use: ast.Name, name: str, node: ast.Try, index: Index,
+                      function: ast.AST) -> bool:
+    """True when ``use`` runs only under ``if guard:`` (or ``if guard is not None:``), for a
+    name or ``self.x`` that is falsy when the ``try`` starts (``guard = None``, or ``if
+    guard: return`` before it) and that the ``try`` body sets once, after binding ``name``,
+    with nothing else setting it from the ``try`` to ``use`` (``self.sock = s`` after ``s =
+    socket.socket()``): when the guard holds, ``name`` is bound."""
+    bound_at = next(i for i, s in enumerate(node.body) if name in bound_names([s]))
+    child, parent = use, index.parents.get(id(use))
+    while parent is not None and parent is not node:
+        if isinstance(parent, ast.If) and any(child is s for s in parent.body):
+            for guard in _tested_values(parent.test):
+                sets = [i for i, s in enumerate(node.body) if _sets(s, guard)]
+                others = [s for s in ast.walk(function) if isinstance(s, ast.stmt) and
+                          not hasattr(s, "body") and node.lineno <= s.lineno <= use.lineno
+                          and _sets(s, guard) and not any(s is b for b in node.body)]
+                if len(sets) == 1 and sets[0] > bound_at and not others and \
+                        _falsy_before(guard, node, index):
+                    return True
+        child, parent = parent, index.parents.get(id(parent))
+    return False
+
+
+def _tested_values(test: ast.expr) -> Iterator[str]:
+    """The names and ``self.x`` a test requires to be truthy or not None (as written)."""
+    if isinstance(test, ast.BoolOp) and isinstance(test.op, ast.And):
+        for value in test.values:
+            yield from _tested_values(value)
+        return
+    if isinstance(test, ast.Compare) and len(test.ops) == 1 and \
+            isinstance(test.ops[0], ast.IsNot) and isinstance(test.comparators[0], ast.Constant) \
+            and test.comparators[0].value is None:
+        test = test.left
+    if isinstance(test, ast.Name) or isinstance(test, ast.Attribute) and \
+            isinstance(test.value, ast.Name):
+        yield ast.unparse(test)
+
+
+def _sets(statement: ast.stmt, guard: str) -> bool:
+    """True when ``statement`` (or one inside it) sets ``guard``: a name bound any way, or
+    ``self.x`` assigned."""
+    if "." not in guard and guard in bound_names([statement]):
+        return True
+    return any(isinstance(s, ast.Assign) and any(ast.unparse(t) == guard for t in s.targets) or
+               isinstance(s, (ast.AugAssign, ast.AnnAssign)) and ast.unparse(s.target) == guard
+               for s in ast.walk(statement))
+
+
+def _falsy_before(guard: str, node: ast.Try, index: Index) -> bool:
+    """True when the last statement before ``node`` in its block that sets or tests ``guard``
+    is ``guard = None`` or ``if guard: return`` (or raise), without ``else``."""
+    parent = index.parents.get(id(node))
+    for block in (getattr(parent, field, None) for field in ("body", "orelse", "finalbody")):
+        if isinstance(block, list) and any(s is node for s in block):
+            before = block[:[id(b) for b in block].index(id(node))]
+            for statement in reversed(before):
+                if isinstance(statement, ast.If) and not statement.orelse and \
+                        guard in _tested_values(statement.test) and \
+                        isinstance(statement.body[-1], (ast.Return, ast.Raise)):
+                    return True
+                if _sets(statement, guard):
+                    return isinstance(statement, ast.Assign) and \
+                        isinstance(statement.value, ast.Constant) and \
+                        statement.value.value is None
     return False
 
 
@@ -108,7 +176,10 @@ def unbound_in_finally(package: Package) -> Iterator[Hit]:
     `locals()` or a `try/except NameError` (or in the `else:` of one whose body reads the
     bare name), are not reported; nor a use under `if guard:` where `guard = None`
     before the `try` and the `try` binds `guard` earlier, with nothing that can raise from
-    there to the name's binding (`executor = Pool()` then `pending = None`); nor a use after
+    there to the name's binding (`executor = Pool()` then `pending = None`), or binds
+    `guard` after the name, `guard` (a name or `self.x`) being `None` before the `try` or
+    ruled out by an `if guard: return` (`self.sock = s` after `s = socket.socket()`); nor a
+    use after
     a statement of the block that reads a name the `try` binds no earlier (`logger.log(sim)`,
     then `if energy:` with `energy` bound before `sim`): only that first read can fail.
 
