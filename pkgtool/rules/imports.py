@@ -30,8 +30,9 @@ from pkgtool.knowledge.rosdistro import (DISTROS, any_stdlib_module, close_names
                                          keys_for_import, stdlib_modules, typo_distance)
 from pkgtool.model.cmake_install import installed_python_packages
 from pkgtool.model.context import Context
-from pkgtool.model.installed import (DATA_FOLDERS, installed_data, installed_files,
-                                     installed_modules, is_ament_python, separate_projects)
+from pkgtool.model.installed import (DATA_FOLDERS, PROJECT_FILES, installed_data,
+                                     installed_files, installed_modules, is_ament_python,
+                                     separate_projects)
 from pkgtool.model.launch import is_launch_file, python_folders
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.setup_py import EntryPoint
@@ -290,9 +291,19 @@ def enclosing_package_import(package: Package, owner: str, imported: Import
             base = ".".join(parts[:end])
             named = [".".join([base, *rest])] if rest else [f"{base}.{n}" for n in imported.names]
             found = next(((base, name) for name in named if name in installed), None)
+            if found is not None and _top_of_a_project(package, installed.get(base, "")):
+                return None
             return found if found is None or not rest or \
                 _provides(package, installed, found[1], imported.names) else None
     return None
+
+
+def _top_of_a_project(package: Package, init: str) -> bool:
+    """True when the package whose ``__init__.py`` is ``init`` sits in a folder with a
+    setup.py or pyproject.toml of its own: a project kept inside (vendored PointPillars),
+    installed by pip, whose top-level package it is."""
+    above = posixpath.dirname(posixpath.dirname(init))
+    return bool(above) and any(package.has_file(f"{above}/{name}") for name in PROJECT_FILES)
 
 
 def _provides(package: Package, installed: dict[str, str], module: str,
@@ -640,6 +651,8 @@ def _needs(package: Package, module: PythonModule, guarded: bool | None) -> Iter
                 continue  # maybe the copy of a library another package's folder holds
             if ros1 and kind == "ros":
                 keys = _ros1_keys(top, keys)
+            elif ros1:  # Melodic and older: Python 2 keys (`python-serial`) count too
+                keys = (*keys, *(f"python-{k[8:]}" for k in keys if k.startswith("python3-")))
             yield Need(module, imported, shown, kind, keys)
 
 

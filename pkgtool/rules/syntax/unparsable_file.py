@@ -10,6 +10,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import ParseProblem
 from pkgtool.rules.plain_projects import plain_python_project
 from pkgtool.rules.registry import rule
+from pkgtool.rules.ros1_platform import is_python2_package, is_ros1_package
 from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.rules.syntax._newer_syntax import newer_syntax
 from pkgtool.rules.syntax._problems import problem_hits
@@ -47,7 +48,10 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     added is not reported, as the target may well accept it: an f-string that is complete
     under Python 3.12's rules but reuses its quotes, spans lines or holds a backslash or a
     comment in a replacement field (PEP 701), type parameters and `type` aliases, `except*`.
-    Run pkgtool on the target's Python for a complete check.
+    Run pkgtool on the target's Python for a complete check. Python files of a ROS 1
+    package built for Python 2 (one depending on `python-...` keys: Melodic or older) are
+    not parsed, nor those of a ROS 1 package whose `#!` line runs `python` (the convention
+    before Noetic): Python 2 syntax (`print x`, tabs counted as 8 columns) is not Python 3's.
 
     ## Why is this bad?
     colcon, rosdep and ``ros2 launch`` stop at the first unparsable file, and an installed
@@ -65,7 +69,7 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     """
     yield from problem_hits(package, _PARSE_KINDS, lambda p: not newer_syntax(package, p) and
                             not _vendored_and_unused(package, p) and
-                            not _template(package, p))
+                            not _template(package, p) and not _python2(package, p))
 
 
 _VENDORED = frozenset({"thirdparty", "third_party", "3rdparty", "external", "extern", "vendor",
@@ -82,6 +86,18 @@ def _vendored_and_unused(package: Package, problem: ParseProblem) -> bool:
     return problem.kind == "python-syntax" and (
         any(_vendored_folder(part) for part in path.split("/")[:-1]) or
         plain_python_project(package)) and path not in installed_files(package)
+
+
+_PYTHON2_SHEBANG = lazy_pattern(r"#!.*\bpython2?[ \t]*(?:\n|$)")
+"""A ``#!`` line running ``python`` or ``python2``: ROS 1's convention before Noetic."""
+
+
+def _python2(package: Package, problem: ParseProblem) -> bool:
+    """True for Python of a ROS 1 package written for Python 2: the package depends on Python 2
+    keys, or the file's ``#!`` line runs ``python`` (Melodic and older)."""
+    return problem.kind == "python-syntax" and is_ros1_package(package) and (
+        is_python2_package(package) or
+        _PYTHON2_SHEBANG.match(package.texts.get(problem.span.path, "")) is not None)
 
 
 _TEMPLATE = lazy_pattern(r"\{\{.*?\}\}|\{%.*?%\}")
