@@ -31,7 +31,10 @@ def unlisted_packages(package: Package, used: Iterable[tuple[str, Span]],
         missing = (f"declared only as {declaration(name, other)}" if other else
                    "not declared in package.xml")
         fix = f"Add `<{tag}>{name}</{tag}>` to package.xml"
-        if not other and not _known(package, name):
+        if not other and name in package.submodules:
+            missing += (f"; it is probably the package of the git submodule `{name}`, which is "
+                        "not checked out here")
+        elif not other and not _known(package, name):
             meant = [close for close in close_names(
                 name, package.context.distro, limit=3,
                 extra=frozenset((*package.context.workspace, package.name)))

@@ -317,3 +317,16 @@ def test_a_package_one_edit_from_a_released_one_is_a_typo_of_it(tmp_path: Path) 
     meant = {need.top: misspelt_package(package, need) for need in needs(package, module)}
     assert meant == {"sensors_msgs": "sensor_msgs", "grbl_interfaces": None,
                      "turtlebot5_msgs": None}  # two edits from rcl_interfaces; a number
+
+
+def test_a_launched_package_of_a_submodule_not_checked_out_is_named_so(tmp_path: Path) -> None:
+    (tmp_path / ".git").mkdir()
+    (tmp_path / "vectornav").mkdir()
+    (tmp_path / ".gitmodules").write_text(
+        '[submodule "vectornav"]\n\tpath = vectornav\n\turl = https://example.com/vn\n')
+    package = _package(tmp_path, {"launch/a.launch.py": (
+        "from launch_ros.actions import Node\n\n\ndef generate_launch_description():\n"
+        "    return LaunchDescription([Node(package='vectornav', executable='vn')])\n")})
+    [finding] = findings(package, "LCH002")
+    assert finding.message.endswith("it is probably the package of the git submodule "
+                                    "`vectornav`, which is not checked out here")
