@@ -4,6 +4,7 @@ folder it is started in."""
 from __future__ import annotations
 
 import ast
+import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity, shortened
@@ -56,11 +57,12 @@ def cwd_relative_path(package: Package) -> Iterator[Hit]:
     relative path that is a file of the package's source folder: written from the
     package's folder (`'config/params.yaml'`) or from a workspace's
     (`'src/my_pkg/models/best.pt'`, a file the package has or not: a model kept out of
-    git). The path is a string literal, or a name or `self.x` assigned that literal and
-    nothing else. A module that asks whether files exist (`os.path.exists()` and the like)
-    or changes the working folder (`os.chdir()`) is left alone: it may fall back when the
-    file is not there, or open it from the right folder. Tests are not checked (pytest runs
-    them from a known folder).
+    git), or the path below `share/<package>` data_files installs a file as (`'map.json'`
+    for `my_pkg/map.json` installed into `share/my_pkg`). The path is a string literal, or a
+    name or `self.x` assigned that literal and nothing else. A module that asks whether files
+    exist (`os.path.exists()` and the like) or changes the working folder (`os.chdir()`) is
+    left alone: it may fall back when the file is not there, or open it from the right
+    folder. Tests are not checked (pytest runs them from a known folder).
 
     ## Why is this bad?
     A relative path is resolved against the working folder of the process, not against the
@@ -84,17 +86,34 @@ def cwd_relative_path(package: Package) -> Iterator[Hit]:
     """
     indexes = [(module.path, index) for module, _, index in installed_trees(package)]
     shares = _share_paths(package)
+    installed_as = {below: source for source, below in shares.items()}
     for path, index in [*indexes, *launch_indexes(package)]:
         if checks_files(index, _SETS_THE_FOLDER):
             continue
         for call in index.calls:
             read = _file_read(call, index)
             for text in _path_texts(read, index) if read is not None else ():
-                named = package_file_named(text.removeprefix("./"), package, absent=True)
+                named = _named(text.removeprefix("./"), package, installed_as)
                 if named is not None:
                     yield _hit(Span(path, call.lineno, call.col_offset + 1), call, text,
                                named, package.name, shares.get(named[0]))
                     break
+
+
+def _named(text: str, package: Package, installed_as: dict[str, str]) -> tuple[str, str] | None:
+    """The file of the package a relative path names (:func:`package_file_named`), or the one
+    data_files installs as ``share/<package>/<path>`` (``open('map.json')`` for
+    ``my_pkg/map.json``), with the folder the process must start in to find it."""
+    named = package_file_named(text, package, absent=True)
+    if named is not None:
+        return named[0], "a workspace's folder" if named[1] else "the package's source folder"
+    source = installed_as.get(posixpath.normpath(text)) if text else None
+    if source is None or posixpath.isabs(text):
+        return None
+    below = posixpath.normpath(text)
+    folder = source[:-len(below)].rstrip("/") if source.endswith(below) else ""
+    return source, f"`{folder}/` of the package's source folder" if folder else \
+        "the package's source folder"
 
 
 def _file_read(call: ast.Call, index: Index) -> ast.expr | None:
@@ -169,10 +188,9 @@ def _share_paths(package: Package) -> dict[str, str]:
             if installed.startswith(prefix)}
 
 
-def _hit(span: Span, call: ast.Call, text: str, named: tuple[str, bool], name: str,
+def _hit(span: Span, call: ast.Call, text: str, named: tuple[str, str], name: str,
          shared: str | None) -> Hit:
-    inside, from_workspace = named
-    folder = "a workspace's folder" if from_workspace else "the package's source folder"
+    inside, folder = named
     message = (f"`{shortened(ast.unparse(call))}` opens `{text}` relative to the folder the "
                f"process starts in, not to the package: it finds the package's `{inside}` "
                f"only when started from {folder} (`ros2 run` and `ros2 launch` start it "
