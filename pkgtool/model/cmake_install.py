@@ -98,9 +98,15 @@ def installed_programs(text: str) -> frozenset[str]:
     ``lib/<package>``, where ``ros2 run`` and launch look executables up (a file keeps its
     name, ``.py`` and all, unless ``RENAME`` gives another); sources that are not static are
     left out."""
+    return frozenset(installed_as for _, installed_as in program_sources(text))
+
+
+def program_sources(text: str) -> list[tuple[str, str]]:
+    """Each static source of the ``install(PROGRAMS ... DESTINATION lib...)`` calls of
+    ``text`` (package-relative) with the name it is installed under."""
     calls = commands(text)
     variables = set_variables(calls, frozenset())
-    found: set[str] = set()
+    found: list[tuple[str, str]] = []
     for name, args in calls:
         destination = args[args.index("DESTINATION") + 1] if "DESTINATION" in args[:-1] else ""
         if name != "install" or args[:1] != ["PROGRAMS"] or not destination.startswith("lib"):
@@ -109,8 +115,9 @@ def installed_programs(text: str) -> frozenset[str]:
         for arg in _install_args(name, args):
             for value in expand(arg, variables, DEPTH):
                 if value and "${" not in value:
-                    found.add(renamed or posixpath.basename(value))
-    return frozenset(found)
+                    found.append((posixpath.normpath(value.lstrip("/")),
+                                  renamed or posixpath.basename(value)))
+    return found
 
 
 _PLAIN_COMMANDS = frozenset("""

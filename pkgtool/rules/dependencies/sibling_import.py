@@ -14,6 +14,7 @@ from pkgtool.rules.imports import (ANY, console_script_files, declared, enclosin
                                    installed_code, path_modules, python_package_of,
                                    beside_the_scripts, importers_of, run_as_a_script,
                                    runs_code_at_its_top)
+from pkgtool.rules.dependencies._cmake_scripts import uninstalled_script_neighbours
 from pkgtool.rules.registry import rule
 from pkgtool.lazy_regex import lazy_pattern
 
@@ -45,7 +46,10 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     that runs code at its top level (a call, an `if __name__ == '__main__':` block) that no
     console script runs and no module imports, run as `python3 path/to/it.py`, and the
     helpers only such scripts (or their helpers) of the same folder import, by their bare
-    name.
+    name. In a package built with CMake, reports the same mistake in the scripts
+    `install(PROGRAMS ... DESTINATION lib/...)` installs: an import of a module or package
+    beside the script in the source tree that CMakeLists.txt does not install (nor puts in a
+    Python package with `ament_python_install_package`), when what it installs is known.
 
     ## Why is this bad?
     `python3 my_pkg/node.py` puts the file's folder on `sys.path`, so the import works while
@@ -53,6 +57,8 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     `my_pkg/` on the path and the node dies with `ModuleNotFoundError: No module named
     'helpers'`. Inside `my_pkg/filters/`, `filters.low_pass` works only while the folder above
     it is on the path (a script run next to it); installed it is `my_pkg.filters.low_pass`.
+    A script CMake installs runs from `lib/<package>`, where only what CMake installed sits
+    beside it.
 
     ## Example
     ```python
@@ -68,6 +74,7 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     """
     installed = installed_modules(package)
     if installed is None:
+        yield from uninstalled_script_neighbours(package)
         return
     modules = {module.path: module for module in package.modules}
     top_level = {name.split(".")[0] for name in installed}
