@@ -244,7 +244,7 @@ def dead_lines(tree: ast.Module) -> list[tuple[int, int]]:
     """Line ranges (first, last) of code that never runs: ``if`` branches that never run on
     Python 3 (also those a function's own constant flag decides: ``debug = False`` then ``if
     debug:``) and statements after a ``return``, ``raise``, ``continue`` or ``break`` of the
-    same block, worked out once per tree (PYC001, PYC016 and PYC019 ask); treat as
+    same block or after a ``while True:`` loop without a ``break``, worked out once per tree (PYC001, PYC016 and PYC019 ask); treat as
     read-only."""
     constants = module_constants(tree)
     local = function_constants(tree)
@@ -270,18 +270,43 @@ _HOLDERS = tuple(getattr(ast, name) for name in (
 
 
 def _after_jumps(tree: ast.Module) -> list[tuple[int, int]]:
-    """Line ranges of the statements that follow a jump in the same block."""
+    """Line ranges of the statements that follow a jump in the same block, or an endless loop
+    (:func:`_endless`), and of the ``else:`` of such a loop."""
     ranges: list[tuple[int, int]] = []
     for node in nodes_of_class(tree, *_HOLDERS):
+        if isinstance(node, ast.While) and node.orelse and _endless(node):
+            ranges.append((node.orelse[0].lineno,
+                           node.orelse[-1].end_lineno or node.orelse[-1].lineno))
         for name in _BLOCKS:
             block = getattr(node, name, None)
             if type(block) is not list or len(block) < 2:
                 continue
-            jump = next((i for i, s in enumerate(block[:-1]) if isinstance(s, _JUMPS)), None)
+            jump = next((i for i, s in enumerate(block[:-1])
+                         if isinstance(s, _JUMPS) or isinstance(s, ast.While) and _endless(s)),
+                        None)
             if jump is not None:
                 last = block[-1]
                 ranges.append((block[jump + 1].lineno, last.end_lineno or last.lineno))
     return ranges
+
+
+def _endless(loop: ast.While) -> bool:
+    """True for ``while True:`` (or another constant true test) with no ``break`` of its own:
+    only a ``return`` or an exception leaves it, and neither runs what follows it."""
+    test = loop.test
+    if not isinstance(test, ast.Constant) or not test.value:
+        return False
+    todo: list[ast.AST] = list(loop.body)
+    while todo:
+        node = todo.pop()
+        if isinstance(node, ast.Break):
+            return False
+        if not isinstance(node, (ast.For, ast.AsyncFor, ast.While, ast.FunctionDef,
+                                 ast.AsyncFunctionDef, ast.Lambda, ast.ClassDef)):
+            todo.extend(ast.iter_child_nodes(node))
+        elif isinstance(node, (ast.For, ast.AsyncFor, ast.While)):
+            todo.extend(node.orelse)  # a break in a loop's else leaves the outer loop
+    return True
 
 
 _ROS_DISTRO_VARIABLE = "ROS_DISTRO"

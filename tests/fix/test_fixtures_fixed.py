@@ -109,7 +109,8 @@ MANUAL = {("PYC078", "habits_of_other_languages"), ("PYC079", "unknown_keywords"
           ("LCH001", "wrong_executable_names"), ("LCH001", "data_files_walked_at_build"),
           ("LCH001", "executables_of_a_loop"), ("LCH001", "cmake_executables_never_installed"),
           ("DAT009", "default_name_from_code"),
-          ("DAT009", "xml_and_yaml_launch"), ("LCH003", "gazebo_classic_module")}
+          ("DAT009", "xml_and_yaml_launch"), ("LCH003", "gazebo_classic_module"),
+          ("DEP007", "cmake_script_without_its_helpers")}
 """MAN018 fixes pip and import names only; build types, ROS 1 packages and standard library modules
 need the user (a `<build_type>`, a ROS 2 replacement, or nothing). DAT001 fixes a string of
 sources and creates the (empty) ament index marker: other missing files have content only their
@@ -132,7 +133,8 @@ more than a typo away: other names, maybe meant, and so is `timeout=` for `timeo
 module a Gazebo Classic launch file imports, has no release after Humble: the fixer declares
 only keys that resolve for the target (LCH003). A dropped comparison holding a call (PYC050)
 needs the `if` its author meant. An executable a launch file loops over (LCH001) is written in
-a list the fixer does not edit."""
+a list the fixer does not edit. DEP007's fixer rewrites Python imports; a script CMake installs
+without the modules beside it needs an `install()` only the author places (no CMake fixer)."""
 
 FOLDED = {("DEP001", "pip_name_instead_of_key")}
 """Cases whose findings fold into the finding of their cause when every rule runs: the pip name
