@@ -9,6 +9,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.cmake_install import tolerated_missing_sources
 from pkgtool.model.installed import cmake_installed, cmake_text
+from pkgtool.model.launch import nested_packages
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.submodules import ignored, under
@@ -30,7 +31,8 @@ def missing_cmake_install_source(package: Package) -> Iterator[Hit]:
     checked out are left alone, and so are sources the file copes with missing: those of an
     `install(... OPTIONAL)` and paths it tests with `if(EXISTS ...)` or `if(IS_DIRECTORY
     ...)` (installed only when present), and sources outside the package folder
-    (`../dbc/robot.dbc`, an absolute path), which pkgtool does not see. An empty folder
+    (`../dbc/robot.dbc`, an absolute path) or inside a folder holding a package.xml of its
+    own (an old package kept inside this one), which pkgtool does not read. An empty folder
     counts as missing: git keeps no empty folders, so a fresh clone lacks it.
 
     ## Why is this bad?
@@ -51,10 +53,11 @@ def missing_cmake_install_source(package: Package) -> Iterator[Hit]:
     sources = cmake_installed(package)
     text = package.texts.get("CMakeLists.txt", "")
     tolerated = tolerated_missing_sources(cmake_text(package) or "") if sources else frozenset()
+    nested = nested_packages(package.files) if sources else frozenset()
     for source in sorted(sources or ()):
         if source in ("", ".") or package.has_file(source) or is_folder(package, source) or \
                 source in tolerated or ignored(source, package.ignores) or \
-                under(source, package.unfetched) or _outside(source):
+                under(source, package.unfetched) or under(source, nested) or _outside(source):
             continue
         found = _place(source, text)
         if found is None:
