@@ -14,6 +14,7 @@ from pkgtool.rules.python._assignments import (annotated_name, assigned_values, 
                                                parameter_annotation)
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.python._message_instances import method_receiver
+from pkgtool.rules.python._never_called import never_called
 from pkgtool.rules.python._own_callees import rebound_around
 from pkgtool.rules.python._package_classes import (attributes_of_class, closed_class,
                                                    package_class, package_classes)
@@ -116,7 +117,8 @@ def undefined_instance_attribute(package: Package) -> Iterator[Hit]:
     not written as `x.name = ...` (`setattr`, `__dict__`, `__slots__`) leave a class alone;
     so do instances of a class with `__new__` (it may make another), names starting with `_`
     read on a class, names the module probes with `hasattr`/`getattr` and reads inside a
-    `try` that catches `AttributeError`. Node classes are PYC023's.
+    `try` that catches `AttributeError`, and reads in a method nothing in the package names
+    (never run, as PYC023 says). Node classes are PYC023's.
 
     ## Why is this bad?
     The read raises `AttributeError` when it runs, which in a node usually means in a
@@ -155,7 +157,8 @@ def undefined_instance_attribute(package: Package) -> Iterator[Hit]:
             probed = probed_names(index) if probed is None else probed
             if dotted is None or guarded(node, index, probed) or \
                     cls is not None and node.attr.startswith("_") or \
-                    node.attr in attributes_of_class(dotted, package):
+                    node.attr in attributes_of_class(dotted, package) or \
+                    never_called(package, node, index):
                 continue
             name = dotted.rpartition(".")[2]
             meant = typo_of(node.attr, attributes_of_class(dotted, package))

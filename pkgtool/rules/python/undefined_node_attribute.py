@@ -21,6 +21,7 @@ from pkgtool.rules.python._assignments import (annotated_name, assigned_values, 
 from pkgtool.rules.python._message_instances import (attributes_taken, known_messages,
                                                      method_receiver)
 from pkgtool.rules.python._messages import message_instances
+from pkgtool.rules.python._never_called import never_called
 from pkgtool.rules.python._own_callees import defined_once
 from pkgtool.rules.python._package_modules import imported_from_package, modules_by_name
 from pkgtool.rules.registry import rule
@@ -255,7 +256,10 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
     that holds an instance of such a class (`node = Talker()`, None as a placeholder aside,
     or a parameter annotated `node: Talker` and never rebound): `node.destroy()` for
     `node.destroy_node()`. So does `super().x` in those classes' methods when neither their
-    bases nor `object` have `x` (`super().__int__('talker')`, `super().spin()`). Typical
+    bases nor `object` have `x` (`super().__int__('talker')`, `super().spin()`). Reads in a
+    method nothing in the package names, even with a typo (no call, no bound method handed
+    to a timer, no `getattr` string: its caller commented out, copied from another node),
+    that overrides nothing of rclpy's nodes and has no decorator, never run. Typical
     causes: a misspelt callback
     (`self.timer_calback`), a publisher stored as `self.publisher_` and used as
     `self.publisher`, a method renamed but not its uses.
@@ -301,7 +305,8 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
                 for node in attributes_taken(method, receiver) if receiver else ():
                     if (isinstance(node.ctx, ast.Load) or id(node) in augmented) and \
                             not node.attr.startswith("__") and node.attr not in known and \
-                            not guarded(node, index, probed):
+                            not guarded(node, index, probed) and \
+                            not never_called(package, node, index):
                         reads.setdefault(node.attr, []).append(node)
             for attr, nodes in reads.items():
                 spans = [Span(module.path, n.end_lineno or n.lineno,
