@@ -69,12 +69,29 @@ NOT_ROSDEP_KEYS: dict[str, str] = {
     "python-yaml": "python3-yaml",
     "python-pytest": "python3-pytest",
     "python-setuptools": "python3-setuptools",
+    "OpenCV": "python3-opencv",  # CMake's name; MAN018 offers libopencv-dev to C++ packages
 }
 """Names people write where a rosdep key belongs -> the key to use instead.
 
 ``yaml`` and ``serial`` are not listed: ``yaml`` is a real key (the libyaml C library) and
 ``serial`` is a ROS package in some distributions.
 """
+
+CMAKE_NAMES: dict[str, str] = {
+    "Eigen3": "eigen", "Eigen": "eigen", "CURL": "libcurl-dev", "Boost": "boost",
+    "Qt5": "qtbase5-dev", "Qt6": "qt6-base-dev", "GTest": "gtest", "OpenSSL": "libssl-dev",
+    "ZLIB": "zlib", "Ceres": "libceres-dev", "Protobuf": "protobuf-dev",
+    "PkgConfig": "pkg-config", "nlohmann_json": "nlohmann-json-dev", "TBB": "tbb",
+    "PythonLibs": "python3-dev", "Python3": "python3-dev", "YAML_CPP": "yaml-cpp",
+    "X11": "libx11-dev", "LibXml2": "libxml2", "GeographicLib": "geographiclib",
+    "PROJ": "proj", "SQLite3": "sqlite3", "FFTW3": "libfftw3", "Armadillo": "armadillo",
+    "LAPACK": "liblapack-dev", "BLAS": "libblas-dev", "TinyXML2": "tinyxml2",
+    "TinyXML": "tinyxml", "PCL": "libpcl-all-dev", "OpenCV": "libopencv-dev",
+}
+"""The names CMake's ``find_package()`` finds system libraries by, which people declare in
+package.xml -> the rosdep key of the library (each checked against rosdep's data: no key and no
+released package has the CMake name). :data:`NOT_ROSDEP_KEYS` comes first: ``OpenCV`` in a Python
+package means ``python3-opencv``."""
 
 ROS1_PACKAGES: dict[str, str] = {
     "rospy": "`rclpy`", "roscpp": "`rclcpp`", "roslib": "`ament_index_python`",
@@ -128,7 +145,7 @@ def key_for_python_module(top_level: str, distro: str = DEFAULT_DISTRO) -> str |
 
 def suggested_key(declared: str) -> str | None:
     """The rosdep key to use instead of ``declared`` when that is a pip/ROS 1 name."""
-    return NOT_ROSDEP_KEYS.get(declared)
+    return NOT_ROSDEP_KEYS.get(declared) or CMAKE_NAMES.get(declared)
 
 
 def package_for_ros_module(top_level: str) -> str:
@@ -141,6 +158,7 @@ def accepted_keys(top_level: str, primary: str) -> tuple[str, ...]:
     return (primary, *ALTERNATIVE_KEYS.get(top_level, ()))
 
 
-__all__ = ["ALTERNATIVE_KEYS", "COVERED_BY", "NOT_PACKAGES", "NOT_ROSDEP_KEYS", "ROS1_PACKAGES",
+__all__ = ["ALTERNATIVE_KEYS", "CMAKE_NAMES", "COVERED_BY", "NOT_PACKAGES", "NOT_ROSDEP_KEYS",
+           "ROS1_PACKAGES",
            "ROS_MODULE_PACKAGES", "accepted_keys", "brought_in", "key_for_python_module",
            "package_for_ros_module", "stdlib_modules", "suggested_key"]

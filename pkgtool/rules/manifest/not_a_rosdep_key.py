@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.lazy_regex import lazy_pattern
-from pkgtool.knowledge.rosdep import NOT_PACKAGES, ROS1_PACKAGES
+from pkgtool.knowledge.rosdep import CMAKE_NAMES, NOT_PACKAGES, ROS1_PACKAGES
 from pkgtool.knowledge.rosdistro import is_released_package, is_rosdep_key, stdlib_modules
 from pkgtool.model.condition import applies
 from pkgtool.model.package import Package
@@ -138,9 +138,11 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
     A tag whose REP 149 ``condition`` is false for the target ROS 2 distribution (or not
     understood) is not used there and not checked, as packages for both ROS versions have:
     ``<exec_depend condition="$ROS_PYTHON_VERSION == 2">python-numpy</exec_depend>``.
-    A name that is a package of the workspace linted with this one, or that CMakeLists.txt
-    finds with ``find_package(name)``, is a package built from source beside it (``serial``
-    cloned by a ``.repos`` file) and not checked.
+    CMake's names of system libraries (``Eigen3``, ``OpenCV``, ``Boost``, ``CURL``) name
+    the library's key (``eigen``, ``libopencv-dev``). Any other name that is a package of
+    the workspace linted with this one, or that CMakeLists.txt finds with
+    ``find_package(name)``, is a package built from source beside it (``serial`` cloned by a
+    ``.repos`` file) and not checked.
 
     ## Why is this bad?
     ``rosdep install`` stops with "Cannot locate rosdep definition", build farms refuse the
@@ -168,7 +170,7 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
     for element in found.elements():
         key = token(element.text)
         if key in package.context.workspace and key not in NOT_PACKAGES or \
-                cmake_finds(package, key):
+                cmake_finds(package, key) and key not in CMAKE_NAMES:
             continue  # a package built from source with this one (a workspace's, a .repos's)
         hit = _hit(element, ros2, compiled, package.context.distro) \
             if element.tag in _CHECKED and \
