@@ -5,8 +5,11 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator, Mapping
 
 from pkgtool.findings import Hit
+from pkgtool.model.installed import installed_files
+from pkgtool.model.launch import kept_aside
 from pkgtool.model.package import Package
 from pkgtool.model.span import ParseProblem
+from pkgtool.rules.test_modules import test_files
 
 BUILD_FILES = frozenset({"package.xml", "setup.py", "setup.cfg"})
 """Files no real package has beyond pkgtool's read limit: one that large is an error (SYN002),
@@ -25,3 +28,10 @@ def problem_hits(package: Package, labels: Mapping[str, str],
     for problem in package.problems:
         if problem.kind in labels and keep(problem):
             yield Hit(problem.span, f"{labels[problem.kind]}: {problem.detail}")
+
+
+def set_aside(package: Package, path: str) -> bool:
+    """True for a Python file kept aside (in ``backup/``, ``old/``..., or named as a copy) that
+    the package neither installs nor has pytest collect: nothing builds, runs or imports it."""
+    return path.endswith(".py") and kept_aside(path) and \
+        path not in installed_files(package) and path not in test_files(package)

@@ -10,6 +10,7 @@ from pkgtool.model.ast_nodes import enclosing, walk_once
 from pkgtool.model.package import Package, is_test_data
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax._problems import set_aside
 from pkgtool.rules.syntax_trees import python_files
 
 _FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda)
@@ -70,8 +71,8 @@ def compile_error(package: Package) -> Iterator[Hit]:
     when it compiles the file: a keyword argument given twice (`Node(output='screen',
     output='log')`), a parameter named twice (`def cb(self, msg, msg)`), `return`, `yield`
     or `await` outside a function, `break` or `continue` outside a loop. Python files under
-    `test/` that pytest does not collect (data a test reads) are left alone, as SYN001 leaves
-    them.
+    `test/` that pytest does not collect (data a test reads), and files kept aside that
+    nothing installs (`backup/old.launch.py`), are left alone, as SYN001 leaves them.
 
     ## Why is this bad?
     They are `SyntaxError`s like any other, raised when the file is imported: the node, the
@@ -89,7 +90,7 @@ def compile_error(package: Package) -> Iterator[Hit]:
     ```
     """
     for path, _, tree in python_files(package):
-        if is_test_data(path):
+        if is_test_data(path) or set_aside(package, path):
             continue
         for node, problem in compile_errors(tree):
             yield Hit(Span(path, node.lineno, node.col_offset + 1),  # type: ignore[attr-defined]

@@ -13,7 +13,7 @@ from pkgtool.rules.registry import rule
 from pkgtool.rules.ros1_platform import is_python2_package, is_ros1_package
 from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.rules.syntax._newer_syntax import newer_syntax
-from pkgtool.rules.syntax._problems import problem_hits
+from pkgtool.rules.syntax._problems import problem_hits, set_aside
 
 _PARSE_KINDS = {
     "xml-syntax": "XML is not well-formed",
@@ -50,7 +50,9 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     comment in a replacement field (PEP 701), type parameters and `type` aliases, `except*`.
     Run pkgtool on the target's Python for a complete check. Python files of a ROS 1
     package built for Python 2 (one depending on `python-...` keys: Melodic or older) are
-    not parsed, nor those of a ROS 1 package whose `#!` line runs `python` (the convention
+    not parsed, nor Python files kept aside (in `backup/`, `old/`, or named as a copy,
+    `node_old.py`) that the package neither installs nor has pytest collect, nor those of a
+    ROS 1 package whose `#!` line runs `python` (the convention
     before Noetic): Python 2 syntax (`print x`, tabs counted as 8 columns) is not Python 3's.
 
     ## Why is this bad?
@@ -69,7 +71,8 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     """
     yield from problem_hits(package, _PARSE_KINDS, lambda p: not newer_syntax(package, p) and
                             not _vendored_and_unused(package, p) and
-                            not _template(package, p) and not _python2(package, p))
+                            not _template(package, p) and not _python2(package, p) and
+                            not set_aside(package, p.span.path))
 
 
 _VENDORED = frozenset({"thirdparty", "third_party", "3rdparty", "external", "extern", "vendor",
