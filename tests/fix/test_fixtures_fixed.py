@@ -105,6 +105,7 @@ MANUAL = {("PYC078", "habits_of_other_languages"), ("PYC079", "unknown_keywords"
           ("ENT003", "function_named_differently"), ("LCH020", "declaration_assigned_over"),
           ("PYC025", "scalars_for_sequences"),
           ("ENT003", "node_class_as_entry"), ("ENT003", "attribute_of_function"),
+          ("ENT003", "star_import_without_main"),
           ("PYC014", "read_before_declaring"),
           ("LCH001", "wrong_executable_names"), ("LCH001", "data_files_walked_at_build"),
           ("LCH001", "executables_of_a_loop"), ("LCH001", "cmake_executables_never_installed"),

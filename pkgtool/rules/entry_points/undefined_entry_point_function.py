@@ -8,11 +8,39 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import typo_of
+from pkgtool.model.installed import installed_modules
+from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
 from pkgtool.rules.console_scripts import scripts_and_modules
+from pkgtool.rules.imports import python_package_of
 from pkgtool.rules.node_api import node_subclasses
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import FUNCTIONS, installed_trees
+
+
+def _star_names(package: Package, module: PythonModule) -> frozenset[str] | None:
+    """The names ``module``'s ``from x import *`` imports bind, when each ``x`` is a module
+    the package installs without star imports of its own (absolute, relative, or named from
+    the module's Python package: ``from services.callbacks import *`` in ``my_pkg/server.py``
+    is ``my_pkg.services.callbacks``); None when one is not known."""
+    installed = installed_modules(package) or {}
+    owner = python_package_of(package, module)
+    found: set[str] = set()
+    for imported in module.imports:
+        if "*" not in imported.names:
+            continue
+        base = owner.split(".") if owner else []
+        base = base[:len(base) - imported.level + 1] if imported.level else []
+        dotted = ".".join([*base, imported.module] if imported.module else base)
+        path = installed.get(dotted) or (installed.get(f"{owner}.{dotted}")
+                                         if owner and not imported.level else None)
+        source = package.module(path) if path else None
+        if source is None or source.syntax_error or \
+                any("*" in i.names for i in source.imports) or \
+                "__getattr__" in source.top_level_names:
+            return None
+        found |= source.top_level_names
+    return frozenset(found)
 
 
 def _plain_function(package: Package, path: str, name: str) -> bool:
@@ -60,7 +88,8 @@ def undefined_entry_point_function(package: Package) -> Iterator[Hit]:
     ## What it does
     For console scripts whose module is installed and parses, checks that the first part of
     `:function` is defined at the module's top level (a `def`, a class, an assignment or an
-    import). Modules with `from x import *` or a module-level `__getattr__` are skipped.
+    import). Modules with a module-level `__getattr__` are skipped, and so are those with
+    `from x import *` unless `x` is a module of the package (its names then count).
     Also reports an entry naming a `Node` subclass of the module instead of a function
     (`talker = my_pkg.talker:Talker`) when neither the class nor the module's top-level code
     calls `rclpy.init()`, and an entry reading an attribute off a plain function
@@ -90,10 +119,12 @@ def undefined_entry_point_function(package: Package) -> Iterator[Hit]:
         module = package.module(modules[entry.module])
         if module is None or module.syntax_error or "__getattr__" in module.top_level_names:
             continue
-        if any("*" in i.names for i in module.imports):
-            continue
+        starred = _star_names(package, module)
+        if starred is None:
+            continue  # `from x import *` of a module whose names are unknown
+        names = module.top_level_names | starred
         function = (entry.attr or "").split(".")[0]
-        if function not in module.top_level_names:
+        if function not in names:
             close = get_close_matches(function, sorted(module.top_level_names), n=1)
             meant = typo_of(function, module.top_level_names)
             yield Hit(entry.span, f"`{entry.module}` does not define `{function}` at its top "
