@@ -244,8 +244,8 @@ def dead_lines(tree: ast.Module) -> list[tuple[int, int]]:
     """Line ranges (first, last) of code that never runs: ``if`` branches that never run on
     Python 3 (also those a function's own constant flag decides: ``debug = False`` then ``if
     debug:``) and statements after a ``return``, ``raise``, ``continue`` or ``break`` of the
-    same block or after a ``while True:`` loop without a ``break``, worked out once per tree (PYC001, PYC016 and PYC019 ask); treat as
-    read-only."""
+    same block or after a ``while True:`` loop without a ``break``, worked out once per tree
+    (PYC001, PYC016 and PYC019 ask); treat as read-only."""
     constants = module_constants(tree)
     local = function_constants(tree)
     parents = walk_once(tree).parents if local else {}

@@ -286,22 +286,28 @@ def enclosing_package_import(package: Package, owner: str, imported: Import
         return None
     installed = installed_modules(package) or {}
     rest = imported.module.split(".")[1:]
-    for end in range(len(parts), 1, -1):
-        if parts[end - 1] == top:
-            base = ".".join(parts[:end])
-            named = [".".join([base, *rest])] if rest else [f"{base}.{n}" for n in imported.names]
-            found = next(((base, name) for name in named if name in installed), None)
-            if found is not None and _top_of_a_project(package, installed.get(base, "")):
-                return None
-            return found if found is None or not rest or \
-                _provides(package, installed, found[1], imported.names) else None
-    return None
+    base = _enclosing_base(parts, top)
+    if not base or kept_project_import(package, owner, imported):
+        return None
+    named = [".".join([base, *rest])] if rest else [f"{base}.{n}" for n in imported.names]
+    found = next(((base, name) for name in named if name in installed), None)
+    return found if found is None or not rest or \
+        _provides(package, installed, found[1], imported.names) else None
 
 
-def _top_of_a_project(package: Package, init: str) -> bool:
-    """True when the package whose ``__init__.py`` is ``init`` sits in a folder with a
-    setup.py or pyproject.toml of its own: a project kept inside (vendored PointPillars),
-    installed by pip, whose top-level package it is."""
+def _enclosing_base(parts: list[str], top: str) -> str:
+    """The dotted name of the innermost package of ``parts`` (a module's package, split)
+    named ``top``, below the top level; empty when there is none."""
+    return next((".".join(parts[:end]) for end in range(len(parts), 1, -1)
+                 if parts[end - 1] == top), "")
+
+
+def kept_project_import(package: Package, owner: str, imported: Import) -> bool:
+    """True when ``imported`` names, by its bare name, a package around its module (``owner``)
+    that sits in a folder with a setup.py or pyproject.toml of its own: a project kept inside
+    (vendored PointPillars), installed by pip, whose top-level package it is."""
+    base = _enclosing_base(owner.split("."), imported.top_level) if imported.top_level else ""
+    init = (installed_modules(package) or {}).get(base, "") if base else ""
     above = posixpath.dirname(posixpath.dirname(init))
     return bool(above) and any(package.has_file(f"{above}/{name}") for name in PROJECT_FILES)
 
@@ -627,6 +633,7 @@ def _needs(package: Package, module: PythonModule, guarded: bool | None) -> Iter
         if (not top or (guarded is not None and is_guarded != guarded)
                 or top in skip or (top in stdlib and not keys_for_import(top))
                 or enclosing_package_import(package, owner, imported)
+                or kept_project_import(package, owner, imported)
                 or any(line < imported.span.line and top in names for line, names in on_path)):
             continue
         for member in _namespace_members(imported):

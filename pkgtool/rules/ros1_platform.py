@@ -10,6 +10,7 @@ syntax Python 3 does not read.
 
 from __future__ import annotations
 
+from pkgtool.knowledge.rosdistro import is_rosdep_key
 from pkgtool.model.condition import applies
 from pkgtool.model.package import Package
 
@@ -21,8 +22,10 @@ def is_ros1_package(package: Package) -> bool:
 
 def is_python2_package(package: Package) -> bool:
     """True for a ROS 1 package built for Python 2 (Melodic or older): one that depends on a
-    Python 2 rosdep key (``python-serial``; not under a condition the target rules out)."""
+    Python 2 rosdep key of a library that has a Python 3 key too (``python-serial``, not
+    Noetic's ``python-is-python3``; not under a condition the target rules out)."""
     return is_ros1_package(package) and any(
         dependency.name.startswith("python-") and
+        is_rosdep_key("python3-" + dependency.name[len("python-"):]) and
         applies(dependency.condition, package.context.distro)
         for dependency in package.manifest.dependencies)  # type: ignore[union-attr]

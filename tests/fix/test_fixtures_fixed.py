@@ -106,6 +106,7 @@ MANUAL = {("PYC078", "habits_of_other_languages"), ("PYC079", "unknown_keywords"
           ("PYC025", "scalars_for_sequences"),
           ("ENT003", "node_class_as_entry"), ("ENT003", "attribute_of_function"),
           ("ENT003", "star_import_without_main"),
+          ("LCH002", "moveit_config_found_by_builder"),
           ("PYC014", "read_before_declaring"),
           ("LCH001", "wrong_executable_names"), ("LCH001", "data_files_walked_at_build"),
           ("LCH001", "executables_of_a_loop"), ("LCH001", "cmake_executables_never_installed"),
@@ -134,7 +135,8 @@ more than a typo away: other names, maybe meant, and so is `timeout=` for `timeo
 module a Gazebo Classic launch file imports, has no release after Humble: the fixer declares
 only keys that resolve for the target (LCH003). A dropped comparison holding a call (PYC050)
 needs the `if` its author meant. An executable a launch file loops over (LCH001) is written in
-a list the fixer does not edit. DEP007's fixer rewrites Python imports; a script CMake installs
+a list the fixer does not edit, and MoveIt config packages no release has (LCH002) are the
+author's to name. DEP007's fixer rewrites Python imports; a script CMake installs
 without the modules beside it needs an `install()` only the author places (no CMake fixer)."""
 
 FOLDED = {("DEP001", "pip_name_instead_of_key")}

@@ -111,9 +111,11 @@ def _named(text: str, package: Package, installed_as: dict[str, str]) -> tuple[s
     if source is None or posixpath.isabs(text):
         return None
     below = posixpath.normpath(text)
-    folder = source[:-len(below)].rstrip("/") if source.endswith(below) else ""
-    return source, f"`{folder}/` of the package's source folder" if folder else \
-        "the package's source folder"
+    if source == below:
+        return source, "the package's source folder"
+    if source.endswith("/" + below):
+        return source, f"`{source[:-len(below)]}` of the package's source folder"
+    return source, f"`share/{package.name}` of the install folder"
 
 
 def _file_read(call: ast.Call, index: Index) -> ast.expr | None:

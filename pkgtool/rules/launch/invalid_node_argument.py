@@ -64,8 +64,8 @@ def _names(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
     if problem:
         yield (f"`{node.name}` is not a valid node name: {problem}",
                "Use only letters, digits and underscores", node.span)
-    problem = topic_name_problem(node.namespace) if node.namespace not in (None, "", "/") \
-        else None  # none, or `/`: the root namespace, the one name that may end with a slash
+    namespace = (node.namespace or "").rstrip("/")  # launch_ros strips trailing slashes
+    problem = topic_name_problem(namespace) if namespace else None  # none, or the root
     if problem:
         yield (f"`{node.namespace}` is not a valid namespace: {problem}",
                "Use only letters, digits and underscores, and `/` between parts", node.span)
@@ -162,7 +162,8 @@ def invalid_launch_node_argument(package: Package) -> Iterator[Hit]:
     out of the LaunchDescription) are checked too: the call that makes them raises. In every
     kind of launch file, a node name or namespace written literally (`name='talker node'`,
     `namespace="my robot"`, a `__node:=` remapping) must be one rcl accepts: letters,
-    digits and underscores (and `/` between the parts of a namespace), no part starting
+    digits and underscores (and `/` between the parts of a namespace, which may also end
+    with `/`: launch strips it), no part starting
     with a digit, and a literal `output` must be one launch knows (`screen`, `log`, `both`,
     `own_log`, `full`); a Python `arguments=`, `ros_arguments=` or `remappings=` display must
     hold text (`arguments=['--rate', 2]` is refused), and `arguments=` or `ros_arguments=` must

@@ -6,15 +6,16 @@ name, an entry point. One whose name appears nowhere in the package's Python cod
 setup.cfg), nor with a typo (``self.timer_calback`` handed to a timer means
 ``timer_callback``), that overrides nothing of rclpy's nodes and carries no decorator, is dead
 code (copied in, or its only caller commented out): an attribute it reads that nothing sets is
-a mistake that cannot happen.
+a mistake that cannot happen. A package that calls ``getattr`` with a computed name
+(``getattr(self, f'state_{state}')()``) may call any method: none is said never to run.
 """
 
 from __future__ import annotations
 
 import ast
-from difflib import get_close_matches
 
 from pkgtool.knowledge.rclpy_node import LIFECYCLE_NODE_ATTRIBUTES
+from pkgtool.knowledge.rosdistro import is_typo
 from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.memo import per_package
@@ -23,20 +24,26 @@ from pkgtool.model.python_visitor import parse_tree
 from pkgtool.rules.syntax_trees import Index
 
 _WORD = lazy_pattern(r"[A-Za-z_]\w*")
+ANY_NAME = "*"
+"""What :func:`_named` holds when the package calls methods by computed names."""
 
 
 def never_called(package: Package, node: ast.AST, index: Index) -> bool:
     """True when ``node`` is inside a method that nothing in the package names (see the
     module's docstring)."""
-    function = index.enclosing_function(node)
-    while function is not None:
+    return _in_uncalled_method(package, index.enclosing_function(node), index)
+
+
+def _in_uncalled_method(package: Package, function: ast.AST | None, index: Index) -> bool:
+    """True when ``function``, or a function around it, is a method nothing names."""
+    while isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef)):
         owner = index.parents.get(id(function))
         if isinstance(owner, ast.ClassDef):
             return not function.decorator_list and not function.name.startswith("__") and \
                 function.name not in LIFECYCLE_NODE_ATTRIBUTES and \
                 all((index.qualified(base) or "").startswith("rclpy.") for base in owner.bases) \
-                and function.name not in _named(package) and \
-                not get_close_matches(function.name, _named(package), n=1, cutoff=0.85)
+                and function.name not in _named(package) and ANY_NAME not in _named(package) \
+                and not any(is_typo(function.name, name) for name in _named(package))
         function = index.enclosing_function(function)
     return False
 
@@ -52,6 +59,11 @@ def _named(package: Package) -> frozenset[str]:
             continue
         docstrings = {id(node.value) for node in nodes_of_class(tree, ast.Expr)
                       if isinstance(node, ast.Expr) and isinstance(node.value, ast.Constant)}
+        if any(isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and
+               node.func.id == "getattr" and len(node.args) > 1 and
+               not isinstance(node.args[1], ast.Constant)
+               for node in nodes_of_class(tree, ast.Call)):
+            return frozenset({ANY_NAME})  # getattr(self, f'state_{x}'): any method may run
         for node in nodes_of_class(tree, ast.Name, ast.Attribute, ast.Constant, ast.alias):
             if id(node) in docstrings:
                 continue

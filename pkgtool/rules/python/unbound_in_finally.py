@@ -112,9 +112,10 @@ def _falsy_before(guard: str, node: ast.Try, index: Index) -> bool:
             before = block[:[id(b) for b in block].index(id(node))]
             for statement in reversed(before):
                 if isinstance(statement, ast.If) and not statement.orelse and \
+                        not isinstance(statement.test, ast.BoolOp) and \
                         guard in _tested_values(statement.test) and \
                         isinstance(statement.body[-1], (ast.Return, ast.Raise)):
-                    return True
+                    return True  # `if a and b: return` leaves `a` truthy when `b` is not
                 if _sets(statement, guard):
                     return isinstance(statement, ast.Assign) and \
                         isinstance(statement.value, ast.Constant) and \

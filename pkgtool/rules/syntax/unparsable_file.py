@@ -91,8 +91,9 @@ def _vendored_and_unused(package: Package, problem: ParseProblem) -> bool:
         plain_python_project(package)) and path not in installed_files(package)
 
 
-_PYTHON2_SHEBANG = lazy_pattern(r"#!.*\bpython2?[ \t]*(?:\n|$)")
-"""A ``#!`` line running ``python`` or ``python2``: ROS 1's convention before Noetic."""
+_PYTHON2_SHEBANG = lazy_pattern(r"#!.*\bpython(?:2(?:\.\d+)?)?[ \t\r]*(?:\n|$)")
+"""A ``#!`` line running ``python``, ``python2`` or ``python2.7``: ROS 1's convention before
+Noetic."""
 
 
 def _python2(package: Package, problem: ParseProblem) -> bool:
