@@ -41,7 +41,9 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     below the top level (`my_pkg/filters/`), imports of its modules through the folder's bare
     name (`from filters.low_pass import smooth`, `from filters import low_pass`); importing
     the bare name alone (`import filters`, `from filters import smooth`) names no module of
-    the folder and is left alone. Fallbacks (`except ImportError:`, `if '.' in __name__:`)
+    the folder and is left alone, and so is a folder beside a setup.py or pyproject.toml of
+    its own (a project kept inside, pip-installed, importing its own top-level package).
+    Fallbacks (`except ImportError:`, `if '.' in __name__:`)
     are guarded and never reported, and so are scripts kept in the package folder: a module
     that runs code at its top level (a call, an `if __name__ == '__main__':` block) that no
     console script runs and no module imports, run as `python3 path/to/it.py`, and the
