@@ -87,12 +87,23 @@ def _check_nodes_talk_and_stop_cleanly(root: Path, env: dict[str, str]) -> None:
     finally:
         for process in processes.values():
             process.send_signal(signal.SIGINT)
-        codes = {name: process.wait(timeout=30) for name, process in processes.items()}
+        codes = {name: _stopped(process, 30) for name, process in processes.items()}
     assert "Published message" in said, said
     assert "Received message" in heard, heard
     assert codes == {"talker": 0, "listener": 0}, said + heard
     rest = b"".join(process.stdout.read() for process in processes.values())
     assert b"Traceback" not in rest, rest.decode(errors="replace")
+
+
+def _stopped(process: subprocess.Popen, timeout: float) -> int | str:
+    """The exit code of ``process`` within ``timeout`` seconds; else it is killed (a node left
+    spinning would slow every later test) and the answer says so."""
+    try:
+        return process.wait(timeout=timeout)
+    except subprocess.TimeoutExpired:
+        process.kill()
+        process.wait()
+        return f"still running {timeout} s after SIGINT (killed)"
 
 
 def _start(script: Path, env: dict[str, str], *args: str) -> subprocess.Popen:
@@ -116,7 +127,7 @@ def _check_repeated_ctrl_c(root: Path, env: dict[str, str]) -> None:
             process.send_signal(signal.SIGINT)
             time.sleep(0.002)
         rest = process.stdout.read().decode(errors="replace")
-        assert process.wait(timeout=5) == 0, name + ":\n" + seen + rest
+        assert _stopped(process, 5) == 0, name + ":\n" + seen + rest
         assert "Traceback" not in rest and "Exception ignored" not in rest, rest
 
 
