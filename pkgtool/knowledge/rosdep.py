@@ -70,6 +70,10 @@ NOT_ROSDEP_KEYS: dict[str, str] = {
     "python-pytest": "python3-pytest",
     "python-setuptools": "python3-setuptools",
     "OpenCV": "python3-opencv",  # CMake's name; MAN018 offers libopencv-dev to C++ packages
+    # modules of rclpy named as packages (rclpy.lifecycle, rclpy.action): rclpy has them
+    "rclpy_lifecycle": "rclpy",
+    "rclpy_action": "rclpy",
+    "rclpy_actions": "rclpy",
 }
 """Names people write where a rosdep key belongs -> the key to use instead.
 

@@ -127,6 +127,7 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
     a name with a ``/`` (``turtlesim/msg/Pose``: its package is the dependency), a name with
     characters no key has (``rclpy/``, ``'numpy'``), a file name
     (``robot.launch.py``, ``params.yaml``),
+    rclpy's own modules named as packages (``rclpy_lifecycle``: the key is ``rclpy``),
     pip distribution names (``opencv-python``, ``pyyaml``, ``numpy``), also after ``python3-``
     (``python3-pillow``: the key is ``python3-pil``), import names (``cv2``),
     ROS 1 Python 2 keys (``python-opencv``), ROS 1 packages (``rospy``, ``catkin``) in a package
