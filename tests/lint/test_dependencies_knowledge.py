@@ -15,14 +15,18 @@ from pkgtool.knowledge.rclpy_classes import attributes_of, classes
 from pkgtool.knowledge.rclpy_missing import entries, missing_attribute, owners
 from pkgtool.knowledge.rclpy_names import close_name, defined_on, defines
 from pkgtool.knowledge.ros_names import looks_like_ros
-from pkgtool.knowledge.rosdep import (NOT_ROSDEP_KEYS, accepted_keys,
+from pkgtool.knowledge.rosdep import (CMAKE_NAMES, NOT_ROSDEP_KEYS, accepted_keys,
                                       key_for_python_module, package_for_ros_module,
                                       stdlib_modules, suggested_key)
 
 
 def test_suggested_keys_are_rosdep_keys_that_resolve_on_every_distro() -> None:
-    for key in NOT_ROSDEP_KEYS.values():
-        assert all(rosdistro.key_resolves(key, distro) for distro in rosdistro.DISTROS), key
+    """Each key offered instead of a name is a rosdep key, or a ROS package (`rclpy` for
+    `rclpy_lifecycle`), of every distribution."""
+    for key in (*NOT_ROSDEP_KEYS.values(), *CMAKE_NAMES.values()):
+        assert all(rosdistro.key_resolves(key, distro) or
+                   rosdistro.is_released_package(key, distro)
+                   for distro in rosdistro.DISTROS), key
 
 
 def test_public_lookups() -> None:
