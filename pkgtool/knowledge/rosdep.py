@@ -163,6 +163,5 @@ def accepted_keys(top_level: str, primary: str) -> tuple[str, ...]:
 
 
 __all__ = ["ALTERNATIVE_KEYS", "CMAKE_NAMES", "COVERED_BY", "NOT_PACKAGES", "NOT_ROSDEP_KEYS",
-           "ROS1_PACKAGES",
-           "ROS_MODULE_PACKAGES", "accepted_keys", "brought_in", "key_for_python_module",
-           "package_for_ros_module", "stdlib_modules", "suggested_key"]
+           "ROS1_PACKAGES", "ROS_MODULE_PACKAGES", "accepted_keys", "brought_in",
+           "key_for_python_module", "package_for_ros_module", "stdlib_modules", "suggested_key"]

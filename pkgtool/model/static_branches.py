@@ -273,8 +273,9 @@ def _after_jumps(tree: ast.Module) -> list[tuple[int, int]]:
     """Line ranges of the statements that follow a jump in the same block, or an endless loop
     (:func:`_endless`), and of the ``else:`` of such a loop."""
     ranges: list[tuple[int, int]] = []
+    endless = {id(loop) for loop in nodes_of_class(tree, ast.While) if _endless(loop)}
     for node in nodes_of_class(tree, *_HOLDERS):
-        if isinstance(node, ast.While) and node.orelse and _endless(node):
+        if isinstance(node, ast.While) and id(node) in endless and node.orelse:
             ranges.append((node.orelse[0].lineno,
                            node.orelse[-1].end_lineno or node.orelse[-1].lineno))
         for name in _BLOCKS:
@@ -282,8 +283,7 @@ def _after_jumps(tree: ast.Module) -> list[tuple[int, int]]:
             if type(block) is not list or len(block) < 2:
                 continue
             jump = next((i for i, s in enumerate(block[:-1])
-                         if isinstance(s, _JUMPS) or isinstance(s, ast.While) and _endless(s)),
-                        None)
+                         if isinstance(s, _JUMPS) or id(s) in endless), None)
             if jump is not None:
                 last = block[-1]
                 ranges.append((block[jump + 1].lineno, last.end_lineno or last.lineno))

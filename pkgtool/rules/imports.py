@@ -269,6 +269,16 @@ def python_package_of(package: Package, module: PythonModule) -> str:
     return dotted if module.path.endswith("/__init__.py") else dotted.rpartition(".")[0]
 
 
+def absolute_module(module: str | None, level: int, package: str) -> str:
+    """The module a ``from`` import of ``module`` with ``level`` leading dots names, relative
+    to the Python package ``package`` it is in when it starts with dots."""
+    if not level:
+        return module or ""
+    parts = package.split(".")
+    parts = parts[:len(parts) - level + 1]
+    return ".".join([*parts, *([module] if module else [])])
+
+
 def enclosing_package_import(package: Package, owner: str, imported: Import
                              ) -> tuple[str, str] | None:
     """The package and the module of it that ``imported`` names through the package's bare name

@@ -11,6 +11,7 @@ from pkgtool.knowledge.rosdistro import keys_for_import, stdlib_modules
 from pkgtool.model.cmake_install import installed_python_packages, program_sources
 from pkgtool.model.installed import cmake_installed, cmake_text
 from pkgtool.model.package import Package
+from pkgtool.model.submodules import under
 from pkgtool.rules.imports import ANY, declared, path_modules
 from pkgtool.rules.ros1_platform import is_ros1_package
 
@@ -40,7 +41,7 @@ def uninstalled_script_neighbours(package: Package) -> Iterator[Hit]:
                     any(line < imported.span.line and top in names for line, names in on_path):
                 continue
             neighbour = _neighbour(package, folder, top)
-            if neighbour is None or _installed(neighbour, installed):
+            if neighbour is None or "." in installed or under(neighbour, installed):
                 continue
             told.add(top)
             how = f"install(DIRECTORY {neighbour} DESTINATION lib/${{PROJECT_NAME}})" \
@@ -63,9 +64,3 @@ def _neighbour(package: Package, folder: str, top: str) -> str | None:
     prefix = f"{base}/"
     return base if any(f.startswith(prefix) and f.endswith(".py") for f in package.files) \
         else None
-
-
-def _installed(path: str, installed: frozenset[str]) -> bool:
-    """True when CMake installs ``path`` or a folder holding it (to any destination)."""
-    return any(path == source or path.startswith(source.rstrip("/") + "/") or source == "."
-               for source in installed)

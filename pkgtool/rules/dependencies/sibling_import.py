@@ -43,15 +43,15 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     the bare name alone (`import filters`, `from filters import smooth`) names no module of
     the folder and is left alone, and so is a folder beside a setup.py or pyproject.toml of
     its own (a project kept inside, pip-installed, importing its own top-level package).
-    Fallbacks (`except ImportError:`, `if '.' in __name__:`)
-    are guarded and never reported, and so are scripts kept in the package folder: a module
-    that runs code at its top level (a call, an `if __name__ == '__main__':` block) that no
-    console script runs and no module imports, run as `python3 path/to/it.py`, and the
-    helpers only such scripts (or their helpers) of the same folder import, by their bare
-    name. In a package built with CMake, reports the same mistake in the scripts
-    `install(PROGRAMS ... DESTINATION lib/...)` installs: an import of a module or package
-    beside the script in the source tree that CMakeLists.txt does not install (nor puts in a
-    Python package with `ament_python_install_package`), when what it installs is known.
+    Fallbacks (`except ImportError:`, `if '.' in __name__:`) are guarded and never reported,
+    and so are scripts kept in the package folder: a module that runs code at its top level
+    (a call, an `if __name__ == '__main__':` block) that no console script runs and no module
+    imports, run as `python3 path/to/it.py`, and the helpers only such scripts (or their
+    helpers) of the same folder import, by their bare name. In a package built with CMake,
+    reports the same mistake in the scripts `install(PROGRAMS ... DESTINATION lib/...)`
+    installs: an import of a module or package beside the script in the source tree that
+    CMakeLists.txt does not install (nor puts in a Python package with
+    `ament_python_install_package`), when what it installs is known.
 
     ## Why is this bad?
     `python3 my_pkg/node.py` puts the file's folder on `sys.path`, so the import works while

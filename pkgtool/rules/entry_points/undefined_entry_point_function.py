@@ -12,7 +12,7 @@ from pkgtool.model.installed import installed_modules
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
 from pkgtool.rules.console_scripts import scripts_and_modules
-from pkgtool.rules.imports import python_package_of
+from pkgtool.rules.imports import absolute_module, python_package_of
 from pkgtool.rules.node_api import node_subclasses
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import FUNCTIONS, installed_trees
@@ -29,9 +29,8 @@ def _star_names(package: Package, module: PythonModule) -> frozenset[str] | None
     for imported in module.imports:
         if "*" not in imported.names:
             continue
-        base = owner.split(".") if owner else []
-        base = base[:len(base) - imported.level + 1] if imported.level else []
-        dotted = ".".join([*base, imported.module] if imported.module else base)
+        dotted = absolute_module(imported.module, imported.level, owner) if owner \
+            else imported.module or ""  # a module outside any package: its dots lead nowhere
         path = installed.get(dotted) or (installed.get(f"{owner}.{dotted}")
                                          if owner and not imported.level else None)
         source = package.module(path) if path else None

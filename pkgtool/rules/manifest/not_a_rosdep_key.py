@@ -38,8 +38,9 @@ rosdep key nor a released package (``uuid``, ``zlib`` and ``sqlite3`` are keys).
 
 _STDLIB_AND_KEY = {"time": "GNU time, a command-line program"}
 """Names of :data:`_STDLIB` that are rosdep keys too, with what the key installs."""
-_CPP_KEYS = {"opencv": "libopencv-dev", "opencv2": "libopencv-dev", "OpenCV": "libopencv-dev"}
-"""The C++ library key for a name whose Python key MAN018 suggests elsewhere."""
+_CPP_KEYS = {"opencv": "libopencv-dev", "opencv2": "libopencv-dev"}
+"""The C++ library key for a name whose Python key MAN018 suggests elsewhere (and CMake's names
+of libraries, :data:`~pkgtool.knowledge.rosdep.CMAKE_NAMES`: ``OpenCV``)."""
 
 
 def several_keys(key: str) -> list[str]:
@@ -92,8 +93,8 @@ def _hit(element: XmlElement, ros2: bool, compiled: bool, distro: str) -> Hit | 
     python = key_instead(key, distro, tag)
     if python is None:
         return None
-    replacement = _CPP_KEYS.get(key, "") if compiled and python.startswith("python3-") \
-        else python  # C++ code may want the library
+    replacement = _CPP_KEYS.get(key) or CMAKE_NAMES.get(key, "") \
+        if compiled and python.startswith("python3-") else python  # C++ code wants the library
     if not replacement:
         return Hit(element.span, f"`{key}` is not a rosdep key",
                    f"Write the rosdep key of what the package uses: `{python}` for Python "

@@ -8,7 +8,7 @@ import ast
 
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
-from pkgtool.rules.imports import installed_names, python_package_of
+from pkgtool.rules.imports import absolute_module, installed_names, python_package_of
 from pkgtool.rules.scopes import scope_bindings
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
@@ -37,16 +37,7 @@ def imported_from_package(name: str, tree: ast.Module, index: Index, package: Pa
     where = module_names(package).get(id(index))
     if where is None or scope_bindings(tree)[name] != 1:
         return None
-    found = [(_absolute(node, where[1]), alias.name) for node in index.import_froms
+    found = [(absolute_module(node.module, node.level, where[1]), alias.name)
+             for node in index.import_froms
              for alias in node.names if (alias.asname or alias.name) == name]
     return found[0] if len(found) == 1 and found[0][0] in modules_by_name(package) else None
-
-
-def _absolute(node: ast.ImportFrom, package: str) -> str:
-    """The module a ``from`` import names, relative to the Python package ``package`` it is
-    in when it starts with dots."""
-    if not node.level:
-        return node.module or ""
-    parts = package.split(".")
-    parts = parts[:len(parts) - node.level + 1]
-    return ".".join([*parts, *([node.module] if node.module else [])])

@@ -94,26 +94,34 @@ def inspecting(index: Index) -> set[int]:
 
 
 def tested_names(test: ast.expr) -> Iterator[str]:
-    """The names a test requires to be truthy or not None (``a``, ``a is not None``, and the
-    parts of an ``and``)."""
+    """The names (and ``self.x``, as written) a test requires to be truthy or not None
+    (``a``, ``a is not None``, and the parts of an ``and``)."""
     if isinstance(test, ast.BoolOp) and isinstance(test.op, ast.And):
         for value in test.values:
             yield from tested_names(value)
-    elif isinstance(test, ast.Name):
+        return
+    if isinstance(test, ast.Compare) and len(test.ops) == 1 and \
+            isinstance(test.ops[0], ast.IsNot) and isinstance(test.comparators[0], ast.Constant) \
+            and test.comparators[0].value is None:
+        test = test.left
+    if isinstance(test, ast.Name):
         yield test.id
-    elif isinstance(test, ast.Compare) and isinstance(test.left, ast.Name) and \
-            len(test.ops) == 1 and isinstance(test.ops[0], ast.IsNot) and \
-            isinstance(test.comparators[0], ast.Constant) and test.comparators[0].value is None:
-        yield test.left.id
+    elif isinstance(test, ast.Attribute) and isinstance(test.value, ast.Name):
+        yield ast.unparse(test)
+
+
+def statements_before(node: ast.stmt, index: Index) -> list[ast.stmt]:
+    """The statements before ``node`` in its block (empty when it starts the block)."""
+    parent = index.parents.get(id(node))
+    for block in (getattr(parent, field, None) for field in ("body", "orelse", "finalbody")):
+        if isinstance(block, list) and any(s is node for s in block):
+            return block[:[id(b) for b in block].index(id(node))]
+    return []
 
 
 def none_before(guard: str, node: ast.Try, index: Index) -> bool:
     """True when a statement before ``node`` in its block is ``guard = None``."""
-    parent = index.parents.get(id(node))
-    for block in (getattr(parent, field, None) for field in ("body", "orelse", "finalbody")):
-        if isinstance(block, list) and any(s is node for s in block):
-            return any(isinstance(s, ast.Assign) and len(s.targets) == 1 and
-                       isinstance(s.targets[0], ast.Name) and s.targets[0].id == guard and
-                       isinstance(s.value, ast.Constant) and s.value.value is None
-                       for s in block[:[id(b) for b in block].index(id(node))])
-    return False
+    return any(isinstance(s, ast.Assign) and len(s.targets) == 1 and
+               isinstance(s.targets[0], ast.Name) and s.targets[0].id == guard and
+               isinstance(s.value, ast.Constant) and s.value.value is None
+               for s in statements_before(node, index))

@@ -9,7 +9,8 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._try_bindings import (fails_before, harmless, in_loop, inspecting,
-                                                none_before, tested_names, uses)
+                                                none_before, statements_before, tested_names,
+                                                uses)
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import bound_names, catches_everything, scope_bindings
 from pkgtool.rules.syntax_trees import Index, installed_trees
@@ -66,7 +67,7 @@ def _guarded_by_later(use: ast.Name, name: str, node: ast.Try, index: Index,
     child, parent = use, index.parents.get(id(use))
     while parent is not None and parent is not node:
         if isinstance(parent, ast.If) and any(child is s for s in parent.body):
-            for guard in _tested_values(parent.test):
+            for guard in tested_names(parent.test):
                 sets = [i for i, s in enumerate(node.body) if _sets(s, guard)]
                 others = [s for s in ast.walk(function) if isinstance(s, ast.stmt) and
                           not hasattr(s, "body") and node.lineno <= s.lineno <= use.lineno
@@ -76,21 +77,6 @@ def _guarded_by_later(use: ast.Name, name: str, node: ast.Try, index: Index,
                     return True
         child, parent = parent, index.parents.get(id(parent))
     return False
-
-
-def _tested_values(test: ast.expr) -> Iterator[str]:
-    """The names and ``self.x`` a test requires to be truthy or not None (as written)."""
-    if isinstance(test, ast.BoolOp) and isinstance(test.op, ast.And):
-        for value in test.values:
-            yield from _tested_values(value)
-        return
-    if isinstance(test, ast.Compare) and len(test.ops) == 1 and \
-            isinstance(test.ops[0], ast.IsNot) and isinstance(test.comparators[0], ast.Constant) \
-            and test.comparators[0].value is None:
-        test = test.left
-    if isinstance(test, ast.Name) or isinstance(test, ast.Attribute) and \
-            isinstance(test.value, ast.Name):
-        yield ast.unparse(test)
 
 
 def _sets(statement: ast.stmt, guard: str) -> bool:
@@ -106,20 +92,15 @@ def _sets(statement: ast.stmt, guard: str) -> bool:
 def _falsy_before(guard: str, node: ast.Try, index: Index) -> bool:
     """True when the last statement before ``node`` in its block that sets or tests ``guard``
     is ``guard = None`` or ``if guard: return`` (or raise), without ``else``."""
-    parent = index.parents.get(id(node))
-    for block in (getattr(parent, field, None) for field in ("body", "orelse", "finalbody")):
-        if isinstance(block, list) and any(s is node for s in block):
-            before = block[:[id(b) for b in block].index(id(node))]
-            for statement in reversed(before):
-                if isinstance(statement, ast.If) and not statement.orelse and \
-                        not isinstance(statement.test, ast.BoolOp) and \
-                        guard in _tested_values(statement.test) and \
-                        isinstance(statement.body[-1], (ast.Return, ast.Raise)):
-                    return True  # `if a and b: return` leaves `a` truthy when `b` is not
-                if _sets(statement, guard):
-                    return isinstance(statement, ast.Assign) and \
-                        isinstance(statement.value, ast.Constant) and \
-                        statement.value.value is None
+    for statement in reversed(statements_before(node, index)):
+        if isinstance(statement, ast.If) and not statement.orelse and \
+                not isinstance(statement.test, ast.BoolOp) and \
+                guard in tested_names(statement.test) and \
+                isinstance(statement.body[-1], (ast.Return, ast.Raise)):
+            return True  # `if a and b: return` leaves `a` truthy when `b` is not
+        if _sets(statement, guard):
+            return isinstance(statement, ast.Assign) and \
+                isinstance(statement.value, ast.Constant) and statement.value.value is None
     return False
 
 
@@ -180,9 +161,9 @@ def unbound_in_finally(package: Package) -> Iterator[Hit]:
     there to the name's binding (`executor = Pool()` then `pending = None`), or binds
     `guard` after the name, `guard` (a name or `self.x`) being `None` before the `try` or
     ruled out by an `if guard: return` (`self.sock = s` after `s = socket.socket()`); nor a
-    use after
-    a statement of the block that reads a name the `try` binds no earlier (`logger.log(sim)`,
-    then `if energy:` with `energy` bound before `sim`): only that first read can fail.
+    use after a statement of the block that reads a name the `try` binds no earlier
+    (`logger.log(sim)`, then `if energy:` with `energy` bound before `sim`): only that first
+    read can fail.
 
     ## Why is this bad?
     When the assignment fails (the node's constructor raises, Ctrl-C arrives first), the

@@ -52,8 +52,8 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     package built for Python 2 (one depending on `python-...` keys: Melodic or older) are
     not parsed, nor Python files kept aside (in `backup/`, `old/`, or named as a copy,
     `node_old.py`) that the package neither installs nor has pytest collect, nor those of a
-    ROS 1 package whose `#!` line runs `python` (the convention
-    before Noetic): Python 2 syntax (`print x`, tabs counted as 8 columns) is not Python 3's.
+    ROS 1 package whose `#!` line runs `python` (the convention before Noetic): Python 2
+    syntax (`print x`, tabs counted as 8 columns) is not Python 3's.
 
     ## Why is this bad?
     colcon, rosdep and ``ros2 launch`` stop at the first unparsable file, and an installed
