@@ -511,3 +511,21 @@ def _parameter_name(tree: ast.Module, value: ast.AST) -> str | None:
                 isinstance(call.func, (ast.Name, ast.Attribute)):
             return ast.unparse(call.func)
     return None
+
+
+_FIELD_MEANT = lazy_pattern(r"Compare the field: `[^`]*\.([A-Za-z_]\w*)`")
+"""The help of a PYC082 finding naming the one field meant."""
+
+
+@fixer("PYC082", "Compare the field of a message compared with a plain value", safe=False)
+def compared_field(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Write ``msg.data`` for the ``msg`` compared with ``'stop'``, when one field of the
+    message holds such values (the finding's help names it). Unsafe: the comparison was
+    always False (or True); now the branch runs when the field matches."""
+    for doc, finding, nodes in python_nodes(package, findings):
+        meant = _FIELD_MEANT.fullmatch(finding.fix or "")
+        ref = next((n for n in reversed(nodes) if isinstance(n, (ast.Name, ast.Attribute)) and
+                    finding.message.startswith(f"`{ast.unparse(n)}` is a ")), None)
+        if meant is not None and ref is not None:
+            yield Fix(f"Compare `{ast.unparse(ref)}.{meant.group(1)}`",
+                      (_insert(doc, doc.end(ref), f".{meant.group(1)}"),), safe=False)

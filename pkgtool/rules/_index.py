@@ -205,6 +205,9 @@ RULES = {
     "PYC079": ("stdlib-unexpected-keyword", "error", True, "python.stdlib_unexpected_keyword"),
     "PYC080": ("message-subscripted", "error", True, "python.message_subscripted"),
     "PYC081": ("exception-instance-caught", "error", True, "python.exception_instance_caught"),
+    "PYC082": ("message-compared-with-value", "error", True, "python.message_compared_with_value"),
+    "PYC083": ("local-read-before-assignment", "error", True,
+               "python.local_read_before_assignment"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),
@@ -243,6 +246,6 @@ FIXED = frozenset({
     "MAN017", "MAN018", "MAN019", "MAN021", "MAN024", "MAN027", "PYC001", "PYC013", "PYC014",
     "PYC016", "PYC019", "PYC025", "PYC026", "PYC029", "PYC031", "PYC032", "PYC033", "PYC041",
     "PYC046", "PYC047", "PYC050", "PYC058", "PYC062", "PYC063", "PYC064", "PYC065", "PYC066",
-    "PYC068", "PYC070", "PYC076", "PYC078", "PYC079", "PYC080", "PYC081", "SET003", "SET004",
-    "SET005", "SET006", "SET007", "SET008", "SET009", "SET010", "SET016",
+    "PYC068", "PYC070", "PYC076", "PYC078", "PYC079", "PYC080", "PYC081", "PYC082", "SET003",
+    "SET004", "SET005", "SET006", "SET007", "SET008", "SET009", "SET010", "SET016",
 })

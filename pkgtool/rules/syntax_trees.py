@@ -19,6 +19,8 @@ from pkgtool.records import field, record
 from pkgtool.rules.imports import installed_code, is_ros1_module
 
 FUNCTIONS = (ast.FunctionDef, ast.AsyncFunctionDef)
+_STOPS = (*FUNCTIONS, ast.ClassDef)
+_LAMBDA_STOPS = (*_STOPS, ast.Lambda)
 
 
 @record
@@ -29,7 +31,9 @@ class Index:
     ``relative`` holds the names bound only by relative imports (``from . import tools``);
     ``parents`` maps ``id(node)`` to the node's parent; ``bound`` holds every name the module
     binds anywhere (imports, assignments, parameters, definitions); ``dotted`` keeps what
-    :meth:`qualified` found, by ``id(node)`` (with the node: its id is not reused meanwhile).
+    :meth:`qualified` found, by ``id(node)`` (with the node: its id is not reused meanwhile);
+    ``around`` what :meth:`enclosing_function` found, the same way (rules ask about the same
+    names).
     """
 
     attributes: list[ast.Attribute] = field(default_factory=list)
@@ -44,6 +48,8 @@ class Index:
     bound: frozenset[str] = frozenset()
     dotted: dict[int, tuple[ast.expr, str | None]] = field(default_factory=dict, compare=False,
                                                            repr=False)
+    around: dict[tuple[int, bool], tuple[ast.AST, ast.AST | None]] = field(
+        default_factory=dict, compare=False, repr=False)
 
     def defines_function(self, name: str) -> bool:
         """True when the module defines a function or method called ``name`` anywhere."""
@@ -104,12 +110,17 @@ class Index:
         """The innermost function around ``node`` (None at module or class level; also None
         inside a lambda, whose parameters may shadow the function's names, unless
         ``through_lambdas``)."""
-        stops = (*FUNCTIONS, ast.ClassDef) if through_lambdas else \
-            (*FUNCTIONS, ast.ClassDef, ast.Lambda)
+        key = (id(node), through_lambdas)
+        known = self.around.get(key)
+        if known is not None and known[0] is node:
+            return known[1]  # type: ignore[return-value]
+        stops = _STOPS if through_lambdas else _LAMBDA_STOPS
         parent = self.parents.get(id(node))
         while parent is not None and not isinstance(parent, stops):
             parent = self.parents.get(id(parent))
-        return parent if isinstance(parent, FUNCTIONS) else None
+        found = parent if isinstance(parent, FUNCTIONS) else None
+        self.around[key] = (node, found)
+        return found
 
     def functions_around(self, node: ast.AST) -> list[ast.FunctionDef | ast.AsyncFunctionDef]:
         """The functions around ``node``, innermost first, up to its class or the module."""

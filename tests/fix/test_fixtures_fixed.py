@@ -44,7 +44,8 @@ PARTLY = {("PYC080", "indexed_messages"),
           ("PYC026", "action_and_parameter_callbacks"), ("PYC026", "wrong_value_returned"),
           ("LCH005", "remappings_not_pairs"), ("LCH016", "misspelt_methods"),
           ("LCH010", "arguments_launch_rejects"), ("PYC041", "init_without_super"),
-          ("PYC070", "set_wrong_types"), ("LCH010", "command_words_joined")}
+          ("PYC070", "set_wrong_types"), ("LCH010", "command_words_joined"),
+          ("PYC082", "messages_compared")}
 """GPLv3 can mean -only or -or-later, `my_robot_description` is no known package, values outside
 `ros__parameters` belong to a node only the user knows, a node without its executable names
 none, `required="true"` and YAML launch files are left to the user, `exception()` is close to
@@ -66,8 +67,9 @@ words of an f-string of arguments are the author's to write, and so is the condi
 needs, the one message a print-style logging call's arguments were meant to form, and the value
 a `Parameter` of a bool or a list was meant to have, where a command's program ends when a
 substitution names it, which of too many positional arguments were meant by keyword, and
-which program was to read a data file run as a command, and whether a package no release
-has is built elsewhere): no fix
+which program was to read a data file run as a command, whether a package no release
+has is built elsewhere, and which field of a message of several a plain value was compared
+with): no fix
 guesses, the user chooses; the other findings
 of the case are fixed."""
 MANUAL = {("PYC078", "habits_of_other_languages"), ("PYC079", "unknown_keywords"),

@@ -34,7 +34,8 @@ def _never_read(node: ast.AST, index: Index, depth: int = 0) -> bool:
     """True when the path ``node`` builds is never read as a file: it goes only to
     :data:`_TOLERANT` Qt calls (a missing icon shows nothing), or to calls that write it
     (``plt.savefig(path)``, ``open(path, 'w')``), itself or through a name every read of which
-    does, or a parameter of a function of the module every read of which does."""
+    does (a function's local name nothing reads, a literal list holding it, too), or a
+    parameter of a function of the module every read of which does."""
     parent = index.parents.get(id(node))
     if depth > _DEPTH:
         return False  # followed far enough (names may pass the path round in a loop)
@@ -43,10 +44,14 @@ def _never_read(node: ast.AST, index: Index, depth: int = 0) -> bool:
         return called in _TOLERANT or called in _WRITES or called == "open" and \
             opens_to_write(parent) or _parameter_never_read(
                 parent, parent.args.index(node), index, depth + 1)
+    if isinstance(parent, (ast.List, ast.Tuple)) and any(node is e for e in parent.elts):
+        return _never_read(parent, index, depth + 1)  # read only as the list is
     if not (isinstance(parent, ast.Assign) and len(parent.targets) == 1 and
             isinstance(parent.targets[0], ast.Name)):
         return False
-    return _reads_never_read(parent.targets[0].id, index.module_of(node), index, depth + 1)
+    local = index.enclosing_function(node) is not None  # no other module can read it
+    return _reads_never_read(parent.targets[0].id, index.module_of(node), index, depth + 1,
+                             unread=local)
 
 
 def _parameter_never_read(call: ast.Call, position: int, index: Index, depth: int) -> bool:
@@ -65,10 +70,13 @@ def _parameter_never_read(call: ast.Call, position: int, index: Index, depth: in
         parameters[position].arg, function, index, depth)
 
 
-def _reads_never_read(name: str, scope: ast.AST, index: Index, depth: int) -> bool:
+def _reads_never_read(name: str, scope: ast.AST, index: Index, depth: int,
+                      unread: bool = False) -> bool:
+    """True when every read of ``name`` in ``scope`` never reads the path as a file; when
+    nothing reads the name, ``unread`` (True for a local name of a function)."""
     reads = [n for n in nodes_of_class(scope, ast.Name)
              if isinstance(n, ast.Name) and n.id == name and isinstance(n.ctx, ast.Load)]
-    return bool(reads) and all(_never_read(read, index, depth) for read in reads)
+    return (bool(reads) or unread) and all(_never_read(read, index, depth) for read in reads)
 
 
 def _in_main_block(node: ast.AST, index: Index) -> bool:
@@ -115,7 +123,9 @@ def file_beside_module(package: Package) -> Iterator[Hit]:
     when the file runs as a script, from the sources, unless data_files copies it), paths
     only shown as images by Qt (`QIcon(path)`, `QPixmap(path)`: a missing file makes an
     empty image, no error) and paths only written (`plt.savefig(path)`, `open(path, 'w')`,
-    `cv2.imwrite(path, image)`, also through a function of the module taking the path).
+    `cv2.imwrite(path, image)`, also through a function of the module taking the path), and
+    paths a function keeps in a local name nothing reads, alone or in a list (a candidate
+    left over after the code switched to `get_package_share_directory`).
 
     ## Why is this bad?
     `colcon build --symlink-install` runs the sources in place, so the file is found; a plain

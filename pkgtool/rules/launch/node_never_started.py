@@ -11,11 +11,15 @@ from pkgtool.rules.registry import rule
 
 
 def _disabled(lines: list[str], line: int) -> bool:
-    """True when the name assigned on ``line`` (1-based) appears in a comment of the file:
-    the node was left out on purpose (``# talker,`` in the description's list)."""
+    """True when a comment of the file uses the name assigned on ``line`` (1-based) as code
+    does: the node was left out on purpose (``# talker,`` in the description's list,
+    ``# ld.add_action(talker)``); not a comment that only tells of it in words."""
     assigned = re.match(r"\s*(\w+)\s*=", lines[line - 1]) if 0 < line <= len(lines) else None
-    return assigned is not None and any(re.search(rf"#.*\b{assigned.group(1)}\b", text)
-                                        for text in lines)
+    if assigned is None:
+        return False
+    name = re.escape(assigned.group(1))
+    used = re.compile(rf"#(?:\s*{name}\s*(?:[,)\]#]|$)|.*[\[(,]\s*{name}\b|.*\b{name}\s*[,)\]])")
+    return any(used.search(text) for text in lines)
 
 
 @rule("LCH007", "launch-node-never-started", Severity.WARNING,
@@ -29,8 +33,9 @@ def launch_node_never_started(package: Package) -> Iterator[Hit]:
     in the function, nested functions included, no `del`, `global`, `nonlocal`, `locals()`,
     `vars()`, `eval` or `exec`; a read as an event handler's `target_action=` does not count
     (the handler watches the action, it does not start it, and never fires).
-    A node whose name a comment of the file mentions (`# rviz,` left in the list) was
-    disabled on purpose and is not reported.
+    A node whose name a comment of the file uses as code would (`# rviz,` left in the list,
+    `# ld.add_action(rviz)`) was disabled on purpose and is not reported; a comment that
+    only tells of the node in words does not count.
 
     ## Why is this bad?
     Creating the action starts nothing: only actions in the returned `LaunchDescription`

@@ -11,6 +11,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import (PARAMETERS, argument, derives_from_node_alone,
                                     node_api_calls, swapped_argument, unpacks)
+from pkgtool.rules.python._own_callees import rebound_around
 from pkgtool.rules.python._package_classes import package_class, package_classes
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings
@@ -82,7 +83,9 @@ def _called_on_the_class(package: Package) -> Iterator[Hit]:
             func = call.func
             if isinstance(func, ast.Attribute) and func.attr in NODE_ATTRIBUTES and \
                     not func.attr.startswith("_") and not call.args and not call.keywords and \
-                    _is_node_class(func.value, func.attr, index, package):
+                    _is_node_class(func.value, func.attr, index, package) and \
+                    not (isinstance(func.value, ast.Name) and
+                         rebound_around(call, func.value.id, index)):
                 owner = ast.unparse(func.value)
                 yield Hit(Span(module.path, call.lineno, call.col_offset + 1),
                           f"`{ast.unparse(call)}` calls `{func.attr}` on the class `{owner}`, "

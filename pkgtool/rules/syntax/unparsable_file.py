@@ -6,6 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.installed import installed_files
+from pkgtool.model.manifest import CMAKE_BUILD_TYPES
 from pkgtool.model.package import Package
 from pkgtool.model.span import ParseProblem
 from pkgtool.rules.plain_projects import plain_python_project
@@ -52,7 +53,9 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     package built for Python 2 (one depending on `python-...` keys: Melodic or older) are
     not parsed, nor Python files kept aside (in `backup/`, `old/`, or named as a copy,
     `node_old.py`) that the package neither installs nor has pytest collect, nor those of a
-    ROS 1 package whose `#!` line runs `python` (the convention before Noetic): Python 2
+    ROS 1 package whose `#!` line runs `python` (the convention before Noetic), nor those
+    whose `#!` line runs `python` in a package CMake builds that neither installs them nor
+    runs a Python linter in its tests (`ament_lint_auto`, `ament_cmake_flake8`): Python 2
     syntax (`print x`, tabs counted as 8 columns) is not Python 3's.
 
     ## Why is this bad?
@@ -96,12 +99,28 @@ _PYTHON2_SHEBANG = lazy_pattern(r"#!.*\bpython(?:2(?:\.\d+)?)?[ \t\r]*(?:\n|$)")
 Noetic."""
 
 
+_PYTHON_LINTERS = frozenset({"ament_lint_auto", "ament_lint_common", "ament_cmake_flake8",
+                             "ament_cmake_pyflakes", "ament_cmake_pycodestyle",
+                             "ament_cmake_pep257", "ament_flake8"})
+"""Test dependencies whose tests parse every Python file of a CMake package."""
+
+
 def _python2(package: Package, problem: ParseProblem) -> bool:
-    """True for Python of a ROS 1 package written for Python 2: the package depends on Python 2
-    keys, or the file's ``#!`` line runs ``python`` (Melodic and older)."""
-    return problem.kind == "python-syntax" and is_ros1_package(package) and (
-        is_python2_package(package) or
-        _PYTHON2_SHEBANG.match(package.texts.get(problem.span.path, "")) is not None)
+    """True for Python written for Python 2 that nothing parses as Python 3: in a ROS 1
+    package depending on Python 2 keys, or whose ``#!`` line runs ``python`` (Melodic and
+    older); or, with such a ``#!`` line, in a package CMake builds that neither installs the
+    file nor runs a Python linter in its tests (a vendored library's old test script)."""
+    if problem.kind != "python-syntax":
+        return False
+    path = problem.span.path
+    shebang = _PYTHON2_SHEBANG.match(package.texts.get(path, "")) is not None
+    if is_ros1_package(package):
+        return shebang or is_python2_package(package)
+    manifest = package.manifest
+    return shebang and manifest is not None and manifest.build_type is not None and \
+        manifest.build_type.value in CMAKE_BUILD_TYPES and \
+        path not in installed_files(package) and \
+        not manifest.depends({"test_depend", "build_depend"}) & _PYTHON_LINTERS
 
 
 _TEMPLATE = lazy_pattern(r"\{\{.*?\}\}|\{%.*?%\}")

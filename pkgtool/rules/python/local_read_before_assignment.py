@@ -1,0 +1,173 @@
+"""PYC083: a function reads a name it assigns before assigning it (``count += 1`` on a module
+variable, ``node = node()``): the name is local to the whole function, the read raises
+UnboundLocalError."""
+
+from __future__ import annotations
+
+import ast
+import builtins
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.registry import rule
+from pkgtool.rules.scopes import ALWAYS, scope_bindings, scope_walk
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
+
+_BUILTINS = frozenset(dir(builtins))
+_LOOPS = (ast.For, ast.AsyncFor, ast.While)
+_VALUED = (ast.Assign, ast.AugAssign, ast.AnnAssign)
+"""Statements that evaluate their value before they bind their targets."""
+
+
+def _statement(node: ast.AST, index: Index) -> ast.stmt:
+    """The innermost statement holding ``node`` (``node`` itself for a statement)."""
+    while not isinstance(node, ast.stmt):
+        node = index.parents[id(node)]
+    return node
+
+
+def _start(node: ast.AST) -> tuple[int, int]:
+    return node.lineno, node.col_offset  # type: ignore[attr-defined]
+
+
+def _binders(function: ast.FunctionDef | ast.AsyncFunctionDef
+             ) -> tuple[dict[str, list[ast.AST]], list[tuple[ast.AST, str]]]:
+    """The nodes binding each name in the function's own scope, and its reads there as (node,
+    name): loads of names, and the targets of ``x += 1`` (which read ``x`` first); reads
+    inside ``try`` blocks that catch NameError are left out (a probe)."""
+    bindings: dict[str, list[ast.AST]] = {}
+    for node in scope_walk(function.body):
+        for name in _bound_by(node):
+            bindings.setdefault(name, []).append(node)
+    reads: list[tuple[ast.AST, str]] = []
+    for node in scope_walk(function.body, skip_protected=True):
+        if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
+            reads.append((node, node.id))
+        elif isinstance(node, ast.AugAssign) and isinstance(node.target, ast.Name):
+            reads.append((node.target, node.target.id))
+    return bindings, reads
+
+
+def _bound_by(node: ast.AST) -> list[str]:
+    """The names ``node`` binds in its scope (not ``global``/``nonlocal`` declarations)."""
+    if isinstance(node, ast.Name):
+        return [] if isinstance(node.ctx, ast.Load) else [node.id]
+    if isinstance(node, (*FUNCTIONS, ast.ClassDef)):
+        return [node.name]
+    if isinstance(node, (ast.Import, ast.ImportFrom)):
+        return [(alias.asname or alias.name).split(".")[0] for alias in node.names]
+    if isinstance(node, (ast.ExceptHandler, ast.MatchAs, ast.MatchStar)) and node.name:
+        return [node.name]
+    return []
+
+
+def _read_first(read: ast.AST, binders: list[ast.AST], index: Index,
+                function: ast.AST) -> bool:
+    """True when no binding of the name can run before ``read``: every binding is in a later
+    statement (or binds the value of ``read``'s own assignment), and no loop around the read
+    holds one (a later pass would see it bound)."""
+    statement = _statement(read, index)
+    for binder in binders:
+        bound = _statement(binder, index)
+        if bound is statement:  # read first only where it is the value (or `x += 1`)
+            if not isinstance(statement, _VALUED) or not (
+                    isinstance(statement, ast.AugAssign) and read is statement.target or
+                    _inside(read, statement.value, index)):
+                return False
+        elif _start(bound) <= _start(statement):
+            return False
+    loop = index.parents.get(id(statement))
+    while loop is not None and loop is not function:
+        if isinstance(loop, _LOOPS) and any(_inside(b, loop, index) for b in binders):
+            return False
+        loop = index.parents.get(id(loop))
+    return True
+
+
+def _inside(node: ast.AST, around: ast.AST | None, index: Index) -> bool:
+    while node is not None and node is not around:
+        node = index.parents.get(id(node))  # type: ignore[assignment]
+    return node is not None
+
+
+def _outer_names(function: ast.AST, index: Index, tree: ast.Module) -> set[str]:
+    """Names bound around ``function``: by the module, or by a function it is nested in."""
+    found = {name for name, count in scope_bindings(tree).items() if count}
+    for outer in index.functions_around(function):
+        found.update(name for name, count in scope_bindings(outer).items() if count)
+    return found
+
+
+@rule("PYC083", "local-read-before-assignment", Severity.ERROR,
+      fix="Declare `global name` (or use an attribute, `self.count`), or assign the name "
+          "before reading it")
+def local_read_before_assignment(package: Package) -> Iterator[Hit]:
+    """A function reads a name before assigning it, where the name is also the module's (or
+    a builtin): Python makes it local to the whole function, and the read raises
+    UnboundLocalError.
+
+    ## What it does
+    Reports, in installed modules, the first read of a name in a function (methods and nested
+    functions too; not in a class body, which falls back to the module's names) when the
+    function assigns the name somewhere (an assignment, `+=`, `for`, `with ... as`, `import`,
+    `def`, `except ... as`) without declaring it `global` or `nonlocal`, no statement before
+    the read binds it, no loop around the read binds it (a later pass would see it), and the
+    module, an enclosing function or Python's builtins define the name too (what the author
+    meant to read; a name defined nowhere else is PYC001's). `count += 1` reads `count` first;
+    `node = node()` calls the local before it is bound. Reads inside a `try` that catches
+    NameError are left alone. This is pyflakes' F823, without its reports in loops.
+
+    ## Why is this bad?
+    Python decides at compile time that a name assigned anywhere in a function is local
+    everywhere in it: the module's `count` is never read there, and the first read raises
+    `UnboundLocalError: cannot access local variable 'count'`, usually inside a timer or
+    subscription callback, every time it fires.
+
+    ## Example
+    ```python
+    count = 0
+
+    def on_tick():
+        count += 1
+    ```
+
+    ## Use instead
+    ```python
+    count = 0
+
+    def on_tick():
+        global count
+        count += 1
+    ```
+    """
+    for module, tree, index in installed_trees(package):
+        for function in index.functions:
+            counts = scope_bindings(function)
+            local = {name for name, count in counts.items() if 0 < count < ALWAYS}
+            if not local:
+                continue
+            arguments = function.args
+            parameters = {a.arg for a in (*arguments.posonlyargs, *arguments.args,
+                                          *arguments.kwonlyargs, arguments.vararg,
+                                          arguments.kwarg) if a is not None}
+            bindings, reads = _binders(function)
+            outer = None
+            told: set[str] = set()
+            for read, name in sorted(reads, key=lambda r: _start(r[0])):
+                if name not in local or name in parameters or name in told or \
+                        name not in bindings:
+                    continue
+                outer = _outer_names(function, index, tree) if outer is None else outer
+                if name not in outer and name not in _BUILTINS:
+                    continue
+                if _read_first(read, bindings[name], index, function):
+                    told.add(name)
+                    whose = "the module's" if scope_bindings(tree)[name] else \
+                        "the enclosing function's" if name in outer else "the builtin"
+                    yield Hit(Span(module.path, read.lineno, read.col_offset + 1),
+                              f"`{name}` is assigned in `{function.name}()`, so it is local "
+                              "to the whole function: this read comes before any assignment "
+                              f"and raises UnboundLocalError ({whose} `{name}` is not read "
+                              "here)")

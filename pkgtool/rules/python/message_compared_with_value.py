@@ -1,0 +1,135 @@
+"""PYC082: a message compared with a plain value (``msg == 'stop'``), never equal."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.message_fields import Message
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.python._annotated_messages import annotated_instances
+from pkgtool.rules.python._message_instances import Known, callback_instances, known_messages
+from pkgtool.rules.python._messages import message_instances
+from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import Index, installed_trees
+
+_EQUALITY = (ast.Eq, ast.NotEq)
+_MEMBERSHIP = (ast.In, ast.NotIn)
+_DISPLAYS = (ast.Tuple, ast.List, ast.Set)
+_FIELD_TYPES = {
+    str: ("string", "wstring"),
+    bool: ("bool",),
+    int: ("int8", "uint8", "int16", "uint16", "int32", "uint32", "int64", "uint64", "byte",
+          "char"),
+    float: ("float32", "float64"),
+}
+"""The rosidl types of the fields a value of each Python type compares with."""
+
+
+def _plain_values(node: ast.expr) -> list[ast.Constant]:
+    """The str, number or bool literals ``node`` is (or, a literal tuple, list or set, holds);
+    never ``None`` (a placeholder a message may well replace)."""
+    items = node.elts if isinstance(node, _DISPLAYS) else [node]
+    return [item for item in items if isinstance(item, ast.Constant) and
+            type(item.value) in _FIELD_TYPES]
+
+
+def _compared_with(ref: ast.expr, index: Index) -> tuple[str, ast.Constant, bool] | None:
+    """What ``ref`` is compared with by ``==``, ``!=``, ``in`` or ``not in`` when that is a
+    plain value or a display of them (the first comparison, if several): how to name it, its
+    first value, and whether the comparison is always False (else always True)."""
+    compare = index.parents.get(id(ref))
+    if not isinstance(compare, ast.Compare):
+        return None
+    operands = [compare.left, *compare.comparators]
+    for op, left, right in zip(compare.ops, operands, operands[1:]):
+        other = right if left is ref else left if right is ref else None
+        if isinstance(op, _EQUALITY) and isinstance(other, ast.Constant):
+            values = _plain_values(other)
+            if values:
+                return f"`{ast.unparse(other)}`", values[0], isinstance(op, ast.Eq)
+        elif isinstance(op, _MEMBERSHIP) and left is ref and isinstance(right, _DISPLAYS):
+            values = _plain_values(right)
+            if values and len(values) == len(right.elts):
+                return f"any item of `{ast.unparse(right)}`", values[0], isinstance(op, ast.In)
+    return None
+
+
+def _field_meant(message: Message, value: ast.Constant) -> str | None:
+    """The one field of ``message`` whose type holds values like ``value``, if one."""
+    kinds = _FIELD_TYPES[type(value.value)]
+    fields = [name for name, kind in message.fields.items()
+              if kind.partition("<")[0] in kinds]
+    return fields[0] if len(fields) == 1 else None
+
+
+@rule("PYC082", "message-compared-with-value", Severity.ERROR,
+      fix="Compare the message's field: `msg.data == 'stop'`")
+def message_compared_with_value(package: Package) -> Iterator[Hit]:
+    """A message is compared with a string, a number or a bool (`msg == 'stop'`).
+
+    ## What it does
+    Reports `==`, `!=`, `in` and `not in` between a message instance and a str, int, float
+    or bool literal (or a literal tuple, list or set of them): `msg == 'stop'` where `msg`
+    is what a subscription's callback gets, or `self.state != 'idle'` where the callback
+    stored its message in `self.state`. A message is certain where PYC019 is certain of it
+    (a callback's parameter, a local variable or `self.x` made by one message class, a
+    service's response), but for a parameter annotated with a message class that is no
+    callback's (its callers may pass a str); a comparison with `None` is left alone
+    (`self.last` may still be its placeholder). The message names the field meant when only
+    one field of the message holds values of the literal's type (`data` of
+    `std_msgs/msg/String`).
+
+    ## Why is this bad?
+    A generated message class is equal only to another message of its class: compared with
+    a str or a number, `==` is always False and `!=` always True, whatever the message
+    holds. The branch meant for the command never runs, and nothing fails to say so.
+
+    ## Example
+    ```python
+    def on_command(self, msg):
+        if msg == 'stop':
+            self.halt()
+    ```
+
+    ## Use instead
+    ```python
+    def on_command(self, msg):
+        if msg.data == 'stop':
+            self.halt()
+    ```
+    """
+    for module, tree, index in installed_trees(package):
+        known = known_messages(package, index)
+        seen = _annotated_only(tree, index, known)  # a hint: callers may pass a str
+        for instance in message_instances(package, tree, index, known):
+            for ref in instance.refs:
+                found = _compared_with(ref, index) if id(ref) not in seen else None
+                if found is None:
+                    continue
+                seen.add(id(ref))
+                named, value, always_false = found
+                message = instance.message
+                shown = ast.unparse(ref)
+                field = _field_meant(message, value)
+                yield Hit(Span(module.path, ref.lineno, ref.col_offset + 1),
+                          f"`{shown}` is a `{message.name}` message, never equal to "
+                          f"{named}: the comparison is always "
+                          f"{'False' if always_false else 'True'}",
+                          f"Compare the field: `{shown}.{field}`" if field else
+                          f"Compare one of its fields: {_fields(message)}")
+
+
+def _annotated_only(tree: ast.Module, index: Index, known: Known) -> set[int]:
+    """Ids of the reads of parameters that hold a message by their annotation alone (not as
+    a callback's): an annotation does not make the caller pass a message."""
+    received = {id(ref) for instance in callback_instances(tree, index, known)
+                for ref in instance.refs}
+    return {id(ref) for instance in annotated_instances(tree, index, known)
+            for ref in instance.refs if id(ref) not in received}
+
+
+def _fields(message: Message) -> str:
+    return ", ".join(f"`{name}`" for name in message.fields) or "it has none"
