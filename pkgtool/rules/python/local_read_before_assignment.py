@@ -9,6 +9,7 @@ import builtins
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
@@ -92,9 +93,26 @@ def _inside(node: ast.AST, around: ast.AST | None, index: Index) -> bool:
     return node is not None
 
 
-def _outer_names(function: ast.AST, index: Index, tree: ast.Module) -> set[str]:
+def _suspects(tree: ast.Module, index: Index, module_names: set[str]
+              ) -> list[ast.FunctionDef | ast.AsyncFunctionDef]:
+    """The functions that bind a name the module or Python's builtins define too, and every
+    nested function (its enclosing function's names count as well): the others cannot read
+    such a name first; found from the tree's one walk, without walking each function."""
+    found = {id(f): f for f in index.functions if index.enclosing_function(f) is not None}
+    for kind in (ast.Name, *FUNCTIONS, ast.ClassDef, ast.Import, ast.ImportFrom,
+                 ast.ExceptHandler):
+        for node in nodes_of_class(tree, kind):
+            names = _bound_by(node)
+            if names and any(n in module_names or n in _BUILTINS for n in names):
+                function = index.enclosing_function(node, through_lambdas=False)
+                if function is not None:
+                    found[id(function)] = function
+    return list(found.values())
+
+
+def _outer_names(function: ast.AST, index: Index, module_names: set[str]) -> set[str]:
     """Names bound around ``function``: by the module, or by a function it is nested in."""
-    found = {name for name, count in scope_bindings(tree).items() if count}
+    found = set(module_names)
     for outer in index.functions_around(function):
         found.update(name for name, count in scope_bindings(outer).items() if count)
     return found
@@ -143,28 +161,25 @@ def local_read_before_assignment(package: Package) -> Iterator[Hit]:
     ```
     """
     for module, tree, index in installed_trees(package):
-        for function in index.functions:
+        module_names = {name for name, count in scope_bindings(tree).items() if count}
+        for function in _suspects(tree, index, module_names):
             counts = scope_bindings(function)
-            local = {name for name, count in counts.items() if 0 < count < ALWAYS}
-            if not local:
-                continue
             arguments = function.args
             parameters = {a.arg for a in (*arguments.posonlyargs, *arguments.args,
                                           *arguments.kwonlyargs, arguments.vararg,
                                           arguments.kwarg) if a is not None}
+            outer = _outer_names(function, index, module_names)
+            shadowing = {name for name, count in counts.items() if 0 < count < ALWAYS and
+                         (name in outer or name in _BUILTINS)} - parameters
+            if not shadowing:
+                continue  # most functions: no name of theirs is also the module's
             bindings, reads = _binders(function)
-            outer = None
             told: set[str] = set()
             for read, name in sorted(reads, key=lambda r: _start(r[0])):
-                if name not in local or name in parameters or name in told or \
-                        name not in bindings:
-                    continue
-                outer = _outer_names(function, index, tree) if outer is None else outer
-                if name not in outer and name not in _BUILTINS:
-                    continue
-                if _read_first(read, bindings[name], index, function):
+                if name in shadowing and name not in told and name in bindings and \
+                        _read_first(read, bindings[name], index, function):
                     told.add(name)
-                    whose = "the module's" if scope_bindings(tree)[name] else \
+                    whose = "the module's" if name in module_names else \
                         "the enclosing function's" if name in outer else "the builtin"
                     yield Hit(Span(module.path, read.lineno, read.col_offset + 1),
                               f"`{name}` is assigned in `{function.name}()`, so it is local "

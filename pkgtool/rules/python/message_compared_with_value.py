@@ -7,6 +7,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.message_fields import Message
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._annotated_messages import annotated_instances
@@ -102,24 +103,26 @@ def message_compared_with_value(package: Package) -> Iterator[Hit]:
     ```
     """
     for module, tree, index in installed_trees(package):
+        if not _compares(tree):
+            continue  # no `==`, `!=`, `in`: no instance to look for
         known = known_messages(package, index)
-        seen = _annotated_only(tree, index, known)  # a hint: callers may pass a str
-        for instance in message_instances(package, tree, index, known):
-            for ref in instance.refs:
-                found = _compared_with(ref, index) if id(ref) not in seen else None
-                if found is None:
-                    continue
-                seen.add(id(ref))
-                named, value, always_false = found
-                message = instance.message
-                shown = ast.unparse(ref)
-                field = _field_meant(message, value)
-                yield Hit(Span(module.path, ref.lineno, ref.col_offset + 1),
-                          f"`{shown}` is a `{message.name}` message, never equal to "
-                          f"{named}: the comparison is always "
-                          f"{'False' if always_false else 'True'}",
-                          f"Compare the field: `{shown}.{field}`" if field else
-                          f"Compare one of its fields: {_fields(message)}")
+        compared = [(instance.message, ref, found)
+                    for instance in message_instances(package, tree, index, known)
+                    for ref in instance.refs if (found := _compared_with(ref, index))]
+        hinted = _annotated_only(tree, index, known) if compared else set()
+        seen: set[int] = set()
+        for message, ref, (named, value, always_false) in compared:
+            if id(ref) in hinted or id(ref) in seen:
+                continue  # an annotation is a hint: callers may pass a str
+            seen.add(id(ref))
+            shown = ast.unparse(ref)
+            field = _field_meant(message, value)
+            yield Hit(Span(module.path, ref.lineno, ref.col_offset + 1),
+                      f"`{shown}` is a `{message.name}` message, never equal to "
+                      f"{named}: the comparison is always "
+                      f"{'False' if always_false else 'True'}",
+                      f"Compare the field: `{shown}.{field}`" if field else
+                      f"Compare one of its fields: {_fields(message)}")
 
 
 def _annotated_only(tree: ast.Module, index: Index, known: Known) -> set[int]:
@@ -129,6 +132,13 @@ def _annotated_only(tree: ast.Module, index: Index, known: Known) -> set[int]:
                 for ref in instance.refs}
     return {id(ref) for instance in annotated_instances(tree, index, known)
             for ref in instance.refs if id(ref) not in received}
+
+
+def _compares(tree: ast.Module) -> bool:
+    """True when the module compares anything by ``==``, ``!=``, ``in`` or ``not in``."""
+    return any(isinstance(op, (*_EQUALITY, *_MEMBERSHIP))
+               for compare in nodes_of_class(tree, ast.Compare)
+               for op in compare.ops)  # type: ignore[attr-defined]
 
 
 def _fields(message: Message) -> str:
