@@ -65,7 +65,10 @@ _REMOVED_2_0 = {
     "source": "inspect.getsource", "byte_bounds": "np.lib.array_utils.byte_bounds",
 }
 _REMOVED_EARLIER = {"asscalar": ("1.23", "a.item()"), "alen": ("1.23", "len(a)"),
-                    "rank": ("1.18", "np.ndim"), "loads": ("1.17", "pickle.loads")}
+                    "rank": ("1.18", "np.ndim"), "loads": ("1.17", "pickle.loads"),
+                    **{name: ("1.20", f"numpy_financial.{name}")  # NEP 32
+                       for name in ("fv", "ipmt", "irr", "mirr", "nper", "npv", "pmt", "ppmt",
+                                    "pv", "rate")}}
 _REMOVED_2_4 = {"trapz": "np.trapezoid", "in1d": "np.isin"}
 
 REMOVED: dict[str, Removed] = {

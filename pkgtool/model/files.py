@@ -28,12 +28,21 @@ def _skipped_name(name: str) -> bool:
     return name.startswith(".") or name in SKIPPED_DIRS or name.endswith(".egg-info")
 
 
+_INSTALLED_PACKAGES = frozenset({"site-packages", "dist-packages"})
+"""Folders where pip and apt install other projects' code (a committed virtual environment)."""
+_OLD_VIRTUALENV = frozenset({"orig-prefix.txt", "no-global-site-packages.txt"})
+"""Files that virtualenv before 20.0 (every Python 2 one) writes into ``lib/pythonX.Y``,
+instead of the ``pyvenv.cfg`` of newer environments."""
+
+
 def _not_the_packages(name: str, files: set[str], at_root: bool) -> bool:
     """True for a folder ``name`` holding ``files`` whose files are not the package's: a
-    virtual environment, or a package of its own nested in this one, unless it is a Python
+    virtual environment (or the ``lib/pythonX.Y`` or ``site-packages`` folder of one), or a
+    package of its own nested in this one, unless it is a Python
     package of this one too (an ``__init__.py``: colcon never looks for packages inside a
     package, and setuptools installs the folder with this package's code)."""
-    if "pyvenv.cfg" in files or "package.xml" in files and "__init__.py" not in files:
+    if "pyvenv.cfg" in files or "package.xml" in files and "__init__.py" not in files or \
+            name in _INSTALLED_PACKAGES or files & _OLD_VIRTUALENV:
         return True
     return at_root and name in BUILD_OUTPUT_DIRS and "__init__.py" not in files
 

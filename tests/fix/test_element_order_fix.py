@@ -7,7 +7,9 @@ from pathlib import Path
 from pkgtool.commands.lint import LintOptions, LintResult, run
 from tests.helpers import correct_package_files, write_tree
 
-HEAD = '<?xml version="1.0"?>\n<package format="3">\n'
+HEAD = ('<?xml version="1.0"?>\n<?xml-model href="http://download.ros.org/schema/'
+        'package_format3.xsd" schematypens="http://www.w3.org/2001/XMLSchema"?>\n'
+        '<package format="3">\n')
 
 
 def _package(tmp_path: Path, children: str) -> Path:

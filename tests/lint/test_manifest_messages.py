@@ -57,7 +57,7 @@ def test_misspelt_tag_gets_the_intended_one(tmp_path: Path) -> None:
 def test_out_of_order_names_the_element_to_pass(tmp_path: Path) -> None:
     message, _ = _one(tmp_path, "MAN004", doc("<exec_depend>rclpy</exec_depend>\n"
                                               "  <url>https://example.com</url>"))
-    assert message == "`<url>` must come before `<exec_depend>` (line 8)"
+    assert message == "`<url>` must come before `<exec_depend>` (line 9)"
 
 
 @pytest.mark.parametrize(("body", "fix"), [
@@ -117,7 +117,7 @@ def test_redundant_depend_names_both_lines(tmp_path: Path) -> None:
     message, fix = _one(tmp_path, "MAN012", doc("<depend>rclpy</depend>\n"
                                                 "  <exec_depend>rclpy</exec_depend>"))
     assert message == ("`<exec_depend>rclpy</exec_depend>` is redundant with "
-                       "`<depend>rclpy</depend>` (line 8)")
+                       "`<depend>rclpy</depend>` (line 9)")
     assert fix == "Remove this `<exec_depend>`: `<depend>` already covers it"
 
 

@@ -30,10 +30,13 @@ EXPORT = "<export><build_type>ament_python</build_type></export>"
 
 
 def doc(body: str = EXPORT, *, fmt: str | None = "3", head: str = HEAD, attrs: str = "") -> str:
-    """A package.xml with the standard head (override ``head`` to break it)."""
+    """A package.xml with the standard head (override ``head`` to break it), naming the
+    schema of its format as ``ros2 pkg create`` writes (MAN004 checks only such manifests)."""
     format_attr = f' format="{fmt}"' if fmt is not None else ""
-    return (f'<?xml version="1.0"?>\n<package{format_attr}{attrs}>\n  {head}\n  {body}\n'
-            "</package>\n")
+    schema = fmt if fmt in ("1", "2", "3") else "1"
+    return (f'<?xml version="1.0"?>\n<?xml-model href="http://download.ros.org/schema/'
+            f'package_format{schema}.xsd" schematypens="http://www.w3.org/2001/XMLSchema"?>\n'
+            f'<package{format_attr}{attrs}>\n  {head}\n  {body}\n</package>\n')
 
 
 def head(**replace: str) -> str:

@@ -16,6 +16,7 @@ from pkgtool.model.span import Span
 from pkgtool.rules.existence_checks import checks_files
 from pkgtool.rules.imports import run_as_a_script
 from pkgtool.rules.registry import rule
+from pkgtool.rules.scopes import ALWAYS, scope_bindings
 from pkgtool.rules.sys_path import file_relative_paths
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
@@ -49,9 +50,10 @@ def _never_read(node: ast.AST, index: Index, depth: int = 0) -> bool:
     if not (isinstance(parent, ast.Assign) and len(parent.targets) == 1 and
             isinstance(parent.targets[0], ast.Name)):
         return False
-    local = index.enclosing_function(node) is not None  # no other module can read it
-    return _reads_never_read(parent.targets[0].id, index.module_of(node), index, depth + 1,
-                             unread=local)
+    name = parent.targets[0].id
+    function = index.enclosing_function(node)
+    local = function is not None and scope_bindings(function)[name] < ALWAYS  # not `global`
+    return _reads_never_read(name, index.module_of(node), index, depth + 1, unread=local)
 
 
 def _parameter_never_read(call: ast.Call, position: int, index: Index, depth: int) -> bool:

@@ -18,7 +18,7 @@ def _disabled(lines: list[str], line: int) -> bool:
     if assigned is None:
         return False
     name = re.escape(assigned.group(1))
-    used = re.compile(rf"#(?:\s*{name}\s*(?:[,)\]#]|$)|.*[\[(,]\s*{name}\b|.*\b{name}\s*[,)\]])")
+    used = re.compile(rf"#\s*{name}\s*(?:[,#]|$)|#.*[\[(,]\s*{name}\s*[,)\]]")
     return any(used.search(text) for text in lines)
 
 

@@ -20,7 +20,11 @@ def element_out_of_order(package: Package) -> Iterator[Hit]:
     Checks the order of the children of ``<package>`` against the XSD of the manifest's format:
     name, version, description, maintainer, license, url, author, then the dependency tags in
     any order among themselves, then (format 3) group_depend and member_of_group, then export.
-    One finding per package.xml, at the first misplaced element; it lists the others.
+    One finding per package.xml, at the first misplaced element; it lists the others. Only
+    a manifest that names its schema (the `<?xml-model?>` line `ros2 pkg create` writes, or
+    `xsi:noNamespaceSchemaLocation`) is checked: nothing validates the order of one that does
+    not (`ament_xmllint` checks it is well-formed only, catkin_pkg and colcon read elements in
+    any order).
 
     ## Why is this bad?
     The schemas define ``<package>`` as a sequence: a manifest in another order fails
@@ -44,7 +48,7 @@ def element_out_of_order(package: Package) -> Iterator[Hit]:
     ```
     """
     found = tree(package)
-    if found is None:
+    if found is None or not _names_its_schema(package):
         return
     items = [item for item in misplaced(found) if not item.duplicate]
     if not items:
@@ -59,3 +63,10 @@ def element_out_of_order(package: Package) -> Iterator[Hit]:
     yield Hit(first.element.span, message,
               f"Move {moved} up; the order is {ORDER_HINT[found.format]}",
               related=tuple(o.element.span for o in others))
+
+
+def _names_its_schema(package: Package) -> bool:
+    """True when package.xml names the schema a validator checks it against."""
+    manifest = package.manifest
+    return manifest is not None and (manifest.has_schema_line or any(
+        name.endswith("noNamespaceSchemaLocation") for name, _ in manifest.root.attributes))

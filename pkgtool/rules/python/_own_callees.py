@@ -140,13 +140,40 @@ def own_definition(call: ast.Call, index: Index, tree: ast.Module,
     return found if found is not None and not rebound_around(call, func.id, index) else None
 
 
+_COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
+
+
 def rebound_around(node: ast.AST, name: str, index: Index) -> bool:
-    """True when a function or the class around ``node`` binds ``name`` (a module-level name
-    read there may stand for something else)."""
-    if any(scope_bindings(f)[name] for f in index.functions_around(node)):
-        return True
-    cls = index.enclosing_class(node)
-    return cls is not None and bool(scope_bindings(cls)[name])
+    """True when a scope around ``node`` binds ``name`` (a module-level name read there may
+    stand for something else): a function, a lambda's parameters, a comprehension's targets,
+    or the class whose body holds ``node`` itself (not in a method: methods do not see their
+    class's names)."""
+    child, parent = node, index.parents.get(id(node))
+    in_function = False
+    while parent is not None:
+        if isinstance(parent, FUNCTIONS):
+            in_function = True
+            if scope_bindings(parent)[name]:
+                return True
+        elif isinstance(parent, ast.Lambda):
+            in_function = True
+            if name in parameter_names(parent.args):
+                return True
+        elif isinstance(parent, _COMPREHENSIONS) and child is not parent.generators[0].iter:
+            if any(isinstance(n, ast.Name) and n.id == name
+                   for g in parent.generators for n in ast.walk(g.target)):
+                return True
+        elif isinstance(parent, ast.ClassDef) and not in_function and \
+                scope_bindings(parent)[name]:
+            return True
+        child, parent = parent, index.parents.get(id(parent))
+    return False
+
+
+def parameter_names(arguments: ast.arguments) -> set[str]:
+    """The names of every parameter ``arguments`` declares."""
+    return {a.arg for a in (*arguments.posonlyargs, *arguments.args, *arguments.kwonlyargs,
+                            arguments.vararg, arguments.kwarg) if a is not None}
 
 
 def missing_parameter(call: ast.Call, function: Function, skipped: int) -> str | None:

@@ -9,9 +9,10 @@ import builtins
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.ast_nodes import nodes_of_class, subtree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.rules.python._own_callees import parameter_names
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import ALWAYS, scope_bindings, scope_walk
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
@@ -33,22 +34,48 @@ def _start(node: ast.AST) -> tuple[int, int]:
     return node.lineno, node.col_offset  # type: ignore[attr-defined]
 
 
-def _binders(function: ast.FunctionDef | ast.AsyncFunctionDef
-             ) -> tuple[dict[str, list[ast.AST]], list[tuple[ast.AST, str]]]:
-    """The nodes binding each name in the function's own scope, and its reads there as (node,
-    name): loads of names, and the targets of ``x += 1`` (which read ``x`` first); reads
-    inside ``try`` blocks that catch NameError are left out (a probe)."""
+def _binders(function: ast.FunctionDef | ast.AsyncFunctionDef, index: Index
+             ) -> tuple[dict[str, list[ast.AST]], list[tuple[ast.AST, str]], set[str]]:
+    """The nodes binding each name in the function's own scope; its reads there as (node,
+    name): loads of names (also in what nested scopes evaluate at once: a comprehension's
+    first iterable, a nested function's decorators and defaults), and the targets of ``x +=
+    1`` (which read ``x`` first), not in annotations Python never evaluates nor inside ``try``
+    blocks that catch NameError (a probe); and the names a walrus binds anywhere in it
+    (left alone: a comprehension's ``:=`` binds in the function)."""
     bindings: dict[str, list[ast.AST]] = {}
     for node in scope_walk(function.body):
         for name in _bound_by(node):
             bindings.setdefault(name, []).append(node)
     reads: list[tuple[ast.AST, str]] = []
     for node in scope_walk(function.body, skip_protected=True):
-        if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
-            reads.append((node, node.id))
+        if type(node) in _NESTED:
+            reads.extend((n, n.id) for n in scope_walk(_evaluated_at_once(node))
+                         if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load))
+        elif isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
+            if not index.in_unevaluated_annotation(node):
+                reads.append((node, node.id))
         elif isinstance(node, ast.AugAssign) and isinstance(node.target, ast.Name):
             reads.append((node.target, node.target.id))
-    return bindings, reads
+    walrus = {n.target.id for n in subtree(function)
+              if isinstance(n, ast.NamedExpr) and isinstance(n.target, ast.Name)}
+    return bindings, reads, walrus
+
+
+_NESTED = frozenset({*FUNCTIONS, ast.Lambda, ast.ClassDef, ast.ListComp, ast.SetComp,
+                     ast.DictComp, ast.GeneratorExp})
+
+
+def _evaluated_at_once(node: ast.AST) -> list[ast.AST]:
+    """The parts of a nested scope the enclosing one evaluates where it stands: a
+    comprehension's first iterable; a function's or lambda's decorators and defaults; a
+    class's decorators, bases and keywords."""
+    if isinstance(node, (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)):
+        return [node.generators[0].iter]
+    arguments = getattr(node, "args", None)
+    defaults = [*arguments.defaults, *(d for d in arguments.kw_defaults if d is not None)] \
+        if isinstance(arguments, ast.arguments) else []
+    return [*getattr(node, "decorator_list", []), *defaults, *getattr(node, "bases", []),
+            *(k.value for k in getattr(node, "keywords", []))]
 
 
 def _bound_by(node: ast.AST) -> list[str]:
@@ -61,6 +88,8 @@ def _bound_by(node: ast.AST) -> list[str]:
         return [(alias.asname or alias.name).split(".")[0] for alias in node.names]
     if isinstance(node, (ast.ExceptHandler, ast.MatchAs, ast.MatchStar)) and node.name:
         return [node.name]
+    if isinstance(node, ast.MatchMapping) and node.rest:
+        return [node.rest]
     return []
 
 
@@ -72,10 +101,8 @@ def _read_first(read: ast.AST, binders: list[ast.AST], index: Index,
     statement = _statement(read, index)
     for binder in binders:
         bound = _statement(binder, index)
-        if bound is statement:  # read first only where it is the value (or `x += 1`)
-            if not isinstance(statement, _VALUED) or not (
-                    isinstance(statement, ast.AugAssign) and read is statement.target or
-                    _inside(read, statement.value, index)):
+        if bound is statement:  # read first only where it is evaluated before the binding
+            if not _evaluated_first(read, statement, index):
                 return False
         elif _start(bound) <= _start(statement):
             return False
@@ -85,6 +112,19 @@ def _read_first(read: ast.AST, binders: list[ast.AST], index: Index,
             return False
         loop = index.parents.get(id(loop))
     return True
+
+
+def _evaluated_first(read: ast.AST, statement: ast.stmt, index: Index) -> bool:
+    """True when ``read`` is in the part of ``statement`` evaluated before it binds anything:
+    the value of an assignment (``x += 1`` reads its target first), the iterable of a
+    ``for``, the first context manager of a ``with``."""
+    if isinstance(statement, ast.AugAssign) and read is statement.target:
+        return True
+    first = statement.value if isinstance(statement, _VALUED) else \
+        statement.iter if isinstance(statement, (ast.For, ast.AsyncFor)) else \
+        statement.items[0].context_expr if isinstance(statement, (ast.With, ast.AsyncWith)) \
+        else None
+    return first is not None and _inside(read, first, index)
 
 
 def _inside(node: ast.AST, around: ast.AST | None, index: Index) -> bool:
@@ -119,8 +159,7 @@ def _outer_names(function: ast.AST, index: Index, module_names: set[str]) -> set
 
 
 @rule("PYC083", "local-read-before-assignment", Severity.ERROR,
-      fix="Declare `global name` (or use an attribute, `self.count`), or assign the name "
-          "before reading it")
+      fix="Declare `global name` (`nonlocal` in a nested function), or rename the local")
 def local_read_before_assignment(package: Package) -> Iterator[Hit]:
     """A function reads a name before assigning it, where the name is also the module's (or
     a builtin): Python makes it local to the whole function, and the read raises
@@ -130,12 +169,16 @@ def local_read_before_assignment(package: Package) -> Iterator[Hit]:
     Reports, in installed modules, the first read of a name in a function (methods and nested
     functions too; not in a class body, which falls back to the module's names) when the
     function assigns the name somewhere (an assignment, `+=`, `for`, `with ... as`, `import`,
-    `def`, `except ... as`) without declaring it `global` or `nonlocal`, no statement before
-    the read binds it, no loop around the read binds it (a later pass would see it), and the
-    module, an enclosing function or Python's builtins define the name too (what the author
-    meant to read; a name defined nowhere else is PYC001's). `count += 1` reads `count` first;
-    `node = node()` calls the local before it is bound. Reads inside a `try` that catches
-    NameError are left alone. This is pyflakes' F823, without its reports in loops.
+    `def`, `except ... as`, a `match` capture, `del`) without declaring it `global` or
+    `nonlocal`, no statement before the read binds it, no loop around the read binds it (a
+    later pass would see it), and the module, an enclosing function or Python's builtins
+    define the name too (what the author meant to read; a name defined nowhere else is
+    PYC001's). `count += 1` reads `count` first; `node = node()` calls the local before it
+    is bound, and so do `data = [d for d in data]` (a comprehension's first iterable), `for
+    key in config:` before `config = ...`, and a nested function's defaults and decorators.
+    Reads inside a `try` that catches NameError, in annotations Python never evaluates, and
+    names a `:=` binds anywhere in the function are left alone. This is pyflakes' F823,
+    without its reports in loops. The help says `nonlocal` for an enclosing function's name.
 
     ## Why is this bad?
     Python decides at compile time that a name assigned anywhere in a function is local
@@ -164,25 +207,32 @@ def local_read_before_assignment(package: Package) -> Iterator[Hit]:
         module_names = {name for name, count in scope_bindings(tree).items() if count}
         for function in _suspects(tree, index, module_names):
             counts = scope_bindings(function)
-            arguments = function.args
-            parameters = {a.arg for a in (*arguments.posonlyargs, *arguments.args,
-                                          *arguments.kwonlyargs, arguments.vararg,
-                                          arguments.kwarg) if a is not None}
+            parameters = parameter_names(function.args)
             outer = _outer_names(function, index, module_names)
             shadowing = {name for name, count in counts.items() if 0 < count < ALWAYS and
                          (name in outer or name in _BUILTINS)} - parameters
             if not shadowing:
                 continue  # most functions: no name of theirs is also the module's
-            bindings, reads = _binders(function)
+            bindings, reads, walrus = _binders(function, index)
+            shadowing -= walrus
+            earliest = {name: min(_start(_statement(b, index)) for b in bindings[name])
+                        for name in shadowing if name in bindings}
             told: set[str] = set()
             for read, name in sorted(reads, key=lambda r: _start(r[0])):
-                if name in shadowing and name not in told and name in bindings and \
-                        _read_first(read, bindings[name], index, function):
-                    told.add(name)
-                    whose = "the module's" if name in module_names else \
-                        "the enclosing function's" if name in outer else "the builtin"
-                    yield Hit(Span(module.path, read.lineno, read.col_offset + 1),
-                              f"`{name}` is assigned in `{function.name}()`, so it is local "
-                              "to the whole function: this read comes before any assignment "
-                              f"and raises UnboundLocalError ({whose} `{name}` is not read "
-                              "here)")
+                if name not in earliest or name in told or \
+                        _start(_statement(read, index)) > earliest[name] or \
+                        not _read_first(read, bindings[name], index, function):
+                    continue
+                told.add(name)
+                nested = name in outer and name not in module_names or any(
+                    scope_bindings(f)[name] for f in index.functions_around(function))
+                whose = "the enclosing function's" if nested else \
+                    "the module's" if name in module_names else "the builtin"
+                declare = "nonlocal" if nested else "global"
+                yield Hit(Span(module.path, read.lineno, read.col_offset + 1),
+                          f"`{name}` is assigned in `{function.name}()`, so it is local to "
+                          "the whole function: this read comes before any assignment and "
+                          f"raises UnboundLocalError ({whose} `{name}` is not read here)",
+                          f"Declare `{declare} {name}` to use {whose}, or give the local "
+                          "another name" if whose != "the builtin" else
+                          f"Give the local another name than the builtin `{name}`")

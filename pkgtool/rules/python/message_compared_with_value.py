@@ -7,7 +7,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.message_fields import Message
-from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.ast_nodes import last_name, nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._annotated_messages import annotated_instances
@@ -19,43 +19,55 @@ from pkgtool.rules.syntax_trees import Index, installed_trees
 _EQUALITY = (ast.Eq, ast.NotEq)
 _MEMBERSHIP = (ast.In, ast.NotIn)
 _DISPLAYS = (ast.Tuple, ast.List, ast.Set)
+_INTEGERS = ("int8", "uint8", "int16", "uint16", "int32", "uint32", "int64", "uint64")
+_FLOATS = ("float", "double", "long double")
 _FIELD_TYPES = {
     str: ("string", "wstring"),
-    bool: ("bool",),
-    int: ("int8", "uint8", "int16", "uint16", "int32", "uint32", "int64", "uint64", "byte",
-          "char"),
-    float: ("float32", "float64"),
+    bool: ("boolean",),
+    int: (*_INTEGERS, *_FLOATS),  # `msg.data == 0` compares a float field too
+    float: _FLOATS,
 }
-"""The rosidl types of the fields a value of each Python type compares with."""
+"""The field types (as the interface table writes them, IDL's names) a value of each Python
+type compares with."""
 
 
 def _plain_values(node: ast.expr) -> list[ast.Constant]:
-    """The str, number or bool literals ``node`` is (or, a literal tuple, list or set, holds);
-    never ``None`` (a placeholder a message may well replace)."""
+    """The str, number or bool literals ``node`` is (or, a literal tuple, list or set, holds),
+    a negative number as its number; never ``None`` (a placeholder a message may well
+    replace)."""
     items = node.elts if isinstance(node, _DISPLAYS) else [node]
-    return [item for item in items if isinstance(item, ast.Constant) and
-            type(item.value) in _FIELD_TYPES]
+    values = [item.operand if isinstance(item, ast.UnaryOp) and
+              isinstance(item.op, (ast.USub, ast.UAdd)) else item for item in items]
+    return [value for value in values if isinstance(value, ast.Constant) and
+            type(value.value) in _FIELD_TYPES]
 
 
-def _compared_with(ref: ast.expr, index: Index) -> tuple[str, ast.Constant, bool] | None:
+def _compared_with(ref: ast.expr, index: Index) -> tuple[str, ast.Constant, str] | None:
     """What ``ref`` is compared with by ``==``, ``!=``, ``in`` or ``not in`` when that is a
     plain value or a display of them (the first comparison, if several): how to name it, its
-    first value, and whether the comparison is always False (else always True)."""
+    first value, and what the comparison does."""
     compare = index.parents.get(id(ref))
     if not isinstance(compare, ast.Compare):
         return None
     operands = [compare.left, *compare.comparators]
     for op, left, right in zip(compare.ops, operands, operands[1:]):
         other = right if left is ref else left if right is ref else None
-        if isinstance(op, _EQUALITY) and isinstance(other, ast.Constant):
+        if isinstance(op, _EQUALITY) and other is not None and \
+                not isinstance(other, _DISPLAYS):
             values = _plain_values(other)
             if values:
-                return f"`{ast.unparse(other)}`", values[0], isinstance(op, ast.Eq)
+                return f"`{ast.unparse(other)}`", values[0], _always(isinstance(op, ast.Eq))
         elif isinstance(op, _MEMBERSHIP) and left is ref and isinstance(right, _DISPLAYS):
             values = _plain_values(right)
             if values and len(values) == len(right.elts):
-                return f"any item of `{ast.unparse(right)}`", values[0], isinstance(op, ast.In)
+                return f"any item of `{ast.unparse(right)}`", values[0], \
+                    "looking it up in a set raises TypeError (a message cannot be hashed)" \
+                    if isinstance(right, ast.Set) else _always(isinstance(op, ast.In))
     return None
+
+
+def _always(false: bool) -> str:
+    return f"the comparison is always {'False' if false else 'True'}"
 
 
 def _field_meant(message: Message, value: ast.Constant) -> str | None:
@@ -78,7 +90,9 @@ def message_compared_with_value(package: Package) -> Iterator[Hit]:
     stored its message in `self.state`. A message is certain where PYC019 is certain of it
     (a callback's parameter, a local variable or `self.x` made by one message class, a
     service's response), but for a parameter annotated with a message class that is no
-    callback's (its callers may pass a str); a comparison with `None` is left alone
+    callback's (its callers may pass a str), and for a callback's parameter when the module
+    also calls the callback itself (`self.on_command('stop')`); a comparison with `None` is
+    left alone
     (`self.last` may still be its placeholder). The message names the field meant when only
     one field of the message holds values of the literal's type (`data` of
     `std_msgs/msg/String`).
@@ -86,7 +100,8 @@ def message_compared_with_value(package: Package) -> Iterator[Hit]:
     ## Why is this bad?
     A generated message class is equal only to another message of its class: compared with
     a str or a number, `==` is always False and `!=` always True, whatever the message
-    holds. The branch meant for the command never runs, and nothing fails to say so.
+    holds. The branch meant for the command never runs, and nothing fails to say so. A
+    message cannot be hashed either: `msg in {'a', 'b'}` raises TypeError.
 
     ## Example
     ```python
@@ -109,29 +124,35 @@ def message_compared_with_value(package: Package) -> Iterator[Hit]:
         compared = [(instance.message, ref, found)
                     for instance in message_instances(package, tree, index, known)
                     for ref in instance.refs if (found := _compared_with(ref, index))]
-        hinted = _annotated_only(tree, index, known) if compared else set()
+        hinted = _maybe_not_messages(tree, index, known) if compared else set()
         seen: set[int] = set()
-        for message, ref, (named, value, always_false) in compared:
+        for message, ref, (named, value, verdict) in compared:
             if id(ref) in hinted or id(ref) in seen:
-                continue  # an annotation is a hint: callers may pass a str
+                continue
             seen.add(id(ref))
             shown = ast.unparse(ref)
             field = _field_meant(message, value)
             yield Hit(Span(module.path, ref.lineno, ref.col_offset + 1),
                       f"`{shown}` is a `{message.name}` message, never equal to "
-                      f"{named}: the comparison is always "
-                      f"{'False' if always_false else 'True'}",
+                      f"{named}: {verdict}",
                       f"Compare the field: `{shown}.{field}`" if field else
                       f"Compare one of its fields: {_fields(message)}")
 
 
-def _annotated_only(tree: ast.Module, index: Index, known: Known) -> set[int]:
-    """Ids of the reads of parameters that hold a message by their annotation alone (not as
-    a callback's): an annotation does not make the caller pass a message."""
-    received = {id(ref) for instance in callback_instances(tree, index, known)
-                for ref in instance.refs}
-    return {id(ref) for instance in annotated_instances(tree, index, known)
-            for ref in instance.refs if id(ref) not in received}
+def _maybe_not_messages(tree: ast.Module, index: Index, known: Known) -> set[int]:
+    """Ids of the reads of parameters that may hold something else than a message: those
+    holding one by their annotation alone (an annotation does not make callers pass a
+    message), and a callback's that the module also calls itself (``self.on_command('stop')``)."""
+    called = {last_name(call.func) for call in index.calls}
+    received = [ref for instance in callback_instances(tree, index, known)
+                for ref in instance.refs]
+    found = {id(ref) for ref in received
+             if (function := index.enclosing_function(ref, through_lambdas=False)) is not None
+             and function.name in called}
+    passed = {id(ref) for ref in received}
+    found.update(id(ref) for instance in annotated_instances(tree, index, known)
+                 for ref in instance.refs if id(ref) not in passed)
+    return found
 
 
 def _compares(tree: ast.Module) -> bool:

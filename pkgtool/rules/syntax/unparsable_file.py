@@ -5,7 +5,8 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.installed import installed_files
+from pkgtool.model.cmake_text import commands
+from pkgtool.model.installed import cmake_text, installed_files
 from pkgtool.model.manifest import CMAKE_BUILD_TYPES
 from pkgtool.model.package import Package
 from pkgtool.model.span import ParseProblem
@@ -53,10 +54,12 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     package built for Python 2 (one depending on `python-...` keys: Melodic or older) are
     not parsed, nor Python files kept aside (in `backup/`, `old/`, or named as a copy,
     `node_old.py`) that the package neither installs nor has pytest collect, nor those of a
-    ROS 1 package whose `#!` line runs `python` (the convention before Noetic), nor those
-    whose `#!` line runs `python` in a package CMake builds that neither installs them nor
-    runs a Python linter in its tests (`ament_lint_auto`, `ament_cmake_flake8`): Python 2
-    syntax (`print x`, tabs counted as 8 columns) is not Python 3's.
+    ROS 1 package some file of which has a `#!` line running `python` or `python2` (the
+    convention before Noetic: its modules are Python 2 as well), nor those whose `#!` line
+    runs `python` in a package CMake builds that neither installs them, nor names them or
+    their folders in its CMake files, nor runs a Python linter in its tests
+    (`ament_lint_auto`, `ament_cmake_flake8`): Python 2 syntax (`print x`, tabs counted as 8
+    columns) is not Python 3's.
 
     ## Why is this bad?
     colcon, rosdep and ``ros2 launch`` stop at the first unparsable file, and an installed
@@ -114,13 +117,23 @@ def _python2(package: Package, problem: ParseProblem) -> bool:
         return False
     path = problem.span.path
     shebang = _PYTHON2_SHEBANG.match(package.texts.get(path, "")) is not None
-    if is_ros1_package(package):
-        return shebang or is_python2_package(package)
+    if is_ros1_package(package):  # its scripts' `#!` lines tell its modules' Python too
+        return shebang or is_python2_package(package) or any(
+            _PYTHON2_SHEBANG.match(text) for text in package.texts.values())
     manifest = package.manifest
     return shebang and manifest is not None and manifest.build_type is not None and \
         manifest.build_type.value in CMAKE_BUILD_TYPES and \
-        path not in installed_files(package) and \
+        path not in installed_files(package) and not _named_by_cmake(package, path) and \
         not manifest.depends({"test_depend", "build_depend"}) & _PYTHON_LINTERS
+
+
+def _named_by_cmake(package: Package, path: str) -> bool:
+    """True when an argument of a command of the package's CMake files (comments aside) names
+    the file or one of its folders (``install(DIRECTORY scripts/ ...)``,
+    ``ament_add_pytest_test(t test/test_x.py)``, ``add_subdirectory(tests)``)."""
+    parts = set(path.split("/"))
+    return any(parts & set(token.split("/")) for _, tokens in commands(cmake_text(package) or "")
+               for token in tokens)
 
 
 _TEMPLATE = lazy_pattern(r"\{\{.*?\}\}|\{%.*?%\}")
