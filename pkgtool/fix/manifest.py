@@ -211,6 +211,10 @@ def build_type(package: Package, findings: list[Finding]) -> Iterator[Fix | Refu
         yield Refusal("the package has neither setup.py nor CMakeLists.txt: add the build "
                       "type it is built with by hand.")
         return
+    if package.manifest is not None and package.manifest.is_ros1:
+        yield Refusal("a catkin package needs a CMakeLists.txt, not a build type: write it "
+                      "by hand.")
+        return
     yield from offer("Declare `<build_type>ament_python</build_type>`", lambda: _build_type(doc))
 
 

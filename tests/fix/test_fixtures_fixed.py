@@ -72,7 +72,8 @@ has is built elsewhere, and which field of a message of several a plain value wa
 with): no fix
 guesses, the user chooses; the other findings
 of the case are fixed."""
-MANUAL = {("PYC078", "habits_of_other_languages"), ("PYC079", "unknown_keywords"),
+MANUAL = {("PYC078", "habits_of_other_languages"),
+          ("MAN015", "catkin_package_without_cmakelists"), ("PYC079", "unknown_keywords"),
           ("DAT005", "cmake_launch_folder_not_installed"),
           ("IFC007", "format_two_manifest"),
           ("DEP001", "module_of_a_plain_python_project"),
@@ -139,7 +140,8 @@ only keys that resolve for the target (LCH003). A dropped comparison holding a c
 needs the `if` its author meant. An executable a launch file loops over (LCH001) is written in
 a list the fixer does not edit, and MoveIt config packages no release has (LCH002) are the
 author's to name. DEP007's fixer rewrites Python imports; a script CMake installs
-without the modules beside it needs an `install()` only the author places (no CMake fixer)."""
+without the modules beside it needs an `install()` only the author places (no CMake fixer), and
+so does a catkin package without its CMakeLists.txt (MAN015)."""
 
 FOLDED = {("DEP001", "pip_name_instead_of_key")}
 """Cases whose findings fold into the finding of their cause when every rule runs: the pip name

@@ -18,7 +18,9 @@ def missing_build_type(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Reports a manifest without ``<build_type>`` in ``<export>`` when the package has no
-    CMakeLists.txt. (With a CMakeLists.txt it may be a catkin package, which needs none.)
+    CMakeLists.txt. (With a CMakeLists.txt it may be a catkin package, which needs none.) A
+    ROS 1 package (catkin its build tool) without CMakeLists.txt is told that it needs one,
+    not a build type.
 
     ## Why is this bad?
     Without a build type catkin_pkg answers ``catkin``, so colcon identifies the package as
@@ -45,6 +47,12 @@ def missing_build_type(package: Package) -> Iterator[Hit]:
         return
     exports = list(found.named("export"))
     where = exports[0].span if exports else found.root.span
+    if package.manifest is not None and package.manifest.is_ros1:
+        yield Hit(where, "This catkin package has no CMakeLists.txt: catkin (and colcon, which "
+                  "builds it as `catkin`) runs CMake on it and fails",
+                  "Add the CMakeLists.txt catkin builds it with (`catkin_package()`, and "
+                  "`catkin_python_setup()` for its setup.py)")
+        return
     kind = "a Python" if package.has_file("setup.py") else "this"
     yield Hit(where, f"No `<build_type>` in `<export>`: colcon would build {kind} package with "
               "CMake, as `catkin`, and fail")
