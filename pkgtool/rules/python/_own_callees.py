@@ -145,28 +145,32 @@ _COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
 
 def rebound_around(node: ast.AST, name: str, index: Index) -> bool:
     """True when a scope around ``node`` binds ``name`` (a module-level name read there may
-    stand for something else): a function, a lambda's parameters, a comprehension's targets,
-    or the class whose body holds ``node`` itself (not in a method: methods do not see their
-    class's names)."""
-    child, parent = node, index.parents.get(id(node))
-    in_function = False
+    stand for something else): a function whose body holds it, a lambda's parameters, a
+    comprehension's targets (not in its first iterable, read outside it), or the class whose
+    body holds ``node`` itself (not in a method, nor in a class nested in it: neither sees the
+    class's names). A function's decorators, defaults and annotations, and a class's bases,
+    are read in the scope around them."""
+    below, child, parent = None, node, index.parents.get(id(node))
+    past_a_scope = False
     while parent is not None:
-        if isinstance(parent, FUNCTIONS):
-            in_function = True
+        if isinstance(parent, FUNCTIONS) and any(child is s for s in parent.body):
+            past_a_scope = True
             if scope_bindings(parent)[name]:
                 return True
-        elif isinstance(parent, ast.Lambda):
-            in_function = True
+        elif isinstance(parent, ast.Lambda) and child is parent.body:
+            past_a_scope = True
             if name in parameter_names(parent.args):
                 return True
-        elif isinstance(parent, _COMPREHENSIONS) and child is not parent.generators[0].iter:
+        elif isinstance(parent, _COMPREHENSIONS) and not (
+                child is parent.generators[0] and below is parent.generators[0].iter):
             if any(isinstance(n, ast.Name) and n.id == name
                    for g in parent.generators for n in ast.walk(g.target)):
                 return True
-        elif isinstance(parent, ast.ClassDef) and not in_function and \
-                scope_bindings(parent)[name]:
-            return True
-        child, parent = parent, index.parents.get(id(parent))
+        elif isinstance(parent, ast.ClassDef) and any(child is s for s in parent.body):
+            if not past_a_scope and scope_bindings(parent)[name]:
+                return True
+            past_a_scope = True
+        below, child, parent = child, parent, index.parents.get(id(parent))
     return False
 
 

@@ -140,7 +140,7 @@ def _suspects(tree: ast.Module, index: Index, module_names: set[str]
     such a name first; found from the tree's one walk, without walking each function."""
     found = {id(f): f for f in index.functions if index.enclosing_function(f) is not None}
     for kind in (ast.Name, *FUNCTIONS, ast.ClassDef, ast.Import, ast.ImportFrom,
-                 ast.ExceptHandler):
+                 ast.ExceptHandler, ast.MatchAs, ast.MatchStar, ast.MatchMapping):
         for node in nodes_of_class(tree, kind):
             names = _bound_by(node)
             if names and any(n in module_names or n in _BUILTINS for n in names):
@@ -224,8 +224,8 @@ def local_read_before_assignment(package: Package) -> Iterator[Hit]:
                         not _read_first(read, bindings[name], index, function):
                     continue
                 told.add(name)
-                nested = name in outer and name not in module_names or any(
-                    scope_bindings(f)[name] for f in index.functions_around(function))
+                nested = any(0 < scope_bindings(f)[name] < ALWAYS
+                             for f in index.functions_around(function))
                 whose = "the enclosing function's" if nested else \
                     "the module's" if name in module_names else "the builtin"
                 declare = "nonlocal" if nested else "global"

@@ -54,7 +54,7 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     package built for Python 2 (one depending on `python-...` keys: Melodic or older) are
     not parsed, nor Python files kept aside (in `backup/`, `old/`, or named as a copy,
     `node_old.py`) that the package neither installs nor has pytest collect, nor those of a
-    ROS 1 package some file of which has a `#!` line running `python` or `python2` (the
+    ROS 1 package whose `#!` line runs `python`, or some file of which runs `python2` (the
     convention before Noetic: its modules are Python 2 as well), nor those whose `#!` line
     runs `python` in a package CMake builds that neither installs them, nor names them or
     their folders in its CMake files, nor runs a Python linter in its tests
@@ -102,6 +102,9 @@ _PYTHON2_SHEBANG = lazy_pattern(r"#!.*\bpython(?:2(?:\.\d+)?)?[ \t\r]*(?:\n|$)")
 Noetic."""
 
 
+_EXPLICIT_PYTHON2 = lazy_pattern(r"#!.*\bpython2(?:\.\d+)?[ \t\r]*(?:\n|$)")
+"""A ``#!`` line running ``python2`` by name (``python`` may be Python 3 on Noetic, with
+``python-is-python3``)."""
 _PYTHON_LINTERS = frozenset({"ament_lint_auto", "ament_lint_common", "ament_cmake_flake8",
                              "ament_cmake_pyflakes", "ament_cmake_pycodestyle",
                              "ament_cmake_pep257", "ament_flake8"})
@@ -117,9 +120,9 @@ def _python2(package: Package, problem: ParseProblem) -> bool:
         return False
     path = problem.span.path
     shebang = _PYTHON2_SHEBANG.match(package.texts.get(path, "")) is not None
-    if is_ros1_package(package):  # its scripts' `#!` lines tell its modules' Python too
+    if is_ros1_package(package):  # a script's `python2` tells its modules' Python too
         return shebang or is_python2_package(package) or any(
-            _PYTHON2_SHEBANG.match(text) for text in package.texts.values())
+            _EXPLICIT_PYTHON2.match(text) for text in package.texts.values())
     manifest = package.manifest
     return shebang and manifest is not None and manifest.build_type is not None and \
         manifest.build_type.value in CMAKE_BUILD_TYPES and \
@@ -128,12 +131,17 @@ def _python2(package: Package, problem: ParseProblem) -> bool:
 
 
 def _named_by_cmake(package: Package, path: str) -> bool:
-    """True when an argument of a command of the package's CMake files (comments aside) names
-    the file or one of its folders (``install(DIRECTORY scripts/ ...)``,
+    """True when an argument of a command of the package's CMake files (comments aside) is the
+    file's path or one of its folders (``install(DIRECTORY scripts/ ...)``,
     ``ament_add_pytest_test(t test/test_x.py)``, ``add_subdirectory(tests)``)."""
-    parts = set(path.split("/"))
-    return any(parts & set(token.split("/")) for _, tokens in commands(cmake_text(package) or "")
-               for token in tokens)
+    parts = path.split("/")
+    named = {"/".join(parts[:end]) for end in range(1, len(parts) + 1)}
+    return any(_SOURCE_DIR.sub("", token).strip("/") in named
+               for _, tokens in commands(cmake_text(package) or "") for token in tokens)
+
+
+_SOURCE_DIR = lazy_pattern(r"^(?:\$\{(?:CMAKE_CURRENT_SOURCE_DIR|PROJECT_SOURCE_DIR)\}/|\./)+")
+"""What a CMake path to a file of the package may start with."""
 
 
 _TEMPLATE = lazy_pattern(r"\{\{.*?\}\}|\{%.*?%\}")
