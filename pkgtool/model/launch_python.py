@@ -23,6 +23,7 @@ from pkgtool.model.launch_scopes import (bindings, import_origins, overwritten_v
                                          read_only_by, scope_nodes, unread_argument_defaults,
                                          unread_attribute_values, unread_module_values,
                                          unread_values, written_paths)
+from pkgtool.model.launch_helpers import package_argument, package_parameters
 from pkgtool.model.launch_started import certainly_started
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import depends_on_ros_distro, reads_environment
@@ -122,6 +123,7 @@ class _Reader(ast.NodeVisitor):
                                     if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load))
         self.presence_flags = presence_flags(tree)
         self.certain = certainly_started(tree)
+        self.package_parameters = package_parameters(tree, SHARE_LOOKUPS | PREFIX_LOOKUPS)
 
     def _span(self, node: ast.AST) -> Span:
         return Span(self.path, getattr(node, "lineno", 1), getattr(node, "col_offset", 0) + 1)
@@ -422,6 +424,13 @@ class _Reader(ast.NodeVisitor):
             if isinstance(package, str) and package:
                 self.packages.append(PackageRef(package, self._span(node), bool(self.optional),
                                                 bool(self.dead)))
+        helper = self.package_parameters.get(node.func.id) \
+            if isinstance(node.func, ast.Name) else None
+        given = package_argument(node, helper) if helper is not None else None
+        package = self.value(given) if given is not None else None
+        if isinstance(package, str) and package:  # load_yaml('x_moveit_config', ...)
+            self.packages.append(PackageRef(package, self._span(node), bool(self.optional),
+                                            bool(self.dead)))
         if _refinding(node):  # FindPackageShare(x).find(y): y is looked up, x never
             self.refound.add(id(node.func.value))  # type: ignore[attr-defined]
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS or _refinding(node):

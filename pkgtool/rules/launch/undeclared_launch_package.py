@@ -21,8 +21,12 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
     Collects the packages a launch file names statically: `Node(package=...)`,
     `get_package_share_directory(...)`, `FindPackageShare(...)`, `$(find-pkg-share ...)` in
     XML and YAML launch files, the package of `ExecutableInPackage(exe, pkg)` and
-    `$(exec-in-pkg exe pkg)`, and `xacro`'s package for a command substitution running it
-    (`Command(['xacro ', path])`, `$(command 'xacro ...')`). A name that is no package of
+    `$(exec-in-pkg exe pkg)`, the MoveIt config package `MoveItConfigsBuilder('panda')`
+    finds, the package a launch file's own helper looks up by the name it is given
+    (`load_yaml('panda_moveit_config', 'kinematics.yaml')` where `load_yaml` calls
+    `get_package_share_directory(package_name)` outside a `try`), and `xacro`'s package for a
+    command substitution running it (`Command(['xacro ', path])`, `$(command 'xacro ...')`).
+    A name that is no package of
     the target's release nor of the packages linted with it (the workspace pkgtool sees) is
     said so, with the package (of the workspace, this one or the release) it is a typo of,
     if any. Each one other than this
