@@ -1,9 +1,13 @@
 """Functions of a launch file that look a package up by a name they are given.
 
 The MoveIt tutorials' launch files define ``load_yaml(package_name, file_path)``, whose body
-calls ``get_package_share_directory(package_name)``: ``load_yaml('panda_moveit_config',
-'kinematics.yaml')`` looks ``panda_moveit_config`` up in the ament index as surely as a
-direct call would.
+calls ``get_package_share_directory(package_name)`` first thing: ``load_yaml(
+'panda_moveit_config', 'kinematics.yaml')`` looks ``panda_moveit_config`` up in the ament
+index as surely as a direct call would. Only helpers that certainly do are taken: defined
+once at the top of the module, undecorated, their name never bound anywhere else in the
+module (no inner function, parameter, ``partial`` or import can stand for it), and making
+the lookup on every call (not under an ``if``, a loop, a ``try`` or an expression that may
+skip it, nor after a ``return`` or ``raise`` that may end the call first).
 """
 
 from __future__ import annotations
@@ -11,40 +15,61 @@ from __future__ import annotations
 import ast
 from collections.abc import Collection
 
-from pkgtool.model.ast_nodes import TRIES, enclosing, last_name, nodes_of_class, walk_once
+from pkgtool.model.ast_nodes import last_name, nodes_of_class, walk_once
 from pkgtool.records import record
+
+_CONDITIONAL = (ast.If, ast.IfExp, ast.BoolOp, ast.For, ast.AsyncFor, ast.While, ast.Try,
+                ast.With, ast.AsyncWith, ast.FunctionDef, ast.AsyncFunctionDef, ast.Lambda,
+                ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp, ast.Match,
+                *((ast.TryStar,) if hasattr(ast, "TryStar") else ()))
+"""Nodes whose parts may not run on every pass through them."""
 
 
 @record
 class PackageParameter:
     """The parameter of a function that names the package it looks up: its position among
-    the positional parameters and its name (for a keyword argument)."""
+    the positional parameters, its name (for a keyword argument), and whether the lookup is a
+    substitution (``FindPackageShare``: made when the action holding it runs)."""
 
     position: int
     name: str
+    substitution: bool
 
 
-def package_parameters(tree: ast.Module, lookups: Collection[str]
-                       ) -> dict[str, PackageParameter]:
-    """The module-level functions of ``tree`` (each defined once, at the top level) whose
-    body passes one of their parameters, never rebound, straight to one of ``lookups``
-    (``get_package_share_directory(package_name)``), by function name."""
-    defined: dict[str, list[ast.FunctionDef]] = {}
-    for statement in tree.body:
-        if isinstance(statement, ast.FunctionDef):
-            defined.setdefault(statement.name, []).append(statement)
+def package_parameters(tree: ast.Module, lookups: Collection[str],
+                       substitutions: Collection[str]) -> dict[str, PackageParameter]:
+    """The module-level helpers of ``tree`` that certainly look a package up by one of their
+    parameters (see the module's docstring), by function name."""
+    bound: dict[str, int] = {}
+    for node in walk_once(tree).nodes:
+        for name in _names_bound(node):
+            bound[name] = bound.get(name, 0) + 1
     found: dict[str, PackageParameter] = {}
-    for name, functions in defined.items():
-        parameter = _package_parameter(functions[0], lookups) if len(functions) == 1 else None
-        if parameter is not None:
-            found[name] = parameter
+    for statement in tree.body:
+        if isinstance(statement, ast.FunctionDef) and bound.get(statement.name) == 1 and \
+                not statement.decorator_list:
+            parameter = _package_parameter(statement, lookups, substitutions)
+            if parameter is not None:
+                found[statement.name] = parameter
     return found
 
 
-def _package_parameter(function: ast.FunctionDef, lookups: Collection[str]
-                       ) -> PackageParameter | None:
-    """The parameter ``function`` looks a package up by, unless the lookup stands in a
-    ``try`` (a helper asking whether the package is installed, not needing it)."""
+def _names_bound(node: ast.AST) -> list[str]:
+    """The names ``node`` binds in any scope (parameters and imports included)."""
+    if isinstance(node, ast.Name):
+        return [] if isinstance(node.ctx, ast.Load) else [node.id]
+    if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+        return [node.name]
+    if isinstance(node, ast.arg):
+        return [node.arg]
+    if isinstance(node, (ast.Import, ast.ImportFrom)):
+        return [(alias.asname or alias.name).split(".")[0] for alias in node.names]
+    return []
+
+
+def _package_parameter(function: ast.FunctionDef, lookups: Collection[str],
+                       substitutions: Collection[str]) -> PackageParameter | None:
+    """The parameter ``function`` certainly looks a package up by, if one."""
     positional = [a.arg for a in (*function.args.posonlyargs, *function.args.args)]
     stored = {n.id for n in nodes_of_class(function, ast.Name)
               if isinstance(n, ast.Name) and not isinstance(n.ctx, ast.Load)}
@@ -53,9 +78,27 @@ def _package_parameter(function: ast.FunctionDef, lookups: Collection[str]
         first = call.args[0] if isinstance(call, ast.Call) and call.args and \
             last_name(call.func) in lookups else None
         if isinstance(first, ast.Name) and first.id in positional and \
-                first.id not in stored and enclosing(call, parents, TRIES) is None:
-            return PackageParameter(positional.index(first.id), first.id)
+                first.id not in stored and _always_made(call, function, parents):
+            return PackageParameter(positional.index(first.id), first.id,
+                                    last_name(call.func) in substitutions)  # type: ignore
     return None
+
+
+def _always_made(call: ast.AST, function: ast.FunctionDef, parents: dict[int, ast.AST]
+                 ) -> bool:
+    """True when every call of ``function`` reaches ``call``: nothing around it may skip it,
+    and no statement before the one holding it may return or raise."""
+    child, parent = call, parents.get(id(call))
+    while parent is not None and parent is not function:
+        if isinstance(parent, _CONDITIONAL):
+            return False
+        child, parent = parent, parents.get(id(parent))
+    for statement in function.body:
+        if statement is child:
+            return True
+        if any(isinstance(n, (ast.Return, ast.Raise)) for n in ast.walk(statement)):
+            return False
+    return False
 
 
 def package_argument(call: ast.Call, parameter: PackageParameter) -> ast.expr | None:

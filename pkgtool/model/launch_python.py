@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import ast
 import math
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Collection, Iterator
 from typing import Any
 
 from pkgtool.model.ast_nodes import (child_nodes, descendants, handler_stops, last_name,
@@ -123,7 +123,8 @@ class _Reader(ast.NodeVisitor):
                                     if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load))
         self.presence_flags = presence_flags(tree)
         self.certain = certainly_started(tree)
-        self.package_parameters = package_parameters(tree, SHARE_LOOKUPS | PREFIX_LOOKUPS)
+        self.package_parameters = package_parameters(tree, SHARE_LOOKUPS | PREFIX_LOOKUPS,
+                                                     SUBSTITUTIONS)
 
     def _span(self, node: ast.AST) -> Span:
         return Span(self.path, getattr(node, "lineno", 1), getattr(node, "col_offset", 0) + 1)
@@ -247,7 +248,7 @@ class _Reader(ast.NodeVisitor):
         return None
 
     def visit_Try(self, node: ast.Try) -> None:
-        self._visit_block(node.body, _checks_presence(node))
+        self._visit_block(node.body, _checks_presence(node, self.package_parameters))
         for part in (*node.handlers, *node.orelse, *node.finalbody):
             self.visit(part)
 
@@ -428,9 +429,9 @@ class _Reader(ast.NodeVisitor):
             if isinstance(node.func, ast.Name) else None
         given = package_argument(node, helper) if helper is not None else None
         package = self.value(given) if given is not None else None
-        if isinstance(package, str) and package:  # load_yaml('x_moveit_config', ...)
+        if isinstance(package, str) and package and helper is not None:  # load_yaml('x', ...)
             self.packages.append(PackageRef(package, self._span(node), bool(self.optional),
-                                            bool(self.dead)))
+                                            bool(self.dead) and helper.substitution))
         if _refinding(node):  # FindPackageShare(x).find(y): y is looked up, x never
             self.refound.add(id(node.func.value))  # type: ignore[attr-defined]
         if name in SHARE_LOOKUPS or name in PREFIX_LOOKUPS or _refinding(node):
@@ -747,12 +748,14 @@ def _extends(longer: FileRef, prefix: FileRef, appended_to: bool) -> bool:
         whole.startswith(start + "/") or (appended_to and whole.startswith(start)))
 
 
-def _checks_presence(node: ast.Try) -> bool:
+def _checks_presence(node: ast.Try, helpers: Collection[str] = ()) -> bool:
     """True for a ``try`` whose handlers expect a missing package: one catching
     PackageNotFoundError by name (going on, or stopping with the author's own message when
-    it was the last of several alternatives), or around a lookup anything broader without
-    raising again."""
-    looked_up = any(isinstance(n, ast.Call) and last_name(n.func) in _LOOKUPS
+    it was the last of several alternatives), or around a lookup (or a call of one of the
+    file's ``helpers`` making one) anything broader without raising again."""
+    looked_up = any(isinstance(n, ast.Call) and (last_name(n.func) in _LOOKUPS or
+                                                 isinstance(n.func, ast.Name) and
+                                                 n.func.id in helpers)
                     for statement in node.body for n in descendants(statement))
     going_on = [h for h in node.handlers if not handler_stops(h)]  # not re-raising
     return any(isinstance(n, (ast.Name, ast.Attribute)) and

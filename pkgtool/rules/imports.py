@@ -615,11 +615,10 @@ _ROS1_CLIENTS = frozenset({"rospy", "roslib"})
 
 
 def is_ros1_module(package: Package, module: PythonModule) -> bool:
-    """True for a module of a ROS 2 package (or a Python project without package.xml) that
-    imports ``rospy`` or ``roslib`` unguarded: ROS 1 code left in the package, which cannot
-    run at all on ROS 2 (the import fails first; DEP004 says so): its other imports and its
-    API use are not ROS 2's."""
-    return (package.manifest is None or not package.manifest.is_ros1) and any(
+    """True for a module of a ROS 2 package that imports ``rospy`` or ``roslib`` unguarded:
+    ROS 1 code left in the package, which cannot run at all on ROS 2 (the import fails first;
+    DEP004 says so): its other imports and its API use are not ROS 2's."""
+    return package.manifest is not None and not package.manifest.is_ros1 and any(
         imported.top_level in _ROS1_CLIENTS and not imported.guarded
         for imported in module.imports)
 

@@ -24,7 +24,9 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
     `$(exec-in-pkg exe pkg)`, the MoveIt config package `MoveItConfigsBuilder('panda')`
     finds, the package a launch file's own helper looks up by the name it is given
     (`load_yaml('panda_moveit_config', 'kinematics.yaml')` where `load_yaml` calls
-    `get_package_share_directory(package_name)` outside a `try`), and `xacro`'s package for a
+    `get_package_share_directory(package_name)` on every call: not under an `if`, a loop or a
+    `try`, nor after a `return`; the helper defined once, undecorated, its name bound nowhere
+    else), and `xacro`'s package for a
     command substitution running it (`Command(['xacro ', path])`, `$(command 'xacro ...')`).
     A name that is no package of
     the target's release nor of the packages linted with it (the workspace pkgtool sees) is

@@ -454,9 +454,10 @@ def known_messages(package: Package, index: Index, distro: str | None = None) ->
     """What a callee stands for: a message class of a package the table speaks for on
     ``distro`` (the target's when None), or one a package of the workspace defines in its own
     interface files (a workspace package of a name the table knows is never the table's);
-    nothing in a ROS 1 package."""
+    nothing in a ROS 1 package, nor in a module importing rospy in a project without
+    package.xml (ROS 1's messages: a stamp is a ``rospy.Time``)."""
     manifest = package.manifest
-    ros1 = manifest is not None and manifest.is_ros1
+    ros1 = manifest.is_ros1 if manifest is not None else index.imports_from("rospy")
     distro = distro or package.context.distro
 
     def known(func: ast.expr) -> Message | None:
