@@ -47,6 +47,13 @@ def _not_the_packages(name: str, files: set[str], at_root: bool) -> bool:
     return at_root and name in BUILD_OUTPUT_DIRS and "__init__.py" not in files
 
 
+def _setuptools_output(prefix: str, name: str) -> bool:
+    """True for what setuptools builds into a project's ``build/`` folder below the package
+    root (``vendor/lib/build/lib/``, ``build/bdist.linux-x86_64/``): copies of another
+    project's code, never the package's sources."""
+    return prefix.endswith("/build/") and name.startswith(("lib", "bdist."))
+
+
 @record
 class TextFile:
     """A file's decoded text."""
@@ -177,7 +184,8 @@ def _walk(root: Path, depth: Callable[[str], int | None] | None = None
                         continue
                     inside = listing(entry.path)
                     files = {e.name for e in inside if e.is_file()}
-                    if not _not_the_packages(entry.name, files, not prefix):
+                    if not _not_the_packages(entry.name, files, not prefix) and \
+                            not _setuptools_output(prefix, entry.name):
                         deeper = None if below is None else below - 1
                         stack.append((f"{prefix}{entry.name}/", inside, deeper))
                     elif "package.xml" in files and "pyvenv.cfg" not in files:
