@@ -47,11 +47,12 @@ def _not_the_packages(name: str, files: set[str], at_root: bool) -> bool:
     return at_root and name in BUILD_OUTPUT_DIRS and "__init__.py" not in files
 
 
-def _setuptools_output(prefix: str, name: str) -> bool:
+def _setuptools_output(prefix: str, name: str, build_folders: set[str]) -> bool:
     """True for what setuptools builds into a project's ``build/`` folder below the package
     root (``vendor/lib/build/lib/``, ``build/bdist.linux-x86_64/``): copies of another
-    project's code, never the package's sources."""
-    return prefix.endswith("/build/") and name.startswith(("lib", "bdist."))
+    project's code, never the package's sources. ``build_folders``: the folders named
+    ``build`` met so far that are no Python package (no ``__init__.py``)."""
+    return prefix in build_folders and (name == "lib" or name.startswith(("lib.", "bdist.")))
 
 
 @record
@@ -171,6 +172,7 @@ def _walk(root: Path, depth: Callable[[str], int | None] | None = None
     stack: list[tuple[str, list[os.DirEntry[str]], int | None]] = [
         ("", listing(os.fspath(root)), None)]
     linked = _LinkedFolders(os.fspath(root))
+    build_folders: set[str] = set()  # below the root, holding no __init__.py
     while stack:
         prefix, entries, left = stack.pop()
         for entry in entries:  # is_dir/is_file follow symbolic links; broken ones are neither
@@ -185,9 +187,11 @@ def _walk(root: Path, depth: Callable[[str], int | None] | None = None
                     inside = listing(entry.path)
                     files = {e.name for e in inside if e.is_file()}
                     if not _not_the_packages(entry.name, files, not prefix) and \
-                            not _setuptools_output(prefix, entry.name):
+                            not _setuptools_output(prefix, entry.name, build_folders):
                         deeper = None if below is None else below - 1
                         stack.append((f"{prefix}{entry.name}/", inside, deeper))
+                        if prefix and entry.name == "build" and "__init__.py" not in files:
+                            build_folders.add(f"{prefix}{entry.name}/")
                     elif "package.xml" in files and "pyvenv.cfg" not in files:
                         found.extend((f"{prefix}{entry.name}/{e.name}", e) for e in inside
                                      if e.name == "package.xml")  # marks the nested package

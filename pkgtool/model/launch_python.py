@@ -125,6 +125,8 @@ class _Reader(ast.NodeVisitor):
         self.certain = certainly_started(tree)
         self.package_parameters = package_parameters(tree, SHARE_LOOKUPS | PREFIX_LOOKUPS,
                                                      SUBSTITUTIONS)
+        self.eager_helpers = frozenset(name for name, p in self.package_parameters.items()
+                                       if not p.substitution)  # may raise: may be checked
 
     def _span(self, node: ast.AST) -> Span:
         return Span(self.path, getattr(node, "lineno", 1), getattr(node, "col_offset", 0) + 1)
@@ -248,7 +250,7 @@ class _Reader(ast.NodeVisitor):
         return None
 
     def visit_Try(self, node: ast.Try) -> None:
-        self._visit_block(node.body, _checks_presence(node, self.package_parameters))
+        self._visit_block(node.body, _checks_presence(node, self.eager_helpers))
         for part in (*node.handlers, *node.orelse, *node.finalbody):
             self.visit(part)
 

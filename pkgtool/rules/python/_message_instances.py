@@ -29,7 +29,7 @@ from pkgtool.model.package import Package
 from pkgtool.records import record
 from pkgtool.rules.node_api import ACTION_SERVER_CALLBACKS, ACTION_SERVERS, PARAMETERS, argument
 from pkgtool.rules.scopes import BINDERS, scope_bindings
-from pkgtool.rules.syntax_trees import FUNCTIONS, Index
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
 Known = Callable[[ast.expr], Message | None]
 """The known message class a constructor's callee stands for, or None."""
@@ -450,14 +450,21 @@ def parameter_instance(tree: ast.Module, function: Function, name: str, message:
     yield instance_of(message, deeper, refs, index, skip=1)
 
 
+def _imports_rospy(package: Package, index: Index) -> bool:
+    """True when the module of ``index`` imports rospy unguarded (ROS 1 code)."""
+    module = next((m for m, _, i in installed_trees(package) if i is index), None)
+    return module is not None and any(imported.top_level == "rospy" and not imported.guarded
+                                      for imported in module.imports)
+
+
 def known_messages(package: Package, index: Index, distro: str | None = None) -> Known:
     """What a callee stands for: a message class of a package the table speaks for on
     ``distro`` (the target's when None), or one a package of the workspace defines in its own
     interface files (a workspace package of a name the table knows is never the table's);
-    nothing in a ROS 1 package, nor in a module importing rospy in a project without
+    nothing in a ROS 1 package, nor in a module importing rospy unguarded in a project without
     package.xml (ROS 1's messages: a stamp is a ``rospy.Time``)."""
     manifest = package.manifest
-    ros1 = manifest.is_ros1 if manifest is not None else index.imports_from("rospy")
+    ros1 = manifest.is_ros1 if manifest is not None else _imports_rospy(package, index)
     distro = distro or package.context.distro
 
     def known(func: ast.expr) -> Message | None:
