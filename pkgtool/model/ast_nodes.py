@@ -106,6 +106,33 @@ def enclosing(node: ast.AST, parents: dict[int, ast.AST], kinds: tuple[type, ...
     return parent
 
 
+def statement_of(node: ast.AST, parents: dict[int, ast.AST]) -> ast.AST:
+    """The innermost statement holding ``node`` (``node`` itself for a statement), by
+    ``parents`` (a :class:`Walk`'s)."""
+    while not isinstance(node, ast.stmt):
+        node = parents[id(node)]
+    return node
+
+
+def names_bound_by(node: ast.AST) -> list[str]:
+    """The names ``node`` itself binds in the scope it stands in (a stored name, a parameter,
+    a definition, an import, ``except ... as``, a ``match`` capture); not ``global`` or
+    ``nonlocal`` declarations."""
+    if isinstance(node, ast.Name):
+        return [] if isinstance(node.ctx, ast.Load) else [node.id]
+    if isinstance(node, ast.arg):
+        return [node.arg]
+    if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+        return [node.name]
+    if isinstance(node, (ast.Import, ast.ImportFrom)):
+        return [alias.asname or alias.name.split(".")[0] for alias in node.names]
+    if isinstance(node, (ast.ExceptHandler, ast.MatchAs, ast.MatchStar)) and node.name:
+        return [node.name]
+    if isinstance(node, ast.MatchMapping) and node.rest:
+        return [node.rest]
+    return []
+
+
 def child_nodes(node: ast.AST) -> list[ast.AST]:
     """``list(ast.iter_child_nodes(node))`` without its two generators, and without context
     and operator nodes."""

@@ -15,7 +15,7 @@ from __future__ import annotations
 import ast
 from collections.abc import Collection
 
-from pkgtool.model.ast_nodes import last_name, nodes_of_class, walk_once
+from pkgtool.model.ast_nodes import last_name, names_bound_by, nodes_of_class, walk_once
 from pkgtool.records import record
 
 _CONDITIONAL = (ast.If, ast.IfExp, ast.BoolOp, ast.For, ast.AsyncFor, ast.While, ast.Try,
@@ -42,7 +42,7 @@ def package_parameters(tree: ast.Module, lookups: Collection[str],
     parameters (see the module's docstring), by function name."""
     bound: dict[str, int] = {}
     for node in walk_once(tree).nodes:
-        for name in _names_bound(node):
+        for name in names_bound_by(node):
             bound[name] = bound.get(name, 0) + 1
     found: dict[str, PackageParameter] = {}
     for statement in tree.body:
@@ -52,19 +52,6 @@ def package_parameters(tree: ast.Module, lookups: Collection[str],
             if parameter is not None:
                 found[statement.name] = parameter
     return found
-
-
-def _names_bound(node: ast.AST) -> list[str]:
-    """The names ``node`` binds in any scope (parameters and imports included)."""
-    if isinstance(node, ast.Name):
-        return [] if isinstance(node.ctx, ast.Load) else [node.id]
-    if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
-        return [node.name]
-    if isinstance(node, ast.arg):
-        return [node.arg]
-    if isinstance(node, (ast.Import, ast.ImportFrom)):
-        return [(alias.asname or alias.name).split(".")[0] for alias in node.names]
-    return []
 
 
 def _package_parameter(function: ast.FunctionDef, lookups: Collection[str],

@@ -7,7 +7,7 @@ import functools
 from collections.abc import Callable
 
 from pkgtool.model.ast_nodes import (TRIES, block_statements, descendants, enclosing,
-                                     handler_stops, subtree, walk_once)
+                                     handler_stops, statement_of, subtree, walk_once)
 from pkgtool.model.memo import forget_tree_facts
 from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.span import ParseProblem, Span
@@ -174,7 +174,7 @@ def _guard_finder(tree: ast.Module, parents: dict[int, ast.AST]) -> Callable[[as
             return True
         uses = _uses_of_function_around(node, tree, parents)
         return bool(uses) and all(isinstance(use, ast.Call) and
-                                  _in_try_with_fallback(_statement_of(use, parents), parents)
+                                  _in_try_with_fallback(statement_of(use, parents), parents)
                                   for use in uses)
 
     return guarded
@@ -216,13 +216,6 @@ def _uses_of_function_around(node: ast.AST, tree: ast.Module, parents: dict[int,
             call = parents.get(id(use))
             uses.append(call if isinstance(call, ast.Call) and call.func is use else use)
     return uses
-
-
-def _statement_of(node: ast.AST, parents: dict[int, ast.AST]) -> ast.AST:
-    """The statement ``node`` is part of."""
-    while not isinstance(node, ast.stmt):
-        node = parents[id(node)]
-    return node
 
 
 def _top_level_names(tree: ast.Module) -> frozenset[str]:

@@ -9,8 +9,9 @@ from collections.abc import Iterator
 from pkgtool.model.ast_nodes import child_nodes
 from pkgtool.model.memo import per_tree
 
-_NESTED = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda,
-                     ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp})
+COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
+NESTED_SCOPES = frozenset({ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef, ast.Lambda,
+                           *COMPREHENSIONS})
 """The classes of the nodes opening a scope of their own (tested with ``type(node) in``: a
 parsed tree holds no subclass of them)."""
 _BROAD = frozenset({"Exception", "BaseException"})
@@ -51,7 +52,7 @@ def scope_walk(body: list[ast.stmt], *, skip_protected: bool = False) -> Iterato
     while stack:
         node = stack.pop()
         yield node
-        if type(node) in _NESTED:
+        if type(node) in NESTED_SCOPES:
             continue
         if skip_protected and isinstance(node, ast.Try) and any(
                 catches_name_error(h) for h in node.handlers):
@@ -67,7 +68,7 @@ def own_scope(node: ast.AST, parents: dict[int, ast.AST]) -> tuple[ast.AST | Non
     level), with the node below it on the way up (``node``'s statement in its body...):
     ``node`` is among what :func:`scope_walk` yields for that scope when it is there."""
     child, parent = node, parents.get(id(node))
-    while parent is not None and type(parent) not in _NESTED:
+    while parent is not None and type(parent) not in NESTED_SCOPES:
         child, parent = parent, parents.get(id(parent))
     return parent, child
 

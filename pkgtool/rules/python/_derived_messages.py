@@ -20,11 +20,11 @@ from pkgtool.knowledge.message_fields import Message, element_message, nested_me
 from pkgtool.rules.python._message_instances import (Instance, attributes_taken,
                                                      binding_counts, fields_taken, instance_of,
                                                      name_reads)
+from pkgtool.rules.scopes import NESTED_SCOPES
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index
 
 _LEVELS = 3
 """How many times instances reached are followed again."""
-_COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
 
 
 def derived_instances(instances: list[Instance[Message]], tree: ast.Module, index: Index
@@ -117,8 +117,7 @@ def _scope(statement: ast.AST, tree: ast.Module, index: Index) -> ast.AST | None
     """The function whose body holds ``statement`` (also in a comprehension's or lambda's
     scope: None), ``tree`` at module level, None in a class body."""
     parent = index.parents.get(id(statement))
-    while parent is not None and not isinstance(parent, (*FUNCTIONS, ast.ClassDef, ast.Lambda,
-                                                         *_COMPREHENSIONS)):
+    while parent is not None and type(parent) not in NESTED_SCOPES:
         parent = index.parents.get(id(parent))
     if parent is None:
         return tree

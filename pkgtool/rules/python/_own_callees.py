@@ -17,7 +17,7 @@ from pkgtool.model.ast_nodes import subtree
 from pkgtool.model.memo import per_tree
 from pkgtool.rules.node_api import unpacks
 from pkgtool.rules.python._message_instances import binding_counts
-from pkgtool.rules.scopes import scope_bindings
+from pkgtool.rules.scopes import COMPREHENSIONS, scope_bindings
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index
 
 Function = ast.FunctionDef | ast.AsyncFunctionDef
@@ -140,9 +140,6 @@ def own_definition(call: ast.Call, index: Index, tree: ast.Module,
     return found if found is not None and not rebound_around(call, func.id, index) else None
 
 
-_COMPREHENSIONS = (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
-
-
 def rebound_around(node: ast.AST, name: str, index: Index) -> bool:
     """True when a scope around ``node`` binds ``name`` (a module-level name read there may
     stand for something else): a function whose body holds it, a lambda's parameters, a
@@ -161,7 +158,7 @@ def rebound_around(node: ast.AST, name: str, index: Index) -> bool:
             past_a_scope = True
             if name in parameter_names(parent.args):
                 return True
-        elif isinstance(parent, _COMPREHENSIONS) and not (
+        elif isinstance(parent, COMPREHENSIONS) and not (
                 child is parent.generators[0] and below is parent.generators[0].iter):
             if any(isinstance(n, ast.Name) and n.id == name
                    for g in parent.generators for n in ast.walk(g.target)):

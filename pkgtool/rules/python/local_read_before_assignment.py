@@ -9,25 +9,19 @@ import builtins
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import nodes_of_class, subtree
+from pkgtool.model.ast_nodes import names_bound_by, nodes_of_class, statement_of, subtree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._own_callees import parameter_names
 from pkgtool.rules.registry import rule
-from pkgtool.rules.scopes import ALWAYS, scope_bindings, scope_walk
+from pkgtool.rules.scopes import (ALWAYS, COMPREHENSIONS, NESTED_SCOPES, scope_bindings,
+                                  scope_walk)
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
 _BUILTINS = frozenset(dir(builtins))
 _LOOPS = (ast.For, ast.AsyncFor, ast.While)
 _VALUED = (ast.Assign, ast.AugAssign, ast.AnnAssign)
 """Statements that evaluate their value before they bind their targets."""
-
-
-def _statement(node: ast.AST, index: Index) -> ast.stmt:
-    """The innermost statement holding ``node`` (``node`` itself for a statement)."""
-    while not isinstance(node, ast.stmt):
-        node = index.parents[id(node)]
-    return node
 
 
 def _start(node: ast.AST) -> tuple[int, int]:
@@ -44,11 +38,11 @@ def _binders(function: ast.FunctionDef | ast.AsyncFunctionDef, index: Index
     (left alone: a comprehension's ``:=`` binds in the function)."""
     bindings: dict[str, list[ast.AST]] = {}
     for node in scope_walk(function.body):
-        for name in _bound_by(node):
+        for name in names_bound_by(node):
             bindings.setdefault(name, []).append(node)
     reads: list[tuple[ast.AST, str]] = []
     for node in scope_walk(function.body, skip_protected=True):
-        if type(node) in _NESTED:
+        if type(node) in NESTED_SCOPES:
             reads.extend((n, n.id) for n in scope_walk(_evaluated_at_once(node))
                          if isinstance(n, ast.Name) and isinstance(n.ctx, ast.Load))
         elif isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
@@ -61,15 +55,11 @@ def _binders(function: ast.FunctionDef | ast.AsyncFunctionDef, index: Index
     return bindings, reads, walrus
 
 
-_NESTED = frozenset({*FUNCTIONS, ast.Lambda, ast.ClassDef, ast.ListComp, ast.SetComp,
-                     ast.DictComp, ast.GeneratorExp})
-
-
 def _evaluated_at_once(node: ast.AST) -> list[ast.AST]:
     """The parts of a nested scope the enclosing one evaluates where it stands: a
     comprehension's first iterable; a function's or lambda's decorators and defaults; a
     class's decorators, bases and keywords."""
-    if isinstance(node, (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)):
+    if isinstance(node, COMPREHENSIONS):
         return [node.generators[0].iter]
     arguments = getattr(node, "args", None)
     defaults = [*arguments.defaults, *(d for d in arguments.kw_defaults if d is not None)] \
@@ -78,29 +68,14 @@ def _evaluated_at_once(node: ast.AST) -> list[ast.AST]:
             *(k.value for k in getattr(node, "keywords", []))]
 
 
-def _bound_by(node: ast.AST) -> list[str]:
-    """The names ``node`` binds in its scope (not ``global``/``nonlocal`` declarations)."""
-    if isinstance(node, ast.Name):
-        return [] if isinstance(node.ctx, ast.Load) else [node.id]
-    if isinstance(node, (*FUNCTIONS, ast.ClassDef)):
-        return [node.name]
-    if isinstance(node, (ast.Import, ast.ImportFrom)):
-        return [(alias.asname or alias.name).split(".")[0] for alias in node.names]
-    if isinstance(node, (ast.ExceptHandler, ast.MatchAs, ast.MatchStar)) and node.name:
-        return [node.name]
-    if isinstance(node, ast.MatchMapping) and node.rest:
-        return [node.rest]
-    return []
-
-
 def _read_first(read: ast.AST, binders: list[ast.AST], index: Index,
                 function: ast.AST) -> bool:
     """True when no binding of the name can run before ``read``: every binding is in a later
     statement (or binds the value of ``read``'s own assignment), and no loop around the read
     holds one (a later pass would see it bound)."""
-    statement = _statement(read, index)
+    statement = statement_of(read, index.parents)
     for binder in binders:
-        bound = _statement(binder, index)
+        bound = statement_of(binder, index.parents)
         if bound is statement:  # read first only where it is evaluated before the binding
             if not _evaluated_first(read, statement, index):
                 return False
@@ -108,13 +83,13 @@ def _read_first(read: ast.AST, binders: list[ast.AST], index: Index,
             return False
     loop = index.parents.get(id(statement))
     while loop is not None and loop is not function:
-        if isinstance(loop, _LOOPS) and any(_inside(b, loop, index) for b in binders):
+        if isinstance(loop, _LOOPS) and any(index.inside(b, {id(loop)}) for b in binders):
             return False
         loop = index.parents.get(id(loop))
     return True
 
 
-def _evaluated_first(read: ast.AST, statement: ast.stmt, index: Index) -> bool:
+def _evaluated_first(read: ast.AST, statement: ast.AST, index: Index) -> bool:
     """True when ``read`` is in the part of ``statement`` evaluated before it binds anything:
     the value of an assignment (``x += 1`` reads its target first), the iterable of a
     ``for``, the first context manager of a ``with``."""
@@ -124,13 +99,7 @@ def _evaluated_first(read: ast.AST, statement: ast.stmt, index: Index) -> bool:
         statement.iter if isinstance(statement, (ast.For, ast.AsyncFor)) else \
         statement.items[0].context_expr if isinstance(statement, (ast.With, ast.AsyncWith)) \
         else None
-    return first is not None and _inside(read, first, index)
-
-
-def _inside(node: ast.AST, around: ast.AST | None, index: Index) -> bool:
-    while node is not None and node is not around:
-        node = index.parents.get(id(node))  # type: ignore[assignment]
-    return node is not None
+    return first is not None and index.inside(read, {id(first)})
 
 
 def _suspects(tree: ast.Module, index: Index, module_names: set[str]
@@ -142,7 +111,7 @@ def _suspects(tree: ast.Module, index: Index, module_names: set[str]
     for kind in (ast.Name, *FUNCTIONS, ast.ClassDef, ast.Import, ast.ImportFrom,
                  ast.ExceptHandler, ast.MatchAs, ast.MatchStar, ast.MatchMapping):
         for node in nodes_of_class(tree, kind):
-            names = _bound_by(node)
+            names = names_bound_by(node)
             if names and any(n in module_names or n in _BUILTINS for n in names):
                 function = index.enclosing_function(node, through_lambdas=False)
                 if function is not None:
@@ -215,12 +184,13 @@ def local_read_before_assignment(package: Package) -> Iterator[Hit]:
                 continue  # most functions: no name of theirs is also the module's
             bindings, reads, walrus = _binders(function, index)
             shadowing -= walrus
-            earliest = {name: min(_start(_statement(b, index)) for b in bindings[name])
+            parents = index.parents
+            earliest = {name: min(_start(statement_of(b, parents)) for b in bindings[name])
                         for name in shadowing if name in bindings}
             told: set[str] = set()
             for read, name in sorted(reads, key=lambda r: _start(r[0])):
                 if name not in earliest or name in told or \
-                        _start(_statement(read, index)) > earliest[name] or \
+                        _start(statement_of(read, parents)) > earliest[name] or \
                         not _read_first(read, bindings[name], index, function):
                     continue
                 told.add(name)
