@@ -40,24 +40,27 @@ def package_parameters(tree: ast.Module, lookups: Collection[str],
                        substitutions: Collection[str]) -> dict[str, PackageParameter]:
     """The module-level helpers of ``tree`` that certainly look a package up by one of their
     parameters (see the module's docstring), by function name."""
+    found: dict[str, PackageParameter] = {}
+    for statement in tree.body:
+        if isinstance(statement, ast.FunctionDef) and not statement.decorator_list:
+            parameter = _package_parameter(statement, lookups, substitutions)
+            if parameter is not None:
+                found[statement.name] = parameter
+    if not found:
+        return found  # most launch files: counting every binding is spared
     bound: dict[str, int] = {}
     for node in walk_once(tree).nodes:
         for name in names_bound_by(node):
             bound[name] = bound.get(name, 0) + 1
-    found: dict[str, PackageParameter] = {}
-    for statement in tree.body:
-        if isinstance(statement, ast.FunctionDef) and bound.get(statement.name) == 1 and \
-                not statement.decorator_list:
-            parameter = _package_parameter(statement, lookups, substitutions)
-            if parameter is not None:
-                found[statement.name] = parameter
-    return found
+    return {name: parameter for name, parameter in found.items() if bound.get(name) == 1}
 
 
 def _package_parameter(function: ast.FunctionDef, lookups: Collection[str],
                        substitutions: Collection[str]) -> PackageParameter | None:
     """The parameter ``function`` certainly looks a package up by, if one."""
     positional = [a.arg for a in (*function.args.posonlyargs, *function.args.args)]
+    if not positional:
+        return None  # generate_launch_description()
     stored = {n.id for n in nodes_of_class(function, ast.Name)
               if isinstance(n, ast.Name) and not isinstance(n.ctx, ast.Load)}
     parents = walk_once(function).parents
