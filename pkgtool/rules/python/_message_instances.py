@@ -24,7 +24,7 @@ from typing import Any, Generic, TypeVar
 
 from pkgtool.knowledge.message_fields import Message, message_of, nested_message
 from pkgtool.model.ast_nodes import nodes_of, nodes_of_class, subtree
-from pkgtool.model.memo import per_tree
+from pkgtool.model.memo import per_package, per_tree
 from pkgtool.model.package import Package
 from pkgtool.records import record
 from pkgtool.rules.node_api import ACTION_SERVER_CALLBACKS, ACTION_SERVERS, PARAMETERS, argument
@@ -450,11 +450,13 @@ def parameter_instance(tree: ast.Module, function: Function, name: str, message:
     yield instance_of(message, deeper, refs, index, skip=1)
 
 
-def _imports_rospy(package: Package, index: Index) -> bool:
-    """True when the module of ``index`` imports rospy unguarded (ROS 1 code)."""
-    module = next((m for m, _, i in installed_trees(package) if i is index), None)
-    return module is not None and any(imported.top_level == "rospy" and not imported.guarded
-                                      for imported in module.imports)
+@per_package
+def _rospy_indexes(package: Package) -> frozenset[int]:
+    """Ids of the indexes of the installed modules that import rospy unguarded (ROS 1 code),
+    worked out once per package (every message rule asks, module by module)."""
+    return frozenset(id(index) for module, _, index in installed_trees(package)
+                     if any(imported.top_level == "rospy" and not imported.guarded
+                            for imported in module.imports))
 
 
 def known_messages(package: Package, index: Index, distro: str | None = None) -> Known:
@@ -464,7 +466,7 @@ def known_messages(package: Package, index: Index, distro: str | None = None) ->
     nothing in a ROS 1 package, nor in a module importing rospy unguarded in a project without
     package.xml (ROS 1's messages: a stamp is a ``rospy.Time``)."""
     manifest = package.manifest
-    ros1 = manifest.is_ros1 if manifest is not None else _imports_rospy(package, index)
+    ros1 = manifest.is_ros1 if manifest is not None else id(index) in _rospy_indexes(package)
     distro = distro or package.context.distro
 
     def known(func: ast.expr) -> Message | None:
