@@ -19,7 +19,8 @@ from pkgtool.cli_output import emit
 from pkgtool.commands import ExitCode
 
 if TYPE_CHECKING:
-    from pkgtool.cache.replay import Shown, Witness
+    from pkgtool.cache import Shown
+    from pkgtool.cache.replay import Witness
     from pkgtool.commands.lint import LintOptions, LintResult
     from pkgtool.commands.warm_worker import WarmWorker
 
@@ -141,7 +142,7 @@ def _colour(fmt: Format, output: Optional[Path]) -> bool:
 
 def _lint(paths: list[str], options: LintOptions, fmt: Format, output: Optional[Path],
           witness: Optional[Witness], worker: Optional[WarmWorker]) -> int:
-    from pkgtool.cache.replay import Shown
+    from pkgtool.cache import Shown
     from pkgtool.commands.lint import run
 
     result = run(paths, options=options, witness=witness, worker=worker)

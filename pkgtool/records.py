@@ -3,7 +3,8 @@
 Every model object, finding and result is such a class, and linting one package defines about
 seventy of them at start-up. On CPython before 3.13 ``dataclass`` compiles six methods from
 source for each frozen class and importing ``dataclasses`` imports ``inspect``: measured, a
-third of a one-package lint (88 ms of 265 ms). A record compiles one method, ``__init__``;
+third of a one-package lint (88 ms of 265 ms). A record compiles one method, ``__init__``,
+when its first instance is made;
 equality, hashing, ordering, ``repr``, the frozen ``__setattr__``/``__delattr__`` and
 pickling are shared functions reading the fields through one ``operator.attrgetter`` per
 class. They behave as dataclass's: assigning or deleting an attribute raises
@@ -109,8 +110,21 @@ def _make(cls: type, order: bool) -> type:
                         if name not in namespace})
     made = type(cls)(cls.__name__, cls.__bases__, namespace)
     made.__qualname__ = cls.__qualname__
-    made.__init__ = _initialiser(made, every)  # type: ignore[misc]
+    made.__init__ = _first_initialiser(made, every)  # type: ignore[misc]
     return made
+
+
+def _first_initialiser(cls: type, every: list[Field]) -> Callable[..., None]:
+    """``cls.__init__`` until the first instance is made: it compiles the real one (below),
+    puts it in its place and calls it. A run makes instances of about half of the seventy
+    records its modules define, and compiling an ``__init__`` is most of defining one."""
+    def __init__(self: Any, *args: Any, **kwargs: Any) -> None:
+        initialiser = _initialiser(cls, every)
+        cls.__init__ = initialiser  # type: ignore[misc]
+        initialiser(self, *args, **kwargs)
+
+    __init__.__qualname__ = f"{cls.__qualname__}.__init__"
+    return __init__
 
 
 def _initialiser(cls: type, every: list[Field]) -> Callable[..., None]:

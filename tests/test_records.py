@@ -98,3 +98,21 @@ def test_post_init_runs_after_the_fields_are_set() -> None:
 
     Checked(4)
     assert seen == [4]
+
+
+def test_the_first_instance_may_come_from_a_subclass_and_a_wrong_call_fails_as_usual() -> None:
+    @record
+    class Base:
+        """A record whose first instance is a plain subclass's."""
+
+        a: int
+        b: str = "b"
+
+    class Child(Base):
+        __slots__ = ()
+
+    with pytest.raises(TypeError):
+        Base()  # type: ignore[call-arg]
+    assert Child(1).b == "b" and Child(1) != Base(1)
+    assert Base(2, b="c") == Base(2, "c")
+    assert Base.__init__.__qualname__.endswith("Base.__init__")

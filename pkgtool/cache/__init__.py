@@ -10,10 +10,20 @@ from __future__ import annotations
 import os
 import time
 from pathlib import Path
+from typing import NamedTuple
 
 CACHE_FOLDER = ".pkgtool_cache"
 """The cache's default folder name, in the project root."""
 _GITIGNORE = "# Created by pkgtool: the lint cache is never committed.\n*\n"
+
+
+class Shown(NamedTuple):
+    """What a lint run showed: its exit code, its report and its messages (to stderr); what
+    :mod:`pkgtool.cache.replay` shows again."""
+
+    code: int
+    report: str
+    messages: list[str]
 
 
 def cache_folder(cache_dir: str | None, cwd: Path) -> Path:

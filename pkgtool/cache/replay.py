@@ -43,6 +43,7 @@ from itertools import accumulate
 from operator import attrgetter
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, NamedTuple
+from pkgtool.cache import Shown
 from pkgtool.lazy_regex import lazy_pattern
 
 if TYPE_CHECKING:
@@ -82,14 +83,6 @@ Windows (where ``st_ctime`` is when the folder was created)."""
 _CHANGED = attrgetter("st_mtime_ns" if os.name == "nt" else "st_ctime_ns")
 _SIZE_TIME = attrgetter("st_size", "st_mtime_ns")
 """A file's ``[size, mtime_ns]`` as :func:`pkgtool.model.files.scan` gives it."""
-
-
-class Shown(NamedTuple):
-    """What a lint run showed: its exit code, its report and its messages (to stderr)."""
-
-    code: int
-    report: str
-    messages: list[str]
 
 
 Positions = dict[str, tuple[list[str], list[int]]]

@@ -18,8 +18,6 @@ findings never depend on it.
 from __future__ import annotations
 
 import os
-import select
-import signal
 import sys
 from collections.abc import Callable, Iterable, Sequence
 from typing import Any, Optional
@@ -60,6 +58,8 @@ class WarmWorker:
                 os.close(end)
         self._send = self._receive = -1
         if self._pid is not None:
+            import signal  # only here, as select below: a run that forks nothing skips both
+
             try:
                 os.kill(self._pid, signal.SIGKILL)
             except ProcessLookupError:
@@ -181,6 +181,8 @@ def _serve(warm_up: Callable[[], Iterable[Callable[[], None]]], receive: int, se
     """The worker's life: warm up until the call comes (a step left undone is done when the
     call needs it), answer it, exit (without running the parent's exit handlers or flushing
     its buffers)."""
+    import select
+
     code = 1
     try:
         for step in warm_up():

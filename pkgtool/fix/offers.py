@@ -10,12 +10,16 @@ have run. A finding it makes no fix for (it refuses, offers nothing or fails) is
 
 from __future__ import annotations
 
-from pkgtool.edit.core import Fix
+from typing import TYPE_CHECKING
+
 from pkgtool.findings import Finding
-from pkgtool.fix.registry import Fixer, fixers
-from pkgtool.model.package import Package
 from pkgtool.records import replace
 from pkgtool.rules._index import FIXED
+
+if TYPE_CHECKING:
+    from pkgtool.edit.core import Fix
+    from pkgtool.fix.registry import Fixer
+    from pkgtool.model.package import Package
 
 
 def offers_marked(package: Package, findings: list[Finding]) -> list[Finding]:
@@ -23,6 +27,8 @@ def offers_marked(package: Package, findings: list[Finding]) -> list[Finding]:
     makes only unsafe fixes for (a fixer whose other fixes are safe) ``unsafe_fix``."""
     if not any(_candidate(f) for f in findings):
         return findings
+    from pkgtool.fix.registry import fixers  # only here: a clean package needs no fixer
+
     table = fixers()
     return [_marked(finding, _offered(table[finding.code], package, finding))
             if _candidate(finding) else finding for finding in findings]
@@ -42,6 +48,8 @@ def _candidate(finding: Finding) -> bool:
 def _offered(fixer: Fixer, package: Package, finding: Finding) -> list[Fix]:
     """The fixes ``fixer`` makes for ``finding`` alone."""
     try:
+        from pkgtool.edit.core import Fix
+
         return [offer for offer in fixer.make(package, [finding]) if isinstance(offer, Fix)]
     except Exception:  # noqa: BLE001 - a fixer that fails on this package offers nothing
         return []

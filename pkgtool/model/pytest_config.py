@@ -8,7 +8,6 @@ pytest takes the first of ``pytest.ini``, ``.pytest.ini``, ``pyproject.toml`` (w
 from __future__ import annotations
 
 import configparser
-import shlex
 
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
@@ -73,7 +72,7 @@ def _toml(text: str) -> dict[str, tuple[str, ...]] | bool | None:
     for key in DEFAULTS:
         value = table.get(key)
         if isinstance(value, str):
-            options[key] = tuple(shlex.split(value))
+            options[key] = _words(value)
         elif isinstance(value, list) and all(isinstance(v, str) for v in value):
             options[key] = tuple(value)
         elif value is not None:
@@ -88,7 +87,14 @@ def _ini(path: str, text: str) -> dict[str, tuple[str, ...]] | bool | None:
         section = _SECTIONS[path]
         if not parser.has_section(section):
             return {} if section == "pytest" and path != "tox.ini" else False  # pytest.ini counts
-        return {key: tuple(shlex.split(parser.get(section, key))) for key in DEFAULTS
+        return {key: _words(parser.get(section, key)) for key in DEFAULTS
                 if parser.has_option(section, key)}
     except (configparser.Error, ValueError):
         return None
+
+
+def _words(value: str) -> tuple[str, ...]:
+    """An option's value split as a shell would (as pytest splits ``addopts``)."""
+    import shlex  # only here: most packages set no pytest option
+
+    return tuple(shlex.split(value))

@@ -78,6 +78,8 @@ class RuleInfo(NamedTuple):
 
 
 _RULES: dict[str, Rule] = {}
+_CODES_BY_NAME: dict[str, str] = {}
+"""The code of each registered rule name (a name or code taken twice fails at import)."""
 _loaded = False
 
 
@@ -104,10 +106,11 @@ def rule(
         missing = [s for s in DOC_SECTIONS if s not in doc]
         if missing and sys.flags.optimize < 2:  # ``python -OO`` strips every docstring
             raise ValueError(f"rule {code} docstring lacks {', '.join(missing)}")
-        for other in _RULES.values():
-            if (other.code == code or other.name == name) and other.check is not check:
+        for other in (_RULES.get(code), _RULES.get(_CODES_BY_NAME.get(name, ""))):
+            if other is not None and other.check is not check:
                 raise ValueError(f"rule {code} {name} clashes with {other.code} {other.name}")
         _RULES[code] = Rule(code, name, severity, fix, check, default_enabled)
+        _CODES_BY_NAME[name] = code
         return check
 
     return register

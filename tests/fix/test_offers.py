@@ -9,7 +9,7 @@ import pytest
 
 from pkgtool.edit.core import Fix
 from pkgtool.findings import Finding
-from pkgtool.fix import offers
+from pkgtool.fix import offers, registry
 from pkgtool.fix.registry import Fixer, Refusal
 from pkgtool.model.context import Context
 from pkgtool.model.package import Package, load_package
@@ -34,7 +34,7 @@ def package(tmp_path: Path) -> Package:
 def test_only_findings_the_fixer_makes_a_fix_for_are_offered(
         package: Package, monkeypatch: pytest.MonkeyPatch) -> None:
     monkeypatch.setattr(offers, "FIXED", frozenset({"SET006"}))
-    monkeypatch.setattr(offers, "fixers", lambda: {
+    monkeypatch.setattr(registry, "fixers", lambda: {
         "SET006": Fixer("SET006", True, "mend", _fixes_the_first_line)})
     found = [make_finding("SET006", line=line) for line in (1, 2, 3, 4)]
     found.append(make_finding("SYN001", line=1))  # no fixer: left as it is
@@ -48,6 +48,20 @@ def test_fixers_are_not_imported_without_a_fixable_finding(
     def never() -> dict[str, Fixer]:
         raise AssertionError("fixers imported")
 
-    monkeypatch.setattr(offers, "fixers", never)
+    monkeypatch.setattr(registry, "fixers", never)
     found = [make_finding("SYN001")]
     assert offers.offers_marked(package, found) is found
+
+
+def test_a_clean_run_imports_no_fixer_module() -> None:
+    """Offers import the fixers (and the edit layer) only for a finding one may repair."""
+    import subprocess
+    import sys
+
+    program = ("import sys; from pkgtool.fix.offers import offers_marked; "
+               "offers_marked(None, []); "
+               "print(sorted(m for m in sys.modules if m.startswith(PREFIXES)))")
+    shown = subprocess.run([sys.executable, "-c", program.replace(
+        "PREFIXES", "('pkgtool.fix.', 'pkgtool.edit')")], capture_output=True, text=True,
+        check=True, cwd=Path(__file__).resolve().parents[2]).stdout
+    assert shown.strip() == "['pkgtool.fix.offers']"

@@ -37,3 +37,30 @@ def test_rules_import_helpers_only_never_other_rules_or_other_families_helpers()
                     or (target.parent != RULES and target.parent != path.parent)):
                 wrong.append(f"{path.relative_to(ROOT)} imports {target.relative_to(ROOT)}")
     assert not wrong, "\n".join(wrong)
+
+
+def test_a_code_or_a_name_taken_twice_fails_at_registration(monkeypatch) -> None:
+    import pytest
+
+    from pkgtool.findings import Severity
+    from pkgtool.rules import registry
+
+    monkeypatch.setattr(registry, "_RULES", {})
+    monkeypatch.setattr(registry, "_CODES_BY_NAME", {})
+    doc = "Demo.\n\n" + "\n\n".join(f"{section}\nText." for section in registry.DOC_SECTIONS)
+
+    def check(package):  # noqa: ANN001, ANN202 - a stand-in rule
+        return []
+
+    def other(package):  # noqa: ANN001, ANN202 - another stand-in rule
+        return []
+
+    check.__doc__ = other.__doc__ = doc
+    registry.rule("SYN901", "demo-rule", Severity.ERROR, fix="Mend")(check)
+    registry.rule("SYN901", "demo-rule", Severity.ERROR, fix="Mend")(check)  # the same again
+    with pytest.raises(ValueError, match="clashes"):
+        registry.rule("SYN901", "another-rule", Severity.ERROR, fix="Mend")(other)
+    with pytest.raises(ValueError, match="clashes"):
+        registry.rule("SYN902", "demo-rule", Severity.ERROR, fix="Mend")(other)
+    registry.rule("SYN902", "another-rule", Severity.ERROR, fix="Mend")(other)
+    assert sorted(registry._RULES) == ["SYN901", "SYN902"]

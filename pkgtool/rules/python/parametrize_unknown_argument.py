@@ -5,7 +5,6 @@ from __future__ import annotations
 import ast
 import posixpath
 from collections.abc import Iterator
-from dataclasses import dataclass, field
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import typo_of
@@ -98,13 +97,14 @@ def parametrize_unknown_argument(package: Package) -> Iterator[Hit]:
                                   f"Write `{meant}`" if meant else None)
 
 
-@dataclass
 class _Fixtures:
     """Fixtures a test sees: the names each requests, by fixture name, and those used by
     every test of the scope (``autouse=True``)."""
 
-    requests: dict[str, set[str]] = field(default_factory=dict)
-    autouse: set[str] = field(default_factory=set)
+    def __init__(self, requests: dict[str, set[str]] | None = None,
+                 autouse: set[str] | None = None) -> None:
+        self.requests: dict[str, set[str]] = requests if requests is not None else {}
+        self.autouse: set[str] = autouse if autouse is not None else set()
 
 
 def _collect(into: _Fixtures, tree: ast.Module, index: Index, cls: ast.ClassDef | None) -> None:
