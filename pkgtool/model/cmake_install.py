@@ -7,6 +7,7 @@ from __future__ import annotations
 import posixpath
 from collections.abc import Iterable
 
+from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.cmake_text import (DEPTH, VARIABLE, commands, expand, set_variables)
 
 _PYTHON_MODULE_COMMANDS = frozenset({"ament_python_install_package", "pybind11_add_module",
@@ -47,6 +48,11 @@ _OPAQUE = frozenset({"add_subdirectory", "function", "macro",
 """Commands after which what the file installs is no longer known from its own text."""
 
 
+_BUILD_TREE = lazy_pattern(r"\$\{(?:CMAKE_|CMAKE_CURRENT_|PROJECT_|\w+_)?BINARY_DIR\}")
+"""A path in the build folder (``${CMAKE_BINARY_DIR}``, ``${PROJECT_BINARY_DIR}``,
+``${<project>_BINARY_DIR}``): what the build generates, never one of the package's files."""
+
+
 def installed_sources(text: str, files: Iterable[str] = ()) -> frozenset[str] | None:
     """The package-relative files and folders ``text`` (a CMakeLists.txt with the files it
     includes) installs: the sources of ``install(DIRECTORY|PROGRAMS|FILES ...)``, the
@@ -64,6 +70,8 @@ def installed_sources(text: str, files: Iterable[str] = ()) -> frozenset[str] | 
     found: set[str] = set()
     for name, args in calls:
         for arg in _install_args(name, args):
+            if _BUILD_TREE.match(arg):
+                continue  # a file the build writes (``${CMAKE_BINARY_DIR}/x.yaml``): no source
             values = expand(arg, variables, DEPTH)
             if "$<" in arg or not values or None in values:
                 return None

@@ -27,6 +27,7 @@ from pkgtool.model.launch_helpers import package_argument, package_parameters
 from pkgtool.model.launch_started import certainly_started
 from pkgtool.model.span import Span
 from pkgtool.model.static_branches import depends_on_ros_distro, reads_environment
+from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.records import record, replace
 
 SHARE_LOOKUPS = frozenset({"get_package_share_directory", "get_package_share_path",
@@ -588,6 +589,8 @@ class _Reader(ast.NodeVisitor):
         looks the package up (its share folder); also after a terminal that runs the rest
         (``['gnome-terminal', '--', 'ros2', 'run', ...]``)."""
         whole = self.value(_keyword(node, "cmd"))
+        if isinstance(whole, tuple):
+            whole = tuple(word for part in whole for word in _shell_words(part))
         start = next((i for i, word in enumerate(whole) if word == "ros2"), None) \
             if isinstance(whole, tuple) else None
         command = whole[start:] if start is not None else ()
@@ -698,6 +701,20 @@ def remapped_name(argument: str) -> str | None:
     """The node name of a ``__node:=name`` (or ``__name:=``) argument, else None."""
     key, sep, name = argument.partition(":=")
     return name if sep and key in NAME_REMAPS else None
+
+
+_SHELL_LINE = lazy_pattern(r"\bros2\s+(?:run|launch)\s")
+"""A command line in one string (``'ros2 run pkg exe'`` after ``xterm -e`` or ``bash -c``)."""
+_SHELL_SEPARATORS = lazy_pattern(r"[\s;&|\"']+")
+
+
+def _shell_words(part: object) -> tuple[object, ...]:
+    """The words of one element of a command list: a string holding a whole ``ros2 run``
+    or ``ros2 launch`` command line that a terminal or shell runs, split at blanks, quotes and
+    ``;``, ``&`` and ``|``; any other element as it is."""
+    if isinstance(part, str) and _SHELL_LINE.search(part):
+        return tuple(word for word in _SHELL_SEPARATORS.split(part) if word)
+    return (part,)
 
 
 def _keyword(node: ast.Call, name: str) -> ast.expr | None:

@@ -14,6 +14,7 @@ from pkgtool.knowledge import rosdistro
 from pkgtool.knowledge.rosdep import NOT_PACKAGES, ROS1_PACKAGES, suggested_key
 from pkgtool.knowledge.tables import DISTROS
 from pkgtool.model.condition import applies
+from pkgtool.model.description_files import described_packages
 from pkgtool.model.installed import is_ament_python
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.memo import per_package
@@ -128,12 +129,26 @@ def names_module(key: str, module: str) -> bool:
 def _same_module(package: Package, key: str, close: str) -> bool:
     """False when ``key`` is written for a module the package's code imports and ``close`` is
     not (``python3-pcl`` for ``import pcl`` is no misspelt ``python3-pil``: a key of its own
-    that rosdep lacks), or is a package its launch files name and ``close`` is not;
-    ``cv-bridge`` and ``cv_bridge`` both name ``cv_bridge``."""
-    return not any(names_module(key, imported.top_level) and
-                   not names_module(close, imported.top_level)
-                   for module in package.modules for imported in module.imports) and \
-        not (key in launched_packages(package) and close not in launched_packages(package))
+    that rosdep lacks), or is a package its launch, robot description, world or RViz files
+    name and ``close`` is not; ``cv-bridge`` and ``cv_bridge`` both name ``cv_bridge``."""
+    if any(names_module(key, imported.top_level) and not names_module(close, imported.top_level)
+           for module in package.modules for imported in module.imports):
+        return False
+    for named in (launched_packages, described_packages):
+        if key in named(package) and close not in named(package):
+            return False
+    return True
+
+
+def _declared_beside(dependency: Dependency, close: str, package: Package) -> bool:
+    """True when package.xml already declares ``close`` for what ``dependency`` declares (the
+    same tag, or a ``<depend>`` on either side): the key names another package, built from
+    source, not a misspelling whose fix would declare ``close`` twice."""
+    manifest = package.manifest
+    tags = {dependency.tag, "depend"}
+    return manifest is not None and any(
+        other.name == close and (other.tag in tags or dependency.tag == "depend")
+        for other in manifest.dependencies)
 
 
 @per_package
@@ -162,6 +177,7 @@ def unknown_dependencies(package: Package) -> list[Unknown]:
         elsewhere = tuple(d for d in DISTROS if rosdistro.is_released_package(name, d))
         close = [] if elsewhere else rosdistro.close_names(name, distro, extra=neighbours(package))
         meant = close[0] if close and _same_module(package, name, close[0]) and \
+            not _declared_beside(dependency, close[0], package) and \
             not cmake_finds(package, name) and \
             not _of_a_family(package, name, close[0]) and \
             not _version_of(name, close[0]) and \

@@ -30,14 +30,14 @@ from pkgtool.knowledge.rosdistro import (DISTROS, any_stdlib_module, close_names
                                          keys_for_import, stdlib_modules, typo_distance)
 from pkgtool.model.cmake_install import installed_python_packages
 from pkgtool.model.context import Context
-from pkgtool.model.installed import (DATA_FOLDERS, PROJECT_FILES, installed_data,
+from pkgtool.model.installed import (DATA_FOLDERS, PROJECT_FILES, cmake_text, installed_data,
                                      installed_files, installed_modules, is_ament_python,
                                      separate_projects)
 from pkgtool.model.launch import is_launch_file, python_folders
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.setup_py import EntryPoint
 from pkgtool.model.modules import Import, PythonModule
-from pkgtool.model.memo import per_package
+from pkgtool.model.memo import per_package, per_tree
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.records import record
@@ -347,17 +347,36 @@ def pytest_path_modules(package: Package) -> frozenset[str]:
     """
     layout = _layout(package.files)
     files = set(package.files)
-    names: set[str] = set()
+    folders: set[str] = set(_cmake_test_path(package))
     for path in package.files:
-        if not _COLLECTED.fullmatch(posixpath.basename(path)):
-            continue
-        folder = posixpath.dirname(path)
-        while folder and folder in layout.packages:
-            folder = posixpath.dirname(folder)
+        if _COLLECTED.fullmatch(posixpath.basename(path)):
+            folder = posixpath.dirname(path)
+            while folder and folder in layout.packages:
+                folder = posixpath.dirname(folder)
+            folders.add(folder)
+    names: set[str] = set()
+    for folder in folders:
         prefix = folder + "/" if folder else ""
         names.update(entry for entry in layout.children.get(folder, ())
                      if prefix + entry + ".py" in files or prefix + entry in layout.packages)
     return frozenset(names)
+
+
+_TEST_PYTHONPATH = lazy_pattern(r"PYTHONPATH=([^\s\")]+)")
+_SOURCE_FOLDER = lazy_pattern(r"\$\{(?:CMAKE_CURRENT_SOURCE_DIR|CMAKE_SOURCE_DIR|"
+                              r"PROJECT_SOURCE_DIR|CMAKE_CURRENT_LIST_DIR)\}/?")
+
+
+def _cmake_test_path(package: Package) -> Iterator[str]:
+    """Package folders a CMakeLists.txt puts on its tests' ``PYTHONPATH``
+    (``ament_add_pytest_test(... APPEND_ENV PYTHONPATH=${CMAKE_SOURCE_DIR}/scripts)``)."""
+    text = cmake_text(package)
+    for found in _TEST_PYTHONPATH.finditer(text or ""):
+        for part in found.group(1).replace(";", ":").split(":"):
+            folder = _SOURCE_FOLDER.match(part)
+            rest = part[folder.end():] if folder else "$"
+            if "$" not in rest and not rest.startswith(".."):
+                yield "" if posixpath.normpath(rest or ".") == "." else posixpath.normpath(rest)
 
 
 def installed_code(package: Package) -> list[PythonModule]:
@@ -639,7 +658,7 @@ def _needs(package: Package, module: PythonModule, guarded: bool | None) -> Iter
         top = imported.top_level
         if ros1_code and top not in ROS1_PACKAGES:
             continue  # ROS 1 code: only its ROS 1 imports are told (DEP004)
-        is_guarded = imported.guarded or optional
+        is_guarded = imported.guarded or optional or _lazy_extra(package, module, imported)
         if (not top or (guarded is not None and is_guarded != guarded)
                 or top in skip or (top in stdlib and not keys_for_import(top))
                 or enclosing_package_import(package, owner, imported)
@@ -671,6 +690,54 @@ def _needs(package: Package, module: PythonModule, guarded: bool | None) -> Iter
             elif ros1:  # Melodic and older: Python 2 keys (`python-serial`) count too
                 keys = (*keys, *(f"python-{k[8:]}" for k in keys if k.startswith("python3-")))
             yield Need(module, imported, shown, kind, keys)
+
+
+def _lazy_extra(package: Package, module: PythonModule, imported: Import) -> bool:
+    """True for an import inside a function of a module setup.py (or setup.cfg) lists in
+    ``extras_require``: an optional feature's requirement, loaded only when the feature runs
+    (``def to_html(): import jinja2`` with ``extras_require={'html': ['Jinja2']}``)."""
+    extras = extra_requirements(package)
+    if not extras or imported.top_level.lower().replace("-", "_") not in extras:
+        return False
+    tree = parse_tree(module.path, package.texts.get(module.path, ""))
+    return isinstance(tree, ast.Module) and imported.span.line in _function_import_lines(tree)
+
+
+_REQUIREMENT_NAME = lazy_pattern(r"\s*([A-Za-z0-9][A-Za-z0-9._-]*)")
+
+
+@per_package
+def extra_requirements(package: Package) -> frozenset[str]:
+    """The distributions ``extras_require`` lists (setup.py's, else setup.cfg's
+    ``[options.extras_require]``), lower case with ``_`` for ``-``."""
+    found: list[str] = []
+    setup = package.setup_py
+    value = setup.extras_require.value if setup is not None and setup.extras_require else None
+    if isinstance(value, dict):
+        for requirements in value.values():
+            found.extend([requirements] if isinstance(requirements, str) else
+                         [r for r in requirements if isinstance(r, str)]
+                         if isinstance(requirements, (list, tuple)) else [])
+    cfg = package.setup_cfg
+    if cfg is not None:
+        found.extend(option.value for option in cfg.options
+                     if option.section == "options.extras_require")
+    names = (_REQUIREMENT_NAME.match(line) for text in found for line in text.splitlines())
+    return frozenset(name.group(1).lower().replace("-", "_") for name in names if name)
+
+
+@per_tree
+def _function_import_lines(tree: ast.Module) -> frozenset[int]:
+    """Lines of the import statements inside a function (or a lambda's default) of ``tree``."""
+    lines: set[int] = set()
+    pending: list[tuple[ast.AST, bool]] = [(tree, False)]
+    while pending:
+        node, inside = pending.pop()
+        if inside and isinstance(node, (ast.Import, ast.ImportFrom)):
+            lines.add(node.lineno)
+        nested = inside or isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))
+        pending.extend((child, nested) for child in ast.iter_child_nodes(node))
+    return frozenset(lines)
 
 
 def _holds_module(package: Package, name: str) -> bool:

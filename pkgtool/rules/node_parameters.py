@@ -244,11 +244,20 @@ no parameter on it."""
 _NODE_USER_MODULES = frozenset({"rclpy", "tf2_ros", "message_filters"})
 
 
+_LOOKS_AT_IT = frozenset({"hasattr", "isinstance", "id", "repr", "str", "print", "len",
+                          "type", "super", "vars", "callable", "hash", "format"})
+"""Built-in functions that only look at what they are given (``hasattr(self, 'timer')``,
+``super(MyNode, self)``): none declares a parameter on it."""
+
+
 def _declares_nothing(call: ast.Call, index: Index) -> bool:
-    """True for a call of :data:`_NODE_USERS` (imported from :data:`_NODE_USER_MODULES`) or
-    an executor's ``add_node``: handed the node, it declares no parameter."""
+    """True for a call of :data:`_NODE_USERS` (imported from :data:`_NODE_USER_MODULES`),
+    an executor's ``add_node`` or a built-in of :data:`_LOOKS_AT_IT`: handed the node, it
+    declares no parameter."""
     func = call.func
     if isinstance(func, ast.Attribute) and func.attr == "add_node":
+        return True
+    if isinstance(func, ast.Name) and func.id in _LOOKS_AT_IT and func.id not in index.bound:
         return True
     dotted = index.qualified(func) if isinstance(func, (ast.Name, ast.Attribute)) else None
     return dotted is not None and dotted.split(".")[0] in _NODE_USER_MODULES and \

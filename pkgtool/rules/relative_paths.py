@@ -1,10 +1,15 @@
-"""Which file of a package a path relative to some working folder names (LCH012, DAT017)."""
+"""Which file of a package a path relative to some working folder names (LCH012, DAT017), and
+the one value a name holding a path is given (DAT017, DAT023)."""
 
 from __future__ import annotations
 
+import ast
 import posixpath
 
+from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
+from pkgtool.rules.scopes import scope_bindings, single_assignments
+from pkgtool.rules.syntax_trees import Index
 
 
 def package_file_named(text: str, package: Package, *, absent: bool = False
@@ -29,3 +34,34 @@ def package_file_named(text: str, package: Package, *, absent: bool = False
         if package.has_file(inside) or absent and at > 0 and parts[at - 1] == "src":
             return inside, True
     return None
+
+
+def assigned_value(value: ast.expr, index: Index) -> ast.expr:
+    """What ``value`` certainly holds: for a name, the one value it is bound to (in the
+    innermost function around that binds it, else in the module); for ``self.x``, the one
+    value every store of ``.x`` in the module assigns, all in one class; else ``value``."""
+    if isinstance(value, ast.Name):
+        scopes = [f for f in index.functions_around(value) if scope_bindings(f)[value.id]]
+        scope = scopes[0] if scopes else index.module_of(value)
+        return single_assignments(scope).get(value.id, value)
+    if isinstance(value, ast.Attribute) and isinstance(value.value, ast.Name):
+        values = _stored(value, index)
+        return values[0] if len(values) == 1 else value
+    return value
+
+
+def _stored(value: ast.Attribute, index: Index) -> list[ast.expr]:
+    """The values of every store of ``.x`` in the module when each is a plain assignment in
+    the class whose method reads ``self.x`` (else none)."""
+    cls = index.enclosing_class(value)
+    found: list[ast.expr] = []
+    for store in nodes_of_class(index.module_of(value), ast.Attribute):
+        assert isinstance(store, ast.Attribute)
+        if store.attr != value.attr or isinstance(store.ctx, ast.Load):
+            continue
+        parent = index.parents.get(id(store))
+        if cls is None or not (isinstance(parent, ast.Assign) and parent.targets == [store]) or \
+                index.enclosing_class(store) is not cls:
+            return []
+        found.append(parent.value)
+    return found

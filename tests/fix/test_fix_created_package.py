@@ -26,12 +26,16 @@ PLANTED = {
     ],
     "launch/demo_bot.launch.py": [
         ("executable='mover',", "node_executable='mover',"),
-        ("parameters=[params],", "parameters=params,"),
+        ("parameters=[params],", "parameters=params,\n"
+         "            condition=IfCondition(LaunchConfiguration('start_mover')),"),
         ("from launch import LaunchDescription\n",
          "from launch import LaunchDescription\n"
-         "from launch.actions import DeclareLaunchArgument\n"),
+         "from launch.actions import DeclareLaunchArgument\n"
+         "from launch.conditions import IfCondition\n"),
+        ("from launch.substitutions import PathJoinSubstitution\n",
+         "from launch.substitutions import LaunchConfiguration, PathJoinSubstitution\n"),
         ("    return LaunchDescription([\n", "    return LaunchDescription([\n"
-         "        DeclareLaunchArgument('use_sim_time', default_value=False),\n"),
+         "        DeclareLaunchArgument('start_mover', default_value=True),\n"),
     ],
     "package.xml": [
         ("  <exec_depend>launch_ros</exec_depend>\n", ""),

@@ -8,15 +8,13 @@ import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity, shortened
-from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.installed import installed_data
 from pkgtool.model.launch import EXISTENCE_CHECKS
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.existence_checks import checks_files
 from pkgtool.rules.registry import rule
-from pkgtool.rules.relative_paths import package_file_named
-from pkgtool.rules.scopes import scope_bindings, single_assignments
+from pkgtool.rules.relative_paths import assigned_value, package_file_named
 from pkgtool.rules.syntax_trees import Index, installed_trees, launch_indexes
 
 READERS = frozenset({
@@ -150,35 +148,10 @@ def _file_read(call: ast.Call, index: Index) -> ast.expr | None:
 
 
 def _path_texts(value: ast.expr, index: Index) -> list[str]:
-    """The text ``value`` certainly holds: a string literal, or the literal a name is bound to
-    once (in the innermost function around that binds it, else in the module), or the one
-    literal every store of ``self.x`` in the module assigns, all in one class."""
-    if isinstance(value, ast.Name):
-        scopes = [f for f in index.functions_around(value) if scope_bindings(f)[value.id]]
-        scope = scopes[0] if scopes else index.module_of(value)
-        value = single_assignments(scope).get(value.id, value)
-    elif isinstance(value, ast.Attribute) and isinstance(value.value, ast.Name):
-        values = _stored(value, index)
-        value = values[0] if len(values) == 1 else value
+    """The text ``value`` certainly holds (:func:`assigned_value`): a string literal."""
+    value = assigned_value(value, index)
     return [value.value] if isinstance(value, ast.Constant) and isinstance(value.value, str) \
         else []
-
-
-def _stored(value: ast.Attribute, index: Index) -> list[ast.expr]:
-    """The values of every store of ``.x`` in the module when each is a plain assignment in
-    the class whose method reads ``self.x`` (else none)."""
-    cls = index.enclosing_class(value)
-    found: list[ast.expr] = []
-    for store in nodes_of_class(index.module_of(value), ast.Attribute):
-        assert isinstance(store, ast.Attribute)
-        if store.attr != value.attr or isinstance(store.ctx, ast.Load):
-            continue
-        parent = index.parents.get(id(store))
-        if cls is None or not (isinstance(parent, ast.Assign) and parent.targets == [store]) or \
-                index.enclosing_class(store) is not cls:
-            return []
-        found.append(parent.value)
-    return found
 
 
 def _share_paths(package: Package) -> dict[str, str]:

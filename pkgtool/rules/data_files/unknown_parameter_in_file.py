@@ -27,7 +27,8 @@ def unknown_parameter_in_file(package: Package) -> Iterator[Hit]:
     with `**`), declares a name that is not a literal,
     when the class derives from another class besides `Node`, or hands `self` to other code
     (rclpy's and tf2_ros's helpers that declare nothing aside: `ActionClient(self, ...)`,
-    `TransformListener(buffer, self)`).
+    `TransformListener(buffer, self)`, and built-ins that only look at it: `hasattr(self,
+    'timer')`, `super(MyNode, self)`).
     `use_sim_time` and `qos_overrides.*` are never reported. The parameters a Python launch
     file gives a node of this package as a dict (`parameters=[{'period': 1.0}]`, literal
     keys) or as `-p name:=value` arguments (`ros_arguments=['-p', 'period:=1.0']`, or in

@@ -14,7 +14,8 @@ from pkgtool.model.modules import Import
 from pkgtool.model.package import Package
 from pkgtool.model.setup_py import PACKAGE_DATA
 from pkgtool.model.submodules import ignored, under
-from pkgtool.rules.imports import installed_code, source_path_module, test_code
+from pkgtool.rules.imports import (installed_code, shadowing_folders, source_path_module,
+                                   test_code)
 from pkgtool.rules.registry import rule
 
 
@@ -109,7 +110,8 @@ def missing_own_module(package: Package) -> Iterator[Hit]:
 
     ## What it does
     For the unguarded imports of installed modules (and the absolute ones of test modules,
-    `from my_pkg.talker import Talker` in `test/test_talker.py`) that name a module below
+    `from my_pkg.talker import Talker` in `test/test_talker.py`, and of Python launch files)
+    that name a module below
     one of the package's own installed top-level packages (`import my_pkg.utils`,
     `from my_pkg.utils import clamp`, `from .utils import clamp`), reports a module that
     setup.py does not install and that has no file in the package; a module of installed
@@ -148,8 +150,8 @@ def missing_own_module(package: Package) -> Iterator[Hit]:
     if not installed:
         return
     names = {file: name for name, file in installed.items()}
-    roots = {name.split(".")[0] for name in installed}
-    tests = test_code(package)
+    roots = {name.split(".")[0] for name in installed} - shadowing_folders(package)
+    tests = [*test_code(package), *(f.python for f in package.launch_files if f.python)]
     for module in [*installed_code(package), *tests]:
         dotted = names.get(module.path)
         for imported in module.imports if dotted or module in tests else ():

@@ -22,7 +22,8 @@ def undeclared_import(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Checks every absolute, unguarded import in the modules setup.py installs (a module the
-    package itself imports only inside `try/except ImportError` is optional: see DEP005).
+    package itself imports only inside `try/except ImportError` is optional, and so is an
+    import inside a function of a distribution `extras_require` lists: see DEP005).
     Standard library modules (of the target distribution's Python) and the package's own
     modules are skipped; a ROS import must be covered by `<depend>` or `<exec_depend>` of its
     package (`tf2_ros` by `tf2_ros_py`, not the C++ `tf2_ros`), the Python package of a

@@ -27,7 +27,10 @@ def undeclared_optional_import(package: Package) -> Iterator[Hit]:
     imports under such a guard (an optional back-end, like rqt_py_console's spyder
     console; not one the guard imports by its bare name and its handler by its package's,
     `from target_types import X` then `from my_pkg.target_types import X`: one of the
-    two always runs), and so do imports under `if probe():`, where `probe` is a module function
+    two always runs), and so do an import inside a function of a distribution that
+    `extras_require` of setup.py or setup.cfg lists (`def to_html(): import jinja2` with
+    `extras_require={'html': ['Jinja2']}`: an optional feature's requirement), and
+    imports under `if probe():`, where `probe` is a module function
     that tries an import and returns when it fails (`if in_notebook(): from
     IPython.display import display`). ROS 1 modules (`rospy`) guarded in a ROS 2 package
     are its ROS 1 code path (`if ROS_VERSION == 1:`, `except ImportError:`), and Python 2

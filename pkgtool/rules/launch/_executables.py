@@ -50,12 +50,14 @@ def executables(package: Package, *, any_data: bool = False) -> frozenset[str] |
 def cmake_programs(package: Package) -> dict[str, str]:
     """Executable names a launch file may mean for the scripts a CMake package installs with
     ``install(PROGRAMS x.py ...)`` under their file names (``x`` -> ``x.py``), when its CMake
-    files name ``x`` nowhere else (a target, a ``RENAME``, a component's ``EXECUTABLE``)."""
+    files name ``x`` nowhere else (a target, a ``RENAME``, a component's ``EXECUTABLE``, a
+    program of its own: ``install(PROGRAMS scripts/x.py scripts/x ...)``)."""
     text = cmake_text(package)
     if text is None or is_ament_python(package):
         return {}
-    return {name[:-3]: name for name in installed_programs(text)
-            if name.endswith(".py") and
+    programs = installed_programs(text)
+    return {name[:-3]: name for name in programs
+            if name.endswith(".py") and name[:-3] not in programs and
             not re.search(rf"(?<![\w./-]){re.escape(name[:-3])}(?![\w.-])", text)}
 
 

@@ -22,7 +22,8 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
     package of the workspace) does not install.
 
     ## What it does
-    For every `Node(package=..., executable=...)` (or `<node pkg= exec=>`) naming this
+    An empty executable (`executable=''`) is reported for any package. For every
+    `Node(package=..., executable=...)` (or `<node pkg= exec=>`) naming this
     package, checks that the executable is a console script of setup.py or setup.cfg, or a
     file data_files installs into `lib/<package>` (a data_files that could not be evaluated
     may install any file of the package: a name no file has is still reported). A node of
@@ -69,6 +70,13 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
         for node in launch.nodes:
             if node.package is None or node.executable is None or node.unused or \
                     LAUNCH_FILE_NAME.search(node.executable):  # LCH017's
+                continue
+            if not node.executable.strip():
+                yield Hit(node.executable_span or node.span,
+                          f"`executable='{node.executable}'` names no executable of "
+                          f"`{node.package}`: launch stops with \"executable '' not found\"",
+                          "Write the name of the executable, as `ros2 pkg executables "
+                          f"{node.package}` lists it")
                 continue
             if node.package == package.name and node.executable in programs:
                 yield _kept_suffix(node, programs[node.executable])

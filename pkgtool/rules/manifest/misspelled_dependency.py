@@ -24,8 +24,10 @@ def misspelled_dependency(package: Package) -> Iterator[Hit]:
     folder of the colcon workspace the package is in). A key that is none of these but is
     spelled like one of them is reported with that name (or spelled like a module the code
     imports that no declared key provides: `simpole_pid` for `import simple_pid` is
-    `python3-simple-pid-pip`), unless the code uses exactly that
-    name (a Python import of it, a ``find_package()`` of it in CMakeLists.txt): a package
+    `python3-simple-pid-pip`), unless the package uses exactly that
+    name (a Python import of it, a ``find_package()`` of it in CMakeLists.txt, a launch file
+    starting its nodes, a URDF, xacro, SDF or RViz file naming it in ``$(find name)`` or
+    ``package://name/``) or already declares the near name for the same use: a package
     built from source elsewhere, which MAN022 reports as unknown. Dependencies whose REP 149
     ``condition`` is false for the target (``$ROS_VERSION == 1``) are skipped, and so are
     ROS 1 (catkin) manifests. Names with no near miss are MAN022's. When the misspelt key is

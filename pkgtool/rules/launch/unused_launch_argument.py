@@ -1,0 +1,100 @@
+"""LCH024: a Python launch file declares an argument whose value nothing reads."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.launch._python_launch import text_argument
+from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import Index, launch_indexes
+
+_PLAIN_MODULES = frozenset({"launch", "launch_ros", "launch_xml", "launch_yaml",
+                            "ament_index_python", "os", "sys", "pathlib", "yaml", "json", "math",
+                            "typing", "glob", "xacro", "__future__"})
+"""Modules a launch file imports that never read its launch configurations behind its back
+(a helper module of the package may: ``make_nodes()`` reading ``LaunchConfiguration('x')``)."""
+_PASSED_ON = frozenset({"IncludeLaunchDescription", "OpaqueFunction", "SetLaunchConfiguration",
+                        "LaunchConfigurationEquals", "LaunchConfigurationNotEquals"})
+"""Launch classes through which a configuration is read without a ``LaunchConfiguration`` of
+its name in the file: included files see every configuration, an opaque function reads
+``context.launch_configurations``, the conditions take a name."""
+
+
+@rule("LCH024", "unused-launch-argument", Severity.WARNING,
+      fix="Pass `LaunchConfiguration('<name>')` where the value is meant to go (a node's "
+          "parameters, a condition), or remove the argument")
+def unused_launch_argument(package: Package) -> Iterator[Hit]:
+    """A Python launch file declares a launch argument whose value nothing reads.
+
+    ## What it does
+    Reports `DeclareLaunchArgument('name', ...)` in a Python launch file that reads no
+    `LaunchConfiguration('name')` and names `name` in no other string (a dict key, a
+    subscript of `context.launch_configurations`). Files that include
+    other launch files, use an `OpaqueFunction`, `SetLaunchConfiguration` or a condition
+    taking a configuration's name, build a name or read a configuration whose name is not a
+    literal, or call helpers of modules other than launch's own and the standard library,
+    are left alone: those may read the value where the file does not show it.
+
+    ## Why is this bad?
+    `ros2 launch my_pkg robot.launch.py use_sim_time:=true` is accepted and listed by
+    `--show-args`, yet changes nothing: the nodes keep their own values (wall-clock time,
+    the default serial port, the default robot IP) and nothing says the value was ignored.
+
+    ## Example
+    ```python
+    return LaunchDescription([
+        DeclareLaunchArgument('use_sim_time', default_value='false'),
+        Node(package='my_robot', executable='driver'),
+    ])
+    ```
+
+    ## Use instead
+    ```python
+    return LaunchDescription([
+        DeclareLaunchArgument('use_sim_time', default_value='false'),
+        Node(package='my_robot', executable='driver',
+             parameters=[{'use_sim_time': LaunchConfiguration('use_sim_time')}]),
+    ])
+    ```
+    """
+    for path, index in launch_indexes(package):
+        declared = [call for call in index.calls if _class(call, index) == "DeclareLaunchArgument"]
+        if not declared or not _readable(index):
+            continue
+        names = [text_argument(call, "name") for call in declared]
+        reads = [text_argument(call, "variable_name") for call in index.calls
+                 if _class(call, index) == "LaunchConfiguration"]
+        if None in names or None in reads:
+            continue
+        named = {id(call.args[0]) if call.args else
+                 next(id(k.value) for k in call.keywords if k.arg == "name")
+                 for call in declared}
+        mentioned = {node.value for node in nodes_of_class(index.module_of(declared[0]),
+                                                           ast.Constant)
+                     if isinstance(node.value, str) and id(node) not in named}
+        for call, name in zip(declared, names):
+            if name not in reads and name not in mentioned:
+                yield Hit(Span(path, call.lineno, call.col_offset + 1),
+                          f"The launch argument `{name}` is declared but nothing reads its "
+                          f"value: `{name}:=...` on the command line changes nothing")
+
+
+def _class(call: ast.Call, index: Index) -> str:
+    """The launch class ``call`` makes (by its last name, aliases resolved), else ``""``."""
+    qualified = index.qualified(call.func) or ""
+    module, _, name = qualified.rpartition(".")
+    return name if module.split(".")[0] in ("launch", "launch_ros") else ""
+
+
+def _readable(index: Index) -> bool:
+    """True when every read of a configuration shows in the file: it imports only modules
+    of :data:`_PLAIN_MODULES` and uses none of :data:`_PASSED_ON`."""
+    modules = set(index.aliases.values())
+    return all(module.split(".")[0] in _PLAIN_MODULES for module in modules) and \
+        not index.relative and \
+        not any(_class(call, index) in _PASSED_ON for call in index.calls)
