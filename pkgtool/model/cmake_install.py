@@ -50,7 +50,18 @@ _OPAQUE = frozenset({"add_subdirectory", "function", "macro",
 
 _BUILD_TREE = lazy_pattern(r"\$\{(?:CMAKE_|CMAKE_CURRENT_|PROJECT_|\w+_)?BINARY_DIR\}")
 """A path in the build folder (``${CMAKE_BINARY_DIR}``, ``${PROJECT_BINARY_DIR}``,
-``${<project>_BINARY_DIR}``): what the build generates, never one of the package's files."""
+``${<project>_BINARY_DIR}``): what the build writes there (generated, or copied from the
+package's files by ``configure_file`` or ``file(COPY)``)."""
+_DATA_DESTINATIONS = ("share", "include")
+
+
+def _into_data_folders(args: list[str]) -> bool:
+    """True for an ``install()`` whose ``DESTINATION`` is below ``share/`` or ``include/``:
+    what it copies from the build folder is neither code nor a script's neighbour."""
+    if "DESTINATION" not in args[:-1]:
+        return False
+    destination = args[args.index("DESTINATION") + 1].lstrip("/")
+    return destination.split("/")[0] in _DATA_DESTINATIONS
 
 
 def installed_sources(text: str, files: Iterable[str] = ()) -> frozenset[str] | None:
@@ -70,8 +81,8 @@ def installed_sources(text: str, files: Iterable[str] = ()) -> frozenset[str] | 
     found: set[str] = set()
     for name, args in calls:
         for arg in _install_args(name, args):
-            if _BUILD_TREE.match(arg):
-                continue  # a file the build writes (``${CMAKE_BINARY_DIR}/x.yaml``): no source
+            if _BUILD_TREE.match(arg) and _into_data_folders(args):
+                continue  # a file the build writes into share/ (``${CMAKE_BINARY_DIR}/x.yaml``)
             values = expand(arg, variables, DEPTH)
             if "$<" in arg or not values or None in values:
                 return None

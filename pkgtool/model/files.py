@@ -35,6 +35,10 @@ _OLD_VIRTUALENV = frozenset({"orig-prefix.txt", "no-global-site-packages.txt"})
 instead of the ``pyvenv.cfg`` of newer environments."""
 
 
+_NESTED_MARKERS = frozenset({"package.xml", "COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE"})
+"""The files of a nested package that are listed: its package.xml, and whether colcon skips it."""
+
+
 def _not_the_packages(name: str, files: set[str], at_root: bool) -> bool:
     """True for a folder ``name`` holding ``files`` whose files are not the package's: a
     virtual environment (or the ``lib/pythonX.Y`` or ``site-packages`` folder of one), or a
@@ -143,8 +147,9 @@ def list_files(root: Path, depth: Callable[[str], int | None] | None = None
     """Every regular file under ``root`` as sorted POSIX paths, skipping tool and build folders.
 
     Nested packages (a sub-folder holding its own package.xml) and virtual environments are not
-    part of this package: of a nested package only its package.xml is listed, which marks the
-    folder (:func:`~pkgtool.model.launch.nested_packages`; CMake may install it whole).
+    part of this package: of a nested package only its package.xml (and a ``COLCON_IGNORE``,
+    ``AMENT_IGNORE`` or ``CATKIN_IGNORE`` beside it) is listed, which marks the folder
+    (:func:`~pkgtool.model.launch.nested_packages`; CMake may install it whole).
     ``depth(name)``, when given, says how many folder levels to read below the top-level
     folder ``name`` (0: not read; None: all): the same files as without it, less those
     deeper than that.
@@ -194,7 +199,7 @@ def _walk(root: Path, depth: Callable[[str], int | None] | None = None
                             build_folders.add(f"{prefix}{entry.name}/")
                     elif "package.xml" in files and "pyvenv.cfg" not in files:
                         found.extend((f"{prefix}{entry.name}/{e.name}", e) for e in inside
-                                     if e.name == "package.xml")  # marks the nested package
+                                     if e.name in _NESTED_MARKERS)  # marks the nested package
                 elif entry.is_file():
                     found.append((prefix + entry.name, entry))
             except OSError:

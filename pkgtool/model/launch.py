@@ -62,7 +62,10 @@ class NodeRef:
     ``output`` is the static ``output=`` (``'screen'``), when given; ``not_text`` is where a
     Python ``arguments=``, ``ros_arguments=`` or ``remappings=`` display holds a number or
     bool literal (launch takes text and substitutions only), with the keyword;
-    ``text_not_list`` is where a Python ``arguments=`` or ``ros_arguments=`` is certainly one
+    ``joined_words`` is (where, keyword, text) of the first item of a Python ``arguments=`` or
+    ``ros_arguments=`` list that holds an option and its value, or a word and an option, in one
+    string (``'-r in:=/image_raw'``, ``'serial --dev /dev/ttyACM0'``); ``text_not_list`` is
+    where a Python ``arguments=`` or ``ros_arguments=`` is certainly one
     string instead of a list (launch iterates it: one argument per character, or a
     TypeError), with the keyword. ``remapped``
     are the names a Python ``remappings=[(from, to), ...]`` display remaps, when written as
@@ -93,6 +96,7 @@ class NodeRef:
     remappings_not_pairs: Span | None = None
     inline_parameters: tuple[tuple[str, Span, str | None], ...] = ()
     text_not_list: tuple[Span, str] | None = None
+    joined_words: tuple[Span, str, str] | None = None
     output: str | None = None
     not_text: tuple[Span, str] | None = None
     remapped: tuple[tuple[str, Span], ...] = ()

@@ -398,6 +398,8 @@ class _Reader(ast.NodeVisitor):
             text_not_list = next(((self._span(given), keyword) for keyword in _ARGUMENT_LISTS
                                   if (given := _keyword(node, keyword)) is not None and
                                   self._is_text(given)), None)
+            joined = next(((self._span(item), keyword, item.value) for keyword in _ARGUMENT_LISTS
+                           for item in _joined_words(_keyword(node, keyword))), None)
             self.nodes.append(NodeRef(
                 package if isinstance(package, str) else None,
                 executable if isinstance(executable, str) else None, self._span(node), action,
@@ -414,7 +416,7 @@ class _Reader(ast.NodeVisitor):
                 inline_parameters=(*self._inline_parameters(parameters),
                                    *self._argument_parameters(node)),
                 output=output if isinstance(output, str) else None, not_text=not_text,
-                text_not_list=text_not_list,
+                text_not_list=text_not_list, joined_words=joined,
                 remapped=tuple(self._remapped(_keyword(node, "remappings"))),
                 always_started=node in self.certain))
         elif name == "ExecuteProcess":
@@ -594,8 +596,10 @@ class _Reader(ast.NodeVisitor):
         start = next((i for i, word in enumerate(whole) if word == "ros2"), None) \
             if isinstance(whole, tuple) else None
         command = whole[start:] if start is not None else ()
+        if command[:2] == ("ros2", "run"):
+            command = _without_prefix(command)
         if (len(command) >= 4 and command[:2] == ("ros2", "run")
-                and all(isinstance(c, str) for c in command[2:4])):
+                and all(_plain_word(c) for c in command[2:4])):
             self.nodes.append(NodeRef(command[2], command[3], self._span(node),
                                       optional=bool(self.optional), name_unknown=True,
                                       other_parameters=True, unused=bool(self.dead)))
@@ -705,16 +709,41 @@ def remapped_name(argument: str) -> str | None:
 
 _SHELL_LINE = lazy_pattern(r"\bros2\s+(?:run|launch)\s")
 """A command line in one string (``'ros2 run pkg exe'`` after ``xterm -e`` or ``bash -c``)."""
-_SHELL_SEPARATORS = lazy_pattern(r"[\s;&|\"']+")
+_SHELL_SEPARATORS = lazy_pattern(r"[;&|]+")
 
 
 def _shell_words(part: object) -> tuple[object, ...]:
     """The words of one element of a command list: a string holding a whole ``ros2 run``
-    or ``ros2 launch`` command line that a terminal or shell runs, split at blanks, quotes and
-    ``;``, ``&`` and ``|``; any other element as it is."""
+    or ``ros2 launch`` command line that a terminal or shell runs, split as a shell splits it
+    (quotes kept together) and at ``;``, ``&`` and ``|``; any other element (and a string a
+    shell cannot split: an unclosed quote) as it is."""
     if isinstance(part, str) and _SHELL_LINE.search(part):
-        return tuple(word for word in _SHELL_SEPARATORS.split(part) if word)
+        import shlex  # only here: most launch files run no shell line
+
+        try:
+            words = shlex.split(_SHELL_SEPARATORS.sub(" ; ", part))
+        except ValueError:
+            return (part,)
+        return tuple(word for word in words if word != ";")
     return (part,)
+
+
+def _without_prefix(command: tuple[object, ...]) -> tuple[object, ...]:
+    """``ros2 run`` without its ``--prefix PREFIX`` (or ``--prefix=PREFIX``) option, which
+    comes before the package."""
+    if command[2:3] == ("--prefix",):
+        return command[:2] + command[4:]
+    if isinstance(command[2] if len(command) > 2 else None, str) and \
+            str(command[2]).startswith("--prefix="):
+        return command[:2] + command[3:]
+    return command
+
+
+def _plain_word(word: object) -> bool:
+    """True for a word that names itself: no option (``-x``), and nothing a shell expands
+    (``$EXE``, ``${EXE:-talker}``, a backquote)."""
+    return isinstance(word, str) and bool(word) and not word.startswith("-") and \
+        not {"$", "`"} & set(word)
 
 
 def _keyword(node: ast.Call, name: str) -> ast.expr | None:
@@ -848,6 +877,29 @@ _ARGUMENT_LISTS = ("arguments", "ros_arguments")
 """Node keywords taking a list of command-line arguments."""
 _TEXT_LISTS = (*_ARGUMENT_LISTS, "remappings")
 """Node keywords whose list items (or pairs' items) launch takes as text or substitutions."""
+
+
+_JOINED_WORDS = lazy_pattern(r"\s*-[\w-]+\s+[^\s-]|\s*[\w./:-]+\s+--?[A-Za-z][\w-]*(?:[\s=]|$)")
+"""One command-line item holding an option and its value (``-r in:=/x``, ``--log-level
+debug``) or a word and an option (``serial --dev /dev/ttyACM0``)."""
+
+
+def _joined_words(value: ast.expr | None) -> Iterator[ast.Constant]:
+    """String literals of a list or tuple display that hold several command-line words (not
+    the value of an option before them, which may well be a line of words the program splits
+    itself: ``'--controller-ros-args', '-r a:=b'``)."""
+    items = value.elts if isinstance(value, (ast.List, ast.Tuple)) else []
+    for before, item in zip([None, *items], items):
+        if isinstance(item, ast.Constant) and isinstance(item.value, str) and \
+                _JOINED_WORDS.match(item.value) and not _takes_a_value(before):
+            yield item
+
+
+def _takes_a_value(item: ast.expr | None) -> bool:
+    """True for an option item (``--controller-ros-args``) the next item may be the value of;
+    not ``--ros-args`` or ``--``, after which every item is a word of its own."""
+    return isinstance(item, ast.Constant) and isinstance(item.value, str) and \
+        item.value.startswith("-") and item.value not in ("--ros-args", "--")
 
 
 def _non_text(value: ast.expr | None) -> Iterator[ast.Constant]:

@@ -142,9 +142,12 @@ def _same_module(package: Package, key: str, close: str) -> bool:
 
 def _declared_beside(dependency: Dependency, close: str, package: Package) -> bool:
     """True when package.xml already declares ``close`` for what ``dependency`` declares (the
-    same tag, or a ``<depend>`` on either side): the key names another package, built from
-    source, not a misspelling whose fix would declare ``close`` twice."""
+    same tag, or a ``<depend>`` on either side) and ``key`` is more than one slip away from
+    it: the key names another package, built from source (``mir_description`` beside
+    ``ur_description``), not a misspelling whose fix would declare ``close`` twice."""
     manifest = package.manifest
+    if rosdistro.typo_distance(dependency.name, close, 1) <= 1:
+        return False  # one slip (`sensor_msg` beside `sensor_msgs`): a misspelt duplicate
     tags = {dependency.tag, "depend"}
     return manifest is not None and any(
         other.name == close and (other.tag in tags or dependency.tag == "depend")

@@ -556,12 +556,14 @@ def _stdlib(distro: str) -> frozenset[str]:
 @per_package
 def beside_the_scripts(package: Package) -> frozenset[str]:
     """Modules installed into ``lib/<package>``, the folder of the console scripts: those
-    data_files copies there, and the ``.py`` files of ``scripts=`` (into setup.cfg's
+    data_files copies there (and the packages of the folders it copies Python files into,
+    ``lib/<package>/helpers/gait.py``), and the ``.py`` files of ``scripts=`` (into setup.cfg's
     ``install_scripts``, which SET009 wants there): Python puts a script's folder first on
     the path, so they import by their bare names."""
     library = f"lib/{package.name}/"
-    copied = {posixpath.basename(target)[:-3] for target in installed_data(package) or ()
-              if posixpath.normpath(target).startswith(library) and target.endswith(".py")}
+    below = (posixpath.normpath(target)[len(library):] for target in installed_data(package) or ()
+             if posixpath.normpath(target).startswith(library) and target.endswith(".py"))
+    copied = {path.split("/")[0].removesuffix(".py") for path in below}  # a module, a package
     scripts = package.setup_py.scripts if package.setup_py else None
     return frozenset(copied) | {posixpath.basename(script)[:-3]
                                 for script in scripts or () if script.endswith(".py")}
@@ -693,51 +695,95 @@ def _needs(package: Package, module: PythonModule, guarded: bool | None) -> Iter
 
 
 def _lazy_extra(package: Package, module: PythonModule, imported: Import) -> bool:
-    """True for an import inside a function of a module setup.py (or setup.cfg) lists in
-    ``extras_require``: an optional feature's requirement, loaded only when the feature runs
-    (``def to_html(): import jinja2`` with ``extras_require={'html': ['Jinja2']}``)."""
-    extras = extra_requirements(package)
-    if not extras or imported.top_level.lower().replace("-", "_") not in extras:
+    """True for an import inside a function of a distribution setup.py (or setup.cfg) lists
+    in ``extras_require`` (not its ``test`` or ``dev`` extras): an optional feature's
+    requirement, loaded only when the feature runs (``def to_html(): import jinja2`` with
+    ``extras_require={'html': ['Jinja2']}``). Not in test code, nor in a function that
+    always runs: one the module calls at its top level, a console script's function or an
+    ``__init__``."""
+    names, keys = extra_requirements(package)
+    top = imported.top_level
+    if not names or not (_normalised(top) in names or
+                         keys & set(keys_for_import(top, package.context.distro))):
         return False
     tree = parse_tree(module.path, package.texts.get(module.path, ""))
-    return isinstance(tree, ast.Module) and imported.span.line in _function_import_lines(tree)
+    if not isinstance(tree, ast.Module) or is_test_code(package, module):
+        return False
+    functions, called = _function_imports(tree)
+    function = functions.get(imported.span.line)
+    return function is not None and function != "__init__" and function not in called and \
+        function not in _entry_functions(package)
+
+
+def _normalised(name: str) -> str:
+    """A distribution or module name as PEP 503 compares them (lower case, ``-`` for any run
+    of ``-``, ``_`` and ``.``)."""
+    return _SEPARATORS.sub("-", name).lower()
+
+
+_SEPARATORS = lazy_pattern(r"[-_.]+")
 
 
 _REQUIREMENT_NAME = lazy_pattern(r"\s*([A-Za-z0-9][A-Za-z0-9._-]*)")
+_NOT_FEATURES = frozenset({"test", "tests", "testing", "dev", "develop", "lint", "doc", "docs"})
+"""Extras that hold what tests or development need, not an optional feature's requirements."""
 
 
 @per_package
-def extra_requirements(package: Package) -> frozenset[str]:
-    """The distributions ``extras_require`` lists (setup.py's, else setup.cfg's
-    ``[options.extras_require]``), lower case with ``_`` for ``-``."""
+def extra_requirements(package: Package) -> tuple[frozenset[str], frozenset[str]]:
+    """The distributions the optional features of ``extras_require`` need (setup.py's, else
+    setup.cfg's ``[options.extras_require]``; not :data:`_NOT_FEATURES`), PEP 503-normalised,
+    and the rosdep keys that install them (``opencv-python``: ``python3-opencv``)."""
     found: list[str] = []
     setup = package.setup_py
     value = setup.extras_require.value if setup is not None and setup.extras_require else None
     if isinstance(value, dict):
-        for requirements in value.values():
-            found.extend([requirements] if isinstance(requirements, str) else
-                         [r for r in requirements if isinstance(r, str)]
-                         if isinstance(requirements, (list, tuple)) else [])
+        for extra, requirements in value.items():
+            if str(extra).lower() not in _NOT_FEATURES:
+                found.extend([requirements] if isinstance(requirements, str) else
+                             [r for r in requirements if isinstance(r, str)]
+                             if isinstance(requirements, (list, tuple)) else [])
     cfg = package.setup_cfg
     if cfg is not None:
         found.extend(option.value for option in cfg.options
-                     if option.section == "options.extras_require")
-    names = (_REQUIREMENT_NAME.match(line) for text in found for line in text.splitlines())
-    return frozenset(name.group(1).lower().replace("-", "_") for name in names if name)
+                     if option.section == "options.extras_require" and
+                     option.key.lower() not in _NOT_FEATURES)
+    matched = (_REQUIREMENT_NAME.match(line) for text in found for line in text.splitlines())
+    distributions = {name.group(1) for name in matched if name}
+    keys = {key for name in distributions
+            for key in (suggested_key(name), suggested_key(name.lower()),
+                        f"python3-{_normalised(name)}", f"python3-{_normalised(name)}-pip")
+            if key}
+    return frozenset(map(_normalised, distributions)), frozenset(keys)
+
+
+@per_package
+def _entry_functions(package: Package) -> frozenset[str]:
+    """The functions console scripts and other entry points run (``main``)."""
+    setup = package.setup_py
+    return frozenset(entry.attr.split(".")[0] for entry in (setup.entry_points or ())
+                     if entry.attr) if setup is not None else frozenset()
 
 
 @per_tree
-def _function_import_lines(tree: ast.Module) -> frozenset[int]:
-    """Lines of the import statements inside a function (or a lambda's default) of ``tree``."""
-    lines: set[int] = set()
-    pending: list[tuple[ast.AST, bool]] = [(tree, False)]
+def _function_imports(tree: ast.Module) -> tuple[dict[int, str], frozenset[str]]:
+    """The import statements inside functions of ``tree`` (line -> the name of the outermost
+    function around it, a method's own), and the names the module calls at its top level
+    (``GREETING = _template()``, ``if __name__ == '__main__': main()``)."""
+    lines: dict[int, str] = {}
+    pending: list[tuple[ast.AST, str | None]] = [(tree, None)]
     while pending:
-        node, inside = pending.pop()
-        if inside and isinstance(node, (ast.Import, ast.ImportFrom)):
-            lines.add(node.lineno)
-        nested = inside or isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))
-        pending.extend((child, nested) for child in ast.iter_child_nodes(node))
-    return frozenset(lines)
+        node, function = pending.pop()
+        if function is not None and isinstance(node, (ast.Import, ast.ImportFrom)):
+            lines[node.lineno] = function
+        if function is None and isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            function = node.name
+        pending.extend((child, function) for child in ast.iter_child_nodes(node))
+    called = {node.func.id for statement in tree.body
+              if not isinstance(statement, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef))
+              for node in ast.walk(statement)
+              if isinstance(node, ast.Call) and isinstance(node.func, ast.Name)}
+    return lines, frozenset(called)
 
 
 def _holds_module(package: Package, name: str) -> bool:

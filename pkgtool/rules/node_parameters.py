@@ -15,7 +15,7 @@ from difflib import get_close_matches
 from collections.abc import Iterable, Iterator
 
 from pkgtool.knowledge.rosdistro import typo_of
-from pkgtool.model.ast_nodes import nodes_of_class, subtree, walk_once
+from pkgtool.model.ast_nodes import last_name, nodes_of_class, subtree, walk_once
 from pkgtool.model.installed import installed_data
 from pkgtool.model.launch import NodeRef
 from pkgtool.model.memo import per_package
@@ -331,12 +331,21 @@ def _within(index: Index, node: ast.AST, cls: ast.ClassDef) -> bool:
 def _module_skip(tree: ast.Module) -> str | None:
     """Why the module's parameter reads are not judged: it uses a :data:`PERMISSIVE` option,
     as a keyword or as a key of the keywords it passes (``options['allow_undeclared_parameters']
-    = True``, ``super().__init__('n', **options)``)."""
+    = True``, ``super().__init__('n', **options)``), or makes a :data:`_DECLARING_EVERYTHING`
+    node beside its own."""
     for node in nodes_of_class(tree, ast.keyword, ast.Constant):
         name = node.arg if isinstance(node, ast.keyword) else getattr(node, "value", None)
         if isinstance(name, str) and name in PERMISSIVE:
             return f"it uses `{name}`"
+    if any(last_name(call.func) in _DECLARING_EVERYTHING
+           for call in nodes_of_class(tree, ast.Call)):  # type: ignore[attr-defined]
+        return "it starts a MoveItPy node, which takes every parameter the process is given"
     return None
+
+
+_DECLARING_EVERYTHING = frozenset({"MoveItPy"})
+"""Classes whose own node (in the same process) declares every parameter it is given: the
+launch file's parameters may be meant for it."""
 
 
 @record

@@ -38,21 +38,31 @@ def package_file_named(text: str, package: Package, *, absent: bool = False
 
 def assigned_value(value: ast.expr, index: Index) -> ast.expr:
     """What ``value`` certainly holds: for a name, the one value it is bound to (in the
-    innermost function around that binds it, else in the module); for ``self.x``, the one
-    value every store of ``.x`` in the module assigns, all in one class; else ``value``."""
+    innermost function around that binds it, else in the module); for ``self.x`` in a
+    method (``self`` its first parameter), the one value every store of ``.x`` in the module
+    assigns, all to ``self.x`` in methods of one class; else ``value``."""
     if isinstance(value, ast.Name):
         scopes = [f for f in index.functions_around(value) if scope_bindings(f)[value.id]]
         scope = scopes[0] if scopes else index.module_of(value)
         return single_assignments(scope).get(value.id, value)
-    if isinstance(value, ast.Attribute) and isinstance(value.value, ast.Name):
+    if isinstance(value, ast.Attribute) and _of_self(value, index):
         values = _stored(value, index)
         return values[0] if len(values) == 1 else value
     return value
 
 
+def _of_self(attribute: ast.Attribute, index: Index) -> bool:
+    """True for ``self.x`` in a method of a class, ``self`` being its first parameter."""
+    receiver = attribute.value
+    method = index.enclosing_function(attribute, through_lambdas=False)
+    arguments = [*method.args.posonlyargs, *method.args.args] if method is not None else []
+    return isinstance(receiver, ast.Name) and bool(arguments) and \
+        arguments[0].arg == receiver.id and index.enclosing_class(method) is not None
+
+
 def _stored(value: ast.Attribute, index: Index) -> list[ast.expr]:
-    """The values of every store of ``.x`` in the module when each is a plain assignment in
-    the class whose method reads ``self.x`` (else none)."""
+    """The values of every store of ``.x`` in the module when each is a plain assignment to
+    ``self.x`` in a method of the class whose method reads ``self.x`` (else none)."""
     cls = index.enclosing_class(value)
     found: list[ast.expr] = []
     for store in nodes_of_class(index.module_of(value), ast.Attribute):
@@ -61,7 +71,7 @@ def _stored(value: ast.Attribute, index: Index) -> list[ast.expr]:
             continue
         parent = index.parents.get(id(store))
         if cls is None or not (isinstance(parent, ast.Assign) and parent.targets == [store]) or \
-                index.enclosing_class(store) is not cls:
+                index.enclosing_class(store) is not cls or not _of_self(store, index):
             return []
         found.append(parent.value)
     return found

@@ -43,8 +43,9 @@ def unexpanded_home_path(package: Package) -> Iterator[Hit]:
     `glob.glob()`, `cv2.imwrite()`, `numpy.save()`, `torch.load()`, `sqlite3.connect()`, a
     `pathlib.Path`'s `mkdir()`, `open()`, `write_text()`, ...) whose path starts with `~/` (or
     is `~`): a string literal, an f-string or a `+` that starts with one, an `os.path.join()`
-    or `Path()` whose first part is one, or a name or `self.x` assigned such a value and
-    nothing else.
+    or `Path()` whose first part is one (also through `/`), or a name or `self.x` assigned
+    such a value and nothing else; the path given as the first argument or by keyword
+    (`filename=`), or as the `Path` whose method is called (`self.folder.mkdir()`).
 
     ## Why is this bad?
     Only a shell expands `~`: Python, OpenCV and NumPy take `~/captures/run1` as a relative
@@ -79,17 +80,35 @@ def unexpanded_home_path(package: Package) -> Iterator[Hit]:
 
 
 def _path_argument(call: ast.Call, index: Index) -> ast.expr | None:
-    """The path a call of :data:`TAKE_PATHS` (or of the built-in ``open``) uses, or the path
-    of a ``Path(...)`` whose method uses it at once (``Path(p).mkdir()``)."""
+    """The path a call of :data:`TAKE_PATHS` (or of the built-in ``open``) uses (its first
+    argument, or a path keyword), or the path of a ``Path`` whose method uses it at once
+    (``Path(p).mkdir()``, ``self.folder.mkdir()`` for ``self.folder = Path(p)``)."""
     func = call.func
     if isinstance(func, ast.Name) and func.id == "open" and "open" not in index.bound or \
             isinstance(func, (ast.Name, ast.Attribute)) and index.qualified(func) in TAKE_PATHS:
-        return call.args[0] if call.args else None
-    if isinstance(func, ast.Attribute) and func.attr in _PATH_METHODS and \
-            isinstance(func.value, ast.Call) and func.value.args and \
-            isinstance(func.value.func, (ast.Name, ast.Attribute)) and \
-            index.qualified(func.value.func) in ("pathlib.Path", "pathlib.PurePath"):
-        return func.value.args[0]
+        return call.args[0] if call.args else \
+            next((k.value for k in call.keywords if k.arg in _PATH_KEYWORDS), None)
+    if isinstance(func, ast.Attribute) and func.attr in _PATH_METHODS:
+        return _path_of(func.value, index, 4)
+    return None
+
+
+_PATH_KEYWORDS = frozenset({"file", "filename", "fname", "name", "path", "src", "database"})
+"""Keywords that name the path of a :data:`TAKE_PATHS` call given no positional argument."""
+
+
+def _path_of(value: ast.expr, index: Index, depth: int) -> ast.expr | None:
+    """The first part of the path a ``pathlib.Path`` value is made of: the argument of
+    ``Path(...)``, also through a name or ``self.x`` given it and through ``/``."""
+    value = assigned_value(value, index)
+    if depth == 0:
+        return None
+    if isinstance(value, ast.BinOp) and isinstance(value.op, ast.Div):
+        return _path_of(value.left, index, depth - 1)
+    if isinstance(value, ast.Call) and value.args and \
+            isinstance(value.func, (ast.Name, ast.Attribute)) and \
+            index.qualified(value.func) in ("pathlib.Path", "pathlib.PurePath"):
+        return value.args[0]
     return None
 
 
@@ -105,6 +124,9 @@ def _home_start(value: ast.expr, index: Index, depth: int) -> str | None:
         return _home_start(value.values[0], index, depth - 1)
     if isinstance(value, ast.BinOp) and isinstance(value.op, ast.Add):
         return _home_start(value.left, index, depth - 1)
+    if isinstance(value, ast.BinOp) and isinstance(value.op, ast.Div):
+        first = _path_of(value, index, depth - 1)
+        return _home_start(first, index, depth - 1) if first is not None else None
     if isinstance(value, ast.Call) and value.args and \
             isinstance(value.func, (ast.Name, ast.Attribute)) and \
             (index.qualified(value.func) in _JOINS or

@@ -97,6 +97,13 @@ def _problems(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
             else "launch raises TypeError (a list plus a str)"
         yield (f"`{keyword}=` of `{node.action}()` is one string, not a list: {effect}",
                f"Split it into a list: `{keyword}=['--log-level', 'debug']`", where)
+    if node.joined_words:
+        where, keyword, text = node.joined_words
+        words = ", ".join(f"'{word}'" for word in text.split())
+        yield (f"`'{text}'` in `{keyword}=` of `{node.action}()` is one command-line argument "
+               "holding several words: the node gets it as one word and cannot parse it (an "
+               "option with its value, or a word and an option, are separate list items)",
+               f"Write each word as an item: {words}", where)
     if node.remappings_not_pairs:
         yield (f"`remappings=` of `{node.action}()` is not a list of (from, to) tuples",
                "Put each remapping in a tuple of two, in a list: "
@@ -168,7 +175,9 @@ def invalid_launch_node_argument(package: Package) -> Iterator[Hit]:
     `own_log`, `full`); a Python `arguments=`, `ros_arguments=` or `remappings=` display must
     hold text (`arguments=['--rate', 2]` is refused), and `arguments=` or `ros_arguments=` must
     be a list, not one string (`arguments='--ros-args --log-level debug'` passes each
-    character as an argument; `ros_arguments='...'` raises TypeError).
+    character as an argument; `ros_arguments='...'` raises TypeError), whose items are one
+    word each (`'-r in:=/image_raw'` or `'serial --dev /dev/ttyACM0'` reach the node as one
+    word, which its parser rejects).
 
     ## Why is this bad?
     `ros2 launch` stops before starting anything: Python raises `TypeError: unexpected keyword

@@ -6,6 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.rosdistro import any_stdlib_module
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
@@ -36,9 +37,12 @@ def unused_launch_argument(package: Package) -> Iterator[Hit]:
     `LaunchConfiguration('name')` and names `name` in no other string (a dict key, a
     subscript of `context.launch_configurations`). Files that include
     other launch files, use an `OpaqueFunction`, `SetLaunchConfiguration` or a condition
-    taking a configuration's name, build a name or read a configuration whose name is not a
-    literal, or call helpers of modules other than launch's own and the standard library,
-    are left alone: those may read the value where the file does not show it.
+    taking a configuration's name, load a parameter file with substitutions
+    (`allow_substs=True`: `$(var name)` in the file reads it), build a name or read a
+    configuration whose name is not a literal, or call helpers of modules other than
+    launch's own and the standard library, are left alone: those may read the value where
+    the file does not show it; and so are files that start nothing (declarations alone,
+    which the files including them read).
 
     ## Why is this bad?
     `ros2 launch my_pkg robot.launch.py use_sim_time:=true` is accepted and listed by
@@ -64,7 +68,7 @@ def unused_launch_argument(package: Package) -> Iterator[Hit]:
     """
     for path, index in launch_indexes(package):
         declared = [call for call in index.calls if _class(call, index) == "DeclareLaunchArgument"]
-        if not declared or not _readable(index):
+        if not declared or not _readable(index) or not _starts_something(index):
             continue
         names = [text_argument(call, "name") for call in declared]
         reads = [text_argument(call, "variable_name") for call in index.calls
@@ -93,8 +97,24 @@ def _class(call: ast.Call, index: Index) -> str:
 
 def _readable(index: Index) -> bool:
     """True when every read of a configuration shows in the file: it imports only modules
-    of :data:`_PLAIN_MODULES` and uses none of :data:`_PASSED_ON`."""
-    modules = set(index.aliases.values())
-    return all(module.split(".")[0] in _PLAIN_MODULES for module in modules) and \
+    of :data:`_PLAIN_MODULES` and the standard library, uses none of :data:`_PASSED_ON`, and
+    loads no parameter file with substitutions (``ParameterFile(path, allow_substs=True)``
+    reads ``$(var name)`` in the file)."""
+    modules = {module.split(".")[0] for module in index.aliases.values()}
+    return not modules - _PLAIN_MODULES - any_stdlib_module() and \
         not index.relative and \
-        not any(_class(call, index) in _PASSED_ON for call in index.calls)
+        not any(_class(call, index) in _PASSED_ON or _substitutes(call) for call in index.calls)
+
+
+def _substitutes(call: ast.Call) -> bool:
+    """True for a call given ``allow_substs=`` anything but a literal False."""
+    return any(k.arg == "allow_substs" and not (isinstance(k.value, ast.Constant) and
+                                                k.value.value is False) for k in call.keywords)
+
+
+def _starts_something(index: Index) -> bool:
+    """True when the file makes a launch action other than declaring arguments (a node, a
+    process, a group): a file of declarations alone is included by others, which read them."""
+    return any(_class(call, index) not in ("", "DeclareLaunchArgument") and
+               (index.qualified(call.func) or "").split(".")[1:2] == ["actions"]
+               for call in index.calls)

@@ -6,7 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.pillow_removed import (FONT_MAKERS, REMOVED_CONSTANTS,
+from pkgtool.knowledge.pillow_removed import (DRAW_MAKERS, FONT_MAKERS, REMOVED_CONSTANTS,
                                               REMOVED_DRAW_METHODS, REMOVED_FONT_METHODS,
                                               SYSTEM_PILLOW)
 from pkgtool.model.package import Package
@@ -28,8 +28,10 @@ def pillow_removed_name(package: Package) -> Iterator[Hit]:
     attribute or imported by name), `textsize()` called on an `ImageDraw.Draw(...)`, and
     `getsize()` or `getoffset()` called on a font `ImageFont.truetype()` or
     `ImageFont.load_default()` made (directly, or through a name or `self.x` given that one
-    value). Names the module probes (`hasattr(Image, 'ANTIALIAS')`) or reads where
-    AttributeError is caught are left alone.
+    value; also `multiline_textsize()` and `getsize_multiline()`). Code written for two
+    Pillow releases is left alone: names the module probes (`hasattr(Image, 'ANTIALIAS')`),
+    reads where AttributeError or ImportError is caught, and branches of a test asking which
+    Pillow runs (`if hasattr(Image, 'Resampling'):`, `PIL.__version__`).
 
     ## Why is this bad?
     The line raises `AttributeError` when it runs. Ubuntu 24.04, which ROS 2 Jazzy and
@@ -54,11 +56,12 @@ def pillow_removed_name(package: Package) -> Iterator[Hit]:
         probed = probed_names(index)
         for node, owner, attr in resolved_attributes(index):
             if owner == "PIL.Image" and attr in REMOVED_CONSTANTS and \
-                    not guarded(node, index, probed):
+                    not guarded(node, index, probed) and not _for_old_pillow(node, index):
                 yield _hit(module.path, node, f"Image.{attr}", where,
                            f"`{REMOVED_CONSTANTS[attr]}`")
         for node in index.import_froms:
-            if node.module == "PIL.Image" and node.level == 0:
+            if node.module == "PIL.Image" and node.level == 0 and \
+                    not _for_old_pillow(node, index):
                 for alias in node.names:
                     if alias.name in REMOVED_CONSTANTS:
                         yield _hit(module.path, node, f"Image.{alias.name}", where,
@@ -66,8 +69,46 @@ def pillow_removed_name(package: Package) -> Iterator[Hit]:
                                    "the import raises ImportError")
         for call in index.calls:
             found = _removed_method(call, index)
-            if found is not None:
+            if found is not None and isinstance(call.func, ast.Attribute) and \
+                    not guarded(call.func, index, probed) and not _for_old_pillow(call, index):
                 yield _hit(module.path, call, found[0], where, found[1])
+
+
+_VERSION_TESTS = frozenset({"hasattr", "getattr", "__version__", "version", "parse",
+                            "PILLOW_VERSION", "VERSION", "Version"})
+"""Names a test of which Pillow runs reads (``hasattr(Image, 'Resampling')``,
+``PIL.__version__``, ``parse(...)``)."""
+
+
+def _for_old_pillow(node: ast.AST, index: Index) -> bool:
+    """True inside a branch (of an ``if`` or a conditional expression) whose test asks which
+    Pillow runs, or inside a ``try`` (or its handler) that catches ImportError or anything:
+    code written for two Pillow releases."""
+    child, parent = node, index.parents.get(id(node))
+    while parent is not None:
+        if isinstance(parent, (ast.If, ast.IfExp)) and child is not parent.test and \
+                _VERSION_TESTS & _names_in(parent.test):
+            return True
+        if isinstance(parent, ast.Try) and any(_catches_import_error(h)
+                                               for h in parent.handlers):
+            return True
+        child, parent = parent, index.parents.get(id(parent))
+    return False
+
+
+def _names_in(test: ast.expr) -> set[str]:
+    """The names and attribute names a test reads."""
+    return {node.id if isinstance(node, ast.Name) else node.attr for node in ast.walk(test)
+            if isinstance(node, (ast.Name, ast.Attribute))}
+
+
+def _catches_import_error(handler: ast.ExceptHandler) -> bool:
+    """True for a handler of ImportError (or ModuleNotFoundError, Exception, anything)."""
+    caught = handler.type
+    names = [caught] if caught is None or not isinstance(caught, ast.Tuple) else caught.elts
+    return any(name is None or isinstance(name, ast.Name) and name.id in
+               ("ImportError", "ModuleNotFoundError", "Exception", "BaseException")
+               for name in names)
 
 
 def _removed_method(call: ast.Call, index: Index) -> tuple[str, str] | None:
@@ -83,7 +124,7 @@ def _removed_method(call: ast.Call, index: Index) -> tuple[str, str] | None:
     made = assigned_value(func.value, index)
     maker = index.qualified(made.func) if isinstance(made, ast.Call) and \
         isinstance(made.func, (ast.Name, ast.Attribute)) else None
-    makers = {"PIL.ImageDraw.Draw"} if table is REMOVED_DRAW_METHODS else FONT_MAKERS
+    makers = DRAW_MAKERS if table is REMOVED_DRAW_METHODS else FONT_MAKERS
     if maker not in makers:
         return None
     return f"{func.attr}()", table[func.attr]

@@ -29,26 +29,28 @@ def undefined_name(package: Package) -> Iterator[Hit]:
     """Installed code, a test, setup.py or a launch file uses a name that is not defined.
 
     ## What it does
-    Runs pyflakes' checker (as a library, on the parsed tree; a quick proof first spares it
-    the files where it would surely find nothing) over every installed module, every test
-    module, setup.py and every Python launch file (not those calling `exec()`, which may
-    define any name, nor a script under `test/` that pytest does not collect and nothing
-    imports: test data, which a test may run with `exec()` and names of its own) and
-    reports its "undefined name" messages (not for names the module stores through
-    `globals()`, as generated API clients' lazy imports do), with pyflakes' own handling of
-    builtins, `__all__`, star imports, conditional definitions and `except
-    NameError` guards (also over the functions and classes such a `try` defines after
-    reading the bare name: `try: unicode` / `def text(v): return isinstance(v, unicode)`);
-    a `try` of one or two assignments whose handler catches anything and
-    assigns the same names (`try: text = unicode` / `except Exception: text = str`) is
-    such a guard too. Code that never runs on Python 3 is skipped: branches of `if
-    sys.version_info < (3,):`, `if six.PY2:` or of a module constant set once to False, lines
-    after a `return`, `raise`, `continue` or `break` of the same block, and annotations Python
-    never evaluates: those of assignments in a function body, a string in
-    an annotation (a forward reference, `Optional['Pose']`), and every annotation under `from
-    __future__ import annotations` or in a project whose pyproject.toml declares Python 3.14
-    or newer (`requires-python`, `[tool.mypy] python_version`, `[tool.ruff] target-version`,
-    a pixi `python` dependency), which evaluates annotations only when they are read (PEP 649).
+    Runs pyflakes' checker (as a library, on the parsed tree; a quick proof first spares it the
+    files where it would surely find nothing) over every installed module, every test module,
+    setup.py and every Python launch file (not those calling `exec()`, which may define any
+    name, nor a script under `test/` that pytest does not collect and nothing imports: test
+    data, which a test may run with `exec()` and names of its own) and reports its "undefined
+    name" messages (not for names the module stores through `globals()`, as generated API
+    clients' lazy imports do), with pyflakes' own handling of builtins, `__all__`, star
+    imports, conditional definitions and `except NameError` guards (also over the functions and
+    classes such a `try` defines after reading the bare name: `try: unicode` / `def text(v):
+    return isinstance(v, unicode)`); a `try` of one or two assignments whose handler catches
+    anything and assigns the same names (`try: text = unicode` / `except Exception: text =
+    str`) is such a guard too, and so is a `try` using a ROS 1 module never imported (`rospy`)
+    whose handler catches NameError without raising it again (`try: rospy.loginfo(text)` /
+    `except Exception: self.get_logger().info(text)`: the ROS 1 path of a node written for
+    both). Code that never runs on Python 3 is skipped: branches of `if sys.version_info <
+    (3,):`, `if six.PY2:` or of a module constant set once to False, lines after a `return`,
+    `raise`, `continue` or `break` of the same block, and annotations Python never evaluates:
+    those of assignments in a function body, a string in an annotation (a forward reference,
+    `Optional['Pose']`), and every annotation under `from __future__ import annotations` or in
+    a project whose pyproject.toml declares Python 3.14 or newer (`requires-python`,
+    `[tool.mypy] python_version`, `[tool.ruff] target-version`, a pixi `python` dependency),
+    which evaluates annotations only when they are read (PEP 649).
 
     ## Why is this bad?
     The line raises `NameError` when it runs, which for a node usually means inside a
@@ -140,7 +142,7 @@ def _bound_at_run_time(tree: ast.Module, line: int, column: int, name: str) -> b
                 _asks_defined(parent.test, name):
             return True
         if isinstance(parent, ast.Try) and any(child is s for s in parent.body) and \
-                _compatibility_fallback(parent):
+                (_compatibility_fallback(parent) or _ros1_path(parent, name)):
             return True
         if isinstance(parent, ast.Lambda):
             lambdas.append(parent)
@@ -216,6 +218,21 @@ def _compatibility_fallback(block: ast.Try) -> bool:
         if not fallback or fallback == assigned:
             return True
     return False
+
+
+_ROS1_MODULES = frozenset({"rospy", "roslib", "rosbag", "rosparam", "rosnode", "rostopic",
+                           "rosservice"})
+"""ROS 1's Python modules: a dual ROS 1/ROS 2 node may try them without importing them."""
+
+
+def _ros1_path(block: ast.Try, name: str) -> bool:
+    """True for a ROS 1 module read in the body of a ``try`` whose handler catches NameError
+    and does not raise again: ``try: rospy.loginfo(text)`` / ``except: self.get_logger()
+    .info(text)``, the ROS 1 path of a node written for both, which ROS 2 always skips."""
+    return name in _ROS1_MODULES and any(
+        catches_name_error(handler) and
+        not any(nodes_of_class(handler, ast.Raise))
+        for handler in block.handlers)
 
 
 def _asks_defined(test: ast.expr, name: str) -> bool:

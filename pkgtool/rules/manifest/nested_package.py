@@ -1,0 +1,70 @@
+"""MAN028: a package lies inside another package's folder, where colcon never looks."""
+
+from __future__ import annotations
+
+import posixpath
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.lazy_regex import lazy_pattern
+from pkgtool.model.files import TextFile, read_text
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.registry import rule
+
+_KEPT_ASIDE = frozenset({"test", "tests", "example", "examples", "doc", "docs", "template",
+                         "templates", "fixture", "fixtures", "resource", "resources", "sample",
+                         "samples", "data"})
+"""Folders whose packages are test data, examples to copy or templates: kept out on purpose."""
+_IGNORE_MARKERS = frozenset({"COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE"})
+"""Files that make colcon skip their folder."""
+_NAME = lazy_pattern(r"<name>\s*([^<\s]+)\s*</name>")
+
+
+@rule("MAN028", "nested-package", Severity.WARNING,
+      fix="Move the package out of the other package's folder (beside it in the workspace's "
+          "`src`), or put a `COLCON_IGNORE` file in its folder if it is kept on purpose")
+def nested_package(package: Package) -> Iterator[Hit]:
+    """A package.xml lies in a folder inside this package, so colcon never builds that package.
+
+    ## What it does
+    Reports each package.xml below the package's root (in no folder with a `COLCON_IGNORE`,
+    `AMENT_IGNORE` or `CATKIN_IGNORE`, and in no Python package of this one), unless the
+    package there has this package's name (another variant of it, kept aside) or lies in a
+    folder of tests, examples, documentation, templates, fixtures, resources, samples or
+    data.
+
+    ## Why is this bad?
+    colcon (like catkin) stops looking for packages at the first folder that is one: the
+    inner package is never built, installed or tested, `ros2 run` and `ros2 launch` do not
+    know it, and nothing says so. A metapackage whose member packages were put in its
+    folder, or a package copied into another's, is the usual cause.
+
+    ## Example
+    ```text
+    src/my_robot/package.xml
+    src/my_robot/my_robot_driver/package.xml   # never built
+    ```
+
+    ## Use instead
+    ```text
+    src/my_robot/package.xml
+    src/my_robot_driver/package.xml
+    ```
+    """
+    outer = package.name
+    ignored = {path.rpartition("/")[0] for path in package.files
+               if path.rpartition("/")[2] in _IGNORE_MARKERS}
+    for path in package.files:
+        folder, _, name = path.rpartition("/")
+        if name != "package.xml" or not folder or _KEPT_ASIDE & set(folder.split("/")) or \
+                package.has_file(f"{folder}/__init__.py") or \
+                any(folder == above or folder.startswith(above + "/") for above in ignored):
+            continue
+        read = read_text(package.root, path)
+        found = _NAME.search(read.text) if isinstance(read, TextFile) else None
+        inner = found.group(1) if found else posixpath.basename(folder)
+        if inner != outer:
+            yield Hit(Span(path, 1, 1),
+                      f"`{folder}/` holds the package `{inner}`, which colcon never builds: it "
+                      f"does not look for packages inside another package's folder (`{outer}`)")
