@@ -398,8 +398,11 @@ class _Reader(ast.NodeVisitor):
             text_not_list = next(((self._span(given), keyword) for keyword in _ARGUMENT_LISTS
                                   if (given := _keyword(node, keyword)) is not None and
                                   self._is_text(given)), None)
-            joined = next(((self._span(item), keyword, item.value) for keyword in _ARGUMENT_LISTS
-                           for item in _joined_words(_keyword(node, keyword))), None)
+            shell = _keyword(node, "shell")
+            joined = None if shell is not None and not (isinstance(shell, ast.Constant) and
+                                                        shell.value is False) else \
+                next(((self._span(item), keyword, item.value) for keyword in _ARGUMENT_LISTS
+                      for item in _joined_words(_keyword(node, keyword))), None)
             self.nodes.append(NodeRef(
                 package if isinstance(package, str) else None,
                 executable if isinstance(executable, str) else None, self._span(node), action,
@@ -887,7 +890,8 @@ debug``) or a word and an option (``serial --dev /dev/ttyACM0``)."""
 def _joined_words(value: ast.expr | None) -> Iterator[ast.Constant]:
     """String literals of a list or tuple display that hold several command-line words (not
     the value of an option before them, which may well be a line of words the program splits
-    itself: ``'--controller-ros-args', '-r a:=b'``)."""
+    itself: ``'--controller-ros-args', '-r a:=b'``; the caller leaves out ``shell=True``
+    actions, whose shell splits the joined line again)."""
     items = value.elts if isinstance(value, (ast.List, ast.Tuple)) else []
     for before, item in zip([None, *items], items):
         if isinstance(item, ast.Constant) and isinstance(item.value, str) and \

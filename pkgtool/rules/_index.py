@@ -213,6 +213,8 @@ RULES = {
                "python.local_read_before_assignment"),
     "PYC084": ("pillow-removed-name", "error", True, "python.pillow_removed_name"),
     "PYC085": ("malformed-format-string", "error", True, "python.malformed_format_string"),
+    "PYC086": ("unhashable-dataclass-default", "error", True,
+               "python.unhashable_dataclass_default"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

@@ -331,16 +331,19 @@ def _within(index: Index, node: ast.AST, cls: ast.ClassDef) -> bool:
 def _module_skip(tree: ast.Module) -> str | None:
     """Why the module's parameter reads are not judged: it uses a :data:`PERMISSIVE` option,
     as a keyword or as a key of the keywords it passes (``options['allow_undeclared_parameters']
-    = True``, ``super().__init__('n', **options)``), or makes a :data:`_DECLARING_EVERYTHING`
-    node beside its own."""
+    = True``, ``super().__init__('n', **options)``)."""
     for node in nodes_of_class(tree, ast.keyword, ast.Constant):
         name = node.arg if isinstance(node, ast.keyword) else getattr(node, "value", None)
         if isinstance(name, str) and name in PERMISSIVE:
             return f"it uses `{name}`"
-    if any(last_name(call.func) in _DECLARING_EVERYTHING
-           for call in nodes_of_class(tree, ast.Call)):  # type: ignore[attr-defined]
-        return "it starts a MoveItPy node, which takes every parameter the process is given"
     return None
+
+
+def _makes_a_declaring_node(tree: ast.Module) -> bool:
+    """True when the module makes a :data:`_DECLARING_EVERYTHING` node: one of the package's
+    processes may hand it the parameters a launch file gives any node of it."""
+    return any(last_name(call.func) in _DECLARING_EVERYTHING  # type: ignore[attr-defined]
+               for call in nodes_of_class(tree, ast.Call))
 
 
 _DECLARING_EVERYTHING = frozenset({"MoveItPy"})
@@ -362,8 +365,12 @@ class ModuleNodes:
 def module_nodes(package: Package) -> dict[str, ModuleNodes]:
     """Every installed, parseable module's :class:`ModuleNodes`, by path."""
     found: dict[str, ModuleNodes] = {}
-    for module, tree, index in installed_trees(package):
-        skip = _module_skip(tree)
+    trees = installed_trees(package)
+    everything = next((f"`{module.path}` makes a MoveItPy node, which takes every parameter "
+                       "the process is given" for module, tree, _ in trees
+                       if _makes_a_declaring_node(tree)), None)
+    for module, tree, index in trees:
+        skip = _module_skip(tree) or everything
         direct = [c for c in index.classes
                   if any(index.qualified(b) in NODE_CLASSES for b in c.bases)]
         calls = tuple(_literal_string(name_argument(c)) for c in index.calls

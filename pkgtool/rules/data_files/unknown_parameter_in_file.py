@@ -24,8 +24,8 @@ def unknown_parameter_in_file(package: Package) -> Iterator[Hit]:
     `declare_parameter('name', ...)` and `declare_parameters('ns', [('name', ...)])`.
     Skipped when the module uses `allow_undeclared_parameters` or
     `automatically_declare_parameters_from_overrides` (as keywords, or keys of a dict passed
-    with `**`) or makes a `MoveItPy` (whose own node takes every parameter the process is
-    given), declares a name that is not a literal,
+    with `**`), declares a name that is not a literal, in a package whose modules make a
+    `MoveItPy` (its own node takes every parameter the process is given),
     when the class derives from another class besides `Node`, or hands `self` to other code
     (rclpy's and tf2_ros's helpers that declare nothing aside: `ActionClient(self, ...)`,
     `TransformListener(buffer, self)`, and built-ins that only look at it: `hasattr(self,

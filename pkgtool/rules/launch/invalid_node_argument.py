@@ -99,11 +99,10 @@ def _problems(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
                f"Split it into a list: `{keyword}=['--log-level', 'debug']`", where)
     if node.joined_words:
         where, keyword, text = node.joined_words
-        words = ", ".join(f"'{word}'" for word in text.split())
         yield (f"`'{text}'` in `{keyword}=` of `{node.action}()` is one command-line argument "
                "holding several words: the node gets it as one word and cannot parse it (an "
                "option with its value, or a word and an option, are separate list items)",
-               f"Write each word as an item: {words}", where)
+               _split_words(text, keyword), where)
     if node.remappings_not_pairs:
         yield (f"`remappings=` of `{node.action}()` is not a list of (from, to) tuples",
                "Put each remapping in a tuple of two, in a list: "
@@ -141,6 +140,28 @@ def _problems(node: NodeRef) -> Iterator[tuple[str, str, Span]]:
             yield ("`<param>` has neither `name` nor `from`: launch raises ValueError (param "
                    f"Entity should have name or from attribute){ros1}",
                    "Write `from=` for a parameter file, or `name=` and `value=`", where)
+
+
+_ROS_OPTIONS = frozenset({"-r", "--remap", "-p", "--param", "--params-file", "-e",
+                          "--enclave", "--log-level", "--log-config-file", "--disable-rosout-logs",
+                          "--disable-stdout-logs", "--disable-external-lib-logs"})
+"""Options of ROS's own arguments, which come after ``--ros-args``."""
+
+
+def _split_words(text: str, keyword: str) -> str:
+    """The fix of an item holding several words: each word its own item, as a shell splits
+    them (quoted text kept together), after ``'--ros-args'`` for ROS's own options."""
+    import shlex
+
+    try:
+        words = shlex.split(text)
+    except ValueError:
+        words = text.split()
+    shown = ", ".join(repr(word) for word in words)
+    if keyword == "arguments" and words and words[0] in _ROS_OPTIONS:
+        return (f"Write each word as an item, after `'--ros-args'`: {shown} (or give them "
+                "as `ros_arguments=`)")
+    return f"Write each word as an item: {shown}"
 
 
 @rule("LCH005", "invalid-launch-node-argument", Severity.ERROR,

@@ -14,11 +14,20 @@ from pkgtool.rules.registry import rule
 
 _KEPT_ASIDE = frozenset({"test", "tests", "example", "examples", "doc", "docs", "template",
                          "templates", "fixture", "fixtures", "resource", "resources", "sample",
-                         "samples", "data"})
-"""Folders whose packages are test data, examples to copy or templates: kept out on purpose."""
+                         "samples", "data", "thirdparty", "third_party", "3rdparty", "external",
+                         "extern", "vendor", "deps"})
+"""Folders whose packages are test data, examples to copy, templates or vendored libraries
+(built by this package's own build, or kept as they came): kept out of colcon on purpose."""
 _IGNORE_MARKERS = frozenset({"COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE"})
 """Files that make colcon skip their folder."""
 _NAME = lazy_pattern(r"<name>\s*([^<\s]+)\s*</name>")
+
+
+def _in_python_package(package: Package, folder: str) -> bool:
+    """True when ``folder`` or a folder above it holds an ``__init__.py``."""
+    parts = folder.split("/")
+    return any(package.has_file("/".join(parts[:depth]) + "/__init__.py")
+               for depth in range(1, len(parts) + 1))
 
 
 @rule("MAN028", "nested-package", Severity.WARNING,
@@ -30,9 +39,11 @@ def nested_package(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports each package.xml below the package's root (in no folder with a `COLCON_IGNORE`,
     `AMENT_IGNORE` or `CATKIN_IGNORE`, and in no Python package of this one), unless the
-    package there has this package's name (another variant of it, kept aside) or lies in a
-    folder of tests, examples, documentation, templates, fixtures, resources, samples or
-    data.
+    package there has this package's name (another variant of it, kept aside), lies in a
+    folder of tests, examples, documentation, templates, fixtures, resources, samples, data
+    or vendored libraries (`thirdparty`, `external`, `vendor`, ...), or in a folder the
+    package's CMakeLists.txt names (`add_subdirectory(lib/sophus)`: built
+    with the package).
 
     ## Why is this bad?
     colcon (like catkin) stops looking for packages at the first folder that is one: the
@@ -55,10 +66,11 @@ def nested_package(package: Package) -> Iterator[Hit]:
     outer = package.name
     ignored = {path.rpartition("/")[0] for path in package.files
                if path.rpartition("/")[2] in _IGNORE_MARKERS}
+    cmake = package.texts.get("CMakeLists.txt", "")
     for path in package.files:
         folder, _, name = path.rpartition("/")
         if name != "package.xml" or not folder or _KEPT_ASIDE & set(folder.split("/")) or \
-                package.has_file(f"{folder}/__init__.py") or \
+                _in_python_package(package, folder) or folder in cmake or \
                 any(folder == above or folder.startswith(above + "/") for above in ignored):
             continue
         read = read_text(package.root, path)

@@ -13,7 +13,7 @@ from pkgtool.rules.syntax_trees import Index
 from pkgtool.lazy_regex import lazy_pattern
 
 PERCENT = lazy_pattern(r"%(?:\((?P<key>[^)]*)\))?[-#0 +]*(?P<width>\*|\d+)?"
-                       r"(?:\.(?P<precision>\*|\d+))?[hlL]?(?P<type>[diouxXeEfFgGcrsa%])")
+                       r"(?:\.(?P<precision>\*|\d*))?[hlL]?(?P<type>[diouxXeEfFgGcrsa%])")
 """One ``%`` conversion of printf-style formatting."""
 
 
@@ -56,7 +56,7 @@ def _format_fields(template: str, call: ast.Call) -> Iterator[tuple[ast.expr, st
         if field == "":
             value = call.args[automatic] if automatic < len(call.args) else None
             automatic += 1
-        elif field.isdigit():
+        elif field.isdecimal():
             value = call.args[int(field)] if int(field) < len(call.args) else None
         elif field.isidentifier():
             value = keywords.get(field)

@@ -67,8 +67,9 @@ def malformed_format_string(package: Package) -> Iterator[Hit]:
                     yield _hit(path, call, problem)
         for node in nodes_of_class(tree, ast.BinOp):
             assert isinstance(node, ast.BinOp)
-            if not (isinstance(node.left, ast.Constant) and isinstance(node.left.value, str)):
-                continue
+            if not (isinstance(node.left, ast.Constant) and isinstance(node.left.value, str)) \
+                    or index.in_unevaluated_annotation(node):
+                continue  # `'Node' | None` under `from __future__ import annotations` is text
             problem = _percent_problem(node) if isinstance(node.op, ast.Mod) else \
                 _operator_problem(node)
             if problem is not None:
@@ -97,7 +98,7 @@ def _format_problem(template: str, call: ast.Call) -> str | None:
             return (f"`!{conversion}` is no conversion (`!r`, `!s` or `!a`): `str.format` "
                     "raises ValueError")
     names = [_FIELD_NAME.match(name).group(0) for name, _ in fields]  # type: ignore[union-attr]
-    automatic, numbered = names.count(""), [n for n in names if n.isdigit()]
+    automatic, numbered = names.count(""), [n for n in names if n.isdecimal()]
     if automatic and numbered:
         return ("automatic fields (`{}`) and numbered ones (`{0}`) are mixed: `str.format` "
                 "raises ValueError")
@@ -106,7 +107,7 @@ def _format_problem(template: str, call: ast.Call) -> str | None:
         return (f"it takes {wanted} positional value{'s' if wanted > 1 else ''} but is given "
                 f"{len(call.args)}: `str.format` raises IndexError")
     given = {k.arg for k in call.keywords}
-    missing = sorted({n for n in names if n and not n.isdigit() and n not in given})
+    missing = sorted({n for n in names if n and not n.isdecimal() and n not in given})
     if missing:
         return f"no value is given for `{{{missing[0]}}}`: `str.format` raises KeyError"
     return None
@@ -118,6 +119,8 @@ def _percent_problem(node: ast.BinOp) -> str | None:
     conversions, at = [], 0
     while (start := template.find("%", at)) >= 0:
         found = PERCENT.match(template, start)
+        if found is None and template.startswith("%(", start):
+            return None  # a key with brackets of its own (`%(a(b))s`): left alone
         if found is None:
             shown = template[start:start + 2]
             return (f"`{shown}` is no conversion (write `%%` for a percent sign): `%` "

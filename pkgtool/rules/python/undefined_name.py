@@ -226,11 +226,14 @@ _ROS1_MODULES = frozenset({"rospy", "roslib", "rosbag", "rosparam", "rosnode", "
 
 
 def _ros1_path(block: ast.Try, name: str) -> bool:
-    """True for a ROS 1 module read in the body of a ``try`` whose handler catches NameError
-    and does not raise again: ``try: rospy.loginfo(text)`` / ``except: self.get_logger()
-    .info(text)``, the ROS 1 path of a node written for both, which ROS 2 always skips."""
+    """True for a ROS 1 module read in the body of a ``try`` whose handler catches NameError,
+    binds no exception, does something (not ``pass``) and does not raise again: ``try:
+    rospy.loginfo(text)`` / ``except: self.get_logger().info(text)``, the ROS 1 path of a
+    node written for both, which ROS 2 always skips (a handler reporting the error, ``except
+    Exception as error:``, is a port's leftover that always fails)."""
     return name in _ROS1_MODULES and any(
-        catches_name_error(handler) and
+        catches_name_error(handler) and handler.name is None and
+        not all(isinstance(s, ast.Pass) for s in handler.body) and
         not any(nodes_of_class(handler, ast.Raise))
         for handler in block.handlers)
 
