@@ -339,10 +339,12 @@ def _module_skip(tree: ast.Module) -> str | None:
     return None
 
 
-def _makes_a_declaring_node(tree: ast.Module) -> bool:
-    """True when the module makes a :data:`_DECLARING_EVERYTHING` node: one of the package's
-    processes may hand it the parameters a launch file gives any node of it."""
+@per_package
+def makes_a_declaring_node(package: Package) -> bool:
+    """True when an installed module makes a :data:`_DECLARING_EVERYTHING` node: one of the
+    package's processes may hand it the parameters a launch file gives any node of it."""
     return any(last_name(call.func) in _DECLARING_EVERYTHING  # type: ignore[attr-defined]
+               for _, tree, _ in installed_trees(package)
                for call in nodes_of_class(tree, ast.Call))
 
 
@@ -365,12 +367,8 @@ class ModuleNodes:
 def module_nodes(package: Package) -> dict[str, ModuleNodes]:
     """Every installed, parseable module's :class:`ModuleNodes`, by path."""
     found: dict[str, ModuleNodes] = {}
-    trees = installed_trees(package)
-    everything = next((f"`{module.path}` makes a MoveItPy node, which takes every parameter "
-                       "the process is given" for module, tree, _ in trees
-                       if _makes_a_declaring_node(tree)), None)
-    for module, tree, index in trees:
-        skip = _module_skip(tree) or everything
+    for module, tree, index in installed_trees(package):
+        skip = _module_skip(tree)
         direct = [c for c in index.classes
                   if any(index.qualified(b) in NODE_CLASSES for b in c.bases)]
         calls = tuple(_literal_string(name_argument(c)) for c in index.calls

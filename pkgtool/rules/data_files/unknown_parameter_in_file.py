@@ -7,7 +7,8 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.node_parameters import (
-    BUILT_IN, analysed_classes, file_entries, flat_parameters, near, span_of)
+    BUILT_IN, analysed_classes, file_entries, flat_parameters, makes_a_declaring_node, near,
+    span_of)
 from pkgtool.rules.registry import rule
 
 
@@ -54,6 +55,8 @@ def unknown_parameter_in_file(package: Package) -> Iterator[Hit]:
         period: 1.0
     ```
     """
+    if makes_a_declaring_node(package):
+        return  # a MoveItPy node in one of its processes may take any parameter given
     for entry in file_entries(package):
         classes = analysed_classes(package, entry.matched)
         if classes is None:

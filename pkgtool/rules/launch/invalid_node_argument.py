@@ -148,6 +148,15 @@ _ROS_OPTIONS = frozenset({"-r", "--remap", "-p", "--param", "--params-file", "-e
 """Options of ROS's own arguments, which come after ``--ros-args``."""
 
 
+def _ros_option(words: list[str]) -> bool:
+    """True for words that are ROS's own arguments: a long option of ROS's
+    (``--log-level``), or ``-r``/``-p`` given ROS's ``name:=value``."""
+    first = words[0]
+    if first.startswith("--"):
+        return first in _ROS_OPTIONS
+    return first in _ROS_OPTIONS and len(words) > 1 and ":=" in words[1]
+
+
 def _split_words(text: str, keyword: str) -> str:
     """The fix of an item holding several words: each word its own item, as a shell splits
     them (quoted text kept together), after ``'--ros-args'`` for ROS's own options."""
@@ -158,7 +167,7 @@ def _split_words(text: str, keyword: str) -> str:
     except ValueError:
         words = text.split()
     shown = ", ".join(repr(word) for word in words)
-    if keyword == "arguments" and words and words[0] in _ROS_OPTIONS:
+    if keyword == "arguments" and words and _ros_option(words):
         return (f"Write each word as an item, after `'--ros-args'`: {shown} (or give them "
                 "as `ros_arguments=`)")
     return f"Write each word as an item: {shown}"

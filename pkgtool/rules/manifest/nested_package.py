@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import posixpath
+import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -21,6 +22,13 @@ _KEPT_ASIDE = frozenset({"test", "tests", "example", "examples", "doc", "docs", 
 _IGNORE_MARKERS = frozenset({"COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE"})
 """Files that make colcon skip their folder."""
 _NAME = lazy_pattern(r"<name>\s*([^<\s]+)\s*</name>")
+
+
+def _named_in(folder: str, cmake: str) -> bool:
+    """True when the CMake text names ``folder`` as a path of its own (``add_subdirectory(
+    libs/geometry_lib)``, ``${CMAKE_CURRENT_SOURCE_DIR}/libs/geometry_lib``), not as a part
+    of another word (``find_package(demo_interfaces)`` does not name ``interfaces/``)."""
+    return re.search(rf"(?<![\w.-]){re.escape(folder)}(?![\w.-])", cmake) is not None
 
 
 def _in_python_package(package: Package, folder: str) -> bool:
@@ -70,7 +78,7 @@ def nested_package(package: Package) -> Iterator[Hit]:
     for path in package.files:
         folder, _, name = path.rpartition("/")
         if name != "package.xml" or not folder or _KEPT_ASIDE & set(folder.split("/")) or \
-                _in_python_package(package, folder) or folder in cmake or \
+                _in_python_package(package, folder) or _named_in(folder, cmake) or \
                 any(folder == above or folder.startswith(above + "/") for above in ignored):
             continue
         read = read_text(package.root, path)

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+import re
 import string
 from collections.abc import Iterator
 
@@ -120,9 +121,10 @@ def _percent_problem(node: ast.BinOp) -> str | None:
     while (start := template.find("%", at)) >= 0:
         found = PERCENT.match(template, start)
         if found is None and template.startswith("%(", start):
-            return None  # a key with brackets of its own (`%(a(b))s`): left alone
+            found = _bracketed_key(template, start)  # `%(a(b))s`: Python counts brackets
         if found is None:
-            shown = template[start:start + 2]
+            closing = template.find(")", start) if template.startswith("%(", start) else -1
+            shown = template[start:closing + 2] if closing > 0 else template[start:start + 2]
             return (f"`{shown}` is no conversion (write `%%` for a percent sign): `%` "
                     "formatting raises ValueError")
         if found["type"] != "%":
@@ -160,6 +162,20 @@ def _operator_problem(node: ast.BinOp) -> str | None:
         return None
     return (f"a str and a literal have no `{symbol}`: Python raises TypeError (`%` formats a "
             "string)")
+
+
+def _bracketed_key(template: str, start: int) -> re.Match[str] | None:
+    """The conversion at ``start`` whose key holds brackets of its own (``%(a(b))s``), read
+    as Python does: the key ends at the bracket that closes the first."""
+    depth, at = 0, start + 1
+    for at in range(start + 1, len(template)):
+        depth += {"(": 1, ")": -1}.get(template[at], 0)
+        if depth == 0:
+            break
+    if depth:
+        return None
+    rest = PERCENT.match("%" + template[at + 1:])
+    return rest if rest is not None and rest["key"] is None else None
 
 
 def _hit(path: str, node: ast.AST, problem: str) -> Hit:

@@ -7,6 +7,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity, shortened
 from pkgtool.knowledge.rosdistro import PYTHON_VERSIONS
+from pkgtool.model.installed import installed_modules
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
@@ -14,7 +15,12 @@ from pkgtool.rules.syntax_trees import Index, installed_trees
 
 _ALWAYS = (ast.List, ast.Dict, ast.Set, ast.ListComp, ast.DictComp, ast.SetComp)
 """Displays dataclasses refuse as defaults on every Python."""
-_BUILTIN_MAKERS = frozenset({"list", "dict", "set", "bytearray"})
+_LISTS_DICTS_SETS = frozenset({"list", "dict", "set", "collections.defaultdict",
+                               "collections.OrderedDict", "collections.Counter"})
+"""Calls making a list, dict or set (or a subclass): refused on every Python."""
+_OTHER_UNHASHABLE = frozenset({"bytearray", "collections.deque"})
+"""Calls making another unhashable value: refused from Python 3.11."""
+_DATACLASS_DECORATORS = frozenset({"dataclasses.dataclass", "pydantic.dataclasses.dataclass"})
 _ARRAY_MAKERS = frozenset({"array", "zeros", "ones", "empty", "full", "eye", "identity",
                            "arange", "linspace", "asarray", "zeros_like", "ones_like",
                            "empty_like", "full_like"})
@@ -31,10 +37,12 @@ def unhashable_dataclass_default(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports a field of a `@dataclass` class (annotated, not `ClassVar` or `InitVar`) whose
     default, written directly or as `field(default=...)`, is a list, dict or set (a display,
-    a comprehension, `list()`, `dict()`, `set()`), or, when the target's Python is 3.11 or
-    newer (Jazzy, Kilted, Rolling), a NumPy array (`np.zeros(3)`, `np.array([...])`) or an
-    instance of a ROS interface (`Pose()`: rosidl's classes define `__eq__`, so they are
-    unhashable too).
+    a comprehension, `list()`, `dict()`, `set()`, `defaultdict()`, `OrderedDict()`,
+    `Counter()`), or, when the target's Python is 3.11 or newer (Jazzy, Kilted, Rolling),
+    another unhashable value: a `bytearray()`, a `deque()`, a NumPy array (`np.zeros(3)`,
+    `np.array([...])`) or an instance of a ROS interface of another package (`Pose()`:
+    rosidl's classes define `__eq__`, so they are unhashable too). Pydantic's dataclasses
+    refuse the same defaults.
 
     ## Why is this bad?
     `dataclasses` refuses an unhashable default when the class is created, which is when
@@ -61,30 +69,34 @@ def unhashable_dataclass_default(package: Package) -> Iterator[Hit]:
     """
     python = PYTHON_VERSIONS.get(package.context.distro, "3.12")
     any_unhashable = tuple(int(part) for part in python.split(".")) >= (3, 11)
+    own = {name.split(".")[0] for name in installed_modules(package) or {}}
     for module, _, index in installed_trees(package):
-        if not any(i.top_level == "dataclasses" for i in module.imports):
+        if not any(i.top_level in ("dataclasses", "pydantic") for i in module.imports):
             continue
         for cls in index.classes:
             if not any(_is_dataclass(d, index) for d in cls.decorator_list):
                 continue
             for statement in cls.body:
                 default = _default(statement, index)
-                kind = _refused(default, index, any_unhashable) if default is not None else None
+                kind = _refused(default, index, any_unhashable, own) \
+                    if default is not None else None
                 if kind is not None:
                     assert isinstance(statement, ast.AnnAssign)
                     name = ast.unparse(statement.target)
+                    when = "the module is imported" if index.enclosing_function(cls) is None \
+                        else "the function defining it runs"
                     yield Hit(Span(module.path, statement.lineno, statement.col_offset + 1),
                               f"The default of the dataclass field `{name}` is {kind} "
                               f"(`{shortened(ast.unparse(default))}`): creating the class "
                               "raises ValueError (mutable default ... use default_factory) "
-                              "when the module is imported")
+                              f"when {when}")
 
 
 def _is_dataclass(decorator: ast.expr, index: Index) -> bool:
     """True for ``@dataclass``, ``@dataclasses.dataclass`` and either called with options."""
     target = decorator.func if isinstance(decorator, ast.Call) else decorator
     return isinstance(target, (ast.Name, ast.Attribute)) and \
-        index.qualified(target) == "dataclasses.dataclass"
+        index.qualified(target) in _DATACLASS_DECORATORS
 
 
 def _default(statement: ast.stmt, index: Index) -> ast.expr | None:
@@ -93,8 +105,7 @@ def _default(statement: ast.stmt, index: Index) -> ast.expr | None:
     if not isinstance(statement, ast.AnnAssign) or statement.value is None or \
             not isinstance(statement.target, ast.Name):
         return None
-    annotation = ast.unparse(statement.annotation)
-    if "ClassVar" in annotation or "InitVar" in annotation:
+    if _pseudo_field(statement.annotation, index):
         return None
     value = statement.value
     if isinstance(value, ast.Call) and isinstance(value.func, (ast.Name, ast.Attribute)) and \
@@ -103,21 +114,44 @@ def _default(statement: ast.stmt, index: Index) -> ast.expr | None:
     return value
 
 
-def _refused(value: ast.expr, index: Index, any_unhashable: bool) -> str | None:
-    """What kind of unhashable value ``value`` is, when dataclasses refuse it."""
+_PSEUDO_FIELDS = frozenset({"ClassVar", "InitVar"})
+
+
+def _pseudo_field(annotation: ast.expr, index: Index) -> bool:
+    """True for a ``ClassVar[...]`` or ``InitVar[...]`` annotation (under any import name, or
+    written as text): not a field, whose default dataclasses never check."""
+    if isinstance(annotation, ast.Constant) and isinstance(annotation.value, str):
+        return annotation.value.split("[")[0].rpartition(".")[2] in _PSEUDO_FIELDS
+    root = annotation.value if isinstance(annotation, ast.Subscript) else annotation
+    if not isinstance(root, (ast.Name, ast.Attribute)):
+        return False
+    qualified = index.qualified(root) or ast.unparse(root)
+    return qualified.rpartition(".")[2] in _PSEUDO_FIELDS
+
+
+def _refused(value: ast.expr, index: Index, any_unhashable: bool,
+             own: set[str]) -> str | None:
+    """What kind of unhashable value ``value`` is, when dataclasses refuse it (``own``: the
+    package's top-level modules, whose classes are no rosidl interfaces)."""
     if isinstance(value, _ALWAYS):
         return "a list, dict or set"
     if not isinstance(value, ast.Call) or not isinstance(value.func, (ast.Name, ast.Attribute)):
         return None
-    if isinstance(value.func, ast.Name) and value.func.id in _BUILTIN_MAKERS and \
-            value.func.id not in index.bound:
-        return f"a new {value.func.id}"
-    qualified = index.qualified(value.func) or ""
-    parts = qualified.split(".")
-    if not any_unhashable or len(parts) < 2:
+    builtin = value.func.id if isinstance(value.func, ast.Name) and \
+        value.func.id not in index.bound else None
+    qualified = builtin or index.qualified(value.func) or ""
+    if qualified in _LISTS_DICTS_SETS:
+        return f"a new {qualified.rpartition('.')[2]}"
+    if not any_unhashable:
         return None
-    if parts[0] == "numpy" and parts[-1] in _ARRAY_MAKERS and len(parts) == 2:
+    if qualified in _OTHER_UNHASHABLE:
+        return f"a new {qualified.rpartition('.')[2]}"
+    parts = qualified.split(".")
+    if len(parts) == 2 and parts[0] == "numpy" and parts[-1] in _ARRAY_MAKERS:
         return "a NumPy array"
-    if parts[-2] in _INTERFACE_MODULES or len(parts) > 2 and parts[-3] in _INTERFACE_MODULES:
+    if parts[0] not in own and (len(parts) == 3 and parts[1] in _INTERFACE_MODULES or
+                                len(parts) == 4 and parts[1] in _INTERFACE_MODULES and
+                                parts[3] in ("Request", "Response", "Goal", "Result",
+                                             "Feedback")):
         return "a ROS message (rosidl's classes are unhashable)"
     return None
