@@ -560,13 +560,21 @@ def beside_the_scripts(package: Package) -> frozenset[str]:
     ``lib/<package>/helpers/gait.py``), and the ``.py`` files of ``scripts=`` (into setup.cfg's
     ``install_scripts``, which SET009 wants there): Python puts a script's folder first on
     the path, so they import by their bare names."""
-    library = f"lib/{package.name}/"
-    below = (posixpath.normpath(target)[len(library):] for target in installed_data(package) or ()
-             if posixpath.normpath(target).startswith(library) and target.endswith(".py"))
-    copied = {path.split("/")[0].removesuffix(".py") for path in below}  # a module, a package
+    copied = {path.split("/")[0].removesuffix(".py")  # a module, a package
+              for path in copied_beside_the_scripts(package)}
     scripts = package.setup_py.scripts if package.setup_py else None
     return frozenset(copied) | {posixpath.basename(script)[:-3]
                                 for script in scripts or () if script.endswith(".py")}
+
+
+@per_package
+def copied_beside_the_scripts(package: Package) -> frozenset[str]:
+    """The Python files data_files copies into ``lib/<package>/``, as paths below it
+    (``helpers/gait.py``)."""
+    library = f"lib/{package.name}/"
+    return frozenset(posixpath.normpath(target)[len(library):]
+                     for target in installed_data(package) or ()
+                     if posixpath.normpath(target).startswith(library) and target.endswith(".py"))
 
 
 def local_modules(package: Package, module: PythonModule) -> frozenset[str]:

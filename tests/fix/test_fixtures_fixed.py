@@ -116,7 +116,8 @@ MANUAL = {("PYC078", "habits_of_other_languages"),
           ("LCH001", "executables_of_a_loop"), ("LCH001", "cmake_executables_never_installed"),
           ("DAT009", "default_name_from_code"),
           ("DAT009", "xml_and_yaml_launch"), ("LCH003", "gazebo_classic_module"),
-          ("DEP007", "cmake_script_without_its_helpers")}
+          ("DEP007", "cmake_script_without_its_helpers"),
+          ("DEP007", "helper_package_copied_in_part")}
 """MAN018 fixes pip and import names only; build types, ROS 1 packages and standard library modules
 need the user (a `<build_type>`, a ROS 2 replacement, or nothing). DAT001 fixes a string of
 sources and creates the (empty) ament index marker: other missing files have content only their
@@ -142,7 +143,8 @@ needs the `if` its author meant. An executable a launch file loops over (LCH001)
 a list the fixer does not edit, and MoveIt config packages no release has (LCH002) are the
 author's to name. DEP007's fixer rewrites Python imports; a script CMake installs
 without the modules beside it needs an `install()` only the author places (no CMake fixer), and
-so does a catkin package without its CMakeLists.txt (MAN015)."""
+so does a catkin package without its CMakeLists.txt (MAN015); a helper package data_files copies
+only in part needs the data_files entry its author writes."""
 
 FOLDED = {("DEP001", "pip_name_instead_of_key")}
 """Cases whose findings fold into the finding of their cause when every rule runs: the pip name

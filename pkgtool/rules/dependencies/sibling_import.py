@@ -12,7 +12,8 @@ from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import (ANY, console_script_files, declared, enclosing_package_import,
                                    installed_code, path_modules, python_package_of,
-                                   beside_the_scripts, importers_of, run_as_a_script,
+                                   beside_the_scripts, copied_beside_the_scripts, importers_of,
+                                   run_as_a_script,
                                    runs_code_at_its_top)
 from pkgtool.rules.dependencies._cmake_scripts import uninstalled_script_neighbours
 from pkgtool.rules.registry import rule
@@ -51,7 +52,9 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     reports the same mistake in the scripts `install(PROGRAMS ... DESTINATION lib/...)`
     installs: an import of a module or package beside the script in the source tree that
     CMakeLists.txt does not install (nor puts in a Python package with
-    `ament_python_install_package`), when what it installs is known.
+    `ament_python_install_package`), when what it installs is known. And an import of a
+    module of a folder data_files copies beside the console scripts that the copy leaves out
+    (`from helpers.pose import x` when only `helpers/gait.py` goes into `lib/<package>/`).
 
     ## Why is this bad?
     `python3 my_pkg/node.py` puts the file's folder on `sys.path`, so the import works while
@@ -83,6 +86,7 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
     skip = top_level | stdlib_modules(package.context.distro) | declared(package, ANY).keys() | \
         beside_the_scripts(package)
     scripts = console_script_files(package)
+    copied = copied_beside_the_scripts(package)
     helpers: dict[str, frozenset[str]] = {}  # by folder, worked out when first needed
     for module in installed_code(package):
         folder = posixpath.dirname(module.path)
@@ -94,6 +98,15 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
         on_path = path_modules(package, module)
         for imported in module.imports:
             top = imported.top_level
+            missing = _not_copied(imported, copied) if not imported.guarded and not (
+                top in top_level and f"{top}/__init__.py" not in copied) else None
+            if missing is not None:
+                yield Hit(imported.span, f"`{missing}` is not copied beside the console "
+                          f"scripts: data_files copies only {_listed(copied, top)} of "
+                          f"`{top}/` into `lib/{package.name}/`, so the import fails once "
+                          "installed", f"Copy `{missing.replace('.', '/')}.py` with the rest "
+                          f"of `{top}/` in data_files")
+                continue
             if imported.guarded or not top or top in skip or any(
                     line < imported.span.line and top in names for line, names in on_path):
                 continue  # a folder the module puts on sys.path first holds it
@@ -127,6 +140,23 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
             yield Hit(imported.span, f"`{top}` is a module next to `{module.path}`, not a "
                                      f"top-level module: the import fails once installed",
                       f"Import `{parent}.{top}` (or `.{top}`) instead")
+
+
+def _not_copied(imported: Import, copied: frozenset[str]) -> str | None:
+    """The dotted module ``imported`` names inside a folder data_files copies beside the
+    scripts (``helpers.pose`` of ``from helpers.pose import x``) when that module is not among
+    the copied files (the script's folder comes first on the path, so the copy is the package
+    Python finds); None for anything else."""
+    parts = (imported.module or "").split(".")
+    if imported.level or len(parts) < 2 or not any(c.startswith(parts[0] + "/") for c in copied):
+        return None
+    path = "/".join(parts)
+    return None if f"{path}.py" in copied or f"{path}/__init__.py" in copied else imported.module
+
+
+def _listed(copied: frozenset[str], top: str) -> str:
+    """The files of ``top/`` that are copied, for the message."""
+    return ", ".join(f"`{c}`" for c in sorted(copied) if c.startswith(top + "/"))
 
 
 def _namespace_folder(package: Package, folder: str, top: str) -> str | None:
