@@ -32,8 +32,9 @@ from typing import Any
 from pkgtool.records import record
 
 PACKAGE_MARKERS = ("package.xml", "setup.py")
-IGNORE_MARKERS = frozenset({"COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE",
-                            "_setup_util.py", "_order_isolated_packages.py"})
+SKIP_MARKERS = frozenset({"COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE"})
+"""Files that make colcon (and ament, catkin) skip their folder."""
+IGNORE_MARKERS = SKIP_MARKERS | {"_setup_util.py", "_order_isolated_packages.py"}
 SKIPPED_NAMES = frozenset({"__pycache__", "node_modules", "site-packages"})
 GENERATED_MARKERS = frozenset({"pyvenv.cfg", "CMakeCache.txt"})
 VENDORED_NAMES = frozenset({"include"})

@@ -135,6 +135,15 @@ def _index_depth(name: str) -> int:
     return 1 if name.isidentifier() and name not in _NOT_MODULES else 0
 
 
+def manifest_name(manifest: str) -> str | None:
+    """The ``<name>`` a package.xml's text gives (an old manifest kept in a comment names
+    nothing), or None."""
+    if "<!--" in manifest:
+        manifest = _COMMENT.sub("", manifest)
+    found = _NAME.search(manifest)
+    return found.group(1) if found else None
+
+
 def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> WorkspacePackage:
     """Name (package.xml, else the folder), interfaces and Python packages of ``root``.
 
@@ -144,10 +153,7 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
     base = os.fspath(root)
     setup = functools.cache(lambda: setup_texts(base))  # read once, if at all
     manifest = _read(os.path.join(base, "package.xml"))
-    if manifest is not None and "<!--" in manifest:
-        manifest = _COMMENT.sub("", manifest)  # an old manifest kept in a comment names nothing
-    found = _NAME.search(manifest) if manifest is not None else None
-    name = found.group(1) if found else \
+    name = (manifest_name(manifest) if manifest is not None else None) or \
         (_setup_name(*setup()) if manifest is None else None) or root.name
     kinds: dict[str, set[str]] = {}
     modules: set[str] = set()

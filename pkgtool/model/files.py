@@ -11,7 +11,7 @@ from typing import Callable
 
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.records import record
-from pkgtool.workspace import listing
+from pkgtool.workspace import SKIP_MARKERS, listing
 
 MAX_FILE_BYTES = 2 * 1024 * 1024
 """Files larger than this are not parsed (a ``too-large`` problem instead)."""
@@ -35,7 +35,7 @@ _OLD_VIRTUALENV = frozenset({"orig-prefix.txt", "no-global-site-packages.txt"})
 instead of the ``pyvenv.cfg`` of newer environments."""
 
 
-_NESTED_MARKERS = frozenset({"package.xml", "COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE"})
+_NESTED_MARKERS = SKIP_MARKERS | {"package.xml"}
 """The files of a nested package that are listed: its package.xml, and whether colcon skips it."""
 
 

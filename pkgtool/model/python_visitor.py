@@ -16,7 +16,9 @@ from pkgtool.model.static_branches import mentions_module_name, module_constants
 _GUARD_EXCEPTIONS = frozenset({"ImportError", "ModuleNotFoundError", "Exception", "BaseException"})
 
 
-def _catches_import_error(handler: ast.ExceptHandler) -> bool:
+def catches_import_error(handler: ast.ExceptHandler) -> bool:
+    """True for a handler that catches ImportError (bare, or naming it, ModuleNotFoundError,
+    Exception or BaseException)."""
     if handler.type is None:
         return True
     types = handler.type.elts if isinstance(handler.type, ast.Tuple) else [handler.type]
@@ -88,7 +90,7 @@ def _import_probes(tree: ast.Module) -> frozenset[str]:
         if isinstance(function, (ast.FunctionDef, ast.AsyncFunctionDef))
         and any(isinstance(node, TRIES)
                 and any(isinstance(s, (ast.Import, ast.ImportFrom)) for s in node.body)
-                and any(_catches_import_error(h) and not handler_stops(h) for h in node.handlers)
+                and any(catches_import_error(h) and not handler_stops(h) for h in node.handlers)
                 for node in subtree(function)))
 
 
@@ -107,9 +109,9 @@ def _guarded_parts(node: ast.AST, constants: dict[str, bool],
     the module (``at_top``) whose handler stops the program guards nothing: the module cannot
     be imported without what it imports (in a function or a branch, it is a feature's)."""
     if isinstance(node, TRIES):
-        return (_block(node.body, any(_catches_import_error(h) and
+        return (_block(node.body, any(catches_import_error(h) and
                                       not (at_top and handler_stops(h)) for h in node.handlers))
-                + [(h, _catches_import_error(h)) for h in node.handlers]
+                + [(h, catches_import_error(h)) for h in node.handlers]
                 + _block(node.orelse, False) + _block(node.finalbody, False))
     if isinstance(node, ast.If):
         value = truth(node.test, constants)
@@ -186,7 +188,7 @@ def _in_try_with_fallback(node: ast.AST, parents: dict[int, ast.AST]) -> bool:
     child, parent = node, parents.get(id(node))
     while parent is not None:
         if isinstance(parent, TRIES) and any(child is part for part in parent.body) and any(
-                _catches_import_error(h) and not handler_stops(h) for h in parent.handlers):
+                catches_import_error(h) and not handler_stops(h) for h in parent.handlers):
             return True
         child, parent = parent, parents.get(id(parent))
     return False

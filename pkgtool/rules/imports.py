@@ -726,10 +726,9 @@ def _lazy_extra(package: Package, module: PythonModule, imported: Import) -> boo
 def _normalised(name: str) -> str:
     """A distribution or module name as PEP 503 compares them (lower case, ``-`` for any run
     of ``-``, ``_`` and ``.``)."""
-    return _SEPARATORS.sub("-", name).lower()
+    from packaging.utils import canonicalize_name  # only here: few packages list extras
 
-
-_SEPARATORS = lazy_pattern(r"[-_.]+")
+    return canonicalize_name(name)
 
 
 _REQUIREMENT_NAME = lazy_pattern(r"\s*([A-Za-z0-9][A-Za-z0-9._-]*)")

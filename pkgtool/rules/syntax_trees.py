@@ -313,9 +313,15 @@ def python_launch_files(package: Package) -> Iterator[tuple[str, PythonModule, s
             yield launch.path, module, text
 
 
-def launch_indexes(package: Package) -> Iterator[tuple[str, Index]]:
-    """(path, index of its syntax tree) of each file :func:`python_launch_files` gives."""
+def launch_trees(package: Package) -> Iterator[tuple[str, ast.Module, Index]]:
+    """(path, syntax tree, index) of each file :func:`python_launch_files` gives."""
     for path, _, text in python_launch_files(package):
         tree = parse_tree(path, text)
         if isinstance(tree, ast.Module):
-            yield path, index_of(tree)
+            yield path, tree, index_of(tree)
+
+
+def launch_indexes(package: Package) -> Iterator[tuple[str, Index]]:
+    """(path, index of its syntax tree) of each file :func:`python_launch_files` gives."""
+    for path, _, index in launch_trees(package):
+        yield path, index

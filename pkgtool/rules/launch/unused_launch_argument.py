@@ -10,7 +10,7 @@ from pkgtool.knowledge.rosdistro import any_stdlib_module
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.launch._python_launch import text_argument
+from pkgtool.rules.launch._python_launch import launch_class, text_argument
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, launch_indexes
 
@@ -67,12 +67,13 @@ def unused_launch_argument(package: Package) -> Iterator[Hit]:
     ```
     """
     for path, index in launch_indexes(package):
-        declared = [call for call in index.calls if _class(call, index) == "DeclareLaunchArgument"]
+        declared = [call for call in index.calls
+                    if launch_class(call, index)[1] == "DeclareLaunchArgument"]
         if not declared or not _readable(index) or not _starts_something(index):
             continue
         names = [text_argument(call, "name") for call in declared]
         reads = [text_argument(call, "variable_name") for call in index.calls
-                 if _class(call, index) == "LaunchConfiguration"]
+                 if launch_class(call, index)[1] == "LaunchConfiguration"]
         if None in names or None in reads:
             continue
         named = {id(call.args[0]) if call.args else
@@ -88,13 +89,6 @@ def unused_launch_argument(package: Package) -> Iterator[Hit]:
                           f"value: `{name}:=...` on the command line changes nothing")
 
 
-def _class(call: ast.Call, index: Index) -> str:
-    """The launch class ``call`` makes (by its last name, aliases resolved), else ``""``."""
-    qualified = index.qualified(call.func) or ""
-    module, _, name = qualified.rpartition(".")
-    return name if module.split(".")[0] in ("launch", "launch_ros") else ""
-
-
 def _readable(index: Index) -> bool:
     """True when every read of a configuration shows in the file: it imports only modules
     of :data:`_PLAIN_MODULES` and the standard library, uses none of :data:`_PASSED_ON`, and
@@ -103,7 +97,8 @@ def _readable(index: Index) -> bool:
     modules = {module.split(".")[0] for module in index.aliases.values()}
     return not modules - _PLAIN_MODULES - any_stdlib_module() and \
         not index.relative and \
-        not any(_class(call, index) in _PASSED_ON or _substitutes(call) for call in index.calls)
+        not any(launch_class(call, index)[1] in _PASSED_ON or _substitutes(call)
+                for call in index.calls)
 
 
 def _substitutes(call: ast.Call) -> bool:
@@ -115,6 +110,5 @@ def _substitutes(call: ast.Call) -> bool:
 def _starts_something(index: Index) -> bool:
     """True when the file makes a launch action other than declaring arguments (a node, a
     process, a group): a file of declarations alone is included by others, which read them."""
-    return any(_class(call, index) not in ("", "DeclareLaunchArgument") and
-               (index.qualified(call.func) or "").split(".")[1:2] == ["actions"]
-               for call in index.calls)
+    return any(name != "DeclareLaunchArgument" and module.split(".")[1:2] == ["actions"]
+               for module, name in (launch_class(call, index) for call in index.calls))

@@ -7,8 +7,8 @@ import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.lazy_regex import lazy_pattern
-from pkgtool.model.files import TextFile, read_text
+from pkgtool.model.context import manifest_name
+from pkgtool.model.files import SKIP_MARKERS, TextFile, read_text
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
@@ -19,9 +19,6 @@ _KEPT_ASIDE = frozenset({"test", "tests", "example", "examples", "doc", "docs", 
                          "extern", "vendor", "deps"})
 """Folders whose packages are test data, examples to copy, templates or vendored libraries
 (built by this package's own build, or kept as they came): kept out of colcon on purpose."""
-_IGNORE_MARKERS = frozenset({"COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE"})
-"""Files that make colcon skip their folder."""
-_NAME = lazy_pattern(r"<name>\s*([^<\s]+)\s*</name>")
 
 
 def _named_in(folder: str, cmake: str) -> bool:
@@ -73,7 +70,7 @@ def nested_package(package: Package) -> Iterator[Hit]:
     """
     outer = package.name
     ignored = {path.rpartition("/")[0] for path in package.files
-               if path.rpartition("/")[2] in _IGNORE_MARKERS}
+               if path.rpartition("/")[2] in SKIP_MARKERS}
     cmake = package.texts.get("CMakeLists.txt", "")
     for path in package.files:
         folder, _, name = path.rpartition("/")
@@ -82,8 +79,8 @@ def nested_package(package: Package) -> Iterator[Hit]:
                 any(folder == above or folder.startswith(above + "/") for above in ignored):
             continue
         read = read_text(package.root, path)
-        found = _NAME.search(read.text) if isinstance(read, TextFile) else None
-        inner = found.group(1) if found else posixpath.basename(folder)
+        inner = (manifest_name(read.text) if isinstance(read, TextFile) else None) or \
+            posixpath.basename(folder)
         if inner != outer:
             yield Hit(Span(path, 1, 1),
                       f"`{folder}/` holds the package `{inner}`, which colcon never builds: it "

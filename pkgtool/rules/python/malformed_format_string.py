@@ -11,12 +11,11 @@ from pkgtool.findings import Hit, Severity, shortened
 from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
-from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import unpacks
 from pkgtool.rules.python._format_specs import PERCENT
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, index_of, installed_trees, python_launch_files
+from pkgtool.rules.syntax_trees import installed_trees, launch_trees
 
 _FIELD_NAME = lazy_pattern(r"[^.\[]*")
 """The argument part of a replacement field (``name`` of ``name.attr`` or ``name[0]``)."""
@@ -57,7 +56,8 @@ def malformed_format_string(package: Package) -> Iterator[Hit]:
     self.get_logger().info('Battery at %d%%' % level)
     ```
     """
-    for path, tree, index in _checked_trees(package):
+    installed = ((module.path, tree, index) for module, tree, index in installed_trees(package))
+    for path, tree, index in [*installed, *launch_trees(package)]:
         for call in index.calls:
             func = call.func
             if isinstance(func, ast.Attribute) and func.attr == "format" and \
@@ -75,16 +75,6 @@ def malformed_format_string(package: Package) -> Iterator[Hit]:
                 _operator_problem(node)
             if problem is not None:
                 yield _hit(path, node, problem)
-
-
-def _checked_trees(package: Package) -> Iterator[tuple[str, ast.Module, Index]]:
-    """(path, tree, index) of the installed modules and the Python launch files."""
-    for module, tree, index in installed_trees(package):
-        yield module.path, tree, index
-    for path, _, text in python_launch_files(package):
-        tree = parse_tree(path, text)
-        if isinstance(tree, ast.Module):
-            yield path, tree, index_of(tree)
 
 
 def _format_problem(template: str, call: ast.Call) -> str | None:

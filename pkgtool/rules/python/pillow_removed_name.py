@@ -10,6 +10,7 @@ from pkgtool.knowledge.pillow_removed import (DRAW_MAKERS, FONT_MAKERS, REMOVED_
                                               REMOVED_DRAW_METHODS, REMOVED_FONT_METHODS,
                                               SYSTEM_PILLOW)
 from pkgtool.model.package import Package
+from pkgtool.model.python_visitor import catches_import_error
 from pkgtool.model.span import Span
 from pkgtool.rules.python._attribute_guards import guarded, probed_names
 from pkgtool.rules.registry import rule
@@ -89,8 +90,7 @@ def _for_old_pillow(node: ast.AST, index: Index) -> bool:
         if isinstance(parent, (ast.If, ast.IfExp)) and child is not parent.test and \
                 _VERSION_TESTS & _names_in(parent.test):
             return True
-        if isinstance(parent, ast.Try) and any(_catches_import_error(h)
-                                               for h in parent.handlers):
+        if isinstance(parent, ast.Try) and any(catches_import_error(h) for h in parent.handlers):
             return True
         child, parent = parent, index.parents.get(id(parent))
     return False
@@ -100,15 +100,6 @@ def _names_in(test: ast.expr) -> set[str]:
     """The names and attribute names a test reads."""
     return {node.id if isinstance(node, ast.Name) else node.attr for node in ast.walk(test)
             if isinstance(node, (ast.Name, ast.Attribute))}
-
-
-def _catches_import_error(handler: ast.ExceptHandler) -> bool:
-    """True for a handler of ImportError (or ModuleNotFoundError, Exception, anything)."""
-    caught = handler.type
-    names = [caught] if caught is None or not isinstance(caught, ast.Tuple) else caught.elts
-    return any(name is None or isinstance(name, ast.Name) and name.id in
-               ("ImportError", "ModuleNotFoundError", "Exception", "BaseException")
-               for name in names)
 
 
 def _removed_method(call: ast.Call, index: Index) -> tuple[str, str] | None:
