@@ -1,16 +1,34 @@
 """Attribute reads that code expects may fail (PYC019, PYC023): names the module probes
-with ``hasattr``/``getattr``, and reads inside a ``try`` that catches AttributeError."""
+with ``hasattr``/``getattr``, and reads inside a ``try`` that catches AttributeError; and
+modules whose attributes may be made in ways not written as ``x.name = ...`` (PYC023,
+PYC087)."""
 
 from __future__ import annotations
 
 import ast
 
-from pkgtool.model.ast_nodes import descendants
+from pkgtool.model.ast_nodes import descendants, nodes_of_class
 from pkgtool.model.memo import per_tree
 from pkgtool.rules.syntax_trees import Index
 
 _BROAD = frozenset({"Exception", "BaseException"})
 _PROBES = frozenset({"hasattr", "getattr"})
+_DYNAMIC = frozenset({"setattr", "delattr", "vars", "__dict__", "__getattr__",
+                      "__getattribute__", "__setattr__", "__slots__"})
+"""Names whose use in a module means any attribute may exist."""
+_BUILTINS = _DYNAMIC | {"exec"}
+"""Those names, and builtins that do the same (``exec('self.x = 1')``), read as names (an
+attribute ``app.exec`` is another thing)."""
+
+
+def dynamic_attributes(tree: ast.Module) -> bool:
+    """True when the module may create attributes in ways not written as ``x.name = ...``."""
+    return (any(isinstance(n, ast.Name) and n.id in _BUILTINS
+                for n in nodes_of_class(tree, ast.Name))
+            or any(isinstance(n, ast.Attribute) and n.attr in _DYNAMIC
+                   for n in nodes_of_class(tree, ast.Attribute))
+            or any(isinstance(n, ast.FunctionDef) and n.name in _DYNAMIC
+                   for n in nodes_of_class(tree, ast.FunctionDef)))
 
 
 def probed_names(index: Index) -> frozenset[str]:

@@ -15,7 +15,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.records import record
 from pkgtool.rules.node_api import derives_from_node_alone
-from pkgtool.rules.python._attribute_guards import guarded, probed_names
+from pkgtool.rules.python._attribute_guards import dynamic_attributes, guarded, probed_names
 from pkgtool.rules.python._assignments import (annotated_name, assigned_values, is_none,
                                                parameter_annotation, receiver_store)
 from pkgtool.rules.python._message_instances import (attributes_taken, known_messages,
@@ -28,14 +28,6 @@ from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import scope_bindings
 from pkgtool.rules.syntax_trees import Index, base_names, installed_trees
 
-_DYNAMIC = frozenset({"setattr", "delattr", "vars", "__dict__", "__getattr__",
-                      "__getattribute__", "__setattr__", "__slots__"})
-"""Names whose use in a module means any attribute may exist."""
-_BUILTINS = _DYNAMIC | {"exec"}
-"""Those names, and builtins that do the same (``exec('self.x = 1')``), read as names (an
-attribute ``app.exec`` is another thing)."""
-
-
 _OBJECT_NAMES = frozenset({
     "__class__", "__del__", "__delattr__", "__dict__", "__dir__", "__doc__", "__enter__",
     "__eq__", "__exit__", "__format__", "__ge__", "__getattribute__", "__getstate__", "__gt__",
@@ -44,16 +36,6 @@ _OBJECT_NAMES = frozenset({
     "__str__", "__subclasshook__", "__weakref__"})
 """What every class has from ``object`` (Python 3.10-3.13), and the context manager methods
 rclpy's newer nodes add."""
-
-
-def _dynamic(tree: ast.Module) -> bool:
-    """True when the module may create attributes in ways not written as ``x.name = ...``."""
-    return (any(isinstance(n, ast.Name) and n.id in _BUILTINS
-                for n in nodes_of_class(tree, ast.Name))
-            or any(isinstance(n, ast.Attribute) and n.attr in _DYNAMIC
-                   for n in nodes_of_class(tree, ast.Attribute))
-            or any(isinstance(n, ast.FunctionDef) and n.name in _DYNAMIC
-                   for n in nodes_of_class(tree, ast.FunctionDef)))
 
 
 def _augmented(tree: ast.Module) -> set[int]:
@@ -153,7 +135,7 @@ def _lineage(package: Package, cls: ast.ClassDef, tree: ast.Module, index: Index
     if imported is not None:
         tree, index = modules_by_name(package)[imported[0]]
         parent = defined_once(tree, imported[1], ast.ClassDef)
-    if not isinstance(parent, ast.ClassDef) or parent.decorator_list or _dynamic(tree):
+    if not isinstance(parent, ast.ClassDef) or parent.decorator_list or dynamic_attributes(tree):
         return None
     found = _lineage(package, parent, tree, index, depth + 1)
     if found is None:
@@ -290,7 +272,7 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
     facts: tuple[_Stores, frozenset[str]] | None = None
     for module, tree, index in installed_trees(package):
         if not any(i.top_level == "rclpy" for i in module.imports) and \
-                not any(cls.bases for cls in index.classes) or _dynamic(tree):
+                not any(cls.bases for cls in index.classes) or dynamic_attributes(tree):
             continue  # neither rclpy's classes nor subclasses of the package's
         facts = facts or _package_facts(package)
         stored, bases = facts

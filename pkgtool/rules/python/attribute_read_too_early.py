@@ -1,0 +1,302 @@
+"""PYC087: a node's ``__init__`` reads ``self.x`` before anything has assigned it."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
+from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.node_api import derives_from_node_alone
+from pkgtool.rules.python._attribute_guards import dynamic_attributes
+from pkgtool.rules.python._message_instances import method_receiver
+from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import FUNCTIONS, base_names, installed_trees
+
+_PARAMETER_CALLBACKS = frozenset({"add_on_set_parameters_callback",
+                                  "add_pre_set_parameters_callback",
+                                  "add_post_set_parameters_callback"})
+"""Node methods registering code that later Node calls (``declare_parameter``) run."""
+
+
+@rule("PYC087", "attribute-read-too-early", Severity.ERROR,
+      fix="Assign the attribute (or call `super().__init__()`) before the line that reads it")
+def attribute_read_too_early(package: Package) -> Iterator[Hit]:
+    """A node's `__init__` reads an attribute of `self` before anything has set it.
+
+    ## What it does
+    Follows the statements of the `__init__` of a class deriving from rclpy's `Node` alone
+    (no decorator, no metaclass, not extended by another class of the package) in order, and
+    reports a read of `self.x` that certainly runs (not in a branch, a loop body, a `try`, a
+    `with`, a lambda or the right of `and`/`or`) before any statement has assigned
+    `self.x`, when `x` is not a class attribute, a method or a property of the class, nor an
+    attribute of rclpy's `Node`. Also reports a call of one of the Node's methods
+    (`self.get_logger()`, `self.declare_parameter(...)`) before the statement calling
+    `super().__init__(...)`. The walk stops at the first statement that may run code of the
+    package able to set attributes: a call of one of the class's own methods, `self` handed
+    to anything (`helper(self)`, `rclpy.spin_once(self)`), a method, local function or lambda
+    handed to anything but the node's own `create_*` methods (a thread's target), or a
+    parameter callback registered (declaring a parameter runs it). Modules that make
+    attributes dynamically (`setattr`, `__getattr__`, `__dict__`) are left alone.
+
+    ## Why is this bad?
+    Python creates an instance attribute when it is first assigned, so reading it earlier
+    raises `AttributeError: 'Talker' object has no attribute 'period'` and the node dies as
+    it is created; a Node's own attributes exist only once `Node.__init__` has run. The
+    usual cause is statements moved around: the timer made before the period it uses is
+    stored.
+
+    ## Example
+    ```python
+    class Talker(Node):
+        def __init__(self):
+            super().__init__('talker')
+            self.timer = self.create_timer(self.period, self.tick)
+            self.period = 0.5
+    ```
+
+    ## Use instead
+    ```python
+    class Talker(Node):
+        def __init__(self):
+            super().__init__('talker')
+            self.period = 0.5
+            self.timer = self.create_timer(self.period, self.tick)
+    ```
+    """
+    extended = base_names(package)
+    set_outside: dict[str, set[str]] | None = None
+    for module, tree, index in installed_trees(package):
+        classes = [c for c in index.classes if derives_from_node_alone(c, index)
+                   and not c.decorator_list and c.name not in extended]
+        if not classes or dynamic_attributes(tree):
+            continue
+        set_outside = _stored_on_names(package) if set_outside is None else set_outside
+        for cls in classes:
+            init = _init_of(cls)
+            if init is not None and method_receiver(init) == "self" and not any(
+                    isinstance(s, FUNCTIONS) and s.name == "__new__" for s in cls.body):
+                walk = _Walk(cls, init, set_outside.get(cls.name, set()))
+                for node, message in walk.early_reads():
+                    yield Hit(Span(module.path, node.lineno, node.col_offset + 1), message)
+
+
+def _stored_on_names(package: Package) -> dict[str, set[str]]:
+    """The attributes the installed modules store on a name (``Talker.period = 0.5``: a
+    class attribute made outside the class), by that name."""
+    stored: dict[str, set[str]] = {}
+    for _, tree, _ in installed_trees(package):
+        for node in nodes_of_class(tree, ast.Attribute):
+            assert isinstance(node, ast.Attribute)
+            if not isinstance(node.ctx, ast.Load) and isinstance(node.value, ast.Name):
+                stored.setdefault(node.value.id, set()).add(node.attr)
+    return stored
+
+
+def _init_of(cls: ast.ClassDef) -> ast.FunctionDef | None:
+    """The class's one ``__init__`` (None when it has none, or defines it more than once)."""
+    found = [s for s in cls.body if isinstance(s, FUNCTIONS) and s.name == "__init__"]
+    return found[0] if len(found) == 1 and isinstance(found[0], ast.FunctionDef) else None
+
+
+def _class_names(cls: ast.ClassDef) -> set[str]:
+    """The names the class body binds: class attributes, methods, properties, imports."""
+    names: set[str] = set()
+    for statement in cls.body:
+        if isinstance(statement, (*FUNCTIONS, ast.ClassDef)):
+            names.add(statement.name)
+            continue
+        for node in ast.walk(statement):
+            if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
+                names.add(node.id)
+            elif isinstance(node, ast.alias):
+                names.add((node.asname or node.name).split(".")[0])
+    return names
+
+
+def _super_call(node: ast.AST, method: str | None = None) -> bool:
+    """True for ``super().m(...)`` or ``super(C, self).m(...)`` (``m``: ``method``, or any
+    but ``__init__`` when None)."""
+    return isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and \
+        isinstance(node.func.value, ast.Call) and isinstance(node.func.value.func, ast.Name) \
+        and node.func.value.func.id == "super" and \
+        (node.func.attr == method if method else node.func.attr != "__init__")
+
+
+class _Walk:
+    """The walk of one ``__init__``: what the class defines, what the method stored so far."""
+
+    def __init__(self, cls: ast.ClassDef, init: ast.FunctionDef, set_outside: set[str]
+                 ) -> None:
+        self.init = init
+        self.own = _class_names(cls) | set_outside
+        self.methods = {s.name for s in cls.body if isinstance(s, FUNCTIONS)}
+        self.assigned = _first_stores(cls, init)
+        self.local_functions = {n.name for n in ast.walk(init)
+                                if isinstance(n, FUNCTIONS) and n is not init} | {
+            t.id for n in ast.walk(init) if isinstance(n, ast.Assign)
+            and isinstance(n.value, ast.Lambda) for t in n.targets if isinstance(t, ast.Name)}
+        self.parents = {id(child): parent for parent in ast.walk(init)
+                        for child in ast.iter_child_nodes(parent)}
+
+    def early_reads(self) -> Iterator[tuple[ast.AST, str]]:
+        """Each certain read before its attribute is assigned, with its message."""
+        stored: set[str] = set()
+        later = self._super_init_index()
+        for number, statement in enumerate(self.init.body):
+            if self._may_run_package_code(statement):
+                return
+            for read in _certain_parts(statement):
+                name = _self_attribute(read)
+                if name is None:
+                    continue
+                if name in NODE_ATTRIBUTES and name not in self.own:
+                    if later is not None and number < later and not name.startswith("_") \
+                            and self._called(read):
+                        yield read, (f"`self.{name}()` is called before `super().__init__()` "
+                                     "has set the Node up: AttributeError")
+                elif name not in stored and name not in self.own and name in self.assigned:
+                    yield read, (f"`self.{name}` is read before it is assigned ("
+                                 f"{self.assigned[name]}): AttributeError when the node is "
+                                 "created")
+            stored.update(node.attr for node in _store_nodes(statement))
+
+    def _super_init_index(self) -> int | None:
+        """The number of the top-level statement of ``__init__`` calling the base's
+        ``__init__`` (None when no top-level statement does)."""
+        return next((number for number, statement in enumerate(self.init.body)
+                     if isinstance(statement, ast.Expr)
+                     and _super_call(statement.value, "__init__")), None)
+
+    def _called(self, node: ast.AST) -> bool:
+        parent = self.parents.get(id(node))
+        return isinstance(parent, ast.Call) and parent.func is node
+
+    def _may_run_package_code(self, statement: ast.stmt) -> bool:
+        """True when ``statement`` may run code of the package that sets attributes of
+        ``self``, now or on another thread."""
+        for node in ast.walk(statement):
+            if _super_call(node):
+                return True
+            if isinstance(node, ast.Name) and node.id == "self" and \
+                    not self._receiver(node) and not self._in_super(node):
+                return True
+            if (isinstance(node, ast.Lambda) or isinstance(node, ast.Name) and
+                    node.id in self.local_functions and isinstance(node.ctx, ast.Load)) and \
+                    not self._given_to_the_node(node):
+                return True
+            name = _self_attribute(node)
+            if name is not None and self._runs_or_hands_on(node, name):
+                return True
+        return False
+
+    def _runs_or_hands_on(self, node: ast.Attribute, name: str) -> bool:
+        """True when ``self.name`` (``node``) registers a parameter callback, calls a method
+        of the class or one rclpy's Node lacks, or hands a method of the class to anything
+        but the node's own rclpy methods."""
+        if name in _PARAMETER_CALLBACKS:
+            return True
+        if name in self.methods:
+            return self._called(node) or not self._given_to_the_node(node)
+        return self._called(node) and (name in self.own or name not in NODE_ATTRIBUTES)
+
+    def _receiver(self, name: ast.Name) -> bool:
+        parent = self.parents.get(id(name))
+        return isinstance(parent, ast.Attribute) and parent.value is name
+
+    def _in_super(self, name: ast.Name) -> bool:
+        parent = self.parents.get(id(name))
+        return isinstance(parent, ast.Call) and isinstance(parent.func, ast.Name) and \
+            parent.func.id == "super"
+
+    def _given_to_the_node(self, node: ast.AST) -> bool:
+        """True when ``node`` is an argument of a call of one of the node's own rclpy
+        methods (``self.create_timer(1.0, self.tick)``), which stores it for later."""
+        parent = self.parents.get(id(node))
+        if isinstance(parent, ast.keyword):
+            parent = self.parents.get(id(parent))
+        if not isinstance(parent, ast.Call) or parent.func is node:
+            return False
+        name = _self_attribute(parent.func)
+        return name is not None and name in NODE_ATTRIBUTES and name not in self.own and \
+            name not in _PARAMETER_CALLBACKS
+
+
+def _self_attribute(node: ast.AST) -> str | None:
+    """``x`` for ``self.x`` (read, stored or called), else None."""
+    if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and \
+            node.value.id == "self":
+        return node.attr
+    return None
+
+
+def _store_nodes(node: ast.AST) -> Iterator[ast.Attribute]:
+    """The stores and deletions of attributes of ``self`` anywhere in ``node`` (annotations
+    without a value too)."""
+    return (n for n in ast.walk(node) if isinstance(n, ast.Attribute)
+            and not isinstance(n.ctx, ast.Load) and _self_attribute(n) is not None)
+
+
+def _first_stores(cls: ast.ClassDef, init: ast.FunctionDef) -> dict[str, str]:
+    """Where the class's methods first assign each attribute of ``self``: a line of
+    ``__init__``, else the method (attributes no method assigns are PYC023's; ``x += 1``
+    reads first, so it assigns nothing new)."""
+    lines: dict[str, int] = {}
+    augmented = {id(n.target) for n in ast.walk(init) if isinstance(n, ast.AugAssign)}
+    for node in (n for n in _store_nodes(init) if id(n) not in augmented):
+        lines[node.attr] = min(lines.get(node.attr, node.lineno), node.lineno)
+    found = {name: f"line {line}" for name, line in lines.items()}
+    for method in cls.body:
+        if isinstance(method, FUNCTIONS) and method is not init:
+            for node in _store_nodes(method):
+                found.setdefault(node.attr, f"in `{method.name}`, which has not run yet")
+    return found
+
+
+def _certain_parts(statement: ast.stmt) -> Iterator[ast.AST]:
+    """The nodes of ``statement`` Python certainly evaluates when the statement runs (for
+    an augmented assignment, its target too: it is read first)."""
+    if isinstance(statement, (ast.Try, *FUNCTIONS, ast.ClassDef)) or \
+            type(statement).__name__ == "TryStar":
+        return
+    if isinstance(statement, ast.AugAssign):
+        yield statement.target
+        yield from _certain(statement.value)
+    elif isinstance(statement, (ast.If, ast.While)):
+        yield from _certain(statement.test)
+    elif isinstance(statement, (ast.For, ast.AsyncFor)):
+        yield from _certain(statement.iter)
+    elif isinstance(statement, (ast.With, ast.AsyncWith)):
+        for item in statement.items:
+            yield from _certain(item.context_expr)
+    elif isinstance(statement, ast.Assert):
+        yield from _certain(statement.test)
+    elif isinstance(statement, ast.Match):
+        yield from _certain(statement.subject)
+    elif isinstance(statement, (ast.Assign, ast.AnnAssign)):
+        if statement.value is not None:
+            yield from _certain(statement.value)
+    else:
+        for child in ast.iter_child_nodes(statement):
+            yield from _certain(child)
+
+
+def _certain(node: ast.AST) -> Iterator[ast.AST]:
+    """``node`` and the parts of it Python certainly evaluates with it: not the branches
+    of a conditional expression, the operands after the first of ``and``/``or``, a lambda's
+    body, nor a comprehension's but its first iterable."""
+    yield node
+    if isinstance(node, ast.Lambda):
+        return
+    if isinstance(node, ast.IfExp):
+        yield from _certain(node.test)
+    elif isinstance(node, ast.BoolOp):
+        yield from _certain(node.values[0])
+    elif isinstance(node, (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)):
+        yield from _certain(node.generators[0].iter)
+    else:
+        for child in ast.iter_child_nodes(node):
+            yield from _certain(child)
