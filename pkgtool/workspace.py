@@ -9,8 +9,11 @@ A package is a folder holding ``package.xml`` or ``setup.py``. Discovery follows
   skipped: a folder merely named ``build`` is searched, as colcon does;
 - hidden folders are skipped (colcon too); so are, beyond colcon, virtual environments (a
   ``pyvenv.cfg``), CMake build trees (a ``CMakeCache.txt``: generated, as a vendored
-  library's build holding a copy of its Python bindings), ``__pycache__``, ``node_modules``,
-  ``site-packages`` and ``*.egg-info``;
+  library's build holding a copy of its Python bindings), colcon install and build folders
+  committed without their ``COLCON_IGNORE`` (a ``local_setup.sh``, a ``colcon_build.rc``, an
+  installed ``share/<name>`` beside ``share/ament_index``: ``colcon build`` writes the marker
+  before it looks for packages), ``__pycache__``, ``node_modules``, ``site-packages`` and
+  ``*.egg-info``;
 - packages do not nest: once a folder is a package, its sub-folders are not searched; but a
   Python project without package.xml (a pip project's ``setup.py`` at a repository's root)
   that holds ROS packages (with package.xml) below gives those ROS packages, not itself.
@@ -36,12 +39,18 @@ SKIP_MARKERS = frozenset({"COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE"})
 """Files that make colcon (and ament, catkin) skip their folder."""
 IGNORE_MARKERS = SKIP_MARKERS | {"_setup_util.py", "_order_isolated_packages.py"}
 SKIPPED_NAMES = frozenset({"__pycache__", "node_modules", "site-packages"})
-GENERATED_MARKERS = frozenset({"pyvenv.cfg", "CMakeCache.txt"})
+GENERATED_MARKERS = frozenset({
+    "pyvenv.cfg", "CMakeCache.txt", "local_setup.sh", "local_setup.bash", "local_setup.zsh",
+    "local_setup.ps1", "_local_setup_util_sh.py", "_local_setup_util_ps1.py", "colcon_build.rc"})
 VENDORED_NAMES = frozenset({"include"})
 """Folders discovery does not search for packages: a C/C++ header tree never holds a ROS
 package's sources, and a package.xml there came with a copied library (mavlink's headers)."""
 """Files marking a folder whose contents are generated (a virtual environment, a CMake build
-tree): skipped with everything below it, beyond colcon."""
+tree, a colcon install or build folder committed without the COLCON_IGNORE colcon writes
+into it): skipped with everything below it, beyond colcon."""
+INSTALLED_SHARE = ("ament_index", "colcon-core")
+"""Folders beside an installed package's ``share/<name>`` (a package.xml copied there by
+``data_files``): a package folder in a ``share`` folder holding one is an install's copy."""
 
 
 @record
@@ -152,9 +161,18 @@ def _search(folders: Found, links: Found, seen: set[str]) -> Iterator[tuple[Path
         if not names.isdisjoint(IGNORE_MARKERS) or not names.isdisjoint(GENERATED_MARKERS):
             continue
         if any(e.name in PACKAGE_MARKERS and _is_file(e) for e in listed):
-            yield from _package_or_inner(sub, real, listed, names, seen)
+            if not _installed_copy(sub):
+                yield from _package_or_inner(sub, real, listed, names, seen)
         else:
             _below(sub, real, listed, folders, links)
+
+
+def _installed_copy(folder: Path) -> bool:
+    """True for ``<install>/share/<name>`` of a colcon or ament install: beside one of
+    :data:`INSTALLED_SHARE`, or in colcon's isolated layout (``<name>/share/<name>``)."""
+    return folder.parent.name == "share" and (
+        folder.parent.parent.name == folder.name or
+        any(os.path.isdir(folder.parent / name) for name in INSTALLED_SHARE))
 
 
 _TEST_FOLDERS = frozenset({"test", "tests", "testdata", "test_data", "fixtures"})

@@ -26,6 +26,13 @@ COVERED_BY: dict[str, frozenset[str]] = {
 """Packages whose declaration brings others along: ``ament_lint_common`` depends on the
 ``ament_cmake_*`` linters, and they on the Python linters that test files import."""
 
+STDLIB_NAMED_KEYS: dict[str, str] = {
+    "time": "GNU time, a command-line program",
+    "sqlite3": "the sqlite3 command-line shell",
+}
+"""rosdep keys named as a module of Python's standard library, with what the key installs
+(not that module: the standard library needs no dependency)."""
+
 ROS_MODULE_PACKAGES: dict[str, str] = {
     "tf2_ros": "tf2_ros_py",
     "urdf_parser_py": "urdfdom_py",

@@ -44,6 +44,13 @@ def workspace(tmp_path: Path) -> Path:
         "log/latest/package.xml": MANIFEST,
         "src/build/zeta/package.xml": MANIFEST,  # only a name: colcon finds it
         "old_install/_setup_util.py": "",  # a catkin install space
+        "committed/install/local_setup.sh": "",  # colcon's, committed without COLCON_IGNORE
+        "committed/install/omega/share/omega/package.xml": MANIFEST,
+        "committed/build/omega/colcon_build.rc": "",
+        "committed/build/omega/package.xml": MANIFEST,  # --symlink-install's links
+        "copied/omega/share/ament_index/resource_index/packages/omega": "",
+        "copied/omega/share/omega/package.xml": MANIFEST,  # an install's copy
+        "isolated/omega/share/omega/package.xml": MANIFEST,  # the same, alone
         "old_install/share/eta/package.xml": MANIFEST,
         "src/node_modules/epsilon/package.xml": MANIFEST,
         "src/conan/mavlink/include/mavlink/package.xml": MANIFEST,  # came with the headers

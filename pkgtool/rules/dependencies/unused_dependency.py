@@ -7,7 +7,8 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.ros_names import looks_like_ros
-from pkgtool.knowledge.rosdep import ALTERNATIVE_KEYS, ROS_MODULE_PACKAGES, brought_in
+from pkgtool.knowledge.rosdep import (ALTERNATIVE_KEYS, ROS_MODULE_PACKAGES, STDLIB_NAMED_KEYS,
+                                      brought_in)
 from pkgtool.knowledge.rosdistro import modules_of_key
 from pkgtool.model.package import Package
 from pkgtool.rules.dependency_names import launched_packages
@@ -49,7 +50,9 @@ def unused_dependency(package: Package) -> Iterator[Hit]:
     Reports `<depend>`/`<exec_depend>` keys of Python modules and ROS Python packages that no
     module, test or launch file of an ament_python package imports, launches or mentions (a
     metapackage counts as used when a package it brings in is).
-    Keys used by tools rather
+    Also reports a key named as a standard library module the code imports (`time`,
+    `sqlite3`): the module needs no dependency, and the key installs a program instead (GNU
+    time, the sqlite3 shell). Keys used by tools rather
     than imports (`ros2launch`, `launch_ros`, `rosidl_default_runtime`, `ament_*`,
     `python3-pytest`, ...) are never reported, nor are interface packages when the package has
     configuration files that may name their types.
@@ -78,7 +81,14 @@ def unused_dependency(package: Package) -> Iterator[Hit]:
     used.update(launched_packages(package))
     texts = "\n".join(t for p, t in package.texts.items() if p != "package.xml")
     has_config = any(p.endswith(_CONFIG_SUFFIXES) and p != "package.xml" for p in package.files)
+    imported = {i.top_level for module in modules for i in module.imports}
     for key, dependency in declared(package, RUNTIME, bringing=False).items():
+        if key in STDLIB_NAMED_KEYS and key in imported and not dependency.condition:
+            yield Hit(dependency.span, f"`{key}` is declared for the standard library module "
+                      f"`{key}`, which needs no dependency: the rosdep key `{key}` installs "
+                      f"{STDLIB_NAMED_KEYS[key]}", f"Remove this `<{dependency.tag}>` unless "
+                      "the package runs that program")
+            continue
         if (dependency.condition or key in used or brought_in(key) & used
                 or not _import_only(key)
                 or (has_config and looks_like_ros(key)) or _mentioned(key, texts)):

@@ -28,16 +28,13 @@ _STDLIB = frozenset({
     "dataclasses", "datetime", "enum", "functools", "glob", "hashlib", "heapq", "importlib",
     "inspect", "io", "itertools", "json", "logging", "math", "multiprocessing", "os", "pathlib",
     "pickle", "queue", "random", "re", "shutil", "signal", "socket", "statistics", "string",
-    "struct", "subprocess", "sys", "tempfile", "threading", "time", "traceback", "typing",
+    "struct", "subprocess", "sys", "tempfile", "threading", "traceback", "typing",
     "unittest", "urllib", "warnings",
 })
-"""Standard library modules students declare (``time`` is also a rosdep key, for GNU time, that
-a Python package never means); any other standard library module counts when it is neither a
-rosdep key nor a released package (``uuid``, ``zlib`` and ``sqlite3`` are keys)."""
-
-
-_STDLIB_AND_KEY = {"time": "GNU time, a command-line program"}
-"""Names of :data:`_STDLIB` that are rosdep keys too, with what the key installs."""
+"""Standard library modules students declare, and that are no rosdep key (``time`` is one, for
+GNU time: rosdep resolves it, so it is DEP006's needless dependency, not this rule's); any
+other standard library module counts when it is neither a rosdep key nor a released package
+(``uuid``, ``zlib`` and ``sqlite3`` are keys)."""
 _CPP_KEYS = {"opencv": "libopencv-dev", "opencv2": "libopencv-dev"}
 """The C++ library key for a name whose Python key MAN018 suggests elsewhere (and CMake's names
 of libraries, :data:`~pkgtool.knowledge.rosdep.CMAKE_NAMES`: ``OpenCV``)."""
@@ -79,10 +76,6 @@ def _hit(element: XmlElement, ros2: bool, compiled: bool, distro: str) -> Hit | 
         return Hit(element.span, f"`{key}` is a file name, not a package: rosdep cannot "
                    "resolve it", f"Remove this `<{tag}>` (files of the package need no "
                    "dependency), or name the package that provides the file")
-    if key in _STDLIB_AND_KEY:
-        return Hit(element.span, f"`{key}` is Python's standard library module here, which "
-                   f"needs no dependency; the rosdep key `{key}` installs "
-                   f"{_STDLIB_AND_KEY[key]}", f"Remove this `<{tag}>`")
     if key in _STDLIB or key in stdlib_modules(distro) and not is_rosdep_key(key) and \
             not is_released_package(key, distro):
         return Hit(element.span, f"`{key}` is part of the Python standard library, not a rosdep "
