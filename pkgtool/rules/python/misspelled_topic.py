@@ -28,7 +28,7 @@ def misspelled_topic(package: Package) -> Iterator[Hit]:
     exactly one published topic of the same message type is a typo away from it (one edit,
     or a swap of neighbours), unless the two differ in a digit (`robot1`, `robot2`), in
     one word of a pair names of paired topics use (`can_tx` and `can_rx`, `left`/`right`,
-    `global`/`local`, `in`/`out`...) or in one short word wholly replaced (`dt/status`,
+    `global`/`local`, `in`/`out`, `ping`/`pong`...) or in one short word wholly replaced (`dt/status`,
     `ui/status`: two namespaces): another package may publish it. The
     same for a client whose service name no service of the package has, a typo away from the
     one name served with the same service type, and for rclpy's action clients and servers.
@@ -87,7 +87,7 @@ def _near_misses(found: tuple[Endpoint, ...], offering: str, using: str
 _OPPOSITES = frozenset(frozenset(pair.split("/")) for pair in """tx/rx in/out input/output
     left/right l/r front/back front/rear upper/lower up/down min/max start/stop on/off
     global/local request/response req/res req/resp src/dst source/target send/recv
-    read/write get/set pub/sub open/close enable/disable x/y""".split())
+    read/write get/set pub/sub open/close enable/disable x/y ping/pong""".split())
 """Words names of paired topics differ by (a node subscribing ``can_tx`` and publishing
 ``can_rx``): never a typo of each other."""
 
