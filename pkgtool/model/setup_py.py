@@ -83,7 +83,8 @@ class SetupPy:
     """What ``setup(...)`` in setup.py declares, as far as it evaluates statically.
 
     Each optional field is None when the keyword is absent; a keyword present but not
-    evaluable is listed in ``unresolved`` (keyed by keyword) and its field stays None.
+    evaluable is listed in ``unresolved`` (keyed by keyword) and its field stays None
+    (``data_files_in_part`` keeps what could be read of ``data_files``).
     """
 
     path: str
@@ -105,10 +106,19 @@ class SetupPy:
     install_requires: Value | None
     unresolved: tuple[tuple[str, Unresolved], ...] = ()
     scripts: tuple[str, ...] | None = None
+    data_files_in_part: tuple[DataFile, ...] = ()
+    """When ``data_files`` is a list not every item of which evaluates, the entries that do
+    (each entry's own checks hold for them; what the package installs is still unknown)."""
 
     def is_unresolved(self, keyword: str) -> bool:
         """True when ``keyword`` was given but could not be evaluated."""
         return any(key == keyword for key, _ in self.unresolved)
+
+    @property
+    def data_file_entries(self) -> tuple[DataFile, ...]:
+        """The ``data_files`` entries known, each on its own: all of them, or those
+        :attr:`data_files_in_part` keeps."""
+        return self.data_files if self.data_files is not None else self.data_files_in_part
 
     @property
     def console_scripts(self) -> tuple[EntryPoint, ...]:

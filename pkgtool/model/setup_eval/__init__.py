@@ -18,7 +18,7 @@ from pkgtool.model.setup_eval.executor import CONTROL_FLOW, Runner
 from pkgtool.model.setup_eval.scope import Scope
 from pkgtool.model.setup_eval.tree import BlindTree, Tree, normalize
 from pkgtool.model.setup_eval.values import Found, NotStatic, plain
-from pkgtool.model.setup_py import PackagesSpec, SetupPy, Value
+from pkgtool.model.setup_py import DataFile, PackagesSpec, SetupPy, Value
 from pkgtool.model.span import ParseProblem, Span, Unresolved
 from pkgtool.records import record
 
@@ -98,7 +98,22 @@ def _setup_py(path: str, call: SetupCall | None, tree: Tree) -> SetupPy:
     keywords = tuple(dict.fromkeys([*call.values, *(k for k, _ in unresolved if k != "**")]))
     known = {name: fields.get(name) for name in _FIELDS}
     return SetupPy(path=path, setup_span=call.span, keywords=keywords,
-                   unresolved=tuple(unresolved), **known)
+                   unresolved=tuple(unresolved), data_files_in_part=_in_part(call, tree),
+                   **known)
+
+
+def _in_part(call: SetupCall, tree: Tree) -> tuple[DataFile, ...]:
+    """The entries of a ``data_files`` list display that evaluate, when the whole does not."""
+    items = call.in_part.get("data_files")
+    if not items:
+        return ()
+    found: list[DataFile] = []
+    for item in items:
+        try:
+            found.extend(data_files([item], tree, call.span))
+        except Malformed:
+            continue
+    return tuple(found)
 
 
 def _field(key: str, value: Any, span: Span, tree: Tree, source: Unresolved) -> Any:

@@ -15,9 +15,10 @@ from pkgtool.model.span import Span, Unresolved
 class SetupCall:
     """A ``setup(...)`` call reached while running setup.py, filled with its evaluated keywords
     as the evaluator meets them: their ``values``, ``spans`` and ``sources``, and those it
-    could not evaluate (``unresolved``)."""
+    could not evaluate (``unresolved``); for a list display that could not be evaluated
+    whole, the items that could (``in_part``, by keyword)."""
 
-    __slots__ = ("span", "values", "spans", "sources", "unresolved")
+    __slots__ = ("span", "values", "spans", "sources", "unresolved", "in_part")
 
     def __init__(self, span: Span) -> None:
         self.span = span
@@ -25,6 +26,7 @@ class SetupCall:
         self.spans: dict[str, Span] = {}
         self.sources: dict[str, Unresolved] = {}
         self.unresolved: list[tuple[str, Unresolved]] = []
+        self.in_part: dict[str, list[Any]] = {}
 
 
 class Interpreter(ExpressionEvaluator):
@@ -90,6 +92,8 @@ class Interpreter(ExpressionEvaluator):
                 value = self.eval(keyword.value, scope)
             except NotStatic as error:
                 call.unresolved.append((key, error.unresolved))
+                if isinstance(keyword.value, (ast.List, ast.Tuple)):
+                    call.in_part[key] = self._evaluable_items(keyword.value, scope)
                 continue
             except RecursionError:
                 call.unresolved.append((key, self.unresolved(keyword.value)))
@@ -106,6 +110,17 @@ class Interpreter(ExpressionEvaluator):
             else:
                 call.unresolved.append((key, self.unresolved(keyword.value)))
         self.setup_calls.append(call)
+
+    def _evaluable_items(self, display: ast.List | ast.Tuple, scope: Scope) -> list[Any]:
+        """The values of the items of ``display`` that evaluate (``*rest`` left out)."""
+        found = []
+        for item in display.elts:
+            if not isinstance(item, ast.Starred):
+                try:
+                    found.append(self.eval(item, scope))
+                except (NotStatic, RecursionError):
+                    continue
+        return found
 
 
 def _called_name(node: ast.Call) -> str | None:

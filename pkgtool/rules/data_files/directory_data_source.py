@@ -39,7 +39,7 @@ def directory_data_source(package: Package) -> Iterator[Hit]:
     ```
     """
     setup = checked_setup(package)
-    for entry in setup.data_files or () if setup else ():
+    for entry in setup.data_file_entries if setup else ():
         if entry.sources_is_text:
             continue
         for source in entry.sources:

@@ -41,7 +41,7 @@ def empty_data_glob(package: Package) -> Iterator[Hit]:
     ```
     """
     setup = checked_setup(package)
-    for entry in setup.data_files or () if setup else ():
+    for entry in setup.data_file_entries if setup else ():
         for source in entry.sources:
             written = normalize(source.pattern) or ""
             if source.is_glob and not source.matches and \

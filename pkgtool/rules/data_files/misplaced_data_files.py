@@ -45,7 +45,7 @@ def misplaced_data_files(package: Package) -> Iterator[Hit]:
     ```
     """
     setup = checked_setup(package)
-    for entry in setup.data_files or () if setup else ():
+    for entry in setup.data_file_entries if setup else ():
         first = entry.destination.replace("\\", "/").lstrip("./").split("/")[0]
         if entry.destination.startswith(("/", "~", "$")) or not first or \
                 first in PREFIX_FOLDERS or not entry.sources:

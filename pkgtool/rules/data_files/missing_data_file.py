@@ -22,7 +22,8 @@ def missing_data_file(package: Package) -> Iterator[Hit]:
     Reports literal (non-glob) data_files sources that are not files of the package, and
     sources given as one string instead of a list (setuptools reads each character as a file
     name). Paths are relative to setup.py's folder, as colcon runs it. Absolute paths and
-    folders (see DAT007) are not reported here.
+    folders (see DAT007) are not reported here. When some item of a `data_files` list cannot
+    be evaluated statically (`os.walk`), the items that can are still checked.
 
     ## Why is this bad?
     The build stops with "error: can't copy 'x': doesn't exist or not a regular file".
@@ -40,7 +41,7 @@ def missing_data_file(package: Package) -> Iterator[Hit]:
     ```
     """
     setup = checked_setup(package)
-    for entry in setup.data_files or () if setup else ():
+    for entry in setup.data_file_entries if setup else ():
         for source in entry.sources:
             if entry.sources_is_text:
                 yield Hit(source.span, f"The sources of `{entry.destination}` are the string "

@@ -43,7 +43,7 @@ def misspelled_data_folder(package: Package) -> Iterator[Hit]:
     ```
     """
     setup = checked_setup(package)
-    for entry in setup.data_files or () if setup else ():
+    for entry in setup.data_file_entries if setup else ():
         parts = destination_parts(entry)
         folders = {posixpath.normpath(s.pattern.replace("\\", "/")).split("/")[0]
                    for s in entry.sources if "/" in s.pattern.replace("\\", "/")}

@@ -44,7 +44,7 @@ def misspelled_share_folder(package: Package) -> Iterator[Hit]:
     setup = checked_setup(package)
     name = package.name
     own = setup.name.value if setup and setup.name else None
-    for entry in setup.data_files or () if setup else ():
+    for entry in setup.data_file_entries if setup else ():
         parts = destination_parts(entry)
         if len(parts) < 2 or parts[0] != "share" or parts[1] in (name, own) or \
                 not is_typo(parts[1], name) or digits_differ(parts[1], name):

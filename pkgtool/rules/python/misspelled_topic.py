@@ -28,8 +28,8 @@ def misspelled_topic(package: Package) -> Iterator[Hit]:
     exactly one published topic of the same message type is a typo away from it (one edit,
     or a swap of neighbours), unless the two differ in a digit (`robot1`, `robot2`), in
     one word of a pair names of paired topics use (`can_tx` and `can_rx`, `left`/`right`,
-    `global`/`local`, `in`/`out`, `ping`/`pong`...) or in one short word wholly replaced (`dt/status`,
-    `ui/status`: two namespaces): another package may publish it. The
+    `global`/`local`, `in`/`out`, `ping`/`pong`...) or in one short word wholly replaced
+    (`dt/status`, `ui/status`: two namespaces): another package may publish it. The
     same for a client whose service name no service of the package has, a typo away from the
     one name served with the same service type, and for rclpy's action clients and servers.
 
