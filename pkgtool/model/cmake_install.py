@@ -191,11 +191,11 @@ def installed_executables(text: str) -> frozenset[str] | None:
     ...)`` puts there (under their ``OUTPUT_NAME``), files of ``install(PROGRAMS|FILES ...)``
     (or their ``RENAME``), ``ament_auto_add_executable`` targets of a file ending in
     ``ament_auto_package()``, and components' ``EXECUTABLE``. None when that is not certain:
-    a command other than :data:`_PLAIN_COMMANDS` (a loop, a function of the project, a
-    subdirectory), an included file other than a ``.cmake`` file of the package or a CMake
-    module, a folder installed into ``lib/``, a name or destination built from what the file
-    does not set."""
-    calls = commands(text)
+    a command other than :data:`_PLAIN_COMMANDS` (a loop doing more than configure targets,
+    a function of the project, a subdirectory), an included file other than a ``.cmake``
+    file of the package or a CMake module, a folder installed into ``lib/``, a name or
+    destination built from what the file does not set."""
+    calls = _without_configuring_loops(commands(text))
     if not _known_commands(calls):
         return None  # what it installs is not known from the text
     variables = set_variables(calls, frozenset())
@@ -269,6 +269,35 @@ def _package_path(path: str) -> str:
     for prefix in ("${CMAKE_CURRENT_SOURCE_DIR}/", "${PROJECT_SOURCE_DIR}/"):
         path = path.removeprefix(prefix)
     return posixpath.normpath(path)
+
+
+_CONFIGURING = frozenset("""
+    ament_target_dependencies target_link_libraries target_include_directories
+    target_compile_options target_compile_definitions target_compile_features
+    target_link_options add_dependencies message rosidl_target_interfaces
+""".split())
+"""Commands that only configure existing targets: a loop of them installs nothing."""
+
+
+def _without_configuring_loops(calls: list[tuple[str, list[str]]]
+                               ) -> list[tuple[str, list[str]]]:
+    """``calls`` without the ``foreach`` loops whose body only configures targets
+    (:data:`_CONFIGURING`: ``foreach(t ${NODES}) ament_target_dependencies(${t} rclcpp)``),
+    which change nothing the file installs; any other loop is kept (and makes what the file
+    installs unknown)."""
+    kept: list[tuple[str, list[str]]] = []
+    loop: list[tuple[str, list[str]]] = []
+    for call in calls:
+        if loop or call[0] == "foreach":
+            loop.append(call)
+            if call[0] == "endforeach":
+                body = loop[1:-1]
+                if not all(name in _CONFIGURING for name, _ in body):
+                    kept.extend(loop)
+                loop = []
+        else:
+            kept.append(call)
+    return kept + loop
 
 
 def _known_commands(calls: list[tuple[str, list[str]]], files: frozenset[str] | None = None

@@ -142,13 +142,21 @@ def _stray(name: str, names: tuple[str, ...], beside: bool) -> str:
     return f"`{'/'.join(names)}` holds values but no `ros__parameters` key above them"
 
 
+_YAML_READERS = ("MoveItConfigsBuilder", "load_yaml(")
+"""What a launch file reads YAML files into dicts with (MoveIt's configuration builder
+loads ``config/kinematics.yaml``, ``joint_limits.yaml``...; ``load_yaml`` is the helper
+MoveIt's launch files use): such files need not be parameter files."""
+
+
 def _code_reads_parameter_keys(package: Package) -> bool:
     """True when a module of the package (not a launch file) names `ros__parameters`: it
     reads parameter-style YAML itself (``cfg.get('ros__parameters', cfg)``), so a file no
-    launch file passes to a node may follow that code's format."""
+    launch file passes to a node may follow that code's format; or when a launch file reads
+    YAML into dicts itself (:data:`_YAML_READERS`)."""
     launch = {f.path for f in package.launch_files}
     return any("ros__parameters" in text for path, text in package.texts.items()
-               if path.endswith(".py") and path not in launch and path != "setup.py")
+               if path.endswith(".py") and path not in launch and path != "setup.py") or \
+        any(reader in package.texts.get(path, "") for path in launch for reader in _YAML_READERS)
 
 
 def _candidates(package: Package) -> Iterator[str]:
@@ -181,7 +189,9 @@ def malformed_parameter_file(package: Package) -> Iterator[Hit]:
     (maps, RViz or bridge configurations, waypoints), files under `test/` and launch files
     are not checked, nor is any file no launch file passes when the package's own code
     names `ros__parameters` (it reads those files itself: `yaml.safe_load(f).get(
-    'ros__parameters', {})`, the path given as a program option). In a checked file a near
+    'ros__parameters', {})`, the path given as a program option), or when a launch file
+    reads YAML into dicts itself (MoveIt's `MoveItConfigsBuilder`, which loads
+    `config/kinematics.yaml` and the like, or a `load_yaml(...)` helper). In a checked file a near
     miss (or `parameters:` under a node name) counts only when every mapping above it, the
     top level included, holds only mappings, as node names and namespaces do: beside a
     scalar or a list (`serial_number: a200`, `urdf: null`) it is a key of some other YAML,

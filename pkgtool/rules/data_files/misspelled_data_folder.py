@@ -30,7 +30,8 @@ def misspelled_data_folder(package: Package) -> Iterator[Hit]:
     The files are installed as `share/<package>/lauch/...`: a launch file including
     `PathJoinSubstitution([FindPackageShare('<package>'), 'launch', ...])`, a node reading
     `share/<package>/config/params.yaml` or an `IncludeLaunchDescription` of the source
-    tree's layout fails with a missing file once installed.
+    tree's layout fails with a missing file once installed (`ros2 launch <package> <file>`
+    still finds a launch file: it searches the whole share folder by file name).
 
     ## Example
     ```python
@@ -53,7 +54,10 @@ def misspelled_data_folder(package: Package) -> Iterator[Hit]:
         if written != folder and is_typo(written, folder) and \
                 not digits_differ(written, folder) and \
                 written.rstrip("s") != folder.rstrip("s") and "*" not in folder:
+            found = "does not find them" if folder != "launch" else (
+                "does not find them (`ros2 launch`, which searches the whole share folder "
+                "by file name, does)")
             yield Hit(entry.span, f"data_files installs the files of `{folder}/` into "
                       f"`{entry.destination}`: `{written}` is a typo of `{folder}`, and "
-                      f"whatever looks for them in `share/{package.name}/{folder}` does not "
-                      "find them", f"Install into `share/{package.name}/{folder}`")
+                      f"whatever looks for them in `share/{package.name}/{folder}` {found}",
+                      f"Install into `share/{package.name}/{folder}`")

@@ -3,16 +3,20 @@
 from __future__ import annotations
 
 import posixpath
+import re
 from collections.abc import Callable, Iterator
 
+from packaging.utils import canonicalize_name
+
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.rosdistro import typo_of
+from pkgtool.knowledge.rosdistro import (is_released_package, keys_for_import, modules_of_key,
+                                         stdlib_modules, typo_of)
 from pkgtool.model.installed import why_not_installed
 from pkgtool.model.launch import python_folders
 from pkgtool.model.package import Package
 from pkgtool.model.setup_py import EntryPoint
 from pkgtool.rules.console_scripts import scripts_and_modules
-from pkgtool.rules.imports import RUNTIME, declared
+from pkgtool.rules.imports import ANY, RUNTIME, declared
 from pkgtool.rules.registry import rule
 
 
@@ -49,6 +53,39 @@ def _undeclared_provider(package: Package, entry: EntryPoint) -> Iterator[Hit]:
                   "which package.xml does not declare for run time: the script fails with "
                   "ModuleNotFoundError where that package is not installed",
                   f"Add `<exec_depend>{providers[0]}</exec_depend>` to package.xml")
+
+
+def _provided_by_nothing(package: Package, entry: EntryPoint) -> Iterator[Hit]:
+    """A hit when nothing can provide the entry's top-level module: not a package setup.py
+    lists (one that does not exist is SET011's), not the standard library, no package of the
+    workspace, no released ROS package, no module rosdep maps to a key, and
+    nothing package.xml or ``install_requires`` names."""
+    root = entry.module.split(".")[0]
+    distro = package.context.distro
+    setup = package.setup_py
+    if setup is None or setup.is_unresolved("install_requires") or setup.is_unresolved("**"):
+        return
+    required = setup.install_requires.value if setup.install_requires else ()
+    wanted = {canonicalize_name(re.split(r"[\s<>=!~;\[]", str(r), maxsplit=1)[0])
+              for r in (required if isinstance(required, (list, tuple)) else (required,))}
+    names = (*(setup.packages.names if setup.packages else ()), *(setup.py_modules or ()),
+             *(setup.package_dir or {}))
+    listed = {name.split(".")[0] for name in names}
+    if root in listed or root in stdlib_modules(distro) or package.context.provider(root) or \
+            root in package.context.workspace or is_released_package(root, distro) or \
+            keys_for_import(root, distro) or canonicalize_name(root) in wanted or \
+            any(key == root or _unmapped_python_key(key) for key in declared(package, ANY)):
+        return
+    yield Hit(entry.span, f"`{entry.module}` is not installed: neither this package, nor "
+              f"another of the workspace, nor a released ROS package, nor anything package.xml "
+              f"or install_requires names provides `{root}`: the script fails with "
+              "ModuleNotFoundError", "Point the entry at a module this package installs")
+
+
+def _unmapped_python_key(key: str) -> bool:
+    """True for a Python key (``python3-x``, ``x-pip``) whose modules pkgtool does not know:
+    it may install a module of any name."""
+    return (key.startswith("python3-") or key.endswith("-pip")) and not modules_of_key(key)
 
 
 def _misspelt_root(package: Package, module: str, modules: dict[str, str]
@@ -91,7 +128,10 @@ def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
     starts with the name of one of the package's Python package folders below the top
     (`nodes.talker` for a `my_pkg/nodes/` that holds no `talker`); a module of another
     package of the workspace counts when package.xml declares that package for run time
-    (`<exec_depend>`, `<depend>`), not only for tests.
+    (`<exec_depend>`, `<depend>`), not only for tests. A module outside them that nothing can
+    provide (not the standard library, no package of the workspace, no released ROS package,
+    no module rosdep knows, nothing package.xml or `install_requires` names, and no Python key
+    package.xml declares whose modules are unknown) is reported too.
 
     ## Why is this bad?
     The build succeeds, but running the command fails with `ModuleNotFoundError`. With
@@ -128,6 +168,8 @@ def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
                 yield typo(entry)
             if meant is None and typo is None:
                 yield from _undeclared_provider(package, entry)
+                if entry.module.split(".")[0] not in folders:
+                    yield from _provided_by_nothing(package, entry)
             if meant is not None or typo is not None or \
                     entry.module.split(".")[0] not in folders:
                 continue
