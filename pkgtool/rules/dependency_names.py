@@ -11,6 +11,7 @@ from __future__ import annotations
 import re
 
 from pkgtool.knowledge import rosdistro
+from pkgtool.knowledge.interfaces import packages_with
 from pkgtool.knowledge.rosdep import NOT_PACKAGES, ROS1_PACKAGES, suggested_key
 from pkgtool.knowledge.tables import DISTROS
 from pkgtool.model.condition import applies
@@ -58,7 +59,8 @@ def checked_dependencies(package: Package) -> list[Dependency]:
             continue
         if name in NOT_PACKAGES or name in ROS1_PACKAGES or \
                 key_instead(name, package.context.distro, dependency.tag) or \
-                names_a_file(name, package.context.distro):
+                names_a_file(name, package.context.distro) or \
+                interface_named(name, package.context.distro):
             continue  # MAN018's
         found.append(dependency)
     return found
@@ -68,6 +70,19 @@ _FILE_SUFFIXES = (".py", ".launch", ".xml", ".yaml", ".yml", ".json", ".msg", ".
                   ".urdf", ".xacro", ".txt", ".cfg", ".rviz", ".sdf", ".world", ".sh", ".csv")
 """Suffixes of files a dependency tag sometimes names by mistake (a launch file, a parameter
 file)."""
+
+
+_KINDS = {"msg": "a message", "srv": "a service", "action": "an action"}
+
+
+def interface_named(key: str, distro: str) -> tuple[str, str] | None:
+    """(``a message``, its package) when ``key`` is the name of one interface of one known
+    package (``PoseStamped``): package names are lower case (REP 144), so it is no package."""
+    if not key[:1].isupper() or rosdistro.is_rosdep_key(key):
+        return None
+    found = {(_KINDS[kind], owner) for kind in _KINDS
+             for owner in packages_with(kind, key, distro)}
+    return found.pop() if len(found) == 1 else None
 
 
 def names_a_file(name: str, distro: str) -> bool:

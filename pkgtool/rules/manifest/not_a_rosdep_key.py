@@ -11,7 +11,8 @@ from pkgtool.knowledge.rosdistro import is_released_package, is_rosdep_key, stdl
 from pkgtool.model.condition import applies
 from pkgtool.model.package import Package
 from pkgtool.model.xml import XmlElement
-from pkgtool.rules.dependency_names import cmake_finds, key_instead, names_a_file
+from pkgtool.rules.dependency_names import (cmake_finds, interface_named, key_instead,
+                                            names_a_file)
 from pkgtool.rules.imports import declaration_cause
 from pkgtool.rules.manifest.common import build_types, tree
 from pkgtool.rules.manifest.schema import DEPENDS_1, DEPENDS_2, token
@@ -66,6 +67,11 @@ def _hit(element: XmlElement, ros2: bool, compiled: bool, distro: str) -> Hit | 
         return Hit(element.span, f"`{key}` is a build type, not a package",
                    f"Remove this `<{tag}>` and declare `<build_type>{key}</build_type>` in "
                    "`<export>`")
+    interface = interface_named(key, distro)
+    if interface is not None:
+        return Hit(element.span, f"`{key}` is {interface[0]} of `{interface[1]}`, not a "
+                   "package: rosdep cannot resolve it", f"Write `<{tag}>{interface[1]}</{tag}>`",
+                   cause=declaration_cause(tag, interface[1]))
     owner, _, kind = key.rpartition(".")
     if kind in ("msg", "srv", "action") and owner and \
             (is_released_package(owner, distro) or owner.endswith(("_msgs", "_interfaces"))):
@@ -118,7 +124,8 @@ def not_a_rosdep_key(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports dependency keys that are known not to be rosdep keys, with the key to use:
     several keys in one tag (``<depend>rclpy sensor_msgs</depend>``),
-    a name with a ``/`` (``turtlesim/msg/Pose``: its package is the dependency), a name with
+    a name with a ``/`` (``turtlesim/msg/Pose``: its package is the dependency), the name of
+    an interface of one known package (``PoseStamped``: package names are lower case), a name with
     characters no key has (``rclpy/``, ``'numpy'``), a file name
     (``robot.launch.py``, ``params.yaml``),
     rclpy's own modules named as packages (``rclpy_lifecycle``: the key is ``rclpy``),
