@@ -55,12 +55,13 @@ def cwd_relative_path(package: Package) -> Iterator[Hit]:
     relative path that is a file of the package's source folder: written from the
     package's folder (`'config/params.yaml'`) or from a workspace's
     (`'src/my_pkg/models/best.pt'`, a file the package has or not: a model kept out of
-    git), or the path below `share/<package>` data_files installs a file as (`'map.json'`
-    for `my_pkg/map.json` installed into `share/my_pkg`). The path is a string literal, or a
-    name or `self.x` assigned that literal and nothing else. A module that asks whether files
-    exist (`os.path.exists()` and the like) or changes the working folder (`os.chdir()`) is
-    left alone: it may fall back when the file is not there, or open it from the right
-    folder. Tests are not checked (pytest runs them from a known folder).
+    git), from the module's own folder (`'colors.yaml'` for the `my_pkg/colors.yaml` beside
+    `my_pkg/node.py`), or the path below `share/<package>` data_files installs a file as
+    (`'map.json'` for `my_pkg/map.json` installed into `share/my_pkg`). The path is a
+    string literal, or a name or `self.x` assigned that literal and nothing else. A module
+    that asks whether files exist (`os.path.exists()` and the like) or changes the working
+    folder (`os.chdir()`) is left alone: it may fall back when the file is not there, or
+    open it from the right folder. Tests are not checked (pytest runs them from a known folder).
 
     ## Why is this bad?
     A relative path is resolved against the working folder of the process, not against the
@@ -91,10 +92,12 @@ def cwd_relative_path(package: Package) -> Iterator[Hit]:
         for call in index.calls:
             read = _file_read(call, index)
             for text in _path_texts(read, index) if read is not None else ():
-                named = _named(text.removeprefix("./"), package, installed_as)
+                named = _named(text.removeprefix("./"), package, installed_as) or \
+                    _beside(path, text, package)
                 if named is not None:
                     yield _hit(Span(path, call.lineno, call.col_offset + 1), call, text,
-                               named, package.name, shares.get(named[0]))
+                               named, package.name, shares.get(named[0]),
+                               _WHEN_MISSING.get(index.qualified(call.func) or ""))
                     break
 
 
@@ -114,6 +117,17 @@ def _named(text: str, package: Package, installed_as: dict[str, str]) -> tuple[s
     if source.endswith("/" + below):
         return source, f"`{source[:-len(below)]}` of the package's source folder"
     return source, f"`share/{package.name}` of the install folder"
+
+
+def _beside(path: str, text: str, package: Package) -> tuple[str, str] | None:
+    """The file beside the module at ``path`` a bare relative path names (``open('hsv.db')``
+    in ``my_pkg/node.py`` for ``my_pkg/hsv.db``), with the folder the process must start in."""
+    folder = posixpath.dirname(path)
+    if not folder or not text or posixpath.isabs(text) or text.startswith(".."):
+        return None
+    beside = posixpath.normpath(posixpath.join(folder, text))
+    return (beside, f"`{folder}/` of the package's source folder") \
+        if package.has_file(beside) else None
 
 
 def _file_read(call: ast.Call, index: Index) -> ast.expr | None:
@@ -163,13 +177,19 @@ def _share_paths(package: Package) -> dict[str, str]:
             if installed.startswith(prefix)}
 
 
+_WHEN_MISSING = {"sqlite3.connect": "sqlite3 makes a new, empty database there instead",
+                 "cv2.imread": "cv2.imread returns None"}
+"""Readers that do not raise FileNotFoundError for a missing file, with what they do."""
+
+
 def _hit(span: Span, call: ast.Call, text: str, named: tuple[str, str], name: str,
-         shared: str | None) -> Hit:
+         shared: str | None, missing: str | None) -> Hit:
     inside, folder = named
     message = (f"`{shortened(ast.unparse(call))}` opens `{text}` relative to the folder the "
                f"process starts in, not to the package: it finds the package's `{inside}` "
                f"only when started from {folder} (`ros2 run` and `ros2 launch` start it "
-               "anywhere, and an installed package has no source folder: FileNotFoundError)")
+               "anywhere, and an installed package has no source folder: "
+               f"{missing or 'FileNotFoundError'})")
     if shared is not None:
         parts = ", ".join(f"'{part}'" for part in shared.split("/"))
         return Hit(span, message, f"Open `os.path.join(get_package_share_directory('{name}'), "
