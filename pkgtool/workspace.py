@@ -10,10 +10,11 @@ A package is a folder holding ``package.xml`` or ``setup.py``. Discovery follows
 - hidden folders are skipped (colcon too); so are, beyond colcon, virtual environments (a
   ``pyvenv.cfg``), CMake build trees (a ``CMakeCache.txt``: generated, as a vendored
   library's build holding a copy of its Python bindings), colcon install and build folders
-  committed without their ``COLCON_IGNORE`` (a ``local_setup.sh``, a ``colcon_build.rc``, an
-  installed ``share/<name>`` beside ``share/ament_index``: ``colcon build`` writes the marker
-  before it looks for packages), ``__pycache__``, ``node_modules``, ``site-packages`` and
-  ``*.egg-info``;
+  committed without their ``COLCON_IGNORE`` (colcon's ``local_setup.sh``, ``setup.sh``,
+  ``local_setup.bash`` and ``setup.bash`` together, a ``_local_setup_util_sh.py``, a
+  ``colcon_build.rc``, an installed ``share/<name>`` beside ``share/ament_index``: ``colcon
+  build`` writes the marker before it looks for packages), ``__pycache__``,
+  ``node_modules``, ``site-packages`` and ``*.egg-info``;
 - packages do not nest: once a folder is a package, its sub-folders are not searched; but a
   Python project without package.xml (a pip project's ``setup.py`` at a repository's root)
   that holds ROS packages (with package.xml) below gives those ROS packages, not itself.
@@ -39,15 +40,17 @@ SKIP_MARKERS = frozenset({"COLCON_IGNORE", "AMENT_IGNORE", "CATKIN_IGNORE"})
 """Files that make colcon (and ament, catkin) skip their folder."""
 IGNORE_MARKERS = SKIP_MARKERS | {"_setup_util.py", "_order_isolated_packages.py"}
 SKIPPED_NAMES = frozenset({"__pycache__", "node_modules", "site-packages"})
-GENERATED_MARKERS = frozenset({
-    "pyvenv.cfg", "CMakeCache.txt", "local_setup.sh", "local_setup.bash", "local_setup.zsh",
-    "local_setup.ps1", "_local_setup_util_sh.py", "_local_setup_util_ps1.py", "colcon_build.rc"})
+GENERATED_MARKERS = frozenset({"pyvenv.cfg", "CMakeCache.txt", "_local_setup_util_sh.py",
+                               "_local_setup_util_ps1.py", "colcon_build.rc"})
 VENDORED_NAMES = frozenset({"include"})
 """Folders discovery does not search for packages: a C/C++ header tree never holds a ROS
 package's sources, and a package.xml there came with a copied library (mavlink's headers)."""
 """Files marking a folder whose contents are generated (a virtual environment, a CMake build
 tree, a colcon install or build folder committed without the COLCON_IGNORE colcon writes
 into it): skipped with everything below it, beyond colcon."""
+INSTALL_SCRIPTS = frozenset({"local_setup.sh", "setup.sh", "local_setup.bash", "setup.bash"})
+"""The scripts colcon writes at an install folder's top: all of them together, in a folder
+that is no package, mark one (a hand-written ``local_setup.sh`` alone does not)."""
 INSTALLED_SHARE = ("ament_index", "colcon-core")
 """Folders beside an installed package's ``share/<name>`` (a package.xml copied there by
 ``data_files``): a package folder in a ``share`` folder holding one is an install's copy."""
@@ -158,7 +161,8 @@ def _search(folders: Found, links: Found, seen: set[str]) -> Iterator[tuple[Path
         seen.add(real)
         listed = listing(sub)
         names = {e.name for e in listed}
-        if not names.isdisjoint(IGNORE_MARKERS) or not names.isdisjoint(GENERATED_MARKERS):
+        if not names.isdisjoint(IGNORE_MARKERS) or not names.isdisjoint(GENERATED_MARKERS) or \
+                INSTALL_SCRIPTS <= names and names.isdisjoint(PACKAGE_MARKERS):
             continue
         if any(e.name in PACKAGE_MARKERS and _is_file(e) for e in listed):
             if not _installed_copy(sub):

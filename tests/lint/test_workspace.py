@@ -44,7 +44,10 @@ def workspace(tmp_path: Path) -> Path:
         "log/latest/package.xml": MANIFEST,
         "src/build/zeta/package.xml": MANIFEST,  # only a name: colcon finds it
         "old_install/_setup_util.py": "",  # a catkin install space
-        "committed/install/local_setup.sh": "",  # colcon's, committed without COLCON_IGNORE
+        **{f"committed/install/{name}": "" for name in  # colcon's, without COLCON_IGNORE
+           ("local_setup.sh", "setup.sh", "local_setup.bash", "setup.bash")},
+        "src/scripted/local_setup.sh": "",  # a developer's own script: still searched
+        "src/scripted/theta/package.xml": MANIFEST,
         "committed/install/omega/share/omega/package.xml": MANIFEST,
         "committed/build/omega/colcon_build.rc": "",
         "committed/build/omega/package.xml": MANIFEST,  # --symlink-install's links
@@ -63,7 +66,7 @@ def workspace(tmp_path: Path) -> Path:
 
 def test_workspace_discovery_follows_colcon(workspace: Path) -> None:
     assert _names(workspace, ".") == ["src/alpha", "src/build/zeta", "src/group/beta",
-                                      "src/group/pure"]
+                                      "src/group/pure", "src/scripted/theta"]
 
 
 def test_no_path_means_the_current_folder(workspace: Path) -> None:
@@ -106,14 +109,14 @@ def test_absolute_paths_and_paths_outside_the_cwd(workspace: Path, tmp_path: Pat
 def test_symlinked_packages_are_found_once_and_cycles_stop(workspace: Path) -> None:
     (workspace / "src" / "link_to_beta").symlink_to(workspace / "src" / "group" / "beta")
     (workspace / "src" / "group" / "loop").symlink_to(workspace / "src")
-    assert len(_names(workspace, ".")) == 4
+    assert len(_names(workspace, ".")) == 5
 
 
 @pytest.mark.parametrize("link", ["src/a_link", "src/group/zz_link", "a_link"])
 def test_a_linked_package_is_reported_at_its_real_path(workspace: Path, link: str) -> None:
     (workspace / link).symlink_to(workspace / "src" / "group" / "beta")
     assert _names(workspace, ".") == ["src/alpha", "src/build/zeta", "src/group/beta",
-                                      "src/group/pure"]
+                                      "src/group/pure", "src/scripted/theta"]
 
 
 def test_owning_package_stops_at_the_repository_root(tmp_path: Path) -> None:
@@ -133,7 +136,7 @@ def test_unreadable_folders_are_skipped(workspace: Path, monkeypatch: pytest.Mon
         return scandir(path)  # type: ignore[arg-type]
 
     monkeypatch.setattr(os, "scandir", refusing)
-    assert _names(workspace, ".") == ["src/alpha", "src/build/zeta"]
+    assert _names(workspace, ".") == ["src/alpha", "src/build/zeta", "src/scripted/theta"]
 
 
 def test_a_folder_inside_a_package_lints_its_package(workspace: Path) -> None:

@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import posixpath
 import re
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from difflib import SequenceMatcher
 from typing import TYPE_CHECKING
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.launch_reader import yaml_problem
 from pkgtool.model.package import Package, is_test_yaml
 from pkgtool.model.span import Span
@@ -142,21 +144,32 @@ def _stray(name: str, names: tuple[str, ...], beside: bool) -> str:
     return f"`{'/'.join(names)}` holds values but no `ros__parameters` key above them"
 
 
-_YAML_READERS = ("MoveItConfigsBuilder", "load_yaml(")
-"""What a launch file reads YAML files into dicts with (MoveIt's configuration builder
-loads ``config/kinematics.yaml``, ``joint_limits.yaml``...; ``load_yaml`` is the helper
-MoveIt's launch files use): such files need not be parameter files."""
+_MOVEIT_FILES = lazy_pattern(
+    r"(kinematics|joint_limits|moveit_controllers|pilz_cartesian_limits|sensors_3d|"
+    r"trajectory_execution|\w+_planning)\.ya?ml")
+"""The files of a MoveIt configuration package ``MoveItConfigsBuilder`` loads into dicts."""
+_LOAD_YAML = lazy_pattern(r"load_yaml\s*\([^)]*?['\"]([^'\"]+\.ya?ml)['\"]")
+"""A ``load_yaml(package, 'config/kinematics.yaml')`` call of MoveIt's launch helpers."""
 
 
 def _code_reads_parameter_keys(package: Package) -> bool:
     """True when a module of the package (not a launch file) names `ros__parameters`: it
     reads parameter-style YAML itself (``cfg.get('ros__parameters', cfg)``), so a file no
-    launch file passes to a node may follow that code's format; or when a launch file reads
-    YAML into dicts itself (:data:`_YAML_READERS`)."""
+    launch file passes to a node may follow that code's format."""
     launch = {f.path for f in package.launch_files}
     return any("ros__parameters" in text for path, text in package.texts.items()
-               if path.endswith(".py") and path not in launch and path != "setup.py") or \
-        any(reader in package.texts.get(path, "") for path in launch for reader in _YAML_READERS)
+               if path.endswith(".py") and path not in launch and path != "setup.py")
+
+
+def _read_as_dicts(package: Package) -> Callable[[str], bool]:
+    """Whether a launch file reads the YAML file at a path into a dict itself: MoveIt's
+    configuration files when a launch file uses ``MoveItConfigsBuilder``, and the files a
+    ``load_yaml(...)`` helper is given (by name)."""
+    texts = [package.texts.get(f.path, "") for f in package.launch_files]
+    moveit = any("MoveItConfigsBuilder" in text for text in texts)
+    loaded = {posixpath.basename(m) for text in texts for m in _LOAD_YAML.findall(text)}
+    return lambda path: posixpath.basename(path) in loaded or \
+        moveit and _MOVEIT_FILES.fullmatch(posixpath.basename(path)) is not None
 
 
 def _candidates(package: Package) -> Iterator[str]:
@@ -189,9 +202,10 @@ def malformed_parameter_file(package: Package) -> Iterator[Hit]:
     (maps, RViz or bridge configurations, waypoints), files under `test/` and launch files
     are not checked, nor is any file no launch file passes when the package's own code
     names `ros__parameters` (it reads those files itself: `yaml.safe_load(f).get(
-    'ros__parameters', {})`, the path given as a program option), or when a launch file
-    reads YAML into dicts itself (MoveIt's `MoveItConfigsBuilder`, which loads
-    `config/kinematics.yaml` and the like, or a `load_yaml(...)` helper). In a checked file a near
+    'ros__parameters', {})`, the path given as a program option), nor a file a launch file
+    reads into a dict itself: MoveIt's configuration files (`kinematics.yaml`,
+    `joint_limits.yaml`, `*_planning.yaml`...) where a launch file uses
+    `MoveItConfigsBuilder`, and files given to a `load_yaml(...)` helper. In a checked file a near
     miss (or `parameters:` under a node name) counts only when every mapping above it, the
     top level included, holds only mappings, as node names and namespaces do: beside a
     scalar or a list (`serial_number: a200`, `urdf: null`) it is a key of some other YAML,
@@ -222,8 +236,9 @@ def malformed_parameter_file(package: Package) -> Iterator[Hit]:
     passed = {path for path, nodes in parameter_file_nodes(package).items()
               if not all(node.composable for node in nodes)}
     own_reader = _code_reads_parameter_keys(package)
+    as_dicts = _read_as_dicts(package)
     for path in _candidates(package):
-        if own_reader and path not in passed:
+        if (own_reader or as_dicts(path)) and path not in passed:
             continue  # the package's code reads such files itself: its own format
         documents = yaml_problem(path, package.texts[path])
         if not isinstance(documents, list):

@@ -14,9 +14,10 @@ from pkgtool.knowledge.rosdistro import (is_released_package, keys_for_import, m
 from pkgtool.model.installed import why_not_installed
 from pkgtool.model.launch import python_folders
 from pkgtool.model.package import Package
-from pkgtool.model.setup_py import EntryPoint
+from pkgtool.model.setup_py import EntryPoint, Value
 from pkgtool.rules.console_scripts import scripts_and_modules
-from pkgtool.rules.imports import ANY, RUNTIME, declared
+from pkgtool.knowledge.interfaces import interfaces_of
+from pkgtool.rules.imports import RUNTIME, declared
 from pkgtool.rules.registry import rule
 
 
@@ -55,37 +56,70 @@ def _undeclared_provider(package: Package, entry: EntryPoint) -> Iterator[Hit]:
                   f"Add `<exec_depend>{providers[0]}</exec_depend>` to package.xml")
 
 
+_NO_MODULES_FOR_SCRIPTS = frozenset({"setuptools", "pytest", "wheel", "pip"})
+"""Requirements that provide no module a package's script would name."""
+_CORE = frozenset({"rclpy", "launch", "launch_ros", "ament_index_python", "launch_testing",
+                   "launch_testing_ros", "ros2launch", "rosidl_default_runtime"})
+"""ROS packages whose only Python package is the one of their name (or none)."""
+
+
 def _provided_by_nothing(package: Package, entry: EntryPoint) -> Iterator[Hit]:
     """A hit when nothing can provide the entry's top-level module: not a package setup.py
     lists (one that does not exist is SET011's), not the standard library, no package of the
-    workspace, no released ROS package, no module rosdep maps to a key, and
-    nothing package.xml or ``install_requires`` names."""
+    workspace, no released ROS package, no module rosdep maps to a key, no requirement but
+    setuptools' in ``install_requires`` (setup.py's or setup.cfg's), and no run-time
+    dependency that may install it (any but interface packages, rclpy's own and Python keys
+    of known modules)."""
     root = entry.module.split(".")[0]
     distro = package.context.distro
     setup = package.setup_py
-    if setup is None or setup.is_unresolved("install_requires") or setup.is_unresolved("**"):
+    if setup is None or setup.is_unresolved("install_requires") or \
+            setup.is_unresolved("**") or _requires_anything(setup.install_requires) or \
+            package.setup_cfg is not None and \
+            package.setup_cfg.get("options", "install_requires") is not None:
         return
-    required = setup.install_requires.value if setup.install_requires else ()
-    wanted = {canonicalize_name(re.split(r"[\s<>=!~;\[]", str(r), maxsplit=1)[0])
-              for r in (required if isinstance(required, (list, tuple)) else (required,))}
     names = (*(setup.packages.names if setup.packages else ()), *(setup.py_modules or ()),
              *(setup.package_dir or {}))
-    listed = {name.split(".")[0] for name in names}
-    if root in listed or root in stdlib_modules(distro) or package.context.provider(root) or \
-            root in package.context.workspace or is_released_package(root, distro) or \
-            keys_for_import(root, distro) or canonicalize_name(root) in wanted or \
-            any(key == root or _unmapped_python_key(key) for key in declared(package, ANY)):
+    if root in {name.split(".")[0] for name in names} or root in stdlib_modules(distro) or \
+            _in_the_workspace(package, root) or is_released_package(root, distro) or \
+            keys_for_import(root, distro) or \
+            any(_may_provide(key, root, distro) for key in declared(package, RUNTIME)):
         return
     yield Hit(entry.span, f"`{entry.module}` is not installed: neither this package, nor "
-              f"another of the workspace, nor a released ROS package, nor anything package.xml "
-              f"or install_requires names provides `{root}`: the script fails with "
-              "ModuleNotFoundError", "Point the entry at a module this package installs")
+              "another of the workspace, nor a released ROS package, nor any dependency "
+              f"package.xml or install_requires declares provides `{root}`: the script fails "
+              "with ModuleNotFoundError", "Point the entry at a module this package installs, "
+              "or declare the package that provides it")
 
 
-def _unmapped_python_key(key: str) -> bool:
-    """True for a Python key (``python3-x``, ``x-pip``) whose modules pkgtool does not know:
-    it may install a module of any name."""
-    return (key.startswith("python3-") or key.endswith("-pip")) and not modules_of_key(key)
+def _requires_anything(required: Value | None) -> bool:
+    """True when ``install_requires`` holds a requirement other than setuptools' own."""
+    value = required.value if required is not None else ()
+    lines = value.splitlines() if isinstance(value, str) else \
+        value if isinstance(value, (list, tuple)) else ()
+    names = {canonicalize_name(re.split(r"[\s<>=!~;\[@(]", str(line).strip(), maxsplit=1)[0])
+             for line in lines if str(line).strip()}
+    return not names <= _NO_MODULES_FOR_SCRIPTS
+
+
+def _in_the_workspace(package: Package, root: str) -> bool:
+    """True when a package of the workspace is named ``root`` or installs a Python package
+    or namespace below it (``acme.utils`` for ``acme``)."""
+    return root in package.context.workspace or package.context.provider(root) is not None or \
+        any(module == root or module.startswith(f"{root}.")
+            for other in package.context.workspace.values() for module in other.modules)
+
+
+def _may_provide(key: str, root: str, distro: str) -> bool:
+    """True when the declared ``key`` may install the module ``root``: it is named so, or
+    its modules are not known (a ROS package's Python package may be named otherwise:
+    ``urdfdom_py`` installs ``urdf_parser_py``)."""
+    if key == root:
+        return True
+    if key in _CORE or interfaces_of(key, distro) is not None:
+        return False
+    modules = modules_of_key(key)
+    return root in modules if modules else True
 
 
 def _misspelt_root(package: Package, module: str, modules: dict[str, str]
@@ -130,8 +164,9 @@ def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
     package of the workspace counts when package.xml declares that package for run time
     (`<exec_depend>`, `<depend>`), not only for tests. A module outside them that nothing can
     provide (not the standard library, no package of the workspace, no released ROS package,
-    no module rosdep knows, nothing package.xml or `install_requires` names, and no Python key
-    package.xml declares whose modules are unknown) is reported too.
+    no module rosdep knows, no requirement in `install_requires` but setuptools, no run-time
+    dependency that may install it: any but interface packages, rclpy's own and Python keys
+    of other modules) is reported too.
 
     ## Why is this bad?
     The build succeeds, but running the command fails with `ModuleNotFoundError`. With

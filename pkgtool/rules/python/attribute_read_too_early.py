@@ -14,7 +14,7 @@ from pkgtool.rules.node_api import derives_from_node_alone
 from pkgtool.rules.python._attribute_guards import dynamic_attributes
 from pkgtool.rules.python._message_instances import method_receiver
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import FUNCTIONS, base_names, installed_trees
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, base_names, installed_trees
 
 _PARAMETER_CALLBACKS = frozenset({"add_on_set_parameters_callback",
                                   "add_pre_set_parameters_callback",
@@ -77,23 +77,51 @@ def attribute_read_too_early(package: Package) -> Iterator[Hit]:
         set_outside = _stored_on_names(package) if set_outside is None else set_outside
         for cls in classes:
             init = _init_of(cls)
-            if init is not None and method_receiver(init) == "self" and not any(
-                    isinstance(s, FUNCTIONS) and s.name == "__new__" for s in cls.body):
-                walk = _Walk(cls, init, set_outside.get(cls.name, set()))
-                for node, message in walk.early_reads():
-                    yield Hit(Span(module.path, node.lineno, node.col_offset + 1), message)
+            methods = {s.name for s in cls.body if isinstance(s, FUNCTIONS)}
+            if init is None or method_receiver(init) != "self" or "__new__" in methods or \
+                    methods & NODE_ATTRIBUTES - {"destroy_node"} or \
+                    ANY_NAME in set_outside.get(cls.name, ()):
+                continue  # rclpy's Node calls its methods overridden: the package's code runs
+            walk = _Walk(cls, init, set_outside.get(cls.name, set()), index,
+                         cls.name in set_outside.get(_MADE, ()))
+            for node, message in walk.early_reads():
+                yield Hit(Span(module.path, node.lineno, node.col_offset + 1), message)
+
+
+ANY_NAME = "*"
+"""Stands for every attribute: ``setattr(Talker, name, value)`` may make any."""
+_MADE = "()"
+"""The key of the names of the classes the installed modules call (make instances of)."""
 
 
 def _stored_on_names(package: Package) -> dict[str, set[str]]:
-    """The attributes the installed modules store on a name (``Talker.period = 0.5``: a
-    class attribute made outside the class), by that name."""
+    """The attributes the installed modules store on a class named so (``Talker.period =
+    0.5``, also through an import alias or a module: a class attribute made outside the
+    class), by the class's name; :data:`ANY_NAME` for a ``setattr`` on it; under
+    :data:`_MADE`, the names of the classes called."""
     stored: dict[str, set[str]] = {}
-    for _, tree, _ in installed_trees(package):
+    for _, tree, index in installed_trees(package):
         for node in nodes_of_class(tree, ast.Attribute):
             assert isinstance(node, ast.Attribute)
-            if not isinstance(node.ctx, ast.Load) and isinstance(node.value, ast.Name):
-                stored.setdefault(node.value.id, set()).add(node.attr)
+            name = _class_name(node.value, index)
+            if not isinstance(node.ctx, ast.Load) and name is not None:
+                stored.setdefault(name, set()).add(node.attr)
+        for call in index.calls:
+            called = _class_name(call.func, index)
+            if called == "setattr" and call.args:
+                stored.setdefault(_class_name(call.args[0], index) or "", set()).add(ANY_NAME)
+            elif called is not None:
+                stored.setdefault(_MADE, set()).add(called)
     return stored
+
+
+def _class_name(value: ast.expr, index: Index) -> str | None:
+    """The last name of what ``value`` names (``Talker`` for ``talker.Talker`` or an alias
+    of it), or None for another expression."""
+    if not isinstance(value, (ast.Name, ast.Attribute)):
+        return None
+    return (index.qualified(value) or (value.id if isinstance(value, ast.Name) else
+                                       value.attr)).rpartition(".")[2]
 
 
 def _init_of(cls: ast.ClassDef) -> ast.FunctionDef | None:
@@ -103,11 +131,18 @@ def _init_of(cls: ast.ClassDef) -> ast.FunctionDef | None:
 
 
 def _class_names(cls: ast.ClassDef) -> set[str]:
-    """The names the class body binds: class attributes, methods, properties, imports."""
+    """The names the class body binds (class attributes, methods, properties, imports; not
+    an annotation alone), and those its methods store on the class (``cls.x = ...`` in a
+    classmethod, ``type(self).x``, ``self.__class__.x``)."""
     names: set[str] = set()
     for statement in cls.body:
         if isinstance(statement, (*FUNCTIONS, ast.ClassDef)):
             names.add(statement.name)
+            names.update(node.attr for node in ast.walk(statement)
+                         if isinstance(node, ast.Attribute) and _on_the_class(node.value)
+                         and not isinstance(node.ctx, ast.Load))
+            continue
+        if isinstance(statement, ast.AnnAssign) and statement.value is None:
             continue
         for node in ast.walk(statement):
             if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
@@ -115,6 +150,13 @@ def _class_names(cls: ast.ClassDef) -> set[str]:
             elif isinstance(node, ast.alias):
                 names.add((node.asname or node.name).split(".")[0])
     return names
+
+
+def _on_the_class(value: ast.expr) -> bool:
+    """True for ``cls``, ``type(...)`` and ``....__class__``: the class, not an instance."""
+    return isinstance(value, ast.Name) and value.id == "cls" or \
+        isinstance(value, ast.Call) and isinstance(value.func, ast.Name) and \
+        value.func.id == "type" or isinstance(value, ast.Attribute) and value.attr == "__class__"
 
 
 def _super_call(node: ast.AST, method: str | None = None) -> bool:
@@ -129,9 +171,12 @@ def _super_call(node: ast.AST, method: str | None = None) -> bool:
 class _Walk:
     """The walk of one ``__init__``: what the class defines, what the method stored so far."""
 
-    def __init__(self, cls: ast.ClassDef, init: ast.FunctionDef, set_outside: set[str]
-                 ) -> None:
+    def __init__(self, cls: ast.ClassDef, init: ast.FunctionDef, set_outside: set[str],
+                 index: Index, made: bool) -> None:
         self.init = init
+        self.cls = cls
+        self.index = index
+        self.made = made
         self.own = _class_names(cls) | set_outside
         self.methods = {s.name for s in cls.body if isinstance(s, FUNCTIONS)}
         self.assigned = _first_stores(cls, init)
@@ -158,9 +203,10 @@ class _Walk:
                             and self._called(read):
                         yield read, (f"`self.{name}()` is called before `super().__init__()` "
                                      "has set the Node up: AttributeError")
-                elif name not in stored and name not in self.own and name in self.assigned:
+                elif name not in stored and name not in self.own and name in self.assigned \
+                        and (self.assigned[name][1] or self.made):
                     yield read, (f"`self.{name}` is read before it is assigned ("
-                                 f"{self.assigned[name]}): AttributeError when the node is "
+                                 f"{self.assigned[name][0]}): AttributeError when the node is "
                                  "created")
             stored.update(node.attr for node in _store_nodes(statement))
 
@@ -168,8 +214,15 @@ class _Walk:
         """The number of the top-level statement of ``__init__`` calling the base's
         ``__init__`` (None when no top-level statement does)."""
         return next((number for number, statement in enumerate(self.init.body)
-                     if isinstance(statement, ast.Expr)
-                     and _super_call(statement.value, "__init__")), None)
+                     if isinstance(statement, ast.Expr) and (
+                         _super_call(statement.value, "__init__") or
+                         self._base_init(statement.value))), None)
+
+    def _base_init(self, node: ast.AST) -> bool:
+        """True for ``Node.__init__(self, ...)``: the base's ``__init__`` called by name."""
+        return isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and \
+            node.func.attr == "__init__" and \
+            ast.dump(node.func.value) == ast.dump(self.cls.bases[0])
 
     def _called(self, node: ast.AST) -> bool:
         parent = self.parents.get(id(node))
@@ -208,9 +261,11 @@ class _Walk:
         return isinstance(parent, ast.Attribute) and parent.value is name
 
     def _in_super(self, name: ast.Name) -> bool:
+        """True for ``self`` given to ``super(C, self)`` or first to ``Node.__init__``."""
         parent = self.parents.get(id(name))
-        return isinstance(parent, ast.Call) and isinstance(parent.func, ast.Name) and \
-            parent.func.id == "super"
+        return isinstance(parent, ast.Call) and (
+            isinstance(parent.func, ast.Name) and parent.func.id == "super" or
+            self._base_init(parent) and parent.args[:1] == [name])
 
     def _given_to_the_node(self, node: ast.AST) -> bool:
         """True when ``node`` is an argument of a call of one of the node's own rclpy
@@ -234,25 +289,29 @@ def _self_attribute(node: ast.AST) -> str | None:
 
 
 def _store_nodes(node: ast.AST) -> Iterator[ast.Attribute]:
-    """The stores and deletions of attributes of ``self`` anywhere in ``node`` (annotations
-    without a value too)."""
+    """The stores of attributes of ``self`` anywhere in ``node`` (not an annotation alone,
+    ``self.x: int``, which stores nothing)."""
+    bare = {id(n.target) for n in ast.walk(node) if isinstance(n, ast.AnnAssign) and
+            n.value is None}
     return (n for n in ast.walk(node) if isinstance(n, ast.Attribute)
-            and not isinstance(n.ctx, ast.Load) and _self_attribute(n) is not None)
+            and isinstance(n.ctx, ast.Store) and _self_attribute(n) is not None
+            and id(n) not in bare)
 
 
-def _first_stores(cls: ast.ClassDef, init: ast.FunctionDef) -> dict[str, str]:
+def _first_stores(cls: ast.ClassDef, init: ast.FunctionDef) -> dict[str, tuple[str, bool]]:
     """Where the class's methods first assign each attribute of ``self``: a line of
-    ``__init__``, else the method (attributes no method assigns are PYC023's; ``x += 1``
-    reads first, so it assigns nothing new)."""
+    ``__init__`` (True), else the method (False: an attribute only another method assigns,
+    in a class the package never makes, may be one its subclasses elsewhere give; those no
+    method assigns are PYC023's; ``x += 1`` reads first, so it assigns nothing new)."""
     lines: dict[str, int] = {}
     augmented = {id(n.target) for n in ast.walk(init) if isinstance(n, ast.AugAssign)}
     for node in (n for n in _store_nodes(init) if id(n) not in augmented):
         lines[node.attr] = min(lines.get(node.attr, node.lineno), node.lineno)
-    found = {name: f"line {line}" for name, line in lines.items()}
+    found = {name: (f"line {line}", True) for name, line in lines.items()}
     for method in cls.body:
         if isinstance(method, FUNCTIONS) and method is not init:
             for node in _store_nodes(method):
-                found.setdefault(node.attr, f"in `{method.name}`, which has not run yet")
+                found.setdefault(node.attr, (f"in `{method.name}`, which has not run yet", False))
     return found
 
 
@@ -279,6 +338,12 @@ def _certain_parts(statement: ast.stmt) -> Iterator[ast.AST]:
     elif isinstance(statement, (ast.Assign, ast.AnnAssign)):
         if statement.value is not None:
             yield from _certain(statement.value)
+        targets = statement.targets if isinstance(statement, ast.Assign) else [statement.target]
+        for target in targets:  # `self.config['k'] = v` reads `self.config`
+            if isinstance(target, (ast.Subscript, ast.Attribute)):
+                yield from _certain(target.value)
+            if isinstance(target, ast.Subscript):
+                yield from _certain(target.slice)
     else:
         for child in ast.iter_child_nodes(statement):
             yield from _certain(child)
@@ -295,6 +360,9 @@ def _certain(node: ast.AST) -> Iterator[ast.AST]:
         yield from _certain(node.test)
     elif isinstance(node, ast.BoolOp):
         yield from _certain(node.values[0])
+    elif isinstance(node, ast.Compare) and len(node.ops) > 1:  # `a < b < c` may stop at `b`
+        yield from _certain(node.left)
+        yield from _certain(node.comparators[0])
     elif isinstance(node, (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)):
         yield from _certain(node.generators[0].iter)
     else:

@@ -13,12 +13,13 @@ from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees, launch
 
 _READERS = frozenset({"os.environ.get", "os.getenv"})
 _ALWAYS_SET = frozenset({"HOME", "PATH", "ROS_DISTRO", "ROS_VERSION", "ROS_PYTHON_VERSION",
-                         "AMENT_PREFIX_PATH"})
+                         "AMENT_PREFIX_PATH", "PYTHONPATH", "LD_LIBRARY_PATH"})
 """Variables every shell (``HOME``, ``PATH``) or a sourced ROS 2 (``ROS_DISTRO``,
-``AMENT_PREFIX_PATH``) sets."""
+``AMENT_PREFIX_PATH``, ``PYTHONPATH``, ``LD_LIBRARY_PATH``) sets."""
 _JOINERS = frozenset({"os.path.join", "pathlib.Path", "int", "float"})
 """Functions refusing None (TypeError)."""
-_CAUGHT = frozenset({"TypeError", "AttributeError", "Exception", "BaseException"})
+_NUMBERS = frozenset({"int", "float"})
+_BROAD = frozenset({"Exception", "BaseException"})
 
 
 @rule("PYC088", "unset-environment-variable", Severity.WARNING,
@@ -32,11 +33,13 @@ def unset_environment_variable(package: Package) -> Iterator[Hit]:
     of `+`, an argument of `os.path.join`, `Path`, `int` or `float`, or the receiver of a
     method (`.split(':')`), in installed modules and Python launch files. Not reported:
     variables every shell or a sourced ROS 2 sets (`HOME`, `PATH`, `ROS_DISTRO`,
-    `AMENT_PREFIX_PATH`), packages with environment hooks (`ament_environment_hooks`, a
-    `hooks/x.dsv`: sourcing the install sets their variables), code that tests the
-    variable or the name anywhere in its function
-    (`if 'NAME' in os.environ:`, `if value:`, `value or ''`), and code in a `try` that
-    catches the error.
+    `AMENT_PREFIX_PATH`, `PYTHONPATH`, `LD_LIBRARY_PATH`), a variable the module names
+    anywhere else (a test `if 'NAME' in os.environ:`, `os.environ.setdefault('NAME', ...)`,
+    a launch `SetEnvironmentVariable('NAME', ...)`), packages with environment hooks
+    (`ament_environment_hooks`, a `hooks/x.dsv`: sourcing the install sets their
+    variables), a name its function tests (`if value:`, `value or ''`), and code in a `try`
+    that catches the error. An explicit `None` default counts as none; `x +=
+    os.environ.get('NAME')` is a use of `+`.
 
     ## Why is this bad?
     `get` returns None for a variable that is not set, and `None + ':'` raises TypeError
@@ -61,10 +64,12 @@ def unset_environment_variable(package: Package) -> Iterator[Hit]:
             name = _variable(call, index)
             if name is None:
                 continue
-            for use, how in _none_failing_uses(call, index):
+            for use, (how, default) in _none_failing_uses(call, index, tree):
+                fix = f"Give a default: `{_with_default(call, default)}`" if default else \
+                    f"Check that `{name}` is set first (`if '{name}' in os.environ:`)"
                 yield Hit(Span(path, use.lineno, use.col_offset + 1),
                           f"`{shortened(ast.unparse(call))}` is None when `{name}` is not "
-                          f"set: {how}", f"Give a default: `{_with_default(call)}`")
+                          f"set: {how}", fix)
 
 
 _HOOK_SUFFIXES = (".dsv", ".sh", ".bash", ".zsh", ".dsv.in", ".sh.in", ".bash.in")
@@ -79,8 +84,11 @@ def _has_environment_hooks(package: Package) -> bool:
 
 
 def _variable(call: ast.Call, index: Index) -> str | None:
-    """The variable ``call`` reads without a default (``os.environ.get('X')``), or None."""
-    if len(call.args) != 1 or call.keywords or not isinstance(call.args[0], ast.Constant) or \
+    """The variable ``call`` reads without a default (``os.environ.get('X')``, also with
+    ``None`` as the default), or None."""
+    defaults = [*call.args[1:], *(k.value for k in call.keywords)]
+    if not call.args or len(defaults) > 1 or any(not _is_none(d) for d in defaults) or \
+            not isinstance(call.args[0], ast.Constant) or \
             not isinstance(call.args[0].value, str) or \
             not isinstance(call.func, (ast.Name, ast.Attribute)) or \
             index.qualified(call.func) not in _READERS:
@@ -89,17 +97,28 @@ def _variable(call: ast.Call, index: Index) -> str | None:
     return None if name in _ALWAYS_SET else name
 
 
-def _with_default(call: ast.Call) -> str:
-    return f"{ast.unparse(call.func)}({ast.unparse(call.args[0])}, '')"
+def _is_none(node: ast.expr) -> bool:
+    return isinstance(node, ast.Constant) and node.value is None
 
 
-def _none_failing_uses(call: ast.Call, index: Index) -> Iterator[tuple[ast.expr, str]]:
+def _with_default(call: ast.Call, default: str) -> str:
+    return f"{ast.unparse(call.func)}({ast.unparse(call.args[0])}, {default})"
+
+
+Failure = tuple[str, str]
+"""What using None somewhere raises, and the default to suggest ('' for none: check)."""
+
+
+def _none_failing_uses(call: ast.Call, index: Index, tree: ast.Module
+                       ) -> Iterator[tuple[ast.expr, Failure]]:
     """Where the value of ``call`` is used in a way None fails, with what is raised: the
-    call itself, or the reads of a name bound once to it, unless its function tests it."""
-    scope = index.enclosing_function(call) or index.module_of(call)
+    call itself, or the reads of a name bound once to it, unless the module names the
+    variable elsewhere (a test, ``os.environ.setdefault``, ``SetEnvironmentVariable``) or
+    its function tests the name."""
     variable = call.args[0].value  # type: ignore[attr-defined]
-    if _tested(scope, lambda n: isinstance(n, ast.Constant) and n.value == variable):
+    if _named_elsewhere(call, variable, tree, index):
         return
+    scope = index.enclosing_function(call) or index.module_of(call)
     values: list[ast.expr] = [call]
     parent = index.parents.get(id(call))
     if isinstance(parent, ast.Assign) and len(parent.targets) == 1 and \
@@ -112,25 +131,41 @@ def _none_failing_uses(call: ast.Call, index: Index) -> Iterator[tuple[ast.expr,
                   isinstance(n.ctx, ast.Load) and index.enclosing_function(n) is
                   index.enclosing_function(call) and n.lineno >= call.lineno]
     for value in values:
-        how = _failure(value, index)
-        if how is not None and not _caught(value, index):
-            yield value, how
+        failure = _failure(value, index)
+        if failure is not None and not _caught(value, index, failure[0]):
+            yield value, failure
 
 
-def _failure(value: ast.expr, index: Index) -> str | None:
+def _named_elsewhere(call: ast.Call, variable: str, tree: ast.Module, index: Index) -> bool:
+    """True when the module names ``variable`` elsewhere than in ``call`` and than as the
+    target the statement holding the call sets (``os.environ['X'] = a + os.environ.get('X')``
+    sets it only after the read)."""
+    statement: ast.AST | None = call
+    while statement is not None and not isinstance(statement, ast.stmt):
+        statement = index.parents.get(id(statement))
+    targets = statement.targets if isinstance(statement, ast.Assign) else []
+    skipped = {id(n) for target in targets for n in ast.walk(target)} | {id(call.args[0])}
+    return any(isinstance(n, ast.Constant) and n.value == variable and id(n) not in skipped
+               for n in ast.walk(tree))
+
+
+def _failure(value: ast.expr, index: Index) -> Failure | None:
     """What using ``value`` (None) where it is raises, or None when it is fine there."""
     parent = index.parents.get(id(value))
-    if isinstance(parent, ast.BinOp) and isinstance(parent.op, ast.Add):
-        return "`+` raises TypeError"
+    if isinstance(parent, ast.BinOp) and isinstance(parent.op, ast.Add) or \
+            isinstance(parent, ast.AugAssign) and isinstance(parent.op, ast.Add) and \
+            parent.value is value:
+        return "`+` raises TypeError", "''"
     if isinstance(parent, ast.Attribute) and parent.value is value:
-        return f"`.{parent.attr}` raises AttributeError"
+        return f"`.{parent.attr}` raises AttributeError", "''"
     if isinstance(parent, ast.Call) and value in parent.args and \
             isinstance(parent.func, (ast.Name, ast.Attribute)):
         func = parent.func
         called = index.qualified(func) or (func.id if isinstance(func, ast.Name) and
                                            func.id not in index.bound else None)
         if called in _JOINERS:
-            return f"`{ast.unparse(func)}(...)` raises TypeError"
+            return f"`{ast.unparse(func)}(...)` raises TypeError", \
+                "'0'" if called in _NUMBERS else ""
     return None
 
 
@@ -152,12 +187,14 @@ def _bindings(scope: ast.AST, name: str) -> int:
         sum(1 for n in ast.walk(scope) if isinstance(n, FUNCTIONS) and n.name == name)
 
 
-def _caught(node: ast.AST, index: Index) -> bool:
-    """True inside the body of a ``try`` one of whose handlers catches the error."""
+def _caught(node: ast.AST, index: Index, how: str) -> bool:
+    """True inside the body of a ``try`` one of whose handlers catches the error ``how``
+    names (TypeError or AttributeError), or any."""
+    caught = _BROAD | {"TypeError" if "TypeError" in how else "AttributeError"}
     child, parent = node, index.parents.get(id(node))
     while parent is not None:
         if isinstance(parent, ast.Try) and child in parent.body and any(
-                h.type is None or any(isinstance(n, ast.Name) and n.id in _CAUGHT
+                h.type is None or any(isinstance(n, ast.Name) and n.id in caught
                                       for n in ast.walk(h.type)) for h in parent.handlers):
             return True
         child, parent = parent, index.parents.get(id(parent))

@@ -28,7 +28,8 @@ def unevaluated_setup_keyword(package: Package) -> Iterator[Hit]:
     Notes `packages`, `package_dir`, `py_modules`, `data_files`, `entry_points`, `name` and
     `version` values (and `**kwargs`) that the static evaluator could not compute: reading
     files, `os.walk`, calls to functions it does not know, environment variables. The note
-    points at the expression it stopped at. The checks that need the value say nothing.
+    points at the expression it stopped at. The checks that need the value say nothing (of a
+    `data_files` list, the entries that evaluate are still checked one by one).
 
     ## Why is this bad?
     It is not wrong in itself: lint never runs setup.py, so it cannot vouch for what such
@@ -51,6 +52,11 @@ def unevaluated_setup_keyword(package: Package) -> Iterator[Hit]:
         if keyword in CHECKED_KEYWORDS and keyword not in reported:
             reported.add(keyword)
             shown = "`**` keywords" if keyword == "**" else f"`{keyword}`"
+            skipped = f"checks of {CHECKED_KEYWORDS[keyword]} are skipped"
+            if keyword == "data_files" and setup.data_files_in_part:
+                count = len(setup.data_files_in_part)
+                skipped = (f"checks of what the list installs as a whole are skipped (its "
+                           f"{count} {'entry' if count == 1 else 'entries'} that evaluate are "
+                           "checked one by one)")
             yield Hit(unresolved.span, f"{shown} could not be evaluated statically "
-                                       f"(`{unresolved.source}`): checks of "
-                                       f"{CHECKED_KEYWORDS[keyword]} are skipped")
+                                       f"(`{unresolved.source}`): {skipped}")
