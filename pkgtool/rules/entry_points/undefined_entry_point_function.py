@@ -52,6 +52,24 @@ def _plain_function(package: Package, path: str, name: str) -> bool:
     return False
 
 
+def _required_parameters(package: Package, path: str, name: str) -> list[str]:
+    """The parameters without a default of the undecorated function ``name`` the installed
+    module ``path`` defines once at its top level (empty for anything else)."""
+    for module, tree, _ in installed_trees(package):
+        if module.path == path:
+            bindings = [s for s in tree.body if name in _bound_at_top(s)]
+            function = bindings[0] if len(bindings) == 1 else None
+            if not isinstance(function, FUNCTIONS) or function.decorator_list:
+                return []
+            arguments = function.args
+            positional = [*arguments.posonlyargs, *arguments.args]
+            required = positional[:len(positional) - len(arguments.defaults)]
+            return [a.arg for a in required] + [
+                a.arg for a, default in zip(arguments.kwonlyargs, arguments.kw_defaults)
+                if default is None]
+    return []
+
+
 def _bound_at_top(statement: ast.stmt) -> set[str]:
     """The names a top-level statement binds (definitions, imports, assignment targets)."""
     if isinstance(statement, (*FUNCTIONS, ast.ClassDef)):
@@ -91,7 +109,8 @@ def undefined_entry_point_function(package: Package) -> Iterator[Hit]:
     `from x import *` unless `x` is a module of the package (its names then count).
     Also reports an entry naming a `Node` subclass of the module instead of a function
     (`talker = my_pkg.talker:Talker`) when neither the class nor the module's top-level code
-    calls `rclpy.init()`, and an entry reading an attribute off a plain function
+    calls `rclpy.init()`, a function with a parameter that has no default (`def main(node):`:
+    the script calls it with no arguments), and an entry reading an attribute off a plain function
     (`talker = my_pkg.talker:main.py`: `getattr(main, 'py')` fails).
 
     ## Why is this bad?
@@ -136,6 +155,14 @@ def undefined_entry_point_function(package: Package) -> Iterator[Hit]:
             yield Hit(entry.span, f"`{entry.attr}` reads `{rest}` off the function "
                       f"`{function}`, which has no such attribute: running the script raises "
                       "AttributeError", f"Write `{entry.module}:{function}`")
+        elif entry.attr == function and \
+                (needed := _required_parameters(package, module.path, function)):
+            shown = [f"`{name}`" for name in needed]
+            names = " and ".join([", ".join(shown[:-1]), shown[-1]] if len(shown) > 1 else shown)
+            yield Hit(entry.span, f"`{function}` needs {names}, but the console script calls "
+                      f"`{function}()` with no arguments: running it raises TypeError",
+                      f"Give {names} a default (`def {function}(args=None):`), or point the "
+                      "entry at a function that takes none")
         elif entry.attr == function and _uninitialised_node(package, module.path, function):
             yield Hit(entry.span, f"`{function}` is a Node class, not a function: the script "
                       "constructs it before anything calls rclpy.init(), which raises, and "

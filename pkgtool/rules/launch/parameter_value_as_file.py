@@ -5,7 +5,7 @@ from __future__ import annotations
 import ast
 from collections.abc import Iterator
 
-from pkgtool.findings import Hit, Severity
+from pkgtool.findings import Hit, Severity, shortened
 from pkgtool.model.ast_nodes import last_name
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
@@ -28,7 +28,8 @@ def parameter_value_as_file(package: Package) -> Iterator[Hit]:
     `ComposableNode` that is a value rather than a parameter file or a dict: a string
     literal (or a name bound once to one) that is a boolean, a number or a URL, or a bare
     `LaunchConfiguration('x')` whose default (its `default=`, or the `default_value` of the
-    file's `DeclareLaunchArgument('x')`) is one (`use_sim_time`'s `'false'`).
+    file's `DeclareLaunchArgument('x')`) is one (`use_sim_time`'s `'false'`); and a set
+    written for a dict (`{'rate: 10'}`: the `:` inside the quotes).
 
     ## Why is this bad?
     launch_ros takes every string and substitution in the list for the path of a parameter
@@ -62,6 +63,14 @@ def parameter_value_as_file(package: Package) -> Iterator[Hit]:
             for item in given.elts:
                 value = local.get(item.id, at_top.get(item.id)) \
                     if isinstance(item, ast.Name) else item
+                if isinstance(value, ast.Set):
+                    yield Hit(Span(path, item.lineno, item.col_offset + 1),
+                              f"`{shortened(ast.unparse(item))}` in `parameters=` is a set, "
+                              "not a dict (the `:` is inside the quotes): launch_ros takes it "
+                              "for the path of a parameter file, skips it (\"Parameter file "
+                              "path is not a file\") and the node never gets the value",
+                              "Write `{'name': value}`")
+                    continue
                 plain = _plain_value(value, defaults) if value is not None else None
                 if plain is not None:
                     yield Hit(Span(path, item.lineno, item.col_offset + 1),

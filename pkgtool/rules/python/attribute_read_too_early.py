@@ -7,7 +7,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
-from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.ast_nodes import child_nodes, descendants, nodes_of_class, subtree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import derives_from_node_alone
@@ -103,8 +103,9 @@ def _stored_on_names(package: Package) -> dict[str, set[str]]:
     for _, tree, index in installed_trees(package):
         for node in nodes_of_class(tree, ast.Attribute):
             assert isinstance(node, ast.Attribute)
-            name = _class_name(node.value, index)
-            if not isinstance(node.ctx, ast.Load) and name is not None:
+            name = _class_name(node.value, index) if not isinstance(node.ctx, ast.Load) \
+                else None
+            if name is not None:
                 stored.setdefault(name, set()).add(node.attr)
         for call in index.calls:
             called = _class_name(call.func, index)
@@ -118,10 +119,9 @@ def _stored_on_names(package: Package) -> dict[str, set[str]]:
 def _class_name(value: ast.expr, index: Index) -> str | None:
     """The last name of what ``value`` names (``Talker`` for ``talker.Talker`` or an alias
     of it), or None for another expression."""
-    if not isinstance(value, (ast.Name, ast.Attribute)):
-        return None
-    return (index.qualified(value) or (value.id if isinstance(value, ast.Name) else
-                                       value.attr)).rpartition(".")[2]
+    if isinstance(value, ast.Name):
+        return index.aliases.get(value.id, value.id).rpartition(".")[2]
+    return value.attr if isinstance(value, ast.Attribute) else None
 
 
 def _init_of(cls: ast.ClassDef) -> ast.FunctionDef | None:
@@ -138,13 +138,13 @@ def _class_names(cls: ast.ClassDef) -> set[str]:
     for statement in cls.body:
         if isinstance(statement, (*FUNCTIONS, ast.ClassDef)):
             names.add(statement.name)
-            names.update(node.attr for node in ast.walk(statement)
+            names.update(node.attr for node in subtree(statement)
                          if isinstance(node, ast.Attribute) and _on_the_class(node.value)
                          and not isinstance(node.ctx, ast.Load))
             continue
         if isinstance(statement, ast.AnnAssign) and statement.value is None:
             continue
-        for node in ast.walk(statement):
+        for node in descendants(statement):
             if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Load):
                 names.add(node.id)
             elif isinstance(node, ast.alias):
@@ -180,12 +180,12 @@ class _Walk:
         self.own = _class_names(cls) | set_outside
         self.methods = {s.name for s in cls.body if isinstance(s, FUNCTIONS)}
         self.assigned = _first_stores(cls, init)
-        self.local_functions = {n.name for n in ast.walk(init)
+        inside = subtree(init)
+        self.local_functions = {n.name for n in inside
                                 if isinstance(n, FUNCTIONS) and n is not init} | {
-            t.id for n in ast.walk(init) if isinstance(n, ast.Assign)
+            t.id for n in inside if isinstance(n, ast.Assign)
             and isinstance(n.value, ast.Lambda) for t in n.targets if isinstance(t, ast.Name)}
-        self.parents = {id(child): parent for parent in ast.walk(init)
-                        for child in ast.iter_child_nodes(parent)}
+        self.parents = index.parents
 
     def early_reads(self) -> Iterator[tuple[ast.AST, str]]:
         """Each certain read before its attribute is assigned, with its message."""
@@ -231,7 +231,7 @@ class _Walk:
     def _may_run_package_code(self, statement: ast.stmt) -> bool:
         """True when ``statement`` may run code of the package that sets attributes of
         ``self``, now or on another thread."""
-        for node in ast.walk(statement):
+        for node in descendants(statement):
             if _super_call(node):
                 return True
             if isinstance(node, ast.Name) and node.id == "self" and \
@@ -288,14 +288,18 @@ def _self_attribute(node: ast.AST) -> str | None:
     return None
 
 
-def _store_nodes(node: ast.AST) -> Iterator[ast.Attribute]:
+def _store_nodes(node: ast.AST) -> list[ast.Attribute]:
     """The stores of attributes of ``self`` anywhere in ``node`` (not an annotation alone,
     ``self.x: int``, which stores nothing)."""
-    bare = {id(n.target) for n in ast.walk(node) if isinstance(n, ast.AnnAssign) and
-            n.value is None}
-    return (n for n in ast.walk(node) if isinstance(n, ast.Attribute)
-            and isinstance(n.ctx, ast.Store) and _self_attribute(n) is not None
-            and id(n) not in bare)
+    found: list[ast.Attribute] = []
+    bare: set[int] = set()
+    for child in (subtree(node) if isinstance(node, FUNCTIONS) else descendants(node)):
+        if isinstance(child, ast.AnnAssign) and child.value is None:
+            bare.add(id(child.target))
+        elif isinstance(child, ast.Attribute) and isinstance(child.ctx, ast.Store) and \
+                _self_attribute(child) is not None:
+            found.append(child)
+    return [n for n in found if id(n) not in bare]
 
 
 def _first_stores(cls: ast.ClassDef, init: ast.FunctionDef) -> dict[str, tuple[str, bool]]:
@@ -303,15 +307,19 @@ def _first_stores(cls: ast.ClassDef, init: ast.FunctionDef) -> dict[str, tuple[s
     ``__init__`` (True), else the method (False: an attribute only another method assigns,
     in a class the package never makes, may be one its subclasses elsewhere give; those no
     method assigns are PYC023's; ``x += 1`` reads first, so it assigns nothing new)."""
+    found: dict[str, tuple[str, bool]] = {}
     lines: dict[str, int] = {}
-    augmented = {id(n.target) for n in ast.walk(init) if isinstance(n, ast.AugAssign)}
-    for node in (n for n in _store_nodes(init) if id(n) not in augmented):
-        lines[node.attr] = min(lines.get(node.attr, node.lineno), node.lineno)
-    found = {name: (f"line {line}", True) for name, line in lines.items()}
     for method in cls.body:
-        if isinstance(method, FUNCTIONS) and method is not init:
-            for node in _store_nodes(method):
+        if not isinstance(method, FUNCTIONS):
+            continue
+        skipped = {id(n.target) for n in subtree(method) if isinstance(n, ast.AugAssign)} \
+            if method is init else set()
+        for node in _store_nodes(method):
+            if method is init and id(node) not in skipped:
+                lines[node.attr] = min(lines.get(node.attr, node.lineno), node.lineno)
+            elif method is not init:
                 found.setdefault(node.attr, (f"in `{method.name}`, which has not run yet", False))
+    found.update({name: (f"line {line}", True) for name, line in lines.items()})
     return found
 
 
@@ -345,7 +353,7 @@ def _certain_parts(statement: ast.stmt) -> Iterator[ast.AST]:
             if isinstance(target, ast.Subscript):
                 yield from _certain(target.slice)
     else:
-        for child in ast.iter_child_nodes(statement):
+        for child in child_nodes(statement):
             yield from _certain(child)
 
 
@@ -366,5 +374,5 @@ def _certain(node: ast.AST) -> Iterator[ast.AST]:
     elif isinstance(node, (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)):
         yield from _certain(node.generators[0].iter)
     else:
-        for child in ast.iter_child_nodes(node):
+        for child in child_nodes(node):
             yield from _certain(child)
