@@ -711,7 +711,7 @@ def _lazy_extra(package: Package, module: PythonModule, imported: Import) -> boo
     ``__init__``."""
     names, keys = extra_requirements(package)
     top = imported.top_level
-    if not names or not (_normalised(top) in names or
+    if not names or not (normalised_name(top) in names or
                          keys & set(keys_for_import(top, package.context.distro))):
         return False
     tree = parse_tree(module.path, package.texts.get(module.path, ""))
@@ -723,7 +723,7 @@ def _lazy_extra(package: Package, module: PythonModule, imported: Import) -> boo
         function not in _entry_functions(package)
 
 
-def _normalised(name: str) -> str:
+def normalised_name(name: str) -> str:
     """A distribution or module name as PEP 503 compares them (lower case, ``-`` for any run
     of ``-``, ``_`` and ``.``)."""
     from packaging.utils import canonicalize_name  # only here: few packages list extras
@@ -759,9 +759,9 @@ def extra_requirements(package: Package) -> tuple[frozenset[str], frozenset[str]
     distributions = {name.group(1) for name in matched if name}
     keys = {key for name in distributions
             for key in (suggested_key(name), suggested_key(name.lower()),
-                        f"python3-{_normalised(name)}", f"python3-{_normalised(name)}-pip")
+                        f"python3-{normalised_name(name)}", f"python3-{normalised_name(name)}-pip")
             if key}
-    return frozenset(map(_normalised, distributions)), frozenset(keys)
+    return frozenset(map(normalised_name, distributions)), frozenset(keys)
 
 
 @per_package

@@ -6,8 +6,6 @@ import posixpath
 import re
 from collections.abc import Callable, Iterator
 
-from packaging.utils import canonicalize_name
-
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import (is_released_package, keys_for_import, modules_of_key,
                                          stdlib_modules, typo_of)
@@ -17,7 +15,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.setup_py import EntryPoint, Value
 from pkgtool.rules.console_scripts import scripts_and_modules
 from pkgtool.knowledge.interfaces import interfaces_of
-from pkgtool.rules.imports import RUNTIME, declared
+from pkgtool.rules.imports import RUNTIME, declared, normalised_name
 from pkgtool.rules.registry import rule
 
 
@@ -97,7 +95,7 @@ def _requires_anything(required: Value | None) -> bool:
     value = required.value if required is not None else ()
     lines = value.splitlines() if isinstance(value, str) else \
         value if isinstance(value, (list, tuple)) else ()
-    names = {canonicalize_name(re.split(r"[\s<>=!~;\[@(]", str(line).strip(), maxsplit=1)[0])
+    names = {normalised_name(re.split(r"[\s<>=!~;\[@(]", str(line).strip(), maxsplit=1)[0])
              for line in lines if str(line).strip()}
     return not names <= _NO_MODULES_FOR_SCRIPTS
 
