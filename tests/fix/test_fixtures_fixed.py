@@ -117,7 +117,7 @@ MANUAL = {("PYC078", "habits_of_other_languages"),
           ("PYC014", "read_before_declaring"),
           ("LCH001", "wrong_executable_names"), ("LCH001", "data_files_walked_at_build"),
           ("LCH001", "executables_of_a_loop"), ("LCH001", "cmake_executables_never_installed"),
-          ("DAT009", "default_name_from_code"),
+          ("DAT009", "default_name_from_code"), ("DAT009", "renamed_copy_of_a_node"),
           ("DAT009", "xml_and_yaml_launch"), ("LCH003", "gazebo_classic_module"),
           ("DEP007", "cmake_script_without_its_helpers"),
           ("DEP007", "helper_package_copied_in_part")}

@@ -2,12 +2,14 @@
 
 from __future__ import annotations
 
+import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
-from pkgtool.rules.node_parameters import file_entries, near, write_meant
+from pkgtool.rules.node_parameters import (FileEntry, file_entries, fully_seen_parameter_files,
+                                           near, node_name, write_meant)
 from pkgtool.rules.registry import rule
 from pkgtool.lazy_regex import lazy_pattern
 
@@ -37,7 +39,10 @@ def parameter_file_unknown_node(package: Package) -> Iterator[Hit]:
     a node's name is not known that way, when a launch file gives some node parameters not
     read statically (a launch argument may name the file), or when the package's Python code
     mentions the file's name. A block named by a quoted word of a Python launch file that
-    loads YAML itself (`yaml.safe_load`) is left alone: the launch file may read it.
+    loads YAML itself (`yaml.safe_load`) is left alone: the launch file may read it. Also
+    reports, at the launch file, a node given a file none of whose blocks names it, when each
+    block names another node the file is passed to (a node renamed for a second copy,
+    `name='local_filter'`, given the file of `filter`).
 
     ## Why is this bad?
     ROS 2 ignores parameters of nodes that do not exist: nothing warns, and the node runs with
@@ -59,7 +64,9 @@ def parameter_file_unknown_node(package: Package) -> Iterator[Hit]:
         period: 1.0
     ```
     """
-    for entry in file_entries(package):
+    entries = list(file_entries(package))
+    yield from _nodes_without_a_block(package, entries)
+    for entry in entries:
         if not entry.matched and entry.foreign and _made_by_the_process(entry.key, entry.names):
             continue  # a node another package's process makes (Nav2's local_costmap/...)
         if not entry.matched and entry.key.rpartition("/")[2] in _read_by_launch(package):
@@ -82,6 +89,29 @@ def parameter_file_unknown_node(package: Package) -> Iterator[Hit]:
                       f"the node's full name, so its parameters reach no node",
                       f"Write `{spaces[0].rstrip('/')}/{base}`" if len(spaces) == 1 and
                       spaces[0].startswith("/") else f"Write `/**/{base}` (any namespace)")
+
+
+def _nodes_without_a_block(package: Package, entries: list[FileEntry]) -> Iterator[Hit]:
+    """A hit for each node a file is passed to that none of its blocks names, when every
+    block names another node the file is passed to (a renamed copy of a node: the blocks
+    reported above are another mistake)."""
+    by_path: dict[str, list[FileEntry]] = {}
+    for entry in entries:
+        by_path.setdefault(entry.path, []).append(entry)
+    for path, found in sorted(by_path.items()):
+        if not all(entry.matched for entry in found):
+            continue
+        matched = {id(node) for entry in found for node in entry.matched}
+        for node in fully_seen_parameter_files(package).get(path, ()):
+            name = node_name(package, node)
+            ref = next((r for r in node.parameter_files if r.package == package.name and
+                        path.endswith(posixpath.join(*r.parts))), None)
+            if id(node) in matched or name is None or ref is None:
+                continue
+            blocks = ", ".join(f"`{key}`" for key in sorted({e.key for e in found}))
+            yield Hit(ref.span, f"The node `{name}` gets nothing from `{path}`: its blocks "
+                      f"name other nodes ({blocks}) and none is `{name}` or `/**`",
+                      f"Add a `{name}:` block (or `/**:` for every node) to `{path}`")
 
 
 _YAML_LOADS = lazy_pattern(r"\byaml\.(?:safe_|full_|unsafe_)?load\b")
