@@ -28,6 +28,10 @@ from pkgtool.lazy_regex import lazy_pattern
 
 _PY_SUPPRESSION = lazy_pattern(r"#\s*pkgtool:\s*ignore(?:\[([A-Za-z0-9_,\s-]*)\])?")
 _XML_SUPPRESSION = lazy_pattern(r"<!--\s*pkgtool:\s*ignore\b([A-Za-z0-9_,\s-]*)-->")
+_FLAKE8_NOQA = lazy_pattern(r"#\s*noqa\s*:\s*([A-Z]+[0-9]+(?:[\s,]+[A-Z]+[0-9]+)*)")
+_FLAKE8_TWINS = {"F821": "PYC001"}
+"""flake8's codes whose ``# noqa`` silences the pkgtool rule that checks the same (an
+undefined name a script gets from outside, as pyflakes is told)."""
 
 
 @record
@@ -88,14 +92,22 @@ def _ignores(root: Path, texts: dict[str, str]) -> tuple[GitIgnore, ...]:
 
 def _suppressions(path: str, text: str) -> dict[tuple[str, int], frozenset[str]]:
     found: dict[tuple[str, int], frozenset[str]] = {}
-    if "pkgtool" not in text:  # what both patterns need (most files): no line to search
+    python = not path.endswith(".xml")
+    twins = python and any(code in text for code in _FLAKE8_TWINS)
+    if "pkgtool" not in text and not twins:  # what the patterns need (most files): no search
         return found
-    pattern = _XML_SUPPRESSION if path.endswith(".xml") else _PY_SUPPRESSION
+    pattern = _PY_SUPPRESSION if python else _XML_SUPPRESSION
     for number, line in enumerate(text.splitlines(), 1):
         match = pattern.search(line)
+        noqa = _FLAKE8_NOQA.search(line) if twins and "noqa" in line else None
+        twin = frozenset(_FLAKE8_TWINS[c] for c in re.split(r"[\s,]+", noqa.group(1))
+                         if c in _FLAKE8_TWINS) if noqa else frozenset()
         if not match:
+            if twin:
+                found[(path, number)] = twin
             continue
         codes = frozenset(c for c in re.split(r"[\s,]+", match.group(1) or "") if c)
+        codes = codes | twin if codes else codes  # an empty set already silences every rule
         found[(path, number)] = codes
         if path.endswith(".xml") and line.strip().startswith("<!--"):
             found[(path, number + 1)] = frozenset(codes)  # a comment line covers the next line

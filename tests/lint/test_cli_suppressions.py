@@ -33,6 +33,23 @@ def test_python_comment_on_the_reported_line(tmp_path: Path, comment: str, silen
     assert _lint(tmp_path, "--select", "SYN") == expected
 
 
+@pytest.mark.parametrize(("comment", "silenced"), [
+    ("# noqa: F821", True),  # flake8's undefined name: the same check as PYC001
+    ("# noqa: E501, F821", True),
+    ("# noqa:F821 # pkgtool: ignore[DEP001]", True),
+    ("# noqa: F401", False),
+    ("# noqa", False),  # a bare noqa is flake8's business
+])
+def test_flake8_noqa_of_the_same_check(tmp_path: Path, comment: str, silenced: bool) -> None:
+    write_tree(tmp_path, {"package.xml": MINIMAL_MANIFEST.format(name="pkg"),
+                          "setup.py": "from setuptools import setup\n"
+                                      "setup(name='pkg', packages=['pkg'])\n",
+                          "pkg/__init__.py": "",
+                          "pkg/node.py": f"def talk():\n    return injected  {comment}\n"})
+    expected = [] if silenced else [("PYC001", "pkg/node.py", 2)]
+    assert _lint(tmp_path, "--select", "PYC001") == expected
+
+
 def test_suppression_on_another_line_does_not_apply(tmp_path: Path) -> None:
     write_tree(tmp_path, {"package.xml": MINIMAL_MANIFEST.format(name="pkg"),
                           "pkg/node.py": "# pkgtool: ignore[SYN001]\ndef talk(:\n    pass\n"})
