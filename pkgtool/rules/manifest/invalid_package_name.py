@@ -38,8 +38,10 @@ def invalid_package_name(package: Package) -> Iterator[Hit]:
     letters, digits and single underscores, not ending with an underscore.
 
     ## Why is this bad?
-    The package.xml schema rejects it, ``ros2 pkg create`` refuses it, and names with dashes or
-    capitals break rosdep keys, Python module names and the ament index.
+    The package.xml schema rejects it, ``ros2 pkg create`` refuses it and bloom cannot release
+    it; a dash cannot be a Python module's name. colcon and catkin_pkg only warn, so such a
+    package may build and run in a workspace, but no other package can depend on it through
+    a release.
 
     ## Example
     ```xml
