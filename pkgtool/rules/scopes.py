@@ -26,7 +26,9 @@ BINDERS = frozenset({ast.Name, ast.arg, ast.FunctionDef, ast.AsyncFunctionDef, a
 ``type(node) in BINDERS`` lets the other nodes, most of them, skip every binding test."""
 
 
-def _caught(handler: ast.ExceptHandler) -> set[str]:
+def caught_names(handler: ast.ExceptHandler) -> set[str]:
+    """The names of the exceptions ``handler`` catches (``BaseException`` for a bare
+    ``except:``)."""
     if handler.type is None:
         return {"BaseException"}
     types = handler.type.elts if isinstance(handler.type, ast.Tuple) else [handler.type]
@@ -36,12 +38,12 @@ def _caught(handler: ast.ExceptHandler) -> set[str]:
 
 def catches_everything(handler: ast.ExceptHandler) -> bool:
     """``except:``, ``except Exception:`` or ``except BaseException:`` (also in a tuple)."""
-    return bool(_caught(handler) & _BROAD)
+    return bool(caught_names(handler) & _BROAD)
 
 
 def catches_name_error(handler: ast.ExceptHandler) -> bool:
     """``except NameError:`` (or ``UnboundLocalError``, or anything broader)."""
-    return bool(_caught(handler) & _NAME_ERRORS)
+    return bool(caught_names(handler) & _NAME_ERRORS)
 
 
 def scope_walk(body: list[ast.stmt], *, skip_protected: bool = False) -> Iterator[ast.AST]:

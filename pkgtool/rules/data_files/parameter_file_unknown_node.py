@@ -98,11 +98,12 @@ def _nodes_without_a_block(package: Package, entries: list[FileEntry]) -> Iterat
     by_path: dict[str, list[FileEntry]] = {}
     for entry in entries:
         by_path.setdefault(entry.path, []).append(entry)
+    users = fully_seen_parameter_files(package)
     for path, found in sorted(by_path.items()):
         if not all(entry.matched for entry in found):
             continue
         matched = {id(node) for entry in found for node in entry.matched}
-        for node in fully_seen_parameter_files(package).get(path, ()):
+        for node in users.get(path, ()):
             name = node_name(package, node)
             ref = next((r for r in node.parameter_files if r.package == package.name and
                         path.endswith(posixpath.join(*r.parts))), None)

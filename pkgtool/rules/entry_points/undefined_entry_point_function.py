@@ -42,32 +42,30 @@ def _star_names(package: Package, module: PythonModule) -> frozenset[str] | None
     return frozenset(found)
 
 
-def _plain_function(package: Package, path: str, name: str) -> bool:
-    """True when the installed module ``path`` binds ``name`` once at its top level, with a
-    ``def`` (a function has no attributes an entry point could name: ``main.py``)."""
+def _top_function(package: Package, path: str, name: str
+                  ) -> ast.FunctionDef | ast.AsyncFunctionDef | None:
+    """The function ``name`` when the installed module ``path`` binds it once at its top
+    level, with a ``def``; else None."""
     for module, tree, _ in installed_trees(package):
         if module.path == path:
             bindings = [s for s in tree.body if name in _bound_at_top(s)]
-            return len(bindings) == 1 and isinstance(bindings[0], FUNCTIONS)
-    return False
+            found = bindings[0] if len(bindings) == 1 else None
+            return found if isinstance(found, FUNCTIONS) else None
+    return None
 
 
 def _required_parameters(package: Package, path: str, name: str) -> list[str]:
     """The parameters without a default of the undecorated function ``name`` the installed
     module ``path`` defines once at its top level (empty for anything else)."""
-    for module, tree, _ in installed_trees(package):
-        if module.path == path:
-            bindings = [s for s in tree.body if name in _bound_at_top(s)]
-            function = bindings[0] if len(bindings) == 1 else None
-            if not isinstance(function, FUNCTIONS) or function.decorator_list:
-                return []
-            arguments = function.args
-            positional = [*arguments.posonlyargs, *arguments.args]
-            required = positional[:len(positional) - len(arguments.defaults)]
-            return [a.arg for a in required] + [
-                a.arg for a, default in zip(arguments.kwonlyargs, arguments.kw_defaults)
-                if default is None]
-    return []
+    function = _top_function(package, path, name)
+    if function is None or function.decorator_list:
+        return []
+    arguments = function.args
+    positional = [*arguments.posonlyargs, *arguments.args]
+    required = positional[:len(positional) - len(arguments.defaults)]
+    return [a.arg for a in required] + [
+        a.arg for a, default in zip(arguments.kwonlyargs, arguments.kw_defaults)
+        if default is None]
 
 
 def _bound_at_top(statement: ast.stmt) -> set[str]:
@@ -149,7 +147,8 @@ def undefined_entry_point_function(package: Package) -> Iterator[Hit]:
                                   f"level (`{modules[entry.module]}`"
                                   f"{f'; did you mean `{close[0]}`?' if close else ''})",
                       f"Write `{meant}`" if meant else None)
-        elif entry.attr != function and _plain_function(package, module.path, function):
+        elif entry.attr != function and \
+                _top_function(package, module.path, function) is not None:
             assert entry.attr is not None
             rest = entry.attr.split(".", 1)[1]
             yield Hit(entry.span, f"`{entry.attr}` reads `{rest}` off the function "

@@ -7,7 +7,8 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
-from pkgtool.model.ast_nodes import child_nodes, descendants, nodes_of_class, subtree
+from pkgtool.model.ast_nodes import (child_nodes, descendants, is_super_init, nodes_of_class,
+                                     subtree)
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import derives_from_node_alone
@@ -82,7 +83,7 @@ def attribute_read_too_early(package: Package) -> Iterator[Hit]:
                     methods & NODE_ATTRIBUTES - {"destroy_node"} or \
                     ANY_NAME in set_outside.get(cls.name, ()):
                 continue  # rclpy's Node calls its methods overridden: the package's code runs
-            walk = _Walk(cls, init, set_outside.get(cls.name, set()), index,
+            walk = _Walk(cls, init, methods, set_outside.get(cls.name, set()), index,
                          cls.name in set_outside.get(_MADE, ()))
             for node, message in walk.early_reads():
                 yield Hit(Span(module.path, node.lineno, node.col_offset + 1), message)
@@ -159,26 +160,25 @@ def _on_the_class(value: ast.expr) -> bool:
         value.func.id == "type" or isinstance(value, ast.Attribute) and value.attr == "__class__"
 
 
-def _super_call(node: ast.AST, method: str | None = None) -> bool:
-    """True for ``super().m(...)`` or ``super(C, self).m(...)`` (``m``: ``method``, or any
-    but ``__init__`` when None)."""
+def _other_super_call(node: ast.AST) -> bool:
+    """True for ``super().m(...)`` or ``super(C, self).m(...)`` of a method ``m`` other than
+    ``__init__`` (:func:`~pkgtool.model.ast_nodes.is_super_init`)."""
     return isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and \
         isinstance(node.func.value, ast.Call) and isinstance(node.func.value.func, ast.Name) \
-        and node.func.value.func.id == "super" and \
-        (node.func.attr == method if method else node.func.attr != "__init__")
+        and node.func.value.func.id == "super" and not is_super_init(node)
 
 
 class _Walk:
     """The walk of one ``__init__``: what the class defines, what the method stored so far."""
 
-    def __init__(self, cls: ast.ClassDef, init: ast.FunctionDef, set_outside: set[str],
-                 index: Index, made: bool) -> None:
+    def __init__(self, cls: ast.ClassDef, init: ast.FunctionDef, methods: set[str],
+                 set_outside: set[str], index: Index, made: bool) -> None:
         self.init = init
         self.cls = cls
         self.index = index
         self.made = made
         self.own = _class_names(cls) | set_outside
-        self.methods = {s.name for s in cls.body if isinstance(s, FUNCTIONS)}
+        self.methods = methods
         self.assigned = _first_stores(cls, init)
         inside = subtree(init)
         self.local_functions = {n.name for n in inside
@@ -215,7 +215,7 @@ class _Walk:
         ``__init__`` (None when no top-level statement does)."""
         return next((number for number, statement in enumerate(self.init.body)
                      if isinstance(statement, ast.Expr) and (
-                         _super_call(statement.value, "__init__") or
+                         is_super_init(statement.value) or
                          self._base_init(statement.value))), None)
 
     def _base_init(self, node: ast.AST) -> bool:
@@ -232,7 +232,7 @@ class _Walk:
         """True when ``statement`` may run code of the package that sets attributes of
         ``self``, now or on another thread."""
         for node in descendants(statement):
-            if _super_call(node):
+            if _other_super_call(node):
                 return True
             if isinstance(node, ast.Name) and node.id == "self" and \
                     not self._receiver(node) and not self._in_super(node):

@@ -8,8 +8,10 @@ from collections.abc import Callable, Iterator
 from pkgtool.findings import Hit, Severity, shortened
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.rules.python._assignments import is_none
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees, launch_trees
+from pkgtool.rules.scopes import catches_everything, caught_names, scope_bindings
+from pkgtool.rules.syntax_trees import Index, installed_trees, launch_trees
 
 _READERS = frozenset({"os.environ.get", "os.getenv"})
 _ALWAYS_SET = frozenset({"HOME", "PATH", "ROS_DISTRO", "ROS_VERSION", "ROS_PYTHON_VERSION",
@@ -19,7 +21,6 @@ _ALWAYS_SET = frozenset({"HOME", "PATH", "ROS_DISTRO", "ROS_VERSION", "ROS_PYTHO
 _JOINERS = frozenset({"os.path.join", "pathlib.Path", "int", "float"})
 """Functions refusing None (TypeError)."""
 _NUMBERS = frozenset({"int", "float"})
-_BROAD = frozenset({"Exception", "BaseException"})
 
 
 @rule("PYC088", "unset-environment-variable", Severity.WARNING,
@@ -87,7 +88,7 @@ def _variable(call: ast.Call, index: Index) -> str | None:
     """The variable ``call`` reads without a default (``os.environ.get('X')``, also with
     ``None`` as the default), or None."""
     defaults = [*call.args[1:], *(k.value for k in call.keywords)]
-    if not call.args or len(defaults) > 1 or any(not _is_none(d) for d in defaults) or \
+    if not call.args or len(defaults) > 1 or any(not is_none(d) for d in defaults) or \
             not isinstance(call.args[0], ast.Constant) or \
             not isinstance(call.args[0].value, str) or \
             not isinstance(call.func, (ast.Name, ast.Attribute)) or \
@@ -95,10 +96,6 @@ def _variable(call: ast.Call, index: Index) -> str | None:
         return None
     name = call.args[0].value
     return None if name in _ALWAYS_SET else name
-
-
-def _is_none(node: ast.expr) -> bool:
-    return isinstance(node, ast.Constant) and node.value is None
 
 
 def _with_default(call: ast.Call, default: str) -> str:
@@ -124,7 +121,7 @@ def _none_failing_uses(call: ast.Call, index: Index, tree: ast.Module
     if isinstance(parent, ast.Assign) and len(parent.targets) == 1 and \
             isinstance(parent.targets[0], ast.Name):
         bound = parent.targets[0].id
-        if _bindings(scope, bound) != 1 or \
+        if scope_bindings(scope)[bound] != 1 or \
                 _tested(scope, lambda n: isinstance(n, ast.Name) and n.id == bound):
             return
         values = [n for n in ast.walk(scope) if isinstance(n, ast.Name) and n.id == bound and
@@ -180,22 +177,14 @@ def _tested(scope: ast.AST, matches: Callable[[ast.AST], bool]) -> bool:
     return False
 
 
-def _bindings(scope: ast.AST, name: str) -> int:
-    """How many times ``scope`` (not its nested functions) binds ``name``."""
-    return sum(1 for n in ast.walk(scope) if isinstance(n, ast.Name) and n.id == name and
-               not isinstance(n.ctx, ast.Load)) + \
-        sum(1 for n in ast.walk(scope) if isinstance(n, FUNCTIONS) and n.name == name)
-
-
 def _caught(node: ast.AST, index: Index, how: str) -> bool:
     """True inside the body of a ``try`` one of whose handlers catches the error ``how``
     names (TypeError or AttributeError), or any."""
-    caught = _BROAD | {"TypeError" if "TypeError" in how else "AttributeError"}
+    error = "TypeError" if "TypeError" in how else "AttributeError"
     child, parent = node, index.parents.get(id(node))
     while parent is not None:
         if isinstance(parent, ast.Try) and child in parent.body and any(
-                h.type is None or any(isinstance(n, ast.Name) and n.id in caught
-                                      for n in ast.walk(h.type)) for h in parent.handlers):
+                catches_everything(h) or error in caught_names(h) for h in parent.handlers):
             return True
         child, parent = parent, index.parents.get(id(parent))
     return False
