@@ -151,13 +151,30 @@ _LOOKED_UP = lazy_pattern(r"`([^`]+)` is used by the package's code")
 """The package a DEP011 finding names."""
 
 
+_DESCRIBED = lazy_pattern(r"`([^`]+)` is used by the installed file")
+"""The package a DEP012 finding names."""
+
+
 @fixer("DEP011", "Add an `<exec_depend>` for the package the code looks up")
 def looked_up_package(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
     """Declare each package whose share folder or prefix installed code looks up (the name is
     its key), for names that resolve (see :func:`_resolves`)."""
+    yield from _declare_named(package, findings, _LOOKED_UP)
+
+
+@fixer("DEP012", "Add an `<exec_depend>` for the package the description file names")
+def described_package(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
+    """Declare each package an installed robot description, world or RViz file names (the
+    name is its key), for names that resolve (see :func:`_resolves`)."""
+    yield from _declare_named(package, findings, _DESCRIBED)
+
+
+def _declare_named(package: Package, findings: list[Finding], pattern: re.Pattern[str]
+                   ) -> Iterator[Fix | Refusal]:
+    """An ``<exec_depend>`` for each package a finding's message names by ``pattern``."""
     doc = manifest_doc(package)
     names = dict.fromkeys(named.group(1) for f in findings
-                          if (named := _LOOKED_UP.match(f.message)) is not None)
+                          if (named := pattern.match(f.message)) is not None)
     for name in names if doc is not None else ():
         if name != package.name and _resolves(package, name):
             yield from _add(doc, "exec_depend", name)

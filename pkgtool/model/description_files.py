@@ -3,31 +3,70 @@
 A URDF or xacro file includes other packages' files (``$(find other)/urdf/arm.xacro``) and
 points at their meshes (``package://other/meshes/base.dae``); SDF worlds and RViz settings do
 the same. Such a name is a package the package really uses, whatever its spelling looks like.
-The files are read only when a rule asks (most runs never do), each once per package.
+The files are read only when a rule asks (most runs never do), each once per package; what an
+XML comment holds names nothing.
 """
 
 from __future__ import annotations
+
+import re
 
 from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.files import TextFile, read_text
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.records import record
 
 DESCRIPTION_SUFFIXES = (".urdf", ".xacro", ".sdf", ".srdf", ".world", ".rviz")
 """Files naming other packages by ``$(find ...)`` or ``package://`` URIs."""
 _NAMED = lazy_pattern(r"\$\(\s*find(?:-pkg-share)?\s+([A-Za-z][\w.-]*)\s*\)|"
                       r"package://([A-Za-z][\w.-]*)/")
+_XML_COMMENT = lazy_pattern(r"<!--.*?-->", re.DOTALL)
+
+
+@record
+class PackageMention:
+    """A package a description file names, and where."""
+
+    package: str
+    span: Span
 
 
 @per_package
-def described_packages(package: Package) -> frozenset[str]:
-    """The packages the package's description, world and RViz files name (``$(find x)``,
-    ``$(find-pkg-share x)``, ``package://x/...``); unreadable files name none."""
-    names: set[str] = set()
+def package_mentions(package: Package) -> tuple[PackageMention, ...]:
+    """Every package the package's description, world and RViz files name (``$(find x)``,
+    ``$(find-pkg-share x)``, ``package://x/...``) outside XML comments, in file order;
+    unreadable files name none."""
+    found: list[PackageMention] = []
     for relpath in package.files:
         if relpath.endswith(DESCRIPTION_SUFFIXES):
             read = read_text(package.root, relpath)
             if isinstance(read, TextFile):
-                names.update(found.group(1) or found.group(2)
-                             for found in _NAMED.finditer(read.text))
-    return frozenset(names)
+                found.extend(_mentions(relpath, _XML_COMMENT.sub(_blanked, read.text)))
+    return tuple(found)
+
+
+@per_package
+def described_packages(package: Package) -> frozenset[str]:
+    """The packages the package's description, world and RViz files name."""
+    return frozenset(mention.package for mention in package_mentions(package))
+
+
+def _mentions(relpath: str, text: str) -> list[PackageMention]:
+    """The packages ``text``, the content of ``relpath``, names, with their lines counted
+    once through the file."""
+    mentions: list[PackageMention] = []
+    line, start = 1, 0
+    for match in _NAMED.finditer(text):
+        line += text.count("\n", start, match.start())
+        start = match.start()
+        column = start - text.rfind("\n", 0, start)
+        mentions.append(PackageMention(match.group(1) or match.group(2),
+                                       Span(relpath, line, column)))
+    return mentions
+
+
+def _blanked(comment: re.Match[str]) -> str:
+    """A comment's text as blanks, its line breaks kept (what follows keeps its line)."""
+    return "".join(c if c == "\n" else " " for c in comment.group(0))

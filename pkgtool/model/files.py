@@ -19,6 +19,10 @@ MAX_FILE_BYTES = 2 * 1024 * 1024
 SKIPPED_DIRS = frozenset({"__pycache__", "node_modules"})
 """Directory names never descended into inside a package (hidden folders are skipped too)."""
 
+APPLE_DOUBLE = "._"
+"""How the names of the metadata files macOS writes beside each file it copies to a foreign
+disk begin (``._talker.py``, binary): no file of the package, never listed."""
+
 BUILD_OUTPUT_DIRS = frozenset({"build", "install", "log"})
 """colcon's output folders: skipped at the package root when they hold no Python package."""
 
@@ -200,7 +204,7 @@ def _walk(root: Path, depth: Callable[[str], int | None] | None = None
                     elif "package.xml" in files and "pyvenv.cfg" not in files:
                         found.extend((f"{prefix}{entry.name}/{e.name}", e) for e in inside
                                      if e.name in _NESTED_MARKERS)  # marks the nested package
-                elif entry.is_file():
+                elif entry.is_file() and not entry.name.startswith(APPLE_DOUBLE):
                     found.append((prefix + entry.name, entry))
             except OSError:
                 continue

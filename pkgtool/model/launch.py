@@ -118,6 +118,9 @@ COMPOSABLE_ACTIONS = frozenset({"ComposableNode", "composable_node"})
 COMMAND_PACKAGES = {"xacro": "xacro"}
 """Executables a launch file runs through a command substitution (``Command(['xacro ',
 ...])``, ``$(command 'xacro ...')``), by the package that installs each."""
+PROCESS_PACKAGES = {**COMMAND_PACKAGES, "rviz2": "rviz2"}
+"""Programs of ROS packages a launch file starts as processes (``ExecuteProcess(cmd=['rviz2',
+'-d', config])``), by the package that installs each."""
 
 
 @record
@@ -177,10 +180,18 @@ KEPT_ASIDE = lazy_pattern(r"(?i)(?:^|[_.\- (\[])(?:old|orig|original|copy|backup
 
 
 def kept_aside(path: str) -> bool:
-    """True for a file named as a copy kept aside, or kept in a folder so named: nobody runs
-    it, and a whole installed folder carries it along."""
+    """True for a file named as a copy kept aside, or kept in a folder so named, and for a
+    hidden file (:func:`hidden`): nobody runs it, and a whole installed folder carries it
+    along."""
     name = path.rpartition("/")[2]
-    return in_folder_kept_aside(path) or KEPT_ASIDE.search(name.rsplit(".", 1)[0]) is not None
+    return in_folder_kept_aside(path) or hidden(path) or \
+        KEPT_ASIDE.search(name.rsplit(".", 1)[0]) is not None
+
+
+def hidden(path: str) -> bool:
+    """True for a hidden file (``.old_launch.py``): an editor's or a user's copy, which the
+    globs of data_files never match."""
+    return path.rpartition("/")[2].startswith(".")
 
 
 def in_folder_kept_aside(path: str) -> bool:
@@ -199,11 +210,11 @@ def is_launch_file(path: str, python_folders: frozenset[str] = frozenset(),
     ``samples/`` or ``doc/`` (run by pytest, by ``main()`` with a ``LaunchService``, or by
     path from that folder, next to its data) are not launch files. Nor are those below a
     ``nested`` folder (:func:`nested_packages`): they are that package's. Nor are those of a
-    folder kept aside (``backup/``, ``old/``: :func:`kept_aside`).
+    folder kept aside (``backup/``, ``old/``: :func:`kept_aside`), nor :func:`hidden` files.
     """
     folder, _, name = path.rpartition("/")
-    if not name.endswith(LAUNCH_SUFFIXES) or is_template(path) or below(path, nested) or \
-            in_folder_kept_aside(path):
+    if not name.endswith(LAUNCH_SUFFIXES) or hidden(path) or is_template(path) or \
+            below(path, nested) or in_folder_kept_aside(path):
         return False
     parts = folder.split("/") if folder else []
     if "launch" in parts:

@@ -16,8 +16,8 @@ from typing import Any
 
 from pkgtool.model.ast_nodes import (child_nodes, descendants, handler_stops, last_name,
                                      nodes_of_class)
-from pkgtool.model.launch import (COMMAND_PACKAGES, EXISTENCE_CHECKS, FileRef, NodeRef,
-                                  PackageRef)
+from pkgtool.model.launch import (COMMAND_PACKAGES, EXISTENCE_CHECKS, PROCESS_PACKAGES, FileRef,
+                                  NodeRef, PackageRef)
 from pkgtool.model.launch_remaps import not_pairs
 from pkgtool.model.launch_scopes import (bindings, import_origins, overwritten_values,
                                          read_only_by, scope_nodes, unread_argument_defaults,
@@ -592,7 +592,9 @@ class _Reader(ast.NodeVisitor):
     def _ros2_run(self, node: ast.Call) -> None:
         """``ros2 run <package> <executable>`` runs a node; ``ros2 launch <package> <file>``
         looks the package up (its share folder); also after a terminal that runs the rest
-        (``['gnome-terminal', '--', 'ros2', 'run', ...]``)."""
+        (``['gnome-terminal', '--', 'ros2', 'run', ...]``); a program of
+        :data:`~pkgtool.model.launch.PROCESS_PACKAGES` (``['rviz2', '-d', config]``) needs
+        its package."""
         whole = self.value(_keyword(node, "cmd"))
         if isinstance(whole, tuple):
             whole = tuple(word for part in whole for word in _shell_words(part))
@@ -612,6 +614,9 @@ class _Reader(ast.NodeVisitor):
               isinstance(command[3], str)):  # a package name: not a launch file's path
             self.packages.append(PackageRef(command[2], self._span(node), bool(self.optional),
                                             bool(self.dead)))
+        elif isinstance(whole, tuple) and whole and whole[0] in PROCESS_PACKAGES:
+            self.packages.append(PackageRef(PROCESS_PACKAGES[whole[0]], self._span(node),
+                                            bool(self.optional), bool(self.dead)))
 
     def visit_BinOp(self, node: ast.BinOp) -> None:
         self._record_path(node)

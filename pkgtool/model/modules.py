@@ -40,7 +40,8 @@ class Import:
 
 @record
 class PythonModule:
-    """A parsed .py file of the package. ``syntax_error`` set means the rest is empty."""
+    """A parsed .py file of the package. With ``syntax_error`` set, the rest is what the
+    top-level statements before the error say (often nothing)."""
 
     path: str
     imports: tuple[Import, ...]

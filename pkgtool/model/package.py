@@ -10,10 +10,10 @@ from pkgtool.model.cmake_install import installed_sources
 from pkgtool.model.cmake_text import with_included
 from pkgtool.model.context import Context, interface_file
 from pkgtool.model.files import TextFile, list_files, read_text
-from pkgtool.model.launch import (LAUNCH_SUFFIXES, LAUNCH_YAML, LaunchFile, in_launch_folder,
-                                  is_launch_file, is_launch_test, is_template, kept_aside,
-                                  nested_packages, named_like_launch_only, parse_launch,
-                                  python_folders, runs_as_launch_file)
+from pkgtool.model.launch import (LAUNCH_SUFFIXES, LAUNCH_YAML, LaunchFile, hidden,
+                                  in_launch_folder, is_launch_file, is_launch_test, is_template,
+                                  kept_aside, nested_packages, named_like_launch_only,
+                                  parse_launch, python_folders, runs_as_launch_file)
 from pkgtool.model.launch_reader import yaml_problem
 from pkgtool.model.manifest import Manifest, parse_manifest
 from pkgtool.model.modules import PythonModule, parse_module
@@ -301,7 +301,7 @@ def _launch_by_content(relpath: str, text_of: Callable[[str], str | None],
     for this, so URDF, RViz and parameter files elsewhere cost nothing.
     """
     if not relpath.endswith((".xml", ".yaml", ".yml", ".py", ".launch")) or \
-            not in_launch_folder(relpath, nested):
+            not in_launch_folder(relpath, nested) or hidden(relpath):
         return False
     text = text_of(relpath)
     if text is None:

@@ -269,8 +269,35 @@ def module_from_tree(path: str, tree: ast.Module) -> PythonModule:
 
 
 def read_module(path: str, text: str) -> PythonModule:
-    """Parse ``text``; a syntax error becomes the module's ``syntax_error``."""
+    """Parse ``text``; a syntax error becomes the module's ``syntax_error``, and the imports
+    and names are those of the top-level statements before it (:func:`_statements_before`)."""
     tree = parse_tree(path, text)
     if isinstance(tree, ParseProblem):
-        return PythonModule(path, (), frozenset(), tree)
+        before = _statements_before(text, tree.span.line)
+        if before is None:
+            return PythonModule(path, (), frozenset(), tree)
+        return PythonModule(path, tuple(_imports(path, before)), _top_level_names(before), tree)
     return module_from_tree(path, tree)
+
+
+_TRIES = 4
+"""How many top-level statement starts above a syntax error :func:`_statements_before` tries
+after the lines above it: the file's imports are above the function or class holding it."""
+
+
+def _statements_before(text: str, line: int) -> ast.Module | None:
+    """The syntax tree of the top-level statements that end before ``line``, where a syntax
+    error is (a later line of a file cut short there parses alone): the file's lines above
+    the error, else cut at the start of the statement holding it, or of one above that when
+    it does not parse (a string's lines at column 0); None when none of :data:`_TRIES` cuts parses
+    or there is nothing above it. Never run, only parsed."""
+    lines = text.splitlines(keepends=True)[:max(line - 1, 0)]
+    starts = [number for number, source in enumerate(lines)
+              if source[:1] not in ("", " ", "\t", "\n", "\r", "#", ")", "]", "}")]
+    for cut in (len(lines), *reversed(starts[-_TRIES:])):
+        try:
+            tree = ast.parse("".join(lines[:cut]))
+        except (SyntaxError, ValueError, RecursionError, MemoryError):
+            continue
+        return tree if tree.body else None
+    return None

@@ -8,9 +8,12 @@ parameter or defined is never resolved, so rules keyed on it stay silent.
 from __future__ import annotations
 
 import ast
+import posixpath
 from collections.abc import Iterator
 
 from pkgtool.model.ast_nodes import walk_once
+from pkgtool.model.installed import installed_data, is_ament_python
+from pkgtool.model.launch import kept_aside
 from pkgtool.model.memo import per_package, per_tree
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
@@ -210,13 +213,27 @@ def installed_modules(package: Package) -> tuple[tuple[PythonModule, ast.Module]
 
 def _installed_modules(package: Package) -> Iterator[tuple[PythonModule, ast.Module]]:
     for module in installed_code(package):
-        if is_ros1_module(package, module):
+        if is_ros1_module(package, module) or _unreachable_copy(package, module):
             continue  # ROS 1 code left in a ROS 2 package: rospy's API, not rclpy's
         text = package.texts.get(module.path)
         tree = parse_tree(module.path, text) if text is not None and not module.syntax_error \
             else None
         if isinstance(tree, ast.Module):
             yield module, tree
+
+
+def _unreachable_copy(package: Package, module: PythonModule) -> bool:
+    """True for a copy kept aside under a name no import can spell (``hover copy.py``,
+    ``node (old).py``) that is not installed as a program either: nothing ever runs it."""
+    stem = posixpath.basename(module.path)[:-3]
+    if stem.isidentifier() or not kept_aside(module.path) or not is_ament_python(package):
+        return False
+    data = installed_data(package)
+    scripts = package.setup_py.scripts if package.setup_py else None
+    programs = {source for target, source in (data or {}).items()
+                if target.startswith(f"lib/{package.name}/")}
+    return data is not None and module.path not in programs and \
+        module.path not in {posixpath.normpath(script) for script in scripts or ()}
 
 
 @per_package

@@ -26,8 +26,10 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
     (`load_yaml('panda_moveit_config', 'kinematics.yaml')` where `load_yaml` calls
     `get_package_share_directory(package_name)` on every call: not under an `if`, a loop or a
     `try`, nor after a `return`; the helper defined once, undecorated, its name bound nowhere
-    else), and `xacro`'s package for a
-    command substitution running it (`Command(['xacro ', path])`, `$(command 'xacro ...')`).
+    else), `xacro`'s package for a
+    command substitution running it (`Command(['xacro ', path])`, `$(command 'xacro ...')`),
+    and the package of a process `ExecuteProcess` starts: `ros2 run pkg exe`, `ros2 launch
+    pkg file`, or a program of a ROS package (`cmd=['rviz2', '-d', config]`).
     A name that is no package of
     the target's release nor of the packages linted with it (the workspace pkgtool sees) is
     said so, with the package (of the workspace, this one or the release) it is a typo of,

@@ -93,3 +93,10 @@ def build_types(found: Tree) -> list[XmlElement]:
     """Every ``<export><build_type>`` element, in document order."""
     return [child for export in found.named("export") for child in export.children
             if child.tag == "build_type"]
+
+
+def names_its_schema(package: Package) -> bool:
+    """True when package.xml names the schema a validator checks it against."""
+    manifest = package.manifest
+    return manifest is not None and (manifest.has_schema_line or any(
+        name.endswith("noNamespaceSchemaLocation") for name, _ in manifest.root.attributes))

@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.manifest.common import misplaced, tree
+from pkgtool.rules.manifest.common import misplaced, names_its_schema, tree
 from pkgtool.rules.manifest.schema import ORDER_HINT
 from pkgtool.rules.registry import rule
 
@@ -48,7 +48,7 @@ def element_out_of_order(package: Package) -> Iterator[Hit]:
     ```
     """
     found = tree(package)
-    if found is None or not _names_its_schema(package):
+    if found is None or not names_its_schema(package):
         return
     items = [item for item in misplaced(found) if not item.duplicate]
     if not items:
@@ -63,10 +63,3 @@ def element_out_of_order(package: Package) -> Iterator[Hit]:
     yield Hit(first.element.span, message,
               f"Move {moved} up; the order is {ORDER_HINT[found.format]}",
               related=tuple(o.element.span for o in others))
-
-
-def _names_its_schema(package: Package) -> bool:
-    """True when package.xml names the schema a validator checks it against."""
-    manifest = package.manifest
-    return manifest is not None and (manifest.has_schema_line or any(
-        name.endswith("noNamespaceSchemaLocation") for name, _ in manifest.root.attributes))

@@ -7,7 +7,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity, shortened
 from pkgtool.model.package import Package
-from pkgtool.rules.manifest.common import tree
+from pkgtool.rules.manifest.common import names_its_schema, tree
 from pkgtool.rules.manifest.schema import ALL_TAGS, TEXT_ONLY, tags_of
 from pkgtool.rules.registry import rule
 
@@ -20,15 +20,18 @@ def unexpected_content(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports a root element other than ``<package>``; children of ``<package>`` that no format
     defines (with the likely intended tag); elements inside elements that hold only text, such
-    as ``<maintainer>`` or ``<depend>``; and text between the elements of ``<package>``.
-    Tags of another format are MAN006. ``<description>`` and ``<export>`` may contain anything.
+    as ``<maintainer>`` or ``<depend>``; and text between the elements of ``<package>`` when
+    package.xml names its schema (an `<?xml-model?>` line or `xsi:noNamespaceSchemaLocation`:
+    without one, `ament_xmllint` checks only that the XML is well-formed, and catkin_pkg
+    ignores the text). Tags of another format are MAN006. ``<description>`` and ``<export>``
+    may contain anything.
 
     ## Why is this bad?
     The schema rejects all of these (`ament_xmllint`, run by `colcon test` where
     `ament_lint_common` is a test dependency, fails), and catkin_pkg refuses unknown tags and
     nested elements, so colcon does not see a ROS package; stray text fails the schema check
-    alone. A misspelt dependency tag is silently not a dependency for any tool that does not
-    validate.
+    alone (often a comment written as `// ...` or `# ...`). A misspelt dependency tag is
+    silently not a dependency for any tool that does not validate.
 
     ## Example
     ```xml
@@ -66,7 +69,7 @@ def unexpected_content(package: Package) -> Iterator[Hit]:
                 yield Hit(nested.span,
                           f"`<{child.tag}>` may contain only text, not `<{nested.tag}>`",
                           f"Remove the `<{nested.tag}>` tags and keep their text")
-    for line, text in found.root.loose_text:
+    for line, text in found.root.loose_text if names_its_schema(package) else ():
         yield Hit(found.root.span.at(line, 1),
                   f"Text `{shortened(text)}` is not allowed between the elements of `<package>`",
                   "Remove the stray text, or put it in a comment")

@@ -167,21 +167,23 @@ def kept(tree: ast.AST, key: object, work_out: Callable[[], R]) -> R:
 
 def local_instances(tree: ast.Module, index: Index, make: Maker[T]) -> Iterator[Instance[T]]:
     """Local variables (of functions and of the module) that hold what ``make`` makes: the
-    scope's assignment is then the only binding of the name in the scope and inside it (the
-    scope's own bindings are among those counted: no need to count them apart)."""
-    made: dict[int, tuple[Scope, list[tuple[str, T]]]] = {}
+    scope's assignments of the same thing (``result = Turn.Result()`` in each branch) are
+    then the only bindings of the name in the scope and inside it (the scope's own bindings
+    are among those counted: no need to count them apart)."""
+    made: dict[int, tuple[Scope, dict[str, list[T]]]] = {}
     for node in nodes_of_class(tree, ast.Assign):
         fresh = _fresh(node)
         message = make(fresh[1]) if fresh is not None else None
         scope = _scope(node, tree, index) if message is not None else None
         if fresh is not None and message is not None and scope is not None:
-            made.setdefault(id(scope), (scope, []))[1].append((fresh[0], message))
+            made.setdefault(id(scope), (scope, {}))[1].setdefault(fresh[0], []).append(message)
     for scope, found in made.values():
         names = _names(scope)
-        for name, message in found:
-            if names.counts[name] == 1:
-                yield instance_of(message, names.uses.get(name, []), names.refs.get(name, []),
-                                  index)
+        for name, messages in found.items():
+            if names.counts[name] == len(messages) and messages.count(messages[0]) == len(
+                    messages):
+                yield instance_of(messages[0], names.uses.get(name, []),
+                                  names.refs.get(name, []), index)
 
 
 def _scope(statement: ast.AST, tree: ast.Module, index: Index) -> Scope | None:

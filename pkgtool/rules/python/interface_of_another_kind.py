@@ -41,6 +41,19 @@ def _given(qualified: str, distro: str) -> str | None:
     return "a message type" if part in _MESSAGE_PARTS.get(kind, ()) else None
 
 
+_BUILTIN_TYPES = frozenset({"bool", "int", "float", "str", "bytes", "list", "dict", "tuple",
+                            "set", "object", "complex", "bytearray"})
+"""Python's own types, which a node sometimes gives where an interface type is wanted."""
+_STD_MSGS = {"bool": "Bool", "int": "Int64", "float": "Float64", "str": "String"}
+"""The std_msgs message wrapping a value of each Python type."""
+
+
+def _builtin_type(value: ast.expr, index: Index) -> str | None:
+    """The name of the Python type ``value`` is (``bool``), unless the module binds the name."""
+    return value.id if isinstance(value, ast.Name) and value.id in _BUILTIN_TYPES and \
+        value.id not in index.bound else None
+
+
 def _checked(package: Package) -> Iterator[tuple[str, ast.expr, str, str]]:
     """(file, type argument, the call's name, the parameter) of the calls taking a type."""
     for module, call, method, _ in node_api_calls(package):
@@ -75,7 +88,8 @@ def interface_of_another_kind(package: Package) -> Iterator[Hit]:
     service or action class (`Trigger`), of `create_service` and `create_client` when it is
     a message class or a service's `Request`/`Response` (`Trigger.Request`), and of rclpy's
     `ActionClient` and `ActionServer` when it is no action class: classes imported from a
-    package's `.msg`, `.srv` or `.action` module (names bound only by that import). A
+    package's `.msg`, `.srv` or `.action` module (names bound only by that import); and any
+    of them given a Python type (`bool`, `str`, `dict`; a name the module does not bind). A
     service's `Request` or an action's `Goal` is a message, which a publisher may send. An
     import naming an interface of a known package under another kind (`from std_msgs.srv
     import String`) is left to DEP008.
@@ -105,6 +119,15 @@ def interface_of_another_kind(package: Package) -> Iterator[Hit]:
                       f"message: rclpy creates the publisher, then every `publish()` raises "
                       f"TypeError (isinstance() arg 2 must be a type)",
                       f"Give the class: `{ast.unparse(value.func)}`")  # type: ignore
+            continue
+        builtin = _builtin_type(value, indexes[path])
+        if builtin is not None:
+            yield Hit(Span(path, value.lineno, value.col_offset + 1),
+                      f"`{api}` takes {_WANTED[parameter]} but is given `{builtin}`, a Python "
+                      "type: rclpy raises AttributeError (type object 'type' has no attribute "
+                      "'_TYPE_SUPPORT') when it is created",
+                      f"Use `std_msgs.msg.{_STD_MSGS[builtin]}`" if builtin in _STD_MSGS and
+                      parameter == "msg_type" else None)
             continue
         qualified = indexes[path].qualified(value) if isinstance(
             value, (ast.Name, ast.Attribute)) else None

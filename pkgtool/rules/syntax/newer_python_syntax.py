@@ -1,5 +1,5 @@
 """SYN007: a Python file written for the target's newer Python, which the Python running
-pkgtool cannot parse, so no rule checked it."""
+pkgtool cannot parse, so no rule checked it (but the imports above the line)."""
 
 from __future__ import annotations
 
@@ -23,9 +23,10 @@ def newer_python_syntax(package: Package) -> Iterator[Hit]:
     Notes a Python file that does not parse on the Python running pkgtool, where the failing
     line uses syntax the target distribution's Python reads (jazzy's Python 3.12: f-strings
     reusing their quotes, `f"{item["label"]}"`; type parameters; `except*` on 3.11). The file
-    is no syntax error there (SYN001 stays silent), but no rule could read it: its imports,
-    node code and entry points went unchecked. This is a limit of the Python running pkgtool,
-    not a defect of the package.
+    is no syntax error there (SYN001 stays silent), but no rule could read it: its node code
+    and entry points went unchecked, and its imports but those of the top-level statements
+    above the failing one. This is a limit of the Python running pkgtool, not a defect of the
+    package.
 
     ## Why is this bad?
     It is not wrong in itself; the note says that a clean lint does not vouch for the file.
@@ -40,8 +41,10 @@ def newer_python_syntax(package: Package) -> Iterator[Hit]:
     """
     running = ".".join(str(part) for part in sys.version_info[:2])
     target = ".".join(PYTHON_VERSIONS[package.context.distro].split(".")[:2])
+    imported = {module.path for module in package.modules if module.imports}
     for problem in package.problems:
         if problem.kind == "python-syntax" and newer_syntax(package, problem):
+            checked = "only the imports above it were checked" if problem.span.path in \
+                imported else "no rule checked the file"
             yield Hit(problem.span, f"Python {running} (running pkgtool) cannot parse this "
-                      f"syntax of Python {target} ({package.context.distro}'s), so no rule "
-                      "checked the file")
+                      f"syntax of Python {target} ({package.context.distro}'s), so {checked}")
