@@ -34,6 +34,9 @@ DATA_FOLDERS = frozenset({"launch", "config", "params", "param", "resource", "te
 """Folders of a ROS package that hold data, launch files or tests, never its Python code."""
 _INSTALL_KEYWORDS = frozenset({"packages", "package_dir", "py_modules", "data_files"})
 """Keywords whose effect custom ``cmdclass`` commands can change."""
+_MODULE_COMMANDS = frozenset({"build", "build_py", "build_ext", "install_lib", "egg_info"})
+"""setuptools commands whose replacement may build or install other modules than setup()
+names."""
 PROJECT_FILES = frozenset({"setup.py", "pyproject.toml"})
 """Files that make their folder a Python project of its own."""
 
@@ -74,7 +77,8 @@ def keyword_known(package: Package, keyword: str) -> bool:
         return False
     if setup.is_unresolved(keyword) or setup.is_unresolved("**"):
         return False
-    if keyword in _INSTALL_KEYWORDS and "cmdclass" in (*setup.keywords, *dict(setup.unresolved)):
+    if keyword in _INSTALL_KEYWORDS and "cmdclass" in (*setup.keywords, *dict(setup.unresolved)) \
+            and not _commands_keep(keyword, setup.commands):
         return False  # custom build or install commands may install anything
     if keyword in setup.keywords or package.setup_cfg is None:
         return True
@@ -83,6 +87,17 @@ def keyword_known(package: Package, keyword: str) -> bool:
     if option is None:
         return not any(o.section == section for o in cfg.options)
     return cfg.get(section, option) is None
+
+
+def _commands_keep(keyword: str, commands: tuple[str, ...] | None) -> bool:
+    """True when the custom ``commands`` of ``cmdclass`` leave what ``keyword`` installs as
+    it says: for the modules (``packages``, ``package_dir``, ``py_modules``), no command that
+    builds or installs them is replaced (an ``install`` or ``develop`` that only moves the
+    scripts, or prints, does not make modules); to ``data_files`` any replaced command may
+    add."""
+    if commands is None:
+        return False
+    return not commands if keyword == "data_files" else not set(commands) & _MODULE_COMMANDS
 
 
 def found_top_level(package: Package) -> frozenset[str]:

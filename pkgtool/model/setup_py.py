@@ -109,6 +109,9 @@ class SetupPy:
     data_files_in_part: tuple[DataFile, ...] = ()
     """When ``data_files`` is a list not every item of which evaluates, the entries that do
     (each entry's own checks hold for them; what the package installs is still unknown)."""
+    commands: tuple[str, ...] | None = None
+    """The setuptools commands ``cmdclass`` replaces when it is a dict display (``build_py``
+    for ``{'build_py': BuildPy}``); None without one, or when it is another expression."""
 
     def is_unresolved(self, keyword: str) -> bool:
         """True when ``keyword`` was given but could not be evaluated."""

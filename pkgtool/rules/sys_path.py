@@ -7,7 +7,9 @@ from ``__file__`` and string literals are understood: ``os.path`` (``dirname``, 
 ``abspath``, ``realpath``, ``normpath``), ``pathlib.Path`` (``parent``, ``parents[n]``, ``/``,
 ``joinpath``, ``resolve()``, ``absolute()``, ``as_posix()``), ``str()``/``os.fspath()``, a text
 starting with ``/`` added to a path (``dirname(__file__) + "/../lib"``, or in an f-string), and
-names assigned such a path once in the whole module (at module level or in a function). The
+names assigned such a path once in the whole module (at module level or in a function), and
+an absolute path into the package's folder of one checkout's sources
+(``/home/ubuntu/ws/src/<package>/driver``: the folder it stands for is the package's). The
 package's own share folder (``get_package_share_directory('<package>')``) stands for its root:
 a launch file putting ``share/<package>/launch`` on the path imports the package's ``launch/``
 modules. Nothing is executed; a path leaving the package is ignored.
@@ -211,7 +213,20 @@ def _path(node: ast.expr, file: _Source, aliases: dict[str, str], once: dict[str
         return base
     if isinstance(node, ast.Call) and not node.keywords:
         return _called(node, here)
+    if isinstance(node, ast.Constant) and isinstance(node.value, str):
+        return _checkout_path(node.value, file.package)
     return None
+
+
+def _checkout_path(text: str, package: str) -> str | None:
+    """The path under :data:`_ROOT` of an absolute path into the package's folder in a
+    workspace's sources (``/home/ubuntu/ws/src/<package>/driver``: one checkout's), or None."""
+    parts = posixpath.normpath(text).split("/")
+    if not text.startswith("/") or "src" not in parts or package not in parts[
+            parts.index("src") + 1:]:
+        return None
+    last = len(parts) - 1 - parts[::-1].index(package)
+    return posixpath.join(_ROOT, *parts[last + 1:])
 
 
 def _called(node: ast.Call, here: tuple[_Source, dict[str, str], dict[str, ast.expr], int]

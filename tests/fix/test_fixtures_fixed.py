@@ -74,6 +74,8 @@ with): no fix
 guesses, the user chooses; the other findings
 of the case are fixed."""
 MANUAL = {("PYC078", "habits_of_other_languages"),
+          ("ENT002", "module_never_written_beside_an_install_command"),
+          ("ENT002", "misspelt_module_beside_custom_commands"),
           ("MAN015", "catkin_package_without_cmakelists"), ("PYC079", "unknown_keywords"),
           ("DAT005", "cmake_launch_folder_not_installed"),
           ("IFC007", "format_two_manifest"),

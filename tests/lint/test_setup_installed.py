@@ -4,6 +4,8 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import pytest
+
 from pkgtool.model.installed import (
     installed_data, installed_modules, is_ament_python, keyword_known, package_folder,
     why_not_installed,
@@ -86,8 +88,17 @@ def test_build_type_decides_ament_python(tmp_path: Path) -> None:
     assert not is_ament_python(cmake)
 
 
-def test_custom_commands_make_installation_unknown(tmp_path: Path) -> None:
-    pkg = package(tmp_path, "setup(packages=['demo'], data_files=[], cmdclass={})",
+@pytest.mark.parametrize("commands, modules_known, data_known", [
+    ("{}", True, True),  # nothing replaced
+    ("{'install': Install}", True, False),  # may copy more files, makes no module
+    ("dict(develop=Develop)", True, False),
+    ("{'build_py': BuildPy}", False, False),  # may build other modules
+    ("COMMANDS", False, False),  # not a dict display: anything
+])
+def test_custom_commands_make_what_they_may_change_unknown(
+        tmp_path: Path, commands: str, modules_known: bool, data_known: bool) -> None:
+    pkg = package(tmp_path, f"setup(packages=['demo'], data_files=[], cmdclass={commands})",
                   "demo/__init__.py")
-    assert installed_modules(pkg) is None and installed_data(pkg) is None
+    assert (installed_modules(pkg) is not None) is modules_known
+    assert (installed_data(pkg) is not None) is data_known
     assert keyword_known(pkg, "entry_points")

@@ -99,6 +99,7 @@ def _setup_py(path: str, call: SetupCall | None, tree: Tree) -> SetupPy:
     known = {name: fields.get(name) for name in _FIELDS}
     return SetupPy(path=path, setup_span=call.span, keywords=keywords,
                    unresolved=tuple(unresolved), data_files_in_part=_in_part(call, tree),
+                   commands=call.commands,
                    **known)
 
 

@@ -18,7 +18,7 @@ class SetupCall:
     could not evaluate (``unresolved``); for a list display that could not be evaluated
     whole, the items that could (``in_part``, by keyword)."""
 
-    __slots__ = ("span", "values", "spans", "sources", "unresolved", "in_part")
+    __slots__ = ("span", "values", "spans", "sources", "unresolved", "in_part", "commands")
 
     def __init__(self, span: Span) -> None:
         self.span = span
@@ -27,6 +27,7 @@ class SetupCall:
         self.sources: dict[str, Unresolved] = {}
         self.unresolved: list[tuple[str, Unresolved]] = []
         self.in_part: dict[str, list[Any]] = {}
+        self.commands: tuple[str, ...] | None = None
 
 
 class Interpreter(ExpressionEvaluator):
@@ -88,6 +89,8 @@ class Interpreter(ExpressionEvaluator):
             call.unresolved.append(("**", self.unresolved(node.func if not exact else node)))
         for keyword in node.keywords:
             key = keyword.arg or "**"
+            if key == "cmdclass":
+                call.commands = _command_names(keyword.value)
             try:
                 value = self.eval(keyword.value, scope)
             except NotStatic as error:
@@ -132,3 +135,16 @@ def _inside(span: Span, node: ast.AST) -> bool:
     """True when ``span`` lies within ``node``'s source lines."""
     first = getattr(node, "lineno", 0)
     return first <= span.line <= (getattr(node, "end_lineno", None) or first)
+
+
+def _command_names(value: ast.expr) -> tuple[str, ...] | None:
+    """The commands a ``cmdclass`` written as a dict display replaces (``{'build_py':
+    BuildPy}``, ``dict(install=Install)``), None for any other expression."""
+    if isinstance(value, ast.Dict) and all(isinstance(k, ast.Constant) and
+                                           isinstance(k.value, str) for k in value.keys):
+        return tuple(k.value for k in value.keys)  # type: ignore[union-attr]
+    if isinstance(value, ast.Call) and isinstance(value.func, ast.Name) and \
+            value.func.id == "dict" and not value.args and \
+            all(k.arg is not None for k in value.keywords):
+        return tuple(str(k.arg) for k in value.keywords)
+    return None

@@ -12,6 +12,7 @@ from pkgtool.model.launch import EXISTENCE_CHECKS
 from pkgtool.model.package import Package, is_test_material
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
+from pkgtool.rules.scopes import single_assignments
 from pkgtool.rules.existence_checks import checks_files
 from pkgtool.rules.syntax_trees import Index, index_of, installed_trees, python_files
 from pkgtool.lazy_regex import lazy_pattern
@@ -51,7 +52,8 @@ def home_folder_path(package: Package) -> Iterator[Hit]:
     settings such as `.travis.yml` name the CI machine's home). In Python, also a
     path built from the home folder into a colcon workspace's `src` or `install` folder
     (`'~/ros2_ws/src/...'`, `os.path.join(os.getenv('HOME'), 'ws', 'src', ...)`,
-    `f"{os.environ['HOME']}/ros2_ws/install/..."`). Tests and test data are left alone.
+    `f"{os.environ['HOME']}/ros2_ws/install/..."`; the home folder also through a name bound
+    once to it, `HOME = os.path.expanduser('~')`). Tests and test data are left alone.
 
     ## Why is this bad?
     The path exists on the author's machine only: on a teammate's, a grader's, the robot's
@@ -124,8 +126,10 @@ def _workspace_paths(path: str, tree: ast.Module, index: Index) -> Iterator[Hit]
     os.getenv('HOME'), 'ws', 'src', ...)``, an f-string starting with ``$HOME``) that go into
     a workspace's ``src`` or ``install`` folder: one user's checkout."""
     parents = walk_once(tree).parents
+    homes = frozenset(name for name, value in single_assignments(tree).items()
+                      if _is_home(value, index, frozenset()))
     for node in nodes_of_class(tree, ast.Constant, ast.Call, ast.JoinedStr):
-        rest = _after_home(node, index)
+        rest = _after_home(node, index, homes)
         if rest is not None and _WORKSPACE.match(rest) and \
                 not _docstring(node, parents) and not _message(node, parents):
             shown = shortened(ast.unparse(node))
@@ -135,28 +139,31 @@ def _workspace_paths(path: str, tree: ast.Module, index: Index) -> Iterator[Hit]
                       "workspace elsewhere, the file is not there")
 
 
-def _after_home(node: ast.AST, index: Index) -> str | None:
+def _after_home(node: ast.AST, index: Index, homes: frozenset[str]) -> str | None:
     """What ``node`` adds to the home folder: the text of ``'~/x/y'``, of the parts of
-    ``os.path.join(<home>, 'x', 'y')`` or of an f-string ``f'{<home>}/x/y'``; None for
-    anything else."""
+    ``os.path.join(<home>, 'x', 'y')`` or of an f-string ``f'{<home>}/x/y'`` (``homes``: the
+    names bound once to the home folder); None for anything else."""
     if isinstance(node, ast.Constant):
         value = node.value
         return value if isinstance(value, str) and value.startswith("~/") else None
     if isinstance(node, ast.Call) and index.qualified(node.func) == "os.path.join" and \
-            node.args and _is_home(node.args[0], index) and \
+            node.args and _is_home(node.args[0], index, homes) and \
             all(isinstance(a, ast.Constant) and isinstance(a.value, str) for a in node.args[1:]):
         return "/".join(a.value.strip("/") for a in node.args[1:])  # type: ignore[attr-defined]
     if isinstance(node, ast.JoinedStr) and len(node.values) >= 2 and \
             isinstance(node.values[0], ast.FormattedValue) and \
-            _is_home(node.values[0].value, index) and \
+            _is_home(node.values[0].value, index, homes) and \
             isinstance(node.values[1], ast.Constant) and isinstance(node.values[1].value, str):
         return node.values[1].value.lstrip("/")
     return None
 
 
-def _is_home(node: ast.expr, index: Index) -> bool:
+def _is_home(node: ast.expr, index: Index, homes: frozenset[str]) -> bool:
     """True for ``os.getenv('HOME')``, ``os.environ['HOME']``, ``os.environ.get('HOME')``,
-    ``os.path.expanduser('~')`` and ``Path.home()`` (also inside ``str()``)."""
+    ``os.path.expanduser('~')`` and ``Path.home()`` (also inside ``str()``), and a name of
+    ``homes``."""
+    if isinstance(node, ast.Name):
+        return node.id in homes
     if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and \
             node.func.id == "str" and len(node.args) == 1:
         node = node.args[0]

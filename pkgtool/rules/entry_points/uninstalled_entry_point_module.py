@@ -9,14 +9,15 @@ from collections.abc import Callable, Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdistro import (is_released_package, keys_for_import, modules_of_key,
                                          stdlib_modules, typo_of)
-from pkgtool.model.installed import why_not_installed
+from pkgtool.model.installed import installed_modules, why_not_installed
 from pkgtool.model.launch import python_folders
 from pkgtool.model.package import Package
 from pkgtool.model.setup_py import EntryPoint, Value
-from pkgtool.rules.console_scripts import scripts_and_modules
+from pkgtool.rules.console_scripts import SCRIPT_GROUPS, problem, scripts_and_modules
 from pkgtool.knowledge.interfaces import interfaces_of
 from pkgtool.rules.imports import RUNTIME, declared, normalised_name
 from pkgtool.rules.registry import rule
+from pkgtool.rules.setup_values import checked_setup
 
 
 def _own_roots(package: Package, modules: dict[str, str]) -> set[str]:
@@ -120,6 +121,34 @@ def _may_provide(key: str, root: str, distro: str) -> bool:
     return root in modules if modules else True
 
 
+def _misspelt_beside_custom_commands(package: Package) -> Iterator[Hit]:
+    """Hits for console scripts naming a module whose file does not exist, a typo away from
+    the one module beside it so spelled (``dh_conventer`` for ``dh_converter.py``), in a
+    setup.py whose ``cmdclass`` hides what it installs: custom commands add generated files,
+    never a module named like a typo of a source file."""
+    setup = checked_setup(package)
+    if setup is None or "cmdclass" not in setup.keywords or setup.package_dir or \
+            installed_modules(package) is not None:
+        return
+    for entry in setup.entry_points or ():
+        if entry.group not in SCRIPT_GROUPS or problem(entry) or "." not in entry.module:
+            continue
+        path = entry.module.replace(".", "/")
+        folder, _, name = path.rpartition("/")
+        if package.has_file(f"{path}.py") or package.has_file(f"{path}/__init__.py") or \
+                not package.has_file(f"{folder}/__init__.py"):
+            continue
+        beside = {f[len(folder) + 1:-3] for f in package.files
+                  if f.startswith(f"{folder}/") and f.endswith(".py") and
+                  "/" not in f[len(folder) + 1:]}
+        meant = typo_of(name, beside)
+        if meant is not None:
+            fixed = f"{entry.module.rpartition('.')[0]}.{meant}"
+            yield Hit(entry.span, f"`{entry.module}` is no module of the package: `{folder}/` "
+                                  f"holds no `{name}.py` (did you mean `{meant}`?)",
+                      f"Write `{fixed}:{entry.attr}`")
+
+
 def _misspelt_root(package: Package, module: str, modules: dict[str, str]
                    ) -> Callable[[EntryPoint], Hit] | None:
     """How to report an entry whose top-level package is a typo of the one installed top-level
@@ -184,6 +213,8 @@ def uninstalled_entry_point_module(package: Package) -> Iterator[Hit]:
     ```
     """
     entries, modules = scripts_and_modules(package)
+    if not entries:
+        yield from _misspelt_beside_custom_commands(package)
     roots = _own_roots(package, modules) if entries else set()
     # the package's Python package folders at any depth: an entry naming one names its code
     folders = {posixpath.basename(f) for f in python_folders(package.files)} if entries else set()

@@ -39,10 +39,12 @@ def _accepts(arguments: ast.arguments, skip: int, count: int) -> bool:
         count <= len(positional) or arguments.vararg is not None)
 
 
-def _annotated(arguments: ast.arguments) -> bool:
-    """True when a parameter is annotated (rclpy may fill a ``TimerInfo`` one by its type)."""
+def _timer_info(arguments: ast.arguments) -> bool:
+    """True when a parameter is annotated ``TimerInfo`` (newer rclpy fills one so annotated
+    with the timer's call times; another annotation changes nothing)."""
     every = (*arguments.posonlyargs, *arguments.args, *arguments.kwonlyargs)
-    return any(a.annotation is not None for a in every)
+    return any(a.annotation is not None and "TimerInfo" in ast.unparse(a.annotation)
+               for a in every)
 
 
 @rule("PYC024", "callback-signature-mismatch", Severity.ERROR,
@@ -63,8 +65,8 @@ def callback_signature_mismatch(package: Package) -> Iterator[Hit]:
     registering class (`self.on_message`) or a plain function bound once in the module:
     reports one whose required parameters are more than rclpy passes, whose positional
     parameters are fewer, or that has a keyword-only parameter without default. Functions
-    with annotated parameters (rclpy may fill a parameter annotated `TimerInfo`) and
-    decorated functions are left alone.
+    with a parameter annotated `TimerInfo` (newer rclpy fills it) and decorated functions
+    are left alone.
 
     ## Why is this bad?
     rclpy calls the callback with a fixed number of arguments: the call raises `TypeError`
@@ -97,7 +99,7 @@ def callback_signature_mismatch(package: Package) -> Iterator[Hit]:
                 value, 0)
         else:
             found = callback_function(value, tree, index)
-        if passed is None or found is None or _annotated(found[0].args) or \
+        if passed is None or found is None or _timer_info(found[0].args) or \
                 overridden(package, found[0], index):
             continue  # (last: a subclass's method may be the one that runs)
         counts, what = passed

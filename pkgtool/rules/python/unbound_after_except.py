@@ -94,7 +94,7 @@ def _guarded(use: ast.Name, name: str, node: ast.Try, going_on: list[ast.ExceptH
     name the handlers that go on set (``status = FAILED`` there, then ``if status ==
     SUCCEEDED:`` around the use, or ``if status != SUCCEEDED: return`` before it)."""
     flags = {f for f in _flag_after(name, node) if _falsy_before(f, node, index)}
-    states = set(bound_names([s for h in going_on for s in h.body]))
+    states = _states(going_on, rest)
     child, parent = use, index.parents.get(id(use))
     while parent is not None and parent is not node:
         if isinstance(parent, ast.If) and (
@@ -114,7 +114,39 @@ def _guarded(use: ast.Name, name: str, node: ast.Try, going_on: list[ast.ExceptH
 
 
 def _read_names(test: ast.expr) -> set[str]:
-    return {n.id for n in ast.walk(test) if isinstance(n, ast.Name)}
+    """The names and attribute paths (``self.ready``) ``test`` reads."""
+    return {found for n in ast.walk(test) if (found := _path(n)) is not None}
+
+
+def _path(node: ast.AST) -> str | None:
+    """``ok`` for a name, ``self.ok`` for an attribute of a name, else None."""
+    if isinstance(node, ast.Name):
+        return node.id
+    if isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name):
+        return f"{node.value.id}.{node.attr}"
+    return None
+
+
+def _states(going_on: list[ast.ExceptHandler], rest: list[ast.stmt]) -> set[str]:
+    """What the handlers that go on set (``have_torch = False``, ``self.have_torch =
+    False``), and the names and attributes the statements after the ``try`` then assign from
+    one of those (``self.use_gpu = self.device == 'cuda' and self.have_torch``): a test of
+    one tells the handler's way from the ``try`` body's."""
+    states = {found for handler in going_on for statement in handler.body
+              for target in _assigned(statement)
+              for part in (target.elts if isinstance(target, (ast.Tuple, ast.List)) else
+                           [target]) if (found := _path(part)) is not None}
+    for statement in rest:
+        if isinstance(statement, ast.Assign) and states & _read_names(statement.value):
+            states.update(found for target in statement.targets
+                          if (found := _path(target)) is not None)
+    return states
+
+
+def _assigned(statement: ast.stmt) -> list[ast.expr]:
+    """The targets an assignment statement binds or stores."""
+    return statement.targets if isinstance(statement, ast.Assign) else \
+        [statement.target] if isinstance(statement, (ast.AnnAssign, ast.AugAssign)) else []
 
 
 def _negated_flag(test: ast.expr) -> str | None:
@@ -183,7 +215,9 @@ def unbound_after_except(package: Package) -> Iterator[Hit]:
     Not reported: `try` blocks inside loops, functions calling `locals()`, reads guarded
     by a flag set after the name in the `try` and falsy before it (`ok = False` ... `ok =
     True` ... `if ok:` or `if not ok: return`) or by a test of what the `except` block
-    sets (`status = FAILED` there, `if status == SUCCEEDED:` around the read), names the
+    sets (`status = FAILED` there, `if status == SUCCEEDED:` around the read; also an
+    attribute, `self.have_torch = False`, and what is assigned from one after the `try`,
+    `self.use_gpu = gpu and self.have_torch` ... `if self.use_gpu:`), names the
     `except` block assigns too, and reads that `finally` or a catch-all `except` makes
     (PYC003's).
 

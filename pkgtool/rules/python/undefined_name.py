@@ -6,6 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.ast_nodes import nodes_of, nodes_of_class, walk_once
 from pkgtool.model.package import Package, is_test_data
 from pkgtool.model.python_visitor import parse_tree
@@ -43,7 +44,9 @@ def undefined_name(package: Package) -> Iterator[Hit]:
     str`) is such a guard too, and so is a `try` using a ROS 1 module never imported (`rospy`)
     whose handler catches NameError without raising it again (`try: rospy.loginfo(text)` /
     `except Exception: self.get_logger().info(text)`: the ROS 1 path of a node written for
-    both). Code that never runs on Python 3 is skipped: branches of `if sys.version_info <
+    both). IPython's builtins (`display`, `get_ipython`) are left alone in a module that
+    knows when it runs in a notebook (it names IPython, Jupyter, Colab or Kaggle). Code that
+    never runs on Python 3 is skipped: branches of `if sys.version_info <
     (3,):`, `if six.PY2:` or of a module constant set once to False, lines after a `return`,
     `raise`, `continue` or `break` of the same block, and annotations Python never evaluates:
     those of assignments in a function body, a string in an annotation (a forward reference,
@@ -88,8 +91,9 @@ def undefined_name(package: Package) -> Iterator[Hit]:
         seen: set[tuple[int, str]] = set()
         notes = _unevaluated_annotations(tree, lazy=lazy)
         stored = _stored_in_globals(tree)
+        notebook = _NOTEBOOK_AWARE.search(package.texts.get(path, "")) is not None
         for line, column, name in _pyflakes_undefined(path, tree):
-            if stored is None or name in stored or \
+            if stored is None or name in stored or notebook and name in _NOTEBOOK_NAMES or \
                     any(start <= (line, column) <= end for start, end in notes) or \
                     _bound_at_run_time(tree, line, column, name):
                 continue
@@ -98,6 +102,11 @@ def undefined_name(package: Package) -> Iterator[Hit]:
                 yield Hit(Span(path, line, column + 1), f"Undefined name `{name}`")
 
 
+_NOTEBOOK_NAMES = frozenset({"display", "get_ipython", "__IPYTHON__"})
+"""Names IPython puts into ``builtins`` in a notebook or an IPython shell."""
+_NOTEBOOK_AWARE = lazy_pattern(r"(?i)ipython|colab|kaggle|jupyter|ipykernel")
+"""What a module that knows when it runs in a notebook names (``IS_COLAB``, ``'IPython' in
+sys.modules``): it uses :data:`_NOTEBOOK_NAMES` only there."""
 LAZY_ANNOTATIONS = (3, 14)
 """The first Python that evaluates annotations only when they are read (PEP 649)."""
 _DEFERRING = frozenset({"add_done_callback", "create_timer", "create_wall_timer",

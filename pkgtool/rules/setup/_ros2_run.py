@@ -55,11 +55,19 @@ def is_rqt_plugin(package: Package) -> bool:
                if export.tag == "export" for child in export.children)
 
 
+_SCRIPT_COMMANDS = frozenset({"install", "develop", "install_scripts", "easy_install"})
+"""setuptools commands whose replacement may choose where console scripts go (setting
+``install_scripts`` or ``script_dir`` in code, as py_trees_ros_tutorials does)."""
+
+
 def scripts_in_bin(package: Package) -> bool:
     """Console scripts install to `bin/`: no setup.cfg, or one without `[install]
-    install_scripts` (and its near misses)."""
+    install_scripts` (and its near misses), and no ``cmdclass`` that may move them."""
     setup, cfg = package.setup_py, package.setup_cfg
     if setup is None or not setup.console_scripts:
+        return False
+    if "cmdclass" in (*setup.keywords, *dict(setup.unresolved)) and (
+            setup.commands is None or set(setup.commands) & _SCRIPT_COMMANDS):
         return False
     return cfg is None or not any(o.section == "install" and
                                   o.key.replace("-", "_") == "install_scripts"
