@@ -2,8 +2,8 @@
 interface files of ROS packages that have no PyPI wheel, read from their repositories.
 
 Courses use interface packages no wheel installs (turtlesim, example_interfaces, nav2_msgs,
-tf2_msgs, irobot_create_msgs): their ``.msg``, ``.srv`` and ``.action`` files are read at the
-commits :data:`PINS` names for each distribution, with the reading of
+tf2_msgs, irobot_create_msgs, vision_msgs): their ``.msg``, ``.srv`` and ``.action`` files
+are read at the commits :data:`PINS` names for each distribution, with the reading of
 :mod:`pkgtool.knowledge.interface_definitions` (checked against the generated classes of every
 wheel's interface). A package is left out of a distribution when one of its interface files
 is not understood (an ``.idl`` file, a line the reading does not know): its names and fields
@@ -30,22 +30,26 @@ from pkgtool.knowledge.interface_definitions import definitions
 KINDS = ("msg", "srv", "action")
 PACKAGES = {"turtlesim": "ros/ros_tutorials", "example_interfaces": "ros2/example_interfaces",
             "nav2_msgs": "ros-navigation/navigation2", "tf2_msgs": "ros2/geometry2",
-            "irobot_create_msgs": "iRobotEducation/irobot_create_msgs"}
+            "irobot_create_msgs": "iRobotEducation/irobot_create_msgs",
+            "vision_msgs": "ros-perception/vision_msgs"}
 """The packages read, and the repository holding each."""
 PINS = {
     "humble": {"ros/ros_tutorials": "ba29c3f376197e3736f497639299f855cbf73390",
                "ros2/example_interfaces": "f8deb566a1facf91bd38b9f00c4cf684c5007d85",
                "ros-navigation/navigation2": "3c3db59d6969d8ecee8e68468693d006397f4a0c",
                "ros2/geometry2": "d0dbd516d1748cfe1b293e0f7d5b2f82ddd3438a",
-               "iRobotEducation/irobot_create_msgs": "a4b94407977d5efb16e97fee52e031a7f1f39209"},
+               "iRobotEducation/irobot_create_msgs": "a4b94407977d5efb16e97fee52e031a7f1f39209",
+               "ros-perception/vision_msgs": "e77fa2d97d69abaaa546592892d2d5d16cec9977"},
     "jazzy": {"ros/ros_tutorials": "9481d9a4f09d923cc972d017c6acc0e61fa9d7bb",
               "ros2/example_interfaces": "4d7d086e4791e1839fecb9c50a1291d4056b916f",
               "ros-navigation/navigation2": "f4108e5b1c2bce804a1aa0c7be6673a8eb4a1501",
-              "ros2/geometry2": "646342c6164e837d69460e3d28e7a025396544f6"},
+              "ros2/geometry2": "646342c6164e837d69460e3d28e7a025396544f6",
+              "ros-perception/vision_msgs": "e77fa2d97d69abaaa546592892d2d5d16cec9977"},
 }
 """Distribution -> repository -> commit: the head of the distribution's branch, except
 ros_tutorials for jazzy (1.8.2, the release its jazzy branch starts from; the mirror holds no
-jazzy branch). irobot_create_msgs has no jazzy branch: Jazzy is left unknown for it."""
+jazzy branch) and vision_msgs (4.1.1, the release of both distributions). irobot_create_msgs
+has no jazzy branch: Jazzy is left unknown for it."""
 
 Found = dict[str, dict[str, dict[str, str]]]
 """Distribution -> package -> ``pkg/kind/Class`` -> fields entry."""

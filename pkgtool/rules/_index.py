@@ -221,6 +221,7 @@ RULES = {
                "python.unhashable_dataclass_default"),
     "PYC087": ("attribute-read-too-early", "error", True, "python.attribute_read_too_early"),
     "PYC088": ("unset-environment-variable", "warning", True, "python.unset_environment_variable"),
+    "PYC089": ("image-decoded-as-other-kind", "error", True, "python.image_decoded_as_other_kind"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

@@ -33,6 +33,9 @@ def test_fields_of_the_source_packages() -> None:
     stamped = message_fields.nested_message(goal, "pose")
     assert stamped is not None and stamped.name == "geometry_msgs/msg/PoseStamped"
     assert message_fields.message_of("turtlesim.srv.Spawn.Event") is None  # not read
+    box = message_fields.message_of("vision_msgs.msg.BoundingBox2D", "humble")
+    centre = message_fields.nested_message(box, "center") if box else None
+    assert centre is not None and list(centre.fields) == ["position", "theta"]  # 4.x, not x/y
 
 
 def test_what_the_distributions_share_takes_both_flags_and_jazzy_wins_a_difference() -> None:

@@ -32,11 +32,35 @@ def dynamic_attributes(tree: ast.Module) -> bool:
 
 
 def probed_names(index: Index) -> frozenset[str]:
-    """Attribute names the module asks ``hasattr`` or ``getattr`` about."""
-    return frozenset(call.args[1].value for call in index.calls
-                     if isinstance(call.func, ast.Name) and call.func.id in _PROBES
-                     and len(call.args) > 1 and isinstance(call.args[1], ast.Constant)
-                     and isinstance(call.args[1].value, str))
+    """Attribute names the module asks ``hasattr`` or ``getattr`` about: written out, or
+    each of the names a loop or comprehension around the call gives it (``all(hasattr(box,
+    a) for a in ('xmin', 'xmax'))``)."""
+    names: set[str] = set()
+    for call in index.calls:
+        if isinstance(call.func, ast.Name) and call.func.id in _PROBES and len(call.args) > 1:
+            asked = call.args[1]
+            if isinstance(asked, ast.Constant) and isinstance(asked.value, str):
+                names.add(asked.value)
+            elif isinstance(asked, ast.Name):
+                names.update(_looped_texts(call, asked.id, index))
+    return frozenset(names)
+
+
+def _looped_texts(node: ast.AST, name: str, index: Index) -> list[str]:
+    """The strings a ``for`` loop or comprehension around ``node`` gives ``name`` from a
+    literal tuple, list or set of them; none otherwise."""
+    parent = index.parents.get(id(node))
+    while parent is not None:
+        loops = parent.generators if isinstance(
+            parent, (ast.GeneratorExp, ast.ListComp, ast.SetComp, ast.DictComp)) else \
+            [parent] if isinstance(parent, (ast.For, ast.AsyncFor)) else []
+        for loop in loops:
+            if isinstance(loop.target, ast.Name) and loop.target.id == name and \
+                    isinstance(loop.iter, (ast.Tuple, ast.List, ast.Set)):
+                return [e.value for e in loop.iter.elts
+                        if isinstance(e, ast.Constant) and isinstance(e.value, str)]
+        parent = index.parents.get(id(parent))
+    return []
 
 
 def guarded(node: ast.Attribute, index: Index, probed: frozenset[str]) -> bool:
