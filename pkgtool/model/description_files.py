@@ -3,8 +3,8 @@
 A URDF or xacro file includes other packages' files (``$(find other)/urdf/arm.xacro``) and
 points at their meshes (``package://other/meshes/base.dae``); SDF worlds and RViz settings do
 the same. Such a name is a package the package really uses, whatever its spelling looks like.
-The files are read only when a rule asks (most runs never do), each once per package; what an
-XML comment holds names nothing.
+The files are read only when a rule asks (most runs never do), each once per package; what a
+comment holds names nothing (nor xacro's escaped ``$$(find x)``).
 """
 
 from __future__ import annotations
@@ -20,9 +20,11 @@ from pkgtool.records import record
 
 DESCRIPTION_SUFFIXES = (".urdf", ".xacro", ".sdf", ".srdf", ".world", ".rviz")
 """Files naming other packages by ``$(find ...)`` or ``package://`` URIs."""
-_NAMED = lazy_pattern(r"\$\(\s*find(?:-pkg-share)?\s+([A-Za-z][\w.-]*)\s*\)|"
+_NAMED = lazy_pattern(r"(?<!\$)\$\(\s*find(?:-pkg-share)?\s+([A-Za-z][\w.-]*)\s*\)|"
                       r"package://([A-Za-z][\w.-]*)/")
 _XML_COMMENT = lazy_pattern(r"<!--.*?-->", re.DOTALL)
+_YAML_COMMENT = lazy_pattern(r"^[ \t]*#[^\n]*", re.MULTILINE)
+"""A comment line of RViz's settings, which are YAML."""
 
 
 @record
@@ -43,7 +45,8 @@ def package_mentions(package: Package) -> tuple[PackageMention, ...]:
         if relpath.endswith(DESCRIPTION_SUFFIXES):
             read = read_text(package.root, relpath)
             if isinstance(read, TextFile):
-                found.extend(_mentions(relpath, _XML_COMMENT.sub(_blanked, read.text)))
+                comments = _YAML_COMMENT if relpath.endswith(".rviz") else _XML_COMMENT
+                found.extend(_mentions(relpath, comments.sub(_blanked, read.text)))
     return tuple(found)
 
 

@@ -17,6 +17,7 @@ from pkgtool.model.cmake_text import with_included
 from pkgtool.model.launch import python_folders
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
+from pkgtool.model.setup_py import SetupPy
 
 _CFG_KEYWORDS = {
     "name": ("metadata", "name"), "version": ("metadata", "version"),
@@ -37,6 +38,9 @@ _INSTALL_KEYWORDS = frozenset({"packages", "package_dir", "py_modules", "data_fi
 _MODULE_COMMANDS = frozenset({"build", "build_py", "build_ext", "install_lib", "egg_info"})
 """setuptools commands whose replacement may build or install other modules than setup()
 names."""
+_SCRIPT_COMMANDS = frozenset({"install", "develop"})
+"""Commands whose replacement usually moves the console scripts only, unless it runs
+programs or writes files (:attr:`~pkgtool.model.setup_py.SetupPy.acting_commands`)."""
 PROJECT_FILES = frozenset({"setup.py", "pyproject.toml"})
 """Files that make their folder a Python project of its own."""
 
@@ -78,7 +82,7 @@ def keyword_known(package: Package, keyword: str) -> bool:
     if setup.is_unresolved(keyword) or setup.is_unresolved("**"):
         return False
     if keyword in _INSTALL_KEYWORDS and "cmdclass" in (*setup.keywords, *dict(setup.unresolved)) \
-            and not _commands_keep(keyword, setup.commands):
+            and not _commands_keep(keyword, setup):
         return False  # custom build or install commands may install anything
     if keyword in setup.keywords or package.setup_cfg is None:
         return True
@@ -89,15 +93,18 @@ def keyword_known(package: Package, keyword: str) -> bool:
     return cfg.get(section, option) is None
 
 
-def _commands_keep(keyword: str, commands: tuple[str, ...] | None) -> bool:
-    """True when the custom ``commands`` of ``cmdclass`` leave what ``keyword`` installs as
-    it says: for the modules (``packages``, ``package_dir``, ``py_modules``), no command that
-    builds or installs them is replaced (an ``install`` or ``develop`` that only moves the
-    scripts, or prints, does not make modules); to ``data_files`` any replaced command may
-    add."""
-    if commands is None:
+def _commands_keep(keyword: str, setup: SetupPy) -> bool:
+    """True when the custom commands of ``cmdclass`` (a dict display) leave what ``keyword``
+    installs as setup() says: for the modules (``packages``, ``package_dir``, ``py_modules``),
+    no command that builds or installs them is replaced, and an ``install`` or ``develop``
+    replaced only changes options or prints (one running ``protoc`` first makes modules);
+    ``data_files`` only when no command is replaced."""
+    if setup.commands is None:
         return False
-    return not commands if keyword == "data_files" else not set(commands) & _MODULE_COMMANDS
+    if keyword == "data_files":
+        return not setup.commands
+    return not set(setup.commands) & _MODULE_COMMANDS and \
+        not set(setup.acting_commands) & _SCRIPT_COMMANDS
 
 
 def found_top_level(package: Package) -> frozenset[str]:

@@ -112,6 +112,9 @@ class SetupPy:
     commands: tuple[str, ...] | None = None
     """The setuptools commands ``cmdclass`` replaces when it is a dict display (``build_py``
     for ``{'build_py': BuildPy}``); None without one, or when it is another expression."""
+    acting_commands: tuple[str, ...] = ()
+    """Those of :attr:`commands` whose replacement may run programs or write files (a class
+    setup.py does not define, or one calling ``subprocess``, ``open``, ``shutil``, ...)."""
 
     def is_unresolved(self, keyword: str) -> bool:
         """True when ``keyword`` was given but could not be evaluated."""

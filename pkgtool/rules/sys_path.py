@@ -222,11 +222,11 @@ def _checkout_path(text: str, package: str) -> str | None:
     """The path under :data:`_ROOT` of an absolute path into the package's folder in a
     workspace's sources (``/home/ubuntu/ws/src/<package>/driver``: one checkout's), or None."""
     parts = posixpath.normpath(text).split("/")
-    if not text.startswith("/") or "src" not in parts or package not in parts[
-            parts.index("src") + 1:]:
+    if not text.startswith("/") or "src" not in parts:
         return None
-    last = len(parts) - 1 - parts[::-1].index(package)
-    return posixpath.join(_ROOT, *parts[last + 1:])
+    below = parts[parts.index("src") + 1:]  # the package's folder: the first of its name
+    return posixpath.join(_ROOT, *below[below.index(package) + 1:]) if package in below \
+        else None
 
 
 def _called(node: ast.Call, here: tuple[_Source, dict[str, str], dict[str, ast.expr], int]

@@ -88,17 +88,26 @@ def test_build_type_decides_ament_python(tmp_path: Path) -> None:
     assert not is_ament_python(cmake)
 
 
-@pytest.mark.parametrize("commands, modules_known, data_known", [
-    ("{}", True, True),  # nothing replaced
-    ("{'install': Install}", True, False),  # may copy more files, makes no module
-    ("dict(develop=Develop)", True, False),
-    ("{'build_py': BuildPy}", False, False),  # may build other modules
-    ("COMMANDS", False, False),  # not a dict display: anything
+_QUIET = ("class Quiet(object):\n    def run(self):\n        print('installing')\n"
+          "        super().run()\n")
+_PROTOC = ("import subprocess\n\n\ndef protoc():\n    subprocess.check_call(['protoc'])\n\n\n"
+           "class Protoc(object):\n    def run(self):\n        protoc()\n        super().run()\n")
+
+
+@pytest.mark.parametrize("defined, commands, modules_known, data_known", [
+    ("", "{}", True, True),  # nothing replaced
+    (_QUIET, "{'install': Quiet}", True, False),  # may copy more files, makes no module
+    (_QUIET, "dict(develop=Quiet)", True, False),
+    (_PROTOC, "{'develop': Protoc}", False, False),  # runs a generator first
+    ("from elsewhere import Install\n", "{'install': Install}", False, False),  # unknown
+    (_QUIET, "{'build_py': Quiet}", False, False),  # may build other modules
+    ("", "COMMANDS", False, False),  # not a dict display: anything
 ])
 def test_custom_commands_make_what_they_may_change_unknown(
-        tmp_path: Path, commands: str, modules_known: bool, data_known: bool) -> None:
-    pkg = package(tmp_path, f"setup(packages=['demo'], data_files=[], cmdclass={commands})",
-                  "demo/__init__.py")
+        tmp_path: Path, defined: str, commands: str, modules_known: bool, data_known: bool
+) -> None:
+    pkg = package(tmp_path, f"{defined}\nsetup(packages=['demo'], data_files=[], "
+                            f"cmdclass={commands})", "demo/__init__.py")
     assert (installed_modules(pkg) is not None) is modules_known
     assert (installed_data(pkg) is not None) is data_known
     assert keyword_known(pkg, "entry_points")

@@ -12,6 +12,7 @@ import ast
 from typing import Any
 
 from pkgtool.model.python_visitor import parse_tree
+from pkgtool.model.setup_eval.commands import acting
 from pkgtool.model.setup_eval.entries import Malformed, data_files, entry_points
 from pkgtool.model.setup_eval.evaluator import SetupCall
 from pkgtool.model.setup_eval.executor import CONTROL_FLOW, Runner
@@ -65,7 +66,7 @@ def read_setup(path: str, text: str, files: tuple[str, ...] | None) -> SetupPy |
     found = evaluate(path, text, files)
     if isinstance(found, ParseProblem):
         return found
-    return _setup_py(path, found.call, found.tree)
+    return _setup_py(path, found.call, found.tree, found.module)
 
 
 def _unreached_call(runner: Runner, module: ast.Module) -> SetupCall | None:
@@ -83,7 +84,7 @@ _FIELDS = (*_VALUE_FIELDS, "packages", "package_dir", "py_modules", "data_files"
            "scripts")
 
 
-def _setup_py(path: str, call: SetupCall | None, tree: Tree) -> SetupPy:
+def _setup_py(path: str, call: SetupCall | None, tree: Tree, module: ast.Module) -> SetupPy:
     if call is None:
         return SetupPy(path=path, setup_span=None, keywords=(),
                        **dict.fromkeys(_FIELDS))  # type: ignore[arg-type]
@@ -99,7 +100,9 @@ def _setup_py(path: str, call: SetupCall | None, tree: Tree) -> SetupPy:
     known = {name: fields.get(name) for name in _FIELDS}
     return SetupPy(path=path, setup_span=call.span, keywords=keywords,
                    unresolved=tuple(unresolved), data_files_in_part=_in_part(call, tree),
-                   commands=call.commands,
+                   commands=None if call.commands is None else tuple(
+                       command for command, _ in call.commands),
+                   acting_commands=acting(call.commands or (), module),
                    **known)
 
 

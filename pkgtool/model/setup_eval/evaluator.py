@@ -7,6 +7,7 @@ from typing import Any
 
 from pkgtool.model.setup_eval import builtins
 from pkgtool.model.setup_eval.expressions import ExpressionEvaluator
+from pkgtool.model.setup_eval.commands import Commands, command_classes
 from pkgtool.model.setup_eval.scope import Scope
 from pkgtool.model.setup_eval.values import Builtin, NotStatic, Opaque
 from pkgtool.model.span import Span, Unresolved
@@ -27,7 +28,7 @@ class SetupCall:
         self.sources: dict[str, Unresolved] = {}
         self.unresolved: list[tuple[str, Unresolved]] = []
         self.in_part: dict[str, list[Any]] = {}
-        self.commands: tuple[str, ...] | None = None
+        self.commands: Commands | None = None
 
 
 class Interpreter(ExpressionEvaluator):
@@ -90,7 +91,7 @@ class Interpreter(ExpressionEvaluator):
         for keyword in node.keywords:
             key = keyword.arg or "**"
             if key == "cmdclass":
-                call.commands = _command_names(keyword.value)
+                call.commands = command_classes(keyword.value)
             try:
                 value = self.eval(keyword.value, scope)
             except NotStatic as error:
@@ -135,16 +136,3 @@ def _inside(span: Span, node: ast.AST) -> bool:
     """True when ``span`` lies within ``node``'s source lines."""
     first = getattr(node, "lineno", 0)
     return first <= span.line <= (getattr(node, "end_lineno", None) or first)
-
-
-def _command_names(value: ast.expr) -> tuple[str, ...] | None:
-    """The commands a ``cmdclass`` written as a dict display replaces (``{'build_py':
-    BuildPy}``, ``dict(install=Install)``), None for any other expression."""
-    if isinstance(value, ast.Dict) and all(isinstance(k, ast.Constant) and
-                                           isinstance(k.value, str) for k in value.keys):
-        return tuple(k.value for k in value.keys)  # type: ignore[union-attr]
-    if isinstance(value, ast.Call) and isinstance(value.func, ast.Name) and \
-            value.func.id == "dict" and not value.args and \
-            all(k.arg is not None for k in value.keywords):
-        return tuple(str(k.arg) for k in value.keywords)
-    return None

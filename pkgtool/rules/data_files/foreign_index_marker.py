@@ -7,7 +7,7 @@ import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.installed import keyword_known
+from pkgtool.model.installed import installed_data, keyword_known
 from pkgtool.model.package import Package
 from pkgtool.rules.data_files.common import entries_to, source_names
 from pkgtool.rules.plain_projects import MARKER_FOLDER
@@ -24,7 +24,8 @@ def foreign_index_marker(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports each file data_files installs into `share/ament_index/resource_index/packages`
     other than the marker named like the package, when that marker is installed too (DAT003
-    reports a package installing none).
+    reports a package installing none), and data_files installs no share folder of that name
+    (a second name the package is registered under on purpose has one).
 
     ## Why is this bad?
     Every file of that folder registers a package of its name: `ros2 pkg list` shows a
@@ -52,8 +53,10 @@ def foreign_index_marker(package: Package) -> Iterator[Hit]:
                 for name in sorted(source_names(source))]
     if not any(posixpath.basename(name) == package.name for _, name in declared):
         return
+    shared = {target.split("/")[1] for target in installed_data(package) or ()
+              if target.startswith("share/") and target.count("/") > 1}
     for entry, name in declared:
-        if posixpath.basename(name) != package.name:
+        if posixpath.basename(name) not in (package.name, *shared):  # not an alias installed
             yield Hit(entry.span, f"`{name}` is installed into `{MARKER_FOLDER}`: ROS 2 now "
                                   f"knows a package `{posixpath.basename(name)}`, whose share "
                                   "folder does not exist")

@@ -162,11 +162,11 @@ def _is_home(node: ast.expr, index: Index, homes: frozenset[str]) -> bool:
     """True for ``os.getenv('HOME')``, ``os.environ['HOME']``, ``os.environ.get('HOME')``,
     ``os.path.expanduser('~')`` and ``Path.home()`` (also inside ``str()``), and a name of
     ``homes``."""
-    if isinstance(node, ast.Name):
-        return node.id in homes
     if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and \
             node.func.id == "str" and len(node.args) == 1:
         node = node.args[0]
+    if isinstance(node, ast.Name):
+        return node.id in homes
     if isinstance(node, ast.Subscript):
         key = node.slice
         return index.qualified(node.value) == "os.environ" and \

@@ -8,13 +8,18 @@ from itertools import groupby
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.description_files import package_mentions
-from pkgtool.model.installed import cmake_installed, installed_data, is_ament_python
+from pkgtool.lazy_regex import lazy_pattern
+from pkgtool.model.installed import cmake_installed, cmake_text, installed_data, is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.model.submodules import under
 from pkgtool.rules.imports import RUNTIME, declared
 from pkgtool.rules.package_lookups import unlisted_packages
 from pkgtool.rules.registry import rule
 from pkgtool.rules.ros1_platform import is_ros1_package
+
+
+_FILTERED = lazy_pattern(r"\b(?:FILES_MATCHING|PATTERN|REGEX)\b")
+"""Options of a CMake ``install(DIRECTORY ...)`` that leave some of the folder's files out."""
 
 
 @rule("DEP012", "undeclared-description-package", Severity.WARNING,
@@ -30,9 +35,13 @@ def undeclared_description_package(package: Package) -> Iterator[Hit]:
     an `<exec_depend>` or `<depend>`, or be brought in by a declared metapackage; a name that no
     package of the target's release nor of the packages linted with it has is said so, with
     the package it is a typo of, if any (a description exported or copied under another
-    package's name). XML comments name nothing; a workspace package that depends on this one
-    is left alone (declaring it would make a cycle); files the package does not install, and
-    packages whose installed files pkgtool cannot tell, are not read.
+    package's name). Comments name nothing (XML's, and `#` lines of RViz's YAML), nor xacro's
+    escaped `$$(find x)`. Packages of the workspace are left alone: a description naming its
+    bringup package's controller settings (`$(find robot_bringup)/config/controllers.yaml`)
+    is used by that package's launch files, which must declare the description, and
+    declaring both would make a cycle colcon cannot order. Files the package does not install,
+    and packages whose installed files pkgtool cannot tell (a CMake `install()` that filters
+    with `PATTERN`, `REGEX` or `FILES_MATCHING`), are not read.
 
     ## Why is this bad?
     The description is used on a machine set up with rosdep, which installs only what
@@ -57,7 +66,9 @@ def undeclared_description_package(package: Package) -> Iterator[Hit]:
     if not installed:
         return
     available = declared(package, RUNTIME)
-    mentions = [m for m in package_mentions(package) if m.span.path in installed]
+    workspace = package.context.workspace
+    mentions = [m for m in package_mentions(package) if m.span.path in installed and
+                (m.package == package.name or m.package not in workspace)]
     for path, named in groupby(mentions, key=lambda mention: mention.span.path):
         used = [(mention.package, mention.span) for mention in named]
         yield from unlisted_packages(package, used, available, f"the installed file `{path}`")
@@ -72,6 +83,6 @@ def _installed_description_files(package: Package) -> frozenset[str]:
     if is_ament_python(package):
         return frozenset(paths & set((installed_data(package) or {}).values()))
     sources = cmake_installed(package)
-    if sources is None:
+    if sources is None or _FILTERED.search(cmake_text(package) or ""):
         return frozenset()
     return frozenset(path for path in paths if "." in sources or under(path, sources))

@@ -7,8 +7,8 @@ import re
 from collections.abc import Callable, Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.rosdistro import (is_released_package, keys_for_import, modules_of_key,
-                                         stdlib_modules, typo_of)
+from pkgtool.knowledge.rosdistro import (digits_differ, is_released_package, keys_for_import,
+                                         modules_of_key, stdlib_modules, typo_of)
 from pkgtool.model.installed import installed_modules, why_not_installed
 from pkgtool.model.launch import python_folders
 from pkgtool.model.package import Package
@@ -128,6 +128,7 @@ def _misspelt_beside_custom_commands(package: Package) -> Iterator[Hit]:
     never a module named like a typo of a source file."""
     setup = checked_setup(package)
     if setup is None or "cmdclass" not in setup.keywords or setup.package_dir or \
+            "ext_modules" in (*setup.keywords, *dict(setup.unresolved)) or \
             installed_modules(package) is not None:
         return
     for entry in setup.entry_points or ():
@@ -135,14 +136,15 @@ def _misspelt_beside_custom_commands(package: Package) -> Iterator[Hit]:
             continue
         path = entry.module.replace(".", "/")
         folder, _, name = path.rpartition("/")
-        if package.has_file(f"{path}.py") or package.has_file(f"{path}/__init__.py") or \
-                not package.has_file(f"{folder}/__init__.py"):
+        if not package.has_file(f"{folder}/__init__.py") or \
+                package.has_file(f"{path}/__init__.py") or \
+                any(f.startswith(f"{path}.") for f in package.files):  # .py, .pyx, .c
             continue
         beside = {f[len(folder) + 1:-3] for f in package.files
                   if f.startswith(f"{folder}/") and f.endswith(".py") and
                   "/" not in f[len(folder) + 1:]}
         meant = typo_of(name, beside)
-        if meant is not None:
+        if meant is not None and not digits_differ(name, meant):
             fixed = f"{entry.module.rpartition('.')[0]}.{meant}"
             yield Hit(entry.span, f"`{entry.module}` is no module of the package: `{folder}/` "
                                   f"holds no `{name}.py` (did you mean `{meant}`?)",

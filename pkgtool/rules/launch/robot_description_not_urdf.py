@@ -19,7 +19,9 @@ _NODES = frozenset({"Node", "LifecycleNode"})
 _READERS = frozenset({"robot_state_publisher", "moveit_ros_move_group", "controller_manager"})
 """Packages whose nodes parse ``robot_description`` as URDF text (webots_ros2_driver's takes
 a path, as its documentation says)."""
-_KEYS = frozenset({"robot_description", "robot_description_semantic"})
+_TEXTS = {"robot_description": "URDF", "robot_description_semantic": "SRDF"}
+"""The parameters holding a robot's model, by the kind of text each is."""
+_SDF_FIX = "Give the URDF's text: these nodes do not read SDF"
 _MODELS = (".urdf", ".xacro", ".sdf", ".srdf")
 _PATHS = frozenset({"PathJoinSubstitution", "join", "Path", "PurePath", "joinpath"})
 """Calls building a path (``os.path.join``, ``pathlib.Path``)."""
@@ -36,11 +38,13 @@ def robot_description_not_urdf(package: Package) -> Iterator[Hit]:
     In Python launch files, checks the `robot_description` and `robot_description_semantic`
     values of the `parameters=` dicts of nodes of `robot_state_publisher`,
     `moveit_ros_move_group` and `controller_manager` (literal `package=`): reports a path
-    to a `.urdf`, `.xacro`, `.sdf` or `.srdf` file (a string literal, `os.path.join(...)`,
-    `PathJoinSubstitution([...])` or `Path(...)` whose last part is such a file name, also
-    through a name bound once, or inside `ParameterValue(...)`), and the text of a `.xacro`
-    file read as it is (`open(path).read()`, `Path(path).read_text()`). `Command(['xacro ',
-    path])` and `xacro.process_file(path).toxml()` are what these nodes want.
+    to a `.urdf`, `.xacro`, `.sdf` or `.srdf` file (a string literal, `share + '/x.urdf'`,
+    `share / 'x.urdf'`, an f-string, `os.path.join(...)`, `PathJoinSubstitution([...])` or
+    `Path(...)` whose last part is such a file name, also through a name bound once, or
+    inside `ParameterValue(...)`; the dict given in place or by a name bound once), and the
+    text of a `.xacro` file read as it is (`open(path).read()`, `f.read()` of `with
+    open(path) as f`, `Path(path).read_text()`). `Command(['xacro ', path])` and
+    `xacro.process_file(path).toxml()` are what these nodes want.
 
     ## Why is this bad?
     The value is the robot's URDF, not where to find it: robot_state_publisher fails to
@@ -67,27 +71,39 @@ def robot_description_not_urdf(package: Package) -> Iterator[Hit]:
                  text_argument(call, "package") in _READERS]
         if not nodes:
             continue
-        at_top = single_assignments(index.module_of(nodes[0]))
+        module = index.module_of(nodes[0])
+        at_top = {**_opened_as(module), **single_assignments(module)}
         for call in nodes:
             function = index.enclosing_function(call)
-            names = {**at_top, **(single_assignments(function) if function else {})}
-            for key, value in _description_values(call):
+            names = {**at_top, **(_opened_as(function) if function else {}),
+                     **(single_assignments(function) if function else {})}
+            for key, value in _description_values(call, names):
                 what = _what(value, names)
                 if what is not None:
                     yield Hit(Span(path, value.lineno, value.col_offset + 1),
                               f"`{key}` is given {what} (`{shortened(ast.unparse(value))}`), "
                               f"but `{text_argument(call, 'package')}` parses the value as "
-                              "URDF text: the node fails to load the robot model")
+                              f"{_TEXTS[key]} text: the node fails to load the robot model",
+                              _SDF_FIX if what.endswith(".sdf`") else None)
 
 
-def _description_values(call: ast.Call) -> Iterator[tuple[str, ast.expr]]:
+def _opened_as(where: ast.AST) -> dict[str, ast.expr]:
+    """The names ``with open(path) as f:`` binds in ``where``, with what they are bound to."""
+    return {item.optional_vars.id: item.context_expr for node in ast.walk(where)
+            if isinstance(node, (ast.With, ast.AsyncWith)) for item in node.items
+            if isinstance(item.optional_vars, ast.Name)}
+
+
+def _description_values(call: ast.Call, names: dict[str, ast.expr]
+                        ) -> Iterator[tuple[str, ast.expr]]:
     """(key, value) of the ``robot_description`` entries of the node's ``parameters=``
-    dicts."""
+    dicts (written there, or bound once to a name given there)."""
     given = next((k.value for k in call.keywords if k.arg == "parameters"), None)
     for item in given.elts if isinstance(given, (ast.List, ast.Tuple)) else ():
+        item = _resolved(item, names)
         if isinstance(item, ast.Dict):
             for key, value in zip(item.keys, item.values):
-                if isinstance(key, ast.Constant) and key.value in _KEYS:
+                if isinstance(key, ast.Constant) and key.value in _TEXTS:
                     yield key.value, value
 
 
@@ -116,17 +132,27 @@ def _resolved(value: ast.expr, names: dict[str, ast.expr]) -> ast.expr:
     return names.get(value.id, value) if isinstance(value, ast.Name) else value
 
 
-def _model_file(value: ast.expr, names: dict[str, ast.expr]) -> str | None:
-    """The robot model file name a path expression ends in (``robot.urdf.xacro``), or None."""
+def _model_file(value: ast.expr, names: dict[str, ast.expr], depth: int = 0) -> str | None:
+    """The robot model file name a path expression ends in (``robot.urdf.xacro``: a text,
+    ``share / 'x.urdf'``, ``share + '/x.urdf'``, ``f'{share}/x.urdf'`` or a joining call),
+    or None."""
     value = _resolved(value, names)
+    if depth > _DEPTH:
+        return None  # names bound to each other
     if isinstance(value, ast.Constant) and isinstance(value.value, str):
         last = value.value.rstrip("/").rpartition("/")[2]
         return last if last.endswith(_MODELS) and "\n" not in value.value else None
-    if isinstance(value, ast.BinOp) and isinstance(value.op, ast.Div):
-        return _model_file(value.right, names)
+    if isinstance(value, ast.BinOp) and isinstance(value.op, (ast.Div, ast.Add)):
+        return _model_file(value.right, names, depth + 1)
+    if isinstance(value, ast.JoinedStr) and value.values:
+        return _model_file(value.values[-1], names, depth + 1)
     if isinstance(value, ast.Call) and last_name(value.func) in _PATHS:
         parts = value.args
         if len(parts) == 1 and isinstance(parts[0], (ast.List, ast.Tuple)):
             parts = parts[0].elts  # PathJoinSubstitution([...])
-        return _model_file(parts[-1], names) if parts else None
+        return _model_file(parts[-1], names, depth + 1) if parts else None
     return None
+
+
+_DEPTH = 20
+"""How many names and parts a path is followed through."""

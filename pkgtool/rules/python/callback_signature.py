@@ -10,7 +10,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.rules.python._callbacks import Argument, callback_arguments
-from pkgtool.rules.syntax_trees import installed_trees, overridden
+from pkgtool.rules.syntax_trees import Index, installed_trees, overridden
 from pkgtool.rules.python._message_instances import callback_function
 from pkgtool.rules.registry import rule
 
@@ -39,12 +39,14 @@ def _accepts(arguments: ast.arguments, skip: int, count: int) -> bool:
         count <= len(positional) or arguments.vararg is not None)
 
 
-def _timer_info(arguments: ast.arguments) -> bool:
+def _timer_info(arguments: ast.arguments, index: Index) -> bool:
     """True when a parameter is annotated ``TimerInfo`` (newer rclpy fills one so annotated
-    with the timer's call times; another annotation changes nothing)."""
+    with the timer's call times; another annotation changes nothing): the name as written, or
+    imported under another (``TimerInfo as Info``); a string annotation too, on the safe side."""
     every = (*arguments.posonlyargs, *arguments.args, *arguments.kwonlyargs)
-    return any(a.annotation is not None and "TimerInfo" in ast.unparse(a.annotation)
-               for a in every)
+    return any(a.annotation is not None and (
+        "TimerInfo" in ast.unparse(a.annotation) or
+        (index.qualified(a.annotation) or "").endswith(".TimerInfo")) for a in every)
 
 
 @rule("PYC024", "callback-signature-mismatch", Severity.ERROR,
@@ -99,7 +101,7 @@ def callback_signature_mismatch(package: Package) -> Iterator[Hit]:
                 value, 0)
         else:
             found = callback_function(value, tree, index)
-        if passed is None or found is None or _timer_info(found[0].args) or \
+        if passed is None or found is None or _timer_info(found[0].args, index) or \
                 overridden(package, found[0], index):
             continue  # (last: a subclass's method may be the one that runs)
         counts, what = passed

@@ -128,25 +128,21 @@ def _path(node: ast.AST) -> str | None:
 
 
 def _states(going_on: list[ast.ExceptHandler], rest: list[ast.stmt]) -> set[str]:
-    """What the handlers that go on set (``have_torch = False``, ``self.have_torch =
-    False``), and the names and attributes the statements after the ``try`` then assign from
-    one of those (``self.use_gpu = self.device == 'cuda' and self.have_torch``): a test of
-    one tells the handler's way from the ``try`` body's."""
-    states = {found for handler in going_on for statement in handler.body
-              for target in _assigned(statement)
-              for part in (target.elts if isinstance(target, (ast.Tuple, ast.List)) else
-                           [target]) if (found := _path(part)) is not None}
+    """What the handlers that go on set: the names they bind, and the attributes they set to
+    a constant (``self.have_torch = False``; not a counter, ``self.errors += 1``); and the
+    names and attributes the statements after the ``try`` then assign from one of those
+    (``self.use_gpu = self.device == 'cuda' and self.have_torch``): a test of one tells the
+    handler's way from the ``try`` body's."""
+    statements = [statement for handler in going_on for statement in handler.body]
+    states = set(bound_names(statements)) | {
+        found for statement in statements if isinstance(statement, ast.Assign) and
+        isinstance(statement.value, ast.Constant) for target in statement.targets
+        if isinstance(target, ast.Attribute) and (found := _path(target)) is not None}
     for statement in rest:
         if isinstance(statement, ast.Assign) and states & _read_names(statement.value):
             states.update(found for target in statement.targets
                           if (found := _path(target)) is not None)
     return states
-
-
-def _assigned(statement: ast.stmt) -> list[ast.expr]:
-    """The targets an assignment statement binds or stores."""
-    return statement.targets if isinstance(statement, ast.Assign) else \
-        [statement.target] if isinstance(statement, (ast.AnnAssign, ast.AugAssign)) else []
 
 
 def _negated_flag(test: ast.expr) -> str | None:

@@ -91,9 +91,9 @@ def undefined_name(package: Package) -> Iterator[Hit]:
         seen: set[tuple[int, str]] = set()
         notes = _unevaluated_annotations(tree, lazy=lazy)
         stored = _stored_in_globals(tree)
-        notebook = _NOTEBOOK_AWARE.search(package.texts.get(path, "")) is not None
         for line, column, name in _pyflakes_undefined(path, tree):
-            if stored is None or name in stored or notebook and name in _NOTEBOOK_NAMES or \
+            if stored is None or name in stored or \
+                    name in _NOTEBOOK_NAMES and _knows_notebooks(tree) or \
                     any(start <= (line, column) <= end for start, end in notes) or \
                     _bound_at_run_time(tree, line, column, name):
                 continue
@@ -105,8 +105,25 @@ def undefined_name(package: Package) -> Iterator[Hit]:
 _NOTEBOOK_NAMES = frozenset({"display", "get_ipython", "__IPYTHON__"})
 """Names IPython puts into ``builtins`` in a notebook or an IPython shell."""
 _NOTEBOOK_AWARE = lazy_pattern(r"(?i)ipython|colab|kaggle|jupyter|ipykernel")
-"""What a module that knows when it runs in a notebook names (``IS_COLAB``, ``'IPython' in
-sys.modules``): it uses :data:`_NOTEBOOK_NAMES` only there."""
+"""What a module that knows when it runs in a notebook names in its code (``IS_COLAB``,
+``'IPython' in sys.modules``, ``import google.colab``): it uses :data:`_NOTEBOOK_NAMES`
+only there."""
+
+
+def _knows_notebooks(tree: ast.Module) -> bool:
+    """True when the module's code (not its comments or docstrings) names a notebook."""
+    parents = walk_once(tree).parents
+    for node in nodes_of(tree):
+        text = node.id if isinstance(node, ast.Name) else node.attr \
+            if isinstance(node, ast.Attribute) else node.name if isinstance(node, ast.alias) \
+            else node.value if isinstance(node, ast.Constant) and \
+            isinstance(node.value, str) and not isinstance(parents.get(id(node)), ast.Expr) \
+            else None
+        if text and _NOTEBOOK_AWARE.search(text):
+            return True
+    return False
+
+
 LAZY_ANNOTATIONS = (3, 14)
 """The first Python that evaluates annotations only when they are read (PEP 649)."""
 _DEFERRING = frozenset({"add_done_callback", "create_timer", "create_wall_timer",

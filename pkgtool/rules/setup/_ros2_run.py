@@ -62,12 +62,13 @@ _SCRIPT_COMMANDS = frozenset({"install", "develop", "install_scripts", "easy_ins
 
 def scripts_in_bin(package: Package) -> bool:
     """Console scripts install to `bin/`: no setup.cfg, or one without `[install]
-    install_scripts` (and its near misses), and no ``cmdclass`` that may move them."""
+    install_scripts` (and its near misses), and no ``cmdclass`` replacing a command that
+    may move them (one ``cmdclass`` not written as a dict, versioneer's, replaces none of
+    them)."""
     setup, cfg = package.setup_py, package.setup_cfg
     if setup is None or not setup.console_scripts:
         return False
-    if "cmdclass" in (*setup.keywords, *dict(setup.unresolved)) and (
-            setup.commands is None or set(setup.commands) & _SCRIPT_COMMANDS):
+    if set(setup.commands or ()) & _SCRIPT_COMMANDS:
         return False
     return cfg is None or not any(o.section == "install" and
                                   o.key.replace("-", "_") == "install_scripts"
