@@ -1,6 +1,7 @@
 """Branches of a module that never run on the target Python, decided without running anything.
 
-A test is decided only when it is certain for every Python 3: ``sys.version_info`` (or its
+A test is decided only when it is certain for every Python 3: ``sys.version_info`` (or
+``version_info`` imported from ``sys``, also as SWIG's ``_swig_python_version_info``; or its
 ``[0]``/``.major``) compared with constants, ``six.PY2``/``PY2``/``PY3``, literal constants,
 a module-level name assigned once to a constant and never again (in a function, also a name
 its own body assigns once to a constant that nothing else in the file binds), and
@@ -34,6 +35,8 @@ _COMPARE = {ast.Lt: operator.lt, ast.LtE: operator.le, ast.Gt: operator.gt,
             ast.GtE: operator.ge, ast.Eq: operator.eq, ast.NotEq: operator.ne}
 _PYTHON3 = ((3, 0, 0, "alpha", 0), (3, 99, 99, "final", 0))
 """Two versions that bound every Python 3 a test is asked about."""
+_VERSION_NAMES = frozenset({"version_info", "_swig_python_version_info"})
+"""The names ``from sys import version_info`` binds, as is and in SWIG's wrappers."""
 MODULE_DUNDERS = frozenset({"__name__", "__package__", "__spec__"})
 
 
@@ -120,7 +123,8 @@ def _version_side(node: ast.expr) -> Callable[[tuple], object] | None:
     (``[0]``, ``.major``) or a prefix (``[:2]``); None for anything else."""
     def is_version_info(n: ast.expr) -> bool:
         return isinstance(n, ast.Attribute) and n.attr == "version_info" and \
-            isinstance(n.value, ast.Name) and n.value.id == "sys"
+            isinstance(n.value, ast.Name) and n.value.id == "sys" or \
+            isinstance(n, ast.Name) and n.id in _VERSION_NAMES
 
     if is_version_info(node):
         return lambda version: version

@@ -98,6 +98,7 @@ RULES = {
                "launch.substitution_tested_in_python"),
     "LCH024": ("unused-launch-argument", "warning", True, "launch.unused_launch_argument"),
     "LCH025": ("robot-description-not-urdf", "error", True, "launch.robot_description_not_urdf"),
+    "LCH026": ("launch-class-subscripted", "error", True, "launch.launch_class_subscripted"),
     "MAN001": ("invalid-package-name", "error", True, "manifest.invalid_package_name"),
     "MAN002": ("invalid-version", "error", True, "manifest.invalid_version"),
     "MAN003": ("missing-required-element", "error", True, "manifest.missing_required_element"),

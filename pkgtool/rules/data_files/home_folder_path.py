@@ -52,8 +52,9 @@ def home_folder_path(package: Package) -> Iterator[Hit]:
     settings such as `.travis.yml` name the CI machine's home). In Python, also a
     path built from the home folder into a colcon workspace's `src` or `install` folder
     (`'~/ros2_ws/src/...'`, `os.path.join(os.getenv('HOME'), 'ws', 'src', ...)`,
-    `f"{os.environ['HOME']}/ros2_ws/install/..."`; the home folder also through a name bound
-    once to it, `HOME = os.path.expanduser('~')`). Tests and test data are left alone.
+    `f"{os.environ['HOME']}/ros2_ws/install/..."`, `Path.home() / 'ros2_ws/src/...'`; the
+    home folder also through a name bound once to it, `HOME = os.path.expanduser('~')`).
+    Tests and test data are left alone.
 
     ## Why is this bad?
     The path exists on the author's machine only: on a teammate's, a grader's, the robot's
@@ -128,7 +129,9 @@ def _workspace_paths(path: str, tree: ast.Module, index: Index) -> Iterator[Hit]
     parents = walk_once(tree).parents
     homes = frozenset(name for name, value in single_assignments(tree).items()
                       if _is_home(value, index, frozenset()))
-    for node in nodes_of_class(tree, ast.Constant, ast.Call, ast.JoinedStr):
+    for node in nodes_of_class(tree, ast.Constant, ast.Call, ast.JoinedStr, ast.BinOp):
+        if isinstance(node, ast.BinOp) and _is_path_part(parents.get(id(node))):
+            continue  # the outermost `/` of `Path.home() / 'ws' / 'src'` tells the whole path
         rest = _after_home(node, index, homes)
         if rest is not None and _WORKSPACE.match(rest) and \
                 not _docstring(node, parents) and not _message(node, parents):
@@ -150,12 +153,23 @@ def _after_home(node: ast.AST, index: Index, homes: frozenset[str]) -> str | Non
             node.args and _is_home(node.args[0], index, homes) and \
             all(isinstance(a, ast.Constant) and isinstance(a.value, str) for a in node.args[1:]):
         return "/".join(a.value.strip("/") for a in node.args[1:])  # type: ignore[attr-defined]
+    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Div) and \
+            isinstance(node.right, ast.Constant) and isinstance(node.right.value, str):
+        before = "" if _is_home(node.left, index, homes) else \
+            _after_home(node.left, index, homes) if isinstance(node.left, ast.BinOp) else None
+        return None if before is None else \
+            f"{before}/{node.right.value.strip('/')}".lstrip("/")
     if isinstance(node, ast.JoinedStr) and len(node.values) >= 2 and \
             isinstance(node.values[0], ast.FormattedValue) and \
             _is_home(node.values[0].value, index, homes) and \
             isinstance(node.values[1], ast.Constant) and isinstance(node.values[1].value, str):
         return node.values[1].value.lstrip("/")
     return None
+
+
+def _is_path_part(parent: ast.AST | None) -> bool:
+    """True for the parent of a path that a longer path extends (``<path> / 'x'``)."""
+    return isinstance(parent, ast.BinOp) and isinstance(parent.op, ast.Div)
 
 
 def _is_home(node: ast.expr, index: Index, homes: frozenset[str]) -> bool:

@@ -73,6 +73,27 @@ def _again(function: ast.AST, index: Index, initialising: dict[str, ast.Call]
             yield first, call, initialising[call.func.id]
 
 
+def _module_level_calls(tree: ast.Module) -> frozenset[str]:
+    """The names the module's top-level statements (not its functions or classes) call."""
+    return frozenset(node.func.id for statement in tree.body
+                     if not isinstance(statement, (*FUNCTIONS, ast.ClassDef))
+                     for node in ast.walk(statement)
+                     if isinstance(node, ast.Call) and isinstance(node.func, ast.Name))
+
+
+def _under_main_test(call: ast.Call, function: ast.AST, index: Index) -> bool:
+    """True for a call under an ``if`` of ``function`` testing ``__name__``: run as a console
+    script, the module's ``__name__`` is its import name, and run as a file nothing at its top
+    level calls ``function``."""
+    parent = index.parents.get(id(call))
+    while parent is not None and parent is not function:
+        if isinstance(parent, ast.If) and any(isinstance(n, ast.Name) and n.id == "__name__"
+                                              for n in ast.walk(parent.test)):
+            return True
+        parent = index.parents.get(id(parent))
+    return False
+
+
 @rule("PYC039", "rclpy-initialised-twice", Severity.ERROR,
       fix="Call `rclpy.init()` once, in `main()`, before creating nodes; not in the node class")
 def rclpy_initialised_twice(package: Package) -> Iterator[Hit]:
@@ -84,7 +105,9 @@ def rclpy_initialised_twice(package: Package) -> Iterator[Hit]:
     reports a later certain `rclpy.init()` in it, or a later call of a function or class of
     the module whose body (whose `__init__` for a class) certainly calls it, with no
     `rclpy.shutdown()` or `try_shutdown()` in between. Calls given `context=` are not
-    judged, nor inits under an `if` (`if not rclpy.ok(): rclpy.init()`).
+    judged, nor inits under an `if` (`if not rclpy.ok(): rclpy.init()`), nor a call under a
+    test of `__name__` inside the function when nothing at the module's top level calls the
+    function (`if __name__ == '__main__': main()` indented into `main()`: dead code).
 
     ## Why is this bad?
     The default context can be initialised once: the second call raises `RuntimeError:
@@ -120,8 +143,11 @@ def rclpy_initialised_twice(package: Package) -> Iterator[Hit]:
         if not any(i.top_level == "rclpy" for i in module.imports):
             continue
         initialising = _initialising(tree, index)
+        top_calls = _module_level_calls(tree)
         for function in (s for s in tree.body if isinstance(s, FUNCTIONS)):
             for first, call, again in _again(function, index, initialising):
+                if function.name not in top_calls and _under_main_test(call, function, index):
+                    continue  # `if __name__ == '__main__': main()` indented into main()
                 how = "is called again" if call is again else \
                     f"runs again when `{function.name}()` calls `{ast.unparse(call.func)}()` " \
                     f"(line {call.lineno})"

@@ -1,0 +1,75 @@
+"""LCH026: a class of launch or launch_ros indexed with ``[...]`` where it is meant to be
+called."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity, shortened
+from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import Index, launch_trees
+
+_MODULES = ("launch.", "launch_ros.")
+"""Where the classes come from (``launch.substitutions.PathJoinSubstitution``)."""
+
+
+@rule("LCH026", "launch-class-subscripted", Severity.ERROR,
+      fix="Call the class: `PathJoinSubstitution([...])`, not `PathJoinSubstitution[...]`")
+def launch_class_subscripted(package: Package) -> Iterator[Hit]:
+    """A Python launch file indexes a class of launch or launch_ros instead of calling it.
+
+    ## What it does
+    Reports `Name[...]` in Python launch files where `Name` is a class imported from
+    `launch` or `launch_ros` (a capitalised name of their modules:
+    `PathJoinSubstitution[share, 'file.yaml']`, `Node[...]`), outside annotations.
+
+    ## Why is this bad?
+    These classes are no generic types: indexing one raises `TypeError: type
+    'PathJoinSubstitution' is not subscriptable` while `generate_launch_description()` runs,
+    and `ros2 launch` starts nothing. The brackets were meant to be the list the class is
+    called with.
+
+    ## Example
+    ```python
+    config = PathJoinSubstitution[FindPackageShare('demo'), 'config', 'params.yaml']
+    ```
+
+    ## Use instead
+    ```python
+    config = PathJoinSubstitution([FindPackageShare('demo'), 'config', 'params.yaml'])
+    ```
+    """
+    for path, tree, index in launch_trees(package):
+        if not any(target.startswith(_MODULES) for target in index.aliases.values()):
+            continue
+        for node in nodes_of_class(tree, ast.Subscript):
+            assert isinstance(node, ast.Subscript)
+            qualified = index.qualified(node.value) if isinstance(
+                node.value, (ast.Name, ast.Attribute)) else None
+            if qualified is None or not qualified.startswith(_MODULES) or \
+                    not qualified.rpartition(".")[2][:1].isupper() or \
+                    index.in_unevaluated_annotation(node) or _annotation(node, index):
+                continue
+            yield Hit(Span(path, node.lineno, node.col_offset + 1),
+                      f"`{shortened(ast.unparse(node))}` indexes the class "
+                      f"`{qualified.rpartition('.')[2]}` of `{qualified.rpartition('.')[0]}`: "
+                      "it is no generic type, and the launch fails with TypeError (not "
+                      "subscriptable)",
+                      f"Call it: `{ast.unparse(node.value)}([...])`")
+
+
+def _annotation(node: ast.AST, index: Index) -> bool:
+    """True for a part of a function's or an assignment's annotation."""
+    child, parent = node, index.parents.get(id(node))
+    while parent is not None:
+        if isinstance(parent, ast.arg) and parent.annotation is child or \
+                isinstance(parent, ast.AnnAssign) and parent.annotation is child or \
+                isinstance(parent, (ast.FunctionDef, ast.AsyncFunctionDef)) and \
+                parent.returns is child:
+            return True
+        child, parent = parent, index.parents.get(id(parent))
+    return False
