@@ -3,12 +3,15 @@ folder of) that package.xml does not declare, or that no package has as its name
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable, Iterator, Mapping
 
 from pkgtool.findings import Hit
 from pkgtool.knowledge.rosdistro import (close_names, digits_differ, is_released_package,
                                          key_resolves)
+from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.manifest import Dependency
+from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.imports import (ANY, declaration, declared, dependency_cause,
@@ -24,7 +27,7 @@ def unlisted_packages(package: Package, used: Iterable[tuple[str, Span]],
     seen: set[str] = set()
     for name, span in sorted(used, key=lambda u: (u[1].line, u[1].col)):
         if name == package.name or name in available or name in seen or \
-                depends_on(package, name):
+                depends_on(package, name) or name in commented_out(package):
             continue
         seen.add(name)
         other = declared(package, ANY).get(name)
@@ -48,6 +51,20 @@ def unlisted_packages(package: Package, used: Iterable[tuple[str, Span]],
                 "a workspace it is built in provides it"
         yield Hit(span, f"`{name}` is used by {user} but {missing}", fix,
                   cause="" if other else dependency_cause(name), consequence=True)
+
+
+_COMMENT = lazy_pattern(r"<!--(.*?)-->", re.DOTALL)
+_DEPENDENCY = lazy_pattern(r"<(?:\w+_)?depend(?:\s[^>]*)?>\s*([^<\s]+)\s*</")
+
+
+@per_package
+def commented_out(package: Package) -> frozenset[str]:
+    """The packages package.xml declares inside a comment (``<!-- <exec_depend>x</exec_depend>
+    -->``): left out on purpose (MoveIt's resources leave out what would make a cycle for the
+    build farm); the lint leaves their use alone."""
+    text = package.texts.get("package.xml", "")
+    return frozenset(name for comment in _COMMENT.findall(text) if "depend" in comment
+                     for name in _DEPENDENCY.findall(comment))
 
 
 def depends_on(package: Package, name: str) -> bool:
