@@ -45,7 +45,8 @@ DIST_MODULES: dict[str, tuple[str, ...]] = {
     "ruamel-yaml": ("ruamel",), "pytest": ("pytest", "_pytest", "py"),
     "setuptools": ("setuptools", "pkg_resources", "_distutils_hack"),
     "pkg-resources": ("pkg_resources",), "libgpiod": ("gpiod",), "tz": ("pytz",),
-    "pykdl": ("PyKDL",), "python-orocos-kdl": ("PyKDL",),
+    "pykdl": ("PyKDL",), "python-orocos-kdl": ("PyKDL",), "faiss-cpu": ("faiss",),
+    "hydra-core": ("hydra",), "python-docx": ("docx",), "py-multicast": ("multicast",),
     "tk": ("tkinter", "turtle", "turtledemo", "idlelib"), "venv": ("ensurepip",),
     "protobuf": ("google.protobuf",), "pycryptodome": ("Crypto",),
     "pycryptodomex": ("Cryptodome",),
@@ -113,9 +114,11 @@ def _names(definition: object, os_name: str | None = None) -> Iterator[tuple[str
     """(kind, name) pairs of a definition: ``pip`` names and (os, package) names elsewhere."""
     if isinstance(definition, dict):
         for key, value in definition.items():
-            if key == "pip" and isinstance(value, dict):
-                yield from (("pip", str(n)) for n in value.get("packages") or [])
-            elif key != "pip":
+            if key == "pip":  # `pip: {packages: [...]}`, or the short `pip: [...]`
+                names = value.get("packages") or [] if isinstance(value, dict) else \
+                    [value] if isinstance(value, str) else value or []
+                yield from (("pip", str(n)) for n in names)
+            else:
                 yield from _names(value, os_name or str(key))
     elif isinstance(definition, list):
         yield from ((os_name or "", str(n)) for n in definition)
