@@ -20,6 +20,7 @@ from pkgtool.rules.interface_types import interfaces_for
 from pkgtool.rules.launch._python_launch import launch_tests
 from pkgtool.rules.dependencies.sibling_import import installed_name
 from pkgtool.rules.dependencies.unknown_interface_import import written_import
+from pkgtool.rules.package_lookups import commented_out
 from pkgtool.rules.imports import (BUILD_ONLY, Need, declared, is_test_launch, needs,
                                    test_code, unmet_runtime_needs)
 from pkgtool.lazy_regex import lazy_pattern
@@ -48,9 +49,12 @@ def _resolves(package: Package, name: str) -> bool:
     """True for a released package or rosdep key of the target distribution, or a workspace
     package with a package.xml: an unknown name may be misspelled or live elsewhere, and
     declaring it would only turn the finding into MAN021/MAN022; a Python project without
-    package.xml is a name rosdep cannot resolve (the user chooses)."""
+    package.xml is a name rosdep cannot resolve (the user chooses); a name package.xml has in
+    a comment may be left out on purpose (the user chooses)."""
     context = package.context
     owner = context.workspace.get(name)
+    if name in commented_out(package):
+        return False  # left out in a comment: maybe on purpose (a cycle), the user decides
     return owner.manifest if owner is not None else is_known_dependency(name, context.distro)
 
 

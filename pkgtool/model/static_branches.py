@@ -1,7 +1,7 @@
 """Branches of a module that never run on the target Python, decided without running anything.
 
 A test is decided only when it is certain for every Python 3: ``sys.version_info`` (or
-``version_info`` imported from ``sys``, also as SWIG's ``_swig_python_version_info``; or its
+SWIG's ``_swig_python_version_info``, which its wrappers import it as; or its
 ``[0]``/``.major``) compared with constants, ``six.PY2``/``PY2``/``PY3``, literal constants,
 a module-level name assigned once to a constant and never again (in a function, also a name
 its own body assigns once to a constant that nothing else in the file binds), and
@@ -35,8 +35,9 @@ _COMPARE = {ast.Lt: operator.lt, ast.LtE: operator.le, ast.Gt: operator.gt,
             ast.GtE: operator.ge, ast.Eq: operator.eq, ast.NotEq: operator.ne}
 _PYTHON3 = ((3, 0, 0, "alpha", 0), (3, 99, 99, "final", 0))
 """Two versions that bound every Python 3 a test is asked about."""
-_VERSION_NAMES = frozenset({"version_info", "_swig_python_version_info"})
-"""The names ``from sys import version_info`` binds, as is and in SWIG's wrappers."""
+_VERSION_NAMES = frozenset({"_swig_python_version_info"})
+"""The name SWIG's wrappers import ``sys.version_info`` as (a plain ``version_info`` may be
+anything: it is not followed to its import)."""
 MODULE_DUNDERS = frozenset({"__name__", "__package__", "__spec__"})
 
 

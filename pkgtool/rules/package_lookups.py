@@ -27,14 +27,18 @@ def unlisted_packages(package: Package, used: Iterable[tuple[str, Span]],
     seen: set[str] = set()
     for name, span in sorted(used, key=lambda u: (u[1].line, u[1].col)):
         if name == package.name or name in available or name in seen or \
-                depends_on(package, name) or name in commented_out(package):
+                depends_on(package, name):
             continue
         seen.add(name)
         other = declared(package, ANY).get(name)
         missing = (f"declared only as {declaration(name, other)}" if other else
                    "not declared in package.xml")
         fix = f"Add `<{tag}>{name}</{tag}>` to package.xml"
-        if not other and name in package.submodules:
+        if not other and name in commented_out(package):
+            missing += "; package.xml has it only inside a comment"
+            fix = "Declare it, unless it was left out on purpose (a dependency cycle): then " \
+                "make its use optional"
+        elif not other and name in package.submodules:
             missing += (f"; it is probably the package of the git submodule `{name}`, which is "
                         "not checked out here")
         elif not other and not _known(package, name):
@@ -60,8 +64,9 @@ _DEPENDENCY = lazy_pattern(r"<(?:\w+_)?depend(?:\s[^>]*)?>\s*([^<\s]+)\s*</")
 @per_package
 def commented_out(package: Package) -> frozenset[str]:
     """The packages package.xml declares inside a comment (``<!-- <exec_depend>x</exec_depend>
-    -->``): left out on purpose (MoveIt's resources leave out what would make a cycle for the
-    build farm); the lint leaves their use alone."""
+    -->``): maybe left out on purpose (MoveIt's resources leave out what would make a cycle
+    for the build farm), maybe replaced by another (``gazebo_ros`` by ``ros_gz_sim``) or
+    forgotten: their use is still reported, with no fix."""
     text = package.texts.get("package.xml", "")
     return frozenset(name for comment in _COMMENT.findall(text) if "depend" in comment
                      for name in _DEPENDENCY.findall(comment))

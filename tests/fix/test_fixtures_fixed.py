@@ -74,6 +74,7 @@ with): no fix
 guesses, the user chooses; the other findings
 of the case are fixed."""
 MANUAL = {("PYC078", "habits_of_other_languages"),
+          ("LCH002", "dependency_left_out_in_a_comment"),
           ("ENT002", "module_never_written_beside_an_install_command"),
           ("ENT002", "misspelt_module_beside_custom_commands"),
           ("MAN015", "catkin_package_without_cmakelists"), ("PYC079", "unknown_keywords"),

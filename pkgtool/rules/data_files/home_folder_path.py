@@ -13,7 +13,6 @@ from pkgtool.model.package import Package, is_test_material
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import single_assignments
-from pkgtool.rules.existence_checks import checks_files
 from pkgtool.rules.syntax_trees import Index, index_of, installed_trees, python_files
 from pkgtool.lazy_regex import lazy_pattern
 
@@ -44,9 +43,9 @@ def home_folder_path(package: Package) -> Iterator[Hit]:
     `/Users/alice/...`, and root's into a workspace's `src` or `install` folder:
     `/root/ros2_ws/src/...`): string literals of installed modules and Python launch files (not
     docstrings, nor messages given to `print`, a logger, `argparse` or a launch argument's
-    `description`; not in a file that
-    asks whether paths exist, `os.path.exists()` and the like, as code that falls back when a
-    machine lacks the file does), and values in XML and YAML launch files and in the YAML
+    `description`; not a path the file asks exists, given to `os.path.exists()` and the like
+    or bound to a name such a check is built from, as code that falls back when a machine
+    lacks the file does), and values in XML and YAML launch files and in the YAML
     and XML files the package installs (not comments; in a package whose installed files
     are not known, those outside `doc`, `docs` and `example` folders and hidden ones: CI
     settings such as `.travis.yml` name the CI machine's home). In Python, also a
@@ -75,9 +74,12 @@ def home_folder_path(package: Package) -> Iterator[Hit]:
     checked = {module.path for module, _, _ in installed_trees(package)} | \
         {f.path for f in package.launch_files if f.kind == "python"}
     for path, _, tree in python_files(package, (*_HINTS, *_HOME_HINTS)):
-        if path in checked and not checks_files(index_of(tree), EXISTENCE_CHECKS):
-            yield from _python_paths(path, tree)
-            yield from _workspace_paths(path, tree, index_of(tree))
+        if path in checked:
+            index = index_of(tree)
+            tested = _tested(tree, index)
+            for hit, node in (*_python_paths(path, tree), *_workspace_paths(path, tree, index)):
+                if not tested(node):
+                    yield hit
     shipped = _shipped(package)
     for path, text in sorted(package.texts.items()):
         if path.endswith(_DATA_SUFFIXES) and path != "package.xml" and shipped(path) and \
@@ -103,7 +105,7 @@ def _shipped(package: Package) -> Callable[[str], bool]:
         any(part.startswith(".") for part in path.split("/")))  # CI settings: .travis.yml
 
 
-def _python_paths(path: str, tree: ast.Module) -> Iterator[Hit]:
+def _python_paths(path: str, tree: ast.Module) -> Iterator[tuple[Hit, ast.AST]]:
     parents = walk_once(tree).parents
     for node in nodes_of_class(tree, ast.Constant):
         value = getattr(node, "value", None)
@@ -112,7 +114,48 @@ def _python_paths(path: str, tree: ast.Module) -> Iterator[Hit]:
         if found is None or "\n" in value or _docstring(node, parents) or \
                 _message(node, parents):
             continue
-        yield _hit(Span(path, node.lineno, node.col_offset + 1), found.group(0), value)
+        yield _hit(Span(path, node.lineno, node.col_offset + 1), found.group(0), value), node
+
+
+def _tested(tree: ast.Module, index: Index) -> Callable[[ast.AST], bool]:
+    """Whether a path is one the module asks exists (``os.path.exists(path)``,
+    ``Path(path).is_file()``), as code falling back when a machine lacks it does: given to
+    the check, or bound to a name the check (or a name it is given) is built from, also
+    through a list of candidates the check's name loops over."""
+    checks = [call for call in index.calls if isinstance(call.func, ast.Attribute) and
+              call.func.attr in EXISTENCE_CHECKS]
+    if not checks:
+        return lambda node: False
+    parts = {id(n) for call in checks for given in (*call.args, call.func.value)  # type: ignore
+             for n in ast.walk(given)}
+    names = {n.id for call in checks for given in (*call.args, call.func.value)  # type: ignore
+             for n in ast.walk(given) if isinstance(n, ast.Name)}
+    values = list(_flows(tree))
+    while True:  # the names a checked name is built from are checked too
+        more = {n.id for name, value in values if name in names for n in ast.walk(value)
+                if isinstance(n, ast.Name)} - names
+        if not more:
+            break
+        names |= more
+    held = {id(n) for name, value in values if name in names for n in ast.walk(value)}
+    return lambda node: id(node) in parts or id(node) in held
+
+
+_ADDING = frozenset({"append", "add", "extend", "insert", "appendleft"})
+
+
+def _flows(tree: ast.Module) -> Iterator[tuple[str, ast.expr]]:
+    """(name, what goes into it): ``name = value``, ``for name in value``, and
+    ``name.append(value)`` (a list of candidate paths)."""
+    for node in nodes_of_class(tree, ast.Assign, ast.For, ast.comprehension, ast.Call):
+        if isinstance(node, ast.Assign):
+            yield from ((t.id, node.value) for t in node.targets if isinstance(t, ast.Name))
+        elif isinstance(node, (ast.For, ast.comprehension)) and \
+                isinstance(node.target, ast.Name):
+            yield node.target.id, node.iter
+        elif isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and \
+                node.func.attr in _ADDING and isinstance(node.func.value, ast.Name):
+            yield from ((node.func.value.id, given) for given in node.args)
 
 
 _HOME_HINTS = ("HOME", "~", "home()")
@@ -122,7 +165,8 @@ _WORKSPACE = lazy_pattern(r"^~?/?(?:[\w.-]+/)*?[\w.-]+/(?:src|install)(?:/|$)")
 """A path from the home folder into a colcon workspace's ``src`` or ``install`` folder."""
 
 
-def _workspace_paths(path: str, tree: ast.Module, index: Index) -> Iterator[Hit]:
+def _workspace_paths(path: str, tree: ast.Module, index: Index
+                     ) -> Iterator[tuple[Hit, ast.AST]]:
     """Paths built from the home folder (``~/ros2_ws/src/...``, ``os.path.join(
     os.getenv('HOME'), 'ws', 'src', ...)``, an f-string starting with ``$HOME``) that go into
     a workspace's ``src`` or ``install`` folder: one user's checkout."""
@@ -139,7 +183,7 @@ def _workspace_paths(path: str, tree: ast.Module, index: Index) -> Iterator[Hit]
             yield Hit(Span(path, node.lineno, node.col_offset + 1),
                       f"`{shown}` is a file of the colcon workspace in one user's home folder "
                       f"(`~/{rest.lstrip('~/')}`): on any other machine, or with the "
-                      "workspace elsewhere, the file is not there")
+                      "workspace elsewhere, the file is not there"), node
 
 
 def _after_home(node: ast.AST, index: Index, homes: frozenset[str]) -> str | None:
@@ -153,12 +197,13 @@ def _after_home(node: ast.AST, index: Index, homes: frozenset[str]) -> str | Non
             node.args and _is_home(node.args[0], index, homes) and \
             all(isinstance(a, ast.Constant) and isinstance(a.value, str) for a in node.args[1:]):
         return "/".join(a.value.strip("/") for a in node.args[1:])  # type: ignore[attr-defined]
-    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Div) and \
-            isinstance(node.right, ast.Constant) and isinstance(node.right.value, str):
+    if isinstance(node, ast.BinOp) and isinstance(node.op, ast.Div):
         before = "" if _is_home(node.left, index, homes) else \
             _after_home(node.left, index, homes) if isinstance(node.left, ast.BinOp) else None
-        return None if before is None else \
-            f"{before}/{node.right.value.strip('/')}".lstrip("/")
+        if before is None or not (isinstance(node.right, ast.Constant) and
+                                  isinstance(node.right.value, str)):
+            return before  # `.../src' / package_name`: what is known of the path
+        return f"{before}/{node.right.value.strip('/')}".lstrip("/")
     if isinstance(node, ast.JoinedStr) and len(node.values) >= 2 and \
             isinstance(node.values[0], ast.FormattedValue) and \
             _is_home(node.values[0].value, index, homes) and \

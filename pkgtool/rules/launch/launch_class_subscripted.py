@@ -7,6 +7,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity, shortened
+from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
@@ -15,6 +16,9 @@ from pkgtool.rules.syntax_trees import Index, launch_trees
 
 _MODULES = ("launch.", "launch_ros.")
 """Where the classes come from (``launch.substitutions.PathJoinSubstitution``)."""
+_CLASS_NAME = lazy_pattern(r"[A-Z][a-z]+(?:[A-Z][a-z0-9]*)*")
+"""A class's name (``PathJoinSubstitution``), not a constant's
+(``SomeSubstitutionsType_types_tuple``)."""
 
 
 @rule("LCH026", "launch-class-subscripted", Severity.ERROR,
@@ -51,7 +55,7 @@ def launch_class_subscripted(package: Package) -> Iterator[Hit]:
             qualified = index.qualified(node.value) if isinstance(
                 node.value, (ast.Name, ast.Attribute)) else None
             if qualified is None or not qualified.startswith(_MODULES) or \
-                    not qualified.rpartition(".")[2][:1].isupper() or \
+                    not _CLASS_NAME.fullmatch(qualified.rpartition(".")[2]) or \
                     index.in_unevaluated_annotation(node) or _annotation(node, index):
                 continue
             yield Hit(Span(path, node.lineno, node.col_offset + 1),

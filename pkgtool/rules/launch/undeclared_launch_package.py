@@ -51,9 +51,10 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
     started action performs. `get_package_share_directory` runs when the file does and is
     always checked. A workspace package that depends on this one (itself or through other
     workspace packages) is left alone too: declaring it would make a dependency cycle, which
-    colcon cannot order (xarm_ros2's MoveIt launch files look up its planner so); and so is a
-    package package.xml declares inside a comment, left out on purpose (MoveIt's resources
-    leave `warehouse_ros_mongo` out so, with the reason beside it).
+    colcon cannot order (xarm_ros2's MoveIt launch files look up its planner so). A package
+    package.xml declares only inside a comment is reported with no fix: it may be left out on
+    purpose (MoveIt's resources leave `warehouse_ros_mongo` out so, to spare the build farm a
+    cycle).
 
     ## Why is this bad?
     `ros2 launch` fails with "package not found" on machines set up with rosdep, because

@@ -33,16 +33,18 @@ def dynamic_attributes(tree: ast.Module) -> bool:
 
 def probed_names(index: Index) -> frozenset[str]:
     """Attribute names the module asks ``hasattr`` or ``getattr`` about: written out, or
-    each of the names a loop or comprehension around the call gives it (``all(hasattr(box,
-    a) for a in ('xmin', 'xmax'))``)."""
+    each of the names a loop or comprehension around the call gives ``hasattr`` or a
+    ``getattr`` with a default (``all(hasattr(box, a) for a in ('xmin', 'xmax'))``; not
+    ``getattr(v, axis) for axis in 'xyz'``, which reads what it expects to be there)."""
     names: set[str] = set()
     for call in index.calls:
         if isinstance(call.func, ast.Name) and call.func.id in _PROBES and len(call.args) > 1:
             asked = call.args[1]
             if isinstance(asked, ast.Constant) and isinstance(asked.value, str):
                 names.add(asked.value)
-            elif isinstance(asked, ast.Name):
-                names.update(_looped_texts(call, asked.id, index))
+            elif isinstance(asked, ast.Name) and (call.func.id == "hasattr" or
+                                                  len(call.args) > 2):
+                names.update(_looped_texts(call, asked.id, index))  # not getattr(v, axis)
     return frozenset(names)
 
 

@@ -32,7 +32,8 @@ def image_decoded_as_other_kind(package: Package) -> Iterator[Hit]:
     Reports `bridge.compressed_imgmsg_to_cv2(msg)` where `msg` is certainly a
     `sensor_msgs/msg/Image` (a subscription callback's message, a fresh or annotated message:
     the instances PYC019 knows), and `bridge.imgmsg_to_cv2(msg)` where it is a
-    `sensor_msgs/msg/CompressedImage`.
+    `sensor_msgs/msg/CompressedImage` (not in a module defining a function of that name: a
+    helper of its own).
 
     ## Why is this bad?
     `compressed_imgmsg_to_cv2` runs `cv2.imdecode()` on the message's bytes: raw pixels are
@@ -67,7 +68,8 @@ def image_decoded_as_other_kind(package: Package) -> Iterator[Hit]:
                 call = index.parents.get(id(ref))
                 if isinstance(call, ast.Call) and call.args and call.args[0] is ref and \
                         isinstance(call.func, ast.Attribute) and \
-                        _DECODES.get(call.func.attr, kind) != kind:
+                        _DECODES.get(call.func.attr, kind) != kind and \
+                        not index.defines_function(call.func.attr):  # a helper of its own
                     yield Hit(Span(module.path, call.lineno, call.col_offset + 1),
                               f"`{shortened(ast.unparse(call))}` decodes a "
                               f"`{_DECODES[call.func.attr]}`, but `{ast.unparse(ref)}` is a "

@@ -37,9 +37,9 @@ def _forwarded(call: ast.Call, index: Index) -> str | None:
 def _reaches_another_base(call: ast.Call, index: Index) -> bool:
     """True for ``super().__init__()`` in a class whose first base is not the node class it
     initialises by name in the same method (``class W(Thread, Node)``: ``super().__init__()``
-    is ``Thread.__init__``, then ``Node.__init__(self, 'worker')``), or that names another
-    class to start the lookup after (``super(QWidget, self).__init__()`` in ``class A(Node,
-    QWidget)`` is ``QObject.__init__``)."""
+    is ``Thread.__init__``, then ``Node.__init__(self, 'worker')``), or that starts the lookup
+    after a base listed after the node class (``super(QWidget, self).__init__()`` in ``class
+    A(Node, QWidget)`` is ``QObject.__init__``)."""
     if not is_super_init(call):
         return False
     init = index.enclosing_function(call)
@@ -47,8 +47,12 @@ def _reaches_another_base(call: ast.Call, index: Index) -> bool:
     if init is None or not isinstance(cls, ast.ClassDef) or len(cls.bases) < 2:
         return False
     start = call.func.value.args[0] if call.func.value.args else None  # type: ignore
-    if start is not None and not (isinstance(start, ast.Name) and start.id == cls.name):
-        return True  # super(QWidget, self): the lookup starts after that base, maybe past Node
+    names = [ast.unparse(base) for base in cls.bases]
+    node_at = next((i for i, base in enumerate(cls.bases)
+                    if (index.qualified(base) or "") in NODE_CLASSES), None)
+    if isinstance(start, ast.Name) and start.id in names and node_at is not None and \
+            names.index(start.id) > node_at:
+        return True  # super(QWidget, self) in class A(Node, QWidget): the lookup skips Node
     later = {ast.unparse(base) for base in cls.bases[1:]
              if (index.qualified(base) or "") in NODE_CLASSES}
     return any(isinstance(c.func, ast.Attribute) and c.func.attr == "__init__" and

@@ -73,25 +73,33 @@ def _again(function: ast.AST, index: Index, initialising: dict[str, ast.Call]
             yield first, call, initialising[call.func.id]
 
 
-def _module_level_calls(tree: ast.Module) -> frozenset[str]:
-    """The names the module's top-level statements (not its functions or classes) call."""
-    return frozenset(node.func.id for statement in tree.body
-                     if not isinstance(statement, (*FUNCTIONS, ast.ClassDef))
-                     for node in ast.walk(statement)
-                     if isinstance(node, ast.Call) and isinstance(node.func, ast.Name))
+def _named_elsewhere(function: ast.FunctionDef | ast.AsyncFunctionDef, tree: ast.Module
+                     ) -> bool:
+    """True when the module names ``function`` outside its own body (a top-level call,
+    ``fire.Fire(main)``, another function calling it): only a console script may call it."""
+    inside = {id(node) for node in ast.walk(function)}
+    return any(isinstance(node, ast.Name) and node.id == function.name and
+               id(node) not in inside for node in ast.walk(tree))
 
 
 def _under_main_test(call: ast.Call, function: ast.AST, index: Index) -> bool:
-    """True for a call under an ``if`` of ``function`` testing ``__name__``: run as a console
-    script, the module's ``__name__`` is its import name, and run as a file nothing at its top
-    level calls ``function``."""
-    parent = index.parents.get(id(call))
+    """True for a call in the body of an ``if __name__ == '__main__':`` of ``function``: run
+    as a console script, the module's ``__name__`` is its import name."""
+    child, parent = call, index.parents.get(id(call))
     while parent is not None and parent is not function:
-        if isinstance(parent, ast.If) and any(isinstance(n, ast.Name) and n.id == "__name__"
-                                              for n in ast.walk(parent.test)):
+        if isinstance(parent, ast.If) and any(child is s for s in parent.body) and \
+                _is_main_test(parent.test):
             return True
-        parent = index.parents.get(id(parent))
+        child, parent = parent, index.parents.get(id(parent))
     return False
+
+
+def _is_main_test(test: ast.expr) -> bool:
+    """True for ``__name__ == '__main__'`` (either way round)."""
+    return isinstance(test, ast.Compare) and len(test.ops) == 1 and \
+        isinstance(test.ops[0], ast.Eq) and {ast.unparse(test.left),
+                                             ast.unparse(test.comparators[0])} == \
+        {"__name__", "'__main__'"}
 
 
 @rule("PYC039", "rclpy-initialised-twice", Severity.ERROR,
@@ -105,9 +113,10 @@ def rclpy_initialised_twice(package: Package) -> Iterator[Hit]:
     reports a later certain `rclpy.init()` in it, or a later call of a function or class of
     the module whose body (whose `__init__` for a class) certainly calls it, with no
     `rclpy.shutdown()` or `try_shutdown()` in between. Calls given `context=` are not
-    judged, nor inits under an `if` (`if not rclpy.ok(): rclpy.init()`), nor a call under a
-    test of `__name__` inside the function when nothing at the module's top level calls the
-    function (`if __name__ == '__main__': main()` indented into `main()`: dead code).
+    judged, nor inits under an `if` (`if not rclpy.ok(): rclpy.init()`), nor a call in the
+    body of an `if __name__ == '__main__':` inside a function nothing else in the module names
+    (`main()` called there, indented into `main()`: only a console script runs `main()`,
+    with another `__name__`).
 
     ## Why is this bad?
     The default context can be initialised once: the second call raises `RuntimeError:
@@ -143,10 +152,10 @@ def rclpy_initialised_twice(package: Package) -> Iterator[Hit]:
         if not any(i.top_level == "rclpy" for i in module.imports):
             continue
         initialising = _initialising(tree, index)
-        top_calls = _module_level_calls(tree)
         for function in (s for s in tree.body if isinstance(s, FUNCTIONS)):
             for first, call, again in _again(function, index, initialising):
-                if function.name not in top_calls and _under_main_test(call, function, index):
+                if _under_main_test(call, function, index) and \
+                        not _named_elsewhere(function, tree):
                     continue  # `if __name__ == '__main__': main()` indented into main()
                 how = "is called again" if call is again else \
                     f"runs again when `{function.name}()` calls `{ast.unparse(call.func)}()` " \
