@@ -4,10 +4,9 @@ does not declare, or that no package has as its name."""
 from __future__ import annotations
 
 from collections.abc import Iterator
-from itertools import groupby
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.description_files import package_mentions
+from pkgtool.model.description_files import PackageMention, package_mentions
 from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.installed import cmake_installed, cmake_text, installed_data, is_ament_python
 from pkgtool.model.package import Package
@@ -36,7 +35,8 @@ def undeclared_description_package(package: Package) -> Iterator[Hit]:
     package of the target's release nor of the packages linted with it has is said so, with
     the package it is a typo of, if any (a description exported or copied under another
     package's name). Comments name nothing (XML's, and `#` lines of RViz's YAML), nor xacro's
-    escaped `$$(find x)`. Packages of the workspace are left alone: a description naming its
+    escaped `$$(find x)`. Each package is reported once, at the first file naming it.
+    Packages of the workspace are left alone: a description naming its
     bringup package's controller settings (`$(find robot_bringup)/config/controllers.yaml`)
     is used by that package's launch files, which must declare the description, and
     declaring both would make a cycle colcon cannot order. Files the package does not install,
@@ -69,9 +69,14 @@ def undeclared_description_package(package: Package) -> Iterator[Hit]:
     workspace = package.context.workspace
     mentions = [m for m in package_mentions(package) if m.span.path in installed and
                 (m.package == package.name or m.package not in workspace)]
-    for path, named in groupby(mentions, key=lambda mention: mention.span.path):
-        used = [(mention.package, mention.span) for mention in named]
-        yield from unlisted_packages(package, used, available, f"the installed file `{path}`")
+    files: dict[str, list[PackageMention]] = {}
+    for mention in mentions:  # in file order: the first file naming a package stands for all
+        files.setdefault(mention.package, []).append(mention)
+    for name, named in files.items():
+        first, others = named[0].span.path, {m.span.path for m in named} - {named[0].span.path}
+        user = f"the installed file `{first}`" + (
+            f" (and {len(others)} more)" if others else "")
+        yield from unlisted_packages(package, [(name, named[0].span)], available, user)
 
 
 def _installed_description_files(package: Package) -> frozenset[str]:
