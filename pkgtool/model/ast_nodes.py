@@ -198,6 +198,15 @@ def is_super_init(node: ast.AST) -> bool:
         isinstance(node.func.value.func, ast.Name) and node.func.value.func.id == "super"
 
 
+def is_main_test(test: ast.expr) -> bool:
+    """True for ``__name__ == '__main__'`` (either way round)."""
+    if not (isinstance(test, ast.Compare) and len(test.ops) == 1 and
+            isinstance(test.ops[0], ast.Eq)):
+        return False
+    return {ast.unparse(test.left), ast.unparse(test.comparators[0])} == \
+        {"__name__", "'__main__'"}  # unparse writes every string in single quotes
+
+
 def last_name(func: ast.expr) -> str:
     """The name a call's function ends in: ``f`` of ``f()``, ``exists`` of
     ``os.path.exists()``; ``""`` for another expression (``make()()``)."""

@@ -199,6 +199,15 @@ def _depends(manifest: str | None) -> frozenset[str]:
 
 _BUILD_TYPE = lazy_pattern(r"<build_type>\s*([^<\s]+)\s*</build_type>")
 _COMMENT = lazy_pattern(r"<!--.*?-->", re.DOTALL)
+_ANY_DEPEND = lazy_pattern(r"<(?:\w+_)?depend(?:\s[^>]*)?>\s*([^<\s]+)\s*</")
+"""A dependency tag of any kind (``<test_depend>`` too) and the name it declares."""
+
+
+def commented_dependencies(manifest: str) -> frozenset[str]:
+    """The packages a package.xml's text declares only inside comments
+    (``<!-- <exec_depend>x</exec_depend> -->``)."""
+    return frozenset(name for comment in _COMMENT.findall(manifest) if "depend" in comment
+                     for name in _ANY_DEPEND.findall(comment))
 
 
 def _setup_digest(manifest: str | None, listed: tuple[str, ...],

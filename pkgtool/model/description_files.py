@@ -9,22 +9,18 @@ comment holds names nothing (nor xacro's escaped ``$$(find x)``).
 
 from __future__ import annotations
 
-import re
-
 from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.files import TextFile, read_text
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.model.text_comments import without_comments
 from pkgtool.records import record
 
 DESCRIPTION_SUFFIXES = (".urdf", ".xacro", ".sdf", ".srdf", ".world", ".rviz")
 """Files naming other packages by ``$(find ...)`` or ``package://`` URIs."""
 _NAMED = lazy_pattern(r"(?<!\$)\$\(\s*find(?:-pkg-share)?\s+([A-Za-z][\w.-]*)\s*\)|"
                       r"package://([A-Za-z][\w.-]*)/")
-_XML_COMMENT = lazy_pattern(r"<!--.*?-->", re.DOTALL)
-_YAML_COMMENT = lazy_pattern(r"^[ \t]*#[^\n]*", re.MULTILINE)
-"""A comment line of RViz's settings, which are YAML."""
 
 
 @record
@@ -45,8 +41,8 @@ def package_mentions(package: Package) -> tuple[PackageMention, ...]:
         if relpath.endswith(DESCRIPTION_SUFFIXES):
             read = read_text(package.root, relpath)
             if isinstance(read, TextFile):
-                comments = _YAML_COMMENT if relpath.endswith(".rviz") else _XML_COMMENT
-                found.extend(_mentions(relpath, comments.sub(_blanked, read.text)))
+                kind = "yaml" if relpath.endswith(".rviz") else "xml"  # RViz settings: YAML
+                found.extend(_mentions(relpath, without_comments(read.text, kind)))
     return tuple(found)
 
 
@@ -68,8 +64,3 @@ def _mentions(relpath: str, text: str) -> list[PackageMention]:
         mentions.append(PackageMention(match.group(1) or match.group(2),
                                        Span(relpath, line, column)))
     return mentions
-
-
-def _blanked(comment: re.Match[str]) -> str:
-    """A comment's text as blanks, its line breaks kept (what follows keeps its line)."""
-    return "".join(c if c == "\n" else " " for c in comment.group(0))

@@ -3,13 +3,12 @@ folder of) that package.xml does not declare, or that no package has as its name
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterable, Iterator, Mapping
 
 from pkgtool.findings import Hit
 from pkgtool.knowledge.rosdistro import (close_names, digits_differ, is_released_package,
                                          key_resolves)
-from pkgtool.lazy_regex import lazy_pattern
+from pkgtool.model.context import commented_dependencies
 from pkgtool.model.manifest import Dependency
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
@@ -57,19 +56,13 @@ def unlisted_packages(package: Package, used: Iterable[tuple[str, Span]],
                   cause="" if other else dependency_cause(name), consequence=True)
 
 
-_COMMENT = lazy_pattern(r"<!--(.*?)-->", re.DOTALL)
-_DEPENDENCY = lazy_pattern(r"<(?:\w+_)?depend(?:\s[^>]*)?>\s*([^<\s]+)\s*</")
-
-
 @per_package
 def commented_out(package: Package) -> frozenset[str]:
     """The packages package.xml declares inside a comment (``<!-- <exec_depend>x</exec_depend>
     -->``): maybe left out on purpose (MoveIt's resources leave out what would make a cycle
     for the build farm), maybe replaced by another (``gazebo_ros`` by ``ros_gz_sim``) or
     forgotten: their use is still reported, with no fix."""
-    text = package.texts.get("package.xml", "")
-    return frozenset(name for comment in _COMMENT.findall(text) if "depend" in comment
-                     for name in _DEPENDENCY.findall(comment))
+    return commented_dependencies(package.texts.get("package.xml", ""))
 
 
 def depends_on(package: Package, name: str) -> bool:

@@ -92,21 +92,29 @@ class Index:
             parent = self.parents.get(id(parent))
         return parent
 
+    def annotation_holder(self, node: ast.AST) -> ast.AST | None:
+        """The annotated assignment, parameter or function (its return) whose annotation
+        ``node`` is in, or None."""
+        child, parent = node, self.parents.get(id(node))
+        while parent is not None:
+            if isinstance(parent, (ast.AnnAssign, ast.arg)) and parent.annotation is child or \
+                    isinstance(parent, FUNCTIONS) and parent.returns is child:
+                return parent
+            child, parent = parent, self.parents.get(id(parent))
+        return None
+
     def in_unevaluated_annotation(self, node: ast.AST) -> bool:
         """True when ``node`` is inside an annotation Python never evaluates: that of an
         assignment in a function body (PEP 526), or any under ``from __future__ import
         annotations`` (PEP 563)."""
+        holder = self.annotation_holder(node)
+        if holder is None:
+            return False
         postponed = any(i.module == "__future__" and any(a.name == "annotations" for a in i.names)
                         for i in self.import_froms)
-        child, parent = node, self.parents.get(id(node))
-        while parent is not None:
-            if isinstance(parent, ast.AnnAssign) and parent.annotation is child:
-                return postponed or self.enclosing_function(parent) is not None
-            if postponed and (isinstance(parent, ast.arg) and parent.annotation is child or
-                              isinstance(parent, FUNCTIONS) and parent.returns is child):
-                return True
-            child, parent = parent, self.parents.get(id(parent))
-        return False
+        if isinstance(holder, ast.AnnAssign):
+            return postponed or self.enclosing_function(holder) is not None
+        return postponed
 
     def enclosing_function(self, node: ast.AST, *, through_lambdas: bool = True
                            ) -> ast.FunctionDef | ast.AsyncFunctionDef | None:

@@ -8,7 +8,7 @@ import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import last_name, nodes_of_class, opens_to_write
+from pkgtool.model.ast_nodes import is_main_test, last_name, nodes_of_class, opens_to_write
 from pkgtool.model.installed import installed_data, installed_modules, is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.model.setup_py import PACKAGE_DATA
@@ -86,21 +86,12 @@ def _in_main_block(node: ast.AST, index: Index) -> bool:
     only when the file runs as a script, never when a console script imports its module."""
     child, parent = node, index.parents.get(id(node))
     while parent is not None:
-        if isinstance(parent, ast.If) and _is_main_test(parent.test) and \
+        if isinstance(parent, ast.If) and is_main_test(parent.test) and \
                 any(child is statement for statement in parent.body) and \
                 isinstance(index.parents.get(id(parent)), ast.Module):
             return True
         child, parent = parent, index.parents.get(id(parent))
     return False
-
-
-def _is_main_test(test: ast.expr) -> bool:
-    """True for ``__name__ == '__main__'`` (either way round)."""
-    if not (isinstance(test, ast.Compare) and len(test.ops) == 1 and
-            isinstance(test.ops[0], ast.Eq)):
-        return False
-    return {ast.unparse(test.left), ast.unparse(test.comparators[0])} == \
-        {"__name__", "'__main__'"}  # unparse writes every string in single quotes
 
 
 @rule("DAT015", "file-beside-module-not-installed", Severity.ERROR,

@@ -6,8 +6,8 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.description_files import PackageMention, package_mentions
 from pkgtool.lazy_regex import lazy_pattern
+from pkgtool.model.description_files import PackageMention, package_mentions
 from pkgtool.model.installed import cmake_installed, cmake_text, installed_data, is_ament_python
 from pkgtool.model.package import Package
 from pkgtool.model.submodules import under

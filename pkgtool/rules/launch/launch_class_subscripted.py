@@ -12,7 +12,7 @@ from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import Index, launch_trees
+from pkgtool.rules.syntax_trees import launch_trees
 
 _MODULES = ("launch.", "launch_ros.")
 """Where the classes come from (``launch.substitutions.PathJoinSubstitution``)."""
@@ -56,7 +56,7 @@ def launch_class_subscripted(package: Package) -> Iterator[Hit]:
                 node.value, (ast.Name, ast.Attribute)) else None
             if qualified is None or not qualified.startswith(_MODULES) or \
                     not _CLASS_NAME.fullmatch(qualified.rpartition(".")[2]) or \
-                    index.in_unevaluated_annotation(node) or _annotation(node, index):
+                    index.annotation_holder(node) is not None:
                 continue
             yield Hit(Span(path, node.lineno, node.col_offset + 1),
                       f"`{shortened(ast.unparse(node))}` indexes the class "
@@ -64,16 +64,3 @@ def launch_class_subscripted(package: Package) -> Iterator[Hit]:
                       "it is no generic type, and the launch fails with TypeError (not "
                       "subscriptable)",
                       f"Call it: `{ast.unparse(node.value)}([...])`")
-
-
-def _annotation(node: ast.AST, index: Index) -> bool:
-    """True for a part of a function's or an assignment's annotation."""
-    child, parent = node, index.parents.get(id(node))
-    while parent is not None:
-        if isinstance(parent, ast.arg) and parent.annotation is child or \
-                isinstance(parent, ast.AnnAssign) and parent.annotation is child or \
-                isinstance(parent, (ast.FunctionDef, ast.AsyncFunctionDef)) and \
-                parent.returns is child:
-            return True
-        child, parent = parent, index.parents.get(id(parent))
-    return False

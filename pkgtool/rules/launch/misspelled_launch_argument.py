@@ -10,9 +10,9 @@ from difflib import get_close_matches
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import last_name, nodes_of_class
 from pkgtool.model.package import Package
+from pkgtool.model.text_comments import without_comments
 from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
-from pkgtool.rules.launch._frontend_text import without_comments
 from pkgtool.rules.registry import rule
 from pkgtool.rules.launch._python_launch import text_argument
 from pkgtool.rules.syntax_trees import python_launch_files

@@ -73,10 +73,11 @@ def robot_description_not_urdf(package: Package) -> Iterator[Hit]:
             continue
         module = index.module_of(nodes[0])
         at_top = {**_opened_as(module), **single_assignments(module)}
+        scopes: dict[int, dict[str, ast.expr]] = {}  # each function's names, worked out once
         for call in nodes:
             function = index.enclosing_function(call)
-            names = {**at_top, **(_opened_as(function) if function else {}),
-                     **(single_assignments(function) if function else {})}
+            names = at_top if function is None else scopes.setdefault(id(function), {
+                **at_top, **_opened_as(function), **single_assignments(function)})
             for key, value in _description_values(call, names):
                 what = _what(value, names)
                 if what is not None:

@@ -8,8 +8,8 @@ from difflib import get_close_matches
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.launch_api import FRONTEND_SUBSTITUTIONS, ROS1_SUBSTITUTIONS
 from pkgtool.model.package import Package
+from pkgtool.model.text_comments import without_comments
 from pkgtool.model.span import Span
-from pkgtool.rules.launch._frontend_text import without_comments
 from pkgtool.rules.registry import rule
 from pkgtool.lazy_regex import lazy_pattern
 

@@ -6,7 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import subtree
+from pkgtool.model.ast_nodes import is_main_test, subtree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import INITS, SHUTDOWNS, TRY_SHUTDOWNS
@@ -88,18 +88,10 @@ def _under_main_test(call: ast.Call, function: ast.AST, index: Index) -> bool:
     child, parent = call, index.parents.get(id(call))
     while parent is not None and parent is not function:
         if isinstance(parent, ast.If) and any(child is s for s in parent.body) and \
-                _is_main_test(parent.test):
+                is_main_test(parent.test):
             return True
         child, parent = parent, index.parents.get(id(parent))
     return False
-
-
-def _is_main_test(test: ast.expr) -> bool:
-    """True for ``__name__ == '__main__'`` (either way round)."""
-    return isinstance(test, ast.Compare) and len(test.ops) == 1 and \
-        isinstance(test.ops[0], ast.Eq) and {ast.unparse(test.left),
-                                             ast.unparse(test.comparators[0])} == \
-        {"__name__", "'__main__'"}
 
 
 @rule("PYC039", "rclpy-initialised-twice", Severity.ERROR,

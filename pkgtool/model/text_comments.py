@@ -1,4 +1,5 @@
-"""The text of an XML or YAML launch file as launch reads it: comments blanked."""
+"""The text of an XML or YAML file as its readers take it: comments blanked (launch files,
+and the URDF, xacro and RViz files naming packages)."""
 
 from __future__ import annotations
 
@@ -8,8 +9,8 @@ _COMMENTS = {"xml": re.compile(r"<!--.*?-->", re.DOTALL), "yaml": re.compile(r"(
 
 
 def without_comments(text: str, kind: str) -> str:
-    """``text`` of a launch file of ``kind`` (``xml``, ``yaml``) with every comment's
-    characters as spaces, its line breaks kept (offsets and lines stay)."""
+    """``text`` of a file of ``kind`` (``xml``, ``yaml``) with every comment's characters as
+    spaces, its line breaks kept (offsets and lines stay)."""
     pattern = _COMMENTS.get(kind)
     return pattern.sub(lambda comment: re.sub(r"[^\n]", " ", comment.group(0)), text) \
         if pattern else text
