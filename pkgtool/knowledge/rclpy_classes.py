@@ -23,6 +23,12 @@ ENUMS = {**POLICY_ENUMS, **{f"rclpy.action{where}.{kind}Response":
 callbacks) by every name rclpy gives it, to the name the table knows it by."""
 
 
+SETTLED = ("humble", "jazzy")
+"""The distributions whose rclpy classes have no attribute the table lacks: released ones
+whose branches it was made from (its Rolling is a snapshot: Kilted and later Rolling add
+methods, such as ``configure_introspection`` of action clients and servers)."""
+
+
 @cache
 def _table() -> dict[str, frozenset[str]]:
     table = read("rclpy_classes")

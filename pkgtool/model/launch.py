@@ -208,7 +208,8 @@ def is_launch_file(path: str, python_folders: frozenset[str] = frozenset(),
     Python package folder (``python_folders``: folders holding an ``__init__.py``; it is
     installed as code), a test (``test_*``) and files under ``test/``, ``examples/``,
     ``samples/`` or ``doc/`` (run by pytest, by ``main()`` with a ``LaunchService``, or by
-    path from that folder, next to its data) are not launch files. Nor are those below a
+    path from that folder, next to its data) are not launch files, unless the examples'
+    folder is a Python package (the module of a package called ``example``). Nor are those below a
     ``nested`` folder (:func:`nested_packages`): they are that package's. Nor are those of a
     folder kept aside (``backup/``, ``old/``: :func:`kept_aside`), nor :func:`hidden` files.
     """
@@ -219,8 +220,14 @@ def is_launch_file(path: str, python_folders: frozenset[str] = frozenset(),
     parts = folder.split("/") if folder else []
     if "launch" in parts:
         return True
-    return not (name.startswith("test_") or (parts and parts[0] in NOT_LAUNCH_FOLDERS)
-                or folder in python_folders)
+    return not (name.startswith("test_") or folder in python_folders or parts and (
+        parts[0] in NOT_LAUNCH_FOLDERS and not _examples_module(parts[0], python_folders)))
+
+
+def _examples_module(top: str, python_folders: frozenset[str]) -> bool:
+    """True for a top-level folder named like examples that is a Python package (the
+    package's own module: a package called ``example``), not a folder of examples."""
+    return top in python_folders and top not in ("test", "tests")
 
 
 LAUNCH_YAML = lazy_pattern(r"^launch\s*:", re.M)

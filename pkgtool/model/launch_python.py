@@ -128,6 +128,8 @@ class _Reader(ast.NodeVisitor):
                                                      SUBSTITUTIONS)
         self.eager_helpers = frozenset(name for name, p in self.package_parameters.items()
                                        if not p.substitution)  # may raise: may be checked
+        self.declarations = [c for c in nodes_of_class(tree, ast.Call)
+                             if last_name(c.func) == "DeclareLaunchArgument"]
 
     def _span(self, node: ast.AST) -> Span:
         return Span(self.path, getattr(node, "lineno", 1), getattr(node, "col_offset", 0) + 1)
@@ -494,6 +496,9 @@ class _Reader(ast.NodeVisitor):
         for item in items:
             if self._is_dict(item):
                 continue
+            default = self._argument_default(item)
+            if default is not None:  # a launch argument: its default, or any file given
+                item, other = default, True
             value = self.value(item)
             for part in value if isinstance(value, tuple) else (value,):
                 if isinstance(part, Share) and part.share and part.parts:
@@ -501,6 +506,20 @@ class _Reader(ast.NodeVisitor):
                 else:
                     other = True
         return tuple(found), other
+
+    def _argument_default(self, node: ast.expr) -> ast.expr | None:
+        """The default value of the launch argument ``LaunchConfiguration('x')`` reads (its
+        ``default=``, else that of the file's one ``DeclareLaunchArgument('x', ...)``)."""
+        call = self._resolved(node)
+        if not isinstance(call, ast.Call) or last_name(call.func) != "LaunchConfiguration" or \
+                not call.args or not isinstance(call.args[0], ast.Constant):
+            return None
+        given = _keyword(call, "default")
+        if given is not None:
+            return given
+        defaults = [_keyword(c, "default_value") for c in self.declarations
+                    if _declared_name(c) == call.args[0].value]
+        return defaults[0] if len(defaults) == 1 else None
 
     def _inline_parameters(self, node: ast.expr | None, prefix: str = ""
                            ) -> Iterator[tuple[str, Span, str | None]]:
@@ -674,6 +693,12 @@ def _literal(node: ast.expr) -> str | None:
     except (ValueError, TypeError, SyntaxError, MemoryError, RecursionError):
         return None
     return ast.unparse(node)
+
+
+def _declared_name(call: ast.Call) -> object:
+    """The literal name a ``DeclareLaunchArgument(...)`` call declares, or None."""
+    name = call.args[0] if call.args else _keyword(call, "name")
+    return name.value if isinstance(name, ast.Constant) else None
 
 
 def _last_part(node: ast.expr) -> ast.expr:

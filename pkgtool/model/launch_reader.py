@@ -10,7 +10,8 @@ import functools
 import math
 from collections.abc import Iterator
 
-from pkgtool.model.launch import COMMAND_PACKAGES, FileRef, LaunchFile, NodeRef, PackageRef
+from pkgtool.model.launch import (COMMAND_PACKAGES, PROCESS_PACKAGES, FileRef, LaunchFile,
+                                  NodeRef, PackageRef)
 from pkgtool.model.launch_python import NAME_REMAPS, remapped_name
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.model.xml import XmlElement
@@ -23,6 +24,8 @@ _EXECUTABLE_IN = lazy_pattern(r"\$\(\s*exec-in-pkg\s+[\w.-]+\s+([A-Za-z0-9_]+)\s
 _SHARE_WORD = lazy_pattern(r"(?<![^\s])\$\(\s*find-pkg-share\s+[A-Za-z0-9_]+\s*\)"
                            r"/[^\s$'\"]*(?=\s|$)")
 """A share path that is one whole word of a node's ``args`` (``-d $(find-pkg-share p)/a.rviz``)."""
+_VARIABLE = lazy_pattern(r"\$\(var\s+([\w-]+)\)")
+"""A launch argument's whole value, ``$(var params)``."""
 _COMMAND = lazy_pattern(r"""\$\(\s*command\s+['"]?\s*([\w.-]+)""")
 _SHARE_PATH = lazy_pattern(r"^\$\(\s*find-pkg-share\s+([A-Za-z0-9_]+)\s*\)(/[^$]*)$")
 NODE_TAGS = {"node": ("exec", "executable"), "lifecycle_node": ("exec", "executable"),
@@ -46,8 +49,11 @@ def read_launch(path: str, text: str) -> LaunchFile:
     found = reader(path, text)
     if isinstance(found, ParseProblem):
         return LaunchFile(path, kind, (), (), (), problem=found)
-    nodes, values, paths = found
+    nodes, values, paths, commands = found
     packages, files = _substitutions(values)
+    packages += tuple(PackageRef(PROCESS_PACKAGES[command.split()[0]], span)
+                      for command, span in commands
+                      if command.split() and command.split()[0] in PROCESS_PACKAGES)
     return LaunchFile(path, kind, tuple(nodes), packages, files,
                       paths=tuple((p, span) for p, span in paths if _static(p)))
 
@@ -101,9 +107,11 @@ def _share_file(value: str, span: Span) -> FileRef | None:
 # XML -------------------------------------------------------------------------------------
 _XML_FILES = {"include": "file", "set_parameters_from_file": "filename"}
 """XML launch actions naming a file, besides ``<param from=>``, and the attribute naming it."""
-Read = tuple[list[NodeRef], list[tuple[str, Span]], list[tuple[str, Span]]]
+Read = tuple[list[NodeRef], list[tuple[str, Span]], list[tuple[str, Span]],
+             list[tuple[str, Span]]]
 """What an XML or YAML launch file gives: its nodes, its attribute values, the file paths it
-names (parameter files, included launch files), each where it is written."""
+names (parameter files, included launch files), and the command lines of its ``executable``
+actions (``<executable cmd="rviz2 -d ...">``), each where it is written."""
 
 
 def _xml(path: str, text: str) -> Read | ParseProblem:
@@ -115,8 +123,13 @@ def _xml(path: str, text: str) -> Read | ParseProblem:
     nodes: list[NodeRef] = []
     values: list[tuple[str, Span]] = []
     paths: list[tuple[str, Span]] = []
+    commands: list[tuple[str, Span]] = []
     top = {id(child) for child in root.children if not _conditional(child)}
+    defaults = {e.attribute("name"): e.attribute("default") for e in _elements(root)
+                if e.tag == "arg" and e.attribute("default")}
     for element in _elements(root):
+        if element.tag == "executable" and element.attribute("cmd"):
+            commands.append((element.attribute("cmd") or "", element.span))
         named = element.attribute(_XML_FILES.get(element.tag, "from")) \
             if element.tag in _XML_FILES or element.tag == "param" else None
         if named is not None:
@@ -126,6 +139,9 @@ def _xml(path: str, text: str) -> Read | ParseProblem:
                                if element.attribute(a) is not None), None)
             froms = [(c.attribute("from") or "", c.span) for c in element.children
                      if c.tag == "param" and c.attribute("from") is not None]
+            froms += [(defaults[found.group(1)] or "", span) for text, span in froms
+                      for found in [_VARIABLE.fullmatch(text.strip())]
+                      if found and found.group(1) in defaults]  # and any file given
             remaps = [(c.attribute("from"), c.attribute("to"))
                       for c in element.children if c.tag == "remap"]
             arguments = [element.attribute(a) for a in ("args", "ros_args")]
@@ -146,7 +162,7 @@ def _xml(path: str, text: str) -> Read | ParseProblem:
         if element.tag in NODE_TAGS:  # `args="-d $(find-pkg-share pkg)/view.rviz"`
             values.extend((m.group(0), element.span)
                           for m in _SHARE_WORD.finditer(element.attribute("args") or ""))
-    return nodes, values, paths
+    return nodes, values, paths, commands
 
 
 def _xml_parameters(children: tuple[XmlElement, ...], prefix: str = ""
@@ -286,6 +302,7 @@ def _yaml(path: str, text: str) -> Read | ParseProblem:
     nodes: list[NodeRef] = []
     values: list[tuple[str, Span]] = []
     paths: list[tuple[str, Span]] = []
+    commands: list[tuple[str, Span]] = []
     seen: set[int] = set()
     stack = [root] if root is not None else []
     while stack:
@@ -308,11 +325,16 @@ def _yaml(path: str, text: str) -> Read | ParseProblem:
                     paths.extend((str(v.value), _yaml_span(path, v)) for k, v in value.value
                                  if getattr(k, "value", None) == _XML_FILES[key.value] and
                                  isinstance(v, yaml.ScalarNode))
+                elif isinstance(key, yaml.ScalarNode) and key.value == "executable" and \
+                        isinstance(value, yaml.MappingNode):
+                    commands.extend((str(v.value), _yaml_span(path, v)) for k, v in value.value
+                                    if getattr(k, "value", None) == "cmd" and
+                                    isinstance(v, yaml.ScalarNode))
                 stack.extend((value, key))
         elif isinstance(node, yaml.SequenceNode):
             stack.extend(reversed(node.value))
     nodes.sort(key=lambda n: (n.span.line, n.span.col))
-    return nodes, values, paths
+    return nodes, values, paths, commands
 
 
 def _yaml_span(path: str, node: object) -> Span:

@@ -86,6 +86,22 @@ def parse_manifest(path: str, text: str) -> Manifest | ParseProblem:
                    schema_format=Text(schema.group(1), where) if schema else None)
 
 
+_LATE_DECLARATION = lazy_pattern(r"\A\s+(<\?xml\s[^>]*\?>)")
+"""An XML declaration after blank lines or spaces: XML allows it only at the very start."""
+
+
+def read_past_late_declaration(path: str, text: str) -> Manifest | None:
+    """The manifest of a package.xml whose only fault is whitespace before its XML declaration
+    (SYN001 reports that), read with the declaration blanked out so every other check still
+    runs, at the same lines and columns; None for any other fault."""
+    late = _LATE_DECLARATION.match(text)
+    if late is None:
+        return None
+    start, end = late.span(1)
+    found = parse_manifest(path, text[:start] + " " * (end - start) + text[end:])
+    return found if isinstance(found, Manifest) else None
+
+
 _SCHEMA = lazy_pattern(r"<\?xml-model\s[^>]*?href\s*=\s*[\"'][^\"']*package_format(\d+)\.xsd")
 """The ``<?xml-model?>`` processing instruction naming a package.xml schema."""
 

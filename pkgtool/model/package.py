@@ -15,7 +15,7 @@ from pkgtool.model.launch import (LAUNCH_SUFFIXES, LAUNCH_YAML, LaunchFile, hidd
                                   kept_aside, nested_packages, named_like_launch_only,
                                   parse_launch, python_folders, runs_as_launch_file)
 from pkgtool.model.launch_reader import yaml_problem
-from pkgtool.model.manifest import Manifest, parse_manifest
+from pkgtool.model.manifest import Manifest, parse_manifest, read_past_late_declaration
 from pkgtool.model.modules import PythonModule, parse_module
 from pkgtool.model.python_visitor import forget_trees
 from pkgtool.model.setup_cfg import SetupCfg, parse_setup_cfg
@@ -146,6 +146,8 @@ def load_package(root: Path, context: Context | None = None, *,
         return result.text
 
     manifest = _parsed(problems, "package.xml", text_of, parse_manifest, files)
+    if manifest is None and texts.get("package.xml"):  # SYN001 says why; the rest still runs
+        manifest = read_past_late_declaration("package.xml", texts["package.xml"])
     setup_py = _parsed(problems, "setup.py", text_of,
                        lambda p, t: parse_setup_py(p, t, files), files)
     setup_cfg = _parsed(problems, "setup.cfg", text_of, parse_setup_cfg, files)

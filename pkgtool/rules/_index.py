@@ -37,6 +37,7 @@ RULES = {
     "DAT022": ("misspelled-data-folder", "warning", True, "data_files.misspelled_data_folder"),
     "DAT023": ("unexpanded-home-path", "error", True, "data_files.unexpanded_home_path"),
     "DAT024": ("foreign-index-marker", "warning", True, "data_files.foreign_index_marker"),
+    "DAT025": ("misspelled-use-sim-time", "warning", True, "data_files.misspelled_use_sim_time"),
     "DEP001": ("undeclared-import", "error", True, "dependencies.undeclared_import"),
     "DEP002": ("import-declared-only-as-build-depend", "error", True,
                "dependencies.build_only_import"),
@@ -99,6 +100,8 @@ RULES = {
     "LCH024": ("unused-launch-argument", "warning", True, "launch.unused_launch_argument"),
     "LCH025": ("robot-description-not-urdf", "error", True, "launch.robot_description_not_urdf"),
     "LCH026": ("launch-class-subscripted", "error", True, "launch.launch_class_subscripted"),
+    "LCH027": ("keyboard-reader-without-terminal", "error", True,
+               "launch.keyboard_reader_without_terminal"),
     "MAN001": ("invalid-package-name", "error", True, "manifest.invalid_package_name"),
     "MAN002": ("invalid-version", "error", True, "manifest.invalid_version"),
     "MAN003": ("missing-required-element", "error", True, "manifest.missing_required_element"),
@@ -223,6 +226,8 @@ RULES = {
     "PYC087": ("attribute-read-too-early", "error", True, "python.attribute_read_too_early"),
     "PYC088": ("unset-environment-variable", "warning", True, "python.unset_environment_variable"),
     "PYC089": ("image-decoded-as-other-kind", "error", True, "python.image_decoded_as_other_kind"),
+    "PYC090": ("timer-reads-message-attribute", "warning", True,
+               "python.timer_reads_message_attribute"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),
@@ -251,6 +256,7 @@ RULES = {
     "SYN005": ("submodule-not-checked-out", "info", True, "syntax.submodule_not_checked_out"),
     "SYN006": ("compile-error", "error", True, "syntax.compile_error"),
     "SYN007": ("newer-python-syntax", "info", True, "syntax.newer_python_syntax"),
+    "SYN008": ("unparsable-stray-yaml", "warning", True, "syntax.unparsable_stray_yaml"),
 }
 
 FIXED = frozenset({

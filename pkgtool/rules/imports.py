@@ -28,6 +28,7 @@ from pkgtool.knowledge.rosdep import (ALTERNATIVE_KEYS, ROS1_PACKAGES, ROS_MODUL
 from pkgtool.knowledge.rosdistro import (DISTROS, any_stdlib_module, close_names,
                                          digits_differ, is_released_package, is_rosdep_key,
                                          keys_for_import, stdlib_modules, typo_distance)
+from pkgtool.model.ast_nodes import TRIES
 from pkgtool.model.cmake_install import installed_python_packages
 from pkgtool.model.context import Context
 from pkgtool.model.installed import (DATA_FOLDERS, PROJECT_FILES, cmake_text, installed_data,
@@ -441,12 +442,35 @@ def run_as_a_script(package: Package, module: PythonModule,
 
 
 def runs_code_at_its_top(package: Package, module: PythonModule) -> bool:
-    """True when ``module`` runs code at its top level: a call, or an ``if __name__ ==
-    '__main__':`` block."""
+    """True when ``module`` runs code at its top level: a call, also inside a top-level
+    loop, ``if``, ``with`` or ``try`` (``for name in os.listdir(...): print(...)``), or an
+    ``if __name__ == '__main__':`` block."""
     tree = parse_tree(module.path, package.texts.get(module.path, ""))
     return isinstance(tree, ast.Module) and any(
-        isinstance(s, ast.Expr) and isinstance(s.value, ast.Call) or
-        isinstance(s, ast.If) and "__main__" in ast.unparse(s.test) for s in tree.body)
+        _called(s) or isinstance(s, ast.If) and "__main__" in ast.unparse(s.test) or
+        isinstance(s, _BLOCKS) and any(_called(inner) for inner in _block_statements(s))
+        for s in tree.body)
+
+
+_BLOCKS = (ast.For, ast.AsyncFor, ast.While, ast.If, ast.With, ast.AsyncWith, *TRIES)
+"""Statements holding blocks of statements that run where they stand."""
+
+
+def _called(statement: ast.stmt) -> bool:
+    """True for a statement that is a call (``print(total)``)."""
+    return isinstance(statement, ast.Expr) and isinstance(statement.value, ast.Call)
+
+
+def _block_statements(statement: ast.stmt) -> Iterator[ast.stmt]:
+    """The statements of the blocks of ``statement``, at any depth of blocks (not inside
+    functions or classes)."""
+    for field in ("body", "orelse", "finalbody", "handlers"):
+        for inner in getattr(statement, field, []):
+            inner_body = inner.body if isinstance(inner, ast.ExceptHandler) else [inner]
+            for one in inner_body:
+                yield one
+                if isinstance(one, _BLOCKS):
+                    yield from _block_statements(one)
 
 
 def importers_of(package: Package, module: PythonModule) -> dict[str, list[Import]]:

@@ -9,12 +9,13 @@ is not a literal, a project base class, ``self`` handed to other code).
 from __future__ import annotations
 
 import ast
+import builtins
 import posixpath
 import re
 from difflib import get_close_matches
 from collections.abc import Iterable, Iterator
 
-from pkgtool.knowledge.rosdistro import typo_of
+from pkgtool.knowledge.rosdistro import any_stdlib_module, typo_distance, typo_of
 from pkgtool.model.ast_nodes import last_name, nodes_of_class, subtree, walk_once
 from pkgtool.model.installed import installed_data
 from pkgtool.model.launch import NodeRef
@@ -43,6 +44,17 @@ DECLARES = frozenset({"declare_parameter", "declare_parameters"})
 """Node methods that declare parameters."""
 BUILT_IN = frozenset({"use_sim_time", "start_type_description_service"})
 """Parameters rclpy's Node declares itself (Jazzy)."""
+SIM_TIME = "use_sim_time"
+"""The parameter every ROS 2 node has: take the time from ``/clock`` (a simulator's)."""
+
+
+def sim_time_typo(name: str) -> bool:
+    """True when the last part of a parameter name is one or two edits from ``use_sim_time``
+    (DAT025's to report; DAT010 leaves it alone)."""
+    last = name.rpartition(".")[2]
+    return last != SIM_TIME and typo_distance(last, SIM_TIME, budget=2) <= 2
+
+
 _BOOLS = frozenset({"Y", "y", "yes", "Yes", "YES", "true", "True", "TRUE", "on", "On", "ON",
                     "N", "n", "no", "No", "NO", "false", "False", "FALSE", "off", "Off", "OFF"})
 """Plain scalars rcl's YAML parameter parser reads as booleans."""
@@ -376,15 +388,25 @@ def module_nodes(package: Package) -> dict[str, ModuleNodes]:
         declaring = _declaring_calls(tree, index) if direct else []
         found[module.path] = ModuleNodes(
             tuple(_node_class(module.path, c, index, skip, declaring) for c in direct),
-            any(c not in direct and _may_be_a_node(c) for c in index.classes), calls)
+            any(c not in direct and _may_be_a_node(c, index) for c in index.classes), calls)
     return found
 
 
-def _may_be_a_node(cls: ast.ClassDef) -> bool:
-    """False for a class that derives from nothing (``class PController:``, ``(object)``):
-    it cannot be a node; any other may be one through its bases."""
-    return cls.keywords != [] or any(not (isinstance(b, ast.Name) and b.id == "object")
-                                     for b in cls.bases)
+def _may_be_a_node(cls: ast.ClassDef, index: Index) -> bool:
+    """False for a class that derives from nothing (``class PController:``, ``(object)``) or
+    only from Python's own classes (``class Mode(Enum)``, ``(Exception)``, ``(Thread)``): it
+    cannot be a node; any other may be one through its bases."""
+    return cls.keywords != [] or not all(_python_class(b, index) for b in cls.bases)
+
+
+def _python_class(base: ast.expr, index: Index) -> bool:
+    """True for a base that is a builtin class (``object``, ``Exception``) or a class of the
+    standard library (``enum.Enum``, ``threading.Thread``, ``typing.NamedTuple``)."""
+    if isinstance(base, ast.Name) and base.id not in index.bound:
+        return isinstance(getattr(builtins, base.id, None), type)
+    qualified = index.qualified(base) if isinstance(base, (ast.Name, ast.Attribute)) else None
+    return qualified is not None and "." in qualified and \
+        qualified.split(".")[0] in any_stdlib_module()
 
 
 def node_classes(package: Package) -> Iterator[NodeClass]:
@@ -618,14 +640,16 @@ def file_entries(package: Package, *, unseen_users: bool = False) -> Iterator[Fi
         known = tuple(n for n in names if n is not None)
         foreign = any(n.package != package.name for n in nodes)
         for document in documents:
-            for key, span, parameters in _blocks(path, document, ""):
+            for key, span, parameters in parameter_blocks(path, document):
                 matched = tuple(n for n, name in zip(nodes, known) if _matches(key, name))
                 yield FileEntry(path, key, span, matched, tuple(sorted(set(known))), parameters,
                                 foreign)
 
 
-def _blocks(path: str, mapping: object, prefix: str, depth: int = 0
-            ) -> Iterator[tuple[str, Span, object]]:
+def parameter_blocks(path: str, mapping: object, prefix: str = "", depth: int = 0
+                     ) -> Iterator[tuple[str, Span, object]]:
+    """(node key, where it is written, its ``ros__parameters`` mapping) of each node block of
+    a composed YAML document, namespaces joined with ``/``."""
     import yaml
 
     if not isinstance(mapping, yaml.MappingNode) or depth > 20:
@@ -639,7 +663,7 @@ def _blocks(path: str, mapping: object, prefix: str, depth: int = 0
             yield name, Span(path, key.start_mark.line + 1, key.start_mark.column + 1), \
                 inner["ros__parameters"]
         else:
-            yield from _blocks(path, value, name, depth + 1)
+            yield from parameter_blocks(path, value, name, depth + 1)
 
 
 def analysed_classes(package: Package, nodes: tuple[NodeRef, ...]) -> list[NodeClass] | None:

@@ -15,6 +15,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.imports import (ANY, declaration, declared, dependency_cause,
                                    no_package_named, released_for)
+from pkgtool.rules.setup_values import name_cause, setup_alias
 
 
 def unlisted_packages(package: Package, used: Iterable[tuple[str, Span]],
@@ -29,6 +30,10 @@ def unlisted_packages(package: Package, used: Iterable[tuple[str, Span]],
                 depends_on(package, name):
             continue
         seen.add(name)
+        if name == setup_alias(package):
+            yield Hit(span, f"`{name}` is used by {user} but package.xml names this package "
+                            f"`{package.name}`", cause=name_cause(name), consequence=True)
+            continue
         other = declared(package, ANY).get(name)
         missing = (f"declared only as {declaration(name, other)}" if other else
                    "not declared in package.xml")

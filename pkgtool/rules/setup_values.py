@@ -68,6 +68,13 @@ def beside_manifest(package: Package, key: str) -> tuple[str, Span, str] | None:
     return found[0], found[1], element.value
 
 
+def setup_alias(package: Package) -> str | None:
+    """setup.py's name when it is not package.xml's: what SET003 reports (its
+    :func:`name_cause`), and the name the package's files use for it then."""
+    found = beside_manifest(package, "name")
+    return found[0] if found and found[0] != found[2] else None
+
+
 def listed_packages(package: Package) -> Iterator[tuple[str, str, Span]]:
     """(name, folder, span) for each name of an explicit ``packages=[...]`` list of a checked
     setup.py, the folder mapped through ``package_dir`` as setuptools does."""

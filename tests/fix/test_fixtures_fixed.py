@@ -74,6 +74,8 @@ with): no fix
 guesses, the user chooses; the other findings
 of the case are fixed."""
 MANUAL = {("PYC078", "habits_of_other_languages"),
+          ("LCH027", "keyboard_teleop_in_launch_files"), ("DAT025", "sim_time_misspelt"),
+          ("SYN008", "parameter_file_nothing_installs"), ("PYC090", "timer_before_first_message"),
           ("LCH002", "dependency_left_out_in_a_comment"),
           ("ENT002", "module_never_written_beside_an_install_command"),
           ("ENT002", "misspelt_module_beside_custom_commands"),
@@ -121,6 +123,7 @@ MANUAL = {("PYC078", "habits_of_other_languages"),
           ("PYC014", "read_before_declaring"),
           ("LCH001", "wrong_executable_names"), ("LCH001", "data_files_walked_at_build"),
           ("LCH001", "executables_of_a_loop"), ("LCH001", "cmake_executables_never_installed"),
+          ("LCH001", "launch_file_in_a_module_called_example"),
           ("DAT009", "default_name_from_code"), ("DAT009", "renamed_copy_of_a_node"),
           ("DAT009", "xml_and_yaml_launch"), ("LCH003", "gazebo_classic_module"),
           ("DEP007", "cmake_script_without_its_helpers"),

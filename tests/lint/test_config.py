@@ -29,10 +29,11 @@ def test_defaults_are_the_default_enabled_rules() -> None:
 
 def test_select_replaces_then_extend_select_adds_then_ignore_removes() -> None:
     workspace = _layer({"select": ["SYN"], "ignore": ["SYN002"]})
-    assert _codes(workspace) == {"SYN001", "SYN003", "SYN004", "SYN005", "SYN006", "SYN007"}
+    assert _codes(workspace) == {"SYN001", "SYN003", "SYN004", "SYN005", "SYN006", "SYN007",
+                                 "SYN008"}
     package = _layer({"extend-select": ["unreadable-file"]})
     assert _codes(workspace, package) == {"SYN001", "SYN002", "SYN003", "SYN004", "SYN005",
-                                          "SYN006", "SYN007"}
+                                          "SYN006", "SYN007", "SYN008"}
     command_line = Layer("the command line", select=("SYN001",))
     assert _codes(workspace, package, command_line) == {"SYN001"}
 
@@ -107,11 +108,11 @@ def test_finder_layers_workspace_then_package_then_cli(tmp_path: Path) -> None:
     })
     finder = ConfigFinder(Layer("cli", ignore=("SYN002",)))
     a = finder.settings(tmp_path / "src/a")
-    assert {r.code for r in a.rules} == {"SYN001", "SYN004", "SYN005", "SYN006", "SYN007"} \
-        and a.strict
+    assert {r.code for r in a.rules} == {"SYN001", "SYN004", "SYN005", "SYN006", "SYN007",
+                                         "SYN008"} and a.strict
     b = finder.settings(tmp_path / "src/b")
     assert {r.code for r in b.rules} == {"SYN001", "SYN003", "SYN004", "SYN005", "SYN006",
-                                         "SYN007"}
+                                         "SYN007", "SYN008"}
     isolated = ConfigFinder(CLI, isolated=True).settings(tmp_path / "src/a")
     assert isolated.strict is False and "SYN003" in {r.code for r in isolated.rules}
 

@@ -38,6 +38,26 @@ def test_fix_follows_package_xml_and_creates_the_marker(tmp_path: Path) -> None:
     assert "$base/lib/goodpkg" in (root / "setup.cfg").read_text()
 
 
+def test_launch_files_using_the_setup_name_are_places_of_the_name_mistake(
+        tmp_path: Path) -> None:
+    root = tmp_path / "pkg"
+    shutil.copytree(FIXTURE, root)
+    (root / "launch").mkdir()
+    (root / "launch" / "talk.launch.py").write_text(
+        "from launch import LaunchDescription\nfrom launch_ros.actions import Node\n\n\n"
+        "def generate_launch_description():\n"
+        "    return LaunchDescription([Node(package='good_pkg', executable='talker')])\n")
+    setup = root / "setup.py"
+    setup.write_text(setup.read_text().replace(
+        "        ('share/' + package_name, ['package.xml']),\n",
+        "        ('share/' + package_name, ['package.xml']),\n"
+        "        ('share/' + package_name + '/launch', ['launch/talk.launch.py']),\n"))
+    (finding,) = _lint(root, ignore=("LCH003",))  # launch and launch_ros: not declared
+    assert finding.code == "SET003"
+    assert "`launch/talk.launch.py:1` (DAT005), `launch/talk.launch.py:6` (LCH002)" in \
+        finding.message
+
+
 MISSPELLED = Path(__file__).parents[1] / "fixtures" / "MAN021" / "bad" / \
     "misspelling_and_its_consequences"
 

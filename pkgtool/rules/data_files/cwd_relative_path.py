@@ -61,7 +61,9 @@ def cwd_relative_path(package: Package) -> Iterator[Hit]:
     string literal, or a name or `self.x` assigned that literal and nothing else. A module
     that asks whether files exist (`os.path.exists()` and the like) or changes the working
     folder (`os.chdir()`) is left alone: it may fall back when the file is not there, or
-    open it from the right folder. Tests are not checked (pytest runs them from a known folder).
+    open it from the right folder. Nor is a path a module of the package also opens to write
+    (`open('data.json', 'w')`): a file nodes exchange where they run, of which the package's
+    copy is a sample. Tests are not checked (pytest runs them from a known folder).
 
     ## Why is this bad?
     A relative path is resolved against the working folder of the process, not against the
@@ -86,12 +88,16 @@ def cwd_relative_path(package: Package) -> Iterator[Hit]:
     indexes = [(module.path, index) for module, _, index in installed_trees(package)]
     shares = _share_paths(package)
     installed_as = {below: source for source, below in shares.items()}
+    written = {posixpath.normpath(text) for _, index in indexes for call in index.calls
+               for text in _written_texts(call, index)}
     for path, index in [*indexes, *launch_indexes(package)]:
         if checks_files(index, _SETS_THE_FOLDER):
             continue
         for call in index.calls:
             read = _file_read(call, index)
             for text in _path_texts(read, index) if read is not None else ():
+                if posixpath.normpath(text) in written:
+                    continue  # a file the nodes exchange where they run: the copy a sample
                 named = _named(text.removeprefix("./"), package, installed_as) or \
                     _beside(path, text, package)
                 if named is not None:
@@ -159,6 +165,18 @@ def _file_read(call: ast.Call, index: Index) -> ast.expr | None:
              isinstance(argument.func, ast.Name) and argument.func.id == "str"):
         argument = argument.args[0]
     return argument
+
+
+def _written_texts(call: ast.Call, index: Index) -> list[str]:
+    """The relative path an ``open()`` call writes (a mode with ``w``, ``a`` or ``x``)."""
+    func = call.func
+    mode = call.args[1] if len(call.args) > 1 else \
+        next((k.value for k in call.keywords if k.arg == "mode"), None)
+    if not (isinstance(func, ast.Name) and func.id == "open" and "open" not in index.bound and
+            call.args and isinstance(mode, ast.Constant) and isinstance(mode.value, str) and
+            _WRITES & set(mode.value)):
+        return []
+    return [text for text in _path_texts(call.args[0], index) if not posixpath.isabs(text)]
 
 
 def _path_texts(value: ast.expr, index: Index) -> list[str]:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Callable, Iterator
 
 from pkgtool.findings import Hit, Severity, shortened
@@ -42,18 +43,20 @@ def home_folder_path(package: Package) -> Iterator[Hit]:
     Reports absolute paths into a named user's home folder (`/home/alice/...`,
     `/Users/alice/...`, and root's into a workspace's `src` or `install` folder:
     `/root/ros2_ws/src/...`): string literals of installed modules and Python launch files (not
-    docstrings, nor messages given to `print`, a logger, `argparse` or a launch argument's
-    `description`; not a path the file asks exists, given to `os.path.exists()` and the like
-    or bound to a name such a check is built from, as code that falls back when a machine
-    lacks the file does), and values in XML and YAML launch files and in the YAML
-    and XML files the package installs (not comments; in a package whose installed files
-    are not known, those outside `doc`, `docs` and `example` folders and hidden ones: CI
-    settings such as `.travis.yml` name the CI machine's home). In Python, also a
-    path built from the home folder into a colcon workspace's `src` or `install` folder
+    docstrings, nor messages given to `print`, a logger, `argparse`, a launch argument's
+    `description` or an exception raised; not a path the file asks exists, given to
+    `os.path.exists()` and the like or bound to a name such a check is built from, as code that
+    falls back when a machine lacks the file does), and values in XML and YAML launch files and
+    in the YAML and XML files the package installs (not comments; in a package whose installed
+    files are not known, those outside `doc`, `docs` and `example` folders and hidden ones: CI
+    settings such as `.travis.yml` name the CI machine's home). In Python, also a path built
+    from the home folder into a colcon workspace's `src` or `install` folder
     (`'~/ros2_ws/src/...'`, `os.path.join(os.getenv('HOME'), 'ws', 'src', ...)`,
-    `f"{os.environ['HOME']}/ros2_ws/install/..."`, `Path.home() / 'ros2_ws/src/...'`; the
-    home folder also through a name bound once to it, `HOME = os.path.expanduser('~')`).
-    Tests and test data are left alone.
+    `f"{os.environ['HOME']}/ros2_ws/install/..."`, `Path.home() / 'ros2_ws/src/...'`; the home
+    folder also through a name bound once to it, `HOME = os.path.expanduser('~')`). Also an
+    absolute path outside home folders into a workspace's `src` folder through a folder named
+    like this package or one of its workspace (`/team/ros_ws/src/my_pkg/...`: a lab machine's
+    or a container's checkout). Tests and test data are left alone.
 
     ## Why is this bad?
     The path exists on the author's machine only: on a teammate's, a grader's, the robot's
@@ -73,18 +76,20 @@ def home_folder_path(package: Package) -> Iterator[Hit]:
     """
     checked = {module.path for module, _, _ in installed_trees(package)} | \
         {f.path for f in package.launch_files if f.kind == "python"}
-    for path, _, tree in python_files(package, (*_HINTS, *_HOME_HINTS)):
+    names = frozenset((package.name, *package.context.workspace))
+    for path, _, tree in python_files(package, (*_HINTS, *_HOME_HINTS, _SRC)):
         if path in checked:
             index = index_of(tree)
             tested = _tested(tree, index)
-            for hit, node in (*_python_paths(path, tree), *_workspace_paths(path, tree, index)):
+            for hit, node in (*_python_paths(path, tree, names),
+                              *_workspace_paths(path, tree, index)):
                 if not tested(node):
                     yield hit
     shipped = _shipped(package)
     for path, text in sorted(package.texts.items()):
         if path.endswith(_DATA_SUFFIXES) and path != "package.xml" and shipped(path) and \
-                not is_test_material(path) and any(h in text for h in _HINTS):
-            yield from _text_paths(path, text)
+                not is_test_material(path) and any(h in text for h in (*_HINTS, _SRC)):
+            yield from _text_paths(path, text, names)
 
 
 _ASIDE = frozenset({"doc", "docs", "example", "examples"})
@@ -105,16 +110,30 @@ def _shipped(package: Package) -> Callable[[str], bool]:
         any(part.startswith(".") for part in path.split("/")))  # CI settings: .travis.yml
 
 
-def _python_paths(path: str, tree: ast.Module) -> Iterator[tuple[Hit, ast.AST]]:
+def _python_paths(path: str, tree: ast.Module, names: frozenset[str]
+                  ) -> Iterator[tuple[Hit, ast.AST]]:
     parents = walk_once(tree).parents
     for node in nodes_of_class(tree, ast.Constant):
         value = getattr(node, "value", None)
-        found = (HOME_PATH.search(value) or _PLACEHOLDER_HOME.search(value)) \
-            if isinstance(value, str) else None
+        found = (HOME_PATH.search(value) or _PLACEHOLDER_HOME.search(value) or
+                 _source_tree(value, names)) if isinstance(value, str) else None
         if found is None or "\n" in value or _docstring(node, parents) or \
                 _message(node, parents):
             continue
         yield _hit(Span(path, node.lineno, node.col_offset + 1), found.group(0), value), node
+
+
+_SRC = "/src/"
+_SOURCE_TREE = lazy_pattern(r"(?<![\w.~$}/-])/(?:[\w.-]+/)+?src/((?:[\w.-]+/)+)[\w.-]")
+"""An absolute path into the ``src`` folder of a workspace (``/ws/src/my_pkg/map.pgm``)."""
+
+
+def _source_tree(text: str, names: frozenset[str]) -> re.Match[str] | None:
+    """The absolute path into a workspace's ``src`` folder in ``text`` that goes through a
+    folder named like this package or one of its workspace (``/team/ws/src/my_pkg/...``,
+    outside any home folder: a container's or a lab machine's checkout)."""
+    found = _SOURCE_TREE.search(text)
+    return found if found and names & set(found.group(1).split("/")) else None
 
 
 def _tested(tree: ast.Module, index: Index) -> Callable[[ast.AST], bool]:
@@ -237,10 +256,11 @@ def _is_home(node: ast.expr, index: Index, homes: frozenset[str]) -> bool:
                                                                                 "$HOME")
 
 
-def _text_paths(path: str, text: str) -> Iterator[Hit]:
+def _text_paths(path: str, text: str, names: frozenset[str]) -> Iterator[Hit]:
     for number, line in enumerate(text.splitlines(), 1):
         stripped = line.strip()
-        found = HOME_PATH.search(line) if not stripped.startswith(("#", "<!--")) else None
+        found = HOME_PATH.search(line) or _source_tree(line, names) \
+            if not stripped.startswith(("#", "<!--")) else None
         if found is not None and "#" not in line[:found.start()]:
             end = _PATH_END.search(line, found.end())
             yield _hit(Span(path, number, found.start() + 1), found.group(0),
@@ -249,6 +269,10 @@ def _text_paths(path: str, text: str) -> Iterator[Hit]:
 
 def _hit(span: Span, start: str, value: str) -> Hit:
     shown = value if len(value) <= 80 else value[:77] + "..."
+    if not start.startswith(_HINTS):
+        return Hit(span, f"`{shown}` is in the source folder of one machine's workspace "
+                   f"(`{start.partition('/src/')[0]}`): on any other machine the file is not "
+                   "there")
     user = "root" if start.startswith("/root/") else start.split("/")[2]
     return Hit(span, f"`{shown}` is in the home folder of the user `{user}`: on any other "
                "machine the file is not there")
@@ -260,7 +284,8 @@ def _docstring(node: ast.AST, parents: dict[int, ast.AST]) -> bool:
 
 
 def _message(node: ast.AST, parents: dict[int, ast.AST]) -> bool:
-    """True for a string (or part of an f-string) given to one of :data:`_MESSAGES`."""
+    """True for a string (or part of an f-string) given to one of :data:`_MESSAGES`, or to
+    the exception a ``raise`` makes (``raise FileNotFoundError(f'tried {path}')``)."""
     parent = parents.get(id(node))
     if isinstance(parent, ast.JoinedStr):
         node, parent = parent, parents.get(id(parent))
@@ -273,4 +298,4 @@ def _message(node: ast.AST, parents: dict[int, ast.AST]) -> bool:
     func = parent.func
     name = func.attr if isinstance(func, ast.Attribute) else \
         func.id if isinstance(func, ast.Name) else None
-    return name in _MESSAGES
+    return name in _MESSAGES or isinstance(parents.get(id(parent)), ast.Raise)

@@ -37,9 +37,12 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     and a module or Python launch file that makes folders (`os.makedirs`) or loads an
     optional `.env` file (`load_dotenv`) is left alone; a launch file asking whether a path
     exists is left alone for that path and those below it (for all when it asks of a path
-    pkgtool cannot work out), and so is a folder data_files installs into (setuptools
-    makes it, files or not), and a file in a folder setup.py installs only when it exists
-    (`glob('maps/*') if os.path.exists('maps') else []`: the user makes it).
+    pkgtool cannot work out); so is a name with no suffix for which the package has a file
+    with one (`worlds/arena` for `worlds/arena.sdf`, but not as a node's parameter file):
+    launch files pass such names on to ones that add the suffix; and so is a folder
+    data_files installs into (setuptools makes it, files or not), and a file in a folder
+    setup.py installs only when it exists (`glob('maps/*') if os.path.exists('maps') else
+    []`: the user makes it).
     A path the code builds but never uses (the value of a local name never read, read only
     by nodes it never starts, or replaced before any use; of a module-level name nothing
     reads or imports; or stored in `self.x` that the module never reads) is not read
@@ -70,11 +73,29 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
             continue  # a file git ignores is the user's to make (a calibration, a map)
         known = {target[len(share):] for target in installed if target.startswith(share)}
         known.update(package.files)
+        if _suffix_added(relative, known) and \
+                (ref.package, ref.parts) not in _parameter_files(package, reader):
+            continue  # a name the reader or the launch file it includes adds `.sdf` to
         close = get_close_matches(relative, sorted(known), n=1)
         hint = f" (did you mean `{close[0]}`?)" if close else ""
         yield Hit(ref.span, f"`{relative}` is no file of `{package.name}`: `{reader}` "
                             f"reads it from the share folder, where nothing installs it{hint}",
                   f"Write `{close[0]}`" if close else None)
+
+
+def _suffix_added(relative: str, known: set[str]) -> bool:
+    """True when ``relative`` has no suffix and a file of that name with one is known
+    (``worlds/arena`` for ``worlds/arena.sdf``): launch files pass such names on to ones
+    that add the suffix (``[LaunchConfiguration('world'), '.sdf']``)."""
+    return "." not in relative.rpartition("/")[2] and \
+        any(k.startswith(relative + ".") and "/" not in k[len(relative):] for k in known)
+
+
+def _parameter_files(package: Package, reader: str) -> set[tuple[str | None, tuple[str, ...]]]:
+    """The share files (package, parts) the launch file ``reader`` gives a node as its
+    parameters: paths rcl opens as they are."""
+    return {(ref.package, ref.parts) for launch in package.launch_files if launch.path == reader
+            for node in launch.nodes for ref in node.parameter_files}
 
 
 _EXISTENCE = lazy_pattern(r"\b(?:exists|isdir|is_dir)\(")

@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 import ast
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
+from pkgtool.model.span import Span
 from pkgtool.rules.node_parameters import (
-    analysed_classes, file_entries, flat_parameters, mixed_list, python_type, span_of,
+    NodeClass, analysed_classes, file_entries, flat_parameters, mixed_list, python_type, span_of,
     yaml_type)
 from pkgtool.rules.registry import rule
 
@@ -65,19 +66,33 @@ def parameter_type_mismatch(package: Package) -> Iterator[Hit]:
                           "list: rcl rejects the file")
                 continue
             found = yaml_type(value)
-            wanted = {d.type for c in classes for d in c.declared if d.name == name} - {None}
-            if found is not None and wanted and found not in wanted:
-                yield Hit(span_of(entry.path, value), f"`{name}` is declared "
-                          f"{' or '.join(sorted(wanted))} but the file gives {found}: the node "
-                          "raises InvalidParameterTypeException")
+            if found is not None:
+                yield from _mismatch(span_of(entry.path, value), name, classes, found, "file")
     for launch in package.launch_files:
         for node in launch.nodes:
             classes = analysed_classes(package, (node,)) if node.inline_parameters else None
             for name, span, text in node.inline_parameters if classes else ():
                 found = python_type(ast.literal_eval(text)) if text is not None else None
-                wanted = {d.type for c in classes or () for d in c.declared
-                          if d.name == name} - {None}
-                if found is not None and wanted and found not in wanted:
-                    yield Hit(span, f"`{name}` is declared {' or '.join(sorted(wanted))} but "
-                              f"the launch file gives {found}: the node raises "
-                              "InvalidParameterTypeException")
+                if found is not None:
+                    yield from _mismatch(span, name, classes or [], found, "launch file")
+
+
+def _mismatch(span: Span, name: str, classes: Iterable[NodeClass], found: str, giver: str
+              ) -> Iterator[Hit]:
+    """A hit when the nodes' declarations of ``name`` have types and ``found`` is none of them:
+    at the value, with the declarations as related places (either side may be the mistake)."""
+    declared = [d for c in classes for d in c.declared if d.name == name and d.type]
+    wanted = sorted({d.type for d in declared if d.type})
+    if not wanted or found in wanted:
+        return
+    where = ", ".join(f"`{d.span.path}:{d.span.line}`" for d in declared)
+    fix = None
+    if wanted == ["INTEGER"] and found == "DOUBLE":
+        fix = ("Declare the parameter with a float default (`1.0`, not `1`) if it takes "
+               "fractions; else write an integer")
+    elif found != "INTEGER" or wanted != ["DOUBLE"]:
+        fix = (f"Give the value the declared type, or declare the parameter with a {found} "
+               "default if that is the type it takes")
+    yield Hit(span, f"`{name}` is declared {' or '.join(wanted)} (at {where}) but the {giver} "
+                    f"gives {found}: the node raises InvalidParameterTypeException", fix,
+              related=tuple(d.span for d in declared))

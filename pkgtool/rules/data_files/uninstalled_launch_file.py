@@ -13,7 +13,7 @@ from pkgtool.model.launch import (in_launch_folder, is_launch_file, is_launch_te
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup_values import checked_setup
+from pkgtool.rules.setup_values import checked_setup, name_cause, setup_alias
 
 NOT_INSTALLED_FOLDERS = frozenset({"test", "tests", "doc", "docs", "docker", ".devcontainer"})
 """Top-level folders whose launch files are test or documentation material, or what a
@@ -71,11 +71,16 @@ def uninstalled_launch_file(package: Package) -> Iterator[Hit]:
     share = f"share/{package.name}/"
     shared = {source for target, source in installed.items() if target.startswith(share)}
     names = {target.rsplit("/", 1)[-1] for target in installed if target.startswith(share)}
+    alias = setup_alias(package)
+    aliased = {source for target, source in installed.items()
+               if alias and target.startswith(f"share/{alias}/")}
     for path in _launch_files(package):
         name = path.rsplit("/", 1)[-1]
         if path not in shared and name not in names:
             yield Hit(Span(path, 1, 1), f"`{path}` is not installed under `{share[:-1]}`: "
-                                        f"`ros2 launch {package.name} {name}` will not find it")
+                                        f"`ros2 launch {package.name} {name}` will not find it",
+                      cause=name_cause(alias) if path in aliased else "",
+                      consequence=path in aliased)
 
 
 def _not_installed_by_cmake(package: Package) -> Iterator[Hit]:

@@ -7,8 +7,8 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.node_parameters import (
-    BUILT_IN, analysed_classes, file_entries, flat_parameters, makes_a_declaring_node, near,
-    span_of)
+    BUILT_IN, analysed_classes, file_entries, flat_parameters, fully_seen_parameter_files,
+    makes_a_declaring_node, near, sim_time_typo, span_of)
 from pkgtool.rules.registry import rule
 
 
@@ -18,7 +18,10 @@ def unknown_parameter_in_file(package: Package) -> Iterator[Hit]:
     """A parameter file or launch file sets a parameter that the node's code never declares.
 
     ## What it does
-    For the blocks of parameter files checked by DAT009, when every node a block applies to
+    For the blocks of parameter files checked by DAT009, and those of the files the launch
+    files give the nodes they name when another node gets a file chosen at run time (a
+    launch argument: its default, say) but a block for any node (`/**`), which that node may
+    read too, when every node a block applies to
     runs an executable of this package whose `Node` subclass is known (as for DAT009),
     checks each parameter under `ros__parameters` (nested mappings are dotted names:
     `pid: {p: 1}` is `pid.p`) against the names the class's module declares with
@@ -57,7 +60,10 @@ def unknown_parameter_in_file(package: Package) -> Iterator[Hit]:
     """
     if makes_a_declaring_node(package):
         return  # a MoveItPy node in one of its processes may take any parameter given
-    for entry in file_entries(package):
+    fully_seen = fully_seen_parameter_files(package)
+    for entry in file_entries(package, unseen_users=True):
+        if entry.path not in fully_seen and "*" in entry.key.rpartition("/")[2]:
+            continue  # a node given a file chosen at run time may read this block too
         classes = analysed_classes(package, entry.matched)
         if classes is None:
             continue
@@ -79,4 +85,4 @@ def unknown_parameter_in_file(package: Package) -> Iterator[Hit]:
 def _unknown(name: str, declared: list[str]) -> bool:
     """True when a parameter set for a node is none the node declares (nor built in)."""
     return name not in declared and name not in BUILT_IN and not name.startswith(
-        "qos_overrides.")
+        "qos_overrides.") and not sim_time_typo(name)

@@ -31,8 +31,10 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
     checked against that package's console scripts when it is an ament_python package whose
     setup.py and setup.cfg say all it installs (evaluated statically, no data_files into
     `lib/<package>`). Executables given by launch arguments or other substitutions are not
-    checked, nor nodes that are never started (assigned to a local name the function never
-    reads): the executable is looked up only when a node starts, so such a node cannot fail.
+    checked, nor an absolute path (`executable='/usr/bin/python3'`: launch_ros runs a path
+    with folders as it is, given `lib/<package>` exists), nor nodes that are never started
+    (assigned to a local name the function never reads): the executable is looked up only
+    when a node starts, so such a node cannot fail.
     LCH005 still checks their arguments, which the `Node()` call itself rejects. In a package
     built with CMake, a node naming `detector` is reported when the CMakeLists.txt installs
     the script `detector.py` with `install(PROGRAMS ...)` into `lib/` (under its file name)
@@ -69,7 +71,8 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
     for launch in package.launch_files:
         for node in launch.nodes:
             if node.package is None or node.executable is None or node.unused or \
-                    LAUNCH_FILE_NAME.search(node.executable):  # LCH017's
+                    LAUNCH_FILE_NAME.search(node.executable) or \
+                    node.executable.startswith("/"):  # LCH017's; a path runs as it is
                 continue
             if not node.executable.strip():
                 yield Hit(node.executable_span or node.span,

@@ -29,7 +29,9 @@ def misspelled_topic(package: Package) -> Iterator[Hit]:
     or a swap of neighbours), unless the two differ in a digit (`robot1`, `robot2`), in
     one word of a pair names of paired topics use (`can_tx` and `can_rx`, `left`/`right`,
     `global`/`local`, `in`/`out`, `ping`/`pong`...) or in one short word wholly replaced
-    (`dt/status`, `ui/status`: two namespaces): another package may publish it. The
+    (`dt/status`, `ui/status`: two namespaces): another package may publish it; or, when no
+    name is a typo away, exactly one is made of the same words in another order
+    (`battery_low` for `low_battery`). The
     same for a client whose service name no service of the package has, a typo away from the
     one name served with the same service type, and for rclpy's action clients and servers.
 
@@ -51,24 +53,25 @@ def misspelled_topic(package: Package) -> Iterator[Hit]:
     self.create_subscription(String, 'chatter', self.on_message, 10)
     ```
     """
-    for endpoint, meant in _near_misses(endpoints(package), "publisher", "subscription"):
+    for endpoint, meant, how in _near_misses(endpoints(package), "publisher", "subscription"):
         yield Hit(endpoint.type_span,
                   f"The subscription to `{endpoint.topic}` gets nothing this package "
-                  f"publishes: it publishes `{endpoint.type}` on `{meant}`, a typo away "
+                  f"publishes: it publishes `{endpoint.type}` on `{meant}`, {how} "
                   f"(did you mean `{meant}`?)")
     for action in ("", "action "):
-        for endpoint, meant in _near_misses(service_endpoints(package), f"{action}server",
-                                            f"{action}client"):
+        for endpoint, meant, how in _near_misses(service_endpoints(package),
+                                                 f"{action}server", f"{action}client"):
             yield Hit(endpoint.type_span,
                       f"The {action}client of `{endpoint.topic}` calls a name nothing in this "
-                      f"package serves: it serves `{endpoint.type}` as `{meant}`, a typo away "
+                      f"package serves: it serves `{endpoint.type}` as `{meant}`, {how} "
                       f"(did you mean `{meant}`?)")
 
 
 def _near_misses(found: tuple[Endpoint, ...], offering: str, using: str
-                 ) -> Iterator[tuple[Endpoint, str]]:
+                 ) -> Iterator[tuple[Endpoint, str, str]]:
     """Each endpoint of kind ``using`` whose name no endpoint of kind ``offering`` has, with
-    the one offered name of the same type a typo away from it."""
+    the one offered name of the same type a typo away from it, or else made of the same
+    words in another order, and which of the two it is."""
     offered: dict[str, set[str | None]] = {}
     for endpoint in found:
         if endpoint.kind == offering:
@@ -81,7 +84,17 @@ def _near_misses(found: tuple[Endpoint, ...], offering: str, using: str
         meant = typo_of(name, same_type)
         if meant is not None and not digits_differ(name, meant) and \
                 not _not_a_typo(name, meant):
-            yield endpoint, meant
+            yield endpoint, meant, "a typo away"
+            continue
+        reordered = [t for t in same_type if _words(t) == _words(name)]
+        if len(reordered) == 1:
+            yield endpoint, reordered[0], "its words in another order"
+
+
+def _words(name: str) -> list[str]:
+    """The words of a topic or service name (parts between ``/`` and ``_``), sorted: names
+    made of the same words in another order (``battery_low``, ``low_battery``) are equal."""
+    return sorted(re.split(r"[/_]", name))
 
 
 _OPPOSITES = frozenset(frozenset(pair.split("/")) for pair in """tx/rx in/out input/output

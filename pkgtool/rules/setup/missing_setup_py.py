@@ -17,7 +17,9 @@ def missing_setup_py(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Reports a package.xml whose `<build_type>` is `ament_python`, or that declares no build
-    type, has no CMakeLists.txt and holds Python modules, when there is no setup.py next to it.
+    type, has no CMakeLists.txt and holds Python modules (launch files aside), when there is
+    no setup.py next to it; not one depending on `catkin` as its build tool, which colcon
+    builds as a catkin package (MAN015 says what it lacks).
 
     ## Why is this bad?
     colcon's ament_python build runs setup.py; without it the package does not build, and
@@ -53,8 +55,10 @@ def missing_setup_py(package: Package) -> Iterator[Hit]:
                       "Declare `<build_type>ament_cmake</build_type>` if CMake builds this "
                       "package; otherwise add a `setup.py`" if cmake else None)
         return
-    has_python = any(not m.is_test for m in package.modules)
-    if has_python and not package.has_file("CMakeLists.txt"):
+    launch = {f.path for f in package.launch_files}
+    has_python = any(not m.is_test and m.path not in launch for m in package.modules)
+    if has_python and not package.has_file("CMakeLists.txt") and \
+            "catkin" not in manifest.depends({"buildtool_depend"}):
         yield Hit(manifest.root.span,
                   "The package holds Python modules but has neither `setup.py` nor "
                   "`CMakeLists.txt`")

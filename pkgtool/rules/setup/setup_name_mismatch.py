@@ -7,7 +7,7 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
-from pkgtool.rules.setup_values import beside_manifest, name_cause
+from pkgtool.rules.setup_values import beside_manifest, name_cause, setup_alias
 
 
 @rule("SET003", "setup-name-mismatch", Severity.WARNING,
@@ -35,7 +35,7 @@ def setup_name_mismatch(package: Package) -> Iterator[Hit]:
     ```
     """
     found = beside_manifest(package, "name")
-    if found and found[0] != found[2]:
+    if found and setup_alias(package):
         name, span, wanted = found
         folder = (f" (the folder is `{name}` too: if package.xml's `<name>` is the one misspelt, "
                   "correct it there instead)" if package.root.name == name else "")

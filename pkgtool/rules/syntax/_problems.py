@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Callable, Iterator, Mapping
 
 from pkgtool.findings import Hit
-from pkgtool.model.installed import installed_files
+from pkgtool.model.installed import installed_data, installed_files, is_ament_python
 from pkgtool.model.launch import kept_aside
 from pkgtool.model.package import Package
 from pkgtool.model.span import ParseProblem
@@ -35,3 +35,17 @@ def set_aside(package: Package, path: str) -> bool:
     the package neither installs nor has pytest collect: nothing builds, runs or imports it."""
     return path.endswith(".py") and kept_aside(path) and \
         path not in installed_files(package) and path not in test_files(package)
+
+
+def stray_yaml(package: Package, problem: ParseProblem) -> bool:
+    """True for a YAML file of an ament_python package that data_files does not install and
+    no other file of the package names (a log or a numpy dump with a ``.yaml`` suffix, an
+    old copy): nothing builds, installs or reads it."""
+    path = problem.span.path
+    installed = installed_data(package) if problem.kind == "yaml-syntax" and \
+        is_ament_python(package) else None
+    if installed is None or path in installed.values() or \
+            any(launch.path == path for launch in package.launch_files):
+        return False
+    name = path.rpartition("/")[2]
+    return not any(name in text for other, text in package.texts.items() if other != path)

@@ -15,7 +15,7 @@ from pkgtool.rules.registry import rule
 from pkgtool.rules.ros1_platform import is_python2_package, is_ros1_package
 from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.rules.syntax._newer_syntax import newer_syntax
-from pkgtool.rules.syntax._problems import problem_hits, set_aside
+from pkgtool.rules.syntax._problems import problem_hits, set_aside, stray_yaml
 
 _PARSE_KINDS = {
     "xml-syntax": "XML is not well-formed",
@@ -33,7 +33,10 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports XML that is not well-formed, Python with a syntax error, YAML (launch and
     parameter files) or setup.cfg that does not parse, at the line and column the parser gave.
-    Test material is left alone where tests of error handling keep files broken on purpose:
+    A YAML file of an ament_python package that data_files does not install and no other
+    file of the package names (a log, a numpy dump saved as `.yaml`, an old copy) is SYN008's
+    (a warning): nothing builds, installs or reads it. Test material is left alone where
+    tests of error handling keep files broken on purpose:
     Python files under `test/` that pytest does not collect, and YAML under `test/`,
     `test_data/`, `testdata/` and similar folders. Nor are OpenCV's `FileStorage` files
     (starting `%YAML:1.0`), which OpenCV reads and YAML parsers refuse, nor a `.py` file
@@ -78,7 +81,7 @@ def unparsable_file(package: Package) -> Iterator[Hit]:
     yield from problem_hits(package, _PARSE_KINDS, lambda p: not newer_syntax(package, p) and
                             not _vendored_and_unused(package, p) and
                             not _template(package, p) and not _python2(package, p) and
-                            not set_aside(package, p.span.path))
+                            not set_aside(package, p.span.path) and not stray_yaml(package, p))
 
 
 _VENDORED = frozenset({"thirdparty", "third_party", "3rdparty", "external", "extern", "vendor",

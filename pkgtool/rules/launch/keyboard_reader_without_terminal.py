@@ -1,0 +1,54 @@
+"""LCH027: a launch file starts a keyboard teleoperation node with no terminal."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.model.package import Package
+from pkgtool.rules.registry import rule
+
+KEYBOARD_READERS = frozenset({("teleop_twist_keyboard", "teleop_twist_keyboard"),
+                              ("turtlesim", "turtle_teleop_key"),
+                              ("key_teleop", "key_teleop")})
+"""Released nodes (package, executable) that read keys from their standard input, a terminal."""
+_PREFIXES = frozenset({"prefix", "launch-prefix"})
+"""How a Python, XML or YAML launch file runs a node inside another program (a terminal)."""
+
+
+@rule("LCH027", "keyboard-reader-without-terminal", Severity.ERROR,
+      fix="Start it in a terminal of its own: `prefix='xterm -e'` (XML and YAML: "
+          "`launch-prefix=\"xterm -e\"`), or run it with `ros2 run` in another terminal")
+def keyboard_reader_without_terminal(package: Package) -> Iterator[Hit]:
+    """A launch file starts a node that reads the keyboard without giving it a terminal.
+
+    ## What it does
+    Reports a `Node` (`<node>`, YAML `node`) starting `teleop_twist_keyboard`,
+    `turtlesim`'s `turtle_teleop_key` or `key_teleop` with no `prefix` (`launch-prefix`):
+    the nodes that read keys from their standard input.
+
+    ## Why is this bad?
+    `ros2 launch` gives the processes it starts a pipe, not the terminal, as their standard
+    input (`emulate_tty=True` changes only their output): the node's first
+    `termios.tcgetattr(sys.stdin)` fails with "Inappropriate ioctl for device" and it exits,
+    or it runs and never sees a key. The robot cannot be driven.
+
+    ## Example
+    ```python
+    Node(package='teleop_twist_keyboard', executable='teleop_twist_keyboard')
+    ```
+
+    ## Use instead
+    ```python
+    Node(package='teleop_twist_keyboard', executable='teleop_twist_keyboard',
+         prefix='xterm -e')
+    ```
+    """
+    for launch in package.launch_files:
+        for node in launch.nodes:
+            if (node.package, node.executable) in KEYBOARD_READERS and not node.unused and \
+                    not _PREFIXES & set(node.arguments) and "**" not in node.arguments:
+                yield Hit(node.executable_span or node.span,
+                          f"`{node.executable}` reads keys from its standard input, which "
+                          "`ros2 launch` makes a pipe, not a terminal: it exits with "
+                          "\"Inappropriate ioctl for device\" (or never sees a key)")

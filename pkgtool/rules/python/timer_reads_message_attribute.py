@@ -1,0 +1,220 @@
+"""PYC090: a timer callback reads an attribute only a subscription callback sets."""
+
+from __future__ import annotations
+
+import ast
+from collections.abc import Iterator
+
+from pkgtool.findings import Hit, Severity
+from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
+from pkgtool.model.ast_nodes import TRIES, child_nodes, descendants, subtree
+from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.rules.node_api import derives_from_node_alone
+from pkgtool.rules.python._attribute_guards import dynamic_attributes, guarded, probed_names
+from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
+
+_CALLBACK_AT = {"create_timer": 1, "create_subscription": 2}
+"""Node methods registering a callback, by where their ``callback`` argument stands."""
+_DEFERRED = (ast.Lambda, ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
+"""Expressions whose inner code may run later, or not at all."""
+_WAITS = ("spin", "wait")
+"""Parts of the names of calls in ``__init__`` that may run callbacks or wait for a message
+before the timer starts (``rclpy.spin_once(self)``, ``wait_for_message``)."""
+
+
+@rule("PYC090", "timer-reads-message-attribute", Severity.WARNING,
+      fix="Give the attribute a value in `__init__` (`self.latest = None`) and have the timer "
+          "callback return while it has none")
+def timer_reads_message_attribute(package: Package) -> Iterator[Hit]:
+    """A timer callback reads an attribute that only a subscription callback assigns.
+
+    ## What it does
+    In a class deriving from rclpy's `Node` alone (no decorator, not extended in the
+    module), whose `__init__` registers a timer callback and a subscription callback (its
+    own methods) and waits for nothing (no `spin`, no `wait_for_message`), reports a read of
+    `self.x` in the timer callback that certainly runs (before any `try` or branch that may
+    return) when `x` is assigned only in subscription callbacks that nothing else calls: not
+    in `__init__` or another method, not a class attribute, a method, nor an attribute of
+    `Node`. Reads the module guards (`hasattr(self, 'x')`, inside `try: ... except
+    AttributeError`) are left alone.
+
+    ## Why is this bad?
+    A timer starts counting when it is made; a subscription gets its first message only when
+    a publisher sends one. When the timer fires first (the sensor, the bag or the simulator
+    is not up yet, or the period is short), `self.x` does not exist and the node dies with
+    `AttributeError` before its first message.
+
+    ## Example
+    ```python
+    def __init__(self):
+        super().__init__('nearest')
+        self.create_subscription(LaserScan, 'scan', self.on_scan, 10)
+        self.create_timer(0.1, self.on_timer)
+
+    def on_scan(self, msg):
+        self.nearest = min(msg.ranges)
+
+    def on_timer(self):
+        self.get_logger().info(f'{self.nearest:.2f} m')
+    ```
+
+    ## Use instead
+    ```python
+    def __init__(self):
+        super().__init__('nearest')
+        self.nearest = None
+        self.create_subscription(LaserScan, 'scan', self.on_scan, 10)
+        self.create_timer(0.1, self.on_timer)
+
+    def on_timer(self):
+        if self.nearest is None:
+            return
+        self.get_logger().info(f'{self.nearest:.2f} m')
+    ```
+    """
+    for module, tree, index in installed_trees(package):
+        if dynamic_attributes(tree):
+            continue
+        probed = probed_names(index)
+        extended = {b.id for c in index.classes for b in c.bases if isinstance(b, ast.Name)}
+        for cls in index.classes:
+            if derives_from_node_alone(cls, index) and cls.name not in extended and \
+                    not cls.decorator_list:
+                for node, timer, setters in _early_reads(cls, index, probed):
+                    yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
+                              f"`self.{node.attr}` is read by the timer callback `{timer}` "
+                              f"but set only by the subscription callback `{setters}`: when "
+                              "the timer fires before the first message, AttributeError "
+                              "stops the node")
+
+
+def _early_reads(cls: ast.ClassDef, index: Index, probed: frozenset[str]
+                 ) -> Iterator[tuple[ast.Attribute, str, str]]:
+    """(read, timer callback, subscription callbacks) for each attribute a timer callback of
+    ``cls`` reads that only its subscription callbacks set."""
+    methods = {f.name: f for f in cls.body if isinstance(f, FUNCTIONS)}
+    init = methods.get("__init__")
+    if init is None or _waits(init):
+        return
+    callbacks = _callbacks(init, methods)
+    timers = callbacks["create_timer"] - callbacks["create_subscription"]
+    setters = _setters(cls, index, methods)
+    own = {n.id for n in _class_level_names(cls)} | set(methods) | NODE_ATTRIBUTES
+    for timer in sorted(timers):
+        seen: set[str] = set()
+        for node in _certain_reads(methods[timer]):
+            where = setters.get(node.attr)
+            if node.attr in seen or node.attr in own or not where or \
+                    not where <= callbacks["create_subscription"] or \
+                    guarded(node, index, probed):
+                continue
+            seen.add(node.attr)
+            yield node, timer, "`, `".join(sorted(where))
+
+
+def _waits(init: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
+    """True when ``__init__`` calls something that may run callbacks or wait for messages."""
+    return any(isinstance(n, ast.Call) and any(
+        w in (n.func.attr if isinstance(n.func, ast.Attribute) else
+              n.func.id if isinstance(n.func, ast.Name) else "") for w in _WAITS)
+        for n in subtree(init))
+
+
+def _callbacks(init: ast.FunctionDef | ast.AsyncFunctionDef,
+               methods: dict[str, ast.FunctionDef | ast.AsyncFunctionDef]
+               ) -> dict[str, set[str]]:
+    """The methods ``__init__`` registers with ``self.create_timer`` and
+    ``self.create_subscription``, by registering method."""
+    found: dict[str, set[str]] = {method: set() for method in _CALLBACK_AT}
+    for node in subtree(init):
+        if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and
+                node.func.attr in _CALLBACK_AT and _is_self(node.func.value, init)):
+            continue
+        if any(k.arg == "autostart" for k in node.keywords):
+            continue  # a timer started later, maybe once a message came
+        at = _CALLBACK_AT[node.func.attr]
+        given = node.args[at] if len(node.args) > at else next(
+            (k.value for k in node.keywords if k.arg == "callback"), None)
+        if isinstance(given, ast.Attribute) and _is_self(given.value, init) and \
+                given.attr in methods:
+            found[node.func.attr].add(given.attr)
+    return found
+
+
+def _setters(cls: ast.ClassDef, index: Index,
+             methods: dict[str, ast.FunctionDef | ast.AsyncFunctionDef]) -> dict[str, set[str]]:
+    """Each attribute of ``self`` assigned in the class, with the methods assigning it; an
+    attribute also assigned elsewhere (a nested function, another receiver) or by a method
+    the class calls itself (``self.on_scan(first)``) maps to no method (an empty set)."""
+    called = {n.func.attr for n in subtree(cls) if isinstance(n, ast.Call) and
+              isinstance(n.func, ast.Attribute) and isinstance(n.func.value, ast.Name) and
+              n.func.value.id == "self"}
+    found: dict[str, set[str]] = {}
+    unknown: set[str] = set()
+    for node in subtree(cls):
+        if not isinstance(node, ast.Attribute) or isinstance(node.ctx, ast.Load):
+            continue
+        function = index.enclosing_function(node)
+        name = function.name if function is not None else None
+        if name in methods and methods[name] is function and name not in called and \
+                _is_self(node.value, function):
+            found.setdefault(node.attr, set()).add(name)
+        else:
+            unknown.add(node.attr)
+    return {attr: set() if attr in unknown else where for attr, where in found.items()}
+
+
+def _class_level_names(cls: ast.ClassDef) -> Iterator[ast.Name]:
+    """The names the class body itself binds (class attributes)."""
+    for statement in cls.body:
+        targets = statement.targets if isinstance(statement, ast.Assign) else \
+            [statement.target] if isinstance(statement, (ast.AnnAssign, ast.AugAssign)) else []
+        yield from (n for target in targets for n in descendants(target)
+                    if isinstance(n, ast.Name))
+
+
+def _certain_reads(function: ast.FunctionDef | ast.AsyncFunctionDef
+                   ) -> Iterator[ast.Attribute]:
+    """The ``self.x`` reads of ``function`` that run every time it does: its statements in
+    order up to the first ``try``, loop body or branch that may return or raise (a branch's
+    test still runs); nothing inside lambdas or nested functions."""
+    for statement in function.body:
+        if isinstance(statement, (*TRIES, *FUNCTIONS, ast.ClassDef)):
+            return
+        if isinstance(statement, (ast.If, ast.While)):
+            yield from _reads(statement.test, function)
+            if any(isinstance(n, (ast.Return, ast.Raise, ast.Break, ast.Continue))
+                   for n in descendants(statement)):
+                return
+            continue
+        if isinstance(statement, (ast.For, ast.AsyncFor)):
+            yield from _reads(statement.iter, function)
+            return
+        if isinstance(statement, (ast.With, ast.AsyncWith)):
+            return
+        yield from _reads(statement, function)
+
+
+def _reads(node: ast.AST, function: ast.FunctionDef | ast.AsyncFunctionDef
+           ) -> Iterator[ast.Attribute]:
+    """The ``self.x`` reads in ``node`` that run whenever it does: not inside lambdas,
+    comprehensions, the branches of a conditional expression or the right of ``and``/``or``."""
+    found = [node]
+    for current in found:
+        if isinstance(current, ast.Attribute) and isinstance(current.ctx, ast.Load) and \
+                _is_self(current.value, function):
+            yield current
+        if isinstance(current, ast.BoolOp):
+            found.append(current.values[0])
+        elif isinstance(current, ast.IfExp):
+            found.append(current.test)
+        elif not isinstance(current, _DEFERRED):
+            found.extend(child_nodes(current))
+
+
+def _is_self(value: ast.expr, function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
+    """True when ``value`` is the name of the method's first parameter (``self``)."""
+    arguments = function.args.posonlyargs + function.args.args
+    return isinstance(value, ast.Name) and bool(arguments) and value.id == arguments[0].arg
