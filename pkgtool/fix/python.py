@@ -191,8 +191,11 @@ def method_call(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Append ``()`` to the method PYC046 reports (``future.result`` becomes
     ``future.result()``). Safe where the code raised AttributeError (``future.result.sum``);
     where the method was tested (always true), kept as a value or named alone (the statement
-    did nothing), calling it changes what runs: unsafe."""
+    did nothing), calling it changes what runs: unsafe. A method of the package's own class
+    may need arguments: the user calls it."""
     for doc, finding, nodes in python_nodes(package, findings):
+        if "is a method of `" in finding.message:
+            continue
         method = next((n for n in nodes if isinstance(n, (ast.Attribute, ast.Name)) and
                        finding.message.startswith(f"`{ast.unparse(n)}` ")), None)
         if method is not None:

@@ -121,6 +121,10 @@ COMMAND_PACKAGES = {"xacro": "xacro"}
 PROCESS_PACKAGES = {**COMMAND_PACKAGES, "rviz2": "rviz2"}
 """Programs of ROS packages a launch file starts as processes (``ExecuteProcess(cmd=['rviz2',
 '-d', config])``), by the package that installs each."""
+PREFIX_PACKAGES = {name: name for name in ("xterm", "gnome-terminal", "konsole", "terminator",
+                                           "tmux", "valgrind")}
+"""Programs a launch file runs a node inside (``prefix='xterm -e'``, ``launch-prefix=``), by
+the rosdep key that installs each."""
 
 
 @record
@@ -200,7 +204,7 @@ def in_folder_kept_aside(path: str) -> bool:
 
 
 def is_launch_file(path: str, python_folders: frozenset[str] = frozenset(),
-                   nested: frozenset[str] = frozenset()) -> bool:
+                   nested: frozenset[str] = frozenset(), package: str = "") -> bool:
     """True for a file with a launch file name that the package keeps as a launch file.
 
     Files under ``templates/`` never are (:func:`is_template`). Anything named like a launch
@@ -208,10 +212,11 @@ def is_launch_file(path: str, python_folders: frozenset[str] = frozenset(),
     Python package folder (``python_folders``: folders holding an ``__init__.py``; it is
     installed as code), a test (``test_*``) and files under ``test/``, ``examples/``,
     ``samples/`` or ``doc/`` (run by pytest, by ``main()`` with a ``LaunchService``, or by
-    path from that folder, next to its data) are not launch files, unless the examples'
-    folder is a Python package (the module of a package called ``example``). Nor are those below a
-    ``nested`` folder (:func:`nested_packages`): they are that package's. Nor are those of a
-    folder kept aside (``backup/``, ``old/``: :func:`kept_aside`), nor :func:`hidden` files.
+    path from that folder, next to its data) are not launch files, unless that folder is
+    the Python package named like the ``package`` (a package called ``example``). Nor are
+    those below a ``nested`` folder (:func:`nested_packages`): they are that package's. Nor
+    are those of a folder kept aside (``backup/``, ``old/``: :func:`kept_aside`), nor
+    :func:`hidden` files.
     """
     folder, _, name = path.rpartition("/")
     if not name.endswith(LAUNCH_SUFFIXES) or hidden(path) or is_template(path) or \
@@ -221,13 +226,8 @@ def is_launch_file(path: str, python_folders: frozenset[str] = frozenset(),
     if "launch" in parts:
         return True
     return not (name.startswith("test_") or folder in python_folders or parts and (
-        parts[0] in NOT_LAUNCH_FOLDERS and not _examples_module(parts[0], python_folders)))
-
-
-def _examples_module(top: str, python_folders: frozenset[str]) -> bool:
-    """True for a top-level folder named like examples that is a Python package (the
-    package's own module: a package called ``example``), not a folder of examples."""
-    return top in python_folders and top not in ("test", "tests")
+        parts[0] in NOT_LAUNCH_FOLDERS and not (parts[0] == package and
+                                                parts[0] in python_folders)))
 
 
 LAUNCH_YAML = lazy_pattern(r"^launch\s*:", re.M)

@@ -16,8 +16,8 @@ from typing import Any
 
 from pkgtool.model.ast_nodes import (child_nodes, descendants, handler_stops, last_name,
                                      nodes_of_class)
-from pkgtool.model.launch import (COMMAND_PACKAGES, EXISTENCE_CHECKS, PROCESS_PACKAGES, FileRef,
-                                  NodeRef, PackageRef)
+from pkgtool.model.launch import (COMMAND_PACKAGES, EXISTENCE_CHECKS, PREFIX_PACKAGES,
+                                  PROCESS_PACKAGES, FileRef, NodeRef, PackageRef)
 from pkgtool.model.launch_remaps import not_pairs
 from pkgtool.model.launch_scopes import (bindings, import_origins, overwritten_values,
                                          read_only_by, scope_nodes, unread_argument_defaults,
@@ -426,6 +426,12 @@ class _Reader(ast.NodeVisitor):
                 always_started=node in self.certain))
         elif name == "ExecuteProcess":
             self._ros2_run(node)
+        prefix = self.value(_keyword(node, "prefix")) \
+            if action in NODE_ACTIONS or name == "ExecuteProcess" else None
+        if isinstance(prefix, str) and prefix.split() and prefix.split()[0] in PREFIX_PACKAGES:
+            self.packages.append(PackageRef(PREFIX_PACKAGES[prefix.split()[0]],
+                                            self._span(node), bool(self.optional),
+                                            bool(self.dead)))
         runs = self._command_executable(node) if name == "Command" else None
         if runs in COMMAND_PACKAGES:
             self.packages.append(PackageRef(COMMAND_PACKAGES[runs], self._span(node),

@@ -10,8 +10,8 @@ import functools
 import math
 from collections.abc import Iterator
 
-from pkgtool.model.launch import (COMMAND_PACKAGES, PROCESS_PACKAGES, FileRef, LaunchFile,
-                                  NodeRef, PackageRef)
+from pkgtool.model.launch import (COMMAND_PACKAGES, PREFIX_PACKAGES, PROCESS_PACKAGES, FileRef,
+                                  LaunchFile, NodeRef, PackageRef)
 from pkgtool.model.launch_python import NAME_REMAPS, remapped_name
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.model.xml import XmlElement
@@ -51,9 +51,10 @@ def read_launch(path: str, text: str) -> LaunchFile:
         return LaunchFile(path, kind, (), (), (), problem=found)
     nodes, values, paths, commands = found
     packages, files = _substitutions(values)
-    packages += tuple(PackageRef(PROCESS_PACKAGES[command.split()[0]], span)
+    programs = {**PROCESS_PACKAGES, **PREFIX_PACKAGES}
+    packages += tuple(PackageRef(programs[command.split()[0]], span)
                       for command, span in commands
-                      if command.split() and command.split()[0] in PROCESS_PACKAGES)
+                      if command.split() and command.split()[0] in programs)
     return LaunchFile(path, kind, tuple(nodes), packages, files,
                       paths=tuple((p, span) for p, span in paths if _static(p)))
 
@@ -130,6 +131,9 @@ def _xml(path: str, text: str) -> Read | ParseProblem:
     for element in _elements(root):
         if element.tag == "executable" and element.attribute("cmd"):
             commands.append((element.attribute("cmd") or "", element.span))
+        if element.attribute("launch-prefix") and (element.tag in NODE_TAGS or
+                                                   element.tag == "executable"):
+            commands.append((element.attribute("launch-prefix") or "", element.span))
         named = element.attribute(_XML_FILES.get(element.tag, "from")) \
             if element.tag in _XML_FILES or element.tag == "param" else None
         if named is not None:
@@ -325,11 +329,12 @@ def _yaml(path: str, text: str) -> Read | ParseProblem:
                     paths.extend((str(v.value), _yaml_span(path, v)) for k, v in value.value
                                  if getattr(k, "value", None) == _XML_FILES[key.value] and
                                  isinstance(v, yaml.ScalarNode))
-                elif isinstance(key, yaml.ScalarNode) and key.value == "executable" and \
+                if isinstance(key, yaml.ScalarNode) and (
+                        key.value == "executable" or key.value in NODE_TAGS) and \
                         isinstance(value, yaml.MappingNode):
                     commands.extend((str(v.value), _yaml_span(path, v)) for k, v in value.value
-                                    if getattr(k, "value", None) == "cmd" and
-                                    isinstance(v, yaml.ScalarNode))
+                                    if getattr(k, "value", None) in ("cmd", "launch-prefix")
+                                    and isinstance(v, yaml.ScalarNode))
                 stack.extend((value, key))
         elif isinstance(node, yaml.SequenceNode):
             stack.extend(reversed(node.value))

@@ -156,8 +156,9 @@ def load_package(root: Path, context: Context | None = None, *,
     folders, nested = python_folders(files), nested_packages(files)
     shared = _shared_sources(setup_py) | _cmake_shared(files, text_of)
     ros1 = getattr(manifest, "is_ros1", False)  # roslaunch files: not ROS 2's to check
+    own_name = manifest.name.value if manifest is not None and manifest.name else root.name
     for relpath in files:
-        if not ros1 and ((is_launch_file(relpath, folders, nested) or
+        if not ros1 and ((is_launch_file(relpath, folders, nested, own_name) or
                           _installed_as_launch_file(relpath, shared)) and
                          not is_launch_test(relpath, text_of(relpath)) and
                          not named_like_launch_only(relpath, text_of(relpath)) or

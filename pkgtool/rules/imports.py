@@ -442,18 +442,22 @@ def run_as_a_script(package: Package, module: PythonModule,
 
 
 def runs_code_at_its_top(package: Package, module: PythonModule) -> bool:
-    """True when ``module`` runs code at its top level: a call, also inside a top-level
-    loop, ``if``, ``with`` or ``try`` (``for name in os.listdir(...): print(...)``), or an
+    """True when ``module`` runs code at its top level: a call, also one anywhere inside a
+    top-level loop or ``with`` block (``for name in os.listdir(...): if is_red(name):``; not
+    inside a library's ``try``/``if`` blocks, which warn about a missing import), or an
     ``if __name__ == '__main__':`` block."""
     tree = parse_tree(module.path, package.texts.get(module.path, ""))
     return isinstance(tree, ast.Module) and any(
         _called(s) or isinstance(s, ast.If) and "__main__" in ast.unparse(s.test) or
-        isinstance(s, _BLOCKS) and any(_called(inner) for inner in _block_statements(s))
+        isinstance(s, _BLOCKS) and any(isinstance(n, ast.Call) for inner in _block_statements(s)
+                                       for n in ast.walk(inner))
         for s in tree.body)
 
 
-_BLOCKS = (ast.For, ast.AsyncFor, ast.While, ast.If, ast.With, ast.AsyncWith, *TRIES)
-"""Statements holding blocks of statements that run where they stand."""
+_BLOCKS = (ast.For, ast.AsyncFor, ast.While, ast.With, ast.AsyncWith)
+"""Top-level statements whose blocks run a script's work (loops over files, ``with open``)."""
+_INNER_BLOCKS = (*_BLOCKS, ast.If, *TRIES)
+"""Statements whose blocks run where they stand, inside those."""
 
 
 def _called(statement: ast.stmt) -> bool:
@@ -463,14 +467,12 @@ def _called(statement: ast.stmt) -> bool:
 
 def _block_statements(statement: ast.stmt) -> Iterator[ast.stmt]:
     """The statements of the blocks of ``statement``, at any depth of blocks (not inside
-    functions or classes)."""
-    for field in ("body", "orelse", "finalbody", "handlers"):
+    functions, classes or ``except`` handlers)."""
+    for field in ("body", "orelse", "finalbody"):
         for inner in getattr(statement, field, []):
-            inner_body = inner.body if isinstance(inner, ast.ExceptHandler) else [inner]
-            for one in inner_body:
-                yield one
-                if isinstance(one, _BLOCKS):
-                    yield from _block_statements(one)
+            yield inner
+            if isinstance(inner, _INNER_BLOCKS):
+                yield from _block_statements(inner)
 
 
 def importers_of(package: Package, module: PythonModule) -> dict[str, list[Import]]:

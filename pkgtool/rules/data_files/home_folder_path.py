@@ -133,7 +133,9 @@ def _source_tree(text: str, names: frozenset[str]) -> re.Match[str] | None:
     folder named like this package or one of its workspace (``/team/ws/src/my_pkg/...``,
     outside any home folder: a container's or a lab machine's checkout)."""
     found = _SOURCE_TREE.search(text)
-    return found if found and names & set(found.group(1).split("/")) else None
+    parts = found.group(0).split("/") if found else []
+    return found if found and names & set(found.group(1).split("/")) and \
+        not {".", ".."} & set(parts) else None
 
 
 def _tested(tree: ast.Module, index: Index) -> Callable[[ast.AST], bool]:

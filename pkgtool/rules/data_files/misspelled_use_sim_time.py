@@ -7,8 +7,8 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package, is_test_material
 from pkgtool.model.span import Span
-from pkgtool.rules.node_parameters import (SIM_TIME, flat_parameters, parameter_blocks,
-                                           sim_time_typo, span_of)
+from pkgtool.rules.node_parameters import (SIM_TIME, flat_parameters, node_classes,
+                                           parameter_blocks, sim_time_typo, span_of)
 from pkgtool.rules.registry import rule
 
 
@@ -19,10 +19,10 @@ def misspelled_use_sim_time(package: Package) -> Iterator[Hit]:
     ## What it does
     Reads the parameter names the package's launch files give nodes of any package
     (`parameters=[{...}]` dicts, `-p name:=value` arguments, XML `<param name=...>`) and the
-    keys under `ros__parameters` of its YAML files (not tests), and reports a name one or two
-    edits (an insertion, a deletion, a replaced letter, two neighbours swapped) away from
-    `use_sim_time` (`use_sim_tme`, `use_sime_time`, `use_sim_tile`); a nested name is
-    judged by its last part.
+    keys under `ros__parameters` of its YAML files (not tests), and reports a name one edit
+    (a letter added, dropped or replaced, two neighbours swapped) away from `use_sim_time`
+    (`use_sim_tme`, `use_sime_time`, `use_sim_tile`), unless a node of the package declares
+    it; a nested name is judged by its last part.
 
     ## Why is this bad?
     Every node declares `use_sim_time`; a misspelt name sets a parameter nobody reads (or
@@ -41,14 +41,15 @@ def misspelled_use_sim_time(package: Package) -> Iterator[Hit]:
          parameters=[{'use_sim_time': True}])
     ```
     """
+    declared = {d.name for c in node_classes(package) for d in c.declared}
     for launch in package.launch_files:
         for node in launch.nodes:
             for name, span, _ in node.inline_parameters:
-                yield from _misspelt(name, span)
-    yield from _parameter_files(package)
+                yield from _misspelt(name, span, declared)
+    yield from _parameter_files(package, declared)
 
 
-def _parameter_files(package: Package) -> Iterator[Hit]:
+def _parameter_files(package: Package, declared: set[str]) -> Iterator[Hit]:
     from pkgtool.model.launch_reader import yaml_problem
 
     for path, text in sorted(package.texts.items()):
@@ -59,11 +60,11 @@ def _parameter_files(package: Package) -> Iterator[Hit]:
         for document in documents if isinstance(documents, list) else ():
             for _, _, parameters in parameter_blocks(path, document):
                 for name, key, _ in flat_parameters(parameters):
-                    yield from _misspelt(name, span_of(path, key))
+                    yield from _misspelt(name, span_of(path, key), declared)
 
 
-def _misspelt(name: str, span: Span) -> Iterator[Hit]:
-    if sim_time_typo(name):
+def _misspelt(name: str, span: Span, declared: set[str]) -> Iterator[Hit]:
+    if sim_time_typo(name) and name not in declared:
         yield Hit(span, f"`{name.rpartition('.')[2]}` is a typo of `{SIM_TIME}`: the node "
                         f"never gets `{SIM_TIME}` and keeps the wall clock while a simulator "
                         "publishes `/clock`")

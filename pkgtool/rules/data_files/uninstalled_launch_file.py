@@ -106,7 +106,7 @@ def _launch_files(package: Package) -> list[str]:
     """The package's launch files a user may ``ros2 launch``, in path order: not those of
     :data:`NOT_INSTALLED_FOLDERS`, nor copies kept aside."""
     folders, nested = python_folders(package.files), nested_packages(package.files)
-    found = {*(f for f in package.files if is_launch_file(f, folders, nested) and
+    found = {*(f for f in package.files if is_launch_file(f, folders, nested, package.name) and
                not is_launch_test(f, package.texts.get(f)) and
                not named_like_launch_only(f, package.texts.get(f))),
              *(launch.path for launch in package.launch_files),

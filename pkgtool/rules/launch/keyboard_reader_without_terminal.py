@@ -5,6 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
 
@@ -14,18 +15,25 @@ KEYBOARD_READERS = frozenset({("teleop_twist_keyboard", "teleop_twist_keyboard")
 """Released nodes (package, executable) that read keys from their standard input, a terminal."""
 _PREFIXES = frozenset({"prefix", "launch-prefix"})
 """How a Python, XML or YAML launch file runs a node inside another program (a terminal)."""
+_FILE_PREFIX = lazy_pattern(r"""SetLaunchConfiguration\(\s*(?:name\s*=\s*)?['"]launch-prefix|"""
+                            r"""<let\s+name\s*=\s*['"]launch-prefix|name:\s*['"]?launch-prefix""")
+"""A launch file setting ``launch-prefix`` for the nodes after it (``<let name=
+"launch-prefix" value="xterm -e"/>``), which launch_ros uses for a node with no prefix."""
 
 
 @rule("LCH027", "keyboard-reader-without-terminal", Severity.ERROR,
       fix="Start it in a terminal of its own: `prefix='xterm -e'` (XML and YAML: "
-          "`launch-prefix=\"xterm -e\"`), or run it with `ros2 run` in another terminal")
+          "`launch-prefix=\"xterm -e\"`) and `<exec_depend>xterm</exec_depend>`, or run it "
+          "with `ros2 run` in another terminal")
 def keyboard_reader_without_terminal(package: Package) -> Iterator[Hit]:
     """A launch file starts a node that reads the keyboard without giving it a terminal.
 
     ## What it does
     Reports a `Node` (`<node>`, YAML `node`) starting `teleop_twist_keyboard`,
     `turtlesim`'s `turtle_teleop_key` or `key_teleop` with no `prefix` (`launch-prefix`):
-    the nodes that read keys from their standard input.
+    the nodes that read keys from their standard input, in a launch file that sets no
+    `launch-prefix` for all its nodes (`<let name="launch-prefix" value="xterm -e"/>`,
+    `SetLaunchConfiguration('launch-prefix', ...)`).
 
     ## Why is this bad?
     `ros2 launch` gives the processes it starts a pipe, not the terminal, as their standard
@@ -45,6 +53,8 @@ def keyboard_reader_without_terminal(package: Package) -> Iterator[Hit]:
     ```
     """
     for launch in package.launch_files:
+        if _FILE_PREFIX.search(package.texts.get(launch.path, "")):
+            continue  # a prefix for every node of the file
         for node in launch.nodes:
             if (node.package, node.executable) in KEYBOARD_READERS and not node.unused and \
                     not _PREFIXES & set(node.arguments) and "**" not in node.arguments:

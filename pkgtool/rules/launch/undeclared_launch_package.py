@@ -29,7 +29,9 @@ def undeclared_launch_package(package: Package) -> Iterator[Hit]:
     else), `xacro`'s package for a
     command substitution running it (`Command(['xacro ', path])`, `$(command 'xacro ...')`),
     and the package of a process `ExecuteProcess` starts: `ros2 run pkg exe`, `ros2 launch
-    pkg file`, or a program of a ROS package (`cmd=['rviz2', '-d', config]`).
+    pkg file`, or a program of a ROS package (`cmd=['rviz2', '-d', config]`; also an XML or
+    YAML `executable`'s `cmd`), and the rosdep key of a terminal or tool a node or process
+    runs in (`prefix='xterm -e'`, `launch-prefix="gnome-terminal --"`, `valgrind`).
     A name that is no package of
     the target's release nor of the packages linted with it (the workspace pkgtool sees) is
     said so, with the package (of the workspace, this one or the release) it is a typo of,

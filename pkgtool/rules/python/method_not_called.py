@@ -6,7 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import TRIES, nodes_of_class
+from pkgtool.model.ast_nodes import TRIES, descendants, nodes_of_class, subtree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import ACTION_CLIENTS, bases_are_nodes
@@ -153,6 +153,10 @@ def _uncalled_methods(package: Package, tree: ast.Module, index: Index
         if _named_alone(node, index):
             yield node, ""
             continue
+        own = _own_method(node, index) if _tested(node, index) else None
+        if own is not None:
+            yield node, f"`{own}`"
+            continue
         if node.attr not in wanted or not _uncalled(node, index):
             continue
         if _logs_through(node, index):
@@ -169,11 +173,34 @@ def _uncalled_methods(package: Package, tree: ast.Module, index: Index
             yield name, "rclpy"
 
 
+def _own_method(node: ast.Attribute, index: Index) -> str | None:
+    """The name of the class ``node`` (``self.check``, in a method of that class) is a plain
+    method of: defined with ``def`` in its body, undecorated, never assigned on an instance
+    or in the class body otherwise; None for anything else."""
+    function = index.enclosing_function(node)
+    cls = index.parents.get(id(function)) if function is not None else None
+    arguments = function.args.posonlyargs + function.args.args if function else []
+    if not isinstance(cls, ast.ClassDef) or not arguments or \
+            not isinstance(node.value, ast.Name) or node.value.id != arguments[0].arg:
+        return None
+    methods = [f for f in cls.body if isinstance(f, FUNCTIONS) and f.name == node.attr]
+    bound = [s for s in cls.body if not isinstance(s, FUNCTIONS) and any(
+        isinstance(n, ast.Name) and n.id == node.attr for n in descendants(s))]
+    stored = any(isinstance(n, ast.Attribute) and n.attr == node.attr and
+                 not isinstance(n.ctx, ast.Load) for n in subtree(cls))
+    dynamic = any(isinstance(f, FUNCTIONS) and f.name in ("__getattr__", "__getattribute__")
+                  for f in cls.body)
+    if len(methods) != 1 or methods[0].decorator_list or bound or stored or dynamic:
+        return None
+    return cls.name
+
+
 def _message(node: ast.expr, kind: str, index: Index) -> str:
     text = ast.unparse(node)
     if not kind:
         return f"`{text}` names a method without calling it: the statement does nothing"
-    what = "a function" if kind == "rclpy" else f"a method of rclpy's {kind}"
+    what = "a function" if kind == "rclpy" else f"a method of {kind}" \
+        if kind.startswith("`") else f"a method of rclpy's {kind}"
     if _tested(node, index):
         return (f"`{text}` is {what}, tested without calling it: a function is always true, "
                 f"so the test never changes")
@@ -203,7 +230,11 @@ def method_not_called(package: Package) -> Iterator[Hit]:
     it makes such an object (or None). Also reports a statement that only names a method
     code calls for what it does (`self.timer.cancel`, `node.destroy_node`, `rclpy.shutdown`,
     `rate.sleep`, `publisher.publish`: see the list in the source), on any object, outside
-    `with` blocks and the body and handlers of a `try` (in its `finally` block too).
+    `with` blocks and the body and handlers of a `try` (in its `finally` block too). And a
+    method of the class being defined tested without `()` (`if self.wall_on_right:` in a
+    method of the class defining `def wall_on_right(self, scan)`), when the class defines it
+    once, undecorated, binds the name nowhere else (no `self.wall_on_right = ...`) and has no
+    `__getattr__`.
 
     ## Why is this bad?
     Without `()` the code has the bound method, not its result: `future.result.sum` raises

@@ -86,9 +86,14 @@ def _near_misses(found: tuple[Endpoint, ...], offering: str, using: str
                 not _not_a_typo(name, meant):
             yield endpoint, meant, "a typo away"
             continue
-        reordered = [t for t in same_type if _words(t) == _words(name)]
+        reordered = [t for t in same_type if _words(t) == _words(name)
+                     and not _DIRECTIONS & set(_words(name))]
         if len(reordered) == 1:
             yield endpoint, reordered[0], "its words in another order"
+
+
+_DIRECTIONS = frozenset({"to", "from", "2", "in", "out", "vs"})
+"""Words of names whose order is their meaning (``ros_to_serial``, ``serial_to_ros``)."""
 
 
 def _words(name: str) -> list[str]:

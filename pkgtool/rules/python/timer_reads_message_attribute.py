@@ -7,7 +7,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
-from pkgtool.model.ast_nodes import TRIES, child_nodes, descendants, subtree
+from pkgtool.model.ast_nodes import TRIES, child_nodes, descendants, nodes_of_class, subtree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import derives_from_node_alone
@@ -17,6 +17,8 @@ from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
 _CALLBACK_AT = {"create_timer": 1, "create_subscription": 2}
 """Node methods registering a callback, by where their ``callback`` argument stands."""
+_MATCHES = tuple(getattr(ast, name) for name in ("Match",) if hasattr(ast, name))
+"""``match`` statements (Python 3.10): their cases branch."""
 _DEFERRED = (ast.Lambda, ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
 """Expressions whose inner code may run later, or not at all."""
 _WAITS = ("spin", "wait")
@@ -33,12 +35,14 @@ def timer_reads_message_attribute(package: Package) -> Iterator[Hit]:
     ## What it does
     In a class deriving from rclpy's `Node` alone (no decorator, not extended in the
     module), whose `__init__` registers a timer callback and a subscription callback (its
-    own methods) and waits for nothing (no `spin`, no `wait_for_message`), reports a read of
-    `self.x` in the timer callback that certainly runs (before any `try` or branch that may
-    return) when `x` is assigned only in subscription callbacks that nothing else calls: not
-    in `__init__` or another method, not a class attribute, a method, nor an attribute of
-    `Node`. Reads the module guards (`hasattr(self, 'x')`, inside `try: ... except
-    AttributeError`) are left alone.
+    own methods) and waits for nothing (no `spin`, no `wait_for_message`, also in the methods
+    it calls), reports a read of `self.x` in the timer callback that certainly runs (before
+    any `try`, `match` or branch that may return) when `x` is assigned only in subscription
+    callbacks that nothing else calls: not in `__init__`, another method or outside the
+    class (`node.x = ...` in `main()`), not a class attribute, a method, nor an attribute of
+    `Node`. Timers made with `autostart=` or cancelled in `__init__` (a callback starts them
+    later) are left alone, and so are reads the module guards (`hasattr(self, 'x')`, inside
+    `try: ... except AttributeError`).
 
     ## Why is this bad?
     A timer starts counting when it is made; a subscription gets its first message only when
@@ -79,10 +83,14 @@ def timer_reads_message_attribute(package: Package) -> Iterator[Hit]:
             continue
         probed = probed_names(index)
         extended = {b.id for c in index.classes for b in c.bases if isinstance(b, ast.Name)}
+        stores = [n for n in nodes_of_class(tree, ast.Attribute)
+                  if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load)]
         for cls in index.classes:
             if derives_from_node_alone(cls, index) and cls.name not in extended and \
                     not cls.decorator_list:
-                for node, timer, setters in _early_reads(cls, index, probed):
+                inside = {id(n) for n in subtree(cls)}
+                elsewhere = {n.attr for n in stores if id(n) not in inside}
+                for node, timer, setters in _early_reads(cls, index, probed, elsewhere):
                     yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
                               f"`self.{node.attr}` is read by the timer callback `{timer}` "
                               f"but set only by the subscription callback `{setters}`: when "
@@ -90,18 +98,19 @@ def timer_reads_message_attribute(package: Package) -> Iterator[Hit]:
                               "stops the node")
 
 
-def _early_reads(cls: ast.ClassDef, index: Index, probed: frozenset[str]
-                 ) -> Iterator[tuple[ast.Attribute, str, str]]:
+def _early_reads(cls: ast.ClassDef, index: Index, probed: frozenset[str],
+                 elsewhere: set[str]) -> Iterator[tuple[ast.Attribute, str, str]]:
     """(read, timer callback, subscription callbacks) for each attribute a timer callback of
-    ``cls`` reads that only its subscription callbacks set."""
+    ``cls`` reads that only its subscription callbacks set (none of ``elsewhere``: assigned
+    outside the class, ``node.latest = ...`` in ``main()``)."""
     methods = {f.name: f for f in cls.body if isinstance(f, FUNCTIONS)}
     init = methods.get("__init__")
-    if init is None or _waits(init):
+    if init is None or any(_waits(f) for f in (init, *_called_methods(init, methods))):
         return
     callbacks = _callbacks(init, methods)
     timers = callbacks["create_timer"] - callbacks["create_subscription"]
     setters = _setters(cls, index, methods)
-    own = {n.id for n in _class_level_names(cls)} | set(methods) | NODE_ATTRIBUTES
+    own = {n.id for n in _class_level_names(cls)} | set(methods) | NODE_ATTRIBUTES | elsewhere
     for timer in sorted(timers):
         seen: set[str] = set()
         for node in _certain_reads(methods[timer]):
@@ -114,8 +123,18 @@ def _early_reads(cls: ast.ClassDef, index: Index, probed: frozenset[str]
             yield node, timer, "`, `".join(sorted(where))
 
 
+def _called_methods(init: ast.FunctionDef | ast.AsyncFunctionDef,
+                    methods: dict[str, ast.FunctionDef | ast.AsyncFunctionDef]
+                    ) -> list[ast.FunctionDef | ast.AsyncFunctionDef]:
+    """The methods of the class ``__init__`` calls on ``self``."""
+    return [methods[n.func.attr] for n in subtree(init) if isinstance(n, ast.Call) and
+            isinstance(n.func, ast.Attribute) and _is_self(n.func.value, init) and
+            n.func.attr in methods and n.func.attr != "__init__"]
+
+
 def _waits(init: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
-    """True when ``__init__`` calls something that may run callbacks or wait for messages."""
+    """True when ``__init__`` (or a method it calls) calls something that may run callbacks
+    or wait for messages."""
     return any(isinstance(n, ast.Call) and any(
         w in (n.func.attr if isinstance(n.func, ast.Attribute) else
               n.func.id if isinstance(n.func, ast.Name) else "") for w in _WAITS)
@@ -132,7 +151,7 @@ def _callbacks(init: ast.FunctionDef | ast.AsyncFunctionDef,
         if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and
                 node.func.attr in _CALLBACK_AT and _is_self(node.func.value, init)):
             continue
-        if any(k.arg == "autostart" for k in node.keywords):
+        if any(k.arg == "autostart" for k in node.keywords) or _cancelled(node, init):
             continue  # a timer started later, maybe once a message came
         at = _CALLBACK_AT[node.func.attr]
         given = node.args[at] if len(node.args) > at else next(
@@ -141,6 +160,16 @@ def _callbacks(init: ast.FunctionDef | ast.AsyncFunctionDef,
                 given.attr in methods:
             found[node.func.attr].add(given.attr)
     return found
+
+
+def _cancelled(call: ast.Call, init: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
+    """True when ``__init__`` assigns the timer ``call`` makes to ``self.x`` and calls
+    ``self.x.cancel()`` (a callback resets it later)."""
+    stored = {t.attr for n in subtree(init) if isinstance(n, ast.Assign) and n.value is call
+              for t in n.targets if isinstance(t, ast.Attribute) and _is_self(t.value, init)}
+    return any(isinstance(n, ast.Attribute) and n.attr == "cancel" and
+               isinstance(n.value, ast.Attribute) and n.value.attr in stored and
+               _is_self(n.value.value, init) for n in subtree(init))
 
 
 def _setters(cls: ast.ClassDef, index: Index,
@@ -181,7 +210,7 @@ def _certain_reads(function: ast.FunctionDef | ast.AsyncFunctionDef
     order up to the first ``try``, loop body or branch that may return or raise (a branch's
     test still runs); nothing inside lambdas or nested functions."""
     for statement in function.body:
-        if isinstance(statement, (*TRIES, *FUNCTIONS, ast.ClassDef)):
+        if isinstance(statement, (*TRIES, *FUNCTIONS, ast.ClassDef, *_MATCHES)):
             return
         if isinstance(statement, (ast.If, ast.While)):
             yield from _reads(statement.test, function)
