@@ -426,12 +426,14 @@ class _Reader(ast.NodeVisitor):
                 always_started=node in self.certain))
         elif name == "ExecuteProcess":
             self._ros2_run(node)
-        prefix = self.value(_keyword(node, "prefix")) \
-            if action in NODE_ACTIONS or name == "ExecuteProcess" else None
-        if isinstance(prefix, str) and prefix.split() and prefix.split()[0] in PREFIX_PACKAGES:
-            self.packages.append(PackageRef(PREFIX_PACKAGES[prefix.split()[0]],
-                                            self._span(node), bool(self.optional),
-                                            bool(self.dead)))
+        if (action in NODE_ACTIONS or name == "ExecuteProcess") and \
+                _keyword(node, "condition") is None:  # a debugging option: the user's tool
+            program = _program(self.value(_keyword(node, "prefix")))
+            if name == "ExecuteProcess" and program is None:
+                program = _program(self.value(_keyword(node, "cmd")))
+            if program in PREFIX_PACKAGES:
+                self.packages.append(PackageRef(PREFIX_PACKAGES[program], self._span(node),
+                                                bool(self.optional), bool(self.dead)))
         runs = self._command_executable(node) if name == "Command" else None
         if runs in COMMAND_PACKAGES:
             self.packages.append(PackageRef(COMMAND_PACKAGES[runs], self._span(node),
@@ -699,6 +701,14 @@ def _literal(node: ast.expr) -> str | None:
     except (ValueError, TypeError, SyntaxError, MemoryError, RecursionError):
         return None
     return ast.unparse(node)
+
+
+def _program(value: Value) -> str | None:
+    """The program a prefix or command line starts (``'xterm -e'``, ``['/usr/bin/xterm',
+    '-e', ...]``): its first word's file name, when that is known."""
+    first = value[0] if isinstance(value, tuple) and value else value
+    words = first.split() if isinstance(first, str) else []
+    return words[0].rpartition("/")[2] if words else None
 
 
 def _declared_name(call: ast.Call) -> object:

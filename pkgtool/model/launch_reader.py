@@ -52,9 +52,10 @@ def read_launch(path: str, text: str) -> LaunchFile:
     nodes, values, paths, commands = found
     packages, files = _substitutions(values)
     programs = {**PROCESS_PACKAGES, **PREFIX_PACKAGES}
-    packages += tuple(PackageRef(programs[command.split()[0]], span)
-                      for command, span in commands
-                      if command.split() and command.split()[0] in programs)
+    started = [(command.split()[0].rpartition("/")[2], span) for command, span in commands
+               if command.split()]
+    packages += tuple(PackageRef(programs[word], span) for word, span in started
+                      if word in programs)
     return LaunchFile(path, kind, tuple(nodes), packages, files,
                       paths=tuple((p, span) for p, span in paths if _static(p)))
 
@@ -131,8 +132,8 @@ def _xml(path: str, text: str) -> Read | ParseProblem:
     for element in _elements(root):
         if element.tag == "executable" and element.attribute("cmd"):
             commands.append((element.attribute("cmd") or "", element.span))
-        if element.attribute("launch-prefix") and (element.tag in NODE_TAGS or
-                                                   element.tag == "executable"):
+        if element.attribute("launch-prefix") and not _conditional(element) and \
+                (element.tag in NODE_TAGS or element.tag == "executable"):
             commands.append((element.attribute("launch-prefix") or "", element.span))
         named = element.attribute(_XML_FILES.get(element.tag, "from")) \
             if element.tag in _XML_FILES or element.tag == "param" else None

@@ -228,6 +228,8 @@ RULES = {
     "PYC089": ("image-decoded-as-other-kind", "error", True, "python.image_decoded_as_other_kind"),
     "PYC090": ("timer-reads-message-attribute", "warning", True,
                "python.timer_reads_message_attribute"),
+    "PYC091": ("interface-class-instantiated", "error", True,
+               "python.interface_class_instantiated"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

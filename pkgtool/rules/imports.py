@@ -443,21 +443,28 @@ def run_as_a_script(package: Package, module: PythonModule,
 
 def runs_code_at_its_top(package: Package, module: PythonModule) -> bool:
     """True when ``module`` runs code at its top level: a call, also one anywhere inside a
-    top-level loop or ``with`` block (``for name in os.listdir(...): if is_red(name):``; not
-    inside a library's ``try``/``if`` blocks, which warn about a missing import), or an
-    ``if __name__ == '__main__':`` block."""
+    top-level loop, ``with``, ``if`` or ``try`` block (``for name in os.listdir(...): if
+    is_red(name):``; not in ``except`` handlers, nor one that only reports, as a library's
+    ``warnings.warn`` about a missing import), or an ``if __name__ == '__main__':`` block."""
     tree = parse_tree(module.path, package.texts.get(module.path, ""))
     return isinstance(tree, ast.Module) and any(
         _called(s) or isinstance(s, ast.If) and "__main__" in ast.unparse(s.test) or
-        isinstance(s, _BLOCKS) and any(isinstance(n, ast.Call) for inner in _block_statements(s)
+        isinstance(s, _BLOCKS) and any(isinstance(n, ast.Call) and not _notice(n)
+                                       for inner in _block_statements(s)
                                        for n in ast.walk(inner))
         for s in tree.body)
 
 
-_BLOCKS = (ast.For, ast.AsyncFor, ast.While, ast.With, ast.AsyncWith)
-"""Top-level statements whose blocks run a script's work (loops over files, ``with open``)."""
-_INNER_BLOCKS = (*_BLOCKS, ast.If, *TRIES)
-"""Statements whose blocks run where they stand, inside those."""
+_BLOCKS = (ast.For, ast.AsyncFor, ast.While, ast.With, ast.AsyncWith, ast.If, *TRIES)
+"""Statements whose blocks (not ``except`` handlers) run where they stand."""
+_NOTICES = frozenset({"warn", "warning", "debug", "info", "error", "critical", "exception"})
+"""What a library's top-level blocks call to say an optional import is missing
+(``warnings.warn``, ``logger.warning``)."""
+
+
+def _notice(call: ast.Call) -> bool:
+    """True for a call that only reports something (``warnings.warn(...)``): no work."""
+    return isinstance(call.func, ast.Attribute) and call.func.attr in _NOTICES
 
 
 def _called(statement: ast.stmt) -> bool:
@@ -471,7 +478,7 @@ def _block_statements(statement: ast.stmt) -> Iterator[ast.stmt]:
     for field in ("body", "orelse", "finalbody"):
         for inner in getattr(statement, field, []):
             yield inner
-            if isinstance(inner, _INNER_BLOCKS):
+            if isinstance(inner, _BLOCKS):
                 yield from _block_statements(inner)
 
 

@@ -50,10 +50,12 @@ SIM_TIME = "use_sim_time"
 
 def sim_time_typo(name: str) -> bool:
     """True when the last part of a parameter name is one edit (a letter added, dropped or
-    replaced, two neighbours swapped) from ``use_sim_time`` (DAT025's to report; DAT010
-    leaves it alone). Two edits make real names (``use_imu_time``)."""
+    replaced, two neighbours swapped) from ``use_sim_time``, or it with other separators
+    (``use-sim-time``, ``usesimtime``) (DAT025's to report; DAT010 leaves it alone). Two
+    edits make real names (``use_imu_time``)."""
     last = name.rpartition(".")[2]
-    return last != SIM_TIME and typo_distance(last, SIM_TIME, budget=1) <= 1
+    return last != SIM_TIME and (typo_distance(last, SIM_TIME, budget=1) <= 1 or
+                                 re.sub(r"[-_ ]", "", last).lower() == "usesimtime")
 
 
 _BOOLS = frozenset({"Y", "y", "yes", "Yes", "YES", "true", "True", "TRUE", "on", "On", "ON",

@@ -76,6 +76,7 @@ of the case are fixed."""
 MANUAL = {("PYC078", "habits_of_other_languages"),
           ("LCH027", "keyboard_teleop_in_launch_files"), ("DAT025", "sim_time_misspelt"),
           ("SYN008", "parameter_file_nothing_installs"), ("PYC090", "timer_before_first_message"),
+          ("PYC091", "service_and_action_types_called"),
           ("LCH002", "dependency_left_out_in_a_comment"),
           ("ENT002", "module_never_written_beside_an_install_command"),
           ("ENT002", "misspelt_module_beside_custom_commands"),

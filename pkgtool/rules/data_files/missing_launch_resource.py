@@ -38,10 +38,9 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     optional `.env` file (`load_dotenv`) is left alone; a launch file asking whether a path
     exists is left alone for that path and those below it (for all when it asks of a path
     pkgtool cannot work out); so is a name with no suffix for which the package has a file
-    with one, when that is a world's (`worlds/arena` for `worlds/arena.sdf`) or the reader
-    writes it alone (`[PathJoinSubstitution([...]), '.yaml']`), but not as a node's
-    parameter file: launch files pass world names on to ones that add the suffix; and so is
-    a folder
+    with one (`worlds/arena` for `worlds/arena.sdf`), but not as a node's parameter file:
+    code adds suffixes in ways not read statically (`'%s.urdf' % base`), and launch files
+    pass world names on to ones that add the suffix; and so is a folder
     data_files installs into (setuptools makes it, files or not), and a file in a folder
     setup.py installs only when it exists (`glob('maps/*') if os.path.exists('maps') else
     []`: the user makes it).
@@ -75,7 +74,7 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
             continue  # a file git ignores is the user's to make (a calibration, a map)
         known = {target[len(share):] for target in installed if target.startswith(share)}
         known.update(package.files)
-        if _suffix_added(relative, known, package.texts.get(reader, "")) and \
+        if _suffix_added(relative, known) and \
                 (ref.package, ref.parts) not in _parameter_files(package, reader):
             continue  # a name the reader or the launch file it includes adds `.sdf` to
         close = get_close_matches(relative, sorted(known), n=1)
@@ -85,21 +84,13 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
                   f"Write `{close[0]}`" if close else None)
 
 
-def _suffix_added(relative: str, known: set[str], text: str) -> bool:
-    """True when ``relative`` has no suffix, a file of that name with one is known, and that
-    suffix is a simulator world's (``worlds/arena`` for ``worlds/arena.sdf``: launch files
-    pass world names on to ones that add it, ``[LaunchConfiguration('world'), '.sdf']``) or
-    one the reader writes alone (``[PathJoinSubstitution([...]), '.yaml']``)."""
-    if "." in relative.rpartition("/")[2]:
-        return False
-    suffixes = {k[len(relative):] for k in known
-                if k.startswith(relative + ".") and "/" not in k[len(relative):]}
-    return bool(suffixes & _WORLD_SUFFIXES or any(
-        f"'{s}'" in text or f'"{s}"' in text for s in suffixes))
-
-
-_WORLD_SUFFIXES = frozenset({".sdf", ".world"})
-"""Suffixes of simulator worlds, which launch files name without them."""
+def _suffix_added(relative: str, known: set[str]) -> bool:
+    """True when ``relative`` has no suffix and a file of that name with one is known
+    (``worlds/arena`` for ``worlds/arena.sdf``): code appends the suffix in ways not read
+    statically (``[PathJoinSubstitution([...]), '.yaml']``, ``'%s.urdf' % base``), or the
+    launch file it is passed to does (``[LaunchConfiguration('world'), '.sdf']``)."""
+    return "." not in relative.rpartition("/")[2] and \
+        any(k.startswith(relative + ".") and "/" not in k[len(relative):] for k in known)
 
 
 def _parameter_files(package: Package, reader: str) -> set[tuple[str | None, tuple[str, ...]]]:

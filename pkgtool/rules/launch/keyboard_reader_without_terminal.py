@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -15,10 +16,16 @@ KEYBOARD_READERS = frozenset({("teleop_twist_keyboard", "teleop_twist_keyboard")
 """Released nodes (package, executable) that read keys from their standard input, a terminal."""
 _PREFIXES = frozenset({"prefix", "launch-prefix"})
 """How a Python, XML or YAML launch file runs a node inside another program (a terminal)."""
-_FILE_PREFIX = lazy_pattern(r"""SetLaunchConfiguration\(\s*(?:name\s*=\s*)?['"]launch-prefix|"""
-                            r"""<let\s+name\s*=\s*['"]launch-prefix|name:\s*['"]?launch-prefix""")
+_FILE_PREFIX = lazy_pattern(
+    r"""(?:SetLaunchConfiguration|DeclareLaunchArgument)\(\s*(?:name\s*=\s*)?"""
+    r"""['"]launch-prefix['"]|<(?:let|arg)\s+name\s*=\s*['"]launch-prefix['"]|"""
+    r"""name:\s*['"]?launch-prefix['"]?\s*$""", re.M)
 """A launch file setting ``launch-prefix`` for the nodes after it (``<let name=
-"launch-prefix" value="xterm -e"/>``), which launch_ros uses for a node with no prefix."""
+"launch-prefix" value="xterm -e"/>``, an argument of that name), which launch uses for a
+process given no prefix."""
+TERMINALS = ("xterm", "gnome-terminal", "konsole", "terminator", "tmux", "screen",
+             "x-terminal-emulator", "kitty", "alacritty", "tilix")
+"""Programs that give what they run a terminal."""
 
 
 @rule("LCH027", "keyboard-reader-without-terminal", Severity.ERROR,
@@ -32,8 +39,8 @@ def keyboard_reader_without_terminal(package: Package) -> Iterator[Hit]:
     Reports a `Node` (`<node>`, YAML `node`) starting `teleop_twist_keyboard`,
     `turtlesim`'s `turtle_teleop_key` or `key_teleop` with no `prefix` (`launch-prefix`):
     the nodes that read keys from their standard input, in a launch file that sets no
-    `launch-prefix` for all its nodes (`<let name="launch-prefix" value="xterm -e"/>`,
-    `SetLaunchConfiguration('launch-prefix', ...)`).
+    terminal as `launch-prefix` for all its nodes (`<let name="launch-prefix" value="xterm
+    -e"/>`, `SetLaunchConfiguration('launch-prefix', ...)`, an argument of that name).
 
     ## Why is this bad?
     `ros2 launch` gives the processes it starts a pipe, not the terminal, as their standard
@@ -53,7 +60,7 @@ def keyboard_reader_without_terminal(package: Package) -> Iterator[Hit]:
     ```
     """
     for launch in package.launch_files:
-        if _FILE_PREFIX.search(package.texts.get(launch.path, "")):
+        if _terminal_for_all(package.texts.get(launch.path, "")):
             continue  # a prefix for every node of the file
         for node in launch.nodes:
             if (node.package, node.executable) in KEYBOARD_READERS and not node.unused and \
@@ -62,3 +69,11 @@ def keyboard_reader_without_terminal(package: Package) -> Iterator[Hit]:
                           f"`{node.executable}` reads keys from its standard input, which "
                           "`ros2 launch` makes a pipe, not a terminal: it exits with "
                           "\"Inappropriate ioctl for device\" (or never sees a key)")
+
+
+def _terminal_for_all(text: str) -> bool:
+    """True when the launch file's text (comment lines aside) sets ``launch-prefix`` for all
+    its nodes and names a terminal program."""
+    lines = "\n".join(line for line in text.splitlines()
+                      if not line.lstrip().startswith(("#", "<!--")))
+    return _FILE_PREFIX.search(lines) is not None and any(t in lines for t in TERMINALS)

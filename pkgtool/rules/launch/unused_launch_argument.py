@@ -26,6 +26,11 @@ its name in the file: included files see every configuration, an opaque function
 ``context.launch_configurations``, the conditions take a name."""
 
 
+READ_BY_LAUNCH = frozenset({"launch-prefix", "launch-prefix-filter", "emulate_tty"})
+"""Launch configurations launch itself reads for every process it starts (the prefix of one
+given none, whether to emulate a terminal)."""
+
+
 @rule("LCH024", "unused-launch-argument", Severity.WARNING,
       fix="Pass `LaunchConfiguration('<name>')` where the value is meant to go (a node's "
           "parameters, a condition), or remove the argument")
@@ -35,7 +40,8 @@ def unused_launch_argument(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports `DeclareLaunchArgument('name', ...)` in a Python launch file that reads no
     `LaunchConfiguration('name')` and names `name` in no other string (a dict key, a
-    subscript of `context.launch_configurations`). Files that include
+    subscript of `context.launch_configurations`); not the ones launch reads itself for
+    every process (`launch-prefix`, `launch-prefix-filter`, `emulate_tty`). Files that include
     other launch files, use an `OpaqueFunction`, `SetLaunchConfiguration` or a condition
     taking a configuration's name, load a parameter file with substitutions
     (`allow_substs=True`: `$(var name)` in the file reads it), build a name or read a
@@ -83,7 +89,7 @@ def unused_launch_argument(package: Package) -> Iterator[Hit]:
                                                            ast.Constant)
                      if isinstance(node.value, str) and id(node) not in named}
         for call, name in zip(declared, names):
-            if name not in reads and name not in mentioned:
+            if name not in reads and name not in mentioned and name not in READ_BY_LAUNCH:
                 yield Hit(Span(path, call.lineno, call.col_offset + 1),
                           f"The launch argument `{name}` is declared but nothing reads its "
                           f"value: `{name}:=...` on the command line changes nothing")

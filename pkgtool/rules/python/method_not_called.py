@@ -153,7 +153,7 @@ def _uncalled_methods(package: Package, tree: ast.Module, index: Index
         if _named_alone(node, index):
             yield node, ""
             continue
-        own = _own_method(node, index) if _tested(node, index) else None
+        own = _own_method(node, index) if _truth_tested(node, index) else None
         if own is not None:
             yield node, f"`{own}`"
             continue
@@ -173,16 +173,32 @@ def _uncalled_methods(package: Package, tree: ast.Module, index: Index
             yield name, "rclpy"
 
 
+def _truth_tested(node: ast.expr, index: Index) -> bool:
+    """True when only ``node``'s truth is used: the test of an ``if``, ``while``, conditional
+    expression or ``assert``, also through ``not``, ``and`` and ``or`` (not ``cb = given or
+    self.default``, whose value is kept)."""
+    child, parent = node, index.parents.get(id(node))
+    while isinstance(parent, ast.BoolOp) or \
+            isinstance(parent, ast.UnaryOp) and isinstance(parent.op, ast.Not):
+        if isinstance(parent, ast.UnaryOp):
+            return True
+        child, parent = parent, index.parents.get(id(parent))
+    return isinstance(parent, _TESTS) and parent.test is child
+
+
 def _own_method(node: ast.Attribute, index: Index) -> str | None:
-    """The name of the class ``node`` (``self.check``, in a method of that class) is a plain
-    method of: defined with ``def`` in its body, undecorated, never assigned on an instance
-    or in the class body otherwise; None for anything else."""
+    """The name of the class ``node`` (``self.check``, in a plain method of that class, which
+    no class of the module extends) is a plain method of: defined with ``def`` in its body,
+    undecorated, never assigned on an instance or in the class body otherwise; None for
+    anything else."""
     function = index.enclosing_function(node)
     cls = index.parents.get(id(function)) if function is not None else None
     arguments = function.args.posonlyargs + function.args.args if function else []
-    if not isinstance(cls, ast.ClassDef) or not arguments or \
-            not isinstance(node.value, ast.Name) or node.value.id != arguments[0].arg:
-        return None
+    if not isinstance(cls, ast.ClassDef) or not arguments or function.decorator_list or \
+            not isinstance(node.value, ast.Name) or node.value.id != arguments[0].arg or \
+            any(isinstance(b, ast.Name) and b.id == cls.name
+                for other in index.classes for b in other.bases):
+        return None  # a static or class method's first parameter; a class others extend
     methods = [f for f in cls.body if isinstance(f, FUNCTIONS) and f.name == node.attr]
     bound = [s for s in cls.body if not isinstance(s, FUNCTIONS) and any(
         isinstance(n, ast.Name) and n.id == node.attr for n in descendants(s))]

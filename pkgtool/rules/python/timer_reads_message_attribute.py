@@ -83,13 +83,13 @@ def timer_reads_message_attribute(package: Package) -> Iterator[Hit]:
             continue
         probed = probed_names(index)
         extended = {b.id for c in index.classes for b in c.bases if isinstance(b, ast.Name)}
-        stores = [n for n in nodes_of_class(tree, ast.Attribute)
-                  if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load)]
+        in_classes = {id(n) for cls in index.classes for n in subtree(cls)}
+        elsewhere = {n.attr for n in nodes_of_class(tree, ast.Attribute)
+                     if isinstance(n, ast.Attribute) and not isinstance(n.ctx, ast.Load) and
+                     id(n) not in in_classes}  # `node.x = ...` in main()
         for cls in index.classes:
             if derives_from_node_alone(cls, index) and cls.name not in extended and \
                     not cls.decorator_list:
-                inside = {id(n) for n in subtree(cls)}
-                elsewhere = {n.attr for n in stores if id(n) not in inside}
                 for node, timer, setters in _early_reads(cls, index, probed, elsewhere):
                     yield Hit(Span(module.path, node.lineno, node.col_offset + 1),
                               f"`self.{node.attr}` is read by the timer callback `{timer}` "
@@ -126,10 +126,18 @@ def _early_reads(cls: ast.ClassDef, index: Index, probed: frozenset[str],
 def _called_methods(init: ast.FunctionDef | ast.AsyncFunctionDef,
                     methods: dict[str, ast.FunctionDef | ast.AsyncFunctionDef]
                     ) -> list[ast.FunctionDef | ast.AsyncFunctionDef]:
-    """The methods of the class ``__init__`` calls on ``self``."""
-    return [methods[n.func.attr] for n in subtree(init) if isinstance(n, ast.Call) and
-            isinstance(n.func, ast.Attribute) and _is_self(n.func.value, init) and
-            n.func.attr in methods and n.func.attr != "__init__"]
+    """The methods of the class ``__init__`` calls on ``self``, and those they call."""
+    found: list[ast.FunctionDef | ast.AsyncFunctionDef] = []
+    todo = [init]
+    while todo:
+        caller = todo.pop()
+        for n in subtree(caller):
+            if isinstance(n, ast.Call) and isinstance(n.func, ast.Attribute) and \
+                    _is_self(n.func.value, caller) and n.func.attr in methods and \
+                    methods[n.func.attr] not in found and n.func.attr != "__init__":
+                found.append(methods[n.func.attr])
+                todo.append(methods[n.func.attr])
+    return found
 
 
 def _waits(init: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
@@ -165,8 +173,9 @@ def _callbacks(init: ast.FunctionDef | ast.AsyncFunctionDef,
 def _cancelled(call: ast.Call, init: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
     """True when ``__init__`` assigns the timer ``call`` makes to ``self.x`` and calls
     ``self.x.cancel()`` (a callback resets it later)."""
-    stored = {t.attr for n in subtree(init) if isinstance(n, ast.Assign) and n.value is call
-              for t in n.targets if isinstance(t, ast.Attribute) and _is_self(t.value, init)}
+    stored = {t.attr for n in subtree(init) if isinstance(n, (ast.Assign, ast.AnnAssign)) and
+              n.value is call for t in (n.targets if isinstance(n, ast.Assign) else [n.target])
+              if isinstance(t, ast.Attribute) and _is_self(t.value, init)}
     return any(isinstance(n, ast.Attribute) and n.attr == "cancel" and
                isinstance(n.value, ast.Attribute) and n.value.attr in stored and
                _is_self(n.value.value, init) for n in subtree(init))
