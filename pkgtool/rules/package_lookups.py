@@ -45,7 +45,7 @@ def unlisted_packages(package: Package, used: Iterable[tuple[str, Span]],
         elif not other and name in package.submodules:
             missing += (f"; it is probably the package of the git submodule `{name}`, which is "
                         "not checked out here")
-        elif not other and not _known(package, name):
+        elif not other and not known_package(package, name):
             meant = [close for close in close_names(
                 name, package.context.distro, limit=3,
                 extra=frozenset((*package.context.workspace, package.name)))
@@ -87,7 +87,7 @@ def depends_on(package: Package, name: str) -> bool:
     return False
 
 
-def _known(package: Package, name: str) -> bool:
+def known_package(package: Package, name: str) -> bool:
     """True when ``name`` is a package of the workspace or a released one (or a rosdep key)
     on the target distribution."""
     distro = package.context.distro

@@ -13,6 +13,7 @@ from pkgtool.model.launch import EXISTENCE_CHECKS
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.existence_checks import checks_files
+from pkgtool.rules.imports import console_script_files, run_as_a_script
 from pkgtool.rules.registry import rule
 from pkgtool.rules.relative_paths import assigned_value, package_file_named
 from pkgtool.rules.syntax_trees import Index, installed_trees, launch_indexes
@@ -61,7 +62,9 @@ def cwd_relative_path(package: Package) -> Iterator[Hit]:
     string literal, or a name or `self.x` assigned that literal and nothing else. A module
     that asks whether files exist (`os.path.exists()` and the like) or changes the working
     folder (`os.chdir()`) is left alone: it may fall back when the file is not there, or
-    open it from the right folder. Nor is a path a module of the package also opens to write
+    open it from the right folder. Nor is a script kept in the package folder and run by hand
+    from there (it runs code at its top, and no console script runs it, no module imports
+    it: `python3 converter.py`). Nor is a path a module of the package also opens to write
     (`open('data.json', 'w')`): a file nodes exchange where they run, of which the package's
     copy is a sample. Tests are not checked (pytest runs them from a known folder).
 
@@ -85,7 +88,9 @@ def cwd_relative_path(package: Package) -> Iterator[Hit]:
         waypoints = yaml.safe_load(stream)
     ```
     """
-    indexes = [(module.path, index) for module, _, index in installed_trees(package)]
+    scripts = console_script_files(package)
+    indexes = [(module.path, index) for module, _, index in installed_trees(package)
+               if not run_as_a_script(package, module, scripts)]
     shares = _share_paths(package)
     installed_as = {below: source for source, below in shares.items()}
     written = {posixpath.normpath(text) for _, index in indexes for call in index.calls

@@ -9,6 +9,7 @@ from pkgtool.model.package import Package
 from pkgtool.rules.imports import declaration_cause
 from pkgtool.rules.manifest.common import snippet, tree
 from pkgtool.rules.manifest.schema import DEPENDS_1, DEPENDS_2, GROUP_TAGS, token
+from pkgtool.rules.package_lookups import known_package
 from pkgtool.rules.registry import rule
 
 _DEPENDENCY_TAGS = frozenset({*DEPENDS_1, *DEPENDS_2, *GROUP_TAGS})
@@ -29,7 +30,9 @@ def dependency_in_export(package: Package) -> Iterator[Hit]:
     ``<member_of_group>``. Deeper elements (the content of a tool's own export element) are
     left alone, and so are copies of what `<package>` declares itself (the same tag and key,
     or a `<depend>` of the key for a build, export or exec dependency, or a `<depend>` of a
-    key `<package>` declares for build and exec): inert.
+    key `<package>` declares for build and exec): inert; so are tags naming no package of
+    the workspace or the release nor a rosdep key (the package's own module: moved out of
+    `<export>`, rosdep could not resolve it).
 
     ## Why is this bad?
     The schema lets ``<export>`` hold anything, so nothing complains, but catkin_pkg, colcon,
@@ -62,6 +65,8 @@ def dependency_in_export(package: Package) -> Iterator[Hit]:
         for child in export.children:
             key = token(child.text)
             if child.tag in _DEPENDENCY_TAGS and (child.tag, key) not in declared and \
+                    (child.tag in GROUP_TAGS or  # a group's name: no package's
+                     all(known_package(package, name) for name in key.split())) and \
                     not (child.tag in _COVERED and ("depend", key) in declared) and \
                     not (child.tag == "depend" and {("build_depend", key),
                                                     ("exec_depend", key)} <= declared):
