@@ -121,8 +121,11 @@ COMMAND_PACKAGES = {"xacro": "xacro"}
 PROCESS_PACKAGES = {**COMMAND_PACKAGES, "rviz2": "rviz2"}
 """Programs of ROS packages a launch file starts as processes (``ExecuteProcess(cmd=['rviz2',
 '-d', config])``), by the package that installs each."""
-PREFIX_PACKAGES = {name: name for name in ("xterm", "gnome-terminal", "konsole", "terminator",
-                                           "tmux", "valgrind")}
+KEYED_TERMINALS = ("xterm", "gnome-terminal", "konsole", "terminator", "tmux")
+"""Terminals that are rosdep keys of their own name."""
+TERMINALS = (*KEYED_TERMINALS, "screen", "x-terminal-emulator", "kitty", "alacritty", "tilix")
+"""Programs that give what they run a terminal (``prefix='xterm -e'``)."""
+PREFIX_PACKAGES = {name: name for name in (*KEYED_TERMINALS, "valgrind")}
 """Programs a launch file runs a node inside (``prefix='xterm -e'``, ``launch-prefix=``), by
 the rosdep key that installs each."""
 

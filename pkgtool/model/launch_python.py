@@ -428,9 +428,9 @@ class _Reader(ast.NodeVisitor):
             self._ros2_run(node)
         if (action in NODE_ACTIONS or name == "ExecuteProcess") and \
                 _keyword(node, "condition") is None:  # a debugging option: the user's tool
-            program = _program(self.value(_keyword(node, "prefix")))
+            program = program_of(self.value(_keyword(node, "prefix")))
             if name == "ExecuteProcess" and program is None:
-                program = _program(self.value(_keyword(node, "cmd")))
+                program = program_of(self.value(_keyword(node, "cmd")))
             if program in PREFIX_PACKAGES:
                 self.packages.append(PackageRef(PREFIX_PACKAGES[program], self._span(node),
                                                 bool(self.optional), bool(self.dead)))
@@ -703,7 +703,7 @@ def _literal(node: ast.expr) -> str | None:
     return ast.unparse(node)
 
 
-def _program(value: Value) -> str | None:
+def program_of(value: Value) -> str | None:
     """The program a prefix or command line starts (``'xterm -e'``, ``['/usr/bin/xterm',
     '-e', ...]``): its first word's file name, when that is known."""
     first = value[0] if isinstance(value, tuple) and value else value

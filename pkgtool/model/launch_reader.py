@@ -12,7 +12,7 @@ from collections.abc import Iterator
 
 from pkgtool.model.launch import (COMMAND_PACKAGES, PREFIX_PACKAGES, PROCESS_PACKAGES, FileRef,
                                   LaunchFile, NodeRef, PackageRef)
-from pkgtool.model.launch_python import NAME_REMAPS, remapped_name
+from pkgtool.model.launch_python import NAME_REMAPS, program_of, remapped_name
 from pkgtool.model.span import ParseProblem, Span
 from pkgtool.model.xml import XmlElement
 from pkgtool.records import replace
@@ -24,8 +24,8 @@ _EXECUTABLE_IN = lazy_pattern(r"\$\(\s*exec-in-pkg\s+[\w.-]+\s+([A-Za-z0-9_]+)\s
 _SHARE_WORD = lazy_pattern(r"(?<![^\s])\$\(\s*find-pkg-share\s+[A-Za-z0-9_]+\s*\)"
                            r"/[^\s$'\"]*(?=\s|$)")
 """A share path that is one whole word of a node's ``args`` (``-d $(find-pkg-share p)/a.rviz``)."""
-_VARIABLE = lazy_pattern(r"\$\(var\s+([\w-]+)\)")
-"""A launch argument's whole value, ``$(var params)``."""
+VARIABLE_READ = lazy_pattern(r"\$\(var\s+([\w.-]+)\s*\)")
+"""A ``$(var x)`` substitution of an XML or YAML launch file (reading the argument ``x``)."""
 _COMMAND = lazy_pattern(r"""\$\(\s*command\s+['"]?\s*([\w.-]+)""")
 _SHARE_PATH = lazy_pattern(r"^\$\(\s*find-pkg-share\s+([A-Za-z0-9_]+)\s*\)(/[^$]*)$")
 NODE_TAGS = {"node": ("exec", "executable"), "lifecycle_node": ("exec", "executable"),
@@ -51,11 +51,9 @@ def read_launch(path: str, text: str) -> LaunchFile:
         return LaunchFile(path, kind, (), (), (), problem=found)
     nodes, values, paths, commands = found
     packages, files = _substitutions(values)
-    programs = {**PROCESS_PACKAGES, **PREFIX_PACKAGES}
-    started = [(command.split()[0].rpartition("/")[2], span) for command, span in commands
-               if command.split()]
-    packages += tuple(PackageRef(programs[word], span) for word, span in started
-                      if word in programs)
+    packages += tuple(PackageRef(_PROGRAMS[program], span) for program, span in
+                      ((program_of(command), span) for command, span in commands)
+                      if program in _PROGRAMS)
     return LaunchFile(path, kind, tuple(nodes), packages, files,
                       paths=tuple((p, span) for p, span in paths if _static(p)))
 
@@ -106,6 +104,10 @@ def _share_file(value: str, span: Span) -> FileRef | None:
     return FileRef(share.group(1), parts, span) if parts and ".." not in parts else None
 
 
+_PROGRAMS = {**PROCESS_PACKAGES, **PREFIX_PACKAGES}
+"""The package (rosdep key) of each program an ``executable`` action or a prefix starts."""
+
+
 # XML -------------------------------------------------------------------------------------
 _XML_FILES = {"include": "file", "set_parameters_from_file": "filename"}
 """XML launch actions naming a file, besides ``<param from=>``, and the attribute naming it."""
@@ -145,7 +147,7 @@ def _xml(path: str, text: str) -> Read | ParseProblem:
             froms = [(c.attribute("from") or "", c.span) for c in element.children
                      if c.tag == "param" and c.attribute("from") is not None]
             froms += [(defaults[found.group(1)] or "", span) for text, span in froms
-                      for found in [_VARIABLE.fullmatch(text.strip())]
+                      for found in [VARIABLE_READ.fullmatch(text.strip())]
                       if found and found.group(1) in defaults]  # and any file given
             remaps = [(c.attribute("from"), c.attribute("to"))
                       for c in element.children if c.tag == "remap"]

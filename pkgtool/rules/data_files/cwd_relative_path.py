@@ -8,6 +8,7 @@ import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity, shortened
+from pkgtool.model.ast_nodes import opens_to_write
 from pkgtool.model.installed import installed_data
 from pkgtool.model.launch import EXISTENCE_CHECKS
 from pkgtool.model.package import Package
@@ -175,11 +176,8 @@ def _file_read(call: ast.Call, index: Index) -> ast.expr | None:
 def _written_texts(call: ast.Call, index: Index) -> list[str]:
     """The relative path an ``open()`` call writes (a mode with ``w``, ``a`` or ``x``)."""
     func = call.func
-    mode = call.args[1] if len(call.args) > 1 else \
-        next((k.value for k in call.keywords if k.arg == "mode"), None)
     if not (isinstance(func, ast.Name) and func.id == "open" and "open" not in index.bound and
-            call.args and isinstance(mode, ast.Constant) and isinstance(mode.value, str) and
-            _WRITES & set(mode.value)):
+            call.args and opens_to_write(call)):
         return []
     return [text for text in _path_texts(call.args[0], index) if not posixpath.isabs(text)]
 

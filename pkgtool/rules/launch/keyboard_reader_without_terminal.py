@@ -7,6 +7,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.lazy_regex import lazy_pattern
+from pkgtool.model.launch import TERMINALS
 from pkgtool.model.package import Package
 from pkgtool.rules.registry import rule
 
@@ -23,9 +24,6 @@ _FILE_PREFIX = lazy_pattern(
 """A launch file setting ``launch-prefix`` for the nodes after it (``<let name=
 "launch-prefix" value="xterm -e"/>``, an argument of that name), which launch uses for a
 process given no prefix."""
-TERMINALS = ("xterm", "gnome-terminal", "konsole", "terminator", "tmux", "screen",
-             "x-terminal-emulator", "kitty", "alacritty", "tilix")
-"""Programs that give what they run a terminal."""
 
 
 @rule("LCH027", "keyboard-reader-without-terminal", Severity.ERROR,

@@ -9,6 +9,7 @@ from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import last_name, nodes_of_class
+from pkgtool.model.launch_reader import VARIABLE_READ
 from pkgtool.model.package import Package
 from pkgtool.model.text_comments import without_comments
 from pkgtool.model.python_visitor import parse_tree
@@ -16,7 +17,6 @@ from pkgtool.model.span import Span
 from pkgtool.rules.registry import rule
 from pkgtool.rules.launch._python_launch import text_argument
 from pkgtool.rules.syntax_trees import python_launch_files
-from pkgtool.lazy_regex import lazy_pattern
 
 _DECLARE = "DeclareLaunchArgument"
 _READ = "LaunchConfiguration"
@@ -25,8 +25,6 @@ _FRONTEND_DECLARED = (re.compile(r"<(?:arg|let)\b[^>]*?\bname\s*=\s*[\"']([^\"']
                                  re.M))
 """An XML (``<arg name="x">``, ``<let name="x">``) or YAML (``- arg:`` / ``name: x``)
 launch file's declared or set arguments."""
-_FRONTEND_READ = lazy_pattern(r"\$\(var\s+([\w.-]+)\s*\)")
-"""A ``$(var x)`` substitution of an XML or YAML launch file."""
 
 
 @rule("LCH008", "misspelled-launch-argument", Severity.ERROR,
@@ -90,7 +88,7 @@ def misspelled_launch_argument(package: Package) -> Iterator[Hit]:
                 yield _hit(Span(path, call.lineno, call.col_offset + 1), name, close[0])
     for path, text in frontends:
         declared = {name for pattern in _FRONTEND_DECLARED for name in pattern.findall(text)}
-        for read in _FRONTEND_READ.finditer(text):
+        for read in VARIABLE_READ.finditer(text):
             name = read.group(1)
             if name in declared_anywhere or len(re.findall(
                     rf"(?<![\w.-]){re.escape(name)}(?![\w.-])", text)) > 1:

@@ -7,12 +7,12 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
-from pkgtool.model.ast_nodes import (child_nodes, descendants, is_super_init, nodes_of_class,
-                                     subtree)
+from pkgtool.model.ast_nodes import descendants, is_super_init, nodes_of_class, subtree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import derives_from_node_alone
 from pkgtool.rules.python._attribute_guards import dynamic_attributes
+from pkgtool.rules.python._certain_code import certain_parts
 from pkgtool.rules.python._message_instances import method_receiver
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, base_names, installed_trees
@@ -194,7 +194,7 @@ class _Walk:
         for number, statement in enumerate(self.init.body):
             if self._may_run_package_code(statement):
                 return
-            for read in _certain_parts(statement):
+            for read in certain_parts(statement):
                 name = _self_attribute(read)
                 if name is None:
                     continue
@@ -321,58 +321,3 @@ def _first_stores(cls: ast.ClassDef, init: ast.FunctionDef) -> dict[str, tuple[s
                 found.setdefault(node.attr, (f"in `{method.name}`, which has not run yet", False))
     found.update({name: (f"line {line}", True) for name, line in lines.items()})
     return found
-
-
-def _certain_parts(statement: ast.stmt) -> Iterator[ast.AST]:
-    """The nodes of ``statement`` Python certainly evaluates when the statement runs (for
-    an augmented assignment, its target too: it is read first)."""
-    if isinstance(statement, (ast.Try, *FUNCTIONS, ast.ClassDef)) or \
-            type(statement).__name__ == "TryStar":
-        return
-    if isinstance(statement, ast.AugAssign):
-        yield statement.target
-        yield from _certain(statement.value)
-    elif isinstance(statement, (ast.If, ast.While)):
-        yield from _certain(statement.test)
-    elif isinstance(statement, (ast.For, ast.AsyncFor)):
-        yield from _certain(statement.iter)
-    elif isinstance(statement, (ast.With, ast.AsyncWith)):
-        for item in statement.items:
-            yield from _certain(item.context_expr)
-    elif isinstance(statement, ast.Assert):
-        yield from _certain(statement.test)
-    elif isinstance(statement, ast.Match):
-        yield from _certain(statement.subject)
-    elif isinstance(statement, (ast.Assign, ast.AnnAssign)):
-        if statement.value is not None:
-            yield from _certain(statement.value)
-        targets = statement.targets if isinstance(statement, ast.Assign) else [statement.target]
-        for target in targets:  # `self.config['k'] = v` reads `self.config`
-            if isinstance(target, (ast.Subscript, ast.Attribute)):
-                yield from _certain(target.value)
-            if isinstance(target, ast.Subscript):
-                yield from _certain(target.slice)
-    else:
-        for child in child_nodes(statement):
-            yield from _certain(child)
-
-
-def _certain(node: ast.AST) -> Iterator[ast.AST]:
-    """``node`` and the parts of it Python certainly evaluates with it: not the branches
-    of a conditional expression, the operands after the first of ``and``/``or``, a lambda's
-    body, nor a comprehension's but its first iterable."""
-    yield node
-    if isinstance(node, ast.Lambda):
-        return
-    if isinstance(node, ast.IfExp):
-        yield from _certain(node.test)
-    elif isinstance(node, ast.BoolOp):
-        yield from _certain(node.values[0])
-    elif isinstance(node, ast.Compare) and len(node.ops) > 1:  # `a < b < c` may stop at `b`
-        yield from _certain(node.left)
-        yield from _certain(node.comparators[0])
-    elif isinstance(node, (ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)):
-        yield from _certain(node.generators[0].iter)
-    else:
-        for child in child_nodes(node):
-            yield from _certain(child)

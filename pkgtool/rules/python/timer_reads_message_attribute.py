@@ -7,20 +7,17 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rclpy_node import NODE_ATTRIBUTES
-from pkgtool.model.ast_nodes import TRIES, child_nodes, descendants, nodes_of_class, subtree
+from pkgtool.model.ast_nodes import TRIES, descendants, nodes_of_class, subtree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import derives_from_node_alone
 from pkgtool.rules.python._attribute_guards import dynamic_attributes, guarded, probed_names
+from pkgtool.rules.python._certain_code import certain_parts
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
 _CALLBACK_AT = {"create_timer": 1, "create_subscription": 2}
 """Node methods registering a callback, by where their ``callback`` argument stands."""
-_MATCHES = tuple(getattr(ast, name) for name in ("Match",) if hasattr(ast, name))
-"""``match`` statements (Python 3.10): their cases branch."""
-_DEFERRED = (ast.Lambda, ast.ListComp, ast.SetComp, ast.DictComp, ast.GeneratorExp)
-"""Expressions whose inner code may run later, or not at all."""
 _WAITS = ("spin", "wait")
 """Parts of the names of calls in ``__init__`` that may run callbacks or wait for a message
 before the timer starts (``rclpy.spin_once(self)``, ``wait_for_message``)."""
@@ -215,41 +212,22 @@ def _class_level_names(cls: ast.ClassDef) -> Iterator[ast.Name]:
 
 def _certain_reads(function: ast.FunctionDef | ast.AsyncFunctionDef
                    ) -> Iterator[ast.Attribute]:
-    """The ``self.x`` reads of ``function`` that run every time it does: its statements in
-    order up to the first ``try``, loop body or branch that may return or raise (a branch's
-    test still runs); nothing inside lambdas or nested functions."""
+    """The ``self.x`` reads of ``function`` that run every time it does: what Python
+    certainly evaluates of its statements (:func:`certain_parts`) in order up to the first
+    ``try``, ``match``, ``with``, loop body or branch that may return or raise (a branch's
+    test and a loop's iterable still run)."""
     for statement in function.body:
-        if isinstance(statement, (*TRIES, *FUNCTIONS, ast.ClassDef, *_MATCHES)):
+        if isinstance(statement, (*TRIES, *FUNCTIONS, ast.ClassDef, ast.Match, ast.With,
+                                  ast.AsyncWith)):
             return
-        if isinstance(statement, (ast.If, ast.While)):
-            yield from _reads(statement.test, function)
-            if any(isinstance(n, (ast.Return, ast.Raise, ast.Break, ast.Continue))
-                   for n in descendants(statement)):
-                return
-            continue
-        if isinstance(statement, (ast.For, ast.AsyncFor)):
-            yield from _reads(statement.iter, function)
+        yield from (part for part in certain_parts(statement)
+                    if isinstance(part, ast.Attribute) and isinstance(part.ctx, ast.Load) and
+                    _is_self(part.value, function))
+        if isinstance(statement, (ast.For, ast.AsyncFor)) or \
+                isinstance(statement, (ast.If, ast.While)) and any(
+                    isinstance(n, (ast.Return, ast.Raise, ast.Break, ast.Continue))
+                    for n in descendants(statement)):
             return
-        if isinstance(statement, (ast.With, ast.AsyncWith)):
-            return
-        yield from _reads(statement, function)
-
-
-def _reads(node: ast.AST, function: ast.FunctionDef | ast.AsyncFunctionDef
-           ) -> Iterator[ast.Attribute]:
-    """The ``self.x`` reads in ``node`` that run whenever it does: not inside lambdas,
-    comprehensions, the branches of a conditional expression or the right of ``and``/``or``."""
-    found = [node]
-    for current in found:
-        if isinstance(current, ast.Attribute) and isinstance(current.ctx, ast.Load) and \
-                _is_self(current.value, function):
-            yield current
-        if isinstance(current, ast.BoolOp):
-            found.append(current.values[0])
-        elif isinstance(current, ast.IfExp):
-            found.append(current.test)
-        elif not isinstance(current, _DEFERRED):
-            found.extend(child_nodes(current))
 
 
 def _is_self(value: ast.expr, function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
