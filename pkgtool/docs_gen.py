@@ -116,12 +116,15 @@ def rules_table(rules: Mapping[str, Rule]) -> str:
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    """Write docs/rules.md (or the given file); with ``--check``, only compare."""
+    """Write docs/rules.md and the rule index (or only the given file); with ``--check``,
+    only compare."""
     parser = argparse.ArgumentParser(prog="python -m pkgtool.docs_gen", description=__doc__)
     parser.add_argument("output", nargs="?", type=Path, default=DEFAULT_OUTPUT)
     parser.add_argument("--check", action="store_true", help="exit 1 if the file is stale")
     args = parser.parse_args(argv)
-    wanted = {args.output: rules_markdown(load_all()), INDEX: index_source(load_all())}
+    wanted = {args.output: rules_markdown(load_all())}
+    if args.output == DEFAULT_OUTPUT:  # another file is a copy: the index stays as it is
+        wanted[INDEX] = index_source(load_all())
     stale = [path for path, text in wanted.items()
              if (path.read_text(encoding="utf-8") if path.is_file() else None) != text]
     if args.check:

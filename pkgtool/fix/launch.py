@@ -229,6 +229,16 @@ def executable(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     yield from renames(package, findings, re.compile(r"^`([^`]+)` is not an executable"))
 
 
+@fixer("LCH028", "Hand an included launch file the argument it declares", safe=False)
+def include_argument(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Rename a misspelt argument handed to an included launch file of the package to the
+    one it declares spelled like it (``use_sim_tme`` to ``use_sim_time``); a name a word
+    away (``params`` for ``params_file``) is the user's to choose. Unsafe: the included file
+    then gets the value, where it kept its default before."""
+    yield from renames(package, findings, re.compile(r"^`([^`]+)` is handed to"),
+                       lazy_pattern(r"Hand it as `([^`]+)`, the name `[^`]+` declares"))
+
+
 @fixer("LCH013", "Name the package of the executable a node starts")
 def node_package(package: Package, findings: list[Finding]) -> Iterator[Fix]:
     """Python node actions: insert ``package='<this package>'`` before the ``executable=``

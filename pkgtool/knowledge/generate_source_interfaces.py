@@ -2,7 +2,8 @@
 interface files of ROS packages that have no PyPI wheel, read from their repositories.
 
 Courses use interface packages no wheel installs (turtlesim, example_interfaces, nav2_msgs,
-tf2_msgs, irobot_create_msgs, vision_msgs): their ``.msg``, ``.srv`` and ``.action`` files
+tf2_msgs, irobot_create_msgs, vision_msgs, ackermann_msgs, control_msgs, moveit_msgs,
+geographic_msgs): their ``.msg``, ``.srv`` and ``.action`` files
 are read at the commits :data:`PINS` names for each distribution, with the reading of
 :mod:`pkgtool.knowledge.interface_definitions` (checked against the generated classes of every
 wheel's interface). A package is left out of a distribution when one of its interface files
@@ -31,7 +32,10 @@ KINDS = ("msg", "srv", "action")
 PACKAGES = {"turtlesim": "ros/ros_tutorials", "example_interfaces": "ros2/example_interfaces",
             "nav2_msgs": "ros-navigation/navigation2", "tf2_msgs": "ros2/geometry2",
             "irobot_create_msgs": "iRobotEducation/irobot_create_msgs",
-            "vision_msgs": "ros-perception/vision_msgs"}
+            "vision_msgs": "ros-perception/vision_msgs",
+            "ackermann_msgs": "ros-drivers/ackermann_msgs",
+            "control_msgs": "ros-controls/control_msgs", "moveit_msgs": "moveit/moveit_msgs",
+            "geographic_msgs": "ros-geographic-info/geographic_info"}
 """The packages read, and the repository holding each."""
 PINS = {
     "humble": {"ros/ros_tutorials": "ba29c3f376197e3736f497639299f855cbf73390",
@@ -39,17 +43,28 @@ PINS = {
                "ros-navigation/navigation2": "3c3db59d6969d8ecee8e68468693d006397f4a0c",
                "ros2/geometry2": "d0dbd516d1748cfe1b293e0f7d5b2f82ddd3438a",
                "iRobotEducation/irobot_create_msgs": "a4b94407977d5efb16e97fee52e031a7f1f39209",
-               "ros-perception/vision_msgs": "e77fa2d97d69abaaa546592892d2d5d16cec9977"},
+               "ros-perception/vision_msgs": "e77fa2d97d69abaaa546592892d2d5d16cec9977",
+               "ros-drivers/ackermann_msgs": "df2fe51eb04e8bd3c0ba4f8a6ded8aea3815b660",
+               "ros-controls/control_msgs": "2e31e46d714819e669e2c3645802df9a9ebd1b43",
+               "moveit/moveit_msgs": "45820c507a418256abd3808e86ea8be9235701f0",
+               "ros-geographic-info/geographic_info": "2a0ae99219645b8d29772b997ef31f8e17345d52"},
     "jazzy": {"ros/ros_tutorials": "9481d9a4f09d923cc972d017c6acc0e61fa9d7bb",
               "ros2/example_interfaces": "4d7d086e4791e1839fecb9c50a1291d4056b916f",
               "ros-navigation/navigation2": "f4108e5b1c2bce804a1aa0c7be6673a8eb4a1501",
               "ros2/geometry2": "646342c6164e837d69460e3d28e7a025396544f6",
-              "ros-perception/vision_msgs": "e77fa2d97d69abaaa546592892d2d5d16cec9977"},
+              "ros-perception/vision_msgs": "e77fa2d97d69abaaa546592892d2d5d16cec9977",
+              "ros-drivers/ackermann_msgs": "df2fe51eb04e8bd3c0ba4f8a6ded8aea3815b660",
+              "ros-controls/control_msgs": "f901df2662f22a39a06aa04a85a34602c47e3cc0",
+              "moveit/moveit_msgs": "55f802fe3ac455123efcdba1037d3abf2c8e4dcb",
+              "ros-geographic-info/geographic_info": "2a0ae99219645b8d29772b997ef31f8e17345d52"},
 }
 """Distribution -> repository -> commit: the head of the distribution's branch, except
 ros_tutorials for jazzy (1.8.2, the release its jazzy branch starts from; the mirror holds no
-jazzy branch) and vision_msgs (4.1.1, the release of both distributions). irobot_create_msgs
-has no jazzy branch: Jazzy is left unknown for it."""
+jazzy branch), vision_msgs (4.1.1, the release of both distributions), ackermann_msgs (2.0.2,
+the release of both), moveit_msgs (2.2.1 for humble, 2.6.0 for jazzy: the releases) and
+geographic_info (its ros2 branch, both distributions' source). irobot_create_msgs has no jazzy
+branch: Jazzy is left unknown for it. moveit_msgs' repository is the ``moveit/moveit_msgs``
+rosdistro names by its former owner, ``ros-planning``."""
 
 Found = dict[str, dict[str, dict[str, str]]]
 """Distribution -> package -> ``pkg/kind/Class`` -> fields entry."""

@@ -404,7 +404,8 @@ class _Reader(ast.NodeVisitor):
             joined = None if shell is not None and not (isinstance(shell, ast.Constant) and
                                                         shell.value is False) else \
                 next(((self._span(item), keyword, item.value) for keyword in _ARGUMENT_LISTS
-                      for item in _joined_words(_keyword(node, keyword))), None)
+                      for item in _joined_words(_keyword(node, keyword),
+                                                keyword == "ros_arguments")), None)
             self.nodes.append(NodeRef(
                 package if isinstance(package, str) else None,
                 executable if isinstance(executable, str) else None, self._span(node), action,
@@ -933,15 +934,26 @@ _JOINED_WORDS = lazy_pattern(r"\s*-[\w-]+\s+[^\s-]|\s*[\w./:-]+\s+--?[A-Za-z][\w
 debug``) or a word and an option (``serial --dev /dev/ttyACM0``)."""
 
 
-def _joined_words(value: ast.expr | None) -> Iterator[ast.Constant]:
+_SHORT_OPTION_GLUED = lazy_pattern(r"\s*-[A-Za-z]\s+[^\s-]\S*\s*")
+"""A one-letter option and its value in one item (``'-z 0.5'``): Python's argparse and
+getopt take the rest of the item as the option's value (``' 0.5'``, which ``float()``
+reads), as they take ``-z0.5``."""
+
+
+def _joined_words(value: ast.expr | None, ros_arguments: bool) -> Iterator[ast.Constant]:
     """String literals of a list or tuple display that hold several command-line words (not
     the value of an option before them, which may well be a line of words the program splits
-    itself: ``'--controller-ros-args', '-r a:=b'``; the caller leaves out ``shell=True``
-    actions, whose shell splits the joined line again)."""
+    itself: ``'--controller-ros-args', '-r a:=b'``; not a one-letter option glued to its
+    value before ``--ros-args`` (``ros_arguments``: all are ROS's), which the program's
+    argparse reads; the caller leaves out ``shell=True`` actions, whose shell splits the
+    joined line again)."""
     items = value.elts if isinstance(value, (ast.List, ast.Tuple)) else []
     for before, item in zip([None, *items], items):
+        ros_arguments = ros_arguments or isinstance(before, ast.Constant) and \
+            before.value == "--ros-args"
         if isinstance(item, ast.Constant) and isinstance(item.value, str) and \
-                _JOINED_WORDS.match(item.value) and not _takes_a_value(before):
+                _JOINED_WORDS.match(item.value) and not _takes_a_value(before) and \
+                (ros_arguments or not _SHORT_OPTION_GLUED.fullmatch(item.value)):
             yield item
 
 

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import functools
 import math
+import re
 from collections.abc import Iterator
 
 from pkgtool.model.launch import (COMMAND_PACKAGES, PREFIX_PACKAGES, PROCESS_PACKAGES, FileRef,
@@ -26,6 +27,11 @@ _SHARE_WORD = lazy_pattern(r"(?<![^\s])\$\(\s*find-pkg-share\s+[A-Za-z0-9_]+\s*\
 """A share path that is one whole word of a node's ``args`` (``-d $(find-pkg-share p)/a.rviz``)."""
 VARIABLE_READ = lazy_pattern(r"\$\(var\s+([\w.-]+)\s*\)")
 """A ``$(var x)`` substitution of an XML or YAML launch file (reading the argument ``x``)."""
+FRONTEND_DECLARED = (lazy_pattern(r"<(?:arg|let)\b[^>]*?\bname\s*=\s*[\"']([^\"']+)[\"']"),
+                     lazy_pattern(r"^\s*-?\s*(?:arg|let):\s*\n\s+name:\s*[\"']?([\w.-]+)",
+                                  re.M))
+"""An XML (``<arg name="x">``, ``<let name="x">``) or YAML (``- arg:`` / ``name: x``)
+launch file's declared or set arguments."""
 _COMMAND = lazy_pattern(r"""\$\(\s*command\s+['"]?\s*([\w.-]+)""")
 _SHARE_PATH = lazy_pattern(r"^\$\(\s*find-pkg-share\s+([A-Za-z0-9_]+)\s*\)(/[^$]*)$")
 NODE_TAGS = {"node": ("exec", "executable"), "lifecycle_node": ("exec", "executable"),

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import ast
+from collections.abc import Iterable
 
 from pkgtool.model.ast_nodes import (child_nodes, descendants, last_name, nodes_of_class,
                                      opens_to_write, subtree)
@@ -116,6 +117,7 @@ def unread_module_values(tree: ast.Module, exported: frozenset[str]) -> set[ast.
     ``__all__``) and that is not among the ``exported`` names other modules import; none
     when the module may read its names indirectly (``globals()``, ``vars()``, ``eval``)."""
     read = set(exported)
+    texts: dict[str, list[ast.Constant]] = {}
     for node in nodes_of_class(tree, ast.Name, ast.Global, ast.Nonlocal, ast.Call, ast.Constant):
         if isinstance(node, ast.Name) and not isinstance(node.ctx, ast.Store):
             read.add(node.id)
@@ -125,9 +127,18 @@ def unread_module_values(tree: ast.Module, exported: frozenset[str]) -> set[ast.
                 node.func.id in SCOPE_READERS | {"globals"}:
             return set()
         elif isinstance(node, ast.Constant) and isinstance(node.value, str):
-            read.add(node.value)  # `__all__ = ['CONFIG']`, getattr(module, 'CONFIG')
+            texts.setdefault(node.value, []).append(node)  # `__all__ = ['CONFIG']`,
+            # getattr(module, 'CONFIG'); not a text of the value itself (`camera =
+            # Node(executable='camera')`)
     return {node.value for node in tree.body  # type: ignore[attr-defined]
-            if _names_path(node) and node.targets[0].id not in read}
+            if _names_path(node) and node.targets[0].id not in read and
+            not _named_elsewhere(texts.get(node.targets[0].id, ()), node.value)}
+
+
+def _named_elsewhere(texts: Iterable[ast.Constant], value: ast.expr) -> bool:
+    """True when one of ``texts`` lies outside ``value``."""
+    inside = {id(n) for n in subtree(value)}
+    return any(id(text) not in inside for text in texts)
 
 
 def overwritten_values(function: ast.FunctionDef | ast.AsyncFunctionDef, nodes: list[ast.AST]

@@ -174,7 +174,7 @@ def load_package(root: Path, context: Context | None = None, *,
                 continue  # test data, deliberately broken at times: not package files
             text = text_of(relpath)
             if text is not None and "{%" not in text and \
-                    not text.startswith(_OPENCV_STORAGE):  # a Jinja template, OpenCV's own
+                    not _OPENCV_STORAGE.match(text):  # a Jinja template, OpenCV's own
                 found = yaml_problem(relpath, text)
                 if isinstance(found, ParseProblem):
                     problems.append(found)
@@ -189,6 +189,11 @@ def load_package(root: Path, context: Context | None = None, *,
                 modules.append(module)
                 if module.syntax_error and not is_test_data(relpath):
                     problems.append(module.syntax_error)
+    readers = [texts.get(launch.path, "") for launch in launches if launch.kind == "python"]
+    for relpath in files:  # xacro files a launch file may read raw (LCH025 looks inside)
+        if relpath.endswith(".xacro") and any(
+                relpath.rpartition("/")[2] in text and ".read" in text for text in readers):
+            text_of(relpath, quiet=True)
     for other in ("README.md", "README.rst", "README.txt", "README"):  # `ros2 run ...`
         if other in files:
             text_of(other, quiet=True)  # documentation: in any encoding, nothing reads it
@@ -214,9 +219,10 @@ _ROS2_XML = lazy_pattern(r"<node\b[^>]*\sexec\s*=|\$\(find-pkg-(?:share|prefix)\
                          r"<set_parameter\s|<executable\s")
 """What only ROS 2's XML launch format has (a ``<node exec=...>``, ``$(find-pkg-share x)``):
 a ``.launch`` file holding it is ROS 2's, not a roslaunch file."""
-_OPENCV_STORAGE = ("%YAML:", "\ufeff%YAML:")
-"""How OpenCV's ``FileStorage`` files start (``%YAML:1.0``): a format of OpenCV's that YAML
-parsers refuse, read by ``cv2.FileStorage`` (ORB-SLAM's camera settings), never by ROS."""
+_OPENCV_STORAGE = lazy_pattern(r"\ufeff?%YAML(?::|[ \t]+1\.0\b)")
+"""How OpenCV's ``FileStorage`` files start (``%YAML:1.0``, or ``%YAML 1.0``: a version no
+YAML parser of ROS takes): a format of OpenCV's that YAML parsers refuse, read by
+``cv2.FileStorage`` (ORB-SLAM's camera settings), never by ROS."""
 
 
 def is_test_material(relpath: str) -> bool:

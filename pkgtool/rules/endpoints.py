@@ -141,6 +141,13 @@ class _Overrides:
     anywhere: dict[str, set[str]]
 
 
+_QUOTED_WORD = re.compile(r"""(?<!\bexecutable=)(?<!\bexec=)(?<!\bname=)(?<!\bpackage=)"""
+                          r"""(?<!\bpkg=)['"]/?(\w[\w.]*(?:/\w[\w.]*)*)['"]""")
+"""A word a launch file quotes, but as a node's executable, name or package (``name=
+'safety_stop'``, ``exec="safety_stop"``): what may be a topic it remaps or a parameter it
+sets."""
+
+
 def _overrides(package: Package) -> _Overrides:
     by_class: dict[tuple[str, str], dict[str, set[str]]] = {}
     anywhere: dict[str, set[str]] = {}
@@ -157,7 +164,7 @@ def _overrides(package: Package) -> _Overrides:
             for key, value in re.findall(r"^\s*([\w.]+)\s*:\s*(.*?)\s*$", text, re.M):
                 anywhere.setdefault(key, set()).add(value.strip("'\""))
         elif "launch" in path.rsplit("/", 1)[-1]:
-            for word in re.findall(r"""['"]/?(\w[\w.]*(?:/\w[\w.]*)*)['"]""", text):
+            for word in _QUOTED_WORD.findall(text):
                 anywhere.setdefault(word, set()).add("*")
     return _Overrides(by_class, anywhere)
 

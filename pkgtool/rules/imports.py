@@ -441,6 +441,40 @@ def run_as_a_script(package: Package, module: PythonModule,
     return runs_code_at_its_top(package, module) and not importers_of(package, module)
 
 
+def script_helpers(package: Package, folder: str, scripts: frozenset[str]) -> frozenset[str]:
+    """The modules of ``folder`` that only scripts of the folder import, by their bare name
+    (``import detector``), or helpers of theirs (``run_me.py`` imports ``utils``, which
+    imports ``policy``, which may import ``utils`` back): they run with the scripts, their
+    folder on ``sys.path`` (no console script runs them, nothing imports them through the
+    package). The largest such set whose members a script reaches through such imports."""
+    here = [m for m in package.modules if posixpath.dirname(m.path) == folder and
+            m.path not in scripts]
+    loaders = {m.path: importers_of(package, m) for m in here}
+    runs = {m.path for m in here
+            if not loaders[m.path] and runs_code_at_its_top(package, m)}  # run_as_a_script
+    links: dict[str, set[str]] = {}
+    for module in here:
+        if module.path in runs:
+            continue
+        name = posixpath.basename(module.path)[:-3]
+        importers = loaders[module.path]
+        if importers and all(posixpath.dirname(path) == folder and
+                             {i.module for i in imports} == {name}
+                             for path, imports in importers.items()):
+            links[module.path] = set(importers)
+    helpers = set(links)
+    while dropped := {path for path in helpers if not links[path] <= runs | helpers}:
+        helpers -= dropped
+    reached: set[str] = set()
+    todo = [path for path in helpers if links[path] & runs]
+    while todo:
+        path = todo.pop()
+        if path not in reached:
+            reached.add(path)
+            todo.extend(other for other in helpers if path in links[other])
+    return frozenset(reached)
+
+
 def runs_code_at_its_top(package: Package, module: PythonModule) -> bool:
     """True when ``module`` runs code at its top level: a call, also one anywhere inside a
     top-level loop, ``with``, ``if`` or ``try`` block (``for name in os.listdir(...): if

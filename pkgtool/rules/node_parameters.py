@@ -25,6 +25,7 @@ from pkgtool.model.python_visitor import parse_tree
 from pkgtool.model.span import Span
 from pkgtool.records import record
 from pkgtool.rules.console_scripts import scripts_and_modules
+from pkgtool.rules.launch_includes import own_includes
 from pkgtool.rules.node_api import NODE_CLASSES, name_argument, node_constructions
 from pkgtool.rules.scopes import single_assignments
 from pkgtool.rules.syntax_trees import Index, installed_trees
@@ -511,15 +512,18 @@ _XML_INCLUDE = lazy_pattern(r"<include\b.*?(?:/>|</include>)", re.S)
 
 
 def _handed_to_includes(package: Package) -> str:
-    """The text of what the launch files hand to the launch files they include: a Python
-    ``IncludeLaunchDescription``'s ``launch_arguments`` (with the values of the names it
-    reads, as the module assigns them), an XML ``<include>`` element. A parameter file named
-    there may reach nodes the included file starts, whose names pkgtool does not see."""
+    """The text of what the launch files hand to the launch files of other packages they
+    include: a Python ``IncludeLaunchDescription``'s ``launch_arguments`` (with the values of
+    the names it reads, as the module assigns them), an XML ``<include>`` element. A
+    parameter file named there may reach nodes the included file starts, whose names pkgtool
+    does not see (it sees those of the package's own launch files)."""
+    own = {(include.path, include.line) for include in own_includes(package)}
     found: list[str] = []
     for launch in package.launch_files:
         text = package.texts.get(launch.path, "")
         if launch.kind == "xml":
-            found += _XML_INCLUDE.findall(text)
+            found += [element.group(0) for element in _XML_INCLUDE.finditer(text)
+                      if (launch.path, text.count("\n", 0, element.start()) + 1) not in own]
             continue
         tree = parse_tree(launch.path, text) if launch.kind == "python" and \
             "IncludeLaunchDescription" in text else None
@@ -532,7 +536,8 @@ def _handed_to_includes(package: Package) -> str:
             name = func.id if isinstance(func, ast.Name) else \
                 func.attr if isinstance(func, ast.Attribute) else ""
             handed = [k.value for k in call.keywords if k.arg == "launch_arguments"] + \
-                call.args[1:2] if name.endswith("IncludeLaunchDescription") else []
+                call.args[1:2] if name.endswith("IncludeLaunchDescription") and \
+                (launch.path, call.lineno) not in own else []
             for part in handed:
                 found.append(ast.unparse(part))
                 found += [ast.unparse(values[n.id]) for n in ast.walk(part)

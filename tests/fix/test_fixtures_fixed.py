@@ -13,6 +13,7 @@ from pkgtool.fix.registry import fixers
 FIXTURES = Path(__file__).resolve().parents[1] / "fixtures"
 CASES = [(code, case) for code in fixers() for case in sorted((FIXTURES / code / "bad").iterdir())]
 PARTLY = {("PYC080", "indexed_messages"), ("PYC046", "methods_not_called"),
+          ("LCH028", "misspelt_include_arguments"),
           ("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprecated_ids"),
           ("LCH001", "node_of_another_workspace_package"),
           ("LCH010", "command_as_one_formatted_string"),

@@ -48,7 +48,7 @@ def test_lookups() -> None:
     assert interfaces.interface_kind("test_msgs", "Fibonacci") == "action"
     assert interfaces.interface_kind("std_msgs", "NoSuch") is None
     assert interfaces.is_known_package("std_msgs")
-    assert not interfaces.is_known_package("control_msgs")  # unknown: never reported
+    assert not interfaces.is_known_package("px4_msgs")  # unknown: never reported
 
 
 @pytest.mark.parametrize(("text", "problem"), [

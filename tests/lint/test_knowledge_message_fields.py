@@ -77,7 +77,7 @@ def test_nested_messages_and_near_misses() -> None:
 
 
 def test_unknown_names_and_other_distributions() -> None:
-    assert message_fields.message_of("control_msgs.action.GripperCommand.Goal") is None
+    assert message_fields.message_of("px4_msgs.msg.VehicleCommand") is None
     assert message_fields.message_of("std_msgs.msg.NoSuch") is None
     assert message_fields.message_of("std_msgs.String") is None
     assert message_fields.message_of("std_msgs.msg.String", "kilted") is None

@@ -11,10 +11,11 @@ from pkgtool.findings import Hit, Severity, shortened
 from pkgtool.model.ast_nodes import opens_to_write
 from pkgtool.model.installed import installed_data
 from pkgtool.model.launch import EXISTENCE_CHECKS
+from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.existence_checks import checks_files
-from pkgtool.rules.imports import console_script_files, run_as_a_script
+from pkgtool.rules.imports import console_script_files, run_as_a_script, script_helpers
 from pkgtool.rules.registry import rule
 from pkgtool.rules.relative_paths import assigned_value, package_file_named
 from pkgtool.rules.syntax_trees import Index, installed_trees, launch_indexes
@@ -65,9 +66,11 @@ def cwd_relative_path(package: Package) -> Iterator[Hit]:
     folder (`os.chdir()`) is left alone: it may fall back when the file is not there, or
     open it from the right folder. Nor is a script kept in the package folder and run by hand
     from there (it runs code at its top, and no console script runs it, no module imports
-    it: `python3 converter.py`). Nor is a path a module of the package also opens to write
-    (`open('data.json', 'w')`): a file nodes exchange where they run, of which the package's
-    copy is a sample. Tests are not checked (pytest runs them from a known folder).
+    it: `python3 converter.py`), nor a helper only such scripts of its folder import (by its
+    bare name: `from utils import load`): both run from that folder. Nor is a path a module
+    of the package also opens to write (`open('data.json', 'w')`): a file nodes exchange
+    where they run, of which the package's copy is a sample. Tests are not checked (pytest
+    runs them from a known folder).
 
     ## Why is this bad?
     A relative path is resolved against the working folder of the process, not against the
@@ -90,8 +93,9 @@ def cwd_relative_path(package: Package) -> Iterator[Hit]:
     ```
     """
     scripts = console_script_files(package)
+    helpers: dict[str, frozenset[str]] = {}  # by folder, worked out when first needed
     indexes = [(module.path, index) for module, _, index in installed_trees(package)
-               if not run_as_a_script(package, module, scripts)]
+               if not _run_by_hand(package, module, scripts, helpers)]
     shares = _share_paths(package)
     installed_as = {below: source for source, below in shares.items()}
     written = {posixpath.normpath(text) for _, index in indexes for call in index.calls
@@ -217,3 +221,15 @@ def _hit(span: Span, call: ast.Call, text: str, named: tuple[str, str], name: st
                    f"{parts})`: data_files installs `{inside}` there")
     return Hit(span, message, f"Install `{inside}` with data_files into `share/{name}` and open "
                f"it from `get_package_share_directory('{name}')`")
+
+
+def _run_by_hand(package: Package, module: PythonModule, scripts: frozenset[str],
+                 helpers: dict[str, frozenset[str]]) -> bool:
+    """True for a script kept in the package folder and run by hand from there, and for a
+    helper only such scripts import (``helpers``: by folder, filled as asked)."""
+    if run_as_a_script(package, module, scripts):
+        return True
+    folder = posixpath.dirname(module.path)
+    if folder not in helpers:
+        helpers[folder] = script_helpers(package, folder, scripts)
+    return module.path in helpers[folder]

@@ -12,9 +12,8 @@ from pkgtool.model.modules import Import, PythonModule
 from pkgtool.model.package import Package
 from pkgtool.rules.imports import (ANY, console_script_files, declared, enclosing_package_import,
                                    installed_code, path_modules, python_package_of,
-                                   beside_the_scripts, copied_beside_the_scripts, importers_of,
-                                   run_as_a_script,
-                                   runs_code_at_its_top)
+                                   beside_the_scripts, copied_beside_the_scripts,
+                                   run_as_a_script, script_helpers)
 from pkgtool.rules.dependencies._cmake_scripts import uninstalled_script_neighbours
 from pkgtool.rules.registry import rule
 from pkgtool.lazy_regex import lazy_pattern
@@ -120,7 +119,7 @@ def sibling_module_import(package: Package) -> Iterator[Hit]:
                 continue
             if exempt is None:
                 if folder not in helpers:
-                    helpers[folder] = _script_helpers(package, folder, scripts)
+                    helpers[folder] = script_helpers(package, folder, scripts)
                 exempt = run_as_a_script(package, module, scripts) or \
                     module.path in helpers[folder]
             if exempt:
@@ -183,40 +182,6 @@ def _third_party_meant(package: Package, folder: str, imported: Import,
     path = f"{folder}/{imported.module.replace('.', '/')}"
     return any(key in skip for key in keys) or not (
         package.has_file(f"{path}.py") or package.has_file(f"{path}/__init__.py"))
-
-
-def _script_helpers(package: Package, folder: str, scripts: frozenset[str]) -> frozenset[str]:
-    """The modules of ``folder`` that only scripts of the folder import, by their bare name
-    (``import detector``), or helpers of theirs (``run_me.py`` imports ``utils``, which
-    imports ``policy``, which may import ``utils`` back): they run with the scripts, their
-    folder on ``sys.path`` (no console script runs them, nothing imports them through the
-    package). The largest such set whose members a script reaches through such imports."""
-    here = [m for m in package.modules if posixpath.dirname(m.path) == folder and
-            m.path not in scripts]
-    loaders = {m.path: importers_of(package, m) for m in here}
-    runs = {m.path for m in here
-            if not loaders[m.path] and runs_code_at_its_top(package, m)}  # run_as_a_script
-    links: dict[str, set[str]] = {}
-    for module in here:
-        if module.path in runs:
-            continue
-        name = posixpath.basename(module.path)[:-3]
-        importers = loaders[module.path]
-        if importers and all(posixpath.dirname(path) == folder and
-                             {i.module for i in imports} == {name}
-                             for path, imports in importers.items()):
-            links[module.path] = set(importers)
-    helpers = set(links)
-    while dropped := {path for path in helpers if not links[path] <= runs | helpers}:
-        helpers -= dropped
-    reached: set[str] = set()
-    todo = [path for path in helpers if links[path] & runs]
-    while todo:
-        path = todo.pop()
-        if path not in reached:
-            reached.add(path)
-            todo.extend(other for other in helpers if path in links[other])
-    return frozenset(reached)
 
 
 def _imports_itself(module: PythonModule | None, name: str) -> bool:

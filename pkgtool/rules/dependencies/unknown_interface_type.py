@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
@@ -34,7 +35,8 @@ def unknown_interface_type(package: Package) -> Iterator[Hit]:
     XML, YAML) and YAML files outside `test/` (parameters, bridge configurations) and checks
     them like DEP008: against the package's own interface folders, the workspace's interface
     packages and (for a jazzy target) pkgtool's table of the ROS 2 Jazzy interface packages.
-    Unknown packages are not reported, nor types in comments; the companion types of
+    Unknown packages are not reported, nor types in comments, nor the values of keys naming
+    a topic (`ros_topic_name: sensor_msgs/msg/navsat`); the companion types of
     services and actions (`std_srvs/srv/Trigger_Event`) count as DEP008 counts them.
 
     ## Why is this bad?
@@ -57,14 +59,24 @@ def unknown_interface_type(package: Package) -> Iterator[Hit]:
     for path in _files(package):
         text = package.texts[path]
         for match in _TYPE.finditer(text):
-            if _in_comment(path, text, match.start()):
-                continue  # documentation, or a line left out: nothing resolves it
+            if _in_comment(path, text, match.start()) or _topic_value(text, match.start()):
+                continue  # documentation, a line left out, a topic's name: no type
             name, kind, leaf = match.groups()
             known = interfaces_for(package, name)
             problem = None if known is None else type_problem(
                 name, kind, leaf, known, package.context.distro)
             if problem:
                 yield Hit(Span.of_offset(path, text, match.start()), problem)
+
+
+_TOPIC_KEY = lazy_pattern(r"[\w-]*topic[\w-]*[\"']?\s*[:=]\s*[\"']?$", re.I)
+"""The key of a topic's name (``ros_topic_name: ``, ``topic=\"``) just before a value."""
+
+
+def _topic_value(text: str, offset: int) -> bool:
+    """True when ``offset`` of ``text`` starts the value of a key naming a topic: a bridge's
+    ``ros_topic_name: sensor_msgs/msg/navsat`` names a topic so spelt, not a type."""
+    return _TOPIC_KEY.search(text[text.rfind("\n", 0, offset) + 1:offset]) is not None
 
 
 _HASH_COMMENT = lazy_pattern(r"(?:^|\s)#")

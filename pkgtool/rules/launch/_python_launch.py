@@ -4,17 +4,25 @@ make (which files they read: :func:`pkgtool.rules.syntax_trees.launch_indexes`).
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Iterable, Iterator
 
-from pkgtool.model.ast_nodes import subtree
+from pkgtool.knowledge.rosdistro import any_stdlib_module
+from pkgtool.lazy_regex import lazy_pattern
+from pkgtool.model.ast_nodes import last_name, subtree
 from pkgtool.model.launch import LaunchFile, is_launch_test, parse_launch
+from pkgtool.model.launch_reader import FRONTEND_DECLARED, VARIABLE_READ
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
+from pkgtool.model.span import Span
+from pkgtool.model.text_comments import without_comments
 from pkgtool.rules.scopes import single_assignments
-from pkgtool.rules.syntax_trees import Index, launch_indexes
+from pkgtool.rules.syntax_trees import Index, launch_indexes, python_launch_files
 
 FUNCTION = "generate_launch_description"
 """The function ``ros2 launch`` calls in a Python launch file."""
+_DECLARE = "DeclareLaunchArgument"
+_READ = "LaunchConfiguration"
 
 
 def text_argument(call: ast.Call, keyword: str) -> str | None:
@@ -36,6 +44,41 @@ def launch_class(call: ast.Call, index: Index) -> tuple[str, str]:
     import (``launch.actions``, ``DeclareLaunchArgument``); ``("", "")`` for any other call."""
     module, _, name = (index.qualified(call.func) or "").rpartition(".")
     return (module, name) if module.split(".")[0] in ("launch", "launch_ros") else ("", "")
+
+
+_PLAIN_MODULES = frozenset({"launch", "launch_ros", "launch_xml", "launch_yaml",
+                            "ament_index_python", "os", "sys", "pathlib", "yaml", "json", "math",
+                            "typing", "glob", "xacro", "__future__"})
+"""Modules a launch file imports that never read its launch configurations behind its back
+(a helper module of the package may: ``make_nodes()`` reading ``LaunchConfiguration('x')``)."""
+_PASSED_ON = frozenset({"IncludeLaunchDescription", "OpaqueFunction", "SetLaunchConfiguration",
+                        "LaunchConfigurationEquals", "LaunchConfigurationNotEquals"})
+"""Launch classes through which a configuration is read without a ``LaunchConfiguration`` of
+its name in the file: included files see every configuration, an opaque function reads
+``context.launch_configurations``, the conditions take a name."""
+
+
+READ_BY_LAUNCH = frozenset({"launch-prefix", "launch-prefix-filter", "emulate_tty"})
+"""Launch configurations launch itself reads for every process it starts (the prefix of one
+given none, whether to emulate a terminal)."""
+
+
+def reads_shown(index: Index) -> bool:
+    """True when every read of a configuration shows in the file: it imports only modules
+    of :data:`_PLAIN_MODULES` and the standard library, uses none of :data:`_PASSED_ON`, and
+    loads no parameter file with substitutions (``ParameterFile(path, allow_substs=True)``
+    reads ``$(var name)`` in the file)."""
+    modules = {module.split(".")[0] for module in index.aliases.values()}
+    return not modules - _PLAIN_MODULES - any_stdlib_module() and \
+        not index.relative and \
+        not any(launch_class(call, index)[1] in _PASSED_ON or _substitutes(call)
+                for call in index.calls)
+
+
+def _substitutes(call: ast.Call) -> bool:
+    """True for a call given ``allow_substs=`` anything but a literal False."""
+    return any(k.arg == "allow_substs" and not (isinstance(k.value, ast.Constant) and
+                                                k.value.value is False) for k in call.keywords)
 
 
 def own_nodes(function: ast.AST, index: Index) -> Iterator[ast.AST]:
@@ -86,3 +129,61 @@ def launch_tests(package: Package) -> tuple[LaunchFile, ...]:
     return tuple(parse_launch(module.path, text) for module in package.modules
                  if (text := package.texts.get(module.path)) is not None and
                  is_launch_test(module.path, text))
+
+
+def undeclared_reads(package: Package) -> Iterator[tuple[Span, str, set[str]]]:
+    """Each read of a launch configuration that no launch file of the package declares or
+    sets, with the names its own file declares: a ``LaunchConfiguration('x')`` with no
+    default (nor other keyword) whose name the file quotes nowhere else
+    (``SetLaunchConfiguration``, ``launch_arguments``) and whose value is used (not bound to a
+    name nothing reads), a ``$(var x)`` whose name the file writes nowhere else."""
+    texts = {path: text for path, _, text in python_launch_files(package)}
+    files = [(path, index, texts[path]) for path, index in launch_indexes(package)]
+    frontends = [(launch.path, without_comments(text, launch.kind))
+                 for launch in package.launch_files
+                 if launch.kind in ("xml", "yaml") and launch.problem is None and
+                 (text := package.texts.get(launch.path)) is not None]
+    declared_anywhere = {name for _, text in frontends for pattern in FRONTEND_DECLARED
+                         for name in pattern.findall(text)}
+    declared_anywhere.update(name for _, index, _ in files for c in index.calls
+                             if last_name(c.func) == _DECLARE
+                             and (name := text_argument(c, "name")) is not None)
+    for path, index, text in files:
+        declared = {name for c in index.calls if last_name(c.func) == _DECLARE
+                    and (name := text_argument(c, "name")) is not None}
+        for call in index.calls:
+            name = text_argument(call, "variable_name") if last_name(call.func) == _READ else None
+            if name is None or name in declared_anywhere or len(call.args) > 1 or any(
+                    k.arg != "variable_name" for k in call.keywords) or \
+                    text.count(f"'{name}'") + text.count(f'"{name}"') > 1 or \
+                    _never_used(call, index):
+                continue
+            yield Span(path, call.lineno, call.col_offset + 1), name, declared
+    for path, text in frontends:
+        declared = {name for pattern in FRONTEND_DECLARED for name in pattern.findall(text)}
+        code = _DESCRIPTION.sub("", text)  # the words of descriptions name nothing
+        for read in VARIABLE_READ.finditer(text):
+            name = read.group(1)
+            if name not in declared_anywhere and len(re.findall(
+                    rf"(?<![\w.-]){re.escape(name)}(?![\w.-])", code)) == 1:
+                yield Span.of_offset(path, text, read.start()), name, declared
+
+
+def _never_used(call: ast.Call, index: Index) -> bool:
+    """True when ``call`` is the value of ``name = ...`` and its function (or module) binds
+    ``name`` again, or reads it nowhere, after it: a substitution nothing performs raises
+    nothing."""
+    parent = index.parents.get(id(call))
+    if not (isinstance(parent, ast.Assign) and len(parent.targets) == 1 and
+            isinstance(parent.targets[0], ast.Name)):
+        return False
+    scope = index.enclosing_function(call) or index.module_of(call)
+    target = parent.targets[0]
+    later = sorted(((n.lineno, n.col_offset), isinstance(n.ctx, ast.Load))
+                   for n in subtree(scope) if isinstance(n, ast.Name) and n.id == target.id
+                   and (n.lineno, n.col_offset) > (target.lineno, target.col_offset))
+    return not later or not later[0][1]
+
+
+_DESCRIPTION = lazy_pattern(r"""\bdescription\s*(?:=\s*"[^"]*"|=\s*'[^']*'|:[^\n]*)""")
+"""An argument's description in an XML (``description="..."``) or YAML launch file."""

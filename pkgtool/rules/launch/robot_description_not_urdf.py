@@ -4,12 +4,15 @@ xacro file xacro never ran on, where a node wants URDF text."""
 from __future__ import annotations
 
 import ast
+import re
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity, shortened
+from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.ast_nodes import last_name
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.model.text_comments import without_comments
 from pkgtool.rules.launch._python_launch import text_argument
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import single_assignments
@@ -43,7 +46,9 @@ def robot_description_not_urdf(package: Package) -> Iterator[Hit]:
     `Path(...)` whose last part is such a file name, also through a name bound once, or
     inside `ParameterValue(...)`; the dict given in place or by a name bound once), and the
     text of a `.xacro` file read as it is (`open(path).read()`, `f.read()` of `with
-    open(path) as f`, `Path(path).read_text()`). `Command(['xacro ', path])` and
+    open(path) as f`, `Path(path).read_text()`), unless the package's files of that name need
+    no expansion (only `<xacro:arg>` and `<xacro:property>` declarations, which the URDF
+    parser skips as it skips `<gazebo>` elements). `Command(['xacro ', path])` and
     `xacro.process_file(path).toxml()` are what these nodes want.
 
     ## Why is this bad?
@@ -80,12 +85,33 @@ def robot_description_not_urdf(package: Package) -> Iterator[Hit]:
                 **at_top, **_opened_as(function), **single_assignments(function)})
             for key, value in _description_values(call, names):
                 what = _what(value, names)
-                if what is not None:
+                if what is not None and not _plain_urdf(package, what):
                     yield Hit(Span(path, value.lineno, value.col_offset + 1),
                               f"`{key}` is given {what} (`{shortened(ast.unparse(value))}`), "
                               f"but `{text_argument(call, 'package')}` parses the value as "
                               f"{_TEXTS[key]} text: the node fails to load the robot model",
                               _SDF_FIX if what.endswith(".sdf`") else None)
+
+
+_XACRO_AT_WORK = lazy_pattern(r"\$\{|\$\(|<xacro:(?!arg\b|property\b)")
+"""What xacro must expand before a URDF parser sees the model: an expression, a
+substitution, a tag other than an argument's or a property's declaration (a macro, a call
+of one, an include, a condition)."""
+_GAZEBO = lazy_pattern(r"<gazebo\b.*?</gazebo>", re.S)
+"""A ``<gazebo>`` element, which the URDF parser skips (its plugins' ``$(find ...)``)."""
+
+
+def _plain_urdf(package: Package, what: str) -> bool:
+    """True when ``what`` is the unprocessed text of a xacro file of the package whose every
+    file so named needs no expansion: only ``<xacro:arg>``/``<xacro:property>`` declarations
+    (ignored by the URDF parser, as ``<gazebo>`` elements are), no ``${}``, no macro."""
+    if not what.startswith("the unprocessed text of"):
+        return False
+    name = what.rsplit("`", 2)[1]
+    texts = [package.texts.get(path) for path in package.files
+             if path.rpartition("/")[2] == name]
+    return bool(texts) and all(text is not None and not _XACRO_AT_WORK.search(
+        _GAZEBO.sub("", without_comments(text, "xml"))) for text in texts)
 
 
 def _opened_as(where: ast.AST) -> dict[str, ast.expr]:

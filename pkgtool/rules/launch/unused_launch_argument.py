@@ -6,29 +6,13 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.rosdistro import any_stdlib_module
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.launch._python_launch import launch_class, text_argument
+from pkgtool.rules.launch._python_launch import (READ_BY_LAUNCH, launch_class, reads_shown,
+                                                 text_argument)
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, launch_indexes
-
-_PLAIN_MODULES = frozenset({"launch", "launch_ros", "launch_xml", "launch_yaml",
-                            "ament_index_python", "os", "sys", "pathlib", "yaml", "json", "math",
-                            "typing", "glob", "xacro", "__future__"})
-"""Modules a launch file imports that never read its launch configurations behind its back
-(a helper module of the package may: ``make_nodes()`` reading ``LaunchConfiguration('x')``)."""
-_PASSED_ON = frozenset({"IncludeLaunchDescription", "OpaqueFunction", "SetLaunchConfiguration",
-                        "LaunchConfigurationEquals", "LaunchConfigurationNotEquals"})
-"""Launch classes through which a configuration is read without a ``LaunchConfiguration`` of
-its name in the file: included files see every configuration, an opaque function reads
-``context.launch_configurations``, the conditions take a name."""
-
-
-READ_BY_LAUNCH = frozenset({"launch-prefix", "launch-prefix-filter", "emulate_tty"})
-"""Launch configurations launch itself reads for every process it starts (the prefix of one
-given none, whether to emulate a terminal)."""
 
 
 @rule("LCH024", "unused-launch-argument", Severity.WARNING,
@@ -75,7 +59,7 @@ def unused_launch_argument(package: Package) -> Iterator[Hit]:
     for path, index in launch_indexes(package):
         declared = [call for call in index.calls
                     if launch_class(call, index)[1] == "DeclareLaunchArgument"]
-        if not declared or not _readable(index) or not _starts_something(index):
+        if not declared or not reads_shown(index) or not _starts_something(index):
             continue
         names = [text_argument(call, "name") for call in declared]
         reads = [text_argument(call, "variable_name") for call in index.calls
@@ -93,24 +77,6 @@ def unused_launch_argument(package: Package) -> Iterator[Hit]:
                 yield Hit(Span(path, call.lineno, call.col_offset + 1),
                           f"The launch argument `{name}` is declared but nothing reads its "
                           f"value: `{name}:=...` on the command line changes nothing")
-
-
-def _readable(index: Index) -> bool:
-    """True when every read of a configuration shows in the file: it imports only modules
-    of :data:`_PLAIN_MODULES` and the standard library, uses none of :data:`_PASSED_ON`, and
-    loads no parameter file with substitutions (``ParameterFile(path, allow_substs=True)``
-    reads ``$(var name)`` in the file)."""
-    modules = {module.split(".")[0] for module in index.aliases.values()}
-    return not modules - _PLAIN_MODULES - any_stdlib_module() and \
-        not index.relative and \
-        not any(launch_class(call, index)[1] in _PASSED_ON or _substitutes(call)
-                for call in index.calls)
-
-
-def _substitutes(call: ast.Call) -> bool:
-    """True for a call given ``allow_substs=`` anything but a literal False."""
-    return any(k.arg == "allow_substs" and not (isinstance(k.value, ast.Constant) and
-                                                k.value.value is False) for k in call.keywords)
 
 
 def _starts_something(index: Index) -> bool:

@@ -3,8 +3,9 @@ each holds an instance of it, when the function never rebinds the parameter and 
 one.
 
 Annotations are often loose (``goal_handle: Fibonacci.Goal`` for the goal handle, ``grid:
-OccupancyGrid`` for a NumPy array made of one), so a parameter counts only when each
-attribute its function takes on it is a field of the class or a near miss of one (a typo).
+OccupancyGrid`` for a NumPy array made of one, ``msg: UUID`` for its ``uuid`` array), so a
+parameter counts only when its function takes attributes on it and each is a field of the
+class or a near miss of one (a typo).
 A method's first parameter (its receiver) is left out, as is ``Optional[...]``/``X |
 None``'s ``None``; string annotations are not read.
 """
@@ -40,12 +41,14 @@ def annotated_instances(tree: ast.Module, index: Index, known: Known
 
 
 def _used_as_one(instance: Instance[Message]) -> bool:
-    """True when each attribute taken on the instance is a field of its class or is spelled
-    much like one."""
+    """True when the function takes attributes on the instance and each is a field of its
+    class or is spelled much like one (with none taken, nothing shows the annotation right:
+    ``def to_uuid(msg: UUID)`` iterating the ``uint8[16]`` field its callers pass)."""
     message = instance.message
-    return all(message.has(use.attr) or use.attr.startswith("_") or
-               get_close_matches(use.attr, list(message.fields), n=1, cutoff=_NEAR)
-               for use in instance.uses)
+    return bool(instance.uses) and all(
+        message.has(use.attr) or use.attr.startswith("_") or
+        get_close_matches(use.attr, list(message.fields), n=1, cutoff=_NEAR)
+        for use in instance.uses)
 
 
 def _static(function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:

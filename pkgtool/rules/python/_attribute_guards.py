@@ -21,10 +21,23 @@ _BUILTINS = _DYNAMIC | {"exec"}
 attribute ``app.exec`` is another thing)."""
 
 
+_MODEL_LIBRARIES = frozenset({"transitions", "statemachine"})
+"""Libraries that add attributes to the object given them as a model (``Machine(model=self,
+states=...)`` makes ``self.state`` and a method per trigger)."""
+
+
 def dynamic_attributes(tree: ast.Module) -> bool:
-    """True when the module may create attributes in ways not written as ``x.name = ...``."""
+    """True when the module may create attributes in ways not written as ``x.name = ...``:
+    also when it gives an object to a library as its model (``model=self``, or imports one
+    of :data:`_MODEL_LIBRARIES`)."""
     return (any(isinstance(n, ast.Name) and n.id in _BUILTINS
                 for n in nodes_of_class(tree, ast.Name))
+            or any(isinstance(n, ast.keyword) and n.arg == "model"
+                   for n in nodes_of_class(tree, ast.keyword))
+            or any((n.module or "").split(".")[0] in _MODEL_LIBRARIES
+                   if isinstance(n, ast.ImportFrom) else
+                   any(a.name.split(".")[0] in _MODEL_LIBRARIES for a in n.names)
+                   for n in nodes_of_class(tree, ast.Import, ast.ImportFrom))
             or any(isinstance(n, ast.Attribute) and n.attr in _DYNAMIC
                    for n in nodes_of_class(tree, ast.Attribute))
             or any(isinstance(n, ast.FunctionDef) and n.name in _DYNAMIC

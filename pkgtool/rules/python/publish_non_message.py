@@ -107,6 +107,9 @@ def _not_a_message(value: ast.expr, publisher: Publisher,
     the ``publisher``'s type, if it is."""
     if wrong == "type":
         return "the class itself, not an instance of it (`()` is missing where it is made)"
+    if isinstance(value, ast.Compare) or \
+            isinstance(value, ast.UnaryOp) and isinstance(value.op, ast.Not):
+        return "a truth value, not a message (build the message and set its field to it)"
     if wrong is not None and wrong not in _ACCEPTED:
         return f"a literal of type `{wrong}`" if literal_type(value) else \
             f"a value of type `{wrong}` (what it is assigned gives one)"
@@ -135,7 +138,8 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
     defining their own `create_publisher`), in installed modules. Reports a string, number,
     boolean, f-string or list, tuple, dict or set literal (`pub.publish('hello')`); a plain
     field (`string`, `float`, `int32`, ...) of a message instance PYC019 is certain of
-    (`pub.publish(msg.data)`); a local name or a node's `self.x` every assignment of which
+    (`pub.publish(msg.data)`); a comparison or a `not` (`pub.publish(level < limit)`: a
+    truth value, not a `Bool`); a local name or a node's `self.x` every assignment of which
     gives a literal of one such type (`text = 'hi'`; PYC025 says which); a message class
     itself (`pub.publish(String)`, or `msg = String` without `()`); and such an
     instance of another known message class than the publisher's

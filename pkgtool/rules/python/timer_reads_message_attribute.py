@@ -13,11 +13,11 @@ from pkgtool.model.span import Span
 from pkgtool.rules.node_api import derives_from_node_alone
 from pkgtool.rules.python._attribute_guards import dynamic_attributes, guarded, probed_names
 from pkgtool.rules.python._certain_code import certain_parts
+from pkgtool.rules.python._init_callbacks import (attribute_setters, called_methods, is_self,
+                                                  methods_of, registered_callbacks)
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
-_CALLBACK_AT = {"create_timer": 1, "create_subscription": 2}
-"""Node methods registering a callback, by where their ``callback`` argument stands."""
 _WAITS = ("spin", "wait")
 """Parts of the names of calls in ``__init__`` that may run callbacks or wait for a message
 before the timer starts (``rclpy.spin_once(self)``, ``wait_for_message``)."""
@@ -100,13 +100,13 @@ def _early_reads(cls: ast.ClassDef, index: Index, probed: frozenset[str],
     """(read, timer callback, subscription callbacks) for each attribute a timer callback of
     ``cls`` reads that only its subscription callbacks set (none of ``elsewhere``: assigned
     outside the class, ``node.latest = ...`` in ``main()``)."""
-    methods = {f.name: f for f in cls.body if isinstance(f, FUNCTIONS)}
+    methods = methods_of(cls)
     init = methods.get("__init__")
-    if init is None or any(_waits(f) for f in (init, *_called_methods(init, methods))):
+    if init is None or any(_waits(f) for f in (init, *called_methods(init, methods))):
         return
-    callbacks = _callbacks(init, methods)
+    callbacks = registered_callbacks(init, methods)
     timers = callbacks["create_timer"] - callbacks["create_subscription"]
-    setters = _setters(cls, index, methods)
+    setters = attribute_setters(cls, index, methods)
     own = {n.id for n in _class_level_names(cls)} | set(methods) | NODE_ATTRIBUTES | elsewhere
     for timer in sorted(timers):
         seen: set[str] = set()
@@ -120,23 +120,6 @@ def _early_reads(cls: ast.ClassDef, index: Index, probed: frozenset[str],
             yield node, timer, "`, `".join(sorted(where))
 
 
-def _called_methods(init: ast.FunctionDef | ast.AsyncFunctionDef,
-                    methods: dict[str, ast.FunctionDef | ast.AsyncFunctionDef]
-                    ) -> list[ast.FunctionDef | ast.AsyncFunctionDef]:
-    """The methods of the class ``__init__`` calls on ``self``, and those they call."""
-    found: list[ast.FunctionDef | ast.AsyncFunctionDef] = []
-    todo = [init]
-    while todo:
-        caller = todo.pop()
-        for n in subtree(caller):
-            if isinstance(n, ast.Call) and isinstance(n.func, ast.Attribute) and \
-                    _is_self(n.func.value, caller) and n.func.attr in methods and \
-                    methods[n.func.attr] not in found and n.func.attr != "__init__":
-                found.append(methods[n.func.attr])
-                todo.append(methods[n.func.attr])
-    return found
-
-
 def _waits(init: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
     """True when ``__init__`` (or a method it calls) calls something that may run callbacks
     or wait for messages."""
@@ -144,61 +127,6 @@ def _waits(init: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
         w in (n.func.attr if isinstance(n.func, ast.Attribute) else
               n.func.id if isinstance(n.func, ast.Name) else "") for w in _WAITS)
         for n in subtree(init))
-
-
-def _callbacks(init: ast.FunctionDef | ast.AsyncFunctionDef,
-               methods: dict[str, ast.FunctionDef | ast.AsyncFunctionDef]
-               ) -> dict[str, set[str]]:
-    """The methods ``__init__`` registers with ``self.create_timer`` and
-    ``self.create_subscription``, by registering method."""
-    found: dict[str, set[str]] = {method: set() for method in _CALLBACK_AT}
-    for node in subtree(init):
-        if not (isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and
-                node.func.attr in _CALLBACK_AT and _is_self(node.func.value, init)):
-            continue
-        if any(k.arg == "autostart" for k in node.keywords) or _cancelled(node, init):
-            continue  # a timer started later, maybe once a message came
-        at = _CALLBACK_AT[node.func.attr]
-        given = node.args[at] if len(node.args) > at else next(
-            (k.value for k in node.keywords if k.arg == "callback"), None)
-        if isinstance(given, ast.Attribute) and _is_self(given.value, init) and \
-                given.attr in methods:
-            found[node.func.attr].add(given.attr)
-    return found
-
-
-def _cancelled(call: ast.Call, init: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
-    """True when ``__init__`` assigns the timer ``call`` makes to ``self.x`` and calls
-    ``self.x.cancel()`` (a callback resets it later)."""
-    stored = {t.attr for n in subtree(init) if isinstance(n, (ast.Assign, ast.AnnAssign)) and
-              n.value is call for t in (n.targets if isinstance(n, ast.Assign) else [n.target])
-              if isinstance(t, ast.Attribute) and _is_self(t.value, init)}
-    return any(isinstance(n, ast.Attribute) and n.attr == "cancel" and
-               isinstance(n.value, ast.Attribute) and n.value.attr in stored and
-               _is_self(n.value.value, init) for n in subtree(init))
-
-
-def _setters(cls: ast.ClassDef, index: Index,
-             methods: dict[str, ast.FunctionDef | ast.AsyncFunctionDef]) -> dict[str, set[str]]:
-    """Each attribute of ``self`` assigned in the class, with the methods assigning it; an
-    attribute also assigned elsewhere (a nested function, another receiver) or by a method
-    the class calls itself (``self.on_scan(first)``) maps to no method (an empty set)."""
-    called = {n.func.attr for n in subtree(cls) if isinstance(n, ast.Call) and
-              isinstance(n.func, ast.Attribute) and isinstance(n.func.value, ast.Name) and
-              n.func.value.id == "self"}
-    found: dict[str, set[str]] = {}
-    unknown: set[str] = set()
-    for node in subtree(cls):
-        if not isinstance(node, ast.Attribute) or isinstance(node.ctx, ast.Load):
-            continue
-        function = index.enclosing_function(node)
-        name = function.name if function is not None else None
-        if name in methods and methods[name] is function and name not in called and \
-                _is_self(node.value, function):
-            found.setdefault(node.attr, set()).add(name)
-        else:
-            unknown.add(node.attr)
-    return {attr: set() if attr in unknown else where for attr, where in found.items()}
 
 
 def _class_level_names(cls: ast.ClassDef) -> Iterator[ast.Name]:
@@ -222,15 +150,9 @@ def _certain_reads(function: ast.FunctionDef | ast.AsyncFunctionDef
             return
         yield from (part for part in certain_parts(statement)
                     if isinstance(part, ast.Attribute) and isinstance(part.ctx, ast.Load) and
-                    _is_self(part.value, function))
+                    is_self(part.value, function))
         if isinstance(statement, (ast.For, ast.AsyncFor)) or \
                 isinstance(statement, (ast.If, ast.While)) and any(
                     isinstance(n, (ast.Return, ast.Raise, ast.Break, ast.Continue))
                     for n in descendants(statement)):
             return
-
-
-def _is_self(value: ast.expr, function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
-    """True when ``value`` is the name of the method's first parameter (``self``)."""
-    arguments = function.args.posonlyargs + function.args.args
-    return isinstance(value, ast.Name) and bool(arguments) and value.id == arguments[0].arg

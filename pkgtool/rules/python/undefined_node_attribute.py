@@ -304,20 +304,22 @@ def undefined_node_attribute(package: Package) -> Iterator[Hit]:
                 yield Hit(spans[0], f"`{cls.name}` has no attribute `{attr}`{hint}: nothing "
                           f"assigns `self.{attr}` and rclpy's {base} has none, so reading it "
                           "raises AttributeError", related=tuple(spans[1:]))
-            yield from _super_reads(module.path, cls, base, inherited)
+            yield from _super_reads(module.path, cls, base, inherited, index)
 
 
-def _super_reads(path: str, cls: ast.ClassDef, base: str, inherited: frozenset[str]
-                 ) -> Iterator[Hit]:
+def _super_reads(path: str, cls: ast.ClassDef, base: str, inherited: frozenset[str],
+                 index: Index) -> Iterator[Hit]:
     """``super().x`` in the class's methods where neither its bases nor ``object`` have
-    ``x`` (``super().__int__('talker')``)."""
+    ``x`` (``super().__int__('talker')``); not in a class defined inside a method, whose
+    ``super()`` is its own."""
     known = inherited | _OBJECT_NAMES
     methods = [m for m in cls.body if isinstance(m, (ast.FunctionDef, ast.AsyncFunctionDef))]
     for node in (n for m in methods for n in nodes_of_class(m, ast.Attribute)):
         assert isinstance(node, ast.Attribute)
         call = node.value
         if isinstance(call, ast.Call) and isinstance(call.func, ast.Name) and \
-                call.func.id == "super" and not call.args and node.attr not in known:
+                call.func.id == "super" and not call.args and node.attr not in known and \
+                index.enclosing_class(node) is cls:
             hint = _suggestion(node.attr, set(known))
             yield Hit(Span(path, node.end_lineno or node.lineno,
                            (node.end_col_offset or 0) - len(node.attr) + 1),

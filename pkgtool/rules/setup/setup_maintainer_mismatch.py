@@ -32,7 +32,8 @@ def setup_maintainer_mismatch(package: Package) -> Iterator[Hit]:
     ## What it does
     Compares the statically known `maintainer` and `maintainer_email` with the names and
     emails of package.xml's `<maintainer>` tags; matching any one maintainer is enough, and a
-    comma-separated list in setup.py matches when one of its names does. A person written
+    comma-separated list in setup.py matches when one of its names does (or the whole text,
+    for a name with a comma: `Stanley Innovation, Inc.`). A person written
     with the address, `'Ada Lovelace <ada@example.com>'`, is compared by the name (by the
     address when only `<ada@example.com>` is given): the address is not part of the name.
 
@@ -64,7 +65,7 @@ def setup_maintainer_mismatch(package: Package) -> Iterator[Hit]:
             continue
         text, span = found
         if not any(_same_person(name, address, keyword, names, emails)
-                   for name, address in _people(text)):
+                   for name, address in [*_people(text), (text, None)]):  # whole: "Acme, Inc."
             shown = ", ".join(f"`{d}`" for d in declared if d)
             yield Hit(span, f"`{keyword}` `{text}` is not a `package.xml` maintainer ({shown})")
 

@@ -20,6 +20,9 @@ from pkgtool.rules.syntax_trees import Index, index_of
 _OPENERS = frozenset({"open", "io.open", "codecs.open"})
 _PATH_READS = frozenset({"read_text", "read_bytes", "open"})
 _PATHS = frozenset({"pathlib.Path", "Path"})
+_LISTERS = frozenset({"os.listdir", "os.scandir"})
+"""Calls listing a folder's entries, which raise FileNotFoundError for a missing folder
+(``os.walk`` yields nothing instead)."""
 _MISSING_FILE_ERRORS = frozenset({"OSError", "IOError", "FileNotFoundError", "EnvironmentError"})
 
 
@@ -28,25 +31,29 @@ def _literal(node: ast.expr | None) -> str | None:
         else None
 
 
-def _read_paths(tree: ast.Module, index: Index) -> Iterator[tuple[ast.Call, str]]:
-    """Each call reading a file, with the package-relative path it names: a literal (setup.py
-    runs in the package's folder) or a path built from ``__file__``."""
+def _read_paths(tree: ast.Module, index: Index) -> Iterator[tuple[ast.Call, str, bool]]:
+    """Each call reading a file or listing a folder, with the package-relative path it names
+    (a literal: setup.py runs in the package's folder, or a path built from ``__file__``) and
+    whether it is a folder's."""
     built = {id(node): path for node, path in file_relative_paths(tree, "setup.py")}
     for call in index.calls:
         func = call.func
         target: ast.expr | None = None
         name = index.qualified(func) if isinstance(func, (ast.Name, ast.Attribute)) else None
-        if (name in _OPENERS or isinstance(func, ast.Name) and func.id == "open") and \
+        folder = name in _LISTERS or isinstance(func, ast.Attribute) and func.attr == "iterdir"
+        if name in _LISTERS and call.args:
+            target = call.args[0]
+        elif (name in _OPENERS or isinstance(func, ast.Name) and func.id == "open") and \
                 call.args and _reads(call):
             target = call.args[0]
-        elif isinstance(func, ast.Attribute) and func.attr in _PATH_READS and \
+        elif isinstance(func, ast.Attribute) and func.attr in _PATH_READS | {"iterdir"} and \
                 isinstance(func.value, ast.Call) and func.value.args and \
                 (index.qualified(func.value.func) or "") in _PATHS | {"pathlib.Path"}:
             target = func.value.args[0] if len(func.value.args) == 1 else None
         path = built.get(id(target)) if target is not None else None
         path = path or _literal(target)
         if path and not posixpath.isabs(path) and not path.startswith(("~", "$")):
-            yield call, posixpath.normpath(path)
+            yield call, posixpath.normpath(path), folder
 
 
 def _reads(call: ast.Call) -> bool:
@@ -85,8 +92,10 @@ def setup_reads_missing_file(package: Package) -> Iterator[Hit]:
     `Path(...).read_text()`, `.read_bytes()`, `.open()`) by a literal path (relative to
     the package's folder, where colcon runs setup.py) or a path built from `__file__`
     (`os.path.join(os.path.dirname(__file__), 'README.md')`), when the package has no such
-    file: `install_requires=open('requirements.txt').read().splitlines()` in a package
-    without `requirements.txt`, a `long_description` read from a README never committed.
+    file, and a folder it lists (`os.listdir('maps')`, `os.scandir()`, `Path(...).iterdir()`)
+    when the package has no file in it: `install_requires=open('requirements.txt').read()
+    .splitlines()` in a package without `requirements.txt`, a `long_description` read from a
+    README never committed, data_files made from `os.listdir('maps')` with no map committed.
     Reads inside a `try` that catches a missing file (`OSError`, `FileNotFoundError`, or
     anything) and setup.py files asking whether files exist (`os.path.exists`) are left
     alone; so are files a `.gitignore` leaves out (made before the build).
@@ -119,10 +128,16 @@ def setup_reads_missing_file(package: Package) -> Iterator[Hit]:
     index = index_of(tree)
     if checks_files(index):
         return
-    for call, path in _read_paths(tree, index):
-        if path.startswith("..") or package.has_file(path) or ignored(path, package.ignores) or \
-                _tolerated(call, index):
+    for call, path, folder in _read_paths(tree, index):
+        if path.startswith("..") or ignored(path, package.ignores) or _tolerated(call, index) or \
+                (_has_folder(package, path) if folder else package.has_file(path)):
             continue
+        what = "lists the folder" if folder else "reads"
         yield Hit(Span("setup.py", call.lineno, call.col_offset + 1),
-                  f"setup.py reads `{path}`, which the package does not have: colcon runs "
+                  f"setup.py {what} `{path}`, which the package does not have: colcon runs "
                   "setup.py to build the package, and it raises FileNotFoundError")
+
+
+def _has_folder(package: Package, path: str) -> bool:
+    """True when the package has a file below ``path`` (git keeps no empty folder)."""
+    return path == "." or any(f.startswith(path + "/") for f in package.files)
