@@ -29,9 +29,10 @@ VARIABLE_READ = lazy_pattern(r"\$\(var\s+([\w.-]+)\s*\)")
 """A ``$(var x)`` substitution of an XML or YAML launch file (reading the argument ``x``)."""
 FRONTEND_DECLARED = (lazy_pattern(r"<(?:arg|let)\b[^>]*?\bname\s*=\s*[\"']([^\"']+)[\"']"),
                      lazy_pattern(r"^\s*-?\s*(?:arg|let):\s*\n\s+name:\s*[\"']?([\w.-]+)",
-                                  re.M))
-"""An XML (``<arg name="x">``, ``<let name="x">``) or YAML (``- arg:`` / ``name: x``)
-launch file's declared or set arguments."""
+                                  re.M),
+                     lazy_pattern(r"\b(?:arg|let):\s*\{[^}]*?\bname:\s*[\"']?([\w.-]+)"))
+"""An XML (``<arg name="x">``, ``<let name="x">``) or YAML (``- arg:`` / ``name: x``, or
+``- arg: {name: x, ...}``) launch file's declared or set arguments."""
 _COMMAND = lazy_pattern(r"""\$\(\s*command\s+['"]?\s*([\w.-]+)""")
 _SHARE_PATH = lazy_pattern(r"^\$\(\s*find-pkg-share\s+([A-Za-z0-9_]+)\s*\)(/[^$]*)$")
 NODE_TAGS = {"node": ("exec", "executable"), "lifecycle_node": ("exec", "executable"),

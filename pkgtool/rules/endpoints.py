@@ -17,6 +17,7 @@ import re
 from collections.abc import Iterator
 
 from pkgtool.model.ast_nodes import subtree
+from pkgtool.model.launch import LaunchFile
 from pkgtool.model.memo import per_package
 from pkgtool.model.modules import PythonModule
 from pkgtool.model.package import Package
@@ -141,16 +142,26 @@ class _Overrides:
     anywhere: dict[str, set[str]]
 
 
-_QUOTED_WORD = re.compile(r"""(?<!\bexecutable=)(?<!\bexec=)(?<!\bname=)(?<!\bpackage=)"""
-                          r"""(?<!\bpkg=)['"]/?(\w[\w.]*(?:/\w[\w.]*)*)['"]""")
-"""A word a launch file quotes, but as a node's executable, name or package (``name=
-'safety_stop'``, ``exec="safety_stop"``): what may be a topic it remaps or a parameter it
-sets."""
+_QUOTED_WORD = re.compile(r"""(?:\b(executable|exec|package|pkg|name)\s*=\s*)?"""
+                          r"""['"]/?(\w[\w.]*(?:/\w[\w.]*)*)['"]""")
+"""A word a launch file quotes, with the keyword or attribute it is the value of, if one of
+those naming a node's executable, package or name."""
+
+
+def _quoted_words(launch: LaunchFile, text: str) -> Iterator[str]:
+    """The words a launch file quotes, but as a node's executable or package, or the name of
+    one of its nodes (``exec="safety_stop" name="safety_stop"``): what may be a topic it
+    remaps or a parameter it sets (``<param name="topic">``, ``SetParameter(name=...)``)."""
+    nodes = {node.name for node in launch.nodes if node.name}
+    for keyword, word in _QUOTED_WORD.findall(text):
+        if not keyword or keyword == "name" and word not in nodes:
+            yield word
 
 
 def _overrides(package: Package) -> _Overrides:
     by_class: dict[tuple[str, str], dict[str, set[str]]] = {}
     anywhere: dict[str, set[str]] = {}
+    launches = {launch.path: launch for launch in package.launch_files}
     seen = set()
     for entry in file_entries(package):
         seen.add(entry.path)
@@ -164,7 +175,9 @@ def _overrides(package: Package) -> _Overrides:
             for key, value in re.findall(r"^\s*([\w.]+)\s*:\s*(.*?)\s*$", text, re.M):
                 anywhere.setdefault(key, set()).add(value.strip("'\""))
         elif "launch" in path.rsplit("/", 1)[-1]:
-            for word in _QUOTED_WORD.findall(text):
+            launch = launches.get(path)
+            for word in _quoted_words(launch, text) if launch else \
+                    (word for _, word in _QUOTED_WORD.findall(text)):
                 anywhere.setdefault(word, set()).add("*")
     return _Overrides(by_class, anywhere)
 

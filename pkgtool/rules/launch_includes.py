@@ -42,7 +42,8 @@ def _python_includes(indexes: dict[str, Index], launches: dict[str, LaunchFile],
                                                for key, node in _handed(given)]
 
 
-XML_INCLUDE = lazy_pattern(r"<include\b[^>]*>(.*?)</include>", re.S)
+XML_INCLUDE = lazy_pattern(r"<include\b[^>]*?(?<!/)>(.*?)</include>", re.S)
+"""An ``<include>`` element with children (not a self-closing one, which hands nothing on)."""
 _XML_ARGUMENT = lazy_pattern(r"<arg\b[^>]*?\bname\s*=\s*[\"']([^\"']+)[\"']")
 
 

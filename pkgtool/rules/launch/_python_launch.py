@@ -136,7 +136,8 @@ def undeclared_reads(package: Package) -> Iterator[tuple[Span, str, set[str]]]:
     sets, with the names its own file declares: a ``LaunchConfiguration('x')`` with no
     default (nor other keyword) whose name the file quotes nowhere else
     (``SetLaunchConfiguration``, ``launch_arguments``) and whose value is used (not bound to a
-    name nothing reads), a ``$(var x)`` whose name the file writes nowhere else."""
+    name nothing reads), a ``$(var x)`` whose name the file writes nowhere else. None when a
+    Python launch file declares an argument under a name made at run time."""
     texts = {path: text for path, _, text in python_launch_files(package)}
     files = [(path, index, texts[path]) for path, index in launch_indexes(package)]
     frontends = [(launch.path, without_comments(text, launch.kind))
@@ -145,9 +146,12 @@ def undeclared_reads(package: Package) -> Iterator[tuple[Span, str, set[str]]]:
                  (text := package.texts.get(launch.path)) is not None]
     declared_anywhere = {name for _, text in frontends for pattern in FRONTEND_DECLARED
                          for name in pattern.findall(text)}
-    declared_anywhere.update(name for _, index, _ in files for c in index.calls
-                             if last_name(c.func) == _DECLARE
-                             and (name := text_argument(c, "name")) is not None)
+    declarations = [c for _, index, _ in files for c in index.calls
+                    if last_name(c.func) == _DECLARE]
+    names = [text_argument(c, "name") for c in declarations]
+    if None in names:
+        return  # a name made at run time (a loop, an f-string) may be any of them
+    declared_anywhere.update(name for name in names if name is not None)
     for path, index, text in files:
         declared = {name for c in index.calls if last_name(c.func) == _DECLARE
                     and (name := text_argument(c, "name")) is not None}
@@ -185,5 +189,5 @@ def _never_used(call: ast.Call, index: Index) -> bool:
     return not later or not later[0][1]
 
 
-_DESCRIPTION = lazy_pattern(r"""\bdescription\s*(?:=\s*"[^"]*"|=\s*'[^']*'|:[^\n]*)""")
+_DESCRIPTION = lazy_pattern(r"""\bdescription\s*[=:]\s*(?:"[^"]*"|'[^']*'|[^\n,}"']*)""")
 """An argument's description in an XML (``description="..."``) or YAML launch file."""

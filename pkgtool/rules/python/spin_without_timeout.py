@@ -15,8 +15,10 @@ from pkgtool.rules.python._message_instances import method_receiver
 from pkgtool.rules.registry import rule
 
 _NAME = "spin_until_future_complete"
-REQUESTS = frozenset({"call_async", "send_goal_async", "get_result_async", "cancel_goal_async"})
-"""Calls whose future completes only when a server answers."""
+REQUESTS = frozenset({"call_async", "send_goal_async", "cancel_goal_async"})
+"""Calls whose future completes only when a server answers (not ``get_result_async``: an
+accepted goal's result comes when the action ends, minutes later at times, and waiting for
+it is the client's purpose)."""
 
 
 def _is_request(node: ast.expr | None) -> bool:
@@ -74,9 +76,10 @@ def spin_without_timeout(package: Package) -> Iterator[Hit]:
     Reports `rclpy.spin_until_future_complete(node, future)` and
     `executor.spin_until_future_complete(future)` calls in installed modules that pass no
     `timeout_sec` while waiting for a server's answer: a future from `call_async`,
-    `send_goal_async`, `get_result_async` or `cancel_goal_async`. Spinning until some other
-    future (a main loop that ends on a signal) and an explicit `timeout_sec=None` are taken
-    as intended and not reported, nor is `self.spin_until_future_complete(...)` in a method:
+    `send_goal_async` or `cancel_goal_async`. Spinning until some other future (a main loop
+    that ends on a signal, an accepted goal's `get_result_async()`, which completes when the
+    action ends, minutes later at times) and an explicit `timeout_sec=None` are taken as
+    intended and not reported, nor is `self.spin_until_future_complete(...)` in a method:
     the class's own wrapper, or a method a node lacks (PYC023's AttributeError).
 
     ## Why is this bad?

@@ -16,9 +16,10 @@ from pkgtool.rules.python._init_callbacks import (Method, Methods, attribute_set
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
 
-_RUNS_CALLBACKS = ("spin", "wait_for_message", "xecutor", "hread")
-"""Parts of names that may run the node's callbacks meanwhile (``rclpy.spin_once(self)``,
-``wait_for_message``, an executor, a thread spinning the node)."""
+_RUNS_CALLBACKS = ("spin", "wait_for_message", "xecutor", "hread", "add_node")
+"""Parts of names (and keyword arguments) that may run the node's callbacks meanwhile
+(``rclpy.spin_once(self)``, ``wait_for_message``, an executor, a thread spinning the node,
+``TransformListener(buffer, self, spin_thread=True)``, ``executor.add_node(self)``)."""
 
 
 @rule("PYC092", "wait-without-spinning", Severity.ERROR,
@@ -34,8 +35,10 @@ def wait_without_spinning(package: Package) -> Iterator[Hit]:
     calls nothing but `len`, when `x` is assigned only by callbacks `__init__` registers
     (timer, subscription or service callbacks that nothing else calls) and, before that,
     only with a value that keeps the loop going (`self.ready = False`, `self.pose = None`),
-    when nothing in the loop can run callbacks or leave it: no `spin`, `spin_once`,
-    `wait_for_message`, executor or thread, no `break`, `return` or `raise`.
+    when nothing can run callbacks meanwhile (no `spin`, `spin_once`, `wait_for_message`,
+    executor, `add_node` or thread, nor `spin_thread=`, in `__init__`, the methods it calls
+    or the module's functions they call) and nothing in the loop leaves it (no `break`,
+    `return` or `raise`).
 
     ## Why is this bad?
     Callbacks run only when an executor spins the node, and nothing spins a node before its
@@ -92,7 +95,9 @@ def _endless_waits(cls: ast.ClassDef, index: Index
     if init is None:
         return
     run = (init, *called_methods(init, methods))
-    if any(_may_run_callbacks(node) for method in run for node in subtree(method)):
+    helpers = _module_functions_called(run, index)
+    if any(_may_run_callbacks(node) for function in (*run, *helpers)
+           for node in subtree(function)):
         return  # a thread or an executor spinning the node meanwhile
     callbacks = set().union(*registered_callbacks(init, methods).values()) - \
         {method.name for method in run}  # a callback __init__ calls itself may set it
@@ -119,10 +124,28 @@ def _plain_test(test: ast.expr) -> bool:
                for n in subtree(test) if isinstance(n, ast.Call))
 
 
+def _module_functions_called(run: tuple[Method, ...], index: Index) -> list[Method]:
+    """The module's own functions the methods of ``run`` call by name, and those they
+    call (``wait_until_ready(self)`` may spin the node)."""
+    defined = {f.name: f for f in index.functions
+               if index.enclosing_class(f) is None and index.enclosing_function(f) is None}
+    found: list[Method] = []
+    todo = list(run)
+    while todo:
+        for node in subtree(todo.pop()):
+            if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and \
+                    node.func.id in defined and defined[node.func.id] not in found:
+                found.append(defined[node.func.id])
+                todo.append(defined[node.func.id])
+    return found
+
+
 def _may_run_callbacks(node: ast.AST) -> bool:
-    """True for a name or attribute that may run the node's callbacks (see _RUNS_CALLBACKS)."""
+    """True for a name, attribute or keyword argument that may run the node's callbacks
+    (see _RUNS_CALLBACKS)."""
     name = node.attr if isinstance(node, ast.Attribute) else \
-        node.id if isinstance(node, ast.Name) else ""
+        node.id if isinstance(node, ast.Name) else \
+        node.arg or "" if isinstance(node, ast.keyword) else ""
     return any(part in name for part in _RUNS_CALLBACKS)
 
 

@@ -1,4 +1,4 @@
-"""LCH028: a launch file hands a launch file it includes an argument under a misspelt name."""
+"""LCH028: a launch file hands a launch file it includes an argument that file never reads."""
 
 from __future__ import annotations
 
@@ -21,11 +21,12 @@ from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, launch_indexes
 
 
-@rule("LCH028", "misspelled-include-argument", Severity.WARNING,
-      fix="Hand the argument under the name the included launch file declares")
-def misspelled_include_argument(package: Package) -> Iterator[Hit]:
+@rule("LCH028", "unread-include-argument", Severity.WARNING,
+      fix="Hand the argument under a name the included launch file declares, or to the "
+          "launch file that reads it")
+def unread_include_argument(package: Package) -> Iterator[Hit]:
     """A launch file hands a launch file of its own package, which it includes, an argument
-    under a name that file never uses, spelled like one it declares.
+    that file never reads.
 
     ## What it does
     For each `IncludeLaunchDescription` of a Python launch file, and each `<include>` of an
@@ -35,20 +36,19 @@ def misspelled_include_argument(package: Package) -> Iterator[Hit]:
     reads the names handed on (`launch_arguments=`: a dict, `dict.items()` or a list of pairs,
     with literal keys; `<arg name=...>`) and reports each name the included file does not
     declare (`DeclareLaunchArgument`, `<arg>`), read (`LaunchConfiguration`, `$(var x)`) or
-    write anywhere else, when it declares a name spelled almost the same (`use_sim_tme` for
-    `use_sim_time`) or the same with a word more or less (`params` for `params_file`) that
-    the include does not hand on too. Included files that may read configurations where the
-    file does not show it are left alone: Python ones not read as LCH024 reads them (includes
-    of their own, an `OpaqueFunction`, conditions taking a name, helpers of other modules,
-    parameter files with substitutions), XML and YAML ones including others. `launch-prefix`
-    and `emulate_tty`, which launch reads itself, are left alone, and so are names handed on
-    that resemble nothing declared: passing every include the same arguments is a habit,
-    not a mistake.
+    write anywhere else, and says which declared name it may misspell: one spelled almost the
+    same (`use_sim_tme` for `use_sim_time`) or the same with a word more or less (`params`
+    for `params_file`) that the include does not hand on too. Included files that may read
+    configurations where the file does not show it are left alone: Python ones not read as
+    LCH024 reads them (includes of their own, an `OpaqueFunction`, conditions taking a name,
+    helpers of other modules, parameter files with substitutions), XML and YAML ones
+    including others. `launch-prefix` and `emulate_tty`, which launch reads itself, are left
+    alone.
 
     ## Why is this bad?
     Launch accepts any name there and says nothing: the included file runs with its own
-    default (`use_sim_time` stays false, the robot keeps its default name) while the
-    including file looks as if it set it.
+    default (`use_sim_time` stays false, the robot keeps its default name, the world meant
+    for the simulator is never loaded) while the including file looks as if it set it.
 
     ## Example
     ```python
@@ -74,9 +74,8 @@ def misspelled_include_argument(package: Package) -> Iterator[Hit]:
         declared, known = used
         names = {key for key, _ in include.handed}
         for key, span in include.handed:
-            meant = _meant(key, declared - names)
-            if key not in known and key not in READ_BY_LAUNCH and meant:
-                yield _hit(span, key, include.target, meant)
+            if key not in known and key not in READ_BY_LAUNCH:
+                yield _hit(span, key, include.target, _meant(key, declared - names))
 
 
 def _arguments_used(package: Package, launch: LaunchFile, indexes: dict[str, Index]
@@ -128,7 +127,10 @@ def _a_word_apart(short: str, long: str) -> bool:
     return long.startswith(short + "_") or long.endswith("_" + short)
 
 
-def _hit(span: Span, name: str, included: str, meant: str) -> Hit:
+def _hit(span: Span, name: str, included: str, meant: str | None) -> Hit:
+    if meant is None:
+        return Hit(span, f"`{name}` is handed to `{included}`, which neither declares nor reads "
+                         "it: the value is ignored")
     return Hit(span, f"`{name}` is handed to `{included}`, which declares `{meant}` but "
                      f"never uses `{name}`: the value is ignored and `{meant}` is not set",
                f"Hand it as `{meant}`, the name `{included}` declares")
