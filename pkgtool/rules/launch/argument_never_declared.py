@@ -77,15 +77,15 @@ def _lost_values(function: ast.FunctionDef | ast.AsyncFunctionDef, index: Index
                  ) -> set[ast.expr]:
     """The values the function assigns to a name it never reads, or assigns again first, or
     reads only inside such values (``mode = LaunchConfiguration('mode')`` read only by a
-    node left out of the description)."""
+    node left out of the description, or only by a dict or tuple such a node alone reads)."""
     nodes = scope_nodes(function.body)
     lost = unread_values(function, nodes) | overwritten_values(function, nodes)
     loads: dict[str, list[ast.Name]] = {}
     for node in subtree(function):
         if isinstance(node, ast.Name) and isinstance(node.ctx, ast.Load):
             loads.setdefault(node.id, []).append(node)
-    assigned = [node for node in nodes if simple_assignment(node) and
-                isinstance(node.value, ast.Call)]  # type: ignore[attr-defined]
+    assigned = [node for node in nodes if simple_assignment(node) and isinstance(
+        node.value, (ast.Call, ast.Dict, ast.Tuple, ast.List))]  # type: ignore[attr-defined]
     grew = True
     while grew:
         ids = {id(value) for value in lost}
