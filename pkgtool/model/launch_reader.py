@@ -384,10 +384,26 @@ def _yaml_node(tag: object, mapping: object, path: str) -> NodeRef:
                    span(scalars[key]) if key else None, output=_static(fields.get("output")))
     params = _yaml_params(mapping)
     remaps = [(r.get("from"), r.get("to")) for r in _yaml_entries(mapping, "remap")]
-    return _named(node, fields.get("name"), fields.get("namespace"),
-                  [(str(p.value), span(p)) for p in params if isinstance(p, yaml.ScalarNode)],
-                  [tuple(_text(v) for v in pair) for pair in remaps],  # type: ignore[misc]
-                  [fields.get("args"), fields.get("ros_args")])
+    named = _named(node, fields.get("name"), fields.get("namespace"),
+                   [(str(p.value), span(p)) for p in params if isinstance(p, yaml.ScalarNode)],
+                   [tuple(_text(v) for v in pair) for pair in remaps],  # type: ignore[misc]
+                   [fields.get("args"), fields.get("ros_args")])
+    return replace(named, inline_parameters=tuple(_yaml_parameters(mapping, path)))
+
+
+def _yaml_parameters(mapping: object, path: str) -> Iterator[tuple[str, Span, str | None]]:
+    """The ``param:`` entries of a YAML launch node with a ``name:`` and a scalar ``value:``,
+    each with the source of the value launch gives the node (None when it is not static, or
+    quoted: launch may read a quoted text as a number again)."""
+    import yaml
+
+    for entry in _yaml_entries(mapping, "param"):
+        name, value = entry.get("name"), entry.get("value")
+        if isinstance(name, yaml.ScalarNode) and isinstance(value, yaml.ScalarNode) and \
+                "$(" not in str(name.value):
+            text = str(value.value)
+            yield str(name.value), _yaml_span(path, name), \
+                None if value.style or "$(" in text else _launch_value(text)
 
 
 def _text(node: object) -> str | None:

@@ -18,8 +18,9 @@ def misspelled_use_sim_time(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Reads the parameter names the package's launch files give nodes of any package
-    (`parameters=[{...}]` dicts, `-p name:=value` arguments, XML `<param name=...>`) and the
-    keys under `ros__parameters` of its YAML files (not tests), and reports a name one edit
+    (`parameters=[{...}]` dicts, `-p name:=value` arguments, XML `<param name=...>`, YAML
+    `param:` entries) and the keys under `ros__parameters` of its YAML files (not tests),
+    and reports a name one edit
     (a letter added, dropped or replaced, two neighbours swapped) away from `use_sim_time`
     (`use_sim_tme`, `use_sime_time`, `use_sim_tile`), unless a node of the package declares
     it; a nested name is judged by its last part.

@@ -33,7 +33,8 @@ def parameter_type_mismatch(package: Package) -> Iterator[Hit]:
     names) are compared the same way, typed as Python types them (launch_ros keeps a string
     a string: `'0.5'` is a string), and so are the static `<param name= value=>` of an XML
     launch file's node, typed as launch types an attribute (YAML's reading tried as an
-    integer, then a number: `value="1"` is an integer, `value="1.0"` a double), and the
+    integer, then a number: `value="1"` is an integer, `value="1.0"` a double), the plain
+    (unquoted) `value:` of a YAML launch file's `param:` entries, typed the same way, and the
     `-p name:=value` arguments of a Python launch file's node, typed as rcl reads them (YAML:
     `period:=1` is an integer, `period:=fast` a string).
 

@@ -38,7 +38,8 @@ def unknown_parameter_in_file(package: Package) -> Iterator[Hit]:
     file gives a node of this package as a dict (`parameters=[{'period': 1.0}]`, literal
     keys) or as `-p name:=value` arguments (`ros_arguments=['-p', 'period:=1.0']`, or in
     `arguments=` after `--ros-args`) are checked the same way against the class its
-    executable runs.
+    executable runs, and so are the `<param name=...>` of an XML launch file's node and the
+    `param:` entries (`name:` and `value:`) of a YAML one.
 
     ## Why is this bad?
     rclpy ignores values of undeclared parameters: a misspelled name leaves the node on its
