@@ -479,12 +479,13 @@ def parameter_file_nodes(package: Package) -> dict[str, tuple[NodeRef, ...]]:
 
 
 def fully_seen_parameter_files(package: Package) -> dict[str, tuple[NodeRef, ...]]:
-    """:func:`statically_used_parameter_files`, when those users are every user: empty when
-    a launch file gives a node parameters that are not read statically (a launch argument
-    may name any file)."""
-    if any(n.other_parameters for f in package.launch_files for n in f.nodes):
-        return {}
-    return statically_used_parameter_files(package)
+    """:func:`statically_used_parameter_files`, those whose users are every user: a node
+    given parameters not read statically (a launch argument may name any file) may use any
+    file, so a file is kept only when each such node is among its users already (the file
+    is that argument's default)."""
+    others = [n for f in package.launch_files for n in f.nodes if n.other_parameters]
+    return {path: nodes for path, nodes in statically_used_parameter_files(package).items()
+            if all(any(other is node for node in nodes) for other in others)}
 
 
 @per_package

@@ -35,9 +35,10 @@ def parameter_file_unknown_node(package: Package) -> Iterator[Hit]:
     the file is passed to a node of another package and the block is namespaced or named
     after that node: its process may make nodes of its own (Nav2's servers make
     `local_costmap/local_costmap`, its `bt_navigator` makes
-    `bt_navigator_navigate_to_pose_rclcpp_node`). Files are skipped when
-    a node's name is not known that way, when a launch file gives some node parameters not
-    read statically (a launch argument may name the file), or when the package's Python code
+    `bt_navigator_navigate_to_pose_rclcpp_node`). Files are skipped when a node's name is
+    not known that way, when a launch file gives parameters not read statically to a node
+    that is not among the file's users (a launch argument may name the file; a node whose
+    argument's default is this file is one of its users), or when the package's Python code
     mentions the file's name. A block named by a quoted word of a Python launch file that
     loads YAML itself (`yaml.safe_load`) is left alone: the launch file may read it. Also
     reports, at the launch file, a node given a file none of whose blocks names it, when each
