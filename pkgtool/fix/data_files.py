@@ -22,7 +22,7 @@ from pkgtool.model.installed import is_ament_python
 from pkgtool.model.launch import LAUNCH_SUFFIXES
 from pkgtool.model.package import Package
 from pkgtool.model.setup_py import DataFile, DataSource
-from pkgtool.rules.data_files.common import is_folder, uninstalled_launch_resources
+from pkgtool.rules.data_files.common import uninstalled_launch_resources
 from pkgtool.rules.plain_projects import MARKER_FOLDER
 
 Build = Callable[[SetupDoc], Sequence[Edit]]
@@ -274,7 +274,7 @@ def _folder_fix(package: Package, entry: DataFile, source: DataSource, target: s
                 ) -> Iterator[Fix | Refusal]:
     name = package.name
     if source.is_glob:
-        folders = [m for m in source.matches if is_folder(package, m)]
+        folders = [m for m in source.matches if package.has_folder(m)]
         base = folders[0] if folders == list(source.matches) and len(folders) == 1 else \
             posixpath.dirname(source.pattern)
         subs = _sub_folders(package, base) if base in folders else folders

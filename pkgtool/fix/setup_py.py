@@ -14,7 +14,6 @@ from pkgtool.findings import Finding
 from pkgtool.fix.common import cfg_source, offer, python_nodes, renames, setup_doc
 from pkgtool.fix.registry import Refusal, fixer
 from pkgtool.model.package import Package
-from pkgtool.rules.data_files.common import is_folder
 from pkgtool.rules.entry_points.misspelled_script_group import misspelt
 from pkgtool.rules.manifest.template_placeholder import is_placeholder, is_placeholder_email
 from pkgtool.rules.setup.tests_require import TEST_EXTRAS
@@ -55,8 +54,8 @@ def name(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
     old = setup.name.value if setup and setup.name else None
     installs = setup.packages.names if setup and setup.packages and \
         setup.packages.kind == "list" else ()
-    if isinstance(old, str) and wanted and old in installs and is_folder(package, old) and \
-            not is_folder(package, wanted):
+    if isinstance(old, str) and wanted and old in installs and package.has_folder(old) and \
+            not package.has_folder(wanted):
         yield Refusal(f"`{old}` is also the Python package setup.py installs (the folder "
                       f"`{old}/`): rename the folder to `{wanted}` first, or write the names "
                       "by hand")

@@ -82,6 +82,12 @@ class Package:
         """True when ``path`` (package-relative POSIX) is a file of the package."""
         return path in self.file_set
 
+    def has_folder(self, path: str) -> bool:
+        """True when ``path`` is a folder of the package: it holds files (git keeps no
+        empty folder)."""
+        prefix = path.rstrip("/") + "/"
+        return any(f.startswith(prefix) for f in self.files)
+
 
 def _ignores(root: Path, texts: dict[str, str]) -> tuple[GitIgnore, ...]:
     """The ``.gitignore`` patterns of the package's own files and of the folders above it."""
@@ -189,10 +195,11 @@ def load_package(root: Path, context: Context | None = None, *,
                 modules.append(module)
                 if module.syntax_error and not is_test_data(relpath):
                     problems.append(module.syntax_error)
-    readers = [texts.get(launch.path, "") for launch in launches if launch.kind == "python"]
+    readers = [text for launch in launches if launch.kind == "python" and
+               ".read" in (text := texts.get(launch.path, ""))]
     for relpath in files:  # xacro files a launch file may read raw (LCH025 looks inside)
-        if relpath.endswith(".xacro") and any(
-                relpath.rpartition("/")[2] in text and ".read" in text for text in readers):
+        if relpath.endswith(".xacro") and \
+                any(relpath.rpartition("/")[2] in text for text in readers):
             text_of(relpath, quiet=True)
     for other in ("README.md", "README.rst", "README.txt", "README"):  # `ros2 run ...`
         if other in files:

@@ -44,12 +44,6 @@ def source_names(source: DataSource) -> set[str]:
     return set(source.matches) or {posixpath.normpath(source.pattern)}
 
 
-def is_folder(package: Package, path: str) -> bool:
-    """True when ``path`` is a folder of the package (it holds files)."""
-    prefix = path.rstrip("/") + "/"
-    return any(f.startswith(prefix) for f in package.files)
-
-
 @per_package
 def uninstalled_launch_resources(package: Package
                                  ) -> tuple[tuple[str, FileRef, str, dict[str, str]], ...]:

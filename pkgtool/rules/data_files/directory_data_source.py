@@ -7,7 +7,6 @@ from collections.abc import Iterator
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.setup_eval.tree import normalize
-from pkgtool.rules.data_files.common import is_folder
 from pkgtool.rules.registry import rule
 from pkgtool.rules.setup_values import checked_setup
 
@@ -44,7 +43,7 @@ def directory_data_source(package: Package) -> Iterator[Hit]:
             continue
         for source in entry.sources:
             paths = source.matches if source.is_glob else (normalize(source.pattern) or "",)
-            folders = [p for p in paths if p and not package.has_file(p) and is_folder(package, p)]
+            folders = [p for p in paths if p and not package.has_file(p) and package.has_folder(p)]
             if folders and not source.is_glob:
                 yield Hit(source.span, f"`{source.pattern}` is a folder: setuptools installs "
                                        "only files")

@@ -13,7 +13,6 @@ from pkgtool.model.launch import nested_packages
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.submodules import ignored, under
-from pkgtool.rules.data_files.common import is_folder
 from pkgtool.rules.registry import rule
 
 
@@ -55,7 +54,7 @@ def missing_cmake_install_source(package: Package) -> Iterator[Hit]:
     tolerated = tolerated_missing_sources(cmake_text(package) or "") if sources else frozenset()
     nested = nested_packages(package.files) if sources else frozenset()
     for source in sorted(sources or ()):
-        if source in ("", ".") or package.has_file(source) or is_folder(package, source) or \
+        if source in ("", ".") or package.has_file(source) or package.has_folder(source) or \
                 source in tolerated or ignored(source, package.ignores) or \
                 under(source, package.unfetched) or under(source, nested) or _outside(source):
             continue

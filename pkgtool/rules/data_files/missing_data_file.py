@@ -9,7 +9,6 @@ from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.package import Package
 from pkgtool.model.setup_eval.tree import normalize
 from pkgtool.model.submodules import under
-from pkgtool.rules.data_files.common import is_folder
 from pkgtool.rules.registry import rule
 from pkgtool.rules.setup_values import checked_setup
 
@@ -59,7 +58,7 @@ def missing_data_file(package: Package) -> Iterator[Hit]:
                           f"Write `['{source.pattern}']`")
                 continue
             path = normalize(source.pattern)
-            if source.is_glob or source.matches or path is None or is_folder(package, path) \
+            if source.is_glob or source.matches or path is None or package.has_folder(path) \
                     or under(path, package.unfetched) or generates:
                 continue
             yield Hit(source.span, f"`{source.pattern}` does not exist (data_files for "

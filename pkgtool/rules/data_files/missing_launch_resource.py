@@ -9,7 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.package import Package
 from pkgtool.model.submodules import ignored, under
-from pkgtool.rules.data_files.common import is_folder, uninstalled_launch_resources
+from pkgtool.rules.data_files.common import uninstalled_launch_resources
 from pkgtool.rules.registry import rule
 
 
@@ -68,7 +68,7 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     """
     share = f"share/{package.name}/"
     for reader, ref, relative, installed in uninstalled_launch_resources(package):
-        if package.has_file(relative) or is_folder(package, relative) or \
+        if package.has_file(relative) or package.has_folder(relative) or \
                 under(relative, package.unfetched) or ignored(relative, package.ignores) or \
                 _installed_when_present(package, relative):
             continue  # a file git ignores is the user's to make (a calibration, a map)

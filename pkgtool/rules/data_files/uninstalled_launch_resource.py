@@ -6,7 +6,7 @@ from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
-from pkgtool.rules.data_files.common import is_folder, uninstalled_launch_resources
+from pkgtool.rules.data_files.common import uninstalled_launch_resources
 from pkgtool.rules.registry import rule
 
 
@@ -47,7 +47,7 @@ def uninstalled_launch_resource(package: Package) -> Iterator[Hit]:
     """
     share = f"share/{package.name}"
     for reader, ref, relative, _ in uninstalled_launch_resources(package):
-        if package.has_file(relative) or is_folder(package, relative) and \
+        if package.has_file(relative) or package.has_folder(relative) and \
                 not _placeholder_folder(package, relative):
             yield Hit(ref.span, f"`{relative}` is not installed to `{share}`, but "
                                 f"`{reader}` uses it")

@@ -63,6 +63,19 @@ READ_BY_LAUNCH = frozenset({"launch-prefix", "launch-prefix-filter", "emulate_tt
 given none, whether to emulate a terminal)."""
 
 
+def literal_arguments(index: Index) -> tuple[list[ast.Call], list[str], list[str]] | None:
+    """The module's ``DeclareLaunchArgument`` calls, the names they declare and the names
+    its ``LaunchConfiguration`` calls read; None when one of those names is no literal."""
+    declared = [call for call in index.calls
+                if launch_class(call, index)[1] == "DeclareLaunchArgument"]
+    names = [text_argument(call, "name") for call in declared]
+    reads = [text_argument(call, "variable_name") for call in index.calls
+             if launch_class(call, index)[1] == "LaunchConfiguration"]
+    if None in names or None in reads:
+        return None
+    return declared, names, reads  # type: ignore[return-value]
+
+
 def reads_shown(index: Index) -> bool:
     """True when every read of a configuration shows in the file: it imports only modules
     of :data:`_PLAIN_MODULES` and the standard library, uses none of :data:`_PASSED_ON`, and

@@ -84,8 +84,8 @@ def robot_description_not_urdf(package: Package) -> Iterator[Hit]:
             names = at_top if function is None else scopes.setdefault(id(function), {
                 **at_top, **_opened_as(function), **single_assignments(function)})
             for key, value in _description_values(call, names):
-                what = _what(value, names)
-                if what is not None and not _plain_urdf(package, what):
+                what = _what(value, names, package)
+                if what is not None:
                     yield Hit(Span(path, value.lineno, value.col_offset + 1),
                               f"`{key}` is given {what} (`{shortened(ast.unparse(value))}`), "
                               f"but `{text_argument(call, 'package')}` parses the value as "
@@ -101,13 +101,10 @@ _GAZEBO = lazy_pattern(r"<gazebo\b.*?</gazebo>", re.S)
 """A ``<gazebo>`` element, which the URDF parser skips (its plugins' ``$(find ...)``)."""
 
 
-def _plain_urdf(package: Package, what: str) -> bool:
-    """True when ``what`` is the unprocessed text of a xacro file of the package whose every
-    file so named needs no expansion: only ``<xacro:arg>``/``<xacro:property>`` declarations
-    (ignored by the URDF parser, as ``<gazebo>`` elements are), no ``${}``, no macro."""
-    if not what.startswith("the unprocessed text of"):
-        return False
-    name = what.rsplit("`", 2)[1]
+def _plain_urdf(package: Package, name: str) -> bool:
+    """True when every xacro file of the package called ``name`` needs no expansion: only
+    ``<xacro:arg>``/``<xacro:property>`` declarations (ignored by the URDF parser, as
+    ``<gazebo>`` elements are), no ``${}``, no macro."""
     texts = [package.texts.get(path) for path in package.files
              if path.rpartition("/")[2] == name]
     return bool(texts) and all(text is not None and not _XACRO_AT_WORK.search(
@@ -134,9 +131,10 @@ def _description_values(call: ast.Call, names: dict[str, ast.expr]
                     yield key.value, value
 
 
-def _what(value: ast.expr, names: dict[str, ast.expr]) -> str | None:
+def _what(value: ast.expr, names: dict[str, ast.expr], package: Package) -> str | None:
     """What a ``robot_description`` value is, when it is no URDF text: "the path of ..."
-    or "the unprocessed text of ..."; None otherwise (or not known)."""
+    or "the unprocessed text of ..." (a xacro file of the package needing no expansion is
+    URDF text); None otherwise (or not known)."""
     value = _resolved(value, names)
     if isinstance(value, ast.Call) and last_name(value.func) == "ParameterValue" and value.args:
         value = _resolved(value.args[0], names)
@@ -149,7 +147,7 @@ def _what(value: ast.expr, names: dict[str, ast.expr]) -> str | None:
         source = opened.args[0] if isinstance(opened, ast.Call) and opened.args and \
             last_name(opened.func) in ("open", "Path") else None
         read = _model_file(source, names) if source is not None else None
-        if read is not None and read.endswith(".xacro"):
+        if read is not None and read.endswith(".xacro") and not _plain_urdf(package, read):
             return f"the unprocessed text of `{read}`"
     return None
 

@@ -14,8 +14,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.text_comments import without_comments
 from pkgtool.lazy_regex import lazy_pattern
-from pkgtool.rules.launch._python_launch import (READ_BY_LAUNCH, launch_class, reads_shown,
-                                                 text_argument)
+from pkgtool.rules.launch._python_launch import READ_BY_LAUNCH, literal_arguments, reads_shown
 from pkgtool.rules.launch_includes import own_includes
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, launch_indexes
@@ -100,16 +99,13 @@ _WORD = lazy_pattern(r"[\w.-]+")
 def _unread(index: Index) -> tuple[set[str], set[str]] | None:
     """The names the launch file of ``index`` declares, and every name it declares, reads or
     writes in a string; None when a declaration or read has no literal name."""
-    declared = [text_argument(call, "name") for call in index.calls
-                if launch_class(call, index)[1] == "DeclareLaunchArgument"]
-    reads = [text_argument(call, "variable_name") for call in index.calls
-             if launch_class(call, index)[1] == "LaunchConfiguration"]
-    if None in declared or None in reads or not index.calls:
+    found = literal_arguments(index)
+    if found is None or not index.calls:
         return None
     module = index.module_of(index.calls[0])
     strings = {node.value for node in nodes_of_class(module, ast.Constant)
                if isinstance(node.value, str)}
-    return {name for name in declared if name}, strings
+    return {name for name in found[1] if name}, strings
 
 
 def _meant(name: str, declared: set[str]) -> str | None:

@@ -9,8 +9,8 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.launch._python_launch import (READ_BY_LAUNCH, launch_class, reads_shown,
-                                                 text_argument)
+from pkgtool.rules.launch._python_launch import (READ_BY_LAUNCH, launch_class, literal_arguments,
+                                                 reads_shown)
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, launch_indexes
 
@@ -57,15 +57,11 @@ def unused_launch_argument(package: Package) -> Iterator[Hit]:
     ```
     """
     for path, index in launch_indexes(package):
-        declared = [call for call in index.calls
-                    if launch_class(call, index)[1] == "DeclareLaunchArgument"]
-        if not declared or not reads_shown(index) or not _starts_something(index):
+        found = literal_arguments(index)
+        if found is None or not found[0] or not reads_shown(index) or \
+                not _starts_something(index):
             continue
-        names = [text_argument(call, "name") for call in declared]
-        reads = [text_argument(call, "variable_name") for call in index.calls
-                 if launch_class(call, index)[1] == "LaunchConfiguration"]
-        if None in names or None in reads:
-            continue
+        declared, names, reads = found
         named = {id(call.args[0]) if call.args else
                  next(id(k.value) for k in call.keywords if k.arg == "name")
                  for call in declared}

@@ -5,6 +5,7 @@ each attribute of ``self`` (PYC090, PYC092)."""
 from __future__ import annotations
 
 import ast
+from collections.abc import Callable, Iterable
 
 from pkgtool.model.ast_nodes import subtree
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index
@@ -22,16 +23,27 @@ def methods_of(cls: ast.ClassDef) -> Methods:
 
 def called_methods(init: Method, methods: Methods) -> list[Method]:
     """The methods of the class ``__init__`` calls on ``self``, and those they call."""
+    def callee(call: ast.Call, caller: Method) -> Method | None:
+        func = call.func
+        return methods[func.attr] if isinstance(func, ast.Attribute) and \
+            is_self(func.value, caller) and func.attr in methods and \
+            func.attr != "__init__" else None
+    return reached([init], callee)
+
+
+def reached(start: Iterable[Method], callee: Callable[[ast.Call, Method], Method | None]
+            ) -> list[Method]:
+    """The functions the calls of ``start`` reach, and those theirs reach, by ``callee``
+    (the function a call of its caller runs, or None), each once, in order found."""
     found: list[Method] = []
-    todo = [init]
+    todo = list(start)
     while todo:
         caller = todo.pop()
-        for n in subtree(caller):
-            if isinstance(n, ast.Call) and isinstance(n.func, ast.Attribute) and \
-                    is_self(n.func.value, caller) and n.func.attr in methods and \
-                    methods[n.func.attr] not in found and n.func.attr != "__init__":
-                found.append(methods[n.func.attr])
-                todo.append(methods[n.func.attr])
+        for node in subtree(caller):
+            target = callee(node, caller) if isinstance(node, ast.Call) else None
+            if target is not None and target not in found:
+                found.append(target)
+                todo.append(target)
     return found
 
 

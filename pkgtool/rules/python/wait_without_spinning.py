@@ -11,7 +11,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import derives_from_node_alone
 from pkgtool.rules.python._init_callbacks import (Method, Methods, attribute_setters,
-                                                  called_methods, is_self, methods_of,
+                                                  called_methods, is_self, methods_of, reached,
                                                   registered_callbacks)
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
@@ -129,15 +129,8 @@ def _module_functions_called(run: tuple[Method, ...], index: Index) -> list[Meth
     call (``wait_until_ready(self)`` may spin the node)."""
     defined = {f.name: f for f in index.functions
                if index.enclosing_class(f) is None and index.enclosing_function(f) is None}
-    found: list[Method] = []
-    todo = list(run)
-    while todo:
-        for node in subtree(todo.pop()):
-            if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and \
-                    node.func.id in defined and defined[node.func.id] not in found:
-                found.append(defined[node.func.id])
-                todo.append(defined[node.func.id])
-    return found
+    return reached(run, lambda call, _: defined.get(call.func.id)
+                   if isinstance(call.func, ast.Name) else None)
 
 
 def _may_run_callbacks(node: ast.AST) -> bool:

@@ -130,14 +130,9 @@ def setup_reads_missing_file(package: Package) -> Iterator[Hit]:
         return
     for call, path, folder in _read_paths(tree, index):
         if path.startswith("..") or ignored(path, package.ignores) or _tolerated(call, index) or \
-                (_has_folder(package, path) if folder else package.has_file(path)):
+                (path == "." or package.has_folder(path) if folder else package.has_file(path)):
             continue
         what = "lists the folder" if folder else "reads"
         yield Hit(Span("setup.py", call.lineno, call.col_offset + 1),
                   f"setup.py {what} `{path}`, which the package does not have: colcon runs "
                   "setup.py to build the package, and it raises FileNotFoundError")
-
-
-def _has_folder(package: Package, path: str) -> bool:
-    """True when the package has a file below ``path`` (git keeps no empty folder)."""
-    return path == "." or any(f.startswith(path + "/") for f in package.files)
