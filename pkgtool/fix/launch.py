@@ -366,3 +366,20 @@ def _returned_list(function: ast.FunctionDef) -> ast.List | None:
             and len(value.args) == 1 and isinstance(value.args[0], ast.List):
         return value.args[0]
     return None
+
+
+@fixer("LCH030", "Include the launch file with the source that reads every format")
+def any_source(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Call ``AnyLaunchDescriptionSource`` (imported from ``launch.launch_description_sources``)
+    where a launch description source of another format than the included file's is called
+    by name. Safe: the include failed before; launch picks the reader by the file's suffix."""
+    for doc, _, nodes in python_nodes(package, findings):
+        call = next((n for n in nodes if isinstance(n, ast.Call) and
+                     isinstance(n.func, ast.Name)), None)
+        if call is None:
+            continue
+        func = call.func
+        yield Fix("Use `AnyLaunchDescriptionSource`", (
+            Edit(doc.source.path, doc.start(func), doc.end(func), "AnyLaunchDescriptionSource"),
+            *doc.add_imports([("launch.launch_description_sources",
+                               "AnyLaunchDescriptionSource")])))

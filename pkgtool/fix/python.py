@@ -532,3 +532,60 @@ def compared_field(package: Package, findings: list[Finding]) -> Iterator[Fix]:
         if meant is not None and ref is not None:
             yield Fix(f"Compare `{ast.unparse(ref)}.{meant.group(1)}`",
                       (_insert(doc, doc.end(ref), f".{meant.group(1)}"),), safe=False)
+
+
+_READ_NAMES = lazy_pattern(r"reads ((?:`\w+`(?:, )?)+), which the enclosing loop")
+
+
+@fixer("PYC094", "Bind the loop's values as the lambda's defaults", safe=False)
+def loop_values_bound(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Give a lambda made in a loop each name the loop rebinds as a defaulted parameter
+    (``lambda msg: f(robot)`` becomes ``lambda msg, robot=robot: f(robot)``), when it takes
+    no ``*args``, ``**kwargs`` or keyword-only parameters and the statement making it does not
+    assign the name (``timer = create_timer(1, lambda: timer.cancel())``: a default would
+    read it before it is bound); a function defined in the loop needs the user. rclpy
+    passes a subscription, service or timer callback only the arguments a parameter without
+    a default takes. Unsafe: each callback then sees its own turn's value, where all saw the
+    last one."""
+    for doc, finding, nodes in python_nodes(package, findings):
+        function = next((n for n in nodes if isinstance(n, ast.Lambda)), None)
+        names = _READ_NAMES.search(finding.message)
+        if function is None or names is None or function.args.vararg or \
+                function.args.kwarg or function.args.kwonlyargs:
+            continue
+        read = re.findall(r"`(\w+)`", names.group(1))
+        if set(read) & _assigned_by_statement(doc.tree, function):
+            continue  # `timer = create_timer(1, lambda: timer.cancel())`: not bound yet
+        bound = ", ".join(f"{n}={n}" for n in read)
+        given = [*function.args.posonlyargs, *function.args.args, *function.args.defaults]
+        at = max(doc.end(n) for n in given) if given else doc.start(function) + len("lambda")
+        text = f", {bound}" if given else f" {bound}"
+        yield Fix(f"Bind {names.group(1)} as defaults", (_insert(doc, at, text),), safe=False)
+
+
+@fixer("PYC095", "Parse the command line without ROS's arguments")
+def ros_arguments_removed(package: Package, findings: list[Finding]) -> Iterator[Fix]:
+    """Give the ``parse_args()`` PYC095 reports the command line without ROS's arguments:
+    ``parse_args(remove_ros_args(sys.argv)[1:])``, importing ``sys`` and rclpy's
+    ``remove_ros_args`` as needed. Safe: the node exited at launch before; the arguments
+    it declares are read as they were."""
+    for doc, _, nodes in python_nodes(package, findings):
+        call = next((n for n in nodes if isinstance(n, ast.Call) and not n.args and
+                     isinstance(n.func, ast.Attribute) and n.func.attr == "parse_args"), None)
+        if call is None or doc.text[doc.end(call) - 2:doc.end(call)] != "()":
+            continue
+        at = doc.end(call) - 1
+        yield Fix("Parse `remove_ros_args(sys.argv)[1:]`", (
+            _insert(doc, at, "remove_ros_args(sys.argv)[1:]"),
+            *doc.add_imports([("sys", None), ("rclpy.utilities", "remove_ros_args")])))
+
+
+def _assigned_by_statement(tree: ast.Module, node: ast.AST) -> set[str]:
+    """The names the statement holding ``node`` assigns (its value is made first)."""
+    for statement in ast.walk(tree):
+        if isinstance(statement, (ast.Assign, ast.AnnAssign)) and statement.value is not None \
+                and any(child is node for child in ast.walk(statement.value)):
+            targets = statement.targets if isinstance(statement, ast.Assign) else \
+                [statement.target]
+            return {n.id for t in targets for n in ast.walk(t) if isinstance(n, ast.Name)}
+    return set()

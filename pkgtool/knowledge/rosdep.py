@@ -11,7 +11,7 @@ from __future__ import annotations
 from functools import cache
 
 from pkgtool.knowledge.rosdistro import DEFAULT_DISTRO, keys_for_import, stdlib_modules
-from pkgtool.knowledge.tables import read
+from pkgtool.knowledge.tables import FLAGS, read
 
 ALTERNATIVE_KEYS: dict[str, tuple[str, ...]] = {
     "PyKDL": ("python_orocos_kdl_vendor",),
@@ -146,6 +146,15 @@ def is_metapackage(name: str) -> bool:
     """True for a released metapackage (``perception``, ``desktop``): it holds no code, so no
     import is ever its."""
     return name in read("metapackages").values
+
+
+def metapackage_members(name: str, distro: str) -> tuple[str, ...] | None:
+    """The packages a metapackage released for ``distro`` brings in directly (it installs
+    nothing of its own: no module, no executable), or None for any other name."""
+    table = read("metapackages")
+    if name not in table.values or FLAGS.get(distro, "?") not in table.flags.get(name, ""):
+        return None
+    return tuple(table.values[name].split())
 
 
 def key_for_python_module(top_level: str, distro: str = DEFAULT_DISTRO) -> str | None:

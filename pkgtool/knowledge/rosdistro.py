@@ -46,6 +46,23 @@ def is_released_package(name: str, distro: str = DEFAULT_DISTRO) -> bool:
     return _check(distro) in _flags("ros_packages").get(name, "")
 
 
+def released_executables(package: str, distro: str = DEFAULT_DISTRO) -> frozenset[str] | None:
+    """The executables a common released package installs into ``lib/<package>`` on
+    ``distro`` (``data/released_executables.txt``), or None when the table does not know."""
+    table = read("released_executables")
+    key = f"{distro}:{package}"
+    return frozenset(table.values.get(key, "").split()) if key in table.flags else None
+
+
+def released_installers(executable: str, distro: str = DEFAULT_DISTRO) -> tuple[str, ...]:
+    """The common released packages that install ``executable`` on ``distro`` (see
+    :func:`released_executables`)."""
+    prefix = f"{distro}:"
+    return tuple(sorted(key[len(prefix):] for key, names in
+                        read("released_executables").values.items()
+                        if key.startswith(prefix) and executable in names.split()))
+
+
 def rosdep_keys() -> frozenset[str]:
     """Every key of rosdep's base.yaml and python.yaml."""
     return frozenset(_flags("rosdep_keys"))

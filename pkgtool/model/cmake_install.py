@@ -194,10 +194,13 @@ def installed_executables(text: str) -> frozenset[str] | None:
     a command other than :data:`_PLAIN_COMMANDS` (a loop doing more than configure targets,
     a function of the project, a subdirectory), an included file other than a ``.cmake``
     file of the package or a CMake module, a folder installed into ``lib/``, a name or
-    destination built from what the file does not set."""
+    destination built from what the file does not set, the console scripts of a Python
+    package's setup.cfg (``ament_python_install_package(... SCRIPTS_DESTINATION ...)``)."""
     calls = _without_configuring_loops(commands(text))
-    if not _known_commands(calls):
-        return None  # what it installs is not known from the text
+    if not _known_commands(calls) or any(
+            name == "ament_python_install_package" and "SCRIPTS_DESTINATION" in args
+            for name, args in calls):
+        return None  # what it installs is not known from the text (a setup.cfg's scripts)
     variables = set_variables(calls, frozenset())
     project = _static("${PROJECT_NAME}", variables)
     if project is None:

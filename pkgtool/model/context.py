@@ -346,18 +346,31 @@ def context_for(root: Path, index: Mapping[Path, WorkspacePackage], distro: str,
 
 def same_named(root: Path, index: Mapping[Path, WorkspacePackage]) -> tuple[str, ...]:
     """The other folders of the ``index`` that hold a package named as the one at ``root``
-    under the same colcon ``src`` folder (the outermost one), relative to the workspace (the
-    folder above ``src``): colcon refuses to build a workspace with two. Packages in no
-    ``src`` folder have none: folders of one repository (a book's chapters) are often built
-    one at a time."""
+    that one colcon run crawls with it, relative to the workspace (the folder above ``src``):
+    under the same colcon ``src`` folder (the outermost one), or one under ``ws/src`` and
+    the other under ``ws`` in no ``src`` folder (colcon run in ``ws`` walks both). colcon
+    refuses to build a workspace with two. Packages in no ``src`` folder have none otherwise:
+    folders of one repository (a book's chapters) are often built one at a time."""
     own = index.get(root)
     places = _names(index)[1].get(own.name, []) if own is not None else []
-    source = _outermost_src(root) if places else None
-    if source is None:
-        return ()
-    return tuple(sorted(Path(os.path.relpath(folder, source.parent)).as_posix()
-                        for folder, _ in places
-                        if folder != root and _outermost_src(folder) == source))
+    found = []
+    for folder, _ in places:
+        workspace = _shared_workspace(root, folder) if folder != root else None
+        if workspace is not None:
+            found.append(Path(os.path.relpath(folder, workspace)).as_posix())
+    return tuple(sorted(found))
+
+
+def _shared_workspace(first: Path, second: Path) -> Path | None:
+    """The workspace folder (above its outermost ``src``) whose colcon run crawls both
+    package folders, if any."""
+    one, other = _outermost_src(first), _outermost_src(second)
+    if one is not None and one == other:
+        return one.parent
+    source, alone = (one, second) if other is None else (other, first) if one is None \
+        else (None, None)
+    return source.parent if source is not None and alone is not None and \
+        source.parent in alone.parents else None
 
 
 def _outermost_src(root: Path) -> Path | None:

@@ -634,6 +634,7 @@ class _Reader(ast.NodeVisitor):
         if (len(command) >= 4 and command[:2] == ("ros2", "run")
                 and all(_plain_word(c) for c in command[2:4])):
             self.nodes.append(NodeRef(command[2], command[3], self._span(node),
+                                      arguments=("prefix",) if start else (),  # a terminal
                                       optional=bool(self.optional), name_unknown=True,
                                       other_parameters=True, unused=bool(self.dead)))
         elif (len(command) >= 4 and command[:2] == ("ros2", "launch") and

@@ -153,9 +153,7 @@ def _xml(path: str, text: str) -> Read | ParseProblem:
                                if element.attribute(a) is not None), None)
             froms = [(c.attribute("from") or "", c.span) for c in element.children
                      if c.tag == "param" and c.attribute("from") is not None]
-            froms += [(defaults[found.group(1)] or "", span) for text, span in froms
-                      for found in [VARIABLE_READ.fullmatch(text.strip())]
-                      if found and found.group(1) in defaults]  # and any file given
+            froms = _with_defaults(froms, defaults)
             remaps = [(c.attribute("from"), c.attribute("to"))
                       for c in element.children if c.tag == "remap"]
             arguments = [element.attribute(a) for a in ("args", "ros_args")]
@@ -177,6 +175,15 @@ def _xml(path: str, text: str) -> Read | ParseProblem:
             values.extend((m.group(0), element.span)
                           for m in _SHARE_WORD.finditer(element.attribute("args") or ""))
     return nodes, values, paths, commands
+
+
+def _with_defaults(froms: list[tuple[str, Span]], defaults: dict[str, str | None]
+                   ) -> list[tuple[str, Span]]:
+    """A node's parameter files, and for each ``$(var x)`` among them the default of the
+    argument ``x`` too (the file it gets unless another is given), where the ``$(var x)`` is."""
+    return froms + [(defaults[found.group(1)] or "", span) for text, span in froms
+                    for found in [VARIABLE_READ.fullmatch(text.strip())]
+                    if found and found.group(1) in defaults]
 
 
 def _xml_parameters(children: tuple[XmlElement, ...], prefix: str = ""
@@ -317,13 +324,15 @@ def _yaml(path: str, text: str) -> Read | ParseProblem:
     values: list[tuple[str, Span]] = []
     paths: list[tuple[str, Span]] = []
     commands: list[tuple[str, Span]] = []
-    seen: set[int] = set()
-    stack = [root] if root is not None else []
-    while stack:
-        node = stack.pop()
-        if id(node) in seen:  # aliases share nodes: visit each once (no billion laughs)
-            continue
-        seen.add(id(node))
+    walked = list(_yaml_walk(root))
+    defaults = {fields["name"]: fields["default"] for node in walked
+                if isinstance(node, yaml.MappingNode) for key, value in node.value
+                if getattr(key, "value", None) == "arg" and isinstance(value, yaml.MappingNode)
+                for fields in [{str(k.value): str(v.value) for k, v in value.value
+                                if isinstance(k, yaml.ScalarNode) and
+                                isinstance(v, yaml.ScalarNode)}]
+                if "name" in fields and fields.get("default")}
+    for node in walked:
         span = Span(path, node.start_mark.line + 1, node.start_mark.column + 1)
         if isinstance(node, yaml.ScalarNode):
             values.append((str(node.value), span))
@@ -331,7 +340,7 @@ def _yaml(path: str, text: str) -> Read | ParseProblem:
             for key, value in node.value:
                 if isinstance(key, yaml.ScalarNode) and key.value in NODE_TAGS and \
                         isinstance(value, yaml.MappingNode):
-                    nodes.append(_yaml_node(key, value, path))
+                    nodes.append(_yaml_node(key, value, path, defaults))
                     paths.extend((str(p.value), _yaml_span(path, p))
                                  for p in _yaml_params(value))
                 elif isinstance(key, yaml.ScalarNode) and key.value in _XML_FILES and \
@@ -345,11 +354,28 @@ def _yaml(path: str, text: str) -> Read | ParseProblem:
                     commands.extend((str(v.value), _yaml_span(path, v)) for k, v in value.value
                                     if getattr(k, "value", None) in ("cmd", "launch-prefix")
                                     and isinstance(v, yaml.ScalarNode))
+    nodes.sort(key=lambda n: (n.span.line, n.span.col))
+    return nodes, values, paths, commands
+
+
+def _yaml_walk(root: object) -> Iterator[object]:
+    """Every node of a composed YAML document once (aliases share nodes: no billion
+    laughs), mappings before what they hold."""
+    import yaml
+
+    seen: set[int] = set()
+    stack = [root] if root is not None else []
+    while stack:
+        node = stack.pop()
+        if id(node) in seen:
+            continue
+        seen.add(id(node))
+        yield node
+        if isinstance(node, yaml.MappingNode):
+            for key, value in node.value:
                 stack.extend((value, key))
         elif isinstance(node, yaml.SequenceNode):
             stack.extend(reversed(node.value))
-    nodes.sort(key=lambda n: (n.span.line, n.span.col))
-    return nodes, values, paths, commands
 
 
 def _yaml_span(path: str, node: object) -> Span:
@@ -365,8 +391,11 @@ def _yaml_params(mapping: object) -> list[object]:
             if isinstance(p.get("from"), yaml.ScalarNode)]
 
 
-def _yaml_node(tag: object, mapping: object, path: str) -> NodeRef:
-    """A ``node:`` (or similar) mapping of a YAML launch file; ``tag`` is its key node."""
+def _yaml_node(tag: object, mapping: object, path: str, defaults: dict[str, str | None]
+               ) -> NodeRef:
+    """A ``node:`` (or similar) mapping of a YAML launch file; ``tag`` is its key node;
+    ``defaults`` the file's argument defaults (a ``from: $(var x)`` parameter file is also
+    ``x``'s default, as in XML)."""
     import yaml
 
     assert isinstance(tag, yaml.ScalarNode) and isinstance(mapping, yaml.MappingNode)
@@ -384,8 +413,9 @@ def _yaml_node(tag: object, mapping: object, path: str) -> NodeRef:
                    span(scalars[key]) if key else None, output=_static(fields.get("output")))
     params = _yaml_params(mapping)
     remaps = [(r.get("from"), r.get("to")) for r in _yaml_entries(mapping, "remap")]
+    froms = [(str(p.value), span(p)) for p in params if isinstance(p, yaml.ScalarNode)]
     named = _named(node, fields.get("name"), fields.get("namespace"),
-                   [(str(p.value), span(p)) for p in params if isinstance(p, yaml.ScalarNode)],
+                   _with_defaults(froms, defaults),
                    [tuple(_text(v) for v in pair) for pair in remaps],  # type: ignore[misc]
                    [fields.get("args"), fields.get("ros_args")])
     return replace(named, inline_parameters=tuple(_yaml_parameters(mapping, path)))

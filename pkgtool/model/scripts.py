@@ -6,6 +6,7 @@ from __future__ import annotations
 
 import functools
 import posixpath
+import re
 
 from pkgtool.model.context import WorkspacePackage, setup_texts
 from pkgtool.model.digest import text_digest
@@ -66,3 +67,48 @@ def _executables(folder: str, name: str, digest: str) -> frozenset[str] | None:
             library_entries(destinations, name):
         return None
     return script_names(scripts, setup_cfg)
+
+
+_WALKS = re.compile(r"\bdef\s|\blambda\b|os\.walk|listdir|scandir|iterdir|rglob|(?<!glob)\.glob\(")
+"""What in a setup.py lists files other than ``glob()`` calls (evaluated against no files,
+they would install nothing): its own functions, walks, ``Path.glob``."""
+Installs = tuple[tuple[str, str, bool], ...]
+"""data_files entries, a source each: (destination folder, source path or glob, is a glob)."""
+
+
+def sibling_data_files(package: WorkspacePackage) -> Installs | None:
+    """What another ament_python package of the workspace installs with data_files, read
+    from setup.py alone (globs are kept as patterns: the files they match are not read, so
+    the answer depends on nothing but the setup files the index digests); None when that
+    cannot be known (see :func:`sibling_executables`, and a data_files not evaluated)."""
+    if not package.setup_digest or not package.folder:
+        return None
+    return _data_files(package.folder, package.setup_digest)
+
+
+@functools.lru_cache(maxsize=512)
+def _data_files(folder: str, digest: str) -> Installs | None:
+    setup_text, cfg_text = setup_texts(folder)
+    if setup_text is None or text_digest(setup_text, cfg_text) != digest or \
+            "data_files" in (cfg_text or "") or _WALKS.search(setup_text):
+        return None  # setup.cfg's [options.data_files] add more; a walk or helper lists files
+    setup = parse_setup_py("setup.py", setup_text, ())
+    if not isinstance(setup, SetupPy) or setup.is_unresolved("data_files") or \
+            setup.is_unresolved("**") or any(e.sources_is_text for e in setup.data_files or ()):
+        return None
+    return tuple((posixpath.normpath(entry.destination.strip("/")), source.pattern,
+                  source.is_glob) for entry in setup.data_files or () for source in entry.sources)
+
+
+def installs_share_path(installs: Installs, target: str) -> bool:
+    """True when data_files entries ``installs`` may install ``target`` (``share/pkg/x/y``):
+    a source of its name (or a glob its name matches) copied into its folder, or a folder
+    at or below it (setuptools makes each destination)."""
+    from fnmatch import fnmatchcase
+
+    folder, name = posixpath.split(target)
+    return any(destination == target or destination.startswith(target + "/") or
+               destination == folder and (
+                   fnmatchcase(name, posixpath.basename(pattern)) if is_glob else
+                   posixpath.basename(posixpath.normpath(pattern)) == name)
+               for destination, pattern, is_glob in installs)

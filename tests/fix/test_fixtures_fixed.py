@@ -15,7 +15,7 @@ CASES = [(code, case) for code in fixers() for case in sorted((FIXTURES / code /
 PARTLY = {("PYC080", "indexed_messages"), ("PYC046", "methods_not_called"),
           ("LCH028", "misspelt_include_arguments"),
           ("MAN019", "gplv3_and_bsd_3_clause"), ("MAN019", "spdx_case_and_deprecated_ids"),
-          ("LCH001", "node_of_another_workspace_package"),
+          ("LCH001", "node_of_another_workspace_package"), ("PYC094", "callbacks_made_in_loops"),
           ("LCH010", "command_as_one_formatted_string"),
           ("LCH001", "executable_of_a_cmake_workspace_package"),
           ("DEP011", "lookups_of_undeclared_packages"),
@@ -74,7 +74,8 @@ has is built elsewhere, and which field of a message of several a plain value wa
 with): no fix
 guesses, the user chooses; the other findings
 of the case are fixed."""
-MANUAL = {("PYC078", "habits_of_other_languages"),
+MANUAL = {("PYC078", "habits_of_other_languages"), ("LCH001", "nodes_of_released_packages"),
+          ("LCH010", "command_words_as_arguments"),
           ("LCH027", "keyboard_teleop_in_launch_files"), ("DAT025", "sim_time_misspelt"),
           ("SYN008", "parameter_file_nothing_installs"), ("PYC090", "timer_before_first_message"),
           ("PYC091", "service_and_action_types_called"),

@@ -81,9 +81,9 @@ def _findings(case: Path, code: str) -> list[tuple[str, Finding]]:
     """(package folder relative to the case, finding) for every finding of ``code``."""
     marker = case / "ROSDISTRO"
     distro = marker.read_text().strip() if marker.is_file() else Context().distro
-    sources = [] if is_package(case) else [str(src.relative_to(case)) for src in
-                                           [case / "src", *sorted(case.glob("*/src"))]
-                                           if src.is_dir()]
+    sources = [] if is_package(case) else ["."] if (case / "COLCON_ROOT").is_file() else [
+        str(src.relative_to(case)) for src in [case / "src", *sorted(case.glob("*/src"))]
+        if src.is_dir()]  # COLCON_ROOT: colcon runs in the case folder, src/ and all
     is_workspace = bool(sources)
     roots = list(discover(sources, cwd=case).packages) if is_workspace else [case]
     index = workspace_index(roots) if is_workspace else {}

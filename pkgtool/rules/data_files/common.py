@@ -13,6 +13,7 @@ from pkgtool.model.launch_python import read_python_launch
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
+from pkgtool.model.scripts import installs_share_path, sibling_data_files
 from pkgtool.model.setup_py import DataFile, DataSource
 from pkgtool.rules.existence_checks import HANDLING_FILES, checks_files
 from pkgtool.rules.setup_values import checked_setup
@@ -86,6 +87,32 @@ def _uninstalled(package: Package) -> Iterator[tuple[str, FileRef, str, dict[str
                                                  for t in (*installed, *listed)):
                 continue  # a pattern (`config/*.yaml`) the code expands: installed files match
             yield path, ref, posixpath.relpath(target, share), installed
+
+
+@per_package
+def sibling_share_misses(package: Package) -> tuple[tuple[str, FileRef, str], ...]:
+    """Each file an installed launch file or module reads from the share folder of another
+    ament_python package of the workspace whose setup.py certainly installs no file of that
+    name there (:func:`~pkgtool.model.scripts.installs_share_path`): the reader's path, the
+    reference and the path below that package's share folder."""
+    installed = installed_data(package)
+    if installed is None:
+        return ()
+    shared = {source for target, source in installed.items()
+              if target.startswith(f"share/{package.name}/")}
+    found: list[tuple[str, FileRef, str]] = []
+    for path, refs in _share_reads(package, shared):
+        for ref in refs:
+            sibling = package.context.workspace.get(ref.package or "") \
+                if ref.package != package.name and ref.parts else None
+            installs = sibling_data_files(sibling) if sibling is not None else None
+            relative = posixpath.normpath(posixpath.join(*ref.parts))
+            if installs is not None and not _GLOB.search(relative) and \
+                    not installs_share_path(installs, f"share/{ref.package}/{relative}") and \
+                    not any(f[0] == path and f[1].package == ref.package and f[2] == relative
+                            for f in found):  # a path built once, used again
+                found.append((path, ref, relative))
+    return tuple(found)
 
 
 def _share_reads(package: Package, shared: set[str]

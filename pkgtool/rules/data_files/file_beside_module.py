@@ -109,7 +109,7 @@ def file_beside_module(package: Package) -> Iterator[Hit]:
     there: a file outside the package's Python packages (`<module>/../config/x.yaml`, the
     package root's `config/`), or one inside them when setup.py has no `package_data` nor
     `include_package_data`. Modules that ask whether paths exist (`os.path.exists`) are left
-    alone, as are packages whose setup.py installs into `site-packages` by other means, scripts
+    alone, as are files of a name data_files copies into `site-packages` itself, scripts
     kept in the package folder (code at their top level that no console script runs, no
     module imports and data_files does not copy: run as `python3 path/to/it.py` from the
     sources), and reads in a module's `if __name__ == '__main__':` block (it runs only
@@ -139,9 +139,11 @@ def file_beside_module(package: Package) -> Iterator[Hit]:
     setup = package.setup_py
     if setup is None or not is_ament_python(package) or \
             any(keyword in setup.keywords for keyword in PACKAGE_DATA) or \
-            setup.is_unresolved("data_files") or setup.is_unresolved("**") or \
-            any("site-packages" in entry.destination for entry in setup.data_files or ()):
+            setup.is_unresolved("data_files") or setup.is_unresolved("**"):
         return
+    into_site = {posixpath.basename(match) for entry in setup.data_files or ()
+                 if "site-packages" in entry.destination for source in entry.sources
+                 for match in source.matches}  # files data_files copies beside the modules
     folders = {posixpath.dirname(file) for file in (installed_modules(package) or {}).values()}
     files = set(package.files)
     copied = set((installed_data(package) or {}).values())
@@ -152,7 +154,7 @@ def file_beside_module(package: Package) -> Iterator[Hit]:
         seen: set[str] = set()
         for node, path in file_relative_paths(tree, module.path):
             if path in seen or path not in files or path.endswith(_CODE) or \
-                    _never_read(node, index) or \
+                    posixpath.basename(path) in into_site or _never_read(node, index) or \
                     module.path not in copied and _in_main_block(node, index):
                 continue
             seen.add(path)

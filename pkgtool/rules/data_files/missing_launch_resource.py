@@ -2,15 +2,19 @@
 
 from __future__ import annotations
 
+import ast
 from collections.abc import Iterator
 from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.lazy_regex import lazy_pattern
+from pkgtool.model.ast_nodes import nodes_of_class, opens_to_write
+from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.submodules import ignored, under
-from pkgtool.rules.data_files.common import uninstalled_launch_resources
+from pkgtool.rules.data_files.common import sibling_share_misses, uninstalled_launch_resources
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import installed_trees
 
 
 @rule("DAT012", "missing-launch-resource", Severity.ERROR,
@@ -48,7 +52,12 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     by nodes it never starts, or replaced before any use; of a module-level name nothing
     reads or imports; or stored in `self.x` that the module never reads) is not read
     either, nor is a file it opens to write (`open(path, 'w')`, `'a'`, `'x'`): the code
-    makes it.
+    makes it; nor a file of the name another installed module of the package opens to
+    write (one node writes the state file another reads). A path read from the share folder
+    of another ament_python package of the workspace (an included launch file of a sibling
+    package) is reported when that package's setup.py installs no file of its name into
+    its folder (its globs are matched by name: `launch/*.launch.py` never installs
+    `launch/robot.launch.xml`).
 
     ## Why is this bad?
     Nothing can install a file the package does not have: `ros2 launch` fails on the missing
@@ -70,7 +79,8 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     for reader, ref, relative, installed in uninstalled_launch_resources(package):
         if package.has_file(relative) or package.has_folder(relative) or \
                 under(relative, package.unfetched) or ignored(relative, package.ignores) or \
-                _installed_when_present(package, relative):
+                _installed_when_present(package, relative) or \
+                relative.rpartition("/")[2] in _written_names(package):
             continue  # a file git ignores is the user's to make (a calibration, a map)
         known = {target[len(share):] for target in installed if target.startswith(share)}
         known.update(package.files)
@@ -82,6 +92,11 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
         yield Hit(ref.span, f"`{relative}` is no file of `{package.name}`: `{reader}` "
                             f"reads it from the share folder, where nothing installs it{hint}",
                   f"Write `{close[0]}`" if close else None)
+    for reader, ref, relative in sibling_share_misses(package):
+        yield Hit(ref.span, f"`{relative}` is not installed by `{ref.package}`, a package of "
+                            f"the workspace: `{reader}` reads it from its share folder, where "
+                            f"its setup.py's data_files put no file of that name",
+                  f"Fix the path, or install the file in `{ref.package}`'s setup.py")
 
 
 def _suffix_added(relative: str, known: set[str]) -> bool:
@@ -98,6 +113,25 @@ def _parameter_files(package: Package, reader: str) -> set[tuple[str | None, tup
     parameters: paths rcl opens as they are."""
     return {(ref.package, ref.parts) for launch in package.launch_files if launch.path == reader
             for node in launch.nodes for ref in node.parameter_files}
+
+
+@per_package
+def _written_names(package: Package) -> frozenset[str]:
+    """The file names the package's installed modules open to write (``open(share +
+    '/state.ini', 'w')``; the last part of each text in the path given, or in what the name
+    given is bound to in the module): one module may make the file another reads."""
+    found: set[str] = set()
+    for _, tree, _ in installed_trees(package):
+        values = {t.id: n.value for n in nodes_of_class(tree, ast.Assign) for t in n.targets
+                  if isinstance(t, ast.Name)}
+        for call in nodes_of_class(tree, ast.Call):
+            if isinstance(call, ast.Call) and isinstance(call.func, ast.Name) and \
+                    call.func.id == "open" and call.args and opens_to_write(call):
+                path = call.args[0]
+                path = values.get(path.id, path) if isinstance(path, ast.Name) else path
+                found.update(n.value.rstrip("/").rpartition("/")[2] for n in ast.walk(path)
+                             if isinstance(n, ast.Constant) and isinstance(n.value, str))
+    return frozenset(found)
 
 
 _EXISTENCE = lazy_pattern(r"\b(?:exists|isdir|is_dir)\(")

@@ -2,12 +2,18 @@
 
 from __future__ import annotations
 
+import ast
+import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.ast_nodes import nodes_of_class
+from pkgtool.model.installed import installed_data
 from pkgtool.model.package import Package
+from pkgtool.model.span import Span
 from pkgtool.rules.data_files.common import uninstalled_launch_resources
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import Index, launch_trees
 
 
 @rule("DAT006", "uninstalled-launch-resource", Severity.ERROR,
@@ -27,7 +33,10 @@ def uninstalled_launch_resource(package: Package) -> Iterator[Hit]:
     files exist (`os.path.exists`, `Path.exists()`: it handles a missing one) is left alone;
     in a launch file only the paths it asks that of are (all of them when it asks of a path
     pkgtool cannot work out). A folder holding only hidden files (`output/.gitkeep`: where
-    the code writes) has nothing to install.
+    the code writes) has nothing to install. An installed Python launch file that puts its
+    folder on `sys.path` (it mentions both) and imports a module kept beside it
+    (`launch/helpers.py`) is reported when data_files does not install that module beside
+    it.
 
     ## Why is this bad?
     The launch file starts, then fails on the missing parameter file, URDF or RViz config,
@@ -51,6 +60,50 @@ def uninstalled_launch_resource(package: Package) -> Iterator[Hit]:
                 not _placeholder_folder(package, relative):
             yield Hit(ref.span, f"`{relative}` is not installed to `{share}`, but "
                                 f"`{reader}` uses it")
+    yield from _uninstalled_helpers(package)
+
+
+def _uninstalled_helpers(package: Package) -> Iterator[Hit]:
+    """Modules beside an installed Python launch file that it imports (its folder put on
+    ``sys.path``) and that data_files does not install beside it."""
+    installed = installed_data(package) or {}
+    places = {source: posixpath.dirname(target) for target, source in installed.items()}
+    for path, tree, index in launch_trees(package):
+        folder = posixpath.dirname(path)
+        where = places.get(path)
+        text = package.texts.get(path) or ""
+        if where is None or "__file__" not in text or "sys.path" not in text:
+            continue  # not installed (DAT005's), or its folder is not put on sys.path
+        for node, name in _top_imports(tree):
+            if any(isinstance(p, ast.Try) for p in _parents(node, index)):
+                continue  # an optional import
+            helper = next((f for f in (posixpath.join(folder, f"{name}.py"),
+                                       posixpath.join(folder, name, "__init__.py"))
+                           if package.has_file(f)), None)
+            target = posixpath.join(where, posixpath.relpath(helper, folder)) if helper else ""
+            if helper is not None and target not in installed:
+                yield Hit(Span(path, node.lineno, node.col_offset + 1),
+                          f"`{path}` imports `{name}` from `{helper}`, which data_files does "
+                          f"not install beside it in `{where}`: the installed launch file "
+                          f"fails with ModuleNotFoundError (it works only with "
+                          f"`--symlink-install`)",
+                          f"Install `{helper}` into `{where}` too")
+
+
+def _parents(node: ast.AST, index: Index) -> Iterator[ast.AST]:
+    parent = index.parents.get(id(node))
+    while parent is not None:
+        yield parent
+        parent = index.parents.get(id(parent))
+
+
+def _top_imports(tree: ast.Module) -> Iterator[tuple[ast.stmt, str]]:
+    """The absolute imports of a module with the top-level name each imports."""
+    for node in nodes_of_class(tree, ast.Import, ast.ImportFrom):
+        if isinstance(node, ast.Import):
+            yield from ((node, alias.name.split(".")[0]) for alias in node.names)
+        elif isinstance(node, ast.ImportFrom) and not node.level and node.module:
+            yield node, node.module.split(".")[0]
 
 
 def _placeholder_folder(package: Package, path: str) -> bool:

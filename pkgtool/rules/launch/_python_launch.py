@@ -186,6 +186,18 @@ def undeclared_reads(package: Package) -> Iterator[tuple[Span, str, set[str]]]:
                 yield Span.of_offset(path, text, read.start()), name, declared
 
 
+def declaration_holders(index: Index) -> dict[str, str]:
+    """The names of a launch file bound to a ``DeclareLaunchArgument('x', ...)`` (``x_arg =
+    DeclareLaunchArgument('x')``), with the argument each declares."""
+    found: dict[str, str] = {}
+    for call in index.calls:
+        parent = index.parents.get(id(call))
+        name = text_argument(call, "name") if last_name(call.func) == _DECLARE else None
+        if name is not None and isinstance(parent, ast.Assign):
+            found.update((t.id, name) for t in parent.targets if isinstance(t, ast.Name))
+    return found
+
+
 def _never_used(call: ast.Call, index: Index) -> bool:
     """True when ``call`` is the value of ``name = ...`` and its function (or module) binds
     ``name`` again, or reads it nowhere, after it: a substitution nothing performs raises

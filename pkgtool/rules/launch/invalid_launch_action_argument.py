@@ -92,6 +92,13 @@ def _command(call: ast.Call, index: Index) -> Iterator[tuple[ast.AST, str, str]]
     """``Command(['xacro', path])``: the program and its first argument joined into one word
     (launch concatenates the parts as they are); ``Command([urdf_path])``: a data file run
     as the program."""
+    if len(call.args) > 1 and not any(isinstance(a, ast.Starred) for a in call.args):
+        words = ", ".join(ast.unparse(a) for a in call.args)
+        yield (call.args[1], f"`Command()` takes the command as one argument (a string or a "
+               f"list of parts; `on_stderr` is keyword-only) but is given {len(call.args)}: "
+               "it raises TypeError", f"Write `Command([{words}])`, with the spaces between "
+               "the words in the parts")
+        return
     parts = call.args[0] if call.args else None
     first_part = parts.elts[0] if isinstance(parts, (ast.List, ast.Tuple)) and parts.elts \
         else parts
@@ -229,10 +236,11 @@ def invalid_launch_action_argument(package: Package) -> Iterator[Hit]:
     written as a dict (display or comprehension) instead of its `.items()`; and
     `LaunchDescription` given one action (`LaunchDescription(Node(...))`) instead of a list;
     and `PathJoinSubstitution` given its parts as separate arguments instead of one list;
-    and `Command` given its program and first argument with no space between
-    (`Command(['xacro', path])`, `Command([FindExecutable(name='xacro'), path])`), or a data
-    file as its program (`Command([urdf_path])`, the path of a `.urdf`, `.xacro`, `.yaml`
-    ... file, written or joined in the call or assigned once to the name);
+    and `Command` given its words as separate arguments (`Command('ros2', 'run', ...)`; it
+    takes one, `on_stderr` is keyword-only), or its program and first argument with no
+    space between (`Command(['xacro', path])`, `Command([FindExecutable(name='xacro'),
+    path])`), or a data file as its program (`Command([urdf_path])`, the path of a `.urdf`,
+    `.xacro`, `.yaml` ... file, written or joined in the call or assigned once to the name);
     and `ExecuteProcess` given its command positionally (`cmd` is keyword-only) or as one
     string (`cmd='ros2 bag play run1'`, an f-string too) instead of a list of words;
     and any action of `launch.actions` or `launch_ros.actions` given a literal or f-string as

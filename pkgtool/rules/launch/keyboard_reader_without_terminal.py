@@ -9,6 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.launch import TERMINALS
 from pkgtool.model.package import Package
+from pkgtool.rules.console_scripts import scripts_and_modules
 from pkgtool.rules.registry import rule
 
 KEYBOARD_READERS = frozenset({("teleop_twist_keyboard", "teleop_twist_keyboard"),
@@ -36,7 +37,10 @@ def keyboard_reader_without_terminal(package: Package) -> Iterator[Hit]:
     ## What it does
     Reports a `Node` (`<node>`, YAML `node`) starting `teleop_twist_keyboard`,
     `turtlesim`'s `turtle_teleop_key` or `key_teleop` with no `prefix` (`launch-prefix`):
-    the nodes that read keys from their standard input, in a launch file that sets no
+    the nodes that read keys from their standard input, or an executable of this package
+    whose module puts its standard input in raw mode (`termios.tcgetattr(sys.stdin)`,
+    `tty.setraw(sys.stdin)`) without asking whether it is a terminal (`isatty`), in a
+    launch file that sets no
     terminal as `launch-prefix` for all its nodes (`<let name="launch-prefix" value="xterm
     -e"/>`, `SetLaunchConfiguration('launch-prefix', ...)`, an argument of that name).
 
@@ -57,16 +61,34 @@ def keyboard_reader_without_terminal(package: Package) -> Iterator[Hit]:
          prefix='xterm -e')
     ```
     """
+    readers = KEYBOARD_READERS | {(package.name, name) for name in _own_readers(package)}
     for launch in package.launch_files:
         if _terminal_for_all(package.texts.get(launch.path, "")):
             continue  # a prefix for every node of the file
         for node in launch.nodes:
-            if (node.package, node.executable) in KEYBOARD_READERS and not node.unused and \
+            if (node.package, node.executable) in readers and not node.unused and \
                     not _PREFIXES & set(node.arguments) and "**" not in node.arguments:
                 yield Hit(node.executable_span or node.span,
                           f"`{node.executable}` reads keys from its standard input, which "
                           "`ros2 launch` makes a pipe, not a terminal: it exits with "
                           "\"Inappropriate ioctl for device\" (or never sees a key)")
+
+
+_RAW_STDIN = lazy_pattern(r"\b(?:termios\.tcgetattr|tty\.set(?:raw|cbreak))\(\s*sys\.stdin\b")
+"""A module putting its standard input, a terminal it takes for granted, into raw mode."""
+
+
+def _own_readers(package: Package) -> set[str]:
+    """The console scripts of the package whose module reads keys from a terminal
+    (``termios.tcgetattr(sys.stdin)``, ``tty.setraw(sys.stdin)``) without asking whether it
+    has one (``isatty``)."""
+    entries, modules = scripts_and_modules(package)
+    found: set[str] = set()
+    for entry in entries:
+        text = package.texts.get(modules.get(entry.module, ""), "") or ""
+        if _RAW_STDIN.search(text) and "isatty" not in text:
+            found.add(entry.name)
+    return found
 
 
 def _terminal_for_all(text: str) -> bool:

@@ -8,8 +8,9 @@ from difflib import get_close_matches
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.launch._python_launch import undeclared_reads
+from pkgtool.rules.launch._python_launch import declaration_holders, undeclared_reads
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import launch_indexes
 
 
 @rule("LCH008", "misspelled-launch-argument", Severity.ERROR,
@@ -24,9 +25,10 @@ def misspelled_launch_argument(package: Package) -> Iterator[Hit]:
     `LaunchConfiguration('other')` without a `default` when `other` is declared nowhere,
     nothing else in the files sets it (`SetLaunchConfiguration`, `launch_arguments`) and
     a declared name of the same file is spelled almost the same (`use_sim_tim` for
-    `use_sim_time`). In XML and YAML launch files, the same for `$(var other)` against the
-    names of `<arg>` and `<let>` (`arg:` and `let:`), when `other` appears nowhere else in
-    the file.
+    `use_sim_time`), or the name read is that of the Python variable holding a declaration
+    (`LaunchConfiguration('x_arg')` after `x_arg = DeclareLaunchArgument('x')`). In XML
+    and YAML launch files, the same for `$(var other)` against the names of `<arg>` and
+    `<let>` (`arg:` and `let:`), when `other` appears nowhere else in the file.
 
     ## Why is this bad?
     `ros2 launch` fails when it evaluates the substitution: `launch configuration
@@ -45,8 +47,10 @@ def misspelled_launch_argument(package: Package) -> Iterator[Hit]:
     Node(..., parameters=[{'use_sim_time': LaunchConfiguration('use_sim_time')}]),
     ```
     """
+    holders = {path: declaration_holders(index) for path, index in launch_indexes(package)}
     for span, name, declared in undeclared_reads(package):
-        close = get_close_matches(name, sorted(declared), n=1, cutoff=0.8)
+        held = holders.get(span.path, {}).get(name)
+        close = [held] if held else get_close_matches(name, sorted(declared), n=1, cutoff=0.8)
         if close:
             yield _hit(span, name, close[0])
 

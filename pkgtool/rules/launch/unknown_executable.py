@@ -6,7 +6,8 @@ from collections.abc import Iterator
 from difflib import get_close_matches
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.knowledge.rosdistro import typo_of
+from pkgtool.knowledge.rosdep import metapackage_members
+from pkgtool.knowledge.rosdistro import released_executables, released_installers, typo_of
 from pkgtool.model.launch import NodeRef
 from pkgtool.model.package import Package
 from pkgtool.model.scripts import sibling_executables
@@ -45,7 +46,13 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
     `install(PROGRAMS ...)` (or their `RENAME`), `ament_auto_add_executable` targets and
     components' `EXECUTABLE`; not when it uses commands of the project's own, loops,
     subdirectories or folders installed into `lib/` (the setup.py a CMake package may hold
-    is never run by colcon).
+    is never run by colcon). A node of a released metapackage that is not in the workspace
+    (`rtabmap_ros` since its split, `navigation2`) is reported: a metapackage only brings
+    in other packages and installs no executable of its own. So is a node of a common
+    released package (`robot_state_publisher`, `joint_state_publisher`, `tf2_ros`, `joy`,
+    ... on Humble and Jazzy: `data/released_executables.txt`, read from their repositories
+    at the released versions) naming an executable it does not install
+    (`executable='state_publisher'`, ROS 1's name).
 
     ## Why is this bad?
     `ros2 launch` looks the executable up in `lib/<package>` only when the launch file runs
@@ -84,10 +91,28 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
             if node.package == package.name and node.executable in programs:
                 yield _kept_suffix(node, programs[node.executable])
                 continue
+            released = node.package not in package.context.workspace and \
+                not node.other_distros  # a branch for another distribution's names
+            members = metapackage_members(node.package, package.context.distro) \
+                if released else None
+            if members is not None:
+                yield _in_metapackage(node, members)
+                continue
             installed = (known, shown) if node.package == package.name else \
-                _sibling(package, node.package)
+                _sibling(package, node.package, node.other_distros)
             if installed[0] is not None and node.executable not in installed[0]:
-                yield _unknown(node, installed[1] or frozenset(), _built_by_cmake(package, node))
+                yield _unknown(node, installed[1] or frozenset(), _built_by_cmake(package, node),
+                               node.package not in package.context.workspace,
+                               package.context.distro)
+
+
+def _in_metapackage(node: NodeRef, members: tuple[str, ...]) -> Hit:
+    """The finding for a node started from a released metapackage, which installs nothing."""
+    named = ", ".join(f"`{m}`" for m in members[:16]) + (", ..." if len(members) > 16 else "")
+    return Hit(node.executable_span or node.span,
+               f"`{node.package}` is a metapackage, which installs no executables (it brings "
+               f"in {named}): launch stops with \"executable '{node.executable}' not found\"",
+               f"Name the package among them that installs `{node.executable}`")
 
 
 def _kept_suffix(node: NodeRef, installed: str) -> Hit:
@@ -99,12 +124,19 @@ def _kept_suffix(node: NodeRef, installed: str) -> Hit:
                f"with `RENAME {node.executable}`")
 
 
-def _sibling(package: Package, name: str) -> tuple[frozenset[str] | None, frozenset[str] | None]:
+def _sibling(package: Package, name: str, other_distros: bool
+             ) -> tuple[frozenset[str] | None, frozenset[str] | None]:
     """What another workspace package named ``name`` installs (twice, as :func:`executables`
-    gives a package's own: what may be there, what is shown); None when unknown."""
+    gives a package's own: what may be there, what is shown), or a common released one on
+    the target distribution (unless the node is written for ``other_distros``); None when
+    unknown."""
     sibling = package.context.workspace.get(name)
-    found = sibling_executables(sibling) if sibling is not None else None
-    if found is None and sibling is not None:
+    if sibling is None:  # a released package, when it is a common one
+        found = released_executables(name, package.context.distro) if not other_distros \
+            else None
+        return found, found
+    found = sibling_executables(sibling)
+    if found is None:
         found = sibling.executables
     return found, found
 
@@ -117,17 +149,29 @@ def _built_by_cmake(package: Package, node: NodeRef) -> bool:
     return sibling is not None and sibling.executables is not None
 
 
-def _unknown(node: NodeRef, shown: frozenset[str], cmake: bool) -> Hit:
+def _unknown(node: NodeRef, shown: frozenset[str], cmake: bool, released: bool,
+             distro: str) -> Hit:
     """The finding for ``node``, whose executable is none of ``shown`` (``cmake``: of a
-    package CMake builds)."""
+    package CMake builds; ``released``: of a released package of ``distro``, not of the
+    workspace)."""
     executable = node.executable or ""
     choices = ", ".join(f"`{n}`" for n in sorted(shown)) or "none"
-    close = get_close_matches(executable, sorted(shown), n=1)
+    installers = released_installers(executable, distro) if released else ()
+    close = get_close_matches(executable, sorted(shown), n=1) if not installers else []
     meant = typo_of(executable, shown)
-    add = f"install it: `install(TARGETS {executable} DESTINATION lib/${{PROJECT_NAME}})`" \
-        if cmake else f"add `{executable} = {node.package}.<module>:main` to console_scripts"
+    add = f"Install it: `install(TARGETS {executable} DESTINATION lib/${{PROJECT_NAME}})`" \
+        if cmake else f"Add `{executable} = {node.package}.<module>:main` to console_scripts"
+    fix = f"Write `{meant}`" if meant else \
+        f"Write `package='{installers[0]}'`: it installs `{executable}`" \
+        if len(installers) == 1 else \
+        f"Launch one of the executables `{node.package}` installs, or name the package that " \
+        f"installs `{executable}`" if released else \
+        f"{add}, or launch one of the installed executables"
+    elsewhere = [d for d in ("humble", "jazzy") if d != distro and released and
+                 executable in (released_executables(node.package or "", d) or ())]
+    where = f" on {distro}" if released else ""
+    was = f"; on {elsewhere[0]} it has `{executable}`" if elsewhere else ""
     return Hit(node.executable_span or node.span,
-               f"`{executable}` is not an executable of `{node.package}` "
-               f"({f'did you mean `{close[0]}`? ' if close else ''}it installs: {choices})",
-               f"Write `{meant}`" if meant else
-               f"{add[0].upper()}{add[1:]}, or launch one of the installed executables")
+               f"`{executable}` is not an executable of `{node.package}`{where} "
+               f"({f'did you mean `{close[0]}`? ' if close else ''}it installs: {choices}{was})",
+               fix)

@@ -18,9 +18,11 @@ def duplicate_package_name(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Compares the package's `<name>` with the names of the other packages under the same
-    colcon `src` folder. Folders colcon skips (a `COLCON_IGNORE` marker) are not part of the
-    workspace; packages in no `src` folder are not compared (the chapters or lab sessions of
-    one repository are often built one at a time).
+    colcon `src` folder, and those of packages beside that `src` folder in no `src` folder
+    themselves (`ws/driver/` and `ws/src/driver/`: colcon run in `ws` walks both). Folders
+    colcon skips (a `COLCON_IGNORE` marker) are not part of the workspace; packages in no
+    `src` folder are not compared otherwise (the chapters or lab sessions of one repository
+    are often built one at a time).
 
     ## Why is this bad?
     `colcon build` stops before building anything: "Duplicate package names not supported".

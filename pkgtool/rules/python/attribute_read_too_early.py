@@ -12,7 +12,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import derives_from_node_alone
 from pkgtool.rules.python._attribute_guards import dynamic_attributes
-from pkgtool.rules.python._certain_code import certain_parts
+from pkgtool.rules.python._certain_code import certain, certain_parts
 from pkgtool.rules.python._message_instances import method_receiver
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, base_names, installed_trees
@@ -26,11 +26,13 @@ _PARAMETER_CALLBACKS = frozenset({"add_on_set_parameters_callback",
 @rule("PYC087", "attribute-read-too-early", Severity.ERROR,
       fix="Assign the attribute (or call `super().__init__()`) before the line that reads it")
 def attribute_read_too_early(package: Package) -> Iterator[Hit]:
-    """A node's `__init__` reads an attribute of `self` before anything has set it.
+    """A node's (or helper class's) `__init__` reads an attribute of `self` before anything
+    has set it.
 
     ## What it does
-    Follows the statements of the `__init__` of a class deriving from rclpy's `Node` alone
-    (no decorator, no metaclass, not extended by another class of the package) in order, and
+    Follows the statements of the `__init__` of a class deriving from rclpy's `Node` alone,
+    or from nothing (`object`: a helper class of the package), with no decorator, no
+    metaclass and not extended by another class of the package, in order, and
     reports a read of `self.x` that certainly runs (not in a branch, a loop body, a `try`, a
     `with`, a lambda or the right of `and`/`or`) before any statement has assigned
     `self.x`, when `x` is not a class attribute, a method or a property of the class, nor an
@@ -71,7 +73,8 @@ def attribute_read_too_early(package: Package) -> Iterator[Hit]:
     extended = base_names(package)
     set_outside: dict[str, set[str]] | None = None
     for module, tree, index in installed_trees(package):
-        classes = [c for c in index.classes if derives_from_node_alone(c, index)
+        classes = [c for c in index.classes if (derives_from_node_alone(c, index) or
+                                                _plain(c, index))
                    and not c.decorator_list and c.name not in extended]
         if not classes or dynamic_attributes(tree):
             continue
@@ -79,12 +82,13 @@ def attribute_read_too_early(package: Package) -> Iterator[Hit]:
         for cls in classes:
             init = _init_of(cls)
             methods = {s.name for s in cls.body if isinstance(s, FUNCTIONS)}
+            inherited = frozenset() if _plain(cls, index) else NODE_ATTRIBUTES
             if init is None or method_receiver(init) != "self" or "__new__" in methods or \
-                    methods & NODE_ATTRIBUTES - {"destroy_node"} or \
+                    methods & inherited - {"destroy_node"} or \
                     ANY_NAME in set_outside.get(cls.name, ()):
                 continue  # rclpy's Node calls its methods overridden: the package's code runs
             walk = _Walk(cls, init, methods, set_outside.get(cls.name, set()), index,
-                         cls.name in set_outside.get(_MADE, ()))
+                         cls.name in set_outside.get(_MADE, ()), inherited)
             for node, message in walk.early_reads():
                 yield Hit(Span(module.path, node.lineno, node.col_offset + 1), message)
 
@@ -123,6 +127,12 @@ def _class_name(value: ast.expr, index: Index) -> str | None:
     if isinstance(value, ast.Name):
         return index.aliases.get(value.id, value.id).rpartition(".")[2]
     return value.attr if isinstance(value, ast.Attribute) else None
+
+
+def _plain(cls: ast.ClassDef, index: Index) -> bool:
+    """True for a class deriving from nothing (or ``object``) alone, with no metaclass."""
+    return not cls.keywords and (not cls.bases or len(cls.bases) == 1 and isinstance(
+        cls.bases[0], ast.Name) and cls.bases[0].id == "object" and "object" not in index.bound)
 
 
 def _init_of(cls: ast.ClassDef) -> ast.FunctionDef | None:
@@ -172,8 +182,10 @@ class _Walk:
     """The walk of one ``__init__``: what the class defines, what the method stored so far."""
 
     def __init__(self, cls: ast.ClassDef, init: ast.FunctionDef, methods: set[str],
-                 set_outside: set[str], index: Index, made: bool) -> None:
+                 set_outside: set[str], index: Index, made: bool,
+                 inherited: frozenset[str]) -> None:
         self.init = init
+        self.inherited = inherited  # the attributes of its base: rclpy's Node's, or none
         self.cls = cls
         self.index = index
         self.made = made
@@ -192,23 +204,37 @@ class _Walk:
         stored: set[str] = set()
         later = self._super_init_index()
         for number, statement in enumerate(self.init.body):
-            if self._may_run_package_code(statement):
-                return
-            for read in certain_parts(statement):
+            stops = self._may_run_package_code(statement)
+            for read in self._arguments_first(statement) if stops else certain_parts(statement):
                 name = _self_attribute(read)
                 if name is None:
                     continue
-                if name in NODE_ATTRIBUTES and name not in self.own:
+                if name in self.inherited and name not in self.own:
                     if later is not None and number < later and not name.startswith("_") \
                             and self._called(read):
                         yield read, (f"`self.{name}()` is called before `super().__init__()` "
                                      "has set the Node up: AttributeError")
                 elif name not in stored and name not in self.own and name in self.assigned \
                         and (self.assigned[name][1] or self.made):
+                    made = "the node is" if self.inherited else f"`{self.cls.name}` is"
                     yield read, (f"`self.{name}` is read before it is assigned ("
-                                 f"{self.assigned[name][0]}): AttributeError when the node is "
+                                 f"{self.assigned[name][0]}): AttributeError when {made} "
                                  "created")
+            if stops:
+                return
             stored.update(node.attr for node in _store_nodes(statement))
+
+    def _arguments_first(self, statement: ast.stmt) -> list[ast.AST]:
+        """The nodes certainly evaluated before the call a statement makes (``self.load(path,
+        self.logger)``, ``x = f(self.y)``) when none of its arguments may run the package's
+        code: they run before the called code could set anything."""
+        value = statement.value if isinstance(statement, (ast.Expr, ast.Assign)) else None
+        if not isinstance(value, ast.Call):
+            return []
+        given = [*value.args, *(k.value for k in value.keywords)]
+        if any(self._may_run_package_code(ast.Expr(value=part)) for part in given):
+            return []
+        return [node for part in given for node in certain(part)]
 
     def _super_init_index(self) -> int | None:
         """The number of the top-level statement of ``__init__`` calling the base's
@@ -221,7 +247,7 @@ class _Walk:
     def _base_init(self, node: ast.AST) -> bool:
         """True for ``Node.__init__(self, ...)``: the base's ``__init__`` called by name."""
         return isinstance(node, ast.Call) and isinstance(node.func, ast.Attribute) and \
-            node.func.attr == "__init__" and \
+            node.func.attr == "__init__" and bool(self.cls.bases) and \
             ast.dump(node.func.value) == ast.dump(self.cls.bases[0])
 
     def _called(self, node: ast.AST) -> bool:
@@ -254,7 +280,7 @@ class _Walk:
             return True
         if name in self.methods:
             return self._called(node) or not self._given_to_the_node(node)
-        return self._called(node) and (name in self.own or name not in NODE_ATTRIBUTES)
+        return self._called(node) and (name in self.own or name not in self.inherited)
 
     def _receiver(self, name: ast.Name) -> bool:
         parent = self.parents.get(id(name))
@@ -276,7 +302,7 @@ class _Walk:
         if not isinstance(parent, ast.Call) or parent.func is node:
             return False
         name = _self_attribute(parent.func)
-        return name is not None and name in NODE_ATTRIBUTES and name not in self.own and \
+        return name is not None and name in self.inherited and name not in self.own and \
             name not in _PARAMETER_CALLBACKS
 
 

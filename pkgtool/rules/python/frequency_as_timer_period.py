@@ -11,7 +11,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import CALLBACKS, argument, node_api_calls
 from pkgtool.rules.registry import rule
-from pkgtool.rules.scopes import single_assignments
+from pkgtool.rules.scopes import scope_bindings, single_assignments
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index
 
 _FREQUENCY_WORDS = frozenset({"hz", "freq", "frequency", "fps"})
@@ -68,7 +68,8 @@ def frequency_as_timer_period(package: Package) -> Iterator[Hit]:
         if not words or words & _PERIOD_WORDS:
             continue
         value = _value(period, call, index, 0)
-        if words & _FREQUENCY_WORDS and (value is None or value > 1):  # not `freq_ = 0.01`
+        if words & _FREQUENCY_WORDS and (value is None or value > 1) and \
+                not _inverse(period, call, index):  # not `freq_ = 0.01`, `freq = 1 / 30`
             fires = f"once every {value:g} s" if isinstance(value, (int, float)) else \
                 "at the inverse of the rate meant"
             yield Hit(Span(module.path, period.lineno, period.col_offset + 1),
@@ -85,6 +86,34 @@ def _names(period: ast.expr, call: ast.Call, index: Index) -> list[str]:
         if isinstance(period, ast.Name) and function is not None else None
     further = _name_of(bound) if bound is not None else None
     return [found for found in (name, further) if found]
+
+
+def _inverse(period: ast.expr, call: ast.Call, index: Index) -> bool:
+    """True when the period is ``1 / x`` for a number or a name saying frequency (or a name
+    bound once to that in its function, or ``self.x`` assigned only that): a period worked
+    out from a frequency (``1.0 / period`` is a frequency)."""
+    function = index.enclosing_function(call)
+    if isinstance(period, ast.Name) and function is not None:
+        period = single_assignments(function).get(period.id) or period
+    elif isinstance(period, ast.Attribute) and isinstance(period.value, ast.Name):
+        stored = _stored(period.attr, index.enclosing_class(call))
+        period = stored[0] if len(stored) == 1 else period
+    if not (isinstance(period, ast.BinOp) and isinstance(period.op, ast.Div) and
+            isinstance(period.left, ast.Constant) and period.left.value == 1):
+        return False
+    divisor = period.right  # a rate (`1 / 30`, `1 / rate_hz`), not a period (`1 / dt`)
+    name = _name_of(divisor)
+    return isinstance(divisor, ast.Constant) or name is not None and bool(
+        set(re.split(r"[_\W]+", _snake(name))) & _FREQUENCY_WORDS)
+
+
+def _stored(attribute: str, cls: ast.ClassDef | None) -> list[ast.expr]:
+    """The values the class assigns to ``self.<attribute>``."""
+    return [node.value for node in ast.walk(cls) if isinstance(node, ast.Assign)
+            and len(node.targets) == 1 and isinstance(node.targets[0], ast.Attribute)
+            and node.targets[0].attr == attribute and
+            isinstance(node.targets[0].value, ast.Name) and
+            node.targets[0].value.id == "self"] if cls is not None else []
 
 
 def _snake(name: str) -> str:
@@ -140,17 +169,24 @@ def _value(expr: ast.expr, at: ast.AST, index: Index, depth: int) -> object:
         bound = single_assignments(function).get(expr.id)
         if bound is not None:
             return _value(bound, bound, index, depth + 1)
+        if expr.id not in scope_bindings(function):  # a module's constant
+            bound = _body_constant(index.module_of(at), expr.id)
+            return _value(bound, bound, index, depth + 1) if bound is not None else None
         return _default(function, expr.id, index, depth)
     if isinstance(expr, ast.Attribute) and isinstance(expr.value, ast.Name) and \
             expr.value.id == "self":
         cls = index.enclosing_class(at)
-        stored = [node.value for node in ast.walk(cls) if isinstance(node, ast.Assign)
-                  and len(node.targets) == 1 and isinstance(node.targets[0], ast.Attribute)
-                  and node.targets[0].attr == expr.attr and
-                  isinstance(node.targets[0].value, ast.Name) and
-                  node.targets[0].value.id == "self"] if cls is not None else []
+        stored = _stored(expr.attr, cls) or [
+            v for v in [_body_constant(cls, expr.attr)] if v is not None]  # a class attribute
         return _value(stored[0], stored[0], index, depth + 1) if len(stored) == 1 else None
     return None
+
+
+def _body_constant(holder: ast.AST | None, name: str) -> ast.expr | None:
+    """The value of the one ``name = value`` of a module's or class's own body."""
+    values = [s.value for s in getattr(holder, "body", ()) if isinstance(s, ast.Assign) and
+              any(isinstance(t, ast.Name) and t.id == name for t in s.targets)]
+    return values[0] if len(values) == 1 else None
 
 
 def _default(function: ast.AST, name: str, index: Index, depth: int) -> object:

@@ -102,9 +102,14 @@ def _second(ref: ast.expr, index: Index) -> ast.expr | None:
 
 
 def _not_a_message(value: ast.expr, publisher: Publisher,
-                   messages: list[Instance[Message]], wrong: str | None) -> str | None:
-    """Why ``value`` (certainly of type ``wrong``, if not None) is certainly no message of
-    the ``publisher``'s type, if it is."""
+                   messages: list[Instance[Message]], wrong: str | None,
+                   made: Message | None = None) -> str | None:
+    """Why ``value`` (certainly of type ``wrong``, if not None; a call making the known
+    message ``made``, if not None) is certainly no message of the ``publisher``'s type, if
+    it is."""
+    expected = publisher.message
+    if made is not None and expected is not None and made.name != expected.name:
+        return f"a `{made.name}`, the publisher's type is `{expected.name}`"
     if wrong == "type":
         return "the class itself, not an instance of it (`()` is missing where it is made)"
     if isinstance(value, ast.Compare) or \
@@ -118,7 +123,6 @@ def _not_a_message(value: ast.expr, publisher: Publisher,
             kind = instance.message.fields.get(value.attr, "")
             if _BASIC.fullmatch(kind):
                 return f"the `{kind}` field `{value.attr}` of a `{instance.message.name}`"
-        expected = publisher.message
         if expected is not None and instance.message.name != expected.name and any(
                 ref is value for ref in instance.refs):
             return f"a `{instance.message.name}`, the publisher's type is `{expected.name}`"
@@ -142,8 +146,8 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
     truth value, not a `Bool`); a local name or a node's `self.x` every assignment of which
     gives a literal of one such type (`text = 'hi'`; PYC025 says which); a message class
     itself (`pub.publish(String)`, or `msg = String` without `()`); and such an
-    instance of another known message class than the publisher's
-    (`create_publisher(String, ...)` then `publish(Float32())`'s instance). Also checks
+    instance, or a call making one, of another known message class than the publisher's
+    (`create_publisher(String, ...)` then `publish(Float32(data=1.0))`). Also checks
     the request given to `call()` and `call_async()` of a client made by `create_client`,
     and the goal given to `send_goal()` and `send_goal_async()` of rclpy's `ActionClient`
     (held the same ways), for literals and classes (`call_async(Trigger.Request)`).
@@ -209,8 +213,10 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
                               "Publish the message alone: `self.pub.publish(msg)`")
                 sent = _published(ref, index, publisher.message.methods)
                 value = sent[1] if sent else None
+                made = known(value.func) if isinstance(value, ast.Call) else None
                 why = _not_a_message(value, publisher.message, messages,
-                                     certain_type(value, package, tree, index)) if value else None
+                                     certain_type(value, package, tree, index), made) \
+                    if value else None
                 if sent is not None and value is not None and why:
                     yield _sent_hit(module.path, ref, sent[0], value, why, publisher.message)
 

@@ -10,8 +10,10 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.python._rclpy_objects import (ACTION_CLIENT, CLOCK, FUTURE, GOAL_FUTURE,
                                                  GOAL_HANDLE, NODE, object_class)
+from pkgtool.rules.node_api import derives_from_node_alone
+from pkgtool.rules.python._assignments import assigned_values, is_none
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import installed_trees
+from pkgtool.rules.syntax_trees import Index, installed_trees
 
 _FUTURE_METHODS = {"result": ((), 0), "done": ((), 0), "cancel": ((), 0),
                    "add_done_callback": (("callback",), 1), "set_result": (("result",), 1)}
@@ -56,7 +58,8 @@ def rclpy_method_arguments(package: Package) -> Iterator[Hit]:
     Reports calls of the common methods of objects whose rclpy class is certain (as PYC004
     works it out: what `create_client()`, `create_publisher()`, `create_timer()`,
     `call_async()`, an `ActionClient` or `get_clock()` make, and `self` in a class deriving
-    from `Node` alone) that give more positional arguments than the method takes, or leave
+    from `Node` alone, or a local name bound to an instance of such a class of the module)
+    that give more positional arguments than the method takes, or leave
     out one it requires: `client.call_async()`, `client.call_async(request, 5.0)`,
     `self.destroy_node(self)`, `future.result(1.0)` (`publisher.publish()` is PYC020's). A
     module that defines a method of the same name (an override), and calls passing `*args`
@@ -86,7 +89,8 @@ def rclpy_method_arguments(package: Package) -> Iterator[Hit]:
                     any(k.arg is None for k in call.keywords) or \
                     index.defines_function(func.attr):
                 continue
-            cls = object_class(func.value, package, tree, index, depth=1)
+            cls = object_class(func.value, package, tree, index, depth=1) or \
+                _own_node(func.value, package, tree, index)
             known = _METHODS.get(cls or "", {}).get(func.attr)
             problem = _problem(call, *known) if known else None
             if problem is not None:
@@ -95,3 +99,16 @@ def rclpy_method_arguments(package: Package) -> Iterator[Hit]:
                 yield Hit(Span(module.path, call.lineno, call.col_offset + 1),
                           f"`{shortened(ast.unparse(call))}` cannot call rclpy's "
                           f"`{owner}.{func.attr}`: {problem}, Python raises TypeError")
+
+
+def _own_node(value: ast.expr, package: Package, tree: ast.Module, index: Index) -> str | None:
+    """:data:`NODE` for a local name every assignment of which makes an instance of a class
+    of the module deriving from rclpy's Node alone (``node = Talker()``): it has Node's
+    methods (the module overrides none of the one called, as the caller checks)."""
+    assigned = assigned_values(value, package, tree, index) \
+        if isinstance(value, ast.Name) else None
+    classes = {c.name: c for c in tree.body if isinstance(c, ast.ClassDef)}
+    made = [v for v, _ in assigned or () if not is_none(v)]
+    return NODE if made and all(
+        isinstance(v, ast.Call) and isinstance(v.func, ast.Name) and v.func.id in classes and
+        derives_from_node_alone(classes[v.func.id], index) for v in made) else None
