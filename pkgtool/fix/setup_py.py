@@ -47,7 +47,8 @@ def name(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
     '...'``) gets package.xml's name, so data_files paths built from it follow. Safe: ROS tools
     know the package by package.xml's name only; a name computed by code is refused, and so is
     one that is also the Python package ``packages=`` installs (``packages=[package_name]``
-    with the code in ``<old name>/``): the code would no longer be installed."""
+    with the code in ``<old name>/``): the code would no longer be installed, and so is a
+    package whose folder is named as setup.py says (package.xml may hold the typo)."""
     manifest = package.manifest
     wanted = manifest.name.value if manifest and manifest.name else None
     setup = package.setup_py
@@ -59,6 +60,10 @@ def name(package: Package, findings: list[Finding]) -> Iterator[Fix | Refusal]:
         yield Refusal(f"`{old}` is also the Python package setup.py installs (the folder "
                       f"`{old}/`): rename the folder to `{wanted}` first, or write the names "
                       "by hand")
+        return
+    if isinstance(old, str) and wanted and old != wanted and package.root.name == old:
+        yield Refusal(f"The folder is `{old}` too: package.xml's `<name>{wanted}</name>` may be "
+                      f"the one misspelt; correct the name where it is wrong by hand")
         return
     yield from _from_manifest(package, "name", wanted)
 

@@ -17,7 +17,7 @@ from typing import Any
 from pkgtool.model.ast_nodes import (child_nodes, descendants, handler_stops, last_name,
                                      nodes_of_class)
 from pkgtool.model.launch import (COMMAND_PACKAGES, EXISTENCE_CHECKS, PREFIX_PACKAGES,
-                                  PROCESS_PACKAGES, FileRef, NodeRef, PackageRef)
+                                  PROCESS_PACKAGES, TERMINALS, FileRef, NodeRef, PackageRef)
 from pkgtool.model.launch_remaps import not_pairs
 from pkgtool.model.launch_scopes import (bindings, import_origins, overwritten_values,
                                          read_only_by, scope_nodes, unread_argument_defaults,
@@ -634,7 +634,8 @@ class _Reader(ast.NodeVisitor):
         if (len(command) >= 4 and command[:2] == ("ros2", "run")
                 and all(_plain_word(c) for c in command[2:4])):
             self.nodes.append(NodeRef(command[2], command[3], self._span(node),
-                                      arguments=("prefix",) if start else (),  # a terminal
+                                      arguments=("prefix",) if start and any(
+                                          w in TERMINALS for w in whole[:start]) else (),
                                       optional=bool(self.optional), name_unknown=True,
                                       other_parameters=True, unused=bool(self.dead)))
         elif (len(command) >= 4 and command[:2] == ("ros2", "launch") and

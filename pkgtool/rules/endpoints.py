@@ -290,11 +290,18 @@ def by_topic(package: Package, services: bool = False
     yield from (pair for pair in topics.values() if all(pair))
 
 
+_NATIVE_SOURCES = (".cpp", ".cc", ".cxx", ".c")
+"""Suffixes of the C and C++ sources of nodes a CMake package builds beside its Python ones."""
+
+
 def type_mismatches(package: Package, services: bool = False
                     ) -> Iterator[tuple[Endpoint, list[Endpoint], str]]:
     """Each subscription (with ``services``, client) whose type is none of the types of the
     publishers (servers) of its name, all of which are known, with those endpoints and their
-    types as a message lists them (```a/B`, `c/D```)."""
+    types as a message lists them (```a/B`, `c/D```). Nothing in a package with C or C++
+    sources: its native nodes' endpoints are not read, and may be of the other type."""
+    if any(path.endswith(_NATIVE_SOURCES) for path in package.files):
+        return
     for offering, using in by_topic(package, services):
         offered = {endpoint.type for endpoint in offering}
         if None in offered:

@@ -626,7 +626,8 @@ class FileEntry:
     foreign: bool = False
 
 
-def _matches(key: str, name: str) -> bool:
+def key_matches(key: str, name: str) -> bool:
+    """True when a parameter file's node key (its last part, a glob) names ``name``."""
     from fnmatch import fnmatchcase
 
     return fnmatchcase(name, key.rpartition("/")[2])
@@ -650,7 +651,7 @@ def file_entries(package: Package, *, unseen_users: bool = False) -> Iterator[Fi
         foreign = any(n.package != package.name for n in nodes)
         for document in documents:
             for key, span, parameters in parameter_blocks(path, document):
-                matched = tuple(n for n, name in zip(nodes, known) if _matches(key, name))
+                matched = tuple(n for n, name in zip(nodes, known) if key_matches(key, name))
                 yield FileEntry(path, key, span, matched, tuple(sorted(set(known))), parameters,
                                 foreign)
 

@@ -75,7 +75,8 @@ with): no fix
 guesses, the user chooses; the other findings
 of the case are fixed."""
 MANUAL = {("PYC078", "habits_of_other_languages"), ("LCH001", "nodes_of_released_packages"),
-          ("LCH010", "command_words_as_arguments"),
+          ("LCH010", "command_words_as_arguments"), ("SET003", "talker_demo"),
+          ("DAT006", "helper_module_beside_the_launch_file"),
           ("LCH027", "keyboard_teleop_in_launch_files"), ("DAT025", "sim_time_misspelt"),
           ("SYN008", "parameter_file_nothing_installs"), ("PYC090", "timer_before_first_message"),
           ("PYC091", "service_and_action_types_called"),

@@ -89,12 +89,18 @@ def _uninstalled(package: Package) -> Iterator[tuple[str, FileRef, str, dict[str
             yield path, ref, posixpath.relpath(target, share), installed
 
 
+_LAUNCH_NAME = lazy_pattern(r"(?:^|[._-])launch\.(?:py|xml|ya?ml)$")
+"""A launch file's name (``robot.launch.py``, ``bringup_launch.py``)."""
+
+
 @per_package
 def sibling_share_misses(package: Package) -> tuple[tuple[str, FileRef, str], ...]:
-    """Each file an installed launch file or module reads from the share folder of another
-    ament_python package of the workspace whose setup.py certainly installs no file of that
-    name there (:func:`~pkgtool.model.scripts.installs_share_path`): the reader's path, the
-    reference and the path below that package's share folder."""
+    """Each launch file an installed launch file or module includes from the share folder of
+    another ament_python package of the workspace that the package's setup.py certainly
+    installs no file of that name for (:func:`~pkgtool.model.scripts.installs_share_path`;
+    other files may be made there at run time, a calibration or a map saved, which the
+    package's code, not read here, would tell): the reader's path, the reference and the
+    path below that package's share folder."""
     installed = installed_data(package)
     if installed is None:
         return ()
@@ -104,7 +110,8 @@ def sibling_share_misses(package: Package) -> tuple[tuple[str, FileRef, str], ..
     for path, refs in _share_reads(package, shared):
         for ref in refs:
             sibling = package.context.workspace.get(ref.package or "") \
-                if ref.package != package.name and ref.parts else None
+                if ref.package != package.name and ref.parts and \
+                _LAUNCH_NAME.search(ref.parts[-1]) else None
             installs = sibling_data_files(sibling) if sibling is not None else None
             relative = posixpath.normpath(posixpath.join(*ref.parts))
             if installs is not None and not _GLOB.search(relative) and \

@@ -53,11 +53,10 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     reads or imports; or stored in `self.x` that the module never reads) is not read
     either, nor is a file it opens to write (`open(path, 'w')`, `'a'`, `'x'`): the code
     makes it; nor a file of the name another installed module of the package opens to
-    write (one node writes the state file another reads). A path read from the share folder
-    of another ament_python package of the workspace (an included launch file of a sibling
-    package) is reported when that package's setup.py installs no file of its name into
-    its folder (its globs are matched by name: `launch/*.launch.py` never installs
-    `launch/robot.launch.xml`).
+    write (one node writes the state file another reads). A launch file included from the
+    share folder of another ament_python package of the workspace is reported when that
+    package's setup.py installs no file of its name into its folder (its globs are matched
+    by name: `launch/*.launch.py` never installs `launch/robot.launch.xml`).
 
     ## Why is this bad?
     Nothing can install a file the package does not have: `ros2 launch` fails on the missing
@@ -84,6 +83,9 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
             continue  # a file git ignores is the user's to make (a calibration, a map)
         known = {target[len(share):] for target in installed if target.startswith(share)}
         known.update(package.files)
+        if _shell_word(package, reader, relative) in known:
+            continue  # `cmd=['gz sim ', path_to('world.sdf '), ...], shell=True`: the shell
+            # splits the joined line, and the space is no part of the name
         if _suffix_added(relative, known) and \
                 (ref.package, ref.parts) not in _parameter_files(package, reader):
             continue  # a name the reader or the launch file it includes adds `.sdf` to
@@ -97,6 +99,14 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
                             f"the workspace: `{reader}` reads it from its share folder, where "
                             f"its setup.py's data_files put no file of that name",
                   f"Fix the path, or install the file in `{ref.package}`'s setup.py")
+
+
+def _shell_word(package: Package, reader: str, relative: str) -> str | None:
+    """``relative`` without the spaces around its parts, when the reader runs commands
+    through a shell (``shell=True``) and they hold spaces; else None."""
+    stripped = "/".join(part.strip() for part in relative.split("/"))
+    return stripped if stripped != relative and \
+        "shell=True" in (package.texts.get(reader) or "") else None
 
 
 def _suffix_added(relative: str, known: set[str]) -> bool:

@@ -9,6 +9,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.rules.node_parameters import (FileEntry, file_entries, fully_seen_parameter_files,
+                                           key_matches,
                                            near, node_name, write_meant)
 from pkgtool.rules.registry import rule
 from pkgtool.lazy_regex import lazy_pattern
@@ -39,8 +40,11 @@ def parameter_file_unknown_node(package: Package) -> Iterator[Hit]:
     not known that way, when a launch file gives parameters not read statically to a node
     that is not among the file's users (a launch argument may name the file; a node whose
     argument's default is this file is one of its users), or when the package's Python code
-    mentions the file's name. A block named by a quoted word of a Python launch file that
-    loads YAML itself (`yaml.safe_load`) is left alone: the launch file may read it. Also
+    mentions the file's name; but a block naming none of the file's users nor any node
+    given parameters not read statically (`<param from="$(var x)"/>`), when all of those
+    have known names, is still reported: no node it may reach is named so. A block named
+    by a quoted word of a Python launch file that loads YAML itself (`yaml.safe_load`) is
+    left alone: the launch file may read it. Also
     reports, at the launch file, a node given a file none of whose blocks names it, when each
     block names another node the file is passed to (a node renamed for a second copy,
     `name='local_filter'`, given the file of `filter`).
@@ -67,6 +71,7 @@ def parameter_file_unknown_node(package: Package) -> Iterator[Hit]:
     """
     entries = list(file_entries(package))
     yield from _nodes_without_a_block(package, entries)
+    yield from _blocks_no_possible_user_takes(package)
     for entry in entries:
         if not entry.matched and entry.foreign and _made_by_the_process(entry.key, entry.names):
             continue  # a node another package's process makes (Nav2's local_costmap/...)
@@ -90,6 +95,30 @@ def parameter_file_unknown_node(package: Package) -> Iterator[Hit]:
                       f"the node's full name, so its parameters reach no node",
                       f"Write `{spaces[0].rstrip('/')}/{base}`" if len(spaces) == 1 and
                       spaces[0].startswith("/") else f"Write `/**/{base}` (any namespace)")
+
+
+def _blocks_no_possible_user_takes(package: Package) -> Iterator[Hit]:
+    """A hit for each block of a file the launch files pass to their nodes that matches none
+    of them nor any node that may be given a file at run time (``<param from="$(var x)"/>``),
+    when every such node's name is known: whichever file those nodes get, no node is
+    named so."""
+    fully = fully_seen_parameter_files(package)
+    others = [node_name(package, n) for f in package.launch_files for n in f.nodes
+              if n.other_parameters]
+    if None in others:
+        return
+    for entry in file_entries(package, unseen_users=True):
+        names = sorted({*entry.names, *(n for n in others if n is not None)})
+        base = entry.key.rpartition("/")[2]
+        if entry.path in fully or entry.matched or \
+                any(key_matches(entry.key, name) for name in names) or \
+                entry.foreign and _made_by_the_process(entry.key, names) or \
+                base in _read_by_launch(package):
+            continue
+        shown = ", ".join(f"`{n}`" for n in names)
+        yield Hit(entry.span, f"`{entry.key}` is none of the nodes that may be given this file "
+                  f"({shown}){near(base, names)}: its parameters reach no node",
+                  write_meant(base, names))
 
 
 def _nodes_without_a_block(package: Package, entries: list[FileEntry]) -> Iterator[Hit]:

@@ -7,8 +7,8 @@ import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import nodes_of_class
-from pkgtool.model.installed import installed_data
+from pkgtool.model.ast_nodes import is_main_test, nodes_of_class
+from pkgtool.model.installed import installed_data, installed_modules
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.data_files.common import uninstalled_launch_resources
@@ -68,15 +68,23 @@ def _uninstalled_helpers(package: Package) -> Iterator[Hit]:
     ``sys.path``) and that data_files does not install beside it."""
     installed = installed_data(package) or {}
     places = {source: posixpath.dirname(target) for target, source in installed.items()}
+    own = {name.split(".")[0] for name in installed_modules(package) or {}}
     for path, tree, index in launch_trees(package):
         folder = posixpath.dirname(path)
         where = places.get(path)
         text = package.texts.get(path) or ""
         if where is None or "__file__" not in text or "sys.path" not in text:
             continue  # not installed (DAT005's), or its folder is not put on sys.path
+        first = min(n.lineno for n in nodes_of_class(tree, ast.Attribute)
+                    if isinstance(n, ast.Attribute) and n.attr == "path" and
+                    isinstance(n.value, ast.Name) and n.value.id == "sys") \
+            if "sys.path" in text else 0
         for node, name in _top_imports(tree):
-            if any(isinstance(p, ast.Try) for p in _parents(node, index)):
-                continue  # an optional import
+            if node.lineno < first or name in own or name in _LOADED or any(
+                    isinstance(p, ast.Try) or isinstance(p, ast.If) and is_main_test(p.test)
+                    for p in _parents(node, index)):
+                continue  # found before sys.path grows; installed code; launch's own (loaded
+                # by `ros2 launch`); optional; or run only as a script
             helper = next((f for f in (posixpath.join(folder, f"{name}.py"),
                                        posixpath.join(folder, name, "__init__.py"))
                            if package.has_file(f)), None)
@@ -88,6 +96,12 @@ def _uninstalled_helpers(package: Package) -> Iterator[Hit]:
                           f"fails with ModuleNotFoundError (it works only with "
                           f"`--symlink-install`)",
                           f"Install `{helper}` into `{where}` too")
+
+
+_LOADED = frozenset({"launch", "launch_ros", "launch_xml", "launch_yaml", "launch_testing",
+                     "launch_testing_ros", "ament_index_python", "rclpy"})
+"""Packages `ros2 launch` has imported before it runs a launch file: a module of the same
+name beside the file is never the one imported."""
 
 
 def _parents(node: ast.AST, index: Index) -> Iterator[ast.AST]:

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import ast
 import re
 from collections.abc import Iterator
 
@@ -11,6 +12,7 @@ from pkgtool.model.launch import TERMINALS
 from pkgtool.model.package import Package
 from pkgtool.rules.console_scripts import scripts_and_modules
 from pkgtool.rules.registry import rule
+from pkgtool.rules.syntax_trees import installed_trees
 
 KEYBOARD_READERS = frozenset({("teleop_twist_keyboard", "teleop_twist_keyboard"),
                               ("turtlesim", "turtle_teleop_key"),
@@ -81,14 +83,34 @@ _RAW_STDIN = lazy_pattern(r"\b(?:termios\.tcgetattr|tty\.set(?:raw|cbreak))\(\s*
 def _own_readers(package: Package) -> set[str]:
     """The console scripts of the package whose module reads keys from a terminal
     (``termios.tcgetattr(sys.stdin)``, ``tty.setraw(sys.stdin)``) without asking whether it
-    has one (``isatty``)."""
+    has one (``isatty``) or opening ``/dev/tty``; of a module several scripts run, only those
+    whose own function does it."""
     entries, modules = scripts_and_modules(package)
+    trees = {module.path: tree for module, tree, _ in installed_trees(package)}
     found: set[str] = set()
     for entry in entries:
-        text = package.texts.get(modules.get(entry.module, ""), "") or ""
-        if _RAW_STDIN.search(text) and "isatty" not in text:
-            found.add(entry.name)
+        path = modules.get(entry.module, "")
+        text = package.texts.get(path, "") or ""
+        if not _RAW_STDIN.search(text) or "isatty" in text or "/dev/tty" in text:
+            continue  # it checks for a terminal, or opens the controlling one itself
+        shared = sum(other.module == entry.module for other in entries) > 1
+        if not shared or _RAW_STDIN.search(_function_text(text, trees.get(path), entry.attr)):
+            found.add(entry.name)  # a module of several scripts: this one's function reads
     return found
+
+
+def _function_text(text: str, tree: ast.Module | None, attr: str | None) -> str:
+    """The source of the module function ``attr`` names and of the module functions it calls
+    by name, theirs too (empty when not found)."""
+    functions = {f.name: f for f in getattr(tree, "body", ()) if isinstance(f, ast.FunctionDef)}
+    todo, seen = [(attr or "").split(".")[0]], set()
+    while todo:
+        name = todo.pop()
+        if name in functions and name not in seen:
+            seen.add(name)
+            todo += [n.func.id for n in ast.walk(functions[name])
+                     if isinstance(n, ast.Call) and isinstance(n.func, ast.Name)]
+    return "\n".join(ast.get_source_segment(text, functions[n]) or "" for n in sorted(seen))
 
 
 def _terminal_for_all(text: str) -> bool:

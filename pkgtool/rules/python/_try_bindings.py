@@ -33,12 +33,21 @@ def _logs(statement: ast.stmt) -> bool:
         for n in ast.walk(a))
 
 
+_CLOCKS = frozenset({"time", "monotonic", "perf_counter", "process_time", "time_ns",
+                     "monotonic_ns", "perf_counter_ns", "process_time_ns"})
+"""``time`` functions that read a clock and never raise."""
+
+
 def harmless(statement: ast.stmt) -> bool:
-    """Statements that cannot raise (in practice): ``pass``, assignments of literals or names,
-    and log lines (:func:`_logs`)."""
+    """Statements that cannot raise (in practice): ``pass``, assignments of literals, names or
+    a clock's reading (``started = time.perf_counter()``), and log lines (:func:`_logs`)."""
     if isinstance(statement, ast.Pass) or _logs(statement):
         return True
     value = statement.value if isinstance(statement, (ast.Assign, ast.AnnAssign)) else None
+    if isinstance(value, ast.Call) and not value.args and not value.keywords and \
+            isinstance(value.func, ast.Attribute) and value.func.attr in _CLOCKS and \
+            isinstance(value.func.value, ast.Name) and value.func.value.id == "time":
+        return True
     return value is not None and all(
         isinstance(n, (ast.Constant, ast.Name, ast.List, ast.Tuple, ast.Dict, ast.Set, ast.Load))
         for n in ast.walk(value))

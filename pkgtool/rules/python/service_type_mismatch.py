@@ -23,7 +23,8 @@ def service_type_mismatch(package: Package) -> Iterator[Hit]:
     bound once to one, or a parameter read whose literal default no parameter or launch file
     of the package may change). Reports a client whose service class (imported by name,
     `pkg.srv.Name`) is none of the classes the package's services of that name use, when all
-    of those are known. Private names (`~/x`) are left out. The same for rclpy's
+    of those are known. Private names (`~/x`) are left out, and so are packages with C or
+    C++ sources (their native nodes serve too, unseen). The same for rclpy's
     `ActionClient` and `ActionServer` (`pkg.action.Name` classes, by action name).
 
     ## Why is this bad?

@@ -23,7 +23,8 @@ def topic_type_mismatch(package: Package) -> Iterator[Hit]:
     literal default no parameter or launch file of the package may change. Reports a
     subscription whose message class (imported by name, `pkg.msg.Name`) is none of the
     classes the publishers of the same topic name use, when all of those are known.
-    Private names (`~/x`) are left out.
+    Private names (`~/x`) are left out, and so are packages with C or C++ sources (their
+    native nodes publish too, unseen).
 
     ## Why is this bad?
     ROS 2 connects a publisher and a subscription only when their types match: the
