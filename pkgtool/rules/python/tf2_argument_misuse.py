@@ -26,6 +26,20 @@ _LISTENERS = frozenset({"tf2_ros.TransformListener",
                         "tf2_ros.transform_listener.TransformListener"})
 
 
+_NEEDS_NODE = frozenset({
+    *_LISTENERS, "tf2_ros.TransformBroadcaster",
+    "tf2_ros.transform_broadcaster.TransformBroadcaster", "tf2_ros.StaticTransformBroadcaster",
+    "tf2_ros.static_transform_broadcaster.StaticTransformBroadcaster"})
+"""tf2_ros classes whose constructor requires the node (Humble to Rolling)."""
+
+
+def _without_node(call: ast.Call, func: ast.expr, index: Index) -> bool:
+    """True when a tf2_ros constructor requiring the node is given too few arguments for it
+    (no ``node=`` either): a broadcaster nothing, a listener one positional argument."""
+    required = 2 if index.qualified(func) in _LISTENERS else 1
+    return len(call.args) < required and not any(k.arg == "node" for k in call.keywords)
+
+
 def _number(value: ast.expr | None, package: Package, tree: ast.Module, index: Index) -> bool:
     """True for a value that certainly is a plain number (``1.0``, a name bound only to one)."""
     return value is not None and \
@@ -54,7 +68,8 @@ def tf2_argument_misuse(package: Package) -> Iterator[Hit]:
     given as a plain number (`timeout=1.0`, or a name every binding of which is a number;
     not when the module defines a function of that name), and `TransformListener(self,
     buffer)`: the node first, where the listener takes the
-    buffer first (`TransformListener(buffer, node)`).
+    buffer first (`TransformListener(buffer, node)`); and a `TransformBroadcaster()`,
+    `StaticTransformBroadcaster()` or `TransformListener(buffer)` given no node.
 
     ## Why is this bad?
     tf2_ros adds the timeout to an rclpy `Time`, which accepts only a `Duration`: the lookup
@@ -92,6 +107,16 @@ def tf2_argument_misuse(package: Package) -> Iterator[Hit]:
                               "a number: tf2_ros adds it to an rclpy `Time`, which raises "
                               "TypeError (no `TransformException`)",
                               f"Write `timeout=Duration(seconds={ast.unparse(timeout)})`")
+            elif isinstance(func, (ast.Name, ast.Attribute)) and \
+                    index.qualified(func) in _NEEDS_NODE and _without_node(call, func, index):
+                made = index.qualified(func).rpartition(".")[2]
+                yield Hit(Span(module.path, call.lineno, call.col_offset + 1),
+                          f"`{ast.unparse(call)}` is given no node: `{made}` takes "
+                          f"{'the buffer and ' if made == 'TransformListener' else ''}the node "
+                          "and raises TypeError (missing argument) as the node starts",
+                          f"Pass the node: `{made}(self)`" if made != "TransformListener" else
+                          "Pass the buffer and the node: `TransformListener(self.tf_buffer, "
+                          "self)`")
             elif isinstance(func, (ast.Name, ast.Attribute)) and \
                     index.qualified(func) in _LISTENERS and _node_first(call, index):
                 node, buffer = (ast.unparse(a) for a in call.args[:2])
