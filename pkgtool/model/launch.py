@@ -11,6 +11,9 @@ from pkgtool.lazy_regex import lazy_pattern
 
 LAUNCH_SUFFIXES = (".launch.py", "_launch.py", ".launch.xml", "_launch.xml", ".launch.yaml",
                    "_launch.yaml", ".launch.yml", "_launch.yml")
+LAUNCH_FILE_NAME = lazy_pattern(r"(?:^|[._-])launch\.(?:py|xml|ya?ml)$")
+"""The names ROS 2 gives launch files (``bringup_launch.py``, ``robot.launch.xml``): never
+an executable's."""
 
 
 @record

@@ -8,7 +8,7 @@ import posixpath
 from collections.abc import Iterable, Iterator
 
 from pkgtool.model.installed import installed_data
-from pkgtool.model.launch import EXISTENCE_CHECKS, FileRef, LaunchFile
+from pkgtool.model.launch import EXISTENCE_CHECKS, LAUNCH_FILE_NAME, FileRef, LaunchFile
 from pkgtool.model.launch_python import read_python_launch
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
@@ -89,10 +89,6 @@ def _uninstalled(package: Package) -> Iterator[tuple[str, FileRef, str, dict[str
             yield path, ref, posixpath.relpath(target, share), installed
 
 
-_LAUNCH_NAME = lazy_pattern(r"(?:^|[._-])launch\.(?:py|xml|ya?ml)$")
-"""A launch file's name (``robot.launch.py``, ``bringup_launch.py``)."""
-
-
 @per_package
 def sibling_share_misses(package: Package) -> tuple[tuple[str, FileRef, str], ...]:
     """Each launch file an installed launch file or module includes from the share folder of
@@ -107,17 +103,18 @@ def sibling_share_misses(package: Package) -> tuple[tuple[str, FileRef, str], ..
     shared = {source for target, source in installed.items()
               if target.startswith(f"share/{package.name}/")}
     found: list[tuple[str, FileRef, str]] = []
+    seen: set[tuple[str, str | None, str]] = set()  # a path built once, used again
     for path, refs in _share_reads(package, shared):
         for ref in refs:
             sibling = package.context.workspace.get(ref.package or "") \
                 if ref.package != package.name and ref.parts and \
-                _LAUNCH_NAME.search(ref.parts[-1]) else None
+                LAUNCH_FILE_NAME.search(ref.parts[-1]) else None
             installs = sibling_data_files(sibling) if sibling is not None else None
             relative = posixpath.normpath(posixpath.join(*ref.parts))
             if installs is not None and not _GLOB.search(relative) and \
                     not installs_share_path(installs, f"share/{ref.package}/{relative}") and \
-                    not any(f[0] == path and f[1].package == ref.package and f[2] == relative
-                            for f in found):  # a path built once, used again
+                    (path, ref.package, relative) not in seen:
+                seen.add((path, ref.package, relative))
                 found.append((path, ref, relative))
     return tuple(found)
 

@@ -75,10 +75,9 @@ def _uninstalled_helpers(package: Package) -> Iterator[Hit]:
         text = package.texts.get(path) or ""
         if where is None or "__file__" not in text or "sys.path" not in text:
             continue  # not installed (DAT005's), or its folder is not put on sys.path
-        first = min(n.lineno for n in nodes_of_class(tree, ast.Attribute)
-                    if isinstance(n, ast.Attribute) and n.attr == "path" and
-                    isinstance(n.value, ast.Name) and n.value.id == "sys") \
-            if "sys.path" in text else 0
+        first = min((n.lineno for n in nodes_of_class(tree, ast.Attribute)
+                     if isinstance(n, ast.Attribute) and n.attr == "path" and
+                     isinstance(n.value, ast.Name) and n.value.id == "sys"), default=0)
         for node, name in _top_imports(tree):
             if node.lineno < first or name in own or name in _LOADED or any(
                     isinstance(p, ast.Try) or isinstance(p, ast.If) and is_main_test(p.test)

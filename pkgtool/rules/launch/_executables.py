@@ -11,11 +11,6 @@ from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.pyproject import pyproject_may_add_scripts
 from pkgtool.model.scripts import library_entries, script_names, sibling_executables
-from pkgtool.lazy_regex import lazy_pattern
-
-LAUNCH_FILE_NAME = lazy_pattern(r"(?:^|[._-])launch\.(?:py|xml|ya?ml)$")
-"""The names ROS 2 gives launch files (``bringup_launch.py``, ``robot.launch.xml``): never
-an executable's."""
 
 
 def executables(package: Package, *, any_data: bool = False) -> frozenset[str] | None:

@@ -10,6 +10,7 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.launch import TERMINALS
 from pkgtool.model.package import Package
+from pkgtool.rules.call_graph import module_functions_reached
 from pkgtool.rules.console_scripts import scripts_and_modules
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import installed_trees
@@ -102,15 +103,8 @@ def _own_readers(package: Package) -> set[str]:
 def _function_text(text: str, tree: ast.Module | None, attr: str | None) -> str:
     """The source of the module function ``attr`` names and of the module functions it calls
     by name, theirs too (empty when not found)."""
-    functions = {f.name: f for f in getattr(tree, "body", ()) if isinstance(f, ast.FunctionDef)}
-    todo, seen = [(attr or "").split(".")[0]], set()
-    while todo:
-        name = todo.pop()
-        if name in functions and name not in seen:
-            seen.add(name)
-            todo += [n.func.id for n in ast.walk(functions[name])
-                     if isinstance(n, ast.Call) and isinstance(n.func, ast.Name)]
-    return "\n".join(ast.get_source_segment(text, functions[n]) or "" for n in sorted(seen))
+    found = module_functions_reached(tree, (attr or "").split(".")[0]) if tree else []
+    return "\n".join(ast.get_source_segment(text, function) or "" for function in found)
 
 
 def _terminal_for_all(text: str) -> bool:

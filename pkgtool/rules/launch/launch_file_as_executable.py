@@ -5,8 +5,9 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
+from pkgtool.model.launch import LAUNCH_FILE_NAME
 from pkgtool.model.package import Package
-from pkgtool.rules.launch._executables import LAUNCH_FILE_NAME, installs_program
+from pkgtool.rules.launch._executables import installs_program
 from pkgtool.rules.registry import rule
 
 

@@ -8,11 +8,11 @@ from difflib import get_close_matches
 from pkgtool.findings import Hit, Severity
 from pkgtool.knowledge.rosdep import metapackage_members
 from pkgtool.knowledge.rosdistro import released_executables, released_installers, typo_of
-from pkgtool.model.launch import NodeRef
+from pkgtool.model.launch import LAUNCH_FILE_NAME, NodeRef
 from pkgtool.model.package import Package
 from pkgtool.model.scripts import sibling_executables
-from pkgtool.rules.launch._executables import (LAUNCH_FILE_NAME, cmake_executables,
-                                               cmake_programs, console_scripts, executables)
+from pkgtool.rules.launch._executables import (cmake_executables, cmake_programs,
+                                               console_scripts, executables)
 from pkgtool.rules.registry import rule
 
 
@@ -102,8 +102,7 @@ def launch_unknown_executable(package: Package) -> Iterator[Hit]:
                 _sibling(package, node.package, node.other_distros)
             if installed[0] is not None and node.executable not in installed[0]:
                 yield _unknown(node, installed[1] or frozenset(), _built_by_cmake(package, node),
-                               node.package not in package.context.workspace,
-                               package.context.distro)
+                               released, package.context.distro)
 
 
 def _in_metapackage(node: NodeRef, members: tuple[str, ...]) -> Hit:

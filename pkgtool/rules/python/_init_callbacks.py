@@ -5,9 +5,9 @@ each attribute of ``self`` (PYC090, PYC092)."""
 from __future__ import annotations
 
 import ast
-from collections.abc import Callable, Iterable
 
 from pkgtool.model.ast_nodes import subtree
+from pkgtool.rules.call_graph import reached
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index
 
 CALLBACK_AT = {"create_timer": 1, "create_subscription": 2, "create_service": 2}
@@ -29,22 +29,6 @@ def called_methods(init: Method, methods: Methods) -> list[Method]:
             is_self(func.value, caller) and func.attr in methods and \
             func.attr != "__init__" else None
     return reached([init], callee)
-
-
-def reached(start: Iterable[Method], callee: Callable[[ast.Call, Method], Method | None]
-            ) -> list[Method]:
-    """The functions the calls of ``start`` reach, and those theirs reach, by ``callee``
-    (the function a call of its caller runs, or None), each once, in order found."""
-    found: list[Method] = []
-    todo = list(start)
-    while todo:
-        caller = todo.pop()
-        for node in subtree(caller):
-            target = callee(node, caller) if isinstance(node, ast.Call) else None
-            if target is not None and target not in found:
-                found.append(target)
-                todo.append(target)
-    return found
 
 
 def registered_callbacks(init: Method, methods: Methods) -> dict[str, set[str]]:

@@ -3,15 +3,15 @@
 from __future__ import annotations
 
 import ast
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.rules.call_graph import module_functions_reached
 from pkgtool.rules.console_scripts import scripts_and_modules
-from pkgtool.rules.python._init_callbacks import Method, reached
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
+from pkgtool.rules.syntax_trees import Index, installed_trees
 
 _PARSERS = frozenset({"argparse.ArgumentParser"})
 _NODE_ACTIONS = frozenset({"Node", "LifecycleNode", "node", "lifecycle_node"})
@@ -76,8 +76,7 @@ def argparse_rejects_ros_args(package: Package) -> Iterator[Hit]:
         if entry.name not in launched or found is None or entry.attr is None:
             continue
         tree, index = found
-        start = _module_function(tree, entry.attr.split(".")[0])
-        for function in [start, *reached([start], _callee(tree))] if start else ():
+        for function in module_functions_reached(tree, entry.attr.split(".")[0]):
             for call in _argv_parses(function, index):
                 if id(call) not in done:
                     done.add(id(call))
@@ -97,20 +96,6 @@ def _launched(package: Package) -> dict[str, str]:
                     node.action in _NODE_ACTIONS:  # not `ros2 run` in an ExecuteProcess
                 found.setdefault(node.executable, launch.path)
     return found
-
-
-def _module_function(tree: ast.Module, name: str) -> ast.FunctionDef | None:
-    return next((f for f in tree.body if isinstance(f, ast.FunctionDef) and f.name == name),
-                None)
-
-
-def _callee(tree: ast.Module) -> Callable[[ast.Call, Method], Method | None]:
-    """The module function a call ``name(...)`` runs."""
-    functions = {f.name: f for f in tree.body if isinstance(f, FUNCTIONS)}
-
-    def callee(call: ast.Call, _: Method) -> Method | None:
-        return functions.get(call.func.id) if isinstance(call.func, ast.Name) else None
-    return callee
 
 
 def _argv_parses(function: ast.AST, index: Index) -> Iterator[ast.Call]:

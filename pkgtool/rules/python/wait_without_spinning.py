@@ -9,9 +9,10 @@ from pkgtool.findings import Hit, Severity
 from pkgtool.model.ast_nodes import subtree
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
+from pkgtool.rules.call_graph import reached
 from pkgtool.rules.node_api import derives_from_node_alone
 from pkgtool.rules.python._init_callbacks import (Method, Methods, attribute_setters,
-                                                  called_methods, is_self, methods_of, reached,
+                                                  called_methods, is_self, methods_of,
                                                   registered_callbacks)
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees
