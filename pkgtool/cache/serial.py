@@ -105,14 +105,14 @@ def index_record(package: WorkspacePackage) -> list[Any]:
             sorted(package.modules), dict(sorted(package.messages.items())), package.folder,
             package.setup_digest, sorted(package.depends),
             None if package.executables is None else sorted(package.executables),
-            package.manifest]
+            package.manifest, sorted(package.description_files)]
 
 
 def index_entry(stored: Any) -> WorkspacePackage | None:
     """The :class:`WorkspacePackage` :func:`index_record` stored; None when it is not one."""
     try:
         name, interfaces, modules, messages, folder, setup_digest, depends, executables, \
-            manifest = stored
+            manifest, described = stored
         if isinstance(name, str) and isinstance(interfaces, dict) and \
                 isinstance(modules, list) and all(isinstance(m, str) for m in modules) and \
                 all(isinstance(k, str) and isinstance(v, list) and
@@ -122,12 +122,13 @@ def index_entry(stored: Any) -> WorkspacePackage | None:
                 isinstance(folder, str) and isinstance(setup_digest, str) and \
                 isinstance(depends, list) and all(isinstance(d, str) for d in depends) and \
                 (executables is None or isinstance(executables, list) and
-                 all(isinstance(e, str) for e in executables)) and isinstance(manifest, bool):
+                 all(isinstance(e, str) for e in executables)) and isinstance(manifest, bool) \
+                and isinstance(described, list) and all(isinstance(d, str) for d in described):
             return WorkspacePackage(name, {k: frozenset(v) for k, v in interfaces.items()},
                                     frozenset(modules), messages, folder, setup_digest,
                                     frozenset(depends),
                                     None if executables is None else frozenset(executables),
-                                    manifest)
+                                    manifest, frozenset(described))
     except (TypeError, ValueError):
         pass
     return None

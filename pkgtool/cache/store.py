@@ -45,7 +45,7 @@ from pkgtool.model.files import Scan, scan
 from pkgtool.records import record
 
 
-SCHEMA = "pkgtool-lint-cache-8"
+SCHEMA = "pkgtool-lint-cache-9"
 PACKS = 16
 """The files in ``lint/`` the entries are spread over (by package folder): a run that checked
 a few packages writes a few small files."""

@@ -26,7 +26,7 @@ from pkgtool.model.cmake_install import installed_executables, installed_python_
 from pkgtool.model.cmake_interfaces import with_listed
 from pkgtool.model.cmake_text import with_included
 from pkgtool.model.digest import text_digest
-from pkgtool.model.files import list_files, read_bytes
+from pkgtool.model.files import DESCRIPTION_SUFFIXES, list_files, read_bytes
 from pkgtool.model.manifest import CMAKE_BUILD_TYPES
 from pkgtool.model.memo import per_object
 from pkgtool.model.pyproject import pyproject_may_add_scripts
@@ -69,6 +69,10 @@ class WorkspacePackage:
     manifest: bool = True
     """False for a Python project without package.xml (a ``setup.py`` alone): colcon builds
     it, but rosdep knows no such package, so no package.xml can declare a dependency on it."""
+    description_files: frozenset[str] = frozenset()
+    """Its robot description, world and RViz files (:data:`~pkgtool.model.files.
+    DESCRIPTION_SUFFIXES`) one folder deep (``urdf/robot.urdf``), in folders the index lists
+    (:func:`lists_files_of`): whether a file its data_files glob would install exists."""
 
 
 @record
@@ -135,6 +139,12 @@ def _index_depth(name: str) -> int:
     return 1 if name.isidentifier() and name not in _NOT_MODULES else 0
 
 
+def lists_files_of(folder: str) -> bool:
+    """True when the index lists the files of the package's top-level ``folder`` (so a file
+    not listed there is no file of the package)."""
+    return _index_depth(folder) >= 1
+
+
 def manifest_name(manifest: str) -> str | None:
     """The ``<name>`` a package.xml's text gives (an old manifest kept in a comment names
     nothing), or None."""
@@ -158,6 +168,7 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
     kinds: dict[str, set[str]] = {}
     modules: set[str] = set()
     defined: dict[tuple[str, str], str | None] = {}
+    described: set[str] = set()
     cmake = None
     listed = tuple(list_files(root, _index_depth) if files is None else files)
     for path in listed:
@@ -175,6 +186,9 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
                     path.endswith(".idl") else path
         elif path == "CMakeLists.txt":
             cmake = _read(os.path.join(base, path))
+        elif len(parts) == 2 and path.endswith(DESCRIPTION_SUFFIXES) and \
+                lists_files_of(parts[0]):
+            described.add(path)
     folders = {kind: frozenset(names) for kind, names in kinds.items()}
     if cmake is not None:
         cmake = with_included(cmake, lambda path: _read(os.path.join(base, path)))
@@ -185,7 +199,8 @@ def read_workspace_package(root: Path, files: Iterable[str] | None = None) -> Wo
         _build_type(manifest) in CMAKE_BUILD_TYPES else None
     return WorkspacePackage(name, interfaces, frozenset(modules),
                             _messages(base, name, interfaces, defined), base, setup_digest,
-                            _depends(manifest), executables, manifest is not None)
+                            _depends(manifest), executables, manifest is not None,
+                            frozenset(described))
 
 
 _DEPEND = lazy_pattern(r"<(?:depend|exec_depend|run_depend|build_depend|build_export_depend|"

@@ -10,15 +10,13 @@ comment holds names nothing (nor xacro's escaped ``$$(find x)``).
 from __future__ import annotations
 
 from pkgtool.lazy_regex import lazy_pattern
-from pkgtool.model.files import TextFile, read_text
+from pkgtool.model.files import DESCRIPTION_SUFFIXES, TextFile, read_text
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.text_comments import without_comments
 from pkgtool.records import record
 
-DESCRIPTION_SUFFIXES = (".urdf", ".xacro", ".sdf", ".srdf", ".world", ".rviz")
-"""Files naming other packages by ``$(find ...)`` or ``package://`` URIs."""
 _NAMED = lazy_pattern(r"(?<!\$)\$\(\s*find(?:-pkg-share)?\s+([A-Za-z][\w.-]*)\s*\)|"
                       r"package://([A-Za-z][\w.-]*)/")
 

@@ -23,6 +23,11 @@ APPLE_DOUBLE = "._"
 """How the names of the metadata files macOS writes beside each file it copies to a foreign
 disk begin (``._talker.py``, binary): no file of the package, never listed."""
 
+DESCRIPTION_SUFFIXES = (".urdf", ".xacro", ".sdf", ".srdf", ".world", ".rviz")
+"""Robot description, world and RViz files: a package installs them as written (code never
+makes them at run time, as it may a map), and they name other packages by ``$(find ...)`` or
+``package://`` URIs."""
+
 BUILD_OUTPUT_DIRS = frozenset({"build", "install", "log"})
 """colcon's output folders: skipped at the package root when they hold no Python package."""
 

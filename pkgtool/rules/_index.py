@@ -38,6 +38,7 @@ RULES = {
     "DAT023": ("unexpanded-home-path", "error", True, "data_files.unexpanded_home_path"),
     "DAT024": ("foreign-index-marker", "warning", True, "data_files.foreign_index_marker"),
     "DAT025": ("misspelled-use-sim-time", "warning", True, "data_files.misspelled_use_sim_time"),
+    "DAT026": ("alias-in-parameter-file", "error", True, "data_files.alias_in_parameter_file"),
     "DEP001": ("undeclared-import", "error", True, "dependencies.undeclared_import"),
     "DEP002": ("import-declared-only-as-build-depend", "error", True,
                "dependencies.build_only_import"),

@@ -102,8 +102,9 @@ def key_instead(name: str, distro: str, tag: str) -> str | None:
     mocks the modules it names: ``lark``), the import name of a module rosdep's data knows
     (``dlib``: ``python3-dlib-pip``), ``python3-`` and a pip name whose key is named otherwise
     (``python3-pillow``: ``python3-pil``; not ``python3-dlib``, which a private rosdep source
-    may define), or an Ubuntu package's name (``libyaml-cpp-dev``: ``yaml-cpp``); None for a
-    key, a released package or a name nothing knows."""
+    may define), or an Ubuntu package's name (``libyaml-cpp-dev``: ``yaml-cpp``), or an
+    import's dotted path (``RPi.GPIO``, ``google.protobuf``: the key of its top-level
+    module); None for a key, a released package or a name nothing knows."""
     known = suggested_key(name)
     if known is not None or tag == "doc_depend":
         return known
@@ -113,7 +114,9 @@ def key_instead(name: str, distro: str, tag: str) -> str | None:
         not any(rosdistro.is_known_dependency(name, other) for other in DISTROS) else None
     if prefixed is not None and prefixed != name:
         return prefixed  # ``python3-`` before a pip name: ``python3-pillow`` is ``python3-pil``
-    keys = rosdistro.keys_for_import(name, distro)
+    keys = rosdistro.keys_for_import(name, distro) or \
+        (rosdistro.keys_for_import(name.partition(".")[0], distro)
+         if all(part.isidentifier() for part in name.split(".")) else ())
     return keys[0] if keys else rosdistro.key_of_ubuntu_package(name)
 
 

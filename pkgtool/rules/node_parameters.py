@@ -478,6 +478,13 @@ def parameter_file_nodes(package: Package) -> dict[str, tuple[NodeRef, ...]]:
     return {path: tuple(nodes) for path, nodes in found.items()}
 
 
+def files_rcl_reads(package: Package) -> set[str]:
+    """The package files a launch file passes to a plain node as parameters: rcl's parser reads
+    them as written. (launch_ros reads a file passed only to components itself.)"""
+    return {path for path, nodes in parameter_file_nodes(package).items()
+            if not all(node.composable for node in nodes)}
+
+
 def fully_seen_parameter_files(package: Package) -> dict[str, tuple[NodeRef, ...]]:
     """:func:`statically_used_parameter_files`, those whose users are every user: a node
     given parameters not read statically (a launch argument may name any file) may use any
@@ -593,6 +600,10 @@ def _octal(text: str) -> bool:
     return len(digits) > 1 and digits[0] == "0" and digits[1] not in "xX"
 
 
+_MERGE = "tag:yaml.org,2002:merge"
+"""The tag of a YAML merge key (``<<``)."""
+
+
 def flat_parameters(mapping: object, prefix: str = "") -> Iterator[tuple[str, object, object]]:
     """(dotted name, key node, value node) of every parameter under ``ros__parameters``."""
     import yaml
@@ -601,6 +612,11 @@ def flat_parameters(mapping: object, prefix: str = "") -> Iterator[tuple[str, ob
         return
     for key, value in mapping.value:
         if not isinstance(key, yaml.ScalarNode):
+            continue
+        if key.tag == _MERGE:  # `<<: *defaults`: the keys of the mappings merged in
+            merged = value.value if isinstance(value, yaml.SequenceNode) else [value]
+            for part in merged:
+                yield from flat_parameters(part, prefix)
             continue
         name = f"{prefix}{key.value}"
         if isinstance(value, yaml.MappingNode):

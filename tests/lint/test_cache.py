@@ -176,14 +176,15 @@ def test_the_workspace_index_is_kept_with_settled_packages_and_read_again_on_cha
     first = _lint(ws).stdout
     assert "DEP001" in first
     alpha_root = str(ws / "src" / "alpha")
-    name, interfaces, modules, messages, folder, setup_digest, depends, executables, own = \
-        _entries(ws / ".pkgtool_cache")[alpha_root]["index"]
+    name, interfaces, modules, messages, folder, setup_digest, depends, executables, own, \
+        described = _entries(ws / ".pkgtool_cache")[alpha_root]["index"]
     assert [name, interfaces, modules, messages, folder] == \
         ["alpha", {}, ["alpha"], {}, alpha_root]
     assert "rclpy" in depends  # what it depends on: a cycle a declaration would make
     assert re.fullmatch(r"[0-9a-f]{64}", setup_digest)  # ament_python: its scripts may be read
     assert executables is None  # what CMakeLists.txt installs: for CMake packages alone
     assert own is True  # it has a package.xml: rosdep can resolve a dependency on it
+    assert described == []  # no robot description file whose existence a sibling may ask
     assert _lint(ws).stdout == first  # the index of both packages comes from the cache
     pack = ws / ".pkgtool_cache" / "lint" / pack_of(alpha_root)
     whole = json.loads(pack.read_text())
@@ -220,6 +221,34 @@ def test_a_sibling_s_changed_console_scripts_are_seen_through_the_cache(tmp_path
     changed = _lint(ws).stdout
     assert "LCH001" in changed and "`talker` is not an executable of `alpha`" in changed
     assert changed == _lint(ws, "--no-cache").stdout == _lint(ws).stdout
+
+
+def test_a_sibling_s_renamed_description_file_is_seen_through_the_cache(
+        tmp_path: Path) -> None:
+    """DAT012 asks whether another workspace package has the URDF its glob would install."""
+    alpha = correct_package_files("alpha")
+    alpha["urdf/robot.urdf"] = "<robot name='robot'/>\n"
+    alpha["setup.py"] = alpha["setup.py"].replace(
+        "glob('launch/*.launch.py')),",
+        "glob('launch/*.launch.py')), ('share/alpha/urdf', glob('urdf/*.urdf')),")
+    beta = correct_package_files("beta")
+    beta["launch/robot.launch.py"] = (
+        "import os\n\nfrom ament_index_python.packages import get_package_share_directory\n"
+        "from launch import LaunchDescription\n\n\ndef generate_launch_description():\n"
+        "    with open(os.path.join(get_package_share_directory('alpha'), 'urdf', "
+        "'robot.urdf')) as stream:\n"
+        "        stream.read()\n"
+        "    return LaunchDescription([])\n")
+    ws = write_tree(tmp_path / "ws", {
+        **{f"src/alpha/{k}": v for k, v in alpha.items()},
+        **{f"src/beta/{k}": v for k, v in beta.items()}})
+    _settle(ws)
+    assert "DAT012" not in _lint(ws, "--select", "DAT012").stdout
+    urdf = ws / "src" / "alpha" / "urdf"
+    (urdf / "robot.urdf").rename(urdf / "robot_v2.urdf")
+    changed = _lint(ws, "--select", "DAT012").stdout
+    assert "DAT012" in changed and "did you mean `urdf/robot_v2.urdf`" in changed
+    assert changed == _lint(ws, "--select", "DAT012", "--no-cache").stdout
 
 
 def test_corrupt_or_foreign_entries_are_ignored_and_rewritten(tmp_path: Path) -> None:

@@ -7,13 +7,15 @@ import fnmatch
 import posixpath
 from collections.abc import Iterable, Iterator
 
+from pkgtool.model.context import lists_files_of
+from pkgtool.model.files import DESCRIPTION_SUFFIXES
 from pkgtool.model.installed import installed_data
 from pkgtool.model.launch import EXISTENCE_CHECKS, LAUNCH_FILE_NAME, FileRef, LaunchFile
 from pkgtool.model.launch_python import read_python_launch
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.python_visitor import parse_tree
-from pkgtool.model.scripts import installs_share_path, sibling_data_files
+from pkgtool.model.scripts import Installs, installs_share_path, sibling_data_files
 from pkgtool.model.setup_py import DataFile, DataSource
 from pkgtool.rules.existence_checks import HANDLING_FILES, checks_files
 from pkgtool.rules.setup_values import checked_setup
@@ -91,8 +93,9 @@ def _uninstalled(package: Package) -> Iterator[tuple[str, FileRef, str, dict[str
 
 @per_package
 def sibling_share_misses(package: Package) -> tuple[tuple[str, FileRef, str], ...]:
-    """Each launch file an installed launch file or module includes from the share folder of
-    another ament_python package of the workspace that the package's setup.py certainly
+    """Each launch file an installed launch file or module includes, and each robot
+    description, world or RViz file it reads, from the share folder of another ament_python
+    package of the workspace that the package's setup.py certainly
     installs no file of that name for (:func:`~pkgtool.model.scripts.installs_share_path`;
     other files may be made there at run time, a calibration or a map saved, which the
     package's code, not read here, would tell): the reader's path, the reference and the
@@ -107,16 +110,44 @@ def sibling_share_misses(package: Package) -> tuple[tuple[str, FileRef, str], ..
     for path, refs in _share_reads(package, shared):
         for ref in refs:
             sibling = package.context.workspace.get(ref.package or "") \
-                if ref.package != package.name and ref.parts and \
-                LAUNCH_FILE_NAME.search(ref.parts[-1]) else None
+                if ref.package != package.name and ref.parts and _kept_as_written(ref.parts[-1]) \
+                else None
             installs = sibling_data_files(sibling) if sibling is not None else None
             relative = posixpath.normpath(posixpath.join(*ref.parts))
+            target = f"share/{ref.package}/{relative}"
             if installs is not None and not _GLOB.search(relative) and \
-                    not installs_share_path(installs, f"share/{ref.package}/{relative}") and \
+                    (not installs_share_path(installs, target) or
+                     _no_source(installs, target, sibling.description_files)) and \
                     (path, ref.package, relative) not in seen:
                 seen.add((path, ref.package, relative))
                 found.append((path, ref, relative))
     return tuple(found)
+
+
+def _no_source(installs: Installs, target: str, present: frozenset[str]) -> bool:
+    """True when ``target`` is a description file that only globs of one-folder-deep sources
+    (``urdf/*.urdf``) may install, and none of those folders holds a file of its name:
+    ``present`` are the package's description files (``WorkspacePackage.description_files``)."""
+    folder, name = posixpath.split(target)
+    if not name.endswith(DESCRIPTION_SUFFIXES):
+        return False
+    sources = []
+    for destination, pattern, is_glob in installs:
+        if destination == target or destination.startswith(target + "/") or \
+                destination == folder and not is_glob and \
+                posixpath.basename(posixpath.normpath(pattern)) == name:
+            return False  # a source listed by name: whether it exists is that package's DAT001
+        if destination == folder and is_glob and \
+                fnmatch.fnmatchcase(name, posixpath.basename(pattern)):
+            sources.append(posixpath.join(posixpath.dirname(posixpath.normpath(pattern)), name))
+    return bool(sources) and all(source.count("/") == 1 and lists_files_of(source.split("/")[0])
+                                 and source not in present for source in sources)
+
+
+def _kept_as_written(name: str) -> bool:
+    """True for a launch file or a robot description, world or RViz file: what a package
+    installs as written, never a file code makes at run time (a map, a calibration)."""
+    return LAUNCH_FILE_NAME.search(name) is not None or name.endswith(DESCRIPTION_SUFFIXES)
 
 
 def _share_reads(package: Package, shared: set[str]

@@ -8,6 +8,7 @@ import posixpath
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity, shortened
+from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.ast_nodes import opens_to_write
 from pkgtool.model.installed import installed_data
 from pkgtool.model.launch import EXISTENCE_CHECKS
@@ -69,8 +70,9 @@ def cwd_relative_path(package: Package) -> Iterator[Hit]:
     it: `python3 converter.py`), nor a helper only such scripts of its folder import (by its
     bare name: `from utils import load`): both run from that folder. Nor is a path a module
     of the package also opens to write (`open('data.json', 'w')`): a file nodes exchange
-    where they run, of which the package's copy is a sample. Tests are not checked (pytest
-    runs them from a known folder).
+    where they run, of which the package's copy is a sample; nor an official Ultralytics
+    model given to `YOLO()` (`'yolov8n.pt'`, `'yolo11s-seg.pt'`): Ultralytics downloads a
+    missing one. Tests are not checked (pytest runs them from a known folder).
 
     ## Why is this bad?
     A relative path is resolved against the working folder of the process, not against the
@@ -108,6 +110,9 @@ def cwd_relative_path(package: Package) -> Iterator[Hit]:
             for text in _path_texts(read, index) if read is not None else ():
                 if posixpath.normpath(text) in written:
                     continue  # a file the nodes exchange where they run: the copy a sample
+                if index.qualified(call.func) == "ultralytics.YOLO" and \
+                        _YOLO_ASSET.fullmatch(posixpath.basename(text)):
+                    continue  # an official model: Ultralytics downloads it when it is missing
                 named = _named(text.removeprefix("./"), package, installed_as) or \
                     _beside(path, text, package)
                 if named is not None:
@@ -202,6 +207,12 @@ def _share_paths(package: Package) -> dict[str, str]:
             if installed.startswith(prefix)}
 
 
+_YOLO_ASSET = lazy_pattern(
+    r"yolo(?:v3(?:-tiny|-spp)?u|v5[nsmlx]6?u"
+    r"|v8[nsmlx](?:-(?:seg|pose|obb|cls|oiv7|world|worldv2))?|v9[tsmce](?:-seg)?|v10[nsmblx]"
+    r"|1[12][nsmlx](?:-(?:seg|pose|obb|cls))?)\.pt")
+"""The names of the official Ultralytics models (``yolov8n.pt``, ``yolo11s-seg.pt``):
+``YOLO(name)`` downloads a missing one into the path given, where the process runs."""
 _WHEN_MISSING = {"sqlite3.connect": "sqlite3 makes a new, empty database there instead",
                  "cv2.imread": "cv2.imread returns None"}
 """Readers that do not raise FileNotFoundError for a missing file, with what they do."""

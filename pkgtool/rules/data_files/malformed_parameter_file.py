@@ -13,7 +13,7 @@ from pkgtool.lazy_regex import lazy_pattern
 from pkgtool.model.launch_reader import yaml_problem
 from pkgtool.model.package import Package, is_test_yaml
 from pkgtool.model.span import Span
-from pkgtool.rules.node_parameters import parameter_file_nodes
+from pkgtool.rules.node_parameters import files_rcl_reads
 from pkgtool.rules.registry import rule
 
 if TYPE_CHECKING:  # the rule reads nodes yaml_problem built: PyYAML is imported only then
@@ -233,8 +233,7 @@ def malformed_parameter_file(package: Package) -> Iterator[Hit]:
         rate: 10.0
     ```
     """
-    passed = {path for path, nodes in parameter_file_nodes(package).items()
-              if not all(node.composable for node in nodes)}
+    passed = files_rcl_reads(package)
     own_reader = _code_reads_parameter_keys(package)
     as_dicts = _read_as_dicts(package)
     for path in _candidates(package):

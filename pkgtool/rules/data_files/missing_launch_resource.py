@@ -54,9 +54,12 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     either, nor is a file it opens to write (`open(path, 'w')`, `'a'`, `'x'`): the code
     makes it; nor a file of the name another installed module of the package opens to
     write (one node writes the state file another reads). A launch file included from the
-    share folder of another ament_python package of the workspace is reported when that
-    package's setup.py installs no file of its name into its folder (its globs are matched
-    by name: `launch/*.launch.py` never installs `launch/robot.launch.xml`).
+    share folder of another ament_python package of the workspace, or a robot description,
+    world or RViz file read from there (`.urdf`, `.xacro`, `.sdf`, `.srdf`, `.world`,
+    `.rviz`: files installed as written, never made at run time as a map or a calibration
+    may be), is reported when that package's setup.py installs no file of its name into its
+    folder (its globs are matched by name: `launch/*.launch.py` never installs
+    `launch/robot.launch.xml`).
 
     ## Why is this bad?
     Nothing can install a file the package does not have: `ros2 launch` fails on the missing
@@ -95,9 +98,13 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
                             f"reads it from the share folder, where nothing installs it{hint}",
                   f"Write `{close[0]}`" if close else None)
     for reader, ref, relative in sibling_share_misses(package):
+        sibling = package.context.workspace[ref.package or ""]
+        close = get_close_matches(relative, sorted(sibling.description_files), n=1)
+        hint = f" (did you mean `{close[0]}`?)" if close else ""
         yield Hit(ref.span, f"`{relative}` is not installed by `{ref.package}`, a package of "
                             f"the workspace: `{reader}` reads it from its share folder, where "
-                            f"its setup.py's data_files put no file of that name",
+                            f"its setup.py's data_files put no file of that name{hint}",
+                  f"Write `{close[0]}`" if close else
                   f"Fix the path, or install the file in `{ref.package}`'s setup.py")
 
 

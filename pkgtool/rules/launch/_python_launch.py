@@ -9,7 +9,7 @@ from collections.abc import Iterable, Iterator
 
 from pkgtool.knowledge.rosdistro import any_stdlib_module
 from pkgtool.lazy_regex import lazy_pattern
-from pkgtool.model.ast_nodes import last_name, subtree
+from pkgtool.model.ast_nodes import last_name, nodes_of_class, subtree
 from pkgtool.model.launch import LaunchFile, is_launch_test, parse_launch
 from pkgtool.model.launch_reader import FRONTEND_DECLARED, VARIABLE_READ
 from pkgtool.model.memo import per_package
@@ -17,7 +17,7 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.text_comments import without_comments
 from pkgtool.rules.scopes import single_assignments
-from pkgtool.rules.syntax_trees import Index, launch_indexes, python_launch_files
+from pkgtool.rules.syntax_trees import Index, launch_indexes
 
 FUNCTION = "generate_launch_description"
 """The function ``ros2 launch`` calls in a Python launch file."""
@@ -147,33 +147,32 @@ def launch_tests(package: Package) -> tuple[LaunchFile, ...]:
 def undeclared_reads(package: Package) -> Iterator[tuple[Span, str, set[str]]]:
     """Each read of a launch configuration that no launch file of the package declares or
     sets, with the names its own file declares: a ``LaunchConfiguration('x')`` with no
-    default (nor other keyword) whose name the file quotes nowhere else
-    (``SetLaunchConfiguration``, ``launch_arguments``) and whose value is used (not bound to a
-    name nothing reads), a ``$(var x)`` whose name the file writes nowhere else. None when a
-    Python launch file declares an argument under a name made at run time."""
-    texts = {path: text for path, _, text in python_launch_files(package)}
-    files = [(path, index, texts[path]) for path, index in launch_indexes(package)]
+    default (nor other keyword) whose name the file quotes nowhere else but as a node's
+    parameter name (``SetLaunchConfiguration``, ``launch_arguments``) and whose value is
+    used (not bound to a name nothing reads), a ``$(var x)`` whose name the file writes
+    nowhere else. None when a Python launch file declares an argument under a name made at
+    run time."""
+    files = list(launch_indexes(package))
     frontends = [(launch.path, without_comments(text, launch.kind))
                  for launch in package.launch_files
                  if launch.kind in ("xml", "yaml") and launch.problem is None and
                  (text := package.texts.get(launch.path)) is not None]
     declared_anywhere = {name for _, text in frontends for pattern in FRONTEND_DECLARED
                          for name in pattern.findall(text)}
-    declarations = [c for _, index, _ in files for c in index.calls
+    declarations = [c for _, index in files for c in index.calls
                     if last_name(c.func) == _DECLARE]
     names = [text_argument(c, "name") for c in declarations]
     if None in names:
         return  # a name made at run time (a loop, an f-string) may be any of them
     declared_anywhere.update(name for name in names if name is not None)
-    for path, index, text in files:
+    for path, index in files:
         declared = {name for c in index.calls if last_name(c.func) == _DECLARE
                     and (name := text_argument(c, "name")) is not None}
         for call in index.calls:
             name = text_argument(call, "variable_name") if last_name(call.func) == _READ else None
             if name is None or name in declared_anywhere or len(call.args) > 1 or any(
                     k.arg != "variable_name" for k in call.keywords) or \
-                    text.count(f"'{name}'") + text.count(f'"{name}"') > 1 or \
-                    _never_used(call, index):
+                    _quoted_elsewhere(name, call, index) or _never_used(call, index):
                 continue
             yield Span(path, call.lineno, call.col_offset + 1), name, declared
     for path, text in frontends:
@@ -196,6 +195,30 @@ def declaration_holders(index: Index) -> dict[str, str]:
         if name is not None and isinstance(parent, ast.Assign):
             found.update((t.id, name) for t in parent.targets if isinstance(t, ast.Name))
     return found
+
+
+def _quoted_elsewhere(name: str, call: ast.Call, index: Index) -> bool:
+    """True when the file of ``call`` (a read of ``name``) holds the string ``name`` anywhere
+    else, but as a node's parameter name (a key of a dict given as ``parameters=``): a
+    ``SetLaunchConfiguration``, ``launch_arguments`` or a helper may set the configuration."""
+    for node in nodes_of_class(index.module_of(call), ast.Constant):
+        parent = index.parents.get(id(node))
+        if node.value == name and parent is not call and \
+                not (isinstance(parent, ast.keyword) and index.parents.get(id(parent)) is call) \
+                and not _parameter_name(node, index):
+            return True
+    return False
+
+
+def _parameter_name(node: ast.Constant, index: Index) -> bool:
+    """True for a key of a dict display in the list a ``parameters=`` keyword gives."""
+    parent = index.parents.get(id(node))
+    if not (isinstance(parent, ast.Dict) and any(key is node for key in parent.keys)):
+        return False
+    holder = index.parents.get(id(parent))
+    while isinstance(holder, (ast.List, ast.Tuple)):
+        holder = index.parents.get(id(holder))
+    return isinstance(holder, ast.keyword) and holder.arg == "parameters"
 
 
 def _never_used(call: ast.Call, index: Index) -> bool:

@@ -11,6 +11,7 @@ when a module may store attributes unseen).
 from __future__ import annotations
 
 import ast
+from typing import Pattern
 
 from pkgtool.model.ast_nodes import nodes_of_class, subtree
 from pkgtool.model.package import Package
@@ -19,7 +20,7 @@ from pkgtool.rules.python._message_instances import (binding_counts, callback_fu
                                                      method_receiver)
 from pkgtool.rules.python._value_types import attribute_stores, receiver_class
 from pkgtool.rules.scopes import scope_bindings
-from pkgtool.rules.syntax_trees import Index
+from pkgtool.rules.syntax_trees import Index, installed_tree_of
 
 Assigned = list[tuple[ast.expr, Index]]
 """The values assigned, each with the index of its module."""
@@ -124,6 +125,27 @@ def assigned_values(value: ast.expr, package: Package, tree: ast.Module, index: 
     if isinstance(value, ast.Attribute) and isinstance(value.ctx, ast.Load):
         return _attribute(value, package, index)
     return None
+
+
+_DEPTH = 8
+"""How many names deep :func:`made_class` follows a value (``b = Path()``, ``a = b``)."""
+
+
+def made_class(value: ast.expr, package: Package, tree: ast.Module, index: Index,
+               kind: Pattern[str], depth: int = 0) -> str | None:
+    """The class of qualified name matching ``kind`` (``pkg.msg.Name``) that ``value`` (in
+    ``tree``) is certainly an instance of: a call of it, or a local name or ``self.x`` every
+    assignment of which is one (None aside), followed through at most :data:`_DEPTH` names
+    (``a = b`` and ``b = a`` loop)."""
+    if isinstance(value, ast.Call):
+        made = index.qualified(value.func) if isinstance(value.func, (ast.Name, ast.Attribute)) \
+            else None
+        return made if made and kind.fullmatch(made) else None
+    assigned = assigned_values(value, package, tree, index) if depth < _DEPTH else None
+    trees = installed_tree_of(package) if assigned else {}
+    classes = {made_class(v, package, trees[id(i)], i, kind, depth + 1)
+               for v, i in assigned or () if not is_none(v)}
+    return classes.pop() if len(classes) == 1 and None not in classes else None
 
 
 def _done_callback_futures(tree: ast.Module, index: Index) -> dict[int, list[ast.expr]]:

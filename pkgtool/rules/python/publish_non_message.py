@@ -13,6 +13,7 @@ from pkgtool.model.span import Span
 from pkgtool.records import record
 from pkgtool.rules.node_api import (ACTION_CLIENTS, PARAMETERS, argument, literal_type,
                                     unpacks)
+from pkgtool.rules.python._assignments import made_class
 from pkgtool.rules.python._callbacks import execute_callbacks
 from pkgtool.rules.python._message_instances import (Instance, Known, attribute_instances,
                                                      known_messages, local_instances)
@@ -156,7 +157,8 @@ def publish_non_message(package: Package) -> Iterator[Hit]:
     or no message at all (`pub.publish()`) or the message's fields as keywords (rospy's
     `pub.publish(data='hi')`) is reported too, and so is what an action server's
     execute callback gives its goal handle's `publish_feedback()` when it is such a literal
-    or class.
+    or class, or certainly an instance of a message or of another class of an action
+    (`Fibonacci.Result()` where `Fibonacci.Feedback()` belongs).
 
     ## Why is this bad?
     `Publisher.publish` raises `TypeError: Expected <class 'std_msgs.msg._string.String'>,
@@ -238,6 +240,18 @@ def _sent_hit(path: str, ref: ast.expr, method: str, value: ast.expr, why: str,
                _FIXES[what])
 
 
+_SENT_CLASS = lazy_pattern(r"\w+\.(?:msg\.\w+|action\.\w+\.\w+)")
+"""A message class, or a class of an action's (``pkg.action.Fibonacci.Result``)."""
+
+
+def _not_feedback(made: str | None) -> str | None:
+    """Why an instance of ``made`` (a :data:`_SENT_CLASS`) is no action feedback, if it is."""
+    if made is None or made.endswith("Feedback"):  # `Fibonacci_Feedback` of `_fibonacci` too
+        return None
+    shown = ".".join(made.split(".")[2:])
+    return f"a `{shown}`, not the action's `Feedback`"
+
+
 def _feedback_hits(package: Package) -> Iterator[Hit]:
     """The feedback an action server's execute callback publishes through its goal handle
     that is certainly no feedback message."""
@@ -250,6 +264,7 @@ def _feedback_hits(package: Package) -> Iterator[Hit]:
                 continue
             value = sent[1]
             why = _not_a_message(value, _GOAL_HANDLE, [],
-                                 certain_type(value, package, trees[path], index))
+                                 certain_type(value, package, trees[path], index)) or \
+                _not_feedback(made_class(value, package, trees[path], index, _SENT_CLASS))
             if why:
                 yield _sent_hit(path, ref, sent[0], value, why, _GOAL_HANDLE)

@@ -6,7 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import enclosing, nodes_of_class
+from pkgtool.model.ast_nodes import enclosing, last_name, nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import INITS, SHUTDOWNS, TRY_SHUTDOWNS
@@ -42,6 +42,58 @@ def _initialises(statement: ast.stmt, index: Index) -> bool:
                for c in nodes_of_class(statement, ast.Call))
 
 
+_SPIN = frozenset({"rclpy.spin"})
+_EXITS = frozenset({"exit", "_exit", "quit"})
+
+
+def _called_with(statement: ast.stmt, names: frozenset[str], index: Index) -> bool:
+    """True when ``statement`` is an expression calling one of ``names`` (any arguments)."""
+    call = statement.value if isinstance(statement, ast.Expr) else None
+    return isinstance(call, ast.Call) and isinstance(call.func, (ast.Name, ast.Attribute)) and \
+        index.qualified(call.func) in names
+
+
+def _callback_shutdown(index: Index, spinner: ast.AST | None) -> ast.Call | None:
+    """A bare ``rclpy.shutdown()`` in a method of a class of the module other than the function
+    ``spinner`` spinning the node and than a finalizer (a callback ending the node:
+    ``rclpy.spin`` then returns) that the program does not leave right after (a ``raise``,
+    ``sys.exit()``)."""
+    for call in index.calls:
+        statement = index.parents.get(id(call))
+        method = index.enclosing_function(call)
+        if not (isinstance(statement, ast.Expr) and _called(statement, SHUTDOWNS, index) is call
+                and method is not None and method is not spinner and method.name != "__del__"
+                and index.enclosing_class(call) is not None):
+            continue
+        following = _next_statement(statement, index)
+        if not (isinstance(following, ast.Raise) or isinstance(following, ast.Expr) and
+                isinstance(following.value, ast.Call) and
+                last_name(following.value.func) in _EXITS):
+            return call
+    return None
+
+
+def _next_statement(statement: ast.stmt, index: Index) -> ast.stmt | None:
+    """The statement after ``statement`` in its block, if any."""
+    holder = index.parents.get(id(statement))
+    for name in ("body", "orelse", "finalbody", "handlers"):
+        block = getattr(holder, name, None)
+        if isinstance(block, list) and any(s is statement for s in block):
+            place = next(i for i, s in enumerate(block) if s is statement)
+            return block[place + 1] if place + 1 < len(block) else None
+    return None
+
+
+def _after_spin(path: str, call: ast.Call, stopper: ast.Call, index: Index) -> Hit:
+    function = index.enclosing_function(stopper)
+    cls = index.enclosing_class(stopper)
+    where = f"{cls.name}.{function.name}" if cls and function else "a method"
+    return Hit(Span(path, call.lineno, call.col_offset + 1),
+               f"`rclpy.shutdown()` runs after `rclpy.spin()` returned, which it does once ROS "
+               f"is shut down, as `{where}` (line {stopper.lineno}) does: rclpy raises "
+               "RuntimeError (Context must be initialized before it can be shutdown)")
+
+
 @rule("PYC057", "rclpy-shut-down-twice", Severity.ERROR,
       fix="Call `rclpy.try_shutdown()` where ROS may already be shut down, or drop the second "
           "call")
@@ -52,9 +104,11 @@ def rclpy_shut_down_twice(package: Package) -> Iterator[Hit]:
     Reports a bare `rclpy.shutdown()` (the default context: no arguments) when a statement
     that always runs just before it in straight-line code already shut ROS down: an
     `rclpy.shutdown()` or `rclpy.try_shutdown()` call, or a `try` whose `finally` block makes
-    one, with no `rclpy.init()` in between. Branches, loops and handlers are never assumed
-    to have run: `except: rclpy.shutdown()` followed by `finally: rclpy.shutdown()` is left
-    alone.
+    one, with no `rclpy.init()` in between; or a bare `rclpy.spin(...)` earlier in the same
+    block when a method of a class of the module (a callback; not `__del__`) calls
+    `rclpy.shutdown()` (and does not raise or exit right after): `spin` returns only once
+    ROS is shut down. Branches, loops and handlers are never assumed to have run: `except:
+    rclpy.shutdown()` followed by `finally: rclpy.shutdown()` is left alone.
 
     ## Why is this bad?
     The second shutdown raises `RuntimeError: Context must be initialized before it can be
@@ -91,6 +145,12 @@ def rclpy_shut_down_twice(package: Package) -> Iterator[Hit]:
                 continue
             for before in preceding_statements(statement, index):
                 if _initialises(before, index):
+                    break
+                stopper = _callback_shutdown(index, index.enclosing_function(call)) \
+                    if _called_with(before, _SPIN, index) and \
+                    index.parents.get(id(before)) is index.parents.get(id(statement)) else None
+                if stopper is not None:
+                    yield _after_spin(module.path, call, stopper, index)
                     break
                 earlier = _shut_down_by(before, index)
                 if earlier is not None:

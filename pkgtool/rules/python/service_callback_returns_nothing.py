@@ -8,16 +8,17 @@ from collections.abc import Iterator
 from typing import NamedTuple
 
 from pkgtool.findings import Hit, Severity, shortened
+from pkgtool.model.ast_nodes import last_name
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
-from pkgtool.rules.python._assignments import assigned_values, is_none
+from pkgtool.rules.python._assignments import made_class
 from pkgtool.rules.python._callbacks import callback_arguments
 from pkgtool.rules.python._field_reads import field_reads
 from pkgtool.rules.python._message_instances import Function, binding_counts, callback_function
 from pkgtool.rules.python._value_types import PARAMETER, PARAMETER_TEXT, certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import plainly_decorated, returns_none, scope_walk
-from pkgtool.rules.syntax_trees import Index, installed_trees, overridden
+from pkgtool.rules.syntax_trees import FUNCTIONS, Index, installed_trees, overridden
 from pkgtool.lazy_regex import lazy_pattern
 
 
@@ -71,8 +72,36 @@ _RETURNED = {
 _RESULT_ARGUMENT = {"create_service()": 1}
 """The position of the argument a callback may return as its result (a service's response),
 by API; the callback's other arguments never are."""
-_STOPS = (ast.Return, ast.Raise, ast.While, ast.Try, ast.With, ast.AsyncWith, ast.Match)
+_STOPS = (ast.Return, ast.Raise, ast.Try, ast.With, ast.AsyncWith, ast.Match)
 """Statements after which the end of a body may not be reached (or not only by falling)."""
+
+
+def _never_passed(statement: ast.stmt) -> bool:
+    """True for a ``while`` loop the code after it may not follow (or only at shutdown): one
+    whose test holds until shutdown (``while True:``, ``while rclpy.ok():``) or whose ``else``
+    block returns or raises, with no ``break`` of its own."""
+    if not isinstance(statement, ast.While) or _breaks(statement.body):
+        return False
+    test = statement.test
+    return isinstance(test, ast.Constant) and bool(test.value) or \
+        isinstance(test, ast.Call) and last_name(test.func) == "ok" or \
+        bool(statement.orelse) and _leaves(statement.orelse)
+
+
+def _breaks(body: list[ast.stmt]) -> bool:
+    """True when ``body`` (of a loop) holds a ``break`` of that loop (not of a loop in it)."""
+    stack: list[ast.AST] = list(body)
+    while stack:
+        node = stack.pop()
+        if isinstance(node, ast.Break):
+            return True
+        if not isinstance(node, (ast.For, ast.AsyncFor, ast.While, *FUNCTIONS, ast.ClassDef)):
+            stack.extend(ast.iter_child_nodes(node))
+        else:
+            stack.extend(getattr(node, "orelse", []))  # a loop's else: still this loop's
+    return False
+
+
 _PLAIN_ENDS = (ast.Expr, ast.Assign, ast.AugAssign, ast.AnnAssign)
 
 
@@ -81,8 +110,6 @@ _RESULT_KINDS = lazy_pattern(r"_(Response|Result)$")
 result: the field may be returned)."""
 _MESSAGE_CLASS = lazy_pattern(r"\w+\.msg\.\w+")
 """The qualified name of a message class (not a service's or action's message)."""
-_DEPTH = 8
-"""How many names deep a returned value is followed (``b = Path()``, ``a = b``)."""
 _NOT_RESULTS = frozenset({"int", "float", "complex", "str", "bytes", "bool", "NoneType",
                           "list", "tuple", "dict", "set", PARAMETER, PARAMETER_TEXT})
 """Certain types (:func:`~._value_types.certain_type`) a callback's result never has."""
@@ -122,7 +149,7 @@ def _wrong_returns(function: Function, arguments: list[str], result: str | None,
                 read is None and isinstance(root, ast.Name) and root.id in given):
             owner = "an attribute of its argument" if read is None else "a field of"
             yield value, f"`{_shown(value)}`, {owner} `{_shown(root)}`"
-        elif messages and (made := _message_made(value, package, tree, index)):
+        elif messages and (made := made_class(value, package, tree, index, _MESSAGE_CLASS)):
             yield value, f"`{_shown(value)}`, a `{made}` message"
         elif (found := certain_type(value, package, tree, index, texts=True)) in _NOT_RESULTS:
             kind = found.split(" ")[0]
@@ -160,29 +187,15 @@ def _shown(value: ast.expr) -> str:
     return shortened(ast.unparse(value))
 
 
-def _message_made(value: ast.expr, package: Package, tree: ast.Module, index: Index,
-                  depth: int = 0) -> str | None:
-    """The message class (``pkg.msg.Name``) ``value`` certainly is an instance of: a call of
-    it, or a local name or ``self.x`` every assignment of which is one (None aside), followed
-    through at most :data:`_DEPTH` names (``a = b`` and ``b = a`` loop)."""
-    if isinstance(value, ast.Call):
-        made = index.qualified(value.func) if isinstance(value.func, (ast.Name, ast.Attribute)) \
-            else None
-        return made if made and _MESSAGE_CLASS.fullmatch(made) else None
-    assigned = assigned_values(value, package, tree, index) if depth < _DEPTH else None
-    classes = {_message_made(v, package, tree, index, depth + 1)
-               for v, _ in assigned or () if not is_none(v)}
-    return classes.pop() if len(classes) == 1 and None not in classes else None
-
-
 def _falls_off_the_end(function: ast.FunctionDef | ast.AsyncFunctionDef) -> bool:
     """True for a plain ``def`` (no decorator but ``staticmethod``/``classmethod``, no
     ``yield``) whose body certainly can end without a ``return``: no top-level statement of
-    it returns, raises, loops with ``while`` or enters ``try``/``with``/``match``, and the
-    last one is an expression or assignment (not a call of an ``exit``)."""
+    it returns, raises, loops on past its end (:func:`_never_passed`) or enters
+    ``try``/``with``/``match``, and the last one is an expression or assignment (not a call
+    of an ``exit``)."""
     last = function.body[-1]
     if not isinstance(function, ast.FunctionDef) or not plainly_decorated(function) or \
-            any(isinstance(s, _STOPS) for s in function.body) or \
+            any(isinstance(s, _STOPS) or _never_passed(s) for s in function.body) or \
             not isinstance(last, _PLAIN_ENDS) or isinstance(last, ast.Expr) and (
                 isinstance(last.value, ast.Constant) or "exit" in ast.unparse(last.value)):
         return False
@@ -204,8 +217,11 @@ def service_callback_returns_nothing(package: Package) -> Iterator[Hit]:
     not `async`, no decorator, not a placeholder body (only `pass`, `...`, a docstring or
     `raise`). Also reports such a callback that returns a value on some paths but certainly
     can fall off its end: no statement of its body (outside nested blocks) returns, raises,
-    loops with `while` or enters `try`, `with` or `match`, and the last one is an
-    expression or assignment (`self.get_logger().info('done')` after an early `return`).
+    loops with no way past it (`while True:` or `while rclpy.ok():` with no `break`, a
+    `while` whose `else` block returns) or enters `try`, `with` or `match`, and the last one
+    is an expression or assignment (`self.get_logger().info('done')` after an early
+    `return`, after a `while` loop that returns the result when the goal is reached and ends
+    when its test fails).
     And each `return` of such a callback whose value is certainly not its result: an imported
     interface class itself (`return AddTwoInts.Response`), `None` or a bare `return` (beside
     returns of a value), a number, string, bool, tuple or other builtin value (`return True`

@@ -17,6 +17,8 @@ def setup_name_mismatch(package: Package) -> Iterator[Hit]:
 
     ## What it does
     Compares the statically known `name` keyword of `setup()` with package.xml's `<name>`.
+    When the package's folder has setup.py's name, package.xml's `<name>` is the odd one
+    out, and the finding is reported there.
 
     ## Why is this bad?
     ROS tools know the package by its package.xml name, setuptools by the setup.py name: the
@@ -37,7 +39,13 @@ def setup_name_mismatch(package: Package) -> Iterator[Hit]:
     found = beside_manifest(package, "name")
     if found and setup_alias(package):
         name, span, wanted = found
-        folder = (f" (the folder is `{name}` too: if package.xml's `<name>` is the one misspelt, "
-                  "correct it there instead)" if package.root.name == name else "")
+        manifest = package.manifest
+        if package.root.name == name and manifest is not None and manifest.name is not None:
+            yield Hit(manifest.name.span, f"The `package.xml` name `{wanted}` differs from "
+                      f"`{name}`, the name of setup.py and of the package's folder: ROS tools "
+                      f"look for `{wanted}`, which setup.py does not install",
+                      f"Write `<name>{name}</name>`, or rename setup.py's name and the folder "
+                      f"to `{wanted}`", cause=name_cause(name))
+            return
         yield Hit(span, f"`setup.py` name `{name}` differs from the `package.xml` name "
-                        f"`{wanted}`{folder}", cause=name_cause(name))
+                        f"`{wanted}`", cause=name_cause(name))
