@@ -13,6 +13,7 @@ from pkgtool.model.span import Span
 from pkgtool.rules.python._field_reads import ARRAY_SEQUENCE
 from pkgtool.rules.python._message_instances import Instance, known_messages
 from pkgtool.rules.python._messages import message_instances
+from pkgtool.rules.python._rclpy_objects import TIME, object_class
 from pkgtool.rules.python._value_types import certain_type
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, installed_trees
@@ -40,7 +41,8 @@ TO_MSG = "Convert it with `.to_msg()`"
 _FIXES = {"rclpy.time.Time": TO_MSG, "rclpy.duration.Duration": TO_MSG}
 
 
-def _not_a_message(kind: str, value: ast.expr, given: str | None, index: Index) -> str | None:
+def _not_a_message(kind: str, value: ast.expr, given: str | None, package: Package,
+                   tree: ast.Module, index: Index) -> str | None:
     """What ``value`` (certainly of type ``given``, if not None) is (``float``,
     ``rclpy.time.Time``) when it is certainly not a message for a field of message type
     ``kind``; None when it may be one."""
@@ -48,14 +50,27 @@ def _not_a_message(kind: str, value: ast.expr, given: str | None, index: Index) 
         return None
     if given in ("int", "float", "bool", "str", "list", "tuple", "dict", "set"):
         return given
-    call = value if isinstance(value, ast.Call) else None
-    clock = call is not None and isinstance(call.func, ast.Attribute) and \
-        call.func.attr == "now" and isinstance(call.func.value, ast.Call) and \
-        isinstance(call.func.value.func, ast.Attribute) and \
-        call.func.value.func.attr == "get_clock"
-    made = "rclpy.time.Time" if clock else \
-        index.qualified(call.func) if call is not None else None
-    return made if made is not None and _ROS_TIMES.get(kind) == made else None
+    wrong = _ROS_TIMES.get(kind)
+    if wrong is None or _parameter(value, index):
+        return None  # an annotation promises nothing of what callers pass
+    return wrong if _clock_reading(value) and wrong == TIME or \
+        object_class(value, package, tree, index) == wrong else None
+
+
+def _clock_reading(value: ast.expr) -> bool:
+    """True for ``<anything>.get_clock().now()``: an rclpy ``Time``."""
+    func = value.func if isinstance(value, ast.Call) else None
+    return isinstance(func, ast.Attribute) and func.attr == "now" and \
+        isinstance(func.value, ast.Call) and isinstance(func.value.func, ast.Attribute) and \
+        func.value.func.attr == "get_clock"
+
+
+def _parameter(value: ast.expr, index: Index) -> bool:
+    """True for a name that is a parameter of the function it is read in."""
+    function = index.enclosing_function(value) if isinstance(value, ast.Name) else None
+    return function is not None and any(
+        arg.arg == value.id for arg in (*function.args.posonlyargs, *function.args.args,
+                                        *function.args.kwonlyargs))
 
 
 def float_fix(value: ast.expr, given: str | None) -> str | None:
@@ -166,7 +181,8 @@ def field_value_type(package: Package) -> Iterator[Hit]:
                           f" ({given}{_how(value)}): rclpy makes an array of it and raises "
                           "TypeError", f"Give a list: `[{ast.unparse(value)}]`"
                           if given != "str" else None)
-            elif (problem := _not_a_message(kind, value, given, index)) is not None:
+            elif (problem := _not_a_message(kind, value, given, package, tree, index)) \
+                    is not None:
                 yield Hit(Span(module.path, value.lineno, value.col_offset + 1),
                           f"`{target}` holds a `{kind}` message but is given "
                           f"`{ast.unparse(value)}` ({problem})", _FIXES.get(problem))
