@@ -12,7 +12,8 @@ could, and the class body defines no ``x``.
 A parameter of a callback holds one when the module registers the function (``self.cb`` a
 plain method of the class registering it, or a plain function bound once in the module) only
 with known interfaces that agree: a subscription's message, a service's request and response,
-an action server's goal (``goal_handle.request``); the function must never rebind the name.
+an action server's goal (``goal_handle.request`` of the execute callback's goal handle, the
+goal callback's argument); the function must never rebind the name.
 """
 
 from __future__ import annotations
@@ -374,6 +375,10 @@ def _registrations(index: Index, known: Known
             kind = argument(call, ACTION_SERVER_CALLBACKS[0], "action_type")
             callback = argument(call, ACTION_SERVER_CALLBACKS[0], "execute_callback")
             parts = [(companion(kind, "Goal"), "request")]
+            judge = argument(call, ACTION_SERVER_CALLBACKS[0], "goal_callback")
+            if judge is not None:  # it gets the goal itself
+                yield judge, [(known(e) if e is not None else None, None)
+                              for e in (companion(kind, "Goal"),)]
         else:
             continue
         if callback is not None:

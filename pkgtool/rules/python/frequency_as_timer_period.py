@@ -17,6 +17,11 @@ from pkgtool.rules.syntax_trees import FUNCTIONS, Index
 _FREQUENCY_WORDS = frozenset({"hz", "freq", "frequency", "fps"})
 """Words of a name that hold a frequency (``rate`` alone does not tell: ``spawn_rate = 10``
 may mean every ten seconds)."""
+_RATE = "rate"
+_RATE_ABOVE = 10
+"""A value a name saying ``rate`` holds above which it is a frequency (``publish_rate = 20``):
+ROS code divides such rates into periods (``1.0 / rate``); a period of more than ten seconds
+called a rate is not what is meant."""
 _PERIOD_WORDS = frozenset({"period", "dt", "interval", "sec", "secs", "seconds", "s", "ms",
                            "duration", "delay", "time", "timeout"})
 """Words saying the name holds a time after all (``rate_period``, ``freq_sec``)."""
@@ -36,9 +41,11 @@ def frequency_as_timer_period(package: Package) -> Iterator[Hit]:
     frequency (a word `hz`, `freq`, `frequency` or `fps`: `publish_hz`, `self.frequency`),
     unless its value is known (a literal the name is bound to, a parameter's default,
     `declare_parameter('rate_hz', 50.0)`) and at most 1: `self.frequency_ = 0.01` is a
-    period named loosely. Names with a word of time (`period`, `dt`, `sec`, `interval`...),
-    names saying only `rate` (`spawn_rate = 10` may mean every ten seconds) and expressions
-    (`1.0 / rate_hz`) are left alone.
+    period named loosely. A name saying only `rate` counts when its value is known and above
+    10 (`publish_rate` declared with `20.0`: ROS code divides rates into periods, `1.0 /
+    rate`), not below (`spawn_rate = 10` may mean every ten seconds). Names with a word of
+    time (`period`, `dt`, `sec`, `interval`...) and expressions (`1.0 / rate_hz`) are left
+    alone.
 
     ## Why is this bad?
     `create_timer(timer_period_sec, callback)` takes seconds; rospy's `Rate(10)` took hertz.
@@ -68,7 +75,8 @@ def frequency_as_timer_period(package: Package) -> Iterator[Hit]:
         if not words or words & _PERIOD_WORDS:
             continue
         value = _value(period, call, index, 0)
-        if words & _FREQUENCY_WORDS and (value is None or value > 1) and \
+        rate = _RATE in words and isinstance(value, (int, float)) and value > _RATE_ABOVE
+        if (words & _FREQUENCY_WORDS and (value is None or value > 1) or rate) and \
                 not _inverse(period, call, index):  # not `freq_ = 0.01`, `freq = 1 / 30`
             fires = f"once every {value:g} s" if isinstance(value, (int, float)) else \
                 "at the inverse of the rate meant"
