@@ -185,6 +185,17 @@ _TARGET_KINDS = frozenset({"ARCHIVE", "LIBRARY", "RUNTIME", "OBJECTS", "FRAMEWOR
 """The kinds of artifact an ``install(TARGETS ...)`` gives destinations for."""
 
 
+def _runs_install_code(calls: list[tuple[str, list[str]]]) -> bool:
+    """True when ``calls`` hold an ``install(CODE|SCRIPT ...)``: CMake code run at install
+    time, which may link or copy files anywhere (``ln -s node.py node``)."""
+    return any(name == "install" and args[:1] in (["CODE"], ["SCRIPT"]) for name, args in calls)
+
+
+def runs_install_code(text: str) -> bool:
+    """:func:`_runs_install_code` of a CMakeLists.txt's text."""
+    return _runs_install_code(commands(text))
+
+
 def installed_executables(text: str) -> frozenset[str] | None:
     """The executables ``text`` (a CMakeLists.txt with the files it includes) installs into
     ``lib/<project>``, where ``ros2 run`` and launch look them up: targets ``install(TARGETS
@@ -195,9 +206,11 @@ def installed_executables(text: str) -> frozenset[str] | None:
     a function of the project, a subdirectory), an included file other than a ``.cmake``
     file of the package or a CMake module, a folder installed into ``lib/``, a name or
     destination built from what the file does not set, the console scripts of a Python
-    package's setup.cfg (``ament_python_install_package(... SCRIPTS_DESTINATION ...)``)."""
+    package's setup.cfg (``ament_python_install_package(... SCRIPTS_DESTINATION ...)``), an
+    ``install(CODE|SCRIPT ...)`` (CMake code run at install time may link or copy files
+    there: ``ln -s node.py node``)."""
     calls = _without_configuring_loops(commands(text))
-    if not _known_commands(calls) or any(
+    if not _known_commands(calls) or _runs_install_code(calls) or any(
             name == "ament_python_install_package" and "SCRIPTS_DESTINATION" in args
             for name, args in calls):
         return None  # what it installs is not known from the text (a setup.cfg's scripts)

@@ -114,10 +114,20 @@ def key_instead(name: str, distro: str, tag: str) -> str | None:
         not any(rosdistro.is_known_dependency(name, other) for other in DISTROS) else None
     if prefixed is not None and prefixed != name:
         return prefixed  # ``python3-`` before a pip name: ``python3-pillow`` is ``python3-pil``
-    keys = rosdistro.keys_for_import(name, distro) or \
-        (rosdistro.keys_for_import(name.partition(".")[0], distro)
-         if all(part.isidentifier() for part in name.split(".")) else ())
+    keys = rosdistro.keys_for_import(name, distro) or _dotted_keys(name, distro)
     return keys[0] if keys else rosdistro.key_of_ubuntu_package(name)
+
+
+def _dotted_keys(name: str, distro: str) -> tuple[str, ...]:
+    """The keys of the top-level module of an import's dotted path (``RPi.GPIO``) that name
+    its last part too (``python-rpi.gpio-pip``): a namespace package's top (``google``) has
+    keys of other distributions than ``google.generativeai``."""
+    parts = name.split(".")
+    if len(parts) < 2 or not all(part.isidentifier() for part in parts):
+        return ()
+    last = parts[-1].lower()
+    return tuple(key for key in rosdistro.keys_for_import(parts[0], distro)
+                 if last in key.lower())
 
 
 def is_local(package: Package, name: str) -> bool:

@@ -604,23 +604,42 @@ _MERGE = "tag:yaml.org,2002:merge"
 """The tag of a YAML merge key (``<<``)."""
 
 
-def flat_parameters(mapping: object, prefix: str = "") -> Iterator[tuple[str, object, object]]:
-    """(dotted name, key node, value node) of every parameter under ``ros__parameters``."""
+def _merged_items(mapping: object, depth: int = 0) -> list[tuple[object, object]]:
+    """The (key, value) pairs of a YAML mapping with scalar keys, ``<<`` merges resolved as
+    YAML 1.1 does: a key written in the mapping wins over merged ones, and of several merged
+    mappings (``<<: [*a, *b]``) the first that has a key gives it."""
     import yaml
 
-    if not isinstance(mapping, yaml.MappingNode):
+    own = [(k, v) for k, v in mapping.value  # type: ignore[attr-defined]
+           if isinstance(k, yaml.ScalarNode) and k.tag != _MERGE]
+    seen = {k.value for k, _ in own}
+    found = list(own)
+    for key, value in mapping.value:  # type: ignore[attr-defined]
+        if not (isinstance(key, yaml.ScalarNode) and key.tag == _MERGE) or depth > 20:
+            continue
+        sources = value.value if isinstance(value, yaml.SequenceNode) else [value]
+        for source in sources:
+            if not isinstance(source, yaml.MappingNode):
+                continue
+            for merged_key, merged_value in _merged_items(source, depth + 1):
+                if merged_key.value not in seen:
+                    seen.add(merged_key.value)
+                    found.append((merged_key, merged_value))
+    return found
+
+
+def flat_parameters(mapping: object, prefix: str = "", depth: int = 0
+                    ) -> Iterator[tuple[str, object, object]]:
+    """(dotted name, key node, value node) of every parameter under ``ros__parameters``
+    (nested at most 20 deep: a mapping an alias puts inside itself never ends)."""
+    import yaml
+
+    if not isinstance(mapping, yaml.MappingNode) or depth > 20:
         return
-    for key, value in mapping.value:
-        if not isinstance(key, yaml.ScalarNode):
-            continue
-        if key.tag == _MERGE:  # `<<: *defaults`: the keys of the mappings merged in
-            merged = value.value if isinstance(value, yaml.SequenceNode) else [value]
-            for part in merged:
-                yield from flat_parameters(part, prefix)
-            continue
+    for key, value in _merged_items(mapping):
         name = f"{prefix}{key.value}"
         if isinstance(value, yaml.MappingNode):
-            yield from flat_parameters(value, name + ".")
+            yield from flat_parameters(value, name + ".", depth + 1)
         else:
             yield name, key, value
 

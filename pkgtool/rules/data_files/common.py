@@ -144,6 +144,23 @@ def _no_source(installs: Installs, target: str, present: frozenset[str]) -> bool
                                  and source not in present for source in sources)
 
 
+def installed_descriptions(package: Package, name: str) -> list[str]:
+    """The paths below its share folder where the workspace package ``name`` (ament_python)
+    installs its description files (``WorkspacePackage.description_files``), sorted."""
+    sibling = package.context.workspace.get(name)
+    installs = sibling_data_files(sibling) if sibling is not None else None
+    share = f"share/{name}"
+    found = set()
+    for source in sibling.description_files if installs is not None else ():
+        for destination, pattern, is_glob in installs or ():
+            pattern = posixpath.normpath(pattern)
+            if (fnmatch.fnmatchcase(source, pattern) if is_glob else pattern == source) and \
+                    (destination == share or destination.startswith(share + "/")):
+                found.add(posixpath.join(destination[len(share) + 1:],
+                                         posixpath.basename(source)))
+    return sorted(found)
+
+
 def _kept_as_written(name: str) -> bool:
     """True for a launch file or a robot description, world or RViz file: what a package
     installs as written, never a file code makes at run time (a map, a calibration)."""

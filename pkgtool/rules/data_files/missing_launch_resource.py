@@ -12,7 +12,8 @@ from pkgtool.model.ast_nodes import nodes_of_class, opens_to_write
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.model.submodules import ignored, under
-from pkgtool.rules.data_files.common import sibling_share_misses, uninstalled_launch_resources
+from pkgtool.rules.data_files.common import (installed_descriptions, sibling_share_misses,
+                                             uninstalled_launch_resources)
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import installed_trees
 
@@ -99,12 +100,17 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
                   f"Write `{close[0]}`" if close else None)
     for reader, ref, relative in sibling_share_misses(package):
         sibling = package.context.workspace[ref.package or ""]
-        close = get_close_matches(relative, sorted(sibling.description_files), n=1)
-        hint = f" (did you mean `{close[0]}`?)" if close else ""
+        present = relative in sibling.description_files  # the file is there, not installed
+        close = [] if present else get_close_matches(
+            relative, installed_descriptions(package, ref.package or ""), n=1)
+        hint = f" (did you mean `{close[0]}`?)" if close else \
+            f" (`{ref.package}` has the file)" if present else ""
         yield Hit(ref.span, f"`{relative}` is not installed by `{ref.package}`, a package of "
                             f"the workspace: `{reader}` reads it from its share folder, where "
                             f"its setup.py's data_files put no file of that name{hint}",
                   f"Write `{close[0]}`" if close else
+                  f"Install `{relative}` with data_files in `{ref.package}`'s setup.py"
+                  if present else
                   f"Fix the path, or install the file in `{ref.package}`'s setup.py")
 
 

@@ -5,7 +5,8 @@ from __future__ import annotations
 import posixpath
 import re
 
-from pkgtool.model.cmake_install import installed_executables, installed_programs
+from pkgtool.model.cmake_install import (installed_executables, installed_programs,
+                                         runs_install_code)
 from pkgtool.model.installed import cmake_text, is_ament_python
 from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
@@ -48,8 +49,8 @@ def cmake_programs(package: Package) -> dict[str, str]:
     files name ``x`` nowhere else (a target, a ``RENAME``, a component's ``EXECUTABLE``, a
     program of its own: ``install(PROGRAMS scripts/x.py scripts/x ...)``)."""
     text = cmake_text(package)
-    if text is None or is_ament_python(package):
-        return {}
+    if text is None or is_ament_python(package) or runs_install_code(text):
+        return {}  # code run at install time may link `x` to `x.py`
     programs = installed_programs(text)
     return {name[:-3]: name for name in programs
             if name.endswith(".py") and name[:-3] not in programs and

@@ -177,7 +177,7 @@ def undeclared_reads(package: Package) -> Iterator[tuple[Span, str, set[str]]]:
             yield Span(path, call.lineno, call.col_offset + 1), name, declared
     for path, text in frontends:
         declared = {name for pattern in FRONTEND_DECLARED for name in pattern.findall(text)}
-        code = _DESCRIPTION.sub("", text)  # the words of descriptions name nothing
+        code = DESCRIPTION.sub("", text)  # the words of descriptions name nothing
         for read in VARIABLE_READ.finditer(text):
             name = read.group(1)
             if name not in declared_anywhere and len(re.findall(
@@ -237,5 +237,5 @@ def _never_used(call: ast.Call, index: Index) -> bool:
     return not later or not later[0][1]
 
 
-_DESCRIPTION = lazy_pattern(r"""\bdescription\s*[=:]\s*(?:"[^"]*"|'[^']*'|[^\n,}"']*)""")
+DESCRIPTION = lazy_pattern(r"""\bdescription\s*[=:]\s*(?:"[^"]*"|'[^']*'|[^\n,}"']*)""")
 """An argument's description in an XML (``description="..."``) or YAML launch file."""

@@ -14,7 +14,8 @@ from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.model.text_comments import without_comments
 from pkgtool.lazy_regex import lazy_pattern
-from pkgtool.rules.launch._python_launch import READ_BY_LAUNCH, literal_arguments, reads_shown
+from pkgtool.rules.launch._python_launch import (DESCRIPTION, READ_BY_LAUNCH, literal_arguments,
+                                                 reads_shown)
 from pkgtool.rules.launch_includes import own_includes
 from pkgtool.rules.registry import rule
 from pkgtool.rules.syntax_trees import Index, launch_indexes
@@ -80,7 +81,8 @@ def unread_include_argument(package: Package) -> Iterator[Hit]:
 def _arguments_used(package: Package, launch: LaunchFile, indexes: dict[str, Index]
                     ) -> tuple[set[str], set[str]] | None:
     """The names an included launch file declares, and every name it declares, reads or
-    writes in a string (a Python file) or a word (an XML or YAML file); None when some read
+    writes in a string (a Python file) or a word (an XML or YAML file, outside argument
+    descriptions); None when some read
     may not show: a Python file not :func:`reads_shown`, a declaration or read with no
     literal name, a file including others (they see every configuration)."""
     if launch.kind == "python":
@@ -90,7 +92,8 @@ def _arguments_used(package: Package, launch: LaunchFile, indexes: dict[str, Ind
     if launch.kind not in ("xml", "yaml") or "include" in text:
         return None
     declared = {name for pattern in FRONTEND_DECLARED for name in pattern.findall(text)}
-    return declared, declared | set(_WORD.findall(text))
+    return declared, declared | set(_WORD.findall(DESCRIPTION.sub("", text)))  # a word of a
+    # description names nothing
 
 
 _WORD = lazy_pattern(r"[\w.-]+")

@@ -56,8 +56,8 @@ def _called_with(statement: ast.stmt, names: frozenset[str], index: Index) -> bo
 def _callback_shutdown(index: Index, spinner: ast.AST | None) -> ast.Call | None:
     """A bare ``rclpy.shutdown()`` in a method of a class of the module other than the function
     ``spinner`` spinning the node and than a finalizer (a callback ending the node:
-    ``rclpy.spin`` then returns) that the program does not leave right after (a ``raise``,
-    ``sys.exit()``)."""
+    ``rclpy.spin`` then returns) whose block does not leave the program after it (a
+    ``raise``, ``sys.exit()``)."""
     for call in index.calls:
         statement = index.parents.get(id(call))
         method = index.enclosing_function(call)
@@ -65,23 +65,22 @@ def _callback_shutdown(index: Index, spinner: ast.AST | None) -> ast.Call | None
                 and method is not None and method is not spinner and method.name != "__del__"
                 and index.enclosing_class(call) is not None):
             continue
-        following = _next_statement(statement, index)
-        if not (isinstance(following, ast.Raise) or isinstance(following, ast.Expr) and
-                isinstance(following.value, ast.Call) and
-                last_name(following.value.func) in _EXITS):
+        if not any(isinstance(after, ast.Raise) or isinstance(after, ast.Expr) and
+                   isinstance(after.value, ast.Call) and last_name(after.value.func) in _EXITS
+                   for after in _statements_after(statement, index)):
             return call
     return None
 
 
-def _next_statement(statement: ast.stmt, index: Index) -> ast.stmt | None:
-    """The statement after ``statement`` in its block, if any."""
+def _statements_after(statement: ast.stmt, index: Index) -> list[ast.stmt]:
+    """The statements after ``statement`` in its block."""
     holder = index.parents.get(id(statement))
-    for name in ("body", "orelse", "finalbody", "handlers"):
+    for name in ("body", "orelse", "finalbody"):
         block = getattr(holder, name, None)
         if isinstance(block, list) and any(s is statement for s in block):
             place = next(i for i, s in enumerate(block) if s is statement)
-            return block[place + 1] if place + 1 < len(block) else None
-    return None
+            return block[place + 1:]
+    return []
 
 
 def _after_spin(path: str, call: ast.Call, stopper: ast.Call, index: Index) -> Hit:
@@ -106,7 +105,7 @@ def rclpy_shut_down_twice(package: Package) -> Iterator[Hit]:
     `rclpy.shutdown()` or `rclpy.try_shutdown()` call, or a `try` whose `finally` block makes
     one, with no `rclpy.init()` in between; or a bare `rclpy.spin(...)` earlier in the same
     block when a method of a class of the module (a callback; not `__del__`) calls
-    `rclpy.shutdown()` (and does not raise or exit right after): `spin` returns only once
+    `rclpy.shutdown()` (and does not raise or exit later in its block): `spin` returns only once
     ROS is shut down. Branches, loops and handlers are never assumed to have run: `except:
     rclpy.shutdown()` followed by `finally: rclpy.shutdown()` is left alone.
 
