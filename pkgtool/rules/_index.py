@@ -238,6 +238,7 @@ RULES = {
     "PYC093": ("frequency-as-timer-period", "warning", True, "python.frequency_as_timer_period"),
     "PYC094": ("loop-variable-in-callback", "error", True, "python.loop_variable_in_callback"),
     "PYC095": ("argparse-rejects-ros-args", "error", True, "python.argparse_rejects_ros_args"),
+    "PYC096": ("node-property-assigned", "error", True, "python.node_property_assigned"),
     "SET001": ("missing-setup-py", "error", True, "setup.missing_setup_py"),
     "SET002": ("missing-setup-call", "error", True, "setup.missing_setup_call"),
     "SET003": ("setup-name-mismatch", "warning", True, "setup.setup_name_mismatch"),

@@ -126,7 +126,8 @@ def sibling_share_misses(package: Package) -> tuple[tuple[str, FileRef, str], ..
 
 def _no_source(installs: Installs, target: str, present: frozenset[str]) -> bool:
     """True when ``target`` is a description file that only globs of one-folder-deep sources
-    (``urdf/*.urdf``) may install, and none of those folders holds a file of its name:
+    (``urdf/*.urdf``) may install, and none of those folders holds a file of its name, each
+    holding other description files (an empty one may be a link the listing does not follow):
     ``present`` are the package's description files (``WorkspacePackage.description_files``)."""
     folder, name = posixpath.split(target)
     if not name.endswith(DESCRIPTION_SUFFIXES):
@@ -140,8 +141,10 @@ def _no_source(installs: Installs, target: str, present: frozenset[str]) -> bool
         if destination == folder and is_glob and \
                 fnmatch.fnmatchcase(name, posixpath.basename(pattern)):
             sources.append(posixpath.join(posixpath.dirname(posixpath.normpath(pattern)), name))
+    folders = {p.split("/")[0] for p in present}  # a folder listing none may be a link
     return bool(sources) and all(source.count("/") == 1 and lists_files_of(source.split("/")[0])
-                                 and source not in present for source in sources)
+                                 and source.split("/")[0] in folders and source not in present
+                                 for source in sources)
 
 
 def installed_descriptions(package: Package, name: str) -> list[str]:

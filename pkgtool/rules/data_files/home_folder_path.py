@@ -8,20 +8,24 @@ from collections.abc import Callable, Iterator
 
 from pkgtool.findings import Hit, Severity, shortened
 from pkgtool.model.ast_nodes import nodes_of_class, walk_once
+from pkgtool.model.files import DESCRIPTION_SUFFIXES, TextFile, read_text
 from pkgtool.model.installed import installed_data, is_ament_python
 from pkgtool.model.launch import EXISTENCE_CHECKS
 from pkgtool.model.package import Package, is_test_material
 from pkgtool.model.span import Span
+from pkgtool.model.text_comments import without_comments
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import single_assignments
 from pkgtool.rules.syntax_trees import Index, index_of, installed_trees, python_files
 from pkgtool.lazy_regex import lazy_pattern
 
-HOME_PATH = lazy_pattern(r"(?<![\w.~$}/-])(?:/home/(?!\$|\{)[\w.-]+|/Users/[\w.-]+|"
+HOME_PATH = lazy_pattern(r"(?:(?<=file://)|(?<![\w.~$}/-]))"
+                         r"(?:/home/(?!\$|\{)[\w.-]+|/Users/[\w.-]+|"
                          r"/root(?=/(?:[\w.-]+/)*?[\w.-]+/(?:src|install)/))/[\w.-]")
-"""An absolute path inside a named user's home folder (not ``/home/$USER/``), or into a
-colcon workspace's ``src`` or ``install`` folder in root's (``/root/ros2_ws/src/...``: a
-container's; root's other files, ``/root/.bashrc``, are left alone)."""
+"""An absolute path (or a ``file://`` URI's) inside a named user's home folder (not
+``/home/$USER/``), or into a colcon workspace's ``src`` or ``install`` folder in root's
+(``/root/ros2_ws/src/...``: a container's; root's other files, ``/root/.bashrc``, are left
+alone)."""
 _PLACEHOLDER_HOME = lazy_pattern(r"(?<![\w.~$}/-])/home/<[\w.-]+>/[\w.-]")
 """A home folder left as a placeholder in code (``'/home/<username>/data'``): in a settings
 file it is a template for the user to fill in, in code a path that never exists."""
@@ -31,6 +35,9 @@ _MESSAGES = frozenset({"print", "info", "warn", "warning", "error", "debug", "fa
 """Calls whose text arguments are messages."""
 _PATH_END = lazy_pattern(r"[\s\"'<>,;)\]}]")
 _DATA_SUFFIXES = (".yaml", ".yml", ".xml", ".launch")
+_MODEL_SUFFIXES = (*DESCRIPTION_SUFFIXES, ".wbt")
+"""Robot descriptions, worlds and RViz settings (and Webots worlds), read when a rule asks:
+a mesh or a model named by a path into one machine's home folder loads nowhere else."""
 
 
 @rule("DAT014", "home-folder-path", Severity.WARNING,
@@ -47,7 +54,9 @@ def home_folder_path(package: Package) -> Iterator[Hit]:
     `description` or an exception raised; not a path the file asks exists, given to
     `os.path.exists()` and the like or bound to a name such a check is built from, as code that
     falls back when a machine lacks the file does), and values in XML and YAML launch files and
-    in the YAML and XML files the package installs (not comments; in a package whose installed
+    in the YAML and XML files, robot descriptions, worlds and RViz settings (`.urdf`,
+    `.xacro`, `.sdf`, `.world`, `.wbt`, `.rviz`: a mesh `file:///home/alice/...`) the
+    package installs (not comments; in a package whose installed
     files are not known, those outside `doc`, `docs` and `example` folders and hidden ones: CI
     settings such as `.travis.yml` name the CI machine's home). In Python, also a path built
     from the home folder into a colcon workspace's `src` or `install` folder
@@ -90,6 +99,13 @@ def home_folder_path(package: Package) -> Iterator[Hit]:
         if path.endswith(_DATA_SUFFIXES) and path != "package.xml" and shipped(path) and \
                 not is_test_material(path) and any(h in text for h in (*_HINTS, _SRC)):
             yield from _text_paths(path, text, names)
+    for path in package.files:
+        if path.endswith(_MODEL_SUFFIXES) and shipped(path) and not is_test_material(path):
+            read = read_text(package.root, path)
+            text = read.text if isinstance(read, TextFile) else ""
+            if any(h in text for h in (*_HINTS, _SRC)):
+                kind = "yaml" if path.endswith(".rviz") else "xml"  # RViz settings: YAML
+                yield from _text_paths(path, without_comments(text, kind), names)
 
 
 _ASIDE = frozenset({"doc", "docs", "example", "examples"})

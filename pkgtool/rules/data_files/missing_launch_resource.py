@@ -15,7 +15,7 @@ from pkgtool.model.submodules import ignored, under
 from pkgtool.rules.data_files.common import (installed_descriptions, sibling_share_misses,
                                              uninstalled_launch_resources)
 from pkgtool.rules.registry import rule
-from pkgtool.rules.syntax_trees import installed_trees
+from pkgtool.rules.syntax_trees import installed_trees, launch_trees
 
 
 @rule("DAT012", "missing-launch-resource", Severity.ERROR,
@@ -79,11 +79,12 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
     ```
     """
     share = f"share/{package.name}/"
+    written = _written_names(package)
     for reader, ref, relative, installed in uninstalled_launch_resources(package):
         if package.has_file(relative) or package.has_folder(relative) or \
                 under(relative, package.unfetched) or ignored(relative, package.ignores) or \
                 _installed_when_present(package, relative) or \
-                relative.rpartition("/")[2] in _written_names(package):
+                relative.rpartition("/")[2] in written:
             continue  # a file git ignores is the user's to make (a calibration, a map)
         known = {target[len(share):] for target in installed if target.startswith(share)}
         known.update(package.files)
@@ -99,6 +100,8 @@ def missing_launch_resource(package: Package) -> Iterator[Hit]:
                             f"reads it from the share folder, where nothing installs it{hint}",
                   f"Write `{close[0]}`" if close else None)
     for reader, ref, relative in sibling_share_misses(package):
+        if relative.rpartition("/")[2] in written:
+            continue  # the package makes it there (a URDF expanded from a xacro file)
         sibling = package.context.workspace[ref.package or ""]
         present = relative in sibling.description_files  # the file is there, not installed
         close = [] if present else get_close_matches(
@@ -140,11 +143,13 @@ def _parameter_files(package: Package, reader: str) -> set[tuple[str | None, tup
 
 @per_package
 def _written_names(package: Package) -> frozenset[str]:
-    """The file names the package's installed modules open to write (``open(share +
-    '/state.ini', 'w')``; the last part of each text in the path given, or in what the name
-    given is bound to in the module): one module may make the file another reads."""
+    """The file names the package's installed modules and Python launch files open to write
+    (``open(share + '/state.ini', 'w')``; the last part of each text in the path given, or in
+    what the name given is bound to in the module): one module may make the file another
+    reads, a launch file the URDF it expands from a xacro file."""
     found: set[str] = set()
-    for _, tree, _ in installed_trees(package):
+    trees = [tree for _, tree, _ in installed_trees(package)]
+    for tree in [*trees, *(tree for _, tree, _ in launch_trees(package))]:
         values = {t.id: n.value for n in nodes_of_class(tree, ast.Assign) for t in n.targets
                   if isinstance(t, ast.Name)}
         for call in nodes_of_class(tree, ast.Call):

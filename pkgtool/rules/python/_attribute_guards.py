@@ -82,8 +82,9 @@ def guarded(node: ast.Attribute, index: Index, probed: frozenset[str]) -> bool:
     """True for a name the module probes for, or inside a ``try`` that catches
     AttributeError, or anything (``except Exception:``) without raising it again (a handler
     with a bare ``raise`` lets the error out): code that expects the attribute may be
-    missing; or inside an ``except AttributeError:`` handler, the fallback of code written
-    for two APIs (``info.k = ...`` tried, ``info.K = ...`` when that fails)."""
+    missing; or inside an ``except AttributeError:`` handler or the branch taken when a
+    ``hasattr`` fails, the fallback of code written for two APIs (``info.k = ...`` tried,
+    ``info.K = ...`` when that fails)."""
     if node.attr in probed:
         return True
     child, parent = node, index.parents.get(id(node))
@@ -94,8 +95,24 @@ def guarded(node: ast.Attribute, index: Index, probed: frozenset[str]) -> bool:
         if isinstance(parent, ast.ExceptHandler) and child is not parent.type and \
                 "AttributeError" in _caught_names(parent):
             return True
+        if isinstance(parent, ast.If) and _lacks_branch(parent, child):
+            return True
         child, parent = parent, index.parents.get(id(parent))
     return False
+
+
+def _lacks_branch(test: ast.If, child: ast.AST) -> bool:
+    """True when ``child`` is in the branch of ``test`` taken when a ``hasattr`` fails: the
+    ``else`` of ``if hasattr(x, 'a'):``, the body of ``if not hasattr(x, 'a'):`` (the other
+    API's name in a shim for two versions)."""
+    def probes(node: ast.expr) -> bool:
+        return isinstance(node, ast.Call) and isinstance(node.func, ast.Name) and \
+            node.func.id == "hasattr"
+
+    negated = isinstance(test.test, ast.UnaryOp) and isinstance(test.test.op, ast.Not)
+    if negated and probes(test.test.operand):  # type: ignore[attr-defined]
+        return any(child is s for s in test.body)
+    return probes(test.test) and any(child is s for s in test.orelse)
 
 
 @per_tree

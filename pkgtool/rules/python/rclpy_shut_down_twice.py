@@ -12,6 +12,7 @@ from pkgtool.model.span import Span
 from pkgtool.rules.node_api import INITS, SHUTDOWNS, TRY_SHUTDOWNS
 from pkgtool.rules.python._reaching import preceding_statements
 from pkgtool.rules.registry import rule
+from pkgtool.rules.scopes import single_assignments
 from pkgtool.rules.syntax_trees import Index, installed_trees
 
 _ENDS = SHUTDOWNS | TRY_SHUTDOWNS
@@ -53,34 +54,62 @@ def _called_with(statement: ast.stmt, names: frozenset[str], index: Index) -> bo
         index.qualified(call.func) in names
 
 
-def _callback_shutdown(index: Index, spinner: ast.AST | None) -> ast.Call | None:
-    """A bare ``rclpy.shutdown()`` in a method of a class of the module other than the function
-    ``spinner`` spinning the node and than a finalizer (a callback ending the node:
-    ``rclpy.spin`` then returns) whose block does not leave the program after it (a
-    ``raise``, ``sys.exit()``)."""
-    for call in index.calls:
+def _callback_shutdown(index: Index, spin: ast.stmt, spinner: ast.AST | None
+                       ) -> ast.Call | None:
+    """A bare ``rclpy.shutdown()`` in a method (not a finalizer, not ``spinner``, the function
+    spinning) of the class whose instance ``spin`` (``rclpy.spin(node)``) spins, after which
+    nothing in its method may leave the program (a ``raise``, ``sys.exit()``) or call
+    ``rclpy.init()``: a callback ending the node (``rclpy.spin`` then returns)."""
+    spun = _spun_class(spin, index, spinner)
+    for call in index.calls if spun is not None else ():
         statement = index.parents.get(id(call))
         method = index.enclosing_function(call)
         if not (isinstance(statement, ast.Expr) and _called(statement, SHUTDOWNS, index) is call
                 and method is not None and method is not spinner and method.name != "__del__"
-                and index.enclosing_class(call) is not None):
+                and index.enclosing_class(call) is spun):
             continue
-        if not any(isinstance(after, ast.Raise) or isinstance(after, ast.Expr) and
-                   isinstance(after.value, ast.Call) and last_name(after.value.func) in _EXITS
-                   for after in _statements_after(statement, index)):
+        if not any(_leaves_or_restarts(after, index)
+                   for after in _statements_after(statement, method, index)):
             return call
     return None
 
 
-def _statements_after(statement: ast.stmt, index: Index) -> list[ast.stmt]:
-    """The statements after ``statement`` in its block."""
-    holder = index.parents.get(id(statement))
-    for name in ("body", "orelse", "finalbody"):
-        block = getattr(holder, name, None)
-        if isinstance(block, list) and any(s is statement for s in block):
-            place = next(i for i, s in enumerate(block) if s is statement)
-            return block[place + 1:]
-    return []
+def _leaves_or_restarts(statement: ast.stmt, index: Index) -> bool:
+    """True when ``statement`` (or a statement in it) raises, exits the program or calls
+    ``rclpy.init()``."""
+    return _initialises(statement, index) or any(
+        isinstance(node, ast.Raise) or isinstance(node, ast.Call) and
+        last_name(node.func) in _EXITS for node in ast.walk(statement))
+
+
+def _spun_class(spin: ast.stmt, index: Index, spinner: ast.AST | None) -> ast.ClassDef | None:
+    """The class of the module whose instance ``rclpy.spin(...)`` spins: a call of it, or a
+    name ``spinner`` binds once to one."""
+    call = spin.value if isinstance(spin, ast.Expr) else None
+    node = call.args[0] if isinstance(call, ast.Call) and call.args else None
+    if isinstance(node, ast.Name) and spinner is not None:
+        node = single_assignments(spinner).get(node.id)  # type: ignore[arg-type]
+    name = node.func.id if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) \
+        else None
+    return next((c for c in index.classes if c.name == name), None)
+
+
+def _statements_after(statement: ast.stmt, method: ast.AST, index: Index) -> list[ast.stmt]:
+    """The statements that may run after ``statement`` in ``method``: those after it in its
+    block, then those after each block holding it, up to the method's body."""
+    found: list[ast.stmt] = []
+    current: ast.AST = statement
+    while current is not method:
+        holder = index.parents.get(id(current))
+        if holder is None:
+            break
+        for name in ("body", "orelse", "finalbody"):
+            block = getattr(holder, name, None)
+            if isinstance(block, list) and any(s is current for s in block):
+                place = next(i for i, s in enumerate(block) if s is current)
+                found.extend(block[place + 1:])
+        current = holder
+    return found
 
 
 def _after_spin(path: str, call: ast.Call, stopper: ast.Call, index: Index) -> Hit:
@@ -145,7 +174,7 @@ def rclpy_shut_down_twice(package: Package) -> Iterator[Hit]:
             for before in preceding_statements(statement, index):
                 if _initialises(before, index):
                     break
-                stopper = _callback_shutdown(index, index.enclosing_function(call)) \
+                stopper = _callback_shutdown(index, before, index.enclosing_function(call)) \
                     if _called_with(before, _SPIN, index) and \
                     index.parents.get(id(before)) is index.parents.get(id(statement)) else None
                 if stopper is not None:
