@@ -14,6 +14,7 @@ from pkgtool.model.launch import EXISTENCE_CHECKS
 from pkgtool.model.package import Package, is_test_material
 from pkgtool.model.span import Span
 from pkgtool.model.text_comments import without_comments
+from pkgtool.records import replace
 from pkgtool.rules.registry import rule
 from pkgtool.rules.scopes import single_assignments
 from pkgtool.rules.syntax_trees import Index, index_of, installed_trees, python_files
@@ -105,7 +106,8 @@ def home_folder_path(package: Package) -> Iterator[Hit]:
             text = read.text if isinstance(read, TextFile) else ""
             if any(h in text for h in (*_HINTS, _SRC)):
                 kind = "yaml" if path.endswith(".rviz") else "xml"  # RViz settings: YAML
-                yield from _text_paths(path, without_comments(text, kind), names)
+                yield from _first_of(list(_text_paths(path, without_comments(text, kind),
+                                                      names)))
 
 
 _ASIDE = frozenset({"doc", "docs", "example", "examples"})
@@ -272,6 +274,16 @@ def _is_home(node: ast.expr, index: Index, homes: frozenset[str]) -> bool:
     first = node.args[0] if node.args else None
     return first is None or isinstance(first, ast.Constant) and first.value in ("HOME", "~",
                                                                                 "$HOME")
+
+
+def _first_of(hits: list[Hit]) -> Iterator[Hit]:
+    """The first of a file's hits, saying how many more there are: a world or a model saved
+    by a simulator names every mesh by the same folder."""
+    if len(hits) > 1:
+        yield replace(hits[0], message=f"{hits[0].message} (and {len(hits) - 1} more such "
+                                       "paths in the file)")
+    else:
+        yield from hits
 
 
 def _text_paths(path: str, text: str, names: frozenset[str]) -> Iterator[Hit]:
