@@ -177,7 +177,7 @@ def nodes_of_class(tree: ast.AST, *classes: type[ast.AST]) -> list[ast.AST]:
     return [node for kind in classes for node in by_class.get(kind, ())]
 
 
-_EXITS = frozenset({"exit", "quit", "_exit"})
+EXITS = frozenset({"exit", "quit", "_exit"})
 """``sys.exit``, ``exit()``, ``quit()``, ``os._exit``: calls that end the program."""
 
 
@@ -188,7 +188,7 @@ def handler_stops(handler: ast.ExceptHandler) -> bool:
     if isinstance(last, ast.Raise):
         return True
     call = last.value if isinstance(last, ast.Expr) else None
-    return isinstance(call, ast.Call) and last_name(call.func) in _EXITS
+    return isinstance(call, ast.Call) and last_name(call.func) in EXITS
 
 
 def is_super_init(node: ast.AST) -> bool:

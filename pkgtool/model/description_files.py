@@ -29,19 +29,40 @@ class PackageMention:
     span: Span
 
 
+MODEL_SUFFIXES = (*DESCRIPTION_SUFFIXES, ".wbt")
+"""Robot descriptions, worlds and RViz settings, and Webots worlds (which name no package)."""
+
+
+@per_package
+def model_texts(package: Package) -> dict[str, str]:
+    """The text of each file of the package ending in :data:`MODEL_SUFFIXES`, by path, in
+    the package's file order: read once, when a rule asks (most runs never do); unreadable
+    files are left out."""
+    found: dict[str, str] = {}
+    for relpath in package.files:
+        if relpath.endswith(MODEL_SUFFIXES):
+            read = read_text(package.root, relpath)
+            if isinstance(read, TextFile):
+                found[relpath] = read.text
+    return found
+
+
 @per_package
 def package_mentions(package: Package) -> tuple[PackageMention, ...]:
     """Every package the package's description, world and RViz files name (``$(find x)``,
     ``$(find-pkg-share x)``, ``package://x/...``) outside XML comments, in file order;
     unreadable files name none."""
     found: list[PackageMention] = []
-    for relpath in package.files:
+    for relpath, text in model_texts(package).items():
         if relpath.endswith(DESCRIPTION_SUFFIXES):
-            read = read_text(package.root, relpath)
-            if isinstance(read, TextFile):
-                kind = "yaml" if relpath.endswith(".rviz") else "xml"  # RViz settings: YAML
-                found.extend(_mentions(relpath, without_comments(read.text, kind)))
+            found.extend(_mentions(relpath, without_comments(text, comment_kind(relpath))))
     return tuple(found)
+
+
+def comment_kind(relpath: str) -> str:
+    """How comments are written in the model file ``relpath`` (for
+    :func:`~pkgtool.model.text_comments.without_comments`): RViz settings are YAML."""
+    return "yaml" if relpath.endswith(".rviz") else "xml"
 
 
 @per_package

@@ -8,7 +8,7 @@ from collections.abc import Callable, Iterator
 
 from pkgtool.findings import Hit, Severity, shortened
 from pkgtool.model.ast_nodes import nodes_of_class, walk_once
-from pkgtool.model.files import DESCRIPTION_SUFFIXES, TextFile, read_text
+from pkgtool.model.description_files import comment_kind, model_texts
 from pkgtool.model.installed import installed_data, is_ament_python
 from pkgtool.model.launch import EXISTENCE_CHECKS
 from pkgtool.model.package import Package, is_test_material
@@ -36,9 +36,6 @@ _MESSAGES = frozenset({"print", "info", "warn", "warning", "error", "debug", "fa
 """Calls whose text arguments are messages."""
 _PATH_END = lazy_pattern(r"[\s\"'<>,;)\]}]")
 _DATA_SUFFIXES = (".yaml", ".yml", ".xml", ".launch")
-_MODEL_SUFFIXES = (*DESCRIPTION_SUFFIXES, ".wbt")
-"""Robot descriptions, worlds and RViz settings (and Webots worlds), read when a rule asks:
-a mesh or a model named by a path into one machine's home folder loads nowhere else."""
 
 
 @rule("DAT014", "home-folder-path", Severity.WARNING,
@@ -100,14 +97,11 @@ def home_folder_path(package: Package) -> Iterator[Hit]:
         if path.endswith(_DATA_SUFFIXES) and path != "package.xml" and shipped(path) and \
                 not is_test_material(path) and any(h in text for h in (*_HINTS, _SRC)):
             yield from _text_paths(path, text, names)
-    for path in package.files:
-        if path.endswith(_MODEL_SUFFIXES) and shipped(path) and not is_test_material(path):
-            read = read_text(package.root, path)
-            text = read.text if isinstance(read, TextFile) else ""
-            if any(h in text for h in (*_HINTS, _SRC)):
-                kind = "yaml" if path.endswith(".rviz") else "xml"  # RViz settings: YAML
-                yield from _first_of(list(_text_paths(path, without_comments(text, kind),
-                                                      names)))
+    for path, text in model_texts(package).items():
+        if shipped(path) and not is_test_material(path) and \
+                any(h in text for h in (*_HINTS, _SRC)):
+            uncommented = without_comments(text, comment_kind(path))
+            yield from _first_of(list(_text_paths(path, uncommented, names)))
 
 
 _ASIDE = frozenset({"doc", "docs", "example", "examples"})

@@ -143,9 +143,13 @@ def made_class(value: ast.expr, package: Package, tree: ast.Module, index: Index
         return made if made and kind.fullmatch(made) else None
     assigned = assigned_values(value, package, tree, index) if depth < _DEPTH else None
     trees = installed_tree_of(package) if assigned else {}
-    classes = {made_class(v, package, trees[id(i)], i, kind, depth + 1)
-               for v, i in assigned or () if not is_none(v)}
-    return classes.pop() if len(classes) == 1 and None not in classes else None
+    return sole({made_class(v, package, trees[id(i)], i, kind, depth + 1)
+                 for v, i in assigned or () if not is_none(v)})
+
+
+def sole(classes: set[str | None]) -> str | None:
+    """The one class of ``classes``, or None (none, several, or one unknown)."""
+    return next(iter(classes)) if len(classes) == 1 else None
 
 
 def _done_callback_futures(tree: ast.Module, index: Index) -> dict[int, list[ast.expr]]:

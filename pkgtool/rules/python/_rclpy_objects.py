@@ -20,7 +20,7 @@ from pkgtool.model.memo import per_package
 from pkgtool.model.package import Package
 from pkgtool.rules.node_api import derives_from_node_alone
 from pkgtool.rules.python._assignments import (assigned_values, done_callback_futures, is_none,
-                                               parameter_annotation)
+                                               parameter_annotation, sole)
 from pkgtool.rules.python._value_types import receiver_class
 from pkgtool.rules.syntax_trees import Index, installed_tree_of
 
@@ -94,7 +94,7 @@ def object_class(value: ast.expr, package: Package, tree: ast.Module, index: Ind
             return None  # bound by imports alone: a module or class, never an instance
         registered = done_callback_futures(tree, index).get(id(value))
         if registered:  # a done callback's parameter: the future, when it is rclpy's
-            return _one({object_class(v, package, tree, index, depth + 1) for v in registered})
+            return sole({object_class(v, package, tree, index, depth + 1) for v in registered})
         if depth and _node_self(value, index):  # a receiver (reads on a node are not ours)
             return NODE
         function = index.enclosing_function(value, through_lambdas=False)
@@ -144,7 +144,7 @@ def _assigned_class(value: ast.Name | ast.Attribute, package: Package, tree: ast
     """The one class of every value assigned to ``value`` (``None`` placeholders aside)."""
     assigned = assigned_values(value, package, tree, index)
     trees = installed_tree_of(package) if assigned else {}
-    return _one({object_class(v, package, trees[id(i)], i, depth + 1)
+    return sole({object_class(v, package, trees[id(i)], i, depth + 1)
                  for v, i in assigned or () if not is_none(v)})
 
 
@@ -166,7 +166,3 @@ def _node_self(name: ast.Name, index: Index) -> bool:
 def table_class(cls: str) -> str:
     """The class whose attributes ``cls`` has (a :data:`GOAL_FUTURE` is a ``Future``)."""
     return cls.partition("<")[0]
-
-
-def _one(classes: set[str | None]) -> str | None:
-    return next(iter(classes)) if len(classes) == 1 else None

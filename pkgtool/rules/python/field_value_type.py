@@ -13,6 +13,7 @@ from pkgtool.model.span import Span
 from pkgtool.rules.python._field_reads import ARRAY_SEQUENCE
 from pkgtool.rules.python._message_instances import Instance, known_messages
 from pkgtool.rules.python._messages import message_instances
+from pkgtool.rules.python._own_callees import parameter_names
 from pkgtool.rules.python._rclpy_objects import TIME, object_class
 from pkgtool.rules.python._value_types import certain_type
 from pkgtool.rules.registry import rule
@@ -67,10 +68,10 @@ def _clock_reading(value: ast.expr) -> bool:
 
 def _parameter(value: ast.expr, index: Index) -> bool:
     """True for a name that is a parameter of the function it is read in."""
-    function = index.enclosing_function(value) if isinstance(value, ast.Name) else None
-    return function is not None and any(
-        arg.arg == value.id for arg in (*function.args.posonlyargs, *function.args.args,
-                                        *function.args.kwonlyargs))
+    if not isinstance(value, ast.Name):
+        return False
+    function = index.enclosing_function(value)
+    return function is not None and value.id in parameter_names(function.args)
 
 
 def float_fix(value: ast.expr, given: str | None) -> str | None:

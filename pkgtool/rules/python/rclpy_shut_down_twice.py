@@ -6,7 +6,7 @@ import ast
 from collections.abc import Iterator
 
 from pkgtool.findings import Hit, Severity
-from pkgtool.model.ast_nodes import enclosing, last_name, nodes_of_class
+from pkgtool.model.ast_nodes import EXITS, enclosing, last_name, nodes_of_class
 from pkgtool.model.package import Package
 from pkgtool.model.span import Span
 from pkgtool.rules.node_api import INITS, SHUTDOWNS, TRY_SHUTDOWNS
@@ -18,15 +18,21 @@ from pkgtool.rules.syntax_trees import Index, installed_trees
 _ENDS = SHUTDOWNS | TRY_SHUTDOWNS
 
 
-def _called(statement: ast.stmt, names: frozenset[str], index: Index) -> ast.Call | None:
-    """The call when ``statement`` is a bare call of one of ``names`` on the default context
-    (no arguments)."""
+def _statement_call(statement: ast.stmt, names: frozenset[str], index: Index
+                    ) -> ast.Call | None:
+    """The call when ``statement`` is an expression calling one of ``names``."""
     call = statement.value if isinstance(statement, ast.Expr) else None
-    if isinstance(call, ast.Call) and not call.args and not call.keywords and \
-            isinstance(call.func, (ast.Name, ast.Attribute)) and \
+    if isinstance(call, ast.Call) and isinstance(call.func, (ast.Name, ast.Attribute)) and \
             index.qualified(call.func) in names:
         return call
     return None
+
+
+def _called(statement: ast.stmt, names: frozenset[str], index: Index) -> ast.Call | None:
+    """The call when ``statement`` is a bare call of one of ``names`` on the default context
+    (no arguments)."""
+    call = _statement_call(statement, names, index)
+    return call if call is not None and not call.args and not call.keywords else None
 
 
 def _shut_down_by(statement: ast.stmt, index: Index) -> ast.Call | None:
@@ -44,17 +50,9 @@ def _initialises(statement: ast.stmt, index: Index) -> bool:
 
 
 _SPIN = frozenset({"rclpy.spin"})
-_EXITS = frozenset({"exit", "_exit", "quit"})
 
 
-def _called_with(statement: ast.stmt, names: frozenset[str], index: Index) -> bool:
-    """True when ``statement`` is an expression calling one of ``names`` (any arguments)."""
-    call = statement.value if isinstance(statement, ast.Expr) else None
-    return isinstance(call, ast.Call) and isinstance(call.func, (ast.Name, ast.Attribute)) and \
-        index.qualified(call.func) in names
-
-
-def _callback_shutdown(index: Index, spin: ast.stmt, spinner: ast.AST | None
+def _callback_shutdown(index: Index, spin: ast.Call, spinner: ast.AST | None
                        ) -> ast.Call | None:
     """A bare ``rclpy.shutdown()`` in a method (not a finalizer, not ``spinner``, the function
     spinning) of the class whose instance ``spin`` (``rclpy.spin(node)``) spins, after which
@@ -79,14 +77,13 @@ def _leaves_or_restarts(statement: ast.stmt, index: Index) -> bool:
     ``rclpy.init()``."""
     return _initialises(statement, index) or any(
         isinstance(node, ast.Raise) or isinstance(node, ast.Call) and
-        last_name(node.func) in _EXITS for node in ast.walk(statement))
+        last_name(node.func) in EXITS for node in ast.walk(statement))
 
 
-def _spun_class(spin: ast.stmt, index: Index, spinner: ast.AST | None) -> ast.ClassDef | None:
+def _spun_class(spin: ast.Call, index: Index, spinner: ast.AST | None) -> ast.ClassDef | None:
     """The class of the module whose instance ``rclpy.spin(...)`` spins: a call of it, or a
     name ``spinner`` binds once to one."""
-    call = spin.value if isinstance(spin, ast.Expr) else None
-    node = call.args[0] if isinstance(call, ast.Call) and call.args else None
+    node = spin.args[0] if spin.args else None
     if isinstance(node, ast.Name) and spinner is not None:
         node = single_assignments(spinner).get(node.id)  # type: ignore[arg-type]
     name = node.func.id if isinstance(node, ast.Call) and isinstance(node.func, ast.Name) \
@@ -174,9 +171,10 @@ def rclpy_shut_down_twice(package: Package) -> Iterator[Hit]:
             for before in preceding_statements(statement, index):
                 if _initialises(before, index):
                     break
-                stopper = _callback_shutdown(index, before, index.enclosing_function(call)) \
-                    if _called_with(before, _SPIN, index) and \
-                    index.parents.get(id(before)) is index.parents.get(id(statement)) else None
+                spin = _statement_call(before, _SPIN, index) \
+                    if index.parents.get(id(before)) is index.parents.get(id(statement)) else None
+                stopper = _callback_shutdown(index, spin, index.enclosing_function(call)) \
+                    if spin is not None else None
                 if stopper is not None:
                     yield _after_spin(module.path, call, stopper, index)
                     break
